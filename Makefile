@@ -1,0 +1,110 @@
+# stepwise — build, test and install. `make run` and `make test` first make
+# sure ncursesw and Check are present (the `deps` step), so a fresh Debian
+# machine goes from nothing to a running lesson or a passing suite.
+
+CC      ?= cc
+PREFIX  ?= /usr/local
+BUILD   ?= build
+DESTDIR ?=
+OPT     ?= -O2 -g
+
+WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+ifeq ($(WERROR),1)
+WARN   += -Werror
+endif
+ifeq ($(SAN),1)
+OPT     = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+LDSAN   = -fsanitize=address,undefined
+endif
+
+DATADIR  = $(PREFIX)/share/stepwise
+CPPFLAGS = -Iinclude -Isrc -D_XOPEN_SOURCE=700 -D_XOPEN_SOURCE_EXTENDED -D_DEFAULT_SOURCE \
+           -DSW_DATADIR='"$(DATADIR)"'
+CFLAGS  ?=
+ALL_CFLAGS = -std=c11 $(OPT) $(WARN) $(CFLAGS) -MMD -MP
+
+# Looked up when a recipe runs, i.e. after `deps` has installed them.
+CURSES_CFLAGS = $(shell pkg-config --cflags ncursesw 2>/dev/null)
+CURSES_LIBS   = $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw)
+CHECK_CFLAGS  = $(shell pkg-config --cflags check 2>/dev/null)
+CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
+
+# The engine library: everything but main.c and the ncurses front end. The
+# canvas rasteriser lives in tui/ but is pure C, so it belongs to the library.
+TUI_SRC  = $(filter-out src/tui/canvas.c,$(wildcard src/tui/*.c))
+LIB_SRC  = $(filter-out src/main.c $(TUI_SRC),$(wildcard src/*.c src/*/*.c))
+LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
+TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o)
+MAIN_OBJ = $(BUILD)/src/main.o
+TEST_SRC = $(wildcard tests/check_*.c)
+TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o)
+LIB      = $(BUILD)/libstepwise.a
+BIN      = stepwise
+TESTBIN  = $(BUILD)/check_stepwise
+
+.PHONY: all deps run test unit e2e sanitize bench clean install uninstall plugin-example fuzz
+
+all: $(BIN) $(LIB)
+
+deps:
+	@sh tests/deps.sh
+
+$(BUILD)/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(if $(filter src/tui/%,$<),$(CURSES_CFLAGS)) \
+	    $(if $(filter tests/%,$<),$(CHECK_CFLAGS) -I$(BUILD)/tests) -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(LIB)
+	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(LIB) $(CURSES_LIBS) -lm -ldl
+
+# Each tests/check_NAME.c exports make_NAME_suite(); the list is generated so
+# adding a suite never means editing the runner.
+$(BUILD)/tests/suites.h: $(TEST_SRC)
+	@mkdir -p $(dir $@)
+	@for f in $(filter-out tests/check_main.c,$(TEST_SRC)); do \
+	    n=$$(basename $$f .c); echo "SW_SUITE(make_$${n#check_}_suite)"; done > $@
+
+$(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
+
+$(TESTBIN): $(TEST_OBJ) $(LIB)
+	$(CC) $(OPT) $(LDSAN) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) -lm -ldl
+
+run: $(BIN)
+	./$(BIN)
+
+unit: $(TESTBIN)
+	$(TESTBIN)
+
+e2e: $(BIN)
+	@sh tests/e2e/run.sh ./$(BIN)
+
+test: $(BIN) $(TESTBIN)
+	$(TESTBIN)
+	@sh tests/e2e/run.sh ./$(BIN)
+
+sanitize:
+	$(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
+
+bench: $(BIN)
+	./$(BIN) bench --engine
+
+install: $(BIN)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	    $(DESTDIR)$(DATADIR)/lessons $(DESTDIR)$(PREFIX)/include/stepwise
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/stepwise
+	install -m 644 docs/stepwise.1 $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1
+	install -m 644 lessons/*.lesson lessons/README.md $(DESTDIR)$(DATADIR)/lessons/
+	install -m 644 include/stepwise/*.h $(DESTDIR)$(PREFIX)/include/stepwise/
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/stepwise $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1
+	rm -rf $(DESTDIR)$(DATADIR) $(DESTDIR)$(PREFIX)/include/stepwise
+
+clean:
+	rm -rf build $(BIN)
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

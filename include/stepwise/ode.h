@@ -1,0 +1,39 @@
+/* The solver's view of a system, as in the lecture (after Witkin & Baraff):
+ * a dimension, a flat state y and a derivative f(t, y) = dy/dt. A second-order
+ * system splits y = [x | v] (each dim/2 long) so that symplectic methods can
+ * update positions and velocities separately. A solver sees nothing else. */
+#ifndef STEPWISE_ODE_H
+#define STEPWISE_ODE_H
+
+#include <stddef.h>
+
+/* dydt = f(t, y); both arrays are dim long and must not alias. */
+typedef void sw_deriv_fn(void *ctx, double t, const double *y, double *dydt);
+
+/* Solve (I - c·J) z = r, J = ∂f/∂y at (t, y); returns 0 or a negative status
+ * when the solve fails. Used by implicit methods only. */
+typedef int sw_solve_fn(void *ctx, double t, const double *y, double c,
+                        const double *r, double *z);
+
+typedef struct sw_ode {
+    int dim;             /* length of the state vector */
+    int order;           /* 1: y = x (flow field); 2: y = [x | v] */
+    sw_deriv_fn *deriv;  /* required */
+    sw_solve_fn *solve;  /* NULL: a dense finite-difference fallback (small dim) */
+    void *ctx;           /* the system behind the callbacks */
+    long evals;          /* derivative evaluations so far (counted by sw_ode_eval) */
+    long solves;         /* linear solves so far */
+    long solver_iters;   /* inner iterations (CG) summed over solves */
+} sw_ode;
+
+/* Evaluate dy/dt and count it: every method goes through this. */
+static inline void sw_ode_eval(sw_ode *ode, double t, const double *y, double *dydt)
+{
+    ode->evals++;
+    ode->deriv(ode->ctx, t, y, dydt);
+}
+
+/* Largest dim for which the dense finite-difference solve is allowed. */
+#define SW_DENSE_MAX 64
+
+#endif

@@ -1,0 +1,86 @@
+/* Particle systems in structure-of-arrays form with force objects (Witkin &
+ * Baraff). The state is one flat array y = [x(2n) | v(2n)]; derivative
+ * evaluation is the lecture's three steps: clear forces, accumulate, return
+ * v and f/m. Contact (walls, ground) is applied after a step, not as a force. */
+#ifndef STEPWISE_PARTICLES_H
+#define STEPWISE_PARTICLES_H
+
+#include <stddef.h>
+#include "stepwise/ode.h"
+
+typedef enum sw_force_kind {
+    SW_FORCE_GRAVITY,  /* f = m·g */
+    SW_FORCE_DRAG,     /* f = -k·v */
+    SW_FORCE_SPRINGS,  /* damped springs between particles or to anchors */
+    SW_FORCE_CENTRAL   /* f = -μ·m·d/|d|³ toward a fixed point */
+} sw_force_kind;
+
+/* A damped spring: f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂, d = x_a - x_b;
+ * b < 0 ties a to the fixed anchor (ax, ay). */
+typedef struct sw_spring {
+    int a, b;
+    double k, c, rest;
+    double ax, ay;
+} sw_spring;
+
+typedef struct sw_force {
+    sw_force_kind kind;
+    double gx, gy;       /* gravity acceleration */
+    double k;            /* drag coefficient */
+    double cx, cy, mu;   /* central attraction */
+    sw_spring *springs;  /* owned by the particle system */
+    int nsprings;
+} sw_force;
+
+/* Axis-aligned walls, applied after each step: a particle that crossed a wall
+ * is reflected back across it and its normal velocity scaled by -e. */
+typedef struct sw_walls {
+    int active;
+    unsigned sides;      /* SW_WALL_* bits */
+    double xmin, xmax, ymin, ymax;
+    double e;            /* restitution, 0..1 */
+} sw_walls;
+
+enum { SW_WALL_FLOOR = 1, SW_WALL_LEFT = 2, SW_WALL_RIGHT = 4, SW_WALL_CEILING = 8 };
+
+#define SW_MAX_FORCES 6
+
+typedef struct sw_particles {
+    sw_ode ode;            /* first member: the solver's view, ctx = this */
+    int n;
+    double *y;             /* [x(2n) | v(2n)], owned */
+    double *mass;          /* n */
+    double *inv_mass;      /* n */
+    sw_force forces[SW_MAX_FORCES];
+    int nforces;
+    sw_walls walls;
+    /* implicit-solve workspace, allocated with the system */
+    double *diag;          /* 6n: ∂f/∂x and ∂f/∂v blocks per particle */
+    double *sblock;        /* 6 per spring: ∂f_a/∂x_a and ∂f_a/∂v_a */
+    double *cg;            /* 6 vectors of 2n for conjugate gradients */
+    int nsprings_total;
+    long cg_iters_last;    /* iterations of the last solve */
+} sw_particles;
+
+/* Allocate a system of n particles of mass `mass`, all at rest at the origin. */
+int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen);
+void sw_particles_free(sw_particles *p);
+/* Add forces; each returns 0 or SW_EINVAL when the force table is full. */
+int sw_particles_add_gravity(sw_particles *p, double gx, double gy);
+int sw_particles_add_drag(sw_particles *p, double k);
+int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
+/* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
+sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
+/* Apply wall contact to y after a step; returns 1 when anything changed. */
+int sw_particles_contact(sw_particles *p, double *y);
+
+/* Per-force Jacobian blocks, for tests: ∂f/∂x and ∂f/∂v of particle i
+ * (symmetric 2x2 as xx, xy, yy), summed over the per-particle forces and the
+ * diagonal spring blocks, at state y. */
+void sw_particles_jacobian_diag(sw_particles *p, const double *y, int i,
+                                double dfdx[3], double dfdv[3]);
+
+/* Kinetic + potential energy of the conservative forces at y. */
+double sw_particles_energy(const sw_particles *p, const double *y);
+
+#endif

@@ -1,0 +1,101 @@
+/* The scene catalog: the lecture's examples as systems. A scene declares its
+ * parameters, builds its system, and gives what it can of an exact solution,
+ * an energy, an invariant, a viewport and its stiffest frequency. A scene
+ * models only what it needs and never draws (drawing is the canvas's job). */
+#ifndef STEPWISE_SCENE_H
+#define STEPWISE_SCENE_H
+
+#include <stddef.h>
+#include "stepwise/ode.h"
+#include "stepwise/flow.h"
+#include "stepwise/particles.h"
+
+#define SW_MAX_PARAMS 8
+
+typedef struct sw_param {
+    const char *name;
+    double def, min, max;   /* default and allowed closed range */
+    int integer;            /* 1: whole numbers only */
+    const char *unit;       /* "" when dimensionless */
+    const char *help;       /* one line */
+} sw_param;
+
+typedef enum sw_system_kind { SW_SYS_FLOW = 1, SW_SYS_PARTICLES = 2 } sw_system_kind;
+
+typedef struct sw_view { double xmin, xmax, ymin, ymax; } sw_view;
+
+struct sw_scene;
+
+/* A built scene: the system the solver steps plus the parameter values. */
+typedef struct sw_system {
+    const struct sw_scene *scene;
+    sw_system_kind kind;
+    double p[SW_MAX_PARAMS];  /* parameter values, in the scene's order */
+    int n;                    /* particles (or flow points) */
+    sw_ode *ode;              /* &flow.ode or &particles.ode */
+    double *y;                /* the state, ode->dim doubles */
+    sw_flow flow;
+    sw_particles particles;
+    double *extra;            /* scene-owned data (fireworks: birth times), or NULL */
+    int nextra;
+} sw_system;
+
+typedef struct sw_scene {
+    const char *name;
+    const char *summary;      /* one line for `list scenes` */
+    const char *teaches;      /* one sentence: the hard case it is there to show */
+    const sw_param *params;
+    int nparams;
+    double dt;                /* default step */
+    const char *integrator;   /* default method name */
+    double duration;          /* report time for bench and error */
+    /* Build the system from sys->p; 0 or a status with err filled. */
+    int (*build)(sw_system *sys, char *err, size_t errlen);
+    /* Exact state at time t into y (ode->dim doubles); 0, or -1 when these
+     * parameters have no closed form. NULL: never. */
+    int (*exact)(const sw_system *sys, double t, double *y);
+    /* Total energy at y; NULL when the scene defines none. */
+    double (*energy)(const sw_system *sys, const double *y);
+    /* How far a quantity exact paths keep constant (stream function, angular
+     * momentum, radius) has drifted from its start: 0 on exact paths. NULL
+     * when the scene has none. */
+    double (*drift)(const sw_system *sys, const double *y);
+    const char *drift_name;
+    /* 1 when a tight-tolerance rk45 run is a trustworthy reference (0 where
+     * events at step boundaries make every run, rk45 too, only first order). */
+    int reference;
+    /* Stiffest angular frequency; NULL when unknown. */
+    double (*omega_max)(const sw_system *sys);
+    sw_view (*view)(const sw_system *sys);
+    /* After each step: contact, births and deaths. Returns 1 when y changed. */
+    int (*post_step)(sw_system *sys, double t, double *y);
+    /* Whether particle i exists at time t (fireworks); NULL: always. */
+    int (*alive)(const sw_system *sys, double t, const double *y, int i);
+} sw_scene;
+
+int sw_scene_count(void);
+const sw_scene *sw_scene_at(int index);
+/* Find a scene by exact name; NULL when unknown. */
+const sw_scene *sw_scene_find(const char *name);
+/* Index of a parameter by name, or -1. */
+int sw_scene_param_index(const sw_scene *sc, const char *name);
+/* Fill p with the defaults. */
+void sw_scene_defaults(const sw_scene *sc, double *p);
+/* Parse "NAME=VALUE" into p, checking name, number and range; 0 or SW_EINVAL
+ * with a message naming what was wrong and what is allowed. */
+int sw_scene_set(const sw_scene *sc, double *p, const char *assignment, char *err, size_t errlen);
+/* Check one value against a parameter's declared range. */
+int sw_scene_check_value(const sw_scene *sc, int index, double value, char *err, size_t errlen);
+
+/* Build sc with parameter values p (NULL: defaults); 0 or a status. */
+int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *err, size_t errlen);
+void sw_system_free(sw_system *sys);
+/* Reset the state to the scene's initial state (rebuilds in place). */
+int sw_system_reset(sw_system *sys, char *err, size_t errlen);
+
+/* Parse a finite double in full; 0 or SW_EINVAL. Shared by every parser. */
+int sw_parse_double(const char *text, double *out);
+/* Parse a whole number in [min, max]; 0 or SW_EINVAL. */
+int sw_parse_long(const char *text, long min, long max, long *out);
+
+#endif

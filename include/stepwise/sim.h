@@ -1,0 +1,60 @@
+/* A running simulation: a built scene, an integrator and its workspace, the
+ * clock, counters, and blow-up detection. The TUI, the recorder, the checker
+ * and the benchmarks all advance a sim the same way, so a trace recorded in
+ * one equals a trace recorded in another, bit for bit. */
+#ifndef STEPWISE_SIM_H
+#define STEPWISE_SIM_H
+
+#include <stddef.h>
+#include "stepwise/stepwise.h"
+#include "stepwise/integrator.h"
+#include "stepwise/scene.h"
+
+typedef struct sw_sim {
+    sw_system sys;
+    sw_stepper stepper;
+    const sw_integrator *method;
+    double dt;             /* fixed step (rk45: initial and largest step) */
+    double t;
+    long steps;
+    double energy0;        /* energy at t = 0 (NaN when the scene has none) */
+    double runaway;        /* a state component beyond this counts as a blow-up */
+    int blown;             /* 1 once the state went non-finite or ran away */
+    long blow_step;
+    double blow_time;
+    char blow_reason[SW_ERRLEN];
+} sw_sim;
+
+/* Limits on the step that every front end accepts. */
+#define SW_DT_MIN 1e-9
+#define SW_DT_MAX 1e3
+
+/* Build scene sc (p NULL: defaults) under method m with step dt; 0 or a status. */
+int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integrator *m,
+                double dt, char *err, size_t errlen);
+void sw_sim_free(sw_sim *s);
+/* Change the method and keep the state and time; 0 or SW_EINVAL. */
+int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errlen);
+/* Change the step size; dt must lie in [SW_DT_MIN, SW_DT_MAX]. */
+int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen);
+/* Back to the initial state at t = 0 with counters cleared. */
+int sw_sim_reset(sw_sim *s, char *err, size_t errlen);
+/* One step (rk45: one accepted step, never past t_stop when t_stop > t).
+ * Returns 0, or 1 when the sim has blown up (now or before). */
+int sw_sim_step_until(sw_sim *s, double t_stop);
+int sw_sim_step(sw_sim *s);
+/* Step until t >= t_end (landing on it exactly) or a blow-up; 0 or 1. */
+int sw_sim_run_until(sw_sim *s, double t_end);
+/* Derivative evaluations so far. */
+long sw_sim_evals(const sw_sim *s);
+/* Energy now, and its drift (E - E0)/|E0| in percent; NaN when undefined. */
+double sw_sim_energy(const sw_sim *s);
+double sw_sim_energy_drift(const sw_sim *s);
+/* Largest absolute state error against the exact solution; NaN if none. */
+double sw_sim_exact_error(const sw_sim *s, double *scratch);
+/* The scene's invariant drift now (0 on exact paths); NaN when none. */
+double sw_sim_drift(const sw_sim *s);
+/* Whether particle i is to be drawn now. */
+int sw_sim_alive(const sw_sim *s, int i);
+
+#endif

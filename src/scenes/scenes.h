@@ -1,0 +1,20 @@
+/* Private to the scene files: the scene objects and the helpers they share. */
+#ifndef SW_SCENES_H
+#define SW_SCENES_H
+
+#include "stepwise/scene.h"
+
+extern const sw_scene sw_scene_vortex, sw_scene_river, sw_scene_gyre;
+extern const sw_scene sw_scene_projectile, sw_scene_bounce, sw_scene_fireworks;
+extern const sw_scene sw_scene_spring, sw_scene_stiff_spring, sw_scene_chain;
+extern const sw_scene sw_scene_orbit;
+
+/* Set sys up as a flow of n points under field (jac may be NULL). */
+int sw_scene_flow(sw_system *sys, int n, sw_field_fn *field, sw_field_jac_fn *jac,
+                  char *err, size_t errlen);
+/* Set sys up as n particles of mass m, all at rest at the origin. */
+int sw_scene_particles(sw_system *sys, int n, double m, char *err, size_t errlen);
+/* Energy of a particle scene: the particle system's own energy. */
+double sw_scene_particle_energy(const sw_system *sys, const double *y);
+
+#endif

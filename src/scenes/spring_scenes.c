@@ -1,0 +1,251 @@
+/* Springs: one damped mass on a spring (exact in all three damping regimes),
+ * the stiff-spring pendulum (a slow swing and a fast stretch in one system),
+ * and a chain of masses between two anchors. Only springs, gravity when
+ * asked for, and nothing else. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "scenes/scenes.h"
+
+#define PI 3.14159265358979323846
+
+/* ---- spring --------------------------------------------------------------- */
+
+enum { SP_K, SP_M, SP_C, SP_REST, SP_STRETCH, SP_G };
+static const sw_param spring_params[] = {
+    { "k", 10.0, 0.001, 1e7, 0, "N/m", "spring stiffness" },
+    { "m", 1.0, 0.001, 1000.0, 0, "kg", "mass" },
+    { "c", 0.5, 0.0, 1e5, 0, "N s/m", "damping along the spring" },
+    { "rest", 1.0, 0.0, 100.0, 0, "m", "rest length" },
+    { "stretch", 0.5, -100.0, 100.0, 0, "m", "initial stretch beyond the rest length" },
+    { "g", 0.0, -100.0, 100.0, 0, "m/s^2", "gravity, pointing down (0: none)" },
+};
+
+static int spring_build(sw_system *sys, char *err, size_t errlen)
+{
+    const double *p = sys->p;
+    if (!(p[SP_REST] + p[SP_STRETCH] > 0)) {
+        snprintf(err, errlen, "spring: rest + stretch must be positive (got %g + %g); "
+                 "the mass starts at (rest + stretch, 0)", p[SP_REST], p[SP_STRETCH]);
+        return SW_EINVAL;
+    }
+    int rc = sw_scene_particles(sys, 1, p[SP_M], err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    sw_spring *s = sw_particles_add_springs(&sys->particles, 1);
+    if (!s) {
+        snprintf(err, errlen, "out of memory for a spring");
+        return SW_ENOMEM;
+    }
+    *s = (sw_spring){ .a = 0, .b = -1, .k = p[SP_K], .c = p[SP_C], .rest = p[SP_REST] };
+    if (p[SP_G] != 0)
+        sw_particles_add_gravity(&sys->particles, 0.0, -p[SP_G]);
+    sys->y[0] = p[SP_REST] + p[SP_STRETCH];
+    return SW_OK;
+}
+
+/* u = x - rest obeys m u'' + c u' + k u = 0 with u(0) = stretch, u'(0) = 0.
+ * γ = c/2m, ω0 = √(k/m): under-damped (γ < ω0), critical, over-damped. */
+static void damped(double m, double k, double c, double u0, double t, double *u, double *du)
+{
+    double g = c / (2 * m), w0 = sqrt(k / m), z = g / w0;
+    double e = exp(-g * t);
+    if (fabs(z - 1.0) < 1e-9) {
+        double b = g * u0;
+        *u = e * (u0 + b * t);
+        *du = e * (b - g * (u0 + b * t));
+    } else if (z < 1.0) {
+        double wd = w0 * sqrt(1 - z * z), b = g * u0 / wd;
+        double cs = cos(wd * t), sn = sin(wd * t);
+        *u = e * (u0 * cs + b * sn);
+        *du = e * ((-u0 * wd + b * (-g)) * sn + (b * wd - g * u0) * cs);
+    } else {
+        double s = w0 * sqrt(z * z - 1), r1 = -g + s, r2 = -g - s;
+        double c1 = -r2 * u0 / (r1 - r2), c2 = u0 - c1;
+        double e1 = exp(r1 * t), e2 = exp(r2 * t);
+        *u = c1 * e1 + c2 * e2;
+        *du = c1 * r1 * e1 + c2 * r2 * e2;
+    }
+}
+
+static int spring_exact(const sw_system *sys, double t, double *y)
+{
+    const double *p = sys->p;
+    if (p[SP_G] != 0)
+        return -1; /* gravity makes the motion two-dimensional */
+    double u, du;
+    damped(p[SP_M], p[SP_K], p[SP_C], p[SP_STRETCH], t, &u, &du);
+    y[0] = p[SP_REST] + u;
+    y[1] = 0;
+    y[2] = du;
+    y[3] = 0;
+    return 0;
+}
+
+/* Spectral radius of [[0, 1], [-k/m, -c/m]]: ω0 when under-damped, else the
+ * faster decay rate γ + √(γ² - ω0²). */
+static double spring_omega(const sw_system *sys)
+{
+    const double *p = sys->p;
+    double g = p[SP_C] / (2 * p[SP_M]), w0 = sqrt(p[SP_K] / p[SP_M]);
+    return g < w0 ? w0 : g + sqrt(g * g - w0 * w0);
+}
+
+static sw_view spring_view(const sw_system *sys)
+{
+    const double *p = sys->p;
+    double r = p[SP_REST] + fabs(p[SP_STRETCH]) + 0.3;
+    double sag = p[SP_G] != 0 ? fabs(p[SP_G]) * p[SP_M] / p[SP_K] : 0.0;
+    double ext = fmax(r + sag, 0.6 * r);
+    return (sw_view){ -0.3 - (p[SP_G] != 0 ? ext : 0), ext, -ext * 0.5 - sag, ext * 0.5 };
+}
+
+const sw_scene sw_scene_spring = {
+    .name = "spring",
+    .summary = "one mass on a damped spring to a fixed anchor; exact in every damping regime",
+    .teaches = "Undamped, explicit Euler gains energy every step: (1 + (w dt)^2) per step.",
+    .params = spring_params,
+    .nparams = 6,
+    .dt = 0.02,
+    .integrator = "euler",
+    .duration = 10.0,
+    .build = spring_build,
+    .exact = spring_exact,
+    .energy = sw_scene_particle_energy,
+    .omega_max = spring_omega,
+    .reference = 1,
+    .view = spring_view,
+};
+
+/* ---- stiff-spring: a pendulum on a very stiff spring ------------------- */
+
+enum { SS_K, SS_M, SS_REST, SS_G, SS_ANGLE };
+static const sw_param stiff_params[] = {
+    { "k", 1e4, 1.0, 1e9, 0, "N/m", "spring stiffness (large: stiff)" },
+    { "m", 1.0, 0.001, 1000.0, 0, "kg", "mass of the bob" },
+    { "rest", 1.0, 0.05, 100.0, 0, "m", "rest length of the spring" },
+    { "g", 9.81, 0.0, 100.0, 0, "m/s^2", "gravity, pointing down" },
+    { "angle", 30.0, -179.0, 179.0, 0, "deg", "starting angle from straight down" },
+};
+
+static int stiff_build(sw_system *sys, char *err, size_t errlen)
+{
+    const double *p = sys->p;
+    int rc = sw_scene_particles(sys, 1, p[SS_M], err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    sw_spring *s = sw_particles_add_springs(&sys->particles, 1);
+    if (!s) {
+        snprintf(err, errlen, "out of memory for a spring");
+        return SW_ENOMEM;
+    }
+    *s = (sw_spring){ .a = 0, .b = -1, .k = p[SS_K], .c = 0.0, .rest = p[SS_REST] };
+    sw_particles_add_gravity(&sys->particles, 0.0, -p[SS_G]);
+    /* Start at rest, stretched by the static sag m g / k, at the given angle. */
+    double len = p[SS_REST] + p[SS_M] * p[SS_G] / p[SS_K], a = p[SS_ANGLE] * PI / 180.0;
+    sys->y[0] = len * sin(a);
+    sys->y[1] = -len * cos(a);
+    return SW_OK;
+}
+
+static double stiff_omega(const sw_system *sys) { return sqrt(sys->p[SS_K] / sys->p[SS_M]); }
+
+static sw_view stiff_view(const sw_system *sys)
+{
+    double r = sys->p[SS_REST] * 1.25 + 0.1;
+    return (sw_view){ -r, r, -r, 0.25 * r };
+}
+
+const sw_scene sw_scene_stiff_spring = {
+    .name = "stiff-spring",
+    .summary = "a pendulum hung on a very stiff spring: a slow swing and a fast stretch",
+    .teaches = "Stiffness: explicit methods need w dt below their limit; implicit ones do not.",
+    .params = stiff_params,
+    .nparams = 5,
+    .dt = 0.005,
+    .integrator = "verlet",
+    .duration = 2.0,
+    .build = stiff_build,
+    .energy = sw_scene_particle_energy,
+    .omega_max = stiff_omega,
+    .reference = 1,
+    .view = stiff_view,
+};
+
+/* ---- chain: n masses joined by n + 1 springs between two anchors ------- */
+
+enum { CH_N, CH_K, CH_M, CH_C, CH_REST, CH_G, CH_PLUCK };
+static const sw_param chain_params[] = {
+    { "n", 10, 1, 100000, 1, "", "number of masses" },
+    { "k", 100.0, 0.001, 1e7, 0, "N/m", "stiffness of each spring" },
+    { "m", 1.0, 0.001, 1000.0, 0, "kg", "mass of each bead" },
+    { "c", 0.0, 0.0, 1e4, 0, "N s/m", "damping of each spring" },
+    { "rest", 1.0, 0.01, 100.0, 0, "m", "rest length of each spring (and the spacing)" },
+    { "g", 0.0, -100.0, 100.0, 0, "m/s^2", "gravity, pointing down" },
+    { "pluck", 0.5, -10.0, 10.0, 0, "m", "initial sideways displacement of the middle mass" },
+};
+
+static int chain_build(sw_system *sys, char *err, size_t errlen)
+{
+    const double *p = sys->p;
+    int n = (int)p[CH_N];
+    int rc = sw_scene_particles(sys, n, p[CH_M], err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    sw_spring *s = sw_particles_add_springs(&sys->particles, n + 1);
+    if (!s) {
+        snprintf(err, errlen, "out of memory for %d springs", n + 1);
+        return SW_ENOMEM;
+    }
+    double L = p[CH_REST];
+    for (int j = 0; j <= n; j++) {
+        /* spring j joins mass j-1 (or the left anchor) and mass j (or the right). */
+        s[j] = (sw_spring){ .k = p[CH_K], .c = p[CH_C], .rest = L };
+        if (j == 0)
+            s[j].a = 0, s[j].b = -1, s[j].ax = 0.0, s[j].ay = 0.0;
+        else if (j == n)
+            s[j].a = n - 1, s[j].b = -1, s[j].ax = (n + 1) * L, s[j].ay = 0.0;
+        else
+            s[j].a = j, s[j].b = j - 1;
+    }
+    if (p[CH_G] != 0)
+        sw_particles_add_gravity(&sys->particles, 0.0, -p[CH_G]);
+    for (int i = 0; i < n; i++)
+        sys->y[2 * i] = (i + 1) * L;
+    sys->y[2 * (n / 2) + 1] = p[CH_PLUCK];
+    return SW_OK;
+}
+
+/* Highest longitudinal mode of a fixed-fixed chain: 2√(k/m)·sin(nπ/(2(n+1))). */
+static double chain_omega(const sw_system *sys)
+{
+    const double *p = sys->p;
+    double n = p[CH_N];
+    return 2.0 * sqrt(p[CH_K] / p[CH_M]) * sin(n * PI / (2.0 * (n + 1.0)));
+}
+
+static sw_view chain_view(const sw_system *sys)
+{
+    const double *p = sys->p;
+    double w = (p[CH_N] + 1) * p[CH_REST], h = fmax(fabs(p[CH_PLUCK]) * 1.4, 0.15 * w);
+    double sag = p[CH_G] != 0 ? fmin(w, fabs(p[CH_G]) * p[CH_M] * p[CH_N] * p[CH_N] / (8 * p[CH_K]) + 0.3) : 0;
+    return (sw_view){ -0.05 * w, 1.05 * w, -h - (p[CH_G] > 0 ? sag : 0), h + (p[CH_G] < 0 ? sag : 0) };
+}
+
+const sw_scene sw_scene_chain = {
+    .name = "chain",
+    .summary = "n masses in a line joined by springs between two fixed anchors",
+    .teaches = "The stiffest mode sets the step: w_max dt must stay below each method's limit.",
+    .params = chain_params,
+    .nparams = 7,
+    .dt = 0.01,
+    .integrator = "verlet",
+    .duration = 5.0,
+    .build = chain_build,
+    .energy = sw_scene_particle_energy,
+    .omega_max = chain_omega,
+    .reference = 1,
+    .view = chain_view,
+};

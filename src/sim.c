@@ -1,0 +1,197 @@
+/* A running simulation: scene + integrator + clock + counters + blow-up.
+ * Every front end advances a sim through sw_sim_step_until, so the same
+ * settings give the same states, bit for bit. A sim holds pointers into
+ * itself (the system's callbacks) and must not be moved once initialised. */
+#include "stepwise/sim.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+static double max_abs(int n, const double *v)
+{
+    double m = 0;
+    for (int i = 0; i < n; i++)
+        if (fabs(v[i]) > m)
+            m = fabs(v[i]);
+    return m;
+}
+
+/* A state is "runaway" once any component exceeds a million times the
+ * scene's size: far past anything on screen, long before overflow. */
+static void set_limits(sw_sim *s)
+{
+    sw_view v = s->sys.scene->view(&s->sys);
+    double span = fmax(fmax(fabs(v.xmin), fabs(v.xmax)), fmax(fabs(v.ymin), fabs(v.ymax)));
+    s->runaway = 1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y));
+    s->energy0 = sw_sim_energy(s);
+}
+
+int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                char *err, size_t errlen)
+{
+    memset(s, 0, sizeof *s);
+    if (!(dt >= SW_DT_MIN && dt <= SW_DT_MAX)) {
+        snprintf(err, errlen, "dt = %g is outside [%g, %g]", dt, SW_DT_MIN, SW_DT_MAX);
+        return SW_EINVAL;
+    }
+    int rc = sw_system_build(&s->sys, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    rc = sw_stepper_init(&s->stepper, m, s->sys.ode, err, errlen);
+    if (rc != SW_OK) {
+        sw_system_free(&s->sys);
+        return rc;
+    }
+    s->method = m;
+    s->dt = dt;
+    set_limits(s);
+    return SW_OK;
+}
+
+void sw_sim_free(sw_sim *s)
+{
+    sw_stepper_free(&s->stepper);
+    sw_system_free(&s->sys);
+}
+
+int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
+{
+    sw_stepper next;
+    int rc = sw_stepper_init(&next, m, s->sys.ode, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    next.rtol = s->stepper.rtol;
+    next.atol = s->stepper.atol;
+    sw_stepper_free(&s->stepper);
+    s->stepper = next;
+    s->method = m;
+    return SW_OK;
+}
+
+int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
+{
+    if (!(dt >= SW_DT_MIN && dt <= SW_DT_MAX)) {
+        snprintf(err, errlen, "dt = %g is outside [%g, %g]", dt, SW_DT_MIN, SW_DT_MAX);
+        return SW_EINVAL;
+    }
+    s->dt = dt;
+    s->stepper.h_next = 0;
+    return SW_OK;
+}
+
+int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
+{
+    int rc = sw_system_reset(&s->sys, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    double rtol = s->stepper.rtol, atol = s->stepper.atol;
+    sw_stepper_free(&s->stepper);
+    rc = sw_stepper_init(&s->stepper, s->method, s->sys.ode, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    s->stepper.rtol = rtol;
+    s->stepper.atol = atol;
+    s->t = 0;
+    s->steps = 0;
+    s->blown = 0;
+    s->blow_step = 0;
+    s->blow_time = 0;
+    s->blow_reason[0] = '\0';
+    set_limits(s);
+    return SW_OK;
+}
+
+static void blow_up(sw_sim *s, const char *why)
+{
+    s->blown = 1;
+    s->blow_step = s->steps;
+    s->blow_time = s->t;
+    snprintf(s->blow_reason, sizeof s->blow_reason, "%s", why);
+}
+
+int sw_sim_step_until(sw_sim *s, double t_stop)
+{
+    if (s->blown)
+        return 1;
+    double h = s->dt;
+    if (t_stop > s->t && s->t + h > t_stop)
+        h = t_stop - s->t;
+    double *y = s->sys.y;
+    int rc = sw_stepper_step(&s->stepper, s->sys.ode, &s->t, y, h);
+    s->steps++;
+    if (rc != SW_OK) {
+        blow_up(s, (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
+                                                    : "the implicit solve did not converge");
+        return 1;
+    }
+    const sw_scene *sc = s->sys.scene;
+    if (sc->post_step && sc->post_step(&s->sys, s->t, y))
+        sw_stepper_touch(&s->stepper);
+    int n = s->sys.ode->dim;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(y[i])) {
+            blow_up(s, "the state became non-finite (NaN or infinity)");
+            return 1;
+        }
+        if (fabs(y[i]) > s->runaway) {
+            blow_up(s, "the state ran away (beyond a million times the scene size)");
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int sw_sim_step(sw_sim *s) { return sw_sim_step_until(s, 0.0); }
+
+int sw_sim_run_until(sw_sim *s, double t_end)
+{
+    while (t_end - s->t > 1e-9 * s->dt)
+        if (sw_sim_step_until(s, t_end))
+            return 1;
+    return s->blown;
+}
+
+long sw_sim_evals(const sw_sim *s) { return s->sys.ode->evals; }
+
+double sw_sim_energy(const sw_sim *s)
+{
+    const sw_scene *sc = s->sys.scene;
+    return sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN;
+}
+
+double sw_sim_energy_drift(const sw_sim *s)
+{
+    double e = sw_sim_energy(s);
+    if (!(fabs(s->energy0) > 0))
+        return NAN;
+    return 100.0 * (e - s->energy0) / fabs(s->energy0);
+}
+
+double sw_sim_exact_error(const sw_sim *s, double *scratch)
+{
+    const sw_scene *sc = s->sys.scene;
+    if (!sc->exact || sc->exact(&s->sys, s->t, scratch) != 0)
+        return NAN;
+    double m = 0;
+    for (int i = 0; i < s->sys.ode->dim; i++) {
+        double d = fabs(s->sys.y[i] - scratch[i]);
+        if (!(d <= m))
+            m = d;
+    }
+    return m;
+}
+
+double sw_sim_drift(const sw_sim *s)
+{
+    const sw_scene *sc = s->sys.scene;
+    return sc->drift ? sc->drift(&s->sys, s->sys.y) : NAN;
+}
+
+int sw_sim_alive(const sw_sim *s, int i)
+{
+    const sw_scene *sc = s->sys.scene;
+    return sc->alive ? sc->alive(&s->sys, s->t, s->sys.y, i) : 1;
+}

@@ -1,0 +1,24 @@
+#!/bin/sh
+# Make sure the build and test dependencies are present: ncursesw and Check
+# (found through pkg-config) and tmux (end-to-end tests). Installs them with
+# apt-get when running as root or with password-less sudo; otherwise prints
+# the exact command to run and fails.
+pkgs="libncurses-dev check pkg-config tmux"
+have() { command -v "$1" >/dev/null 2>&1; }
+if have pkg-config && pkg-config --exists ncursesw check && have tmux; then
+    exit 0
+fi
+if [ "$(id -u)" = 0 ]; then
+    sudo=""
+elif have sudo && sudo -n true 2>/dev/null; then
+    sudo="sudo"
+else
+    echo "stepwise: missing build dependencies; install them with:" >&2
+    echo "    sudo apt-get install -y $pkgs" >&2
+    exit 1
+fi
+echo "stepwise: installing $pkgs" >&2
+$sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $pkgs >/dev/null || {
+    echo "stepwise: apt-get install failed; run: sudo apt-get install -y $pkgs" >&2
+    exit 1
+}

@@ -18,7 +18,7 @@ LDSAN   = -fsanitize=address,undefined
 endif
 
 DATADIR  = $(PREFIX)/share/stepwise
-CPPFLAGS = -Iinclude -Isrc -D_XOPEN_SOURCE=700 -D_XOPEN_SOURCE_EXTENDED -D_DEFAULT_SOURCE \
+CPPFLAGS = -Iinclude -Isrc -D_DEFAULT_SOURCE -D_XOPEN_SOURCE=600 -D_XOPEN_SOURCE_EXTENDED \
            -DSW_DATADIR='"$(DATADIR)"'
 CFLAGS  ?=
 ALL_CFLAGS = -std=c11 $(OPT) $(WARN) $(CFLAGS) -MMD -MP
@@ -32,9 +32,10 @@ CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 # The engine library: everything but main.c and the ncurses front end. The
 # canvas rasteriser lives in tui/ but is pure C, so it belongs to the library.
 TUI_SRC  = $(filter-out src/tui/canvas.c,$(wildcard src/tui/*.c))
-LIB_SRC  = $(filter-out src/main.c $(TUI_SRC),$(wildcard src/*.c src/*/*.c))
+CLI_SRC  = $(wildcard src/cli/*.c)
+LIB_SRC  = $(filter-out src/main.c $(TUI_SRC) $(CLI_SRC),$(wildcard src/*.c src/*/*.c))
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
-TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o)
+TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o) $(CLI_SRC:%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/src/main.o
 TEST_SRC = $(wildcard tests/check_*.c)
 TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o)

@@ -1,19 +1,61 @@
-/* stepwise: the command line. Parses subcommands and hands them to the lab,
- * lesson and tui layers. Only this file and the TUI talk to the user. */
+/* stepwise: the command line. Dispatches subcommands to the front ends in
+ * src/cli/ and src/tui/; with no arguments it opens the lesson menu. */
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
-#include "stepwise/stepwise.h"
-#include "stepwise/scene.h"
-#include "stepwise/sim.h"
+#include "cli/cli.h"
+
+static const struct command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} commands[] = {
+    { "lesson", sw_cmd_lesson, "open the lesson menu, a lesson, or lint lesson files" },
+    { "play", sw_cmd_play, "run a scene live in the terminal" },
+    { "record", sw_cmd_record, "run a scene headless and write a step trace" },
+    { "check", sw_cmd_check, "compare a trace with a reference (homework grading)" },
+    { "list", sw_cmd_list, "list scenes, integrators or lessons" },
+    { "describe", sw_cmd_describe, "show a scene's parameters and what it teaches" },
+    { "bench", sw_cmd_bench, "work-precision report: error against cost for each method" },
+    { "stability", sw_cmd_stability, "find each method's largest stable step on a scene" },
+};
+
+#define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
+
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: stepwise [COMMAND] [OPTIONS]\n\n"
+                 "Numerical integration of particle systems, taught in a terminal.\n"
+                 "With no command, opens the lesson menu.\n\ncommands:\n");
+    for (int i = 0; i < NCOMMANDS; i++)
+        fprintf(out, "  %-10s %s\n", commands[i].name, commands[i].summary);
+    fprintf(out, "\n'stepwise COMMAND --help' describes a command; 'man stepwise' has the rest.\n"
+                 "options:\n  -h, --help     this help\n  -V, --version  print the version\n");
+}
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "--version") == 0) {
-        printf("stepwise %s\n", SW_VERSION);
-        return 0;
+    if (argc < 2) {
+        char *lesson_argv[] = { "lesson", NULL };
+        return sw_cmd_lesson(1, lesson_argv);
     }
-    for (int i = 0; i < sw_scene_count(); i++)
-        printf("%-14s %s\n", sw_scene_at(i)->name, sw_scene_at(i)->summary);
-    return 0;
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+        usage(stdout);
+        return SW_EXIT_OK;
+    }
+    if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
+        printf("stepwise %s\n", SW_VERSION);
+        return SW_EXIT_OK;
+    }
+    for (int i = 0; i < NCOMMANDS; i++)
+        if (strcmp(cmd, commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
+    if (cmd[0] == '-')
+        sw_cli_error("unknown option '%.40s'; try 'stepwise --help'", cmd);
+    else
+        sw_cli_error("unknown command '%.40s'; commands: lesson, play, record, check, list, "
+                     "describe, bench, stability", cmd);
+    return SW_EXIT_USAGE;
 }

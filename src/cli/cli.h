@@ -1,0 +1,62 @@
+/* The command-line front ends: one function per subcommand, each taking its
+ * own argv (argv[0] is the command name) and returning the exit status:
+ * 0 success, 1 a failed check, 2 bad input. Only this layer and the TUI
+ * print. */
+#ifndef SW_CLI_H
+#define SW_CLI_H
+
+#include <stdio.h>
+
+#include "stepwise/stepwise.h"
+#include "stepwise/scene.h"
+#include "stepwise/sim.h"
+
+int sw_cmd_list(int argc, char **argv);
+int sw_cmd_describe(int argc, char **argv);
+int sw_cmd_record(int argc, char **argv);
+int sw_cmd_check(int argc, char **argv);
+int sw_cmd_play(int argc, char **argv);
+int sw_cmd_lesson(int argc, char **argv);
+int sw_cmd_bench(int argc, char **argv);
+int sw_cmd_stability(int argc, char **argv);
+
+/* Exit statuses. */
+enum { SW_EXIT_OK = 0, SW_EXIT_FAIL = 1, SW_EXIT_USAGE = 2 };
+
+/* Print "stepwise: <message>" on stderr; returns SW_EXIT_USAGE. */
+int sw_cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Settings shared by record, play, check and the lab: what to run and how. */
+typedef struct sw_run_opts {
+    const sw_scene *scene;
+    double p[SW_MAX_PARAMS];
+    const sw_integrator *method;  /* NULL: the scene's default */
+    double dt;                    /* 0: the scene's default */
+    double rtol, atol;            /* rk45 tolerances */
+    const char *sets[64];         /* --set assignments, applied once the scene is known */
+    int nsets;
+} sw_run_opts;
+
+/* Look up a scene / an integrator by name; on failure print what is allowed
+ * and return SW_EXIT_USAGE. */
+int sw_cli_scene(const char *name, const sw_scene **out);
+int sw_cli_integrator(const char *name, const sw_integrator **out);
+/* Parse a step size in [SW_DT_MIN, SW_DT_MAX] for flag `flag`. */
+int sw_cli_dt(const char *flag, const char *text, double *out);
+/* Parse a positive finite double for flag `flag`. */
+int sw_cli_positive(const char *flag, const char *text, double *out);
+/* Parse a whole number in [min, max] for flag `flag`. */
+int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
+/* Queue a --set assignment; checked by sw_cli_finish_opts. */
+int sw_cli_add_set(sw_run_opts *o, const char *assignment);
+/* Load a --plugin shared object and register its integrator. */
+int sw_cli_plugin(const char *path);
+/* Once the scene is known: defaults, --set values, default method and dt. */
+int sw_cli_finish_opts(sw_run_opts *o);
+/* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */
+int sw_cli_sim(sw_sim *s, const sw_run_opts *o);
+
+/* Where the lesson files are: $STEPWISE_LESSONS, ./lessons, or the install dir. */
+const char *sw_cli_lessons_dir(void);
+
+#endif

@@ -1,0 +1,139 @@
+/* `list` and `describe`: what the catalog holds, in plain text. */
+#include "cli/cli.h"
+
+#include <dirent.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int has_help(int argc, char **argv, const char *text)
+{
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(text, stdout);
+            return 1;
+        }
+    return 0;
+}
+
+static void list_scenes(void)
+{
+    for (int i = 0; i < sw_scene_count(); i++)
+        printf("%-14s %s\n", sw_scene_at(i)->name, sw_scene_at(i)->summary);
+}
+
+static void list_integrators(void)
+{
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        const sw_integrator *m = sw_integrator_at(i);
+        char evals[16];
+        snprintf(evals, sizeof evals, "%d%s", m->evals, (m->flags & SW_IMPLICIT) ? "+solve" : "");
+        printf("%-18s order %d  evals/step %-8s %s\n", m->name, m->order, evals, m->label);
+    }
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+static int list_lessons(void)
+{
+    const char *dir = sw_cli_lessons_dir();
+    DIR *d = opendir(dir);
+    if (!d)
+        return sw_cli_error("no lessons directory at '%s' (set STEPWISE_LESSONS)", dir);
+    char *names[256];
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && n < 256) {
+        size_t len = strlen(e->d_name);
+        if (len > 7 && strcmp(e->d_name + len - 7, ".lesson") == 0)
+            names[n++] = strdup(e->d_name);
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof names[0], cmp_str);
+    for (int i = 0; i < n; i++) {
+        printf("%s\n", names[i]);
+        free(names[i]);
+    }
+    return SW_EXIT_OK;
+}
+
+int sw_cmd_list(int argc, char **argv)
+{
+    if (has_help(argc, argv, "usage: stepwise list [scenes|integrators|lessons]\n\n"
+                             "With no argument, lists scenes and integrators.\n"))
+        return SW_EXIT_OK;
+    if (argc > 2)
+        return sw_cli_error("list takes at most one argument: scenes, integrators or lessons");
+    const char *what = argc > 1 ? argv[1] : "";
+    if (strcmp(what, "scenes") == 0)
+        list_scenes();
+    else if (strcmp(what, "integrators") == 0)
+        list_integrators();
+    else if (strcmp(what, "lessons") == 0)
+        return list_lessons();
+    else if (!*what) {
+        printf("scenes:\n");
+        list_scenes();
+        printf("\nintegrators:\n");
+        list_integrators();
+    } else
+        return sw_cli_error("cannot list '%.40s'; choose scenes, integrators or lessons", what);
+    return SW_EXIT_OK;
+}
+
+int sw_cmd_describe(int argc, char **argv)
+{
+    if (has_help(argc, argv, "usage: stepwise describe SCENE\n\n"
+                             "Prints the scene's parameters (default, range, unit), its initial\n"
+                             "state, its defaults and what it teaches.\n"))
+        return SW_EXIT_OK;
+    if (argc != 2)
+        return sw_cli_error("describe takes one scene name; see 'stepwise list scenes'");
+    const sw_scene *sc;
+    if (sw_cli_scene(argv[1], &sc) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    printf("%s — %s\n\nteaches: %s\n\nparameters (change with --set NAME=VALUE):\n", sc->name,
+           sc->summary, sc->teaches);
+    for (int i = 0; i < sc->nparams; i++) {
+        const sw_param *p = &sc->params[i];
+        char range[64];
+        snprintf(range, sizeof range, "[%g, %g]%s", p->min, p->max, p->integer ? " whole" : "");
+        printf("  %-8s = %-10g %-22s %-8s %s\n", p->name, p->def, range, p->unit, p->help);
+    }
+    printf("\ndefaults: integrator %s, dt %g, report time %g\n", sc->integrator, sc->dt, sc->duration);
+    printf("knows:");
+    printf("%s", sc->exact ? " exact solution;" : sc->reference ? " rk45 reference;" : " no reference;");
+    printf("%s", sc->energy ? " energy;" : "");
+    if (sc->drift)
+        printf(" %s;", sc->drift_name);
+    if (sc->omega_max) {
+        sw_system sys;
+        char err[SW_ERRLEN];
+        if (sw_system_build(&sys, sc, NULL, err, sizeof err) == SW_OK) {
+            printf(" stiffest frequency %g rad/s;", sc->omega_max(&sys));
+            sw_system_free(&sys);
+        }
+    }
+    printf("\n\ninitial state:\n");
+    sw_system sys;
+    char err[SW_ERRLEN];
+    if (sw_system_build(&sys, sc, NULL, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    int shown = sys.n < 5 ? sys.n : 5;
+    for (int i = 0; i < shown; i++) {
+        printf("  particle %d: x = (%g, %g)", i, sys.y[2 * i], sys.y[2 * i + 1]);
+        if (sys.kind == SW_SYS_PARTICLES)
+            printf("  v = (%g, %g)", sys.y[2 * sys.n + 2 * i], sys.y[2 * sys.n + 2 * i + 1]);
+        printf("\n");
+    }
+    if (sys.n > shown)
+        printf("  ... and %d more\n", sys.n - shown);
+    printf("  %s system, state dimension %d\n", sys.kind == SW_SYS_FLOW ? "first-order (flow)" : "second-order (masses)",
+           sys.ode->dim);
+    sw_system_free(&sys);
+    return SW_EXIT_OK;
+}

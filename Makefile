@@ -38,7 +38,8 @@ LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
 TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o) $(CLI_SRC:%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/src/main.o
 TEST_SRC = $(wildcard tests/check_*.c)
-TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o)
+TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o) $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/support/*.c))
+WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 LIB      = $(BUILD)/libstepwise.a
 BIN      = stepwise
 TESTBIN  = $(BUILD)/check_stepwise
@@ -53,7 +54,7 @@ deps:
 $(BUILD)/%.o: %.c | deps
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(if $(filter src/tui/%,$<),$(CURSES_CFLAGS)) \
-	    $(if $(filter tests/%,$<),$(CHECK_CFLAGS) -I$(BUILD)/tests) -c $< -o $@
+	    $(if $(filter tests/%,$<),$(CHECK_CFLAGS) -I$(BUILD)/tests -Itests/support) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
@@ -72,7 +73,7 @@ $(BUILD)/tests/suites.h: $(TEST_SRC)
 $(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
 
 $(TESTBIN): $(TEST_OBJ) $(LIB)
-	$(CC) $(OPT) $(LDSAN) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) -lm -ldl
+	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) -lm -ldl
 
 run: $(BIN)
 	./$(BIN)

@@ -1,0 +1,388 @@
+/* Integrators against theory: measured orders, Euler's energy growth,
+ * stability limits, backward Euler as an exact linear solve, rk45's error
+ * control, and determinism. Every expected value is computed here from the
+ * closed form, not taken from the code under test. */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "stepwise/particles.h"
+#include "stepwise/flow.h"
+#include "stepwise/sim.h"
+#include "alloc_count.h"
+
+/* x'' = -(k/m) x - (c/m) x' as one particle on a zero-rest-length spring to
+ * the origin, started at (1, 0) at rest; the motion stays on the x axis. */
+static void oscillator(sw_particles *p, double k, double c)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(p, 1, 1.0, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(p, 1);
+    ck_assert_ptr_nonnull(s);
+    *s = (sw_spring){ .a = 0, .b = -1, .k = k, .c = c, .rest = 0.0 };
+    p->y[0] = 1.0;
+}
+
+/* Closed form for m = 1, under-damped: x = e^{-γt}(cos ωd t + γ/ωd sin ωd t). */
+static void oscillator_exact(double k, double c, double t, double *x, double *v)
+{
+    double g = c / 2, wd = sqrt(k - g * g), e = exp(-g * t);
+    *x = e * (cos(wd * t) + g / wd * sin(wd * t));
+    *v = -e * (wd + g * g / wd) * sin(wd * t);
+}
+
+/* Largest state error at t = 10 after stepping with h. */
+static double error_at_10(const char *method, double k, double c, double h)
+{
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    oscillator(&p, k, c);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(method), &p.ode, err, sizeof err), SW_OK);
+    long n = lround(10.0 / h);
+    double t = 0;
+    for (long i = 0; i < n; i++)
+        ck_assert_int_eq(sw_stepper_step(&s, &p.ode, &t, p.y, h), SW_OK);
+    double x, v;
+    oscillator_exact(k, c, t, &x, &v);
+    double e = fmax(fmax(fabs(p.y[0] - x), fabs(p.y[2] - v)), fmax(fabs(p.y[1]), fabs(p.y[3])));
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+    return e;
+}
+
+static const struct { const char *name; int order; double h; } fixed[] = {
+    { "euler", 1, 0.002 },          { "symplectic-euler", 1, 0.002 },
+    { "midpoint", 2, 0.01 },        { "heun", 2, 0.01 },
+    { "rk4", 4, 0.05 },             { "verlet", 2, 0.01 },
+    { "implicit-euler", 1, 0.002 }, { "implicit-midpoint", 2, 0.01 },
+};
+
+/* Observed order: least-squares slope of log e against log h over h, h/2, h/4.
+ * Theory within ±0.2; the step sizes are chosen in each method's asymptotic
+ * range (errors between about 1e-2 and 1e-9, far above round-off). */
+static void check_orders(double c)
+{
+    for (size_t m = 0; m < sizeof fixed / sizeof fixed[0]; m++) {
+        double lx[3], ly[3], sx = 0, sy = 0;
+        for (int j = 0; j < 3; j++) {
+            double h = fixed[m].h / (1 << j);
+            lx[j] = log(h);
+            ly[j] = log(error_at_10(fixed[m].name, 1.0, c, h));
+            sx += lx[j];
+            sy += ly[j];
+        }
+        double num = 0, den = 0;
+        for (int j = 0; j < 3; j++) {
+            num += (lx[j] - sx / 3) * (ly[j] - sy / 3);
+            den += (lx[j] - sx / 3) * (lx[j] - sx / 3);
+        }
+        double order = num / den;
+        ck_assert_msg(fabs(order - fixed[m].order) <= 0.2, "%s (c = %g): observed order %.3f, theory %d",
+                      fixed[m].name, c, order, fixed[m].order);
+    }
+}
+
+START_TEST(orders_undamped) { check_orders(0.0); }
+END_TEST
+
+START_TEST(orders_damped) { check_orders(0.5); }
+END_TEST
+
+/* Explicit Euler maps (x, v) to (x + h v, v - h x): energy grows by exactly
+ * (1 + h²) per step, so after 1000 steps by (1 + h²)^1000. 1e-12 relative
+ * leaves room for ~1000 steps of round-off at 1e-16. */
+START_TEST(euler_energy_growth)
+{
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    oscillator(&p, 1.0, 0.0);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("euler"), &p.ode, err, sizeof err), SW_OK);
+    double h = 0.01, t = 0, e0 = sw_particles_energy(&p, p.y);
+    for (int i = 0; i < 1000; i++)
+        sw_stepper_step(&s, &p.ode, &t, p.y, h);
+    double ratio = sw_particles_energy(&p, p.y) / e0, expect = pow(1 + h * h, 1000);
+    ck_assert_msg(fabs(ratio / expect - 1) < 1e-12, "ratio %.17g, expected %.17g", ratio, expect);
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* Run x'' = -ω²x (ω = 1) at ω h for steps steps through a sim-like loop;
+ * returns final energy / initial energy, or INFINITY when the state ran away
+ * or went non-finite. */
+static double energy_ratio(const char *method, double wh, int steps)
+{
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    oscillator(&p, 1.0, 0.0);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(method), &p.ode, err, sizeof err), SW_OK);
+    double t = 0, e0 = sw_particles_energy(&p, p.y), r = 0;
+    for (int i = 0; i < steps; i++) {
+        if (sw_stepper_step(&s, &p.ode, &t, p.y, wh) != SW_OK || !(fabs(p.y[0]) < 1e100)) {
+            r = INFINITY;
+            break;
+        }
+    }
+    if (r == 0)
+        r = sw_particles_energy(&p, p.y) / e0;
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+    return r;
+}
+
+/* Symplectic Euler and Verlet: stable for ωh < 2 (the trace of the one-step
+ * matrix, 2 - (ωh)², leaves [-2, 2] beyond). Bounded means the energy stays
+ * within a modest factor (the shadow energy oscillates but is bounded). */
+START_TEST(stability_symplectic)
+{
+    const char *names[] = { "symplectic-euler", "verlet" };
+    for (int i = 0; i < 2; i++) {
+        double in = energy_ratio(names[i], 1.99, 10000), out = energy_ratio(names[i], 2.01, 10000);
+        ck_assert_msg(in < 1e3, "%s at wh = 1.99: energy ratio %g", names[i], in);
+        ck_assert_msg(out > 1e12, "%s at wh = 2.01: energy ratio %g, expected a blow-up", names[i], out);
+    }
+}
+END_TEST
+
+/* RK4's amplification factor on the imaginary axis, |R(iωh)|, crosses 1 at
+ * ωh = 2√2 ≈ 2.828: at 2.82 it is 0.979, at 2.84 it is 1.029 (computed here). */
+START_TEST(stability_rk4)
+{
+    for (int k = 0; k < 2; k++) {
+        double w = k ? 2.84 : 2.82, re = 1 - w * w / 2 + w * w * w * w / 24, im = w - w * w * w / 6;
+        double amp = sqrt(re * re + im * im);
+        ck_assert(k ? amp > 1 : amp < 1);
+    }
+    ck_assert_double_lt(energy_ratio("rk4", 2.82, 10000), 1.0);
+    double grow = energy_ratio("rk4", 2.84, 1000);
+    ck_assert_msg(grow > 1e20, "rk4 at wh = 2.84 over 1000 steps: energy ratio %g, expected growth ~1.03^2000", grow);
+}
+END_TEST
+
+/* Backward Euler damps at any step: at ωh = 100 the energy must fall. */
+START_TEST(stability_implicit_euler)
+{
+    double r = energy_ratio("implicit-euler", 100.0, 1000);
+    ck_assert_msg(r < 1e-6, "implicit-euler at wh = 100: energy ratio %g", r);
+}
+END_TEST
+
+/* Implicit midpoint is the Cayley transform on a linear oscillator: it keeps
+ * the quadratic energy exactly, so only solver round-off remains. */
+START_TEST(implicit_midpoint_conserves)
+{
+    double r = energy_ratio("implicit-midpoint", 10.0, 1000);
+    ck_assert_msg(fabs(r - 1) < 1e-10, "implicit-midpoint at wh = 10: energy ratio - 1 = %g", r - 1);
+}
+END_TEST
+
+/* One backward Euler step on the linear damped spring, against the 2x2 solve
+ * [x1; v1] = (I - hA)^{-1} [x0; v0], A = [[0, 1], [-k, -c]], done by Cramer's rule. */
+START_TEST(backward_euler_exact_linear)
+{
+    double k = 7.0, c = 0.3, h = 0.37;
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    oscillator(&p, k, c);
+    p.y[2] = 0.25;
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("implicit-euler"), &p.ode, err, sizeof err), SW_OK);
+    double t = 0;
+    for (int step = 0; step < 5; step++) {
+        double x0 = p.y[0], v0 = p.y[2];
+        /* (I - hA) = [[1, -h], [h k, 1 + h c]] */
+        double a = 1, b = -h, cc = h * k, d = 1 + h * c, det = a * d - b * cc;
+        double x1 = (d * x0 - b * v0) / det, v1 = (a * v0 - cc * x0) / det;
+        ck_assert_int_eq(sw_stepper_step(&s, &p.ode, &t, p.y, h), SW_OK);
+        ck_assert_double_eq_tol(p.y[0], x1, 1e-14 * fmax(1, fabs(x1)));
+        ck_assert_double_eq_tol(p.y[2], v1, 1e-14 * fmax(1, fabs(v1)));
+    }
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* rk45 on the damped oscillator: the global error at t = 10 stays within a
+ * small multiple of the requested tolerance, tightening rtol by 1000 shrinks
+ * it, and a too-large first step is rejected and counted. */
+static double rk45_error(double rtol, long *acc, long *rej)
+{
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    oscillator(&p, 4.0, 0.4);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("rk45"), &p.ode, err, sizeof err), SW_OK);
+    s.rtol = rtol;
+    s.atol = rtol * 1e-3;
+    double t = 0;
+    while (10.0 - t > 1e-12)
+        ck_assert_int_eq(sw_stepper_step(&s, &p.ode, &t, p.y, fmin(2.0, 10.0 - t)), SW_OK);
+    double x, v;
+    oscillator_exact(4.0, 0.4, t, &x, &v);
+    *acc = s.accepted;
+    *rej = s.rejected;
+    double e = fmax(fabs(p.y[0] - x), fabs(p.y[2] - v));
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+    return e;
+}
+
+START_TEST(rk45_tolerance)
+{
+    long acc, rej, acc2, rej2;
+    double e6 = rk45_error(1e-6, &acc, &rej), e9 = rk45_error(1e-9, &acc2, &rej2);
+    ck_assert_msg(e6 < 1e-5, "rtol 1e-6: error %g", e6);
+    ck_assert_msg(e9 < 1e-8, "rtol 1e-9: error %g", e9);
+    ck_assert_msg(e9 < e6 / 20, "tighter tolerance did not help: %g vs %g", e9, e6);
+    ck_assert_int_gt(acc, 10);
+    ck_assert_int_gt(rej, 0); /* the first trial step of 2 s is far too large */
+    ck_assert_int_gt(acc2, acc);
+}
+END_TEST
+
+/* Methods that update x and v separately refuse a flow field. */
+static void unit_field(const void *par, double t, int n, const double *x, double *v)
+{
+    (void)par;
+    (void)t;
+    for (int i = 0; i < 2 * n; i++)
+        v[i] = x[i];
+}
+
+START_TEST(second_order_refused)
+{
+    sw_flow f;
+    sw_stepper s;
+    char err[SW_ERRLEN] = "";
+    ck_assert_int_eq(sw_flow_init(&f, 3, unit_field, NULL, NULL, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("verlet"), &f.ode, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "first-order"));
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("symplectic-euler"), &f.ode, err, sizeof err), SW_EINVAL);
+    /* implicit methods work on flows through the per-point 2x2 solve:
+     * x' = x, one backward Euler step gives x / (1 - h). */
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("implicit-euler"), &f.ode, err, sizeof err), SW_OK);
+    f.y[0] = 1.0;
+    double t = 0;
+    ck_assert_int_eq(sw_stepper_step(&s, &f.ode, &t, f.y, 0.1), SW_OK);
+    ck_assert_double_eq_tol(f.y[0], 1.0 / 0.9, 1e-6); /* finite-difference Jacobian: ~1e-7 relative */
+    sw_stepper_free(&s);
+    sw_flow_free(&f);
+}
+END_TEST
+
+/* The dense finite-difference fallback (no solve callback) gives the same
+ * backward Euler step as the analytic solve, to finite-difference accuracy. */
+START_TEST(dense_fallback)
+{
+    sw_particles a, b;
+    sw_stepper sa, sb;
+    char err[SW_ERRLEN];
+    oscillator(&a, 5.0, 0.2);
+    oscillator(&b, 5.0, 0.2);
+    b.ode.solve = NULL;
+    ck_assert_int_eq(sw_stepper_init(&sa, sw_integrator_find("implicit-euler"), &a.ode, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_stepper_init(&sb, sw_integrator_find("implicit-euler"), &b.ode, err, sizeof err), SW_OK);
+    ck_assert_ptr_nonnull(sb.dense);
+    double ta = 0, tb = 0;
+    for (int i = 0; i < 10; i++) {
+        sw_stepper_step(&sa, &a.ode, &ta, a.y, 0.1);
+        sw_stepper_step(&sb, &b.ode, &tb, b.y, 0.1);
+    }
+    for (int i = 0; i < 4; i++)
+        ck_assert_double_eq_tol(a.y[i], b.y[i], 1e-6);
+    sw_stepper_free(&sa);
+    sw_stepper_free(&sb);
+    sw_particles_free(&a);
+    sw_particles_free(&b);
+}
+END_TEST
+
+/* Steps allocate nothing: counted through the linker's --wrap. */
+START_TEST(steps_do_not_allocate)
+{
+    for (int m = 0; m < sw_integrator_count(); m++) {
+        const sw_integrator *method = sw_integrator_at(m);
+        if (method->flags & SW_PLUGIN)
+            continue;
+        sw_particles p;
+        sw_stepper s;
+        char err[SW_ERRLEN];
+        oscillator(&p, 3.0, 0.1);
+        ck_assert_int_eq(sw_stepper_init(&s, method, &p.ode, err, sizeof err), SW_OK);
+        double t = 0;
+        long before = sw_test_allocations();
+        for (int i = 0; i < 200; i++)
+            sw_stepper_step(&s, &p.ode, &t, p.y, 0.01);
+        ck_assert_msg(sw_test_allocations() == before, "%s allocated in its step", method->name);
+        sw_stepper_free(&s);
+        sw_particles_free(&p);
+    }
+}
+END_TEST
+
+/* FNV-1a over the bytes of a state. */
+static uint64_t fnv1a(const double *y, int n)
+{
+    const unsigned char *b = (const unsigned char *)y;
+    uint64_t h = 1469598103934665603ull;
+    for (size_t i = 0; i < (size_t)n * sizeof *y; i++)
+        h = (h ^ b[i]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t scene_hash(const char *scene, const char *method, int steps)
+{
+    sw_sim s;
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find(scene);
+    ck_assert_int_eq(sw_sim_init(&s, sc, NULL, sw_integrator_find(method), sc->dt, err, sizeof err), SW_OK);
+    for (int i = 0; i < steps; i++)
+        sw_sim_step(&s);
+    uint64_t h = fnv1a(s.sys.y, s.sys.ode->dim);
+    sw_sim_free(&s);
+    return h;
+}
+
+/* Determinism: the same settings give the same bits, run after run. The
+ * spring under euler uses only +, -, *, / and sqrt (correctly rounded in
+ * IEEE 754), so its hash is pinned across builds; other scenes (which call
+ * libm's sin, cos, exp) are compared between two fresh runs. */
+START_TEST(determinism)
+{
+    const char *pairs[][2] = { { "chain", "implicit-euler" }, { "orbit", "rk45" }, { "gyre", "rk4" },
+                               { "bounce", "verlet" }, { "fireworks", "symplectic-euler" } };
+    for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
+        ck_assert_msg(scene_hash(pairs[i][0], pairs[i][1], 500) == scene_hash(pairs[i][0], pairs[i][1], 500),
+                      "%s under %s differs between two runs", pairs[i][0], pairs[i][1]);
+    uint64_t h = scene_hash("spring", "euler", 1000);
+    ck_assert_msg(h == UINT64_C(0x095f00958ddb901f), "spring/euler hash %llx changed", (unsigned long long)h);
+}
+END_TEST
+
+Suite *make_integrators_suite(void);
+Suite *make_integrators_suite(void)
+{
+    Suite *s = suite_create("integrators");
+    TCase *tc = tcase_create("theory");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, orders_undamped);
+    tcase_add_test(tc, orders_damped);
+    tcase_add_test(tc, euler_energy_growth);
+    tcase_add_test(tc, stability_symplectic);
+    tcase_add_test(tc, stability_rk4);
+    tcase_add_test(tc, stability_implicit_euler);
+    tcase_add_test(tc, implicit_midpoint_conserves);
+    tcase_add_test(tc, backward_euler_exact_linear);
+    tcase_add_test(tc, rk45_tolerance);
+    tcase_add_test(tc, second_order_refused);
+    tcase_add_test(tc, dense_fallback);
+    tcase_add_test(tc, steps_do_not_allocate);
+    tcase_add_test(tc, determinism);
+    suite_add_tcase(s, tc);
+    return s;
+}

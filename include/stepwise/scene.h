@@ -66,6 +66,9 @@ typedef struct sw_scene {
     int reference;
     /* Stiffest angular frequency; NULL when unknown. */
     double (*omega_max)(const sw_system *sys);
+    /* Damping rate γ of that stiffest mode (its eigenvalues are -γ ± i√(ω²-γ²));
+     * NULL when it is undamped. */
+    double (*damping)(const sw_system *sys);
     sw_view (*view)(const sw_system *sys);
     /* After each step: contact, births and deaths. Returns 1 when y changed. */
     int (*post_step)(sw_system *sys, double t, double *y);

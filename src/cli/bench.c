@@ -1,9 +1,385 @@
-/* Placeholder until the bench front end lands; replaced, not kept. */
+/* `stepwise bench`: the work–precision report (error against cost for each
+ * integrator on each scene that has an exact solution or a reference), and
+ * with --engine the engine benchmark. The numbers come from src/lab/bench.c;
+ * this file parses, prints, and writes files whole or not at all. */
 #include "cli/cli.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli/bench_engine.h"
+#include "lab/bench.h"
+
+static const char usage_text[] =
+    "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
+    "                      [--set NAME=VALUE] [--quick] [--repeats N] [--plugin FILE]\n"
+    "       stepwise bench --engine [--quick] [--repeats N]\n"
+    "\n"
+    "Work-precision report: for each scene with an exact solution or an rk45 reference\n"
+    "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
+    "runs the scene to its report time over a geometric sweep of step sizes (from 8x the\n"
+    "scene's dt, or twice the method's stability limit when the scene knows w, halving;\n"
+    "rk45 sweeps its tolerance 1e-2, 1e-3, ...) and records the largest absolute state\n"
+    "error, the derivative evaluations, the wall time (median of repeats) and blow-ups.\n"
+    "The observed order is the least-squares slope of log error against log dt over the\n"
+    "points marked *: not blown up, above round-off (and the reference's own error), below\n"
+    "1e-2 of the state's size, contiguous down to the finest such point.\n"
+    "With no SCENE, every scene that has a reference and every method that applies.\n"
+    "\n"
+    "  --integrators LIST  comma-separated methods (default: all that apply)\n"
+    "  --csv FILE          write every point as CSV (numbers in %.17g)\n"
+    "  --svg FILE          write the log-log plots as SVG (open it in a browser)\n"
+    "  --set NAME=VALUE    change a scene parameter (one SCENE only)\n"
+    "  --quick             the small sweep the UI uses (5-6 step sizes, one run each)\n"
+    "  --repeats N         timing repeats per point, 1..15 (default 3)\n"
+    "  --plugin FILE       load a student integrator (.so) and include it\n"
+    "  --engine            the engine benchmark instead: ns per particle-step against\n"
+    "                      hand-written loops, frame cost, memory and allocations\n";
+
+/* A file written whole or not at all: a temporary beside the target, renamed
+ * into place once complete. */
+typedef struct out_file {
+    const char *path;
+    char tmp[4096];
+    FILE *f;
+} out_file;
+
+static int out_open(out_file *o, const char *flag)
+{
+    if (snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->path) >= (int)sizeof o->tmp)
+        return sw_cli_error("%s '%.60s...': the path is too long", flag, o->path);
+    int fd = mkstemp(o->tmp);
+    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
+        if (fd >= 0) {
+            close(fd);
+            unlink(o->tmp);
+        }
+        return sw_cli_error("%s '%.200s': cannot create a file there (check the directory "
+                            "exists and is writable)", flag, o->path);
+    }
+    fchmod(fd, 0644);
+    return SW_EXIT_OK;
+}
+
+static void out_abandon(out_file *o)
+{
+    if (o->f) {
+        fclose(o->f);
+        unlink(o->tmp);
+        o->f = NULL;
+    }
+}
+
+static int out_commit(out_file *o)
+{
+    int bad = fclose(o->f) != 0;
+    o->f = NULL;
+    if (bad || rename(o->tmp, o->path) != 0) {
+        unlink(o->tmp);
+        fprintf(stderr, "stepwise: could not write '%s'\n", o->path);
+        return SW_EXIT_FAIL;
+    }
+    return SW_EXIT_OK;
+}
+
+/* Split a comma-separated --integrators list into methods; prints what is allowed. */
+static int parse_methods(char *list, const sw_integrator **out, int *n)
+{
+    *n = 0;
+    for (char *save = NULL, *name = strtok_r(list, ",", &save); name; name = strtok_r(NULL, ",", &save)) {
+        if (*n == SW_BENCH_MAX_METHODS)
+            return sw_cli_error("--integrators: at most %d methods", SW_BENCH_MAX_METHODS);
+        if (sw_cli_integrator(name, &out[*n]) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
+        for (int i = 0; i < *n; i++)
+            if (out[i] == out[*n])
+                return sw_cli_error("--integrators: '%.40s' is listed twice", name);
+        (*n)++;
+    }
+    if (*n == 0)
+        return sw_cli_error("--integrators wants a comma-separated list of methods, e.g. euler,rk4");
+    return SW_EXIT_OK;
+}
+
+static void print_time(char *buf, size_t len, double s)
+{
+    if (s < 1e-3)
+        snprintf(buf, len, "%.3g us", s * 1e6);
+    else if (s < 1.0)
+        snprintf(buf, len, "%.3g ms", s * 1e3);
+    else
+        snprintf(buf, len, "%.3g s", s);
+}
+
+static const char *stop_note(int stop)
+{
+    switch (stop) {
+    case SW_BENCH_STOP_FLOOR: return "; stopped at round-off";
+    case SW_BENCH_STOP_BUDGET: return "; finer steps over the work budget";
+    case SW_BENCH_STOP_DT_MIN: return "; next step below the smallest dt";
+    default: return "";
+    }
+}
+
+static void print_report(const sw_bench_report *r, const char *skipped)
+{
+    const sw_scene *sc = r->scene;
+    printf("== %s: ", sc->name);
+    if (r->source == SW_BENCH_EXACT)
+        printf("error against the exact solution at t = %g\n", r->t_report);
+    else
+        printf("error against an rk45 reference at t = %g (rtol 1e-12, atol 1e-14, %ld evaluations;"
+               " its own error <= %.1e)\n", r->t_report, r->ref_evals, r->ref_error);
+    printf("   parameters:");
+    for (int i = 0; i < sc->nparams; i++)
+        printf(" %s=%g", sc->params[i].name, r->p[i]);
+    if (r->omega > 0)
+        printf("; stiffest frequency w = %.4g rad/s", r->omega);
+    printf("; state size %.3g\n", r->scale);
+    if (skipped[0])
+        printf("   not run here: %s\n", skipped);
+    printf("\n   %-18s %-16s %-22s %10s %10s  %s\n", "method", "step", "error", "evals", "time", "fit");
+    for (int i = 0; i < r->nseries; i++) {
+        const sw_bench_series *s = &r->series[i];
+        if (s->npoints == 0)
+            printf("   %-18s (no run: the coarsest step is already over the work budget)\n", s->method->name);
+        for (int j = 0; j < s->npoints; j++) {
+            const sw_bench_point *pt = &s->points[j];
+            char step[32], err[40], t[24];
+            if (pt->rtol > 0)
+                snprintf(step, sizeof step, "rtol %.0e", pt->rtol);
+            else
+                snprintf(step, sizeof step, "dt %.4g", pt->dt);
+            if (pt->blown)
+                snprintf(err, sizeof err, "blown up at t = %.3g", pt->blow_time);
+            else
+                snprintf(err, sizeof err, "%.3e", pt->error);
+            print_time(t, sizeof t, pt->seconds);
+            printf("   %-18s %-16s %-22s %10ld %10s  %s\n", j == 0 ? s->method->name : "", step, err,
+                   pt->evals, t, pt->in_fit ? "*" : "");
+        }
+    }
+    printf("\n   observed order (slope of log error against log dt over the * points):\n");
+    for (int i = 0; i < r->nseries; i++) {
+        const sw_bench_series *s = &r->series[i];
+        if (s->nfit >= 2)
+            printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)%s\n",
+                   s->method->name, s->order, s->nfit, s->slope_min, s->slope_max, s->method->order,
+                   stop_note(s->stop), s->asymptotic ? "" : "\n                        the local "
+                   "slopes disagree: these steps are not yet in the asymptotic range");
+        else
+            printf("   %-18s   n/a  (fewer than 2 points between round-off and 1e-2 of the state%s)\n",
+                   s->method->name, stop_note(s->stop));
+    }
+    printf("\n   cheapest measured run to reach each error level:\n");
+    static const double levels[] = { 1e-2, 1e-4, 1e-6, 1e-8 };
+    for (int k = 0; k < 4; k++) {
+        int jt, je;
+        int it = sw_bench_cheapest(r, levels[k], 0, &jt), ie = sw_bench_cheapest(r, levels[k], 1, &je);
+        if (it < 0) {
+            printf("   %.0e  no method reached it in this sweep\n", levels[k]);
+            continue;
+        }
+        char t[24];
+        const sw_bench_point *pt = &r->series[it].points[jt], *pe = &r->series[ie].points[je];
+        print_time(t, sizeof t, pt->seconds);
+        printf("   %.0e  by time: %-17s (%s, %ld evals)   by evaluations: %-17s (%ld evals)\n",
+               levels[k], r->series[it].method->name, t, pt->evals, r->series[ie].method->name,
+               pe->evals);
+    }
+    enum { W = 76, H = 22 };
+    static char plot[(W + 1) * H + 1];
+    for (int axis = 0; axis < 2; axis++)
+        if (sw_bench_plot(r, axis ? SW_BENCH_X_EVALS : SW_BENCH_X_TIME, plot, W, H) == SW_OK)
+            printf("\n%s", plot);
+    printf("\n");
+    fflush(stdout);
+}
+
+/* Methods of `wanted` (all when n == 0) that cannot step this scene, by name. */
+static void list_inapplicable(const sw_scene *sc, const double *p, const sw_integrator *const *wanted,
+                              int n, char *buf, size_t len)
+{
+    sw_system sys;
+    char err[SW_ERRLEN];
+    buf[0] = '\0';
+    if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
+        return;
+    size_t used = 0;
+    int count = n ? n : sw_integrator_count();
+    for (int i = 0; i < count && used < len; i++) {
+        const sw_integrator *m = n ? wanted[i] : sw_integrator_at(i);
+        if (sw_integrator_accepts(m, sys.ode, err, sizeof err) != SW_OK)
+            used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "", m->name);
+    }
+    if (used > 0 && used < len)
+        snprintf(buf + used, len - used, " (%s)", sys.kind == SW_SYS_FLOW
+                 ? "a flow field has no masses, or no Jacobian for implicit methods"
+                 : "no Jacobian at this size");
+    sw_system_free(&sys);
+}
 
 int sw_cmd_bench(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    return sw_cli_error("'bench' is not built yet");
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(usage_text, stdout);
+            return SW_EXIT_OK;
+        }
+        if (strcmp(argv[i], "--engine") == 0)
+            return sw_bench_engine_main(argc, argv);
+    }
+    const char *scene_names[64], *plugins[8], *csv_path = NULL, *svg_path = NULL;
+    char *methods_arg = NULL;
+    int nscenes = 0, nplugins = 0, quick = 0;
+    long repeats = 3;
+    sw_run_opts opts;
+    memset(&opts, 0, sizeof opts);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int takes = strcmp(a, "--integrators") == 0 || strcmp(a, "--csv") == 0 ||
+                    strcmp(a, "--svg") == 0 || strcmp(a, "--set") == 0 ||
+                    strcmp(a, "--repeats") == 0 || strcmp(a, "--plugin") == 0;
+        if (takes && i + 1 >= argc)
+            return sw_cli_error("%s needs a value; see 'stepwise bench --help'", a);
+        if (strcmp(a, "--integrators") == 0)
+            methods_arg = argv[++i];
+        else if (strcmp(a, "--csv") == 0)
+            csv_path = argv[++i];
+        else if (strcmp(a, "--svg") == 0)
+            svg_path = argv[++i];
+        else if (strcmp(a, "--set") == 0) {
+            if (sw_cli_add_set(&opts, argv[++i]) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
+        } else if (strcmp(a, "--repeats") == 0) {
+            if (sw_cli_long("--repeats", argv[++i], 1, 15, &repeats) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
+        } else if (strcmp(a, "--plugin") == 0) {
+            if (nplugins == 8)
+                return sw_cli_error("at most 8 --plugin options");
+            plugins[nplugins++] = argv[++i];
+        } else if (strcmp(a, "--quick") == 0)
+            quick = 1;
+        else if (a[0] == '-')
+            return sw_cli_error("bench: unknown option '%.40s'; options: --integrators, --csv, --svg, "
+                                "--set, --quick, --repeats, --plugin, --engine, --help", a);
+        else {
+            const sw_scene *sc;
+            if (sw_cli_scene(a, &sc) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
+            if (nscenes == 64)
+                return sw_cli_error("bench: at most 64 scenes");
+            scene_names[nscenes++] = a;
+        }
+    }
+    if (opts.nsets > 0 && nscenes != 1)
+        return sw_cli_error("--set changes one scene's parameters: name exactly one SCENE with it");
+    for (int i = 0; i < nplugins; i++)
+        if (sw_cli_plugin(plugins[i]) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
+    const sw_integrator *methods[SW_BENCH_MAX_METHODS];
+    int nmethods = 0;
+    if (methods_arg && parse_methods(methods_arg, methods, &nmethods) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+
+    /* The scenes: as named (with --set checked now), or every measurable one. */
+    const sw_scene *scenes[64];
+    double params[64][SW_MAX_PARAMS];
+    char notes[2048] = "";
+    size_t notes_used = 0;
+    int n = 0;
+    for (int i = 0; i < (nscenes ? nscenes : sw_scene_count()); i++) {
+        const sw_scene *sc = nscenes ? sw_scene_find(scene_names[i]) : sw_scene_at(i);
+        opts.scene = sc;
+        if (sw_cli_finish_opts(&opts) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
+        char why[SW_ERRLEN];
+        if (!sw_bench_measurable(sc, opts.p, why, sizeof why)) {
+            if (notes_used < sizeof notes)
+                notes_used += (size_t)snprintf(notes + notes_used, sizeof notes - notes_used,
+                                               "skipped %s\n", why);
+            continue;
+        }
+        scenes[n] = sc;
+        memcpy(params[n], opts.p, sizeof params[n]);
+        n++;
+    }
+    if (n == 0) {
+        fputs(notes, stderr);
+        return sw_cli_error("bench: none of the scenes has an exact solution or a reference");
+    }
+    out_file csv = { .path = csv_path }, svg = { .path = svg_path };
+    if (csv_path && out_open(&csv, "--csv") != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    if (svg_path && out_open(&svg, "--svg") != SW_EXIT_OK) {
+        out_abandon(&csv);
+        return SW_EXIT_USAGE;
+    }
+
+    sw_bench_config cfg;
+    if (quick)
+        sw_bench_config_quick(&cfg);
+    else
+        sw_bench_config_default(&cfg);
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--repeats") == 0)
+            cfg.repeats = (int)repeats;
+    sw_bench_report *reports = calloc((size_t)n, sizeof *reports);
+    const sw_bench_report **done = calloc((size_t)n, sizeof *done);
+    if (!reports || !done) {
+        free(reports);
+        free(done);
+        out_abandon(&csv);
+        out_abandon(&svg);
+        fprintf(stderr, "stepwise: out of memory for %d reports\n", n);
+        return SW_EXIT_FAIL;
+    }
+    if (notes[0])
+        printf("%s\n", notes);
+    int ndone = 0, status = SW_EXIT_OK;
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (int i = 0; i < n; i++) {
+        char err[SW_ERRLEN], skipped[512];
+        sw_bench_report *r = &reports[i];
+        if (sw_bench_init(r, scenes[i], params[i], err, sizeof err) != SW_OK ||
+            sw_bench_sweep_all(r, nmethods ? methods : NULL, nmethods, &cfg, err, sizeof err) != SW_OK) {
+            fprintf(stderr, "stepwise: %s\n", err);
+            sw_bench_free(r);
+            status = SW_EXIT_FAIL;
+            continue;
+        }
+        list_inapplicable(scenes[i], params[i], methods, nmethods, skipped, sizeof skipped);
+        print_report(r, skipped);
+        done[ndone++] = r;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    printf("bench: %d scene%s in %.1f s\n", ndone, ndone == 1 ? "" : "s",
+           (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+    char err[SW_ERRLEN];
+    if (csv.f) {
+        if (sw_bench_write_csv(csv.f, done, ndone, err, sizeof err) != SW_OK) {
+            out_abandon(&csv);
+            sw_cli_error("--csv '%s': %s", csv_path, err);
+            status = SW_EXIT_FAIL;
+        } else if (out_commit(&csv) != SW_EXIT_OK)
+            status = SW_EXIT_FAIL;
+    }
+    if (svg.f) {
+        if (sw_bench_write_svg(svg.f, done, ndone, err, sizeof err) != SW_OK) {
+            out_abandon(&svg);
+            sw_cli_error("--svg '%s': %s", svg_path, err);
+            status = SW_EXIT_FAIL;
+        } else if (out_commit(&svg) != SW_EXIT_OK)
+            status = SW_EXIT_FAIL;
+    }
+    for (int i = 0; i < n; i++)
+        sw_bench_free(&reports[i]);
+    free(reports);
+    free(done);
+    return status;
 }

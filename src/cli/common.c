@@ -110,10 +110,28 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     return SW_EXIT_OK;
 }
 
+/* Loaded plugins, found again by method name: the registry keeps a copy of
+ * the sw_integrator (not a pointer to it) and sw_stepper_init leaves
+ * s->plugin NULL, so the step looks its plugin up on first use. */
+static const sw_plugin_info *plugin_infos[8];
+static int nplugin_infos;
+
+static const sw_plugin_info *plugin_for(const sw_integrator *m)
+{
+    for (int i = 0; i < nplugin_infos; i++)
+        if (strcmp(plugin_infos[i]->name, m->name) == 0)
+            return plugin_infos[i];
+    return NULL;
+}
+
 /* A plugin's step function behind the built-in step signature. */
 static int plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
+    if (!s->plugin)
+        s->plugin = (void *)plugin_for(s->method);
     const sw_plugin_info *info = s->plugin;
+    if (!info)
+        return SW_EINVAL;
     int rc = info->step(ode, *t, y, h, s->work);
     *t += h;
     return rc == 0 ? SW_OK : SW_EDIVERGED;
@@ -156,6 +174,7 @@ int sw_cli_plugin(const char *path)
     char err[SW_ERRLEN];
     if (sw_integrator_register(m, err, sizeof err) != SW_OK)
         return sw_cli_error("--plugin '%.200s': %s", path, err);
+    plugin_infos[nplugin_infos++] = info;
     nmethods++;
     return SW_EXIT_OK;
 }

@@ -300,8 +300,8 @@ static int fireworks_build(sw_system *sys, char *err, size_t errlen)
     const double *p = sys->p;
     int n = (int)(p[FW_BURSTS] * p[FW_N]);
     int rc = sw_scene_particles(sys, n, 1.0, err, errlen);
-    if (rc != SW_OK)
-        return rc;
+    if (rc != SW_OK || n < 1)
+        return rc != SW_OK ? rc : SW_EINVAL;
     sw_particles_add_gravity(&sys->particles, 0.0, -p[FW_G]);
     if (p[FW_DRAG] > 0)
         sw_particles_add_drag(&sys->particles, p[FW_DRAG]);

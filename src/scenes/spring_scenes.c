@@ -84,14 +84,11 @@ static int spring_exact(const sw_system *sys, double t, double *y)
     return 0;
 }
 
-/* Spectral radius of [[0, 1], [-k/m, -c/m]]: ω0 when under-damped, else the
- * faster decay rate γ + √(γ² - ω0²). */
-static double spring_omega(const sw_system *sys)
-{
-    const double *p = sys->p;
-    double g = p[SP_C] / (2 * p[SP_M]), w0 = sqrt(p[SP_K] / p[SP_M]);
-    return g < w0 ? w0 : g + sqrt(g * g - w0 * w0);
-}
+/* The natural frequency ω0 = √(k/m) and damping rate γ = c/2m: the
+ * eigenvalues of [[0, 1], [-k/m, -c/m]] are -γ ± √(γ² - ω0²). */
+static double spring_omega(const sw_system *sys) { return sqrt(sys->p[SP_K] / sys->p[SP_M]); }
+
+static double spring_damping(const sw_system *sys) { return sys->p[SP_C] / (2 * sys->p[SP_M]); }
 
 static sw_view spring_view(const sw_system *sys)
 {
@@ -115,6 +112,7 @@ const sw_scene sw_scene_spring = {
     .exact = spring_exact,
     .energy = sw_scene_particle_energy,
     .omega_max = spring_omega,
+    .damping = spring_damping,
     .reference = 1,
     .view = spring_view,
 };
@@ -226,6 +224,14 @@ static double chain_omega(const sw_system *sys)
     return 2.0 * sqrt(p[CH_K] / p[CH_M]) * sin(n * PI / (2.0 * (n + 1.0)));
 }
 
+/* Spring damping acts like stiffness with c in place of k, so each mode's
+ * damping rate is γ = (c / 2k)·ω². */
+static double chain_damping(const sw_system *sys)
+{
+    double w = chain_omega(sys);
+    return sys->p[CH_C] / (2 * sys->p[CH_K]) * w * w;
+}
+
 static sw_view chain_view(const sw_system *sys)
 {
     const double *p = sys->p;
@@ -246,6 +252,7 @@ const sw_scene sw_scene_chain = {
     .build = chain_build,
     .energy = sw_scene_particle_energy,
     .omega_max = chain_omega,
+    .damping = chain_damping,
     .reference = 1,
     .view = chain_view,
 };

@@ -33,10 +33,13 @@
  * solution), compare sims, the main sim, warnings. sw_canvas_draw_system
  * itself draws walls, central body, springs, anchors, then particles.
  *
- * Lines are clipped to the visible rectangle in double precision (world
- * coordinates scaled by 1/4 so that no difference can overflow) before
- * anything becomes an int; the clipped end cells are joined by Bresenham's
- * algorithm. Nothing here allocates after init/resize. */
+ * Lines are clipped to the visible rectangle in double precision (Cohen–
+ * Sutherland on world coordinates scaled by 1/4, so no difference can
+ * overflow) before anything becomes an int; the clipped end cells are joined
+ * by Bresenham's algorithm. Each crossing is interpolated from the other end,
+ * so it is exact to rounding when that end is on or near the canvas; a line
+ * between two astronomically distant points (a blown-up state) is drawn
+ * safely but only approximately. Nothing here allocates after init/resize. */
 #ifndef SW_TUI_CANVAS_H
 #define SW_TUI_CANVAS_H
 

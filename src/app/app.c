@@ -1,0 +1,662 @@
+/* The live app model: sims on screen, the clock, and what each action does.
+ * Pure C: no terminal. Invariant: every sim on screen shares the scene, its
+ * parameters and dt; only the method differs, so compare is a fair race. */
+#include "app/app.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+#define REF_RTOL 1e-11
+#define REF_ATOL 1e-13
+/* Largest headless measurement run (state components × steps) on a key press. */
+#define MEASURE_BUDGET 4e7
+
+static void msg(sw_app *a, const char *fmt, double v, const char *s)
+{
+    snprintf(a->message, sizeof a->message, fmt, s ? s : "", v);
+}
+
+static int has_exact(const sw_app *a)
+{
+    const sw_scene *sc = a->scene;
+    return sc->exact && sc->exact(&a->sims[0].sys, 0.0, a->ghost_y) == 0;
+}
+
+static void series_clear(sw_series *s)
+{
+    s->len = 0;
+    s->stride = 1;
+    s->skip = 0;
+}
+
+/* Keep at most SW_APP_GRAPH samples: when full, drop every other one and
+ * keep only every stride-th new sample from then on. */
+static void series_push(sw_series *s, double t, double v)
+{
+    if (s->skip > 0) {
+        s->skip--;
+        return;
+    }
+    if (s->len == SW_APP_GRAPH) {
+        for (int i = 0; i < SW_APP_GRAPH / 2; i++) {
+            s->t[i] = s->t[2 * i];
+            s->v[i] = s->v[2 * i];
+        }
+        s->len = SW_APP_GRAPH / 2;
+        s->stride *= 2;
+    }
+    s->t[s->len] = t;
+    s->v[s->len] = v;
+    s->len++;
+    s->skip = s->stride - 1;
+}
+
+/* A compare pair that differs from the main method and suits the system:
+ * the lecture's contrast (Euler against RK4) plus a symplectic method. */
+static void default_compare(sw_app *a, const sw_integrator **m1, const sw_integrator **m2)
+{
+    const char *order[] = { "rk4", "euler", "verlet", "midpoint", "symplectic-euler", "implicit-euler" };
+    const sw_integrator *main = a->sims[0].method, *picked[2] = { NULL, NULL };
+    int n = 0;
+    char err[SW_ERRLEN];
+    for (size_t i = 0; i < sizeof order / sizeof order[0] && n < 2; i++) {
+        const sw_integrator *m = sw_integrator_find(order[i]);
+        if (m && m != main && sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
+            picked[n++] = m;
+    }
+    *m1 = picked[0];
+    *m2 = picked[1];
+}
+
+static void free_ref(sw_app *a)
+{
+    if (a->have_ref)
+        sw_sim_free(&a->ref);
+    a->have_ref = 0;
+}
+
+static void free_sims(sw_app *a)
+{
+    for (int i = 0; i < a->nsims; i++)
+        sw_sim_free(&a->sims[i]);
+    a->nsims = 0;
+    free_ref(a);
+}
+
+static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
+{
+    int rc = sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
+    if (rc == SW_OK)
+        s->stepper.rtol = SW_RTOL_DEFAULT;
+    return rc;
+}
+
+/* Start the reference run a ghost or an error needs when there is no exact
+ * solution: rk45 at tight tolerance, advanced in lockstep with the main sim. */
+static void ensure_ref(sw_app *a)
+{
+    if (a->have_ref || !a->scene->reference || has_exact(a))
+        return;
+    char err[SW_ERRLEN];
+    if (sw_sim_init(&a->ref, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
+        return;
+    a->ref.stepper.rtol = REF_RTOL;
+    a->ref.stepper.atol = REF_ATOL;
+    a->have_ref = 1;
+}
+
+static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
+{
+    int rc = init_sim(a, &a->sims[0], m, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    a->nsims = 1;
+    double *g = realloc(a->ghost_y, (size_t)a->sims[0].sys.ode->dim * sizeof *g);
+    if (!g) {
+        free_sims(a);
+        snprintf(err, errlen, "out of memory");
+        return SW_ENOMEM;
+    }
+    a->ghost_y = g;
+    if (a->compare) {
+        for (int i = 0; i < 2; i++) {
+            const sw_integrator *cm = a->compare_methods[i];
+            if (!cm || sw_integrator_accepts(cm, a->sims[0].sys.ode, err, errlen) != SW_OK)
+                default_compare(a, &a->compare_methods[0], &a->compare_methods[1]);
+        }
+        for (int i = 0; i < 2 && a->compare_methods[i]; i++) {
+            if (init_sim(a, &a->sims[a->nsims], a->compare_methods[i], err, errlen) != SW_OK)
+                break;
+            a->nsims++;
+        }
+    }
+    if (a->ghost)
+        ensure_ref(a);
+    a->t_goal = 0;
+    a->nmeas = 0;
+    a->error_ratio = NAN;
+    for (int i = 0; i < SW_APP_SIMS; i++)
+        series_clear(&a->series[i]);
+    return SW_OK;
+}
+
+int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                char *err, size_t errlen)
+{
+    memset(a, 0, sizeof *a);
+    a->scene = sc;
+    if (p)
+        memcpy(a->p, p, sizeof a->p);
+    else
+        sw_scene_defaults(sc, a->p);
+    a->dt = dt > 0 ? dt : sc->dt;
+    a->speed = 1.0;
+    a->slowmo = 1.0;
+    a->error_ratio = NAN;
+    if (!m)
+        m = sw_integrator_find(sc->integrator);
+    return build(a, m, err, errlen);
+}
+
+void sw_app_free(sw_app *a)
+{
+    free_sims(a);
+    free(a->ghost_y);
+    a->ghost_y = NULL;
+}
+
+int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen)
+{
+    const sw_integrator *m = a->sims[0].method;
+    const sw_scene *old_scene = a->scene;
+    double old_p[SW_MAX_PARAMS], old_dt = a->dt;
+    memcpy(old_p, a->p, sizeof old_p);
+    free_sims(a);
+    a->scene = sc;
+    if (p)
+        memcpy(a->p, p, sizeof a->p);
+    else
+        sw_scene_defaults(sc, a->p);
+    if (sc != old_scene)
+        a->dt = sc->dt;
+    int rc = build(a, m, err, errlen);
+    if (rc == SW_EINVAL)
+        rc = build(a, sw_integrator_find(sc->integrator), err, errlen);
+    if (rc != SW_OK) { /* put the old scene back so the app always has a sim */
+        char e2[SW_ERRLEN];
+        a->scene = old_scene;
+        memcpy(a->p, old_p, sizeof old_p);
+        a->dt = old_dt;
+        build(a, m, e2, sizeof e2);
+    }
+    return rc;
+}
+
+int sw_app_set_method(sw_app *a, const sw_integrator *m)
+{
+    char err[SW_ERRLEN];
+    if (sw_sim_set_method(&a->sims[0], m, err, sizeof err) != SW_OK) {
+        snprintf(a->message, sizeof a->message, "%s", err);
+        return SW_EINVAL;
+    }
+    if (a->compare) /* keep the compare pair distinct from the new main method */
+        for (int i = 1; i < a->nsims; i++)
+            if (a->sims[i].method == m) {
+                const sw_integrator *m1, *m2;
+                default_compare(a, &m1, &m2);
+                sw_sim_set_method(&a->sims[i], i == 1 ? m1 : m2, err, sizeof err);
+                a->compare_methods[i - 1] = a->sims[i].method;
+            }
+    snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, m->label);
+    return SW_OK;
+}
+
+int sw_app_set_dt(sw_app *a, double dt)
+{
+    char err[SW_ERRLEN];
+    for (int i = 0; i < a->nsims; i++)
+        if (sw_sim_set_dt(&a->sims[i], dt, err, sizeof err) != SW_OK) {
+            snprintf(a->message, sizeof a->message, "%s", err);
+            return SW_EINVAL;
+        }
+    a->dt = dt;
+    return SW_OK;
+}
+
+int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2)
+{
+    for (int i = 1; i < a->nsims; i++)
+        sw_sim_free(&a->sims[i]);
+    a->nsims = 1;
+    a->compare = on;
+    if (!on)
+        return SW_OK;
+    const sw_integrator *d1, *d2;
+    default_compare(a, &d1, &d2);
+    a->compare_methods[0] = m1 ? m1 : d1;
+    a->compare_methods[1] = m2 ? m2 : (m1 && d1 != m1 ? d1 : d2);
+    char err[SW_ERRLEN];
+    const sw_sim *main = &a->sims[0];
+    for (int i = 0; i < 2; i++) {
+        const sw_integrator *m = a->compare_methods[i];
+        if (!m || sw_integrator_accepts(m, main->sys.ode, err, sizeof err) != SW_OK)
+            continue;
+        sw_sim *s = &a->sims[a->nsims];
+        if (init_sim(a, s, m, err, sizeof err) != SW_OK)
+            continue;
+        /* Compare runs start with the main run's state and time, so the race
+         * starts now, from where the student is. */
+        memcpy(s->sys.y, main->sys.y, (size_t)main->sys.ode->dim * sizeof *s->sys.y);
+        s->t = main->t;
+        s->steps = main->steps;
+        a->nsims++;
+    }
+    return SW_OK;
+}
+
+void sw_app_set_ghost(sw_app *a, int on)
+{
+    a->ghost = on;
+    if (on)
+        ensure_ref(a);
+}
+
+void sw_app_reset(sw_app *a)
+{
+    char err[SW_ERRLEN];
+    for (int i = 0; i < a->nsims; i++)
+        sw_sim_reset(&a->sims[i], err, sizeof err);
+    if (a->have_ref)
+        sw_sim_reset(&a->ref, err, sizeof err);
+    a->t_goal = 0;
+    a->slowmo = 1.0;
+    for (int i = 0; i < SW_APP_SIMS; i++)
+        series_clear(&a->series[i]);
+}
+
+/* The state the ghost shows at time t: exact, or the reference advanced to t.
+ * Returns 0 when there is neither. */
+static int ghost_state(sw_app *a, double t, const double **y)
+{
+    if (has_exact(a)) {
+        a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
+        *y = a->ghost_y;
+        return 1;
+    }
+    ensure_ref(a);
+    if (!a->have_ref)
+        return 0;
+    if (a->ref.t > t + 1e-12) {
+        char err[SW_ERRLEN];
+        sw_sim_reset(&a->ref, err, sizeof err);
+    }
+    sw_sim_run_until(&a->ref, t);
+    if (a->ref.blown || fabs(a->ref.t - t) > 1e-9 * fmax(1.0, t))
+        return 0;
+    *y = a->ref.sys.y;
+    return 1;
+}
+
+double sw_app_error(sw_app *a, int i)
+{
+    const sw_sim *s = &a->sims[i];
+    const double *g;
+    if (s->blown || !ghost_state(a, s->t, &g))
+        return NAN;
+    double m = 0;
+    for (int k = 0; k < s->sys.ode->dim; k++) {
+        double d = fabs(s->sys.y[k] - g[k]);
+        if (!(d <= m))
+            m = d;
+    }
+    return m;
+}
+
+/* Reference state at the report time, from a fresh tight rk45 run. */
+static int reference_at(const sw_app *a, double T, double *out)
+{
+    sw_sim r;
+    char err[SW_ERRLEN];
+    if (sw_sim_init(&r, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
+        return 0;
+    r.stepper.rtol = REF_RTOL;
+    r.stepper.atol = REF_ATOL;
+    int ok = sw_sim_run_until(&r, T) == 0;
+    if (ok)
+        memcpy(out, r.sys.y, (size_t)r.sys.ode->dim * sizeof *out);
+    sw_sim_free(&r);
+    return ok;
+}
+
+double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
+{
+    const sw_scene *sc = a->scene;
+    double T = sc->duration;
+    int dim = a->sims[0].sys.ode->dim;
+    if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
+        return NAN;
+    int exact = has_exact(a);
+    if (!exact && !sc->reference)
+        return NAN;
+    double *want = malloc((size_t)dim * sizeof *want);
+    sw_sim s;
+    char err[SW_ERRLEN];
+    double e = NAN;
+    if (want && sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
+        if (sw_sim_run_until(&s, T) == 0 &&
+            (exact ? sc->exact(&s.sys, s.t, want) == 0 : reference_at(a, s.t, want))) {
+            e = 0;
+            for (int k = 0; k < dim; k++)
+                e = fmax(e, fabs(s.sys.y[k] - want[k]));
+        }
+        sw_sim_free(&s);
+    }
+    free(want);
+    return e;
+}
+
+/* After a dt change: measure the error at the report time at both steps and
+ * tell the student the ratio (≈ 2^order when the step halves). */
+static void measure_dt_change(sw_app *a, double old_dt)
+{
+    const sw_integrator *m = a->sims[0].method;
+    double e_old = sw_app_measure(a, m, old_dt), e_new = sw_app_measure(a, m, a->dt);
+    a->meas_method[0] = a->meas_method[1] = m;
+    a->meas_dt[0] = old_dt;
+    a->meas_err[0] = e_old;
+    a->meas_dt[1] = a->dt;
+    a->meas_err[1] = e_new;
+    a->nmeas = 2;
+    double big = old_dt > a->dt ? e_old : e_new, small = old_dt > a->dt ? e_new : e_old;
+    a->error_ratio = big / small;
+    if (isfinite(a->error_ratio) && small > 0)
+        snprintf(a->message, sizeof a->message,
+                 "dt=%g: error at t=%.3g is %.3g (was %.3g at dt=%g): ratio %.3g, order ~%.2f",
+                 a->dt, a->scene->duration, e_new, e_old, old_dt, a->error_ratio, log2(a->error_ratio));
+    else
+        snprintf(a->message, sizeof a->message, "dt=%g", a->dt);
+}
+
+static int method_index(const sw_integrator *m)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i) == m)
+            return i;
+    return 0;
+}
+
+/* Next (dir = +1) or previous method that this system accepts. */
+static void cycle_method(sw_app *a, int dir)
+{
+    int n = sw_integrator_count(), i = method_index(a->sims[0].method);
+    char err[SW_ERRLEN];
+    for (int k = 1; k <= n; k++) {
+        const sw_integrator *m = sw_integrator_at(((i + dir * k) % n + n) % n);
+        if (sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK) {
+            sw_app_set_method(a, m);
+            return;
+        }
+    }
+}
+
+/* Step a parameter: by ×2 over ranges spanning decades, else by 1/20 of the range. */
+static void change_param(sw_app *a, int dir)
+{
+    const sw_param *pd = &a->scene->params[a->param_sel];
+    double v = a->p[a->param_sel], nv;
+    if (pd->min > 0 && pd->max / pd->min >= 100)
+        nv = dir > 0 ? v * 2 : v / 2;
+    else if (pd->integer)
+        nv = v + dir;
+    else
+        nv = v + dir * (pd->max - pd->min) / 20;
+    if (pd->integer)
+        nv = round(nv);
+    nv = fmin(pd->max, fmax(pd->min, nv));
+    if (nv == v) {
+        snprintf(a->message, sizeof a->message, "%s stays in [%g, %g]", pd->name, pd->min, pd->max);
+        return;
+    }
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    memcpy(p, a->p, sizeof p);
+    p[a->param_sel] = nv;
+    if (sw_app_set_scene(a, a->scene, p, err, sizeof err) != SW_OK)
+        snprintf(a->message, sizeof a->message, "%s", err);
+    else
+        snprintf(a->message, sizeof a->message, "%s = %g %s (restarted)", pd->name, nv, pd->unit);
+}
+
+int sw_app_apply(sw_app *a, sw_action act, int arg)
+{
+    if (act < 32 && (a->locked & (1u << act))) {
+        snprintf(a->message, sizeof a->message, "'%s' is locked on this page", sw_action_name(act));
+        return 0;
+    }
+    switch (act) {
+    case SW_ACT_NEXT_METHOD:
+    case SW_ACT_PREV_METHOD: {
+        const sw_integrator *before = a->sims[0].method;
+        cycle_method(a, act == SW_ACT_NEXT_METHOD ? 1 : -1);
+        return a->sims[0].method != before;
+    }
+    case SW_ACT_PICK_METHOD: {
+        const sw_integrator *m = sw_integrator_at(arg - 1);
+        if (!m) {
+            snprintf(a->message, sizeof a->message, "there is no integrator %d (there are %d)", arg,
+                     sw_integrator_count());
+            return 0;
+        }
+        return sw_app_set_method(a, m) == SW_OK;
+    }
+    case SW_ACT_DT_DOUBLE:
+    case SW_ACT_DT_HALVE: {
+        double old = a->dt, dt = act == SW_ACT_DT_DOUBLE ? old * 2 : old / 2;
+        if (!(dt >= SW_DT_MIN && dt <= SW_DT_MAX)) {
+            snprintf(a->message, sizeof a->message, "dt stays in [%g, %g]", SW_DT_MIN, SW_DT_MAX);
+            return 0;
+        }
+        if (sw_app_set_dt(a, dt) != SW_OK)
+            return 0;
+        measure_dt_change(a, old);
+        return 1;
+    }
+    case SW_ACT_PAUSE:
+        a->paused = !a->paused;
+        msg(a, a->paused ? "paused%s" : "running%s", 0, "");
+        return 1;
+    case SW_ACT_STEP:
+        a->paused = 1;
+        for (int i = 0; i < a->nsims; i++)
+            sw_sim_step(&a->sims[i]);
+        a->t_goal = a->sims[0].t;
+        return 1;
+    case SW_ACT_RESET:
+        sw_app_reset(a);
+        msg(a, "reset to t = 0%s", 0, "");
+        return 1;
+    case SW_ACT_SLOWER:
+    case SW_ACT_FASTER: {
+        double s = act == SW_ACT_FASTER ? a->speed * 2 : a->speed / 2;
+        a->speed = fmin(SW_APP_SPEED_MAX, fmax(SW_APP_SPEED_MIN, s));
+        msg(a, "%sspeed x%g", a->speed, "");
+        return 1;
+    }
+    case SW_ACT_COMPARE:
+        sw_app_set_compare(a, !a->compare, NULL, NULL);
+        if (a->compare && a->nsims > 1)
+            snprintf(a->message, sizeof a->message, "compare: %s, %s and %s", a->sims[0].method->name,
+                     a->sims[1].method->name, a->nsims > 2 ? a->sims[2].method->name : "-");
+        else
+            msg(a, "compare off%s", 0, "");
+        return 1;
+    case SW_ACT_GHOST:
+        sw_app_set_ghost(a, !a->ghost);
+        if (a->ghost && !has_exact(a) && !a->have_ref)
+            msg(a, "no exact solution or reference for %s here", 0, a->scene->name);
+        else
+            msg(a, a->ghost ? "ghost on: %s" : "ghost off%s", 0,
+                a->ghost ? (has_exact(a) ? "the exact solution" : "a tight rk45 reference run") : "");
+        return 1;
+    case SW_ACT_TRAILS:
+        a->trails = !a->trails;
+        return 1;
+    case SW_ACT_GRAPH:
+        a->graph = !a->graph;
+        return 1;
+    case SW_ACT_BRAILLE:
+        a->braille = !a->braille;
+        return 1;
+    case SW_ACT_PANEL:
+        a->panel = !a->panel;
+        return 1;
+    case SW_ACT_PANEL_UP:
+    case SW_ACT_PANEL_DOWN: {
+        int n = a->scene->nparams;
+        a->param_sel = (a->param_sel + (act == SW_ACT_PANEL_UP ? n - 1 : 1)) % n;
+        return 1;
+    }
+    case SW_ACT_PANEL_DEC:
+    case SW_ACT_PANEL_INC:
+        change_param(a, act == SW_ACT_PANEL_INC ? 1 : -1);
+        return 1;
+    case SW_ACT_WORKPREC:
+        a->workprec = !a->workprec;
+        return 1;
+    case SW_ACT_HELP:
+        a->help = !a->help;
+        return 1;
+    case SW_ACT_QUIT:
+        a->quit = 1;
+        return 1;
+    default:
+        return 0; /* recording and lesson actions belong to the front ends */
+    }
+}
+
+int sw_app_key(sw_app *a, int key, int in_lesson)
+{
+    const sw_keybinding *b = sw_key_lookup(key, a->panel, in_lesson);
+    if (!b)
+        return 0;
+    return sw_app_apply(a, b->action, b->arg);
+}
+
+static double graph_value(sw_app *a, int i)
+{
+    double e = sw_sim_energy_drift(&a->sims[i]);
+    return isfinite(e) ? e : sw_app_error(a, i);
+}
+
+void sw_app_advance(sw_app *a, double wall, long max_steps)
+{
+    if (a->paused || !(wall > 0))
+        return;
+    double want = wall * a->speed;
+    a->t_goal += want;
+    int behind = 0;
+    for (int i = 0; i < a->nsims; i++) {
+        sw_sim *s = &a->sims[i];
+        long n = 0;
+        while (!s->blown && s->t < a->t_goal && n < max_steps) {
+            sw_sim_step(s);
+            n++;
+        }
+        if (!s->blown && s->t < a->t_goal)
+            behind = 1;
+    }
+    if (behind) {
+        double got = a->sims[0].t - (a->t_goal - want);
+        a->slowmo = got > 0 ? want / got : INFINITY;
+        a->t_goal = a->sims[0].t; /* drop the backlog: slow motion, not a spiral of death */
+    } else {
+        a->slowmo = 1.0;
+    }
+    for (int i = 0; i < a->nsims; i++)
+        series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
+}
+
+/* Spectral radius of one step of method m on x'' = -2γx' - ω²x: step the two
+ * unit states, read the 2x2 one-step matrix, take its largest |eigenvalue|.
+ * Exact for every method that is linear on linear problems (all built-ins);
+ * NaN for adaptive methods, whose step is not fixed. */
+static double growth_per_step(const sw_integrator *m, double w, double g, double dt)
+{
+    if (m->flags & SW_ADAPTIVE)
+        return NAN;
+    sw_particles p;
+    sw_stepper st;
+    char err[SW_ERRLEN];
+    double mat[2][2], rho = NAN;
+    if (sw_particles_init(&p, 1, 1.0, err, sizeof err) != SW_OK)
+        return NAN;
+    sw_spring *sp = sw_particles_add_springs(&p, 1);
+    if (sp && sw_stepper_init(&st, m, &p.ode, err, sizeof err) == SW_OK) {
+        /* anchored 10 to the left at rest length 10: along x the force is
+         * exactly -ω²x - 2γx', with a direction defined at x = 0 */
+        *sp = (sw_spring){ .a = 0, .b = -1, .k = w * w, .c = 2 * g, .rest = 10.0, .ax = -10.0 };
+        int ok = 1;
+        for (int col = 0; col < 2 && ok; col++) {
+            double t = 0;
+            memset(p.y, 0, 4 * sizeof *p.y);
+            p.y[col ? 2 : 0] = 1e-3;
+            sw_stepper_touch(&st);
+            ok = sw_stepper_step(&st, &p.ode, &t, p.y, dt) == SW_OK;
+            mat[0][col] = p.y[0] / 1e-3;
+            mat[1][col] = p.y[2] / 1e-3;
+        }
+        if (ok) {
+            double tr = mat[0][0] + mat[1][1], det = mat[0][0] * mat[1][1] - mat[0][1] * mat[1][0];
+            double disc = tr * tr / 4 - det;
+            rho = disc >= 0 ? fabs(tr / 2) + sqrt(disc) : sqrt(fabs(det));
+        }
+        sw_stepper_free(&st);
+    }
+    sw_particles_free(&p);
+    return rho;
+}
+
+int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth)
+{
+    const sw_sim *s = &a->sims[0];
+    if (!a->scene->omega_max)
+        return 0;
+    double w = a->scene->omega_max(&s->sys), g = a->scene->damping ? a->scene->damping(&s->sys) : 0.0;
+    *omega_dt = w * a->dt;
+    *limit = s->method->stability;
+    if (a->growth_method != s->method || a->growth_w != w || a->growth_g != g || a->growth_dt != a->dt) {
+        a->growth_method = s->method;
+        a->growth_w = w;
+        a->growth_g = g;
+        a->growth_dt = a->dt;
+        a->growth = growth_per_step(s->method, w, g, a->dt);
+    }
+    *growth = a->growth;
+    return 1;
+}
+
+void sw_app_status(sw_app *a, int i, char *buf, size_t len)
+{
+    const sw_sim *s = &a->sims[i];
+    size_t n = (size_t)snprintf(buf, len, "%s  %s  dt=%g  t=%.3f  steps %ld", i == 0 ? a->scene->name : "  vs",
+                                s->method->name, s->dt, s->t, s->steps);
+    if (i == 0 && a->steps_per_sec > 0 && n < len)
+        n += (size_t)snprintf(buf + n, len - n, "  %.0f steps/s", a->steps_per_sec);
+    if (n < len)
+        n += (size_t)snprintf(buf + n, len - n, "  evals %ld", sw_sim_evals(s));
+    double drift = sw_sim_energy_drift(s);
+    if (isfinite(drift) && n < len)
+        n += (size_t)snprintf(buf + n, len - n, "  energy %+.3g%%", drift);
+    double err = sw_app_error(a, i);
+    if (isfinite(err) && n < len)
+        n += (size_t)snprintf(buf + n, len - n, "  error %.2e", err);
+    if ((s->method->flags & SW_ADAPTIVE) && n < len)
+        n += (size_t)snprintf(buf + n, len - n, "  accepted %ld rejected %ld", s->stepper.accepted,
+                              s->stepper.rejected);
+    if (s->blown && n < len)
+        snprintf(buf + n, len - n, "  BLOWN UP at step %ld", s->blow_step);
+}

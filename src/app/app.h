@@ -1,0 +1,129 @@
+/* The live app, without a terminal: the sims on screen (main, compare,
+ * ghost), the clock that turns wall time into steps, and every action a key
+ * can trigger. The ncurses front end, `play --frames N --ascii` and the
+ * lesson drive-tests all run this same model; only drawing differs. */
+#ifndef SW_APP_H
+#define SW_APP_H
+
+#include <stddef.h>
+
+#include "stepwise/sim.h"
+
+#define SW_APP_SIMS 3          /* main + two compare runs */
+#define SW_APP_GRAPH 600       /* graph samples kept per sim (bounded) */
+#define SW_APP_SPEED_MIN (1.0 / 64)
+#define SW_APP_SPEED_MAX 1024.0
+
+typedef enum sw_action {
+    SW_ACT_NONE,
+    SW_ACT_NEXT_METHOD, SW_ACT_PREV_METHOD, SW_ACT_PICK_METHOD, /* arg: list position 1..9 */
+    SW_ACT_DT_DOUBLE, SW_ACT_DT_HALVE,
+    SW_ACT_PAUSE, SW_ACT_STEP, SW_ACT_RESET,
+    SW_ACT_SLOWER, SW_ACT_FASTER,
+    SW_ACT_COMPARE, SW_ACT_GHOST, SW_ACT_TRAILS, SW_ACT_GRAPH, SW_ACT_BRAILLE,
+    SW_ACT_PANEL, SW_ACT_PANEL_UP, SW_ACT_PANEL_DOWN, SW_ACT_PANEL_DEC, SW_ACT_PANEL_INC,
+    SW_ACT_RECORD, SW_ACT_WORKPREC, SW_ACT_HELP, SW_ACT_QUIT,
+    SW_ACT_PAGE_NEXT, SW_ACT_PAGE_PREV, SW_ACT_HINT, SW_ACT_ANSWER, /* arg: 'a'..'f' */
+    SW_ACT_COUNT
+} sw_action;
+
+/* Special keys, independent of curses (the front end translates). */
+enum {
+    SW_KEY_UP = 0x10000, SW_KEY_DOWN, SW_KEY_LEFT, SW_KEY_RIGHT, SW_KEY_TAB, SW_KEY_BTAB,
+    SW_KEY_PGDN, SW_KEY_PGUP, SW_KEY_ESC
+};
+
+/* One row of the key table: drives both the handler and the `?` screen. */
+typedef struct sw_keybinding {
+    int key;             /* character or SW_KEY_* */
+    sw_action action;
+    int arg;
+    const char *label;   /* how the help screen names the key(s), NULL: listed with the row before */
+    const char *help;
+    int lesson_only;     /* listed under "lesson" in help */
+} sw_keybinding;
+
+const sw_keybinding *sw_keys(int *count);
+/* The binding for a key in the given context (panel open changes the arrows). */
+const sw_keybinding *sw_key_lookup(int key, int panel_open, int in_lesson);
+/* Human name of an action, for messages ("compare", "dt halve", ...). */
+const char *sw_action_name(sw_action a);
+
+/* A bounded time series for the graph pane. */
+typedef struct sw_series {
+    double t[SW_APP_GRAPH], v[SW_APP_GRAPH];
+    int len, stride, skip;  /* decimation: keep every stride-th sample */
+} sw_series;
+
+typedef struct sw_app {
+    const sw_scene *scene;
+    double p[SW_MAX_PARAMS];
+    double dt;
+    sw_sim sims[SW_APP_SIMS];
+    int nsims;                  /* 1, or 3 with compare on */
+    const sw_integrator *compare_methods[SW_APP_SIMS - 1];
+    int compare, ghost, trails, graph, braille, panel, help, workprec, paused;
+    int param_sel;
+    double speed;               /* simulated seconds per wall second */
+    double t_goal;              /* simulated time the clock asks for */
+    double slowmo;              /* 1, or how many times slower than asked (>1) */
+    double steps_per_sec;       /* measured by the front end */
+    /* ghost: exact state, or a tight rk45 reference run in lockstep */
+    double *ghost_y;
+    sw_sim ref;
+    int have_ref;
+    /* live error measurement at the scene's report time */
+    double meas_dt[2], meas_err[2];
+    const sw_integrator *meas_method[2];
+    int nmeas;
+    double error_ratio;         /* err(previous) / err(latest), NaN until comparable */
+    sw_series series[SW_APP_SIMS];
+    unsigned locked;            /* bit per sw_action a lesson has locked (bits < 32) */
+    char message[SW_ERRLEN + 64]; /* one-line feedback for the last action */
+    int quit;
+    int recorded;               /* a trace has been recorded this session */
+    char record_path[256];      /* non-empty while recording */
+    void *recorder;             /* trace writer while recording, owned by the front end */
+    /* cache for sw_app_stability */
+    const sw_integrator *growth_method;
+    double growth_w, growth_g, growth_dt, growth;
+} sw_app;
+
+/* Build scene sc (p NULL: defaults) under method m (NULL: the scene's default)
+ * with step dt (<= 0: the scene's default). 0 or a status with err filled. */
+int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                char *err, size_t errlen);
+void sw_app_free(sw_app *a);
+/* Replace scene and parameters (lessons, the parameter panel); keeps the methods. */
+int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen);
+/* Make m the main method (keeps state and time); 0 or SW_EINVAL with a message. */
+int sw_app_set_method(sw_app *a, const sw_integrator *m);
+/* Set dt for every sim (keeps state and time); 0 or SW_EINVAL. */
+int sw_app_set_dt(sw_app *a, double dt);
+/* Turn compare on with these two methods (NULL: a sensible pair) or off. */
+int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2);
+void sw_app_set_ghost(sw_app *a, int on);
+/* Apply an action; sets a->message. Returns 1 when it changed anything. */
+int sw_app_apply(sw_app *a, sw_action act, int arg);
+/* Turn a key into its action (honouring locks and context) and apply it. */
+int sw_app_key(sw_app *a, int key, int in_lesson);
+/* Advance by wall seconds: simulated time wall·speed in whole steps of dt,
+ * stopping early after max_steps steps per sim (then slowmo > 1). */
+void sw_app_advance(sw_app *a, double wall, long max_steps);
+/* Back to t = 0 for every sim. */
+void sw_app_reset(sw_app *a);
+
+/* The stiffest mode under the main method: ω·Δt, the method's limit on an
+ * undamped oscillator (0: none, INFINITY: any step) and the growth factor
+ * per step of that mode (spectral radius of the one-step map: > 1 grows);
+ * returns 0 when the scene has no stiffest frequency. */
+int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth);
+/* The error of sim i now: against the exact solution or the reference. */
+double sw_app_error(sw_app *a, int i);
+/* One status line for sim i (exact integrator name, dt=, t, steps, evals, ...). */
+void sw_app_status(sw_app *a, int i, char *buf, size_t len);
+/* Error at the scene's report time for (method, dt), from a fresh headless
+ * run; NaN when there is no exact solution or reference or it blew up. */
+double sw_app_measure(sw_app *a, const sw_integrator *m, double dt);
+
+#endif

@@ -1,0 +1,825 @@
+/* Work–precision sweeps: each method runs a scene to its report time at a
+ * geometric sequence of step sizes (tolerances for adaptive methods); each run
+ * records its error against the exact solution or a cached rk45 reference,
+ * its evaluations and its wall time. Invariant: every run is an sw_sim
+ * advanced by sw_sim_run_until, exactly as the UI and the recorder advance
+ * it; this file measures and renders, it never prints. */
+#include "lab/bench.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "stepwise/stepwise.h"
+
+#define MAX_REPEATS 15
+#define FIT_CEILING 1e-2 /* relative to scale: coarser errors are not asymptotic */
+
+void sw_bench_config_default(sw_bench_config *c)
+{
+    *c = (sw_bench_config){ .min_points = 8, .max_points = 16, .fit_points = 4, .repeats = 3,
+                            .repeat_below = 0.05, .max_work = 1e8 };
+}
+
+void sw_bench_config_quick(sw_bench_config *c)
+{
+    *c = (sw_bench_config){ .min_points = 5, .max_points = 6, .fit_points = 3, .repeats = 1,
+                            .repeat_below = 0.0, .max_work = 2e6 };
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double max_abs_diff(int n, const double *a, const double *b)
+{
+    double m = 0;
+    for (int i = 0; i < n; i++) {
+        double d = fabs(a[i] - b[i]);
+        if (!(d <= m)) /* NaN wins */
+            m = d;
+    }
+    return m;
+}
+
+/* The sim's state carried to exactly time T: sw_sim_run_until may stop up to
+ * 1e-9·dt short of T, so add (T - t)·f(t, y), leaving an O((T - t)²) error.
+ * Uses one evaluation; callers read the counters first. */
+static void state_at(sw_sim *s, double T, double *out, double *deriv)
+{
+    int n = s->sys.ode->dim;
+    memcpy(out, s->sys.y, (size_t)n * sizeof *out);
+    double gap = T - s->t;
+    if (gap != 0) {
+        sw_ode_eval(s->sys.ode, s->t, s->sys.y, deriv);
+        for (int i = 0; i < n; i++)
+            out[i] += gap * deriv[i];
+    }
+}
+
+int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t whylen)
+{
+    sw_system sys;
+    char err[SW_ERRLEN];
+    if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK) {
+        snprintf(why, whylen, "%s", err);
+        return 0;
+    }
+    int ok = 0;
+    double *y = malloc((size_t)sys.ode->dim * sizeof *y);
+    if (y && sc->exact && sc->exact(&sys, sc->duration, y) == 0)
+        ok = 1;
+    else if (sc->reference)
+        ok = 1;
+    else
+        snprintf(why, whylen, "%s has no exact solution%s and no trustworthy reference (events at "
+                 "step boundaries make every run, rk45 too, only first order)", sc->name,
+                 sc->exact ? " for these parameters" : "");
+    free(y);
+    sw_system_free(&sys);
+    return ok;
+}
+
+/* One rk45 run to the report time at the given tolerances, state into out. */
+static int rk45_run(sw_bench_report *r, double rtol, double atol, double *out, double *deriv,
+                    char *err, size_t errlen)
+{
+    const sw_integrator *m = sw_integrator_find("rk45");
+    double dt = fmax(SW_DT_MIN, fmin(fmin(r->t_report, 8.0 * r->scene->dt), SW_DT_MAX));
+    sw_sim s;
+    int rc = sw_sim_init(&s, r->scene, r->p, m, dt, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    s.stepper.rtol = rtol;
+    s.stepper.atol = atol;
+    if (sw_sim_run_until(&s, r->t_report)) {
+        snprintf(err, errlen, "%s: the rk45 reference run (rtol %g) failed at t = %g: %s",
+                 r->scene->name, rtol, s.blow_time, s.blow_reason);
+        rc = SW_EDIVERGED;
+    } else {
+        r->ref_evals += sw_sim_evals(&s);
+        state_at(&s, r->t_report, out, deriv);
+    }
+    sw_sim_free(&s);
+    return rc;
+}
+
+int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen)
+{
+    memset(r, 0, sizeof *r);
+    r->scene = sc;
+    if (p)
+        memcpy(r->p, p, (size_t)sc->nparams * sizeof *p);
+    else
+        sw_scene_defaults(sc, r->p);
+    r->t_report = sc->duration;
+    r->omega = NAN;
+    sw_system sys;
+    int rc = sw_system_build(&sys, sc, r->p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    r->dim = sys.ode->dim;
+    if (sc->omega_max)
+        r->omega = sc->omega_max(&sys);
+    r->truth = malloc((size_t)r->dim * sizeof *r->truth);
+    double *work = malloc((size_t)2 * r->dim * sizeof *work);
+    if (!r->truth || !work) {
+        sw_system_free(&sys);
+        free(work);
+        sw_bench_free(r);
+        snprintf(err, errlen, "out of memory for a %d-long reference state", r->dim);
+        return SW_ENOMEM;
+    }
+    if (sc->exact && sc->exact(&sys, r->t_report, r->truth) == 0) {
+        r->source = SW_BENCH_EXACT;
+    } else if (sc->reference) {
+        /* The reference, and a 10x looser run whose distance from it bounds
+         * the reference's own error from above (DP5's global error scales
+         * roughly linearly with the tolerance). */
+        r->source = SW_BENCH_REFERENCE;
+        rc = rk45_run(r, 1e-12, 1e-14, r->truth, work, err, errlen);
+        if (rc == SW_OK)
+            rc = rk45_run(r, 1e-11, 1e-13, work + r->dim, work, err, errlen);
+        if (rc == SW_OK)
+            r->ref_error = max_abs_diff(r->dim, r->truth, work + r->dim);
+    } else {
+        sw_bench_measurable(sc, r->p, err, errlen);
+        rc = SW_EINVAL;
+    }
+    sw_system_free(&sys);
+    free(work);
+    if (rc != SW_OK) {
+        sw_bench_free(r);
+        return rc;
+    }
+    r->scale = 1.0;
+    for (int i = 0; i < r->dim; i++)
+        r->scale = fmax(r->scale, fabs(r->truth[i]));
+    return SW_OK;
+}
+
+void sw_bench_free(sw_bench_report *r)
+{
+    free(r->truth);
+    r->truth = NULL;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Run method m at (dt, rtol) `repeats` times; the first run gives the error
+ * and counters (every run is identical: the sim is deterministic), the median
+ * of all runs the time. *work gets (evals + solver iterations) × dim. */
+static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt, double rtol,
+                     const sw_bench_config *c, sw_bench_point *pt, double *work, double *scratch,
+                     char *err, size_t errlen)
+{
+    double times[MAX_REPEATS];
+    int repeats = c->repeats < 1 ? 1 : c->repeats > MAX_REPEATS ? MAX_REPEATS : c->repeats;
+    int nrep = 0;
+    memset(pt, 0, sizeof *pt);
+    pt->dt = dt;
+    pt->rtol = rtol;
+    for (int rep = 0; rep < repeats; rep++) {
+        sw_sim s;
+        int rc = sw_sim_init(&s, r->scene, r->p, m, dt, err, errlen);
+        if (rc != SW_OK)
+            return rc;
+        if (rtol > 0) {
+            s.stepper.rtol = rtol;
+            s.stepper.atol = 1e-3 * rtol;
+        }
+        double t0 = now_seconds();
+        sw_sim_run_until(&s, r->t_report);
+        times[nrep++] = now_seconds() - t0;
+        if (rep == 0) {
+            pt->evals = sw_sim_evals(&s);
+            pt->solves = s.sys.ode->solves;
+            pt->steps = s.steps;
+            pt->blown = s.blown;
+            pt->blow_time = s.blow_time;
+            *work = ((double)pt->evals + (double)s.sys.ode->solver_iters) * r->dim;
+            if (s.blown)
+                pt->error = NAN;
+            else if (r->source == SW_BENCH_EXACT)
+                pt->error = sw_sim_exact_error(&s, scratch);
+            else {
+                state_at(&s, r->t_report, scratch, scratch + r->dim);
+                pt->error = max_abs_diff(r->dim, scratch, r->truth);
+            }
+        }
+        sw_sim_free(&s);
+        if (times[0] >= c->repeat_below)
+            break;
+    }
+    qsort(times, (size_t)nrep, sizeof times[0], cmp_double);
+    pt->seconds = nrep % 2 ? times[nrep / 2] : 0.5 * (times[nrep / 2 - 1] + times[nrep / 2]);
+    pt->repeats = nrep;
+    pt->h = rtol > 0 ? r->t_report / (double)(pt->steps > 0 ? pt->steps : 1) : dt;
+    /* Round-off grows at most about linearly with the steps taken; a
+     * reference carries its own error besides. */
+    pt->floor = r->scale * (1e-13 + 4e-16 * (double)pt->steps) + r->ref_error;
+    return SW_OK;
+}
+
+/* The first step of the sweep: eight default steps, or twice the method's
+ * theoretical limit when the scene knows ω, so the sweep shows the method
+ * failing as well as converging; at most half the report time. */
+static double sweep_top(const sw_bench_report *r, const sw_integrator *m)
+{
+    double top = 8.0 * r->scene->dt;
+    if (r->omega > 0 && isfinite(r->omega) && m->stability > 0 && isfinite(m->stability))
+        top = fmax(top, 2.0 * m->stability / r->omega);
+    top = fmin(top, 0.5 * r->t_report);
+    return fmax(SW_DT_MIN, fmin(top, SW_DT_MAX));
+}
+
+static int candidate(const sw_bench_report *r, const sw_bench_point *pt)
+{
+    return !pt->blown && pt->error > pt->floor && pt->error < FIT_CEILING * r->scale && pt->h > 0;
+}
+
+static double local_slope(const sw_bench_point *a, const sw_bench_point *b)
+{
+    if (!(a->h != b->h))
+        return NAN;
+    return log(b->error / a->error) / log(b->h / a->h);
+}
+
+/* Least-squares slope of ln error against ln h over pts[first..last]:
+ * Σ(x - x̄)(y - ȳ) / Σ(x - x̄)², x = ln h, y = ln error. */
+static double ls_slope(const sw_bench_point *pts, int first, int last)
+{
+    int n = last - first + 1;
+    double sx = 0, sy = 0, sxy = 0, sxx = 0;
+    for (int i = first; i <= last; i++) {
+        sx += log(pts[i].h);
+        sy += log(pts[i].error);
+    }
+    for (int i = first; i <= last; i++) {
+        double dx = log(pts[i].h) - sx / n;
+        sxy += dx * (log(pts[i].error) - sy / n);
+        sxx += dx * dx;
+    }
+    return sxx > 0 ? sxy / sxx : NAN;
+}
+
+double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
+{
+    const sw_bench_point *pts = s->points;
+    int last = -1, first;
+    for (int i = 0; i < s->npoints; i++)
+        s->points[i].in_fit = 0;
+    for (int i = s->npoints - 1; i >= 0 && last < 0; i--)
+        if (candidate(r, &pts[i]))
+            last = i;
+    first = last;
+    while (first > 0 && candidate(r, &pts[first - 1]))
+        first--;
+    /* Drop coarse points that are not yet in the asymptotic range. */
+    while (last >= 0 && last - first >= 2) {
+        double rest = ls_slope(pts, first + 1, last);
+        if (fabs(local_slope(&pts[first], &pts[first + 1]) - rest) <= 0.2 + 0.1 * fabs(rest))
+            break;
+        first++;
+    }
+    s->nfit = last < 0 ? 0 : last - first + 1;
+    s->order = s->slope_min = s->slope_max = NAN;
+    s->asymptotic = 0;
+    if (s->nfit < 2) {
+        s->nfit = 0;
+        return s->order;
+    }
+    for (int i = first; i <= last; i++)
+        s->points[i].in_fit = 1;
+    s->order = ls_slope(pts, first, last);
+    s->slope_min = INFINITY;
+    s->slope_max = -INFINITY;
+    for (int i = first; i < last; i++) {
+        double k = local_slope(&pts[i], &pts[i + 1]);
+        s->slope_min = fmin(s->slope_min, k);
+        s->slope_max = fmax(s->slope_max, k);
+    }
+    s->asymptotic = s->slope_max - s->slope_min <= 0.25 + 0.1 * fabs(s->order);
+    return s->order;
+}
+
+int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_config *c, char *err,
+                   size_t errlen)
+{
+    if (r->nseries == SW_BENCH_MAX_METHODS) {
+        snprintf(err, errlen, "at most %d methods per report", SW_BENCH_MAX_METHODS);
+        return SW_EINVAL;
+    }
+    sw_system sys;
+    int rc = sw_system_build(&sys, r->scene, r->p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    rc = sw_integrator_accepts(m, sys.ode, err, errlen);
+    sw_system_free(&sys);
+    if (rc != SW_OK)
+        return rc;
+    double *scratch = malloc((size_t)2 * r->dim * sizeof *scratch);
+    if (!scratch) {
+        snprintf(err, errlen, "out of memory for a %d-long state", r->dim);
+        return SW_ENOMEM;
+    }
+    sw_bench_series *se = &r->series[r->nseries];
+    memset(se, 0, sizeof *se);
+    se->method = m;
+    int adaptive = (m->flags & SW_ADAPTIVE) != 0;
+    int maxp = c->max_points < 1 ? 1 : c->max_points > SW_BENCH_MAX_POINTS ? SW_BENCH_MAX_POINTS : c->max_points;
+    /* Adaptive methods choose their own steps: allow up to half the report time. */
+    double top = adaptive ? fmax(SW_DT_MIN, fmin(0.5 * r->t_report, SW_DT_MAX)) : sweep_top(r, m);
+    /* Before the first run, guess its work from the nominal evaluations. */
+    double est = ceil(r->t_report / top) * (m->evals > 0 ? m->evals : 1) * r->dim;
+    se->stop = SW_BENCH_STOP_MAX;
+    for (int k = 0; k < maxp; k++) {
+        double dt = adaptive ? top : ldexp(top, -k);
+        double rtol = adaptive ? 1e-2 * pow(10.0, -k) : 0.0;
+        if (dt < SW_DT_MIN) {
+            se->stop = SW_BENCH_STOP_DT_MIN;
+            break;
+        }
+        if (est > c->max_work) {
+            se->stop = SW_BENCH_STOP_BUDGET;
+            break;
+        }
+        sw_bench_point *pt = &se->points[k];
+        double work;
+        rc = run_point(r, m, dt, rtol, c, pt, &work, scratch, err, errlen);
+        if (rc != SW_OK)
+            break;
+        se->npoints = k + 1;
+        /* Next run: halving dt doubles the steps; a 10x tighter tolerance
+         * costs DP5 about 10^(1/5) = 1.6x as many steps (2x to be safe).
+         * A run that blew up stopped early: scale its per-step cost. */
+        double per_step = work / (double)(pt->steps > 0 ? pt->steps : 1);
+        double steps_next = adaptive ? 2.0 * (double)pt->steps : ceil(r->t_report / (0.5 * dt));
+        est = per_step * steps_next;
+        if (!pt->blown && pt->error <= pt->floor) {
+            se->stop = SW_BENCH_STOP_FLOOR;
+            break;
+        }
+        if (k + 1 >= c->min_points) {
+            sw_bench_fit(r, se);
+            if (se->nfit >= c->fit_points && se->asymptotic) {
+                se->stop = SW_BENCH_STOP_ENOUGH;
+                break;
+            }
+        }
+    }
+    free(scratch);
+    if (rc != SW_OK)
+        return rc;
+    sw_bench_fit(r, se);
+    r->nseries++;
+    return SW_OK;
+}
+
+int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, int nmethods,
+                       const sw_bench_config *c, char *err, size_t errlen)
+{
+    int count = methods ? nmethods : sw_integrator_count();
+    sw_system sys;
+    int rc = sw_system_build(&sys, r->scene, r->p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    for (int i = 0; i < count && rc == SW_OK; i++) {
+        const sw_integrator *m = methods ? methods[i] : sw_integrator_at(i);
+        char why[SW_ERRLEN];
+        if (sw_integrator_accepts(m, sys.ode, why, sizeof why) != SW_OK)
+            continue;
+        rc = sw_bench_sweep(r, m, c, err, errlen);
+    }
+    sw_system_free(&sys);
+    return rc;
+}
+
+int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, char *err,
+                         size_t errlen)
+{
+    sw_bench_config c;
+    sw_bench_config_quick(&c);
+    int rc = sw_bench_init(r, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    rc = sw_bench_sweep_all(r, NULL, 0, &c, err, errlen);
+    if (rc != SW_OK)
+        sw_bench_free(r);
+    return rc;
+}
+
+int sw_bench_cheapest(const sw_bench_report *r, double level, int by_evals, int *point)
+{
+    int best = -1;
+    double best_cost = INFINITY;
+    for (int i = 0; i < r->nseries; i++)
+        for (int j = 0; j < r->series[i].npoints; j++) {
+            const sw_bench_point *pt = &r->series[i].points[j];
+            if (pt->blown || !(pt->error <= level))
+                continue;
+            double cost = by_evals ? (double)pt->evals : pt->seconds;
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = i;
+                *point = j;
+            }
+        }
+    return best;
+}
+
+char sw_bench_marker(const sw_integrator *m)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i) == m)
+            return i < 9 ? (char)('1' + i) : i < 9 + 26 ? (char)('a' + i - 9) : '?';
+    return '?';
+}
+
+/* ---- plots ---------------------------------------------------------------- */
+
+/* The plotted coordinates of a point: cost and error, both positive and finite. */
+static int plot_xy(const sw_bench_point *pt, int xaxis, double *x, double *y)
+{
+    *x = xaxis == SW_BENCH_X_EVALS ? (double)pt->evals : pt->seconds;
+    *y = pt->error;
+    return !pt->blown && *x > 0 && isfinite(*x) && *y > 0 && isfinite(*y);
+}
+
+/* Whole decades covering every plotted point of every report: 0 when none. */
+static int plot_range(const sw_bench_report *const *reports, int nreports, int xaxis, int range[4])
+{
+    double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
+    for (int k = 0; k < nreports; k++)
+        for (int i = 0; i < reports[k]->nseries; i++)
+            for (int j = 0; j < reports[k]->series[i].npoints; j++) {
+                double v[2];
+                if (!plot_xy(&reports[k]->series[i].points[j], xaxis, &v[0], &v[1]))
+                    continue;
+                for (int d = 0; d < 2; d++) {
+                    lo[d] = fmin(lo[d], log10(v[d]));
+                    hi[d] = fmax(hi[d], log10(v[d]));
+                }
+            }
+    if (!(lo[0] <= hi[0]))
+        return 0;
+    for (int d = 0; d < 2; d++) {
+        /* log10 of a positive finite double lies in [-324, 309]: safe to convert. */
+        range[2 * d] = (int)floor(lo[d]);
+        range[2 * d + 1] = (int)ceil(hi[d]);
+        if (range[2 * d + 1] == range[2 * d])
+            range[2 * d + 1]++;
+    }
+    return 1;
+}
+
+/* Map v in [lo, hi] onto 0..cells-1, clipped. */
+static int cell_of(double v, double lo, double hi, int cells)
+{
+    double f = (v - lo) / (hi - lo) * (cells - 1);
+    if (!(f >= 0))
+        return 0;
+    if (f > cells - 1)
+        return cells - 1;
+    return (int)lround(f);
+}
+
+typedef struct grid {
+    char *buf;
+    int width, height;
+} grid;
+
+static void put(grid *g, int row, int col, const char *text)
+{
+    if (row < 0 || row >= g->height)
+        return;
+    for (; *text && col < g->width; text++, col++)
+        if (col >= 0)
+            g->buf[(size_t)row * (size_t)(g->width + 1) + (size_t)col] = *text;
+}
+
+static char *at(grid *g, int row, int col)
+{
+    return &g->buf[(size_t)row * (size_t)(g->width + 1) + (size_t)col];
+}
+
+int sw_bench_plot(const sw_bench_report *r, int xaxis, char *buf, int width, int height)
+{
+    if (!buf || width < 40 || height < 10)
+        return SW_EINVAL;
+    grid g = { buf, width, height };
+    for (int row = 0; row < height; row++) {
+        memset(at(&g, row, 0), ' ', (size_t)width);
+        *at(&g, row, width) = '\n';
+    }
+    buf[(size_t)(width + 1) * (size_t)height] = '\0';
+
+    /* Legend lines first: they decide how many rows the plot gets. */
+    char legend[8][512];
+    int nlegend = 0;
+    size_t used = 0;
+    legend[0][0] = '\0';
+    for (int i = 0; i < r->nseries && nlegend < 8; i++) {
+        char entry[96];
+        snprintf(entry, sizeof entry, "%c=%.40s", sw_bench_marker(r->series[i].method),
+                 r->series[i].method->name);
+        size_t len = strlen(entry);
+        if (used > 0 && used + 2 + len > (size_t)width) {
+            if (++nlegend == 8)
+                break;
+            used = 0;
+            legend[nlegend][0] = '\0';
+        }
+        used += (size_t)snprintf(legend[nlegend] + used, sizeof legend[0] - used, "%s%s",
+                                 used ? "  " : "", entry);
+    }
+    if (used > 0 && nlegend < 8)
+        nlegend++;
+    int plot_rows = height - 3 - nlegend;
+    if (plot_rows < 4) {
+        nlegend = height - 7;
+        plot_rows = 4;
+    }
+
+    char title[256];
+    snprintf(title, sizeof title, "%.40s: largest error against %s", r->scene->name,
+             xaxis == SW_BENCH_X_EVALS ? "derivative evaluations" : "wall time (s)");
+    put(&g, 0, 0, title);
+    for (int i = 0; i < nlegend; i++)
+        put(&g, height - nlegend + i, 0, legend[i]);
+
+    int range[4];
+    const sw_bench_report *one[1] = { r };
+    if (!plot_range(one, 1, xaxis, range)) {
+        put(&g, 1 + plot_rows / 2, 2, "(no points: every run blew up or none was made)");
+        return SW_OK;
+    }
+    const int margin = 7; /* "1e-10 |" */
+    int top = 1, bottom = plot_rows, axis_row = plot_rows + 1, left = margin + 1;
+    int plot_cols = width - left - 1;
+    for (int row = top; row <= bottom; row++)
+        *at(&g, row, margin - 1 + 0) = '|';
+    for (int col = margin - 1; col < width - 1; col++)
+        *at(&g, axis_row, col) = col == margin - 1 ? '+' : '-';
+    /* Decade labels: y at the left, x under the axis; skip ones that would collide. */
+    int last_row = -1;
+    for (int d = range[3]; d >= range[2]; d--) {
+        int row = bottom - cell_of(d, range[2], range[3], plot_rows);
+        if (row == last_row)
+            continue;
+        char label[16];
+        snprintf(label, sizeof label, "1e%d", d);
+        put(&g, row, margin - 2 - (int)strlen(label), label);
+        last_row = row;
+    }
+    int free_col = 0;
+    for (int d = range[0]; d <= range[1]; d++) {
+        int col = left + cell_of(d, range[0], range[1], plot_cols);
+        char label[16];
+        snprintf(label, sizeof label, "1e%d", d);
+        int start = col - (int)strlen(label) / 2;
+        if (start < free_col || start + (int)strlen(label) > width)
+            continue;
+        *at(&g, axis_row, col) = '+';
+        put(&g, axis_row + 1, start, label);
+        free_col = start + (int)strlen(label) + 1;
+    }
+    /* Lines first, then markers on top. */
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < r->nseries; i++) {
+            const sw_bench_series *s = &r->series[i];
+            char mark = sw_bench_marker(s->method);
+            int prev_row = -1, prev_col = -1;
+            for (int j = 0; j < s->npoints; j++) {
+                double x, y;
+                if (!plot_xy(&s->points[j], xaxis, &x, &y))
+                    continue;
+                int col = left + cell_of(log10(x), range[0], range[1], plot_cols);
+                int row = bottom - cell_of(log10(y), range[2], range[3], plot_rows);
+                if (pass == 1)
+                    *at(&g, row, col) = mark;
+                else if (prev_row >= 0) {
+                    int n = abs(col - prev_col) > abs(row - prev_row) ? abs(col - prev_col) : abs(row - prev_row);
+                    for (int k = 1; k < n; k++) {
+                        int rr = prev_row + (int)lround((double)(row - prev_row) * k / n);
+                        int cc = prev_col + (int)lround((double)(col - prev_col) * k / n);
+                        if (*at(&g, rr, cc) == ' ')
+                            *at(&g, rr, cc) = '.';
+                    }
+                }
+                prev_row = row;
+                prev_col = col;
+            }
+        }
+    return SW_OK;
+}
+
+/* ---- files -------------------------------------------------------------- */
+
+static void csv_name(FILE *out, const char *s)
+{
+    /* Quote when a name could break the row (plugins choose their names). */
+    if (!strpbrk(s, ",\"\n\r")) {
+        fputs(s, out);
+        return;
+    }
+    fputc('"', out);
+    for (; *s; s++) {
+        if (*s == '"')
+            fputc('"', out);
+        fputc(*s, out);
+    }
+    fputc('"', out);
+}
+
+int sw_bench_write_csv(FILE *out, const sw_bench_report *const *reports, int nreports, char *err,
+                       size_t errlen)
+{
+    fputs("scene,method,dt,rtol,h,error,evals,solves,steps,seconds,repeats,blown,blow_time,"
+          "in_fit,order,reference\n", out);
+    for (int k = 0; k < nreports; k++) {
+        const sw_bench_report *r = reports[k];
+        for (int i = 0; i < r->nseries; i++) {
+            const sw_bench_series *s = &r->series[i];
+            for (int j = 0; j < s->npoints; j++) {
+                const sw_bench_point *pt = &s->points[j];
+                csv_name(out, r->scene->name);
+                fputc(',', out);
+                csv_name(out, s->method->name);
+                fprintf(out, ",%.17g,%.17g,%.17g,%.17g,%ld,%ld,%ld,%.17g,%d,%d,%.17g,%d,%.17g,%s\n",
+                        pt->dt, pt->rtol, pt->h, pt->error, pt->evals, pt->solves, pt->steps,
+                        pt->seconds, pt->repeats, pt->blown, pt->blown ? pt->blow_time : NAN,
+                        pt->in_fit, s->order, r->source == SW_BENCH_EXACT ? "exact" : "rk45");
+            }
+        }
+    }
+    if (fflush(out) != 0 || ferror(out)) {
+        snprintf(err, errlen, "could not write the CSV");
+        return SW_EIO;
+    }
+    return SW_OK;
+}
+
+static void xml_text(FILE *out, const char *s)
+{
+    for (; *s; s++) {
+        switch (*s) {
+        case '&': fputs("&amp;", out); break;
+        case '<': fputs("&lt;", out); break;
+        case '>': fputs("&gt;", out); break;
+        case '"': fputs("&quot;", out); break;
+        case '\'': fputs("&apos;", out); break;
+        default: fputc(*s, out);
+        }
+    }
+}
+
+static const char *const palette[] = {
+    "#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+    "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22",
+};
+#define NPALETTE ((int)(sizeof palette / sizeof palette[0]))
+
+static const char *method_color(const sw_integrator *m)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i) == m)
+            return palette[i % NPALETTE];
+    return palette[NPALETTE - 1];
+}
+
+/* SVG layout, in px. */
+#define SVG_W 1000
+#define PANEL_W 400
+#define PANEL_H 280
+#define PANEL_LEFT 90  /* room for y tick labels */
+#define PANEL_GAP 80
+#define ROW_H 420
+#define ROW_TOP 40
+
+static void svg_panel(FILE *out, const sw_bench_report *r, int xaxis, double x0, double y0)
+{
+    int range[4];
+    const sw_bench_report *one[1] = { r };
+    fprintf(out, "<g class=\"panel\" data-scene=\"");
+    xml_text(out, r->scene->name);
+    fprintf(out, "\" data-x=\"%s\">\n", xaxis == SW_BENCH_X_EVALS ? "evals" : "time");
+    fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%d\" fill=\"#ffffff\" "
+                 "stroke=\"#444444\"/>\n", x0, y0, PANEL_W, PANEL_H);
+    if (!plot_range(one, 1, xaxis, range)) {
+        range[0] = -6;
+        range[1] = 0;
+        range[2] = -12;
+        range[3] = 0;
+    }
+    double sx = PANEL_W / (double)(range[1] - range[0]), sy = PANEL_H / (double)(range[3] - range[2]);
+    /* x axis: a decade tick and grid line each, labels below. */
+    fprintf(out, "<g class=\"axis\" data-axis=\"x\">\n");
+    fprintf(out, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#000000\"/>\n", x0,
+            y0 + PANEL_H, x0 + PANEL_W, y0 + PANEL_H);
+    int xstep = (range[1] - range[0] + 7) / 8;
+    for (int d = range[0]; d <= range[1]; d += xstep) {
+        double x = x0 + (d - range[0]) * sx;
+        fprintf(out, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#dddddd\"/>\n", x,
+                y0, x, y0 + PANEL_H);
+        fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\" text-anchor=\"middle\">1e%d</text>\n",
+                x, y0 + PANEL_H + 16, d);
+    }
+    fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"13\" text-anchor=\"middle\">%s</text>\n",
+            x0 + PANEL_W / 2.0, y0 + PANEL_H + 36,
+            xaxis == SW_BENCH_X_EVALS ? "derivative evaluations" : "wall time (s)");
+    fprintf(out, "</g>\n<g class=\"axis\" data-axis=\"y\">\n");
+    fprintf(out, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#000000\"/>\n", x0, y0,
+            x0, y0 + PANEL_H);
+    int ystep = (range[3] - range[2] + 9) / 10;
+    for (int d = range[2]; d <= range[3]; d += ystep) {
+        double y = y0 + PANEL_H - (d - range[2]) * sy;
+        fprintf(out, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#dddddd\"/>\n", x0,
+                y, x0 + PANEL_W, y);
+        fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\" text-anchor=\"end\">1e%d</text>\n",
+                x0 - 6, y + 4, d);
+    }
+    fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"13\" text-anchor=\"middle\" "
+                 "transform=\"rotate(-90 %.2f %.2f)\">largest state error</text>\n",
+            x0 - 52, y0 + PANEL_H / 2.0, x0 - 52, y0 + PANEL_H / 2.0);
+    fprintf(out, "</g>\n");
+    for (int i = 0; i < r->nseries; i++) {
+        const sw_bench_series *s = &r->series[i];
+        const char *color = method_color(s->method);
+        fprintf(out, "<g class=\"series\" data-method=\"");
+        xml_text(out, s->method->name);
+        fprintf(out, "\" stroke=\"%s\" fill=\"%s\">\n<polyline fill=\"none\" stroke-width=\"1.5\" "
+                     "points=\"", color, color);
+        int first = 1;
+        for (int j = 0; j < s->npoints; j++) {
+            double x, y;
+            if (!plot_xy(&s->points[j], xaxis, &x, &y))
+                continue;
+            fprintf(out, "%s%.2f,%.2f", first ? "" : " ", x0 + (log10(x) - range[0]) * sx,
+                    y0 + PANEL_H - (log10(y) - range[2]) * sy);
+            first = 0;
+        }
+        fprintf(out, "\"/>\n");
+        for (int j = 0; j < s->npoints; j++) {
+            double x, y;
+            if (!plot_xy(&s->points[j], xaxis, &x, &y))
+                continue;
+            fprintf(out, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\"/>\n",
+                    x0 + (log10(x) - range[0]) * sx, y0 + PANEL_H - (log10(y) - range[2]) * sy);
+        }
+        fprintf(out, "</g>\n");
+    }
+    fprintf(out, "</g>\n");
+}
+
+int sw_bench_write_svg(FILE *out, const sw_bench_report *const *reports, int nreports, char *err,
+                       size_t errlen)
+{
+    int height = ROW_TOP + (nreports > 0 ? nreports : 1) * ROW_H;
+    fprintf(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+                 "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\">\n",
+            SVG_W, height, SVG_W, height);
+    fprintf(out, "<title>stepwise bench: error against cost</title>\n");
+    fprintf(out, "<rect x=\"0\" y=\"0\" width=\"%d\" height=\"%d\" fill=\"#fafafa\"/>\n", SVG_W, height);
+    fprintf(out, "<text x=\"20\" y=\"26\" font-size=\"18\">stepwise bench: largest state error at the "
+                 "report time against cost (log-log)</text>\n");
+    for (int k = 0; k < nreports; k++) {
+        const sw_bench_report *r = reports[k];
+        double y0 = ROW_TOP + k * ROW_H;
+        fprintf(out, "<g class=\"scene\" data-scene=\"");
+        xml_text(out, r->scene->name);
+        fprintf(out, "\">\n<text x=\"20\" y=\"%.2f\" font-size=\"15\" font-weight=\"bold\">", y0 + 24);
+        xml_text(out, r->scene->name);
+        fprintf(out, " (%s at t = %g)</text>\n", r->source == SW_BENCH_EXACT ? "exact solution"
+                                                                           : "rk45 reference",
+                r->t_report);
+        fprintf(out, "<g class=\"legend\">\n");
+        for (int i = 0; i < r->nseries; i++) {
+            double lx = 20 + (i % 8) * 115, ly = y0 + 46 + (i / 8) * 18;
+            const char *color = method_color(r->series[i].method);
+            fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"14\" height=\"4\" fill=\"%s\"/>"
+                         "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\">", lx, ly - 4, color, lx + 18, ly);
+            xml_text(out, r->series[i].method->name);
+            fprintf(out, "</text>\n");
+        }
+        fprintf(out, "</g>\n");
+        svg_panel(out, r, SW_BENCH_X_TIME, PANEL_LEFT, y0 + 80);
+        svg_panel(out, r, SW_BENCH_X_EVALS, PANEL_LEFT + PANEL_W + PANEL_GAP, y0 + 80);
+        fprintf(out, "</g>\n");
+    }
+    fprintf(out, "</svg>\n");
+    if (fflush(out) != 0 || ferror(out)) {
+        snprintf(err, errlen, "could not write the SVG");
+        return SW_EIO;
+    }
+    return SW_OK;
+}

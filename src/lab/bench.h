@@ -1,0 +1,146 @@
+/* Work–precision sweeps: error at a scene's report time against what it cost
+ * (derivative evaluations, wall time), for each integrator over a geometric
+ * sweep of step sizes; the observed order fitted from the sweep; the cheapest
+ * method per error level; and the plot as ASCII text, CSV or SVG. Every run
+ * is an sw_sim advanced with sw_sim_run_until, as in the UI and the recorder. */
+#ifndef SW_LAB_BENCH_H
+#define SW_LAB_BENCH_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "stepwise/sim.h"
+
+#define SW_BENCH_MAX_POINTS 16
+#define SW_BENCH_MAX_METHODS 24
+
+/* Where the true state at the report time comes from. */
+enum { SW_BENCH_EXACT = 1, SW_BENCH_REFERENCE = 2 };
+
+/* Why a series' sweep ended. */
+enum {
+    SW_BENCH_STOP_ENOUGH = 0,   /* min_points swept and fit_points in the fit range */
+    SW_BENCH_STOP_FLOOR = 1,    /* the error reached round-off / the reference's accuracy */
+    SW_BENCH_STOP_BUDGET = 2,   /* the next run would exceed max_work */
+    SW_BENCH_STOP_MAX = 3,      /* max_points swept */
+    SW_BENCH_STOP_DT_MIN = 4    /* the next step would be below SW_DT_MIN */
+};
+
+typedef struct sw_bench_point {
+    double dt;        /* the sim's step (adaptive methods: the largest step allowed) */
+    double rtol;      /* adaptive methods: the tolerance (atol = rtol·1e-3); 0 otherwise */
+    double h;         /* step used for the fit: dt, or report time / accepted steps */
+    double error;     /* largest |y - y_true| over all components at the report time; NaN if blown */
+    double floor;     /* below this the error is round-off or reference noise */
+    long evals;       /* derivative evaluations (sw_sim_evals) */
+    long solves;      /* linear solves (implicit methods) */
+    long steps;
+    double seconds;   /* wall time of sw_sim_run_until, median over `repeats` runs */
+    int repeats;
+    int blown;        /* the sim blew up before the report time */
+    double blow_time;
+    int in_fit;       /* 1 when this point entered the order fit */
+} sw_bench_point;
+
+typedef struct sw_bench_series {
+    const sw_integrator *method;
+    int npoints;
+    sw_bench_point points[SW_BENCH_MAX_POINTS];
+    double order;     /* least-squares slope of ln error against ln h; NaN when < 2 points fit */
+    int nfit;
+    double slope_min, slope_max; /* local slopes between neighbouring fit points */
+    int asymptotic;   /* 1 when the local slopes agree (spread <= 0.25 + 0.1·|order|) */
+    int stop;         /* SW_BENCH_STOP_* */
+} sw_bench_series;
+
+typedef struct sw_bench_config {
+    int min_points;    /* sweep at least this many step sizes (unless stopped by floor or budget) */
+    int max_points;    /* and at most this many (<= SW_BENCH_MAX_POINTS) */
+    int fit_points;    /* after min_points, stop once this many points are in the fit range */
+    int repeats;       /* timing repeats per point; the median is kept */
+    double repeat_below; /* repeat only runs faster than this many seconds */
+    double max_work;   /* skip runs above this many (evaluations + solver iterations) × dimension */
+} sw_bench_config;
+
+/* One scene's sweep: the truth at the report time and one series per method. */
+typedef struct sw_bench_report {
+    const sw_scene *scene;
+    double p[SW_MAX_PARAMS];
+    double t_report;
+    int dim;
+    int source;        /* SW_BENCH_EXACT or SW_BENCH_REFERENCE */
+    double *truth;     /* state at t_report (dim doubles), owned */
+    double ref_error;  /* reference: |rtol 1e-12 run - rtol 1e-11 run|, an upper estimate of its error */
+    long ref_evals;    /* evaluations the reference runs took */
+    double scale;      /* max(1, max |truth|): errors are judged against this */
+    double omega;      /* the scene's stiffest frequency, NaN when unknown */
+    int nseries;
+    sw_bench_series series[SW_BENCH_MAX_METHODS];
+} sw_bench_report;
+
+/* The `stepwise bench` sweep: 8 to 12 step sizes, 3 repeats (default run < 30 s). */
+void sw_bench_config_default(sw_bench_config *c);
+/* A small sweep for the UI (`w`): 5 to 6 step sizes, one run each, about a second. */
+void sw_bench_config_quick(sw_bench_config *c);
+
+/* 1 when scene sc with parameters p (NULL: defaults) has an exact solution or
+ * a trustworthy rk45 reference; 0 with the reason in why otherwise. */
+int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t whylen);
+
+/* Prepare r for sc with parameters p (NULL: defaults): the true state at the
+ * report time from the exact solution or, failing that, a tight rk45 run
+ * (rtol 1e-12, atol 1e-14) computed once here. 0, SW_EINVAL (no reference),
+ * SW_ENOMEM or SW_EDIVERGED (the reference run failed). r is freed on failure. */
+int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen);
+void sw_bench_free(sw_bench_report *r);
+
+/* Sweep method m and append its series to r, with its fitted order. 0, or
+ * SW_EINVAL when m cannot step this scene (err says why) or r is full. */
+int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_config *c,
+                   char *err, size_t errlen);
+
+/* Sweep every method in methods (NULL: every registered one) that can step
+ * the scene; the others are left out silently. 0 or a status. */
+int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, int nmethods,
+                       const sw_bench_config *c, char *err, size_t errlen);
+
+/* For the UI: init + sweep_all with the quick config; a few seconds at most
+ * for default scenes. r must be freed with sw_bench_free when this returns 0. */
+int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p,
+                         char *err, size_t errlen);
+
+/* Refit a series (marks in_fit, sets order, nfit, the local slopes and
+ * asymptotic): the points that did not blow up and whose error lies between
+ * the point's floor and 1e-2·scale, in the contiguous run that ends at the
+ * finest such point, less coarse points whose local slope disagrees with the
+ * rest (by more than 0.2 + 0.1·|slope of the rest|); then the least-squares
+ * slope of ln error against ln h. Returns the order (NaN below 2 points). */
+double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s);
+
+/* The cheapest measured point with error <= level: by wall time, or by
+ * evaluations when by_evals. Returns the series index and sets *point, or -1. */
+int sw_bench_cheapest(const sw_bench_report *r, double level, int by_evals, int *point);
+
+/* The character that marks method m in plots: its 1-based position in the
+ * integrator list ('1'..'9', then 'a'..'z'). */
+char sw_bench_marker(const sw_integrator *m);
+
+enum { SW_BENCH_X_TIME = 0, SW_BENCH_X_EVALS = 1 };
+
+/* Render error against wall time (SW_BENCH_X_TIME) or evaluations on log–log
+ * axes: `height` rows of exactly `width` characters, each ended by '\n', then
+ * a NUL, so buf must hold (width + 1) * height + 1 bytes. Row 0 is a title,
+ * the last rows a legend (marker = method). 0, or SW_EINVAL when width < 40
+ * or height < 10. */
+int sw_bench_plot(const sw_bench_report *r, int xaxis, char *buf, int width, int height);
+
+/* The points of every report as CSV, numbers in %.17g. 0 or SW_EIO. */
+int sw_bench_write_csv(FILE *out, const sw_bench_report *const *reports, int nreports,
+                       char *err, size_t errlen);
+/* The work–precision plots as one SVG document: a row per report, two log–log
+ * panels (error against time, against evaluations), each with an x and a y
+ * axis group and one series group (a polyline and its points) per method. */
+int sw_bench_write_svg(FILE *out, const sw_bench_report *const *reports, int nreports,
+                       char *err, size_t errlen);
+
+#endif

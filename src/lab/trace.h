@@ -1,0 +1,137 @@
+/* Step traces (docs/trace-format.md): a CSV file a student can write from any
+ * language. The writer streams whole rows into a temporary file and renames
+ * it on commit; the reader streams in memory bounded by the scene's column
+ * count, never by the file's size. The recorder in `stepwise record` and the
+ * TUI both drive a sim through sw_trace_step, so their traces are identical. */
+#ifndef SW_LAB_TRACE_H
+#define SW_LAB_TRACE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "stepwise/sim.h"
+
+#define SW_TRACE_MAGIC "# stepwise trace 1"
+#define SW_TRACE_FORMAT 1
+/* At most this many steps per run, and so at most SW_TRACE_MAX_STEPS + 1 rows. */
+#define SW_TRACE_MAX_STEPS 10000000L
+#define SW_TRACE_MAX_ROWS (SW_TRACE_MAX_STEPS + 1)
+/* Longest metadata line, in bytes (the first line and every "# key: value"). */
+#define SW_TRACE_META_MAX 4096
+/* Row and header lines may hold up to 64 + SW_TRACE_CELL_MAX bytes per column. */
+#define SW_TRACE_CELL_MAX 48
+#define SW_TRACE_PATH_MAX 4096
+#define SW_TRACE_NAME_MAX 64
+
+/* How long a run lasts and which steps it records. */
+typedef struct sw_trace_spec {
+    long steps;    /* > 0: stop after this many steps; 0: stop at time `until` */
+    double until;  /* used when steps == 0 */
+    long every;    /* record step 0, every `every`-th step, and the last step */
+} sw_trace_spec;
+
+/* Check a spec for a run with step dt: steps in [1, SW_TRACE_MAX_STEPS], or
+ * until > 0 with until/dt at most SW_TRACE_MAX_STEPS; every in [1, same].
+ * 0 or SW_EINVAL naming what is allowed. */
+int sw_trace_spec_check(const sw_trace_spec *spec, double dt, char *err, size_t errlen);
+/* Whether the run is over: blown up, took its steps, or reached `until`. */
+int sw_trace_done(const sw_sim *s, const sw_trace_spec *spec);
+/* Whether the sim's current step is recorded: step 0, a multiple of every,
+ * or the run's last step (including a blow-up). */
+int sw_trace_due(const sw_sim *s, const sw_trace_spec *spec);
+/* One step of the run (landing exactly on `until`); 0, or SW_EINVAL when the
+ * run would exceed SW_TRACE_MAX_STEPS steps. A blow-up is not an error. */
+int sw_trace_step(sw_sim *s, const sw_trace_spec *spec, char *err, size_t errlen);
+
+/* Columns of a system's trace: step, t, then x<i>, y<i> (and vx<i>, vy<i>
+ * for second-order systems) per particle, then energy when defined. */
+int sw_trace_ncols(const sw_system *sys);
+/* Name of column c (0 <= c < ncols) into buf. */
+void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len);
+/* The sim's current row: ncols values (step, t, state..., energy). */
+void sw_trace_row_values(const sw_sim *s, double *row);
+
+/* ---- writing ------------------------------------------------------------ */
+
+typedef struct sw_trace_writer {
+    FILE *f;
+    int to_stdout;                   /* path "-" or NULL: no temp file */
+    char path[SW_TRACE_PATH_MAX];    /* the real name, renamed onto at commit */
+    char tmp[SW_TRACE_PATH_MAX + 16];
+    char *row;                       /* one formatted row */
+    size_t row_cap;
+    sw_trace_spec spec;
+    long last_step;                  /* step of the last row written; -1: none */
+    long rows;
+} sw_trace_writer;
+
+/* Open a trace for writing: path NULL or "-" is stdout, anything else a
+ * temporary file beside path that only sw_trace_commit renames onto it.
+ * 0, SW_EINVAL (path is a directory) or SW_EIO. */
+int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen);
+/* Write the first line, the metadata that regenerates s under spec (s at
+ * step 0), the header row and row 0. 0, SW_EINVAL or SW_EIO. */
+int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spec,
+                   char *err, size_t errlen);
+/* Write the sim's current row, whole, and flush it. 0 or SW_EIO. */
+int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
+/* After each step: write the row when the spec records this step. 0 or SW_EIO. */
+int sw_trace_observe(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
+/* Finish: the last row if not yet written, a "# diverged:" line after a
+ * blow-up, then close and rename onto the real name. The writer is closed
+ * whatever happens; on failure the temporary file is removed. 0 or SW_EIO. */
+int sw_trace_commit(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
+/* Give up: close and remove the temporary file. Safe after a failed call. */
+void sw_trace_abort(sw_trace_writer *w);
+
+/* ---- reading ------------------------------------------------------------ */
+
+/* What the metadata says: enough to rebuild the run. */
+typedef struct sw_trace_meta {
+    const sw_scene *scene;
+    double p[SW_MAX_PARAMS];
+    char integrator[SW_TRACE_NAME_MAX];
+    const sw_integrator *method;      /* NULL when no integrator has that name */
+    long integrator_line;
+    long scene_line;
+    double dt, rtol, atol;
+    sw_trace_spec spec;
+    char version[32];
+    int diverged;                     /* a "# diverged:" line was seen */
+} sw_trace_meta;
+
+typedef struct sw_trace_reader {
+    FILE *f;
+    char name[SW_TRACE_PATH_MAX];     /* the path, for messages */
+    long line;                        /* number of the line in buf */
+    char *buf;                        /* the current line, without its newline */
+    size_t cap;                       /* longest line accepted now */
+    size_t len;
+    sw_trace_meta meta;
+    sw_system sys;                    /* built from the metadata: gives the columns */
+    int have_sys;
+    int ncols;
+    long rows;
+    long max_rows;                    /* the most rows the metadata's run can give */
+    long blank_line;                  /* first empty line since the last row; 0: none */
+    int at_end;
+} sw_trace_reader;
+
+/* Open path and read its first line and metadata, up to (not including) the
+ * header row; builds the scene to know the columns. The integrator is looked
+ * up but may be unknown (meta.method NULL). Errors read "FILE:LINE: what".
+ * 0, SW_EINVAL, SW_EIO or SW_ENOMEM; on failure the reader is closed. */
+int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t errlen);
+/* Read and check the header row against the scene's columns. 0 or an error. */
+int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen);
+/* Read the next row into row (ncols values; non-finite allowed). 1 a row,
+ * 0 the end, or a negative status with "FILE:LINE: what" in err. */
+int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen);
+void sw_trace_read_close(sw_trace_reader *r);
+
+/* Initialise a sim that regenerates the trace: the metadata's scene,
+ * parameters, dt and tolerances under method m (NULL: the metadata's). */
+int sw_trace_meta_sim(const sw_trace_reader *r, sw_sim *s, const sw_integrator *m,
+                      char *err, size_t errlen);
+
+#endif

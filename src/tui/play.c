@@ -1,0 +1,322 @@
+/* `stepwise play`: a scene live in the terminal, or N frames as plain text
+ * with --ascii (no terminal needed). Both run the same app model and the
+ * same composer; only painting differs. */
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app/app.h"
+#include "app/screen.h"
+#include "cli/cli.h"
+#include "lab/trace.h"
+#include "tui/play.h"
+#include "tui/term.h"
+
+static const char play_help[] =
+    "usage: stepwise play SCENE [OPTIONS]\n\n"
+    "Runs SCENE live in the terminal; change the integrator and dt while it runs\n"
+    "(press ? for the keys).\n\n"
+    "options:\n"
+    "  -i, --integrator NAME   start with this integrator (stepwise list integrators)\n"
+    "      --dt H              step size (default: the scene's)\n"
+    "  -s, --set PARAM=VALUE   set a scene parameter (repeatable; see stepwise describe)\n"
+    "      --plugin FILE.so    add a student integrator built against <stepwise/integrator.h>\n"
+    "      --compare           start with compare on;  --ghost  with the ghost on\n"
+    "      --frames N          with --ascii: print N frames (1/60 s each) and exit\n"
+    "      --ascii             print frames as plain text instead of opening the terminal UI\n"
+    "      --braille           draw with Braille dots\n"
+    "      --size COLSxROWS    frame size for --ascii (default 80x24)\n"
+    "      --speed X           simulated seconds per wall second (default 1)\n"
+    "  -h, --help              this help\n";
+
+/* Steps for one sim per frame: what fits in about 12 ms at the measured rate. */
+static long step_budget(const sw_app *a)
+{
+    double rate = a->steps_per_sec > 0 ? a->steps_per_sec : 2000;
+    double b = rate * 0.012 / a->nsims;
+    return b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
+}
+
+/* ---- recording a trace of what is on screen ------------------------------- */
+
+static sw_trace_writer recorder;
+
+static void record_stop(sw_app *a)
+{
+    char err[SW_ERRLEN];
+    if (!a->record_path[0])
+        return;
+    if (sw_trace_commit(&recorder, &a->sims[0], err, sizeof err) != SW_OK)
+        snprintf(a->message, sizeof a->message, "recording failed: %s", err);
+    else {
+        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.100s (check it: stepwise check %.100s)",
+                 a->sims[0].steps, a->record_path, a->record_path);
+        a->recorded = 1;
+    }
+    a->record_path[0] = '\0';
+    a->recorder = NULL;
+}
+
+/* Recording restarts the main sim at t = 0 so its metadata regenerates the
+ * run exactly; it stops by itself when the method or dt changes. */
+static void record_toggle(sw_app *a)
+{
+    char err[SW_ERRLEN], path[256];
+    if (a->record_path[0]) {
+        record_stop(a);
+        return;
+    }
+    time_t now = time(NULL);
+    struct tm tmv;
+    localtime_r(&now, &tmv);
+    char stamp[32];
+    strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tmv);
+    snprintf(path, sizeof path, "stepwise-%s-%s.trace", a->scene->name, stamp);
+    sw_app_reset(a);
+    sw_trace_spec spec = { .steps = SW_TRACE_MAX_STEPS, .until = 0, .every = 1 };
+    if (sw_trace_open(&recorder, path, err, sizeof err) != SW_OK ||
+        sw_trace_begin(&recorder, &a->sims[0], &spec, err, sizeof err) != SW_OK) {
+        sw_trace_abort(&recorder);
+        snprintf(a->message, sizeof a->message, "cannot record: %s", err);
+        return;
+    }
+    snprintf(a->record_path, sizeof a->record_path, "%s", path);
+    a->recorder = &recorder;
+    snprintf(a->message, sizeof a->message, "recording to %s from t = 0 (R stops)", path);
+}
+
+void sw_play_record_after_step(sw_app *a)
+{
+    char err[SW_ERRLEN];
+    if (a->record_path[0] && sw_trace_observe(&recorder, &a->sims[0], err, sizeof err) != SW_OK) {
+        sw_trace_abort(&recorder);
+        a->record_path[0] = '\0';
+        snprintf(a->message, sizeof a->message, "recording failed: %s", err);
+    }
+}
+
+void sw_play_abort_recording(void)
+{
+    sw_trace_abort(&recorder);
+}
+
+/* Keys with front-end work (recording) first; the rest go to the app. */
+int sw_play_key(sw_app *a, int key, int in_lesson)
+{
+    const sw_keybinding *b = sw_key_lookup(key, a->panel, in_lesson);
+    if (!b)
+        return 0;
+    if (b->action == SW_ACT_RECORD) {
+        record_toggle(a);
+        return 1;
+    }
+    const sw_integrator *m = a->sims[0].method;
+    double dt = a->dt;
+    int changed = sw_app_apply(a, b->action, b->arg);
+    if (a->record_path[0] && (a->sims[0].method != m || a->dt != dt || b->action == SW_ACT_RESET ||
+                              b->action == SW_ACT_PANEL_INC || b->action == SW_ACT_PANEL_DEC)) {
+        record_stop(a); /* the trace must describe one run with one method and dt */
+    }
+    return changed;
+}
+
+/* Advance, writing a trace row after every main-sim step while recording. */
+void sw_play_advance(sw_app *a, double wall)
+{
+    long budget = step_budget(a);
+    if (!a->record_path[0]) {
+        sw_app_advance(a, wall, budget);
+        return;
+    }
+    /* One main step at a time, so every step reaches the recorder. */
+    double goal = a->t_goal + (a->paused ? 0 : wall * a->speed);
+    long n = 0;
+    while (!a->paused && !a->sims[0].blown && a->sims[0].t < goal && n < budget) {
+        double before = a->sims[0].t;
+        sw_app_advance(a, (fmin(goal, before + a->dt) - a->t_goal) / a->speed, 1);
+        sw_play_record_after_step(a);
+        n++;
+        if (a->sims[0].t == before)
+            break;
+    }
+    if (a->sims[0].blown)
+        record_stop(a);
+}
+
+/* Print `frames` frames of the composed screen as text. */
+static int ascii_frames(sw_app *a, long frames, int cols, int rows, int braille)
+{
+    sw_frame f;
+    sw_screen scr;
+    char err[SW_ERRLEN];
+    if (sw_frame_init(&f, err, sizeof err) != SW_OK || sw_screen_init(&scr, cols, rows, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    a->braille = braille;
+    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
+    char *text = malloc(cap);
+    if (!text)
+        return sw_cli_error("out of memory for a %dx%d frame", cols, rows);
+    for (long k = 0; k < frames; k++) {
+        if (k > 0)
+            sw_app_advance(a, 1.0 / 60, 1000000);
+        sw_frame_push_trails(&f, a);
+        sw_frame_compose(&f, a, NULL, &scr);
+        sw_screen_to_text(&scr, text, cap);
+        if (k > 0)
+            fputc('\n', stdout);
+        fputs(text, stdout);
+    }
+    free(text);
+    sw_screen_free(&scr);
+    sw_frame_free(&f);
+    return fflush(stdout) == 0 ? SW_EXIT_OK : SW_EXIT_USAGE;
+}
+
+int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
+{
+    char err[SW_ERRLEN];
+    sw_frame f;
+    sw_screen scr = { 0 };
+    if (sw_frame_init(&f, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    if (sw_term_start(err, sizeof err) != SW_OK) {
+        sw_frame_free(&f);
+        return sw_cli_error("%s", err);
+    }
+    int cols = 0, rows = 0;
+    double last = sw_term_now(), rate_t = last;
+    long rate_steps = 0;
+    int status = SW_EXIT_OK;
+    while (!a->quit && !sw_term_signal) {
+        int c, r;
+        sw_term_size(&c, &r);
+        if (c != cols || r != rows) {
+            sw_screen_free(&scr);
+            if (sw_screen_init(&scr, c < 1 ? 1 : c, r < 1 ? 1 : r, err, sizeof err) != SW_OK) {
+                status = SW_EXIT_USAGE;
+                break;
+            }
+            cols = c;
+            rows = r;
+        }
+        double frame_start = sw_term_now();
+        for (int key; (key = sw_term_key(0)) != -1;) {
+            if (key == -2)
+                continue;
+            long steps_before = a->sims[0].steps;
+            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
+                sw_play_key(a, key, hooks != NULL);
+            if (a->sims[0].steps < steps_before || a->sims[0].t == 0)
+                sw_frame_forget(&f);
+            if (a->quit)
+                break;
+        }
+        double now = sw_term_now();
+        long before = a->sims[0].steps;
+        sw_play_advance(a, fmin(now - last, 0.1));
+        last = now;
+        rate_steps += a->sims[0].steps - before;
+        if (now - rate_t >= 0.5) {
+            a->steps_per_sec = rate_steps / (now - rate_t);
+            rate_steps = 0;
+            rate_t = now;
+        }
+        sw_frame_push_trails(&f, a);
+        const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, cols) : NULL;
+        sw_frame_compose(&f, a, side, &scr);
+        sw_term_paint(&scr);
+        /* About 60 frames per second; when paused, wait for a key instead of spinning. */
+        int wait = a->paused ? 250 : (int)fmax(1.0, 1000.0 / 60 - 1000.0 * (sw_term_now() - frame_start));
+        int key = sw_term_key(wait);
+        if (key >= 0) {
+            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
+                sw_play_key(a, key, hooks != NULL);
+        }
+    }
+    if (a->record_path[0])
+        record_stop(a);
+    sw_term_stop();
+    sw_screen_free(&scr);
+    sw_frame_free(&f);
+    if (sw_term_signal)
+        return sw_term_signal_status();
+    return status;
+}
+
+int sw_cmd_play(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        { "integrator", required_argument, NULL, 'i' }, { "dt", required_argument, NULL, 'd' },
+        { "set", required_argument, NULL, 's' },        { "plugin", required_argument, NULL, 'P' },
+        { "frames", required_argument, NULL, 'f' },     { "ascii", no_argument, NULL, 'a' },
+        { "braille", no_argument, NULL, 'b' },          { "size", required_argument, NULL, 'z' },
+        { "speed", required_argument, NULL, 'S' },      { "compare", no_argument, NULL, 'c' },
+        { "ghost", no_argument, NULL, 'g' },            { "help", no_argument, NULL, 'h' },
+        { NULL, 0, NULL, 0 },
+    };
+    sw_run_opts o;
+    memset(&o, 0, sizeof o);
+    const char *method_name = NULL;
+    long frames = 0;
+    int ascii = 0, braille = 0, compare = 0, ghost = 0, cols = 80, rows = 24;
+    double speed = 1;
+    optind = 1;
+    opterr = 0;
+    for (int c; (c = getopt_long(argc, argv, ":i:s:h", opts, NULL)) != -1;) {
+        switch (c) {
+        case 'i': method_name = optarg; break;
+        case 'd': if (sw_cli_dt("--dt", optarg, &o.dt)) return SW_EXIT_USAGE; break;
+        case 's': if (sw_cli_add_set(&o, optarg)) return SW_EXIT_USAGE; break;
+        case 'P': if (sw_cli_plugin(optarg)) return SW_EXIT_USAGE; break;
+        case 'f': if (sw_cli_long("--frames", optarg, 1, 100000, &frames)) return SW_EXIT_USAGE; break;
+        case 'a': ascii = 1; break;
+        case 'b': braille = 1; break;
+        case 'c': compare = 1; break;
+        case 'g': ghost = 1; break;
+        case 'S':
+            if (sw_cli_positive("--speed", optarg, &speed)) return SW_EXIT_USAGE;
+            if (speed < SW_APP_SPEED_MIN || speed > SW_APP_SPEED_MAX)
+                return sw_cli_error("--speed %g is outside [%g, %g]", speed, SW_APP_SPEED_MIN, SW_APP_SPEED_MAX);
+            break;
+        case 'z':
+            if (sscanf(optarg, "%dx%d", &cols, &rows) != 2 || cols < SW_MIN_COLS || rows < SW_MIN_ROWS ||
+                cols > 1000 || rows > 1000)
+                return sw_cli_error("--size '%.40s' is not allowed: give COLSxROWS between %dx%d and 1000x1000",
+                                    optarg, SW_MIN_COLS, SW_MIN_ROWS);
+            break;
+        case 'h': fputs(play_help, stdout); return SW_EXIT_OK;
+        case ':': return sw_cli_error("%s needs a value; see 'stepwise play --help'", argv[optind - 1]);
+        default: return sw_cli_error("play: unknown option '%s'; see 'stepwise play --help'", argv[optind - 1]);
+        }
+    }
+    if (optind != argc - 1)
+        return sw_cli_error(optind >= argc ? "play needs a scene; see 'stepwise list scenes'"
+                                           : "play takes one scene (got '%s' too)", argv[optind + 1 < argc ? optind + 1 : optind]);
+    if (sw_cli_scene(argv[optind], &o.scene) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    if (method_name && sw_cli_integrator(method_name, &o.method) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    if (sw_cli_finish_opts(&o) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    if (frames && !ascii)
+        ascii = 1;
+    if (!ascii && (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO)))
+        return sw_cli_error("play needs a terminal; for a trace use 'stepwise record', for text frames "
+                            "'stepwise play %s --frames N --ascii'", o.scene->name);
+    sw_app a;
+    char err[SW_ERRLEN];
+    if (sw_app_init(&a, o.scene, o.p, o.method, o.dt, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    a.speed = speed;
+    if (compare)
+        sw_app_set_compare(&a, 1, NULL, NULL);
+    if (ghost)
+        sw_app_set_ghost(&a, 1);
+    int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows, braille) : sw_play_loop(&a, NULL);
+    sw_app_free(&a);
+    return rc;
+}

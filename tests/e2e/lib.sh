@@ -1,0 +1,56 @@
+# Helpers for end-to-end tests that drive stepwise in tmux, as a student would.
+# Each test sources this, calls tmux_start, and gets a shell with a known prompt.
+
+SESSION="sw-e2e-$$"
+WORK=$(mktemp -d)
+trap 'tmux kill-session -t "$SESSION" 2>/dev/null; rm -rf "$WORK"' EXIT
+
+fail() { echo "FAIL: $*"; echo "--- screen:"; tmux capture-pane -p -t "$SESSION" 2>/dev/null; exit 1; }
+
+# A 120x40 tmux session running a plain sh with the prompt "PROMPT$ ".
+tmux_start() {
+    tmux kill-session -t "$SESSION" 2>/dev/null
+    tmux new-session -d -s "$SESSION" -x 120 -y 40 -c "$WORK" "env PS1='PROMPT\$ ' TERM=xterm-256color sh" \
+        || fail "cannot start tmux"
+    wait_for 'PROMPT\$' || fail "no shell prompt"
+}
+
+screen() { tmux capture-pane -p -t "$SESSION"; }
+
+# wait_for REGEX [SECONDS]: poll the screen until it matches.
+wait_for() {
+    i=0 limit=$(( ${2:-8} * 10 ))
+    while [ $i -lt $limit ]; do
+        screen | grep -Eq -- "$1" && return 0
+        sleep 0.1
+        i=$((i + 1))
+    done
+    return 1
+}
+
+keys() { tmux send-keys -t "$SESSION" "$@"; }
+
+# run CMD in the shell (typed, as a student would)
+type_cmd() { keys "$1" Enter; }
+
+# The pid of the stepwise process under the pane's shell.
+app_pid() {
+    shell=$(tmux display -p -t "$SESSION" '#{pane_pid}')
+    pgrep -P "$shell" | head -1
+}
+
+# After the program has gone: the prompt is back, and the terminal is sane.
+check_terminal_sane() {
+    keys "clear" Enter
+    wait_for 'PROMPT\$' || fail "no prompt after $1"
+    type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)$' | tr '\n' ' '; echo STTY-DONE"
+    wait_for 'STTY-DONE$' || fail "stty did not answer after $1"
+    s=$(screen | grep -E 'icanon' | tail -1)
+    case "$s" in
+        *-icanon*|*-echo\ *|*-isig*) fail "terminal left raw after $1: $s" ;;
+    esac
+    echo "$s" | grep -q 'icanon' || fail "no stty line after $1"
+    # the cursor and echo work: typed text shows up
+    type_cmd "echo typed-ok-$1"
+    wait_for "^typed-ok-$1" || fail "echo does not work after $1"
+}

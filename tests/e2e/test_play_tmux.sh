@@ -1,0 +1,44 @@
+#!/bin/sh
+# play in a real terminal: the status line names the integrator and dt, keys
+# change them, ? lists every key, and q and signals leave the shell sane.
+. "$(dirname "$0")/lib.sh"
+tmux_start
+
+type_cmd "$STEPWISE play spring"
+wait_for 'spring +euler +dt=0\.02 ' || fail "status line with 'euler' and 'dt=0.02' did not appear"
+keys i
+wait_for 'spring +symplectic-euler +dt=0\.02 ' || fail "i did not switch to the next integrator"
+keys +
+wait_for 'symplectic-euler +dt=0\.04 ' || fail "+ did not double dt"
+keys -
+wait_for 'symplectic-euler +dt=0\.02 ' || fail "- did not halve dt"
+keys 5
+wait_for 'spring +rk4 +dt=0\.02 ' || fail "5 did not pick rk4"
+keys '?'
+wait_for 'press \? again to close' || fail "? did not open the help"
+for k in 'i  Tab' 'I  Shift-Tab' '1-9' '\+  =' 'halve dt' 'space' 'one step' 'reset to t = 0' \
+         '\[  \]' 'compare' 'ghost' 'trails' 'graph of energy' 'Braille' 'parameter panel' \
+         'recording a trace' 'work-precision' 'this help' 'quit'; do
+    screen | grep -Eq -- "$k" || fail "help does not list '$k'"
+done
+keys '?'
+wait_for 'i method' || fail "? did not close the help"
+keys q
+wait_for 'PROMPT\$ *$' || fail "q did not return to the shell"
+check_terminal_sane q
+
+for sig in TERM INT HUP; do
+    type_cmd "$STEPWISE play orbit"
+    wait_for 'orbit +verlet' || fail "play orbit did not start (before SIG$sig)"
+    pid=$(app_pid)
+    [ -n "$pid" ] || fail "no stepwise process"
+    kill -"$sig" "$pid"
+    wait_for 'PROMPT\$' || fail "no prompt after SIG$sig"
+    check_terminal_sane "$sig"
+done
+
+# Not a terminal: play refuses with a pointer to record and --ascii, exit 2.
+out=$("$STEPWISE" play spring </dev/null 2>&1 >/dev/null); rc=$?
+[ $rc -eq 2 ] || { echo "play without a terminal: exit $rc, expected 2"; exit 1; }
+echo "$out" | grep -q "stepwise record" || { echo "message does not point to record: $out"; exit 1; }
+echo ok

@@ -76,7 +76,7 @@ $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) -lm -ldl
 
 run: $(BIN)
-	./$(BIN)
+	./$(BIN) lesson 1
 
 unit: $(TESTBIN)
 	$(TESTBIN)
@@ -94,13 +94,31 @@ sanitize:
 bench: $(BIN)
 	./$(BIN) bench --engine
 
+# The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
+# in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses
+# it rather than installing a binary that looks for its lessons elsewhere.
+$(BUILD)/datadir.stamp: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' > $@
+$(BUILD)/src/cli/common.o: $(BUILD)/datadir.stamp
+FORCE:
+
+LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)
+
 install: $(BIN)
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(DATADIR)/lessons $(DESTDIR)$(PREFIX)/include/stepwise
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/stepwise
 	install -m 644 docs/stepwise.1 $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1
-	install -m 644 lessons/*.lesson lessons/README.md $(DESTDIR)$(DATADIR)/lessons/
+	$(if $(LESSON_FILES),install -m 644 $(LESSON_FILES) $(DESTDIR)$(DATADIR)/lessons/)
 	install -m 644 include/stepwise/*.h $(DESTDIR)$(PREFIX)/include/stepwise/
+
+# A student's integrator as a shared object: examples/euler_plugin.c is the
+# template (docs/plugins.md); load it with --plugin examples/euler_plugin.so.
+plugin-example: examples/euler_plugin.so
+
+examples/euler_plugin.so: examples/euler_plugin.c include/stepwise/integrator.h include/stepwise/ode.h
+	$(CC) -std=c11 $(OPT) $(WARN) $(CFLAGS) -shared -fPIC -Iinclude -o $@ examples/euler_plugin.c
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/stepwise $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1

@@ -164,6 +164,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
 
 void sw_app_free(sw_app *a)
 {
+    sw_app_record_stop(a);
     free_sims(a);
     free(a->ghost_y);
     a->ghost_y = NULL;
@@ -171,6 +172,7 @@ void sw_app_free(sw_app *a)
 
 int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen)
 {
+    sw_app_record_stop(a); /* a trace describes one run */
     const sw_integrator *m = a->sims[0].method;
     const sw_scene *old_scene = a->scene;
     double old_p[SW_MAX_PARAMS], old_dt = a->dt;
@@ -268,6 +270,8 @@ void sw_app_set_ghost(sw_app *a, int on)
 void sw_app_reset(sw_app *a)
 {
     char err[SW_ERRLEN];
+    if (a->record_path[0] && a->sims[0].t > 0)
+        sw_app_record_stop(a);
     for (int i = 0; i < a->nsims; i++)
         sw_sim_reset(&a->sims[i], err, sizeof err);
     if (a->have_ref)
@@ -524,6 +528,12 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_PANEL_INC:
         change_param(a, act == SW_ACT_PANEL_INC ? 1 : -1);
         return 1;
+    case SW_ACT_RECORD:
+        if (a->record_path[0])
+            sw_app_record_stop(a);
+        else
+            sw_app_record_start(a, NULL);
+        return 1;
     case SW_ACT_WORKPREC:
         a->workprec = !a->workprec;
         return 1;
@@ -534,7 +544,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         a->quit = 1;
         return 1;
     default:
-        return 0; /* recording and lesson actions belong to the front ends */
+        return 0; /* lesson actions belong to the lesson runner */
     }
 }
 
@@ -543,7 +553,10 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
     const sw_keybinding *b = sw_key_lookup(key, a->panel, in_lesson);
     if (!b)
         return 0;
-    return sw_app_apply(a, b->action, b->arg);
+    int changed = sw_app_apply(a, b->action, b->arg);
+    if (a->record_path[0] && (a->sims[0].method != a->record_method || a->dt != a->record_dt))
+        sw_app_record_stop(a); /* a trace describes one method at one dt */
+    return changed;
 }
 
 static double graph_value(sw_app *a, int i)
@@ -562,11 +575,14 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     for (int i = 0; i < a->nsims; i++) {
         sw_sim *s = &a->sims[i];
         long n = 0;
-        while (!s->blown && s->t < a->t_goal && n < max_steps) {
+        /* Fixed steps land within half a step of the goal (rounding in t
+         * never buys an extra step); adaptive steps go just past it. */
+        double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
+        while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
             sw_sim_step(s);
             n++;
         }
-        if (!s->blown && s->t < a->t_goal)
+        if (!s->blown && s->t + slack < a->t_goal)
             behind = 1;
     }
     if (behind) {

@@ -83,7 +83,8 @@ typedef struct sw_app {
     int quit;
     int recorded;               /* a trace has been recorded this session */
     char record_path[256];      /* non-empty while recording */
-    void *recorder;             /* trace writer while recording, owned by the front end */
+    const sw_integrator *record_method;
+    double record_dt;
     /* cache for sw_app_stability */
     const sw_integrator *growth_method;
     double growth_w, growth_g, growth_dt, growth;
@@ -122,6 +123,12 @@ int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth)
 double sw_app_error(sw_app *a, int i);
 /* One status line for sim i (exact integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);
+/* Start recording the main sim to path (NULL: a time-stamped name in the
+ * working directory); restarts at t = 0. */
+void sw_app_record_start(sw_app *a, const char *path);
+/* Stop and write the trace (replaying the run exactly); sets a->message. */
+void sw_app_record_stop(sw_app *a);
+
 /* Error at the scene's report time for (method, dt), from a fresh headless
  * run; NaN when there is no exact solution or reference or it blew up. */
 double sw_app_measure(sw_app *a, const sw_integrator *m, double dt);

@@ -34,7 +34,7 @@ static const char usage_text[] =
     "  --csv FILE          write every point as CSV (numbers in %.17g)\n"
     "  --svg FILE          write the log-log plots as SVG (open it in a browser)\n"
     "  --set NAME=VALUE    change a scene parameter (one SCENE only)\n"
-    "  --quick             the small sweep the UI uses (5-6 step sizes, one run each)\n"
+    "  --quick             the small sweep the UI uses (6-8 step sizes, one run each)\n"
     "  --repeats N         timing repeats per point, 1..15 (default 3)\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
     "  --engine            the engine benchmark instead: ns per particle-step against\n"

@@ -24,8 +24,8 @@ void sw_bench_config_default(sw_bench_config *c)
 
 void sw_bench_config_quick(sw_bench_config *c)
 {
-    *c = (sw_bench_config){ .min_points = 5, .max_points = 6, .fit_points = 3, .repeats = 1,
-                            .repeat_below = 0.0, .max_work = 2e6 };
+    *c = (sw_bench_config){ .min_points = 6, .max_points = 8, .fit_points = 3, .repeats = 1,
+                            .repeat_below = 0.0, .max_work = 1e7 };
 }
 
 static double now_seconds(void)
@@ -804,7 +804,7 @@ int sw_bench_write_svg(FILE *out, const sw_bench_report *const *reports, int nre
                 r->t_report);
         fprintf(out, "<g class=\"legend\">\n");
         for (int i = 0; i < r->nseries; i++) {
-            double lx = 20 + (i % 8) * 115, ly = y0 + 46 + (i / 8) * 18;
+            double lx = 20 + (i % 7) * 135, ly = y0 + 46 + (i / 7) * 18;
             const char *color = method_color(r->series[i].method);
             fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"14\" height=\"4\" fill=\"%s\"/>"
                          "<text x=\"%.2f\" y=\"%.2f\" font-size=\"12\">", lx, ly - 4, color, lx + 18, ly);

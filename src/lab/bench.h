@@ -78,9 +78,9 @@ typedef struct sw_bench_report {
     sw_bench_series series[SW_BENCH_MAX_METHODS];
 } sw_bench_report;
 
-/* The `stepwise bench` sweep: 8 to 12 step sizes, 3 repeats (default run < 30 s). */
+/* The `stepwise bench` sweep: 8 to 16 step sizes, 3 repeats (default run < 30 s). */
 void sw_bench_config_default(sw_bench_config *c);
-/* A small sweep for the UI (`w`): 5 to 6 step sizes, one run each, about a second. */
+/* A small sweep for the UI (`w`): 6 to 8 step sizes, one run each, under a second. */
 void sw_bench_config_quick(sw_bench_config *c);
 
 /* 1 when scene sc with parameters p (NULL: defaults) has an exact solution or

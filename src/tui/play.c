@@ -12,7 +12,6 @@
 #include "app/app.h"
 #include "app/screen.h"
 #include "cli/cli.h"
-#include "lab/trace.h"
 #include "tui/play.h"
 #include "tui/term.h"
 
@@ -39,112 +38,6 @@ static long step_budget(const sw_app *a)
     double rate = a->steps_per_sec > 0 ? a->steps_per_sec : 2000;
     double b = rate * 0.012 / a->nsims;
     return b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
-}
-
-/* ---- recording a trace of what is on screen ------------------------------- */
-
-static sw_trace_writer recorder;
-
-static void record_stop(sw_app *a)
-{
-    char err[SW_ERRLEN];
-    if (!a->record_path[0])
-        return;
-    if (sw_trace_commit(&recorder, &a->sims[0], err, sizeof err) != SW_OK)
-        snprintf(a->message, sizeof a->message, "recording failed: %s", err);
-    else {
-        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.100s (check it: stepwise check %.100s)",
-                 a->sims[0].steps, a->record_path, a->record_path);
-        a->recorded = 1;
-    }
-    a->record_path[0] = '\0';
-    a->recorder = NULL;
-}
-
-/* Recording restarts the main sim at t = 0 so its metadata regenerates the
- * run exactly; it stops by itself when the method or dt changes. */
-static void record_toggle(sw_app *a)
-{
-    char err[SW_ERRLEN], path[256];
-    if (a->record_path[0]) {
-        record_stop(a);
-        return;
-    }
-    time_t now = time(NULL);
-    struct tm tmv;
-    localtime_r(&now, &tmv);
-    char stamp[32];
-    strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tmv);
-    snprintf(path, sizeof path, "stepwise-%s-%s.trace", a->scene->name, stamp);
-    sw_app_reset(a);
-    sw_trace_spec spec = { .steps = SW_TRACE_MAX_STEPS, .until = 0, .every = 1 };
-    if (sw_trace_open(&recorder, path, err, sizeof err) != SW_OK ||
-        sw_trace_begin(&recorder, &a->sims[0], &spec, err, sizeof err) != SW_OK) {
-        sw_trace_abort(&recorder);
-        snprintf(a->message, sizeof a->message, "cannot record: %s", err);
-        return;
-    }
-    snprintf(a->record_path, sizeof a->record_path, "%s", path);
-    a->recorder = &recorder;
-    snprintf(a->message, sizeof a->message, "recording to %s from t = 0 (R stops)", path);
-}
-
-void sw_play_record_after_step(sw_app *a)
-{
-    char err[SW_ERRLEN];
-    if (a->record_path[0] && sw_trace_observe(&recorder, &a->sims[0], err, sizeof err) != SW_OK) {
-        sw_trace_abort(&recorder);
-        a->record_path[0] = '\0';
-        snprintf(a->message, sizeof a->message, "recording failed: %s", err);
-    }
-}
-
-void sw_play_abort_recording(void)
-{
-    sw_trace_abort(&recorder);
-}
-
-/* Keys with front-end work (recording) first; the rest go to the app. */
-int sw_play_key(sw_app *a, int key, int in_lesson)
-{
-    const sw_keybinding *b = sw_key_lookup(key, a->panel, in_lesson);
-    if (!b)
-        return 0;
-    if (b->action == SW_ACT_RECORD) {
-        record_toggle(a);
-        return 1;
-    }
-    const sw_integrator *m = a->sims[0].method;
-    double dt = a->dt;
-    int changed = sw_app_apply(a, b->action, b->arg);
-    if (a->record_path[0] && (a->sims[0].method != m || a->dt != dt || b->action == SW_ACT_RESET ||
-                              b->action == SW_ACT_PANEL_INC || b->action == SW_ACT_PANEL_DEC)) {
-        record_stop(a); /* the trace must describe one run with one method and dt */
-    }
-    return changed;
-}
-
-/* Advance, writing a trace row after every main-sim step while recording. */
-void sw_play_advance(sw_app *a, double wall)
-{
-    long budget = step_budget(a);
-    if (!a->record_path[0]) {
-        sw_app_advance(a, wall, budget);
-        return;
-    }
-    /* One main step at a time, so every step reaches the recorder. */
-    double goal = a->t_goal + (a->paused ? 0 : wall * a->speed);
-    long n = 0;
-    while (!a->paused && !a->sims[0].blown && a->sims[0].t < goal && n < budget) {
-        double before = a->sims[0].t;
-        sw_app_advance(a, (fmin(goal, before + a->dt) - a->t_goal) / a->speed, 1);
-        sw_play_record_after_step(a);
-        n++;
-        if (a->sims[0].t == before)
-            break;
-    }
-    if (a->sims[0].blown)
-        record_stop(a);
 }
 
 /* Print `frames` frames of the composed screen as text. */
@@ -209,7 +102,7 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
                 continue;
             long steps_before = a->sims[0].steps;
             if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_play_key(a, key, hooks != NULL);
+                sw_app_key(a, key, hooks != NULL);
             if (a->sims[0].steps < steps_before || a->sims[0].t == 0)
                 sw_frame_forget(&f);
             if (a->quit)
@@ -217,7 +110,7 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
         }
         double now = sw_term_now();
         long before = a->sims[0].steps;
-        sw_play_advance(a, fmin(now - last, 0.1));
+        sw_app_advance(a, fmin(now - last, 0.1), step_budget(a));
         last = now;
         rate_steps += a->sims[0].steps - before;
         if (now - rate_t >= 0.5) {
@@ -234,12 +127,11 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
         int key = sw_term_key(wait);
         if (key >= 0) {
             if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_play_key(a, key, hooks != NULL);
+                sw_app_key(a, key, hooks != NULL);
         }
     }
-    if (a->record_path[0])
-        record_stop(a);
     sw_term_stop();
+    sw_app_record_stop(a); /* a signal or q: the trace is written whole or not at all */
     sw_screen_free(&scr);
     sw_frame_free(&f);
     if (sw_term_signal)

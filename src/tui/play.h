@@ -10,18 +10,12 @@ typedef struct sw_play_hooks {
     void *ctx;
     /* Return 1 when the key was the lesson's (page turns, hints, answers). */
     int (*key)(void *ctx, sw_app *a, int key);
-    /* The pane beside the scene for a terminal `cols` wide, or NULL. */
+    /* Once per frame, after the sims advanced: the pane beside the scene
+     * for a terminal `cols` wide, or NULL. */
     const sw_side *(*side)(void *ctx, sw_app *a, int cols);
 } sw_play_hooks;
 
 /* Run the terminal UI until q or a signal; returns the exit status. */
 int sw_play_loop(sw_app *a, sw_play_hooks *hooks);
-/* A key with the front end's own work (recording) handled. */
-int sw_play_key(sw_app *a, int key, int in_lesson);
-/* Advance by wall seconds, feeding the recorder while it runs. */
-void sw_play_advance(sw_app *a, double wall);
-/* After a main-sim step: the recorder's row. */
-void sw_play_record_after_step(sw_app *a);
-void sw_play_abort_recording(void);
 
 #endif

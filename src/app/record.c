@@ -1,0 +1,81 @@
+/* Recording what is on screen as a trace. Recording restarts the main sim at
+ * t = 0 and stops when its method, dt or parameters change, so the trace
+ * describes one run. On stop the run is replayed headlessly through the
+ * same trace writer `stepwise record` uses: sims are deterministic, so the
+ * file equals the screen bit for bit, its metadata names the exact number
+ * of steps, and nothing appears under the real name until it is complete. */
+#include "app/app.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "lab/trace.h"
+#include "stepwise/stepwise.h"
+
+static int replay(sw_app *a, long steps, char *err, size_t errlen)
+{
+    sw_sim s;
+    sw_trace_writer w;
+    const sw_sim *live = &a->sims[0];
+    sw_trace_spec spec = { .steps = steps, .until = 0, .every = 1 };
+    if (sw_sim_init(&s, a->scene, a->p, live->method, live->dt, err, errlen) != SW_OK)
+        return SW_EINVAL;
+    s.stepper.rtol = live->stepper.rtol;
+    s.stepper.atol = live->stepper.atol;
+    int rc = sw_trace_open(&w, a->record_path, err, errlen);
+    if (rc == SW_OK)
+        rc = sw_trace_begin(&w, &s, &spec, err, errlen);
+    while (rc == SW_OK && !sw_trace_done(&s, &spec)) {
+        rc = sw_trace_step(&s, &spec, err, errlen);
+        if (rc == SW_OK)
+            rc = sw_trace_observe(&w, &s, err, errlen);
+    }
+    if (rc == SW_OK && memcmp(s.sys.y, live->sys.y, (size_t)s.sys.ode->dim * sizeof *s.sys.y) != 0 &&
+        !(s.blown && live->blown)) {
+        snprintf(err, errlen, "the replay did not reproduce the screen (is a plugin not deterministic?)");
+        rc = SW_EINVAL;
+    }
+    if (rc == SW_OK)
+        rc = sw_trace_commit(&w, &s, err, errlen);
+    else
+        sw_trace_abort(&w);
+    sw_sim_free(&s);
+    return rc;
+}
+
+void sw_app_record_stop(sw_app *a)
+{
+    if (!a->record_path[0])
+        return;
+    char err[SW_ERRLEN];
+    long steps = a->sims[0].blown ? a->sims[0].blow_step : a->sims[0].steps;
+    if (steps < 1)
+        snprintf(a->message, sizeof a->message, "recording stopped before the first step: nothing written");
+    else if (replay(a, steps, err, sizeof err) != SW_OK)
+        snprintf(a->message, sizeof a->message, "recording failed: %s", err);
+    else {
+        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.120s (grade it: stepwise check %.120s)",
+                 steps, a->record_path, a->record_path);
+        a->recorded = 1;
+    }
+    a->record_path[0] = '\0';
+}
+
+void sw_app_record_start(sw_app *a, const char *path)
+{
+    char stamp[32], name[sizeof a->record_path];
+    if (!path) {
+        time_t now = time(NULL);
+        struct tm tmv;
+        localtime_r(&now, &tmv);
+        strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tmv);
+        snprintf(name, sizeof name, "stepwise-%s-%s.trace", a->scene->name, stamp);
+        path = name;
+    }
+    sw_app_reset(a);
+    snprintf(a->record_path, sizeof a->record_path, "%s", path);
+    a->record_method = a->sims[0].method;
+    a->record_dt = a->dt;
+    snprintf(a->message, sizeof a->message, "recording from t = 0 to %.200s (R stops and writes it)", a->record_path);
+}

@@ -1,0 +1,378 @@
+/* The lesson runner: pages drive the app, goals are checked against what
+ * the app shows, and a page opens the next one only once its goals are met.
+ * Progress is a small text file, rewritten whole through a rename. */
+#include "app/runner.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "stepwise/stepwise.h"
+
+unsigned sw_runner_locks(unsigned l)
+{
+    static const struct { unsigned lock; sw_action acts[5]; } map[] = {
+        { SW_LOCK_INTEGRATOR, { SW_ACT_NEXT_METHOD, SW_ACT_PREV_METHOD, SW_ACT_PICK_METHOD } },
+        { SW_LOCK_DT, { SW_ACT_DT_DOUBLE, SW_ACT_DT_HALVE } },
+        { SW_LOCK_RUN, { SW_ACT_PAUSE, SW_ACT_STEP } },
+        { SW_LOCK_RESET, { SW_ACT_RESET } },
+        { SW_LOCK_SPEED, { SW_ACT_SLOWER, SW_ACT_FASTER } },
+        { SW_LOCK_COMPARE, { SW_ACT_COMPARE } },
+        { SW_LOCK_GHOST, { SW_ACT_GHOST } },
+        { SW_LOCK_TRAILS, { SW_ACT_TRAILS } },
+        { SW_LOCK_GRAPH, { SW_ACT_GRAPH } },
+        { SW_LOCK_BRAILLE, { SW_ACT_BRAILLE } },
+        { SW_LOCK_PARAMS, { SW_ACT_PANEL, SW_ACT_PANEL_UP, SW_ACT_PANEL_DOWN, SW_ACT_PANEL_DEC, SW_ACT_PANEL_INC } },
+        { SW_LOCK_RECORD, { SW_ACT_RECORD } },
+        { SW_LOCK_PLOT, { SW_ACT_WORKPREC } },
+    };
+    unsigned bits = 0;
+    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++)
+        if (l & map[i].lock)
+            for (int k = 0; k < 5 && map[i].acts[k] != SW_ACT_NONE; k++)
+                bits |= 1u << map[i].acts[k];
+    return bits;
+}
+
+void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
+{
+    sw_lesson_obs_init(obs);
+    sw_lesson_obs_from_sim(obs, &a->sims[0]);
+    obs->error = sw_app_error(a, 0);
+    obs->error_ratio = a->error_ratio;
+    obs->compare = a->compare;
+    obs->ghost = a->ghost;
+    obs->paused = a->paused;
+    obs->speed = a->speed;
+    obs->recorded = a->recorded;
+}
+
+void sw_runner_enter(sw_runner *r, sw_app *a, int page)
+{
+    if (page < 0)
+        page = 0;
+    if (page >= r->lesson.npages)
+        page = r->lesson.npages - 1;
+    const sw_lesson_page *pg = &r->lesson.pages[page];
+    char err[SW_ERRLEN];
+    a->locked = 0;
+    if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
+        if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
+            snprintf(a->message, sizeof a->message, "%s", err);
+        sw_app_set_method(a, pg->method);
+        sw_app_set_dt(a, pg->dt);
+        sw_app_reset(a);
+        a->nmeas = 0;
+        a->error_ratio = NAN;
+    }
+    if (pg->compare >= 0)
+        sw_app_set_compare(a, pg->compare, pg->ncompare_with > 0 ? pg->compare_with[0] : NULL,
+                           pg->ncompare_with > 1 ? pg->compare_with[1] : NULL);
+    if (pg->ghost >= 0)
+        sw_app_set_ghost(a, pg->ghost);
+    if (pg->paused >= 0)
+        a->paused = pg->paused;
+    a->locked = sw_runner_locks(pg->locked);
+    a->panel = a->help = 0;
+    r->page = page;
+    r->feedback = NULL;
+    r->hint = 0;
+    snprintf(a->message, sizeof a->message, "page %d of %d: %s", page + 1, r->lesson.npages, pg->title);
+}
+
+int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *err, size_t errlen)
+{
+    memset(r, 0, sizeof *r);
+    int rc = sw_lesson_load(path, &r->lesson, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    if (r->lesson.npages < 1) {
+        snprintf(err, errlen, "%s: the lesson has no pages", path);
+        sw_lesson_free(&r->lesson);
+        return SW_EINVAL;
+    }
+    const char *slash = strrchr(path, '/');
+    snprintf(r->file, sizeof r->file, "%s", slash ? slash + 1 : path);
+    r->done = sw_progress_get(r->file);
+    if (r->done > r->lesson.npages)
+        r->done = r->lesson.npages;
+    for (int i = 0; i < r->done; i++)
+        r->complete[i] = 1;
+    if (page < 0)
+        page = r->done < r->lesson.npages ? r->done : 0;
+    const sw_lesson_page *first = &r->lesson.pages[page < r->lesson.npages ? page : 0];
+    rc = sw_app_init(a, first->scene, first->p, first->method, first->dt, err, errlen);
+    if (rc != SW_OK) {
+        sw_lesson_free(&r->lesson);
+        return rc;
+    }
+    sw_runner_enter(r, a, page);
+    return SW_OK;
+}
+
+void sw_runner_free(sw_runner *r) { sw_lesson_free(&r->lesson); }
+
+int sw_runner_update(sw_runner *r, sw_app *a)
+{
+    if (r->complete[r->page])
+        return 0;
+    sw_lesson_obs obs;
+    sw_runner_obs(a, &obs);
+    if (!sw_lesson_page_complete(&r->lesson.pages[r->page], &obs, r->answered[r->page]))
+        return 0;
+    r->complete[r->page] = 1;
+    if (r->page + 1 > r->done) {
+        r->done = r->page + 1;
+        sw_progress_set(r->file, r->done);
+    }
+    if (r->page + 1 == r->lesson.npages) {
+        r->finished = 1;
+        snprintf(a->message, sizeof a->message, "lesson complete: well done! (q returns to the shell)");
+    } else {
+        snprintf(a->message, sizeof a->message, "page complete: press n for the next page");
+    }
+    return 1;
+}
+
+int sw_runner_key(sw_runner *r, sw_app *a, int key)
+{
+    const sw_lesson_page *pg = &r->lesson.pages[r->page];
+    if (pg->question.text && !r->answered[r->page] && key >= 'a' && key < 'a' + pg->question.nanswers) {
+        int ok = sw_lesson_answer(pg, key, &r->feedback);
+        r->feedback_ok = ok == 1;
+        if (ok == 1)
+            r->answered[r->page] = 1;
+        snprintf(a->message, sizeof a->message, "%s", ok == 1 ? "right!" : "not quite: read the feedback and try again");
+        return 1;
+    }
+    const sw_keybinding *b = sw_key_lookup(key, a->panel, 1);
+    if (!b)
+        return 0;
+    switch (b->action) {
+    case SW_ACT_PAGE_NEXT:
+        if (!r->complete[r->page]) {
+            snprintf(a->message, sizeof a->message, "this page's goals are not met yet (h shows a hint)");
+        } else if (r->page + 1 < r->lesson.npages) {
+            sw_runner_enter(r, a, r->page + 1);
+        } else {
+            snprintf(a->message, sizeof a->message, "that was the last page: q returns to the menu");
+        }
+        return 1;
+    case SW_ACT_PAGE_PREV:
+        if (r->page > 0)
+            sw_runner_enter(r, a, r->page - 1);
+        return 1;
+    case SW_ACT_HINT:
+        r->hint = !r->hint;
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* ---- the text pane ---------------------------------------------------------- */
+
+static void add_line(sw_runner *r, int style, const char *text)
+{
+    int n = r->side.nlines;
+    if (n >= SW_RUNNER_LINES)
+        return;
+    snprintf(r->text[n], SW_RUNNER_COLS, "%s", text);
+    r->lines[n] = r->text[n];
+    r->styles[n] = style;
+    r->side.nlines++;
+}
+
+/* Cells a UTF-8 string takes (one per code point). */
+static int cells(const char *s, size_t len)
+{
+    int n = 0;
+    for (size_t i = 0; i < len; i++)
+        n += ((unsigned char)s[i] & 0xC0) != 0x80;
+    return n;
+}
+
+/* Word-wrap a paragraph to width cells. */
+static void add_wrapped(sw_runner *r, int style, const char *text, int width)
+{
+    const char *p = text;
+    while (*p) {
+        while (*p == ' ')
+            p++;
+        if (!*p)
+            break;
+        const char *line = p, *cut = NULL;
+        int used = 0;
+        while (*p && *p != '\n') {
+            const char *w = p;
+            while (*p && *p != ' ' && *p != '\n')
+                p++;
+            int wl = cells(w, (size_t)(p - w));
+            if (used && used + 1 + wl > width) {
+                p = w;
+                break;
+            }
+            used += (used ? 1 : 0) + wl;
+            cut = p;
+            while (*p == ' ')
+                p++;
+            if (used >= width)
+                break;
+        }
+        if (!cut)
+            cut = p;
+        char buf[SW_RUNNER_COLS];
+        size_t len = (size_t)(cut - line) < sizeof buf - 1 ? (size_t)(cut - line) : sizeof buf - 1;
+        memcpy(buf, line, len);
+        buf[len] = '\0';
+        add_line(r, style, buf);
+        if (*p == '\n')
+            p++;
+    }
+}
+
+const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
+{
+    const sw_lesson_page *pg = &r->lesson.pages[r->page];
+    int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols;
+    char buf[SW_RUNNER_COLS];
+    r->side.nlines = 0;
+    r->side.lines = r->lines;
+    r->side.styles = r->styles;
+    r->side.width = cols >= 110 ? width : 0;
+    snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
+    add_line(r, SW_STYLE_DIM, buf);
+    add_line(r, SW_STYLE_TITLE, pg->title);
+    add_line(r, SW_STYLE_TEXT, "");
+    for (int b = 0; b < pg->nblocks; b++) {
+        if (pg->blocks[b].verbatim) {
+            const char *s = pg->blocks[b].text;
+            while (*s) {
+                const char *e = strchr(s, '\n');
+                size_t len = e ? (size_t)(e - s) : strlen(s);
+                snprintf(buf, sizeof buf, "  %.*s", (int)(len < 300 ? len : 300), s);
+                add_line(r, SW_STYLE_STATUS, buf);
+                s += len + (e ? 1 : 0);
+            }
+        } else {
+            add_wrapped(r, SW_STYLE_TEXT, pg->blocks[b].text, width - 1);
+        }
+        add_line(r, SW_STYLE_TEXT, "");
+    }
+    sw_lesson_obs obs;
+    sw_runner_obs(a, &obs);
+    const sw_lesson_goal *unmet = NULL;
+    if (pg->ngoals > 0)
+        add_line(r, SW_STYLE_TITLE, "Goals:");
+    for (int g = 0; g < pg->ngoals; g++) {
+        char text[160];
+        int met = r->complete[r->page] || sw_lesson_goal_met(&pg->goals[g], &obs);
+        if (!met && !unmet)
+            unmet = &pg->goals[g];
+        sw_lesson_goal_text(&pg->goals[g], text, sizeof text);
+        snprintf(buf, sizeof buf, " %s %s", met ? "\xe2\x9c\x93" : "\xe2\x9c\x97", text);
+        add_line(r, met ? SW_STYLE_OK : SW_STYLE_BAD, buf);
+    }
+    const sw_lesson_question *q = &pg->question;
+    if (q->text) {
+        add_line(r, SW_STYLE_TEXT, "");
+        add_wrapped(r, SW_STYLE_TITLE, q->text, width - 1);
+        for (int i = 0; i < q->nanswers; i++) {
+            snprintf(buf, sizeof buf, "%c) %s", q->answers[i].letter, q->answers[i].text);
+            add_wrapped(r, r->answered[r->page] && i == q->correct ? SW_STYLE_OK : SW_STYLE_TEXT, buf, width - 1);
+        }
+        if (!r->answered[r->page])
+            add_line(r, SW_STYLE_DIM, "(press a letter to answer)");
+        if (r->feedback)
+            add_wrapped(r, r->feedback_ok ? SW_STYLE_OK : SW_STYLE_BAD, r->feedback, width - 1);
+    }
+    if (r->hint) {
+        const char *h = unmet ? unmet->hint : (q->text && !r->answered[r->page]) ? q->hint : NULL;
+        add_line(r, SW_STYLE_TEXT, "");
+        snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
+        add_wrapped(r, SW_STYLE_WARN, buf, width - 1);
+    }
+    add_line(r, SW_STYLE_TEXT, "");
+    if (r->complete[r->page])
+        add_line(r, SW_STYLE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page." : "Lesson complete!");
+    else
+        add_line(r, SW_STYLE_DIM, "h: hint   n: next page once the goals are met");
+    return &r->side;
+}
+
+/* ---- progress ------------------------------------------------------------------ */
+
+static int progress_path(char *buf, size_t len, int make_dirs)
+{
+    const char *state = getenv("XDG_STATE_HOME"), *home = getenv("HOME");
+    char dir[1024];
+    if (state && *state == '/')
+        snprintf(dir, sizeof dir, "%s/stepwise", state);
+    else if (home && *home)
+        snprintf(dir, sizeof dir, "%s/.local/state/stepwise", home);
+    else
+        return 0;
+    if (make_dirs) {
+        /* mkdir -p of dir */
+        for (char *p = dir + 1; *p; p++)
+            if (*p == '/') {
+                *p = '\0';
+                mkdir(dir, 0700);
+                *p = '/';
+            }
+        if (mkdir(dir, 0700) != 0 && errno != EEXIST)
+            return 0;
+    }
+    return snprintf(buf, len, "%s/progress", dir) < (int)len;
+}
+
+int sw_progress_get(const char *file)
+{
+    char path[1100], line[400];
+    if (!progress_path(path, sizeof path, 0))
+        return 0;
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return 0;
+    int done = 0;
+    while (fgets(line, sizeof line, f)) {
+        char name[300];
+        int d;
+        if (sscanf(line, "%299s %d", name, &d) == 2 && strcmp(name, file) == 0 && d >= 0 && d <= SW_LESSON_MAX_PAGES)
+            done = d;
+    }
+    fclose(f);
+    return done;
+}
+
+int sw_progress_set(const char *file, int done)
+{
+    char path[1100], tmp[1200], line[400];
+    if (!progress_path(path, sizeof path, 1) || strchr(file, ' ') || strchr(file, '\n'))
+        return SW_EIO;
+    if (done <= sw_progress_get(file))
+        return SW_OK;
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    FILE *in = fopen(path, "r"), *out = fopen(tmp, "w");
+    if (!out) {
+        if (in)
+            fclose(in);
+        return SW_EIO;
+    }
+    while (in && fgets(line, sizeof line, in)) {
+        char name[300];
+        if (sscanf(line, "%299s", name) == 1 && strcmp(name, file) != 0)
+            fputs(line, out);
+    }
+    if (in)
+        fclose(in);
+    fprintf(out, "%s %d\n", file, done);
+    if (fclose(out) != 0 || rename(tmp, path) != 0) {
+        remove(tmp);
+        return SW_EIO;
+    }
+    return SW_OK;
+}

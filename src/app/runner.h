@@ -1,0 +1,55 @@
+/* The lesson runner without a terminal: pages applied to the live app,
+ * goals checked each frame and latched, questions answered, hints, page
+ * turns, the text pane, and progress saved per user. */
+#ifndef SW_RUNNER_H
+#define SW_RUNNER_H
+
+#include "app/app.h"
+#include "app/screen.h"
+#include "lesson/lesson.h"
+
+#define SW_RUNNER_LINES 160
+#define SW_RUNNER_COLS 400
+
+typedef struct sw_runner {
+    sw_lesson lesson;
+    char file[256];            /* the lesson's file name, the key for progress */
+    int page;
+    int done;                  /* pages completed so far (saved) */
+    unsigned char complete[SW_LESSON_MAX_PAGES];
+    unsigned char answered[SW_LESSON_MAX_PAGES];
+    const char *feedback;      /* last answer's feedback */
+    int feedback_ok;
+    int hint;                  /* 1: show the hint of the first goal not met */
+    int finished;              /* the last page is complete */
+    char text[SW_RUNNER_LINES][SW_RUNNER_COLS];
+    const char *lines[SW_RUNNER_LINES];
+    int styles[SW_RUNNER_LINES];
+    sw_side side;
+} sw_runner;
+
+/* Load the lesson at path and build the app from its first page (or page
+ * `page`, clipped; -1: resume from saved progress). 0 or a status with err. */
+int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *err, size_t errlen);
+void sw_runner_free(sw_runner *r);
+/* Go to page i: apply its settings and locks. */
+void sw_runner_enter(sw_runner *r, sw_app *a, int page);
+/* What the app shows, as the goals see it. */
+void sw_runner_obs(sw_app *a, sw_lesson_obs *obs);
+/* Check the page's goals (latched once met); 1 when it just became complete. */
+int sw_runner_update(sw_runner *r, sw_app *a);
+/* Lesson keys (page turns, hints, answers); 1 when the key was the lesson's. */
+int sw_runner_key(sw_runner *r, sw_app *a, int key);
+/* The text pane for a terminal `cols` wide. */
+const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols);
+
+/* The app's action locks for a page's SW_LOCK_* bits. */
+unsigned sw_runner_locks(unsigned lesson_locks);
+
+/* Progress: pages completed of a lesson file, under $XDG_STATE_HOME/stepwise/
+ * (default ~/.local/state/stepwise/progress); 0 when unknown. */
+int sw_progress_get(const char *file);
+/* Record pages completed (never lowers it); 0 or SW_EIO. */
+int sw_progress_set(const char *file, int done);
+
+#endif

@@ -1,0 +1,217 @@
+/* Stability limits by bisection. A probe runs the sim for a fixed simulated
+ * time (so slow growth at small steps has as long to show as fast growth at
+ * large ones) and calls it unstable when it blows up, when M leaves a bound,
+ * or when M trends upward: the peak of M over the last tenth of the run beats
+ * the peak over the first tenth by more than a tenth of the first tenth's
+ * spread. A bounded oscillation (symplectic methods) samples the same peaks
+ * in both windows; decay (damping, rk4 below its limit) lowers them; any
+ * growth, however slow, raises them by more than it spreads one window. */
+#include "lab/stability.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+#define TWO_PI 6.283185307179586
+
+void sw_stability_config_default(sw_stability_config *c)
+{
+    *c = (sw_stability_config){ .periods = 100, .min_steps = 4000, .max_steps = 4000000,
+                                .bound = 1e4, .trend = 0.1, .low = 0.01, .high = 1000,
+                                .rel_tol = 1e-4 };
+}
+
+int sw_stability_applicable(const sw_scene *sc, char *why, size_t whylen)
+{
+    if (sc->energy || sc->omega_max)
+        return 1;
+    snprintf(why, whylen, "%s defines no energy and no stiffest frequency, so growth cannot be "
+             "told from the flow itself; stability works on scenes with either", sc->name);
+    return 0;
+}
+
+/* M: the energy when the scene has one, else ½|y|² (for a flow: points
+ * circling keep it constant, points spiralling out raise it). */
+static double measure(const sw_sim *s)
+{
+    if (s->sys.scene->energy)
+        return sw_sim_energy(s);
+    double m = 0;
+    for (int i = 0; i < s->sys.ode->dim; i++)
+        m += s->sys.y[i] * s->sys.y[i];
+    return 0.5 * m;
+}
+
+/* The time unit probes are measured in: one period of the stiffest motion,
+ * or the scene's report time when ω is unknown. */
+static double time_unit(const sw_scene *sc, double omega)
+{
+    return omega > 0 && isfinite(omega) ? TWO_PI / omega : sc->duration;
+}
+
+static double scene_omega(const sw_scene *sc, const double *p, char *err, size_t errlen, int *rc)
+{
+    sw_system sys;
+    *rc = sw_system_build(&sys, sc, p, err, errlen);
+    if (*rc != SW_OK)
+        return NAN;
+    double w = sc->omega_max ? sc->omega_max(&sys) : NAN;
+    sw_system_free(&sys);
+    return w;
+}
+
+static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                 double unit, const sw_stability_config *c, sw_stability_probe *out, char *err,
+                 size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    out->dt = dt;
+    sw_sim s;
+    int rc = sw_sim_init(&s, sc, p, m, dt, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    /* Steps for the fixed simulated time, clipped before converting. */
+    double want = ceil(c->periods * unit / dt);
+    long steps = !(want >= (double)c->min_steps) ? c->min_steps
+                 : want > (double)c->max_steps ? c->max_steps : (long)want;
+    long window = steps / 10 > 0 ? steps / 10 : 1;
+    double m0 = measure(&s), scale = fabs(m0) > 0 ? fabs(m0) : 1.0;
+    double first_max = m0, first_min = m0, last_max = -INFINITY;
+    out->m0 = m0;
+    out->verdict = SW_PROBE_STABLE;
+    long k;
+    for (k = 1; k <= steps; k++) {
+        if (sw_sim_step(&s)) {
+            out->verdict = SW_PROBE_BLOWN;
+            break;
+        }
+        double v = measure(&s);
+        if (!(v - m0 <= (c->bound - 1.0) * scale)) { /* NaN fails too */
+            out->verdict = SW_PROBE_BOUND;
+            break;
+        }
+        if (k <= window) {
+            first_max = fmax(first_max, v);
+            first_min = fmin(first_min, v);
+        }
+        if (k > steps - window)
+            last_max = fmax(last_max, v);
+    }
+    out->steps = k > steps ? steps : k;
+    out->first_max = first_max;
+    out->first_range = first_max - first_min;
+    out->last_max = last_max;
+    if (out->verdict == SW_PROBE_STABLE &&
+        last_max - first_max > c->trend * (first_max - first_min) + 1e-9 * fabs(m0))
+        out->verdict = SW_PROBE_TREND;
+    sw_sim_free(&s);
+    return SW_OK;
+}
+
+int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                           const sw_stability_config *c, sw_stability_probe *out, char *err,
+                           size_t errlen)
+{
+    int rc;
+    double w = scene_omega(sc, p, err, errlen, &rc);
+    if (rc != SW_OK)
+        return rc;
+    return probe(sc, p, m, dt, time_unit(sc, w), c, out, err, errlen);
+}
+
+int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,
+                      const sw_stability_config *c, sw_stability_result *out, char *err,
+                      size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    out->method = m;
+    out->theory = m->stability;
+    out->dt_unstable = NAN;
+    if (m->flags & SW_ADAPTIVE) {
+        snprintf(err, errlen, "%s chooses its own steps (dt is only its largest step), so it has "
+                 "no step-size limit to find", m->name);
+        return SW_EINVAL;
+    }
+    if (!sw_stability_applicable(sc, err, errlen))
+        return SW_EINVAL;
+    int rc;
+    double w = scene_omega(sc, p, err, errlen, &rc);
+    if (rc != SW_OK)
+        return rc;
+    sw_system sys;
+    rc = sw_system_build(&sys, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    rc = sw_integrator_accepts(m, sys.ode, err, errlen);
+    sw_system_free(&sys);
+    if (rc != SW_OK)
+        return rc;
+    out->omega = w;
+    double unit = time_unit(sc, w), lo_bound, hi_bound;
+    if (w > 0 && isfinite(w)) {
+        lo_bound = c->low / w;
+        hi_bound = c->high / w;
+    } else {
+        lo_bound = c->low * sc->dt;
+        hi_bound = c->high * sc->dt;
+    }
+    lo_bound = fmax(lo_bound, SW_DT_MIN);
+    hi_bound = fmax(lo_bound, fmin(hi_bound, SW_DT_MAX));
+
+    sw_stability_probe pr;
+#define PROBE(dt_)                                                              \
+    do {                                                                        \
+        rc = probe(sc, p, m, (dt_), unit, c, &pr, err, errlen);                 \
+        if (rc != SW_OK)                                                        \
+            return rc;                                                          \
+        out->probes++;                                                          \
+        out->steps += pr.steps;                                                 \
+    } while (0)
+
+    PROBE(lo_bound);
+    if (pr.verdict != SW_PROBE_STABLE) {
+        out->kind = SW_STAB_NONE;
+        out->dt = lo_bound;
+        out->fail = pr;
+        return SW_OK;
+    }
+    /* Bracket: from the scene's own step, doubling until a probe fails. */
+    double stable = lo_bound, unstable = NAN;
+    double dt = fmin(fmax(sc->dt, lo_bound), hi_bound);
+    while (!(unstable > 0)) {
+        if (dt > stable) {
+            PROBE(dt);
+            if (pr.verdict == SW_PROBE_STABLE)
+                stable = dt;
+            else {
+                unstable = dt;
+                out->fail = pr;
+                break;
+            }
+        }
+        if (stable >= hi_bound) {
+            out->kind = SW_STAB_UNBOUNDED;
+            out->dt = stable;
+            return SW_OK;
+        }
+        dt = fmin(2.0 * stable, hi_bound);
+    }
+    /* Bisect geometrically: the limit is a ratio, so halve its logarithm. */
+    while (unstable / stable - 1.0 > c->rel_tol) {
+        double mid = sqrt(stable * unstable);
+        PROBE(mid);
+        if (pr.verdict == SW_PROBE_STABLE)
+            stable = mid;
+        else {
+            unstable = mid;
+            out->fail = pr;
+        }
+    }
+#undef PROBE
+    out->kind = SW_STAB_LIMIT;
+    out->dt = stable;
+    out->dt_unstable = unstable;
+    return SW_OK;
+}

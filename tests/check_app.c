@@ -1,0 +1,254 @@
+/* The live app without a terminal: keys to actions through the one table,
+ * what the status and meter tell the student (checked against theory), the
+ * clock, compare, and frames composed for any terminal size. */
+#include <check.h>
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "app/app.h"
+#include "app/screen.h"
+
+static void app_with(sw_app *a, const char *scene, const char *method, double dt, const char *set)
+{
+    const sw_scene *sc = sw_scene_find(scene);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    if (set)
+        ck_assert_msg(sw_scene_set(sc, p, set, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_app_init(a, sc, p, method ? sw_integrator_find(method) : NULL, dt, err, sizeof err) == SW_OK,
+                  "%s", err);
+}
+
+/* Every row of the key table reaches its action through sw_key_lookup. */
+START_TEST(key_table_drives_lookup)
+{
+    int n;
+    const sw_keybinding *k = sw_keys(&n);
+    ck_assert_int_gt(n, 20);
+    for (int i = 0; i < n; i++) {
+        if (k[i].key < 0)
+            continue;
+        const sw_keybinding *b = sw_key_lookup(k[i].key, 0, 1);
+        ck_assert_ptr_nonnull(b);
+        ck_assert_int_eq(b->action, k[i].action);
+        ck_assert_msg(k[i].label || i > 0, "first row needs a label");
+    }
+    ck_assert_ptr_null(sw_key_lookup('n', 0, 0)); /* lesson keys only in lessons */
+    ck_assert_int_eq(sw_key_lookup(SW_KEY_UP, 1, 0)->action, SW_ACT_PANEL_UP);
+}
+END_TEST
+
+/* Switching integrators keeps state and time; locked actions are refused. */
+START_TEST(switch_keeps_state)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.01, NULL);
+    sw_app_advance(&a, 0.5, 100000);
+    double t = a.sims[0].t, x = a.sims[0].sys.y[0];
+    ck_assert_int_eq(sw_app_key(&a, 'i', 0), 1);
+    ck_assert_str_eq(a.sims[0].method->name, "symplectic-euler");
+    ck_assert_double_eq(a.sims[0].t, t);
+    ck_assert_double_eq(a.sims[0].sys.y[0], x);
+    ck_assert_int_eq(sw_app_key(&a, '5', 0), 1);
+    ck_assert_str_eq(a.sims[0].method->name, "rk4");
+    sw_app_key(&a, 'I', 0);
+    ck_assert_str_eq(a.sims[0].method->name, "heun");
+    a.locked = 1u << SW_ACT_NEXT_METHOD;
+    ck_assert_int_eq(sw_app_key(&a, 'i', 0), 0);
+    ck_assert_str_eq(a.sims[0].method->name, "heun");
+    ck_assert_ptr_nonnull(strstr(a.message, "locked"));
+    sw_app_free(&a);
+    /* a flow field skips the methods that need masses */
+    app_with(&a, "vortex", "euler", 0.05, "n=10");
+    sw_app_key(&a, 'i', 0);
+    ck_assert_str_eq(a.sims[0].method->name, "midpoint");
+    ck_assert_int_eq(sw_app_key(&a, '6', 0), 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "first-order"));
+    sw_app_free(&a);
+}
+END_TEST
+
+/* Halving dt reports the error ratio at the report time: about 2 for Euler
+ * (global error O(dt)), 4 for midpoint, 16 for RK4 (±10%: the steps are in
+ * each method's asymptotic range). */
+START_TEST(halving_dt_measures_order)
+{
+    struct { const char *scene, *method; double dt, ratio; } cases[] = {
+        { "vortex", "euler", 0.01, 2 }, { "vortex", "midpoint", 0.05, 4 }, { "spring", "rk4", 0.02, 16 },
+    };
+    for (int i = 0; i < 3; i++) {
+        sw_app a;
+        app_with(&a, cases[i].scene, cases[i].method, cases[i].dt, NULL);
+        ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+        ck_assert_double_eq(a.dt, cases[i].dt / 2);
+        ck_assert_msg(fabs(a.error_ratio / cases[i].ratio - 1) < 0.1, "%s/%s: ratio %g, expected %g",
+                      cases[i].scene, cases[i].method, a.error_ratio, cases[i].ratio);
+        ck_assert_ptr_nonnull(strstr(a.message, "ratio"));
+        sw_app_free(&a);
+    }
+}
+END_TEST
+
+/* The meter's growth per step against theory: for Runge-Kutta methods the
+ * stiffest mode λ = -γ + iω_d is multiplied by |R(hλ)| each step, R the
+ * method's stability polynomial (1 + z; 1 + z + z²/2; Taylor to z⁴). */
+START_TEST(meter_growth_matches_theory)
+{
+    const char *methods[] = { "euler", "midpoint", "heun", "rk4" };
+    const char *sets[] = { "c=0.5", "c=0" };
+    for (int s = 0; s < 2; s++)
+        for (int m = 0; m < 4; m++) {
+            sw_app a;
+            app_with(&a, "spring", methods[m], 0.05, sets[s]);
+            double wdt, limit, growth, k = a.p[0], mass = a.p[1], c = a.p[2];
+            ck_assert_int_eq(sw_app_stability(&a, &wdt, &limit, &growth), 1);
+            double g = c / (2 * mass), wd = sqrt(k / mass - g * g);
+            double complex z = 0.05 * (-g + I * wd), r = 1 + z;
+            if (m == 1 || m == 2)
+                r += z * z / 2;
+            if (m == 3)
+                r += z * z / 2 + z * z * z / 6 + z * z * z * z / 24;
+            ck_assert_msg(fabs(growth - cabs(r)) < 1e-9, "%s %s: growth %.12g, theory %.12g", methods[m], sets[s],
+                          growth, cabs(r));
+            ck_assert_double_eq_tol(wdt, sqrt(k / mass) * 0.05, 1e-15);
+            sw_app_free(&a);
+        }
+}
+END_TEST
+
+/* The clock: one second of wall time at speed 1 is one simulated second in
+ * whole steps; a step cap gives slow motion instead of falling behind forever. */
+START_TEST(clock_and_slow_motion)
+{
+    sw_app a;
+    app_with(&a, "orbit", "verlet", 0.01, NULL);
+    for (int f = 0; f < 60; f++)
+        sw_app_advance(&a, 1.0 / 60, 100000);
+    ck_assert_int_eq(a.sims[0].steps, 100);
+    ck_assert_double_eq_tol(a.sims[0].t, 1.0, 1e-12);
+    ck_assert_double_eq(a.slowmo, 1.0);
+    a.speed = 4;
+    sw_app_advance(&a, 1.0, 100); /* asks for 400 steps, may take 100 */
+    ck_assert_int_eq(a.sims[0].steps, 200);
+    ck_assert_double_eq_tol(a.slowmo, 4.0, 1e-9);
+    a.paused = 1;
+    sw_app_advance(&a, 1.0, 100);
+    ck_assert_int_eq(a.sims[0].steps, 200);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* Compare runs three methods from the same state; a blow-up freezes only
+ * the one that blew up. */
+START_TEST(compare_race)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.3, "c=0");
+    sw_app_key(&a, 'c', 0);
+    ck_assert_int_eq(a.nsims, 3);
+    ck_assert_str_ne(a.sims[1].method->name, "euler");
+    ck_assert_str_ne(a.sims[2].method->name, "euler");
+    ck_assert_str_ne(a.sims[1].method->name, a.sims[2].method->name);
+    for (int f = 0; f < 600 && !a.sims[0].blown; f++)
+        sw_app_advance(&a, 1.0, 100000);
+    ck_assert_int_eq(a.sims[0].blown, 1); /* euler: energy x1.9 per step at w dt = 0.95 */
+    ck_assert_int_eq(a.sims[1].blown, 0);
+    char line[512];
+    sw_app_status(&a, 0, line, sizeof line);
+    ck_assert_ptr_nonnull(strstr(line, "BLOWN UP"));
+    sw_app_key(&a, 'r', 0);
+    ck_assert_int_eq(a.sims[0].blown, 0);
+    ck_assert_double_eq(a.sims[0].t, 0);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* The graph series stays bounded however long the run. */
+START_TEST(graph_bounded)
+{
+    sw_app a;
+    app_with(&a, "orbit", "rk4", 0.05, NULL);
+    a.graph = 1;
+    for (int f = 0; f < 20000; f++)
+        sw_app_advance(&a, 1.0 / 60, 10);
+    ck_assert_int_le(a.series[0].len, SW_APP_GRAPH);
+    ck_assert_int_gt(a.series[0].len, SW_APP_GRAPH / 4);
+    ck_assert_double_gt(a.series[0].t[a.series[0].len - 1], 300.0);
+    sw_app_free(&a);
+}
+END_TEST
+
+static char *compose_text(sw_app *a, int cols, int rows)
+{
+    sw_frame f;
+    sw_screen scr;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_screen_init(&scr, cols, rows, err, sizeof err), SW_OK);
+    sw_frame_push_trails(&f, a);
+    sw_frame_compose(&f, a, NULL, &scr);
+    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
+    char *text = malloc(cap);
+    ck_assert_uint_gt(sw_screen_to_text(&scr, text, cap), 0);
+    sw_screen_free(&scr);
+    sw_frame_free(&f);
+    return text;
+}
+
+/* Frames: the status names method and dt; a tiny terminal gets a message;
+ * a blown-up state (NaN, inf) reaches the picture and the banner safely. */
+START_TEST(frames_compose)
+{
+    sw_app a;
+    app_with(&a, "spring", "rk4", 0.02, NULL);
+    char *t = compose_text(&a, 80, 24);
+    ck_assert_ptr_nonnull(strstr(t, "spring  rk4  dt=0.02  t=0.000"));
+    ck_assert_ptr_nonnull(strstr(t, "#"));  /* the anchor */
+    ck_assert_ptr_nonnull(strstr(t, "o"));  /* the mass */
+    free(t);
+    t = compose_text(&a, 40, 10);
+    ck_assert_ptr_nonnull(strstr(t, "terminal too small: 40x10"));
+    free(t);
+    a.help = 1;
+    t = compose_text(&a, 100, 40);
+    ck_assert_ptr_nonnull(strstr(t, "halve dt"));
+    free(t);
+    sw_app_free(&a);
+
+    app_with(&a, "chain", "euler", 0.2, NULL);
+    a.trails = a.ghost = a.graph = 1;
+    sw_app_key(&a, 'c', 0);
+    for (int f = 0; f < 200 && !a.sims[0].blown; f++)
+        sw_app_advance(&a, 1.0, 1000);
+    ck_assert(a.sims[0].blown);
+    a.sims[1].sys.y[0] = NAN; /* non-finite values must reach the canvas harmlessly */
+    a.sims[1].sys.y[1] = INFINITY;
+    a.braille = 1;
+    t = compose_text(&a, 120, 40);
+    ck_assert_ptr_nonnull(strstr(t, "BLOWN UP at step"));
+    free(t);
+    sw_app_free(&a);
+}
+END_TEST
+
+Suite *make_app_suite(void);
+Suite *make_app_suite(void)
+{
+    Suite *s = suite_create("app");
+    TCase *tc = tcase_create("model");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, key_table_drives_lookup);
+    tcase_add_test(tc, switch_keeps_state);
+    tcase_add_test(tc, halving_dt_measures_order);
+    tcase_add_test(tc, meter_growth_matches_theory);
+    tcase_add_test(tc, clock_and_slow_motion);
+    tcase_add_test(tc, compare_race);
+    tcase_add_test(tc, graph_bounded);
+    tcase_add_test(tc, frames_compose);
+    suite_add_tcase(s, tc);
+    return s;
+}

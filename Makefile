@@ -12,6 +12,9 @@ WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 ifeq ($(WERROR),1)
 WARN   += -Werror
 endif
+ifeq ($(FUZZ),1)
+OPT     = -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+endif
 ifeq ($(SAN),1)
 OPT     = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 LDSAN   = -fsanitize=address,undefined
@@ -90,6 +93,26 @@ test: $(BIN) $(TESTBIN)
 
 sanitize:
 	$(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
+
+# libFuzzer targets (clang): the lesson parser, the trace reader and the
+# --set / number parsers. New inputs go to build/fuzz/corpus-NAME; crashes to
+# build/fuzz/NAME-crash-*: copy one into tests/fuzz/NAME/ to keep it as a
+# regression test (the unit suite replays that directory).
+FUZZ_TIME ?= 60
+FUZZERS   = lesson trace parse
+FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude -Isrc -Itests/support
+fuzz:
+	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a
+	@for t in $(FUZZERS); do \
+	    clang $(FUZZ_FLAGS) tests/fuzz/fuzz_$$t.c tests/support/fuzz_targets.c build/fuzz/libstepwise.a \
+	        -lm -ldl -o build/fuzz/fuzz_$$t || exit 1; \
+	    mkdir -p build/fuzz/corpus-$$t; \
+	    echo "fuzz: $$t for $(FUZZ_TIME) s"; \
+	    build/fuzz/fuzz_$$t -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	        -artifact_prefix=build/fuzz/$$t- build/fuzz/corpus-$$t tests/fuzz/$$t 2>build/fuzz/$$t.log \
+	        || { tail -40 build/fuzz/$$t.log; exit 1; }; \
+	    grep -E "stat::number_of_executed_units" build/fuzz/$$t.log; \
+	done
 
 bench: $(BIN)
 	./$(BIN) bench --engine

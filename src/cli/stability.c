@@ -16,18 +16,22 @@ static const char usage_text[] =
     "undamped oscillator x'' = -w^2 x (euler, midpoint, heun: none; symplectic-euler and\n"
     "verlet: 2; rk4: 2*sqrt(2); implicit methods: unbounded).\n"
     "\n"
-    "Criterion. Each probe runs the scene at one dt for a fixed simulated time: 100\n"
-    "periods 2*pi/w (100 report times when w is unknown), and at least 4000 steps. It\n"
-    "watches M, the scene's energy (for a flow without one, half the squared state\n"
-    "norm). The step is unstable when the sim blows up, when M rises above its start by\n"
-    "more than 1e4 times |M(0)|, or when M grows: its peak over the last tenth of the run\n"
-    "beats its peak over the first tenth by more than a tenth of the first tenth's\n"
-    "spread. A bounded oscillation shows the same peaks in both tenths and decay lowers\n"
-    "them, so damped and decaying runs are stable; growth, however slow, raises them. A\n"
-    "fixed simulated time (not a fixed number of steps) is what lets the slow growth of\n"
-    "euler, midpoint and heun at small dt show: they are reported 'none' when they grow\n"
-    "even at w*dt = 0.01. A method still stable at w*dt = 1000 (or dt = 1000) is\n"
-    "'unbounded'. Between a stable and an unstable dt the search bisects to 0.01%.\n"
+    "Criterion. Each probe runs the scene at one dt, and a twin started 1e-7 (relative)\n"
+    "away, for a fixed simulated time: 100 periods 2*pi/w (100 report times when w is\n"
+    "unknown) and at least 4000 steps. It watches M, the scene's energy (for a flow\n"
+    "without one, half the squared state norm), and D, the squared distance between the\n"
+    "twins. The step is unstable when either sim blows up, when M rises above its start\n"
+    "by more than 1e4 times |M(0)|, when D grows past 1e8 times its start (a growing mode\n"
+    "that the scene's nonlinearity has capped still drives the twins apart), or when M\n"
+    "grows: its peak over the last tenth of the run beats its peak over the first tenth\n"
+    "by more than a tenth of the first tenth's spread. A bounded oscillation shows the\n"
+    "same peaks in both tenths and decay lowers them, so damped and decaying runs are\n"
+    "stable (a run whose D has decayed by 1e-24 stops early as stable); growth, however\n"
+    "slow, raises them. A fixed simulated time (not a fixed number of steps) is what\n"
+    "lets the slow growth of euler, midpoint and heun at small dt show: they are\n"
+    "reported 'none' when they grow even at w*dt = 0.01. A method still stable at\n"
+    "w*dt = 1000 (dt = 1000 at most) is 'unbounded'. Between a stable and an unstable\n"
+    "dt the search bisects to 0.01%.\n"
     "rk45 chooses its own steps and is skipped.\n"
     "\n"
     "  --integrators LIST  comma-separated methods (default: all that apply)\n"
@@ -38,7 +42,8 @@ static const char *verdict_text(int verdict)
 {
     switch (verdict) {
     case SW_PROBE_BLOWN: return "blew up";
-    case SW_PROBE_BOUND: return "left the bound";
+    case SW_PROBE_BOUND: return "energy bound";
+    case SW_PROBE_TWIN: return "twins split";
     case SW_PROBE_TREND: return "grew";
     default: return "stable";
     }

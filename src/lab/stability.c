@@ -19,8 +19,8 @@
 void sw_stability_config_default(sw_stability_config *c)
 {
     *c = (sw_stability_config){ .periods = 100, .min_steps = 4000, .max_steps = 4000000,
-                                .bound = 1e4, .trend = 0.1, .low = 0.01, .high = 1000,
-                                .rel_tol = 1e-4 };
+                                .bound = 1e4, .twin_bound = 1e8, .trend = 0.1, .low = 0.01,
+                                .high = 1000, .rel_tol = 1e-4 };
 }
 
 int sw_stability_applicable(const sw_scene *sc, char *why, size_t whylen)
@@ -62,16 +62,41 @@ static double scene_omega(const sw_scene *sc, const double *p, char *err, size_t
     return w;
 }
 
+/* Squared distance between the twins' states. */
+static double twin_distance(const sw_sim *a, const sw_sim *b)
+{
+    double d = 0;
+    for (int i = 0; i < a->sys.ode->dim; i++) {
+        double e = a->sys.y[i] - b->sys.y[i];
+        d += e * e;
+    }
+    return d;
+}
+
 static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
                  double unit, const sw_stability_config *c, sw_stability_probe *out, char *err,
                  size_t errlen)
 {
     memset(out, 0, sizeof *out);
     out->dt = dt;
-    sw_sim s;
+    sw_sim s, twin;
     int rc = sw_sim_init(&s, sc, p, m, dt, err, errlen);
     if (rc != SW_OK)
         return rc;
+    rc = sw_sim_init(&twin, sc, p, m, dt, err, errlen);
+    if (rc != SW_OK) {
+        sw_sim_free(&s);
+        return rc;
+    }
+    /* The twin starts 1e-7 (relative) away, in a fixed pattern over every
+     * component, so the linearised dynamics act on its distance D. */
+    int dim = s.sys.ode->dim;
+    double size = 1.0;
+    for (int i = 0; i < dim; i++)
+        size = fmax(size, fabs(s.sys.y[i]));
+    for (int i = 0; i < dim; i++)
+        twin.sys.y[i] += 1e-7 * size * (i % 2 ? -1.0 : 1.0) * (1.0 + 0.5 * (i % 3));
+    double d0 = twin_distance(&s, &twin);
     /* Steps for the fixed simulated time, clipped before converting. */
     double want = ceil(c->periods * unit / dt);
     long steps = !(want >= (double)c->min_steps) ? c->min_steps
@@ -83,13 +108,24 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
     out->verdict = SW_PROBE_STABLE;
     long k;
     for (k = 1; k <= steps; k++) {
-        if (sw_sim_step(&s)) {
+        if (sw_sim_step(&s) | sw_sim_step(&twin)) {
             out->verdict = SW_PROBE_BLOWN;
             break;
         }
-        double v = measure(&s);
+        double v = measure(&s), d = twin_distance(&s, &twin);
         if (!(v - m0 <= (c->bound - 1.0) * scale)) { /* NaN fails too */
             out->verdict = SW_PROBE_BOUND;
+            break;
+        }
+        if (!(d <= c->twin_bound * d0)) {
+            out->verdict = SW_PROBE_TWIN;
+            break;
+        }
+        /* Damped a millionfold and more in amplitude: nothing is left to
+         * grow, and running on would only feed the solvers numbers near
+         * underflow. */
+        if (d < 1e-24 * d0) {
+            out->verdict = SW_PROBE_DECAYED;
             break;
         }
         if (k <= window) {
@@ -106,6 +142,7 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
     if (out->verdict == SW_PROBE_STABLE &&
         last_max - first_max > c->trend * (first_max - first_min) + 1e-9 * fabs(m0))
         out->verdict = SW_PROBE_TREND;
+    sw_sim_free(&twin);
     sw_sim_free(&s);
     return SW_OK;
 }
@@ -171,7 +208,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     } while (0)
 
     PROBE(lo_bound);
-    if (pr.verdict != SW_PROBE_STABLE) {
+    if (pr.verdict != SW_PROBE_STABLE && pr.verdict != SW_PROBE_DECAYED) {
         out->kind = SW_STAB_NONE;
         out->dt = lo_bound;
         out->fail = pr;
@@ -183,7 +220,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     while (!(unstable > 0)) {
         if (dt > stable) {
             PROBE(dt);
-            if (pr.verdict == SW_PROBE_STABLE)
+            if (pr.verdict == SW_PROBE_STABLE || pr.verdict == SW_PROBE_DECAYED)
                 stable = dt;
             else {
                 unstable = dt;
@@ -202,7 +239,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     while (unstable / stable - 1.0 > c->rel_tol) {
         double mid = sqrt(stable * unstable);
         PROBE(mid);
-        if (pr.verdict == SW_PROBE_STABLE)
+        if (pr.verdict == SW_PROBE_STABLE || pr.verdict == SW_PROBE_DECAYED)
             stable = mid;
         else {
             unstable = mid;

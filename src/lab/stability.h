@@ -1,7 +1,9 @@
 /* Stability limits measured, not quoted: the largest step at which a method
  * keeps a scene from blowing up or growing, found by bisection on sw_sim
- * runs. "Growing" is judged on a measure M of the state: the scene's energy,
- * or ½|y|² for a flow without one. */
+ * runs. Growth is judged on a measure M of the state (the scene's energy, or
+ * ½|y|² for a flow without one) and on the distance D between the sim and a
+ * twin started 1e-7 away: the linearised dynamics, which stability theory is
+ * about, act on D whatever the state's amplitude. */
 #ifndef SW_LAB_STABILITY_H
 #define SW_LAB_STABILITY_H
 
@@ -18,9 +20,11 @@ typedef enum sw_stab_kind {
 /* A probe's verdict. */
 enum {
     SW_PROBE_STABLE = 0,
-    SW_PROBE_BLOWN = 1, /* the sim blew up (non-finite, runaway, or a failed solve) */
-    SW_PROBE_BOUND = 2, /* M rose above its start by more than (bound - 1)·|M0| */
-    SW_PROBE_TREND = 3  /* M's peak over the last tenth of the run beat its peak over the first tenth */
+    SW_PROBE_BLOWN = 1,  /* the sim or its twin blew up (non-finite, runaway, failed solve) */
+    SW_PROBE_BOUND = 2,  /* M rose above its start by more than (bound - 1)·|M0| */
+    SW_PROBE_TWIN = 3,   /* D² rose above twin_bound times its start */
+    SW_PROBE_TREND = 4,  /* M's peak over the last tenth of the run beat the first tenth's */
+    SW_PROBE_DECAYED = 5 /* stable: D² fell below 1e-24 of its start, the run stopped early */
 };
 
 typedef struct sw_stability_config {
@@ -28,6 +32,7 @@ typedef struct sw_stability_config {
     long min_steps;  /* but at least this many steps */
     long max_steps;  /* and at most this many */
     double bound;    /* see SW_PROBE_BOUND */
+    double twin_bound; /* see SW_PROBE_TWIN */
     double trend;    /* TREND when last_max - first_max > trend·first_range + 1e-9·|M0| */
     double low;      /* smallest ω·Δt probed (Δt = low·(scene dt) when ω is unknown) */
     double high;     /* largest ω·Δt probed (capped at SW_DT_MAX) */
@@ -57,8 +62,8 @@ typedef struct sw_stability_result {
     sw_stability_probe fail; /* the failing probe nearest the limit (NONE: the one at dt) */
 } sw_stability_result;
 
-/* 100 periods and at least 4000 steps per probe, bound 1e4, trend 0.1,
- * ω·Δt from 0.01 to 1000, bisection to 1e-4. */
+/* 100 periods and at least 4000 steps per probe, bound 1e4, twin bound 1e8,
+ * trend 0.1, ω·Δt from 0.01 to 1000, bisection to 1e-4. */
 void sw_stability_config_default(sw_stability_config *c);
 
 /* 1 when growth can be judged on scene sc: it defines an energy or knows its

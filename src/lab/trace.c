@@ -617,9 +617,12 @@ static int meta_finish(sw_trace_reader *r, meta_state *ms, char *err, size_t err
      * `until` takes at most ceil(until/dt) steps (+1 for rounding in t);
      * an adaptive or unknown method is bounded only by the step limit. */
     long every = m->spec.every, steps = m->spec.steps;
-    if (steps == 0 && m->method && !(m->method->flags & SW_ADAPTIVE))
-        steps = (long)ceil(m->spec.until / m->dt) + 1;
-    r->max_rows = steps > 0 ? steps / every + 2 : SW_TRACE_MAX_ROWS;
+    if (steps > 0)
+        r->max_rows = steps / every + 1 + (steps % every != 0);
+    else if (m->method && !(m->method->flags & SW_ADAPTIVE))
+        r->max_rows = ((long)ceil(m->spec.until / m->dt) + 1) / every + 2;
+    else
+        r->max_rows = SW_TRACE_MAX_ROWS;
     if (r->max_rows > SW_TRACE_MAX_ROWS)
         r->max_rows = SW_TRACE_MAX_ROWS;
     return SW_OK;

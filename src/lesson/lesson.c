@@ -188,8 +188,9 @@ typedef const char *name_at_fn(int i);
 static const char *scene_name_at(int i) { return sw_scene_at(i)->name; }
 static const char *integrator_name_at(int i) { return sw_integrator_at(i)->name; }
 
-/* "; did you mean 'x'?" when one name is close, else "". */
-static const char *suggest(const char *word, name_at_fn *at, int n, char *buf, size_t len)
+/* " (did you mean 'x'?)" when one name is close, else "". */
+static const char *suggest_with(const char *prefix, const char *word, name_at_fn *at, int n, char *buf,
+                                size_t len)
 {
     const char *best = NULL;
     int bestd = 3;
@@ -201,10 +202,15 @@ static const char *suggest(const char *word, name_at_fn *at, int n, char *buf, s
         }
     }
     if (best && bestd < (int)strlen(word))
-        snprintf(buf, len, " (did you mean '%s'?)", best);
+        snprintf(buf, len, " (did you mean '%s%s'?)", prefix, best);
     else
         buf[0] = '\0';
     return buf;
+}
+
+static const char *suggest(const char *word, name_at_fn *at, int n, char *buf, size_t len)
+{
+    return suggest_with("", word, at, n, buf, len);
 }
 
 static void name_list(name_at_fn *at, int n, char *buf, size_t len)
@@ -633,8 +639,8 @@ static int lex(parser *ps, size_t *pos, token *tk)
             j++;
         tk->kind = T_NUM;
     } else if (strchr("<>=!", (int)c)) {
-        j++;
-        if (j < n && s[j] == '=')
+        /* Take every operator character, so "=>" is reported whole. */
+        while (j < n && j - i < 3 && strchr("<>=!", (int)(unsigned char)s[j]))
             j++;
         tk->kind = T_OP;
     } else {
@@ -653,10 +659,14 @@ static int lex(parser *ps, size_t *pos, token *tk)
     if (field_word(ps, i, tk->len, tk->text) != SW_OK)
         return ps->status;
     if (tk->kind == T_OP) {
+        static const char *const known[] = { "==", "!=", "<", "<=", ">", ">=", "=", "!" };
+        int ok = 0;
+        for (int k = 0; k < 8; k++)
+            ok |= strcmp(tk->text, known[k]) == 0;
+        if (!ok)
+            return FAIL(ps, i, "'%s' is not an operator; expected one of == != < <= > >=", tk->text);
         if (strcmp(tk->text, "=") == 0)
             strcpy(tk->text, "==");
-        if (strcmp(tk->text, "=<") == 0 || strcmp(tk->text, "=>") == 0 || strcmp(tk->text, "<>") == 0)
-            return FAIL(ps, i, "'%s' is not an operator; expected one of == != < <= > >=", tk->text);
     }
     *pos = j;
     return SW_OK;
@@ -1369,7 +1379,7 @@ static int directive(parser *ps, size_t at)
     char near[80];
     return FAIL(ps, at, "unknown directive '@%s'%s; expected one of @scene @set @integrator @dt @compare "
                 "@ghost @pause @reset @lock @unlock @goal @hint @question @answer @correct",
-                name, suggest(name, directive_name_at, NDIRECTIVES, near, sizeof near));
+                name, suggest_with("@", name, directive_name_at, NDIRECTIVES, near, sizeof near));
 }
 
 static int header_line(parser *ps, size_t at)

@@ -1,0 +1,203 @@
+/* Every lesson, driven headless page by page with the keys a student would
+ * press (tests/lesson_drives/NAME.drive): proves each goal reachable and each
+ * page reachable through the same runner and app the terminal uses.
+ *
+ * A drive file has one line per page, "page N: ACTIONS", ACTIONS being keys
+ * (one character each, or space, tab, btab, pgdn, pgup, up, down, left, right)
+ * and run:T (let simulated time pass T seconds, as if the student watched). */
+#include <check.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "app/runner.h"
+#include "stepwise/stepwise.h"
+
+static int key_code(const char *tok)
+{
+    static const struct { const char *name; int key; } named[] = {
+        { "space", ' ' }, { "tab", SW_KEY_TAB }, { "btab", SW_KEY_BTAB }, { "pgdn", SW_KEY_PGDN },
+        { "pgup", SW_KEY_PGUP }, { "up", SW_KEY_UP }, { "down", SW_KEY_DOWN }, { "left", SW_KEY_LEFT },
+        { "right", SW_KEY_RIGHT }, { "esc", SW_KEY_ESC },
+    };
+    if (strlen(tok) == 1)
+        return (unsigned char)tok[0];
+    for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
+        if (strcmp(tok, named[i].name) == 0)
+            return named[i].key;
+    return -1;
+}
+
+static void press(sw_runner *r, sw_app *a, int key)
+{
+    if (!sw_runner_key(r, a, key))
+        sw_app_key(a, key, 1);
+    sw_runner_update(r, a);
+}
+
+/* Let simulated time pass in frames of 0.05 s, checking goals each frame. */
+static void run_for(sw_runner *r, sw_app *a, double T)
+{
+    double target = a->sims[0].t + T;
+    for (int i = 0; i < 200000 && a->sims[0].t < target - 1e-9 && !a->sims[0].blown && !a->paused; i++) {
+        sw_app_advance(a, fmin(0.05, target - a->sims[0].t) / a->speed, 1000000);
+        sw_runner_update(r, a);
+    }
+}
+
+static void unmet_goals(sw_runner *r, sw_app *a, char *buf, size_t len)
+{
+    const sw_lesson_page *pg = &r->lesson.pages[r->page];
+    sw_lesson_obs obs;
+    sw_runner_obs(a, &obs);
+    size_t used = (size_t)snprintf(buf, len, "t=%g dt=%g %s blown=%d ratio=%g:", obs.t, obs.dt, obs.integrator,
+                                   obs.blown, obs.error_ratio);
+    for (int g = 0; g < pg->ngoals && used < len; g++)
+        if (!sw_lesson_goal_met(&pg->goals[g], &obs)) {
+            char t[160];
+            sw_lesson_goal_text(&pg->goals[g], t, sizeof t);
+            used += (size_t)snprintf(buf + used, len - used, " [%s]", t);
+        }
+    if (pg->question.text && !r->answered[r->page] && used < len)
+        snprintf(buf + used, len - used, " [question not answered]");
+}
+
+static void drive(const char *lesson_file)
+{
+    char lesson_path[512], drive_path[512], err[SW_LESSON_ERRLEN], line[2048];
+    snprintf(lesson_path, sizeof lesson_path, "lessons/%s", lesson_file);
+    snprintf(drive_path, sizeof drive_path, "tests/lesson_drives/%.*s.drive",
+             (int)(strlen(lesson_file) - strlen(".lesson")), lesson_file);
+    FILE *f = fopen(drive_path, "r");
+    ck_assert_msg(f != NULL, "no drive script %s for lesson %s", drive_path, lesson_file);
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ck_assert_msg(sw_runner_start(r, &a, lesson_path, 0, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(r->page, 0);
+    int pages = 0, lineno = 0;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        if (line[0] == '#' || line[0] == '\n')
+            continue;
+        int n, off;
+        ck_assert_msg(sscanf(line, "page %d:%n", &n, &off) == 1, "%s:%d: expected 'page N: ACTIONS'", drive_path, lineno);
+        ck_assert_msg(n == pages + 1, "%s:%d: page %d out of order", drive_path, lineno, n);
+        ck_assert_msg(r->page == pages, "%s: on page %d, expected %d", lesson_file, r->page + 1, pages + 1);
+        for (char *tok = strtok(line + off, " \t\n"); tok; tok = strtok(NULL, " \t\n")) {
+            if (strncmp(tok, "run:", 4) == 0) {
+                run_for(r, &a, atof(tok + 4));
+            } else {
+                int key = key_code(tok);
+                ck_assert_msg(key >= 0, "%s:%d: unknown action '%s'", drive_path, lineno, tok);
+                press(r, &a, key);
+            }
+        }
+        sw_runner_update(r, &a);
+        char why[1024];
+        unmet_goals(r, &a, why, sizeof why);
+        ck_assert_msg(r->complete[r->page], "%s page %d '%s' not complete after its actions: %s", lesson_file,
+                      pages + 1, r->lesson.pages[r->page].title, why);
+        pages++;
+        if (pages < r->lesson.npages) {
+            press(r, &a, 'n');
+            ck_assert_msg(r->page == pages, "%s: n did not open page %d", lesson_file, pages + 1);
+        }
+    }
+    fclose(f);
+    ck_assert_msg(pages == r->lesson.npages, "%s: the drive covers %d of %d pages", lesson_file, pages,
+                  r->lesson.npages);
+    ck_assert(r->finished);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+
+START_TEST(drive_every_lesson)
+{
+    /* progress goes to a scratch directory, not the student's */
+    char state[] = "/tmp/sw-drive-XXXXXX";
+    ck_assert_ptr_nonnull(mkdtemp(state));
+    setenv("XDG_STATE_HOME", state, 1);
+    ck_assert_int_eq(chdir("."), 0);
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    ck_assert_int_ge(n, 10);
+    for (int i = 0; i < n; i++)
+        drive(e[i].file);
+    /* progress was saved: every lesson complete */
+    for (int i = 0; i < n; i++)
+        ck_assert_int_eq(sw_progress_get(e[i].file), e[i].npages);
+    sw_lesson_list_free(e, n);
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+/* A page's goals gate the next page; answers give their feedback. */
+START_TEST(gating_and_answers)
+{
+    char state[] = "/tmp/sw-gate-XXXXXX", path[128];
+    ck_assert_ptr_nonnull(mkdtemp(state));
+    setenv("XDG_STATE_HOME", state, 1);
+    snprintf(path, sizeof path, "%s/gate.lesson", state);
+    FILE *f = fopen(path, "w");
+    fputs("title: Gate\n--- First\n@scene spring\n@integrator euler\nPick RK4.\n@goal integrator == rk4\n"
+          "@hint press 5\n--- Second\nWhich is implicit?\n@question Which method solves a linear system?\n"
+          "@answer a) euler | No: one evaluation, no solve.\n@answer b) implicit-euler | Yes.\n@correct b\n",
+          f);
+    fclose(f);
+    sw_runner r;
+    sw_app a;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_msg(sw_runner_start(&r, &a, path, 0, err, sizeof err) == SW_OK, "%s", err);
+    press(&r, &a, 'n');
+    ck_assert_int_eq(r.page, 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "not met"));
+    press(&r, &a, 'h');
+    const sw_side *side = sw_runner_side(&r, &a, 120);
+    int found = 0;
+    for (int i = 0; i < side->nlines; i++)
+        found |= strstr(side->lines[i], "Hint: press 5") != NULL;
+    ck_assert(found);
+    press(&r, &a, '5');
+    ck_assert(r.complete[0]);
+    ck_assert_int_eq(sw_progress_get("gate.lesson"), 1);
+    sw_app_free(&a);
+    sw_runner_free(&r);
+    /* resuming opens the first page not yet done */
+    ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
+    ck_assert_int_eq(r.page, 1);
+    ck_assert(r.complete[0]);
+    press(&r, &a, 'a');
+    ck_assert(!r.answered[1]);
+    ck_assert_ptr_nonnull(strstr(r.feedback, "No: one evaluation"));
+    press(&r, &a, 'b');
+    ck_assert(r.answered[1] && r.complete[1] && r.finished);
+    ck_assert_int_eq(sw_progress_get("gate.lesson"), 2);
+    press(&r, &a, 'N');
+    ck_assert_int_eq(r.page, 0);
+    sw_app_free(&a);
+    sw_runner_free(&r);
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+Suite *make_lesson_drive_suite(void);
+Suite *make_lesson_drive_suite(void)
+{
+    Suite *s = suite_create("lesson_drive");
+    TCase *tc = tcase_create("drive");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, gating_and_answers);
+    tcase_add_test(tc, drive_every_lesson);
+    suite_add_tcase(s, tc);
+    return s;
+}

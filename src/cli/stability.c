@@ -17,22 +17,23 @@ static const char usage_text[] =
     "verlet: 2; rk4: 2*sqrt(2); implicit methods: unbounded).\n"
     "\n"
     "Criterion. Each probe runs the scene at one dt, and a twin started 1e-7 (relative)\n"
-    "away, for a fixed simulated time: 100 periods 2*pi/w (100 report times when w is\n"
-    "unknown) and at least 4000 steps. It watches M, the scene's energy (for a flow\n"
-    "without one, half the squared state norm), and D, the squared distance between the\n"
-    "twins. The step is unstable when either sim blows up, when M rises above its start\n"
-    "by more than 1e4 times |M(0)|, when D grows past 1e8 times its start (a growing mode\n"
-    "that the scene's nonlinearity has capped still drives the twins apart), or when M\n"
-    "grows: its peak over the last tenth of the run beats its peak over the first tenth\n"
-    "by more than a tenth of the first tenth's spread. A bounded oscillation shows the\n"
-    "same peaks in both tenths and decay lowers them, so damped and decaying runs are\n"
-    "stable (a run whose D has decayed by 1e-24 stops early as stable); growth, however\n"
-    "slow, raises them. A fixed simulated time (not a fixed number of steps) is what\n"
-    "lets the slow growth of euler, midpoint and heun at small dt show: they are\n"
-    "reported 'none' when they grow even at w*dt = 0.01. A method still stable at\n"
-    "w*dt = 1000 (dt = 1000 at most) is 'unbounded'. Between a stable and an unstable\n"
-    "dt the search bisects to 0.01%.\n"
-    "rk45 chooses its own steps and is skipped.\n"
+    "ahead along its path (y0 + e f(y0)), for a fixed simulated time: 100 periods 2*pi/w\n"
+    "(100 report times when w is unknown), at least 10 report times, and at least 4000\n"
+    "steps. It watches M, the scene's energy (for a flow without one, half the squared\n"
+    "state norm), and D, the squared distance between the twins. The step is unstable\n"
+    "when either sim blows up, when M rises above its start by more than 1e4 |M(0)|, when\n"
+    "D grows past 1e8 times its start (a growing mode that the scene's nonlinearity has\n"
+    "capped still drives the twins apart), or when M grows: its peak over the last tenth\n"
+    "of the run beats its peak over the first tenth by more than a tenth of the first\n"
+    "tenth's spread. A bounded oscillation shows the same peaks in both tenths and decay\n"
+    "lowers them, so damped and decaying runs are stable (a run whose D has decayed\n"
+    "below 1e-24 of its start stops early, stable); growth, however slow, raises them.\n"
+    "A fixed simulated time (not a fixed number of steps) is what lets the slow growth\n"
+    "of euler, midpoint and heun at small dt show: they are reported 'none' when they\n"
+    "grow even at w*dt = 0.01. A method still stable at w*dt = 1000 (dt = 1000 at most)\n"
+    "is 'unbounded'. Between a stable and an unstable dt the search bisects to 0.01%.\n"
+    "rk45 chooses its own steps and is skipped. Scenes with contact or births at step\n"
+    "boundaries (bounce, fireworks) are refused: nearby runs split at every step.\n"
     "\n"
     "  --integrators LIST  comma-separated methods (default: all that apply)\n"
     "  --set NAME=VALUE    change a scene parameter, e.g. --set c=0 (undamped spring)\n"
@@ -140,12 +141,14 @@ int sw_cmd_stability(int argc, char **argv)
     for (int i = 0; i < sc->nparams; i++)
         printf("%s%s=%g", i ? " " : "", sc->params[i].name, opts.p[i]);
     printf(")\n");
+    double probe_time = fmax(omega > 0 ? 100 * 6.283185307179586 / omega : 100 * sc->duration,
+                             10 * sc->duration);
     if (omega > 0)
-        printf("stiffest frequency w = %.6g rad/s; growth judged on %s over 100 periods 2 pi/w\n",
-               omega, sc->energy ? "the energy" : "half the squared state norm");
+        printf("stiffest frequency w = %.6g rad/s; ", omega);
     else
-        printf("no stiffest frequency known: growth judged on %s over 100 report times (%g s)\n",
-               sc->energy ? "the energy" : "half the squared state norm", 100 * sc->duration);
+        printf("no stiffest frequency known; ");
+    printf("growth judged on %s and a twin run over %.4g s per probe\n",
+           sc->energy ? "the energy" : "half the squared state norm", probe_time);
     printf("('stepwise stability --help' gives the criterion)\n\n");
     printf("  %-18s %-34s %-10s %-17s %s\n", "method", "largest stable dt", "w*dt",
            "theory w*dt", "probes");
@@ -186,6 +189,8 @@ int sw_cmd_stability(int argc, char **argv)
         else
             snprintf(wdt, sizeof wdt, "-");
         printf("  %-18s %-34s %-10s %-17s %d\n", m->name, found, wdt, theory, res.probes);
+        if (res.fail.verdict == SW_PROBE_BLOWN)
+            printf("  %-18s (at dt = %.6g: %s)\n", "", res.fail.dt, res.fail.reason);
         fflush(stdout);
     }
     return status;

@@ -10,6 +10,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "stepwise/stepwise.h"
@@ -18,17 +19,24 @@
 
 void sw_stability_config_default(sw_stability_config *c)
 {
-    *c = (sw_stability_config){ .periods = 100, .min_steps = 4000, .max_steps = 4000000,
+    *c = (sw_stability_config){ .periods = 100, .reports = 10, .min_steps = 4000, .max_steps = 4000000,
                                 .bound = 1e4, .twin_bound = 1e8, .trend = 0.1, .low = 0.01,
                                 .high = 1000, .rel_tol = 1e-4 };
 }
 
 int sw_stability_applicable(const sw_scene *sc, char *why, size_t whylen)
 {
+    if (sc->post_step) {
+        snprintf(why, whylen, "%s changes its state at step boundaries (contact, births), so "
+                 "nearby runs split at every step size and no limit can be measured; try spring, "
+                 "stiff-spring, chain, orbit, vortex or projectile", sc->name);
+        return 0;
+    }
     if (sc->energy || sc->omega_max)
         return 1;
     snprintf(why, whylen, "%s defines no energy and no stiffest frequency, so growth cannot be "
-             "told from the flow itself; stability works on scenes with either", sc->name);
+             "told from the flow itself; try spring, stiff-spring, chain, orbit, vortex or "
+             "projectile", sc->name);
     return 0;
 }
 
@@ -44,11 +52,14 @@ static double measure(const sw_sim *s)
     return 0.5 * m;
 }
 
-/* The time unit probes are measured in: one period of the stiffest motion,
- * or the scene's report time when ω is unknown. */
-static double time_unit(const sw_scene *sc, double omega)
+/* Simulated time per probe: `periods` periods of the stiffest motion (report
+ * times when ω is unknown), and at least `reports` report times, so that each
+ * tenth of the run also spans the scene's slow motion and sees the same
+ * peaks of a bounded energy oscillation. */
+static double probe_time(const sw_scene *sc, double omega, const sw_stability_config *c)
 {
-    return omega > 0 && isfinite(omega) ? TWO_PI / omega : sc->duration;
+    double unit = omega > 0 && isfinite(omega) ? TWO_PI / omega : sc->duration;
+    return fmax(c->periods * unit, c->reports * sc->duration);
 }
 
 static double scene_omega(const sw_scene *sc, const double *p, char *err, size_t errlen, int *rc)
@@ -74,7 +85,7 @@ static double twin_distance(const sw_sim *a, const sw_sim *b)
 }
 
 static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
-                 double unit, const sw_stability_config *c, sw_stability_probe *out, char *err,
+                 double duration, const sw_stability_config *c, sw_stability_probe *out, char *err,
                  size_t errlen)
 {
     memset(out, 0, sizeof *out);
@@ -88,17 +99,31 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
         sw_sim_free(&s);
         return rc;
     }
-    /* The twin starts 1e-7 (relative) away, in a fixed pattern over every
-     * component, so the linearised dynamics act on its distance D. */
+    /* The twin starts 1e-7 (relative) ahead along the motion, y0 + ε·f(y0):
+     * the same path a moment later. The exact flow keeps such a shift
+     * bounded (no shear, no transverse physics); a growing numerical mode
+     * pulls the twins apart. At an equilibrium, a fixed pattern instead. */
     int dim = s.sys.ode->dim;
-    double size = 1.0;
-    for (int i = 0; i < dim; i++)
+    double size = 1.0, fnorm = 0;
+    double *f = malloc((size_t)dim * sizeof *f);
+    if (!f) {
+        sw_sim_free(&twin);
+        sw_sim_free(&s);
+        snprintf(err, errlen, "out of memory for a %d-long state", dim);
+        return SW_ENOMEM;
+    }
+    sw_ode_eval(twin.sys.ode, 0.0, twin.sys.y, f);
+    for (int i = 0; i < dim; i++) {
         size = fmax(size, fabs(s.sys.y[i]));
+        fnorm = fmax(fnorm, fabs(f[i]));
+    }
     for (int i = 0; i < dim; i++)
-        twin.sys.y[i] += 1e-7 * size * (i % 2 ? -1.0 : 1.0) * (1.0 + 0.5 * (i % 3));
+        twin.sys.y[i] += 1e-7 * size * (fnorm > 0 && isfinite(fnorm) ? f[i] / fnorm
+                                        : (i % 2 ? -1.0 : 1.0) * (1.0 + 0.5 * (i % 3)));
+    free(f);
     double d0 = twin_distance(&s, &twin);
     /* Steps for the fixed simulated time, clipped before converting. */
-    double want = ceil(c->periods * unit / dt);
+    double want = ceil(duration / dt);
     long steps = !(want >= (double)c->min_steps) ? c->min_steps
                  : want > (double)c->max_steps ? c->max_steps : (long)want;
     long window = steps / 10 > 0 ? steps / 10 : 1;
@@ -110,6 +135,7 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
     for (k = 1; k <= steps; k++) {
         if (sw_sim_step(&s) | sw_sim_step(&twin)) {
             out->verdict = SW_PROBE_BLOWN;
+            snprintf(out->reason, sizeof out->reason, "%s", s.blown ? s.blow_reason : twin.blow_reason);
             break;
         }
         double v = measure(&s), d = twin_distance(&s, &twin);
@@ -155,7 +181,7 @@ int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integra
     double w = scene_omega(sc, p, err, errlen, &rc);
     if (rc != SW_OK)
         return rc;
-    return probe(sc, p, m, dt, time_unit(sc, w), c, out, err, errlen);
+    return probe(sc, p, m, dt, probe_time(sc, w, c), c, out, err, errlen);
 }
 
 int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,
@@ -186,7 +212,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     if (rc != SW_OK)
         return rc;
     out->omega = w;
-    double unit = time_unit(sc, w), lo_bound, hi_bound;
+    double duration = probe_time(sc, w, c), lo_bound, hi_bound;
     if (w > 0 && isfinite(w)) {
         lo_bound = c->low / w;
         hi_bound = c->high / w;
@@ -200,7 +226,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     sw_stability_probe pr;
 #define PROBE(dt_)                                                              \
     do {                                                                        \
-        rc = probe(sc, p, m, (dt_), unit, c, &pr, err, errlen);                 \
+        rc = probe(sc, p, m, (dt_), duration, c, &pr, err, errlen);             \
         if (rc != SW_OK)                                                        \
             return rc;                                                          \
         out->probes++;                                                          \

@@ -2,8 +2,8 @@
  * keeps a scene from blowing up or growing, found by bisection on sw_sim
  * runs. Growth is judged on a measure M of the state (the scene's energy, or
  * ½|y|² for a flow without one) and on the distance D between the sim and a
- * twin started 1e-7 away: the linearised dynamics, which stability theory is
- * about, act on D whatever the state's amplitude. */
+ * twin started 1e-7 ahead along its path: the linearised dynamics, which
+ * stability theory is about, act on D whatever the state's amplitude. */
 #ifndef SW_LAB_STABILITY_H
 #define SW_LAB_STABILITY_H
 
@@ -29,6 +29,7 @@ enum {
 
 typedef struct sw_stability_config {
     double periods;  /* simulated time per probe, in periods 2π/ω (report times when ω is unknown) */
+    double reports;  /* but at least this many report times */
     long min_steps;  /* but at least this many steps */
     long max_steps;  /* and at most this many */
     double bound;    /* see SW_PROBE_BOUND */
@@ -47,6 +48,7 @@ typedef struct sw_stability_probe {
     double m0;         /* M at the start */
     double first_max, first_range; /* over steps 0..N/10 */
     double last_max;   /* over the last N/10 steps */
+    char reason[SW_ERRLEN]; /* SW_PROBE_BLOWN: the sim's blow-up reason */
 } sw_stability_probe;
 
 typedef struct sw_stability_result {
@@ -62,12 +64,13 @@ typedef struct sw_stability_result {
     sw_stability_probe fail; /* the failing probe nearest the limit (NONE: the one at dt) */
 } sw_stability_result;
 
-/* 100 periods and at least 4000 steps per probe, bound 1e4, twin bound 1e8,
+/* 100 periods, 10 report times and at least 4000 steps per probe, bound 1e4, twin bound 1e8,
  * trend 0.1, ω·Δt from 0.01 to 1000, bisection to 1e-4. */
 void sw_stability_config_default(sw_stability_config *c);
 
 /* 1 when growth can be judged on scene sc: it defines an energy or knows its
- * stiffest frequency (a flow, judged on ½|y|²); else 0 with why filled. */
+ * stiffest frequency (a flow, judged on ½|y|²), and it has no events at step
+ * boundaries (contact splits nearby runs); else 0 with why filled. */
 int sw_stability_applicable(const sw_scene *sc, char *why, size_t whylen);
 
 /* Run sc (parameters p, NULL: defaults) under m at step dt for the probe's

@@ -265,10 +265,21 @@ int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t er
         used += (size_t)fmt_cell(w->row + used, w->row_cap - used, sw_sim_energy(s));
     }
     w->row[used++] = '\n';
-    /* One fwrite, then a flush: a killed process leaves only whole rows. */
+    /* Past stdio, in one write(2) (more only if the kernel takes part of it):
+     * stdio would cut a row longer than its buffer into several writes, and
+     * a process killed between them would leave half a row. */
     errno = 0;
-    if (fwrite(w->row, 1, used, w->f) != used || fflush(w->f) != 0)
+    if (fflush(w->f) != 0)
         return write_failed(w, err, errlen);
+    int fd = fileno(w->f);
+    for (size_t done = 0; done < used;) {
+        ssize_t n = write(fd, w->row + done, used - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return write_failed(w, err, errlen);
+        done += (size_t)n;
+    }
     w->last_step = s->steps;
     w->rows++;
     return SW_OK;

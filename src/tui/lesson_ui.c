@@ -169,21 +169,16 @@ int sw_cmd_lesson(int argc, char **argv)
         sw_lesson_list_free(e, n);
         return sw_cli_error("no lessons in %s (set STEPWISE_LESSONS to the lessons directory)", dir);
     }
-    int rc;
-    if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO)) {
+    int rc, k = -1;
+    if (optind < argc && (k = find_lesson(e, n, argv[optind])) < 0)
+        rc = sw_cli_error("no lesson '%.60s' in %s; choose 1..%d or a name from 'stepwise list lessons'",
+                          argv[optind], dir, n);
+    else if (k >= 0 && !e[k].title)
+        rc = sw_cli_error("%s", e[k].error);
+    else if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
         rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson --check FILE...'");
-    } else if (optind < argc) {
-        int k = find_lesson(e, n, argv[optind]);
-        if (k < 0)
-            rc = sw_cli_error("no lesson '%.60s' in %s; choose 1..%d or a name from 'stepwise list lessons'",
-                              argv[optind], dir, n);
-        else if (!e[k].title)
-            rc = sw_cli_error("%s", e[k].error);
-        else
-            rc = run_lesson(e[k].path, -1);
-    } else {
-        rc = menu(e, n);
-    }
+    else
+        rc = k >= 0 ? run_lesson(e[k].path, -1) : menu(e, n);
     sw_lesson_list_free(e, n);
     return rc;
 }

@@ -32,11 +32,11 @@ static const char play_help[] =
     "      --speed X           simulated seconds per wall second (default 1)\n"
     "  -h, --help              this help\n";
 
-/* Steps for one sim per frame: what fits in about 12 ms at the measured rate. */
-static long step_budget(const sw_app *a)
+/* Steps for one sim per frame: what fits in about 10 ms at the measured
+ * cost per step (capacity: steps per second of stepping time). */
+static long step_budget(const sw_app *a, double capacity)
 {
-    double rate = a->steps_per_sec > 0 ? a->steps_per_sec : 2000;
-    double b = rate * 0.012 / a->nsims;
+    double b = (capacity > 0 ? capacity : 2000) * 0.010 / a->nsims;
     return b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
 }
 
@@ -81,7 +81,7 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
         return sw_cli_error("%s", err);
     }
     int cols = 0, rows = 0;
-    double last = sw_term_now(), rate_t = last;
+    double last = sw_term_now(), rate_t = last, busy = 0, capacity = 0;
     long rate_steps = 0;
     int status = SW_EXIT_OK;
     while (!a->quit && !sw_term_signal) {
@@ -110,12 +110,18 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
         }
         double now = sw_term_now();
         long before = a->sims[0].steps;
-        sw_app_advance(a, fmin(now - last, 0.1), step_budget(a));
+        sw_app_advance(a, fmin(now - last, 0.1), step_budget(a, capacity));
         last = now;
+        busy += sw_term_now() - now;
         rate_steps += a->sims[0].steps - before;
         if (now - rate_t >= 0.5) {
             a->steps_per_sec = rate_steps / (now - rate_t);
+            if (rate_steps > 0 && busy > 0)
+                capacity = rate_steps / busy;
+            else if (capacity > 0)
+                capacity *= 2; /* nothing measured: let the budget grow */
             rate_steps = 0;
+            busy = 0;
             rate_t = now;
         }
         sw_frame_push_trails(&f, a);

@@ -36,7 +36,7 @@ START_TEST(course_lessons_all_parse)
         ck_assert_msg(list[i].title != NULL, "%s does not parse: %s", list[i].path, list[i].error);
         ck_assert_int_ge(list[i].npages, 3);
         if (i < 10) {
-            char prefix[8];
+            char prefix[16];
             snprintf(prefix, sizeof prefix, "%02d-", i + 1);
             ck_assert_msg(strncmp(list[i].file, prefix, 3) == 0, "lesson %d is %s", i + 1, list[i].file);
         }
@@ -321,6 +321,8 @@ START_TEST(settings_inherit_and_restart)
     ck_assert_str_eq(p[3].method->name, orbit->integrator);
     ck_assert_double_eq(p[3].dt, orbit->dt);
     ck_assert_double_eq(p[3].p[0], orbit->params[0].def);
+    for (int k = orbit->nparams; k < SW_MAX_PARAMS; k++)
+        ck_assert_double_eq(p[3].p[k], 0);  /* nothing left over from the spring */
     ck_assert_int_eq(p[4].restart, 1);
     ck_assert_ptr_eq(p[4].scene, orbit);
     sw_lesson_free(&l);

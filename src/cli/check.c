@@ -280,8 +280,12 @@ static int print_report(const report *rp, const sw_check_result *res)
                res->values_compared, rp->atol, rp->rtol);
     else {
         printf("FAIL: %s differs from %s\n  first failure: %s\n", rp->what, rp->reference, first);
-        printf("  %ld of %ld values are outside |got - expected| <= %g + %g*|expected|\n",
-               res->values_failed, res->values_compared, rp->atol, rp->rtol);
+        if (res->values_failed > 0)
+            printf("  %ld of %ld values are outside |got - expected| <= %g + %g*|expected|\n",
+                   res->values_failed, res->values_compared, rp->atol, rp->rtol);
+        else
+            printf("  the %ld values compared are all within |got - expected| <= %g + "
+                   "%g*|expected|\n", res->values_compared, rp->atol, rp->rtol);
     }
     if (res->have_worst)
         printf("  largest error: %s\n", worst);

@@ -154,7 +154,8 @@ int sw_cmd_record(int argc, char **argv)
     }
     if (interrupted) {
         sw_trace_abort(&w);
-        fprintf(stderr, "stepwise: record interrupted at step %ld; no trace written\n", sim.steps);
+        fprintf(stderr, "stepwise: record interrupted at step %ld; %s\n", sim.steps,
+                w.to_stdout ? "the trace on standard output is incomplete" : "no trace written");
         sw_sim_free(&sim);
         reraise(interrupted);
         return SW_EXIT_USAGE;

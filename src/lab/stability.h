@@ -17,13 +17,17 @@ typedef enum sw_stab_kind {
     SW_STAB_UNBOUNDED = 2 /* stable even at the largest step probed */
 } sw_stab_kind;
 
+/* A probe cuts its run into this many windows and takes M's peak in each. */
+#define SW_STAB_WINDOWS 20
+
 /* A probe's verdict. */
 enum {
     SW_PROBE_STABLE = 0,
     SW_PROBE_BLOWN = 1,  /* the sim or its twin blew up (non-finite, runaway, failed solve) */
     SW_PROBE_BOUND = 2,  /* M rose above its start by more than (bound - 1)·|M0| */
     SW_PROBE_TWIN = 3,   /* D² rose above twin_bound times its start */
-    SW_PROBE_TREND = 4,  /* M's peak over the last tenth of the run beat the first tenth's */
+    SW_PROBE_TREND = 4,  /* M grew: window peaks climbed steadily, or the last tenth's peak
+                            beat the first tenth's by more than the first tenth varied */
     SW_PROBE_DECAYED = 5 /* stable: D² fell below 1e-24 of its start, the run stopped early */
 };
 
@@ -34,7 +38,9 @@ typedef struct sw_stability_config {
     long max_steps;  /* and at most this many */
     double bound;    /* see SW_PROBE_BOUND */
     double twin_bound; /* see SW_PROBE_TWIN */
-    double trend;    /* TREND when last_max - first_max > trend·first_range + 1e-9·|M0| */
+    int rises;       /* TREND when at least this many of the 19 window-to-window peak
+                        changes are rises (and the peaks rose by > 1e-12·|M0| in all) */
+    double jump;     /* TREND when last_max - first_max > jump·first_range + 1e-9·|M0| */
     double low;      /* smallest ω·Δt probed (Δt = low·(scene dt) when ω is unknown) */
     double high;     /* largest ω·Δt probed (capped at SW_DT_MAX) */
     double rel_tol;  /* bisection stops once dt_unstable / dt - 1 < rel_tol */
@@ -46,8 +52,9 @@ typedef struct sw_stability_probe {
     long steps;        /* steps taken (fewer than planned when it failed early) */
     int verdict;       /* SW_PROBE_* */
     double m0;         /* M at the start */
-    double first_max, first_range; /* over steps 0..N/10 */
-    double last_max;   /* over the last N/10 steps */
+    double first_max, first_range; /* M over the first tenth of the run (2 windows) */
+    double last_max;   /* M's peak over the last tenth */
+    int rises;         /* window-to-window rises of M's peak, out of SW_STAB_WINDOWS - 1 */
     char reason[SW_ERRLEN]; /* SW_PROBE_BLOWN: the sim's blow-up reason */
 } sw_stability_probe;
 
@@ -64,8 +71,8 @@ typedef struct sw_stability_result {
     sw_stability_probe fail; /* the failing probe nearest the limit (NONE: the one at dt) */
 } sw_stability_result;
 
-/* 100 periods, 10 report times and at least 4000 steps per probe, bound 1e4, twin bound 1e8,
- * trend 0.1, ω·Δt from 0.01 to 1000, bisection to 1e-4. */
+/* 100 periods, 10 report times and at least 400 steps per probe, bound 1e4,
+ * twin bound 1e8, 16 rises, jump 1, ω·Δt from 0.01 to 1000, bisection to 1e-4. */
 void sw_stability_config_default(sw_stability_config *c);
 
 /* 1 when growth can be judged on scene sc: it defines an energy or knows its

@@ -242,7 +242,7 @@ int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t er
     const sw_system *sys = &s->sys;
     double cell[4];
     size_t used = 0;
-    /* Values come in chunks so that a row needs no second allocation. */
+    /* The state is [x(2n) | v(2n)]; a row groups each particle's values. */
     int pp = per_particle(sys);
     used += (size_t)snprintf(w->row, w->row_cap, "%ld,", s->steps);
     used += (size_t)fmt_cell(w->row + used, w->row_cap - used, s->t);
@@ -273,12 +273,12 @@ int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t er
         return write_failed(w, err, errlen);
     int fd = fileno(w->f);
     for (size_t done = 0; done < used;) {
-        ssize_t n = write(fd, w->row + done, used - done);
-        if (n < 0 && errno == EINTR)
+        ssize_t wrote = write(fd, w->row + done, used - done);
+        if (wrote < 0 && errno == EINTR)
             continue;
-        if (n <= 0)
+        if (wrote <= 0)
             return write_failed(w, err, errlen);
-        done += (size_t)n;
+        done += (size_t)wrote;
     }
     w->last_step = s->steps;
     w->rows++;
@@ -651,6 +651,12 @@ static int read_magic(sw_trace_reader *r, char *err, size_t errlen)
     }
     if (strcmp(r->buf, SW_TRACE_MAGIC) == 0)
         return SW_OK;
+    /* Not a trace. Random or binary bytes may happen to open with a short
+     * clean line: look a little further so such a file is called binary. */
+    for (int i = 0, c; i < 512 && (c = getc(r->f)) != EOF; i++)
+        if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f)
+            return fail(r, err, errlen, "binary data (byte 0x%02x within the first 512 bytes "
+                        "after line 1): a trace is a text file", (unsigned)c);
     char show[48], tail;
     int version;
     if (sscanf(r->buf, "# stepwise trace %d%c", &version, &tail) == 1)

@@ -67,7 +67,8 @@ typedef struct sw_trace_writer {
 
 /* Open a trace for writing: path NULL or "-" is stdout, anything else a
  * temporary file beside path that only sw_trace_commit renames onto it.
- * 0, SW_EINVAL (path is a directory) or SW_EIO. */
+ * 0, SW_EINVAL (path is a directory) or SW_EIO. After any later failure
+ * (begin, write_row, observe), call sw_trace_abort. */
 int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen);
 /* Write the first line, the metadata that regenerates s under spec (s at
  * step 0), the header row and row 0. 0, SW_EINVAL or SW_EIO. */

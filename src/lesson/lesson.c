@@ -337,6 +337,9 @@ static int d_scene(parser *ps, size_t pos)
     }
     ps->at_scene.col = col_of(ps, at);
     ps->scene = sc;
+    /* Entries past the scene's parameters stay 0, so two setups of one
+     * scene compare equal as whole arrays. */
+    memset(ps->p, 0, sizeof ps->p);
     sw_scene_defaults(sc, ps->p);
     ps->method = sw_integrator_find(sc->integrator);
     ps->dt = sc->dt;
@@ -1385,7 +1388,7 @@ static int directive(parser *ps, size_t at)
 static int header_line(parser *ps, size_t at)
 {
     static const char key[] = "title:";
-    if (strncmp(ps->ln + at, key, sizeof key - 1) != 0)
+    if (ps->lnlen - at < sizeof key - 1 || memcmp(ps->ln + at, key, sizeof key - 1) != 0)
         return FAIL(ps, at, "text before the first page; expected 'title: LESSON TITLE' at the top, then "
                     "pages starting with '--- PAGE TITLE'");
     if (ps->out->title)
@@ -1415,7 +1418,7 @@ static int read_line(parser *ps)
     char c = ps->ln[at];
     if (c == '#')
         return SW_OK;
-    if (c == '-' && ps->lnlen - at >= 3 && strncmp(ps->ln + at, "---", 3) == 0)
+    if (c == '-' && ps->lnlen - at >= 3 && memcmp(ps->ln + at, "---", 3) == 0)
         return begin_page(ps, at + 3);
     if (!page(ps)) {
         if (c == '@')

@@ -167,7 +167,8 @@ typedef struct sw_lesson_page {
      * rebuilds the sim from scene, p, method and dt below and starts it at
      * t = 0; when 0 the sim goes on as the student left it. scene, p, method
      * and dt are always filled: what the page says, else what earlier pages
-     * said (a @scene brings the scene's defaults). */
+     * said (a @scene brings the scene's defaults). p has the scene's
+     * nparams values, then zeros. */
     int restart;
     const sw_scene *scene;
     double p[SW_MAX_PARAMS];

@@ -84,7 +84,16 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
     double last = sw_term_now(), rate_t = last, busy = 0, capacity = 0;
     long rate_steps = 0;
     int status = SW_EXIT_OK;
+    /* Test hook: take the error exit after N frames (docs/robustness.md). */
+    const char *force = getenv("STEPWISE_FORCE_ERROR");
+    long frames_left = force && *force ? atol(force) : -1;
     while (!a->quit && !sw_term_signal) {
+        if (frames_left == 0) {
+            snprintf(err, sizeof err, "forced error after %s frames (STEPWISE_FORCE_ERROR)", force);
+            status = SW_EXIT_USAGE;
+            break;
+        }
+        frames_left -= frames_left > 0;
         int c, r;
         sw_term_size(&c, &r);
         if (c != cols || r != rows) {
@@ -93,6 +102,7 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
                 status = SW_EXIT_USAGE;
                 break;
             }
+            err[0] = '\0';
             cols = c;
             rows = r;
         }
@@ -136,10 +146,12 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
                 sw_app_key(a, key, hooks != NULL);
         }
     }
-    sw_term_stop();
-    sw_app_record_stop(a); /* a signal or q: the trace is written whole or not at all */
+    sw_term_stop(); /* first, so every message below lands on a sane terminal */
+    sw_app_record_stop(a); /* a signal, q or an error: the trace is written whole or not at all */
     sw_screen_free(&scr);
     sw_frame_free(&f);
+    if (status != SW_EXIT_OK)
+        return sw_cli_error("%s", err);
     if (sw_term_signal)
         return sw_term_signal_status();
     return status;

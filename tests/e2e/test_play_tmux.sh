@@ -41,4 +41,41 @@ done
 out=$("$STEPWISE" play spring </dev/null 2>&1 >/dev/null); rc=$?
 [ $rc -eq 2 ] || { echo "play without a terminal: exit $rc, expected 2"; exit 1; }
 echo "$out" | grep -q "stepwise record" || { echo "message does not point to record: $out"; exit 1; }
+
+# R records what is on screen; the trace passes stepwise check.
+tmux_start
+type_cmd "$STEPWISE play spring -i rk4"
+wait_for 'spring +rk4' || fail "play spring did not start"
+keys R
+wait_for 'recording from t = 0' || fail "R did not start recording"
+sleep 1
+keys R
+wait_for 'recorded [0-9]+ steps to stepwise-spring-' || fail "R did not write the trace"
+keys q
+wait_for 'PROMPT\$ *$' || fail "q did not quit"
+trace=$(ls "$WORK"/stepwise-spring-*.trace | head -1)
+[ -f "$trace" ] || fail "no trace file in $WORK"
+"$STEPWISE" check "$trace" >/dev/null || fail "the recorded trace does not pass stepwise check"
+rm -f "$WORK"/stepwise-spring-*.trace
+
+# A recording in progress when SIGTERM arrives is written whole.
+type_cmd "$STEPWISE play orbit"
+wait_for 'orbit +verlet' || fail "play orbit did not start"
+keys R
+wait_for 'recording from t = 0' || fail "R did not start recording"
+sleep 1
+kill -TERM "$(app_pid)"
+wait_for 'PROMPT\$' || fail "no prompt after SIGTERM while recording"
+check_terminal_sane TERM-recording
+trace=$(ls "$WORK"/stepwise-orbit-*.trace 2>/dev/null | head -1)
+[ -f "$trace" ] || fail "the recording was lost on SIGTERM"
+ls "$WORK" | grep -q '\.tmp' && fail "a temporary file was left behind"
+"$STEPWISE" check "$trace" >/dev/null || fail "the trace written on SIGTERM does not pass check"
+tail -c 1 "$trace" | od -c | grep -q '\\n' || fail "the trace does not end with a whole line"
+
+# An error inside the live loop restores the terminal before its message.
+type_cmd "STEPWISE_FORCE_ERROR=20 $STEPWISE play spring; echo EXIT=\$?"
+wait_for 'EXIT=2' || fail "the forced error did not exit 2"
+screen | grep -q 'stepwise: forced error after 20 frames' || fail "the error message is not on the restored screen"
+check_terminal_sane forced-error
 echo ok

@@ -65,11 +65,13 @@ static void unmet_goals(sw_runner *r, sw_app *a, char *buf, size_t len)
         snprintf(buf + used, len - used, " [question not answered]");
 }
 
+static char repo[512];
+
 static void drive(const char *lesson_file)
 {
-    char lesson_path[512], drive_path[512], err[SW_LESSON_ERRLEN], line[2048];
-    snprintf(lesson_path, sizeof lesson_path, "lessons/%s", lesson_file);
-    snprintf(drive_path, sizeof drive_path, "tests/lesson_drives/%.*s.drive",
+    char lesson_path[1024], drive_path[1024], err[SW_LESSON_ERRLEN], line[2048];
+    snprintf(lesson_path, sizeof lesson_path, "%s/lessons/%s", repo, lesson_file);
+    snprintf(drive_path, sizeof drive_path, "%s/tests/lesson_drives/%.*s.drive", repo,
              (int)(strlen(lesson_file) - strlen(".lesson")), lesson_file);
     FILE *f = fopen(drive_path, "r");
     ck_assert_msg(f != NULL, "no drive script %s for lesson %s", drive_path, lesson_file);
@@ -117,15 +119,17 @@ static void drive(const char *lesson_file)
 
 START_TEST(drive_every_lesson)
 {
-    /* progress goes to a scratch directory, not the student's */
-    char state[] = "/tmp/sw-drive-XXXXXX";
+    /* progress and recorded traces go to a scratch directory */
+    char state[] = "/tmp/sw-drive-XXXXXX", dir[600];
     ck_assert_ptr_nonnull(mkdtemp(state));
     setenv("XDG_STATE_HOME", state, 1);
-    ck_assert_int_eq(chdir("."), 0);
+    ck_assert_ptr_nonnull(getcwd(repo, sizeof repo));
+    snprintf(dir, sizeof dir, "%s/lessons", repo);
+    ck_assert_int_eq(chdir(state), 0);
     sw_lesson_entry *e;
     int n;
     char err[SW_LESSON_ERRLEN];
-    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_lesson_list(dir, &e, &n, err, sizeof err), SW_OK);
     ck_assert_int_ge(n, 10);
     for (int i = 0; i < n; i++)
         drive(e[i].file);
@@ -133,6 +137,7 @@ START_TEST(drive_every_lesson)
     for (int i = 0; i < n; i++)
         ck_assert_int_eq(sw_progress_get(e[i].file), e[i].npages);
     sw_lesson_list_free(e, n);
+    ck_assert_int_eq(chdir(repo), 0);
     char cmd[64];
     snprintf(cmd, sizeof cmd, "rm -rf %s", state);
     ck_assert_int_eq(system(cmd), 0);

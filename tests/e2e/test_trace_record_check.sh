@@ -6,6 +6,7 @@
 # leaves nothing under the real name, and bad options exit 2 with one line.
 set -u
 SW=${STEPWISE:?set STEPWISE to the stepwise binary}
+root=$(cd "$(dirname "$0")/../.." && pwd)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir" || exit 1
@@ -26,6 +27,11 @@ grep -qx '# param k: 10' a.csv || fail "parameter metadata missing"
 run "$SW" check a.csv
 [ "$rc" -eq 0 ] || fail "check of an untouched trace exited $rc: $(cat out err)"
 grep -q '^PASS' out || fail "no PASS line: $(cat out)"
+
+# the worked example of docs/trace-format.md, written by hand with only the
+# required metadata and short decimals, passes
+run "$SW" check "$root/tests/traces/spring-euler-by-hand.trace"
+[ "$rc" -eq 0 ] || fail "the hand-written worked example fails: $(cat out err)"
 
 # record to stdout equals record to a file, byte for byte
 run "$SW" record spring --steps 200

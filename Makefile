@@ -114,8 +114,12 @@ fuzz:
 	    grep -E "stat::number_of_executed_units" build/fuzz/$$t.log; \
 	done
 
-bench: $(BIN)
-	./$(BIN) bench --engine
+# The engine benchmark as its own binary, linked with malloc/calloc/realloc
+# wrapped so it can count every allocation our code makes in a step loop.
+bench: $(LIB)
+	$(CC) $(CPPFLAGS) -std=c11 $(OPT) $(WARN) $(CFLAGS) -DSW_BENCH_MAIN src/cli/bench_engine.c \
+	    $(LIB) $(LDSAN) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc -lm -o $(BUILD)/bench_engine
+	./$(BUILD)/bench_engine
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

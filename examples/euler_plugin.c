@@ -14,13 +14,7 @@
  * flow field y = x (order 1). A step must not allocate: `work` holds
  * work_vectors vectors of ode->dim doubles, given to every call. */
 
-/* stepwise's header calls both the description type and the function that
- * returns it `sw_plugin_info`; C allows one name for one thing per file, so
- * the type takes another name here and the function keeps the name stepwise
- * looks up. Keep these three lines as they are. */
-#define sw_plugin_info sw_plugin_info_type
 #include <stepwise/integrator.h>
-#undef sw_plugin_info
 
 /* y(t + h) = y(t) + h·f(t, y(t)), in place. Return 0; a non-zero return
  * tells stepwise the step failed (it stops the run). */
@@ -33,15 +27,16 @@ static int euler_step(sw_ode *ode, double t, double *y, double h, double *work)
     return 0;
 }
 
-static const sw_plugin_info_type info = {
+static const sw_plugin info = {
     .abi = SW_PLUGIN_ABI,         /* the interface version this file was built for */
     .name = "student-euler",      /* the name for --integrator; must differ from built-ins */
     .label = "explicit Euler (student plugin)",
     .order = 1,                   /* what you claim; stepwise reports it, the check tests it */
+    .evals = 1,                   /* derivative evaluations per step, for reports */
     .work_vectors = 1,            /* how many dim-long vectors euler_step uses in `work` */
     .step = euler_step,
 };
 
 /* The one symbol stepwise looks up after loading the shared object. */
-const sw_plugin_info_type *sw_plugin_info(void);
-const sw_plugin_info_type *sw_plugin_info(void) { return &info; }
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }

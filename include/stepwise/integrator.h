@@ -79,16 +79,19 @@ int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                  const double *r, double *z);
 
-/* Student plugins: a shared object exports `sw_plugin_info`, returning this. */
+/* Student plugins: a shared object exports
+ *     const sw_plugin *sw_plugin_info(void);
+ * returning a description of its integrator (see examples/euler_plugin.c). */
 #define SW_PLUGIN_ABI 1
 typedef int sw_plugin_step_fn(sw_ode *ode, double t, double *y, double h, double *work);
-typedef struct sw_plugin_info {
+typedef struct sw_plugin {
     int abi;                  /* must be SW_PLUGIN_ABI */
     const char *name;         /* command-line name, e.g. "my-euler" */
     const char *label;        /* human name */
     int order;                /* claimed order (reported, not trusted) */
+    int evals;                /* derivative evaluations per step (reported) */
     int work_vectors;         /* how many dim-long vectors `work` holds */
     sw_plugin_step_fn *step;  /* y(t) -> y(t + h) in place; return 0 */
-} sw_plugin_info;
+} sw_plugin;
 
 #endif

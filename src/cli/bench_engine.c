@@ -11,8 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/time.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -215,7 +213,6 @@ static void base_chain_rk4(chain *ch, double *y, double *work, double h, long st
 typedef struct workload {
     const char *scene;
     int n;
-    const char *set_n; /* "n=..." */
 } workload;
 
 static int build_params(const sw_scene *sc, int n, double *p)
@@ -231,6 +228,31 @@ static long calibrate(double seconds_per_step, double target)
 {
     double k = target / fmax(seconds_per_step, 1e-9);
     return k < 1 ? 1 : k > 1e7 ? 10000000L : (long)k;
+}
+
+/* The step size and steps per timed repeat for sim s: calibrated on a few
+ * steps to take about `target` seconds, at dt or a tenth of it (down to
+ * 1e-6 of it) until a trial of all the timed steps stays finite. The sim is
+ * reset to its start and *dt set on return. */
+static long stable_steps(sw_sim *s, double *dt, double target, int repeats)
+{
+    char err[SW_ERRLEN];
+    double t0 = now_seconds();
+    for (int j = 0; j < 3; j++)
+        sw_sim_step(s);
+    long k = calibrate((now_seconds() - t0) / 3.0, target);
+    for (int tries = 0; tries < 6; tries++) {
+        sw_sim_reset(s, err, sizeof err);
+        sw_sim_set_dt(s, *dt, err, sizeof err);
+        for (long j = 0; j < k * repeats && !s->blown; j++)
+            sw_sim_step(s);
+        if (!s->blown)
+            break;
+        *dt *= 0.1;
+    }
+    sw_sim_reset(s, err, sizeof err);
+    sw_sim_set_dt(s, *dt, err, sizeof err);
+    return k;
 }
 
 /* Run a baseline `steps` steps on a copy of y0; 0 when m has none. */
@@ -256,14 +278,14 @@ static int run_baseline(const sw_scene *sc, const double *p, const sw_integrator
 
 static void throughput(const bench_opts *o)
 {
-    const workload loads[2] = { { "chain", o->chain_n, NULL }, { "vortex", o->vortex_n, NULL } };
+    const workload loads[2] = { { "chain", o->chain_n }, { "vortex", o->vortex_n } };
     printf("throughput: ns per particle-step, median of %d repeats of about %.0f ms each\n"
            "  sim   = sw_sim_step (the UI's path: step, post-step hook, blow-up check)\n"
            "  step  = sw_stepper_step alone (the integrator and the derivative)\n"
            "  base  = hand-written loop, same arithmetic, no abstraction (euler, rk4)\n\n",
            o->repeats, o->target * 1e3);
-    printf("  %-7s %7s %-18s %9s %9s %9s %8s %8s %6s %6s  %s\n", "scene", "n", "method", "sim",
-           "step", "base", "sim/base", "step/bas", "evals", "allocs", "baseline result");
+    printf("  %-7s %7s %-18s %8s %9s %9s %9s %8s %8s %6s %6s  %s\n", "scene", "n", "method", "dt",
+           "sim", "step", "base", "sim/base", "step/bas", "evals", "allocs", "baseline result");
     for (int w = 0; w < 2; w++) {
         const sw_scene *sc = sw_scene_find(loads[w].scene);
         double p[SW_MAX_PARAMS];
@@ -275,6 +297,12 @@ static void throughput(const bench_opts *o)
             sw_sim s;
             if (sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
                 continue; /* the method does not apply to this scene */
+            /* A fixed step costs the same at any dt, but a sim that blows up
+             * stops stepping: use the scene's dt, or a tenth of it as often
+             * as needed for the timed steps to stay finite (euler on the
+             * undamped chain grows at every dt). */
+            double dt = sc->dt;
+            long k = stable_steps(&s, &dt, o->target, o->repeats);
             int n = s.sys.n, dim = s.sys.ode->dim;
             double *y0 = malloc((size_t)dim * sizeof *y0), *yb = malloc((size_t)dim * sizeof *yb);
             double *work = malloc((size_t)(5 * dim) * sizeof *work);
@@ -287,12 +315,7 @@ static void throughput(const bench_opts *o)
                 continue;
             }
             memcpy(y0, s.sys.y, (size_t)dim * sizeof *y0);
-            /* Calibrate on a few steps, then time repeats of k steps each. */
-            double t0 = now_seconds();
-            for (int j = 0; j < 3; j++)
-                sw_sim_step(&s);
-            long k = calibrate((now_seconds() - t0) / 3.0, o->target);
-            double sim_t[MAX_REPEATS], step_t[MAX_REPEATS], base_t[MAX_REPEATS];
+            double t0, sim_t[MAX_REPEATS], step_t[MAX_REPEATS], base_t[MAX_REPEATS];
             long allocs = 0, evals0 = sw_sim_evals(&s), steps0 = s.steps;
             for (int r = 0; r < o->repeats; r++) {
                 long a0 = alloc_count();
@@ -313,7 +336,7 @@ static void throughput(const bench_opts *o)
                 long a0 = alloc_count();
                 t0 = now_seconds();
                 for (long j = 0; j < k; j++)
-                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, sc->dt);
+                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, dt);
                 step_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
                 allocs += alloc_count() - a0;
             }
@@ -322,10 +345,10 @@ static void throughput(const bench_opts *o)
             char same[64] = "";
             double base = NAN;
             memcpy(yb, y0, (size_t)dim * sizeof *yb);
-            if (run_baseline(sc, p, m, yb, n, sc->dt, 1, &ch, work)) {
+            if (run_baseline(sc, p, m, yb, n, dt, 1, &ch, work)) {
                 for (int r = 0; r < o->repeats; r++) {
                     t0 = now_seconds();
-                    run_baseline(sc, p, m, yb, n, sc->dt, k, &ch, work);
+                    run_baseline(sc, p, m, yb, n, dt, k, &ch, work);
                     base_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
                 }
                 base = median(base_t, o->repeats);
@@ -334,9 +357,9 @@ static void throughput(const bench_opts *o)
                 memcpy(s.sys.y, y0, (size_t)dim * sizeof *y0);
                 sw_stepper_touch(&s.stepper);
                 t = 0;
-                run_baseline(sc, p, m, yb, n, sc->dt, check, &ch, work);
+                run_baseline(sc, p, m, yb, n, dt, check, &ch, work);
                 for (long j = 0; j < check; j++)
-                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, sc->dt);
+                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, dt);
                 double diff = 0;
                 for (int j = 0; j < dim; j++)
                     diff = fmax(diff, fabs(yb[j] - s.sys.y[j]));
@@ -346,13 +369,16 @@ static void throughput(const bench_opts *o)
                     snprintf(same, sizeof same, "differs by %.1e after %ld steps", diff, check);
             }
             double sim = median(sim_t, o->repeats), step = median(step_t, o->repeats);
-            char allocs_s[16], base_s[16], r1[16], r2[16];
-            snprintf(allocs_s, sizeof allocs_s, allocs < 0 || alloc_count() < 0 ? "n/a" : "%ld", allocs);
-            snprintf(base_s, sizeof base_s, isnan(base) ? "-" : "%.3g", base);
-            snprintf(r1, sizeof r1, isnan(base) ? "-" : "%.2f", sim / base);
-            snprintf(r2, sizeof r2, isnan(base) ? "-" : "%.2f", step / base);
-            printf("  %-7s %7d %-18s %9.3g %9.3g %9s %8s %8s %6.2g %6s  %s%s\n", sc->name, n, m->name,
-                   sim, step, base_s, r1, r2, evals_per_step, allocs_s, same,
+            char allocs_s[16] = "n/a", base_s[16] = "-", r1[16] = "-", r2[16] = "-";
+            if (alloc_count() >= 0)
+                snprintf(allocs_s, sizeof allocs_s, "%ld", allocs);
+            if (!isnan(base)) {
+                snprintf(base_s, sizeof base_s, "%.3g", base);
+                snprintf(r1, sizeof r1, "%.2f", sim / base);
+                snprintf(r2, sizeof r2, "%.2f", step / base);
+            }
+            printf("  %-7s %7d %-18s %8.3g %9.3g %9.3g %9s %8s %8s %6.2g %6s  %s%s\n", sc->name, n,
+                   m->name, dt, sim, step, base_s, r1, r2, evals_per_step, allocs_s, same,
                    blown ? " (the sim blew up while timed)" : "");
             fflush(stdout);
             free(y0), free(yb), free(work), free(ch.f);
@@ -406,8 +432,9 @@ static void frame_row(const sw_scene *sc, const double *p, int cols, int rows, c
         frames++;
     }
     double sim = median(sim_ms, frames), ras = median(ras_ms, frames);
-    char allocs_s[16];
-    snprintf(allocs_s, sizeof allocs_s, alloc_count() < 0 ? "n/a" : "%ld", allocs);
+    char allocs_s[16] = "n/a";
+    if (alloc_count() >= 0)
+        snprintf(allocs_s, sizeof allocs_s, "%ld", allocs);
     printf("  %-13s %7d %-17s %8g %6ld %9.3f %9.3f %9.3f  %-4s %6s%s\n", sc->name, s.sys.n, m->name,
            sc->dt, per_frame, sim, ras, sim + ras, sim + ras < 8.0 ? "yes" : "NO", allocs_s,
            s.blown ? "  (blew up)" : "");
@@ -437,26 +464,49 @@ static void frame_cost(const bench_opts *o)
 
 /* ---- memory ------------------------------------------------------------- */
 
+/* Peak resident set of this process so far, in KiB (VmHWM), or -1. */
+static long peak_rss_kib(void)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    long kib = -1;
+    if (!f)
+        return -1;
+    char line[256];
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, "VmHWM:", 6) == 0) {
+            kib = strtol(line + 6, NULL, 10);
+            break;
+        }
+    fclose(f);
+    return kib;
+}
+
 /* In a fresh process: build vortex with n points under `method` ("none":
- * build nothing) and take ten steps, so the parent can read the peak RSS. */
+ * build nothing), take ten steps, and print the peak RSS on stdout. */
 static int memory_probe(const char *method, int n)
 {
-    if (strcmp(method, "none") == 0)
-        return 0;
-    const sw_scene *sc = sw_scene_find("vortex");
-    const sw_integrator *m = sw_integrator_find(method);
-    double p[SW_MAX_PARAMS];
-    char err[SW_ERRLEN];
     sw_sim s;
-    if (!m || build_params(sc, n, p) != SW_OK || sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
-        return 1;
-    for (int j = 0; j < 10; j++)
-        sw_sim_step(&s);
-    sw_sim_free(&s);
+    int built = 0;
+    if (strcmp(method, "none") != 0) {
+        const sw_scene *sc = sw_scene_find("vortex");
+        const sw_integrator *m = sw_integrator_find(method);
+        double p[SW_MAX_PARAMS];
+        char err[SW_ERRLEN];
+        if (!m || build_params(sc, n, p) != SW_OK || sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
+            return 1;
+        for (int j = 0; j < 10; j++)
+            sw_sim_step(&s);
+        built = 1;
+    }
+    printf("%ld\n", peak_rss_kib());
+    if (built)
+        sw_sim_free(&s);
     return 0;
 }
 
-/* Peak RSS in KiB of a fresh copy of this program run as a memory probe. */
+/* Peak RSS in KiB of a fresh copy of this program run as a memory probe: the
+ * child reads its own VmHWM after exec, so the parent's memory, which a
+ * forked child shares until exec, does not count. */
 static long probe_rss(const char *method, int n)
 {
     char count[32];
@@ -470,19 +520,32 @@ static long probe_rss(const char *method, int n)
     args[k++] = method;
     args[k++] = count;
     args[k] = NULL;
+    int fds[2];
     fflush(stdout);
-    pid_t pid = fork();
-    if (pid < 0)
+    if (pipe(fds) != 0)
         return -1;
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return -1;
+    }
     if (pid == 0) {
+        dup2(fds[1], STDOUT_FILENO);
+        close(fds[0]);
+        close(fds[1]);
         execv("/proc/self/exe", (char *const *)args);
         _exit(127);
     }
+    close(fds[1]);
+    char buf[64] = "";
+    ssize_t got = read(fds[0], buf, sizeof buf - 1);
+    close(fds[0]);
     int status;
-    struct rusage ru;
-    if (wait4(pid, &status, 0, &ru) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || got <= 0)
         return -1;
-    return ru.ru_maxrss;
+    buf[got] = '\0';
+    return strtol(buf, NULL, 10);
 }
 
 static void memory(const bench_opts *o)

@@ -113,10 +113,10 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
 /* Loaded plugins, found again by method name: the registry keeps a copy of
  * the sw_integrator (not a pointer to it) and sw_stepper_init leaves
  * s->plugin NULL, so the step looks its plugin up on first use. */
-static const sw_plugin_info *plugin_infos[8];
+static const sw_plugin *plugin_infos[8];
 static int nplugin_infos;
 
-static const sw_plugin_info *plugin_for(const sw_integrator *m)
+static const sw_plugin *plugin_for(const sw_integrator *m)
 {
     for (int i = 0; i < nplugin_infos; i++)
         if (strcmp(plugin_infos[i]->name, m->name) == 0)
@@ -129,7 +129,7 @@ static int plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double 
 {
     if (!s->plugin)
         s->plugin = (void *)plugin_for(s->method);
-    const sw_plugin_info *info = s->plugin;
+    const sw_plugin *info = s->plugin;
     if (!info)
         return SW_EINVAL;
     int rc = info->step(ode, *t, y, h, s->work);
@@ -149,18 +149,18 @@ int sw_cli_plugin(const char *path)
     void *lib = dlopen(full, RTLD_NOW | RTLD_LOCAL);
     if (!lib)
         return sw_cli_error("--plugin '%.200s' could not be loaded: %s", path, dlerror());
-    const sw_plugin_info *(*get)(void);
+    const sw_plugin *(*get)(void);
     *(void **)&get = dlsym(lib, "sw_plugin_info");
     if (!get)
         return sw_cli_error("--plugin '%.200s' has no sw_plugin_info symbol; a plugin must define "
-                            "const sw_plugin_info *sw_plugin_info(void)", path);
-    const sw_plugin_info *info = get();
+                            "const sw_plugin *sw_plugin_info(void)", path);
+    const sw_plugin *info = get();
     if (!info || info->abi != SW_PLUGIN_ABI)
         return sw_cli_error("--plugin '%.200s' was built for plugin interface %d; this stepwise "
                             "needs %d (rebuild it against this stepwise's integrator.h)",
                             path, info ? info->abi : -1, SW_PLUGIN_ABI);
     if (!info->name || !*info->name || !info->step || info->work_vectors < 0 || info->work_vectors > 64)
-        return sw_cli_error("--plugin '%.200s': sw_plugin_info must give a name, a step function "
+        return sw_cli_error("--plugin '%.200s': sw_plugin_info() must give a name, a step function "
                             "and 0..64 work vectors", path);
     static sw_integrator methods[8];
     static int nmethods;
@@ -168,7 +168,7 @@ int sw_cli_plugin(const char *path)
         return sw_cli_error("at most 8 plugins can be loaded");
     sw_integrator *m = &methods[nmethods];
     *m = (sw_integrator){ .name = info->name, .label = info->label ? info->label : info->name,
-                          .order = info->order, .evals = 0, .flags = SW_PLUGIN | SW_EXPLICIT,
+                          .order = info->order, .evals = info->evals, .flags = SW_PLUGIN | SW_EXPLICIT,
                           .stability = NAN, .work_vectors = info->work_vectors,
                           .step = plugin_step, .summary = "student plugin" };
     char err[SW_ERRLEN];

@@ -27,8 +27,9 @@ static void list_integrators(void)
 {
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);
-        char evals[16];
-        snprintf(evals, sizeof evals, "%d%s", m->evals, (m->flags & SW_IMPLICIT) ? "+solve" : "");
+        char evals[40];
+        snprintf(evals, sizeof evals, "%d%s%s", m->evals, (m->flags & SW_IMPLICIT) ? "+solve" : "",
+                 (m->flags & SW_PLUGIN) ? " (claimed)" : "");
         printf("%-18s order %d  evals/step %-8s %s\n", m->name, m->order, evals, m->label);
     }
 }

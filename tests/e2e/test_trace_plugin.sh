@@ -50,20 +50,16 @@ int student_forgot_the_entry_point(void);
 int student_forgot_the_entry_point(void) { return 0; }
 EOF
 cat > badabi.c <<'EOF'
-#define sw_plugin_info sw_plugin_info_type
 #include <stepwise/integrator.h>
-#undef sw_plugin_info
 static int step(sw_ode *ode, double t, double *y, double h, double *work)
 { (void)ode; (void)t; (void)y; (void)h; (void)work; return 0; }
-static const sw_plugin_info_type info = { .abi = SW_PLUGIN_ABI + 1, .name = "future", .step = step };
-const sw_plugin_info_type *sw_plugin_info(void);
-const sw_plugin_info_type *sw_plugin_info(void) { return &info; }
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI + 1, .name = "future", .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
 EOF
 cat > nan.c <<'EOF'
 /* Writes NaN from the fourth step on. */
-#define sw_plugin_info sw_plugin_info_type
 #include <stepwise/integrator.h>
-#undef sw_plugin_info
 static int step(sw_ode *ode, double t, double *y, double h, double *work)
 {
     (void)work;
@@ -71,20 +67,18 @@ static int step(sw_ode *ode, double t, double *y, double h, double *work)
         y[i] = t > 2.5 * h ? 0.0 / 0.0 : y[i];
     return 0;
 }
-static const sw_plugin_info_type info = { .abi = SW_PLUGIN_ABI, .name = "nan-writer", .step = step };
-const sw_plugin_info_type *sw_plugin_info(void);
-const sw_plugin_info_type *sw_plugin_info(void) { return &info; }
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "nan-writer", .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
 EOF
 cat > refuse.c <<'EOF'
 /* Fails its step: returns non-zero from the start. */
-#define sw_plugin_info sw_plugin_info_type
 #include <stepwise/integrator.h>
-#undef sw_plugin_info
 static int step(sw_ode *ode, double t, double *y, double h, double *work)
 { (void)ode; (void)t; (void)y; (void)h; (void)work; return -1; }
-static const sw_plugin_info_type info = { .abi = SW_PLUGIN_ABI, .name = "refuser", .step = step };
-const sw_plugin_info_type *sw_plugin_info(void);
-const sw_plugin_info_type *sw_plugin_info(void) { return &info; }
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "refuser", .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
 EOF
 build nosym.so nosym.c
 build badabi.so badabi.c

@@ -118,6 +118,8 @@ static const struct bad_case {
     { "first-page-no-scene.lesson", 3, 1, "chooses no scene" },
     { "goal-bad-op.lesson", 6, 10, "'=>' is not an operator" },
     { "goal-energy-vortex.lesson", 6, 8, "has no energy" },
+    { "goal-energy-zero.lesson", 7, 1, "starts with zero energy" },
+    { "goal-error-no-exact.lesson", 7, 1, "no exact solution with these parameters" },
     { "goal-locked.lesson", 8, 1, "can never be met" },
     { "goal-no-hint.lesson", 8, 1, "has no hint" },
     { "goal-trailing.lesson", 6, 14, "unexpected 'and'" },
@@ -672,6 +674,20 @@ START_TEST(nul_bytes_and_binary_are_errors)
         snprintf(buf, sizeof buf, "title: T%s\n", bad_utf8[i]);
         ck_assert_int_eq(parse(buf, &l, err, sizeof err), SW_EINVAL);
         ck_assert_msg(strncmp(err, "t.lesson:1:9: ", 14) == 0, "%s", err);
+    }
+    /* Text ending without a newline or NUL, in a buffer of exactly its size
+     * (the parser must not read past len; a sanitizer build checks it). */
+    static const char *const endings[] = { "title: Bad lesson\nt", "title: T\n--", "title: T\n--- p\n@",
+                                           "title: T\n--- p\n@scene vortex\nx\n@goal |" };
+    for (size_t i = 0; i < sizeof endings / sizeof endings[0]; i++) {
+        size_t n = strlen(endings[i]);
+        char *exact = malloc(n);
+        ck_assert_ptr_nonnull(exact);
+        memcpy(exact, endings[i], n);
+        ck_assert_int_eq(sw_lesson_parse("end", exact, n, &l, err, sizeof err), SW_EINVAL);
+        ck_assert_msg(strncmp(err, "end:2:", 6) == 0 || strncmp(err, "end:3:", 6) == 0 ||
+                      strncmp(err, "end:5:", 6) == 0, "%s", err);
+        free(exact);
     }
     /* NULL text and a zero-length or tiny error buffer are safe. */
     ck_assert_int_eq(sw_lesson_parse("none", NULL, 0, &l, err, sizeof err), SW_EINVAL);

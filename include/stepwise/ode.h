@@ -10,6 +10,11 @@
 /* dydt = f(t, y); both arrays are dim long and must not alias. */
 typedef void sw_deriv_fn(void *ctx, double t, const double *y, double *dydt);
 
+/* For pointwise systems, where each point's derivative depends only on that
+ * point (flow fields): dydt[0..len) from the slice y[0..len) alone. Lets
+ * explicit methods step the state block by block in cache. */
+typedef void sw_deriv_part_fn(void *ctx, double t, int len, const double *y, double *dydt);
+
 /* Solve (I - c·J) z = r, J = ∂f/∂y at (t, y); returns 0 or a negative status
  * when the solve fails. Used by implicit methods only. */
 typedef int sw_solve_fn(void *ctx, double t, const double *y, double c,
@@ -20,6 +25,7 @@ typedef struct sw_ode {
     int order;           /* 1: y = x (flow field); 2: y = [x | v] */
     sw_deriv_fn *deriv;  /* required */
     sw_solve_fn *solve;  /* NULL: a dense finite-difference fallback (small dim) */
+    sw_deriv_part_fn *deriv_part; /* NULL: coupled (particles); else slices of 2 */
     void *ctx;           /* the system behind the callbacks */
     long evals;          /* derivative evaluations so far (counted by sw_ode_eval) */
     long solves;         /* linear solves so far */

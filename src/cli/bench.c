@@ -301,17 +301,15 @@ int sw_cmd_bench(int argc, char **argv)
         if (!sw_bench_measurable(sc, opts.p, why, sizeof why)) {
             if (notes_used < sizeof notes)
                 notes_used += (size_t)snprintf(notes + notes_used, sizeof notes - notes_used,
-                                               "skipped %s\n", why);
+                                               "%s%s", notes_used ? "; " : "", why);
             continue;
         }
         scenes[n] = sc;
         memcpy(params[n], opts.p, sizeof params[n]);
         n++;
     }
-    if (n == 0) {
-        fputs(notes, stderr);
-        return sw_cli_error("bench: none of the scenes has an exact solution or a reference");
-    }
+    if (n == 0)
+        return sw_cli_error("bench: nothing to measure: %s", notes);
     out_file csv = { .path = csv_path }, svg = { .path = svg_path };
     if (csv_path && out_open(&csv, "--csv") != SW_EXIT_OK)
         return SW_EXIT_USAGE;
@@ -339,7 +337,7 @@ int sw_cmd_bench(int argc, char **argv)
         return SW_EXIT_FAIL;
     }
     if (notes[0])
-        printf("%s\n", notes);
+        printf("skipped: %s\n\n", notes);
     int ndone = 0, status = SW_EXIT_OK;
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);

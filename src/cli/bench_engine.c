@@ -232,7 +232,8 @@ static long calibrate(double seconds_per_step, double target)
 
 /* The step size and steps per timed repeat for sim s: calibrated on a few
  * steps to take about `target` seconds, at dt or a tenth of it (down to
- * 1e-6 of it) until a trial of all the timed steps stays finite. The sim is
+ * 1e-6 of it) until a trial of all the timed steps (sim and stepper loops)
+ * stays finite. The sim is
  * reset to its start and *dt set on return. */
 static long stable_steps(sw_sim *s, double *dt, double target, int repeats)
 {
@@ -244,7 +245,7 @@ static long stable_steps(sw_sim *s, double *dt, double target, int repeats)
     for (int tries = 0; tries < 6; tries++) {
         sw_sim_reset(s, err, sizeof err);
         sw_sim_set_dt(s, *dt, err, sizeof err);
-        for (long j = 0; j < k * repeats && !s->blown; j++)
+        for (long j = 0; j < 2 * k * repeats && !s->blown; j++)
             sw_sim_step(s);
         if (!s->blown)
             break;
@@ -315,44 +316,41 @@ static void throughput(const bench_opts *o)
                 continue;
             }
             memcpy(y0, s.sys.y, (size_t)dim * sizeof *y0);
-            double t0, sim_t[MAX_REPEATS], step_t[MAX_REPEATS], base_t[MAX_REPEATS];
-            long allocs = 0, evals0 = sw_sim_evals(&s), steps0 = s.steps;
+            /* Interleaved repeats (sim, step, baseline in turn) so that load
+             * from other processes falls on all three alike. The step loop
+             * carries on from the state the sim loop left. */
+            double t0, t = 0, sim_t[MAX_REPEATS], step_t[MAX_REPEATS], base_t[MAX_REPEATS];
+            long allocs = 0, evals = 0, steps = 0;
+            memcpy(yb, y0, (size_t)dim * sizeof *yb);
+            int has_base = run_baseline(sc, p, m, yb, n, dt, 0, &ch, work);
             for (int r = 0; r < o->repeats; r++) {
-                long a0 = alloc_count();
+                long a0 = alloc_count(), e0 = sw_sim_evals(&s), s0 = s.steps;
                 t0 = now_seconds();
                 for (long j = 0; j < k; j++)
                     sw_sim_step(&s);
                 sim_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
-                allocs += alloc_count() - a0;
-            }
-            double evals_per_step = (double)(sw_sim_evals(&s) - evals0) / (double)(s.steps - steps0);
-            int blown = s.blown;
-            /* The integrator alone, from the initial state again. */
-            memcpy(s.sys.y, y0, (size_t)dim * sizeof *y0);
-            sw_stepper_touch(&s.stepper);
-            s.stepper.h_next = 0;
-            double t = 0;
-            for (int r = 0; r < o->repeats; r++) {
-                long a0 = alloc_count();
+                evals += sw_sim_evals(&s) - e0;
+                steps += s.steps - s0;
                 t0 = now_seconds();
                 for (long j = 0; j < k; j++)
                     sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, dt);
                 step_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
                 allocs += alloc_count() - a0;
-            }
-            /* Baseline: time it, then check it against the generic stepper
-             * over the same number of steps from the same state. */
-            char same[64] = "";
-            double base = NAN;
-            memcpy(yb, y0, (size_t)dim * sizeof *yb);
-            if (run_baseline(sc, p, m, yb, n, dt, 1, &ch, work)) {
-                for (int r = 0; r < o->repeats; r++) {
+                if (has_base) {
                     t0 = now_seconds();
                     run_baseline(sc, p, m, yb, n, dt, k, &ch, work);
                     base_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
                 }
+            }
+            double evals_per_step = (double)evals / (double)(steps > 0 ? steps : 1);
+            int blown = s.blown;
+            /* The baseline against the generic stepper: the same number of
+             * steps from the same state must give the same numbers. */
+            char same[64] = "";
+            double base = NAN;
+            if (has_base) {
                 base = median(base_t, o->repeats);
-                long check = k < 200 ? k : 200;
+                const long check = 200;
                 memcpy(yb, y0, (size_t)dim * sizeof *yb);
                 memcpy(s.sys.y, y0, (size_t)dim * sizeof *y0);
                 sw_stepper_touch(&s.stepper);

@@ -16,6 +16,13 @@ static void flow_deriv(void *ctx, double t, const double *y, double *dydt)
     f->field(f->params, t, f->n, y, dydt);
 }
 
+/* Points move independently: a slice of the state is a smaller flow. */
+static void flow_deriv_part(void *ctx, double t, int len, const double *y, double *dydt)
+{
+    const sw_flow *f = ctx;
+    f->field(f->params, t, len / 2, y, dydt);
+}
+
 /* The 2x2 blocks of ∂g/∂x at every point: analytic when the field has a
  * Jacobian, else forward differences with every point perturbed at once
  * (points are independent, so two extra field calls give all blocks). */
@@ -85,6 +92,7 @@ int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, co
     f->ode.order = 1;
     f->ode.deriv = flow_deriv;
     f->ode.solve = flow_solve;
+    f->ode.deriv_part = flow_deriv_part;
     f->ode.ctx = f;
     return SW_OK;
 }

@@ -93,7 +93,7 @@ typedef struct parser {
 
     /* The page being read (out->pages[out->npages - 1]). */
     where at_scene, at_set, at_integrator, at_dt, at_compare, at_ghost, at_pause, at_reset;
-    where at_question, at_correct, at_lock;
+    where at_question, at_correct;
     where at_goal[SW_LESSON_MAX_GOALS];
     int set_line[SW_MAX_PARAMS];
     int rebuild;              /* scene or parameters changed on this page */
@@ -104,7 +104,7 @@ typedef struct parser {
     size_t prose;             /* bytes of prose kept on this page */
     char para[SW_LESSON_MAX_PROSE + 1];
     size_t paralen;
-    int para_open, para_verbatim, para_line, para_col;
+    int para_open, para_verbatim, para_line;
 } parser;
 
 #define SW_LESSON_NAME_MAX 64 /* longest word in a directive (names, keys) */
@@ -247,12 +247,24 @@ static int next_field(const parser *ps, size_t *pos, size_t *start, size_t *len)
     return 1;
 }
 
+/* The length of s[0..len) cut to at most max bytes on a character
+ * boundary, for quoting a piece of a line in a message. */
+static int clip(const char *s, size_t len, size_t max)
+{
+    if (len <= max)
+        return (int)len;
+    size_t n = max;
+    while (n > 0 && ((unsigned char)s[n] & 0xC0) == 0x80)
+        n--;
+    return (int)n;
+}
+
 /* Copy a field into a NUL-terminated word, or fail when it is too long. */
 static int field_word(parser *ps, size_t start, size_t len, char *word)
 {
     if (len >= SW_LESSON_NAME_MAX)
-        return FAIL(ps, start, "'%.20s...' is too long for a name (at most %d bytes)",
-                     ps->ln + start, SW_LESSON_NAME_MAX - 1);
+        return FAIL(ps, start, "'%.*s...' is too long for a name (at most %d bytes)",
+                    clip(ps->ln + start, len, 20), ps->ln + start, SW_LESSON_NAME_MAX - 1);
     memcpy(word, ps->ln + start, len);
     word[len] = '\0';
     return SW_OK;
@@ -270,7 +282,7 @@ static int one_word(parser *ps, size_t pos, const char *directive, const char *e
     *at = start;
     size_t extra, elen;
     if (next_field(ps, &pos, &extra, &elen))
-        return FAIL(ps, extra, "unexpected '%.*s' after %s %s; expected only %s", (int)(elen > 40 ? 40 : elen),
+        return FAIL(ps, extra, "unexpected '%.*s' after %s %s; expected only %s", clip(ps->ln + extra, elen, 40),
                     ps->ln + extra, directive, word, expected);
     return SW_OK;
 }
@@ -479,7 +491,7 @@ static int d_compare(parser *ps, size_t pos)
             size_t extra, elen;
             if (next_field(ps, &pos, &extra, &elen))
                 return FAIL(ps, extra, "unexpected '%.*s' after @compare %s; expected nothing more",
-                            (int)(elen > 40 ? 40 : elen), ps->ln + extra, word);
+                            clip(ps->ln + extra, elen, 40), ps->ln + extra, word);
             return SW_OK;
         }
         if (n == SW_LESSON_MAX_COMPARE)
@@ -553,7 +565,6 @@ static int d_lock(parser *ps, size_t pos, int lock)
     sw_lesson_page *pg = page(ps);
     size_t start, len;
     int n = 0;
-    ps->at_lock.line = ps->line;
     while (next_field(ps, &pos, &start, &len)) {
         char word[SW_LESSON_NAME_MAX];
         if (field_word(ps, start, len, word) != SW_OK)
@@ -602,6 +613,16 @@ static int word_byte(unsigned char c)
            c == '-' || c == '.' || c >= 0x80;
 }
 
+/* Whether s[i..n) starts with one of the signs ≤ ≥ ≠ (E2 89 A4/A5/A0);
+ * returns the operator it stands for, or NULL. */
+static const char *unicode_op(const char *s, size_t i, size_t n)
+{
+    if (i + 2 >= n || (unsigned char)s[i] != 0xE2 || (unsigned char)s[i + 1] != 0x89)
+        return NULL;
+    unsigned char d = (unsigned char)s[i + 2];
+    return d == 0xA4 ? "<=" : d == 0xA5 ? ">=" : d == 0xA0 ? "!=" : NULL;
+}
+
 /* Read the token at *pos into tk. */
 static int lex(parser *ps, size_t *pos, token *tk)
 {
@@ -618,20 +639,16 @@ static int lex(parser *ps, size_t *pos, token *tk)
     }
     unsigned char c = (unsigned char)s[i];
     size_t j = i;
-    /* The UTF-8 comparison signs ≤ ≥ ≠ (E2 89 A4/A5/A0). */
-    if (c == 0xE2 && i + 2 < n && (unsigned char)s[i + 1] == 0x89) {
-        unsigned char d = (unsigned char)s[i + 2];
-        const char *op = d == 0xA4 ? "<=" : d == 0xA5 ? ">=" : d == 0xA0 ? "!=" : NULL;
-        if (op) {
-            tk->kind = T_OP;
-            strcpy(tk->text, op);
-            tk->len = 3;
-            *pos = i + 3;
-            return SW_OK;
-        }
+    const char *op = unicode_op(s, i, n);
+    if (op) {
+        tk->kind = T_OP;
+        strcpy(tk->text, op);
+        tk->len = 3;
+        *pos = i + 3;
+        return SW_OK;
     }
     if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c >= 0x80) {
-        while (j < n && word_byte((unsigned char)s[j]))
+        while (j < n && word_byte((unsigned char)s[j]) && !unicode_op(s, j, n))
             j++;
         tk->kind = T_WORD;
     } else if ((c >= '0' && c <= '9') || ((c == '.' || c == '-' || c == '+') && i + 1 < n &&
@@ -702,9 +719,10 @@ static int goal_number(parser *ps, size_t *pos, int percent_ok, double *out)
     token tk;
     if (lex(ps, pos, &tk) != SW_OK)
         return ps->status;
+    if (tk.kind == T_END)
+        return FAIL(ps, tk.at, "the goal ends too soon; expected a number");
     if (tk.kind != T_NUM || sw_parse_double(tk.text, out) != SW_OK)
-        return FAIL(ps, tk.at, "expected a number here, not %s%s%s", tk.kind == T_END ? "the end of the line" : "'",
-                    tk.kind == T_END ? "" : tk.text, tk.kind == T_END ? "" : "'");
+        return FAIL(ps, tk.at, "expected a number here, not '%s'", tk.text);
     size_t save = *pos;
     if (lex(ps, pos, &tk) != SW_OK)
         return ps->status;
@@ -898,10 +916,12 @@ static int parse_goal(parser *ps, size_t pos, sw_lesson_goal *g)
             if (!(tk.kind == T_WORD && strcmp(tk.text, "within") == 0))
                 return FAIL(ps, tk.at, "expected 'within TOLERANCE' after 'near %g'", g->value);
             size_t tol_at = pos;
+            while (tol_at < ps->lnlen && is_blank(ps->ln[tol_at]))
+                tol_at++;
             if (goal_number(ps, &pos, percent, &g->tol) != SW_OK)
                 return ps->status;
             if (!(g->tol > 0))
-                return FAIL(ps, tol_at + 1, "the tolerance after 'within' must be positive");
+                return FAIL(ps, tol_at, "the tolerance after 'within' must be positive");
         } else if (tk.kind == T_OP && strcmp(tk.text, "!") != 0) {
             static const char *const ops[] = { "==", "!=", "<", "<=", ">", ">=" };
             for (int i = 0; i < 6; i++)
@@ -1223,6 +1243,32 @@ static int end_page(parser *ps)
                 return ps->status;
             return fail_at(ps, ps->at_compare.line, ps->at_compare.col, "@compare: %s", why);
         }
+    /* Error needs an exact solution or a reference run; some scenes have an
+     * exact solution for some parameters only (bounce: no drag). */
+    const sw_scene *sc = ps->scene;
+    for (int i = 0; i < pg->ngoals; i++) {
+        /* Energy drift is relative to the starting energy, so it needs one. */
+        if (pg->goals[i].var == SW_LV_ENERGY_DRIFT && sc->energy) {
+            double e0 = sc->energy(&ps->sys, ps->sys.y);
+            if (!(fabs(e0) > 0 && isfinite(e0)))
+                return fail_at(ps, ps->at_goal[i].line, ps->at_goal[i].col, "scene '%s' starts with zero "
+                               "energy with these parameters, so its energy drift (relative to the start) "
+                               "is undefined; expected other parameters or another goal", sc->name);
+        }
+        if (!(sc->exact && !sc->reference) ||
+            (pg->goals[i].var != SW_LV_ERROR && pg->goals[i].var != SW_LV_ERROR_RATIO))
+            continue;
+        double *scratch = malloc((size_t)ps->sys.ode->dim * sizeof *scratch);
+        if (!scratch)
+            return oom(ps);
+        int exact = sc->exact(&ps->sys, 0.0, scratch) == 0;
+        free(scratch);
+        if (!exact)
+            return fail_at(ps, ps->at_goal[i].line, ps->at_goal[i].col, "scene '%s' has no exact solution "
+                           "with these parameters and no reference run, so a goal on %s can never be met; "
+                           "expected other parameters or another goal", sc->name,
+                           sw_lesson_var_name(pg->goals[i].var));
+    }
     pg->scene = ps->scene;
     memcpy(pg->p, ps->p, sizeof pg->p);
     pg->method = ps->method;
@@ -1301,7 +1347,7 @@ static int begin_page(parser *ps, size_t title_at)
     pg->locked = ps->locked;
     where none = { 0, 0 };
     ps->at_scene = ps->at_set = ps->at_integrator = ps->at_dt = ps->at_compare = none;
-    ps->at_ghost = ps->at_pause = ps->at_reset = ps->at_question = ps->at_correct = ps->at_lock = none;
+    ps->at_ghost = ps->at_pause = ps->at_reset = ps->at_question = ps->at_correct = none;
     memset(ps->set_line, 0, sizeof ps->set_line);
     ps->correct = -1;
     ps->hint_to = HINT_NONE;

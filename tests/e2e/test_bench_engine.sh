@@ -1,0 +1,21 @@
+#!/bin/sh
+# `stepwise bench --engine --quick`: the engine benchmark's three tables run
+# to the end (small sizes); every hand-written baseline reproduces the
+# generic step bit for bit; every default scene gets a frame-cost row.
+# Timings are printed, never checked: they vary from machine to machine.
+set -u
+SW=${STEPWISE:?set STEPWISE to the stepwise binary}
+fail() { echo "FAIL: $*"; exit 1; }
+out=$("$SW" bench --engine --quick 2>&1) || fail "exited $?: $out"
+echo "$out" | grep -q '^throughput: ns per particle-step' || fail "no throughput table"
+[ "$(echo "$out" | grep -c 'bitwise equal after 200 steps')" -eq 4 ] \
+    || fail "baselines (euler, rk4 on chain and vortex) do not all match: $(echo "$out" | grep -E ' (euler|rk4) ')"
+echo "$out" | grep -q 'differs by' && fail "a baseline differs"
+echo "$out" | grep -q '^frame cost' || fail "no frame-cost table"
+for s in vortex river gyre projectile bounce fireworks spring stiff-spring chain orbit; do
+    echo "$out" | grep -Eq "^  $s +[0-9]" || fail "no frame row for $s"
+done
+echo "$out" | grep -q '^peak memory: vortex n = 10000' || fail "no memory table"
+echo "$out" | grep -Eq '^  rk4 +[0-9.]+ +[0-9.-]+ +5$' || fail "no memory row for rk4"
+echo "$out" | grep -q 'failed' && fail "a memory probe failed: $out"
+echo "engine benchmark: ok"

@@ -1,0 +1,63 @@
+#!/bin/sh
+# `stepwise bench`: the work-precision report on spring with three methods
+# (the quick sweep): the table, the fitted orders near theory, the cheapest
+# method per error level, both ASCII plots; the CSV it writes (one row per
+# point, every error read back as a number or nan) and the SVG (well formed
+# enough for xmllint when it is installed, one series group per method per
+# panel). Timing is never checked: it varies from run to run.
+set -u
+SW=${STEPWISE:?set STEPWISE to the stepwise binary}
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$SW" bench spring --set k=1 --set m=1 --set c=0 --integrators euler,midpoint,rk4 \
+    --csv "$dir/points.csv" --svg "$dir/plot.svg" >"$dir/out" 2>"$dir/err" \
+    || fail "bench exited $?: $(cat "$dir/err")"
+[ -s "$dir/err" ] && fail "unexpected stderr: $(cat "$dir/err")"
+out="$dir/out"
+grep -q '^== spring: error against the exact solution at t = 10' "$out" || fail "no scene header"
+for m in euler midpoint rk4; do
+    grep -q "^   $m " "$out" || fail "no rows for $m"
+done
+grep -q 'symplectic-euler' "$out" && fail "a method outside --integrators was run"
+# Observed orders within 0.3 of theory (1, 2, 4).
+awk '/observed order/ { on = 1; next }
+     on && $1 == "euler"    { e = $2 } on && $1 == "midpoint" { m = $2 } on && $1 == "rk4" { r = $2 }
+     END { if (e < 0.7 || e > 1.3 || m < 1.7 || m > 2.3 || r < 3.7 || r > 4.3) { print e, m, r; exit 1 } }' \
+    "$out" || fail "orders off: $(grep -A4 'observed order' "$out")"
+grep -q 'cheapest measured run' "$out" || fail "no cheapest-method table"
+grep -Eq '^   1e-0[2468] ' "$out" || fail "no error levels"
+grep -q 'largest error against wall time' "$out" || fail "no plot against time"
+grep -q 'largest error against derivative evaluations' "$out" || fail "no plot against evaluations"
+grep -q '1=euler  3=midpoint  5=rk4' "$out" || fail "no plot legend"
+
+# CSV: header, 16 columns on every row, errors numeric or nan, methods as asked.
+csv="$dir/points.csv"
+head -1 "$csv" | grep -q '^scene,method,dt,rtol,h,error,evals,solves,steps,seconds,repeats,blown,blow_time,in_fit,order,reference$' \
+    || fail "bad CSV header: $(head -1 "$csv")"
+awk -F, 'NR > 1 { rows++
+    if (NF != 16) { print "fields", NF; exit 1 }
+    if ($1 != "spring" || ($2 != "euler" && $2 != "midpoint" && $2 != "rk4")) { print "row", $0; exit 1 }
+    if ($6 != "nan" && $6 !~ /^[0-9.e+-]+$/) { print "error", $6; exit 1 }
+    if ($12 == 1 && $6 != "nan") { print "blown with an error", $0; exit 1 }
+    seen[$2] = 1 }
+    END { if (rows < 15 || length(seen) != 3) { print "rows", rows; exit 1 } }' "$csv" \
+    || fail "bad CSV rows"
+
+# SVG: an XML document with an svg root, 2 panels, 2 x and 2 y axes, and
+# one series group per method per panel.
+svg="$dir/plot.svg"
+head -1 "$svg" | grep -q '^<?xml' || fail "SVG does not start with an XML declaration"
+grep -q '^<svg xmlns="http://www.w3.org/2000/svg"' "$svg" || fail "no svg root"
+tail -1 "$svg" | grep -q '^</svg>$' || fail "SVG not closed"
+[ "$(grep -c 'class="panel"' "$svg")" -eq 2 ] || fail "panels"
+[ "$(grep -c 'data-axis="x"' "$svg")" -eq 2 ] || fail "x axes"
+[ "$(grep -c 'data-axis="y"' "$svg")" -eq 2 ] || fail "y axes"
+for m in euler midpoint rk4; do
+    [ "$(grep -c "class=\"series\" data-method=\"$m\"" "$svg")" -eq 2 ] || fail "series for $m"
+done
+if command -v xmllint >/dev/null 2>&1; then
+    xmllint --noout "$svg" || fail "xmllint rejects the SVG"
+fi
+echo "bench report: ok"

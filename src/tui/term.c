@@ -64,7 +64,8 @@ int sw_term_start(char *err, size_t errlen)
 {
     if (started)
         return SW_OK;
-    setlocale(LC_ALL, "");
+    setlocale(LC_ALL, "");         /* wide characters for Braille and ✓ */
+    setlocale(LC_NUMERIC, "C");    /* but numbers stay 0.05, never 0,05: traces and lessons */
     if (!newterm(NULL, stdout, stdin)) {
         snprintf(err, errlen, "cannot start the terminal (is TERM set?)");
         return SW_EIO;

@@ -407,13 +407,14 @@ static void cycle_method(sw_app *a, int dir)
     }
 }
 
-/* Step a parameter: by ×2 over ranges spanning decades (from 0, first to
- * 1/1000 of the range), else by 1/20 of the range. */
+/* Step a parameter: by ×2 over ranges spanning decades (a range from 0 counts
+ * when it reaches 1000; from 0 the first step is 1/1000 of the range), else
+ * by 1/20 of the range. */
 static void change_param(sw_app *a, int dir)
 {
     const sw_param *pd = &a->scene->params[a->param_sel];
     double v = a->p[a->param_sel], nv, span = pd->max - pd->min;
-    int decades = pd->min > 0 ? pd->max / pd->min >= 100 : (pd->min == 0 && pd->max >= 100 * (pd->integer ? 1 : 0.01));
+    int decades = pd->min > 0 ? pd->max / pd->min >= 100 : pd->min == 0 && pd->max >= 1000;
     if (decades && pd->min == 0 && (v == 0 || (dir < 0 && v <= span / 1000)))
         nv = dir > 0 ? (pd->integer ? 1 : span / 1000) : 0;
     else if (decades)

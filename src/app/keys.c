@@ -42,6 +42,8 @@ static const sw_keybinding table[] = {
     { 'N', SW_ACT_PAGE_PREV, 0, "N  PgUp", "previous page", 1 },
     { SW_KEY_PGUP, SW_ACT_PAGE_PREV, 0, NULL, NULL, 1 },
     { 'h', SW_ACT_HINT, 0, "h", "hint for the first goal not met", 1 },
+    { SW_KEY_UP, SW_ACT_SCROLL_UP, 0, "Up  Down", "scroll the lesson text", 1 },
+    { SW_KEY_DOWN, SW_ACT_SCROLL_DOWN, 0, NULL, NULL, 1 },
     /* While a page's question is open the lesson runner reads a-f as answers
      * before this table (b, c and e mean Braille, compare and graph otherwise);
      * key -1 never arrives, so this row only shows in the help screen. */
@@ -88,7 +90,7 @@ const char *sw_action_name(sw_action a)
         [SW_ACT_PANEL_INC] = "increase parameter", [SW_ACT_RECORD] = "record",
         [SW_ACT_WORKPREC] = "work-precision plot", [SW_ACT_HELP] = "help", [SW_ACT_QUIT] = "quit",
         [SW_ACT_PAGE_NEXT] = "next page", [SW_ACT_PAGE_PREV] = "previous page", [SW_ACT_HINT] = "hint",
-        [SW_ACT_ANSWER] = "answer",
+        [SW_ACT_ANSWER] = "answer", [SW_ACT_SCROLL_UP] = "scroll up", [SW_ACT_SCROLL_DOWN] = "scroll down",
     };
     return a >= 0 && a < SW_ACT_COUNT && names[a] ? names[a] : "unknown";
 }

@@ -80,6 +80,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     r->page = page;
     r->feedback = NULL;
     r->hint = 0;
+    r->scroll = 0;
     snprintf(a->message, sizeof a->message, "page %d of %d: %s", page + 1, r->lesson.npages, pg->title);
 }
 
@@ -168,6 +169,12 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
     case SW_ACT_HINT:
         r->hint = !r->hint;
         return 1;
+    case SW_ACT_SCROLL_UP:
+    case SW_ACT_SCROLL_DOWN:
+        r->scroll += b->action == SW_ACT_SCROLL_DOWN ? 3 : -3;
+        if (r->scroll < 0)
+            r->scroll = 0;
+        return 1;
     default:
         return 0;
     }
@@ -243,6 +250,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.lines = r->lines;
     r->side.styles = r->styles;
     r->side.width = cols >= 110 ? width : 0;
+    r->side.scroll = &r->scroll;
     snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
     add_line(r, SW_STYLE_DIM, buf);
     add_line(r, SW_STYLE_TITLE, pg->title);

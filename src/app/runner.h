@@ -22,6 +22,7 @@ typedef struct sw_runner {
     int feedback_ok;
     int hint;                  /* 1: show the hint of the first goal not met */
     int finished;              /* the last page is complete */
+    int scroll;                /* first line of the text pane shown */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];
     const char *lines[SW_RUNNER_LINES];
     int styles[SW_RUNNER_LINES];

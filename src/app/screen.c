@@ -411,10 +411,21 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     blit(scr, &f->canvas, 0, 0);
     if (graph_h > 0)
         draw_graph(f, a, scr, scene_rows - graph_h, 0, graph_h, scene_cols);
-    if (side_w > 0)
-        for (int i = 0; i < side->nlines && i < side_h; i++)
-            sw_screen_text(scr, side_row + i, side_col, side_w, side->styles ? side->styles[i] : SW_STYLE_TEXT,
-                           side->lines[i]);
+    if (side_w > 0) {
+        /* Too long for the pane: scroll, and say there is more. */
+        int first = side->scroll ? *side->scroll : 0, max_first = side->nlines - side_h;
+        first = first > max_first ? max_first : first;
+        first = first < 0 ? 0 : first;
+        if (side->scroll)
+            *side->scroll = first;
+        for (int i = 0; first + i < side->nlines && i < side_h; i++)
+            sw_screen_text(scr, side_row + i, side_col, side_w,
+                           side->styles ? side->styles[first + i] : SW_STYLE_TEXT, side->lines[first + i]);
+        if (first > 0)
+            sw_screen_text(scr, side_row, side_col + side_w - 9, 9, SW_STYLE_DIM, "(Up: more)");
+        if (first < max_first)
+            sw_screen_text(scr, side_row + side_h - 1, side_col + side_w - 11, 11, SW_STYLE_DIM, "(Down: more)");
+    }
 
     /* status block */
     int row = scr->rows - status_rows;

@@ -61,6 +61,7 @@ typedef struct sw_side {
     const int *styles;
     int nlines;
     int width;                /* wanted columns beside the scene (0: below) */
+    int *scroll;              /* first line shown; the composer clamps it */
 } sw_side;
 
 int sw_frame_init(sw_frame *f, char *err, size_t errlen);

@@ -19,13 +19,17 @@ static double max_abs(int n, const double *v)
     return m;
 }
 
-/* A state is "runaway" once any component exceeds a million times the
- * scene's size: far past anything on screen, long before overflow. */
+/* A state is "runaway" once any component reaches a million times the
+ * scene's size (rounded up to a power of two, so the test needs only the
+ * exponent field): far past anything on screen, long before overflow. */
 static void set_limits(sw_sim *s)
 {
     sw_view v = s->sys.scene->view(&s->sys);
     double span = fmax(fmax(fabs(v.xmin), fabs(v.xmax)), fmax(fabs(v.ymin), fabs(v.ymax)));
-    s->runaway = 1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y));
+    int e;
+    frexp(1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y)), &e);
+    s->runaway = ldexp(1.0, e);
+    s->stepper.limit_exp = (unsigned)(e + 1023);
     s->energy0 = sw_sim_energy(s);
 }
 
@@ -65,6 +69,7 @@ int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errle
         return rc;
     next.rtol = s->stepper.rtol;
     next.atol = s->stepper.atol;
+    next.limit_exp = s->stepper.limit_exp;
     sw_stepper_free(&s->stepper);
     s->stepper = next;
     s->method = m;
@@ -129,15 +134,20 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
         return 1;
     }
     const sw_scene *sc = s->sys.scene;
-    if (sc->post_step && sc->post_step(&s->sys, s->t, y))
+    int touched = sc->post_step && sc->post_step(&s->sys, s->t, y);
+    if (touched)
         sw_stepper_touch(&s->stepper);
     int n = s->sys.ode->dim;
-    for (int i = 0; i < n; i++) {
+    int beyond = (touched || !s->stepper.checked) ? sw_state_beyond(y, 0, n, s->stepper.limit_exp)
+                                                  : s->stepper.beyond;
+    if (!beyond)
+        return 0;
+    for (int i = 0; i < n; i++) { /* rare: say what went wrong */
         if (!isfinite(y[i])) {
             blow_up(s, "the state became non-finite (NaN or infinity)");
             return 1;
         }
-        if (fabs(y[i]) > s->runaway) {
+        if (fabs(y[i]) >= s->runaway) {
             blow_up(s, "the state ran away (beyond a million times the scene size)");
             return 1;
         }

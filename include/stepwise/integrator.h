@@ -50,10 +50,26 @@ struct sw_stepper {
     long rejected;        /* rk45 rejected trial steps */
     long newton_iters;    /* implicit-midpoint Newton iterations, summed */
     void *plugin;         /* plugin step function, for SW_PLUGIN methods */
+    unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
+    int checked;          /* the last step tested the whole state against limit_exp */
+    int beyond;           /* ... and found a component beyond it */
 };
 
 #define SW_RTOL_DEFAULT 1e-6
 #define SW_ATOL_DEFAULT 1e-9
+
+/* 1 when some y_i in [lo, hi) is non-finite or has |y_i| >= 2^(limit_exp -
+ * 1023): a test on the exponent field alone, which compilers vectorise. */
+static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limit_exp)
+{
+    unsigned over = 0;
+    for (int i = lo; i < hi; i++) {
+        unsigned long long bits;
+        __builtin_memcpy(&bits, &y[i], sizeof bits);
+        over |= (unsigned)((bits >> 52) & 0x7FF) >= limit_exp;
+    }
+    return over != 0;
+}
 
 /* The built-in methods, in list order (positions 1..count in the UI). */
 int sw_integrator_count(void);

@@ -29,6 +29,7 @@ static const char usage_text[] =
     "points marked *: not blown up, above round-off (and the reference's own error), below\n"
     "1e-2 of the state's size, contiguous down to the finest such point.\n"
     "With no SCENE, every scene that has a reference and every method that applies.\n"
+    "docs/performance.md has the details and the figures.\n"
     "\n"
     "  --integrators LIST  comma-separated methods (default: all that apply)\n"
     "  --csv FILE          write every point as CSV (numbers in %.17g)\n"
@@ -50,6 +51,10 @@ typedef struct out_file {
 
 static int out_open(out_file *o, const char *flag)
 {
+    struct stat st;
+    if (stat(o->path, &st) == 0 && !S_ISREG(st.st_mode))
+        return sw_cli_error("%s '%.200s' is %s; give the name of a file to write", flag, o->path,
+                            S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
     if (snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->path) >= (int)sizeof o->tmp)
         return sw_cli_error("%s '%.60s...': the path is too long", flag, o->path);
     int fd = mkstemp(o->tmp);

@@ -46,29 +46,49 @@ static void eval_range(sw_ode *ode, double t, const double *y, double *dydt, int
         ode->deriv(ode->ctx, t, y, dydt);
 }
 
-typedef void range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi);
+/* A method's step over [lo, hi); returns non-zero when its final loop saw a
+ * component at or beyond the limit exponent elim (see sw_state_beyond). */
+typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                            unsigned elim);
+
+/* y_i's exponent field is at or beyond elim (inf and NaN always are). */
+static inline unsigned beyond1(double v, unsigned elim)
+{
+    unsigned long long bits;
+    memcpy(&bits, &v, sizeof bits);
+    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
+}
 
 /* Run a range step over the whole state or slice by slice, and count its
- * evaluations once per stage. */
+ * evaluations once per stage. The final loops test every component against
+ * the sim's runaway limit as they write it, sparing the sim a pass. */
 static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
+    unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
     if (ode->deriv_part)
         for (int lo = 0; lo < ode->dim; lo += BLOCK)
-            f(s, ode, *t, y, h, lo, lo + BLOCK < ode->dim ? lo + BLOCK : ode->dim);
+            beyond |= f(s, ode, *t, y, h, lo, lo + BLOCK < ode->dim ? lo + BLOCK : ode->dim, elim);
     else
-        f(s, ode, *t, y, h, 0, ode->dim);
+        beyond = f(s, ode, *t, y, h, 0, ode->dim, elim);
+    s->checked = s->limit_exp != 0;
+    s->beyond = beyond != 0;
     ode->evals += stages;
     *t += h;
     return 0;
 }
 
 /* x1 = x0 + h·f(t0, x0) */
-static void euler_range(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi)
+static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                            unsigned elim)
 {
-    double *k = W(s, 0);
+    double *restrict k = W(s, 0);
+    unsigned over = 0;
     eval_range(ode, t, y, k, lo, hi);
-    for (int i = lo; i < hi; i++)
+    for (int i = lo; i < hi; i++) {
         y[i] += h * k[i];
+        over |= beyond1(y[i], elim);
+    }
+    return over;
 }
 
 static int step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -89,15 +109,20 @@ static int step_symplectic_euler(sw_stepper *s, sw_ode *ode, double *t, double *
 }
 
 /* Explicit midpoint: k1 = f(y), k2 = f(y + h/2·k1), y1 = y + h·k2. */
-static void midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi)
+static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo,
+                               int hi, unsigned elim)
 {
-    double *k = W(s, 0), *ym = W(s, 1);
+    double *restrict k = W(s, 0), *restrict ym = W(s, 1);
+    unsigned over = 0;
     eval_range(ode, t, y, k, lo, hi);
     for (int i = lo; i < hi; i++)
         ym[i] = y[i] + 0.5 * h * k[i];
     eval_range(ode, t + 0.5 * h, ym, k, lo, hi);
-    for (int i = lo; i < hi; i++)
+    for (int i = lo; i < hi; i++) {
         y[i] += h * k[i];
+        over |= beyond1(y[i], elim);
+    }
+    return over;
 }
 
 static int step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -106,15 +131,20 @@ static int step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
 }
 
 /* Heun (explicit trapezoid): k1 = f(y), k2 = f(y + h·k1), y1 = y + h/2·(k1 + k2). */
-static void heun_range(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi)
+static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                           unsigned elim)
 {
-    double *k1 = W(s, 0), *yp = W(s, 1), *k2 = W(s, 2);
+    double *restrict k1 = W(s, 0), *restrict yp = W(s, 1), *restrict k2 = W(s, 2);
+    unsigned over = 0;
     eval_range(ode, t, y, k1, lo, hi);
     for (int i = lo; i < hi; i++)
         yp[i] = y[i] + h * k1[i];
     eval_range(ode, t + h, yp, k2, lo, hi);
-    for (int i = lo; i < hi; i++)
+    for (int i = lo; i < hi; i++) {
         y[i] += 0.5 * h * (k1[i] + k2[i]);
+        over |= beyond1(y[i], elim);
+    }
+    return over;
 }
 
 static int step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -123,9 +153,12 @@ static int step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 }
 
 /* Classical RK4: y1 = y + h/6·(k1 + 2k2 + 2k3 + k4). */
-static void rk4_range(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi)
+static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                          unsigned elim)
 {
-    double *k1 = W(s, 0), *k2 = W(s, 1), *k3 = W(s, 2), *k4 = W(s, 3), *yt = W(s, 4);
+    double *restrict k1 = W(s, 0), *restrict k2 = W(s, 1), *restrict k3 = W(s, 2), *restrict k4 = W(s, 3),
+           *restrict yt = W(s, 4);
+    unsigned over = 0;
     eval_range(ode, t, y, k1, lo, hi);
     for (int i = lo; i < hi; i++)
         yt[i] = y[i] + 0.5 * h * k1[i];
@@ -136,8 +169,11 @@ static void rk4_range(sw_stepper *s, sw_ode *ode, double t, double *y, double h,
     for (int i = lo; i < hi; i++)
         yt[i] = y[i] + h * k3[i];
     eval_range(ode, t + h, yt, k4, lo, hi);
-    for (int i = lo; i < hi; i++)
+    for (int i = lo; i < hi; i++) {
         y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        over |= beyond1(y[i], elim);
+    }
+    return over;
 }
 
 static int step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -403,6 +439,7 @@ void sw_stepper_touch(sw_stepper *s) { s->have_cache = 0; }
 
 int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
+    s->checked = 0;
     return s->method->step(s, ode, t, y, h);
 }
 

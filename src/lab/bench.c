@@ -300,6 +300,13 @@ double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
     for (int i = first; i <= last; i++)
         s->points[i].in_fit = 1;
     s->order = ls_slope(pts, first, last);
+    if (!isfinite(s->order)) { /* every h equal (an adaptive method stuck at its largest step) */
+        for (int i = first; i <= last; i++)
+            s->points[i].in_fit = 0;
+        s->nfit = 0;
+        s->order = NAN;
+        return s->order;
+    }
     s->slope_min = INFINITY;
     s->slope_max = -INFINITY;
     for (int i = first; i < last; i++) {
@@ -525,14 +532,14 @@ int sw_bench_plot(const sw_bench_report *r, int xaxis, char *buf, int width, int
     /* Legend lines first: they decide how many rows the plot gets. */
     char legend[8][512];
     int nlegend = 0;
-    size_t used = 0;
+    size_t used = 0, line_max = width < 500 ? (size_t)width : 500;
     legend[0][0] = '\0';
     for (int i = 0; i < r->nseries && nlegend < 8; i++) {
         char entry[96];
         snprintf(entry, sizeof entry, "%c=%.40s", sw_bench_marker(r->series[i].method),
                  r->series[i].method->name);
         size_t len = strlen(entry);
-        if (used > 0 && used + 2 + len > (size_t)width) {
+        if (used > 0 && used + 2 + len > line_max) {
             if (++nlegend == 8)
                 break;
             used = 0;

@@ -29,6 +29,9 @@ expect_usage "--repeats '0' is not allowed" bench --repeats 0
 expect_usage "unknown option '--frobnicate'" bench --frobnicate
 expect_usage "--csv needs a value" bench spring --csv
 expect_usage "cannot create a file there" bench spring --csv "$dir/no/such/dir/p.csv"
+mkdir "$dir/sub"
+expect_usage "is a directory" bench spring --svg "$dir/sub"
+rmdir "$dir/sub"
 expect_usage "nothing to measure: fireworks has no exact solution" bench fireworks
 expect_usage "stability needs a SCENE" stability
 expect_usage "takes one SCENE" stability spring chain

@@ -274,6 +274,16 @@ static int particles_solve(void *ctx, double t, const double *y, double c, const
     }
     for (int i = 0; i < n2; i++)
         pre[i] = pre[i] > 0 ? 1.0 / pre[i] : 1.0;
+    /* The system is linear: solve for b / max|b| and scale back, so residual
+     * norms neither underflow (a state damped to 1e-160) nor overflow. */
+    double bscale = 0;
+    for (int i = 0; i < n2; i++)
+        bscale = fmax(bscale, fabs(b[i]));
+    if (bscale > 0 && isfinite(bscale))
+        for (int i = 0; i < n2; i++)
+            b[i] /= bscale;
+    else
+        bscale = 1;
 
     /* PCG from z_v = 0. */
     memset(zv, 0, (size_t)n2 * sizeof *zv);
@@ -320,8 +330,10 @@ static int particles_solve(void *ctx, double t, const double *y, double c, const
         if (!(sqrt(rn) <= 1e-8 * bnorm))
             return SW_EDIVERGED;
     }
-    for (int i = 0; i < n2; i++)
+    for (int i = 0; i < n2; i++) {
+        zv[i] *= bscale; /* z_v is the velocity half of z */
         z[i] = r[i] + c * zv[i];
+    }
     return SW_OK;
 }
 

@@ -172,6 +172,27 @@ START_TEST(stability_implicit_euler)
 }
 END_TEST
 
+/* Backward Euler keeps damping a decayed motion without a false failure:
+ * on the spring (k = m = 1, undamped, dt = 0.5) the velocity falls by
+ * 1/sqrt(1.25) per step, below 1e-160 by step 1700, where the linear
+ * solve's unscaled residual norms used to underflow and stop the run. */
+START_TEST(implicit_euler_tiny_state)
+{
+    sw_sim s;
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("spring");
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(sc, p);
+    p[0] = 1.0; /* k */
+    p[2] = 0.0; /* c */
+    ck_assert_int_eq(sw_sim_init(&s, sc, p, sw_integrator_find("implicit-euler"), 0.5, err, sizeof err), SW_OK);
+    for (int i = 0; i < 2500; i++)
+        ck_assert_msg(sw_sim_step(&s) == 0, "step %d: %s", i + 1, s.blow_reason);
+    ck_assert_double_lt(fabs(s.sys.y[2]), 1e-200);
+    sw_sim_free(&s);
+}
+END_TEST
+
 /* Implicit midpoint is the Cayley transform on a linear oscillator: it keeps
  * the quadratic energy exactly, so only solver round-off remains. */
 START_TEST(implicit_midpoint_conserves)
@@ -376,6 +397,7 @@ Suite *make_integrators_suite(void)
     tcase_add_test(tc, stability_symplectic);
     tcase_add_test(tc, stability_rk4);
     tcase_add_test(tc, stability_implicit_euler);
+    tcase_add_test(tc, implicit_euler_tiny_state);
     tcase_add_test(tc, implicit_midpoint_conserves);
     tcase_add_test(tc, backward_euler_exact_linear);
     tcase_add_test(tc, rk45_tolerance);

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lab/bench.h"
 #include "stepwise/stepwise.h"
 
 #define REF_RTOL 1e-11
@@ -70,6 +71,16 @@ static void default_compare(sw_app *a, const sw_integrator **m1, const sw_integr
     }
     *m1 = picked[0];
     *m2 = picked[1];
+}
+
+static void free_bench(sw_app *a)
+{
+    if (a->bench) {
+        sw_bench_free(a->bench);
+        free(a->bench);
+    }
+    a->bench = NULL;
+    a->workprec = 0;
 }
 
 static void free_ref(sw_app *a)
@@ -165,6 +176,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
 void sw_app_free(sw_app *a)
 {
     sw_app_record_stop(a);
+    free_bench(a);
     free_sims(a);
     free(a->ghost_y);
     a->ghost_y = NULL;
@@ -173,6 +185,7 @@ void sw_app_free(sw_app *a)
 int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen)
 {
     sw_app_record_stop(a); /* a trace describes one run */
+    free_bench(a);         /* the sweep was for the old parameters */
     const sw_integrator *m = a->sims[0].method;
     const sw_scene *old_scene = a->scene;
     double old_p[SW_MAX_PARAMS], old_dt = a->dt;
@@ -539,9 +552,26 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else
             sw_app_record_start(a, NULL);
         return 1;
-    case SW_ACT_WORKPREC:
-        a->workprec = !a->workprec;
+    case SW_ACT_WORKPREC: {
+        /* off -> against evaluations -> against wall time -> off; the sweep
+         * (well under a second for default scenes) runs once per scene. */
+        char why[SW_ERRLEN];
+        a->workprec = (a->workprec + 1) % 3;
+        if (a->workprec && !a->bench) {
+            sw_bench_report *r = malloc(sizeof *r);
+            if (!r || !sw_bench_measurable(a->scene, a->p, why, sizeof why) ||
+                sw_bench_scene_quick(r, a->scene, a->p, why, sizeof why) != SW_OK) {
+                free(r);
+                a->workprec = 0;
+                snprintf(a->message, sizeof a->message, "no work-precision plot: %s", r ? why : "out of memory");
+                return 0;
+            }
+            a->bench = r;
+        }
+        snprintf(a->message, sizeof a->message, "%s", a->workprec == 1 ? "work-precision: error against derivative evaluations (w: against time)"
+                 : a->workprec == 2 ? "work-precision: error against wall time (w closes)" : "work-precision plot closed");
         return 1;
+    }
     case SW_ACT_HELP:
         a->help = !a->help;
         return 1;

@@ -63,7 +63,9 @@ typedef struct sw_app {
     sw_sim sims[SW_APP_SIMS];
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
-    int compare, ghost, trails, graph, braille, panel, help, workprec, paused;
+    int compare, ghost, trails, graph, braille, panel, help, paused;
+    int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
+    void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
     int param_sel;
     double speed;               /* simulated seconds per wall second */
     double t_goal;              /* simulated time the clock asks for */

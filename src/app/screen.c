@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lab/bench.h"
 #include "stepwise/stepwise.h"
 
 int sw_screen_init(sw_screen *s, int cols, int rows, char *err, size_t errlen)
@@ -462,6 +463,24 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
                  m->blow_time, m->blow_reason);
         int w = (int)strlen(line) < scene_cols ? (int)strlen(line) : scene_cols;
         sw_screen_text(scr, (scene_rows - graph_h) / 2, (scene_cols - w) / 2, w, SW_STYLE_BAD, line);
+    }
+    if (a->workprec && a->bench) {
+        static char plot[(120 + 1) * 40 + 1];
+        int w = scr->cols - 4 < 120 ? scr->cols - 4 : 120, h = scr->rows - 4 < 40 ? scr->rows - 4 : 40;
+        if (w >= 40 && h >= 10 &&
+            sw_bench_plot(a->bench, a->workprec == 1 ? SW_BENCH_X_EVALS : SW_BENCH_X_TIME, plot, w, h) == SW_OK) {
+            const char *lines[40];
+            int n = 0;
+            for (char *p = plot; *p && n < h; n++) {
+                lines[n] = p;
+                char *nl = strchr(p, '\n');
+                if (!nl)
+                    break;
+                *nl = '\0';
+                p = nl + 1;
+            }
+            overlay(scr, "work-precision (w)", lines, n, SW_STYLE_TEXT);
+        }
     }
     if (a->panel)
         panel_overlay(a, scr);

@@ -120,8 +120,8 @@ fuzz:
 # The engine benchmark as its own binary, linked with malloc/calloc/realloc
 # wrapped so it can count every allocation our code makes in a step loop.
 bench: $(LIB)
-	$(CC) $(CPPFLAGS) -std=c11 $(OPT) $(WARN) $(CFLAGS) -DSW_BENCH_MAIN src/cli/bench_engine.c \
-	    $(LIB) $(LDSAN) $(WRAP) -lm -o $(BUILD)/bench_engine
+	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(WARN) $(CFLAGS) -DSW_BENCH_MAIN src/cli/bench_engine.c \
+	    tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) -lm -o $(BUILD)/bench_engine
 	./$(BUILD)/bench_engine
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it

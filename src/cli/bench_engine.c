@@ -4,7 +4,7 @@
  * peak RSS; and allocations counted in every step loop. Allocations are
  * counted only in the `make bench` binary, which compiles this file with
  * SW_BENCH_MAIN and links with -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc
- * so every call from our code goes through the counters below. */
+ * so every call from our code goes through tests/support/alloc_count.c. */
 #include "cli/bench_engine.h"
 
 #include <math.h>
@@ -21,35 +21,10 @@
 /* ---- allocation counting ------------------------------------------------- */
 
 #ifdef SW_BENCH_MAIN
-void *__real_malloc(size_t size);
-void *__real_calloc(size_t n, size_t size);
-void *__real_realloc(void *p, size_t size);
-void *__wrap_malloc(size_t size);
-void *__wrap_calloc(size_t n, size_t size);
-void *__wrap_realloc(void *p, size_t size);
-
-static long alloc_calls;
-
-void *__wrap_malloc(size_t size)
-{
-    alloc_calls++;
-    return __real_malloc(size);
-}
-
-void *__wrap_calloc(size_t n, size_t size)
-{
-    alloc_calls++;
-    return __real_calloc(n, size);
-}
-
-void *__wrap_realloc(void *p, size_t size)
-{
-    alloc_calls++;
-    return __real_realloc(p, size);
-}
+#include "alloc_count.h" /* the tests' counter, linked in by `make bench` */
 
 /* Allocation calls so far, or -1 when this binary cannot count them. */
-static long alloc_count(void) { return alloc_calls; }
+static long alloc_count(void) { return sw_test_allocations(); }
 /* How to re-run this binary as a memory probe. */
 static const char *const probe_prefix[] = { "--engine" };
 #else

@@ -2,6 +2,7 @@
  * lookups by name, number parsing for flags, and run options. */
 #include "cli/cli.h"
 
+#include <dirent.h>
 #include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
@@ -179,27 +180,45 @@ int sw_cli_plugin(const char *path)
     return SW_EXIT_OK;
 }
 
+/* A directory holding at least one *.lesson file. */
+static int has_lessons(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    int found = 0;
+    for (struct dirent *e; !found && (e = readdir(d));) {
+        size_t len = strlen(e->d_name);
+        found = len > 7 && strcmp(e->d_name + len - 7, ".lesson") == 0;
+    }
+    closedir(d);
+    return found;
+}
+
 const char *sw_cli_lessons_dir(void)
 {
-    static char dir[4096];
+    static char dir[2100];
     const char *env = getenv("STEPWISE_LESSONS");
-    struct stat st;
     if (env && *env)
         return env;
-    /* Beside the binary (a build tree), then the working directory, then the install dir. */
+    /* A build tree: lessons/ beside the binary or a few levels up (build/san/
+     * stepwise finds the checkout's lessons); then the working directory;
+     * then the installed lessons. */
     char exe[2048];
     ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
     if (len > 0) {
         exe[len] = '\0';
-        char *slash = strrchr(exe, '/');
-        if (slash) {
+        for (int up = 0; up < 4; up++) {
+            char *slash = strrchr(exe, '/');
+            if (!slash)
+                break;
             *slash = '\0';
             snprintf(dir, sizeof dir, "%s/lessons", exe);
-            if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+            if (has_lessons(dir))
                 return dir;
         }
     }
-    if (stat("lessons", &st) == 0 && S_ISDIR(st.st_mode))
+    if (has_lessons("lessons"))
         return "lessons";
     return SW_DATADIR "/lessons";
 }

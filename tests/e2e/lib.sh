@@ -39,12 +39,22 @@ app_pid() {
     pgrep -P "$shell" | head -1
 }
 
+# Wait until no stepwise runs under the pane's shell (a sanitizer build may
+# take a moment at exit), so that what is typed next goes to the shell.
+wait_exit() {
+    i=0
+    while [ -n "$(app_pid)" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+    [ -z "$(app_pid)" ] || fail "stepwise still running after $1"
+}
+
 # After the program has gone: the prompt is back, and the terminal is sane.
 check_terminal_sane() {
+    wait_exit "$1"
     keys "clear" Enter
     wait_for 'PROMPT\$' || fail "no prompt after $1"
-    type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)$' | tr '\n' ' '; echo STTY-DONE"
-    wait_for 'STTY-DONE$' || fail "stty did not answer after $1"
+    # the marker is computed by the shell, so the typed command line cannot match it
+    type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)$' | tr '\n' ' '; echo STTY-\$((40+2))"
+    wait_for 'STTY-42$' || fail "stty did not answer after $1"
     s=$(screen | grep -E 'icanon' | tail -1)
     case "$s" in
         *-icanon*|*-echo\ *|*-isig*) fail "terminal left raw after $1: $s" ;;

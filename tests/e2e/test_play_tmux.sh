@@ -33,7 +33,7 @@ for sig in TERM INT HUP; do
     pid=$(app_pid)
     [ -n "$pid" ] || fail "no stepwise process"
     kill -"$sig" "$pid"
-    wait_for 'PROMPT\$' || fail "no prompt after SIG$sig"
+    wait_exit "SIG$sig"
     check_terminal_sane "$sig"
 done
 

@@ -84,6 +84,9 @@ const sw_scene *sw_scene_find(const char *name);
 int sw_scene_param_index(const sw_scene *sc, const char *name);
 /* Fill p with the defaults. */
 void sw_scene_defaults(const sw_scene *sc, double *p);
+/* out (SW_MAX_PARAMS doubles) = the scene's nparams values from p, or its
+ * defaults when p is NULL, then zeros, so whole arrays compare equal. */
+void sw_scene_fill(const sw_scene *sc, const double *p, double *out);
 /* Parse "NAME=VALUE" into p, checking name, number and range; 0 or SW_EINVAL
  * with a message naming what was wrong and what is allowed. */
 int sw_scene_set(const sw_scene *sc, double *p, const char *assignment, char *err, size_t errlen);

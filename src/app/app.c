@@ -160,10 +160,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
 {
     memset(a, 0, sizeof *a);
     a->scene = sc;
-    if (p)
-        memcpy(a->p, p, sizeof a->p);
-    else
-        sw_scene_defaults(sc, a->p);
+    sw_scene_fill(sc, p, a->p);
     a->dt = dt > 0 ? dt : sc->dt;
     a->speed = 1.0;
     a->slowmo = 1.0;
@@ -192,10 +189,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
     memcpy(old_p, a->p, sizeof old_p);
     free_sims(a);
     a->scene = sc;
-    if (p)
-        memcpy(a->p, p, sizeof a->p);
-    else
-        sw_scene_defaults(sc, a->p);
+    sw_scene_fill(sc, p, a->p);
     if (sc != old_scene)
         a->dt = sc->dt;
     int rc = build(a, m, err, errlen);

@@ -112,10 +112,7 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
 {
     memset(r, 0, sizeof *r);
     r->scene = sc;
-    if (p)
-        memcpy(r->p, p, (size_t)sc->nparams * sizeof *p);
-    else
-        sw_scene_defaults(sc, r->p);
+    sw_scene_fill(sc, p, r->p);
     r->t_report = sc->duration;
     r->omega = NAN;
     sw_system sys;

@@ -50,6 +50,16 @@ void sw_scene_defaults(const sw_scene *sc, double *p)
         p[i] = sc->params[i].def;
 }
 
+void sw_scene_fill(const sw_scene *sc, const double *p, double *out)
+{
+    if (p)
+        memcpy(out, p, (size_t)sc->nparams * sizeof *p);
+    else
+        sw_scene_defaults(sc, out);
+    for (int i = sc->nparams; i < SW_MAX_PARAMS; i++)
+        out[i] = 0;
+}
+
 int sw_parse_double(const char *text, double *out)
 {
     if (!text || !*text)
@@ -140,10 +150,7 @@ int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *e
 {
     memset(sys, 0, sizeof *sys);
     sys->scene = sc;
-    if (p)
-        memcpy(sys->p, p, (size_t)sc->nparams * sizeof *p);
-    else
-        sw_scene_defaults(sc, sys->p);
+    sw_scene_fill(sc, p, sys->p);
     for (int i = 0; i < sc->nparams; i++) {
         int rc = sw_scene_check_value(sc, i, sys->p[i], err, errlen);
         if (rc != SW_OK)

@@ -21,11 +21,7 @@ static void msg(sw_app *a, const char *fmt, double v, const char *s)
     snprintf(a->message, sizeof a->message, fmt, s ? s : "", v);
 }
 
-static int has_exact(const sw_app *a)
-{
-    const sw_scene *sc = a->scene;
-    return sc->exact && sc->exact(&a->sims[0].sys, 0.0, a->ghost_y) == 0;
-}
+static int has_exact(const sw_app *a) { return a->exact_ok; }
 
 static void series_clear(sw_series *s)
 {
@@ -133,6 +129,8 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
         return SW_ENOMEM;
     }
     a->ghost_y = g;
+    a->exact_ok = a->scene->exact && a->scene->exact(&a->sims[0].sys, 0.0, a->ghost_y) == 0;
+    a->ghost_t = NAN;
     if (a->compare) {
         for (int i = 0; i < 2; i++) {
             const sw_integrator *cm = a->compare_methods[i];
@@ -294,7 +292,10 @@ void sw_app_reset(sw_app *a)
 static int ghost_state(sw_app *a, double t, const double **y)
 {
     if (has_exact(a)) {
-        a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
+        if (a->ghost_t != t) { /* once per time, shared by the ghost and every error */
+            a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
+            a->ghost_t = t;
+        }
         *y = a->ghost_y;
         return 1;
     }
@@ -310,6 +311,12 @@ static int ghost_state(sw_app *a, double t, const double **y)
         return 0;
     *y = a->ref.sys.y;
     return 1;
+}
+
+const double *sw_app_ghost(sw_app *a)
+{
+    const double *g;
+    return ghost_state(a, a->sims[0].t, &g) ? g : NULL;
 }
 
 double sw_app_error(sw_app *a, int i)

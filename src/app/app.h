@@ -73,6 +73,8 @@ typedef struct sw_app {
     double steps_per_sec;       /* measured by the front end */
     /* ghost: exact state, or a tight rk45 reference run in lockstep */
     double *ghost_y;
+    double ghost_t;             /* time ghost_y holds the exact state for (NaN: none) */
+    int exact_ok;               /* the scene has a closed form for these parameters */
     sw_sim ref;
     int have_ref;
     /* live error measurement at the scene's report time */
@@ -122,6 +124,9 @@ void sw_app_reset(sw_app *a);
  * per step of that mode (spectral radius of the one-step map: > 1 grows);
  * returns 0 when the scene has no stiffest frequency. */
 int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth);
+/* The state the ghost shows now (exact, or the reference run advanced to
+ * the main sim's time), or NULL when there is neither. */
+const double *sw_app_ghost(sw_app *a);
 /* The error of sim i now: against the exact solution or the reference. */
 double sw_app_error(sw_app *a, int i);
 /* One status line for sim i (exact integrator name, dt=, t, steps, evals, ...). */

@@ -221,17 +221,9 @@ static void draw_scene(sw_frame *f, sw_app *a, int rows, int cols)
     if (a->trails && f->have_trails)
         for (int i = a->nsims - 1; i >= 0; i--)
             sw_canvas_draw_trails(c, &f->trails[i], SW_STYLE_TRAIL);
-    if (a->ghost) {
-        const double *g = NULL;
-        double err_unused = sw_app_error(a, 0); /* advances the reference to t */
-        (void)err_unused;
-        if (a->scene->exact && a->scene->exact(&main->sys, main->t, a->ghost_y) == 0)
-            g = a->ghost_y;
-        else if (a->have_ref && fabs(a->ref.t - main->t) <= 1e-9 * fmax(1, main->t))
-            g = a->ref.sys.y;
-        if (g)
-            sw_canvas_draw_system(c, &main->sys, g, main->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
-    }
+    const double *g = a->ghost ? sw_app_ghost(a) : NULL;
+    if (g)
+        sw_canvas_draw_system(c, &main->sys, g, main->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     for (int i = a->nsims - 1; i >= 0; i--)
         sw_canvas_draw_system(c, &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t, sim_glyph[i], sim_style[i]);
 }

@@ -16,13 +16,6 @@
 /* Largest headless measurement run (state components × steps) on a key press. */
 #define MEASURE_BUDGET 4e7
 
-static void msg(sw_app *a, const char *fmt, double v, const char *s)
-{
-    snprintf(a->message, sizeof a->message, fmt, s ? s : "", v);
-}
-
-static int has_exact(const sw_app *a) { return a->exact_ok; }
-
 static void series_clear(sw_series *s)
 {
     s->len = 0;
@@ -106,7 +99,7 @@ static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, siz
  * solution: rk45 at tight tolerance, advanced in lockstep with the main sim. */
 static void ensure_ref(sw_app *a)
 {
-    if (a->have_ref || !a->scene->reference || has_exact(a))
+    if (a->have_ref || !a->scene->reference || a->exact_ok)
         return;
     char err[SW_ERRLEN];
     if (sw_sim_init(&a->ref, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
@@ -291,7 +284,7 @@ void sw_app_reset(sw_app *a)
  * Returns 0 when there is neither. */
 static int ghost_state(sw_app *a, double t, const double **y)
 {
-    if (has_exact(a)) {
+    if (a->exact_ok) {
         if (a->ghost_t != t) { /* once per time, shared by the ghost and every error */
             a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
             a->ghost_t = t;
@@ -357,7 +350,7 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
     int dim = a->sims[0].sys.ode->dim;
     if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
         return NAN;
-    int exact = has_exact(a);
+    int exact = a->exact_ok;
     if (!exact && !sc->reference)
         return NAN;
     double *want = malloc((size_t)dim * sizeof *want);
@@ -490,7 +483,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     }
     case SW_ACT_PAUSE:
         a->paused = !a->paused;
-        msg(a, a->paused ? "paused%s" : "running%s", 0, "");
+        snprintf(a->message, sizeof a->message, "%s", a->paused ? "paused" : "running");
         return 1;
     case SW_ACT_STEP:
         a->paused = 1;
@@ -500,13 +493,13 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     case SW_ACT_RESET:
         sw_app_reset(a);
-        msg(a, "reset to t = 0%s", 0, "");
+        snprintf(a->message, sizeof a->message, "reset to t = 0");
         return 1;
     case SW_ACT_SLOWER:
     case SW_ACT_FASTER: {
         double s = act == SW_ACT_FASTER ? a->speed * 2 : a->speed / 2;
         a->speed = fmin(SW_APP_SPEED_MAX, fmax(SW_APP_SPEED_MIN, s));
-        msg(a, "%sspeed x%g", a->speed, "");
+        snprintf(a->message, sizeof a->message, "speed x%g", a->speed);
         return 1;
     }
     case SW_ACT_COMPARE:
@@ -515,15 +508,15 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
             snprintf(a->message, sizeof a->message, "compare: %s, %s and %s", a->sims[0].method->name,
                      a->sims[1].method->name, a->nsims > 2 ? a->sims[2].method->name : "-");
         else
-            msg(a, "compare off%s", 0, "");
+            snprintf(a->message, sizeof a->message, "compare off");
         return 1;
     case SW_ACT_GHOST:
         sw_app_set_ghost(a, !a->ghost);
-        if (a->ghost && !has_exact(a) && !a->have_ref)
-            msg(a, "no exact solution or reference for %s here", 0, a->scene->name);
+        if (a->ghost && !a->exact_ok && !a->have_ref)
+            snprintf(a->message, sizeof a->message, "no exact solution or reference for %s here", a->scene->name);
         else
-            msg(a, a->ghost ? "ghost on: %s" : "ghost off%s", 0,
-                a->ghost ? (has_exact(a) ? "the exact solution" : "a tight rk45 reference run") : "");
+            snprintf(a->message, sizeof a->message, "ghost %s",
+                     !a->ghost ? "off" : a->exact_ok ? "on: the exact solution" : "on: a tight rk45 reference run");
         return 1;
     case SW_ACT_TRAILS:
         a->trails = !a->trails;

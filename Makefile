@@ -35,11 +35,11 @@ CURSES_LIBS   = $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncurses
 CHECK_CFLAGS  = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 
-# The engine library: everything but main.c and the ncurses front end. The
-# canvas rasteriser lives in tui/ but is pure C, so it belongs to the library.
-TUI_SRC  = $(filter-out src/tui/canvas.c,$(wildcard src/tui/*.c))
+# The engine library: every layer below the front ends (docs/architecture.md).
+# Only tui/ includes ncurses; cli/ and tui/ are linked into the program only.
+TUI_SRC  = $(wildcard src/tui/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
-LIB_SRC  = $(filter-out src/main.c $(TUI_SRC) $(CLI_SRC),$(wildcard src/*.c src/*/*.c))
+LIB_SRC  = $(filter-out $(TUI_SRC) $(CLI_SRC),$(wildcard src/*/*.c))
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
 TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o) $(CLI_SRC:%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/src/main.o
@@ -49,6 +49,7 @@ WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 LIB      = $(BUILD)/libstepwise.a
 BIN      = stepwise
 TESTBIN  = $(BUILD)/check_stepwise
+BENCHBIN = $(BUILD)/bench_engine
 
 .PHONY: all deps run test unit e2e sanitize bench clean install uninstall plugin-example fuzz
 
@@ -87,12 +88,12 @@ run: $(BIN)
 unit: $(TESTBIN)
 	$(TESTBIN)
 
-e2e: $(BIN)
-	@sh tests/e2e/run.sh ./$(BIN)
+e2e: $(BIN) $(BENCHBIN)
+	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
-test: $(BIN) $(TESTBIN)
+test: $(BIN) $(TESTBIN) $(BENCHBIN)
 	$(TESTBIN)
-	@sh tests/e2e/run.sh ./$(BIN)
+	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
 sanitize:
 	$(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
@@ -117,12 +118,14 @@ fuzz:
 	    grep -E "stat::number_of_executed_units" build/fuzz/$$t.log; \
 	done
 
-# The engine benchmark as its own binary, linked with malloc/calloc/realloc
+# The engine benchmark as its own program, linked with malloc/calloc/realloc
 # wrapped so it can count every allocation our code makes in a step loop.
-bench: $(LIB)
-	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(WARN) $(CFLAGS) -DSW_BENCH_MAIN src/cli/bench_engine.c \
-	    tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) -lm -o $(BUILD)/bench_engine
-	./$(BUILD)/bench_engine
+$(BENCHBIN): bench/bench_engine.c tests/support/alloc_count.c $(LIB)
+	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(WARN) $(CFLAGS) bench/bench_engine.c \
+	    tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) -lm -o $@
+
+bench: $(BENCHBIN)
+	./$(BENCHBIN)
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

@@ -9,7 +9,7 @@
 
 #include "stepwise/stepwise.h"
 #include "app/app.h"
-#include "app/screen.h"
+#include "render/screen.h"
 
 static void app_with(sw_app *a, const char *scene, const char *method, double dt, const char *set)
 {

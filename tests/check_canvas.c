@@ -1,5 +1,5 @@
 /* The canvas rasteriser: golden frames worked out by hand from the mapping
- * in src/tui/canvas.h (u = cols/2 + (x - cx)/s, w = rows/2 - (y - cy)/(2s),
+ * in src/render/canvas.h (u = cols/2 + (x - cx)/s, w = rows/2 - (y - cy)/(2s),
  * cell = floor), the density ramp, Braille bits and UTF-8, aspect, clipping
  * of non-finite and far-off input, bounded trails, and real built scenes.
  * Views are chosen so no point lands on a cell boundary unless the
@@ -11,7 +11,7 @@
 
 #include "stepwise/stepwise.h"
 #include "stepwise/scene.h"
-#include "tui/canvas.h"
+#include "render/canvas.h"
 #include "alloc_count.h"
 
 static char text[4096];

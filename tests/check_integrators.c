@@ -11,6 +11,7 @@
 #include "stepwise/particles.h"
 #include "stepwise/flow.h"
 #include "stepwise/sim.h"
+#include "engine/stepper.h"
 #include "alloc_count.h"
 
 /* x'' = -(k/m) x - (c/m) x' as one particle on a zero-rest-length spring to

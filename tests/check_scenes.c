@@ -35,8 +35,7 @@ static double exact_vs_rk45(const char *scene, const char *set1, const char *set
 {
     sw_sim s;
     sim_with(&s, scene, "rk45", 0.1, set1, set2);
-    s.stepper.rtol = 1e-11;
-    s.stepper.atol = 1e-13;
+    sw_sim_set_tolerances(&s, 1e-11, 1e-13);
     double worst = 0, ex[64];
     ck_assert_int_le(s.sys.ode->dim, 64);
     for (int k = 1; k <= 10; k++) {

@@ -1,7 +1,7 @@
 /* Integrators: one table entry per method, stepping a flat state vector
  * through the sw_ode interface. A step allocates nothing: its workspace comes
- * once, from sw_stepper_init. This header is also what a student's plugin
- * integrator includes (see examples/ and docs/plugins.md). */
+ * once, when a sim chooses the method. This header is also what a student's
+ * plugin integrator includes (see examples/ and docs/plugins.md). */
 #ifndef STEPWISE_INTEGRATOR_H
 #define STEPWISE_INTEGRATOR_H
 
@@ -17,6 +17,8 @@ enum {
     SW_PLUGIN = 1u << 5              /* loaded from a shared object */
 };
 
+/* The running state of one method on one system: its workspace and what it
+ * keeps between steps. Opaque here; a sim owns one (stepwise/sim.h). */
 typedef struct sw_stepper sw_stepper;
 
 /* Advance (t, y) by one step of at most h; set *t to the new time. Returns 0,
@@ -35,41 +37,8 @@ typedef struct sw_integrator {
     const char *summary;  /* one line: the update rule */
 } sw_integrator;
 
-/* The running state of one method on one system: workspace and the little
- * memory some methods keep between steps. */
-struct sw_stepper {
-    const sw_integrator *method;
-    int dim;
-    double *work;         /* work_vectors * dim doubles, owned */
-    double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
-    int have_cache;       /* FSAL derivative in work[0..dim) is valid */
-    double rtol, atol;    /* rk45 error control; implicit-midpoint Newton tolerance */
-    double h_next;        /* rk45: proposed size of the next step (0: use h) */
-    double h_last;        /* size of the last step taken */
-    long accepted;        /* rk45 accepted steps */
-    long rejected;        /* rk45 rejected trial steps */
-    long newton_iters;    /* implicit-midpoint Newton iterations, summed */
-    void *plugin;         /* plugin step function, for SW_PLUGIN methods */
-    unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
-    int checked;          /* the last step tested the whole state against limit_exp */
-    int beyond;           /* ... and found a component beyond it */
-};
-
 #define SW_RTOL_DEFAULT 1e-6
 #define SW_ATOL_DEFAULT 1e-9
-
-/* 1 when some y_i in [lo, hi) is non-finite or has |y_i| >= 2^(limit_exp -
- * 1023): a test on the exponent field alone, which compilers vectorise. */
-static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limit_exp)
-{
-    unsigned over = 0;
-    for (int i = lo; i < hi; i++) {
-        unsigned long long bits;
-        __builtin_memcpy(&bits, &y[i], sizeof bits);
-        over |= (unsigned)((bits >> 52) & 0x7FF) >= limit_exp;
-    }
-    return over != 0;
-}
 
 /* The built-in methods, in list order (positions 1..count in the UI). */
 int sw_integrator_count(void);
@@ -80,20 +49,6 @@ const sw_integrator *sw_integrator_find(const char *name);
 int sw_integrator_register(const sw_integrator *method, char *err, size_t errlen);
 /* Whether the method can step this system; when not, err says why. */
 int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen);
-
-/* Prepare a stepper for ode; 0, SW_EINVAL (wrong system kind) or SW_ENOMEM. */
-int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode,
-                    char *err, size_t errlen);
-void sw_stepper_free(sw_stepper *s);
-/* Forget caches after the state was changed from outside (contact, reset). */
-void sw_stepper_touch(sw_stepper *s);
-/* One step through the method's table entry. */
-int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
-
-/* Solve (I - c·J) z = r through ode->solve, or the dense finite-difference
- * fallback (dim <= SW_DENSE_MAX) using s->dense. */
-int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
-                 const double *r, double *z);
 
 /* Student plugins: a shared object exports
  *     const sw_plugin *sw_plugin_info(void);

@@ -54,12 +54,8 @@ typedef struct sw_particles {
     sw_force forces[SW_MAX_FORCES];
     int nforces;
     sw_walls walls;
-    /* implicit-solve workspace, allocated with the system */
-    double *diag;          /* 6n: ∂f/∂x and ∂f/∂v blocks per particle */
-    double *sblock;        /* 6 per spring: ∂f_a/∂x_a and ∂f_a/∂v_a */
-    double *cg;            /* 6 vectors of 2n for conjugate gradients */
     int nsprings_total;
-    long cg_iters_last;    /* iterations of the last solve */
+    struct sw_particles_solver *solver; /* implicit-solve workspace (private) */
 } sw_particles;
 
 /* Allocate a system of n particles of mass `mass`, all at rest at the origin. */
@@ -71,6 +67,12 @@ int sw_particles_add_drag(sw_particles *p, double k);
 int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
 /* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
 sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
+/* Every spring of the system, numbered 0 .. count-1 across spring forces:
+ * spring j is copied to *out (a < 0 when there is no spring j). */
+int sw_particles_spring_count(const sw_particles *p);
+void sw_particles_spring(const sw_particles *p, int j, sw_spring *out);
+/* The centre of the central attraction: 1 with (*cx, *cy), or 0 when none. */
+int sw_particles_central(const sw_particles *p, double *cx, double *cy);
 /* Apply wall contact to y after a step; returns 1 when anything changed. */
 int sw_particles_contact(sw_particles *p, double *y);
 

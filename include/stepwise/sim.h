@@ -12,8 +12,9 @@
 
 typedef struct sw_sim {
     sw_system sys;
-    sw_stepper stepper;
+    sw_stepper *stepper;   /* the method's running state, owned (opaque) */
     const sw_integrator *method;
+    double rtol, atol;     /* error control of adaptive methods, Newton's of implicit ones */
     double dt;             /* fixed step (rk45: initial and largest step) */
     double t;
     long steps;
@@ -35,6 +36,10 @@ int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integra
 void sw_sim_free(sw_sim *s);
 /* Change the method and keep the state and time; 0 or SW_EINVAL. */
 int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errlen);
+/* Set the tolerances (kept across method changes and resets). */
+void sw_sim_set_tolerances(sw_sim *s, double rtol, double atol);
+/* Accepted and rejected steps of an adaptive method so far (0 for the others). */
+void sw_sim_step_counts(const sw_sim *s, long *accepted, long *rejected);
 /* Change the step size; dt must lie in [SW_DT_MIN, SW_DT_MAX]. */
 int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen);
 /* Back to the initial state at t = 0 with counters cleared. */

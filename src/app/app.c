@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/stepper.h"
 #include "lab/bench.h"
 #include "stepwise/stepwise.h"
 
@@ -89,10 +90,7 @@ static void free_sims(sw_app *a)
 
 static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
 {
-    int rc = sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
-    if (rc == SW_OK)
-        s->stepper.rtol = SW_RTOL_DEFAULT;
-    return rc;
+    return sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
 }
 
 /* Start the reference run a ghost or an error needs when there is no exact
@@ -104,8 +102,7 @@ static void ensure_ref(sw_app *a)
     char err[SW_ERRLEN];
     if (sw_sim_init(&a->ref, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
         return;
-    a->ref.stepper.rtol = REF_RTOL;
-    a->ref.stepper.atol = REF_ATOL;
+    sw_sim_set_tolerances(&a->ref, REF_RTOL, REF_ATOL);
     a->have_ref = 1;
 }
 
@@ -334,8 +331,7 @@ static int reference_at(const sw_app *a, double T, double *out)
     char err[SW_ERRLEN];
     if (sw_sim_init(&r, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
         return 0;
-    r.stepper.rtol = REF_RTOL;
-    r.stepper.atol = REF_ATOL;
+    sw_sim_set_tolerances(&r, REF_RTOL, REF_ATOL);
     int ok = sw_sim_run_until(&r, T) == 0;
     if (ok)
         memcpy(out, r.sys.y, (size_t)r.sys.ode->dim * sizeof *out);
@@ -699,9 +695,11 @@ void sw_app_status(sw_app *a, int i, char *buf, size_t len)
     double err = sw_app_error(a, i);
     if (isfinite(err) && n < len)
         n += (size_t)snprintf(buf + n, len - n, "  error %.2e", err);
-    if ((s->method->flags & SW_ADAPTIVE) && n < len)
-        n += (size_t)snprintf(buf + n, len - n, "  accepted %ld rejected %ld", s->stepper.accepted,
-                              s->stepper.rejected);
+    if ((s->method->flags & SW_ADAPTIVE) && n < len) {
+        long acc, rej;
+        sw_sim_step_counts(s, &acc, &rej);
+        n += (size_t)snprintf(buf + n, len - n, "  accepted %ld rejected %ld", acc, rej);
+    }
     if (s->blown && n < len)
         snprintf(buf + n, len - n, "  BLOWN UP at step %ld", s->blow_step);
 }

@@ -21,8 +21,7 @@ static int replay(sw_app *a, long steps, char *err, size_t errlen)
     sw_trace_spec spec = { .steps = steps, .until = 0, .every = 1 };
     if (sw_sim_init(&s, a->scene, a->p, live->method, live->dt, err, errlen) != SW_OK)
         return SW_EINVAL;
-    s.stepper.rtol = live->stepper.rtol;
-    s.stepper.atol = live->stepper.atol;
+    sw_sim_set_tolerances(&s, live->rtol, live->atol);
     int rc = sw_trace_open(&w, a->record_path, err, errlen);
     if (rc == SW_OK)
         rc = sw_trace_begin(&w, &s, &spec, err, errlen);

@@ -5,7 +5,7 @@
 #define SW_RUNNER_H
 
 #include "app/app.h"
-#include "app/screen.h"
+#include "render/screen.h"
 #include "lesson/lesson.h"
 
 #define SW_RUNNER_LINES 160

@@ -1,6 +1,6 @@
 /* `stepwise bench`: the work–precision report (error against cost for each
- * integrator on each scene that has an exact solution or a reference), and
- * with --engine the engine benchmark. The numbers come from src/lab/bench.c;
+ * integrator on each scene that has an exact solution or a reference). The
+ * engine benchmark is its own program (bench/, `make bench`). The numbers come from src/lab/bench.c;
  * this file parses, prints, and writes files whole or not at all. */
 #include "cli/cli.h"
 
@@ -11,13 +11,11 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "cli/bench_engine.h"
 #include "lab/bench.h"
 
 static const char usage_text[] =
     "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
     "                      [--set NAME=VALUE] [--quick] [--repeats N] [--plugin FILE]\n"
-    "       stepwise bench --engine [--quick] [--repeats N]\n"
     "\n"
     "Work-precision report: for each scene with an exact solution or an rk45 reference\n"
     "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
@@ -38,8 +36,8 @@ static const char usage_text[] =
     "  --quick             the small sweep the UI uses (6-8 step sizes, one run each)\n"
     "  --repeats N         timing repeats per point, 1..15 (default 3)\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
-    "  --engine            the engine benchmark instead: ns per particle-step against\n"
-    "                      hand-written loops, frame cost, memory and allocations\n";
+    "(The engine benchmark, ns per particle-step against hand-written loops, is\n"
+    "`make bench` in the source tree.)\n";
 
 /* A file written whole or not at all: a temporary beside the target, renamed
  * into place once complete. */
@@ -235,8 +233,6 @@ int sw_cmd_bench(int argc, char **argv)
             fputs(usage_text, stdout);
             return SW_EXIT_OK;
         }
-        if (strcmp(argv[i], "--engine") == 0)
-            return sw_bench_engine_main(argc, argv);
     }
     const char *scene_names[64], *plugins[8], *csv_path = NULL, *svg_path = NULL;
     char *methods_arg = NULL;
@@ -271,7 +267,7 @@ int sw_cmd_bench(int argc, char **argv)
             quick = 1;
         else if (a[0] == '-')
             return sw_cli_error("bench: unknown option '%.40s'; options: --integrators, --csv, --svg, "
-                                "--set, --quick, --repeats, --plugin, --engine, --help", a);
+                                "--set, --quick, --repeats, --plugin, --help", a);
         else {
             const sw_scene *sc;
             if (sw_cli_scene(a, &sc) != SW_EXIT_OK)

@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "engine/stepper.h"
+
 int sw_cli_error(const char *fmt, ...)
 {
     va_list ap;
@@ -106,8 +108,7 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     char err[SW_ERRLEN];
     if (sw_sim_init(s, o->scene, o->p, o->method, o->dt, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
-    s->stepper.rtol = o->rtol;
-    s->stepper.atol = o->atol;
+    sw_sim_set_tolerances(s, o->rtol, o->atol);
     return SW_EXIT_OK;
 }
 

@@ -94,8 +94,7 @@ static int rk45_run(sw_bench_report *r, double rtol, double atol, double *out, d
     int rc = sw_sim_init(&s, r->scene, r->p, m, dt, err, errlen);
     if (rc != SW_OK)
         return rc;
-    s.stepper.rtol = rtol;
-    s.stepper.atol = atol;
+    sw_sim_set_tolerances(&s, rtol, atol);
     if (sw_sim_run_until(&s, r->t_report)) {
         snprintf(err, errlen, "%s: the rk45 reference run (rtol %g) failed at t = %g: %s",
                  r->scene->name, rtol, s.blow_time, s.blow_reason);
@@ -190,8 +189,7 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
         if (rc != SW_OK)
             return rc;
         if (rtol > 0) {
-            s.stepper.rtol = rtol;
-            s.stepper.atol = 1e-3 * rtol;
+            sw_sim_set_tolerances(&s, rtol, 1e-3 * rtol);
         }
         double t0 = now_seconds();
         sw_sim_run_until(&s, r->t_report);

@@ -223,9 +223,9 @@ int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spe
         fprintf(f, "# until: %s\n", num);
     }
     fprintf(f, "# every: %ld\n", spec->every);
-    fmt_exact(num, sizeof num, s->stepper.rtol);
+    fmt_exact(num, sizeof num, s->rtol);
     fprintf(f, "# rtol: %s\n", num);
-    fmt_exact(num, sizeof num, s->stepper.atol);
+    fmt_exact(num, sizeof num, s->atol);
     fprintf(f, "# atol: %s\n", num);
     for (int c = 0; c < ncols; c++) {
         sw_trace_colname(sys, c, num, sizeof num);
@@ -882,7 +882,6 @@ int sw_trace_meta_sim(const sw_trace_reader *r, sw_sim *s, const sw_integrator *
         snprintf(err, errlen, "%s:%ld: %s", r->name, meta->integrator_line, msg);
         return rc;
     }
-    s->stepper.rtol = meta->rtol;
-    s->stepper.atol = meta->atol;
+    sw_sim_set_tolerances(s, meta->rtol, meta->atol);
     return SW_OK;
 }

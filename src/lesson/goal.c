@@ -58,8 +58,7 @@ void sw_lesson_obs_from_sim(sw_lesson_obs *obs, const sw_sim *sim)
     obs->blown = sim->blown != 0;
     obs->energy_drift = sw_sim_energy_drift(sim);
     obs->drift = sw_sim_drift(sim);
-    obs->accepted = sim->stepper.accepted;
-    obs->rejected = sim->stepper.rejected;
+    sw_sim_step_counts(sim, &obs->accepted, &obs->rejected);
     obs->nparams = sc->nparams < SW_MAX_PARAMS ? sc->nparams : SW_MAX_PARAMS;
     for (int i = 0; i < obs->nparams; i++) {
         obs->param_name[i] = sc->params[i].name;

@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "app/app.h"
-#include "app/screen.h"
+#include "render/screen.h"
 #include "cli/cli.h"
 #include "tui/play.h"
 #include "tui/term.h"

@@ -3,7 +3,7 @@
 #define SW_PLAY_H
 
 #include "app/app.h"
-#include "app/screen.h"
+#include "render/screen.h"
 
 /* What a lesson adds to the loop: its keys first, and a side pane. */
 typedef struct sw_play_hooks {

@@ -6,7 +6,7 @@
 
 #include <signal.h>
 
-#include "app/screen.h"
+#include "render/screen.h"
 
 /* Set by SIGINT, SIGTERM and SIGHUP; the loop exits when it is non-zero. */
 extern volatile sig_atomic_t sw_term_signal;

@@ -3,6 +3,11 @@
 # as $1 and prints "N passed, N failed"; exits 1 when any failed.
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 dir=$(cd "$(dirname "$0")" && pwd)
+# The engine benchmark program (make bench), for the tests that run it.
+if [ -n "${STEPWISE_BENCH:-}" ]; then
+    STEPWISE_BENCH=$(cd "$(dirname "$STEPWISE_BENCH")" && pwd)/$(basename "$STEPWISE_BENCH")
+    export STEPWISE_BENCH
+fi
 pass=0 fail=0
 for t in "$dir"/test_*.sh; do
     [ -e "$t" ] || continue

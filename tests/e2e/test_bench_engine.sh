@@ -1,12 +1,12 @@
 #!/bin/sh
-# `stepwise bench --engine --quick`: the engine benchmark's three tables run
+# The engine benchmark (`make bench`) with --quick: its three tables run
 # to the end (small sizes); every hand-written baseline reproduces the
 # generic step bit for bit; every default scene gets a frame-cost row.
 # Timings are printed, never checked: they vary from machine to machine.
 set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
+BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
 fail() { echo "FAIL: $*"; exit 1; }
-out=$("$SW" bench --engine --quick 2>&1) || fail "exited $?: $out"
+out=$("$BENCH" --quick 2>&1) || fail "exited $?: $out"
 echo "$out" | grep -q '^throughput: ns per particle-step' || fail "no throughput table"
 [ "$(echo "$out" | grep -c 'bitwise equal after 200 steps')" -eq 4 ] \
     || fail "baselines (euler, rk4 on chain and vortex) do not all match: $(echo "$out" | grep -E ' (euler|rk4) ')"

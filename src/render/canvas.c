@@ -2,7 +2,7 @@
  * density ramp, Braille dots), pure C. Invariant: no double becomes an int
  * before it is known finite and inside the grid, and nothing allocates
  * between init/resize and free. The mapping is specified in canvas.h. */
-#include "tui/canvas.h"
+#include "render/canvas.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -414,29 +414,25 @@ static int is_alive(const sw_system *sys, const double *y, double t, int i)
 static void draw_springs(sw_canvas *c, const sw_system *sys, const double *y, double t, int style)
 {
     const sw_particles *p = &sys->particles;
-    int n = sys->n, main_sim = style == SW_STYLE_MAIN;
+    int n = sys->n, main_sim = style == SW_STYLE_MAIN, count = sw_particles_spring_count(p);
     for (int pass = 0; pass < 2; pass++)
-        for (int f = 0; f < p->nforces; f++) {
-            const sw_force *fo = &p->forces[f];
-            if (fo->kind != SW_FORCE_SPRINGS)
+        for (int j = 0; j < count; j++) {
+            sw_spring spring, *sp = &spring;
+            sw_particles_spring(p, j, sp);
+            if (sp->a < 0 || sp->a >= n || sp->b >= n)
                 continue;
-            for (int j = 0; j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
-                if (sp->a < 0 || sp->a >= n || sp->b >= n)
-                    continue;
-                if (pass == 1) {
-                    if (sp->b < 0)
-                        sw_canvas_mark(c, sp->ax, sp->ay, SW_GLYPH_ANCHOR, SW_STYLE_WALL);
-                    continue;
-                }
-                if (!is_alive(sys, y, t, sp->a) || (sp->b >= 0 && !is_alive(sys, y, t, sp->b)))
-                    continue;
-                double bx = sp->b < 0 ? sp->ax : y[2 * sp->b];
-                double by = sp->b < 0 ? sp->ay : y[2 * sp->b + 1];
-                sw_canvas_line(c, y[2 * sp->a], y[2 * sp->a + 1], bx, by,
-                               main_sim ? 0 : SW_GLYPH_GHOST_SPRING,
-                               main_sim ? SW_STYLE_SPRING : style);
+            if (pass == 1) {
+                if (sp->b < 0)
+                    sw_canvas_mark(c, sp->ax, sp->ay, SW_GLYPH_ANCHOR, SW_STYLE_WALL);
+                continue;
             }
+            if (!is_alive(sys, y, t, sp->a) || (sp->b >= 0 && !is_alive(sys, y, t, sp->b)))
+                continue;
+            double bx = sp->b < 0 ? sp->ax : y[2 * sp->b];
+            double by = sp->b < 0 ? sp->ay : y[2 * sp->b + 1];
+            sw_canvas_line(c, y[2 * sp->a], y[2 * sp->a + 1], bx, by,
+                           main_sim ? 0 : SW_GLYPH_GHOST_SPRING,
+                           main_sim ? SW_STYLE_SPRING : style);
         }
 }
 
@@ -450,9 +446,9 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
         const sw_particles *p = &sys->particles;
         if (p->walls.active)
             draw_walls(c, &p->walls);
-        for (int f = 0; f < p->nforces; f++)
-            if (p->forces[f].kind == SW_FORCE_CENTRAL)
-                sw_canvas_mark(c, p->forces[f].cx, p->forces[f].cy, SW_GLYPH_SUN, SW_STYLE_WALL);
+        double cx, cy;
+        if (sw_particles_central(p, &cx, &cy))
+            sw_canvas_mark(c, cx, cy, SW_GLYPH_SUN, SW_STYLE_WALL);
         draw_springs(c, sys, y, t, style);
     }
     int crowd = (long long)n > (long long)c->cols * c->rows / 4;

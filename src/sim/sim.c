@@ -6,8 +6,10 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "engine/stepper.h"
 #include "stepwise/stepwise.h"
 
 static double max_abs(int n, const double *v)
@@ -29,8 +31,27 @@ static void set_limits(sw_sim *s)
     int e;
     frexp(1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y)), &e);
     s->runaway = ldexp(1.0, e);
-    s->stepper.limit_exp = (unsigned)(e + 1023);
+    s->stepper->limit_exp = (unsigned)(e + 1023);
     s->energy0 = sw_sim_energy(s);
+}
+
+/* A fresh stepper for m on the sim's system, with the sim's tolerances. */
+static int new_stepper(sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
+{
+    s->stepper = malloc(sizeof *s->stepper);
+    if (!s->stepper) {
+        snprintf(err, errlen, "out of memory for a stepper");
+        return SW_ENOMEM;
+    }
+    int rc = sw_stepper_init(s->stepper, m, s->sys.ode, err, errlen);
+    if (rc != SW_OK) {
+        free(s->stepper);
+        s->stepper = NULL;
+        return rc;
+    }
+    s->stepper->rtol = s->rtol;
+    s->stepper->atol = s->atol;
+    return SW_OK;
 }
 
 int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
@@ -44,7 +65,9 @@ int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integra
     int rc = sw_system_build(&s->sys, sc, p, err, errlen);
     if (rc != SW_OK)
         return rc;
-    rc = sw_stepper_init(&s->stepper, m, s->sys.ode, err, errlen);
+    s->rtol = SW_RTOL_DEFAULT;
+    s->atol = SW_ATOL_DEFAULT;
+    rc = new_stepper(s, m, err, errlen);
     if (rc != SW_OK) {
         sw_system_free(&s->sys);
         return rc;
@@ -55,25 +78,47 @@ int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integra
     return SW_OK;
 }
 
+static void free_stepper(sw_sim *s)
+{
+    if (s->stepper) {
+        sw_stepper_free(s->stepper);
+        free(s->stepper);
+    }
+    s->stepper = NULL;
+}
+
 void sw_sim_free(sw_sim *s)
 {
-    sw_stepper_free(&s->stepper);
+    free_stepper(s);
     sw_system_free(&s->sys);
 }
 
 int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
 {
-    sw_stepper next;
-    int rc = sw_stepper_init(&next, m, s->sys.ode, err, errlen);
-    if (rc != SW_OK)
+    unsigned limit_exp = s->stepper->limit_exp;
+    sw_stepper *old = s->stepper;
+    int rc = new_stepper(s, m, err, errlen);
+    if (rc != SW_OK) {
+        s->stepper = old;
         return rc;
-    next.rtol = s->stepper.rtol;
-    next.atol = s->stepper.atol;
-    next.limit_exp = s->stepper.limit_exp;
-    sw_stepper_free(&s->stepper);
-    s->stepper = next;
+    }
+    sw_stepper_free(old);
+    free(old);
+    s->stepper->limit_exp = limit_exp;
     s->method = m;
     return SW_OK;
+}
+
+void sw_sim_set_tolerances(sw_sim *s, double rtol, double atol)
+{
+    s->rtol = s->stepper->rtol = rtol;
+    s->atol = s->stepper->atol = atol;
+}
+
+void sw_sim_step_counts(const sw_sim *s, long *accepted, long *rejected)
+{
+    *accepted = s->stepper->accepted;
+    *rejected = s->stepper->rejected;
 }
 
 int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
@@ -83,7 +128,7 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
         return SW_EINVAL;
     }
     s->dt = dt;
-    s->stepper.h_next = 0;
+    s->stepper->h_next = 0;
     return SW_OK;
 }
 
@@ -92,13 +137,10 @@ int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
     int rc = sw_system_reset(&s->sys, err, errlen);
     if (rc != SW_OK)
         return rc;
-    double rtol = s->stepper.rtol, atol = s->stepper.atol;
-    sw_stepper_free(&s->stepper);
-    rc = sw_stepper_init(&s->stepper, s->method, s->sys.ode, err, errlen);
+    free_stepper(s);
+    rc = new_stepper(s, s->method, err, errlen);
     if (rc != SW_OK)
         return rc;
-    s->stepper.rtol = rtol;
-    s->stepper.atol = atol;
     s->t = 0;
     s->steps = 0;
     s->blown = 0;
@@ -125,7 +167,7 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     if (t_stop > s->t && s->t + h > t_stop)
         h = t_stop - s->t;
     double *y = s->sys.y;
-    int rc = sw_stepper_step(&s->stepper, s->sys.ode, &s->t, y, h);
+    int rc = sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
     s->steps++;
     if (rc != SW_OK) {
         blow_up(s, (s->method->flags & SW_PLUGIN)     ? "the plugin's step function returned an error"
@@ -136,10 +178,10 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     const sw_scene *sc = s->sys.scene;
     int touched = sc->post_step && sc->post_step(&s->sys, s->t, y);
     if (touched)
-        sw_stepper_touch(&s->stepper);
+        sw_stepper_touch(s->stepper);
     int n = s->sys.ode->dim;
-    int beyond = (touched || !s->stepper.checked) ? sw_state_beyond(y, 0, n, s->stepper.limit_exp)
-                                                  : s->stepper.beyond;
+    int beyond = (touched || !s->stepper->checked) ? sw_state_beyond(y, 0, n, s->stepper->limit_exp)
+                                                   : s->stepper->beyond;
     if (!beyond)
         return 0;
     for (int i = 0; i < n; i++) { /* rare: say what went wrong */

@@ -8,7 +8,7 @@
 #include <stdint.h>
 
 #include "app/app.h"
-#include "tui/canvas.h"
+#include "render/canvas.h"
 
 /* Styles past the canvas's own (SW_STYLE_*). */
 enum {

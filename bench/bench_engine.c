@@ -1,11 +1,10 @@
 /* The engine benchmark: ns per particle-step of every integrator on chain
  * (n = 1000) and vortex (n = 100000) beside hand-written loops that compute
  * the same step with no abstraction; frame cost (sim + rasterise) per scene;
- * peak RSS; and allocations counted in every step loop. Allocations are
- * counted only in the `make bench` binary, which compiles this file with
- * SW_BENCH_MAIN and links with -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc
- * so every call from our code goes through tests/support/alloc_count.c. */
-#include "cli/bench_engine.h"
+ * peak RSS; and allocations counted in every step loop. `make bench` builds
+ * it as its own program, linked with -Wl,--wrap=malloc,--wrap=calloc,
+ * --wrap=realloc so every call from our code goes through the tests'
+ * counter (tests/support/alloc_count.c). */
 
 #include <math.h>
 #include <stdio.h>
@@ -15,22 +14,18 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "engine/stepper.h"
 #include "stepwise/sim.h"
-#include "tui/canvas.h"
+#include "render/canvas.h"
 
 /* ---- allocation counting ------------------------------------------------- */
 
-#ifdef SW_BENCH_MAIN
 #include "alloc_count.h" /* the tests' counter, linked in by `make bench` */
 
-/* Allocation calls so far, or -1 when this binary cannot count them. */
+/* Allocation calls so far. */
 static long alloc_count(void) { return sw_test_allocations(); }
 /* How to re-run this binary as a memory probe. */
 static const char *const probe_prefix[] = { "--engine" };
-#else
-static long alloc_count(void) { return -1; }
-static const char *const probe_prefix[] = { "bench", "--engine" };
-#endif
 #define NPREFIX ((int)(sizeof probe_prefix / sizeof probe_prefix[0]))
 
 static double now_seconds(void)
@@ -308,7 +303,7 @@ static void throughput(const bench_opts *o)
                 steps += s.steps - s0;
                 t0 = now_seconds();
                 for (long j = 0; j < k; j++)
-                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, dt);
+                    sw_stepper_step(s.stepper, s.sys.ode, &t, s.sys.y, dt);
                 step_t[r] = (now_seconds() - t0) / ((double)k * n) * 1e9;
                 allocs += alloc_count() - a0;
                 if (has_base) {
@@ -328,11 +323,11 @@ static void throughput(const bench_opts *o)
                 const long check = 200;
                 memcpy(yb, y0, (size_t)dim * sizeof *yb);
                 memcpy(s.sys.y, y0, (size_t)dim * sizeof *y0);
-                sw_stepper_touch(&s.stepper);
+                sw_stepper_touch(s.stepper);
                 t = 0;
                 run_baseline(sc, p, m, yb, n, dt, check, &ch, work);
                 for (long j = 0; j < check; j++)
-                    sw_stepper_step(&s.stepper, s.sys.ode, &t, s.sys.y, dt);
+                    sw_stepper_step(s.stepper, s.sys.ode, &t, s.sys.y, dt);
                 double diff = 0;
                 for (int j = 0; j < dim; j++)
                     diff = fmax(diff, fabs(yb[j] - s.sys.y[j]));
@@ -580,7 +575,7 @@ static void machine(void)
                              : "on (malloc, calloc, realloc wrapped at link time)");
 }
 
-int sw_bench_engine_main(int argc, char **argv)
+static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     for (int i = 1; i < argc; i++) {
@@ -615,6 +610,4 @@ int sw_bench_engine_main(int argc, char **argv)
     return 0;
 }
 
-#ifdef SW_BENCH_MAIN
-int main(int argc, char **argv) { return sw_bench_engine_main(argc, argv); }
-#endif
+int main(int argc, char **argv) { return bench_engine_main(argc, argv); }

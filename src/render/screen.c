@@ -1,7 +1,7 @@
 /* The screen grid and the frame composer: where the scene, the status
  * lines, the stability meter, the graph and the overlays go. Pure C; the
  * layout is the same in the terminal, in `--ascii` frames and in tests. */
-#include "app/screen.h"
+#include "render/screen.h"
 
 #include <math.h>
 #include <stdio.h>

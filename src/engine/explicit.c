@@ -1,0 +1,188 @@
+/* The explicit fixed-step methods: Euler, symplectic Euler, midpoint, Heun,
+ * RK4 and velocity Verlet. Each step reads only its stepper's workspace and
+ * allocates nothing; the Runge-Kutta family runs slice by slice on pointwise
+ * systems with results bit-identical to a whole-state pass. */
+#include "engine/stepper.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+/* Explicit Runge-Kutta steps run over [lo, hi): the whole state for coupled
+ * systems, or L1-sized slices for pointwise ones (flow fields), where every
+ * stage of a slice needs only that slice. The arithmetic is the same either
+ * way, so results are bit-identical; only the memory traffic differs. */
+#define BLOCK 512
+
+/* dydt over [lo, hi) at (t, y): a slice when the system allows it. */
+static void eval_range(sw_ode *ode, double t, const double *y, double *dydt, int lo, int hi)
+{
+    if (ode->deriv_part)
+        ode->deriv_part(ode->ctx, t, hi - lo, y + lo, dydt + lo);
+    else
+        ode->deriv(ode->ctx, t, y, dydt);
+}
+
+/* A method's step over [lo, hi); returns non-zero when its final loop saw a
+ * component at or beyond the limit exponent elim (see sw_state_beyond). */
+typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                            unsigned elim);
+
+/* y_i's exponent field is at or beyond elim (inf and NaN always are). */
+static inline unsigned beyond1(double v, unsigned elim)
+{
+    unsigned long long bits;
+    memcpy(&bits, &v, sizeof bits);
+    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
+}
+
+/* Run a range step over the whole state or slice by slice, and count its
+ * evaluations once per stage. The final loops test every component against
+ * the sim's runaway limit as they write it, sparing the sim a pass. */
+static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
+    if (ode->deriv_part)
+        for (int lo = 0; lo < ode->dim; lo += BLOCK)
+            beyond |= f(s, ode, *t, y, h, lo, lo + BLOCK < ode->dim ? lo + BLOCK : ode->dim, elim);
+    else
+        beyond = f(s, ode, *t, y, h, 0, ode->dim, elim);
+    s->checked = s->limit_exp != 0;
+    s->beyond = beyond != 0;
+    ode->evals += stages;
+    *t += h;
+    return 0;
+}
+
+/* x1 = x0 + h·f(t0, x0) */
+static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                            unsigned elim)
+{
+    double *restrict k = SW_WORK(s, 0);
+    unsigned over = 0;
+    eval_range(ode, t, y, k, lo, hi);
+    for (int i = lo; i < hi; i++) {
+        y[i] += h * k[i];
+        over |= beyond1(y[i], elim);
+    }
+    return over;
+}
+
+int sw_step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return run_ranges(euler_range, 1, s, ode, t, y, h);
+}
+
+/* Semi-implicit Euler: v1 = v0 + h·a(x0, v0), then x1 = x0 + h·v1. */
+int sw_step_symplectic_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    int half = ode->dim / 2;
+    double *k = SW_WORK(s, 0);
+    sw_ode_eval(ode, *t, y, k);
+    sw_axpy(half, y + half, y + half, h, k + half);
+    sw_axpy(half, y, y, h, y + half);
+    *t += h;
+    return 0;
+}
+
+/* Explicit midpoint: k1 = f(y), k2 = f(y + h/2·k1), y1 = y + h·k2. */
+static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo,
+                               int hi, unsigned elim)
+{
+    double *restrict k = SW_WORK(s, 0), *restrict ym = SW_WORK(s, 1);
+    unsigned over = 0;
+    eval_range(ode, t, y, k, lo, hi);
+    for (int i = lo; i < hi; i++)
+        ym[i] = y[i] + 0.5 * h * k[i];
+    eval_range(ode, t + 0.5 * h, ym, k, lo, hi);
+    for (int i = lo; i < hi; i++) {
+        y[i] += h * k[i];
+        over |= beyond1(y[i], elim);
+    }
+    return over;
+}
+
+int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return run_ranges(midpoint_range, 2, s, ode, t, y, h);
+}
+
+/* Heun (explicit trapezoid): k1 = f(y), k2 = f(y + h·k1), y1 = y + h/2·(k1 + k2). */
+static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                           unsigned elim)
+{
+    double *restrict k1 = SW_WORK(s, 0), *restrict yp = SW_WORK(s, 1), *restrict k2 = SW_WORK(s, 2);
+    unsigned over = 0;
+    eval_range(ode, t, y, k1, lo, hi);
+    for (int i = lo; i < hi; i++)
+        yp[i] = y[i] + h * k1[i];
+    eval_range(ode, t + h, yp, k2, lo, hi);
+    for (int i = lo; i < hi; i++) {
+        y[i] += 0.5 * h * (k1[i] + k2[i]);
+        over |= beyond1(y[i], elim);
+    }
+    return over;
+}
+
+int sw_step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return run_ranges(heun_range, 2, s, ode, t, y, h);
+}
+
+/* Classical RK4: y1 = y + h/6·(k1 + 2k2 + 2k3 + k4). */
+static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
+                          unsigned elim)
+{
+    double *restrict k1 = SW_WORK(s, 0), *restrict k2 = SW_WORK(s, 1), *restrict k3 = SW_WORK(s, 2), *restrict k4 = SW_WORK(s, 3),
+           *restrict yt = SW_WORK(s, 4);
+    unsigned over = 0;
+    eval_range(ode, t, y, k1, lo, hi);
+    for (int i = lo; i < hi; i++)
+        yt[i] = y[i] + 0.5 * h * k1[i];
+    eval_range(ode, t + 0.5 * h, yt, k2, lo, hi);
+    for (int i = lo; i < hi; i++)
+        yt[i] = y[i] + 0.5 * h * k2[i];
+    eval_range(ode, t + 0.5 * h, yt, k3, lo, hi);
+    for (int i = lo; i < hi; i++)
+        yt[i] = y[i] + h * k3[i];
+    eval_range(ode, t + h, yt, k4, lo, hi);
+    for (int i = lo; i < hi; i++) {
+        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        over |= beyond1(y[i], elim);
+    }
+    return over;
+}
+
+int sw_step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return run_ranges(rk4_range, 4, s, ode, t, y, h);
+}
+
+/* Velocity Verlet (kick-drift-kick), one evaluation per step by reusing the
+ * last acceleration (FSAL):
+ *   v½ = v0 + h/2·a0,  x1 = x0 + h·v½,  a1 = a(x1, ṽ1),  v1 = v½ + h/2·a1.
+ * With velocity-independent forces ṽ1 does not matter and this is the
+ * symplectic leapfrog. With drag, ṽ1 = v0 + h·a0 (an Euler predictor) keeps
+ * the method second order: its O(h²) error enters a1 multiplied by h. */
+int sw_step_verlet(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    int half = ode->dim / 2;
+    double *cache = SW_WORK(s, 0), *yt = SW_WORK(s, 1);
+    double *x = y, *v = y + half, *a0 = cache + half;
+    if (!s->have_cache)
+        sw_ode_eval(ode, *t, y, cache);
+    for (int i = 0; i < half; i++) {
+        double vh = v[i] + 0.5 * h * a0[i];
+        yt[i] = x[i] + h * vh;
+        yt[half + i] = v[i] + h * a0[i];
+        x[i] = yt[i];
+        v[i] = vh;
+    }
+    sw_ode_eval(ode, *t + h, yt, cache);
+    sw_axpy(half, v, v, 0.5 * h, a0);
+    s->have_cache = 1;
+    *t += h;
+    return 0;
+}
+

@@ -1,0 +1,88 @@
+/* Private to the engine and the layers above it: the running state of one
+ * method on one system (workspace and the little memory some methods keep
+ * between steps), and the step functions of the built-in methods. The
+ * installed headers see sw_stepper only as an opaque type. */
+#ifndef SW_ENGINE_STEPPER_H
+#define SW_ENGINE_STEPPER_H
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "stepwise/integrator.h"
+
+struct sw_stepper {
+    const sw_integrator *method;
+    int dim;
+    double *work;         /* work_vectors * dim doubles, owned */
+    double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
+    int have_cache;       /* FSAL derivative in work[0..dim) is valid */
+    double rtol, atol;    /* adaptive error control; implicit Newton tolerance */
+    double h_next;        /* adaptive: proposed size of the next step (0: use h) */
+    double h_last;        /* size of the last step taken */
+    long accepted;        /* adaptive: accepted steps */
+    long rejected;        /* adaptive: rejected trial steps */
+    long newton_iters;    /* implicit: Newton iterations, summed */
+    void *plugin;         /* plugin step function, for SW_PLUGIN methods */
+    unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
+    int checked;          /* the last step tested the whole state against limit_exp */
+    int beyond;           /* ... and found a component beyond it */
+};
+
+/* Prepare a stepper for ode; 0, SW_EINVAL (wrong system kind) or SW_ENOMEM. */
+int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode,
+                    char *err, size_t errlen);
+void sw_stepper_free(sw_stepper *s);
+/* Forget caches after the state was changed from outside (contact, reset). */
+void sw_stepper_touch(sw_stepper *s);
+/* One step through the method's table entry. */
+int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
+
+/* Solve (I - c·J) z = r through ode->solve, or the dense finite-difference
+ * fallback (dim <= SW_DENSE_MAX) using s->dense. */
+int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                 const double *r, double *z);
+
+/* 1 when some y_i in [lo, hi) is non-finite or has |y_i| >= 2^(limit_exp -
+ * 1023): a test on the exponent field alone, which compilers vectorise. */
+static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limit_exp)
+{
+    unsigned over = 0;
+    for (int i = lo; i < hi; i++) {
+        unsigned long long bits;
+        memcpy(&bits, &y[i], sizeof bits);
+        over |= (unsigned)((bits >> 52) & 0x7FF) >= limit_exp;
+    }
+    return over != 0;
+}
+
+/* The built-in methods' steps, one file per family. */
+sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,
+    sw_step_rk4, sw_step_verlet;                       /* explicit.c */
+sw_step_fn sw_step_implicit_euler, sw_step_implicit_midpoint; /* implicit.c */
+sw_step_fn sw_step_rk45;                               /* rk45.c */
+
+/* Largest |v_i| over n components; NaN when any is NaN (so a failed
+ * iteration is never "converged"). */
+static inline double sw_norm_inf(int n, const double *v)
+{
+    double m = 0.0;
+    for (int i = 0; i < n; i++) {
+        double a = fabs(v[i]);
+        if (a > m || a != a)
+            m = a; /* once NaN, m stays NaN: nothing compares greater */
+    }
+    return m;
+}
+
+/* out = y + a·k over n components (out may be y). */
+static inline void sw_axpy(int n, double *out, const double *y, double a, const double *k)
+{
+    for (int i = 0; i < n; i++)
+        out[i] = y[i] + a * k[i];
+}
+
+/* Workspace vector i of a stepper. */
+#define SW_WORK(s, i) ((s)->work + (size_t)(i) * (size_t)(s)->dim)
+
+#endif

@@ -71,8 +71,10 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
  * spring j is copied to *out (a < 0 when there is no spring j). */
 int sw_particles_spring_count(const sw_particles *p);
 void sw_particles_spring(const sw_particles *p, int j, sw_spring *out);
-/* The centre of the central attraction: 1 with (*cx, *cy), or 0 when none. */
-int sw_particles_central(const sw_particles *p, double *cx, double *cy);
+/* The central attraction: 1 with its centre (*cx, *cy) and μ, or 0 when none. */
+int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *mu);
+/* The summed linear drag coefficient k (f = -k·v on every particle); 0 when none. */
+double sw_particles_drag(const sw_particles *p);
 /* Apply wall contact to y after a step; returns 1 when anything changed. */
 int sw_particles_contact(sw_particles *p, double *y);
 

@@ -201,15 +201,25 @@ void sw_particles_spring(const sw_particles *p, int j, sw_spring *out)
     out->a = -1;
 }
 
-int sw_particles_central(const sw_particles *p, double *cx, double *cy)
+int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *mu)
 {
     for (int k = 0; k < p->nforces; k++)
         if (p->forces[k].kind == SW_FORCE_CENTRAL) {
             *cx = p->forces[k].cx;
             *cy = p->forces[k].cy;
+            *mu = p->forces[k].mu;
             return 1;
         }
     return 0;
+}
+
+double sw_particles_drag(const sw_particles *p)
+{
+    double k = 0;
+    for (int i = 0; i < p->nforces; i++)
+        if (p->forces[i].kind == SW_FORCE_DRAG)
+            k += p->forces[i].k;
+    return k;
 }
 
 /* Reflect a coordinate that crossed a wall back inside, losing the fraction

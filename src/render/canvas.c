@@ -446,8 +446,8 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
         const sw_particles *p = &sys->particles;
         if (p->walls.active)
             draw_walls(c, &p->walls);
-        double cx, cy;
-        if (sw_particles_central(p, &cx, &cy))
+        double cx, cy, mu;
+        if (sw_particles_central(p, &cx, &cy, &mu))
             sw_canvas_mark(c, cx, cy, SW_GLYPH_SUN, SW_STYLE_WALL);
         draw_springs(c, sys, y, t, style);
     }

@@ -191,9 +191,10 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     int rc = sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
     s->steps++;
     if (rc != SW_OK) {
-        blow_up(s, (s->method->flags & SW_PLUGIN)     ? "the plugin's step function returned an error"
+        blow_up(s, s->stepper->why                    ? s->stepper->why
+                   : (s->method->flags & SW_PLUGIN)   ? "the plugin's step function returned an error"
                    : (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
-                                                      : "the implicit solve did not converge");
+                                                      : "the implicit solve failed");
         return 1;
     }
     const sw_scene *sc = s->sys.scene;

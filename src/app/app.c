@@ -459,6 +459,8 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
         double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
         while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
             sw_sim_step(s);
+            if (i == 0)
+                sw_app_watch_feed(a); /* every step: the energy's peaks are per step */
             n++;
         }
         if (!s->blown && s->t + slack < a->t_goal)
@@ -473,7 +475,6 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     }
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
-    sw_app_watch_feed(a);
 }
 
 void sw_app_status(sw_app *a, int i, char *buf, size_t len)

@@ -67,7 +67,9 @@ typedef struct sw_app_meter {
     double limit;               /* largest stable dt in theory here: 0 none */
     int unbounded;              /* ... no limit up to SW_DT_MAX */
     double growth;              /* ρ: growth per step of the worst mode at dt */
-    int grows;                  /* ρ > 1 + SW_TRUTH_NEUTRAL */
+    int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
+    int slow;                   /* ρ > 1 + SW_TRUTH_NEUTRAL, but too slowly to show */
+    double horizon;             /* the horizon (sw_truth_horizon) */
     int complete;               /* every eigenvalue (0: the stiffest mode only) */
     int growing;                /* physically growing modes left out */
 } sw_app_meter;

@@ -169,7 +169,9 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->complete = a->spec.complete;
             m->growing = a->spec.growing;
             m->growth = sw_truth_growth_all(s->method, &a->spec, a->dt, NULL);
-            m->grows = !(m->growth <= 1 + SW_TRUTH_NEUTRAL);
+            m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
+            m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
+            m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
             m->limit = sw_truth_limit(s->method, &a->spec, SW_DT_MAX, &m->unbounded);
             m->ok = isfinite(m->growth);
         }
@@ -181,7 +183,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
 void sw_app_watch_restart(sw_app *a)
 {
     const sw_sim *s = &a->sims[0];
-    sw_watch_init(&a->watch, a->scene->duration / 4, sw_watch_raised_level(s));
+    sw_watch_init(&a->watch, a->scene->duration, sw_watch_raised_level(s));
     a->watch.t0 = s->t;
     a->watch_m0 = a->have_truth ? sw_watch_measure(s, a->truth.sys.y) : NAN;
 }

@@ -19,7 +19,7 @@
 
 void sw_stability_config_default(sw_stability_config *c)
 {
-    *c = (sw_stability_config){ .periods = 100, .reports = 10, .min_steps = 400, .max_steps = 4000000,
+    *c = (sw_stability_config){ .periods = 100, .reports = 20, .min_steps = 400, .max_steps = 4000000,
                                 .low = 0.01, .high = 1000, .rel_tol = 1e-4, .samples = 16 };
 }
 
@@ -65,7 +65,8 @@ static double start_stiffness(const sw_scene *sc, const double *p, char *err, si
 }
 
 /* Simulated time per probe: `periods` periods of the stiffest motion (report
- * times when there is none), and at least `reports` report times. */
+ * times when there is none), and at least `reports` report times; with the
+ * defaults, the truth module's horizon. */
 static double probe_time(const sw_scene *sc, double stiff, const sw_stability_config *c)
 {
     double unit = stiff > 0 && isfinite(stiff) ? TWO_PI / stiff : sc->duration;

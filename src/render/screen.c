@@ -258,7 +258,9 @@ static void meter(sw_app *a, char *buf, size_t len, int *style)
         bar[12] = '\0';
     } else
         snprintf(lim, sizeof lim, "no stable dt");
-    const char *verdict = m.grows ? "GROWS" : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
+    const char *verdict = m.grows ? "GROWS"
+                          : m.slow ? "grows, too slowly to see"
+                          : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
     int run_grows = a->watch.verdict != SW_WATCH_STEADY;
     snprintf(buf, len, "|L|dt=%.3g %s%s%s  x%.6f/step %s%s", ldt, bar, *bar ? " " : "", lim, m.growth, verdict,
              run_grows && !m.grows ? "; run's energy grows: nonlinear" : "");

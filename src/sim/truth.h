@@ -121,6 +121,13 @@ double sw_truth_growth_all(const sw_integrator *m, const sw_spectrum *sp, double
  * one-step map is about 1e-15. */
 #define SW_TRUTH_NEUTRAL 1e-12
 
+/* The horizon a growth is judged over: 100 periods 2π/|λ| of the stiffest
+ * mode, and at least 20 report times (the stability probes run this long). */
+double sw_truth_horizon(const sw_scene *sc, double stiffest);
+/* Whether growth ρ per step of dt shows over the horizon: the mode grows by
+ * more than 1% (ρ^(T/dt) > 1.01). Slower growth is real but no run shows it. */
+int sw_truth_growth_visible(double rho, double dt, double horizon);
+
 /* The largest step h <= h_max such that every step up to it keeps the growth
  * of every mode at most 1 + SW_TRUTH_NEUTRAL: 0 when the method grows
  * already at |λ|·h = 0.01 (Euler and RK2 on an undamped oscillator grow at

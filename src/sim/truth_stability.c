@@ -23,6 +23,17 @@
  * stiffest mode. */
 #define DENSE_PARTICLES 32
 
+double sw_truth_horizon(const sw_scene *sc, double stiffest)
+{
+    double unit = stiffest > 0 && isfinite(stiffest) ? 6.283185307179586 / stiffest : sc->duration;
+    return fmax(100 * unit, 20 * sc->duration);
+}
+
+int sw_truth_growth_visible(double rho, double dt, double horizon)
+{
+    return rho > 1 && (horizon / dt) * log(rho) > log(1.01);
+}
+
 /* ---- a mode's test system --------------------------------------------------- */
 
 /* y' = J y for the 2x2 matrix J of one mode: a flow (order 1) with

@@ -16,19 +16,11 @@
 #include "app/runner.h"
 #include "stepwise/stepwise.h"
 
+/* A drive file's key: a character, or a key name (lesson/controls.h). */
 static int key_code(const char *tok)
 {
-    static const struct { const char *name; int key; } named[] = {
-        { "space", ' ' }, { "tab", SW_KEY_TAB }, { "btab", SW_KEY_BTAB }, { "pgdn", SW_KEY_PGDN },
-        { "pgup", SW_KEY_PGUP }, { "up", SW_KEY_UP }, { "down", SW_KEY_DOWN }, { "left", SW_KEY_LEFT },
-        { "right", SW_KEY_RIGHT }, { "esc", SW_KEY_ESC },
-    };
-    if (strlen(tok) == 1)
-        return (unsigned char)tok[0];
-    for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
-        if (strcmp(tok, named[i].name) == 0)
-            return named[i].key;
-    return -1;
+    int key = sw_key_find(tok);
+    return key == SW_KEY_NONE ? -1 : key;
 }
 
 static void press(sw_runner *r, sw_app *a, int key)

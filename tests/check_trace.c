@@ -226,8 +226,8 @@ START_TEST(temp_file_then_rename)
     ck_assert_int_eq(count_prefixed("t.csv.tmp."), 1);
     /* Rows are flushed as they are written: the temp file ends in a newline. */
     struct stat st;
-    ck_assert_int_eq(stat(w.tmp, &st), 0);
-    FILE *f = fopen(w.tmp, "r");
+    ck_assert_int_eq(stat(w.out.tmp, &st), 0);
+    FILE *f = fopen(w.out.tmp, "r");
     ck_assert_ptr_nonnull(f);
     fseek(f, -1, SEEK_END);
     ck_assert_int_eq(fgetc(f), '\n');

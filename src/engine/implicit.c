@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Linearised backward Euler (Baraff & Witkin): one Newton step of
  * y1 = y0 + h·f(y1) from y0, i.e. (I - h·J)·Δy = h·f(y0). Exact backward

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 struct sw_particles_solver {
     double *diag;          /* 6n: ∂f/∂x and ∂f/∂v blocks per particle */

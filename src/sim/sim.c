@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "engine/stepper.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 static double max_abs(int n, const double *v)
 {

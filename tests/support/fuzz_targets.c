@@ -10,6 +10,8 @@
 #include "lesson/lesson.h"
 #include "stepwise/scene.h"
 #include "stepwise/stepwise.h"
+#include "util/kv.h"
+#include "util/num.h"
 
 void sw_fuzz_lesson(const uint8_t *data, size_t len)
 {
@@ -68,7 +70,11 @@ void sw_fuzz_parse(const uint8_t *data, size_t len)
     sw_scene_defaults(sc, p);
     if (sw_scene_set(sc, p, text, err, sizeof err) == SW_OK) {
         /* an accepted value is inside its range */
-        int i = sw_scene_param_index(sc, strtok(text, "="));
+        sw_kv kv;
+        char name[64] = "";
+        if (sw_kv_next(text, strlen(text), 0, &kv) > 0 && kv.name_len < sizeof name)
+            snprintf(name, sizeof name, "%.*s", (int)kv.name_len, text + kv.name_at);
+        int i = sw_scene_param_index(sc, name);
         if (i < 0 || sw_scene_check_value(sc, i, p[i], err, sizeof err) != SW_OK)
             abort();
     }

@@ -2,9 +2,7 @@
 # `stepwise stability`: on the undamped spring with k = m = 1 (w = 1), the
 # printed limits are verlet 2 and rk4 2 sqrt 2 within 1%, euler 'none' and
 # implicit-euler 'unbounded'; rk45 is skipped with a reason.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 out=$("$SW" stability spring --set k=1 --set m=1 --set c=0 \
       --integrators euler,verlet,rk4,implicit-euler,rk45) || fail "stability exited $?"
 echo "$out" | grep -q 'stiffest frequency w = 1 rad/s' || fail "no w line: $out"

@@ -1,10 +1,8 @@
 #!/bin/sh
 # Runs every row of docs/robustness.md: exit 2, exactly one line on stderr
 # with the documented text, nothing on stdout, no core dump, no output file.
-doc="$(cd "$(dirname "$0")/../.." && pwd)/docs/robustness.md"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+. "$(dirname "$0")/lib.sh"
+doc="$ROOT/docs/robustness.md"
 ulimit -c unlimited 2>/dev/null
 mkdir dir
 : > empty.trace; : > empty.lesson

@@ -4,13 +4,7 @@
 # checked as euler fails, midpoint checked as heun fails, a blow-up is a
 # result (exit 0, trace ends at the diverged step), an interrupted record
 # leaves nothing under the real name, and bad options exit 2 with one line.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-root=$(cd "$(dirname "$0")/../.." && pwd)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 unset TERM
 # run CMD...: status in $rc, stdout in out, stderr in err
 run() { "$@" >out 2>err </dev/null; rc=$?; }

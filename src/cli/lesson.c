@@ -160,11 +160,14 @@ int sw_cmd_lesson(int argc, char **argv)
         return sw_cli_error("no lessons in %s (set STEPWISE_LESSONS to the lessons directory)", dir);
     }
     int rc, k = -1;
+    char why[SW_ERRLEN];
     if (optind < argc && (k = find_lesson(e, n, argv[optind])) < 0)
         rc = sw_cli_error("no lesson '%.60s' in %s; choose 1..%d or a name from 'stepwise list lessons'",
                           argv[optind], dir, n);
     else if (k >= 0 && !e[k].title)
         rc = sw_cli_error("%s", e[k].error);
+    else if (sw_progress_check(why, sizeof why) != SW_OK)
+        rc = sw_cli_error("%s; progress could not be saved (set XDG_STATE_HOME to a writable directory)", why);
     else if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
         rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson --check FILE...'");
     else

@@ -52,7 +52,12 @@ int main(int argc, char **argv)
     for (int i = 0; i < NCOMMANDS; i++)
         if (strcmp(cmd, commands[i].name) == 0) {
             int rc = commands[i].run(argc - 1, argv + 1);
-            /* Output that did not reach its destination is an error, whatever the command. */
+            /* Output that did not reach its destination is an error, whatever
+             * the command (unless it has already failed and said why). */
+            if (rc == SW_EXIT_USAGE) {
+                fflush(stdout);
+                return rc;
+            }
             return sw_cli_flush_stdout() != SW_EXIT_OK ? SW_EXIT_USAGE : rc;
         }
     if (cmd[0] == '-')

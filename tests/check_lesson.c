@@ -1,5 +1,5 @@
 /* Lesson files: every course lesson parses; every malformed file in
- * tests/lessons_bad/ fails with the expected FILE:LINE:COL; goals, answers
+ * tests/data/lessons_bad/ fails with the expected FILE:LINE:COL; goals, answers
  * and observations behave as documented; hostile bytes give errors, never
  * crashes. Tests run from the repository root. */
 #include <check.h>
@@ -14,7 +14,7 @@
 #include "lesson/lesson.h"
 
 #define LESSONS_DIR "lessons"
-#define BAD_DIR "tests/lessons_bad"
+#define BAD_DIR "tests/data/lessons_bad"
 
 /* Parse text as a lesson named "t.lesson"; returns the status. */
 static int parse(const char *text, sw_lesson *l, char *err, size_t errlen)

@@ -1,5 +1,5 @@
 /* Every lesson, driven headless page by page with the keys a student would
- * press (tests/lesson_drives/NAME.drive): proves each goal reachable and each
+ * press (tests/data/lesson_drives/NAME.drive): proves each goal reachable and each
  * page reachable through the same runner and app the terminal uses.
  *
  * A drive file has one line per page, "page N: ACTIONS", ACTIONS being keys
@@ -63,7 +63,7 @@ static void drive(const char *lesson_file)
 {
     char lesson_path[1024], drive_path[1024], err[SW_LESSON_ERRLEN], line[2048];
     snprintf(lesson_path, sizeof lesson_path, "%s/lessons/%s", repo, lesson_file);
-    snprintf(drive_path, sizeof drive_path, "%s/tests/lesson_drives/%.*s.drive", repo,
+    snprintf(drive_path, sizeof drive_path, "%s/tests/data/lesson_drives/%.*s.drive", repo,
              (int)(strlen(lesson_file) - strlen(".lesson")), lesson_file);
     FILE *f = fopen(drive_path, "r");
     ck_assert_msg(f != NULL, "no drive script %s for lesson %s", drive_path, lesson_file);

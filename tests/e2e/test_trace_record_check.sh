@@ -24,7 +24,7 @@ grep -q '^PASS' out || fail "no PASS line: $(cat out)"
 
 # the worked example of docs/trace-format.md, written by hand with only the
 # required metadata and short decimals, passes
-run "$SW" check "$root/tests/traces/spring-euler-by-hand.trace"
+run "$SW" check "$root/tests/data/traces/spring-euler-by-hand.trace"
 [ "$rc" -eq 0 ] || fail "the hand-written worked example fails: $(cat out err)"
 
 # record to stdout equals record to a file, byte for byte

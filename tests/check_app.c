@@ -119,7 +119,9 @@ START_TEST(meter_growth_matches_theory)
         for (int m = 0; m < 4; m++) {
             sw_app a;
             app_with(&a, "spring", methods[m], 0.05, sets[s]);
-            double wdt, limit, growth, k = a.p[0], mass = a.p[1], c = a.p[2];
+            const sw_scene *sc = a.scene;
+            double k = a.p[sw_scene_param_index(sc, "k")], mass = a.p[sw_scene_param_index(sc, "m")];
+            double wdt, limit, growth, c = a.p[sw_scene_param_index(sc, "c")];
             ck_assert_int_eq(sw_app_stability(&a, &wdt, &limit, &growth), 1);
             double g = c / (2 * mass), wd = sqrt(k / mass - g * g);
             double complex z = 0.05 * (-g + I * wd), r = 1 + z;

@@ -216,8 +216,8 @@ START_TEST(implicit_euler_tiny_state)
     const sw_scene *sc = sw_scene_find("spring");
     double p[SW_MAX_PARAMS];
     sw_scene_defaults(sc, p);
-    p[0] = 1.0; /* k */
-    p[2] = 0.0; /* c */
+    p[sw_scene_param_index(sc, "k")] = 1.0;
+    p[sw_scene_param_index(sc, "c")] = 0.0;
     ck_assert_int_eq(sw_sim_init(&s, sc, p, sw_integrator_find("implicit-euler"), 0.5, err, sizeof err), SW_OK);
     for (int i = 0; i < 2500; i++)
         ck_assert_msg(sw_sim_step(&s) == 0, "step %d: %s", i + 1, s.blow_reason);

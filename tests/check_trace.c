@@ -182,7 +182,7 @@ START_TEST(write_then_read_bit_for_bit)
     ck_assert_double_eq(r.meta.dt, 0.01);
     ck_assert_int_eq(r.meta.spec.steps, 100);
     ck_assert_int_eq(r.meta.spec.every, 7);
-    ck_assert_double_eq(r.meta.p[0], 4.0);
+    ck_assert_double_eq(r.meta.p[sw_scene_param_index(r.meta.scene, "n")], 4.0);
     ck_assert_double_eq(r.meta.rtol, SW_RTOL_DEFAULT);
     ck_assert_msg(sw_trace_read_header(&r, err, sizeof err) == SW_OK, "%s", err);
     ck_assert_int_eq(r.ncols, 2 + 16 + 1);

@@ -1,8 +1,8 @@
 /* stepwise — numerical integration of particle systems, taught in a terminal.
  * Umbrella header: every public module. An embedder includes this; a plugin
  * needs only <stepwise/integrator.h> (see docs/plugins.md). */
-#ifndef STEPWISE_H
-#define STEPWISE_H
+#ifndef STEPWISE_STEPWISE_H
+#define STEPWISE_STEPWISE_H
 
 #include "stepwise/base.h"        /* version, status codes */
 #include "stepwise/ode.h"         /* the solver's view of a system */

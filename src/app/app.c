@@ -9,8 +9,7 @@
 #include <string.h>
 
 #include "lab/bench.h"
-#include "app/measure.h"
-#include "stepwise/base.h"
+#include "stepwise/stepwise.h"
 
 
 static void series_clear(sw_series *s)
@@ -69,19 +68,11 @@ static void free_bench(sw_app *a)
     a->workprec = 0;
 }
 
-static void free_ref(sw_app *a)
-{
-    if (a->have_ref)
-        sw_sim_free(&a->ref);
-    a->have_ref = 0;
-}
-
 static void free_sims(sw_app *a)
 {
     for (int i = 0; i < a->nsims; i++)
         sw_sim_free(&a->sims[i]);
     a->nsims = 0;
-    free_ref(a);
 }
 
 static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
@@ -95,15 +86,8 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
     if (rc != SW_OK)
         return rc;
     a->nsims = 1;
-    double *g = realloc(a->ghost_y, (size_t)a->sims[0].sys.ode->dim * sizeof *g);
-    if (!g) {
-        free_sims(a);
-        snprintf(err, errlen, "out of memory");
-        return SW_ENOMEM;
-    }
-    a->ghost_y = g;
-    a->exact_ok = a->scene->exact && a->scene->exact(&a->sims[0].sys, 0.0, a->ghost_y) == 0;
-    a->ghost_t = NAN;
+    sw_app_truth_reset(a);
+    sw_app_watch_restart(a);
     if (a->compare) {
         for (int i = 0; i < 2; i++) {
             const sw_integrator *cm = a->compare_methods[i];
@@ -116,8 +100,6 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
             a->nsims++;
         }
     }
-    if (a->ghost)
-        sw_app_ensure_ref(a);
     a->t_goal = 0;
     a->nmeas = 0;
     a->error_ratio = NAN;
@@ -146,8 +128,8 @@ void sw_app_free(sw_app *a)
     sw_app_record_stop(a);
     free_bench(a);
     free_sims(a);
-    free(a->ghost_y);
-    a->ghost_y = NULL;
+    a->scene = NULL;
+    sw_app_truth_reset(a); /* frees it */
 }
 
 int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen)
@@ -192,6 +174,7 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m)
                 a->compare_methods[i - 1] = a->sims[i].method;
             }
     snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, m->label);
+    sw_app_watch_restart(a);
     return SW_OK;
 }
 
@@ -204,6 +187,7 @@ int sw_app_set_dt(sw_app *a, double dt)
             return SW_EINVAL;
         }
     a->dt = dt;
+    sw_app_watch_restart(a);
     return SW_OK;
 }
 
@@ -238,12 +222,7 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
     return SW_OK;
 }
 
-void sw_app_set_ghost(sw_app *a, int on)
-{
-    a->ghost = on;
-    if (on)
-        sw_app_ensure_ref(a);
-}
+void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
 
 void sw_app_reset(sw_app *a)
 {
@@ -252,12 +231,11 @@ void sw_app_reset(sw_app *a)
         sw_app_record_stop(a);
     for (int i = 0; i < a->nsims; i++)
         sw_sim_reset(&a->sims[i], err, sizeof err);
-    if (a->have_ref)
-        sw_sim_reset(&a->ref, err, sizeof err);
     a->t_goal = 0;
     a->slowmo = 1.0;
     for (int i = 0; i < SW_APP_SIMS; i++)
         series_clear(&a->series[i]);
+    sw_app_watch_restart(a);
 }
 
 static int method_index(const sw_integrator *m)
@@ -359,6 +337,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         for (int i = 0; i < a->nsims; i++)
             sw_sim_step(&a->sims[i]);
         a->t_goal = a->sims[0].t;
+        sw_app_watch_feed(a);
         return 1;
     case SW_ACT_RESET:
         sw_app_reset(a);
@@ -381,11 +360,14 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     case SW_ACT_GHOST:
         sw_app_set_ghost(a, !a->ghost);
-        if (a->ghost && !a->exact_ok && !a->have_ref)
-            snprintf(a->message, sizeof a->message, "no exact solution or reference for %s here", a->scene->name);
+        if (a->ghost && (!a->have_truth || a->truth.source == SW_TRUTH_NONE))
+            snprintf(a->message, sizeof a->message, "no ghost: %s", a->have_truth ? a->truth.why : "no truth");
+        else if (!a->ghost)
+            snprintf(a->message, sizeof a->message, "ghost off");
+        else if (a->truth.source == SW_TRUTH_EXACT)
+            snprintf(a->message, sizeof a->message, "ghost on: the exact solution");
         else
-            snprintf(a->message, sizeof a->message, "ghost %s",
-                     !a->ghost ? "off" : a->exact_ok ? "on: the exact solution" : "on: a tight rk45 reference run");
+            snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
         return 1;
     case SW_ACT_TRAILS:
         a->trails = !a->trails;
@@ -483,6 +465,8 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
         double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
         while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
             sw_sim_step(s);
+            if (i == 0)
+                sw_app_watch_feed(a); /* every step: the energy's peaks are per step */
             n++;
         }
         if (!s->blown && s->t + slack < a->t_goal)

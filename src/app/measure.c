@@ -1,96 +1,58 @@
-/* What the app measures about accuracy and stability: the ghost's state
- * (exact, or a tight rk45 reference run in lockstep), the live error, the
- * error at the report time after a dt change, and the growth per step of
- * the stiffest mode. Moved here from app.c unchanged; the truth module in
- * sim/ is to answer these questions for every front end. */
-#include "app/measure.h"
+/* What the live app measures, all of it asked of the truth module: the
+ * ghost (the true state now), each sim's error, the error at the report time
+ * when Δt changes (and whether its ratio can be read as an order), and the
+ * stability meter. Pure C, no terminal. Invariant: nothing here steps a sim
+ * on screen; measurements run on their own sims and on the truth's copy of
+ * the system, so reading a number never changes what is shown. */
+#include "app/app.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/stepper.h"
-#include "stepwise/base.h"
+#include "stepwise/stepwise.h"
 
-#define REF_RTOL 1e-11
-#define REF_ATOL 1e-13
 /* Largest headless measurement run (state components × steps) on a key press. */
 #define MEASURE_BUDGET 4e7
 
-/* Start the reference run a ghost or an error needs when there is no exact
- * solution: rk45 at tight tolerance, advanced in lockstep with the main sim. */
-void sw_app_ensure_ref(sw_app *a)
+void sw_app_truth_reset(sw_app *a)
 {
-    if (a->have_ref || !a->scene->reference || a->exact_ok)
-        return;
+    if (a->have_truth)
+        sw_truth_free(&a->truth);
+    a->have_truth = a->have_truth_report = 0;
+    a->have_spec0 = a->have_spec = 0;
+    a->meter.ok = 0;
+    a->meter.method = NULL;
+    free(a->truth_report);
+    a->truth_report = NULL;
     char err[SW_ERRLEN];
-    if (sw_sim_init(&a->ref, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
-        return;
-    sw_sim_set_tolerances(&a->ref, REF_RTOL, REF_ATOL);
-    a->have_ref = 1;
-}
-
-/* The state the ghost shows at time t: exact, or the reference advanced to t.
- * Returns 0 when there is neither. */
-static int ghost_state(sw_app *a, double t, const double **y)
-{
-    if (a->exact_ok) {
-        if (a->ghost_t != t) { /* once per time, shared by the ghost and every error */
-            a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
-            a->ghost_t = t;
-        }
-        *y = a->ghost_y;
-        return 1;
-    }
-    sw_app_ensure_ref(a);
-    if (!a->have_ref)
-        return 0;
-    if (a->ref.t > t + 1e-12) {
-        char err[SW_ERRLEN];
-        sw_sim_reset(&a->ref, err, sizeof err);
-    }
-    sw_sim_run_until(&a->ref, t);
-    if (a->ref.blown || fabs(a->ref.t - t) > 1e-9 * fmax(1.0, t))
-        return 0;
-    *y = a->ref.sys.y;
-    return 1;
+    if (a->scene && sw_truth_init(&a->truth, a->scene, a->p, err, sizeof err) == SW_OK)
+        a->have_truth = 1;
 }
 
 const double *sw_app_ghost(sw_app *a)
 {
-    const double *g;
-    return ghost_state(a, a->sims[0].t, &g) ? g : NULL;
+    return a->have_truth ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
 double sw_app_error(sw_app *a, int i)
 {
     const sw_sim *s = &a->sims[i];
-    const double *g;
-    if (s->blown || !ghost_state(a, s->t, &g))
-        return NAN;
-    double m = 0;
-    for (int k = 0; k < s->sys.ode->dim; k++) {
-        double d = fabs(s->sys.y[k] - g[k]);
-        if (!(d <= m))
-            m = d;
-    }
-    return m;
+    const double *g = s->blown || !a->have_truth ? NULL : sw_truth_at(&a->truth, s->t);
+    return g ? sw_truth_error(s->sys.ode->dim, s->sys.y, g) : NAN;
 }
 
-/* Reference state at the report time, from a fresh tight rk45 run. */
-static int reference_at(const sw_app *a, double T, double *out)
+/* The true state at the report time, computed once per scene. */
+static const double *truth_report(sw_app *a)
 {
-    sw_sim r;
-    char err[SW_ERRLEN];
-    if (sw_sim_init(&r, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
-        return 0;
-    sw_sim_set_tolerances(&r, REF_RTOL, REF_ATOL);
-    int ok = sw_sim_run_until(&r, T) == 0;
-    if (ok)
-        memcpy(out, r.sys.y, (size_t)r.sys.ode->dim * sizeof *out);
-    sw_sim_free(&r);
-    return ok;
+    if (!a->have_truth_report && a->have_truth) {
+        int dim = a->truth.sys.ode->dim;
+        a->truth_report = malloc((size_t)dim * sizeof *a->truth_report);
+        if (a->truth_report && sw_truth_state(a->scene, a->p, a->scene->duration, a->truth_report) == 0)
+            a->have_truth_report = 1;
+    }
+    return a->have_truth_report ? a->truth_report : NULL;
 }
 
 double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
@@ -100,28 +62,37 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
     int dim = a->sims[0].sys.ode->dim;
     if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
         return NAN;
-    int exact = a->exact_ok;
-    if (!exact && !sc->reference)
+    const double *want = truth_report(a);
+    if (!want)
         return NAN;
-    double *want = malloc((size_t)dim * sizeof *want);
     sw_sim s;
     char err[SW_ERRLEN];
     double e = NAN;
-    if (want && sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
-        if (sw_sim_run_until(&s, T) == 0 &&
-            (exact ? sc->exact(&s.sys, s.t, want) == 0 : reference_at(a, s.t, want))) {
-            e = 0;
-            for (int k = 0; k < dim; k++)
-                e = fmax(e, fabs(s.sys.y[k] - want[k]));
-        }
+    if (sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
+        if (sw_sim_run_until(&s, T) == 0 && fabs(s.t - T) <= 1e-9 * fmax(1.0, T))
+            e = sw_truth_error(dim, s.sys.y, want);
         sw_sim_free(&s);
     }
-    free(want);
     return e;
 }
 
-/* After a dt change: measure the error at the report time at both steps and
- * tell the student the ratio (≈ 2^order when the step halves). */
+/* The spectrum at the start (for the dt-change check), once per scene. */
+static const sw_spectrum *spectrum0(sw_app *a)
+{
+    if (!a->have_spec0 && a->have_truth)
+        a->have_spec0 = sw_truth_spectrum(&a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
+    return a->have_spec0 ? &a->spec0 : NULL;
+}
+
+/* How much the method's worst mode grows over a run to the report time at
+ * dt: ρ^(T/dt); NaN when unknown (adaptive, no spectrum). */
+static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *rho)
+{
+    const sw_spectrum *sp = spectrum0(a);
+    *rho = sp ? sw_truth_growth_all(m, sp, dt, NULL) : NAN;
+    return pow(*rho, a->scene->duration / dt);
+}
+
 void sw_app_measure_dt_change(sw_app *a, double old_dt)
 {
     const sw_integrator *m = a->sims[0].method;
@@ -132,71 +103,95 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     a->meas_dt[1] = a->dt;
     a->meas_err[1] = e_new;
     a->nmeas = 2;
+    double big_dt = fmax(old_dt, a->dt);
     double big = old_dt > a->dt ? e_old : e_new, small = old_dt > a->dt ? e_new : e_old;
-    a->error_ratio = big / small;
-    if (isfinite(a->error_ratio) && small > 0)
-        snprintf(a->message, sizeof a->message,
-                 "dt=%g: error at t=%.3g is %.3g (was %.3g at dt=%g): ratio %.3g, order ~%.2f",
-                 a->dt, a->scene->duration, e_new, e_old, old_dt, a->error_ratio, log2(a->error_ratio));
-    else
-        snprintf(a->message, sizeof a->message, "dt=%g", a->dt);
-}
-
-/* Spectral radius of one step of method m on x'' = -2γx' - ω²x: step the two
- * unit states, read the 2x2 one-step matrix, take its largest |eigenvalue|.
- * Exact for every method that is linear on linear problems (all built-ins);
- * NaN for adaptive methods, whose step is not fixed. */
-static double growth_per_step(const sw_integrator *m, double w, double g, double dt)
-{
-    if (m->flags & SW_ADAPTIVE)
-        return NAN;
-    sw_particles p;
-    sw_stepper st;
-    char err[SW_ERRLEN];
-    double mat[2][2], rho = NAN;
-    if (sw_particles_init(&p, 1, 1.0, err, sizeof err) != SW_OK)
-        return NAN;
-    sw_spring *sp = sw_particles_add_springs(&p, 1);
-    if (sp && sw_stepper_init(&st, m, &p.ode, err, sizeof err) == SW_OK) {
-        /* anchored 10 to the left at rest length 10: along x the force is
-         * exactly -ω²x - 2γx', with a direction defined at x = 0 */
-        *sp = (sw_spring){ .a = 0, .b = -1, .k = w * w, .c = 2 * g, .rest = 10.0, .ax = -10.0 };
-        int ok = 1;
-        for (int col = 0; col < 2 && ok; col++) {
-            double t = 0;
-            memset(p.y, 0, 4 * sizeof *p.y);
-            p.y[col ? 2 : 0] = 1e-3;
-            sw_stepper_touch(&st);
-            ok = sw_stepper_step(&st, &p.ode, &t, p.y, dt) == SW_OK;
-            mat[0][col] = p.y[0] / 1e-3;
-            mat[1][col] = p.y[2] / 1e-3;
-        }
-        if (ok) {
-            double tr = mat[0][0] + mat[1][1], det = mat[0][0] * mat[1][1] - mat[0][1] * mat[1][0];
-            double disc = tr * tr / 4 - det;
-            rho = disc >= 0 ? fabs(tr / 2) + sqrt(disc) : sqrt(fabs(det));
-        }
-        sw_stepper_free(&st);
+    double ratio = big / small, T = a->scene->duration;
+    a->error_ratio = NAN;
+    if (!isfinite(ratio) || !(small > 0)) {
+        snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt,
+                 isnan(e_new) || isnan(e_old) ? "no error to compare (a run blew up, or no truth here)"
+                                               : "the error is zero at one step: no ratio");
+        return;
     }
-    sw_particles_free(&p);
-    return rho;
+    /* An order can be read from the ratio only where both runs are in the
+     * asymptotic range: no mode grows much over the run (else the ratio
+     * measures growth), and the error is small against the motion. */
+    double rho, grow = run_growth(a, m, big_dt, &rho);
+    const double *want = truth_report(a);
+    double scale = 1e-300;
+    for (int k = 0; want && k < a->sims[0].sys.ode->dim; k++)
+        scale = fmax(scale, fabs(want[k]));
+    char head[160];
+    snprintf(head, sizeof head, "dt=%g: error %.3g at t=%.3g (was %.3g at dt=%g), ratio %.3g", a->dt, e_new, T,
+             e_old, old_dt, ratio);
+    if (grow > 2) {
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
+                 "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
+    } else if (big > 0.5 * scale) {
+        snprintf(a->message, sizeof a->message, "%s: not an order yet - the error is %.0f%% of the motion; "
+                 "halve dt again", head, 100 * big / scale);
+    } else {
+        a->error_ratio = ratio;
+        snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));
+    }
 }
 
-int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth)
+/* Refresh the spectrum as the state moves: twenty times per report time,
+ * or on a reset (time went back). */
+static void refresh_spectrum(sw_app *a)
 {
     const sw_sim *s = &a->sims[0];
-    if (!a->scene->omega_max)
+    double every = a->scene->duration / 20;
+    if (a->have_spec && s->t >= a->spec_t && s->t - a->spec_t < every)
+        return;
+    a->have_spec = sw_truth_spectrum(&a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
+    a->spec_t = s->t;
+    a->meter.method = NULL; /* read again */
+}
+
+int sw_app_stability(sw_app *a, sw_app_meter *out)
+{
+    const sw_sim *s = &a->sims[0];
+    sw_app_meter *m = &a->meter;
+    if (!a->have_truth || (s->method->flags & SW_ADAPTIVE) || s->blown) {
+        m->ok = 0;
+        *out = *m;
         return 0;
-    double w = a->scene->omega_max(&s->sys), g = a->scene->damping ? a->scene->damping(&s->sys) : 0.0;
-    *omega_dt = w * a->dt;
-    *limit = s->method->stability;
-    if (a->growth_method != s->method || a->growth_w != w || a->growth_g != g || a->growth_dt != a->dt) {
-        a->growth_method = s->method;
-        a->growth_w = w;
-        a->growth_g = g;
-        a->growth_dt = a->dt;
-        a->growth = growth_per_step(s->method, w, g, a->dt);
     }
-    *growth = a->growth;
-    return 1;
+    refresh_spectrum(a);
+    if (m->method != s->method || m->dt != a->dt) {
+        memset(m, 0, sizeof *m);
+        m->method = s->method;
+        m->dt = a->dt;
+        m->t = a->spec_t;
+        if (a->have_spec) {
+            m->stiff = a->spec.largest;
+            m->complete = a->spec.complete;
+            m->growing = a->spec.growing;
+            m->growth = sw_truth_growth_all(s->method, &a->spec, a->dt, NULL);
+            m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
+            m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
+            m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
+            m->limit = sw_truth_limit(s->method, &a->spec, SW_DT_MAX, &m->unbounded);
+            m->ok = isfinite(m->growth);
+        }
+    }
+    *out = *m;
+    return m->ok;
+}
+
+void sw_app_watch_restart(sw_app *a)
+{
+    const sw_sim *s = &a->sims[0];
+    sw_watch_init(&a->watch, a->scene->duration, sw_watch_raised_level(s));
+    a->watch.t0 = s->t;
+    a->watch_m0 = a->have_truth ? sw_watch_measure(s, a->truth.sys.y) : NAN;
+}
+
+void sw_app_watch_feed(sw_app *a)
+{
+    const sw_sim *s = &a->sims[0];
+    if (!(a->watch_m0 > 0) || s->blown)
+        return;
+    sw_watch_add(&a->watch, s->t, sw_watch_measure(s, a->truth.sys.y) / a->watch_m0);
 }

@@ -9,33 +9,10 @@
 
 #include "stepwise/stepwise.h"
 
-/* Explicit Runge-Kutta steps run over [lo, hi): the whole state for coupled
- * systems, or L1-sized slices for pointwise ones (flow fields), where every
- * stage of a slice needs only that slice. The arithmetic is the same either
- * way, so results are bit-identical; only the memory traffic differs. */
-#define BLOCK 512
-
-/* dydt over [lo, hi) at (t, y): a slice when the system allows it. */
-static void eval_range(sw_ode *ode, double t, const double *y, double *dydt, int lo, int hi)
-{
-    if (ode->deriv_part)
-        ode->deriv_part(ode->ctx, t, hi - lo, y + lo, dydt + lo);
-    else
-        ode->deriv(ode->ctx, t, y, dydt);
-}
-
 /* A method's step over [lo, hi); returns non-zero when its final loop saw a
  * component at or beyond the limit exponent elim (see sw_state_beyond). */
 typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                             unsigned elim);
-
-/* y_i's exponent field is at or beyond elim (inf and NaN always are). */
-static inline unsigned beyond1(double v, unsigned elim)
-{
-    unsigned long long bits;
-    memcpy(&bits, &v, sizeof bits);
-    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
-}
 
 /* Run a range step over the whole state or slice by slice, and count its
  * evaluations once per stage. The final loops test every component against
@@ -44,8 +21,8 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
 {
     unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
     if (ode->deriv_part)
-        for (int lo = 0; lo < ode->dim; lo += BLOCK)
-            beyond |= f(s, ode, *t, y, h, lo, lo + BLOCK < ode->dim ? lo + BLOCK : ode->dim, elim);
+        for (int lo = 0; lo < ode->dim; lo += SW_SLICE)
+            beyond |= f(s, ode, *t, y, h, lo, lo + SW_SLICE < ode->dim ? lo + SW_SLICE : ode->dim, elim);
     else
         beyond = f(s, ode, *t, y, h, 0, ode->dim, elim);
     s->checked = s->limit_exp != 0;
@@ -61,10 +38,10 @@ static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restri
 {
     double *restrict k = SW_WORK(s, 0);
     unsigned over = 0;
-    eval_range(ode, t, y, k, lo, hi);
+    sw_eval_range(ode, t, y, k, lo, hi);
     for (int i = lo; i < hi; i++) {
         y[i] += h * k[i];
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -92,13 +69,13 @@ static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *res
 {
     double *restrict k = SW_WORK(s, 0), *restrict ym = SW_WORK(s, 1);
     unsigned over = 0;
-    eval_range(ode, t, y, k, lo, hi);
+    sw_eval_range(ode, t, y, k, lo, hi);
     for (int i = lo; i < hi; i++)
         ym[i] = y[i] + 0.5 * h * k[i];
-    eval_range(ode, t + 0.5 * h, ym, k, lo, hi);
+    sw_eval_range(ode, t + 0.5 * h, ym, k, lo, hi);
     for (int i = lo; i < hi; i++) {
         y[i] += h * k[i];
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -114,13 +91,13 @@ static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restric
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict yp = SW_WORK(s, 1), *restrict k2 = SW_WORK(s, 2);
     unsigned over = 0;
-    eval_range(ode, t, y, k1, lo, hi);
+    sw_eval_range(ode, t, y, k1, lo, hi);
     for (int i = lo; i < hi; i++)
         yp[i] = y[i] + h * k1[i];
-    eval_range(ode, t + h, yp, k2, lo, hi);
+    sw_eval_range(ode, t + h, yp, k2, lo, hi);
     for (int i = lo; i < hi; i++) {
         y[i] += 0.5 * h * (k1[i] + k2[i]);
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -137,19 +114,19 @@ static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict
     double *restrict k1 = SW_WORK(s, 0), *restrict k2 = SW_WORK(s, 1), *restrict k3 = SW_WORK(s, 2), *restrict k4 = SW_WORK(s, 3),
            *restrict yt = SW_WORK(s, 4);
     unsigned over = 0;
-    eval_range(ode, t, y, k1, lo, hi);
+    sw_eval_range(ode, t, y, k1, lo, hi);
     for (int i = lo; i < hi; i++)
         yt[i] = y[i] + 0.5 * h * k1[i];
-    eval_range(ode, t + 0.5 * h, yt, k2, lo, hi);
+    sw_eval_range(ode, t + 0.5 * h, yt, k2, lo, hi);
     for (int i = lo; i < hi; i++)
         yt[i] = y[i] + 0.5 * h * k2[i];
-    eval_range(ode, t + 0.5 * h, yt, k3, lo, hi);
+    sw_eval_range(ode, t + 0.5 * h, yt, k3, lo, hi);
     for (int i = lo; i < hi; i++)
         yt[i] = y[i] + h * k3[i];
-    eval_range(ode, t + h, yt, k4, lo, hi);
+    sw_eval_range(ode, t + h, yt, k4, lo, hi);
     for (int i = lo; i < hi; i++) {
         y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }

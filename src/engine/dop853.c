@@ -65,16 +65,15 @@ static const double ER1 = 0.1312004499419488073250102996e-1, ER6 = -0.1225156446
  * and slots 0 and 3 swap the roles of k1 and k4 from step to step. */
 enum { S_K2 = 1, S_K3 = 2, S_K4 = 3, S_K5 = 4, S_K6, S_K7, S_K8, S_K9, S_K10, S_YT, S_SAVED, DOP853_VECTORS };
 
-static void dop853_trial(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
-                         unsigned elim, sw_trial_sums *sums)
+/* The stages over [lo, hi). Every vector is a restrict parameter, so the
+ * compiler knows they do not overlap and vectorises each stage loop
+ * without run-time overlap checks. k11 and k12 are written into k2 and k3. */
+static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, int lo, int hi, unsigned elim,
+                         double atol, double rtol, const double *restrict k1, double *restrict k2,
+                         double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
+                         double *restrict k7, double *restrict k8, double *restrict k9, double *restrict k10,
+                         double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
-    int other = s->fsal ? 0 : S_K4;
-    const double *restrict k1 = SW_WORK(s, s->fsal);
-    double *restrict k2 = SW_WORK(s, S_K2), *restrict k3 = SW_WORK(s, S_K3), *restrict k4 = SW_WORK(s, other),
-           *restrict k5 = SW_WORK(s, S_K5), *restrict k6 = SW_WORK(s, S_K6), *restrict k7 = SW_WORK(s, S_K7),
-           *restrict k8 = SW_WORK(s, S_K8), *restrict k9 = SW_WORK(s, S_K9), *restrict k10 = SW_WORK(s, S_K10),
-           *restrict k11 = k2, *restrict k12 = k3, *restrict yt = SW_WORK(s, S_YT),
-           *restrict saved = SW_WORK(s, S_SAVED);
     int i;
     for (i = lo; i < hi; i++)
         yt[i] = y[i] + h * (A2_1 * k1[i]);
@@ -108,37 +107,48 @@ static void dop853_trial(sw_stepper *s, sw_ode *ode, double t, double *restrict 
     for (i = lo; i < hi; i++)
         yt[i] = y[i] + h * (A11_1 * k1[i] + A11_4 * k4[i] + A11_5 * k5[i] + A11_6 * k6[i] + A11_7 * k7[i] +
                             A11_8 * k8[i] + A11_9 * k9[i] + A11_10 * k10[i]);
-    sw_eval_range(ode, t + C11 * h, yt, k11, lo, hi);
+    sw_eval_range(ode, t + C11 * h, yt, k2, lo, hi); /* k11 */
     for (i = lo; i < hi; i++)
         yt[i] = y[i] + h * (A12_1 * k1[i] + A12_4 * k4[i] + A12_5 * k5[i] + A12_6 * k6[i] + A12_7 * k7[i] +
-                            A12_8 * k8[i] + A12_9 * k9[i] + A12_10 * k10[i] + A12_11 * k11[i]);
-    sw_eval_range(ode, t + h, yt, k12, lo, hi);
-    /* The new state in place (the old one saved for a retry), its runaway
-     * test, and both error sums, with sk = atol + rtol·max(|y0|, |y1|).
-     * Even and odd components sum apart: two independent chains, so the
-     * loop is not bound by one chain of additions. */
-    double e5s[2] = { 0, 0 }, e3s[2] = { 0, 0 };
+                            A12_8 * k8[i] + A12_9 * k9[i] + A12_10 * k10[i] + A12_11 * k2[i]);
+    sw_eval_range(ode, t + h, yt, k3, lo, hi); /* k12 */
+    /* The new state in place (the old one saved for a retry) and its runaway
+     * test; b·k kept in yt for the error estimates. */
     unsigned over = 0;
-    for (i = lo; i < hi; i += 2)
-        for (int j = 0; j < 2 && i + j < hi; j++) {
-            double y0 = y[i + j];
-            double bk = B1 * k1[i + j] + B6 * k6[i + j] + B7 * k7[i + j] + B8 * k8[i + j] + B9 * k9[i + j] +
-                        B10 * k10[i + j] + B11 * k11[i + j] + B12 * k12[i + j];
-            double y1 = y0 + h * bk, a0 = fabs(y0), a1 = fabs(y1);
-            saved[i + j] = y0;
-            y[i + j] = y1;
-            over |= sw_beyond1(y1, elim);
-            double r = 1.0 / (s->atol + s->rtol * (a1 > a0 ? a1 : a0));
-            double e3 = (bk - BHH1 * k1[i + j] - BHH9 * k9[i + j] - BHH12 * k12[i + j]) * r;
-            double e5 = (ER1 * k1[i + j] + ER6 * k6[i + j] + ER7 * k7[i + j] + ER8 * k8[i + j] +
-                         ER9 * k9[i + j] + ER10 * k10[i + j] + ER11 * k11[i + j] + ER12 * k12[i + j]) * r;
-            e3s[j] += e3 * e3;
-            e5s[j] += e5 * e5;
-        }
-    sums->err += e5s[0] + e5s[1];
-    sums->err3 += e3s[0] + e3s[1];
+    for (i = lo; i < hi; i++) {
+        double y0 = y[i];
+        double bk = B1 * k1[i] + B6 * k6[i] + B7 * k7[i] + B8 * k8[i] + B9 * k9[i] + B10 * k10[i] +
+                    B11 * k2[i] + B12 * k3[i];
+        double y1 = y0 + h * bk;
+        saved[i] = y0;
+        yt[i] = bk;
+        y[i] = y1;
+        over |= sw_beyond1(y1, elim);
+    }
+    /* Both error sums, each term scaled by sk = atol + rtol·max(|y0|, |y1|). */
+    double e5sum = sums->err, e3sum = sums->err3;
+    for (i = lo; i < hi; i++) {
+        double a0 = fabs(saved[i]), a1 = fabs(y[i]);
+        double r = 1.0 / (atol + rtol * (a1 > a0 ? a1 : a0));
+        double e3 = (yt[i] - BHH1 * k1[i] - BHH9 * k9[i] - BHH12 * k3[i]) * r;
+        double e5 = (ER1 * k1[i] + ER6 * k6[i] + ER7 * k7[i] + ER8 * k8[i] + ER9 * k9[i] + ER10 * k10[i] +
+                     ER11 * k2[i] + ER12 * k3[i]) * r;
+        e3sum += e3 * e3;
+        e5sum += e5 * e5;
+    }
+    sums->err = e5sum;
+    sums->err3 = e3sum;
     sums->beyond |= over;
     sw_eval_range(ode, t + h, y, k4, lo, hi); /* FSAL: the next step's k1 */
+}
+
+static void dop853_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                         unsigned elim, sw_trial_sums *sums)
+{
+    dop853_range(ode, t, y, h, lo, hi, elim, s->atol, s->rtol, SW_WORK(s, s->fsal), SW_WORK(s, S_K2),
+                 SW_WORK(s, S_K3), SW_WORK(s, s->fsal ? 0 : S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
+                 SW_WORK(s, S_K7), SW_WORK(s, S_K8), SW_WORK(s, S_K9), SW_WORK(s, S_K10), SW_WORK(s, S_YT),
+                 SW_WORK(s, S_SAVED), sums);
 }
 
 static const sw_adaptive dop853 = {

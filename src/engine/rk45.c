@@ -26,15 +26,14 @@ static const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 
 /* Slots: k1 and k7 alternate between 0 and 6 (FSAL). */
 enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };
 
-/* Error norm: RMS of h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
-static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
-                       unsigned elim, sw_trial_sums *sums)
+/* The stages over [lo, hi), every vector a restrict parameter (so the stage
+ * loops vectorise without overlap checks). Error norm: RMS of
+ * h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
+static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int lo, int hi, unsigned elim,
+                       double atol, double rtol, const double *restrict k1, double *restrict k2,
+                       double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
+                       double *restrict k7, double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
-    int other = s->fsal ? 0 : S_K7;
-    const double *restrict k1 = SW_WORK(s, s->fsal);
-    double *restrict k2 = SW_WORK(s, S_K2), *restrict k3 = SW_WORK(s, S_K3), *restrict k4 = SW_WORK(s, S_K4),
-           *restrict k5 = SW_WORK(s, S_K5), *restrict k6 = SW_WORK(s, S_K6), *restrict k7 = SW_WORK(s, other),
-           *restrict yt = SW_WORK(s, S_YT), *restrict saved = SW_WORK(s, S_SAVED);
     int i;
     for (i = lo; i < hi; i++)
         yt[i] = y[i] + h * (A21 * k1[i]);
@@ -63,11 +62,19 @@ static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *restrict y,
     for (i = lo; i < hi; i++) {
         double e = E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i];
         double a0 = fabs(saved[i]), a1 = fabs(y[i]);
-        double q = h * e / (s->atol + s->rtol * (a1 > a0 ? a1 : a0));
+        double q = h * e / (atol + rtol * (a1 > a0 ? a1 : a0));
         sum += q * q;
     }
     sums->err = sum;
     sums->beyond |= over;
+}
+
+static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                       unsigned elim, sw_trial_sums *sums)
+{
+    rk45_range(ode, t, y, h, lo, hi, elim, s->atol, s->rtol, SW_WORK(s, s->fsal), SW_WORK(s, S_K2),
+               SW_WORK(s, S_K3), SW_WORK(s, S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
+               SW_WORK(s, s->fsal ? 0 : S_K7), SW_WORK(s, S_YT), SW_WORK(s, S_SAVED), sums);
 }
 
 static const sw_adaptive rk45 = {

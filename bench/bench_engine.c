@@ -21,33 +21,13 @@
 /* ---- allocation counting ------------------------------------------------- */
 
 #include "alloc_count.h" /* the tests' counter, linked in by `make bench` */
+#include "bench_common.h"
 
 /* Allocation calls so far. */
 static long alloc_count(void) { return sw_test_allocations(); }
 /* How to re-run this binary as a memory probe. */
 static const char *const probe_prefix[] = { "--engine" };
 #define NPREFIX ((int)(sizeof probe_prefix / sizeof probe_prefix[0]))
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-#define MAX_REPEATS 15
 
 typedef struct bench_opts {
     int repeats;
@@ -578,6 +558,8 @@ static void machine(void)
 static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
+    bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
+    int sections = ~0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -588,6 +570,21 @@ static int bench_engine_main(int argc, char **argv)
             o.chain_n = 100;
             o.vortex_n = 10000;
             o.target = 0.003;
+            peer = (bench_peer_opts){ .repeats = 3, .chain_n = 20, .vortex_n = 100, .quick = 1 };
+        } else if (strcmp(argv[i], "--peer") == 0) {
+            sections = 8;
+        } else if (strcmp(argv[i], "--no-peer") == 0) {
+            sections &= ~8;
+        } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[i + 1], &end, 10);
+            if (*end || n < 1 || n > 100000) {
+                fprintf(stderr, "stepwise: %s '%.40s' is not allowed: it takes a whole number in [1, 100000]\n",
+                        argv[i], argv[i + 1]);
+                return 2;
+            }
+            *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
+            i++;
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -597,16 +594,22 @@ static int bench_engine_main(int argc, char **argv)
                 return 2;
             }
             o.repeats = (int)r;
+            peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --peer-chain N, --peer-vortex N\n", argv[i]);
             return 2;
         }
     }
     machine();
-    throughput(&o);
-    frame_cost(&o);
-    memory(&o);
+    if (sections & 1)
+        throughput(&o);
+    if (sections & 2)
+        frame_cost(&o);
+    if (sections & 4)
+        memory(&o);
+    if (sections & 8)
+        bench_peer(&peer);
     return 0;
 }
 

@@ -28,6 +28,22 @@ static inline double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/* The undamped chain as the scene builds it, for the hand-fused baselines
+ * (bench_base.c): n beads, stiffness k, rest length, 1/m, the right
+ * anchor's x, and room for the n + 1 spring forces (2(n + 1) doubles). */
+typedef struct bench_chain {
+    int n;
+    double k, rest, inv_m, right_x;
+    double *f;
+} bench_chain;
+
+/* Hand-fused steps: `steps` steps of h on y in place (bench_base.c). */
+void base_vortex_euler(double *y, int n, double w, double h, long steps);
+void base_vortex_rk4(double *y, int n, double w, double h, long steps);
+void base_chain_euler(bench_chain *ch, double *y, double h, long steps);
+/* work: 8n doubles */
+void base_chain_rk4(bench_chain *ch, double *y, double *work, double h, long steps);
+
 typedef struct bench_peer_opts {
     int repeats;        /* paired timed runs (at least 5 for the table) */
     int chain_n, vortex_n;

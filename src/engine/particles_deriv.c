@@ -1,8 +1,10 @@
 /* The particle derivative over forces compiled by kind into flat arrays:
- * springs as index pairs plus parameters (and anchored springs apart), the
- * per-particle forces fused with the inverse mass and the copy of v into
- * one last pass. It models only what the system has: no damping work when
- * every c is 0, no spring pass without springs. Invariant: evaluation
+ * springs as index pairs plus parameters (and anchored springs apart),
+ * evaluated in one loop without indices or branches; then one last pass per
+ * particle that sums its springs' forces (each particle lists its springs:
+ * no scatter, no cleared accumulator), adds gravity and drag, divides by
+ * the mass and copies v. It models only what the system has: no damping
+ * work when every c is 0, no spring work without springs. Invariant: evaluation
  * allocates nothing, and gives the numbers of the lecture's plain
  * clear-accumulate-divide loop (the same operations in the same order) for
  * every force order the scenes use; see swp_model_compile for the order. */
@@ -15,6 +17,21 @@
 
 #include "stepwise/stepwise.h"
 
+/* A particle's (x, y) as one value, so a pair of components moves and
+ * subtracts as one (a GNU C vector, which gcc and clang support; each
+ * operation is the elementwise IEEE operation, so the bits are those of two
+ * scalar ones). */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
 /* Springs are evaluated BLOCK at a time: gather the differences, compute the
  * forces in a loop without indices (which the compiler vectorises: square
  * root and divisions two or more at a time), scatter them. */
@@ -24,12 +41,20 @@ struct sw_particles_model {
     int compiled;             /* the arrays below match the description */
     int cap;                  /* room for springs */
     /* springs: [0, npair) join particles a and b; [npair, npair + nanchor)
-     * tie particle a to the fixed point (ax, ay) */
+     * tie particle a to the fixed point (ax, ay); a and b hold 2a and 2b,
+     * the offsets of the particles' x in the state */
     int npair, nanchor;
     int *a, *b;
     double *k, *c, *rest, *ax, *ay;
     int damped;               /* some spring has c != 0 */
-    double *scratch;          /* 6 BLOCK-long rows: dx, dy, dvx, dvy (then fx, fy in dx, dy) */
+    double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs: 4 BLOCK */
+    double *force;            /* each spring's force on its particle a, (x, y) pairs: 2 cap */
+    /* each particle's springs, in the order above: entries first[i] ..
+     * first[i + 1] - 1 of spring (2j, the offset of spring j's force) and
+     * sign (+1: the particle is a, -1: it is b) */
+    int *first, *spring;
+    double *sign;
+    int degree;               /* every particle has this many springs (entries 2i, 2i + 1 when 2); else 0 */
     /* one gravity and one drag, fused into the last pass */
     int gravity, drag;
     double gx, gy, kdrag;
@@ -44,28 +69,30 @@ int swp_model_init(sw_particles *p)
     p->model = calloc(1, sizeof *p->model);
     if (!p->model)
         return SW_ENOMEM;
-    p->model->scratch = malloc(6 * BLOCK * sizeof *p->model->scratch);
-    return p->model->scratch ? SW_OK : SW_ENOMEM;
+    p->model->scratch = malloc(4 * BLOCK * sizeof *p->model->scratch);
+    p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
+    return p->model->scratch && p->model->first ? SW_OK : SW_ENOMEM;
 }
 
 int swp_model_springs(sw_particles *p, int nsprings)
 {
     struct sw_particles_model *m = p->model;
     size_t n = (size_t)nsprings;
-    int *a = realloc(m->a, n * sizeof *a), *b = a ? realloc(m->b, n * sizeof *b) : NULL;
-    if (a)
-        m->a = a;
-    if (b)
-        m->b = b;
-    double **rows[] = { &m->k, &m->c, &m->rest, &m->ax, &m->ay };
-    for (size_t r = 0; b && r < sizeof rows / sizeof rows[0]; r++) {
-        double *q = realloc(*rows[r], n * sizeof *q);
+    int **irows[] = { &m->a, &m->b, &m->spring };
+    size_t ilen[] = { n, n, 2 * n };
+    for (size_t r = 0; r < sizeof irows / sizeof irows[0]; r++) {
+        int *q = realloc(*irows[r], ilen[r] * sizeof *q);
+        if (!q)
+            return SW_ENOMEM;
+        *irows[r] = q;
+    }
+    double **rows[] = { &m->k, &m->c, &m->rest, &m->ax, &m->ay, &m->force, &m->sign };
+    for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
+        double *q = realloc(*rows[r], (r >= 5 ? 2 * n : n) * sizeof *q);
         if (!q)
             return SW_ENOMEM;
         *rows[r] = q;
     }
-    if (!a || !b)
-        return SW_ENOMEM;
     m->cap = nsprings;
     m->compiled = 0;
     return SW_OK;
@@ -76,7 +103,7 @@ void swp_model_free(sw_particles *p)
     struct sw_particles_model *m = p->model;
     if (m) {
         free(m->a), free(m->b), free(m->k), free(m->c), free(m->rest), free(m->ax), free(m->ay);
-        free(m->scratch);
+        free(m->scratch), free(m->force), free(m->first), free(m->spring), free(m->sign);
         free(m);
     }
     p->model = NULL;
@@ -91,8 +118,8 @@ void swp_model_touch(sw_particles *p)
 /* Copy spring sp into slot j of the flat arrays. */
 static void put_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
 {
-    m->a[j] = sp->a;
-    m->b[j] = sp->b;
+    m->a[j] = 2 * sp->a;
+    m->b[j] = 2 * sp->b;
     m->k[j] = sp->k;
     m->c[j] = sp->c;
     m->rest[j] = sp->rest;
@@ -129,6 +156,29 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
                 }
             }
         }
+    /* Each particle's list, in spring order: count, then place. */
+    int total = m->npair + m->nanchor;
+    memset(m->first, 0, (size_t)(p->n + 1) * sizeof *m->first);
+    for (int j = 0; j < total; j++) {
+        m->first[m->a[j] / 2 + 1]++;
+        if (j < m->npair)
+            m->first[m->b[j] / 2 + 1]++;
+    }
+    for (int i = 0; i < p->n; i++)
+        m->first[i + 1] += m->first[i];
+    for (int j = 0; j < total; j++)
+        for (int end = 0; end < (j < m->npair ? 2 : 1); end++) {
+            int i = (end ? m->b[j] : m->a[j]) / 2, e = m->first[i]++;
+            m->spring[e] = 2 * j;
+            m->sign[e] = end ? -1.0 : 1.0;
+        }
+    for (int i = p->n; i > 0; i--) /* placing advanced each first[i] to first[i + 1] */
+        m->first[i] = m->first[i - 1];
+    m->first[0] = 0;
+    m->degree = total > 0 ? m->first[1] : 0;
+    for (int i = 1; i < p->n && m->degree; i++)
+        if (m->first[i + 1] - m->first[i] != m->degree)
+            m->degree = 0;
     for (int f = 0; f < p->nforces; f++) {
         const sw_force *fo = &p->forces[f];
         if (fo->kind == SW_FORCE_GRAVITY && !m->gravity && !m->drag) {
@@ -146,72 +196,67 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
     return rc;
 }
 
-/* Spring forces of a block from its differences, in place:
+/* Spring forces of a block from its differences d (and dv), as (x, y) pairs:
  *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  d̂ = d/|d|.
  * Where |d| = 0 the direction is undefined and the plain loop adds no force;
  * here d = 0 is divided by 1 instead (l + (l == 0), a select without a
- * branch, so the loop vectorises) and the force is ±0, which leaves f as it
- * is: f starts at +0 and a sum that starts at +0 is never -0. */
+ * branch, so the loop vectorises) and the force is ±0, which leaves a sum
+ * as it is: the sums start at +0, and a sum that starts at +0 is never -0. */
 static void block_forces(int len, const double *restrict k, const double *restrict c,
-                         const double *restrict rest, double *restrict dx, double *restrict dy,
-                         const double *restrict dvx, const double *restrict dvy, int damped)
+                         const double *restrict rest, const double *restrict d, const double *restrict dv,
+                         double *restrict force, int damped)
 {
     if (damped)
         for (int j = 0; j < len; j++) {
-            double l = sqrt(dx[j] * dx[j] + dy[j] * dy[j]), d = l + (l == 0);
-            double ux = dx[j] / d, uy = dy[j] / d;
-            double mag = k[j] * (l - rest[j]) + c[j] * (dvx[j] * ux + dvy[j] * uy);
-            dx[j] = -mag * ux;
-            dy[j] = -mag * uy;
+            double dx = d[2 * j], dy = d[2 * j + 1];
+            double l = sqrt(dx * dx + dy * dy), q = l + (l == 0);
+            double ux = dx / q, uy = dy / q;
+            double mag = k[j] * (l - rest[j]) + c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
+            force[2 * j] = -mag * ux;
+            force[2 * j + 1] = -mag * uy;
         }
     else
         for (int j = 0; j < len; j++) {
-            double l = sqrt(dx[j] * dx[j] + dy[j] * dy[j]), d = l + (l == 0);
-            double ux = dx[j] / d, uy = dy[j] / d;
+            double dx = d[2 * j], dy = d[2 * j + 1];
+            double l = sqrt(dx * dx + dy * dy), q = l + (l == 0);
+            double ux = dx / q, uy = dy / q;
             double mag = k[j] * (l - rest[j]);
-            dx[j] = -mag * ux;
-            dy[j] = -mag * uy;
+            force[2 * j] = -mag * ux;
+            force[2 * j + 1] = -mag * uy;
         }
 }
 
-/* Add every spring's force into f (2n, cleared). */
-static void springs(const struct sw_particles_model *m, const double *x, const double *v, double *f)
+/* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are
+ * paired; and dv = v_a - v_b (v_a for anchored ones) when damped. */
+static void block_differences(const struct sw_particles_model *m, const double *restrict x,
+                              const double *restrict v, int lo, int mid, int hi, double *restrict d,
+                              double *restrict dv)
 {
-    double *dx = m->scratch, *dy = dx + BLOCK, *dvx = dy + BLOCK, *dvy = dvx + BLOCK;
+    const int *restrict ia = m->a, *restrict ib = m->b;
+    const double *restrict ax = m->ax, *restrict ay = m->ay;
+    for (int j = lo; j < mid; j++)
+        store2(d + 2 * (j - lo), load2(x + ia[j]) - load2(x + ib[j]));
+    for (int j = mid; j < hi; j++) {
+        d[2 * (j - lo)] = x[ia[j]] - ax[j];
+        d[2 * (j - lo) + 1] = x[ia[j] + 1] - ay[j];
+    }
+    if (!m->damped)
+        return;
+    for (int j = lo; j < mid; j++)
+        store2(dv + 2 * (j - lo), load2(v + ia[j]) - load2(v + ib[j]));
+    for (int j = mid; j < hi; j++) /* v_a - 0 = v_a */
+        store2(dv + 2 * (j - lo), load2(v + ia[j]));
+}
+
+/* Every spring's force on its particle a, into m->force. */
+static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
+{
+    double *d = m->scratch, *dv = d + 2 * BLOCK;
     int total = m->npair + m->nanchor;
     for (int lo = 0; lo < total; lo += BLOCK) {
         int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
-        for (int j = lo; j < mid; j++) { /* paired */
-            int a = 2 * m->a[j], b = 2 * m->b[j];
-            dx[j - lo] = x[a] - x[b];
-            dy[j - lo] = x[a + 1] - x[b + 1];
-            if (m->damped) {
-                dvx[j - lo] = v[a] - v[b];
-                dvy[j - lo] = v[a + 1] - v[b + 1];
-            }
-        }
-        for (int j = mid > lo ? mid : lo; j < hi; j++) { /* anchored */
-            int a = 2 * m->a[j];
-            dx[j - lo] = x[a] - m->ax[j];
-            dy[j - lo] = x[a + 1] - m->ay[j];
-            if (m->damped) {
-                dvx[j - lo] = v[a];
-                dvy[j - lo] = v[a + 1];
-            }
-        }
-        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, dx, dy, dvx, dvy, m->damped);
-        for (int j = lo; j < mid; j++) {
-            int a = 2 * m->a[j], b = 2 * m->b[j];
-            f[a] += dx[j - lo];
-            f[a + 1] += dy[j - lo];
-            f[b] -= dx[j - lo];
-            f[b + 1] -= dy[j - lo];
-        }
-        for (int j = mid > lo ? mid : lo; j < hi; j++) {
-            int a = 2 * m->a[j];
-            f[a] += dx[j - lo];
-            f[a + 1] += dy[j - lo];
-        }
+        block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
+        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, m->damped);
     }
 }
 
@@ -236,29 +281,46 @@ static void extra_pass(const sw_particles *p, const sw_force *fo, const double *
     }
 }
 
-/* The last pass: dx/dt = v, and dv/dt = (f + m·g - k·v)/m with f the forces
- * so far (0 when `load` is 0), for the kinds present. Called with constant
- * flags, so each combination compiles to its own straight loop. */
-static inline void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
-                             double *restrict xdot, double *restrict f, int load, int gravity, int drag)
+/* Where the last pass finds the forces so far. */
+enum { FROM_NONE, FROM_SPRINGS, FROM_F };
+
+/* Particle i's spring forces: Σ ±F over its list, from +0 in spring order
+ * (±1·F is exact, so each step is f + F or f - F, as a scatter would add). */
+static inline v2d spring_sum(const int *restrict first, const int *restrict spring, const double *restrict sign,
+                             const double *restrict force, int i)
 {
-    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
-    double gx = m->gx, gy = m->gy, kd = m->kdrag;
+    v2d f = { 0.0, 0.0 };
+    for (int e = first[i]; e < first[i + 1]; e++)
+        f += sign[e] * load2(force + spring[e]);
+    return f;
+}
+
+/* The last pass: dx/dt = v, and dv/dt = (f + m·g - k·v)/m, with f the sum
+ * of the particle's spring forces (from = FROM_SPRINGS), the forces so far
+ * in f (FROM_F) or 0 (FROM_NONE), for the kinds present. Called with
+ * constant arguments, so each combination compiles to its own loop. */
+static inline void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                             double *restrict xdot, double *restrict f, int from, int gravity, int drag)
+{
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass, *restrict sign = m->sign,
+                           *restrict force = m->force;
+    const int *restrict first = m->first, *restrict spring = m->spring;
+    v2d g = { m->gx, m->gy };
+    double kd = m->kdrag;
     for (int i = 0; i < p->n; i++) {
-        double fx = load ? f[2 * i] : 0.0, fy = load ? f[2 * i + 1] : 0.0;
-        double vx = v[2 * i], vy = v[2 * i + 1];
-        if (gravity) {
-            fx += mass[i] * gx;
-            fy += mass[i] * gy;
-        }
-        if (drag) {
-            fx -= kd * vx;
-            fy -= kd * vy;
-        }
-        xdot[2 * i] = vx;
-        xdot[2 * i + 1] = vy;
-        f[2 * i] = fx * inv[i];
-        f[2 * i + 1] = fy * inv[i];
+        v2d fi = { 0.0, 0.0 }, vi = load2(v + 2 * i);
+        if (from == FROM_SPRINGS && m->degree == 2) /* chains, rings: the same sum, unrolled */
+            fi = (fi + sign[2 * i] * load2(force + spring[2 * i])) + sign[2 * i + 1] * load2(force + spring[2 * i + 1]);
+        else if (from == FROM_SPRINGS)
+            fi = spring_sum(first, spring, sign, force, i);
+        else if (from == FROM_F)
+            fi = load2(f + 2 * i);
+        if (gravity)
+            fi += mass[i] * g;
+        if (drag)
+            fi -= kd * vi;
+        store2(xdot + 2 * i, vi);
+        store2(f + 2 * i, fi * inv[i]);
     }
 }
 
@@ -272,21 +334,32 @@ void swp_deriv(void *ctx, double t, const double *y, double *dydt)
     int n2 = 2 * p->n;
     const double *x = y, *v = y + n2;
     double *f = dydt + n2;
-    int load = m->npair + m->nanchor > 0 || m->nextra > 0;
-    if (load)
-        memset(f, 0, (size_t)n2 * sizeof *f);
-    if (m->npair + m->nanchor > 0)
-        springs(m, x, v, f);
-    for (int e = 0; e < m->nextra; e++)
-        extra_pass(p, &p->forces[m->extra[e]], x, v, f);
-    switch (load | m->gravity << 1 | m->drag << 2) {
-    case 0: last_pass(p, m, v, dydt, f, 0, 0, 0); break;
-    case 1: last_pass(p, m, v, dydt, f, 1, 0, 0); break;
-    case 2: last_pass(p, m, v, dydt, f, 0, 1, 0); break;
-    case 3: last_pass(p, m, v, dydt, f, 1, 1, 0); break;
-    case 4: last_pass(p, m, v, dydt, f, 0, 0, 1); break;
-    case 5: last_pass(p, m, v, dydt, f, 1, 0, 1); break;
-    case 6: last_pass(p, m, v, dydt, f, 0, 1, 1); break;
-    default: last_pass(p, m, v, dydt, f, 1, 1, 1); break;
+    int springs = m->npair + m->nanchor > 0, from = springs ? FROM_SPRINGS : FROM_NONE;
+    if (springs)
+        spring_forces(m, x, v);
+    if (m->nextra > 0) { /* rare (central fields): the forces so far into f, then a pass per extra */
+        for (int i = 0; i < p->n; i++) {
+            v2d fi = { 0.0, 0.0 };
+            if (springs)
+                fi = spring_sum(m->first, m->spring, m->sign, m->force, i);
+            store2(f + 2 * i, fi);
+        }
+        for (int e = 0; e < m->nextra; e++)
+            extra_pass(p, &p->forces[m->extra[e]], x, v, f);
+        from = FROM_F;
+    }
+    switch (from | m->gravity << 2 | m->drag << 3) {
+    case FROM_NONE: last_pass(p, m, v, dydt, f, FROM_NONE, 0, 0); break;
+    case FROM_SPRINGS: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 0, 0); break;
+    case FROM_F: last_pass(p, m, v, dydt, f, FROM_F, 0, 0); break;
+    case FROM_NONE | 4: last_pass(p, m, v, dydt, f, FROM_NONE, 1, 0); break;
+    case FROM_SPRINGS | 4: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 1, 0); break;
+    case FROM_F | 4: last_pass(p, m, v, dydt, f, FROM_F, 1, 0); break;
+    case FROM_NONE | 8: last_pass(p, m, v, dydt, f, FROM_NONE, 0, 1); break;
+    case FROM_SPRINGS | 8: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 0, 1); break;
+    case FROM_F | 8: last_pass(p, m, v, dydt, f, FROM_F, 0, 1); break;
+    case FROM_NONE | 12: last_pass(p, m, v, dydt, f, FROM_NONE, 1, 1); break;
+    case FROM_SPRINGS | 12: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 1, 1); break;
+    default: last_pass(p, m, v, dydt, f, FROM_F, 1, 1); break;
     }
 }

@@ -113,11 +113,14 @@ static void throughput(const bench_opts *o)
     printf("throughput: ns per particle-step, median of %d repeats of about %.0f ms each\n"
            "  sim   = sw_sim_step (the UI's path: step, post-step hook, blow-up check)\n"
            "  step  = sw_stepper_step alone (the integrator and the derivative)\n"
-           "  base  = hand-written loop, same arithmetic, no abstraction (euler, rk4)\n\n",
+           "  base  = hand-fused loop for this one problem, same arithmetic (euler, rk4; bench_base.c)\n"
+           "  /eval = step per derivative evaluation; /rk4 = that against rk4's (target for the\n"
+           "          adaptive methods: <= 1.2)\n\n",
            o->repeats, o->target * 1e3);
-    printf("  %-7s %7s %-18s %8s %9s %9s %9s %8s %8s %6s %6s  %s\n", "scene", "n", "method", "dt",
-           "sim", "step", "base", "sim/base", "step/bas", "evals", "allocs", "baseline result");
+    printf("  %-7s %7s %-18s %8s %9s %9s %9s %8s %8s %6s %6s %5s %6s  %s\n", "scene", "n", "method", "dt",
+           "sim", "step", "base", "sim/base", "step/bas", "evals", "/eval", "/rk4", "allocs", "baseline result");
     for (int w = 0; w < 2; w++) {
+        double rk4_per_eval = NAN;
         const sw_scene *sc = sw_scene_find(loads[w].scene);
         double p[SW_MAX_PARAMS];
         if (build_params(sc, loads[w].n, p) != SW_OK)
@@ -197,7 +200,12 @@ static void throughput(const bench_opts *o)
                     snprintf(same, sizeof same, "differs by %.1e after %ld steps", diff, check);
             }
             double sim = median(sim_t, o->repeats), step = median(step_t, o->repeats);
-            char allocs_s[16] = "n/a", base_s[16] = "-", r1[16] = "-", r2[16] = "-";
+            double per_eval = step / evals_per_step;
+            if (strcmp(m->name, "rk4") == 0)
+                rk4_per_eval = per_eval;
+            char allocs_s[16] = "n/a", base_s[16] = "-", r1[16] = "-", r2[16] = "-", r3[16] = "-";
+            if ((m->flags & SW_ADAPTIVE) && !isnan(rk4_per_eval))
+                snprintf(r3, sizeof r3, "%.2f", per_eval / rk4_per_eval);
             if (alloc_count() >= 0)
                 snprintf(allocs_s, sizeof allocs_s, "%ld", allocs);
             if (!isnan(base)) {
@@ -205,8 +213,8 @@ static void throughput(const bench_opts *o)
                 snprintf(r1, sizeof r1, "%.2f", sim / base);
                 snprintf(r2, sizeof r2, "%.2f", step / base);
             }
-            printf("  %-7s %7d %-18s %8.3g %9.3g %9.3g %9s %8s %8s %6.2g %6s  %s%s\n", sc->name, n,
-                   m->name, dt, sim, step, base_s, r1, r2, evals_per_step, allocs_s, same,
+            printf("  %-7s %7d %-18s %8.3g %9.3g %9.3g %9s %8s %8s %6.2g %6.3g %5s %6s  %s%s\n", sc->name, n,
+                   m->name, dt, sim, step, base_s, r1, r2, evals_per_step, per_eval, r3, allocs_s, same,
                    blown ? " (the sim blew up while timed)" : "");
             fflush(stdout);
             free(y0), free(yb), free(work), free(ch.f);

@@ -14,6 +14,7 @@
 typedef struct sw_trial_sums {
     double err;      /* Σ (e_i / sc_i)², e the method's error estimate */
     double err3;     /* dop853: Σ (e3_i / sc_i)², its 3rd-order estimate; else 0 */
+    double part[2][4]; /* dop853: err and err3 by i mod 4 (four independent chains of additions) */
     unsigned beyond; /* some new y_i at or beyond the runaway exponent */
 } sw_trial_sums;
 

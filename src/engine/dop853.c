@@ -65,6 +65,21 @@ static const double ER1 = 0.1312004499419488073250102996e-1, ER6 = -0.1225156446
  * and slots 0 and 3 swap the roles of k1 and k4 from step to step. */
 enum { S_K2 = 1, S_K3 = 2, S_K4 = 3, S_K5 = 4, S_K6, S_K7, S_K8, S_K9, S_K10, S_YT, S_SAVED, DOP853_VECTORS };
 
+/* Component i's 5th- and 3rd-order error estimates, scaled by 1/sk (yt
+ * holds b·k, saved the old state, y the new one). */
+static inline void dop853_errors(int i, double atol, double rtol, const double *restrict y,
+                                 const double *restrict saved, const double *restrict yt,
+                                 const double *restrict k1, const double *restrict k2, const double *restrict k3,
+                                 const double *restrict k6, const double *restrict k7, const double *restrict k8,
+                                 const double *restrict k9, const double *restrict k10, double *e3, double *e5)
+{
+    double a0 = fabs(saved[i]), a1 = fabs(y[i]);
+    double r = 1.0 / (atol + rtol * (a1 > a0 ? a1 : a0));
+    *e3 = (yt[i] - BHH1 * k1[i] - BHH9 * k9[i] - BHH12 * k3[i]) * r;
+    *e5 = (ER1 * k1[i] + ER6 * k6[i] + ER7 * k7[i] + ER8 * k8[i] + ER9 * k9[i] + ER10 * k10[i] + ER11 * k2[i] +
+           ER12 * k3[i]) * r;
+}
+
 /* The stages over [lo, hi). Every vector is a restrict parameter, so the
  * compiler knows they do not overlap and vectorises each stage loop
  * without run-time overlap checks. k11 and k12 are written into k2 and k3. */
@@ -125,19 +140,25 @@ static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, in
         y[i] = y1;
         over |= sw_beyond1(y1, elim);
     }
-    /* Both error sums, each term scaled by sk = atol + rtol·max(|y0|, |y1|). */
-    double e5sum = sums->err, e3sum = sums->err3;
-    for (i = lo; i < hi; i++) {
-        double a0 = fabs(saved[i]), a1 = fabs(y[i]);
-        double r = 1.0 / (atol + rtol * (a1 > a0 ? a1 : a0));
-        double e3 = (yt[i] - BHH1 * k1[i] - BHH9 * k9[i] - BHH12 * k3[i]) * r;
-        double e5 = (ER1 * k1[i] + ER6 * k6[i] + ER7 * k7[i] + ER8 * k8[i] + ER9 * k9[i] + ER10 * k10[i] +
-                     ER11 * k2[i] + ER12 * k3[i]) * r;
-        e3sum += e3 * e3;
-        e5sum += e5 * e5;
+    /* Both error sums, each term scaled by sk = atol + rtol·max(|y0|, |y1|),
+     * added by i mod 4 (so four chains of additions run side by side; lo
+     * is a multiple of 4, so a sliced pass adds in the same order). */
+    double (*part)[4] = sums->part;
+    for (i = lo; i + 4 <= hi; i += 4)
+        for (int j = 0; j < 4; j++) {
+            double e3, e5;
+            dop853_errors(i + j, atol, rtol, y, saved, yt, k1, k2, k3, k6, k7, k8, k9, k10, &e3, &e5);
+            part[0][j] += e5 * e5;
+            part[1][j] += e3 * e3;
+        }
+    for (; i < hi; i++) {
+        double e3, e5;
+        dop853_errors(i, atol, rtol, y, saved, yt, k1, k2, k3, k6, k7, k8, k9, k10, &e3, &e5);
+        part[0][i & 3] += e5 * e5;
+        part[1][i & 3] += e3 * e3;
     }
-    sums->err = e5sum;
-    sums->err3 = e3sum;
+    sums->err = (part[0][0] + part[0][1]) + (part[0][2] + part[0][3]);
+    sums->err3 = (part[1][0] + part[1][1]) + (part[1][2] + part[1][3]);
     sums->beyond |= over;
     sw_eval_range(ode, t + h, y, k4, lo, hi); /* FSAL: the next step's k1 */
 }

@@ -45,7 +45,8 @@ static void plain_deriv(const sw_particles *p, const double *y, double *dydt, do
             const sw_spring *sp = &fo->springs[j];
             int a = sp->a, b = sp->b;
             double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
-            double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by, len = sqrt(dx * dx + dy * dy);
+            double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by, len2 = dx * dx + dy * dy;
+            double len = len2 >= 1e-290 ? sqrt(len2) : hypot(dx, dy); /* tiny: the squares lose digits */
             if (!(len > 0))
                 continue;
             double ux = dx / len, uy = dy / len;

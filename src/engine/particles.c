@@ -43,6 +43,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.order = 2;
     p->ode.deriv = swp_deriv;
     p->ode.solve = sw_particles_solve;
+    p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
     return SW_OK;
 }

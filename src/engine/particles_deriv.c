@@ -47,7 +47,8 @@ struct sw_particles_model {
     int *a, *b;
     double *k, *c, *rest, *ax, *ay;
     int damped;               /* some spring has c != 0 */
-    double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs: 4 BLOCK */
+    double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and
+                                 |d|²: 5 BLOCK */
     double *force;            /* each spring's force on its particle a, (x, y) pairs: 2 cap */
     /* each particle's springs, in the order above: entries first[i] ..
      * first[i + 1] - 1 of spring (2j, the offset of spring j's force) and
@@ -69,7 +70,7 @@ int swp_model_init(sw_particles *p)
     p->model = calloc(1, sizeof *p->model);
     if (!p->model)
         return SW_ENOMEM;
-    p->model->scratch = malloc(4 * BLOCK * sizeof *p->model->scratch);
+    p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
     return p->model->scratch && p->model->first ? SW_OK : SW_ENOMEM;
 }
@@ -197,33 +198,51 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
 }
 
 /* Spring forces of a block from its differences d (and dv), as (x, y) pairs:
- *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  d̂ = d/|d|.
- * Where |d| = 0 the direction is undefined and the plain loop adds no force;
- * here d = 0 is divided by 1 instead (l + (l == 0), a select without a
- * branch, so the loop vectorises) and the force is ±0, which leaves a sum
- * as it is: the sums start at +0, and a sum that starts at +0 is never -0. */
+ *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  d̂ = d/|d|,
+ * |d| = √(dx² + dy²), or hypot(dx, dy) where dx² + dy² < 1e-290 (there the
+ * squares lose their digits or vanish). Where |d| = 0 the direction is
+ * undefined and the plain loop adds no force; here d = 0 is divided by 1
+ * instead (l + (l == 0), a select without a branch, so the loop
+ * vectorises) and the force is ±0, which leaves a sum as it is: the sums
+ * start at +0, and a sum that starts at +0 is never -0. The hypot cases are
+ * found after the loop (their squares were kept in len2) and redone. */
 static void block_forces(int len, const double *restrict k, const double *restrict c,
                          const double *restrict rest, const double *restrict d, const double *restrict dv,
-                         double *restrict force, int damped)
+                         double *restrict force, double *restrict len2, int damped)
 {
     if (damped)
         for (int j = 0; j < len; j++) {
             double dx = d[2 * j], dy = d[2 * j + 1];
-            double l = sqrt(dx * dx + dy * dy), q = l + (l == 0);
+            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
             double ux = dx / q, uy = dy / q;
             double mag = k[j] * (l - rest[j]) + c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
+            len2[j] = l2;
             force[2 * j] = -mag * ux;
             force[2 * j + 1] = -mag * uy;
         }
     else
         for (int j = 0; j < len; j++) {
             double dx = d[2 * j], dy = d[2 * j + 1];
-            double l = sqrt(dx * dx + dy * dy), q = l + (l == 0);
+            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
             double ux = dx / q, uy = dy / q;
             double mag = k[j] * (l - rest[j]);
+            len2[j] = l2;
             force[2 * j] = -mag * ux;
             force[2 * j + 1] = -mag * uy;
         }
+    for (int j = 0; j < len; j++) {
+        if (len2[j] >= 1e-290)
+            continue;
+        double dx = d[2 * j], dy = d[2 * j + 1], l = hypot(dx, dy);
+        if (!(l > 0)) {
+            force[2 * j] = force[2 * j + 1] = 0.0;
+            continue;
+        }
+        double ux = dx / l, uy = dy / l;
+        double mag = k[j] * (l - rest[j]) + (damped ? c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy) : 0.0);
+        force[2 * j] = -mag * ux;
+        force[2 * j + 1] = -mag * uy;
+    }
 }
 
 /* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are
@@ -251,12 +270,12 @@ static void block_differences(const struct sw_particles_model *m, const double *
 /* Every spring's force on its particle a, into m->force. */
 static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
 {
-    double *d = m->scratch, *dv = d + 2 * BLOCK;
+    double *d = m->scratch, *dv = d + 2 * BLOCK, *len2 = dv + 2 * BLOCK;
     int total = m->npair + m->nanchor;
     for (int lo = 0; lo < total; lo += BLOCK) {
         int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
         block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
-        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, m->damped);
+        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, m->damped);
     }
 }
 

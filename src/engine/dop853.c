@@ -80,57 +80,57 @@ static inline void dop853_errors(int i, double atol, double rtol, const double *
            ER12 * k3[i]) * r;
 }
 
-/* The stages over [lo, hi). Every vector is a restrict parameter, so the
+/* The stages over len components. Every vector is a restrict parameter, so the
  * compiler knows they do not overlap and vectorises each stage loop
  * without run-time overlap checks. k11 and k12 are written into k2 and k3. */
-static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, int lo, int hi, unsigned elim,
+static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
                          double atol, double rtol, const double *restrict k1, double *restrict k2,
                          double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
                          double *restrict k7, double *restrict k8, double *restrict k9, double *restrict k10,
                          double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
     int i;
-    for (i = lo; i < hi; i++)
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A2_1 * k1[i]);
-    sw_eval_range(ode, t + C2 * h, yt, k2, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C2 * h, len, yt, k2);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A3_1 * k1[i] + A3_2 * k2[i]);
-    sw_eval_range(ode, t + C3 * h, yt, k3, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C3 * h, len, yt, k3);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A4_1 * k1[i] + A4_3 * k3[i]);
-    sw_eval_range(ode, t + C4 * h, yt, k4, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C4 * h, len, yt, k4);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A5_1 * k1[i] + A5_3 * k3[i] + A5_4 * k4[i]);
-    sw_eval_range(ode, t + C5 * h, yt, k5, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C5 * h, len, yt, k5);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A6_1 * k1[i] + A6_4 * k4[i] + A6_5 * k5[i]);
-    sw_eval_range(ode, t + C6 * h, yt, k6, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C6 * h, len, yt, k6);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A7_1 * k1[i] + A7_4 * k4[i] + A7_5 * k5[i] + A7_6 * k6[i]);
-    sw_eval_range(ode, t + C7 * h, yt, k7, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C7 * h, len, yt, k7);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A8_1 * k1[i] + A8_4 * k4[i] + A8_5 * k5[i] + A8_6 * k6[i] + A8_7 * k7[i]);
-    sw_eval_range(ode, t + C8 * h, yt, k8, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C8 * h, len, yt, k8);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A9_1 * k1[i] + A9_4 * k4[i] + A9_5 * k5[i] + A9_6 * k6[i] + A9_7 * k7[i] +
                             A9_8 * k8[i]);
-    sw_eval_range(ode, t + C9 * h, yt, k9, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C9 * h, len, yt, k9);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A10_1 * k1[i] + A10_4 * k4[i] + A10_5 * k5[i] + A10_6 * k6[i] + A10_7 * k7[i] +
                             A10_8 * k8[i] + A10_9 * k9[i]);
-    sw_eval_range(ode, t + C10 * h, yt, k10, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C10 * h, len, yt, k10);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A11_1 * k1[i] + A11_4 * k4[i] + A11_5 * k5[i] + A11_6 * k6[i] + A11_7 * k7[i] +
                             A11_8 * k8[i] + A11_9 * k9[i] + A11_10 * k10[i]);
-    sw_eval_range(ode, t + C11 * h, yt, k2, lo, hi); /* k11 */
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C11 * h, len, yt, k2); /* k11 */
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A12_1 * k1[i] + A12_4 * k4[i] + A12_5 * k5[i] + A12_6 * k6[i] + A12_7 * k7[i] +
                             A12_8 * k8[i] + A12_9 * k9[i] + A12_10 * k10[i] + A12_11 * k2[i]);
-    sw_eval_range(ode, t + h, yt, k3, lo, hi); /* k12 */
+    sw_eval_slice(ode, t + h, len, yt, k3); /* k12 */
     /* The new state in place (the old one saved for a retry) and its runaway
      * test; b·k kept in yt for the error estimates. */
     unsigned over = 0;
-    for (i = lo; i < hi; i++) {
+    for (i = 0; i < len; i++) {
         double y0 = y[i];
         double bk = B1 * k1[i] + B6 * k6[i] + B7 * k7[i] + B8 * k8[i] + B9 * k9[i] + B10 * k10[i] +
                     B11 * k2[i] + B12 * k3[i];
@@ -141,17 +141,18 @@ static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, in
         over |= sw_beyond1(y1, elim);
     }
     /* Both error sums, each term scaled by sk = atol + rtol·max(|y0|, |y1|),
-     * added by i mod 4 (so four chains of additions run side by side; lo
-     * is a multiple of 4, so a sliced pass adds in the same order). */
+     * added by i mod 4 (so four chains of additions run side by side;
+     * slices start at multiples of 4, so a sliced pass adds in the same
+     * order as a whole-state one). */
     double (*part)[4] = sums->part;
-    for (i = lo; i + 4 <= hi; i += 4)
+    for (i = 0; i + 4 <= len; i += 4)
         for (int j = 0; j < 4; j++) {
             double e3, e5;
             dop853_errors(i + j, atol, rtol, y, saved, yt, k1, k2, k3, k6, k7, k8, k9, k10, &e3, &e5);
             part[0][j] += e5 * e5;
             part[1][j] += e3 * e3;
         }
-    for (; i < hi; i++) {
+    for (; i < len; i++) {
         double e3, e5;
         dop853_errors(i, atol, rtol, y, saved, yt, k1, k2, k3, k6, k7, k8, k9, k10, &e3, &e5);
         part[0][i & 3] += e5 * e5;
@@ -160,16 +161,18 @@ static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, in
     sums->err = (part[0][0] + part[0][1]) + (part[0][2] + part[0][3]);
     sums->err3 = (part[1][0] + part[1][1]) + (part[1][2] + part[1][3]);
     sums->beyond |= over;
-    sw_eval_range(ode, t + h, y, k4, lo, hi); /* FSAL: the next step's k1 */
+    sw_eval_slice(ode, t + h, len, y, k4); /* FSAL: the next step's k1 */
 }
 
+/* The FSAL pair (k1 and k4's slots) and the saved state are state-long
+ * (they outlive a slice); the other stage vectors are slice-local. */
 static void dop853_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                          unsigned elim, sw_trial_sums *sums)
 {
-    dop853_range(ode, t, y, h, lo, hi, elim, s->atol, s->rtol, SW_WORK(s, s->fsal), SW_WORK(s, S_K2),
-                 SW_WORK(s, S_K3), SW_WORK(s, s->fsal ? 0 : S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
+    dop853_range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
+                 SW_WORK(s, S_K3), SW_WORK(s, s->fsal ? 0 : S_K4) + lo, SW_WORK(s, S_K5), SW_WORK(s, S_K6),
                  SW_WORK(s, S_K7), SW_WORK(s, S_K8), SW_WORK(s, S_K9), SW_WORK(s, S_K10), SW_WORK(s, S_YT),
-                 SW_WORK(s, S_SAVED), sums);
+                 SW_WORK(s, S_SAVED) + lo, sums);
 }
 
 static const sw_adaptive dop853 = {

@@ -26,40 +26,40 @@ static const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 
 /* Slots: k1 and k7 alternate between 0 and 6 (FSAL). */
 enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };
 
-/* The stages over [lo, hi), every vector a restrict parameter (so the stage
+/* The stages over len components, every vector a restrict parameter (so the stage
  * loops vectorise without overlap checks). Error norm: RMS of
  * h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
-static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int lo, int hi, unsigned elim,
+static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
                        double atol, double rtol, const double *restrict k1, double *restrict k2,
                        double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
                        double *restrict k7, double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
     int i;
-    for (i = lo; i < hi; i++)
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A21 * k1[i]);
-    sw_eval_range(ode, t + C2 * h, yt, k2, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C2 * h, len, yt, k2);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-    sw_eval_range(ode, t + C3 * h, yt, k3, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C3 * h, len, yt, k3);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-    sw_eval_range(ode, t + C4 * h, yt, k4, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C4 * h, len, yt, k4);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-    sw_eval_range(ode, t + C5 * h, yt, k5, lo, hi);
-    for (i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + C5 * h, len, yt, k5);
+    for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-    sw_eval_range(ode, t + h, yt, k6, lo, hi);
+    sw_eval_slice(ode, t + h, len, yt, k6);
     unsigned over = 0;
-    for (i = lo; i < hi; i++) {
+    for (i = 0; i < len; i++) {
         double y0 = y[i], y1 = y0 + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i]);
         saved[i] = y0;
         y[i] = y1;
         over |= sw_beyond1(y1, elim);
     }
-    sw_eval_range(ode, t + h, y, k7, lo, hi);
+    sw_eval_slice(ode, t + h, len, y, k7);
     double sum = sums->err; /* one chain in increasing i: the sum of a whole-state pass */
-    for (i = lo; i < hi; i++) {
+    for (i = 0; i < len; i++) {
         double e = E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i];
         double a0 = fabs(saved[i]), a1 = fabs(y[i]);
         double q = h * e / (atol + rtol * (a1 > a0 ? a1 : a0));
@@ -69,12 +69,14 @@ static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int 
     sums->beyond |= over;
 }
 
+/* The FSAL pair and the saved state are state-long (they outlive a slice);
+ * the other stage vectors are slice-local. */
 static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                        unsigned elim, sw_trial_sums *sums)
 {
-    rk45_range(ode, t, y, h, lo, hi, elim, s->atol, s->rtol, SW_WORK(s, s->fsal), SW_WORK(s, S_K2),
+    rk45_range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
                SW_WORK(s, S_K3), SW_WORK(s, S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
-               SW_WORK(s, s->fsal ? 0 : S_K7), SW_WORK(s, S_YT), SW_WORK(s, S_SAVED), sums);
+               SW_WORK(s, s->fsal ? 0 : S_K7) + lo, SW_WORK(s, S_YT), SW_WORK(s, S_SAVED) + lo, sums);
 }
 
 static const sw_adaptive rk45 = {

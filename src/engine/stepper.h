@@ -66,18 +66,22 @@ sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
 sw_step_fn sw_step_rk45;                               /* rk45.c */
 sw_step_fn sw_step_dop853;                             /* dop853.c */
 
-/* Explicit Runge-Kutta steps run over [lo, hi): the whole state for coupled
- * systems, or L1-sized slices for pointwise ones (flow fields), where every
- * stage of a slice needs only that slice. The arithmetic is the same either
+/* Explicit Runge-Kutta steps run over the whole state for coupled systems,
+ * or slice by slice (L1-sized) for pointwise ones (flow fields), where
+ * every stage of a slice needs only that slice. The stage vectors of a
+ * slice are then slice-local (the first `len` doubles of their work
+ * vectors, reused by every slice, so they stay in L1); only what must
+ * outlive a slice is kept state-long. The arithmetic is the same either
  * way; only the memory traffic differs. */
 #define SW_SLICE 512
 
-/* dydt over [lo, hi) at (t, y): a slice when the system allows it, else the
- * whole state (lo = 0, hi = dim). Not counted: callers count per stage. */
-static inline void sw_eval_range(sw_ode *ode, double t, const double *y, double *dydt, int lo, int hi)
+/* dydt at (t, y) for a slice of len components (y and dydt point at the
+ * slice), or for the whole state (len = dim) of a coupled system. Not
+ * counted: callers count per stage. */
+static inline void sw_eval_slice(sw_ode *ode, double t, int len, const double *y, double *dydt)
 {
     if (ode->deriv_part)
-        ode->deriv_part(ode->ctx, t, hi - lo, y + lo, dydt + lo);
+        ode->deriv_part(ode->ctx, t, len, y, dydt);
     else
         ode->deriv(ode->ctx, t, y, dydt);
 }

@@ -276,3 +276,13 @@ void sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double 
     scatter(p, 1.0, 0.0, dense_sink, &cx);
     scatter(p, 0.0, 1.0, dense_sink, &cv);
 }
+
+void sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,
+                                 double *out, int assemble_first)
+{
+    if (assemble_first)
+        assemble(p, y);
+    memset(out, 0, (size_t)2 * p->n * sizeof *out);
+    apply_ctx ac = { w, out };
+    scatter(p, a, b, apply_sink, &ac);
+}

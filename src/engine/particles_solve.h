@@ -23,5 +23,9 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
  * fx = ∂f/∂x and fv = ∂f/∂v, every force included (the damping term's
  * dependence on positions too). For tests and the stability theory; n small. */
 void sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double *fv);
+/* out = (a·∂f/∂x + b·∂f/∂v)·w at state y (2n long each), without forming the
+ * matrices; assemble_first 0 reuses the blocks of the previous call at y. */
+void sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,
+                                 double *out, int assemble_first);
 
 #endif

@@ -1,4 +1,5 @@
-/* Hand-fused baselines for the engine benchmark: euler and rk4 steps on the
+/* Hand-fused baselines for the engine benchmark (compiled, like the engine's
+ * hot loops, for AVX2 and for the baseline: engine/clones.h): euler and rk4 steps on the
  * vortex and the undamped chain written as one would by hand for that one
  * problem — no function pointers, no state-sized derivative vectors where a
  * register or a per-particle loop does, the forces of the chain's springs in
@@ -10,9 +11,10 @@
 #include <string.h>
 
 #include "bench_common.h"
+#include "engine/clones.h"
 
 /* vortex, x' = ω(-y, x), euler: one fused pass. */
-void base_vortex_euler(double *y, int n, double w, double h, long steps)
+SW_CLONES void base_vortex_euler(double *y, int n, double w, double h, long steps)
 {
     for (long s = 0; s < steps; s++)
         for (int i = 0; i < n; i++) {
@@ -23,7 +25,7 @@ void base_vortex_euler(double *y, int n, double w, double h, long steps)
 }
 
 /* vortex, rk4: every stage of one point in registers, one pass per step. */
-void base_vortex_rk4(double *y, int n, double w, double h, long steps)
+SW_CLONES void base_vortex_rk4(double *y, int n, double w, double h, long steps)
 {
     double a = 0.5 * h, b = h / 6.0;
     for (long s = 0; s < steps; s++)
@@ -75,7 +77,7 @@ static inline double bead_force(const double *F, int i, int n)
     return i < n - 1 ? (0.0 + F[i]) - F[i + 1] : (0.0 + F[i]) + F[i + 1];
 }
 
-void base_chain_euler(bench_chain *ch, double *y, double h, long steps)
+SW_CLONES void base_chain_euler(bench_chain *ch, double *y, double h, long steps)
 {
     int n = ch->n, n2 = 2 * n;
     double *x = y, *v = y + n2, inv = ch->inv_m;
@@ -123,7 +125,7 @@ static inline void rk4_stage(const bench_chain *ch, const double *cur, const dou
 
 /* rk4 on the chain: per stage the spring forces, then one pass over the
  * beads (rk4_stage). Three state-sized vectors: y, the stage state, the sum. */
-void base_chain_rk4(bench_chain *ch, double *y, double *work, double h, long steps)
+SW_CLONES void base_chain_rk4(bench_chain *ch, double *y, double *work, double h, long steps)
 {
     int dim = 4 * ch->n;
     double *yt = work, *sum = work + dim, b = h / 6.0;

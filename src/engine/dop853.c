@@ -83,7 +83,7 @@ static inline void dop853_errors(int i, double atol, double rtol, const double *
 /* The stages over len components. Every vector is a restrict parameter, so the
  * compiler knows they do not overlap and vectorises each stage loop
  * without run-time overlap checks. k11 and k12 are written into k2 and k3. */
-static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
+SW_CLONES static void dop853_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
                          double atol, double rtol, const double *restrict k1, double *restrict k2,
                          double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
                          double *restrict k7, double *restrict k8, double *restrict k9, double *restrict k10,

@@ -34,7 +34,7 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
 }
 
 /* x1 = x0 + h·f(t0, x0) */
-static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
+SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0);
     unsigned over = 0;
@@ -64,7 +64,7 @@ int sw_step_symplectic_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, d
 }
 
 /* Explicit midpoint: k1 = f(y), k2 = f(y + h/2·k1), y1 = y + h·k2. */
-static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
+SW_CLONES static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0), *restrict ym = SW_WORK(s, 1);
     unsigned over = 0;
@@ -85,7 +85,7 @@ int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 }
 
 /* Heun (explicit trapezoid): k1 = f(y), k2 = f(y + h·k1), y1 = y + h/2·(k1 + k2). */
-static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
+SW_CLONES static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict yp = SW_WORK(s, 1), *restrict k2 = SW_WORK(s, 2);
     unsigned over = 0;
@@ -106,7 +106,7 @@ int sw_step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 }
 
 /* Classical RK4: y1 = y + h/6·(k1 + 2k2 + 2k3 + k4). */
-static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
+SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict k2 = SW_WORK(s, 1), *restrict k3 = SW_WORK(s, 2), *restrict k4 = SW_WORK(s, 3),
            *restrict yt = SW_WORK(s, 4);

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "stepwise/stepwise.h"
 
 /* A particle's (x, y) as one value, so a pair of components moves and
@@ -206,7 +207,7 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
  * vectorises) and the force is ±0, which leaves a sum as it is: the sums
  * start at +0, and a sum that starts at +0 is never -0. The hypot cases are
  * found after the loop (their squares were kept in len2) and redone. */
-static void block_forces(int len, const double *restrict k, const double *restrict c,
+SW_CLONES static void block_forces(int len, const double *restrict k, const double *restrict c,
                          const double *restrict rest, const double *restrict d, const double *restrict dv,
                          double *restrict force, double *restrict len2, int damped)
 {

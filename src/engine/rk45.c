@@ -29,7 +29,7 @@ enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };
 /* The stages over len components, every vector a restrict parameter (so the stage
  * loops vectorise without overlap checks). Error norm: RMS of
  * h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
-static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
+SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
                        double atol, double rtol, const double *restrict k1, double *restrict k2,
                        double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
                        double *restrict k7, double *restrict yt, double *restrict saved, sw_trial_sums *sums)

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "stepwise/integrator.h"
 
 struct sw_stepper {

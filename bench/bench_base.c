@@ -52,7 +52,7 @@ SW_CLONES void base_vortex_rk4(double *y, int n, double w, double h, long steps)
  * 0 where |d| = 0. Bead i feels F_i - F_{i+1}, summed from +0 as the
  * generic loop does: (0 + F_i) - F_{i+1}. The last spring is stored with
  * d = x_{n-1} - anchor, so the last bead adds it: (0 + F_{n-1}) + F_n. */
-static inline void spring_force(double dx, double dy, double k, double rest, double *fx, double *fy)
+static inline __attribute__((always_inline)) void spring_force(double dx, double dy, double k, double rest, double *fx, double *fy)
 {
     double l = sqrt(dx * dx + dy * dy), d = l + (l == 0);
     double mag = k * (l - rest);
@@ -60,7 +60,8 @@ static inline void spring_force(double dx, double dy, double k, double rest, dou
     *fy = -mag * (dy / d);
 }
 
-static void chain_forces(const bench_chain *ch, const double *restrict x)
+/* Inlined into each compiled copy of its callers (engine/clones.h). */
+static inline __attribute__((always_inline)) void chain_forces(const bench_chain *ch, const double *restrict x)
 {
     int n = ch->n;
     double *restrict fx = ch->f, *restrict fy = ch->f + (n + 1);
@@ -72,7 +73,7 @@ static void chain_forces(const bench_chain *ch, const double *restrict x)
 }
 
 /* Bead i's force: (0 + F_i) ∓ F_{i+1}. */
-static inline double bead_force(const double *F, int i, int n)
+static inline __attribute__((always_inline)) double bead_force(const double *F, int i, int n)
 {
     return i < n - 1 ? (0.0 + F[i]) - F[i + 1] : (0.0 + F[i]) + F[i + 1];
 }
@@ -99,7 +100,7 @@ SW_CLONES void base_chain_euler(bench_chain *ch, double *y, double h, long steps
  * order, as the generic final loop adds) and, but for the last stage, the
  * next stage's state y + a·k into yt (which may be cur: each component is
  * read before it is written, and the forces are already computed). */
-static inline void rk4_stage(const bench_chain *ch, const double *cur, const double *y, double *yt, double *sum,
+static inline __attribute__((always_inline)) void rk4_stage(const bench_chain *ch, const double *cur, const double *y, double *yt, double *sum,
                              double a, double w, int first, int last)
 {
     int n = ch->n, n2 = 2 * n;

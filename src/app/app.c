@@ -357,10 +357,11 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else
             snprintf(a->message, sizeof a->message, "compare off");
         return 1;
-    case SW_ACT_GHOST:
+    case SW_ACT_GHOST: {
         sw_app_set_ghost(a, !a->ghost);
-        if (a->ghost && (!a->have_truth || a->truth.source == SW_TRUTH_NONE))
-            snprintf(a->message, sizeof a->message, "no ghost: %s", a->have_truth ? a->truth.why : "no truth");
+        char why[SW_ERRLEN];
+        if (a->ghost && *sw_app_truth_why(a, why, sizeof why))
+            snprintf(a->message, sizeof a->message, "no ghost: %s", why);
         else if (!a->ghost)
             snprintf(a->message, sizeof a->message, "ghost off");
         else if (a->truth.source == SW_TRUTH_EXACT)
@@ -368,6 +369,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else
             snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
         return 1;
+    }
     case SW_ACT_TRAILS:
         a->trails = !a->trails;
         return 1;
@@ -459,6 +461,8 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
         double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
         while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
             sw_sim_step(s);
+            if (i == 0)
+                sw_app_watch_feed(a); /* every step: the energy's peaks are per step */
             n++;
         }
         if (!s->blown && s->t + slack < a->t_goal)
@@ -473,7 +477,6 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     }
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
-    sw_app_watch_feed(a);
 }
 
 void sw_app_status(sw_app *a, int i, char *buf, size_t len)

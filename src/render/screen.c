@@ -250,7 +250,7 @@ static void meter(sw_app *a, char *buf, size_t len, int *style)
         snprintf(lim, sizeof lim, "stable at any dt");
     else if (m.limit > 0) {
         snprintf(lim, sizeof lim, "limit %.3g", m.stiff * m.limit);
-        int fill = (int)fmin(10.0, fmax(0.0, 10.0 * a->dt / m.limit));
+        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
         bar[0] = '[';
         for (int i = 0; i < 10; i++)
             bar[i + 1] = i < fill ? '#' : '.';
@@ -258,7 +258,9 @@ static void meter(sw_app *a, char *buf, size_t len, int *style)
         bar[12] = '\0';
     } else
         snprintf(lim, sizeof lim, "no stable dt");
-    const char *verdict = m.grows ? "GROWS" : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
+    const char *verdict = m.grows ? "GROWS"
+                          : m.slow ? "grows, too slowly to see"
+                          : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
     int run_grows = a->watch.verdict != SW_WATCH_STEADY;
     snprintf(buf, len, "|L|dt=%.3g %s%s%s  x%.6f/step %s%s", ldt, bar, *bar ? " " : "", lim, m.growth, verdict,
              run_grows && !m.grows ? "; run's energy grows: nonlinear" : "");
@@ -345,6 +347,16 @@ static void help_overlay(sw_screen *scr, int in_lesson)
         lines[n] = buf[n];
         n++;
     }
+    /* what the numbers on the status line and the meter mean */
+    static const char *const terms[] = {
+        "energy: change since t=0, % of the energy of the motion",
+        "        (above the resting state; an orbit: of |E(0)|)",
+        "error:  largest |y - true y| over positions and velocities",
+        "|L|dt:  stiffest eigenvalue of the linearisation, times dt",
+        "x.../step: growth per step of the worst mode (1: neutral)",
+    };
+    for (size_t i = 0; i < sizeof terms / sizeof terms[0] && n < 46; i++)
+        lines[n++] = terms[i];
     snprintf(buf[n], sizeof buf[n], "%s", "press ? again to close");
     lines[n] = buf[n];
     n++;

@@ -13,16 +13,20 @@
 #include <unistd.h>
 
 #include "engine/stepper.h"
+#include "util/escape.h"
 #include "util/num.h"
 
 int sw_cli_error(const char *fmt, ...)
 {
+    /* One line of printable text, whatever the arguments held (a newline or
+     * an escape sequence in a name, a path, a value typed). */
+    char msg[2048];
     va_list ap;
-    fputs("stepwise: ", stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
+    sw_escape_message(msg, sizeof msg);
+    fprintf(stderr, "stepwise: %s\n", msg);
     return SW_EXIT_USAGE;
 }
 

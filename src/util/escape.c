@@ -1,0 +1,84 @@
+/* Escaping untrusted text for messages. Invariant: the output holds no
+ * byte below 0x20, no DEL, no C1 control and no invalid UTF-8, whatever the
+ * input, and is never cut inside a character or an escape. */
+#include "util/escape.h"
+
+#include <stdint.h>
+#include <string.h>
+
+#include "util/utf8.h"
+
+/* Length of the printable character at s (avail bytes readable): 1..4, or
+ * 0 when it is a control, DEL, a C1 control or not well-formed UTF-8. */
+static size_t printable(const unsigned char *s, size_t avail)
+{
+    if (s[0] < 0x80)
+        return s[0] >= 0x20 && s[0] != 0x7f ? 1 : 0;
+    size_t len;
+    uint32_t cp;
+    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK || (cp >= 0x80 && cp <= 0x9f))
+        return 0;
+    return len;
+}
+
+/* Escape text[0..n) into out; returns 1 when all of it fitted. */
+static int escape(const char *text, size_t n, int keep_backslash, char *out, size_t outlen)
+{
+    static const char hex[] = "0123456789abcdef";
+    const unsigned char *s = (const unsigned char *)text;
+    size_t used = 0, i = 0;
+    while (i < n) {
+        size_t k = s[i] == '\\' && !keep_backslash ? 0 : printable(s + i, n - i);
+        char piece[4];
+        size_t plen = k;
+        if (k)
+            memcpy(piece, s + i, k);
+        else {
+            piece[0] = '\\';
+            piece[1] = 'x';
+            piece[2] = hex[s[i] >> 4];
+            piece[3] = hex[s[i] & 15];
+            plen = 4;
+        }
+        /* keep room for "..." and the NUL */
+        if (used + plen + 4 > outlen)
+            break;
+        memcpy(out + used, piece, plen);
+        used += plen;
+        i += k ? k : 1;
+    }
+    int whole = i >= n;
+    if (!whole && used + 4 <= outlen) {
+        memcpy(out + used, "...", 3);
+        used += 3;
+    }
+    out[used] = '\0';
+    return whole;
+}
+
+void sw_escape(const char *text, size_t max, char *out, size_t outlen)
+{
+    if (!out || outlen == 0)
+        return;
+    if (!text)
+        text = "";
+    size_t n = strnlen(text, max);
+    if (!escape(text, n, 0, out, outlen) || text[n] == '\0')
+        return;
+    /* cut by max: mark it */
+    size_t used = strlen(out);
+    if (used + 4 <= outlen)
+        memcpy(out + used, "...", 4);
+}
+
+void sw_escape_message(char *msg, size_t len)
+{
+    if (!msg || len == 0)
+        return;
+    char copy[4096];
+    size_t n = strnlen(msg, len - 1);
+    if (n >= sizeof copy)
+        n = sizeof copy - 1;
+    memcpy(copy, msg, n);
+    escape(copy, n, 1, msg, len);
+}

@@ -173,10 +173,14 @@ static void add_line(sw_runner *r, sw_side_kind kind, const char *text)
     r->side.nlines++;
 }
 
-/* Word-wrap a paragraph to width cells. */
+/* Word-wrap a paragraph to width display cells (a CJK character takes
+ * two); a word wider than a line (CJK text has no spaces) is broken between
+ * characters, never inside one. */
 static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int width)
 {
     const char *p = text;
+    if (width < 2)
+        width = 2;
     while (*p) {
         while (*p == ' ')
             p++;
@@ -188,9 +192,19 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
             const char *w = p;
             while (*p && *p != ' ' && *p != '\n')
                 p++;
-            int wl = (int)sw_utf8_count(w, (size_t)(p - w));
+            int wl = (int)sw_utf8_columns(w, (size_t)(p - w));
             if (used && used + 1 + wl > width) {
                 p = w;
+                break;
+            }
+            if (!used && wl > width) {
+                p = w + sw_utf8_fit(w, (size_t)(p - w), (size_t)width, NULL);
+                if (p == w) { /* cannot happen with width >= 2; progress all the same */
+                    const unsigned char *q = (const unsigned char *)w;
+                    sw_utf8_next(&q);
+                    p = (const char *)q;
+                }
+                cut = p;
                 break;
             }
             used += (used ? 1 : 0) + wl;
@@ -203,7 +217,7 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
         if (!cut)
             cut = p;
         char buf[SW_RUNNER_COLS];
-        size_t len = (size_t)(cut - line) < sizeof buf - 1 ? (size_t)(cut - line) : sizeof buf - 1;
+        size_t len = sw_utf8_clip(line, (size_t)(cut - line), sizeof buf - 1);
         memcpy(buf, line, len);
         buf[len] = '\0';
         add_line(r, kind, buf);

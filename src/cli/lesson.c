@@ -11,8 +11,9 @@
 #include "app/runner.h"
 #include "cli/lesson_check.h"
 #include "tui/loop.h"
-#include "tui/term.h"
+#include "util/escape.h"
 #include "util/signals.h"
+#include "util/utf8.h"
 
 static const char lesson_help[] =
     "usage: stepwise lesson [NAME|N]\n"
@@ -32,7 +33,10 @@ static const sw_side *lesson_side(void *ctx, sw_app *a, int cols)
     return sw_runner_side(ctx, a, cols);
 }
 
-static int run_lesson(const char *path, int page)
+/* Run the lesson at path. When it cannot start: with why NULL the error is
+ * printed (exit 2); else it goes into why (the menu shows it) and the
+ * status is SW_EXIT_USAGE with nothing printed. */
+static int run_lesson(const char *path, int page, char *why, size_t whylen)
 {
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
@@ -41,7 +45,10 @@ static int run_lesson(const char *path, int page)
         return sw_cli_error("out of memory");
     if (sw_runner_start(r, &a, path, page, err, sizeof err) != SW_OK) {
         free(r);
-        return sw_cli_error("%s", err);
+        if (!why)
+            return sw_cli_error("%s", err);
+        snprintf(why, whylen, "%s", err);
+        return SW_EXIT_USAGE;
     }
     sw_play_hooks hooks = { .ctx = r, .key = lesson_key, .side = lesson_side };
     int rc = sw_cli_play(&a, &hooks);
@@ -69,10 +76,19 @@ static int find_lesson(const sw_lesson_entry *e, int n, const char *what)
     return -1;
 }
 
-/* The menu of lessons with each one's progress, until q or a signal. */
+/* title cut to at most cols display cells on a character boundary and
+ * padded with spaces to cols cells, into out. */
+static void fit_title(char *out, size_t len, const char *title, size_t cols)
+{
+    size_t used, k = sw_utf8_fit(title, strlen(title), cols, &used);
+    snprintf(out, len, "%.*s%*s", (int)k, title, (int)(cols - used), "");
+}
+
+/* The menu of lessons with each one's progress, until q or a signal. A
+ * lesson that cannot be opened says why in the menu, which stays. */
 static int menu(sw_lesson_entry *e, int n)
 {
-    char err[SW_ERRLEN], (*text)[400] = malloc((size_t)n * sizeof *text);
+    char err[SW_ERRLEN], note[SW_LESSON_ERRLEN + 80] = "", (*text)[400] = malloc((size_t)n * sizeof *text);
     const char **lines = malloc((size_t)n * sizeof *lines);
     int sel = 0, rc = SW_EXIT_OK;
     if (!text || !lines) {
@@ -95,12 +111,16 @@ static int menu(sw_lesson_entry *e, int n)
                 snprintf(prog, sizeof prog, "done \xe2\x9c\x93");
             else
                 snprintf(prog, sizeof prog, "%d/%d pages", done, e[i].npages);
-            snprintf(text[i], sizeof text[i], "%2d. %-52.52s %s", i + 1,
-                     e[i].title ? e[i].title : e[i].file, prog);
+            char title[300];
+            fit_title(title, sizeof title, e[i].title ? e[i].title : e[i].file, 52);
+            snprintf(text[i], sizeof text[i], "%2d. %s %s", i + 1, title, prog);
+            sw_escape_message(text[i], sizeof text[i]);
             lines[i] = text[i];
         }
+        sw_escape_message(note, sizeof note);
         int chosen = sw_tui_menu("stepwise: numerical integration of particle systems", lines, n, &sel,
-                                 err, sizeof err);
+                                 note, err, sizeof err);
+        note[0] = '\0';
         if (chosen == -3) {
             rc = sw_cli_error("%s", err);
             break;
@@ -112,11 +132,16 @@ static int menu(sw_lesson_entry *e, int n)
         if (chosen == -1)
             break;
         if (!e[chosen].title) {
-            sw_term_stop();
-            rc = sw_cli_error("%s", e[chosen].error);
-            break;
+            snprintf(note, sizeof note, "cannot open this lesson: %s", e[chosen].error);
+            continue;
         }
-        rc = run_lesson(e[chosen].path, -1);
+        char why[SW_LESSON_ERRLEN] = "";
+        rc = run_lesson(e[chosen].path, -1, why, sizeof why);
+        if (why[0]) {
+            snprintf(note, sizeof note, "cannot open this lesson: %s", why);
+            rc = SW_EXIT_OK;
+            continue;
+        }
         if (rc != SW_EXIT_OK)
             break;
     }
@@ -171,7 +196,7 @@ int sw_cmd_lesson(int argc, char **argv)
     else if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
         rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson --check FILE...'");
     else
-        rc = k >= 0 ? run_lesson(e[k].path, -1) : menu(e, n);
+        rc = k >= 0 ? run_lesson(e[k].path, -1, NULL, 0) : menu(e, n);
     sw_lesson_list_free(e, n);
     return rc;
 }

@@ -4,6 +4,7 @@
 #include "cli/cli.h"
 
 #include <getopt.h>
+#include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +15,7 @@
 #include "render/screen.h"
 #include "tui/loop.h"
 #include "util/signals.h"
+#include "util/utf8.h"
 
 static const char play_help[] =
     "usage: stepwise play SCENE [OPTIONS]\n\n"
@@ -42,14 +44,13 @@ int sw_cli_play(sw_app *a, const sw_play_hooks *hooks)
 
 /* Print `frames` frames of the composed screen as text; a write error
  * (a full disk, a closed pipe) is an error. */
-static int ascii_frames(sw_app *a, long frames, int cols, int rows, int braille)
+static int ascii_frames(sw_app *a, long frames, int cols, int rows)
 {
     sw_frame f;
     sw_screen scr;
     char err[SW_ERRLEN];
     if (sw_frame_init(&f, err, sizeof err) != SW_OK || sw_screen_init(&scr, cols, rows, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
-    a->braille = braille;
     size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
     char *text = malloc(cap);
     if (!text)
@@ -141,7 +142,17 @@ int sw_cmd_play(int argc, char **argv)
         sw_app_set_compare(&a, 1, NULL, NULL);
     if (ghost)
         sw_app_set_ghost(&a, 1);
-    int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows, braille) : sw_cli_play(&a, NULL);
+    a.braille = braille;
+    /* Braille dots are UTF-8 characters: in another locale the frames stay
+     * ASCII (the live UI says so on its message line). */
+    if (ascii && braille) {
+        setlocale(LC_CTYPE, "");
+        if (!sw_utf8_locale()) {
+            a.braille = 0;
+            fprintf(stderr, "stepwise: --braille needs a UTF-8 locale (e.g. LANG=C.UTF-8); drawing with ASCII\n");
+        }
+    }
+    int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;
 }

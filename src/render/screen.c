@@ -51,6 +51,19 @@ void sw_screen_clear(sw_screen *s)
     memset(s->fade, 0, n);
 }
 
+/* Set one cell; a wide character half overwritten loses its other half. */
+static void put_cell(sw_screen *s, int row, int x, uint32_t c, int style)
+{
+    size_t i = (size_t)row * (size_t)s->cols + (size_t)x;
+    if (s->cp[i] == SW_SCREEN_WIDE_TAIL && c != SW_SCREEN_WIDE_TAIL && x > 0)
+        s->cp[i - 1] = ' ';
+    if (x + 1 < s->cols && s->cp[i + 1] == SW_SCREEN_WIDE_TAIL)
+        s->cp[i + 1] = ' ';
+    s->cp[i] = c;
+    s->style[i] = (unsigned char)style;
+    s->fade[i] = 0;
+}
+
 int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const char *text)
 {
     if (row < 0 || row >= s->rows || col >= s->cols || !text)
@@ -59,15 +72,20 @@ int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const c
     int n = 0;
     while (*p && n < width) {
         uint32_t c = sw_utf8_next(&p);
-        int x = col + n++;
+        int w = c < 0x20 ? 1 : sw_utf8_width(c);
+        if (w == 0)
+            continue;
+        if (n + w > width)
+            break;
+        int x = col + n;
+        if (x + w > s->cols)
+            break;
+        n += w;
         if (x < 0)
             continue;
-        if (x >= s->cols)
-            break;
-        size_t i = (size_t)row * (size_t)s->cols + (size_t)x;
-        s->cp[i] = c < 0x20 ? ' ' : c;
-        s->style[i] = (unsigned char)style;
-        s->fade[i] = 0;
+        put_cell(s, row, x, c < 0x20 ? ' ' : c, style);
+        if (w == 2)
+            put_cell(s, row, x + 1, SW_SCREEN_WIDE_TAIL, style);
     }
     return n;
 }
@@ -93,7 +111,10 @@ size_t sw_screen_to_text(const sw_screen *s, char *buf, size_t len)
             last--;
         for (int c = 0; c <= last; c++) {
             char u[4];
-            int k = sw_utf8_encode(s->cp[(size_t)r * (size_t)s->cols + (size_t)c], u);
+            uint32_t cp = s->cp[(size_t)r * (size_t)s->cols + (size_t)c];
+            if (cp == SW_SCREEN_WIDE_TAIL)
+                continue; /* the wide character before it covers this cell */
+            int k = sw_utf8_encode(cp, u);
             if (out + (size_t)k + 2 > len) {
                 if (len)
                     buf[0] = '\0';

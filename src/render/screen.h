@@ -29,6 +29,10 @@ enum {
 #define SW_MIN_COLS 60
 #define SW_MIN_ROWS 16
 
+/* The cell after a wide character (CJK, emoji: two cells on a terminal):
+ * covered by it, painted as nothing. */
+#define SW_SCREEN_WIDE_TAIL 0u
+
 typedef struct sw_screen {
     int cols, rows;
     uint32_t *cp;
@@ -40,7 +44,9 @@ int sw_screen_init(sw_screen *s, int cols, int rows, char *err, size_t errlen);
 void sw_screen_free(sw_screen *s);
 void sw_screen_clear(sw_screen *s);
 /* Write UTF-8 text at (row, col), clipped to width cells and the screen;
- * invalid bytes show as '?'. Returns the cells written. */
+ * invalid bytes show as '?'. A wide character takes two cells (the second
+ * SW_SCREEN_WIDE_TAIL) and is left out whole when only one is left;
+ * combining marks are dropped. Returns the cells written. */
 int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const char *text);
 /* Fill a rectangle with spaces of a style (overlay backgrounds). */
 void sw_screen_fill(sw_screen *s, int row, int col, int height, int width, int style);

@@ -1,7 +1,8 @@
 /* The live loop shared by `play` and the lesson runner: fixed-Δt
  * simulation decoupled from the frame rate (the app's clock), keys, one
- * composed frame painted per tick. Ends on q, a signal (sw_signal_caught)
- * or an error; the terminal is restored before it returns. */
+ * composed frame painted per tick. Ends on q, a signal (sw_signal_caught),
+ * a terminal that went away (counted as SIGHUP) or an error; the terminal
+ * is restored before it returns. */
 #include "tui/loop.h"
 
 #include <math.h>
@@ -19,6 +20,17 @@ static long step_budget(const sw_app *a, double capacity)
 {
     double b = (capacity > 0 ? capacity : 2000) * 0.010 / a->nsims;
     return b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
+}
+
+/* Braille dots are characters only a UTF-8 terminal shows: elsewhere the
+ * picture stays ASCII, with a note saying why. */
+static void braille_needs_utf8(sw_app *a)
+{
+    if (a->braille && !sw_term_utf8()) {
+        a->braille = 0;
+        snprintf(a->message, sizeof a->message, "Braille needs a UTF-8 locale (e.g. LANG=C.UTF-8); "
+                 "drawing with ASCII");
+    }
 }
 
 int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
@@ -60,6 +72,10 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
         for (int key; (key = sw_term_key(0)) != -1;) {
             if (key == -2)
                 continue;
+            if (key == SW_TERM_GONE) {
+                sw_signals_hangup();
+                break;
+            }
             long steps_before = a->sims[0].steps;
             if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
                 sw_app_key(a, key, hooks != NULL);
@@ -84,6 +100,7 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
             busy = 0;
             rate_t = now;
         }
+        braille_needs_utf8(a);
         sw_frame_push_trails(&f, a);
         const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, cols) : NULL;
         sw_frame_compose(&f, a, side, &scr);
@@ -91,6 +108,8 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
         /* About 60 frames per second; when paused, wait for a key instead of spinning. */
         int wait = a->paused ? 250 : (int)fmax(1.0, 1000.0 / 60 - 1000.0 * (sw_clock_now() - frame_start));
         int key = sw_term_key(wait);
+        if (key == SW_TERM_GONE)
+            sw_signals_hangup();
         if (key >= 0) {
             if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
                 sw_app_key(a, key, hooks != NULL);

@@ -23,11 +23,15 @@ typedef struct sw_play_hooks {
  * err filled. The terminal is restored and any recording written first. */
 int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen);
 
-/* The lesson menu: n lines, *sel highlighted (arrows, digits, Enter).
- * Returns the index chosen, -1 when the student quit (q, Esc), -2 on a
- * signal; SW_EIO-style negative status below -2 is never returned: a
- * terminal that cannot start gives -3 with err filled. The terminal is
- * restored before it returns. */
-int sw_tui_menu(const char *title, const char *const *lines, int n, int *sel, char *err, size_t errlen);
+/* The lesson menu: n lines, *sel highlighted and always shown (the list
+ * scrolls; arrows, PgUp/PgDn, a number typed, Enter). note (NULL: none)
+ * is shown at the bottom until a key is pressed: why the last choice did
+ * not open. Returns the index chosen (the terminal stays up for the
+ * lesson), -1 when the student quit (q, Esc), -2 on a signal or when the
+ * terminal went away (sw_signal_caught tells which), -3 with err filled
+ * when the terminal cannot start. The terminal is restored before any
+ * return but an index. */
+int sw_tui_menu(const char *title, const char *const *lines, int n, int *sel, const char *note, char *err,
+                size_t errlen);
 
 #endif

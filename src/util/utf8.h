@@ -1,5 +1,6 @@
 /* UTF-8: encoding a code point, decoding leniently for display, checking
- * strictly for input, and counting characters. Pure; no locale. */
+ * strictly for input, counting characters and display cells. Pure, and the
+ * same in every locale, except sw_utf8_locale, which asks the locale. */
 #ifndef SW_UTIL_UTF8_H
 #define SW_UTIL_UTF8_H
 
@@ -32,5 +33,20 @@ size_t sw_utf8_count(const char *s, size_t len);
 
 /* The length of s[0..len) cut to at most max bytes on a character boundary. */
 size_t sw_utf8_clip(const char *s, size_t len, size_t max);
+
+/* Cells a code point takes on a terminal: 0 (a control, a combining mark,
+ * a zero-width character), 2 (East Asian wide, an emoji picture) or 1. */
+int sw_utf8_width(uint32_t cp);
+
+/* Display cells of s[0..len) (stops at a NUL; invalid bytes count one each). */
+size_t sw_utf8_columns(const char *s, size_t len);
+
+/* The bytes of s[0..len) that fit in cols cells, whole characters only;
+ * the cells they take in *used (may be NULL). */
+size_t sw_utf8_fit(const char *s, size_t len, size_t cols, size_t *used);
+
+/* 1 when the current locale's character set (LC_CTYPE, after setlocale)
+ * is UTF-8: Braille, ✓ and wide text can be shown. */
+int sw_utf8_locale(void);
 
 #endif

@@ -1,0 +1,101 @@
+#!/bin/sh
+# A terminal that goes away under a running lesson (the window closed, the
+# pane or session killed, the pty's master closed) ends stepwise within a
+# second, using little CPU on the way, with exit status 129 (a hangup),
+# also when a parent swallowed the SIGHUP (`trap '' HUP`, as `make run` or
+# a wrapper script may) and when no SIGHUP is sent at all (a process in its
+# own session: only EOF/EIO on the terminal tells).
+. "$(dirname "$0")/lib.sh"
+command -v setsid >/dev/null || { echo "setsid (util-linux) is needed"; exit 1; }
+export XDG_STATE_HOME="$WORK/state"
+HZ=$(getconf CLK_TCK 2>/dev/null || echo 100)
+
+# cpu_ticks PID: user + system time so far, in clock ticks (/proc/PID/stat
+# fields 14 and 15, counted after the parenthesised name).
+cpu_ticks() {
+    { read -r line < "/proc/$1/stat"; } 2>/dev/null || { echo 0; return; }
+    rest=${line##*) }
+    set -- $rest
+    echo $(( ${12} + ${13} ))
+}
+
+now_ms() { date +%s%3N; }
+
+# find_app: the pid of our stepwise process (its command line names the binary and "lesson").
+find_app() {
+    for c in /proc/[0-9]*/cmdline; do
+        cmd=$( { tr '\0' ' ' < "$c"; } 2>/dev/null) || continue
+        case "$cmd" in "$STEPWISE lesson"*|"$STEPWISE "|"$STEPWISE") p=${c#/proc/}; echo "${p%/cmdline}"; return ;; esac
+    done
+}
+
+# vanish NAME HOW WRAP ARGS: start `stepwise ARGS` in a fresh tmux session
+# under `sh -c` (WRAP "setsid -w" to give it a session of its own), kill the
+# pane or session (HOW), and check how fast and how cheaply it ends.
+vanish() {
+    name=$1 how=$2 wrap=$3; shift 3
+    rm -f rc times
+    s="sw-gone-$$-$name"
+    LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$s" -x 120 -y 40 -c "$WORK" \
+        "env TERM=xterm-256color LANG=C.UTF-8 sh -c 'trap \"\" HUP; $wrap \"$STEPWISE\" $*; echo \$? > rc; times > times'" \
+        || fail "$name: cannot start tmux"
+    pid="" i=0
+    while [ -z "$pid" ] && [ $i -lt 80 ]; do sleep 0.1; pid=$(find_app); i=$((i + 1)); done
+    [ -n "$pid" ] || { tmux kill-session -t "$s" 2>/dev/null; fail "$name: stepwise did not start"; }
+    sleep 1.5 # it draws a few dozen frames
+    before=$(cpu_ticks "$pid")
+    start=$(now_ms)
+    if [ "$how" = pane ]; then tmux kill-pane -t "$s"; else tmux kill-session -t "$s"; fi
+    i=0
+    while [ -d "/proc/$pid" ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    took=$(( $(now_ms) - start ))
+    if [ -d "/proc/$pid" ]; then
+        spent=$(( $(cpu_ticks "$pid") - before ))
+        kill -KILL "$pid" 2>/dev/null
+        fail "$name: stepwise still runs ${took} ms after its terminal went away ($spent ticks of CPU since)"
+    fi
+    i=0
+    while [ ! -s times ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    [ -s rc ] && [ -s times ] || fail "$name: the wrapping shell did not record the exit"
+    # times: the shell's user and system time, then its children's
+    total=$(sed -n 2p times | awk '{ n = 0; for (i = 1; i <= 2; i++) { split($i, a, /[ms]/); n += a[1] * 60 + a[2] } print int(n * 1000) }')
+    after=$(( total - before * 1000 / HZ ))
+    echo "$name: gone ${took} ms after the terminal, exit $(cat rc), CPU after: ${after} ms (total ${total} ms)"
+    [ "$took" -lt 1000 ] || fail "$name: took ${took} ms to end, expected under 1 s"
+    [ "$(cat rc)" = 129 ] || fail "$name: exit status $(cat rc), expected 129 (128 + SIGHUP)"
+    # measured by ticks (10 ms): what it used since the kill, startup excluded
+    [ "$after" -lt 300 ] || fail "$name: used ${after} ms of CPU after the terminal went away"
+}
+
+vanish lesson-session session "" lesson 1
+vanish lesson-pane pane "" lesson 1
+vanish lesson-own-session session "setsid -w" lesson 1
+vanish menu-own-session pane "setsid -w" ""
+
+# A pty whose master is closed under it (script(1) killed outright).
+if command -v script >/dev/null; then
+    rm -f rc times
+    # script's input: a FIFO held open here, so it never sees end of file
+    mkfifo in && exec 3<>in
+    env TERM=xterm-256color script -qfec "sh -c 'trap \"\" HUP; setsid -w \"$STEPWISE\" lesson 1; echo \$? > rc; times > times'" /dev/null <in >/dev/null 2>&1 &
+    pid="" i=0
+    while [ -z "$pid" ] && [ $i -lt 80 ]; do sleep 0.1; pid=$(find_app); i=$((i + 1)); done
+    [ -n "$pid" ] || fail "pty: stepwise did not start under script"
+    sleep 1
+    spid=""
+    for c in /proc/[0-9]*/cmdline; do
+        case "$( { tr '\0' ' ' < "$c"; } 2>/dev/null)" in script\ -qfec*) p=${c#/proc/}; spid=${p%/cmdline} ;; esac
+    done
+    [ -n "$spid" ] || fail "pty: no script process"
+    start=$(now_ms)
+    kill -KILL "$spid"
+    i=0
+    while [ -d "/proc/$pid" ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    took=$(( $(now_ms) - start ))
+    [ -d "/proc/$pid" ] && { kill -KILL "$pid"; fail "pty: stepwise still runs ${took} ms after its pty closed"; }
+    i=0
+    while [ ! -s rc ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    echo "pty: gone ${took} ms after the master closed, exit $(cat rc 2>/dev/null)"
+    [ "$(cat rc 2>/dev/null)" = 129 ] || fail "pty: exit status $(cat rc 2>/dev/null), expected 129"
+fi
+echo ok

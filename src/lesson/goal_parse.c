@@ -371,7 +371,10 @@ int sw_lp_goal(sw_lp_parser *ps, size_t pos)
     sw_lesson_goal *g = &pg->goals[pg->ngoals];
     if (parse_goal(ps, pos, g) != SW_OK)
         return ps->status;
-    ps->at_goal[pg->ngoals] = (sw_lp_where){ ps->line, 1 };
+    /* whole-page checks point at the goal's expression */
+    while (pos < ps->lnlen && sw_lp_blank(ps->ln[pos]))
+        pos++;
+    ps->at_goal[pg->ngoals] = (sw_lp_where){ ps->line, sw_lp_col(ps, pos) };
     pg->ngoals++;
     ps->hint_to = HINT_GOAL;
     return SW_OK;

@@ -289,6 +289,9 @@ static int check_bytes(sw_lp_parser *ps, const unsigned char *s, size_t avail, s
             i++;
             continue;
         }
+        if (c == '\r')
+            return FAIL(ps, i, "carriage return (CR) without a line feed after it; expected plain text with "
+                        "LF or CRLF line endings");
         if ((c < 0x20 && c != '\t') || c == 0x7F)
             return FAIL(ps, i, "control character 0x%02X; expected plain text (tabs are fine)", c);
         if (c < 0x80) {
@@ -360,6 +363,17 @@ int sw_lesson_parse(const char *name, const char *text, size_t len, sw_lesson *o
     /* A UTF-8 byte-order mark, as some editors write, is not text. */
     if (len >= 3 && s[0] == 0xEF && s[1] == 0xBB && s[2] == 0xBF)
         pos = 3;
+    /* Line endings of classic Mac OS (CR alone) make the whole file one
+     * line: say so, rather than what that one line then breaks. */
+    if (ps->status == SW_OK && len > pos && memchr(s + pos, '\n', len - pos) == NULL) {
+        const unsigned char *cr = memchr(s + pos, '\r', len - pos);
+        if (cr && (size_t)(cr - s) + 1 < len) {
+            ps->ln = (const char *)s + pos;
+            ps->lnlen = (size_t)(cr - s) - pos;
+            FAIL(ps, ps->lnlen, "this file ends its lines with CR alone (classic Mac line endings), so it "
+                 "reads as one line; expected LF or CRLF line endings (convert it, e.g. tr '\\r' '\\n')");
+        }
+    }
     int nonblank = 0;
     while (ps->status == SW_OK && pos < len) {
         size_t n = 0;

@@ -145,6 +145,9 @@ static int die_armed(int slave, int sig, int forked_child, int disarm)
         /* a core would only litter the test directory */
         struct rlimit none = { 0, 0 };
         setrlimit(RLIMIT_CORE, &none);
+        /* the action before arming is the default one (a sanitizer's own
+         * handler would report and exit instead of dying of the signal) */
+        signal(sig, SIG_DFL);
         struct termios saved, raw;
         tcgetattr(slave, &saved);
         raw = saved;

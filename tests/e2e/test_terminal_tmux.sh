@@ -15,7 +15,9 @@ alt_screen() { tmux display -p -t "$SESSION" '#{alternate_on}'; }
 for pair in SEGV:11 ABRT:6 QUIT:3 BUS:7 FPE:8; do
     sig=${pair%:*} num=${pair#*:}
     keys "clear" Enter
-    type_cmd "$STEPWISE play orbit; echo EXIT=\$?"
+    # a sanitizer build reports a SEGV/BUS/FPE and exits 1 after the restore;
+    # without its handlers the process dies of the signal, as checked here
+    type_cmd "ASAN_OPTIONS=handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0 $STEPWISE play orbit; echo EXIT=\$?"
     wait_for 'orbit +verlet' || fail "play orbit did not start (before SIG$sig)"
     pid=$(app_pid)
     [ -n "$pid" ] || fail "no stepwise process (SIG$sig)"
@@ -28,13 +30,13 @@ done
 # ---- TERM: unknown and unset are named; exit 2, nothing leaked
 keys "clear" Enter
 type_cmd "TERM=frob-term $STEPWISE play spring; echo EXIT=\$?"
-wait_for 'EXIT=' || fail "TERM=frob-term: no exit"
+wait_for 'EXIT=[0-9]' || fail "TERM=frob-term: no exit"
 screen | grep -q "unknown terminal type TERM='frob-term'" || fail "an unknown TERM is not named"
 screen | grep -q 'EXIT=2' || fail "an unknown TERM: exit status is not 2"
 screen | grep -q 'Sanitizer' && fail "an unknown TERM: the sanitizer complained"
 keys "clear" Enter
 type_cmd "env -u TERM $STEPWISE lesson 1; echo EXIT=\$?"
-wait_for 'EXIT=' || fail "TERM unset: no exit"
+wait_for 'EXIT=[0-9]' || fail "TERM unset: no exit"
 screen | grep -q 'TERM is not set' || fail "an unset TERM is not said"
 screen | grep -q 'EXIT=2' || fail "TERM unset: exit status is not 2"
 screen | grep -q 'Sanitizer' && fail "TERM unset: the sanitizer complained"
@@ -84,7 +86,7 @@ keys 3 0
 wait_for '> +30\. .*\(broken\)' || fail "the broken lesson is not marked in the menu"
 keys Enter
 wait_for "cannot open this lesson: .*30-x.lesson:3:8: unknown scene 'nope'" || fail "the broken lesson's error is not shown"
-screen | grep -q 'EXIT=' && fail "choosing a broken lesson left the menu"
+screen | grep -q 'EXIT=[0-9]' && fail "choosing a broken lesson left the menu"
 keys Down
 wait_for '> +31\. Lesson number 31' || fail "the menu does not work after the error"
 screen | grep -q 'cannot open this lesson' && fail "the error stays after a key"

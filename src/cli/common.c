@@ -3,7 +3,6 @@
 #include "cli/cli.h"
 
 #include <dirent.h>
-#include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -11,7 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "engine/stepper.h"
+#include "lab/plugin.h"
 
 int sw_cli_error(const char *fmt, ...)
 {
@@ -112,72 +111,11 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     return SW_EXIT_OK;
 }
 
-/* Loaded plugins, found again by method name: the registry keeps a copy of
- * the sw_integrator (not a pointer to it) and sw_stepper_init leaves
- * s->plugin NULL, so the step looks its plugin up on first use. */
-static const sw_plugin *plugin_infos[8];
-static int nplugin_infos;
-
-static const sw_plugin *plugin_for(const sw_integrator *m)
-{
-    for (int i = 0; i < nplugin_infos; i++)
-        if (strcmp(plugin_infos[i]->name, m->name) == 0)
-            return plugin_infos[i];
-    return NULL;
-}
-
-/* A plugin's step function behind the built-in step signature. */
-static int plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    if (!s->plugin)
-        s->plugin = (void *)plugin_for(s->method);
-    const sw_plugin *info = s->plugin;
-    if (!info)
-        return SW_EINVAL;
-    int rc = info->step(ode, *t, y, h, s->work);
-    *t += h;
-    return rc == 0 ? SW_OK : SW_EDIVERGED;
-}
-
 int sw_cli_plugin(const char *path)
 {
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode))
-        return sw_cli_error("--plugin '%.200s': no such file (give the path to a .so built from "
-                            "examples/euler_plugin.c)", path);
-    /* dlopen searches the library path for bare names; a path with a slash is taken as is. */
-    char full[4096];
-    snprintf(full, sizeof full, "%s%s", strchr(path, '/') ? "" : "./", path);
-    void *lib = dlopen(full, RTLD_NOW | RTLD_LOCAL);
-    if (!lib)
-        return sw_cli_error("--plugin '%.200s' could not be loaded: %s", path, dlerror());
-    const sw_plugin *(*get)(void);
-    *(void **)&get = dlsym(lib, "sw_plugin_info");
-    if (!get)
-        return sw_cli_error("--plugin '%.200s' has no sw_plugin_info symbol; a plugin must define "
-                            "const sw_plugin *sw_plugin_info(void)", path);
-    const sw_plugin *info = get();
-    if (!info || info->abi != SW_PLUGIN_ABI)
-        return sw_cli_error("--plugin '%.200s' was built for plugin interface %d; this stepwise "
-                            "needs %d (rebuild it against this stepwise's integrator.h)",
-                            path, info ? info->abi : -1, SW_PLUGIN_ABI);
-    if (!info->name || !*info->name || !info->step || info->work_vectors < 0 || info->work_vectors > 64)
-        return sw_cli_error("--plugin '%.200s': sw_plugin_info() must give a name, a step function "
-                            "and 0..64 work vectors", path);
-    static sw_integrator methods[8];
-    static int nmethods;
-    if (nmethods == 8)
-        return sw_cli_error("at most 8 plugins can be loaded");
-    sw_integrator *m = &methods[nmethods];
-    *m = (sw_integrator){ .name = info->name, .label = info->label ? info->label : info->name,
-                          .order = info->order, .evals = info->evals, .flags = SW_PLUGIN | SW_EXPLICIT,
-                          .stability = NAN, .work_vectors = info->work_vectors,
-                          .step = plugin_step, .summary = "student plugin" };
-    char err[SW_ERRLEN];
-    if (sw_integrator_register(m, err, sizeof err) != SW_OK)
-        return sw_cli_error("--plugin '%.200s': %s", path, err);
-    plugin_infos[nplugin_infos++] = info;
-    nmethods++;
+    char err[SW_ERRLEN + 256];
+    if (sw_plugin_load(path, NULL, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
     return SW_EXIT_OK;
 }
 

@@ -7,6 +7,8 @@
 #include <signal.h>
 #include <string.h>
 
+#include "lab/plugin.h"
+#include "lab/sandbox.h"
 #include "lab/trace.h"
 
 static const char record_help[] =
@@ -36,7 +38,8 @@ static const char record_help[] =
     "                         once the trace is complete\n"
     "  -h, --help             this help\n"
     "\n"
-    "exit status: 0 trace written (a blow-up included), 2 bad input or a write error.\n";
+    "exit status: 0 trace written (a blow-up included), 1 a plugin failed (crashed, exited,\n"
+    "looped, overran its vectors; the trace ends at that step), 2 bad input or a write error.\n";
 
 static volatile sig_atomic_t interrupted;
 
@@ -146,6 +149,7 @@ int sw_cmd_record(int argc, char **argv)
         return sw_cli_error("record: %s", err);
     }
     catch_signals();
+    sw_sandbox_set_cancel(&interrupted); /* a plugin's step cannot hold off Ctrl-C */
     int rc = sw_trace_begin(&w, &sim, &spec, err, sizeof err);
     while (rc == SW_OK && !sw_trace_done(&sim, &spec) && !interrupted) {
         rc = sw_trace_step(&sim, &spec, err, sizeof err);
@@ -167,6 +171,13 @@ int sw_cmd_record(int argc, char **argv)
     if (rc != SW_OK) {
         sw_sim_free(&sim);
         return sw_cli_error("record: %s%s", err, output ? "; no trace written" : "");
+    }
+    if (sim.blown && sw_plugin_failed(&sim) != SW_PF_NONE) {
+        /* Not a numerical result: the plugin is broken. The trace shows how far it got. */
+        fprintf(stderr, "stepwise: %s (plugin) failed on %s: %s (t = %g); the trace ends there\n",
+                sim.method->name, o.scene->name, sim.blow_reason, sim.blow_time);
+        sw_sim_free(&sim);
+        return SW_EXIT_FAIL;
     }
     if (sim.blown)
         fprintf(stderr, "stepwise: %s under %s%s diverged at step %ld (t = %g): %s; the trace "

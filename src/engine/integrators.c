@@ -36,6 +36,7 @@ static const sw_integrator builtins[] = {
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
 #define MAX_EXTRA 8
 static sw_integrator extra[MAX_EXTRA];
+static char extra_disabled[MAX_EXTRA][SW_ERRLEN]; /* non-empty: why it is refused */
 static int nextra;
 
 int sw_integrator_count(void) { return NBUILTIN + nextra; }
@@ -69,8 +70,20 @@ int sw_integrator_register(const sw_integrator *method, char *err, size_t errlen
     return SW_OK;
 }
 
+void sw_integrator_disable(const sw_integrator *m, const char *why)
+{
+    for (int i = 0; i < nextra; i++)
+        if (m == &extra[i])
+            snprintf(extra_disabled[i], sizeof extra_disabled[i], "%s", why && *why ? why : "disabled");
+}
+
 int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
 {
+    for (int i = 0; i < nextra; i++)
+        if (m == &extra[i] && extra_disabled[i][0]) {
+            snprintf(err, errlen, "'%s' is disabled: %s", m->name, extra_disabled[i]);
+            return SW_EINVAL;
+        }
     if ((m->flags & SW_NEEDS_SECOND_ORDER) && ode->order != 2) {
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
@@ -115,6 +128,9 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode, ch
 
 void sw_stepper_free(sw_stepper *s)
 {
+    if (s->release)
+        s->release(s);
+    s->release = NULL;
     free(s->work);
     free(s->dense);
     s->work = s->dense = NULL;

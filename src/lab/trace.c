@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "lab/plugin.h"
 #include "stepwise/stepwise.h"
 
 /* ---- the run rule --------------------------------------------------------- */
@@ -66,7 +67,8 @@ int sw_trace_step(sw_sim *s, const sw_trace_spec *spec, char *err, size_t errlen
                  "shorten the run", SW_TRACE_MAX_STEPS, s->t, spec->until);
         return SW_EINVAL;
     }
-    sw_sim_step_until(s, spec->steps > 0 ? 0.0 : spec->until);
+    if (sw_sim_step_until(s, spec->steps > 0 ? 0.0 : spec->until))
+        sw_plugin_failed(s); /* a plugin that crashed, looped, ...: say so, not "diverged" */
     return SW_OK;
 }
 

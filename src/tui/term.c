@@ -9,12 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 #include <wchar.h>
 
 #include "stepwise/stepwise.h"
 
 volatile sig_atomic_t sw_term_signal;
 static int started;
+static pid_t owner; /* the process that started curses: a forked child never restores it */
 static int colour;
 static attr_t style_attr[SW_STYLE_ALL];
 static short style_pair[SW_STYLE_ALL];
@@ -23,7 +25,7 @@ static void on_signal(int sig) { sw_term_signal = sig; }
 
 void sw_term_stop(void)
 {
-    if (!started)
+    if (!started || getpid() != owner)
         return;
     started = 0;
     curs_set(1);
@@ -71,6 +73,7 @@ int sw_term_start(char *err, size_t errlen)
         return SW_EIO;
     }
     started = 1;
+    owner = getpid();
     atexit(sw_term_stop);
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);

@@ -96,6 +96,33 @@ void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len)
         snprintf(buf, len, "energy");
 }
 
+int sw_trace_colindex(const sw_system *sys, const char *name)
+{
+    static const char *const kinds[] = { "x", "y", "vx", "vy" };
+    int pp = per_particle(sys);
+    if (strcmp(name, "step") == 0)
+        return 0;
+    if (strcmp(name, "t") == 0)
+        return 1;
+    if (strcmp(name, "energy") == 0)
+        return sys->scene->energy ? 2 + pp * sys->n : -1;
+    for (int k = pp - 1; k >= 0; k--) {
+        size_t len = strlen(kinds[k]);
+        const char *digits = name + len;
+        if (strncmp(name, kinds[k], len) != 0 || !*digits || strlen(digits) > 9 ||
+            (digits[0] == '0' && digits[1]))
+            continue;
+        long i = 0;
+        for (const char *d = digits; *d; d++) {
+            if (*d < '0' || *d > '9')
+                return -1;
+            i = 10 * i + (*d - '0');
+        }
+        return i < sys->n ? 2 + pp * (int)i + k : -1;
+    }
+    return -1;
+}
+
 void sw_trace_row_values(const sw_sim *s, double *row)
 {
     const sw_system *sys = &s->sys;

@@ -14,17 +14,67 @@
 
 /* Keys a trace may carry, in the order record writes them. */
 static const char *const known_keys =
-    "version, scene, param NAME, integrator, dt, steps, until, every, rtol, atol, diverged";
+    "version, scene, param NAME, integrator, dt, steps, until, every, rtol, atol, diverged, "
+    "student, note";
+static const char *const assignment_keys = "tolerance, tolerance COL, ignore, title";
 
 static const char *const key_names[K_COUNT] = { "version", "scene", "integrator", "dt", "steps",
-                                                "until", "every", "rtol", "atol", "diverged" };
+                                                "until", "every", "rtol", "atol", "diverged",
+                                                "student", "note" };
 
 static int parse_positive(const sw_trace_reader *r, const char *key, const char *v, double *out,
                           char *err, size_t errlen)
 {
+    char show[48];
     if (sw_parse_double(v, out) != SW_OK || !(*out > 0))
-        return tr_fail(r, err, errlen, "'%s' wants a positive finite number, not '%s'", key, v);
+        return tr_fail(r, err, errlen, "'%s' wants a positive finite number, not '%s'", key,
+                       tr_shown(v, strlen(v), show));
     return SW_OK;
+}
+
+/* rtol and atol: at least SW_TRACE_TOL_MIN, at most 1, refused up front
+ * (a tolerance no run can meet would spend the whole step budget first). */
+static int parse_tolerance(const sw_trace_reader *r, const char *key, const char *v, double *out,
+                           char *err, size_t errlen)
+{
+    char show[48];
+    if (sw_parse_double(v, out) != SW_OK || !(*out >= SW_TRACE_TOL_MIN && *out <= 1))
+        return tr_fail(r, err, errlen, "'%s' wants a tolerance in [%g, 1], not '%s' (below %g "
+                       "no double-precision run can meet it)", key, SW_TRACE_TOL_MIN,
+                       tr_shown(v, strlen(v), show), SW_TRACE_TOL_MIN);
+    return SW_OK;
+}
+
+/* Free text (student, note): printable, no control characters. */
+static int free_text(const sw_trace_reader *r, const char *key, const char *v, size_t max,
+                     char *err, size_t errlen)
+{
+    if (strlen(v) >= max)
+        return tr_fail(r, err, errlen, "'%s' is longer than %zu bytes", key, max - 1);
+    return SW_OK;
+}
+
+/* An assignment's own key: kept as text for the assignment module. */
+static int extra_key(sw_trace_reader *r, const char *key, const char *value, char *err,
+                     size_t errlen)
+{
+    sw_trace_meta *m = &r->meta;
+    if (m->nextras == SW_TRACE_EXTRAS)
+        return tr_fail(r, err, errlen, "more than %d tolerance, ignore and title lines",
+                       SW_TRACE_EXTRAS);
+    if (strlen(key) >= sizeof m->extras[0].key || strlen(value) >= sizeof m->extras[0].value)
+        return tr_fail(r, err, errlen, "'%.40s' has a key or value that is too long", key);
+    sw_trace_extra *x = &m->extras[m->nextras++];
+    strcpy(x->key, key);
+    strcpy(x->value, value);
+    x->line = r->line;
+    return SW_OK;
+}
+
+static int is_assignment_key(const char *key)
+{
+    return strcmp(key, "tolerance") == 0 || strncmp(key, "tolerance ", 10) == 0 ||
+           strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0;
 }
 
 static void scene_names(char *buf, size_t len)
@@ -66,10 +116,13 @@ int tr_meta_line(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
     int k = 0;
     while (k < K_COUNT && strcmp(key, key_names[k]) != 0)
         k++;
+    if (k == K_COUNT && m->assignment && is_assignment_key(key))
+        return extra_key(r, key, value, err, errlen);
     if (k == K_COUNT)
-        return tr_fail(r, err, errlen, "unknown metadata key '%s'; known keys: %s",
-                    tr_shown(key, strlen(key), show), known_keys);
-    if (ms->seen[k] && k != K_DIVERGED)
+        return tr_fail(r, err, errlen, "unknown metadata key '%s'; known keys: %s%s%s",
+                    tr_shown(key, strlen(key), show), known_keys,
+                    m->assignment ? ", " : "", m->assignment ? assignment_keys : "");
+    if (ms->seen[k] && k != K_DIVERGED && k != K_NOTE)
         return tr_fail(r, err, errlen, "'%s' given twice (first on line %ld)", key_names[k], ms->seen[k]);
     ms->seen[k] = r->line;
     char names[400];
@@ -95,26 +148,45 @@ int tr_meta_line(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
         m->integrator_line = r->line;
         break;
     case K_DT:
+        m->dt_line = r->line;
         if (sw_parse_double(value, &m->dt) != SW_OK || !(m->dt >= SW_DT_MIN && m->dt <= SW_DT_MAX))
             return tr_fail(r, err, errlen, "'dt' wants a step in [%g, %g], not '%s'", SW_DT_MIN,
                         SW_DT_MAX, tr_shown(value, strlen(value), show));
         break;
     case K_STEPS:
+        m->steps_line = r->line;
         if (sw_parse_long(value, 1, SW_TRACE_MAX_STEPS, &m->spec.steps) != SW_OK)
             return tr_fail(r, err, errlen, "'steps' wants a whole number in [1, %ld], not '%s'",
                         SW_TRACE_MAX_STEPS, tr_shown(value, strlen(value), show));
         break;
     case K_UNTIL:
+        m->steps_line = r->line;
         return parse_positive(r, "until", value, &m->spec.until, err, errlen);
     case K_EVERY:
+        m->every_line = r->line;
         if (sw_parse_long(value, 1, SW_TRACE_MAX_STEPS, &m->spec.every) != SW_OK)
             return tr_fail(r, err, errlen, "'every' wants a whole number in [1, %ld], not '%s'",
                         SW_TRACE_MAX_STEPS, tr_shown(value, strlen(value), show));
         break;
     case K_RTOL:
-        return parse_positive(r, "rtol", value, &m->rtol, err, errlen);
+        m->rtol_line = r->line;
+        return parse_tolerance(r, "rtol", value, &m->rtol, err, errlen);
     case K_ATOL:
-        return parse_positive(r, "atol", value, &m->atol, err, errlen);
+        m->atol_line = r->line;
+        return parse_tolerance(r, "atol", value, &m->atol, err, errlen);
+    case K_STUDENT:
+        if (free_text(r, "student", value, sizeof m->student, err, errlen) != SW_OK)
+            return SW_EINVAL;
+        strcpy(m->student, value);
+        break;
+    case K_NOTE: {
+        size_t used = strlen(m->notes), len = strlen(value);
+        if (used + len + 4 >= sizeof m->notes)
+            return tr_fail(r, err, errlen, "the notes are longer than %zu bytes in all",
+                           sizeof m->notes - 1);
+        snprintf(m->notes + used, sizeof m->notes - used, "%s%s", used ? " / " : "", value);
+        break;
+    }
     case K_DIVERGED:
         m->diverged = 1;
         break;
@@ -166,8 +238,10 @@ int tr_meta_finish(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
                       pp->name, tr_shown(pp->value, strlen(pp->value), show));
         else if (sw_scene_check_value(sc, idx, v, msg, sizeof msg) != SW_OK)
             rc = tr_fail(r, err, errlen, "%s", msg);
-        else
+        else {
             m->p[idx] = v;
+            m->param_line[idx] = pp->line;
+        }
         r->line = line;
         if (rc != SW_OK)
             return rc;

@@ -4,6 +4,7 @@
 #include "lab/trace_read.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -113,7 +114,13 @@ static int read_magic(sw_trace_reader *r, char *err, size_t errlen)
         r->line = 1;
         return tr_fail(r, err, errlen, "empty file; a trace starts with the line '%s'", SW_TRACE_MAGIC);
     }
-    if (strcmp(r->buf, SW_TRACE_MAGIC) == 0)
+    /* A byte-order mark (Windows editors) and trailing blanks are no error. */
+    char *first = r->buf;
+    if (strncmp(first, "\xef\xbb\xbf", 3) == 0)
+        first += 3;
+    first = tr_trim(first);
+    if (strcmp(first, SW_TRACE_MAGIC) == 0 ||
+        (r->meta.assignment && strcmp(first, SW_ASSIGNMENT_MAGIC) == 0))
         return SW_OK;
     /* Not a trace. Random or binary bytes may happen to open with a short
      * clean line: look a little further so such a file is called binary. */
@@ -156,20 +163,52 @@ static int read_meta(sw_trace_reader *r, char *err, size_t errlen)
     return rc;
 }
 
+/* Open for reading without ever blocking: O_NONBLOCK makes opening a FIFO
+ * return at once, and only a regular file is then read. */
+static int open_regular(sw_trace_reader *r, const char *path, char *err, size_t errlen)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0) {
+        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return SW_EIO;
+    }
+    const char *kind = S_ISDIR(st.st_mode) ? "is a directory, not a trace"
+                       : S_ISFIFO(st.st_mode) ? "is a FIFO (a named pipe), not a regular file"
+                       : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "is a device, not a regular file"
+                       : S_ISSOCK(st.st_mode) ? "is a socket, not a regular file"
+                       : !S_ISREG(st.st_mode) ? "is not a regular file" : NULL;
+    if (kind) {
+        snprintf(err, errlen, "%.200s:1: %s%s", path, kind,
+                 S_ISDIR(st.st_mode) ? "" : "; give a trace file");
+        close(fd);
+        return SW_EINVAL;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0 || !(r->f = fdopen(fd, "r"))) {
+        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
+        close(fd);
+        return SW_EIO;
+    }
+    return SW_OK;
+}
+
 int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t errlen)
+{
+    return sw_trace_read_open_as(r, path, 0, err, errlen);
+}
+
+int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
+                          size_t errlen)
 {
     memset(r, 0, sizeof *r);
     snprintf(r->name, sizeof r->name, "%s", path);
-    struct stat st;
-    if (stat(path, &st) != 0 || !(r->f = fopen(path, "r"))) {
-        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
-        return SW_EIO;
-    }
-    int rc = SW_OK;
-    if (S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%.200s:1: is a directory, not a trace", path);
-        rc = SW_EINVAL;
-    }
+    r->meta.assignment = assignment;
+    int rc = open_regular(r, path, err, errlen);
+    if (rc != SW_OK)
+        return rc;
     if (rc == SW_OK)
         rc = set_cap(r, SW_TRACE_META_MAX, err, errlen);
     if (rc == SW_OK)
@@ -209,28 +248,48 @@ int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
     }
     if (rc < 0)
         return rc;
+    free(r->col_of);
+    r->col_of = malloc((size_t)r->ncols * sizeof *r->col_of);
+    unsigned char *seen = calloc((size_t)r->ncols, 1);
+    if (!r->col_of || !seen) {
+        free(seen);
+        snprintf(err, errlen, "%s: out of memory for %d columns", r->name, r->ncols);
+        return SW_ENOMEM;
+    }
+    /* Columns are matched by name, in any order; each exactly once. */
     char *cursor = r->buf, *cell, want[32], show[48];
     int c = 0;
-    while ((cell = next_cell(&cursor))) {
+    rc = SW_OK;
+    while (rc == SW_OK && (cell = next_cell(&cursor))) {
+        int idx = sw_trace_colindex(&r->sys, cell);
         if (c == r->ncols)
-            return tr_fail(r, err, errlen, "extra column '%s' in the header: a %s trace has %d "
-                        "columns, up to '%s'", tr_shown(cell, strlen(cell), show),
-                        r->sys.scene->name, r->ncols, want);
-        sw_trace_colname(&r->sys, c, want, sizeof want);
-        if (strcmp(cell, want) != 0)
-            return tr_fail(r, err, errlen, "header column %d is '%s'; expected '%s' (columns: "
-                        "step, t, x<i>, y<i>%s per particle%s)", c + 1,
-                        tr_shown(cell, strlen(cell), show), want,
-                        r->sys.ode->order == 2 ? ", vx<i>, vy<i>" : "",
-                        r->sys.scene->energy ? ", then energy" : "");
-        c++;
+            rc = tr_fail(r, err, errlen, "extra column '%s' in the header: a %s trace with these "
+                         "parameters has %d columns", tr_shown(cell, strlen(cell), show),
+                         r->sys.scene->name, r->ncols);
+        else if (idx < 0)
+            rc = tr_fail(r, err, errlen, "header column %d is '%s', which a %s trace with these "
+                         "parameters does not have (columns: step, t, x<i>, y<i>%s per particle "
+                         "for i < %d%s; in any order)", c + 1, tr_shown(cell, strlen(cell), show),
+                         r->sys.scene->name, r->sys.ode->order == 2 ? ", vx<i>, vy<i>" : "",
+                         r->sys.n, r->sys.scene->energy ? ", energy" : "");
+        else if (seen[idx])
+            rc = tr_fail(r, err, errlen, "header column %d, '%s', appears twice", c + 1,
+                         tr_shown(cell, strlen(cell), show));
+        else {
+            seen[idx] = 1;
+            r->col_of[c++] = idx;
+        }
     }
-    if (c < r->ncols) {
-        sw_trace_colname(&r->sys, c, want, sizeof want);
-        return tr_fail(r, err, errlen, "the header has %d columns; missing column '%s' (a %s "
-                    "trace with these parameters has %d)", c, want, r->sys.scene->name, r->ncols);
+    if (rc == SW_OK && c < r->ncols) {
+        int missing = 0;
+        while (seen[missing])
+            missing++;
+        sw_trace_colname(&r->sys, missing, want, sizeof want);
+        rc = tr_fail(r, err, errlen, "the header has %d columns; missing column '%s' (a %s "
+                     "trace with these parameters has %d)", c, want, r->sys.scene->name, r->ncols);
     }
-    return SW_OK;
+    free(seen);
+    return rc;
 }
 
 int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
@@ -244,8 +303,8 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
             r->at_end = rc == 0;
             return rc;
         }
-        if (r->len == 0) {
-            /* Empty lines are allowed only at the very end. */
+        if (r->len == strspn(r->buf, " \t")) {
+            /* Empty (or blank) lines are allowed only at the very end. */
             if (!r->blank_line)
                 r->blank_line = r->line;
             continue;
@@ -285,7 +344,8 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
             if (c == r->ncols)
                 return tr_fail(r, err, errlen, "the row has more than the header's %d cells "
                             "(extra '%s')", r->ncols, tr_shown(cell, strlen(cell), show));
-            sw_trace_colname(&r->sys, c, name, sizeof name);
+            int col = r->col_of[c];
+            sw_trace_colname(&r->sys, col, name, sizeof name);
             if (!*cell)
                 return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
             char *end;
@@ -295,13 +355,14 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
                 return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
                             "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
                             tr_shown(cell, strlen(cell), show));
-            if (c == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
+            if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
                 return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole number "
                             "from 0", tr_shown(cell, strlen(cell), show));
-            row[c++] = v;
+            row[col] = v;
+            c++;
         }
         if (c < r->ncols) {
-            sw_trace_colname(&r->sys, c, name, sizeof name);
+            sw_trace_colname(&r->sys, r->col_of[c], name, sizeof name);
             return tr_fail(r, err, errlen, "the row has %d cells; the header has %d (missing '%s' "
                         "onwards)", c, r->ncols, name);
         }
@@ -317,6 +378,8 @@ void sw_trace_read_close(sw_trace_reader *r)
     r->f = NULL;
     free(r->buf);
     r->buf = NULL;
+    free(r->col_of);
+    r->col_of = NULL;
     if (r->have_sys)
         sw_system_free(&r->sys);
     r->have_sys = 0;

@@ -30,7 +30,7 @@ sed '1s/.*/step,t,x0/' good.csv > m.csv;                  expect "wrong first li
 sed '1s/.*/# stepwise trace 2/' good.csv > m.csv;          expect "format version" 1 "format 2"
 sed '16s/.*/step,t,x0,y0,vx0,vy0/' good.csv > m.csv;       expect "missing column" 16 "missing column 'energy'"
 sed '16s/$/,extra/' good.csv > m.csv;                      expect "extra column" 16 "extra column 'extra'"
-sed '16s/vx0/vx1/' good.csv > m.csv;                       expect "misnamed column" 16 "expected 'vx0'"
+sed '16s/vx0/vx1/' good.csv > m.csv;                       expect "misnamed column" 16 "'vx1', which a spring trace"
 sed '30s/,[^,]*$//' good.csv > m.csv;                      expect "missing cell" 30 "6 cells"
 sed '30s/$/,1/' good.csv > m.csv;                          expect "extra cell" 30 "more than the header"
 sed '30s/,0,/,zero,/' good.csv > m.csv;                    expect "non-numeric" 30 "'zero', which is not a number"

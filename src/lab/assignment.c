@@ -21,6 +21,10 @@ void sw_fmt_shortest(char *buf, size_t len, double v)
         snprintf(buf, len, v > 0 ? "inf" : "-inf");
         return;
     }
+    if (v == floor(v) && fabs(v) < 1e15) {
+        snprintf(buf, len, "%.0f", v); /* 60, not 6e+01 */
+        return;
+    }
     for (int prec = 1; prec <= 17; prec++) {
         snprintf(buf, len, "%.*g", prec, v);
         if (strtod(buf, NULL) == v)

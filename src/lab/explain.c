@@ -247,7 +247,11 @@ static int explain_format(const rowset *tr, const rowset *ref, const sw_run_desc
             int d = digits_of(v);
             most = d > most ? d : most;
             values++;
-            floats += (double)(float)v == v;
+            /* A float: exactly one (printed with %.17g), or its shortest
+             * text (%.9g) reads back as this value. */
+            char buf[40];
+            snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
+            floats += (double)(float)v == v || strtod(buf, NULL) == v;
         }
     if (values < 4)
         return 0;
@@ -315,7 +319,7 @@ static int try_variant(const rowset *tr, rowset *scratch, const sw_run_desc *d,
 }
 
 static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
-                        const sw_check_tol *tol, sw_explanation *out)
+                        const sw_trace_meta *said, const sw_check_tol *tol, sw_explanation *out)
 {
     double worst;
     char how[40], hint[200], num[40], want_num[40];
@@ -327,7 +331,12 @@ static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
         agree(how, sizeof how, worst);
         method_hint(d->method, m, hint, sizeof hint);
         snprintf(out->kind, sizeof out->kind, "method");
-        snprintf(out->message, sizeof out->message, "your numbers match %s %s: %s", m->name, how, hint);
+        if (strcmp(said->integrator, d->method->name) == 0)
+            snprintf(out->message, sizeof out->message, "your header says %s, but your numbers "
+                     "match %s %s: %s", said->integrator, m->name, how, hint);
+        else
+            snprintf(out->message, sizeof out->message, "your numbers match %s %s: %s", m->name,
+                     how, hint);
         out->agreement = worst;
         return 1;
     }
@@ -360,11 +369,15 @@ static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
         return 1;
     }
     const sw_scene *sc = d->scene;
-    static const double factors[] = { 0, 2, 0.5, 10, 0.1 }; /* 0: the default */
+    /* Candidates: the value the trace's header gives, the default, and the
+     * assignment's value doubled, halved, times and over ten. */
+    static const double factors[] = { -1, 0, 2, 0.5, 10, 0.1 };
     for (int i = 0; i < sc->nparams; i++) {
         const sw_param *pd = &sc->params[i];
         for (size_t f = 0; f < sizeof factors / sizeof factors[0]; f++) {
-            double p[SW_MAX_PARAMS], v = factors[f] == 0 ? pd->def : d->p[i] * factors[f];
+            double p[SW_MAX_PARAMS];
+            double v = factors[f] < 0 ? (said->scene == sc ? said->p[i] : d->p[i])
+                     : factors[f] == 0 ? pd->def : d->p[i] * factors[f];
             if (pd->integer || v == d->p[i] || !(v >= pd->min && v <= pd->max))
                 continue;
             memcpy(p, d->p, sizeof p);
@@ -421,6 +434,7 @@ int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *to
             break;
         tr.line[tr.n++] = r.line;
     }
+    sw_trace_meta said = r.meta;
     sw_trace_read_close(&r);
     int found = 0;
     if (rc == SW_OK && tr.n > 0) {
@@ -432,7 +446,7 @@ int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *to
         }
         /* Variant runs compare row for row, so only when no row is missing. */
         if (!found && ref.n >= 0)
-            found = explain_runs(&tr, &ref, want, tol, out);
+            found = explain_runs(&tr, &ref, want, &said, tol, out);
     }
     free(tr.v);
     free(tr.line);

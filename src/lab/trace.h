@@ -23,6 +23,9 @@
 #define SW_TRACE_CELL_MAX 48
 #define SW_TRACE_PATH_MAX 4096
 #define SW_TRACE_NAME_MAX 64
+/* Rows beyond the metadata's run that are still read (and graded as extra
+ * rows) before the file is refused as longer than its metadata allows. */
+#define SW_TRACE_ROW_SLACK 4
 
 /* How long a run lasts and which steps it records. */
 typedef struct sw_trace_spec {

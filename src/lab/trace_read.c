@@ -335,8 +335,10 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
                 return tr_fail(r, err, errlen, "more than %ld rows: larger than any trace can be",
                             SW_TRACE_MAX_ROWS);
             return tr_fail(r, err, errlen, "more rows than the metadata allows: %s %g with "
-                        "'every: %ld' gives at most %ld", sp->steps ? "'steps:'" : "'until:'",
-                        sp->steps ? (double)sp->steps : sp->until, sp->every, r->max_rows);
+                        "'every: %ld' gives at most %ld (and %d more are graded as extra rows)",
+                        sp->steps ? "'steps:'" : "'until:'",
+                        sp->steps ? (double)sp->steps : sp->until, sp->every,
+                        r->max_rows - SW_TRACE_ROW_SLACK, SW_TRACE_ROW_SLACK);
         }
         char *cursor = r->buf, *cell;
         int c = 0;

@@ -12,22 +12,35 @@
 #include "lab/plugin_box.h"
 
 #include <dlfcn.h>
+#include <errno.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include "lab/sandbox.h"
 
 #define GUARD_PAGES 16
+/* Each side spins this long on the shared counters before it sleeps on the
+ * socket: when both processes have a core, a step costs no system call. */
+#define SPIN_SECONDS 30e-6
 #define CANARY 0xa5
 #define CANARY_BYTES 64
 
-/* Shared between the parent and the child. */
+/* Shared between the parent and the child. A step: the parent fills t, h
+ * and y, bumps cmd; the child steps and sets done = cmd. A side that waits
+ * spins briefly, then sets its *_waiting flag and sleeps on the socket;
+ * the other side sends a byte when it sees that flag (checked after its
+ * own store, so no wake-up is lost; a spare byte is only a spurious wake). */
 typedef struct box_control {
+    atomic_int cmd, done;
+    atomic_int parent_waiting, child_waiting;
+    int quit;
     double t, h;
     int rc;                  /* the plugin's return value */
     long evals, solves, iters; /* the child's ode counters after the step */
@@ -118,6 +131,51 @@ static int canary_ok(const double *v)
     return 1;
 }
 
+/* Wait until *seq differs from old: spin, then sleep on fd (woken by a
+ * byte) for at most `seconds` (< 0: no limit). The new value, or -1 the
+ * other side is gone, -2 timed out, -3 cancelled. */
+static int await_change(atomic_int *seq, int old, atomic_int *waiting, int fd, double seconds)
+{
+    double start = sw_sandbox_now();
+    for (unsigned i = 0;; i++) {
+        int v = atomic_load(seq);
+        if (v != old)
+            return v;
+        if ((i & 63) == 63 && sw_sandbox_now() - start > SPIN_SECONDS)
+            break;
+    }
+    for (;;) {
+        atomic_store(waiting, 1);
+        int v = atomic_load(seq);
+        if (v != old) {
+            atomic_store(waiting, 0);
+            return v;
+        }
+        double left = seconds < 0 ? -1 : seconds - (sw_sandbox_now() - start);
+        int w = seconds >= 0 && left <= 0 ? 0 : sw_sandbox_wait(fd, left);
+        if (w <= 0) {
+            atomic_store(waiting, 0);
+            v = atomic_load(seq);
+            return v != old ? v : w == 0 ? -2 : -3;
+        }
+        char drain[64];
+        ssize_t n = recv(fd, drain, sizeof drain, MSG_DONTWAIT);
+        atomic_store(waiting, 0);
+        if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+            v = atomic_load(seq);
+            return v != old ? v : -1;
+        }
+    }
+}
+
+/* Publish a new value of *seq and wake the other side if it sleeps. */
+static void publish(atomic_int *seq, int value, atomic_int *other_waiting, int fd)
+{
+    atomic_store(seq, value);
+    if (atomic_load(other_waiting))
+        sw_sandbox_write(fd, "w", 1);
+}
+
 static int step_child(void *ctx, int in, int out)
 {
     step_box *b = ctx;
@@ -149,10 +207,12 @@ static int step_child(void *ctx, int in, int out)
     char cmd = 'R';
     if (sw_sandbox_write(out, &cmd, 1) != 0)
         return 0;
+    int last = 0;
     for (;;) {
-        ssize_t n = read(in, &cmd, 1);
-        if (n <= 0 || cmd != 'S')
+        int seq = await_change(&ctl->cmd, last, &ctl->child_waiting, in, -1);
+        if (seq < 0 || ctl->quit)
             return 0;
+        last = seq;
         child_ode_copy = *ode;
         ctl->rc = info->step(ode, ctl->t, b->y, ctl->h, b->work);
         int field = ode_changed(ode, &ctl->was, &ctl->now);
@@ -167,8 +227,8 @@ static int step_child(void *ctx, int in, int out)
         ctl->evals = ode->evals;
         ctl->solves = ode->solves;
         ctl->iters = ode->solver_iters;
-        cmd = ctl->fault ? 'F' : 'D';
-        if (sw_sandbox_write(out, &cmd, 1) != 0 || ctl->fault)
+        publish(&ctl->done, seq, &ctl->parent_waiting, out);
+        if (ctl->fault)
             return 0;
     }
 }
@@ -195,7 +255,9 @@ static void box_release(sw_stepper *s)
     if (!b)
         return;
     if (b->child.pid > 0) {
-        sw_sandbox_write(b->child.to_child, "Q", 1);
+        b->ctl->quit = 1;
+        publish(&b->ctl->cmd, atomic_load(&b->ctl->cmd) + 1, &b->ctl->child_waiting,
+                b->child.to_child);
         sw_child_end end;
         sw_sandbox_reap(&b->child, 0.2, &end);
     }
@@ -332,15 +394,16 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     if (b->fault != SW_PF_NONE)
         return SW_EDIVERGED;
     memcpy(b->y, y, (size_t)b->dim * sizeof *y);
-    b->ctl->t = *t;
-    b->ctl->h = h;
-    char tag = 'S';
-    int rc = sw_sandbox_write(b->child.to_child, &tag, 1) == 0 ? 1 : 0;
+    box_control *ctl = b->ctl;
+    ctl->t = *t;
+    ctl->h = h;
+    int seq = atomic_load(&ctl->cmd) + 1;
+    publish(&ctl->cmd, seq, &ctl->child_waiting, b->child.to_child);
     double limit = sw_plugin_timeout();
-    if (rc == 1)
-        rc = sw_sandbox_read(b->child.from_child, &tag, 1, limit);
+    int got = await_change(&ctl->done, seq - 1, &ctl->parent_waiting, b->child.from_child, limit);
+    int rc = got == seq && !ctl->fault ? 1 : got == -2 ? -2 : got == -3 ? -1 : 0;
     sw_child_end end;
-    if (rc == 1 && tag == 'D') {
+    if (rc == 1) {
         memcpy(y, b->y, (size_t)b->dim * sizeof *y);
         ode->evals += b->ctl->evals - b->evals;
         ode->solves += b->ctl->solves - b->solves;

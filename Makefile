@@ -133,7 +133,7 @@ bench: $(BENCHBIN)
 $(BUILD)/datadir.stamp: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' > $@
-$(BUILD)/src/cli/common.o: $(BUILD)/datadir.stamp
+$(BUILD)/src/cli/common.o $(BUILD)/src/cli/plugin_build.o: $(BUILD)/datadir.stamp
 FORCE:
 
 LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)

@@ -49,8 +49,12 @@ int sw_cli_positive(const char *flag, const char *text, double *out);
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */
 int sw_cli_add_set(sw_run_opts *o, const char *assignment);
-/* Load a --plugin shared object and register its integrator. */
+/* Load a --plugin shared object (or C source, built first) and register
+ * its integrator; the plugin runs in child processes (lab/plugin.h). */
 int sw_cli_plugin(const char *path);
+/* Compile a plugin's C source with the documented flags into a private
+ * temporary directory (removed at exit); the .so's path into so. */
+int sw_cli_build_plugin(const char *src, char *so, size_t solen);
 /* Once the scene is known: defaults, --set values, default method and dt. */
 int sw_cli_finish_opts(sw_run_opts *o);
 /* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */

@@ -40,23 +40,42 @@ double sw_plugin_timeout(void)
     return SW_PLUGIN_TIMEOUT;
 }
 
+/* Length of the UTF-8 sequence at s that is a printable character (no C0/C1
+ * control, no DEL, well formed); 0 when it is none. */
+static int printable_char(const unsigned char *s)
+{
+    if (s[0] >= 0x20 && s[0] < 0x7f)
+        return 1;
+    int len = s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
+            : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
+    for (int i = 1; i < len; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if (len == 2 && s[0] == 0xc2 && s[1] < 0xa0)
+        return 0; /* C1 controls U+0080..U+009F */
+    return len;
+}
+
 void sw_escape(const char *text, size_t max, char *out, size_t outlen)
 {
     size_t used = 0, i = 0;
     if (outlen == 0)
         return;
-    for (; text[i] && i < max; i++) {
+    while (text[i] && i < max) {
         unsigned char c = (unsigned char)text[i];
         char piece[8];
-        if (c >= 0x20 && c < 0x7f && c != '\\')
-            piece[0] = (char)c, piece[1] = '\0';
-        else
+        int n = c == '\\' ? 0 : printable_char((const unsigned char *)text + i);
+        if (n > 0) {
+            memcpy(piece, text + i, (size_t)n);
+            piece[n] = '\0';
+        } else
             snprintf(piece, sizeof piece, "\\x%02x", c);
         size_t len = strlen(piece);
         if (used + len + 4 >= outlen)
             break;
         memcpy(out + used, piece, len);
         used += len;
+        i += n > 0 ? (size_t)n : 1;
     }
     if (text[i] && used + 3 < outlen) {
         memcpy(out + used, "...", 3);
@@ -92,22 +111,6 @@ int sw_plugin_name_ok(const char *name, char *why, size_t whylen)
         }
     }
     return 1;
-}
-
-/* Length of the UTF-8 sequence at s that is a printable character (no C0/C1
- * control, no DEL, well formed); 0 when it is none. */
-static int printable_char(const unsigned char *s)
-{
-    if (s[0] >= 0x20 && s[0] < 0x7f)
-        return 1;
-    int len = s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
-            : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
-    for (int i = 1; i < len; i++)
-        if ((s[i] & 0xc0) != 0x80)
-            return 0;
-    if (len == 2 && s[0] == 0xc2 && s[1] < 0xa0)
-        return 0; /* C1 controls U+0080..U+009F */
-    return len;
 }
 
 int sw_plugin_label_ok(const char *label, char *why, size_t whylen)

@@ -210,28 +210,28 @@ void sw_check_print_error(const char *msg)
     fflush(stdout);
 }
 
-static void print_measure(const sw_verdict *v)
+static void print_measure(FILE *out, const sw_verdict *v)
 {
     if (!v->have_measure)
         return;
     if (isnan(v->order)) {
-        printf("  measured: %s (claimed order %d)\n", v->measure_note, v->claimed_order);
+        fprintf(out, "  measured: %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;
     }
-    printf("  order: claimed %d, measured %.2f (undamped spring, error at t = 2 for dt = 0.02 "
+    fprintf(out, "  order: claimed %d, measured %.2f (undamped spring, error at t = 2 for dt = 0.02 "
            "to 0.0025)\n", v->claimed_order, v->order);
     if (isnan(v->stability))
-        printf("  stability: %s\n", v->measure_note);
+        fprintf(out, "  stability: %s\n", v->measure_note);
     else if (isinf(v->stability))
-        printf("  stability: measured unbounded on the undamped spring (stable at every dt probed)\n");
+        fprintf(out, "  stability: measured unbounded on the undamped spring (stable at every dt probed)\n");
     else if (v->stability == 0)
-        printf("  stability: measured none (grows even at w*dt = 0.01)\n");
+        fprintf(out, "  stability: measured none (grows even at w*dt = 0.01)\n");
     else
-        printf("  stability: largest stable w*dt measured %.4g on the undamped spring (euler: none, "
+        fprintf(out, "  stability: largest stable w*dt measured %.4g on the undamped spring (euler: none, "
                "symplectic-euler and verlet: 2, rk4: 2.83)\n", v->stability);
 }
 
-static void print_plain(const sw_verdict *v)
+void sw_check_print_plain(FILE *out, const sw_verdict *v)
 {
     const sw_check_result *r = &v->res;
     char what[400];
@@ -240,16 +240,16 @@ static void print_plain(const sw_verdict *v)
     else
         snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
     if (v->status == SW_VERDICT_PASS)
-        printf("PASS: %s matches %s\n  %ld rows, %ld values within |got - expected| <= %g + "
+        fprintf(out, "PASS: %s matches %s\n  %ld rows, %ld values within |got - expected| <= %g + "
                "%g*|expected|\n", what, v->reference, r->rows_compared, r->values_compared,
                v->atol, v->rtol);
     else
-        printf("FAIL: %s differs from %s\n", what, v->reference);
+        fprintf(out, "FAIL: %s differs from %s\n", what, v->reference);
     if (v->student[0])
-        printf("  student: %s\n", v->student);
+        fprintf(out, "  student: %s\n", v->student);
     int kept = v->ndiffs < SW_VERDICT_DIFFS ? v->ndiffs : SW_VERDICT_DIFFS;
     if (v->ndiffs)
-        printf("  header differs from the assignment in %d place%s:\n", v->ndiffs, v->ndiffs == 1 ? "" : "s");
+        fprintf(out, "  header differs from the assignment in %d place%s:\n", v->ndiffs, v->ndiffs == 1 ? "" : "s");
     for (int i = 0; i < kept; i++) {
         const sw_header_diff *d = &v->diffs[i];
         char line[32] = "";
@@ -257,36 +257,36 @@ static void print_plain(const sw_verdict *v)
             snprintf(line, sizeof line, " (line %ld)", d->line);
         else
             snprintf(line, sizeof line, " (not stated: the default)");
-        printf("    %s: yours %s%s, the assignment's %s\n", d->what, d->got, line, d->want);
+        fprintf(out, "    %s: yours %s%s, the assignment's %s\n", d->what, d->got, line, d->want);
     }
     if (!v->comparable)
-        printf("  the numbers were not compared: the trace has other columns than the assignment's run\n");
+        fprintf(out, "  the numbers were not compared: the trace has other columns than the assignment's run\n");
     const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
     if (pf)
-        printf("  %s\n", pf->reason);
+        fprintf(out, "  %s\n", pf->reason);
     if (v->status != SW_VERDICT_PASS && v->first[0])
-        printf("  first failure: %s\n", v->first);
+        fprintf(out, "  first failure: %s\n", v->first);
     if (v->status != SW_VERDICT_PASS && r->rows_compared > 0) {
         if (r->values_failed > 0)
-            printf("  %ld of %ld values are outside |got - expected| <= %g + %g*|expected|\n",
+            fprintf(out, "  %ld of %ld values are outside |got - expected| <= %g + %g*|expected|\n",
                    r->values_failed, r->values_compared, v->atol, v->rtol);
         else
-            printf("  the %ld values compared are all within |got - expected| <= %g + "
+            fprintf(out, "  the %ld values compared are all within |got - expected| <= %g + "
                    "%g*|expected|\n", r->values_compared, v->atol, v->rtol);
     }
     if (v->have_explanation)
-        printf("  why: %s\n", v->explanation.message);
+        fprintf(out, "  why: %s\n", v->explanation.message);
     if (r->have_worst)
-        printf("  largest error: %s\n", v->worst);
+        fprintf(out, "  largest error: %s\n", v->worst);
     else if (r->rows_compared > 0)
-        printf("  largest error: none; every compared value matches exactly\n");
+        fprintf(out, "  largest error: none; every compared value matches exactly\n");
     if (v->ref_end.blown && !v->ref_end.fault)
-        printf("  the reference diverged at step %ld (t = %g): %s\n", v->ref_end.step, v->ref_end.t,
+        fprintf(out, "  the reference diverged at step %ld (t = %g): %s\n", v->ref_end.step, v->ref_end.t,
                v->ref_end.reason);
     if (v->got_end.blown && !v->got_end.fault)
-        printf("  the plugin diverged at step %ld (t = %g): %s\n", v->got_end.step, v->got_end.t,
+        fprintf(out, "  the plugin diverged at step %ld (t = %g): %s\n", v->got_end.step, v->got_end.t,
                v->got_end.reason);
-    print_measure(v);
+    print_measure(out, v);
 }
 
 int sw_check_print(const sw_verdict *v, int json)
@@ -301,7 +301,7 @@ int sw_check_print(const sw_verdict *v, int json)
             fputc('\n', stdout);
         }
     } else if (v->status != SW_VERDICT_ERROR)
-        print_plain(v);
+        sw_check_print_plain(stdout, v);
     errno = 0;
     if (fflush(stdout) != 0 || ferror(stdout))
         return sw_cli_error("cannot write the report to standard output: %s",

@@ -55,6 +55,11 @@ int sw_cli_plugin(const char *path);
 /* Compile a plugin's C source with the documented flags into a private
  * temporary directory (removed at exit); the .so's path into so. */
 int sw_cli_build_plugin(const char *src, char *so, size_t solen);
+/* The same into dir/NAME.so (and NAME.log); 0 or a status with err filled. */
+int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
+                          size_t solen, char *err, size_t errlen);
+int sw_cmd_grade(int argc, char **argv);
+int sw_cmd_try(int argc, char **argv);
 /* Once the scene is known: defaults, --set values, default method and dt. */
 int sw_cli_finish_opts(sw_run_opts *o);
 /* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */

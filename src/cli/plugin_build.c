@@ -113,44 +113,60 @@ static void first_error(const char *log, char *buf, size_t len)
         snprintf(buf, len, "see the compiler's messages");
 }
 
-int sw_cli_build_plugin(const char *src, char *so, size_t solen)
+int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
+                          size_t solen, char *err, size_t errlen)
 {
-    static int count;
     char shown[200], msg[SW_ERRLEN];
     sw_escape(src, 120, shown, sizeof shown);
     struct stat st;
-    if (stat(src, &st) != 0 || !S_ISREG(st.st_mode))
-        return sw_cli_error("--plugin '%s': no such file", shown);
+    if (stat(src, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "--plugin '%s': no such file", shown);
+        return SW_EINVAL;
+    }
+    char log[PATH_MAX + 80];
+    snprintf(so, solen, "%s/%s.so", dir, name);
+    snprintf(log, sizeof log, "%s/%s.log", dir, name);
+    const char *cc = getenv("CC");
+    build_job job = { cc && *cc ? cc : "cc", include_dir(), src, so, log };
+    sw_child child;
+    if (sw_sandbox_spawn(&child, run_compiler, &job, NULL, -1, msg, sizeof msg) != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        return SW_EIO;
+    }
+    /* The compiler reports by its exit status: wait for it, within the limit. */
+    sw_child_end end;
+    sw_sandbox_reap(&child, BUILD_SECONDS, &end);
+    if (end.exited && end.code == 0)
+        return SW_OK;
+    if (end.killed) {
+        snprintf(err, errlen, "--plugin '%s' did not compile within %g s", shown, BUILD_SECONDS);
+        return SW_EINVAL;
+    }
+    first_error(log, msg, sizeof msg);
+    snprintf(err, errlen, "--plugin '%s' does not compile (%s -std=c11 -O2 -Wall -shared -fPIC): "
+             "%s", shown, job.cc, msg);
+    return SW_EINVAL;
+}
+
+int sw_cli_build_plugin(const char *src, char *so, size_t solen)
+{
+    static int count;
+    char err[SW_ERRLEN + 256], name[16];
     if (!build_dir[0]) {
         const char *tmp = getenv("TMPDIR");
         snprintf(build_dir, sizeof build_dir, "%s/stepwise-plugins-XXXXXX", tmp && *tmp ? tmp : "/tmp");
         if (!mkdtemp(build_dir)) {
             build_dir[0] = '\0';
-            return sw_cli_error("--plugin '%s': cannot make a directory to build it in: %s", shown,
+            return sw_cli_error("--plugin: cannot make a directory to build it in: %s",
                                 strerror(errno));
         }
         build_dir_owner = getpid();
         atexit(remove_build_dir);
     }
     if (count == 64)
-        return sw_cli_error("--plugin '%s': at most 64 plugins are built per run", shown);
-    char log[PATH_MAX + 32];
-    snprintf(so, solen, "%s/p%d.so", build_dir, count);
-    snprintf(log, sizeof log, "%s/p%d.log", build_dir, count);
-    count++;
-    const char *cc = getenv("CC");
-    build_job job = { cc && *cc ? cc : "cc", include_dir(), src, so, log };
-    sw_child child;
-    if (sw_sandbox_spawn(&child, run_compiler, &job, NULL, -1, msg, sizeof msg) != SW_OK)
-        return sw_cli_error("--plugin '%s': %s", shown, msg);
-    /* The compiler reports by its exit status: wait for it, within the limit. */
-    sw_child_end end;
-    sw_sandbox_reap(&child, BUILD_SECONDS, &end);
-    if (end.exited && end.code == 0)
-        return SW_EXIT_OK;
-    if (end.killed)
-        return sw_cli_error("--plugin '%s' did not compile within %g s", shown, BUILD_SECONDS);
-    first_error(log, msg, sizeof msg);
-    return sw_cli_error("--plugin '%s' does not compile (%s -std=c11 -O2 -Wall -shared -fPIC): %s",
-                        shown, job.cc, msg);
+        return sw_cli_error("--plugin: at most 64 plugins are built per run");
+    snprintf(name, sizeof name, "p%d", count++);
+    if (sw_cli_compile_plugin(src, build_dir, name, so, solen, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    return SW_EXIT_OK;
 }

@@ -84,8 +84,10 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, pid_t par
             close((int)fd);
     if (lim && lim->cpu_seconds > 0)
         set_limit(RLIMIT_CPU, (rlim_t)(lim->cpu_seconds + 0.999));
+#if !defined(__SANITIZE_ADDRESS__) /* ASan reserves terabytes of address space */
     if (lim && lim->memory_bytes > 0)
         set_limit(RLIMIT_AS, (rlim_t)lim->memory_bytes);
+#endif
     if (lim && lim->output_bytes > 0)
         set_limit(RLIMIT_FSIZE, (rlim_t)lim->output_bytes);
     set_limit(RLIMIT_CORE, 0);

@@ -12,6 +12,7 @@
 #include "app/app.h"
 #include "render/screen.h"
 #include "cli/cli.h"
+#include "lab/sandbox.h"
 #include "tui/play.h"
 #include "tui/term.h"
 
@@ -23,7 +24,8 @@ static const char play_help[] =
     "  -i, --integrator NAME   start with this integrator (stepwise list integrators)\n"
     "      --dt H              step size (default: the scene's)\n"
     "  -s, --set PARAM=VALUE   set a scene parameter (repeatable; see stepwise describe)\n"
-    "      --plugin FILE.so    add a student integrator built against <stepwise/integrator.h>\n"
+    "      --plugin FILE       add a student integrator (.so, or .c built for you) built\n"
+    "                          against <stepwise/integrator.h>; it runs in a child process\n"
     "      --compare           start with compare on;  --ghost  with the ghost on\n"
     "      --frames N          with --ascii: print N frames (1/60 s each) and exit\n"
     "      --ascii             print frames as plain text instead of opening the terminal UI\n"
@@ -80,6 +82,7 @@ int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
         sw_frame_free(&f);
         return sw_cli_error("%s", err);
     }
+    sw_sandbox_set_cancel(&sw_term_signal); /* Ctrl-C ends a wait on a plugin at once */
     int cols = 0, rows = 0;
     double last = sw_term_now(), rate_t = last, busy = 0, capacity = 0;
     long rate_steps = 0;

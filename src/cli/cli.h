@@ -45,6 +45,8 @@ int sw_cli_integrator(const char *name, const sw_integrator **out);
 int sw_cli_dt(const char *flag, const char *text, double *out);
 /* Parse a positive finite double for flag `flag`. */
 int sw_cli_positive(const char *flag, const char *text, double *out);
+/* Parse a run tolerance (rtol, atol) in [SW_TRACE_TOL_MIN, 1] for flag `flag`. */
+int sw_cli_tolerance(const char *flag, const char *text, double *out);
 /* Parse a whole number in [min, max] for flag `flag`. */
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "lab/plugin.h"
+#include "lab/trace.h"
 
 int sw_cli_error(const char *fmt, ...)
 {
@@ -64,6 +65,17 @@ int sw_cli_positive(const char *flag, const char *text, double *out)
     double v;
     if (sw_parse_double(text, &v) != SW_OK || !(v > 0))
         return sw_cli_error("%s '%.40s' is not allowed: it takes a positive finite number", flag, text);
+    *out = v;
+    return SW_EXIT_OK;
+}
+
+int sw_cli_tolerance(const char *flag, const char *text, double *out)
+{
+    double v;
+    if (sw_parse_double(text, &v) != SW_OK || !(v >= SW_TRACE_TOL_MIN && v <= 1))
+        return sw_cli_error("%s '%.40s' is not allowed: a tolerance is a number in [%g, 1] (below "
+                            "%g no double-precision run can meet it)", flag, text, SW_TRACE_TOL_MIN,
+                            SW_TRACE_TOL_MIN);
     *out = v;
     return SW_EXIT_OK;
 }

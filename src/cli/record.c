@@ -10,6 +10,7 @@
 #include "lab/plugin.h"
 #include "lab/sandbox.h"
 #include "lab/trace.h"
+#include "lab/verdict.h"
 
 static const char record_help[] =
     "usage: stepwise record SCENE [--integrator NAME] [--dt H] [--steps N | --until T]\n"
@@ -104,8 +105,8 @@ int sw_cmd_record(int argc, char **argv)
         case 'u': rc = sw_cli_positive("--until", optarg, &spec.until); have_until = 1; break;
         case 's': rc = sw_cli_add_set(&o, optarg); break;
         case 'k': rc = sw_cli_long("--every", optarg, 1, SW_TRACE_MAX_STEPS, &spec.every); break;
-        case 'r': rc = sw_cli_positive("--rtol", optarg, &o.rtol); break;
-        case 'a': rc = sw_cli_positive("--atol", optarg, &o.atol); break;
+        case 'r': rc = sw_cli_tolerance("--rtol", optarg, &o.rtol); break;
+        case 'a': rc = sw_cli_tolerance("--atol", optarg, &o.atol); break;
         case 'o': output = optarg; break;
         case 'p':
             if (nplugins == 8)
@@ -139,6 +140,12 @@ int sw_cmd_record(int argc, char **argv)
 
     char err[SW_ERRLEN];
     if (sw_trace_spec_check(&spec, o.dt, err, sizeof err) != SW_OK)
+        return sw_cli_error("record: %s", err);
+    /* Refused before anything is written, even to standard output. */
+    double work;
+    if (sw_check_budget(o.scene, o.p, o.method, o.dt, &spec, &work, err, sizeof err) != SW_OK)
+        return sw_cli_error("record: %s", err);
+    if (sw_record_budget(o.scene, o.p, o.dt, &spec, err, sizeof err) != SW_OK)
         return sw_cli_error("record: %s", err);
     sw_sim sim;
     if (sw_cli_sim(&sim, &o) != SW_EXIT_OK)

@@ -30,10 +30,12 @@ int sw_trace_spec_check(const sw_trace_spec *spec, double dt, char *err, size_t 
                      spec->until);
             return SW_EINVAL;
         }
-        if (!(dt > 0) || spec->until / dt > (double)SW_TRACE_MAX_STEPS) {
-            snprintf(err, errlen, "until = %g with dt = %g needs %.3g steps; a run takes at most "
-                     "%ld (raise dt or shorten the run)", spec->until, dt, spec->until / dt,
-                     SW_TRACE_MAX_STEPS);
+        /* ceil(until/dt) steps, and one more when rounding in t leaves the
+         * run short of until: refused at once, not after 10^7 steps. */
+        if (!(dt > 0) || ceil(spec->until / dt * (1 - 1e-12)) + 1 > (double)SW_TRACE_MAX_STEPS) {
+            snprintf(err, errlen, "until = %g with dt = %g needs %.3g steps (and one more when "
+                     "rounding leaves t short of until); a run takes at most %ld (raise dt or "
+                     "shorten the run)", spec->until, dt, ceil(spec->until / dt), SW_TRACE_MAX_STEPS);
             return SW_EINVAL;
         }
     }

@@ -42,6 +42,26 @@ int sw_check_budget(const sw_scene *sc, const double *p, const sw_integrator *m,
     return SW_OK;
 }
 
+int sw_record_budget(const sw_scene *sc, const double *p, double dt, const sw_trace_spec *spec,
+                     char *err, size_t errlen)
+{
+    sw_system sys;
+    if (sw_system_build(&sys, sc, p, err, errlen) != SW_OK)
+        return SW_EINVAL;
+    int ncols = sw_trace_ncols(&sys);
+    sw_system_free(&sys);
+    double steps = spec->steps > 0 ? (double)spec->steps : ceil(spec->until / dt) + 1;
+    double rows = floor(steps / (double)spec->every) + 2, values = rows * ncols;
+    if (values > SW_RECORD_VALUE_BUDGET) {
+        snprintf(err, errlen, "the trace would hold %.3g rows x %d columns = %.3g values, above "
+                 "the budget of %.3g (docs/trace-format.md, Limits): record every K-th step "
+                 "(--every), shorten the run or use fewer particles", rows, ncols, values,
+                 SW_RECORD_VALUE_BUDGET);
+        return SW_EINVAL;
+    }
+    return SW_OK;
+}
+
 /* ---- words ----------------------------------------------------------------- */
 
 static void colname(const sw_system *sys, int c, char *buf, size_t len)

@@ -19,6 +19,10 @@
  * (docs/trace-format.md, "Limits"; about 10 to 60 s of computing). */
 #define SW_CHECK_WORK_BUDGET 2e10
 
+/* Budget for writing a trace: values (rows x columns), each formatted with
+ * %.17g (about 1e8 values a minute, 2 GB of text). */
+#define SW_RECORD_VALUE_BUDGET 1e8
+
 typedef enum sw_verdict_status { SW_VERDICT_PASS = 0, SW_VERDICT_FAIL = 1, SW_VERDICT_ERROR = 2 } sw_verdict_status;
 
 /* What to check. Exactly one of trace and plugin_form. */
@@ -88,5 +92,10 @@ sw_verdict_status sw_check_run(const sw_check_request *req, sw_verdict *v);
  * refuse it above SW_CHECK_WORK_BUDGET with a message naming the numbers. */
 int sw_check_budget(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
                     const sw_trace_spec *spec, double *work, char *err, size_t errlen);
+
+/* Estimate the values a recording writes (rows x columns) and refuse it
+ * above SW_RECORD_VALUE_BUDGET with a message naming the numbers. */
+int sw_record_budget(const sw_scene *sc, const double *p, double dt, const sw_trace_spec *spec,
+                     char *err, size_t errlen);
 
 #endif

@@ -345,12 +345,7 @@ sw_plugin_fault sw_plugin_failed(sw_sim *s)
 {
     if (!s->blown || !(s->method->flags & SW_PLUGIN) || !s->stepper)
         return SW_PF_NONE;
-    char why[200];
-    sw_plugin_fault f = sw_plugin_box_fault(s->stepper, why, sizeof why);
-    if (f != SW_PF_NONE)
-        snprintf(s->blow_reason, sizeof s->blow_reason, "the plugin %s at step %ld", why,
-                 s->blow_step);
-    return f;
+    return sw_plugin_box_fault(s->stepper, s->blow_step, s->blow_reason, sizeof s->blow_reason);
 }
 
 sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len)

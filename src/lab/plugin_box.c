@@ -63,7 +63,8 @@ typedef struct step_box {
     unsigned char *y_area, *work_area;  /* start of each vector's pages */
     size_t y_area_len, work_area_len;
     sw_plugin_fault fault;   /* parent's view: set once, then every step fails */
-    char why[SW_ERRLEN];
+    char why[SW_ERRLEN];     /* what happened ... */
+    char hint[96];           /* ... and, after the step, what to do */
     long evals, solves, iters;
 } step_box;
 
@@ -237,15 +238,17 @@ static int step_child(void *ctx, int in, int out)
 
 static size_t round_up(size_t n, size_t page) { return (n + page - 1) / page * page; }
 
-static void box_fail(step_box *b, sw_plugin_fault f, const char *why)
+static void box_fail(step_box *b, sw_plugin_fault f, const char *why, const char *hint)
 {
     if (b->fault != SW_PF_NONE)
         return;
     b->fault = f;
     snprintf(b->why, sizeof b->why, "%s", why);
+    snprintf(b->hint, sizeof b->hint, "%s", hint ? hint : "");
     if (b->entry && f != SW_PF_CANCELLED) {
         b->entry->last_fault = f;
-        snprintf(b->entry->last_failure, sizeof b->entry->last_failure, "%s", why);
+        snprintf(b->entry->last_failure, sizeof b->entry->last_failure, "%.200s%s%.90s", why,
+                 hint ? " " : "", hint ? hint : "");
     }
 }
 
@@ -277,39 +280,37 @@ static void box_dead(step_box *b, const sw_child_end *end)
     case SW_PF_OVERRUN_WORK:
         snprintf(why, sizeof why, "wrote past its %d work vector%s (work[%ld], %d doubles each)",
                  b->wv, b->wv == 1 ? "" : "s", ctl->index, b->dim);
-        box_fail(b, SW_PF_OVERRUN_WORK, why);
+        box_fail(b, SW_PF_OVERRUN_WORK, why, NULL);
         return;
     case SW_PF_OVERRUN_Y:
         snprintf(why, sizeof why, "wrote past the end of y (y[%ld]; y has ode->dim = %d doubles)",
                  ctl->index, b->dim);
-        box_fail(b, SW_PF_OVERRUN_Y, why);
+        box_fail(b, SW_PF_OVERRUN_Y, why, NULL);
         return;
     case SW_PF_UNDERRUN:
         snprintf(why, sizeof why, "wrote before the start of %s", ctl->field ? "its work vectors" : "y");
-        box_fail(b, SW_PF_UNDERRUN, why);
+        box_fail(b, SW_PF_UNDERRUN, why, NULL);
         return;
     case SW_PF_ODE:
         if (ctl->field <= 1)
-            snprintf(why, sizeof why, "changed ode->%s from %ld to %ld (a plugin must not write "
-                     "to the ode)", ode_fields[ctl->field], ctl->was, ctl->now);
+            snprintf(why, sizeof why, "changed ode->%s from %ld to %ld", ode_fields[ctl->field],
+                     ctl->was, ctl->now);
         else
-            snprintf(why, sizeof why, "changed ode->%s (a plugin must not write to the ode)",
-                     ode_fields[ctl->field]);
-        box_fail(b, SW_PF_ODE, why);
+            snprintf(why, sizeof why, "changed ode->%s", ode_fields[ctl->field]);
+        box_fail(b, SW_PF_ODE, why, "(a plugin must not write to the ode)");
         return;
     case SW_PF_START:
         snprintf(why, sizeof why, "%s", ctl->detail);
-        box_fail(b, SW_PF_START, why);
+        box_fail(b, SW_PF_START, why, NULL);
         return;
     default:
         break;
     }
     if (end->exited) {
-        snprintf(why, sizeof why, "ended its process with exit(%d) in its step (a step must return, "
-                 "never exit)", end->code);
-        box_fail(b, SW_PF_EXIT, why);
+        snprintf(why, sizeof why, "ended its process with exit(%d) in its step", end->code);
+        box_fail(b, SW_PF_EXIT, why, "(a step must return, never exit)");
     } else {
-        box_fail(b, SW_PF_CRASH, how);
+        box_fail(b, SW_PF_CRASH, how, NULL);
     }
 }
 
@@ -327,7 +328,7 @@ static void box_start(step_box *b)
     void *map = mmap(NULL, b->map_len, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
     if (map == MAP_FAILED) {
         b->map = NULL;
-        box_fail(b, SW_PF_START, "could not be given its shared memory");
+        box_fail(b, SW_PF_START, "could not be given its shared memory", NULL);
         return;
     }
     b->map = map;
@@ -344,7 +345,7 @@ static void box_start(step_box *b)
     memset(b->work, 0, (size_t)b->wv * vec);
     char err[SW_ERRLEN];
     if (sw_sandbox_spawn(&b->child, step_child, b, NULL, -1, err, sizeof err) != SW_OK) {
-        box_fail(b, SW_PF_START, "could not be given a child process");
+        box_fail(b, SW_PF_START, "could not be given a child process", NULL);
         return;
     }
     char tag;
@@ -355,11 +356,10 @@ static void box_start(step_box *b)
     if (rc == -2 || rc == -1) {
         sw_sandbox_kill(&b->child, &end);
         if (rc == -1)
-            box_fail(b, SW_PF_CANCELLED, "was interrupted while loading");
+            box_fail(b, SW_PF_CANCELLED, "was interrupted while loading", NULL);
         else {
-            snprintf(err, sizeof err, "did not finish loading within %g s (an endless loop in "
-                     "sw_plugin_info()?)", sw_plugin_timeout());
-            box_fail(b, SW_PF_TIMEOUT, err);
+            snprintf(err, sizeof err, "did not finish loading within %g s", sw_plugin_timeout());
+            box_fail(b, SW_PF_TIMEOUT, err, "(an endless loop in sw_plugin_info()?)");
         }
         return;
     }
@@ -381,9 +381,9 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
         s->plugin = b;
         s->release = box_release;
         if (!b->entry)
-            box_fail(b, SW_PF_START, "is not loaded");
+            box_fail(b, SW_PF_START, "is not loaded", NULL);
         else if (b->entry->disabled)
-            box_fail(b, SW_PF_DISABLED, b->entry->disabled_why);
+            box_fail(b, SW_PF_DISABLED, "was disabled after an earlier failure", NULL);
         else {
             b->evals = ode->evals; /* the child's counters start from the parent's at fork */
             b->solves = ode->solves;
@@ -417,11 +417,11 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     if (rc == -2 || rc == -1) {
         sw_sandbox_kill(&b->child, &end);
         char why[SW_ERRLEN];
-        snprintf(why, sizeof why, "did not return from its step within %g s (an endless loop?)", limit);
+        snprintf(why, sizeof why, "did not return from its step within %g s", limit);
         if (rc == -1)
-            box_fail(b, SW_PF_CANCELLED, "was interrupted in its step");
+            box_fail(b, SW_PF_CANCELLED, "was interrupted in its step", NULL);
         else
-            box_fail(b, SW_PF_TIMEOUT, why);
+            box_fail(b, SW_PF_TIMEOUT, why, "(an endless loop?)");
         return SW_EDIVERGED;
     }
     sw_sandbox_reap(&b->child, 1.0, &end);
@@ -429,11 +429,12 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     return SW_EDIVERGED;
 }
 
-sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, char *buf, size_t len)
+sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, size_t len)
 {
     const step_box *b = s->plugin;
     if (!b || b->fault == SW_PF_NONE)
         return SW_PF_NONE;
-    snprintf(buf, len, "%s", b->why);
+    snprintf(buf, len, "the plugin %.160s at step %ld%s%.90s", b->why, step, b->hint[0] ? " " : "",
+             b->hint);
     return b->fault;
 }

@@ -24,7 +24,8 @@ sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The step of every plugin method: the first call starts the stepper's
  * child; each call copies y in, one round trip, and y back. */
 sw_step_fn sw_plugin_step;
-/* The fault of the stepper's child and its description (without the step). */
-sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, char *buf, size_t len);
+/* The fault of the stepper's child, described as a sentence that names the
+ * step ("the plugin crashed with SIGSEGV (...) at step 4"). */
+sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, size_t len);
 
 #endif

@@ -67,6 +67,12 @@ int sw_cli_finish_opts(sw_run_opts *o);
 /* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */
 int sw_cli_sim(sw_sim *s, const sw_run_opts *o);
 
+/* The first of the binary's directory and up to three above it where
+ * DIR/sub satisfies ok (a build tree); 1 with the path in out, else 0. */
+int sw_cli_beside_binary(const char *sub, int (*ok)(const char *path), char *out, size_t len);
+/* Send SIGINT, SIGTERM and SIGHUP to handler (which only sets a flag). */
+void sw_cli_on_signals(void (*handler)(int));
+
 /* Where the lesson files are: $STEPWISE_LESSONS, ./lessons, or the install dir. */
 const char *sw_cli_lessons_dir(void);
 

@@ -4,6 +4,7 @@
 
 #include <dirent.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,6 +153,36 @@ static int has_lessons(const char *dir)
     return found;
 }
 
+int sw_cli_beside_binary(const char *sub, int (*ok)(const char *path), char *out, size_t len)
+{
+    char exe[2048];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0)
+        return 0;
+    exe[n] = '\0';
+    for (int up = 0; up < 4; up++) {
+        char *slash = strrchr(exe, '/');
+        if (!slash)
+            break;
+        *slash = '\0';
+        snprintf(out, len, "%s/%s", exe, sub);
+        if (ok(out))
+            return 1;
+    }
+    return 0;
+}
+
+void sw_cli_on_signals(void (*handler)(int))
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+}
+
 const char *sw_cli_lessons_dir(void)
 {
     static char dir[2100];
@@ -161,20 +192,8 @@ const char *sw_cli_lessons_dir(void)
     /* A build tree: lessons/ beside the binary or a few levels up (build/san/
      * stepwise finds the checkout's lessons); then the working directory;
      * then the installed lessons. */
-    char exe[2048];
-    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (len > 0) {
-        exe[len] = '\0';
-        for (int up = 0; up < 4; up++) {
-            char *slash = strrchr(exe, '/');
-            if (!slash)
-                break;
-            *slash = '\0';
-            snprintf(dir, sizeof dir, "%s/lessons", exe);
-            if (has_lessons(dir))
-                return dir;
-        }
-    }
+    if (sw_cli_beside_binary("lessons", has_lessons, dir, sizeof dir))
+        return dir;
     if (has_lessons("lessons"))
         return "lessons";
     return SW_DATADIR "/lessons";

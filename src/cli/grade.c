@@ -360,13 +360,7 @@ int sw_cmd_grade(int argc, char **argv)
         grade_list_free(&list);
         return sw_cli_error("grade: cannot make a temporary directory: %s", strerror(errno));
     }
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
+    sw_cli_on_signals(on_signal);
     sw_sandbox_set_cancel(&interrupted);
     grade_print_head(&asg, list.n, list.ignored);
     double start = sw_sandbox_now();

@@ -42,6 +42,13 @@ static void remove_build_dir(void)
     build_dir[0] = '\0';
 }
 
+static int has_header(const char *dir)
+{
+    char probe[PATH_MAX + 64];
+    snprintf(probe, sizeof probe, "%s/stepwise/integrator.h", dir);
+    return access(probe, R_OK) == 0;
+}
+
 /* Where <stepwise/integrator.h> is: $STEPWISE_INCLUDE, the source tree the
  * binary sits in, or the installed headers. */
 static const char *include_dir(void)
@@ -50,23 +57,8 @@ static const char *include_dir(void)
     const char *env = getenv("STEPWISE_INCLUDE");
     if (env && *env)
         return env;
-    char exe[PATH_MAX];
-    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (len > 0) {
-        exe[len] = '\0';
-        for (int up = 0; up < 4; up++) {
-            char *slash = strrchr(exe, '/');
-            if (!slash)
-                break;
-            *slash = '\0';
-            char probe[PATH_MAX + 64];
-            snprintf(probe, sizeof probe, "%s/include/stepwise/integrator.h", exe);
-            if (access(probe, R_OK) == 0) {
-                snprintf(dir, sizeof dir, "%s/include", exe);
-                return dir;
-            }
-        }
-    }
+    if (sw_cli_beside_binary("include", has_header, dir, sizeof dir))
+        return dir;
     return SW_DATADIR "/../../include";
 }
 

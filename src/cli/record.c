@@ -46,17 +46,6 @@ static volatile sig_atomic_t interrupted;
 
 static void on_signal(int sig) { interrupted = sig; }
 
-static void catch_signals(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
-}
-
 /* After cleaning up, die of the signal that stopped us, as the shell expects. */
 static void reraise(int sig)
 {
@@ -155,7 +144,7 @@ int sw_cmd_record(int argc, char **argv)
         sw_sim_free(&sim);
         return sw_cli_error("record: %s", err);
     }
-    catch_signals();
+    sw_cli_on_signals(on_signal);
     sw_sandbox_set_cancel(&interrupted); /* a plugin's step cannot hold off Ctrl-C */
     int rc = sw_trace_begin(&w, &sim, &spec, err, sizeof err);
     while (rc == SW_OK && !sw_trace_done(&sim, &spec) && !interrupted) {

@@ -160,13 +160,7 @@ static int mtime_of(const char *path, struct timespec *t)
 /* --watch: each run in a child, started again when the file changes. */
 static int watch(try_args *a)
 {
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_stop;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
+    sw_cli_on_signals(on_stop);
     struct timespec seen;
     int status = SW_EXIT_USAGE;
     while (!stop) {

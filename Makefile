@@ -95,8 +95,9 @@ test: $(BIN) $(TESTBIN) $(BENCHBIN)
 	$(TESTBIN)
 	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
+# SW_TEST_QUICK skips the minute-long sweeps (they run in the plain pass).
 sanitize:
-	$(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
+	SW_TEST_QUICK=1 $(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
 
 # libFuzzer targets (clang): the lesson parser, the trace reader and the
 # --set / number parsers. New inputs go to build/fuzz/corpus-NAME; crashes to

@@ -29,7 +29,10 @@ typedef struct sw_ode {
     void *ctx;           /* the system behind the callbacks */
     long evals;          /* derivative evaluations so far (counted by sw_ode_eval) */
     long solves;         /* linear solves so far */
-    long solver_iters;   /* inner iterations (CG) summed over solves */
+    long solver_iters;   /* inner iterations of iterative solves, summed */
+    /* NULL, or: size the solve's workspace for the system as built (called
+     * once when an implicit method is chosen); 0 or a status with err. */
+    int (*prepare)(void *ctx, char *err, size_t errlen);
 } sw_ode;
 
 /* Evaluate dy/dt and count it: every method goes through this. */

@@ -78,12 +78,6 @@ double sw_particles_drag(const sw_particles *p);
 /* Apply wall contact to y after a step; returns 1 when anything changed. */
 int sw_particles_contact(sw_particles *p, double *y);
 
-/* Per-force Jacobian blocks, for tests: ∂f/∂x and ∂f/∂v of particle i
- * (symmetric 2x2 as xx, xy, yy), summed over the per-particle forces and the
- * diagonal spring blocks, at state y. */
-void sw_particles_jacobian_diag(sw_particles *p, const double *y, int i,
-                                double dfdx[3], double dfdv[3]);
-
 /* Kinetic + potential energy of the conservative forces at y. */
 double sw_particles_energy(const sw_particles *p, const double *y);
 

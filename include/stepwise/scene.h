@@ -42,6 +42,7 @@ typedef struct sw_system {
 
 typedef struct sw_scene {
     const char *name;
+    sw_system_kind kind;      /* a flow (positions only) or particles with masses */
     const char *summary;      /* one line for `list scenes` */
     const char *teaches;      /* one sentence: the hard case it is there to show */
     const sw_param *params;
@@ -54,6 +55,15 @@ typedef struct sw_scene {
     /* Exact state at time t into y (ode->dim doubles); 0, or -1 when these
      * parameters have no closed form. NULL: never. */
     int (*exact)(const sw_system *sys, double t, double *y);
+    /* Why the closed form does not hold for these parameters (one clause,
+     * e.g. "the mass swings through its anchor, where the spring force turns
+     * around"), or NULL when it holds. NULL hook: it holds whenever exact
+     * is given. exact returns -1 exactly when this gives a reason. */
+    const char *(*exact_fails)(const sw_system *sys);
+    /* The least energy the system can have (its resting state), so that
+     * E - floor is the energy of the motion; NULL when the scene gives none
+     * (the truth module then finds a resting state where it can). */
+    double (*energy_floor)(const sw_system *sys);
     /* Total energy at y; NULL when the scene defines none. */
     double (*energy)(const sw_system *sys, const double *y);
     /* How far a quantity exact paths keep constant (stream function, angular
@@ -64,11 +74,6 @@ typedef struct sw_scene {
     /* 1 when a tight-tolerance rk45 run is a trustworthy reference (0 where
      * events at step boundaries make every run, rk45 too, only first order). */
     int reference;
-    /* Stiffest angular frequency; NULL when unknown. */
-    double (*omega_max)(const sw_system *sys);
-    /* Damping rate γ of that stiffest mode (its eigenvalues are -γ ± i√(ω²-γ²));
-     * NULL when it is undamped. */
-    double (*damping)(const sw_system *sys);
     sw_view (*view)(const sw_system *sys);
     /* After each step: contact, births and deaths. Returns 1 when y changed. */
     int (*post_step)(sw_system *sys, double t, double *y);

@@ -19,6 +19,7 @@ typedef struct sw_sim {
     double t;
     long steps;
     double energy0;        /* energy at t = 0 (NaN when the scene has none) */
+    struct sw_sim_derived *derived; /* quantities worked out on first use (private) */
     double runaway;        /* a state component beyond this counts as a blow-up */
     int blown;             /* 1 once the state went non-finite or ran away */
     long blow_step;
@@ -42,6 +43,9 @@ void sw_sim_set_tolerances(sw_sim *s, double rtol, double atol);
 void sw_sim_step_counts(const sw_sim *s, long *accepted, long *rejected);
 /* Change the step size; dt must lie in [SW_DT_MIN, SW_DT_MAX]. */
 int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen);
+/* Start again from state y (ode->dim doubles) at the current time: caches
+ * forgotten, E(0) taken anew from y. */
+void sw_sim_set_state(sw_sim *s, const double *y);
 /* Back to the initial state at t = 0 with counters cleared. */
 int sw_sim_reset(sw_sim *s, char *err, size_t errlen);
 /* One step (rk45: one accepted step, never past t_stop when t_stop > t).
@@ -52,8 +56,16 @@ int sw_sim_step(sw_sim *s);
 int sw_sim_run_until(sw_sim *s, double t_end);
 /* Derivative evaluations so far. */
 long sw_sim_evals(const sw_sim *s);
-/* Energy now, and its drift (E - E0)/|E0| in percent; NaN when undefined. */
+/* Energy now; NaN when the scene defines none. */
 double sw_sim_energy(const sw_sim *s);
+/* The energy scale drifts are measured against: the energy of the motion
+ * at the start, E(0) - E_floor, where the system has a resting state of
+ * least energy (a spring, a pendulum, a chain), else |E(0)| (an orbit's
+ * binding energy, a projectile's launch energy). NaN when undefined. */
+double sw_sim_energy_scale(const sw_sim *s);
+/* 1 when the scale is the energy of the motion, 0 when it is |E(0)|. */
+int sw_sim_energy_scale_is_motion(const sw_sim *s);
+/* The energy's drift (E - E(0)) / scale, in percent; NaN when undefined. */
 double sw_sim_energy_drift(const sw_sim *s);
 /* Largest absolute state error against the exact solution; NaN if none. */
 double sw_sim_exact_error(const sw_sim *s, double *scratch);

@@ -8,14 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/stepper.h"
 #include "lab/bench.h"
 #include "stepwise/stepwise.h"
 
-#define REF_RTOL 1e-11
-#define REF_ATOL 1e-13
-/* Largest headless measurement run (state components × steps) on a key press. */
-#define MEASURE_BUDGET 4e7
 
 static void series_clear(sw_series *s)
 {
@@ -73,37 +68,16 @@ static void free_bench(sw_app *a)
     a->workprec = 0;
 }
 
-static void free_ref(sw_app *a)
-{
-    if (a->have_ref)
-        sw_sim_free(&a->ref);
-    a->have_ref = 0;
-}
-
 static void free_sims(sw_app *a)
 {
     for (int i = 0; i < a->nsims; i++)
         sw_sim_free(&a->sims[i]);
     a->nsims = 0;
-    free_ref(a);
 }
 
 static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
 {
     return sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
-}
-
-/* Start the reference run a ghost or an error needs when there is no exact
- * solution: rk45 at tight tolerance, advanced in lockstep with the main sim. */
-static void ensure_ref(sw_app *a)
-{
-    if (a->have_ref || !a->scene->reference || a->exact_ok)
-        return;
-    char err[SW_ERRLEN];
-    if (sw_sim_init(&a->ref, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
-        return;
-    sw_sim_set_tolerances(&a->ref, REF_RTOL, REF_ATOL);
-    a->have_ref = 1;
 }
 
 static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
@@ -112,15 +86,8 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
     if (rc != SW_OK)
         return rc;
     a->nsims = 1;
-    double *g = realloc(a->ghost_y, (size_t)a->sims[0].sys.ode->dim * sizeof *g);
-    if (!g) {
-        free_sims(a);
-        snprintf(err, errlen, "out of memory");
-        return SW_ENOMEM;
-    }
-    a->ghost_y = g;
-    a->exact_ok = a->scene->exact && a->scene->exact(&a->sims[0].sys, 0.0, a->ghost_y) == 0;
-    a->ghost_t = NAN;
+    sw_app_truth_reset(a);
+    sw_app_watch_restart(a);
     if (a->compare) {
         for (int i = 0; i < 2; i++) {
             const sw_integrator *cm = a->compare_methods[i];
@@ -133,8 +100,6 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
             a->nsims++;
         }
     }
-    if (a->ghost)
-        ensure_ref(a);
     a->t_goal = 0;
     a->nmeas = 0;
     a->error_ratio = NAN;
@@ -163,8 +128,8 @@ void sw_app_free(sw_app *a)
     sw_app_record_stop(a);
     free_bench(a);
     free_sims(a);
-    free(a->ghost_y);
-    a->ghost_y = NULL;
+    a->scene = NULL;
+    sw_app_truth_reset(a); /* frees it */
 }
 
 int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, size_t errlen)
@@ -209,6 +174,7 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m)
                 a->compare_methods[i - 1] = a->sims[i].method;
             }
     snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, m->label);
+    sw_app_watch_restart(a);
     return SW_OK;
 }
 
@@ -221,6 +187,7 @@ int sw_app_set_dt(sw_app *a, double dt)
             return SW_EINVAL;
         }
     a->dt = dt;
+    sw_app_watch_restart(a);
     return SW_OK;
 }
 
@@ -255,12 +222,7 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
     return SW_OK;
 }
 
-void sw_app_set_ghost(sw_app *a, int on)
-{
-    a->ghost = on;
-    if (on)
-        ensure_ref(a);
-}
+void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
 
 void sw_app_reset(sw_app *a)
 {
@@ -269,123 +231,11 @@ void sw_app_reset(sw_app *a)
         sw_app_record_stop(a);
     for (int i = 0; i < a->nsims; i++)
         sw_sim_reset(&a->sims[i], err, sizeof err);
-    if (a->have_ref)
-        sw_sim_reset(&a->ref, err, sizeof err);
     a->t_goal = 0;
     a->slowmo = 1.0;
     for (int i = 0; i < SW_APP_SIMS; i++)
         series_clear(&a->series[i]);
-}
-
-/* The state the ghost shows at time t: exact, or the reference advanced to t.
- * Returns 0 when there is neither. */
-static int ghost_state(sw_app *a, double t, const double **y)
-{
-    if (a->exact_ok) {
-        if (a->ghost_t != t) { /* once per time, shared by the ghost and every error */
-            a->scene->exact(&a->sims[0].sys, t, a->ghost_y);
-            a->ghost_t = t;
-        }
-        *y = a->ghost_y;
-        return 1;
-    }
-    ensure_ref(a);
-    if (!a->have_ref)
-        return 0;
-    if (a->ref.t > t + 1e-12) {
-        char err[SW_ERRLEN];
-        sw_sim_reset(&a->ref, err, sizeof err);
-    }
-    sw_sim_run_until(&a->ref, t);
-    if (a->ref.blown || fabs(a->ref.t - t) > 1e-9 * fmax(1.0, t))
-        return 0;
-    *y = a->ref.sys.y;
-    return 1;
-}
-
-const double *sw_app_ghost(sw_app *a)
-{
-    const double *g;
-    return ghost_state(a, a->sims[0].t, &g) ? g : NULL;
-}
-
-double sw_app_error(sw_app *a, int i)
-{
-    const sw_sim *s = &a->sims[i];
-    const double *g;
-    if (s->blown || !ghost_state(a, s->t, &g))
-        return NAN;
-    double m = 0;
-    for (int k = 0; k < s->sys.ode->dim; k++) {
-        double d = fabs(s->sys.y[k] - g[k]);
-        if (!(d <= m))
-            m = d;
-    }
-    return m;
-}
-
-/* Reference state at the report time, from a fresh tight rk45 run. */
-static int reference_at(const sw_app *a, double T, double *out)
-{
-    sw_sim r;
-    char err[SW_ERRLEN];
-    if (sw_sim_init(&r, a->scene, a->p, sw_integrator_find("rk45"), a->scene->dt, err, sizeof err) != SW_OK)
-        return 0;
-    sw_sim_set_tolerances(&r, REF_RTOL, REF_ATOL);
-    int ok = sw_sim_run_until(&r, T) == 0;
-    if (ok)
-        memcpy(out, r.sys.y, (size_t)r.sys.ode->dim * sizeof *out);
-    sw_sim_free(&r);
-    return ok;
-}
-
-double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
-{
-    const sw_scene *sc = a->scene;
-    double T = sc->duration;
-    int dim = a->sims[0].sys.ode->dim;
-    if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
-        return NAN;
-    int exact = a->exact_ok;
-    if (!exact && !sc->reference)
-        return NAN;
-    double *want = malloc((size_t)dim * sizeof *want);
-    sw_sim s;
-    char err[SW_ERRLEN];
-    double e = NAN;
-    if (want && sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
-        if (sw_sim_run_until(&s, T) == 0 &&
-            (exact ? sc->exact(&s.sys, s.t, want) == 0 : reference_at(a, s.t, want))) {
-            e = 0;
-            for (int k = 0; k < dim; k++)
-                e = fmax(e, fabs(s.sys.y[k] - want[k]));
-        }
-        sw_sim_free(&s);
-    }
-    free(want);
-    return e;
-}
-
-/* After a dt change: measure the error at the report time at both steps and
- * tell the student the ratio (≈ 2^order when the step halves). */
-static void measure_dt_change(sw_app *a, double old_dt)
-{
-    const sw_integrator *m = a->sims[0].method;
-    double e_old = sw_app_measure(a, m, old_dt), e_new = sw_app_measure(a, m, a->dt);
-    a->meas_method[0] = a->meas_method[1] = m;
-    a->meas_dt[0] = old_dt;
-    a->meas_err[0] = e_old;
-    a->meas_dt[1] = a->dt;
-    a->meas_err[1] = e_new;
-    a->nmeas = 2;
-    double big = old_dt > a->dt ? e_old : e_new, small = old_dt > a->dt ? e_new : e_old;
-    a->error_ratio = big / small;
-    if (isfinite(a->error_ratio) && small > 0)
-        snprintf(a->message, sizeof a->message,
-                 "dt=%g: error at t=%.3g is %.3g (was %.3g at dt=%g): ratio %.3g, order ~%.2f",
-                 a->dt, a->scene->duration, e_new, e_old, old_dt, a->error_ratio, log2(a->error_ratio));
-    else
-        snprintf(a->message, sizeof a->message, "dt=%g", a->dt);
+    sw_app_watch_restart(a);
 }
 
 static int method_index(const sw_integrator *m)
@@ -474,7 +324,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         }
         if (sw_app_set_dt(a, dt) != SW_OK)
             return 0;
-        measure_dt_change(a, old);
+        sw_app_measure_dt_change(a, old);
         return 1;
     }
     case SW_ACT_PAUSE:
@@ -486,6 +336,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         for (int i = 0; i < a->nsims; i++)
             sw_sim_step(&a->sims[i]);
         a->t_goal = a->sims[0].t;
+        sw_app_watch_feed(a);
         sw_app_plugin_guard(a);
         return 1;
     case SW_ACT_RESET:
@@ -509,11 +360,14 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     case SW_ACT_GHOST:
         sw_app_set_ghost(a, !a->ghost);
-        if (a->ghost && !a->exact_ok && !a->have_ref)
-            snprintf(a->message, sizeof a->message, "no exact solution or reference for %s here", a->scene->name);
+        if (a->ghost && (!a->have_truth || a->truth.source == SW_TRUTH_NONE))
+            snprintf(a->message, sizeof a->message, "no ghost: %s", a->have_truth ? a->truth.why : "no truth");
+        else if (!a->ghost)
+            snprintf(a->message, sizeof a->message, "ghost off");
+        else if (a->truth.source == SW_TRUTH_EXACT)
+            snprintf(a->message, sizeof a->message, "ghost on: the exact solution");
         else
-            snprintf(a->message, sizeof a->message, "ghost %s",
-                     !a->ghost ? "off" : a->exact_ok ? "on: the exact solution" : "on: a tight rk45 reference run");
+            snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
         return 1;
     case SW_ACT_TRAILS:
         a->trails = !a->trails;
@@ -606,6 +460,8 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
         double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
         while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
             sw_sim_step(s);
+            if (i == 0)
+                sw_app_watch_feed(a); /* every step: the energy's peaks are per step */
             n++;
         }
         if (!s->blown && s->t + slack < a->t_goal)
@@ -621,65 +477,6 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
     sw_app_plugin_guard(a);
-}
-
-/* Spectral radius of one step of method m on x'' = -2γx' - ω²x: step the two
- * unit states, read the 2x2 one-step matrix, take its largest |eigenvalue|.
- * Exact for every method that is linear on linear problems (all built-ins);
- * NaN for adaptive methods, whose step is not fixed. */
-static double growth_per_step(const sw_integrator *m, double w, double g, double dt)
-{
-    if (m->flags & SW_ADAPTIVE)
-        return NAN;
-    sw_particles p;
-    sw_stepper st;
-    char err[SW_ERRLEN];
-    double mat[2][2], rho = NAN;
-    if (sw_particles_init(&p, 1, 1.0, err, sizeof err) != SW_OK)
-        return NAN;
-    sw_spring *sp = sw_particles_add_springs(&p, 1);
-    if (sp && sw_stepper_init(&st, m, &p.ode, err, sizeof err) == SW_OK) {
-        /* anchored 10 to the left at rest length 10: along x the force is
-         * exactly -ω²x - 2γx', with a direction defined at x = 0 */
-        *sp = (sw_spring){ .a = 0, .b = -1, .k = w * w, .c = 2 * g, .rest = 10.0, .ax = -10.0 };
-        int ok = 1;
-        for (int col = 0; col < 2 && ok; col++) {
-            double t = 0;
-            memset(p.y, 0, 4 * sizeof *p.y);
-            p.y[col ? 2 : 0] = 1e-3;
-            sw_stepper_touch(&st);
-            ok = sw_stepper_step(&st, &p.ode, &t, p.y, dt) == SW_OK;
-            mat[0][col] = p.y[0] / 1e-3;
-            mat[1][col] = p.y[2] / 1e-3;
-        }
-        if (ok) {
-            double tr = mat[0][0] + mat[1][1], det = mat[0][0] * mat[1][1] - mat[0][1] * mat[1][0];
-            double disc = tr * tr / 4 - det;
-            rho = disc >= 0 ? fabs(tr / 2) + sqrt(disc) : sqrt(fabs(det));
-        }
-        sw_stepper_free(&st);
-    }
-    sw_particles_free(&p);
-    return rho;
-}
-
-int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth)
-{
-    const sw_sim *s = &a->sims[0];
-    if (!a->scene->omega_max)
-        return 0;
-    double w = a->scene->omega_max(&s->sys), g = a->scene->damping ? a->scene->damping(&s->sys) : 0.0;
-    *omega_dt = w * a->dt;
-    *limit = s->method->stability;
-    if (a->growth_method != s->method || a->growth_w != w || a->growth_g != g || a->growth_dt != a->dt) {
-        a->growth_method = s->method;
-        a->growth_w = w;
-        a->growth_g = g;
-        a->growth_dt = a->dt;
-        a->growth = growth_per_step(s->method, w, g, a->dt);
-    }
-    *growth = a->growth;
-    return 1;
 }
 
 void sw_app_status(sw_app *a, int i, char *buf, size_t len)

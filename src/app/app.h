@@ -7,6 +7,8 @@
 
 #include <stddef.h>
 
+#include "sim/truth.h"
+#include "sim/watch.h"
 #include "stepwise/sim.h"
 
 #define SW_APP_SIMS 3          /* main + two compare runs */
@@ -56,6 +58,22 @@ typedef struct sw_series {
     int len, stride, skip;  /* decimation: keep every stride-th sample */
 } sw_series;
 
+/* The stability meter: the current method on the current linearisation. */
+typedef struct sw_app_meter {
+    int ok;                     /* 0: no reading (an adaptive method, no spectrum) */
+    const sw_integrator *method;
+    double dt, t;               /* what it was read for */
+    double stiff;               /* largest |λ| of the linearisation now */
+    double limit;               /* largest stable dt in theory here: 0 none */
+    int unbounded;              /* ... no limit up to SW_DT_MAX */
+    double growth;              /* ρ: growth per step of the worst mode at dt */
+    int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
+    int slow;                   /* ρ > 1 + SW_TRUTH_NEUTRAL, but too slowly to show */
+    double horizon;             /* the horizon (sw_truth_horizon) */
+    int complete;               /* every eigenvalue (0: the stiffest mode only) */
+    int growing;                /* physically growing modes left out */
+} sw_app_meter;
+
 typedef struct sw_app {
     const sw_scene *scene;
     double p[SW_MAX_PARAMS];
@@ -71,12 +89,11 @@ typedef struct sw_app {
     double t_goal;              /* simulated time the clock asks for */
     double slowmo;              /* 1, or how many times slower than asked (>1) */
     double steps_per_sec;       /* measured by the front end */
-    /* ghost: exact state, or a tight rk45 reference run in lockstep */
-    double *ghost_y;
-    double ghost_t;             /* time ghost_y holds the exact state for (NaN: none) */
-    int exact_ok;               /* the scene has a closed form for these parameters */
-    sw_sim ref;
-    int have_ref;
+    /* the truth for the scene on screen: the ghost and every error */
+    sw_truth truth;
+    int have_truth;
+    double *truth_report;       /* the true state at the report time, once asked for */
+    int have_truth_report;
     /* live error measurement at the scene's report time */
     double meas_dt[2], meas_err[2];
     const sw_integrator *meas_method[2];
@@ -84,16 +101,23 @@ typedef struct sw_app {
     double error_ratio;         /* err(previous) / err(latest), NaN until comparable */
     sw_series series[SW_APP_SIMS];
     unsigned locked;            /* bit per sw_action a lesson has locked (bits < 32) */
-    char message[SW_ERRLEN + 64]; /* one-line feedback for the last action */
+    char message[512];          /* one-line feedback for the last action */
     int quit;
     int recorded;               /* a trace has been recorded this session */
     char record_path[256];      /* non-empty while recording */
     const sw_integrator *record_method;
     double record_dt;
-    /* cache for sw_app_stability */
-    const sw_integrator *growth_method;
-    double growth_w, growth_g, growth_dt, growth;
+    /* the meter: spectra at the start and now, and what they gave */
+    sw_spectrum spec0, spec;
+    int have_spec0, have_spec;
+    double spec_t;              /* time spec was taken at */
+    sw_app_meter meter;         /* the last reading */
+    /* the main run watched for growth of its motion's energy, since the
+     * last reset or change of method or dt (relative to its value then) */
+    sw_watch watch;
+    double watch_m0;
 } sw_app;
+
 
 /* Build scene sc (p NULL: defaults) under method m (NULL: the scene's default)
  * with step dt (<= 0: the scene's default). 0 or a status with err filled. */
@@ -123,11 +147,15 @@ void sw_app_reset(sw_app *a);
  * and a->message says what happened (app/plugins.c). */
 void sw_app_plugin_guard(sw_app *a);
 
-/* The stiffest mode under the main method: ω·Δt, the method's limit on an
- * undamped oscillator (0: none, INFINITY: any step) and the growth factor
- * per step of that mode (spectral radius of the one-step map: > 1 grows);
- * returns 0 when the scene has no stiffest frequency. */
-int sw_app_stability(sw_app *a, double *omega_dt, double *limit, double *growth);
+/* (measure.c) Start watching the main run again from now. */
+void sw_app_watch_restart(sw_app *a);
+/* (measure.c) Feed the watch the main run's state after it advanced. */
+void sw_app_watch_feed(sw_app *a);
+
+/* The meter for the main method now (read from the truth module, cached:
+ * the spectrum is refreshed as the state moves, twenty times per report
+ * time). Returns m->ok. */
+int sw_app_stability(sw_app *a, sw_app_meter *m);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */
 const double *sw_app_ghost(sw_app *a);
@@ -140,6 +168,13 @@ void sw_app_status(sw_app *a, int i, char *buf, size_t len);
 void sw_app_record_start(sw_app *a, const char *path);
 /* Stop and write the trace (replaying the run exactly); sets a->message. */
 void sw_app_record_stop(sw_app *a);
+
+/* (measure.c) Rebuild the truth for the app's scene and parameters. */
+void sw_app_truth_reset(sw_app *a);
+/* (measure.c) After a dt change: the errors at the report time at both
+ * steps, their ratio in a->error_ratio only when it can be read as an order
+ * (else NaN), and a message saying which, or why not. */
+void sw_app_measure_dt_change(sw_app *a, double old_dt);
 
 /* Error at the scene's report time for (method, dt), from a fresh headless
  * run; NaN when there is no exact solution or reference or it blew up. */

@@ -1,6 +1,8 @@
 /* `list` and `describe`: what the catalog holds, in plain text. */
 #include "cli/cli.h"
 
+#include "sim/truth.h"
+
 #include <dirent.h>
 #include <errno.h>
 #include <getopt.h>
@@ -134,17 +136,19 @@ int sw_cmd_describe(int argc, char **argv)
         printf("  %-8s = %-10g %-22s %-8s %s\n", p->name, o.p[i], range, p->unit, p->help);
     }
     printf("\ndefaults: integrator %s, dt %g, report time %g\n", sc->integrator, sc->dt, sc->duration);
-    printf("knows:");
-    printf("%s", sc->exact ? " exact solution;" : sc->reference ? " rk45 reference;" : " no reference;");
-    printf("%s", sc->energy ? " energy;" : "");
-    if (sc->drift)
-        printf(" %s;", sc->drift_name);
     sw_system sys;
-    char err[SW_ERRLEN];
+    char err[SW_ERRLEN], why[SW_ERRLEN];
     if (sw_system_build(&sys, sc, o.p, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
-    if (sc->omega_max)
-        printf(" stiffest frequency %g rad/s;", sc->omega_max(&sys));
+    sw_truth_source src = sw_truth_source_of(&sys, why, sizeof why);
+    printf("truth: %s%s%s\n", src == SW_TRUTH_EXACT ? "the exact solution" : src == SW_TRUTH_REFERENCE
+           ? "a tight reference run" : "none", *why ? " - " : "", why);
+    printf("knows:%s", sc->energy ? " energy;" : "");
+    if (sc->drift)
+        printf(" %s;", sc->drift_name);
+    sw_spectrum sp;
+    if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0 && sp.largest > 0)
+        printf(" stiffest mode |L| = %g rad/s at the start;", sp.largest);
     printf("\n\ninitial state%s:\n", full ? " (every particle, %.17g)" : "");
     int shown = full ? sys.n : sys.n < 5 ? sys.n : 5;
     for (int i = 0; i < shown; i++) {

@@ -1,71 +1,154 @@
 /* `stepwise stability SCENE`: each method's largest stable step on a scene,
- * found by bisection (src/lab/stability.c), printed beside w·dt and the
- * theoretical limit on an undamped oscillator. */
+ * in theory (the truth module: every mode of the linearisation, along the
+ * run) and measured (bisection on runs, src/lab/stability.c), side by side,
+ * with the reason wherever they differ. `--markdown` prints the same as a
+ * table; `stepwise stability --all --markdown` is docs/stability.md's. */
 #include "cli/cli.h"
 
 #include <math.h>
 #include <string.h>
 
 #include "lab/stability.h"
+#include "sim/truth.h"
 
 static const char usage_text[] =
     "usage: stepwise stability SCENE [--integrators LIST] [--set NAME=VALUE] [--plugin FILE]\n"
+    "                            [--markdown]\n"
+    "       stepwise stability --all [--markdown]\n"
     "\n"
-    "Finds each method's largest stable step on SCENE by bisection, and where the scene\n"
-    "knows its stiffest frequency w, prints w*dt beside the theoretical limit on an\n"
-    "undamped oscillator x'' = -w^2 x (euler, midpoint, heun: none; symplectic-euler and\n"
-    "verlet: 2; rk4: 2*sqrt(2); implicit methods: unbounded).\n"
+    "Each fixed-step method's largest stable step on SCENE, two ways.\n"
     "\n"
-    "Criterion. Each probe runs the scene at one dt, and a twin started 1e-7 (relative)\n"
-    "ahead along its path (y0 + e f(y0)), for a fixed simulated time: 100 periods 2*pi/w\n"
-    "(100 report times when w is unknown), at least 10 report times, and at least 400\n"
-    "steps. It watches M, the scene's energy (for a flow without one, half the squared\n"
-    "state norm), and D, the squared distance between the twins. The step is unstable\n"
-    "when either sim blows up; when M rises above its start by more than 1e4 |M(0)|;\n"
-    "when D grows past 1e8 times its start (a growing mode that the scene's\n"
-    "nonlinearity has capped still drives the twins apart); when M grows steadily (the\n"
-    "run cut into 20 windows, M's peak rises from one window to the next at least 16\n"
-    "times in 19); or when M's peak over the last tenth of the run stands above the\n"
-    "first tenth's by more than the first tenth varied. A bounded oscillation has window\n"
-    "peaks that rise and fall at random and decay lowers them, so damped and decaying\n"
-    "runs are stable (a run whose D has decayed below 1e-24 of its start stops early,\n"
-    "stable); growth, however slow, raises them window after window. A fixed simulated\n"
-    "time (not a fixed number of steps) is what lets the slow growth of euler, midpoint\n"
-    "and heun at small dt show: they are reported 'none' when they grow even at\n"
-    "w*dt = 0.01. A method still stable at w*dt = 1000 (dt = 1000 at most) is\n"
-    "'unbounded'. Between a stable and an unstable dt the search bisects to 0.01%.\n"
-    "rk45 chooses its own steps and is skipped. Scenes with contact or births at step\n"
-    "boundaries (bounce, fireworks) are refused: nearby runs split at every step.\n"
-    "docs/performance.md has the details and the figures.\n"
+    "Theory: the eigenvalues L of the scene's linearisation d f/d y, taken at 16 times\n"
+    "along the true solution (the closed form, or a tight reference run), split into\n"
+    "modes; the method's growth per step on a mode is the spectral radius of its own\n"
+    "one-step map on that mode's test system, found by stepping it (so damping,\n"
+    "Verlet's reused acceleration and plugins are all covered). The limit is the\n"
+    "largest dt at which no mode grows. Modes that grow physically (an orbit's tidal\n"
+    "stretching, a compressed spring's buckling) and modes an exact symmetry keeps at\n"
+    "rest are left out. 'none': the method grows already at |L|*dt = 0.01.\n"
     "\n"
-    "  --integrators LIST  comma-separated methods (default: all that apply)\n"
+    "Measured: each probe runs the scene at one dt for 100 periods of the stiffest\n"
+    "mode (at least 10 report times and 400 steps) and watches M, the energy of the\n"
+    "motion (E - E_rest, normalised to 1 at the start; for a flow |y|^2). The step is\n"
+    "unstable when the run blows up, when M passes 1000, when M stays above 2 for a\n"
+    "whole twentieth of the run (growth a nonlinearity capped), or when M's peaks\n"
+    "climb (16 rises in 19 windows, or the latest peak above the first by more than\n"
+    "the first window varied). Bisection between a stable and an unstable dt to 0.01%.\n"
+    "Where the two differ by more than 2%, a line says why.\n"
+    "\n"
+    "  --integrators LIST  comma-separated methods (default: all fixed-step ones that apply)\n"
     "  --set NAME=VALUE    change a scene parameter, e.g. --set c=0 (undamped spring)\n"
-    "  --plugin FILE       load a student integrator (.so) and include it\n";
+    "  --plugin FILE       load a student integrator (.so) and include it\n"
+    "  --all               every scene where growth can be judged, default parameters\n"
+    "  --markdown          a Markdown table (docs/stability.md is made this way)\n"
+    "\n"
+    "Each probe runs for a fixed simulated time, so slow growth at small dt has as\n"
+    "long to show as fast growth at large dt. Scenes with contact or births at step\n"
+    "boundaries, and scenes whose energy has no floor (a projectile falls forever),\n"
+    "get the theory only. Where a scene has a resting state, every probe also runs the\n"
+    "same motion shrunk 1e4-fold towards it, so that growth cannot hide behind a\n"
+    "nonlinearity that caps it (a spring flung through its anchor). docs/stability.md\n"
+    "has the table for every scene.\n";
 
-static const char *verdict_text(int verdict)
+static void limit_text(double dt, int kind_none, int kind_unbounded, char *buf, size_t len)
 {
-    switch (verdict) {
-    case SW_PROBE_BLOWN: return "blew up";
-    case SW_PROBE_BOUND: return "energy bound";
-    case SW_PROBE_TWIN: return "twins split";
-    case SW_PROBE_TREND: return "grew";
-    default: return "stable";
-    }
+    if (kind_unbounded)
+        snprintf(buf, len, "unbounded");
+    else if (kind_none)
+        snprintf(buf, len, "none");
+    else
+        snprintf(buf, len, "%.5g", dt);
 }
 
-static void theory_text(const sw_integrator *m, char *buf, size_t len)
+static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded, char *buf, size_t len)
 {
-    double th = m->stability;
-    if (isnan(th))
-        snprintf(buf, len, "unknown");
-    else if (th == 0)
-        snprintf(buf, len, "none");
-    else if (isinf(th))
-        snprintf(buf, len, "unbounded");
-    else if (fabs(th - 2.0 * sqrt(2.0)) < 1e-12)
-        snprintf(buf, len, "2.828 (2 sqrt 2)");
+    if (!(stiff > 0))
+        snprintf(buf, len, "-");
+    else if (kind_unbounded)
+        snprintf(buf, len, ">= %.4g", stiff * dt);
+    else if (kind_none)
+        snprintf(buf, len, "< 0.01");
     else
-        snprintf(buf, len, "%.4g", th);
+        snprintf(buf, len, "%.4g", stiff * dt);
+}
+
+/* One scene: a row per method. Returns 0, or 1 when a run failed to start. */
+static int report(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods,
+                  int markdown)
+{
+    sw_stability_config cfg;
+    sw_stability_config_default(&cfg);
+    char err[SW_ERRLEN];
+    int status = 0;
+    if (markdown) {
+        printf("\n### %s (", sc->name);
+        for (int i = 0; i < sc->nparams; i++)
+            printf("%s%s=%g", i ? " " : "", sc->params[i].name, p[i]);
+        char why[SW_ERRLEN];
+        printf(")\n\n");
+        if (!sw_stability_measurable(sc, p, why, sizeof why))
+            printf("Theory only: %s.\n\n", why);
+        printf("| method | theory dt | theory \\|L\\|dt | measured dt | measured \\|L\\|dt | agree |\n"
+               "| --- | --- | --- | --- | --- | --- |\n");
+    } else {
+        printf("stability on %s (", sc->name);
+        for (int i = 0; i < sc->nparams; i++)
+            printf("%s%s=%g", i ? " " : "", sc->params[i].name, p[i]);
+        printf(")\n('stepwise stability --help' gives the criteria)\n");
+        sw_system sys;
+        sw_spectrum sp;
+        if (sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK) {
+            if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0 && sp.largest > 0)
+                printf("stiffest mode at the start: |L| = %.6g rad/s%s\n", sp.largest,
+                       sp.complete ? "" : " (by power iteration: the stiffest mode only)");
+            sw_system_free(&sys);
+        }
+        char why[SW_ERRLEN];
+        if (!sw_stability_measurable(sc, p, why, sizeof why))
+            printf("theory only: %s\n", why);
+        printf("\n");
+        printf("  %-22s %-12s %-10s %-34s %-10s\n", "method", "theory dt", "|L|*dt", "measured dt",
+               "|L|*dt");
+    }
+    for (int i = 0; i < nmethods; i++) {
+        const sw_integrator *m = methods[i];
+        sw_stability_result r;
+        int rc = sw_stability_find(sc, p, m, &cfg, &r, err, sizeof err);
+        if (rc == SW_EINVAL) {
+            if (!markdown)
+                printf("  %-22s skipped: %s\n", m->name, err);
+            continue;
+        }
+        if (rc != SW_OK) {
+            fprintf(stderr, "stepwise: %s: %s\n", m->name, err);
+            status = 1;
+            continue;
+        }
+        char th[32], thw[32], me[96] = "-", mew[32] = "-";
+        int t_none = !r.theory_unbounded && !(r.theory > 0);
+        limit_text(r.theory, t_none, r.theory_unbounded, th, sizeof th);
+        wdt_text(r.stiff, r.theory, t_none, r.theory_unbounded, thw, sizeof thw);
+        if (r.measured) {
+            limit_text(r.dt, r.kind == SW_STAB_NONE, r.kind == SW_STAB_UNBOUNDED, me, sizeof me);
+            wdt_text(r.stiff, r.dt, r.kind == SW_STAB_NONE, r.kind == SW_STAB_UNBOUNDED, mew, sizeof mew);
+        }
+        if (r.measured && r.kind == SW_STAB_LIMIT && !markdown) {
+            size_t n = strlen(me);
+            snprintf(me + n, sizeof me - n, " (%s at %.5g)", sw_stability_verdict_text(r.fail.verdict), r.dt_unstable);
+        }
+        if (markdown)
+            printf("| %s | %s | %s | %s | %s | %s |\n", m->name, th, thw, me, mew,
+                   r.agree ? "yes" : !r.measured ? "theory only" : r.why);
+        else {
+            printf("  %-22s %-12s %-10s %-34s %-10s\n", m->name, th, thw, me, mew);
+            if (r.measured && !r.agree)
+                printf("  %-22s differ: %s\n", "", r.why);
+            if (r.fail.verdict == SW_PROBE_BLOWN)
+                printf("  %-22s (at dt = %.6g: %s)\n", "", r.fail.dt, r.fail.reason);
+        }
+        fflush(stdout);
+    }
+    return status;
 }
 
 int sw_cmd_stability(int argc, char **argv)
@@ -79,7 +162,7 @@ int sw_cmd_stability(int argc, char **argv)
     memset(&opts, 0, sizeof opts);
     const char *plugins[8];
     char *methods_arg = NULL;
-    int nplugins = 0;
+    int nplugins = 0, all = 0, markdown = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         int takes = strcmp(a, "--integrators") == 0 || strcmp(a, "--set") == 0 ||
@@ -95,21 +178,25 @@ int sw_cmd_stability(int argc, char **argv)
             if (nplugins == 8)
                 return sw_cli_error("at most 8 --plugin options");
             plugins[nplugins++] = argv[++i];
-        } else if (a[0] == '-')
+        } else if (strcmp(a, "--all") == 0)
+            all = 1;
+        else if (strcmp(a, "--markdown") == 0)
+            markdown = 1;
+        else if (a[0] == '-')
             return sw_cli_error("stability: unknown option '%.40s'; options: --integrators, --set, "
-                                "--plugin, --help", a);
+                                "--plugin, --all, --markdown, --help", a);
         else if (opts.scene)
             return sw_cli_error("stability takes one SCENE (got '%.40s' and '%.40s')",
                                 opts.scene->name, a);
         else if (sw_cli_scene(a, &opts.scene) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     }
-    if (!opts.scene)
-        return sw_cli_error("stability needs a SCENE; see 'stepwise list scenes'");
-    char why[SW_ERRLEN];
-    if (!sw_stability_applicable(opts.scene, why, sizeof why))
-        return sw_cli_error("%s", why);
-    if (sw_cli_finish_opts(&opts) != SW_EXIT_OK)
+    if (all && (opts.scene || opts.nsets))
+        return sw_cli_error("stability --all takes no SCENE and no --set: it reports every scene at "
+                            "its defaults");
+    if (!all && !opts.scene)
+        return sw_cli_error("stability needs a SCENE (or --all); see 'stepwise list scenes'");
+    if (opts.scene && sw_cli_finish_opts(&opts) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     for (int i = 0; i < nplugins; i++)
         if (sw_cli_plugin(plugins[i]) != SW_EXIT_OK)
@@ -128,73 +215,28 @@ int sw_cmd_stability(int argc, char **argv)
         if (nmethods == 0)
             return sw_cli_error("--integrators wants a comma-separated list of methods, e.g. verlet,rk4");
     } else {
-        for (int i = 0; i < sw_integrator_count() && i < 32; i++)
-            methods[nmethods++] = sw_integrator_at(i);
+        for (int i = 0; i < sw_integrator_count() && nmethods < 32; i++)
+            if (!(sw_integrator_at(i)->flags & SW_ADAPTIVE))
+                methods[nmethods++] = sw_integrator_at(i);
     }
-    /* Check the parameters by building the scene once, before any run. */
-    sw_system sys;
-    char err[SW_ERRLEN];
-    if (sw_system_build(&sys, opts.scene, opts.p, err, sizeof err) != SW_OK)
-        return sw_cli_error("%s", err);
-    double omega = opts.scene->omega_max ? opts.scene->omega_max(&sys) : NAN;
-    sw_system_free(&sys);
-
-    const sw_scene *sc = opts.scene;
-    printf("stability on %s (", sc->name);
-    for (int i = 0; i < sc->nparams; i++)
-        printf("%s%s=%g", i ? " " : "", sc->params[i].name, opts.p[i]);
-    printf(")\n");
-    double probe_time = fmax(omega > 0 ? 100 * 6.283185307179586 / omega : 100 * sc->duration,
-                             10 * sc->duration);
-    if (omega > 0)
-        printf("stiffest frequency w = %.6g rad/s; ", omega);
-    else
-        printf("no stiffest frequency known; ");
-    printf("growth judged on %s and a twin run over %.4g s per probe\n",
-           sc->energy ? "the energy" : "half the squared state norm", probe_time);
-    printf("('stepwise stability --help' gives the criterion)\n\n");
-    printf("  %-18s %-34s %-10s %-17s %s\n", "method", "largest stable dt", "w*dt",
-           "theory w*dt", "probes");
-    sw_stability_config cfg;
-    sw_stability_config_default(&cfg);
     int status = SW_EXIT_OK;
-    for (int i = 0; i < nmethods; i++) {
-        const sw_integrator *m = methods[i];
-        sw_stability_result res;
-        char theory[32], found[80], wdt[24];
-        theory_text(m, theory, sizeof theory);
-        int rc = sw_stability_find(sc, opts.p, m, &cfg, &res, err, sizeof err);
-        if (rc == SW_EINVAL) {
-            printf("  %-18s skipped: %s\n", m->name, err);
-            continue;
-        }
-        if (rc != SW_OK) {
-            fprintf(stderr, "stepwise: %s: %s\n", m->name, err);
+    if (!all) {
+        /* Check the parameters by building the scene once, before any run. */
+        sw_system sys;
+        char err[SW_ERRLEN];
+        if (sw_system_build(&sys, opts.scene, opts.p, err, sizeof err) != SW_OK)
+            return sw_cli_error("%s", err);
+        sw_system_free(&sys);
+        if (report(opts.scene, opts.p, methods, nmethods, markdown))
             status = SW_EXIT_FAIL;
-            continue;
+    } else {
+        for (int s = 0; s < sw_scene_count(); s++) {
+            const sw_scene *sc = sw_scene_at(s);
+            double p[SW_MAX_PARAMS];
+            sw_scene_fill(sc, NULL, p);
+            if (report(sc, p, methods, nmethods, markdown))
+                status = SW_EXIT_FAIL;
         }
-        double shown = res.dt;
-        switch (res.kind) {
-        case SW_STAB_NONE:
-            snprintf(found, sizeof found, "none (%s at dt = %.3g)", verdict_text(res.fail.verdict),
-                     res.dt);
-            break;
-        case SW_STAB_UNBOUNDED:
-            snprintf(found, sizeof found, "unbounded (stable at dt = %.3g)", res.dt);
-            break;
-        default:
-            snprintf(found, sizeof found, "%.6g (%s at %.6g)", res.dt,
-                     verdict_text(res.fail.verdict), res.dt_unstable);
-        }
-        if (omega > 0)
-            snprintf(wdt, sizeof wdt, "%s%.5g", res.kind == SW_STAB_UNBOUNDED ? ">= " :
-                     res.kind == SW_STAB_NONE ? "< " : "", omega * shown);
-        else
-            snprintf(wdt, sizeof wdt, "-");
-        printf("  %-18s %-34s %-10s %-17s %d\n", m->name, found, wdt, theory, res.probes);
-        if (res.fail.verdict == SW_PROBE_BLOWN)
-            printf("  %-18s (at dt = %.6g: %s)\n", "", res.fail.dt, res.fail.reason);
-        fflush(stdout);
     }
-    return status;
+    return fflush(stdout) == 0 ? status : sw_cli_error("stability: could not write the report");
 }

@@ -1,7 +1,7 @@
 /* Flow-field systems: n massless points carried by x' = g(x, t). Each point
  * moves independently, so ∂f/∂y is block diagonal with one 2x2 block per
  * point and implicit solves are per point. Invariant: no allocation after init. */
-#include "stepwise/flow.h"
+#include "engine/flow_jacobian.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -26,7 +26,7 @@ static void flow_deriv_part(void *ctx, double t, int len, const double *y, doubl
 /* The 2x2 blocks of ∂g/∂x at every point: analytic when the field has a
  * Jacobian, else forward differences with every point perturbed at once
  * (points are independent, so two extra field calls give all blocks). */
-static void flow_jacobian(sw_flow *f, double t, const double *y, double *jac)
+void sw_flow_jacobian(sw_flow *f, double t, const double *y, double *jac)
 {
     if (f->jac) {
         f->jac(f->params, t, f->n, y, jac);
@@ -55,7 +55,7 @@ static int flow_solve(void *ctx, double t, const double *y, double c, const doub
 {
     sw_flow *f = ctx;
     double *jac = f->work;
-    flow_jacobian(f, t, y, jac);
+    sw_flow_jacobian(f, t, y, jac);
     for (int i = 0; i < f->n; i++) {
         const double *j = jac + 4 * i;
         double a = 1 - c * j[0], b = -c * j[1], cc = -c * j[2], d = 1 - c * j[3];

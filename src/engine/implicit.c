@@ -1,61 +1,171 @@
-/* The implicit methods and the linear solve they share: a system's own
- * solve, or a dense finite-difference fallback for small systems. */
+/* The implicit methods — backward Euler and the implicit midpoint rule by
+ * Newton's method, and the linearly implicit Euler step — and the linear
+ * solve they share: a system's own solve, or a dense finite-difference
+ * fallback for small systems. */
 #include "engine/stepper.h"
 
 #include <math.h>
 #include <string.h>
 
+#include "engine/linalg.h"
 #include "stepwise/stepwise.h"
 
-/* Linearised backward Euler (Baraff & Witkin): one Newton step of
- * y1 = y0 + h·f(y1) from y0, i.e. (I - h·J)·Δy = h·f(y0). Exact backward
- * Euler when f is linear. */
+/* Euclidean norm, scaled against overflow. */
+static double norm2(int n, const double *v)
+{
+    double m = sw_norm_inf(n, v), s = 0;
+    if (!(m > 0) || !isfinite(m))
+        return m;
+    for (int i = 0; i < n; i++)
+        s += (v[i] / m) * (v[i] / m);
+    return m * sqrt(s);
+}
+
+/* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
+ * equation of backward Euler (θ = 1, y1 = y0 + Δ) and of the implicit
+ * midpoint rule (θ = ½) over the step σh. Each iteration solves
+ * (I - θσh·J)·δ = -G with the Jacobian at the current iterate, so it
+ * converges quadratically once close; farther away a backtracking line
+ * search on |G|₂ keeps every step a descent step (the Newton direction is
+ * one for the Euclidean norm of the residual). Converged when the
+ * correction is at rounding level, |δ| <= 1e-12·|y0 + Δ|, or when no
+ * descent is left and |δ| <= 1e-9·|y0 + Δ| (rounding in G decides it).
+ * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3. */
+static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
+                  double *d, int max_iter)
+{
+    int n = ode->dim;
+    double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
+    double te = t + theta * h, c = theta * h, lambda = 1.0;
+    for (int i = 0; i < n; i++)
+        ym[i] = y[i] + theta * d[i];
+    sw_ode_eval(ode, te, ym, g);
+    for (int i = 0; i < n; i++)
+        g[i] = h * g[i] - d[i]; /* -G */
+    double gnorm = norm2(n, g);
+    for (int iter = 0; iter < max_iter; iter++) {
+        if (!isfinite(gnorm)) {
+            s->why = "Newton's method met a non-finite residual";
+            return -1;
+        }
+        if (gnorm == 0)
+            return 0; /* Δ solves G = 0 exactly */
+        if (sw_ode_solve(s, ode, te, ym, c, g, delta) != 0) {
+            s->why = "the linear system of a Newton step is singular";
+            return -1;
+        }
+        s->newton_iters++;
+        /* Backtrack until |G| drops (Armijo, halving λ), starting from four
+         * times the last accepted λ: a full step where Newton converges,
+         * few wasted evaluations where a curved valley needs short ones. */
+        double gnew = INFINITY;
+        lambda = fmin(1.0, 4.0 * lambda);
+        for (int ls = 0; ls < 30; ls++) {
+            for (int i = 0; i < n; i++)
+                ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
+            sw_ode_eval(ode, te, ym, g);
+            for (int i = 0; i < n; i++)
+                g[i] = h * g[i] - (d[i] + lambda * delta[i]);
+            gnew = norm2(n, g);
+            if (gnew <= (1.0 - 1e-4 * lambda) * gnorm || gnew == 0)
+                break;
+            lambda *= 0.5;
+        }
+        double step = lambda * sw_norm_inf(n, delta), size = 0;
+        sw_axpy(n, d, d, lambda, delta);
+        for (int i = 0; i < n; i++)
+            size = fmax(size, fabs(y[i] + d[i]));
+        if (step <= 1e-12 * size || gnew == 0)
+            return 0;
+        if (!(gnew < gnorm) || lambda < 1.0 / 1024) {
+            if (step <= 1e-9 * size)
+                return 0;
+            s->why = "Newton's method stalled: no solution of the implicit equation was found "
+                     "near the last state (a smaller dt helps)";
+            return -1;
+        }
+        gnorm = gnew;
+    }
+    s->why = "Newton's method did not converge (a smaller dt helps)";
+    return -1;
+}
+
+/* One implicit step (θ = 1 backward Euler, θ = ½ implicit midpoint). Newton
+ * from Δ = 0 converges in a few iterations unless the step turns the motion
+ * through a large angle of a nonlinear force (a stiff pendulum at ω·Δt =
+ * 100). Then the step is solved by continuation: the equation for σ·h, σ
+ * rising from 0 to 1, each solution the start of the next (predicted by the
+ * secant through the last two), σ's increment doubled after a solve and
+ * quartered after a failed one. That finds the solution connected to y0,
+ * the one backward Euler means where the equation has several; it fails,
+ * with a message, only when that branch folds back. Vectors 0..5. */
+static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h, double theta)
+{
+    int n = ode->dim;
+    double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
+    memset(d, 0, (size_t)n * sizeof *d);
+    if (newton(s, ode, *t, y, h, theta, d, 40) != 0) {
+        const char *why = s->why;
+        double sigma = 0, sigma_prev = 0, dsigma = 0.125;
+        memset(done, 0, (size_t)n * sizeof *done);
+        memset(prev, 0, (size_t)n * sizeof *prev);
+        for (int tries = 0; sigma < 1; tries++) {
+            if (tries == 400 || dsigma < 1e-7) {
+                s->why = why;
+                return SW_EDIVERGED;
+            }
+            /* predict by the secant through the last two solutions */
+            double next = fmin(1.0, sigma + dsigma);
+            double w = sigma > sigma_prev ? (next - sigma) / (sigma - sigma_prev) : 0.0;
+            for (int i = 0; i < n; i++)
+                d[i] = done[i] + w * (done[i] - prev[i]);
+            if (newton(s, ode, *t, y, next * h, theta, d, 12) == 0) {
+                sigma_prev = sigma;
+                sigma = next;
+                memcpy(prev, done, (size_t)n * sizeof *d);
+                memcpy(done, d, (size_t)n * sizeof *d);
+                dsigma *= 2;
+            } else {
+                dsigma *= 0.25;
+            }
+        }
+    }
+    sw_axpy(n, y, y, 1.0, d);
+    *t += h;
+    s->why = NULL;
+    return 0;
+}
+
+/* Backward Euler: y1 = y0 + h·f(t1, y1), solved to rounding. */
 int sw_step_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return implicit_step(s, ode, t, y, h, 1.0);
+}
+
+/* Implicit midpoint: y1 = y0 + h·f(t + h/2, (y0 + y1)/2), Newton as above. */
+int sw_step_implicit_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    return implicit_step(s, ode, t, y, h, 0.5);
+}
+
+/* Linearly implicit Euler (Baraff & Witkin's "large steps"): one Newton step
+ * of backward Euler from y0, (I - h·J(y0))·Δy = h·f(t0, y0). The same as
+ * backward Euler when f is linear; on a nonlinear system it can gain energy
+ * where backward Euler cannot, which is what a lesson shows. */
+int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     double *r = SW_WORK(s, 0), *dy = SW_WORK(s, 1);
     sw_ode_eval(ode, *t, y, r);
     for (int i = 0; i < ode->dim; i++)
         r[i] *= h;
-    int rc = sw_ode_solve(s, ode, *t + h, y, h, r, dy);
-    if (rc != 0)
-        return rc;
+    if (sw_ode_solve(s, ode, *t + h, y, h, r, dy) != 0) {
+        s->why = "the linear system of the step is singular";
+        return SW_EDIVERGED;
+    }
     sw_axpy(ode->dim, y, y, 1.0, dy);
     *t += h;
     return 0;
 }
-
-/* Implicit midpoint: y1 = y0 + h·f(t + h/2, (y0 + y1)/2). Newton on
- * Δ = y1 - y0 with residual R(Δ) = Δ - h·f(y0 + Δ/2), Jacobian I - h/2·J. */
-int sw_step_implicit_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    int n = ode->dim;
-    double *d = SW_WORK(s, 0), *ym = SW_WORK(s, 1), *r = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
-    double tm = *t + 0.5 * h;
-    double scale = 1.0 + sw_norm_inf(n, y);
-    double tol = s->rtol > 0 ? s->rtol * 1e-6 : 1e-12;
-    memset(d, 0, (size_t)n * sizeof *d);
-    for (int iter = 0; iter < 50; iter++) {
-        sw_axpy(n, ym, y, 0.5, d);
-        sw_ode_eval(ode, tm, ym, r);
-        for (int i = 0; i < n; i++)
-            r[i] = h * r[i] - d[i]; /* -R */
-        int rc = sw_ode_solve(s, ode, tm, ym, 0.5 * h, r, delta);
-        if (rc != 0)
-            return rc;
-        sw_axpy(n, d, d, 1.0, delta);
-        s->newton_iters++;
-        double step = sw_norm_inf(n, delta);
-        if (!(step == step))
-            return SW_EDIVERGED;
-        if (step <= tol * (scale + sw_norm_inf(n, d))) {
-            sw_axpy(n, y, y, 1.0, d);
-            *t += h;
-            return 0;
-        }
-    }
-    return SW_EDIVERGED;
-}
-
 
 /* Dense fallback: J by forward differences, one column per evaluation, then
  * (I - c·J) z = r by Gaussian elimination with partial pivoting. */
@@ -75,37 +185,7 @@ static int dense_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, do
             a[i * n + j] = (i == j) - c * (f1[i] - f0[i]) / eps;
     }
     memcpy(z, r, (size_t)n * sizeof *z);
-    for (int col = 0; col < n; col++) {
-        int piv = col;
-        for (int i = col + 1; i < n; i++)
-            if (fabs(a[i * n + col]) > fabs(a[piv * n + col]))
-                piv = i;
-        if (!(fabs(a[piv * n + col]) > 0))
-            return SW_EDIVERGED;
-        if (piv != col) {
-            for (int j = 0; j < n; j++) {
-                double tmp = a[col * n + j];
-                a[col * n + j] = a[piv * n + j];
-                a[piv * n + j] = tmp;
-            }
-            double tmp = z[col];
-            z[col] = z[piv];
-            z[piv] = tmp;
-        }
-        for (int i = col + 1; i < n; i++) {
-            double f = a[i * n + col] / a[col * n + col];
-            for (int j = col; j < n; j++)
-                a[i * n + j] -= f * a[col * n + j];
-            z[i] -= f * z[col];
-        }
-    }
-    for (int i = n - 1; i >= 0; i--) {
-        double acc = z[i];
-        for (int j = i + 1; j < n; j++)
-            acc -= a[i * n + j] * z[j];
-        z[i] = acc / a[i * n + i];
-    }
-    return SW_OK;
+    return sw_dense_solve(n, a, z) == 0 ? SW_OK : SW_EDIVERGED;
 }
 
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,

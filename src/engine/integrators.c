@@ -25,10 +25,12 @@ static const sw_integrator builtins[] = {
       "y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)" },
     { "verlet", "velocity Verlet (leapfrog)", 2, 1, SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
       2.0, 2, sw_step_verlet, "v+ = v0 + h/2 a0; x1 = x0 + h v+; v1 = v+ + h/2 a1" },
-    { "implicit-euler", "backward Euler, linearised (one Newton step, CG)", 1, 1, SW_IMPLICIT,
-      INFINITY, 2, sw_step_implicit_euler, "(I - h J) dy = h f(y0)" },
-    { "implicit-midpoint", "implicit midpoint, Newton", 2, 2, SW_IMPLICIT | SW_SYMPLECTIC,
-      INFINITY, 4, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2)" },
+    { "implicit-euler", "backward Euler (Newton to rounding, direct solve)", 1, 1, SW_IMPLICIT,
+      INFINITY, 6, sw_step_implicit_euler, "y1 = y0 + h f(y1), solved by Newton's method" },
+    { "linear-implicit-euler", "linearly implicit Euler (one Newton step)", 1, 1, SW_IMPLICIT,
+      INFINITY, 2, sw_step_linear_implicit_euler, "(I - h J(y0)) dy = h f(y0): Baraff-Witkin's large steps" },
+    { "implicit-midpoint", "implicit midpoint (Newton to rounding)", 2, 2, SW_IMPLICIT | SW_SYMPLECTIC,
+      INFINITY, 6, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method" },
     { "rk45", "Dormand-Prince 5(4), adaptive", 5, 6, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 9, sw_step_rk45,
       "adaptive: error estimate from an embedded 4th-order solution" },
 };
@@ -123,6 +125,13 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode, ch
         snprintf(err, errlen, "out of memory for %s workspace (%d doubles)", m->name, ode->dim);
         return SW_ENOMEM;
     }
+    if ((m->flags & SW_IMPLICIT) && ode->prepare) {
+        rc = ode->prepare(ode->ctx, err, errlen);
+        if (rc != SW_OK) {
+            sw_stepper_free(s);
+            return rc;
+        }
+    }
     return SW_OK;
 }
 
@@ -141,6 +150,7 @@ void sw_stepper_touch(sw_stepper *s) { s->have_cache = 0; }
 int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     s->checked = 0;
+    s->why = NULL;
     return s->method->step(s, ode, t, y, h);
 }
 

@@ -43,7 +43,9 @@ static void accumulate(const sw_particles *p, const sw_force *fo, const double *
             int a = sp->a, b = sp->b;
             double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
             double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by;
-            double len = sqrt(dx * dx + dy * dy);
+            double len2 = dx * dx + dy * dy;
+            /* below 1e-290 the squares lose their digits (or vanish): hypot */
+            double len = len2 >= 1e-290 ? sqrt(len2) : hypot(dx, dy);
             if (!(len > 0))
                 continue; /* direction undefined: no force */
             double ux = dx / len, uy = dy / len;
@@ -108,6 +110,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.order = 2;
     p->ode.deriv = particles_deriv;
     p->ode.solve = sw_particles_solve;
+    p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
     return SW_OK;
 }

@@ -1,8 +1,15 @@
-/* Implicit solves on particle systems: the Jacobian blocks of the forces
- * (analytic for springs and drag, central differences for central
- * attraction) and the linear system implicit methods need. Invariant: the
- * solve allocates nothing; its workspace grows when particles or springs are
- * added. */
+/* Implicit solves on particle systems. The force Jacobians are analytic and
+ * complete: springs (stiffness and the damping term, including how the
+ * damping force turns with the spring), linear drag, central attraction.
+ * (I - c·J) z = r reduces to the velocity system
+ *     (M - c·Fv - c²·Fx) z_v = M·r_v + c·Fx·r_x,   z_x = r_x + c·z_v,
+ * which is banded when particles are numbered along their springs (a chain
+ * has bandwidth one particle). It is solved by banded LU with partial
+ * pivoting: exact, and correct where a compressed spring makes the matrix
+ * indefinite or damping makes it non-symmetric — there conjugate gradients,
+ * Baraff and Witkin's choice, break down. The system reads the forces only
+ * through the particle accessors. Invariant: the solve allocates nothing;
+ * the band is sized once by sw_particles_solver_prepare. */
 #include "engine/particles_solve.h"
 
 #include <math.h>
@@ -10,14 +17,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/linalg.h"
 #include "stepwise/stepwise.h"
 
+/* Largest band accepted, in doubles (256 MiB). */
+#define BAND_MAX ((size_t)1 << 25)
+
 struct sw_particles_solver {
-    double *diag;          /* 6n: ∂f/∂x and ∂f/∂v blocks per particle */
-    double *sblock;        /* 6 per spring: ∂f_a/∂x_a and ∂f_a/∂v_a */
-    double *cg;            /* 6 vectors of 2n for conjugate gradients */
+    double *diag;          /* 8 per particle: Fx (2x2) and Fv (2x2) of per-particle forces */
+    double *sblock;        /* 8 per spring: ∂f_a/∂d and ∂f_a/∂(dv), d = x_a - x_b */
     int nsprings;          /* springs the blocks have room for */
-    long cg_iters_last;    /* iterations of the last solve */
+    double *rhs;           /* 2n: the velocity system's right-hand side */
+    double *band;          /* the velocity system's band, or NULL before prepare */
+    int *piv;
+    int half_band;         /* in dof: 2·(largest particle distance along a spring) + 1 */
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -25,14 +38,14 @@ int sw_particles_solver_init(sw_particles *p)
     p->solver = calloc(1, sizeof *p->solver);
     if (!p->solver)
         return SW_ENOMEM;
-    p->solver->diag = calloc((size_t)6 * p->n, sizeof *p->solver->diag);
-    p->solver->cg = calloc((size_t)6 * 2 * p->n, sizeof *p->solver->cg);
-    return p->solver->diag && p->solver->cg ? SW_OK : SW_ENOMEM;
+    p->solver->diag = calloc((size_t)8 * p->n, sizeof *p->solver->diag);
+    p->solver->rhs = calloc((size_t)2 * p->n, sizeof *p->solver->rhs);
+    return p->solver->diag && p->solver->rhs ? SW_OK : SW_ENOMEM;
 }
 
 int sw_particles_solver_springs(sw_particles *p, int nsprings)
 {
-    double *blocks = realloc(p->solver->sblock, (size_t)nsprings * 6 * sizeof *blocks);
+    double *blocks = realloc(p->solver->sblock, (size_t)nsprings * 8 * sizeof *blocks);
     if (!blocks)
         return SW_ENOMEM;
     p->solver->sblock = blocks;
@@ -45,267 +58,231 @@ void sw_particles_solver_free(sw_particles *p)
     if (p->solver) {
         free(p->solver->diag);
         free(p->solver->sblock);
-        free(p->solver->cg);
+        free(p->solver->rhs);
+        free(p->solver->band);
+        free(p->solver->piv);
         free(p->solver);
     }
     p->solver = NULL;
 }
 
-/* Symmetric 2x2 blocks are stored as (xx, xy, yy). */
-static void sym_mul_add(const double m[3], double s, double wx, double wy, double *ox, double *oy)
+int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
 {
-    *ox += s * (m[0] * wx + m[1] * wy);
-    *oy += s * (m[1] * wx + m[2] * wy);
+    sw_particles *p = ctx;
+    struct sw_particles_solver *s = p->solver;
+    int far = 0, count = sw_particles_spring_count(p);
+    for (int j = 0; j < count; j++) {
+        sw_spring sp;
+        sw_particles_spring(p, j, &sp);
+        if (sp.b >= 0 && abs(sp.a - sp.b) > far)
+            far = abs(sp.a - sp.b);
+    }
+    int kb = 2 * far + 1, n2 = 2 * p->n;
+    size_t len = sw_band_doubles(n2, kb, kb);
+    if (len > BAND_MAX) {
+        snprintf(err, errlen, "the implicit solve needs the springs to join particles with nearby "
+                 "numbers; here they span %d particles, a band of %zu MiB", far,
+                 len * sizeof(double) >> 20);
+        return SW_EINVAL;
+    }
+    if (s->band && s->half_band == kb)
+        return SW_OK;
+    double *band = realloc(s->band, len * sizeof *band);
+    int *piv = band ? realloc(s->piv, (size_t)n2 * sizeof *piv) : NULL;
+    if (band)
+        s->band = band;
+    if (!band || !piv) {
+        snprintf(err, errlen, "out of memory for the implicit solve (%zu MiB)", len * sizeof(double) >> 20);
+        return SW_ENOMEM;
+    }
+    s->piv = piv;
+    s->half_band = kb;
+    return SW_OK;
 }
 
-/* ∂f_a/∂x_a and ∂f_a/∂v_a of one damped spring (Baraff & Witkin):
- *   Kx = -k [u uᵀ + (1 - rest/|d|)(I - u uᵀ)],  Kv = -c u uᵀ.
- * The damping force's dependence on x is left out, as Baraff & Witkin do,
- * to keep the system symmetric; it vanishes when motion is along the spring. */
-static void spring_blocks(const sw_spring *sp, const double *x, double kx[3], double kv[3])
+/* 2x2 blocks are row-major (xx, xy, yx, yy). */
+
+/* ∂f_a/∂d and ∂f_a/∂(dv) of one damped spring, d = x_a - x_b, r = |d|,
+ * u = d/r, P = I - u uᵀ, dv = v_a - v_b:
+ *   Kx = -k u uᵀ - k (1 - rest/r) P - (c/r) [u (P dv)ᵀ + (dv·u) P],
+ *   Kv = -c u uᵀ.
+ * At r = 0 the force is defined as zero (its direction is undefined); the
+ * blocks are then those of a zero-length spring, -k I and 0. */
+static void spring_blocks(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
 {
     double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
     double dx = x[2 * sp->a] - bx, dy = x[2 * sp->a + 1] - by;
-    double len = sqrt(dx * dx + dy * dy);
-    if (!(len > 0)) {
-        kx[0] = kx[2] = -sp->k;
-        kx[1] = 0;
-        kv[0] = kv[1] = kv[2] = 0;
+    double r2 = dx * dx + dy * dy, r = r2 >= 1e-290 ? sqrt(r2) : hypot(dx, dy);
+    if (!(r > 0)) {
+        kx[0] = kx[3] = -sp->k;
+        kx[1] = kx[2] = 0;
+        kv[0] = kv[1] = kv[2] = kv[3] = 0;
         return;
     }
-    double ux = dx / len, uy = dy / len, s = 1.0 - sp->rest / len;
-    double uu[3] = { ux * ux, ux * uy, uy * uy };
-    double id[3] = { 1, 0, 1 };
-    for (int q = 0; q < 3; q++) {
-        kx[q] = -sp->k * (uu[q] + s * (id[q] - uu[q]));
-        kv[q] = -sp->c * uu[q];
-    }
-}
-
-/* Central attraction has no analytic Jacobian here: central differences on
- * the force of this one particle (the finite-difference fallback). */
-static void central_block_fd(const sw_particles *p, const sw_force *fo, const double *x, int i,
-                             double kx[3])
-{
-    double px = x[2 * i] - fo->cx, py = x[2 * i + 1] - fo->cy;
-    double r = sqrt(px * px + py * py);
-    double h = 1e-6 * (r > 1e-3 ? r : 1e-3);
-    double col[2][2];
-    for (int d = 0; d < 2; d++) {
-        double fp[2], fm[2];
-        for (int sgn = 0; sgn < 2; sgn++) {
-            double qx = px + (d == 0 ? (sgn ? -h : h) : 0);
-            double qy = py + (d == 1 ? (sgn ? -h : h) : 0);
-            double r2 = qx * qx + qy * qy;
-            double s = -fo->mu * p->mass[i] / (r2 * sqrt(r2));
-            double *out = sgn ? fm : fp;
-            out[0] = s * qx;
-            out[1] = s * qy;
+    double u[2] = { dx / r, dy / r };
+    double dv[2] = { v[2 * sp->a] - (sp->b >= 0 ? v[2 * sp->b] : 0.0),
+                     v[2 * sp->a + 1] - (sp->b >= 0 ? v[2 * sp->b + 1] : 0.0) };
+    double along = dv[0] * u[0] + dv[1] * u[1];
+    double pdv[2] = { dv[0] - along * u[0], dv[1] - along * u[1] };
+    double s = 1.0 - sp->rest / r, cr = sp->c / r;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            double uu = u[i] * u[j], proj = (i == j) - uu;
+            kx[2 * i + j] = -sp->k * (uu + s * proj) - cr * (u[i] * pdv[j] + along * proj);
+            kv[2 * i + j] = -sp->c * uu;
         }
-        col[d][0] = (fp[0] - fm[0]) / (2 * h);
-        col[d][1] = (fp[1] - fm[1]) / (2 * h);
-    }
-    kx[0] = col[0][0];
-    kx[1] = 0.5 * (col[1][0] + col[0][1]);
-    kx[2] = col[1][1];
 }
 
-/* Fill the per-particle (diag) and per-spring (sblock) Jacobian blocks at x. */
-static void assemble(sw_particles *p, const double *x)
+/* ∂f/∂x of central attraction on particle i: -μm (I/r³ - 3 d dᵀ/r⁵). */
+static void central_block(double mu_m, double dx, double dy, double kx[4])
 {
-    memset(p->solver->diag, 0, (size_t)p->n * 6 * sizeof *p->solver->diag);
-    int js = 0;
-    for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        if (fo->kind == SW_FORCE_DRAG) {
-            for (int i = 0; i < p->n; i++) {
-                p->solver->diag[6 * i + 3] -= fo->k;
-                p->solver->diag[6 * i + 5] -= fo->k;
-            }
-        } else if (fo->kind == SW_FORCE_CENTRAL) {
-            for (int i = 0; i < p->n; i++) {
-                double kx[3];
-                central_block_fd(p, fo, x, i, kx);
-                for (int q = 0; q < 3; q++)
-                    p->solver->diag[6 * i + q] += kx[q];
-            }
-        } else if (fo->kind == SW_FORCE_SPRINGS) {
-            for (int j = 0; j < fo->nsprings; j++, js++)
-                spring_blocks(&fo->springs[j], x, p->solver->sblock + 6 * js, p->solver->sblock + 6 * js + 3);
-        }
+    double r2 = dx * dx + dy * dy, r = sqrt(r2), r3 = r2 * r, r5 = r3 * r2;
+    if (!(r > 0)) {
+        kx[0] = kx[1] = kx[2] = kx[3] = 0;
+        return;
     }
+    kx[0] = -mu_m * (1 / r3 - 3 * dx * dx / r5);
+    kx[1] = kx[2] = -mu_m * (-3 * dx * dy / r5);
+    kx[3] = -mu_m * (1 / r3 - 3 * dy * dy / r5);
 }
 
-void sw_particles_jacobian_diag(sw_particles *p, const double *y, int i, double dfdx[3], double dfdv[3])
+/* Fill the per-particle and per-spring blocks at state y. */
+static void assemble(sw_particles *p, const double *y)
 {
-    assemble(p, y);
-    for (int q = 0; q < 3; q++) {
-        dfdx[q] = p->solver->diag[6 * i + q];
-        dfdv[q] = p->solver->diag[6 * i + 3 + q];
-    }
-    int js = 0;
-    for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        if (fo->kind != SW_FORCE_SPRINGS)
-            continue;
-        for (int j = 0; j < fo->nsprings; j++, js++) {
-            const sw_spring *sp = &fo->springs[j];
-            if (sp->a != i && sp->b != i)
-                continue;
-            for (int q = 0; q < 3; q++) {
-                dfdx[q] += p->solver->sblock[6 * js + q];
-                dfdv[q] += p->solver->sblock[6 * js + 3 + q];
-            }
-        }
-    }
-}
-
-/* out = (a·Fx + b·Fv)·w using the assembled blocks, plus m·w when with_mass. */
-static void jac_apply(const sw_particles *p, double a, double b, int with_mass, const double *w, double *out)
-{
+    struct sw_particles_solver *s = p->solver;
+    const double *x = y, *v = y + 2 * p->n;
+    double drag = sw_particles_drag(p), cx, cy, mu;
+    int central = sw_particles_central(p, &cx, &cy, &mu);
     for (int i = 0; i < p->n; i++) {
-        const double *d = p->solver->diag + 6 * i;
-        double m = with_mass ? p->mass[i] : 0.0;
-        double ox = m * w[2 * i], oy = m * w[2 * i + 1];
-        sym_mul_add(d, a, w[2 * i], w[2 * i + 1], &ox, &oy);
-        sym_mul_add(d + 3, b, w[2 * i], w[2 * i + 1], &ox, &oy);
-        out[2 * i] = ox;
-        out[2 * i + 1] = oy;
+        double *d = s->diag + 8 * i;
+        memset(d, 0, 8 * sizeof *d);
+        if (central)
+            central_block(mu * p->mass[i], x[2 * i] - cx, x[2 * i + 1] - cy, d);
+        d[4] = d[7] = -drag;
     }
-    int js = 0;
-    for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        if (fo->kind != SW_FORCE_SPRINGS)
-            continue;
-        for (int j = 0; j < fo->nsprings; j++, js++) {
-            const sw_spring *sp = &fo->springs[j];
-            const double *blk = p->solver->sblock + 6 * js;
-            double wx = w[2 * sp->a] - (sp->b >= 0 ? w[2 * sp->b] : 0.0);
-            double wy = w[2 * sp->a + 1] - (sp->b >= 0 ? w[2 * sp->b + 1] : 0.0);
-            double sx = 0, sy = 0;
-            sym_mul_add(blk, a, wx, wy, &sx, &sy);
-            sym_mul_add(blk + 3, b, wx, wy, &sx, &sy);
-            out[2 * sp->a] += sx;
-            out[2 * sp->a + 1] += sy;
-            if (sp->b >= 0) {
-                out[2 * sp->b] -= sx;
-                out[2 * sp->b + 1] -= sy;
-            }
-        }
+    int count = sw_particles_spring_count(p);
+    for (int j = 0; j < count; j++) {
+        sw_spring sp;
+        sw_particles_spring(p, j, &sp);
+        spring_blocks(&sp, x, v, s->sblock + 8 * j, s->sblock + 8 * j + 4);
     }
 }
 
-static double dot(int n, const double *a, const double *b)
+/* Scatter the blocks as a·Fx + b·Fv into the sink: one call per 2x2 block
+ * at particle rows pi, columns pj. */
+typedef void block_sink(void *ctx, int pi, int pj, double s, const double *blk);
+
+static void scatter(const sw_particles *p, double a, double b, block_sink *sink, void *ctx)
 {
-    double s = 0;
-    for (int i = 0; i < n; i++)
-        s += a[i] * b[i];
-    return s;
+    const struct sw_particles_solver *s = p->solver;
+    for (int i = 0; i < p->n; i++) {
+        sink(ctx, i, i, a, s->diag + 8 * i);
+        sink(ctx, i, i, b, s->diag + 8 * i + 4);
+    }
+    int count = sw_particles_spring_count(p);
+    for (int j = 0; j < count; j++) {
+        sw_spring sp;
+        sw_particles_spring(p, j, &sp);
+        const double *kx = s->sblock + 8 * j, *kv = kx + 4;
+        /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b). */
+        int ends[2] = { sp.a, sp.b };
+        for (int r = 0; r < 2; r++)
+            for (int c = 0; c < 2; c++) {
+                if (ends[r] < 0 || ends[c] < 0)
+                    continue;
+                double sgn = r == c ? 1.0 : -1.0;
+                sink(ctx, ends[r], ends[c], sgn * a, kx);
+                sink(ctx, ends[r], ends[c], sgn * b, kv);
+            }
+    }
 }
 
-/* (I - c·J) z = r for J = [[0, I], [M⁻¹Fx, M⁻¹Fv]]. Eliminating z_x = r_x + c·z_v
- * leaves the symmetric system (M - c·Fv - c²·Fx) z_v = M·r_v + c·Fx·r_x, solved
- * by Jacobi-preconditioned conjugate gradients. */
+static void band_sink(void *ctx, int pi, int pj, double s, const double *blk)
+{
+    if (s == 0)
+        return;
+    for (int r = 0; r < 2; r++)
+        for (int c = 0; c < 2; c++)
+            sw_band_add(ctx, 2 * pi + r, 2 * pj + c, s * blk[2 * r + c]);
+}
+
+/* out += s·K·w for one block: the product Fx·r_x without forming Fx. */
+typedef struct apply_ctx { const double *w; double *out; } apply_ctx;
+
+static void apply_sink(void *ctx, int pi, int pj, double s, const double *blk)
+{
+    apply_ctx *ac = ctx;
+    if (s == 0)
+        return;
+    double wx = ac->w[2 * pj], wy = ac->w[2 * pj + 1];
+    ac->out[2 * pi] += s * (blk[0] * wx + blk[1] * wy);
+    ac->out[2 * pi + 1] += s * (blk[2] * wx + blk[3] * wy);
+}
+
 int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
 {
     (void)t;
     sw_particles *p = ctx;
+    struct sw_particles_solver *s = p->solver;
+    if (!s->band)
+        return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
-    double *b = p->solver->cg, *res = b + n2, *dir = res + n2, *adir = dir + n2, *pre = adir + n2,
-           *zv = z + n2;
     assemble(p, y);
-    /* b = M r_v + c Fx r_x */
-    jac_apply(p, c, 0.0, 0, r, b);
+    /* rhs = M r_v + c Fx r_x */
+    apply_ctx ac = { r, s->rhs };
     for (int i = 0; i < p->n; i++) {
-        b[2 * i] += p->mass[i] * r[n2 + 2 * i];
-        b[2 * i + 1] += p->mass[i] * r[n2 + 2 * i + 1];
+        s->rhs[2 * i] = p->mass[i] * r[n2 + 2 * i];
+        s->rhs[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
     }
-    /* Jacobi preconditioner: the diagonal of A, via A·e_k summed per column
-     * type; cheap form: particle blocks plus spring blocks' diagonals. */
+    scatter(p, c, 0.0, apply_sink, &ac);
+    /* A = M - c Fv - c² Fx */
+    sw_band band;
+    sw_band_init(&band, n2, s->half_band, s->half_band, s->band, s->piv);
     for (int i = 0; i < p->n; i++) {
-        const double *d = p->solver->diag + 6 * i;
-        pre[2 * i] = p->mass[i] - c * d[3] - c * c * d[0];
-        pre[2 * i + 1] = p->mass[i] - c * d[5] - c * c * d[2];
+        sw_band_add(&band, 2 * i, 2 * i, p->mass[i]);
+        sw_band_add(&band, 2 * i + 1, 2 * i + 1, p->mass[i]);
     }
-    int js = 0;
-    for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        if (fo->kind != SW_FORCE_SPRINGS)
-            continue;
-        for (int j = 0; j < fo->nsprings; j++, js++) {
-            const double *blk = p->solver->sblock + 6 * js;
-            const sw_spring *sp = &fo->springs[j];
-            double ex = -c * blk[3] - c * c * blk[0], ey = -c * blk[5] - c * c * blk[2];
-            pre[2 * sp->a] += ex;
-            pre[2 * sp->a + 1] += ey;
-            if (sp->b >= 0) {
-                pre[2 * sp->b] += ex;
-                pre[2 * sp->b + 1] += ey;
-            }
-        }
-    }
-    for (int i = 0; i < n2; i++)
-        pre[i] = pre[i] > 0 ? 1.0 / pre[i] : 1.0;
-    /* The system is linear: solve for b / max|b| and scale back, so residual
-     * norms neither underflow (a state damped to 1e-160) nor overflow. */
-    double bscale = 0;
-    for (int i = 0; i < n2; i++)
-        bscale = fmax(bscale, fabs(b[i]));
-    if (bscale > 0 && isfinite(bscale))
-        for (int i = 0; i < n2; i++)
-            b[i] /= bscale;
-    else
-        bscale = 1;
-
-    /* PCG from z_v = 0. */
-    memset(zv, 0, (size_t)n2 * sizeof *zv);
-    memcpy(res, b, (size_t)n2 * sizeof *res);
-    double bnorm = sqrt(dot(n2, b, b));
-    p->solver->cg_iters_last = 0;
-    if (bnorm > 0) {
-        double *pz = adir; /* reuse: preconditioned residual before adir is needed */
-        for (int i = 0; i < n2; i++)
-            dir[i] = pre[i] * res[i];
-        double rz = dot(n2, res, dir);
-        int max_iter = 2 * n2 + 50;
-        int it;
-        for (it = 0; it < max_iter; it++) {
-            jac_apply(p, -c * c, -c, 1, dir, adir);
-            double pap = dot(n2, dir, adir);
-            if (!(pap > 0))
-                break;
-            double alpha = rz / pap;
-            for (int i = 0; i < n2; i++) {
-                zv[i] += alpha * dir[i];
-                res[i] -= alpha * adir[i];
-            }
-            double rn = sqrt(dot(n2, res, res));
-            if (rn <= 1e-14 * bnorm) {
-                it++;
-                break;
-            }
-            for (int i = 0; i < n2; i++)
-                pz[i] = pre[i] * res[i];
-            double rz_new = dot(n2, res, pz);
-            double beta = rz_new / rz;
-            rz = rz_new;
-            for (int i = 0; i < n2; i++)
-                dir[i] = pz[i] + beta * dir[i];
-        }
-        p->solver->cg_iters_last = it;
-        p->ode.solver_iters += it;
-        /* Accept what rounding allows; refuse a solve that did not converge. */
-        jac_apply(p, -c * c, -c, 1, zv, adir);
-        double rn = 0;
-        for (int i = 0; i < n2; i++)
-            rn += (b[i] - adir[i]) * (b[i] - adir[i]);
-        if (!(sqrt(rn) <= 1e-8 * bnorm))
-            return SW_EDIVERGED;
-    }
+    scatter(p, -c * c, -c, band_sink, &band);
+    if (sw_band_factor(&band) != 0)
+        return SW_EDIVERGED;
+    sw_band_solve(&band, s->rhs);
     for (int i = 0; i < n2; i++) {
-        zv[i] *= bscale; /* z_v is the velocity half of z */
-        z[i] = r[i] + c * zv[i];
+        z[n2 + i] = s->rhs[i];
+        z[i] = r[i] + c * s->rhs[i];
     }
+    p->ode.solver_iters++;
     return SW_OK;
 }
 
+typedef struct dense_ctx { double *m; int n2; } dense_ctx;
+
+static void dense_sink(void *ctx, int pi, int pj, double s, const double *blk)
+{
+    dense_ctx *dc = ctx;
+    if (s == 0)
+        return;
+    for (int r = 0; r < 2; r++)
+        for (int c = 0; c < 2; c++)
+            dc->m[(size_t)(2 * pi + r) * dc->n2 + 2 * pj + c] += s * blk[2 * r + c];
+}
+
+void sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double *fv)
+{
+    int n2 = 2 * p->n;
+    assemble(p, y);
+    memset(fx, 0, (size_t)n2 * n2 * sizeof *fx);
+    memset(fv, 0, (size_t)n2 * n2 * sizeof *fv);
+    dense_ctx cx = { fx, n2 }, cv = { fv, n2 };
+    scatter(p, 1.0, 0.0, dense_sink, &cx);
+    scatter(p, 0.0, 1.0, dense_sink, &cv);
+}
+
+void sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,
+                                 double *out, int assemble_first)
+{
+    if (assemble_first)
+        assemble(p, y);
+    memset(out, 0, (size_t)2 * p->n * sizeof *out);
+    apply_ctx ac = { w, out };
+    scatter(p, a, b, apply_sink, &ac);
+}

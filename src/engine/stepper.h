@@ -28,6 +28,7 @@ struct sw_stepper {
     unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
     int checked;          /* the last step tested the whole state against limit_exp */
     int beyond;           /* ... and found a component beyond it */
+    const char *why;      /* why the last failed step failed (static text), or NULL */
 };
 
 /* Prepare a stepper for ode; 0, SW_EINVAL (wrong system kind) or SW_ENOMEM. */
@@ -63,7 +64,8 @@ static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limi
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,
     sw_step_rk4, sw_step_verlet;                       /* explicit.c */
-sw_step_fn sw_step_implicit_euler, sw_step_implicit_midpoint; /* implicit.c */
+sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
+    sw_step_implicit_midpoint;                        /* implicit.c */
 sw_step_fn sw_step_rk45;                               /* rk45.c */
 
 /* Largest |v_i| over n components; NaN when any is NaN (so a failed

@@ -6,6 +6,8 @@
  * it; this file measures and renders, it never prints. */
 #include "lab/bench.h"
 
+#include "sim/truth.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,11 +86,11 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
     return ok;
 }
 
-/* One rk45 run to the report time at the given tolerances, state into out. */
-static int rk45_run(sw_bench_report *r, double rtol, double atol, double *out, double *deriv,
-                    char *err, size_t errlen)
+/* One reference run to the report time at the given tolerances, state into out. */
+static int reference_run(sw_bench_report *r, double rtol, double atol, double *out, double *deriv,
+                         char *err, size_t errlen)
 {
-    const sw_integrator *m = sw_integrator_find("rk45");
+    const sw_integrator *m = sw_truth_reference_method();
     double dt = fmax(SW_DT_MIN, fmin(fmin(r->t_report, 8.0 * r->scene->dt), SW_DT_MAX));
     sw_sim s;
     int rc = sw_sim_init(&s, r->scene, r->p, m, dt, err, errlen);
@@ -96,8 +98,8 @@ static int rk45_run(sw_bench_report *r, double rtol, double atol, double *out, d
         return rc;
     sw_sim_set_tolerances(&s, rtol, atol);
     if (sw_sim_run_until(&s, r->t_report)) {
-        snprintf(err, errlen, "%s: the rk45 reference run (rtol %g) failed at t = %g: %s",
-                 r->scene->name, rtol, s.blow_time, s.blow_reason);
+        snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
+                 r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
         rc = SW_EDIVERGED;
     } else {
         r->ref_evals += sw_sim_evals(&s);
@@ -119,8 +121,10 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
     if (rc != SW_OK)
         return rc;
     r->dim = sys.ode->dim;
-    if (sc->omega_max)
-        r->omega = sc->omega_max(&sys);
+    if (sw_truth_spectrum(&sys, 0.0, sys.y, &r->spectrum) == 0 && r->spectrum.largest > 0)
+        r->omega = r->spectrum.largest;
+    else
+        r->spectrum.n = 0;
     r->truth = malloc((size_t)r->dim * sizeof *r->truth);
     double *work = malloc((size_t)2 * r->dim * sizeof *work);
     if (!r->truth || !work) {
@@ -137,9 +141,9 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
          * the reference's own error from above (DP5's global error scales
          * roughly linearly with the tolerance). */
         r->source = SW_BENCH_REFERENCE;
-        rc = rk45_run(r, 1e-12, 1e-14, r->truth, work, err, errlen);
+        rc = reference_run(r, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->truth, work, err, errlen);
         if (rc == SW_OK)
-            rc = rk45_run(r, 1e-11, 1e-13, work + r->dim, work, err, errlen);
+            rc = reference_run(r, 10 * SW_TRUTH_RTOL, 10 * SW_TRUTH_ATOL, work + r->dim, work, err, errlen);
         if (rc == SW_OK)
             r->ref_error = max_abs_diff(r->dim, r->truth, work + r->dim);
     } else {
@@ -225,13 +229,15 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
 }
 
 /* The first step of the sweep: eight default steps, or twice the method's
- * theoretical limit when the scene knows ω, so the sweep shows the method
- * failing as well as converging; at most half the report time. */
+ * limit in theory on the scene's spectrum at the start, so the sweep shows
+ * the method failing as well as converging; at most half the report time. */
 static double sweep_top(const sw_bench_report *r, const sw_integrator *m)
 {
     double top = 8.0 * r->scene->dt;
-    if (r->omega > 0 && isfinite(r->omega) && m->stability > 0 && isfinite(m->stability))
-        top = fmax(top, 2.0 * m->stability / r->omega);
+    int unbounded;
+    double limit = r->spectrum.n > 0 ? sw_truth_limit(m, &r->spectrum, SW_DT_MAX, &unbounded) : NAN;
+    if (limit > 0 && isfinite(limit) && !unbounded)
+        top = fmax(top, 2.0 * limit);
     top = fmin(top, 0.5 * r->t_report);
     return fmax(SW_DT_MIN, fmin(top, SW_DT_MAX));
 }

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "sim/truth.h"
 #include "stepwise/sim.h"
 
 #define SW_BENCH_MAX_POINTS 16
@@ -73,7 +74,8 @@ typedef struct sw_bench_report {
     double ref_error;  /* reference: |rtol 1e-12 run - rtol 1e-11 run|, an upper estimate of its error */
     long ref_evals;    /* evaluations the reference runs took */
     double scale;      /* max(1, max |truth|): errors are judged against this */
-    double omega;      /* the scene's stiffest frequency, NaN when unknown */
+    double omega;      /* largest |λ| of the linearisation at the start, NaN when unknown */
+    sw_spectrum spectrum; /* the linearisation's modes at the start (n = 0: none) */
     int nseries;
     sw_bench_series series[SW_BENCH_MAX_METHODS];
 } sw_bench_report;

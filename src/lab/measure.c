@@ -102,7 +102,11 @@ int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, ch
         snprintf(err, errlen, "the plugin %s", why);
         return SW_EINVAL;
     }
+    if (!res.measured) {
+        snprintf(err, errlen, "%s", res.why[0] ? res.why : "growth cannot be measured here");
+        return SW_EINVAL;
+    }
     *kind = (int)res.kind;
-    *omega_dt = res.dt * res.omega;
+    *omega_dt = res.dt * res.stiff; /* the undamped spring's only mode: |λ| = ω = √(k/m) */
     return SW_OK;
 }

@@ -1,16 +1,10 @@
-/* Stability limits by bisection. A probe runs the sim and a twin started 1e-7
- * ahead along its path for a fixed simulated time (so slow growth at small
- * steps has as long to show as fast growth at large ones), with the run cut
- * into 20 windows and M's peak taken in each. It is unstable when either sim
- * blows up, when M leaves a bound, when the twins drift apart (a growing mode
- * whose growth a nonlinear scene has capped still shows there), when the
- * window peaks climb steadily (16 rises in 19), or when the last tenth's peak
- * stands above the first tenth's by more than the first tenth varied. A
- * bounded oscillation (symplectic methods, energy errors modulated by slow
- * motion) has peaks that rise and fall at random; decay lowers them; growth,
- * however slow, raises them one window after another. M is used for the
- * trend rather than D because D also grows polynomially in stable nonlinear
- * scenes (nearby orbits drift in phase). */
+/* Stability limits by bisection beside the theory. A probe runs the sim for
+ * a fixed simulated time (so slow growth at small steps has as long to show
+ * as fast growth at large ones) and feeds the energy of the motion to a
+ * growth watch (sim/watch.c); unstable when the run blows up or the watch
+ * sees growth. No twin runs: numerical runs part by chaos as exact ones do,
+ * and at large steps faster, without the method being unstable (a plucked
+ * chain under symplectic Euler). The theory comes from the truth module. */
 #include "lab/stability.h"
 
 #include <math.h>
@@ -18,174 +12,172 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sim/truth.h"
 #include "stepwise/stepwise.h"
 
 #define TWO_PI 6.283185307179586
 
 void sw_stability_config_default(sw_stability_config *c)
 {
-    *c = (sw_stability_config){ .periods = 100, .reports = 10, .min_steps = 400, .max_steps = 4000000,
-                                .bound = 1e4, .twin_bound = 1e8, .rises = 16, .jump = 1.0, .low = 0.01,
-                                .high = 1000, .rel_tol = 1e-4 };
+    *c = (sw_stability_config){ .periods = 100, .reports = 20, .min_steps = 400, .max_steps = 4000000,
+                                .low = 0.01, .high = 1000, .rel_tol = 1e-4, .samples = 16 };
 }
 
-int sw_stability_applicable(const sw_scene *sc, char *why, size_t whylen)
+int sw_stability_measurable(const sw_scene *sc, const double *p, char *why, size_t whylen)
 {
     if (sc->post_step) {
         snprintf(why, whylen, "%s changes its state at step boundaries (contact, births), so "
-                 "nearby runs split at every step size and no limit can be measured; try spring, "
-                 "stiff-spring, chain, orbit, vortex or projectile", sc->name);
+                 "nearby runs split at every step size and no limit can be measured", sc->name);
         return 0;
     }
-    if (sc->energy || sc->omega_max)
-        return 1;
-    snprintf(why, whylen, "%s defines no energy and no stiffest frequency, so growth cannot be "
-             "told from the flow itself; try spring, stiff-spring, chain, orbit, vortex or "
-             "projectile", sc->name);
-    return 0;
+    if (sc->kind == SW_SYS_FLOW && !sc->energy) {
+        if (sc->exact)
+            return 1;
+        snprintf(why, whylen, "%s defines no energy and no closed form, so growth cannot be told "
+                 "from the flow itself", sc->name);
+        return 0;
+    }
+    sw_sim s;
+    char err[SW_ERRLEN];
+    if (sw_sim_init(&s, sc, p, sw_integrator_at(0), sc->dt, err, sizeof err) != SW_OK) {
+        snprintf(why, whylen, "%s", err);
+        return 0;
+    }
+    int ok = sw_sim_energy_scale_is_motion(&s) || s.energy0 < 0;
+    sw_sim_free(&s);
+    if (!ok)
+        snprintf(why, whylen, "%s's energy has no floor and no well to be bound in (it falls forever), "
+                 "so growth cannot be told from the energy", sc->name);
+    return ok;
 }
 
-/* M: the energy when the scene has one, else ½|y|² (for a flow: points
- * circling keep it constant, points spiralling out raise it). */
-static double measure(const sw_sim *s)
-{
-    if (s->sys.scene->energy)
-        return sw_sim_energy(s);
-    double m = 0;
-    for (int i = 0; i < s->sys.ode->dim; i++)
-        m += s->sys.y[i] * s->sys.y[i];
-    return 0.5 * m;
-}
-
-/* Simulated time per probe: `periods` periods of the stiffest motion (report
- * times when ω is unknown), and at least `reports` report times, so that each
- * tenth of the run also spans the scene's slow motion and sees the same
- * peaks of a bounded energy oscillation. */
-static double probe_time(const sw_scene *sc, double omega, const sw_stability_config *c)
-{
-    double unit = omega > 0 && isfinite(omega) ? TWO_PI / omega : sc->duration;
-    return fmax(c->periods * unit, c->reports * sc->duration);
-}
-
-static double scene_omega(const sw_scene *sc, const double *p, char *err, size_t errlen, int *rc)
+/* Largest |λ| at the start (0 when nothing oscillates or decays). */
+static double start_stiffness(const sw_scene *sc, const double *p, char *err, size_t errlen, int *rc)
 {
     sw_system sys;
     *rc = sw_system_build(&sys, sc, p, err, errlen);
     if (*rc != SW_OK)
         return NAN;
-    double w = sc->omega_max ? sc->omega_max(&sys) : NAN;
+    sw_spectrum sp;
+    double w = sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0 ? sp.largest : 0.0;
     sw_system_free(&sys);
     return w;
 }
 
-/* Squared distance between the twins' states. */
-static double twin_distance(const sw_sim *a, const sw_sim *b)
+/* Simulated time per probe: `periods` periods of the stiffest motion (report
+ * times when there is none), and at least `reports` report times; with the
+ * defaults, the truth module's horizon. */
+static double probe_time(const sw_scene *sc, double stiff, const sw_stability_config *c)
 {
-    double d = 0;
-    for (int i = 0; i < a->sys.ode->dim; i++) {
-        double e = a->sys.y[i] - b->sys.y[i];
-        d += e * e;
-    }
-    return d;
+    double unit = stiff > 0 && isfinite(stiff) ? TWO_PI / stiff : sc->duration;
+    return fmax(c->periods * unit, c->reports * sc->duration);
 }
 
-static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
-                 double duration, const sw_stability_config *c, sw_stability_probe *out, char *err,
-                 size_t errlen)
+/* One run from the scene's start, or from `start` (NULL: the scene's). */
+static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *m, double dt, double duration,
+                      const double *start, const sw_stability_config *c, sw_stability_probe *out, char *err,
+                      size_t errlen)
 {
     memset(out, 0, sizeof *out);
     out->dt = dt;
-    sw_sim s, twin;
+    sw_sim s;
     int rc = sw_sim_init(&s, sc, p, m, dt, err, errlen);
     if (rc != SW_OK)
         return rc;
-    rc = sw_sim_init(&twin, sc, p, m, dt, err, errlen);
-    if (rc != SW_OK) {
-        sw_sim_free(&s);
-        return rc;
-    }
-    /* The twin starts 1e-7 (relative) ahead along the motion, y0 + ε·f(y0):
-     * the same path a moment later. The exact flow keeps such a shift
-     * bounded (no shear, no transverse physics); a growing numerical mode
-     * pulls the twins apart. At an equilibrium, a fixed pattern instead. */
+    if (start)
+        sw_sim_set_state(&s, start);
     int dim = s.sys.ode->dim;
-    double size = 1.0, fnorm = 0;
-    double *f = malloc((size_t)dim * sizeof *f);
-    if (!f) {
-        sw_sim_free(&twin);
+    double *y0 = malloc((size_t)dim * sizeof *y0);
+    if (!y0) {
         sw_sim_free(&s);
         snprintf(err, errlen, "out of memory for a %d-long state", dim);
         return SW_ENOMEM;
     }
-    sw_ode_eval(twin.sys.ode, 0.0, twin.sys.y, f);
-    for (int i = 0; i < dim; i++) {
-        size = fmax(size, fabs(s.sys.y[i]));
-        fnorm = fmax(fnorm, fabs(f[i]));
-    }
-    for (int i = 0; i < dim; i++)
-        twin.sys.y[i] += 1e-7 * size * (fnorm > 0 && isfinite(fnorm) ? f[i] / fnorm
-                                        : (i % 2 ? -1.0 : 1.0) * (1.0 + 0.5 * (i % 3)));
-    free(f);
-    double d0 = twin_distance(&s, &twin);
-    /* Steps for the fixed simulated time, clipped before converting. */
+    memcpy(y0, s.sys.y, (size_t)dim * sizeof *y0);
     double want = ceil(duration / dt);
     long steps = !(want >= (double)c->min_steps) ? c->min_steps
                  : want > (double)c->max_steps ? c->max_steps : (long)want;
-    /* The run in SW_STAB_WINDOWS equal windows; the peak of M in each. */
-    double peak[SW_STAB_WINDOWS], first_min = INFINITY;
-    double m0 = measure(&s), scale = fabs(m0) > 0 ? fabs(m0) : 1.0;
-    for (int w = 0; w < SW_STAB_WINDOWS; w++)
-        peak[w] = -INFINITY;
-    peak[0] = first_min = m0;
-    out->m0 = m0;
+    sw_watch w;
+    sw_watch_init(&w, (double)steps * dt / SW_WATCH_WINDOWS, sw_watch_raised_level(&s));
     out->verdict = SW_PROBE_STABLE;
     long k;
     for (k = 1; k <= steps; k++) {
-        if (sw_sim_step(&s) | sw_sim_step(&twin)) {
+        if (sw_sim_step(&s)) {
             out->verdict = SW_PROBE_BLOWN;
-            snprintf(out->reason, sizeof out->reason, "%s", s.blown ? s.blow_reason : twin.blow_reason);
+            snprintf(out->reason, sizeof out->reason, "%s", s.blow_reason);
             break;
         }
-        double v = measure(&s), d = twin_distance(&s, &twin);
-        if (!(v - m0 <= (c->bound - 1.0) * scale)) { /* NaN fails too */
-            out->verdict = SW_PROBE_BOUND;
+        double v = sw_watch_measure(&s, y0);
+        out->m_max = fmax(out->m_max, v);
+        sw_watch_verdict wv = sw_watch_add(&w, s.t, v);
+        if (wv != SW_WATCH_STEADY) {
+            out->verdict = wv == SW_WATCH_BOUND ? SW_PROBE_BOUND : wv == SW_WATCH_RAISED ? SW_PROBE_RAISED
+                                                                                         : SW_PROBE_TREND;
             break;
         }
-        if (!(d <= c->twin_bound * d0)) {
-            out->verdict = SW_PROBE_TWIN;
-            break;
-        }
-        /* Damped a millionfold and more in amplitude: nothing is left to
-         * grow, and running on would only feed the solvers numbers near
-         * underflow. */
-        if (d < 1e-24 * d0) {
+        if (v < 1e-20) { /* damped away: nothing is left to grow */
             out->verdict = SW_PROBE_DECAYED;
             break;
         }
-        int w = (int)((k - 1) * SW_STAB_WINDOWS / steps);
-        peak[w] = fmax(peak[w], v);
-        if (w < 2)
-            first_min = fmin(first_min, v);
     }
     out->steps = k > steps ? steps : k;
-    const int last = SW_STAB_WINDOWS - 1;
-    out->first_max = fmax(peak[0], peak[1]);
-    out->first_range = out->first_max - first_min;
-    out->last_max = fmax(peak[last - 1], peak[last]);
-    for (int w = 1; w < SW_STAB_WINDOWS; w++)
-        out->rises += peak[w] > peak[w - 1];
     if (out->verdict == SW_PROBE_STABLE) {
-        /* Steady growth: the window peaks climb nearly every time. */
-        if (out->rises >= c->rises && peak[last] - peak[0] > 1e-12 * scale)
-            out->verdict = SW_PROBE_TREND;
-        /* Growth a nonlinearity capped early: the last tenth's peak stands
-         * above the first tenth's by more than the first tenth varied. */
-        if (out->last_max - out->first_max > c->jump * out->first_range + 1e-9 * scale)
-            out->verdict = SW_PROBE_TREND;
+        sw_watch_verdict wv = sw_watch_finish(&w);
+        if (wv != SW_WATCH_STEADY)
+            out->verdict = wv == SW_WATCH_BOUND ? SW_PROBE_BOUND : wv == SW_WATCH_RAISED ? SW_PROBE_RAISED
+                                                                                         : SW_PROBE_TREND;
     }
-    sw_sim_free(&twin);
+    free(y0);
     sw_sim_free(&s);
     return SW_OK;
+}
+
+/* The scene's start, and where it has a resting state the same motion shrunk
+ * ten-thousandfold towards it (y_rest + 1e-4·(y0 - y_rest)): in that copy
+ * nothing nonlinear (a spring swinging through its anchor) can cap a growing
+ * mode before it shows. Unstable when either run is. */
+typedef struct starts {
+    double *small;      /* NULL: no resting state */
+} starts;
+
+static void starts_init(starts *st, const sw_scene *sc, const double *p)
+{
+    st->small = NULL;
+    sw_system sys;
+    char err[SW_ERRLEN];
+    if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
+        return;
+    int dim = sys.ode->dim;
+    double *rest = malloc((size_t)2 * dim * sizeof *rest);
+    if (rest && sw_truth_resting_state(&sys, rest, NULL) == 0) {
+        st->small = rest + dim;
+        for (int i = 0; i < dim; i++)
+            st->small[i] = rest[i] + 1e-4 * (sys.y[i] - rest[i]);
+        memmove(rest, st->small, (size_t)dim * sizeof *rest);
+        st->small = rest;
+    } else {
+        free(rest);
+    }
+    sw_system_free(&sys);
+}
+
+static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, double dt, double duration,
+                 const starts *st, const sw_stability_config *c, sw_stability_probe *out, char *err,
+                 size_t errlen)
+{
+    int rc = probe_from(sc, p, m, dt, duration, NULL, c, out, err, errlen);
+    if (rc != SW_OK || !st || !st->small || (out->verdict != SW_PROBE_STABLE && out->verdict != SW_PROBE_DECAYED))
+        return rc;
+    sw_stability_probe small;
+    rc = probe_from(sc, p, m, dt, duration, st->small, c, &small, err, errlen);
+    if (rc == SW_OK && small.verdict != SW_PROBE_STABLE && small.verdict != SW_PROBE_DECAYED) {
+        small.steps += out->steps;
+        *out = small;
+        out->small = 1;
+    } else {
+        out->steps += small.steps;
+    }
+    return rc;
 }
 
 int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
@@ -193,10 +185,63 @@ int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integra
                            size_t errlen)
 {
     int rc;
-    double w = scene_omega(sc, p, err, errlen, &rc);
+    double w = start_stiffness(sc, p, err, errlen, &rc);
     if (rc != SW_OK)
         return rc;
-    return probe(sc, p, m, dt, probe_time(sc, w, c), c, out, err, errlen);
+    starts st;
+    starts_init(&st, sc, p);
+    rc = probe(sc, p, m, dt, probe_time(sc, w, c), &st, c, out, err, errlen);
+    free(st.small);
+    return rc;
+}
+
+const char *sw_stability_verdict_text(int verdict)
+{
+    switch (verdict) {
+    case SW_PROBE_BLOWN: return "blew up";
+    case SW_PROBE_BOUND: return "energy x1000";
+    case SW_PROBE_RAISED: return "energy raised";
+    case SW_PROBE_TREND: return "energy grew";
+    case SW_PROBE_DECAYED: return "decayed";
+    default: return "stable";
+    }
+}
+
+static int stable(int verdict) { return verdict == SW_PROBE_STABLE || verdict == SW_PROBE_DECAYED; }
+
+/* Theory against measurement, and why they differ where they do. */
+static void compare(const sw_scene *sc, const double *p, const sw_integrator *m, double duration,
+                    sw_stability_result *r)
+{
+    double measured = r->kind == SW_STAB_NONE ? 0 : r->dt, theory = r->theory_unbounded ? INFINITY : r->theory;
+    int meas_unb = r->kind == SW_STAB_UNBOUNDED;
+    if ((meas_unb && r->theory_unbounded) || (theory == 0 && measured == 0) ||
+        (theory > 0 && isfinite(theory) && fabs(measured / theory - 1) <= 0.02)) {
+        r->agree = 1;
+        return;
+    }
+    if (measured < theory) {
+        snprintf(r->why, sizeof r->why, "%s fails below the linear limit: the step is too coarse for the "
+                 "nonlinear motion (%s at dt = %.4g)%s", m->name, sw_stability_verdict_text(r->fail.verdict),
+                 r->fail.dt, r->theory_unbounded ? "; every linearisation is stable, the nonlinear "
+                 "energy is not" : "");
+        return;
+    }
+    /* measured above theory: the growth the theory predicts is too slow to
+     * show over a probe, or the mode that grows is never excited */
+    sw_system sys;
+    char err[SW_ERRLEN];
+    double rho = NAN;
+    if (sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK) {
+        sw_spectrum sp;
+        if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0)
+            rho = sw_truth_growth_all(m, &sp, measured, NULL);
+        sw_system_free(&sys);
+    }
+    double total = pow(rho, duration / measured);
+    snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
+             "probe's %.3g s: %s", measured, m->name, rho, total, duration,
+             total < 2 ? "too slow to tell from the motion" : "the growing mode is not excited");
 }
 
 int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,
@@ -205,29 +250,29 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
 {
     memset(out, 0, sizeof *out);
     out->method = m;
-    out->theory = m->stability;
     out->dt_unstable = NAN;
     if (m->flags & SW_ADAPTIVE) {
         snprintf(err, errlen, "%s chooses its own steps (dt is only its largest step), so it has "
                  "no step-size limit to find", m->name);
         return SW_EINVAL;
     }
-    if (!sw_stability_applicable(sc, err, errlen))
+    if (!sw_truth_method_applies(sc, m, err, errlen))
         return SW_EINVAL;
     int rc;
-    double w = scene_omega(sc, p, err, errlen, &rc);
+    double w = start_stiffness(sc, p, err, errlen, &rc);
     if (rc != SW_OK)
         return rc;
-    sw_system sys;
-    rc = sw_system_build(&sys, sc, p, err, errlen);
-    if (rc != SW_OK)
-        return rc;
-    rc = sw_integrator_accepts(m, sys.ode, err, errlen);
-    sw_system_free(&sys);
-    if (rc != SW_OK)
-        return rc;
-    out->omega = w;
-    double duration = probe_time(sc, w, c), lo_bound, hi_bound;
+    double duration = probe_time(sc, w, c), stiff;
+    if (sw_truth_limit_along(sc, p, m, duration, c->samples, SW_DT_MAX, &out->theory, &out->theory_unbounded,
+                             &stiff, err, errlen) != 0)
+        return SW_EINVAL;
+    out->stiff = stiff;
+    if (!sw_stability_measurable(sc, p, out->why, sizeof out->why))
+        return SW_OK; /* theory only */
+    out->measured = 1;
+    starts st;
+    starts_init(&st, sc, p);
+    double lo_bound, hi_bound;
     if (w > 0 && isfinite(w)) {
         lo_bound = c->low / w;
         hi_bound = c->high / w;
@@ -241,55 +286,63 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     sw_stability_probe pr;
 #define PROBE(dt_)                                                              \
     do {                                                                        \
-        rc = probe(sc, p, m, (dt_), duration, c, &pr, err, errlen);             \
-        if (rc != SW_OK)                                                        \
+        rc = probe(sc, p, m, (dt_), duration, &st, c, &pr, err, errlen);        \
+        if (rc != SW_OK) {                                                      \
+            free(st.small);                                                     \
             return rc;                                                          \
+        }                                                                       \
         out->probes++;                                                          \
         out->steps += pr.steps;                                                 \
     } while (0)
 
     PROBE(lo_bound);
-    if (pr.verdict != SW_PROBE_STABLE && pr.verdict != SW_PROBE_DECAYED) {
+    if (!stable(pr.verdict)) {
         out->kind = SW_STAB_NONE;
         out->dt = lo_bound;
         out->fail = pr;
+        free(st.small);
+        compare(sc, p, m, duration, out);
         return SW_OK;
     }
     /* Bracket: from the scene's own step, doubling until a probe fails. */
-    double stable = lo_bound, unstable = NAN;
+    double ok = lo_bound, bad = NAN;
     double dt = fmin(fmax(sc->dt, lo_bound), hi_bound);
-    while (!(unstable > 0)) {
-        if (dt > stable) {
+    for (;;) {
+        if (dt > ok) {
             PROBE(dt);
-            if (pr.verdict == SW_PROBE_STABLE || pr.verdict == SW_PROBE_DECAYED)
-                stable = dt;
-            else {
-                unstable = dt;
+            if (stable(pr.verdict)) {
+                ok = dt;
+            } else {
+                bad = dt;
                 out->fail = pr;
                 break;
             }
         }
-        if (stable >= hi_bound) {
+        if (ok >= hi_bound) {
             out->kind = SW_STAB_UNBOUNDED;
-            out->dt = stable;
+            out->dt = ok;
+            free(st.small);
+            compare(sc, p, m, duration, out);
             return SW_OK;
         }
-        dt = fmin(2.0 * stable, hi_bound);
+        dt = fmin(2.0 * ok, hi_bound);
     }
     /* Bisect geometrically: the limit is a ratio, so halve its logarithm. */
-    while (unstable / stable - 1.0 > c->rel_tol) {
-        double mid = sqrt(stable * unstable);
+    while (bad / ok - 1.0 > c->rel_tol) {
+        double mid = sqrt(ok * bad);
         PROBE(mid);
-        if (pr.verdict == SW_PROBE_STABLE || pr.verdict == SW_PROBE_DECAYED)
-            stable = mid;
-        else {
-            unstable = mid;
+        if (stable(pr.verdict)) {
+            ok = mid;
+        } else {
+            bad = mid;
             out->fail = pr;
         }
     }
 #undef PROBE
+    free(st.small);
     out->kind = SW_STAB_LIMIT;
-    out->dt = stable;
-    out->dt_unstable = unstable;
+    out->dt = ok;
+    out->dt_unstable = bad;
+    compare(sc, p, m, duration, out);
     return SW_OK;
 }

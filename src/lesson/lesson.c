@@ -531,7 +531,7 @@ unsigned sw_lesson_key_lock(int key)
 {
     switch (key) {
     case 'i': case 'I': case '\t': case '1': case '2': case '3': case '4': case '5': case '6':
-    case '7': case '8': case '9':
+    case '7': case '8': case '9': case '0':
         return SW_LOCK_INTEGRATOR;
     case '+': case '=': case '-': return SW_LOCK_DT;
     case ' ': case '.': return SW_LOCK_RUN;

@@ -228,43 +228,43 @@ static void draw_scene(sw_frame *f, sw_app *a, int rows, int cols)
         sw_canvas_draw_system(c, &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t, sim_glyph[i], sim_style[i]);
 }
 
-/* The stability meter: the stiffest mode's ω·Δt against the method's limit,
- * and how much that mode grows per step under this method at this Δt. */
+/* The stability meter: the stiffest mode's |λ|·Δt against the method's
+ * limit on the current linearisation (a bar), and the growth per step ρ of
+ * the worst mode under this method at this Δt, with enough digits that a
+ * neutral ρ = 1 reads as one. When the run's energy grows although every
+ * mode is stable, the line says so: that growth is nonlinear. */
 static void meter(sw_app *a, char *buf, size_t len, int *style)
 {
-    double wdt, limit, growth;
+    sw_app_meter m;
     *style = SW_STYLE_STATUS;
-    if (!sw_app_stability(a, &wdt, &limit, &growth)) {
-        buf[0] = '\0';
+    if (!sw_app_stability(a, &m)) {
+        if (a->sims[0].method->flags & SW_ADAPTIVE)
+            snprintf(buf, len, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
+        else
+            buf[0] = '\0';
         return;
     }
-    char lim[48], grow[64];
-    if (isinf(limit))
-        snprintf(lim, sizeof lim, "any step is stable");
-    else if (limit > 0)
-        snprintf(lim, sizeof lim, "limit %.3g", limit);
-    else
-        snprintf(lim, sizeof lim, "no step stable undamped");
-    if (isfinite(growth))
-        snprintf(grow, sizeof grow, " growth/step %.5f%s", growth, growth > 1 + 1e-12 ? " GROWS" : "");
-    else
-        grow[0] = '\0';
-    char bar[24] = "";
-    if (limit > 0 && isfinite(limit)) {
-        int fill = (int)fmin(10.0, fmax(0.0, 10.0 * wdt / limit));
+    char lim[48], bar[16] = "";
+    double ldt = m.stiff * a->dt;
+    if (m.unbounded)
+        snprintf(lim, sizeof lim, "stable at any dt");
+    else if (m.limit > 0) {
+        snprintf(lim, sizeof lim, "limit %.3g", m.stiff * m.limit);
+        int fill = (int)fmin(10.0, fmax(0.0, 10.0 * a->dt / m.limit));
         bar[0] = '[';
         for (int i = 0; i < 10; i++)
             bar[i + 1] = i < fill ? '#' : '.';
         bar[11] = ']';
         bar[12] = '\0';
-    }
-    const char *warn = "";
-    if (isfinite(growth) && growth > 1 + 1e-12)
-        warn = wdt > limit && limit > 0 ? ": beyond the limit" : "";
-    else if (limit > 0 && isfinite(limit) && wdt > 0.9 * limit)
-        warn = " near the limit!";
-    snprintf(buf, len, "w*dt=%.3g %s (%s)%s%s", wdt, bar, lim, grow, warn);
-    if ((isfinite(growth) && growth > 1 + 1e-12) || *warn)
+    } else
+        snprintf(lim, sizeof lim, "no stable dt");
+    const char *verdict = m.grows ? "GROWS"
+                          : m.slow ? "grows, too slowly to see"
+                          : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
+    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
+    snprintf(buf, len, "|L|dt=%.3g %s%s%s  x%.6f/step %s%s", ldt, bar, *bar ? " " : "", lim, m.growth, verdict,
+             run_grows && !m.grows ? "; run's energy grows: nonlinear" : "");
+    if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
         *style = SW_STYLE_WARN;
 }
 

@@ -102,6 +102,7 @@ static sw_view projectile_view(const sw_system *sys)
 
 const sw_scene sw_scene_projectile = {
     .name = "projectile",
+    .kind = SW_SYS_PARTICLES,
     .summary = "one ball launched under gravity and linear drag; closed-form exact solution",
     .teaches = "Euler's global error is O(dt): halve the step and the miss distance halves.",
     .params = projectile_params,
@@ -222,12 +223,24 @@ static void exact_floor(double y, double v, double g, double e, double t, double
     *vo = 0;
 }
 
+static const char *bounce_exact_fails(const sw_system *sys)
+{
+    return sys->p[BO_DRAG] != 0 ? "with drag the flight between bounces has no closed form here" : NULL;
+}
+
+/* Resting on the floor (y = 0) is the least energy the balls can have. */
+static double bounce_floor(const sw_system *sys)
+{
+    (void)sys;
+    return 0.0;
+}
+
 /* Exact when there is no drag: the axes decouple, each a chain of events. */
 static int bounce_exact(const sw_system *sys, double t, double *y)
 {
     const double *p = sys->p;
     int n = sys->n;
-    if (p[BO_DRAG] != 0)
+    if (bounce_exact_fails(sys))
         return -1;
     for (int i = 0; i < n; i++) {
         double s[4];
@@ -246,6 +259,7 @@ static sw_view bounce_view(const sw_system *sys)
 
 const sw_scene sw_scene_bounce = {
     .name = "bounce",
+    .kind = SW_SYS_PARTICLES,
     .summary = "balls in a box bouncing off the walls and floor with restitution e",
     .teaches = "A collision inside a step breaks every method's order: error becomes O(dt).",
     .params = bounce_params,
@@ -255,7 +269,9 @@ const sw_scene sw_scene_bounce = {
     .duration = 3.0,
     .build = bounce_build,
     .exact = bounce_exact,
+    .exact_fails = bounce_exact_fails,
     .energy = sw_scene_particle_energy,
+    .energy_floor = bounce_floor,
     .view = bounce_view,
     .post_step = bounce_post,
 };
@@ -369,6 +385,7 @@ static sw_view fireworks_view(const sw_system *sys)
 
 const sw_scene sw_scene_fireworks = {
     .name = "fireworks",
+    .kind = SW_SYS_PARTICLES,
     .summary = "bursts of sparks under gravity and drag, each living a few seconds",
     .teaches = "A particle system: many independent particles, born and dying, one seeded show.",
     .params = fireworks_params,

@@ -103,8 +103,6 @@ static double vortex_drift(const sw_system *sys, const double *y)
     return m;
 }
 
-static double vortex_omega(const sw_system *sys) { return fabs(sys->p[VX_OMEGA]); }
-
 static sw_view vortex_view(const sw_system *sys)
 {
     (void)sys;
@@ -113,6 +111,7 @@ static sw_view vortex_view(const sw_system *sys)
 
 const sw_scene sw_scene_vortex = {
     .name = "vortex",
+    .kind = SW_SYS_FLOW,
     .summary = "points circling in a rotating flow x' = w(-y, x); exact paths are circles",
     .teaches = "Euler spirals outward: every step multiplies the radius by sqrt(1 + (w dt)^2).",
     .params = vortex_params,
@@ -125,7 +124,6 @@ const sw_scene sw_scene_vortex = {
     .drift = vortex_drift,
     .drift_name = "radius drift",
     .reference = 1,
-    .omega_max = vortex_omega,
     .view = vortex_view,
 };
 
@@ -199,6 +197,7 @@ static sw_view river_view(const sw_system *sys)
 
 const sw_scene sw_scene_river = {
     .name = "river",
+    .kind = SW_SYS_FLOW,
     .summary = "a river flowing past a round rock; exact paths keep the stream function constant",
     .teaches = "Error shows up as particles leaving their streamline, even cutting into the rock.",
     .params = river_params,
@@ -263,6 +262,7 @@ static sw_view gyre_view(const sw_system *sys)
 
 const sw_scene sw_scene_gyre = {
     .name = "gyre",
+    .kind = SW_SYS_FLOW,
     .summary = "the time-dependent double gyre: chaotic mixing with no closed form",
     .teaches = "Without an exact solution, error is measured against a tight-tolerance rk45 run.",
     .params = gyre_params,

@@ -56,13 +56,6 @@ static double orbit_drift(const sw_system *sys, const double *y)
     return fabs(y[0] * y[3] - y[1] * y[2] - sqrt(sys->p[OR_MU] * (1 - e * e)));
 }
 
-/* Stiffest local frequency, at periapsis: √(2μ/r_p³) (the radial tidal term). */
-static double orbit_omega(const sw_system *sys)
-{
-    double rp = 1.0 - sys->p[OR_E];
-    return sqrt(2.0 * sys->p[OR_MU] / (rp * rp * rp));
-}
-
 static sw_view orbit_view(const sw_system *sys)
 {
     double e = sys->p[OR_E], b = sqrt(1 - e * e);
@@ -71,8 +64,9 @@ static sw_view orbit_view(const sw_system *sys)
 
 const sw_scene sw_scene_orbit = {
     .name = "orbit",
+    .kind = SW_SYS_PARTICLES,
     .summary = "a planet around a fixed sun; Kepler's exact ellipse, period 2 pi / sqrt(mu)",
-    .teaches = "RK4 slowly drifts in energy; symplectic Euler and Verlet keep the orbit closed.",
+    .teaches = "RK4's energy drifts away; Verlet's stays bounded, and its ellipse slowly turns instead.",
     .params = orbit_params,
     .nparams = 2,
     .dt = 0.01,
@@ -83,7 +77,6 @@ const sw_scene sw_scene_orbit = {
     .energy = sw_scene_particle_energy,
     .drift = orbit_drift,
     .drift_name = "angular-momentum drift",
-    .omega_max = orbit_omega,
     .reference = 1,
     .view = orbit_view,
 };

@@ -70,11 +70,45 @@ static void damped(double m, double k, double c, double u0, double t, double *u,
     }
 }
 
-static int spring_exact(const sw_system *sys, double t, double *y)
+/* The one-dimensional formula holds while the mass stays on its side of the
+ * anchor. With u(0) = stretch, u'(0) = 0 the under-damped motion has its
+ * extremes at t_k = kπ/ωd, u(t_k) = stretch·(-e^{-γπ/ωd})^k, so the nearest
+ * approach is rest - stretch·e^{-γπ/ωd} (for a positive stretch); critical
+ * and over-damped motion never crosses u = 0. A spring of rest length 0
+ * pulls with -k·d through the anchor too: linear, so it always holds. */
+static const char *spring_exact_fails(const sw_system *sys)
 {
     const double *p = sys->p;
     if (p[SP_G] != 0)
-        return -1; /* gravity makes the motion two-dimensional */
+        return "with gravity the mass swings sideways and the motion is two-dimensional";
+    double m = p[SP_M], g = p[SP_C] / (2 * m), w0 = sqrt(p[SP_K] / m);
+    if (p[SP_REST] == 0 || p[SP_STRETCH] <= 0 || g >= w0)
+        return NULL;
+    double wd = sqrt(w0 * w0 - g * g);
+    if (p[SP_REST] - p[SP_STRETCH] * exp(-g * PI / wd) > 0)
+        return NULL;
+    return "the mass swings through its anchor, where the spring force turns around and the "
+           "one-dimensional formula no longer holds";
+}
+
+/* The resting state hangs straight down at r = rest + m·g/k: energy
+ * ½k(mg/k)² - m·g·(rest + mg/k) = -m·g·rest - ½(mg)²/k (0 without gravity). */
+static double hanging_floor(double k, double m, double g, double rest)
+{
+    return -m * g * rest - 0.5 * (m * g) * (m * g) / k;
+}
+
+static double spring_floor(const sw_system *sys)
+{
+    const double *p = sys->p;
+    return hanging_floor(p[SP_K], p[SP_M], fabs(p[SP_G]), p[SP_REST]);
+}
+
+static int spring_exact(const sw_system *sys, double t, double *y)
+{
+    const double *p = sys->p;
+    if (spring_exact_fails(sys))
+        return -1;
     double u, du;
     damped(p[SP_M], p[SP_K], p[SP_C], p[SP_STRETCH], t, &u, &du);
     y[0] = p[SP_REST] + u;
@@ -83,12 +117,6 @@ static int spring_exact(const sw_system *sys, double t, double *y)
     y[3] = 0;
     return 0;
 }
-
-/* The natural frequency ω0 = √(k/m) and damping rate γ = c/2m: the
- * eigenvalues of [[0, 1], [-k/m, -c/m]] are -γ ± √(γ² - ω0²). */
-static double spring_omega(const sw_system *sys) { return sqrt(sys->p[SP_K] / sys->p[SP_M]); }
-
-static double spring_damping(const sw_system *sys) { return sys->p[SP_C] / (2 * sys->p[SP_M]); }
 
 static sw_view spring_view(const sw_system *sys)
 {
@@ -101,6 +129,7 @@ static sw_view spring_view(const sw_system *sys)
 
 const sw_scene sw_scene_spring = {
     .name = "spring",
+    .kind = SW_SYS_PARTICLES,
     .summary = "one mass on a damped spring to a fixed anchor; exact in every damping regime",
     .teaches = "Undamped, explicit Euler gains energy every step: (1 + (w dt)^2) per step.",
     .params = spring_params,
@@ -110,9 +139,9 @@ const sw_scene sw_scene_spring = {
     .duration = 10.0,
     .build = spring_build,
     .exact = spring_exact,
+    .exact_fails = spring_exact_fails,
     .energy = sw_scene_particle_energy,
-    .omega_max = spring_omega,
-    .damping = spring_damping,
+    .energy_floor = spring_floor,
     .reference = 1,
     .view = spring_view,
 };
@@ -148,7 +177,11 @@ static int stiff_build(sw_system *sys, char *err, size_t errlen)
     return SW_OK;
 }
 
-static double stiff_omega(const sw_system *sys) { return sqrt(sys->p[SS_K] / sys->p[SS_M]); }
+static double stiff_floor(const sw_system *sys)
+{
+    const double *p = sys->p;
+    return hanging_floor(p[SS_K], p[SS_M], p[SS_G], p[SS_REST]);
+}
 
 static sw_view stiff_view(const sw_system *sys)
 {
@@ -158,6 +191,7 @@ static sw_view stiff_view(const sw_system *sys)
 
 const sw_scene sw_scene_stiff_spring = {
     .name = "stiff-spring",
+    .kind = SW_SYS_PARTICLES,
     .summary = "a pendulum hung on a very stiff spring: a slow swing and a fast stretch",
     .teaches = "Stiffness: explicit methods need w dt below their limit; implicit ones do not.",
     .params = stiff_params,
@@ -167,7 +201,7 @@ const sw_scene sw_scene_stiff_spring = {
     .duration = 2.0,
     .build = stiff_build,
     .energy = sw_scene_particle_energy,
-    .omega_max = stiff_omega,
+    .energy_floor = stiff_floor,
     .reference = 1,
     .view = stiff_view,
 };
@@ -216,21 +250,10 @@ static int chain_build(sw_system *sys, char *err, size_t errlen)
     return SW_OK;
 }
 
-/* Highest longitudinal mode of a fixed-fixed chain: 2√(k/m)·sin(nπ/(2(n+1))). */
-static double chain_omega(const sw_system *sys)
-{
-    const double *p = sys->p;
-    double n = p[CH_N];
-    return 2.0 * sqrt(p[CH_K] / p[CH_M]) * sin(n * PI / (2.0 * (n + 1.0)));
-}
-
-/* Spring damping acts like stiffness with c in place of k, so each mode's
- * damping rate is γ = (c / 2k)·ω². */
-static double chain_damping(const sw_system *sys)
-{
-    double w = chain_omega(sys);
-    return sys->p[CH_C] / (2 * sys->p[CH_K]) * w * w;
-}
+/* At rest the chain lies straight with every spring at its rest length:
+ * energy 0. With gravity it sags, and the truth module finds the resting
+ * state numerically (NaN here). */
+static double chain_floor(const sw_system *sys) { return sys->p[CH_G] == 0 ? 0.0 : NAN; }
 
 static sw_view chain_view(const sw_system *sys)
 {
@@ -242,6 +265,7 @@ static sw_view chain_view(const sw_system *sys)
 
 const sw_scene sw_scene_chain = {
     .name = "chain",
+    .kind = SW_SYS_PARTICLES,
     .summary = "n masses in a line joined by springs between two fixed anchors",
     .teaches = "The stiffest mode sets the step: w_max dt must stay below each method's limit.",
     .params = chain_params,
@@ -251,8 +275,7 @@ const sw_scene sw_scene_chain = {
     .duration = 5.0,
     .build = chain_build,
     .energy = sw_scene_particle_energy,
-    .omega_max = chain_omega,
-    .damping = chain_damping,
+    .energy_floor = chain_floor,
     .reference = 1,
     .view = chain_view,
 };

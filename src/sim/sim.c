@@ -10,7 +10,14 @@
 #include <string.h>
 
 #include "engine/stepper.h"
+#include "sim/truth.h"
 #include "stepwise/stepwise.h"
+
+/* Worked out on first use, behind a pointer so that const readers can. */
+struct sw_sim_derived {
+    int have_floor;
+    double floor;         /* sw_truth_energy_floor of the system as built */
+};
 
 static double max_abs(int n, const double *v)
 {
@@ -67,8 +74,13 @@ int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integra
         return rc;
     s->rtol = SW_RTOL_DEFAULT;
     s->atol = SW_ATOL_DEFAULT;
-    rc = new_stepper(s, m, err, errlen);
+    s->derived = calloc(1, sizeof *s->derived);
+    rc = s->derived ? new_stepper(s, m, err, errlen) : SW_ENOMEM;
     if (rc != SW_OK) {
+        if (!s->derived)
+            snprintf(err, errlen, "out of memory for a sim");
+        free(s->derived);
+        s->derived = NULL;
         sw_system_free(&s->sys);
         return rc;
     }
@@ -90,6 +102,8 @@ static void free_stepper(sw_sim *s)
 void sw_sim_free(sw_sim *s)
 {
     free_stepper(s);
+    free(s->derived);
+    s->derived = NULL;
     sw_system_free(&s->sys);
 }
 
@@ -132,6 +146,13 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
     return SW_OK;
 }
 
+void sw_sim_set_state(sw_sim *s, const double *y)
+{
+    memcpy(s->sys.y, y, (size_t)s->sys.ode->dim * sizeof *y);
+    sw_stepper_touch(s->stepper);
+    s->energy0 = sw_sim_energy(s);
+}
+
 int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
 {
     int rc = sw_system_reset(&s->sys, err, errlen);
@@ -170,9 +191,10 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     int rc = sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
     s->steps++;
     if (rc != SW_OK) {
-        blow_up(s, (s->method->flags & SW_PLUGIN)     ? "the plugin's step function returned an error"
+        blow_up(s, s->stepper->why                    ? s->stepper->why
+                   : (s->method->flags & SW_PLUGIN)   ? "the plugin's step function returned an error"
                    : (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
-                                                      : "the implicit solve did not converge");
+                                                      : "the implicit solve failed");
         return 1;
     }
     const sw_scene *sc = s->sys.scene;
@@ -215,12 +237,33 @@ double sw_sim_energy(const sw_sim *s)
     return sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN;
 }
 
+/* The floor depends on the parameters only: worked out once. */
+static double energy_floor(const sw_sim *s)
+{
+    struct sw_sim_derived *d = s->derived;
+    if (!d->have_floor) {
+        d->floor = isfinite(s->energy0) ? sw_truth_energy_floor(&s->sys) : NAN;
+        d->have_floor = 1;
+    }
+    return d->floor;
+}
+
+int sw_sim_energy_scale_is_motion(const sw_sim *s)
+{
+    return s->energy0 - energy_floor(s) > 1e-12 * fabs(s->energy0);
+}
+
+double sw_sim_energy_scale(const sw_sim *s)
+{
+    if (sw_sim_energy_scale_is_motion(s))
+        return s->energy0 - energy_floor(s);
+    return fabs(s->energy0) > 0 ? fabs(s->energy0) : NAN;
+}
+
 double sw_sim_energy_drift(const sw_sim *s)
 {
-    double e = sw_sim_energy(s);
-    if (!(fabs(s->energy0) > 0))
-        return NAN;
-    return 100.0 * (e - s->energy0) / fabs(s->energy0);
+    double scale = sw_sim_energy_scale(s);
+    return 100.0 * (sw_sim_energy(s) - s->energy0) / scale;
 }
 
 double sw_sim_exact_error(const sw_sim *s, double *scratch)

@@ -36,8 +36,7 @@ expect_usage "nothing to measure: fireworks has no exact solution" bench firewor
 expect_usage "stability needs a SCENE" stability
 expect_usage "takes one SCENE" stability spring chain
 expect_usage "unknown integrator 'nope'" stability spring --integrators nope
-expect_usage "changes its state at step boundaries" stability bounce
-expect_usage "no energy and no stiffest frequency" stability gyre
+expect_usage "stability --all takes no SCENE" stability --all spring
 expect_usage "bench: unknown option '--engine'" bench --engine
 
 # A failed --svg open must not leave the --csv file (or its temporary) behind.
@@ -47,5 +46,6 @@ expect_usage "bench: unknown option '--engine'" bench --engine
 
 # Help exits 0 and documents the stability criterion.
 "$SW" stability --help | grep -q "fixed simulated time" || fail "stability --help lacks the criterion"
+"$SW" stability --help | grep -q "one-step map" || fail "stability --help lacks the theory"
 "$SW" bench --help | grep -q "least-squares slope" || fail "bench --help lacks the fit"
 echo "bench and stability errors: ok"

@@ -1,0 +1,197 @@
+/* What the live app measures, all of it asked of the truth module: the
+ * ghost (the true state now), each sim's error, the error at the report time
+ * when Δt changes (and whether its ratio can be read as an order), and the
+ * stability meter. Pure C, no terminal. Invariant: nothing here steps a sim
+ * on screen; measurements run on their own sims and on the truth's copy of
+ * the system, so reading a number never changes what is shown. */
+#include "app/app.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+/* Largest headless measurement run (state components × steps) on a key press. */
+#define MEASURE_BUDGET 4e7
+
+void sw_app_truth_reset(sw_app *a)
+{
+    if (a->have_truth)
+        sw_truth_free(&a->truth);
+    a->have_truth = a->have_truth_report = 0;
+    a->have_spec0 = a->have_spec = 0;
+    a->meter.ok = 0;
+    a->meter.method = NULL;
+    free(a->truth_report);
+    a->truth_report = NULL;
+    char err[SW_ERRLEN];
+    if (a->scene && sw_truth_init(&a->truth, a->scene, a->p, err, sizeof err) == SW_OK)
+        a->have_truth = 1;
+}
+
+const double *sw_app_ghost(sw_app *a)
+{
+    return a->have_truth ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
+}
+
+double sw_app_error(sw_app *a, int i)
+{
+    const sw_sim *s = &a->sims[i];
+    const double *g = s->blown || !a->have_truth ? NULL : sw_truth_at(&a->truth, s->t);
+    return g ? sw_truth_error(s->sys.ode->dim, s->sys.y, g) : NAN;
+}
+
+/* The true state at the report time, computed once per scene. */
+static const double *truth_report(sw_app *a)
+{
+    if (!a->have_truth_report && a->have_truth) {
+        int dim = a->truth.sys.ode->dim;
+        a->truth_report = malloc((size_t)dim * sizeof *a->truth_report);
+        if (a->truth_report && sw_truth_state(a->scene, a->p, a->scene->duration, a->truth_report) == 0)
+            a->have_truth_report = 1;
+    }
+    return a->have_truth_report ? a->truth_report : NULL;
+}
+
+double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
+{
+    const sw_scene *sc = a->scene;
+    double T = sc->duration;
+    int dim = a->sims[0].sys.ode->dim;
+    if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
+        return NAN;
+    const double *want = truth_report(a);
+    if (!want)
+        return NAN;
+    sw_sim s;
+    char err[SW_ERRLEN];
+    double e = NAN;
+    if (sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
+        if (sw_sim_run_until(&s, T) == 0 && fabs(s.t - T) <= 1e-9 * fmax(1.0, T))
+            e = sw_truth_error(dim, s.sys.y, want);
+        sw_sim_free(&s);
+    }
+    return e;
+}
+
+/* The spectrum at the start (for the dt-change check), once per scene. */
+static const sw_spectrum *spectrum0(sw_app *a)
+{
+    if (!a->have_spec0 && a->have_truth)
+        a->have_spec0 = sw_truth_spectrum(&a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
+    return a->have_spec0 ? &a->spec0 : NULL;
+}
+
+/* How much the method's worst mode grows over a run to the report time at
+ * dt: ρ^(T/dt); NaN when unknown (adaptive, no spectrum). */
+static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *rho)
+{
+    const sw_spectrum *sp = spectrum0(a);
+    *rho = sp ? sw_truth_growth_all(m, sp, dt, NULL) : NAN;
+    return pow(*rho, a->scene->duration / dt);
+}
+
+void sw_app_measure_dt_change(sw_app *a, double old_dt)
+{
+    const sw_integrator *m = a->sims[0].method;
+    double e_old = sw_app_measure(a, m, old_dt), e_new = sw_app_measure(a, m, a->dt);
+    a->meas_method[0] = a->meas_method[1] = m;
+    a->meas_dt[0] = old_dt;
+    a->meas_err[0] = e_old;
+    a->meas_dt[1] = a->dt;
+    a->meas_err[1] = e_new;
+    a->nmeas = 2;
+    double big_dt = fmax(old_dt, a->dt);
+    double big = old_dt > a->dt ? e_old : e_new, small = old_dt > a->dt ? e_new : e_old;
+    double ratio = big / small, T = a->scene->duration;
+    a->error_ratio = NAN;
+    if (!isfinite(ratio) || !(small > 0)) {
+        snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt,
+                 isnan(e_new) || isnan(e_old) ? "no error to compare (a run blew up, or no truth here)"
+                                               : "the error is zero at one step: no ratio");
+        return;
+    }
+    /* An order can be read from the ratio only where both runs are in the
+     * asymptotic range: no mode grows much over the run (else the ratio
+     * measures growth), and the error is small against the motion. */
+    double rho, grow = run_growth(a, m, big_dt, &rho);
+    const double *want = truth_report(a);
+    double scale = 1e-300;
+    for (int k = 0; want && k < a->sims[0].sys.ode->dim; k++)
+        scale = fmax(scale, fabs(want[k]));
+    char head[160];
+    snprintf(head, sizeof head, "dt=%g: error %.3g at t=%.3g (was %.3g at dt=%g), ratio %.3g", a->dt, e_new, T,
+             e_old, old_dt, ratio);
+    if (grow > 2) {
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
+                 "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
+    } else if (big > 0.5 * scale) {
+        snprintf(a->message, sizeof a->message, "%s: not an order yet - the error is %.0f%% of the motion; "
+                 "halve dt again", head, 100 * big / scale);
+    } else {
+        a->error_ratio = ratio;
+        snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));
+    }
+}
+
+/* Refresh the spectrum as the state moves: twenty times per report time,
+ * or on a reset (time went back). */
+static void refresh_spectrum(sw_app *a)
+{
+    const sw_sim *s = &a->sims[0];
+    double every = a->scene->duration / 20;
+    if (a->have_spec && s->t >= a->spec_t && s->t - a->spec_t < every)
+        return;
+    a->have_spec = sw_truth_spectrum(&a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
+    a->spec_t = s->t;
+    a->meter.method = NULL; /* read again */
+}
+
+int sw_app_stability(sw_app *a, sw_app_meter *out)
+{
+    const sw_sim *s = &a->sims[0];
+    sw_app_meter *m = &a->meter;
+    if (!a->have_truth || (s->method->flags & SW_ADAPTIVE) || s->blown) {
+        m->ok = 0;
+        *out = *m;
+        return 0;
+    }
+    refresh_spectrum(a);
+    if (m->method != s->method || m->dt != a->dt) {
+        memset(m, 0, sizeof *m);
+        m->method = s->method;
+        m->dt = a->dt;
+        m->t = a->spec_t;
+        if (a->have_spec) {
+            m->stiff = a->spec.largest;
+            m->complete = a->spec.complete;
+            m->growing = a->spec.growing;
+            m->growth = sw_truth_growth_all(s->method, &a->spec, a->dt, NULL);
+            m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
+            m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
+            m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
+            m->limit = sw_truth_limit(s->method, &a->spec, SW_DT_MAX, &m->unbounded);
+            m->ok = isfinite(m->growth);
+        }
+    }
+    *out = *m;
+    return m->ok;
+}
+
+void sw_app_watch_restart(sw_app *a)
+{
+    const sw_sim *s = &a->sims[0];
+    sw_watch_init(&a->watch, a->scene->duration, sw_watch_raised_level(s));
+    a->watch.t0 = s->t;
+    a->watch_m0 = a->have_truth ? sw_watch_measure(s, a->truth.sys.y) : NAN;
+}
+
+void sw_app_watch_feed(sw_app *a)
+{
+    const sw_sim *s = &a->sims[0];
+    if (!(a->watch_m0 > 0) || s->blown)
+        return;
+    sw_watch_add(&a->watch, s->t, sw_watch_measure(s, a->truth.sys.y) / a->watch_m0);
+}

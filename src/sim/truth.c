@@ -1,0 +1,194 @@
+/* The true state, the error norm, the energy of the motion, and which
+ * methods a scene takes: the half of the truth module that is about one
+ * run. (Linear stability is in truth_stability.c.) Invariant: the true
+ * state comes from the scene's closed form only where the scene says it
+ * holds for these parameters; everywhere else from one reference run at
+ * SW_TRUTH_RTOL / SW_TRUTH_ATOL. */
+#include "sim/truth.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+const sw_integrator *sw_truth_reference_method(void)
+{
+    const sw_integrator *m = sw_integrator_find("dop853");
+    return m ? m : sw_integrator_find("rk45");
+}
+
+sw_truth_source sw_truth_source_of(const sw_system *sys, char *why, size_t whylen)
+{
+    const sw_scene *sc = sys->scene;
+    const char *fails = sc->exact && sc->exact_fails ? sc->exact_fails(sys) : NULL;
+    if (sc->exact && !fails) {
+        if (why && whylen)
+            why[0] = '\0';
+        return SW_TRUTH_EXACT;
+    }
+    if (sc->reference) {
+        if (why)
+            snprintf(why, whylen, "%s%s", fails ? fails : "no closed form",
+                     fails ? ": measured against a tight reference run" : "");
+        return SW_TRUTH_REFERENCE;
+    }
+    if (why)
+        snprintf(why, whylen, "%s, and events at step boundaries make every run first order, "
+                 "so no run is a trustworthy reference", fails ? fails : "no closed form");
+    return SW_TRUTH_NONE;
+}
+
+int sw_truth_init(sw_truth *tr, const sw_scene *sc, const double *p, char *err, size_t errlen)
+{
+    memset(tr, 0, sizeof *tr);
+    tr->t = NAN;
+    int rc = sw_system_build(&tr->sys, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    tr->source = sw_truth_source_of(&tr->sys, tr->why, sizeof tr->why);
+    tr->y = malloc((size_t)tr->sys.ode->dim * sizeof *tr->y);
+    if (!tr->y) {
+        sw_system_free(&tr->sys);
+        snprintf(err, errlen, "out of memory for a %d-long state", tr->sys.ode->dim);
+        return SW_ENOMEM;
+    }
+    return SW_OK;
+}
+
+void sw_truth_free(sw_truth *tr)
+{
+    if (tr->have_ref)
+        sw_sim_free(&tr->ref);
+    tr->have_ref = 0;
+    free(tr->y);
+    tr->y = NULL;
+    if (tr->sys.ode)
+        sw_system_free(&tr->sys);
+}
+
+/* (Re)start the reference run at t = 0. */
+static int start_reference(sw_truth *tr)
+{
+    char err[SW_ERRLEN];
+    if (tr->have_ref)
+        sw_sim_free(&tr->ref);
+    tr->have_ref = 0;
+    const sw_scene *sc = tr->sys.scene;
+    if (sw_sim_init(&tr->ref, sc, tr->sys.p, sw_truth_reference_method(), sc->dt, err, sizeof err) != SW_OK)
+        return -1;
+    sw_sim_set_tolerances(&tr->ref, SW_TRUTH_RTOL, SW_TRUTH_ATOL);
+    tr->have_ref = 1;
+    return 0;
+}
+
+const double *sw_truth_at(sw_truth *tr, double t)
+{
+    if (tr->t == t)
+        return tr->y;
+    int dim = tr->sys.ode->dim;
+    if (tr->source == SW_TRUTH_EXACT) {
+        if (tr->sys.scene->exact(&tr->sys, t, tr->y) != 0)
+            return NULL;
+    } else if (tr->source == SW_TRUTH_REFERENCE && !tr->failed) {
+        if ((!tr->have_ref || tr->ref.t > t) && start_reference(tr) != 0) {
+            tr->failed = 1;
+            return NULL;
+        }
+        if (sw_sim_run_until(&tr->ref, t) != 0) {
+            tr->failed = 1;
+            return NULL;
+        }
+        memcpy(tr->y, tr->ref.sys.y, (size_t)dim * sizeof *tr->y);
+    } else {
+        return NULL;
+    }
+    tr->t = t;
+    return tr->y;
+}
+
+int sw_truth_state(const sw_scene *sc, const double *p, double t, double *out)
+{
+    sw_truth tr;
+    char err[SW_ERRLEN];
+    if (sw_truth_init(&tr, sc, p, err, sizeof err) != SW_OK)
+        return -1;
+    const double *y = sw_truth_at(&tr, t);
+    if (y)
+        memcpy(out, y, (size_t)tr.sys.ode->dim * sizeof *out);
+    sw_truth_free(&tr);
+    return y ? 0 : -1;
+}
+
+double sw_truth_error(int dim, const double *y, const double *truth)
+{
+    double m = 0;
+    for (int i = 0; i < dim; i++) {
+        double d = fabs(y[i] - truth[i]);
+        if (d > m || d != d)
+            m = d; /* NaN stays: nothing compares greater */
+    }
+    return m;
+}
+
+int sw_truth_resting_state(const sw_system *sys, double *out, double *energy)
+{
+    const sw_scene *sc = sys->scene;
+    sw_sim s;
+    char err[SW_ERRLEN];
+    if (sys->kind != SW_SYS_PARTICLES || !sc->energy || sc->post_step)
+        return -1;
+    if (sw_sim_init(&s, sc, sys->p, sw_integrator_find("implicit-euler"), SW_DT_MAX, err, sizeof err) != SW_OK)
+        return -1;
+    double e0 = sw_sim_energy(&s);
+    int rc = -1;
+    for (int k = 0; k < 12 && sw_sim_step(&s) == 0; k++)
+        ;
+    if (!s.blown) {
+        int dim = s.sys.ode->dim, n2 = dim / 2;
+        double vmax = 0, e = sw_sim_energy(&s);
+        for (int i = n2; i < dim; i++)
+            vmax = fmax(vmax, fabs(s.sys.y[i]));
+        if (vmax < 1e-9 && e <= e0) {
+            if (out)
+                memcpy(out, s.sys.y, (size_t)dim * sizeof *out);
+            if (energy)
+                *energy = e;
+            rc = 0;
+        }
+    }
+    sw_sim_free(&s);
+    return rc;
+}
+
+/* The energy of the resting state reached from the start; NaN when none. */
+static double resting_energy(const sw_system *sys)
+{
+    double e;
+    return sw_truth_resting_state(sys, NULL, &e) == 0 ? e : NAN;
+}
+
+double sw_truth_energy_floor(const sw_system *sys)
+{
+    const sw_scene *sc = sys->scene;
+    if (!sc->energy)
+        return NAN;
+    double floor = sc->energy_floor ? sc->energy_floor(sys) : NAN;
+    if (!isnan(floor) || sys->kind != SW_SYS_PARTICLES)
+        return floor;
+    double cx, cy, mu;
+    if (sw_particles_spring_count(&sys->particles) == 0 || sw_particles_central(&sys->particles, &cx, &cy, &mu))
+        return NAN; /* free flight or an orbit: the potential has no bottom */
+    return resting_energy(sys);
+}
+
+int sw_truth_method_applies(const sw_scene *sc, const sw_integrator *m, char *why, size_t whylen)
+{
+    if ((m->flags & SW_NEEDS_SECOND_ORDER) && sc->kind == SW_SYS_FLOW) {
+        snprintf(why, whylen, "'%s' updates velocities and positions separately and needs a system "
+                 "with masses; %s is a flow field with positions only", m->name, sc->name);
+        return 0;
+    }
+    return 1;
+}

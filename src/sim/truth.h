@@ -1,0 +1,145 @@
+/* The truth module: every question about accuracy and stability is answered
+ * here, once, with one set of reference tolerances. The true state (the
+ * scene's closed form where it holds for these parameters, else a tight
+ * reference run), the error norm, the energy of the motion, whether a
+ * method can run a scene, and linear stability: the eigenvalues of the
+ * scene's linearisation, each method's growth per step on them computed
+ * from its own one-step map (plugins included), and the largest stable Δt.
+ * The meter, `stability`, `bench`, the ghost and the lessons all ask it. */
+#ifndef SW_SIM_TRUTH_H
+#define SW_SIM_TRUTH_H
+
+#include <stddef.h>
+
+#include "stepwise/sim.h"
+
+/* The reference run: the most accurate built-in adaptive method at these
+ * tolerances (rtol, atol = 1e-14 against states of order one). */
+#define SW_TRUTH_RTOL 1e-12
+#define SW_TRUTH_ATOL 1e-14
+
+/* ---- the true state ------------------------------------------------------ */
+
+/* The method of the reference runs: the most accurate built-in adaptive one. */
+const sw_integrator *sw_truth_reference_method(void);
+
+typedef enum sw_truth_source {
+    SW_TRUTH_NONE = 0,      /* neither a closed form nor a trustworthy reference */
+    SW_TRUTH_EXACT = 1,     /* the scene's closed form */
+    SW_TRUTH_REFERENCE = 2  /* a tight-tolerance reference run */
+} sw_truth_source;
+
+/* Where the truth for a built system comes from; why (may be NULL) gets
+ * the reason when it is not the closed form ("the mass swings through its
+ * anchor ..."), or "" for EXACT. */
+sw_truth_source sw_truth_source_of(const sw_system *sys, char *why, size_t whylen);
+
+/* The true state along one run, advanced on demand. */
+typedef struct sw_truth {
+    sw_truth_source source;
+    sw_system sys;        /* a private copy of the scene (exact() reads its parameters) */
+    sw_sim ref;           /* the reference run (REFERENCE) */
+    int have_ref, failed;
+    double *y;            /* the state at time t (sys.ode->dim doubles) */
+    double t;             /* NaN: none computed yet */
+    char why[SW_ERRLEN];  /* see sw_truth_source_of */
+} sw_truth;
+
+/* Prepare the truth for scene sc with parameters p (NULL: defaults).
+ * 0, or a status with err filled (the scene does not build, no memory). */
+int sw_truth_init(sw_truth *tr, const sw_scene *sc, const double *p, char *err, size_t errlen);
+void sw_truth_free(sw_truth *tr);
+/* The true state at time t >= 0, or NULL when there is none (source NONE,
+ * or the reference run failed). A reference run steps forward to t and is
+ * restarted when t goes back; the pointer is valid until the next call. */
+const double *sw_truth_at(sw_truth *tr, double t);
+/* The true state at time t into out, from a fresh truth (one call, one
+ * run); 0, or -1 when there is none. */
+int sw_truth_state(const sw_scene *sc, const double *p, double t, double *out);
+
+/* The error norm: max over every state component (positions, and for
+ * particles velocities) of |y_i - truth_i|. NaN when any is NaN. */
+double sw_truth_error(int dim, const double *y, const double *truth);
+
+/* The least energy of the system (its resting state): the scene's own
+ * floor, else for particles with springs and no central body the energy of
+ * the static equilibrium reached by Newton's method from the start; NaN
+ * when there is none (a potential unbounded below: an orbit, free flight). */
+double sw_truth_energy_floor(const sw_system *sys);
+
+/* The resting state reached from the start of a particle system (backward
+ * Euler with the longest step dissipates every motion; its fixed point has
+ * f(y) = 0: at rest where the forces balance) into out (dim doubles, may be
+ * NULL), its energy into *energy (may be NULL). 0, or -1 when there is none
+ * (a flow, no energy, contact, or the run does not settle). */
+int sw_truth_resting_state(const sw_system *sys, double *out, double *energy);
+
+/* Whether method m can run scene sc at all, without building it (kind of
+ * system, second-order methods on flows, adaptive methods where a fixed
+ * step is needed is the caller's business); 1, or 0 with why filled. */
+int sw_truth_method_applies(const sw_scene *sc, const sw_integrator *m, char *why, size_t whylen);
+
+/* ---- linear stability ---------------------------------------------------- */
+
+#define SW_TRUTH_MODES 48
+
+/* A mode of the linearisation: eigenvalue λ and its partner μ, the other
+ * root of the mode's own equation (x'' = (λ+μ)x' - λμ·x for a particle
+ * system; for a flow, or a complex λ, μ is λ's conjugate). */
+typedef struct sw_mode {
+    double re, im;        /* λ */
+    double pre, pim;      /* μ */
+} sw_mode;
+
+typedef struct sw_spectrum {
+    int order;            /* 1 flow, 2 particles */
+    int n;                /* modes kept, stiffest first */
+    sw_mode mode[SW_TRUTH_MODES];
+    int growing;          /* physically growing modes (Re λ > 0) left out */
+    int complete;         /* 1: every eigenvalue; 0: the stiffest mode only */
+    double largest;       /* largest |λ| over the modes kept */
+} sw_spectrum;
+
+/* The spectrum of ∂f/∂y for system sys at state y and time t: all of it for
+ * flows (2x2 blocks per point) and for particle systems up to 32 particles
+ * (dense QR), the stiffest mode by power iteration above that. Modes that
+ * grow physically (an orbit's tidal stretching, a compressed spring's
+ * buckling) are counted in `growing` and left out: their growth is the
+ * physics, not the method. 0, or -1 when the eigenvalues do not converge. */
+int sw_truth_spectrum(sw_system *sys, double t, const double *y, sw_spectrum *out);
+
+/* The growth per step of method m at step h on one mode: the spectral
+ * radius of the method's own one-step map on the mode's test system (the
+ * map includes what the method carries between steps, so Verlet's reused
+ * acceleration makes it 3x3). NaN for adaptive methods or when the step
+ * fails. */
+double sw_truth_growth(const sw_integrator *m, int order, const sw_mode *mode, double h);
+/* The largest growth over a spectrum; *worst (may be NULL) gets its mode. */
+double sw_truth_growth_all(const sw_integrator *m, const sw_spectrum *sp, double h, int *worst);
+
+/* ρ within this of 1 is neutral: rounding in the eigenvalues of a small
+ * one-step map is about 1e-15. */
+#define SW_TRUTH_NEUTRAL 1e-12
+
+/* The horizon a growth is judged over: 100 periods 2π/|λ| of the stiffest
+ * mode, and at least 20 report times (the stability probes run this long). */
+double sw_truth_horizon(const sw_scene *sc, double stiffest);
+/* Whether growth ρ per step of dt shows over the horizon: the mode grows by
+ * more than 1% (ρ^(T/dt) > 1.01). Slower growth is real but no run shows it. */
+int sw_truth_growth_visible(double rho, double dt, double horizon);
+
+/* The largest step h <= h_max such that every step up to it keeps the growth
+ * of every mode at most 1 + SW_TRUTH_NEUTRAL: 0 when the method grows
+ * already at |λ|·h = 0.01 (Euler and RK2 on an undamped oscillator grow at
+ * every step), h_max (and *unbounded = 1) when no step up to h_max grows. */
+double sw_truth_limit(const sw_integrator *m, const sw_spectrum *sp, double h_max, int *unbounded);
+
+/* The same over a run: the smallest limit over spectra taken at `samples`
+ * times in [0, t_end] along the true solution (or, with no truth, the run
+ * of m itself at h_ref). `stiffest` (may be NULL) gets the largest |λ|
+ * seen. 0 with *limit set, or -1 with err filled. */
+int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end,
+                         int samples, double h_max, double *limit, int *unbounded, double *stiffest,
+                         char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,135 @@
+/* Growth of the energy of the motion, judged window by window. A bounded
+ * oscillation (a symplectic method's energy error, a slow swing modulating
+ * it, chaos) has window peaks that rise and fall at random and comes back
+ * down to its start; decay lowers the peaks; growth, however slow, raises
+ * them window after window, and growth a nonlinearity caps early (a spring
+ * flung through its anchor) leaves the energy raised for good.
+ * Invariant: the watch never steps anything; it only reads samples. */
+#include "sim/watch.h"
+
+#include <math.h>
+#include <string.h>
+
+
+double sw_watch_measure(const sw_sim *s, const double *y0)
+{
+    if (s->sys.scene->energy) /* (E - E0)/scale + 1: with a floor, (E - floor)/(E0 - floor) */
+        return 1.0 + (sw_sim_energy(s) - s->energy0) / sw_sim_energy_scale(s);
+    if (s->sys.kind != SW_SYS_FLOW || !y0)
+        return NAN;
+    double num = 0, den = 0;
+    for (int i = 0; i < s->sys.ode->dim; i++) {
+        num += s->sys.y[i] * s->sys.y[i];
+        den += y0[i] * y0[i];
+    }
+    return den > 0 ? num / den : NAN;
+}
+
+double sw_watch_raised_level(const sw_sim *s)
+{
+    int bound_state = s->sys.scene->energy && !sw_sim_energy_scale_is_motion(s) && s->energy0 < 0;
+    return bound_state ? 2.0 : (s->method->flags & SW_SYMPLECTIC) ? 30.0 : 3.0;
+}
+
+void sw_watch_init(sw_watch *w, double window, double raised)
+{
+    memset(w, 0, sizeof *w);
+    w->window = window;
+    w->raised = raised;
+    w->t0 = 0;
+    w->cur_max = -INFINITY;
+    w->cur_min = INFINITY;
+    w->first_max = -INFINITY;
+    w->first_min = INFINITY;
+}
+
+static void close_window(sw_watch *w)
+{
+    if (w->windows == 0) {
+        w->first_max = w->cur_max;
+        w->first_min = w->cur_min;
+    }
+    if (w->kept == SW_WATCH_WINDOWS) {
+        memmove(w->peak, w->peak + 1, (SW_WATCH_WINDOWS - 1) * sizeof w->peak[0]);
+        memmove(w->mean, w->mean + 1, (SW_WATCH_WINDOWS - 1) * sizeof w->mean[0]);
+        w->kept--;
+    }
+    w->peak[w->kept] = w->cur_max;
+    w->mean[w->kept] = w->cur_sum / (double)w->cur_n;
+    w->kept++;
+    w->windows++;
+    w->cur_max = -INFINITY;
+    w->cur_min = INFINITY;
+    w->cur_sum = 0;
+    w->cur_n = 0;
+}
+
+static sw_watch_verdict judge(const sw_watch *w)
+{
+    int k = w->kept;
+    if (k == 0 || w->windows < 2)
+        return SW_WATCH_STEADY;
+    /* energy raised and kept: the latest window averages past the raised
+     * level (nothing in these scenes adds energy) */
+    if (w->mean[k - 1] > w->raised)
+        return SW_WATCH_RAISED;
+    /* steady climb: 16 rises in 19 window-to-window changes */
+    if (k >= SW_WATCH_WINDOWS - 1) {
+        int rises = 0;
+        for (int i = k - (SW_WATCH_WINDOWS - 1) + 1; i < k; i++)
+            rises += w->peak[i] > w->peak[i - 1];
+        if (rises >= 16 && w->peak[k - 1] - w->peak[0] > 1e-9)
+            return SW_WATCH_TREND;
+    }
+    /* the latest peak above the first by more than the first window varied */
+    double range = w->first_max - w->first_min;
+    if (w->peak[k - 1] - w->first_max > range + 1e-3)
+        return SW_WATCH_TREND;
+    return SW_WATCH_STEADY;
+}
+
+sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
+{
+    if (w->verdict != SW_WATCH_STEADY)
+        return w->verdict;
+    if (!(m <= 1e3)) { /* NaN too */
+        w->verdict = SW_WATCH_BOUND;
+        return w->verdict;
+    }
+    w->max_seen = fmax(w->max_seen, m);
+    while (t - w->t0 >= w->window && w->window > 0) {
+        if (w->cur_max > -INFINITY) {
+            close_window(w);
+            w->verdict = judge(w);
+            if (w->verdict != SW_WATCH_STEADY)
+                return w->verdict;
+        }
+        w->t0 += w->window;
+        if (t - w->t0 > 1e3 * w->window)
+            w->t0 = t; /* a long gap: start the next window here */
+    }
+    w->cur_max = fmax(w->cur_max, m);
+    w->cur_min = fmin(w->cur_min, m);
+    w->cur_sum += m;
+    w->cur_n++;
+    return w->verdict;
+}
+
+sw_watch_verdict sw_watch_finish(sw_watch *w)
+{
+    if (w->verdict == SW_WATCH_STEADY && w->cur_max > -INFINITY) {
+        close_window(w);
+        w->verdict = judge(w);
+    }
+    return w->verdict;
+}
+
+const char *sw_watch_text(sw_watch_verdict v)
+{
+    switch (v) {
+    case SW_WATCH_BOUND: return "energy x1000";
+    case SW_WATCH_RAISED: return "energy raised";
+    case SW_WATCH_TREND: return "energy grew";
+    default: return "steady";
+    }
+}

@@ -1,0 +1,59 @@
+/* Watching a run for growth: the measured half of stability, shared by the
+ * `stability` probes and the live meter. The quantity watched is the
+ * energy of the motion, normalised to 1 at the start (sw_watch_measure), so
+ * one set of thresholds serves every scene. */
+#ifndef SW_SIM_WATCH_H
+#define SW_SIM_WATCH_H
+
+#include "stepwise/sim.h"
+
+#define SW_WATCH_WINDOWS 20
+
+typedef enum sw_watch_verdict {
+    SW_WATCH_STEADY = 0,  /* no growth seen (bounded, or decaying) */
+    SW_WATCH_BOUND = 1,   /* M rose past 1000: the motion gained a thousandfold energy */
+    SW_WATCH_RAISED = 2,  /* M averaged above the raised level over a whole window: growth a
+                             nonlinearity capped (see sw_watch_raised_level) */
+    SW_WATCH_TREND = 3    /* M's window peaks climbed window after window, or the latest
+                             peak stands above the first by more than the first varied */
+} sw_watch_verdict;
+
+typedef struct sw_watch {
+    double window;        /* length of a window, in simulated time */
+    double raised;        /* the level of SW_WATCH_RAISED */
+    double t0;            /* start of the current window */
+    int windows;          /* complete windows so far */
+    double first_max, first_min;   /* over the first window */
+    double peak[SW_WATCH_WINDOWS]; /* peaks of the last complete windows, oldest first */
+    double mean[SW_WATCH_WINDOWS]; /* and their means */
+    int kept;             /* entries in peak/low */
+    double cur_max, cur_min, cur_sum; /* the window in progress */
+    long cur_n;
+    double max_seen;
+    sw_watch_verdict verdict;      /* latched once not steady */
+} sw_watch;
+
+/* M for a sim now: (E - E_floor) / (E(0) - E_floor) where the system has a
+ * resting state, else 1 + (E - E(0)) / |E(0)|; for a flow without energy
+ * |y|² / |y(0)|² (y0: the start). NaN when none applies. */
+double sw_watch_measure(const sw_sim *s, const double *y0);
+
+/* The level a window's mean M must pass to count as raised: 2 for a bound
+ * state without a resting state (an orbit: M = 2 is E = 0, the planet
+ * escaping); else 3 for a method that is not symplectic (a stable one only
+ * loses energy, or gains a little of it), 30 for a symplectic one (its
+ * energy, started from rest, averages up to 1/(1 - (|L|dt/2)²): 25 at 98%
+ * of its limit, bounded all the same). */
+double sw_watch_raised_level(const sw_sim *s);
+
+/* Start watching; window: simulated time per window (> 0); raised: see
+ * sw_watch_raised_level. */
+void sw_watch_init(sw_watch *w, double window, double raised);
+/* Feed a sample M at time t (t increasing); returns the verdict so far. */
+sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m);
+/* Close the window in progress (the end of a run) and judge it too. */
+sw_watch_verdict sw_watch_finish(sw_watch *w);
+/* A few words for a verdict ("energy x1000", ...). */
+const char *sw_watch_text(sw_watch_verdict v);
+
+#endif

@@ -1,0 +1,343 @@
+/* The truth module on the hard cases: where closed forms stop holding, what
+ * backward Euler does at ω·Δt up to 1e4, the stability limits of damped
+ * oscillators against closed forms worked out here independently, the
+ * growth per step against runs, and the energy of the motion. */
+#include <check.h>
+#include <complex.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "app/app.h"
+#include "lab/bench.h"
+#include "lab/stability.h"
+#include "sim/truth.h"
+#include "stepwise/stepwise.h"
+
+static const sw_scene *params(const char *scene, double *p, const char *const *sets)
+{
+    const sw_scene *sc = sw_scene_find(scene);
+    char err[SW_ERRLEN];
+    ck_assert_ptr_nonnull(sc);
+    sw_scene_defaults(sc, p);
+    for (int i = 0; sets && sets[i]; i++)
+        ck_assert_msg(sw_scene_set(sc, p, sets[i], err, sizeof err) == SW_OK, "%s", err);
+    return sc;
+}
+
+static void sim_with(sw_sim *s, const char *scene, const char *method, double dt, const char *const *sets)
+{
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = params(scene, p, sets);
+    ck_assert_msg(sw_sim_init(s, sc, p, sw_integrator_find(method), dt, err, sizeof err) == SW_OK, "%s", err);
+}
+
+/* A spring stretched 1.5 past a rest length of 1 swings through its anchor
+ * (first trough at rest - 1.5 < 0 undamped): the closed form no longer holds
+ * and the truth is a reference run. There the linear formula is off by more
+ * than the motion's size at t = 10, while the reference keeps the energy
+ * ½k·1.5² = 11.25 to 1e-6 (the scene is conservative) and rk4 at Δt =
+ * 0.00025 lands within 0.01 of it (the anchor's cusp, where the force turns
+ * over, makes rk4 first order: about 3e-3 here). With gravity the closed
+ * form does not hold either; where the mass stays on its side (stretch 0.5,
+ * or rest 0: a linear force) it does. */
+START_TEST(spring_closed_form_only_where_it_holds)
+{
+    const char *through[] = { "stretch=1.5", "c=0", NULL }, *gravity[] = { "g=9.81", NULL },
+               *zero_rest[] = { "rest=0", "stretch=2", "c=0", NULL };
+    double p[SW_MAX_PARAMS];
+    char why[SW_ERRLEN], err[SW_ERRLEN];
+    struct { const char *const *sets; sw_truth_source want; } cases[] = {
+        { through, SW_TRUTH_REFERENCE }, { gravity, SW_TRUTH_REFERENCE }, { zero_rest, SW_TRUTH_EXACT },
+        { NULL, SW_TRUTH_EXACT },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const sw_scene *sc = params("spring", p, cases[i].sets);
+        sw_system sys;
+        ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_OK);
+        ck_assert_int_eq(sw_truth_source_of(&sys, why, sizeof why), cases[i].want);
+        if (cases[i].want == SW_TRUTH_REFERENCE)
+            ck_assert_msg(strstr(why, "anchor") || strstr(why, "gravity"), "reason: %s", why);
+        sw_system_free(&sys);
+    }
+    params("spring", p, through);
+    sw_sim s;
+    double truth[4];
+    ck_assert_int_eq(sw_sim_init(&s, sw_scene_find("spring"), p, sw_integrator_find("rk4"), 0.00025, err,
+                                 sizeof err), SW_OK);
+    ck_assert_int_eq(sw_sim_run_until(&s, 10.0), 0);
+    ck_assert_int_eq(sw_truth_state(sw_scene_find("spring"), p, s.t, truth), 0);
+    double e_truth = 0.5 * (truth[2] * truth[2] + truth[3] * truth[3]) +
+                     0.5 * p[0] * pow(hypot(truth[0], truth[1]) - p[3], 2);
+    ck_assert_msg(fabs(e_truth - 11.25) < 1e-6, "reference energy %.12g", e_truth);
+    double w = sqrt(p[0] / p[1]), linear[4] = { p[3] + p[4] * cos(w * 10), 0, -p[4] * w * sin(w * 10), 0 };
+    ck_assert_msg(sw_truth_error(4, s.sys.y, truth) < 0.01, "rk4 vs reference %g", sw_truth_error(4, s.sys.y, truth));
+    ck_assert_msg(sw_truth_error(4, linear, truth) > 1.0, "the linear formula would be off by only %g",
+                  sw_truth_error(4, linear, truth));
+    sw_sim_free(&s);
+}
+END_TEST
+
+/* Backward Euler on a conservative nonlinear scene, the stiff pendulum, at
+ * ω·Δt from 1 to 1e4 (ω = √(k/m) = 100 and, with k = 1e9, 31623), from
+ * angles 30°, 90° and 150° (its spring starts compressed at 150°): the
+ * energy never rises (by more than rounding, 1e-12 relative) and every step
+ * is solved; where one is refused the sim says why. Backward Euler is
+ * energy-diminishing where the potential is convex along the step, as it is
+ * here away from the top. */
+START_TEST(backward_euler_never_gains_energy)
+{
+    const double angles[] = { 30, 90, 150 }, ks[] = { 1e4, 1e9 }, wdts[] = { 1, 10, 100, 1e3, 1e4 };
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < 2; k++)
+            for (int w = 0; w < 5; w++) {
+                char kset[32], aset[32];
+                snprintf(kset, sizeof kset, "k=%g", ks[k]);
+                snprintf(aset, sizeof aset, "angle=%g", angles[a]);
+                const char *sets[] = { kset, aset, NULL };
+                double dt = fmin(SW_DT_MAX, wdts[w] / sqrt(ks[k]));
+                sw_sim s;
+                sim_with(&s, "stiff-spring", "implicit-euler", dt, sets);
+                double e = sw_sim_energy(&s);
+                for (int step = 0; step < 20; step++) {
+                    if (sw_sim_step(&s)) {
+                        ck_assert_msg(strstr(s.blow_reason, "Newton") || strstr(s.blow_reason, "linear system"),
+                                      "refused without saying why: %s", s.blow_reason);
+                        break;
+                    }
+                    double e2 = sw_sim_energy(&s);
+                    ck_assert_msg(e2 <= e + 1e-12 * fabs(e), "k %g angle %g w*dt %g step %d: energy %.12g -> %.12g",
+                                  ks[k], angles[a], wdts[w], step, e, e2);
+                    e = e2;
+                }
+                sw_sim_free(&s);
+            }
+}
+END_TEST
+
+/* The one-step linearised method is not backward Euler: at Δt = 1 on the
+ * stiff pendulum it gains energy in its first step (the audit's -8.50 to
+ * +38.4 J), where backward Euler loses it; on a linear system the two agree
+ * to rounding (a spring of rest length 0 is linear). */
+START_TEST(linear_implicit_euler_differs_where_nonlinear)
+{
+    sw_sim lin, be;
+    sim_with(&lin, "stiff-spring", "linear-implicit-euler", 1.0, NULL);
+    sim_with(&be, "stiff-spring", "implicit-euler", 1.0, NULL);
+    double e0 = sw_sim_energy(&lin);
+    ck_assert_int_eq(sw_sim_step(&lin), 0);
+    ck_assert_int_eq(sw_sim_step(&be), 0);
+    ck_assert_msg(fabs(e0 + 8.4992) < 1e-3 && fabs(sw_sim_energy(&lin) - 38.4) < 0.1,
+                  "linearised: %.4g -> %.4g J", e0, sw_sim_energy(&lin));
+    ck_assert_double_lt(sw_sim_energy(&be), e0);
+    sw_sim_free(&lin);
+    sw_sim_free(&be);
+    const char *linear[] = { "rest=0", "stretch=1", "c=0.7", NULL };
+    sim_with(&lin, "spring", "linear-implicit-euler", 0.3, linear);
+    sim_with(&be, "spring", "implicit-euler", 0.3, linear);
+    for (int i = 0; i < 50; i++) {
+        sw_sim_step(&lin);
+        sw_sim_step(&be);
+    }
+    for (int i = 0; i < 4; i++)
+        ck_assert_double_eq_tol(lin.sys.y[i], be.sys.y[i], 1e-12);
+    sw_sim_free(&lin);
+    sw_sim_free(&be);
+}
+END_TEST
+
+/* |R(z)| for the Runge-Kutta stability polynomials, written out here. */
+static double rk_amp(int stages, double complex z)
+{
+    double complex r = 1 + z;
+    if (stages >= 2)
+        r += z * z / 2;
+    if (stages == 4)
+        r += z * z * z / 6 + z * z * z * z / 24;
+    return cabs(r);
+}
+
+/* The largest h with |R(hλ)| <= 1, by bisection on [0.01, 10] along the ray. */
+static double rk_limit(int stages, double complex lam)
+{
+    double lo = 0.01, hi = 10;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (rk_amp(stages, mid * lam) <= 1)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* The theory column on the default damped spring (ζ = c/(2√(km)) = 0.079)
+ * against closed forms: in ω·Δt, Euler 2ζ, symplectic Euler 2(√(1+ζ²) - ζ)
+ * (its one-step matrix has trace 2 - 2ζx - x², det 1 - 2ζx: |eigenvalues|
+ * <= 1 until the trace reaches -(1 + det)), and RK2 and RK4 from their
+ * polynomials, 0.956 and 2.938 (bisected above on the ray λ = -ζ + i√(1-ζ²)).
+ * Tolerance 1e-6: the truth bisects to 1e-9 in h. */
+START_TEST(damped_theory_matches_closed_forms)
+{
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = params("spring", p, NULL);
+    sw_system sys;
+    ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_OK);
+    sw_spectrum sp;
+    ck_assert_int_eq(sw_truth_spectrum(&sys, 0.0, sys.y, &sp), 0);
+    double w0 = sqrt(p[0] / p[1]), zeta = p[2] / (2 * sqrt(p[0] * p[1]));
+    double complex lam = -zeta + I * sqrt(1 - zeta * zeta);
+    struct { const char *name; double want; } cases[] = {
+        { "euler", 2 * zeta }, { "symplectic-euler", 2 * (sqrt(1 + zeta * zeta) - zeta) },
+        { "midpoint", rk_limit(2, lam) }, { "heun", rk_limit(2, lam) }, { "rk4", rk_limit(4, lam) },
+    };
+    ck_assert_msg(fabs(cases[2].want - 0.956) < 5e-4 && fabs(cases[4].want - 2.938) < 5e-4, "%g %g",
+                  cases[2].want, cases[4].want);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        int unb;
+        double h = sw_truth_limit(sw_integrator_find(cases[i].name), &sp, SW_DT_MAX, &unb);
+        ck_assert_msg(fabs(h * w0 / cases[i].want - 1) < 1e-6, "%s: w*dt %.9g, closed form %.9g",
+                      cases[i].name, h * w0, cases[i].want);
+    }
+    sw_system_free(&sys);
+}
+END_TEST
+
+/* The orbit's linearisation at perihelion r_p: tidal eigenvalues ±√(2μ/r_p³)
+ * (real: nearby orbits part, physics) left out and counted, and the
+ * oscillation ±i√(μ/r_p³) that sets Verlet's limit 2/√(μ/r_p³). */
+START_TEST(orbit_real_eigenvalues_are_physics)
+{
+    const char *sets[] = { "e=0.8", "mu=2", NULL };
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = params("orbit", p, sets);
+    sw_system sys;
+    ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_OK);
+    sw_spectrum sp;
+    ck_assert_int_eq(sw_truth_spectrum(&sys, 0.0, sys.y, &sp), 0);
+    double rp = 1 - p[0], w = sqrt(p[1] / (rp * rp * rp));
+    ck_assert_int_eq(sp.growing, 2);
+    ck_assert_int_eq(sp.n, 1);
+    ck_assert_double_eq_tol(sp.mode[0].im / w, 1.0, 1e-9);
+    int unb;
+    ck_assert_double_eq_tol(sw_truth_limit(sw_integrator_find("verlet"), &sp, SW_DT_MAX, &unb) * w / 2, 1.0, 1e-6);
+    sw_system_free(&sys);
+}
+END_TEST
+
+/* Growth per step of a run, measured: the ratio of the peaks of |y - y_rest|
+ * over steps 8..12 and 3..7, to the fifth root, on a spring of rest length
+ * 100 (linear along x while the swing stays under 100, as it does until
+ * step 16 here; the y-direction at rest), started stretched by 0.5. */
+static double run_growth(const char *method, double dt, const char *c)
+{
+    const char *sets[] = { "rest=100", c, NULL };
+    sw_sim s;
+    sim_with(&s, "spring", method, dt, sets);
+    double amp[2] = { 0, 0 };
+    for (int i = 1; i < 13; i++) {
+        ck_assert_int_eq(sw_sim_step(&s), 0);
+        double a = hypot(s.sys.y[0] - 100.0, s.sys.y[2]);
+        if (i >= 3 && i < 8)
+            amp[0] = fmax(amp[0], a);
+        if (i >= 8)
+            amp[1] = fmax(amp[1], a);
+    }
+    sw_sim_free(&s);
+    return pow(amp[1] / amp[0], 1.0 / 5);
+}
+
+/* The meter's growth per step against runs: Verlet with damping reuses an
+ * acceleration from an Euler-predicted velocity, so its map is 3x3; at
+ * ω·Δt = 1.8 on the default damping the run grows about 1.44 per step and
+ * the meter must say so (2%: the run's peaks are sampled once a step). On the
+ * stiff pendulum at Δt = 0.005 Verlet is neutral: ρ = 1 to 1e-12, no
+ * "grows" from rounding. */
+START_TEST(meter_matches_runs)
+{
+    sw_app a;
+    sw_app_meter m;
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const char *sets[] = { "rest=100", NULL };
+    const sw_scene *sc = params("spring", p, sets);
+    double dt = 1.8 / sqrt(10.0);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("verlet"), dt, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    double run = run_growth("verlet", dt, "c=0.5");
+    ck_assert_msg(fabs(m.growth / run - 1) < 0.02 && m.grows, "meter %.6g, run %.6g", m.growth, run);
+    ck_assert_double_gt(run, 1.4);
+    sw_app_free(&a);
+    sc = params("stiff-spring", p, NULL);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("verlet"), 0.005, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    ck_assert_msg(!m.grows && fabs(m.growth - 1) <= 1e-12, "stiff-spring verlet: rho %.17g", m.growth);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* Energy drift against the energy of the motion: on the stiff pendulum
+ * E(0) - E_rest = m g L (1 - cos 30°)... with the stretched spring, worked
+ * out from the scene's floor -m g L - (mg)²/(2k); the swing holds 1.32 J of
+ * the -8.50 J total. */
+START_TEST(drift_against_the_motion)
+{
+    sw_sim s;
+    sim_with(&s, "stiff-spring", "verlet", 0.005, NULL);
+    double m = 1, g = 9.81, k = 1e4, L = 1, floor = -m * g * L - 0.5 * (m * g) * (m * g) / k;
+    ck_assert_int_eq(sw_sim_energy_scale_is_motion(&s), 1);
+    ck_assert_double_eq_tol(sw_sim_energy_scale(&s), s.energy0 - floor, 1e-12);
+    ck_assert_double_eq_tol(sw_sim_energy_scale(&s), 1.3156, 1e-3);
+    sw_sim_free(&s);
+    sim_with(&s, "orbit", "verlet", 0.01, NULL); /* no floor: |E(0)| = μ/2a */
+    ck_assert_int_eq(sw_sim_energy_scale_is_motion(&s), 0);
+    ck_assert_double_eq_tol(sw_sim_energy_scale(&s), 0.5, 1e-12);
+    sw_sim_free(&s);
+    const char *sets[] = { "g=9.81", "n=8", NULL }; /* a sagging chain: the floor is found by Newton */
+    sim_with(&s, "chain", "verlet", 0.01, sets);
+    ck_assert_int_eq(sw_sim_energy_scale_is_motion(&s), 1);
+    ck_assert_double_gt(sw_sim_energy_scale(&s), s.energy0);
+    sw_sim_free(&s);
+}
+END_TEST
+
+/* Halving Δt where Euler is unstable: the ratio is growth, not an order,
+ * and the app says so instead of "order ~4.79". */
+START_TEST(no_order_from_growth)
+{
+    sw_app a;
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = params("spring", p, NULL);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("euler"), 0.32, err, sizeof err), SW_OK);
+    sw_app_apply(&a, SW_ACT_DT_HALVE, 0);
+    ck_assert_msg(isnan(a.error_ratio), "ratio %g from unstable runs", a.error_ratio);
+    ck_assert_msg(strstr(a.message, "not an order") && strstr(a.message, "grows"), "%s", a.message);
+    sw_app_free(&a);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("rk4"), 0.02, err, sizeof err), SW_OK);
+    sw_app_apply(&a, SW_ACT_DT_HALVE, 0);
+    ck_assert_msg(fabs(a.error_ratio / 16 - 1) < 0.1 && strstr(a.message, "order ~"), "%s", a.message);
+    sw_app_free(&a);
+}
+END_TEST
+
+Suite *make_truth_suite(void);
+Suite *make_truth_suite(void)
+{
+    Suite *s = suite_create("truth");
+    TCase *tc = tcase_create("hard cases");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, spring_closed_form_only_where_it_holds);
+    tcase_add_test(tc, backward_euler_never_gains_energy);
+    tcase_add_test(tc, linear_implicit_euler_differs_where_nonlinear);
+    tcase_add_test(tc, damped_theory_matches_closed_forms);
+    tcase_add_test(tc, orbit_real_eigenvalues_are_physics);
+    tcase_add_test(tc, meter_matches_runs);
+    tcase_add_test(tc, drift_against_the_motion);
+    tcase_add_test(tc, no_order_from_growth);
+    suite_add_tcase(s, tc);
+    return s;
+}

@@ -245,8 +245,11 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
                v->atol, v->rtol);
     else
         fprintf(out, "FAIL: %s differs from %s\n", what, v->reference);
-    if (v->student[0])
-        fprintf(out, "  student: %s\n", v->student);
+    char esc[400], got[200];
+    if (v->student[0]) {
+        sw_escape(v->student, 120, esc, sizeof esc);
+        fprintf(out, "  student: %s\n", esc);
+    }
     int kept = v->ndiffs < SW_VERDICT_DIFFS ? v->ndiffs : SW_VERDICT_DIFFS;
     if (v->ndiffs)
         fprintf(out, "  header differs from the assignment in %d place%s:\n", v->ndiffs, v->ndiffs == 1 ? "" : "s");
@@ -257,7 +260,8 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
             snprintf(line, sizeof line, " (line %ld)", d->line);
         else
             snprintf(line, sizeof line, " (not stated: the default)");
-        fprintf(out, "    %s: yours %s%s, the assignment's %s\n", d->what, d->got, line, d->want);
+        sw_escape(d->got, 80, got, sizeof got);
+        fprintf(out, "    %s: yours %s%s, the assignment's %s\n", d->what, got, line, d->want);
     }
     if (!v->comparable)
         fprintf(out, "  the numbers were not compared: the trace has other columns than the assignment's run\n");

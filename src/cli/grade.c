@@ -201,7 +201,8 @@ static int collect(grade_list *list, const char *arg, const struct stat *assign_
         }
     }
     closedir(d);
-    qsort(list->items + first, (size_t)(list->n - first), sizeof list->items[0], cmp_names);
+    if (list->n > first)
+        qsort(list->items + first, (size_t)(list->n - first), sizeof list->items[0], cmp_names);
     return SW_EXIT_OK;
 }
 

@@ -31,7 +31,10 @@ void sw_json_str(FILE *out, const char *s)
             int ok = len > 0;
             for (int i = 1; ok && i < len; i++)
                 ok = (p[i] & 0xc0) == 0x80;
-            if (ok) {
+            if (ok && len == 2 && p[0] == 0xc2 && p[1] < 0xa0) {
+                fprintf(out, "\\u%04x", p[1]); /* C1 controls: escaped like C0 */
+                p += 2;
+            } else if (ok) {
                 fwrite(p, 1, (size_t)len, out);
                 p += len;
             } else {

@@ -106,6 +106,15 @@ grep -q "did not return within 2 s" err 2>/dev/null || true
 "$SW" record spring --plugin ./badname.so 2>&1 | grep -q "name 'euler ' is not allowed" \
     || fail "bad name: no message"
 
+# A looping plugin never holds off a signal: with a 60 s watchdog, timeout's
+# SIGTERM after 1 s still ends record at once, leaving no file behind.
+start=$(date +%s)
+STEPWISE_PLUGIN_TIMEOUT=60 timeout 1 "$SW" record spring --plugin ./loops.so --steps 20 -o sig.trace 2>err; rc=$?
+[ "$rc" -eq 124 ] || fail "record with a looping plugin under timeout 1: exit $rc: $(cat err)"
+[ $(( $(date +%s) - start )) -le 4 ] || fail "SIGTERM did not end record promptly"
+grep -q 'record interrupted at step' err || fail "no interrupt message: $(cat err)"
+ls sig.trace sig.trace.tmp.* >/dev/null 2>&1 && fail "an interrupted record left a file"
+
 # grade: the whole zoo in one command, each a failure or an error, within limits.
 mkdir zoo
 cp exits.so aborts.so segv.so loops.so over-one.so over-many.so over-y.so writes-dim.so nan.so \
@@ -132,4 +141,11 @@ for p in segv loops over-one exits writes-dim; do
     keys q
     check_terminal_sane "play-$p"
 done
+# Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.
+type_cmd "STEPWISE_PLUGIN_TIMEOUT=60 $SW play spring --plugin ./loops.so -i loops"
+wait_for 'spring +loops' 5 || fail "play with the looping plugin did not start"
+sleep 1
+keys C-c
+wait_exit "Ctrl-C during a plugin loop"
+check_terminal_sane "play-loop-ctrl-c"
 echo "ok"

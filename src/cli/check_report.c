@@ -266,8 +266,11 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
     if (!v->comparable)
         fprintf(out, "  the numbers were not compared: the trace has other columns than the assignment's run\n");
     const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
-    if (pf)
+    if (pf) { /* the values after a broken plugin's last step say nothing more */
         fprintf(out, "  %s\n", pf->reason);
+        print_measure(out, v);
+        return;
+    }
     if (v->status != SW_VERDICT_PASS && v->first[0])
         fprintf(out, "  first failure: %s\n", v->first);
     if (v->status != SW_VERDICT_PASS && r->rows_compared > 0) {

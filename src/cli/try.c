@@ -112,7 +112,7 @@ static int try_once(try_args *a)
         return SW_EXIT_USAGE;
     printf("%s: %s (%s), %d work vector%s\n", a->file, m->name, m->label, m->work_vectors,
            m->work_vectors == 1 ? "" : "s");
-    print_measure(m, ref);
+    fflush(stdout);
     sw_check_request req;
     sw_check_request_init(&req);
     req.plugin = m;
@@ -122,7 +122,9 @@ static int try_once(try_args *a)
     req.dt = a->o.dt;
     req.spec.until = a->o.scene->duration;
     static sw_verdict v;
-    sw_check_run(&req, &v);
+    sw_check_run(&req, &v); /* first: a plugin that crashes is named with its step */
+    if (!v.got_end.fault)
+        print_measure(m, ref);
     printf("  check      ");
     fflush(stdout);
     sw_check_print_plain(stdout, &v);

@@ -245,7 +245,7 @@ static void box_fail(step_box *b, sw_plugin_fault f, const char *why, const char
     b->fault = f;
     snprintf(b->why, sizeof b->why, "%s", why);
     snprintf(b->hint, sizeof b->hint, "%s", hint ? hint : "");
-    if (b->entry && f != SW_PF_CANCELLED) {
+    if (b->entry && f != SW_PF_CANCELLED && f != SW_PF_DISABLED) {
         b->entry->last_fault = f;
         snprintf(b->entry->last_failure, sizeof b->entry->last_failure, "%.200s%s%.90s", why,
                  hint ? " " : "", hint ? hint : "");
@@ -382,8 +382,17 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
         s->release = box_release;
         if (!b->entry)
             box_fail(b, SW_PF_START, "is not loaded", NULL);
-        else if (b->entry->disabled)
-            box_fail(b, SW_PF_DISABLED, "was disabled after an earlier failure", NULL);
+        else if (b->entry->disabled || b->entry->last_fault == SW_PF_EXIT ||
+                 b->entry->last_fault == SW_PF_CRASH || b->entry->last_fault == SW_PF_TIMEOUT ||
+                 b->entry->last_fault == SW_PF_OVERRUN_WORK || b->entry->last_fault == SW_PF_OVERRUN_Y ||
+                 b->entry->last_fault == SW_PF_UNDERRUN || b->entry->last_fault == SW_PF_ODE) {
+            /* Broken once, not run again in this process: a looping plugin
+             * costs one watchdog, not one per run (stability, bench). */
+            char why[SW_ERRLEN];
+            snprintf(why, sizeof why, "is not run again: it %.200s in an earlier run",
+                     b->entry->last_failure);
+            box_fail(b, SW_PF_DISABLED, why, NULL);
+        }
         else {
             b->evals = ode->evals; /* the child's counters start from the parent's at fork */
             b->solves = ode->solves;
@@ -434,7 +443,10 @@ sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, s
     const step_box *b = s->plugin;
     if (!b || b->fault == SW_PF_NONE)
         return SW_PF_NONE;
-    snprintf(buf, len, "the plugin %.160s at step %ld%s%.90s", b->why, step, b->hint[0] ? " " : "",
-             b->hint);
+    if (b->fault == SW_PF_DISABLED)
+        snprintf(buf, len, "the plugin %.230s", b->why);
+    else
+        snprintf(buf, len, "the plugin %.160s at step %ld%s%.90s", b->why, step,
+                 b->hint[0] ? " " : "", b->hint);
     return b->fault;
 }

@@ -347,6 +347,16 @@ static void help_overlay(sw_screen *scr, int in_lesson)
         lines[n] = buf[n];
         n++;
     }
+    /* what the numbers on the status line and the meter mean */
+    static const char *const terms[] = {
+        "energy: change since t=0, % of the energy of the motion",
+        "        (above the resting state; an orbit: of |E(0)|)",
+        "error:  largest |y - true y| over positions and velocities",
+        "|L|dt:  stiffest eigenvalue of the linearisation, times dt",
+        "x.../step: growth per step of the worst mode (1: neutral)",
+    };
+    for (size_t i = 0; i < sizeof terms / sizeof terms[0] && n < 46; i++)
+        lines[n++] = terms[i];
     snprintf(buf[n], sizeof buf[n], "%s", "press ? again to close");
     lines[n] = buf[n];
     n++;

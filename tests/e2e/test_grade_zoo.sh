@@ -135,7 +135,21 @@ grep -q 'info-loops.so,error,,' g.csv || fail "info loop in grade: $(cat g.csv)"
 # play: a failing plugin is disabled with a message, the UI goes on, q leaves a sane terminal.
 # (A pause after each exit: on a loaded machine keys typed the instant the
 # shell is back can be lost, which is the harness's flake, not the terminal's.)
-sane() { wait_exit "$1"; sleep 0.3; check_terminal_sane "$1"; }
+sane() {
+    wait_exit "$1"
+    sleep 0.3
+    s=""
+    for try in 1 2 3; do # the marker is computed by the shell, so the typed line cannot match it
+        type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)\$' | tr '\n' ' '; echo STTY-\$((40+$try))"
+        wait_for "STTY-4$try\$" 5 && s=$(screen | grep -E "STTY-4$try\$" | tail -1)
+        [ -n "$s" ] && break
+    done
+    case "$s" in
+        '') fail "no answer from stty after $1" ;;
+        *-icanon*|*-echo\ *|*-isig*) fail "terminal left raw after $1: $s" ;;
+    esac
+    echo "$s" | grep -q 'icanon' || fail "no stty line after $1: $s"
+}
 tmux_start
 for p in exits aborts segv loops over-one over-many over-y writes-dim; do
     type_cmd "$SW play spring --plugin ./$p.so -i $p"

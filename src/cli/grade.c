@@ -20,6 +20,7 @@
 #include "cli/grade.h"
 #include "lab/sandbox.h"
 #include "lab/verdict.h"
+#include "util/signals.h"
 
 static const char grade_help[] =
     "usage: stepwise grade --assignment A [--csv FILE] [--results FILE] [--cpu S] [--memory MB]\n"
@@ -259,10 +260,6 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
     e->seconds = sw_sandbox_now() - start;
 }
 
-static volatile sig_atomic_t interrupted;
-
-static void on_signal(int sig) { interrupted = sig; }
-
 int sw_cmd_grade(int argc, char **argv)
 {
     const char *assignment = NULL, *csv = NULL, *results = NULL;
@@ -361,22 +358,20 @@ int sw_cmd_grade(int argc, char **argv)
         grade_list_free(&list);
         return sw_cli_error("grade: cannot make a temporary directory: %s", strerror(errno));
     }
-    sw_cli_on_signals(on_signal);
-    sw_sandbox_set_cancel(&interrupted);
+    sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
     grade_print_head(&asg, list.n, list.ignored);
     double start = sw_sandbox_now();
-    for (int i = 0; i < list.n && !interrupted; i++) {
+    for (int i = 0; i < list.n && !sw_signal_caught; i++) {
         grade_job job = { list.items[i].path, list.items[i].plugin, build_dir, i, &base,
                           lim.output_bytes };
         grade_one(&list.items[i], &job, &lim, wall);
         grade_print_row(&list.items[i]);
     }
     grade_clean_dir(build_dir, list.n);
-    if (interrupted) {
+    if (sw_signal_caught) {
         fprintf(stderr, "stepwise: grading interrupted; no gradebook written\n");
         grade_list_free(&list);
-        signal((int)interrupted, SIG_DFL);
-        raise((int)interrupted);
+        sw_signals_reraise(sw_signal_caught);
         return SW_EXIT_USAGE;
     }
     rc = grade_finish(&list, &lim, wall, sw_sandbox_now() - start, csv, results);

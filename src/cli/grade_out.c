@@ -1,8 +1,7 @@
 /* The grade reports: the table on stdout, the CSV gradebook and Gradescope's
- * results.json. Files are written whole or not at all: into a temporary
- * file beside the target, renamed over it when complete (a device or FIFO,
- * or "-", is written directly). Names that came from students are escaped
- * in the table and quoted in the CSV. */
+ * results.json. Files are written whole or not at all (util/outfile.h).
+ * Names that came from students are escaped in the table and quoted in the
+ * CSV. */
 #include "cli/grade.h"
 
 #include <errno.h>
@@ -15,6 +14,7 @@
 #include "cli/cli.h"
 #include "cli/json.h"
 #include "lab/plugin.h"
+#include "util/outfile.h"
 
 int grade_list_add(grade_list *l, const char *path, int plugin)
 {
@@ -99,44 +99,17 @@ void grade_print_row(grade_entry *e)
 
 typedef void grade_writer(FILE *f, const grade_list *l, const char *summary);
 
+/* Through util/outfile.h: whole or not at all, devices and "-" in place. */
 static int write_whole(const char *path, grade_writer *write, const grade_list *l,
                        const char *summary)
 {
-    struct stat st;
-    int direct = strcmp(path, "-") == 0 || (stat(path, &st) == 0 && !S_ISREG(st.st_mode));
-    char tmp[PATH_MAX + 32];
-    FILE *f;
-    if (direct)
-        f = strcmp(path, "-") == 0 ? stdout : fopen(path, "w");
-    else {
-        snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path);
-        int fd = mkstemp(tmp);
-        mode_t mask = umask(0);
-        umask(mask);
-        f = fd >= 0 ? fdopen(fd, "w") : NULL;
-        if (fd >= 0 && !f)
-            close(fd);
-        if (f)
-            fchmod(fd, 0666 & ~mask);
-    }
-    if (!f)
-        return sw_cli_error("grade: cannot write '%.200s': %s", path, strerror(errno));
-    errno = 0;
-    write(f, l, summary);
-    int bad = fflush(f) != 0 || ferror(f);
-    if (!direct)
-        bad |= fsync(fileno(f)) != 0;
-    if (f != stdout)
-        bad |= fclose(f) != 0;
-    if (!direct && (bad || rename(tmp, path) != 0)) {
-        int e = errno;
-        unlink(tmp);
-        errno = e;
-        bad = 1;
-    }
-    if (bad)
-        return sw_cli_error("grade: cannot write '%.200s': %s", path,
-                            errno ? strerror(errno) : "write error");
+    sw_outfile o;
+    char err[SW_ERRLEN + 256];
+    if (sw_outfile_open(&o, path, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s", err);
+    write(o.f, l, summary);
+    if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s", err);
     return SW_EXIT_OK;
 }
 

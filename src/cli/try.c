@@ -20,7 +20,7 @@
 #include "cli/check_report.h"
 #include "lab/measure.h"
 #include "lab/verdict.h"
-#include "tui/play.h"
+#include "util/signals.h"
 
 static const char try_help[] =
     "usage: stepwise try FILE.c|FILE.so [--reference NAME] [--scene SCENE] [--set PARAM=VALUE]...\n"
@@ -141,14 +141,10 @@ static int try_once(try_args *a)
     sw_app_set_compare(&app, 1, ref, NULL);
     snprintf(app.message, sizeof app.message, "%s (yellow) beside %s: q when you have seen enough",
              m->name, ref->name);
-    int rc = sw_play_loop(&app, NULL);
+    int rc = sw_cli_play(&app, NULL);
     sw_app_free(&app);
     return rc != SW_EXIT_OK ? rc : status;
 }
-
-static volatile sig_atomic_t stop;
-
-static void on_stop(int sig) { stop = sig; }
 
 static int mtime_of(const char *path, struct timespec *t)
 {
@@ -162,10 +158,10 @@ static int mtime_of(const char *path, struct timespec *t)
 /* --watch: each run in a child, started again when the file changes. */
 static int watch(try_args *a)
 {
-    sw_cli_on_signals(on_stop);
+    sw_signals_catch();
     struct timespec seen;
     int status = SW_EXIT_USAGE;
-    while (!stop) {
+    while (!sw_signal_caught) {
         if (mtime_of(a->file, &seen) != 0)
             return sw_cli_error("try: cannot read '%.200s': %s", a->file, strerror(errno));
         fflush(NULL);
@@ -173,13 +169,11 @@ static int watch(try_args *a)
         if (pid < 0)
             return sw_cli_error("try: cannot start a run: %s", strerror(errno));
         if (pid == 0) {
-            signal(SIGINT, SIG_DFL);
-            signal(SIGTERM, SIG_DFL);
-            signal(SIGHUP, SIG_DFL);
+            sw_signals_default();
             exit(try_once(a));
         }
         int wstatus, done = 0, changed = 0;
-        while (!stop && !done) {
+        while (!sw_signal_caught && !done) {
             struct timespec now, pause = { 0, 300000000 };
             nanosleep(&pause, NULL);
             done = waitpid(pid, &wstatus, WNOHANG) == pid;
@@ -208,11 +202,11 @@ static int watch(try_args *a)
             printf("\nwatching %s: save it to try again (Ctrl-C stops)\n", a->file);
             fflush(stdout);
             struct timespec now, pause = { 0, 300000000 };
-            while (!stop && (mtime_of(a->file, &now) != 0 ||
+            while (!sw_signal_caught && (mtime_of(a->file, &now) != 0 ||
                              (now.tv_sec == seen.tv_sec && now.tv_nsec == seen.tv_nsec)))
                 nanosleep(&pause, NULL);
         }
-        if (!stop)
+        if (!sw_signal_caught)
             printf("\n%s changed: trying again\n", a->file);
     }
     return status;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "stepwise/stepwise.h"
+#include "util/num.h"
 
 void sw_fmt_shortest(char *buf, size_t len, double v)
 {

@@ -18,6 +18,7 @@
 
 #include "lab/plugin_box.h"
 #include "lab/sandbox.h"
+#include "util/num.h"
 
 static sw_plugin_entry entries[SW_PLUGIN_MAX];
 static int nentries;

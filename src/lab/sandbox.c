@@ -19,12 +19,14 @@
 #endif
 
 #include "stepwise/stepwise.h"
+#include "util/signals.h"
 
 static volatile sig_atomic_t *cancel_flag;
 
 void sw_sandbox_set_cancel(volatile sig_atomic_t *flag) { cancel_flag = flag; }
 
-int sw_sandbox_cancelled(void) { return cancel_flag && *cancel_flag; }
+/* Also every signal util/signals.h catches (record, play, grade all use it). */
+int sw_sandbox_cancelled(void) { return (cancel_flag && *cancel_flag) || sw_signal_caught; }
 
 double sw_sandbox_now(void)
 {

@@ -35,8 +35,9 @@ typedef struct sw_child_end {
  * out_fd: replies); the return value is its exit status. */
 typedef int sw_child_fn(void *ctx, int in_fd, int out_fd);
 
-/* A flag a signal handler sets (record's SIGINT, the UI's): every wait of
- * this module returns early, as cancelled, once *flag is non-zero. NULL: none. */
+/* A flag a signal handler sets: every wait of this module returns early, as
+ * cancelled, once *flag is non-zero, or once util/signals.h has caught a
+ * signal (sw_signal_caught). NULL: only the latter. */
 void sw_sandbox_set_cancel(volatile sig_atomic_t *flag);
 /* Whether the cancel flag is set now. */
 int sw_sandbox_cancelled(void);

@@ -1,8 +1,8 @@
-/* Step traces: the run rule (which steps a trace records), the writer and the
- * reader of the CSV format in docs/trace-format.md. Invariants: a row reaches
- * the file whole or not at all, the real name only ever holds a finished
- * trace, and the reader's memory is bounded by the scene, not by the file. */
-#include "lab/trace.h"
+/* Step traces: the reader of the CSV format in docs/trace-format.md (the run
+ * rule and the columns are in trace_run.c, the writer in trace_write.c, the
+ * metadata parser in trace_meta.c). Invariant: the reader's memory is
+ * bounded by the scene, not by the file; every error names file and line. */
+#include "lab/trace_read.h"
 
 #include <errno.h>
 #include <math.h>
@@ -12,365 +12,397 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "lab/plugin.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/infile.h"
 
-/* ---- the run rule --------------------------------------------------------- */
-
-int sw_trace_spec_check(const sw_trace_spec *spec, double dt, char *err, size_t errlen)
+/* "FILE:LINE: what" — every reader error names the place. */
+int tr_fail(const sw_trace_reader *r, char *err, size_t errlen, const char *fmt, ...)
 {
-    if (spec->steps < 0 || spec->steps > SW_TRACE_MAX_STEPS) {
-        snprintf(err, errlen, "steps = %ld is not allowed: a run takes 1 to %ld steps",
-                 spec->steps, SW_TRACE_MAX_STEPS);
+    int used = snprintf(err, errlen, "%s:%ld: ", r->name, r->line > 0 ? r->line : 1);
+    if (used < 0 || (size_t)used >= errlen)
         return SW_EINVAL;
-    }
-    if (spec->steps == 0) {
-        if (!(isfinite(spec->until) && spec->until > 0)) {
-            snprintf(err, errlen, "until = %g is not allowed: it must be a positive finite time",
-                     spec->until);
-            return SW_EINVAL;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err + used, errlen - (size_t)used, fmt, ap);
+    va_end(ap);
+    return SW_EINVAL;
+}
+
+/* A printable copy of untrusted text for a message: at most 40 bytes, and
+ * anything outside printable ASCII shown as '?'. */
+const char *tr_shown(const char *text, size_t len, char out[48])
+{
+    size_t n = len < 40 ? len : 40;
+    for (size_t i = 0; i < n; i++)
+        out[i] = (text[i] >= 0x20 && text[i] < 0x7f) ? text[i] : '?';
+    strcpy(out + n, len > 40 ? "..." : "");
+    return out;
+}
+
+/* Read one line into r->buf without its newline (and a CR before it).
+ * 1 a line, 0 end of file, or an error: too long, binary, or no final
+ * newline (a cut-short file). */
+static int read_line(sw_trace_reader *r, char *err, size_t errlen)
+{
+    int c = getc(r->f);
+    if (c == EOF) {
+        if (ferror(r->f)) {
+            tr_fail(r, err, errlen, "read error: %s", strerror(errno));
+            return SW_EIO;
         }
-        /* ceil(until/dt) steps, and one more when rounding in t leaves the
-         * run short of until: refused at once, not after 10^7 steps. */
-        if (!(dt > 0) || ceil(spec->until / dt * (1 - 1e-12)) + 1 > (double)SW_TRACE_MAX_STEPS) {
-            snprintf(err, errlen, "until = %g with dt = %g needs %.3g steps (and one more when "
-                     "rounding leaves t short of until); a run takes at most %ld (raise dt or "
-                     "shorten the run)", spec->until, dt, ceil(spec->until / dt), SW_TRACE_MAX_STEPS);
-            return SW_EINVAL;
-        }
-    }
-    if (spec->every < 1 || spec->every > SW_TRACE_MAX_STEPS) {
-        snprintf(err, errlen, "every = %ld is not allowed: it takes a whole number in [1, %ld]",
-                 spec->every, SW_TRACE_MAX_STEPS);
-        return SW_EINVAL;
-    }
-    return SW_OK;
-}
-
-int sw_trace_done(const sw_sim *s, const sw_trace_spec *spec)
-{
-    if (s->blown)
-        return 1;
-    if (spec->steps > 0)
-        return s->steps >= spec->steps;
-    /* The same test as sw_sim_run_until: within a billionth of a step is there. */
-    return !(spec->until - s->t > 1e-9 * s->dt);
-}
-
-int sw_trace_due(const sw_sim *s, const sw_trace_spec *spec)
-{
-    return s->steps == 0 || s->steps % spec->every == 0 || sw_trace_done(s, spec);
-}
-
-int sw_trace_step(sw_sim *s, const sw_trace_spec *spec, char *err, size_t errlen)
-{
-    if (s->steps >= SW_TRACE_MAX_STEPS) {
-        snprintf(err, errlen, "the run needs more than %ld steps (at t = %g of %g); raise dt or "
-                 "shorten the run", SW_TRACE_MAX_STEPS, s->t, spec->until);
-        return SW_EINVAL;
-    }
-    if (sw_sim_step_until(s, spec->steps > 0 ? 0.0 : spec->until))
-        sw_plugin_failed(s); /* a plugin that crashed, looped, ...: say so, not "diverged" */
-    return SW_OK;
-}
-
-/* ---- columns -------------------------------------------------------------- */
-
-/* Values per particle: position, plus velocity for second-order systems. */
-static int per_particle(const sw_system *sys) { return sys->ode->order == 2 ? 4 : 2; }
-
-int sw_trace_ncols(const sw_system *sys)
-{
-    return 2 + per_particle(sys) * sys->n + (sys->scene->energy ? 1 : 0);
-}
-
-void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len)
-{
-    static const char *const kinds[] = { "x", "y", "vx", "vy" };
-    int pp = per_particle(sys);
-    if (c == 0)
-        snprintf(buf, len, "step");
-    else if (c == 1)
-        snprintf(buf, len, "t");
-    else if (c - 2 < pp * sys->n)
-        snprintf(buf, len, "%s%d", kinds[(c - 2) % pp], (c - 2) / pp);
-    else
-        snprintf(buf, len, "energy");
-}
-
-int sw_trace_colindex(const sw_system *sys, const char *name)
-{
-    static const char *const kinds[] = { "x", "y", "vx", "vy" };
-    int pp = per_particle(sys);
-    if (strcmp(name, "step") == 0)
         return 0;
-    if (strcmp(name, "t") == 0)
-        return 1;
-    if (strcmp(name, "energy") == 0)
-        return sys->scene->energy ? 2 + pp * sys->n : -1;
-    for (int k = pp - 1; k >= 0; k--) {
-        size_t len = strlen(kinds[k]);
-        const char *digits = name + len;
-        if (strncmp(name, kinds[k], len) != 0 || !*digits || strlen(digits) > 9 ||
-            (digits[0] == '0' && digits[1]))
-            continue;
-        long i = 0;
-        for (const char *d = digits; *d; d++) {
-            if (*d < '0' || *d > '9')
-                return -1;
-            i = 10 * i + (*d - '0');
+    }
+    r->line++;
+    size_t n = 0;
+    while (c != EOF && c != '\n') {
+        unsigned char u = (unsigned char)c;
+        if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f)
+            return tr_fail(r, err, errlen, "binary data (byte 0x%02x at column %zu): a trace is "
+                        "a text file", u, n + 1);
+        if (n == r->cap)
+            return r->have_sys
+                       ? tr_fail(r, err, errlen, "line longer than %zu bytes, more than %d columns "
+                              "can need: far larger than any trace", r->cap, r->ncols)
+                       : tr_fail(r, err, errlen, "line longer than %zu bytes: a metadata line is "
+                              "shorter, and this is no trace", r->cap);
+        r->buf[n++] = (char)c;
+        c = getc(r->f);
+    }
+    if (c == EOF) {
+        if (ferror(r->f)) {
+            tr_fail(r, err, errlen, "read error: %s", strerror(errno));
+            return SW_EIO;
         }
-        return i < sys->n ? 2 + pp * (int)i + k : -1;
+        return tr_fail(r, err, errlen, "the last line does not end with a newline: the file is "
+                    "cut short (every line, the last one too, ends with a newline)");
     }
-    return -1;
+    if (n > 0 && r->buf[n - 1] == '\r')
+        n--;
+    r->buf[n] = '\0';
+    r->len = n;
+    return 1;
 }
 
-void sw_trace_row_values(const sw_sim *s, double *row)
+static int set_cap(sw_trace_reader *r, size_t cap, char *err, size_t errlen)
 {
-    const sw_system *sys = &s->sys;
-    int n = sys->n, pp = per_particle(sys);
-    const double *y = sys->y;
-    row[0] = (double)s->steps;
-    row[1] = s->t;
-    /* The state is [x(2n) | v(2n)]; the trace groups each particle's values. */
-    for (int i = 0; i < n; i++) {
-        double *out = row + 2 + pp * i;
-        out[0] = y[2 * i];
-        out[1] = y[2 * i + 1];
-        if (pp == 4) {
-            out[2] = y[2 * n + 2 * i];
-            out[3] = y[2 * n + 2 * i + 1];
-        }
-    }
-    if (sys->scene->energy)
-        row[2 + pp * n] = sw_sim_energy(s);
-}
-
-/* ---- writing -------------------------------------------------------------- */
-
-/* Shortest text that reads back as exactly v (metadata: "0.02", not
- * "0.020000000000000000"); rows use %.17g throughout. */
-static void fmt_exact(char *buf, size_t len, double v)
-{
-    if (v == floor(v) && fabs(v) < 1e15) {
-        snprintf(buf, len, "%.0f", v);
-        return;
-    }
-    for (int prec = 1; prec <= 17; prec++) {
-        snprintf(buf, len, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v)
-            return;
-    }
-}
-
-/* One cell; non-finite values as nan, inf, -inf whatever the sign of a NaN. */
-static int fmt_cell(char *out, size_t room, double v)
-{
-    if (isnan(v))
-        return snprintf(out, room, "nan");
-    if (isinf(v))
-        return snprintf(out, room, v > 0 ? "inf" : "-inf");
-    return snprintf(out, room, "%.17g", v);
-}
-
-static int write_failed(sw_trace_writer *w, char *err, size_t errlen)
-{
-    snprintf(err, errlen, "cannot write '%s': %s", w->to_stdout ? "standard output" : w->path,
-             errno ? strerror(errno) : "write error");
-    return SW_EIO;
-}
-
-int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen)
-{
-    memset(w, 0, sizeof *w);
-    w->last_step = -1;
-    if (!path || strcmp(path, "-") == 0) {
-        w->f = stdout;
-        w->to_stdout = 1;
-        return SW_OK;
-    }
-    struct stat st;
-    if (!*path || strlen(path) >= SW_TRACE_PATH_MAX) {
-        snprintf(err, errlen, "output path is empty or longer than %d bytes", SW_TRACE_PATH_MAX - 1);
-        return SW_EINVAL;
-    }
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "'%.200s' is a directory; give a file name for the trace", path);
-        return SW_EINVAL;
-    }
-    snprintf(w->path, sizeof w->path, "%s", path);
-    /* Beside the real name, so that rename() is atomic on the same file system. */
-    snprintf(w->tmp, sizeof w->tmp, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(w->tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "cannot create '%.200s': %s", path, strerror(errno));
-        w->tmp[0] = '\0';
-        return SW_EIO;
-    }
-    mode_t mask = umask(0);
-    umask(mask);
-    if (fchmod(fd, 0666 & ~mask) != 0 || !(w->f = fdopen(fd, "w"))) {
-        snprintf(err, errlen, "cannot create '%.200s': %s", path, strerror(errno));
-        close(fd);
-        unlink(w->tmp);
-        w->tmp[0] = '\0';
-        return SW_EIO;
-    }
-    return SW_OK;
-}
-
-int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spec,
-                   char *err, size_t errlen)
-{
-    int rc = sw_trace_spec_check(spec, s->dt, err, errlen);
-    if (rc != SW_OK)
-        return rc;
-    const sw_system *sys = &s->sys;
-    const sw_scene *sc = sys->scene;
-    int ncols = sw_trace_ncols(sys);
-    w->spec = *spec;
-    w->row_cap = (size_t)ncols * 32 + 64;
-    free(w->row);
-    w->row = malloc(w->row_cap);
-    if (!w->row) {
-        snprintf(err, errlen, "out of memory for a trace row of %d columns", ncols);
+    char *b = realloc(r->buf, cap + 1);
+    if (!b) {
+        snprintf(err, errlen, "%s: out of memory for a line of %zu bytes", r->name, cap);
         return SW_ENOMEM;
     }
-    char num[40];
-    errno = 0;
-    FILE *f = w->f;
-    fprintf(f, "%s\n# version: %s\n# scene: %s\n", SW_TRACE_MAGIC, SW_VERSION, sc->name);
-    for (int i = 0; i < sc->nparams; i++) {
-        fmt_exact(num, sizeof num, sys->p[i]);
-        fprintf(f, "# param %s: %s\n", sc->params[i].name, num);
-    }
-    fprintf(f, "# integrator: %s\n", s->method->name);
-    fmt_exact(num, sizeof num, s->dt);
-    fprintf(f, "# dt: %s\n", num);
-    if (spec->steps > 0)
-        fprintf(f, "# steps: %ld\n", spec->steps);
-    else {
-        fmt_exact(num, sizeof num, spec->until);
-        fprintf(f, "# until: %s\n", num);
-    }
-    fprintf(f, "# every: %ld\n", spec->every);
-    fmt_exact(num, sizeof num, s->rtol);
-    fprintf(f, "# rtol: %s\n", num);
-    fmt_exact(num, sizeof num, s->atol);
-    fprintf(f, "# atol: %s\n", num);
-    for (int c = 0; c < ncols; c++) {
-        sw_trace_colname(sys, c, num, sizeof num);
-        fprintf(f, "%s%s", c ? "," : "", num);
-    }
-    fputc('\n', f);
-    if (fflush(f) != 0 || ferror(f))
-        return write_failed(w, err, errlen);
-    return sw_trace_write_row(w, s, err, errlen);
-}
-
-int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
-{
-    const sw_system *sys = &s->sys;
-    double cell[4];
-    size_t used = 0;
-    /* The state is [x(2n) | v(2n)]; a row groups each particle's values. */
-    int pp = per_particle(sys);
-    used += (size_t)snprintf(w->row, w->row_cap, "%ld,", s->steps);
-    used += (size_t)fmt_cell(w->row + used, w->row_cap - used, s->t);
-    const double *y = sys->y;
-    int n = sys->n;
-    for (int i = 0; i < n; i++) {
-        cell[0] = y[2 * i];
-        cell[1] = y[2 * i + 1];
-        if (pp == 4) {
-            cell[2] = y[2 * n + 2 * i];
-            cell[3] = y[2 * n + 2 * i + 1];
-        }
-        for (int q = 0; q < pp; q++) {
-            w->row[used++] = ',';
-            used += (size_t)fmt_cell(w->row + used, w->row_cap - used, cell[q]);
-        }
-    }
-    if (sys->scene->energy) {
-        w->row[used++] = ',';
-        used += (size_t)fmt_cell(w->row + used, w->row_cap - used, sw_sim_energy(s));
-    }
-    w->row[used++] = '\n';
-    /* Past stdio, in one write(2) (more only if the kernel takes part of it):
-     * stdio would cut a row longer than its buffer into several writes, and
-     * a process killed between them would leave half a row. */
-    errno = 0;
-    if (fflush(w->f) != 0)
-        return write_failed(w, err, errlen);
-    int fd = fileno(w->f);
-    for (size_t done = 0; done < used;) {
-        ssize_t wrote = write(fd, w->row + done, used - done);
-        if (wrote < 0 && errno == EINTR)
-            continue;
-        if (wrote <= 0)
-            return write_failed(w, err, errlen);
-        done += (size_t)wrote;
-    }
-    w->last_step = s->steps;
-    w->rows++;
+    r->buf = b;
+    r->cap = cap;
     return SW_OK;
 }
 
-int sw_trace_observe(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
+char *tr_trim(char *s)
 {
-    if (s->steps == w->last_step || !sw_trace_due(s, &w->spec))
-        return SW_OK;
-    return sw_trace_write_row(w, s, err, errlen);
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t'))
+        s[--n] = '\0';
+    return s;
 }
 
-int sw_trace_commit(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
+/* The first line: exactly SW_TRACE_MAGIC. */
+static int read_magic(sw_trace_reader *r, char *err, size_t errlen)
 {
-    int rc = SW_OK;
-    if (s->steps != w->last_step)
-        rc = sw_trace_write_row(w, s, err, errlen);
-    if (rc == SW_OK && s->blown) {
-        char t[40];
-        fmt_exact(t, sizeof t, s->blow_time);
-        errno = 0;
-        fprintf(w->f, "# diverged: step %ld, t %s: %s\n", s->blow_step, t, s->blow_reason);
-        if (fflush(w->f) != 0 || ferror(w->f))
-            rc = write_failed(w, err, errlen);
-    }
-    if (rc != SW_OK) {
-        sw_trace_abort(w);
+    int rc = read_line(r, err, errlen);
+    if (rc < 0)
         return rc;
+    if (rc == 0) {
+        r->line = 1;
+        return tr_fail(r, err, errlen, "empty file; a trace starts with the line '%s'", SW_TRACE_MAGIC);
     }
-    if (w->to_stdout) {
-        free(w->row);
-        w->row = NULL;
-        w->f = NULL;
+    /* A byte-order mark (Windows editors) and trailing blanks are no error. */
+    char *first = r->buf;
+    if (strncmp(first, "\xef\xbb\xbf", 3) == 0)
+        first += 3;
+    first = tr_trim(first);
+    if (strcmp(first, SW_TRACE_MAGIC) == 0 ||
+        (r->meta.assignment && strcmp(first, SW_ASSIGNMENT_MAGIC) == 0))
         return SW_OK;
+    /* Not a trace. Random or binary bytes may happen to open with a short
+     * clean line: look a little further so such a file is called binary. */
+    for (int i = 0, c; i < 512 && (c = getc(r->f)) != EOF; i++)
+        if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f)
+            return tr_fail(r, err, errlen, "binary data (byte 0x%02x within the first 512 bytes "
+                        "after line 1): a trace is a text file", (unsigned)c);
+    char show[48], tail;
+    int version;
+    if (sscanf(r->buf, "# stepwise trace %d%c", &version, &tail) == 1)
+        return tr_fail(r, err, errlen, "trace format %d; this stepwise reads format %d", version,
+                    SW_TRACE_FORMAT);
+    return tr_fail(r, err, errlen, "not a stepwise trace: the first line must be '%s', not '%s'",
+                SW_TRACE_MAGIC, tr_shown(r->buf, r->len, show));
+}
+
+/* Metadata: every line that starts with '#', up to the header row. */
+static int read_meta(sw_trace_reader *r, char *err, size_t errlen)
+{
+    meta_state ms;
+    memset(&ms, 0, sizeof ms);
+    for (;;) {
+        int c = getc(r->f);
+        if (c == EOF)
+            break;
+        ungetc(c, r->f);
+        if (c != '#')
+            break;
+        int rc = read_line(r, err, errlen);
+        if (rc < 0)
+            return rc;
+        rc = tr_meta_line(r, &ms, err, errlen);
+        if (rc != SW_OK)
+            return rc;
     }
-    errno = 0;
-    int bad = fsync(fileno(w->f)) != 0 && errno != EINVAL;
-    bad |= fclose(w->f) != 0;
-    w->f = NULL;
-    if (bad || rename(w->tmp, w->path) != 0) {
-        snprintf(err, errlen, "cannot write '%.200s': %s", w->path, strerror(errno));
-        sw_trace_abort(w);
+    /* Messages about what is missing name the line after the metadata. */
+    r->line++;
+    int rc = tr_meta_finish(r, &ms, err, errlen);
+    r->line--;
+    return rc;
+}
+
+/* Open for reading without ever blocking (util/infile.h): only a regular
+ * file is read; a FIFO, a device or a directory is refused at once. */
+static int open_regular(sw_trace_reader *r, const char *path, char *err, size_t errlen)
+{
+    struct stat st;
+    const char *what = NULL;
+    int fd = sw_infile_open(path, &st, &what);
+    if (fd < 0 && !what) {
+        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
         return SW_EIO;
     }
-    w->tmp[0] = '\0';
-    free(w->row);
-    w->row = NULL;
+    if (fd < 0) {
+        if (S_ISDIR(st.st_mode))
+            snprintf(err, errlen, "%.200s:1: is a directory, not a trace", path);
+        else
+            snprintf(err, errlen, "%.200s:1: is %s, not a regular file; give a trace file", path,
+                     S_ISFIFO(st.st_mode) ? "a FIFO (a named pipe)" : what);
+        return SW_EINVAL;
+    }
+    if (!(r->f = fdopen(fd, "r"))) {
+        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
+        close(fd);
+        return SW_EIO;
+    }
     return SW_OK;
 }
 
-void sw_trace_abort(sw_trace_writer *w)
+int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t errlen)
 {
-    if (w->f && !w->to_stdout)
-        fclose(w->f);
-    else if (w->f)
-        fflush(w->f);
-    w->f = NULL;
-    if (w->tmp[0])
-        unlink(w->tmp);
-    w->tmp[0] = '\0';
-    free(w->row);
-    w->row = NULL;
+    return sw_trace_read_open_as(r, path, 0, err, errlen);
+}
+
+int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
+                          size_t errlen)
+{
+    memset(r, 0, sizeof *r);
+    snprintf(r->name, sizeof r->name, "%s", path);
+    r->meta.assignment = assignment;
+    int rc = open_regular(r, path, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    if (rc == SW_OK)
+        rc = set_cap(r, SW_TRACE_META_MAX, err, errlen);
+    if (rc == SW_OK)
+        rc = read_magic(r, err, errlen);
+    if (rc == SW_OK)
+        rc = read_meta(r, err, errlen);
+    if (rc != SW_OK)
+        sw_trace_read_close(r);
+    return rc;
+}
+
+/* The next comma-separated cell of *cursor, trimmed; NULL after the last. */
+static char *next_cell(char **cursor)
+{
+    char *s = *cursor;
+    if (!s)
+        return NULL;
+    char *comma = strchr(s, ',');
+    if (comma) {
+        *comma = '\0';
+        *cursor = comma + 1;
+    } else
+        *cursor = NULL;
+    return tr_trim(s);
+}
+
+int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
+{
+    int rc = set_cap(r, 64 + (size_t)r->ncols * SW_TRACE_CELL_MAX, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    rc = read_line(r, err, errlen);
+    if (rc == 0) {
+        r->line++;
+        return tr_fail(r, err, errlen, "no header row after the metadata; expected 'step,t,...' "
+                    "with %d columns", r->ncols);
+    }
+    if (rc < 0)
+        return rc;
+    free(r->col_of);
+    r->col_of = malloc((size_t)r->ncols * sizeof *r->col_of);
+    unsigned char *seen = calloc((size_t)r->ncols, 1);
+    if (!r->col_of || !seen) {
+        free(seen);
+        snprintf(err, errlen, "%s: out of memory for %d columns", r->name, r->ncols);
+        return SW_ENOMEM;
+    }
+    /* Columns are matched by name, in any order; each exactly once. */
+    char *cursor = r->buf, *cell, want[32], show[48];
+    int c = 0;
+    rc = SW_OK;
+    while (rc == SW_OK && (cell = next_cell(&cursor))) {
+        int idx = sw_trace_colindex(&r->sys, cell);
+        if (c == r->ncols)
+            rc = tr_fail(r, err, errlen, "extra column '%s' in the header: a %s trace with these "
+                         "parameters has %d columns", tr_shown(cell, strlen(cell), show),
+                         r->sys.scene->name, r->ncols);
+        else if (idx < 0)
+            rc = tr_fail(r, err, errlen, "header column %d is '%s', which a %s trace with these "
+                         "parameters does not have (columns: step, t, x<i>, y<i>%s per particle "
+                         "for i < %d%s; in any order)", c + 1, tr_shown(cell, strlen(cell), show),
+                         r->sys.scene->name, r->sys.ode->order == 2 ? ", vx<i>, vy<i>" : "",
+                         r->sys.n, r->sys.scene->energy ? ", energy" : "");
+        else if (seen[idx])
+            rc = tr_fail(r, err, errlen, "header column %d, '%s', appears twice", c + 1,
+                         tr_shown(cell, strlen(cell), show));
+        else {
+            seen[idx] = 1;
+            r->col_of[c++] = idx;
+        }
+    }
+    if (rc == SW_OK && c < r->ncols) {
+        int missing = 0;
+        while (seen[missing])
+            missing++;
+        sw_trace_colname(&r->sys, missing, want, sizeof want);
+        rc = tr_fail(r, err, errlen, "the header has %d columns; missing column '%s' (a %s "
+                     "trace with these parameters has %d)", c, want, r->sys.scene->name, r->ncols);
+    }
+    free(seen);
+    return rc;
+}
+
+int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
+{
+    char show[48], name[32];
+    for (;;) {
+        if (r->at_end)
+            return 0;
+        int rc = read_line(r, err, errlen);
+        if (rc <= 0) {
+            r->at_end = rc == 0;
+            return rc;
+        }
+        if (r->len == strspn(r->buf, " \t")) {
+            /* Empty (or blank) lines are allowed only at the very end. */
+            if (!r->blank_line)
+                r->blank_line = r->line;
+            continue;
+        }
+        if (r->blank_line) {
+            long line = r->line;
+            r->line = r->blank_line;
+            rc = tr_fail(r, err, errlen, "empty line among the rows (the next row is on line %ld)", line);
+            r->line = line;
+            return rc;
+        }
+        if (r->buf[0] == '#') {
+            /* Only the recorder's "# diverged:" note may follow the rows. */
+            char *colon = strchr(r->buf, ':');
+            if (colon) {
+                *colon = '\0';
+                if (strcmp(tr_trim(r->buf + 1), "diverged") == 0) {
+                    r->meta.diverged = 1;
+                    continue;
+                }
+            }
+            return tr_fail(r, err, errlen, "only a '# diverged: ...' line may follow the header; "
+                        "metadata goes before it");
+        }
+        if (r->rows == r->max_rows) {
+            sw_trace_spec *sp = &r->meta.spec;
+            if (r->max_rows == SW_TRACE_MAX_ROWS)
+                return tr_fail(r, err, errlen, "more than %ld rows: larger than any trace can be",
+                            SW_TRACE_MAX_ROWS);
+            return tr_fail(r, err, errlen, "more rows than the metadata allows: %s %g with "
+                        "'every: %ld' gives at most %ld (and %d more are graded as extra rows)",
+                        sp->steps ? "'steps:'" : "'until:'",
+                        sp->steps ? (double)sp->steps : sp->until, sp->every,
+                        r->max_rows - SW_TRACE_ROW_SLACK, SW_TRACE_ROW_SLACK);
+        }
+        char *cursor = r->buf, *cell;
+        int c = 0;
+        while ((cell = next_cell(&cursor))) {
+            if (c == r->ncols)
+                return tr_fail(r, err, errlen, "the row has more than the header's %d cells "
+                            "(extra '%s')", r->ncols, tr_shown(cell, strlen(cell), show));
+            int col = r->col_of[c];
+            sw_trace_colname(&r->sys, col, name, sizeof name);
+            if (!*cell)
+                return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
+            char *end;
+            errno = 0;
+            double v = strtod(cell, &end);
+            if (*end != '\0')
+                return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
+                            "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
+                            tr_shown(cell, strlen(cell), show));
+            if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
+                return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole number "
+                            "from 0", tr_shown(cell, strlen(cell), show));
+            row[col] = v;
+            c++;
+        }
+        if (c < r->ncols) {
+            sw_trace_colname(&r->sys, r->col_of[c], name, sizeof name);
+            return tr_fail(r, err, errlen, "the row has %d cells; the header has %d (missing '%s' "
+                        "onwards)", c, r->ncols, name);
+        }
+        r->rows++;
+        return 1;
+    }
+}
+
+void sw_trace_read_close(sw_trace_reader *r)
+{
+    if (r->f)
+        fclose(r->f);
+    r->f = NULL;
+    free(r->buf);
+    r->buf = NULL;
+    free(r->col_of);
+    r->col_of = NULL;
+    if (r->have_sys)
+        sw_system_free(&r->sys);
+    r->have_sys = 0;
+}
+
+int sw_trace_meta_sim(const sw_trace_reader *r, sw_sim *s, const sw_integrator *m,
+                      char *err, size_t errlen)
+{
+    const sw_trace_meta *meta = &r->meta;
+    if (!m)
+        m = meta->method;
+    if (!m) {
+        char names[400];
+        sw_integrator_names(names, sizeof names);
+        snprintf(err, errlen, "%s:%ld: unknown integrator '%s'; integrators: %s (a student "
+                 "plugin's trace needs --plugin PATH.so)", r->name, meta->integrator_line,
+                 meta->integrator, names);
+        return SW_EINVAL;
+    }
+    char msg[SW_ERRLEN];
+    int rc = sw_sim_init(s, meta->scene, meta->p, m, meta->dt, msg, sizeof msg);
+    if (rc != SW_OK) {
+        snprintf(err, errlen, "%s:%ld: %s", r->name, meta->integrator_line, msg);
+        return rc;
+    }
+    sw_sim_set_tolerances(s, meta->rtol, meta->atol);
+    return SW_OK;
 }

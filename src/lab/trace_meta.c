@@ -1,5 +1,6 @@
 /* A trace's metadata: "# key: value" lines, checked one by one and then as
- * a whole (required keys, parameters within range, a run within limits). */
+ * a whole (required keys, parameters within range, a run within limits).
+ * Private to the reader (trace.c), through trace_read.h. */
 #include "lab/trace_read.h"
 
 #include <errno.h>
@@ -10,7 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/num.h"
 
 /* Keys a trace may carry, in the order record writes them. */
 static const char *const known_keys =
@@ -77,14 +79,6 @@ static int is_assignment_key(const char *key)
            strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0;
 }
 
-static void scene_names(char *buf, size_t len)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < sw_scene_count() && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? ", " : "", sw_scene_at(i)->name);
-}
-
 /* One "# key: value" line (r->buf). */
 int tr_meta_line(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
 {
@@ -134,7 +128,7 @@ int tr_meta_line(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
         m->scene = sw_scene_find(value);
         m->scene_line = r->line;
         if (!m->scene) {
-            scene_names(names, sizeof names);
+            sw_scene_names(names, sizeof names);
             return tr_fail(r, err, errlen, "unknown scene '%s'; scenes: %s",
                         tr_shown(value, strlen(value), show), names);
         }
@@ -226,11 +220,7 @@ int tr_meta_finish(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
         double v;
         int rc = SW_OK;
         if (idx < 0) {
-            size_t used = 0;
-            msg[0] = '\0';
-            for (int j = 0; j < sc->nparams; j++)
-                used += (size_t)snprintf(msg + used, sizeof msg - used, "%s%s", j ? ", " : "",
-                                         sc->params[j].name);
+            sw_scene_param_names(sc, msg, sizeof msg);
             rc = tr_fail(r, err, errlen, "scene '%s' has no parameter '%s'; its parameters: %s",
                       sc->name, tr_shown(pp->name, strlen(pp->name), show), msg);
         } else if (sw_parse_double(pp->value, &v) != SW_OK)

@@ -2,17 +2,11 @@
 # `record` then `check --json`: the output parses as JSON (a strict parser in
 # awk below, since a fresh Debian has awk but no python or jq) and has the
 # fields docs/trace-format.md documents, for a pass, a failure and an error.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-here=$(cd "$(dirname "$0")" && pwd)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 # A strict JSON parser (RFC 8259 grammar, one value, nothing after it), in
 # awk: tests/e2e/json.awk. Prints each scalar as "path=value".
-cp "$here/json.awk" json.awk || exit 1
+cp "$ROOT/tests/e2e/json.awk" json.awk || exit 1
 
 # field NAME: the value of NAME in fields (fails when absent)
 field() { grep "^$1=" fields | head -1 | sed "s/^$1=//"; }

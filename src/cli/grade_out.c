@@ -202,10 +202,8 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
         rc = write_whole(csv, write_csv, l, summary);
     if (rc == SW_EXIT_OK && results)
         rc = write_whole(results, write_results, l, summary);
-    errno = 0;
-    if (fflush(stdout) != 0 || ferror(stdout))
-        return sw_cli_error("grade: cannot write to standard output: %s",
-                            errno ? strerror(errno) : "write error");
+    if (sw_cli_flush_stdout() != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
     if (rc != SW_EXIT_OK)
         return rc;
     return passed == l->n ? SW_EXIT_OK : SW_EXIT_FAIL;

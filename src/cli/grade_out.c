@@ -4,7 +4,6 @@
  * CSV. */
 #include "cli/grade.h"
 
-#include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>

@@ -4,7 +4,6 @@
 #include "sim/truth.h"
 
 #include <dirent.h>
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>

@@ -152,7 +152,7 @@ static void starts_init(starts *st, const sw_scene *sc, const double *p)
     if (rest && sw_truth_resting_state(&sys, rest, NULL) == 0) {
         st->small = rest + dim;
         for (int i = 0; i < dim; i++)
-            st->small[i] = rest[i] + 1e-4 * (sys.y[i] - rest[i]);
+            st->small[i] = rest[i] + SW_STABILITY_SHRINK * (sys.y[i] - rest[i]);
         memmove(rest, st->small, (size_t)dim * sizeof *rest);
         st->small = rest;
     } else {
@@ -216,7 +216,7 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
     double measured = r->kind == SW_STAB_NONE ? 0 : r->dt, theory = r->theory_unbounded ? INFINITY : r->theory;
     int meas_unb = r->kind == SW_STAB_UNBOUNDED;
     if ((meas_unb && r->theory_unbounded) || (theory == 0 && measured == 0) ||
-        (theory > 0 && isfinite(theory) && fabs(measured / theory - 1) <= 0.02)) {
+        (theory > 0 && isfinite(theory) && fabs(measured / theory - 1) <= SW_STABILITY_AGREE)) {
         r->agree = 1;
         return;
     }

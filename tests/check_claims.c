@@ -9,8 +9,12 @@
  *
  * Snippets match with every run of white space as one space, and in a
  * lesson file a comment line's leading '#' is dropped, so a snippet may run
- * across the comment header's lines. SW_CLAIMS_PRINT=1 prints every row's
- * written and computed values (for authors). */
+ * across the comment header's lines. A guard test asks for a row for every
+ * number in the texts that reads like a quoted figure.
+ *
+ * CK_RUN_SUITE=claims SW_CLAIMS_PRINT=1 build/check_stepwise prints every
+ * row's written and computed values (for authors); SW_TEST_QUICK skips
+ * computing the rows that bisect for a stability limit. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -30,12 +34,22 @@
 
 /* ---- scenes, runs and lesson pages ------------------------------------- */
 
-#define L2_FILE "02-euler.lesson"
-#define L4_FILE "04-forces.lesson"
-#define L5_FILE "05-springs.lesson"
-#define L7_FILE "07-implicit.lesson"
-#define L8_FILE "08-energy-orbits.lesson"
-#define L9_FILE "09-adaptive.lesson"
+/* The texts, from the repository root (the tests run there). */
+#define L1 "lessons/01-flow-fields.lesson"
+#define L2 "lessons/02-euler.lesson"
+#define L3 "lessons/03-particles-with-mass.lesson"
+#define L4 "lessons/04-forces.lesson"
+#define L5 "lessons/05-springs.lesson"
+#define L6 "lessons/06-runge-kutta.lesson"
+#define L7 "lessons/07-implicit.lesson"
+#define L8 "lessons/08-energy-orbits.lesson"
+#define L9 "lessons/09-adaptive.lesson"
+#define L10 "lessons/10-homework.lesson"
+#define GUIDE "lessons/README.md"
+#define README "README.md"
+#define MAN "docs/stepwise.1"
+#define STAB "docs/stability.md"
+#define INTEGRATORS "src/engine/integrators.c"
 
 /* Parameters of scene `name`: its defaults, then "NAME=VALUE" assignments
  * separated by spaces (NULL or "": none). */
@@ -184,12 +198,13 @@ static sw_stability_result stability(const char *scene, const char *sets, const 
     return r;
 }
 
-/* A lesson page as the student meets it: the runner opens the page by its
- * title, with the page's (and earlier pages') settings applied. */
+/* A lesson page as the student meets it: the runner opens the page of
+ * lesson file `file` by its title, with the page's (and earlier pages')
+ * settings applied. */
 static void lesson_page(sw_runner *r, sw_app *a, const char *file, const char *title)
 {
-    char path[512], err[SW_LESSON_ERRLEN];
-    snprintf(path, sizeof path, "lessons/%s", file);
+    char err[SW_LESSON_ERRLEN];
+    const char *path = file;
     sw_lesson lesson;
     ck_assert_msg(sw_lesson_load(path, &lesson, err, sizeof err) == SW_OK, "%s", err);
     int page = -1;
@@ -368,10 +383,10 @@ static double l2_local_order(void)
 }
 static double l2_global_order(void) { return order_by_halving("vortex", NULL, "euler", 0.01); }
 static double l2_report_time(void) { return sw_scene_find("vortex")->duration; }
-static double l2_ratio1(void) { return page_ratio("02-euler.lesson", "Measure the order", NULL, 1); }
-static double l2_ratio2(void) { return page_ratio("02-euler.lesson", "Measure the order", NULL, 2); }
-static double l2_ratio3(void) { return page_ratio("02-euler.lesson", "Measure the order", NULL, 3); }
-static double l2_err(double dt) { return page_error("02-euler.lesson", "Measure the order", "euler", dt); }
+static double l2_ratio1(void) { return page_ratio(L2, "Measure the order", NULL, 1); }
+static double l2_ratio2(void) { return page_ratio(L2, "Measure the order", NULL, 2); }
+static double l2_ratio3(void) { return page_ratio(L2, "Measure the order", NULL, 3); }
+static double l2_err(double dt) { return page_error(L2, "Measure the order", "euler", dt); }
 static double l2_err05(void) { return l2_err(0.05); }
 static double l2_err025(void) { return l2_err(0.025); }
 static double l2_err0125(void) { return l2_err(0.0125); }
@@ -386,7 +401,7 @@ static double l3_miss(void)
 {
     sw_runner r;
     sw_app a;
-    lesson_page(&r, &a, "03-particles-with-mass.lesson", "Euler in phase space");
+    lesson_page(&r, &a, L3, "Euler in phase space");
     steps_to(&a.sims[0], 2.0);
     double e = sw_app_error(&a, 0);
     page_free(&r, &a);
@@ -454,7 +469,7 @@ static double l4_perfect(void) { return bounce_height("n=1 e=1") / 4; }
 static double l4_dead(void) { return bounce_height("n=1 e=0"); }
 static double l4_e_height(void) { return 4 * l4_e(); }
 static double l4_e_squared(void) { return l4_e() * l4_e(); }
-static double l4_ratio(void) { return page_ratio("04-forces.lesson", "A bounce breaks the order", NULL, 1); }
+static double l4_ratio(void) { return page_ratio(L4, "A bounce breaks the order", NULL, 1); }
 static double l4_smooth_ratio(void) { return pow(2, order_by_halving("projectile", NULL, "rk4", 0.05)); }
 static double l4_report_time(void) { return sw_scene_find("bounce")->duration; }
 
@@ -514,9 +529,9 @@ static double l5_wdt(void) { return l5_stiff_omega() * 0.005; }
 
 /* ---- lesson 6 ---------------------------------------------------------- */
 
-static double l6_ratio_mid(void) { return page_ratio("06-runge-kutta.lesson", "Midpoint is second order", NULL, 1); }
-static double l6_ratio_rk4(void) { return page_ratio("06-runge-kutta.lesson", "RK4", "rk4", 1); }
-static double l6_err(const char *m, double dt) { return page_error("06-runge-kutta.lesson", "Error against cost", m, dt); }
+static double l6_ratio_mid(void) { return page_ratio(L6, "Midpoint is second order", NULL, 1); }
+static double l6_ratio_rk4(void) { return page_ratio(L6, "RK4", "rk4", 1); }
+static double l6_err(const char *m, double dt) { return page_error(L6, "Error against cost", m, dt); }
 static double l6_err_euler(void) { return l6_err("euler", 0.0125); }
 static double l6_err_mid(void) { return l6_err("midpoint", 0.025); }
 static double l6_err_rk4(void) { return l6_err("rk4", 0.05); }
@@ -746,7 +761,7 @@ static double l9_rk45_order(void) { return method("rk45")->order; }
 
 static double l10_ratio(const char *m)
 {
-    return page_ratio("10-homework.lesson", "Check your order", m, 1);
+    return page_ratio(L10, "Check your order", m, 1);
 }
 static double l10_ratio_mid(void) { return l10_ratio("midpoint"); }
 static double l10_ratio_rk4(void) { return l10_ratio("rk4"); }
@@ -963,17 +978,17 @@ static double key_euler(void) { return key_of("euler"); }
 static double key_rk4(void) { return key_of("rk4"); }
 static double key_rk45(void) { return key_of("rk45"); }
 
-static double l2_dt_plus2(void) { return page_dt_after(L2_FILE, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
-static double l5_dt_minus3(void) { return page_dt_after(L5_FILE, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
-static double l7_dt_plus3(void) { return page_dt_after(L7_FILE, "Stiff: a slow swing and a fast stretch", SW_ACT_DT_DOUBLE, 3); }
-static double l8_dt_minus2(void) { return page_dt_after(L8_FILE, "RK4 leaks energy", SW_ACT_DT_HALVE, 2); }
-static double l9_dt_plus3(void) { return page_dt_after(L9_FILE, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3); }
+static double l2_dt_plus2(void) { return page_dt_after(L2, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
+static double l5_dt_minus3(void) { return page_dt_after(L5, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
+static double l7_dt_plus3(void) { return page_dt_after(L7, "Stiff: a slow swing and a fast stretch", SW_ACT_DT_DOUBLE, 3); }
+static double l8_dt_minus2(void) { return page_dt_after(L8, "RK4 leaks energy", SW_ACT_DT_HALVE, 2); }
+static double l9_dt_plus3(void) { return page_dt_after(L9, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3); }
 /* RK4 on the parabola (no drag): the status line's error at t = 2. */
 static double l4_parabola_error(void)
 {
     sw_runner r;
     sw_app a;
-    lesson_page(&r, &a, L4_FILE, "Gravity");
+    lesson_page(&r, &a, L4, "Gravity");
     steps_to(&a.sims[0], 2.0);
     double e = sw_app_error(&a, 0);
     page_free(&r, &a);
@@ -1139,21 +1154,6 @@ typedef struct claim {
     double (*formula)(void); /* a formula claim: the formula's value at the lesson's parameters */
 } claim;
 
-#define L1 "lessons/01-flow-fields.lesson"
-#define L2 "lessons/02-euler.lesson"
-#define L3 "lessons/03-particles-with-mass.lesson"
-#define L4 "lessons/04-forces.lesson"
-#define L5 "lessons/05-springs.lesson"
-#define L6 "lessons/06-runge-kutta.lesson"
-#define L7 "lessons/07-implicit.lesson"
-#define L8 "lessons/08-energy-orbits.lesson"
-#define L9 "lessons/09-adaptive.lesson"
-#define L10 "lessons/10-homework.lesson"
-#define GUIDE "lessons/README.md"
-#define README "README.md"
-#define MAN "docs/stepwise.1"
-#define STAB "docs/stability.md"
-#define INTEGRATORS "src/engine/integrators.c"
 
 /* Common reasons. */
 #define R_ROUND "written to its last digit"

@@ -357,10 +357,11 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else
             snprintf(a->message, sizeof a->message, "compare off");
         return 1;
-    case SW_ACT_GHOST:
+    case SW_ACT_GHOST: {
         sw_app_set_ghost(a, !a->ghost);
-        if (a->ghost && (!a->have_truth || a->truth.source == SW_TRUTH_NONE))
-            snprintf(a->message, sizeof a->message, "no ghost: %s", a->have_truth ? a->truth.why : "no truth");
+        char why[SW_ERRLEN];
+        if (a->ghost && *sw_app_truth_why(a, why, sizeof why))
+            snprintf(a->message, sizeof a->message, "no ghost: %s", why);
         else if (!a->ghost)
             snprintf(a->message, sizeof a->message, "ghost off");
         else if (a->truth.source == SW_TRUTH_EXACT)
@@ -368,6 +369,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else
             snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
         return 1;
+    }
     case SW_ACT_TRAILS:
         a->trails = !a->trails;
         return 1;

@@ -92,6 +92,8 @@ typedef struct sw_app {
     /* the truth for the scene on screen: the ghost and every error */
     sw_truth truth;
     int have_truth;
+    int truth_live;             /* the truth can follow the run live (a reference within budget) */
+    double truth_cost;          /* a reference run's cost per report time (0: closed form) */
     double *truth_report;       /* the true state at the report time, once asked for */
     int have_truth_report;
     /* live error measurement at the scene's report time */
@@ -167,6 +169,8 @@ void sw_app_record_stop(sw_app *a);
 
 /* (measure.c) Rebuild the truth for the app's scene and parameters. */
 void sw_app_truth_reset(sw_app *a);
+/* (measure.c) Why there is no ghost or error here, into buf ("" when there is). */
+const char *sw_app_truth_why(const sw_app *a, char *buf, size_t len);
 /* (measure.c) After a dt change: the errors at the report time at both
  * steps, their ratio in a->error_ratio only when it can be read as an order
  * (else NaN), and a message saying which, or why not. */

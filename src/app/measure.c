@@ -13,8 +13,9 @@
 
 #include "stepwise/stepwise.h"
 
-/* Largest headless measurement run (state components × steps) on a key press. */
-#define MEASURE_BUDGET 4e7
+/* Largest headless measurement run on a key press: state components ×
+ * derivative evaluations, as SW_WORK_KEY. */
+#define MEASURE_BUDGET SW_WORK_KEY
 
 void sw_app_truth_reset(sw_app *a)
 {
@@ -27,26 +28,48 @@ void sw_app_truth_reset(sw_app *a)
     free(a->truth_report);
     a->truth_report = NULL;
     char err[SW_ERRLEN];
-    if (a->scene && sw_truth_init(&a->truth, a->scene, a->p, err, sizeof err) == SW_OK)
+    a->truth_live = 0;
+    if (a->scene && sw_truth_init(&a->truth, a->scene, a->p, err, sizeof err) == SW_OK) {
         a->have_truth = 1;
+        /* a reference run follows the run on screen only where it keeps up */
+        a->truth_cost = sw_truth_reference_cost(&a->truth, a->scene->duration);
+        a->truth_live = a->truth_cost / a->scene->duration <= SW_WORK_LIVE_PER_S;
+    }
+}
+
+/* Why the ghost or the error is missing, for messages. */
+const char *sw_app_truth_why(const sw_app *a, char *buf, size_t len)
+{
+    if (!a->have_truth)
+        snprintf(buf, len, "no truth for this scene");
+    else if (a->truth.source == SW_TRUTH_NONE)
+        snprintf(buf, len, "%s", a->truth.why);
+    else if (!a->truth_live)
+        snprintf(buf, len, "a reference run for these parameters would cost %.2g state evaluations per "
+                 "simulated second, more than the %.0e a live run may spend", a->truth_cost / a->scene->duration,
+                 SW_WORK_LIVE_PER_S);
+    else
+        buf[0] = '\0';
+    return buf;
 }
 
 const double *sw_app_ghost(sw_app *a)
 {
-    return a->have_truth ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
+    return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
 double sw_app_error(sw_app *a, int i)
 {
     const sw_sim *s = &a->sims[i];
-    const double *g = s->blown || !a->have_truth ? NULL : sw_truth_at(&a->truth, s->t);
+    const double *g = s->blown || !a->have_truth || !a->truth_live ? NULL : sw_truth_at(&a->truth, s->t);
     return g ? sw_truth_error(s->sys.ode->dim, s->sys.y, g) : NAN;
 }
 
-/* The true state at the report time, computed once per scene. */
+/* The true state at the report time, computed once per scene, within the
+ * key-press budget. */
 static const double *truth_report(sw_app *a)
 {
-    if (!a->have_truth_report && a->have_truth) {
+    if (!a->have_truth_report && a->have_truth && a->truth_cost <= SW_WORK_KEY) {
         int dim = a->truth.sys.ode->dim;
         a->truth_report = malloc((size_t)dim * sizeof *a->truth_report);
         if (a->truth_report && sw_truth_state(a->scene, a->p, a->scene->duration, a->truth_report) == 0)
@@ -108,9 +131,20 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     double ratio = big / small, T = a->scene->duration;
     a->error_ratio = NAN;
     if (!isfinite(ratio) || !(small > 0)) {
-        snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt,
-                 isnan(e_new) || isnan(e_old) ? "no error to compare (a run blew up, or no truth here)"
-                                               : "the error is zero at one step: no ratio");
+        char why[SW_ERRLEN];
+        double dim = a->sims[0].sys.ode->dim, cost = dim * (T / fmin(old_dt, a->dt)) * (m->evals > 0 ? m->evals : 1);
+        if (a->have_truth && a->truth_cost > SW_WORK_KEY)
+            snprintf(why, sizeof why, "no error measured: the reference to t=%.3g would cost %.2g state "
+                     "evaluations, over the %.0e a key press may spend", T, a->truth_cost, SW_WORK_KEY);
+        else if (cost > MEASURE_BUDGET)
+            snprintf(why, sizeof why, "no error measured: the run to t=%.3g would cost %.2g state evaluations, "
+                     "over the %.0e a key press may spend", T, cost, MEASURE_BUDGET);
+        else if (isnan(e_new) || isnan(e_old))
+            snprintf(why, sizeof why, "no error to compare (%s)",
+                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, why, sizeof why));
+        else
+            snprintf(why, sizeof why, "the error is zero at one step: no ratio");
+        snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt, why);
         return;
     }
     /* An order can be read from the ratio only where both runs are in the

@@ -72,6 +72,23 @@ static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded,
         snprintf(buf, len, "%.4g", stiff * dt);
 }
 
+/* Refuse a report above the work budget before any run starts. */
+static int within_budget(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
+{
+    sw_stability_config cfg;
+    sw_stability_config_default(&cfg);
+    double cost = 0;
+    for (int i = 0; i < nmethods; i++)
+        if (!(methods[i]->flags & SW_ADAPTIVE))
+            cost += sw_stability_cost(sc, p, methods[i], &cfg);
+    if (cost <= SW_WORK_REPORT)
+        return 1;
+    sw_cli_error("stability on %s would cost about %.2g state evaluations (%d method%s), over the budget of "
+                 "%.0e; use fewer particles or pick methods with --integrators", sc->name, cost, nmethods,
+                 nmethods == 1 ? "" : "s", SW_WORK_REPORT);
+    return 0;
+}
+
 /* One scene: a row per method. Returns 0, or 1 when a run failed to start. */
 static int report(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods,
                   int markdown)
@@ -227,6 +244,8 @@ int sw_cmd_stability(int argc, char **argv)
         if (sw_system_build(&sys, opts.scene, opts.p, err, sizeof err) != SW_OK)
             return sw_cli_error("%s", err);
         sw_system_free(&sys);
+        if (!within_budget(opts.scene, opts.p, methods, nmethods))
+            return SW_EXIT_USAGE;
         if (report(opts.scene, opts.p, methods, nmethods, markdown))
             status = SW_EXIT_FAIL;
     } else {

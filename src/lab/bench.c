@@ -139,9 +139,21 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
     } else if (sc->reference) {
         /* The reference, and a 10x looser run whose distance from it bounds
          * the reference's own error from above (DP5's global error scales
-         * roughly linearly with the tolerance). */
+         * roughly linearly with the tolerance); both within the budget. */
         r->source = SW_BENCH_REFERENCE;
-        rc = reference_run(r, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->truth, work, err, errlen);
+        sw_truth tr;
+        double cost = INFINITY;
+        if (sw_truth_init(&tr, sc, r->p, err, errlen) == SW_OK) {
+            cost = 2.2 * sw_truth_reference_cost(&tr, r->t_report);
+            sw_truth_free(&tr);
+        }
+        if (!(cost <= SW_WORK_REPORT)) {
+            snprintf(err, errlen, "%s: the reference runs to t = %g would cost about %.2g state evaluations, over "
+                     "the budget of %.0e; use fewer particles", sc->name, r->t_report, cost, SW_WORK_REPORT);
+            rc = SW_EINVAL;
+        } else {
+            rc = reference_run(r, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->truth, work, err, errlen);
+        }
         if (rc == SW_OK)
             rc = reference_run(r, 10 * SW_TRUTH_RTOL, 10 * SW_TRUTH_ATOL, work + r->dim, work, err, errlen);
         if (rc == SW_OK)
@@ -416,7 +428,20 @@ int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p
 {
     sw_bench_config c;
     sw_bench_config_quick(&c);
-    int rc = sw_bench_init(r, sc, p, err, errlen);
+    /* Up front: the two reference runs and, per method, a sweep whose runs
+     * double in cost to max_work (under 2·max_work each). */
+    sw_truth tr;
+    int rc = sw_truth_init(&tr, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sw_integrator_count();
+    sw_truth_free(&tr);
+    if (cost > 4 * SW_WORK_KEY) {
+        snprintf(err, errlen, "the sweep would cost about %.2g state evaluations, over the %.0e the plot may "
+                 "spend (fewer particles, or stepwise bench in a shell)", cost, 4 * SW_WORK_KEY);
+        return SW_EINVAL;
+    }
+    rc = sw_bench_init(r, sc, p, err, errlen);
     if (rc != SW_OK)
         return rc;
     rc = sw_bench_sweep_all(r, NULL, 0, &c, err, errlen);

@@ -133,9 +133,11 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
 }
 
 /* The scene's start, and where it has a resting state the same motion shrunk
- * ten-thousandfold towards it (y_rest + 1e-4·(y0 - y_rest)): in that copy
+ * ten-thousandfold towards it, y_rest + 1e-4·(y0 - y_rest), plus a tenth of
+ * that in a fixed pseudo-random pattern over every component: in that copy
  * nothing nonlinear (a spring swinging through its anchor) can cap a growing
- * mode before it shows. Unstable when either run is. */
+ * mode before it shows, and no mode starts unexcited (a chain plucked in
+ * one bead barely moves some of its modes). Unstable when either run is. */
 typedef struct starts {
     double *small;      /* NULL: no resting state */
 } starts;
@@ -151,8 +153,15 @@ static void starts_init(starts *st, const sw_scene *sc, const double *p)
     double *rest = malloc((size_t)2 * dim * sizeof *rest);
     if (rest && sw_truth_resting_state(&sys, rest, NULL) == 0) {
         st->small = rest + dim;
+        double span = 0;
         for (int i = 0; i < dim; i++)
-            st->small[i] = rest[i] + SW_STABILITY_SHRINK * (sys.y[i] - rest[i]);
+            span = fmax(span, fabs(sys.y[i] - rest[i]));
+        unsigned long long z = 0x9E3779B97F4A7C15ull;
+        for (int i = 0; i < dim; i++) {
+            z = z * 6364136223846793005ull + 1442695040888963407ull; /* Knuth's LCG */
+            double noise = (double)(z >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
+            st->small[i] = rest[i] + SW_STABILITY_SHRINK * (sys.y[i] - rest[i]) + 1e-5 * span * noise;
+        }
         memmove(rest, st->small, (size_t)dim * sizeof *rest);
         st->small = rest;
     } else {
@@ -207,6 +216,30 @@ const char *sw_stability_verdict_text(int verdict)
     }
 }
 
+double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
+                         const sw_stability_config *c)
+{
+    char err[SW_ERRLEN];
+    int rc;
+    double w = start_stiffness(sc, p, err, sizeof err, &rc);
+    if (rc != SW_OK)
+        return 0;
+    double duration = probe_time(sc, w, c), cost = 0;
+    sw_truth tr;
+    if (sw_truth_init(&tr, sc, p, err, sizeof err) == SW_OK) {
+        cost += sw_truth_reference_cost(&tr, duration);
+        sw_system *sys = &tr.sys;
+        double dim = sys->ode->dim, evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
+        double lo = w > 0 && isfinite(w) ? c->low / w : c->low * sc->dt;
+        double near = w > 0 && isfinite(w) ? 1.0 / w : sc->dt;
+        double steps_lo = fmin((double)c->max_steps, duration / fmax(lo, SW_DT_MIN));
+        double steps_near = fmin((double)c->max_steps, duration / near);
+        cost += 2 * dim * evals * (steps_lo + 25 * steps_near);
+        sw_truth_free(&tr);
+    }
+    return cost;
+}
+
 static int stable(int verdict) { return verdict == SW_PROBE_STABLE || verdict == SW_PROBE_DECAYED; }
 
 /* Theory against measurement, and why they differ where they do. */
@@ -231,17 +264,24 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
      * show over a probe, or the mode that grows is never excited */
     sw_system sys;
     char err[SW_ERRLEN];
-    double rho = NAN;
+    double rho = NAN, lam = NAN;
     if (sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK) {
         sw_spectrum sp;
+        int worst = -1;
         if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0)
-            rho = sw_truth_growth_all(m, &sp, measured, NULL);
+            rho = sw_truth_growth_all(m, &sp, measured, &worst);
+        if (worst >= 0)
+            lam = hypot(sp.mode[worst].re, sp.mode[worst].im);
         sw_system_free(&sys);
     }
     double total = pow(rho, duration / measured);
-    snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
-             "probe's %.3g s: %s", measured, m->name, rho, total, duration,
-             total < 2 ? "too slow to tell from the motion" : "the growing mode is not excited");
+    if (total < 2)
+        snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
+                 "probe's %.3g s: too slow to tell from the motion", measured, m->name, rho, total, duration);
+    else
+        snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
+                 "probe's %.3g s, in a mode (|L| = %.3g) the motion barely excites, or whose growth the "
+                 "nonlinear motion does not keep up", measured, m->name, rho, total, duration, lam);
 }
 
 int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,

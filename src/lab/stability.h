@@ -92,6 +92,13 @@ int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integra
                            const sw_stability_config *c, sw_stability_probe *out, char *err,
                            size_t errlen);
 
+/* What sw_stability_find would cost, in state components × derivative
+ * evaluations (see SW_WORK_REPORT): the reference run for the theory, the
+ * probe at the smallest step (with its small copy) and about 25 probes near
+ * the limit. An estimate, for refusing before starting. */
+double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
+                         const sw_stability_config *c);
+
 /* Theory and measurement of m's largest stable step on sc (theory alone
  * where growth cannot be measured). 0, or SW_EINVAL (an adaptive method, a
  * method that cannot step the scene) with err filled. */

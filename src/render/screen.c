@@ -250,7 +250,7 @@ static void meter(sw_app *a, char *buf, size_t len, int *style)
         snprintf(lim, sizeof lim, "stable at any dt");
     else if (m.limit > 0) {
         snprintf(lim, sizeof lim, "limit %.3g", m.stiff * m.limit);
-        int fill = (int)fmin(10.0, fmax(0.0, 10.0 * a->dt / m.limit));
+        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
         bar[0] = '[';
         for (int i = 0; i < 10; i++)
             bar[i + 1] = i < fill ? '#' : '.';

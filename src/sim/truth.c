@@ -83,6 +83,29 @@ static int start_reference(sw_truth *tr)
     return 0;
 }
 
+double sw_truth_reference_cost(sw_truth *tr, double t_end)
+{
+    if (tr->source != SW_TRUTH_REFERENCE)
+        return 0;
+    sw_sim pilot;
+    char err[SW_ERRLEN];
+    const sw_scene *sc = tr->sys.scene;
+    if (sw_sim_init(&pilot, sc, tr->sys.p, sw_truth_reference_method(), sc->dt, err, sizeof err) != SW_OK)
+        return INFINITY;
+    sw_sim_set_tolerances(&pilot, SW_TRUTH_RTOL, SW_TRUTH_ATOL);
+    int k;
+    for (k = 0; k < 20 && pilot.t < t_end; k++)
+        if (sw_sim_step_until(&pilot, t_end))
+            break;
+    double cost = INFINITY;
+    if (!pilot.blown && pilot.t > 0) {
+        double per_time = (double)sw_sim_evals(&pilot) / pilot.t;
+        cost = per_time * t_end * (double)pilot.sys.ode->dim;
+    }
+    sw_sim_free(&pilot);
+    return cost;
+}
+
 const double *sw_truth_at(sw_truth *tr, double t)
 {
     if (tr->t == t)

@@ -18,6 +18,16 @@
 #define SW_TRUTH_RTOL 1e-12
 #define SW_TRUTH_ATOL 1e-14
 
+/* Work budgets, in state components × derivative evaluations (about 2.5e8
+ * of them a second here for particles, 5e7 for the gyre's trigonometry):
+ * what a key press may spend measuring (about half a second), what a live
+ * reference run may spend per simulated second, and what a report
+ * (`stability`, the `w` plot) may spend before it starts. Work above a
+ * budget is refused up front with the estimate in the message. */
+#define SW_WORK_KEY 1e8
+#define SW_WORK_LIVE_PER_S 5e7
+#define SW_WORK_REPORT 1e10
+
 /* ---- the true state ------------------------------------------------------ */
 
 /* The method of the reference runs: the most accurate built-in adaptive one. */
@@ -49,6 +59,13 @@ typedef struct sw_truth {
  * 0, or a status with err filled (the scene does not build, no memory). */
 int sw_truth_init(sw_truth *tr, const sw_scene *sc, const double *p, char *err, size_t errlen);
 void sw_truth_free(sw_truth *tr);
+/* What a reference run to t_end would cost, in state components times
+ * derivative evaluations (dim × evaluations): measured on a pilot of up to
+ * 20 accepted steps and extrapolated by their mean step. 0 for a closed
+ * form, INFINITY when the pilot fails. Callers refuse work above a budget
+ * with this number in the message. */
+double sw_truth_reference_cost(sw_truth *tr, double t_end);
+
 /* The true state at time t >= 0, or NULL when there is none (source NONE,
  * or the reference run failed). A reference run steps forward to t and is
  * restarted when t goes back; the pointer is valid until the next call. */

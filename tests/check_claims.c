@@ -765,6 +765,22 @@ static double l10_ratio(const char *m)
 }
 static double l10_ratio_mid(void) { return l10_ratio("midpoint"); }
 static double l10_ratio_rk4(void) { return l10_ratio("rk4"); }
+static double l10_ratio_euler1(void) { return page_ratio(L10, "Check your order", "euler", 1); }
+static double l10_ratio_euler2(void) { return page_ratio(L10, "Check your order", "euler", 2); }
+static double l10_ratio_euler5(void) { return page_ratio(L10, "Check your order", "euler", 5); }
+/* Euler's amplitude error over the run, e^(ω²ΔtT/2) - 1: its ratio when Δt
+ * halves, at the exponent the page's spring has at Δt = 0.02. */
+static double l10_exponent(void)
+{
+    return pow(spectrum0("spring", NULL).largest, 2) * 0.02 * sw_scene_find("spring")->duration / 2;
+}
+static double l10_ratio_formula(void)
+{
+    double x = l10_exponent();
+    return (exp(x) - 1) / (exp(x / 2) - 1);
+}
+static double l10_duration(void) { return sw_scene_find("spring")->duration; }
+
 /* Midpoint against Heun, the largest state difference over the run. */
 static double mid_vs_heun(const char *scene)
 {
@@ -1358,6 +1374,12 @@ static const claim claims[] = {
     /* lesson 10 */
     { L10, "A correct midpoint gives a ratio near {4}, RK4 near 16", l10_ratio_mid, ABS, 0.5, "the lessons' tolerance for 4", NULL },
     { L10, "A correct midpoint gives a ratio near 4, RK4 near {16}", l10_ratio_rk4, ABS, 2, "the lessons' tolerance for 16", NULL },
+    { L10, "A first-order method shows {2.6}, then 2.3", l10_ratio_euler1, ROUNDED, 0, "the ratio the status line shows for euler, to the text's digits", NULL },
+    { L10, "A first-order method shows 2.6, then {2.3}", l10_ratio_euler2, ROUNDED, 0, "as above, halving again", NULL },
+    { L10, "before it settles near {2}: over the", l10_ratio_euler5, ABS, 0.1, "the fifth halving, from Δt = 0.00125", NULL },
+    { L10, "Euler's amplitude error grows like e^(ω²ΔtT/2) - 1", l10_ratio_euler1, REL, 0.01, "the ratio (e^x - 1)/(e^(x/2) - 1) at x = ω²ΔtT/2 = 1 against the measured one", l10_ratio_formula },
+    { L10, "(it is {1} at Δt = 0.02)", l10_exponent, ABS, 1e-9, "ω²ΔtT/2 = 10·0.02·10/2, to rounding", NULL },
+    { L10, "over the {10} s run", l10_duration, EXACT, 0, "the spring's report time", NULL },
     { L10, "what does an error ratio of {2} say about the order?", l2_ratio2, ABS, 0.3, "lesson 2's measurement, with the lessons' tolerance for 2", NULL },
     { L10, "midpoint and Heun agree to {rounding}", l10_spring_same, ATMOST, 0, "1e-12 over the report time", NULL },
     { L10, "Grade on the chain: on the one-dimensional spring", l10_chain_differ, ATLEAST, 0, "on the chain midpoint and Heun differ by more than check's tolerance", check_tolerance },

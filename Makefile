@@ -35,8 +35,9 @@ CURSES_LIBS   = $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncurses
 CHECK_CFLAGS  = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 
-# The engine library: every layer below the front ends (docs/architecture.md).
-# Only tui/ includes ncurses; cli/ and tui/ are linked into the program only.
+# The engine library: every layer below the front ends (docs/architecture.md),
+# util/ included. Only tui/ includes ncurses; cli/ and tui/ are linked into
+# the program only.
 TUI_SRC  = $(wildcard src/tui/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
 LIB_SRC  = $(filter-out $(TUI_SRC) $(CLI_SRC),$(wildcard src/*/*.c))
@@ -51,7 +52,7 @@ BIN      = stepwise
 TESTBIN  = $(BUILD)/check_stepwise
 BENCHBIN = $(BUILD)/bench_engine
 
-.PHONY: all deps run test unit e2e sanitize bench clean install uninstall plugin-example fuzz
+.PHONY: all deps run test unit e2e layers sanitize bench clean install uninstall plugin-example fuzz
 
 all: $(BIN) $(LIB)
 
@@ -91,7 +92,13 @@ unit: $(TESTBIN)
 e2e: $(BIN) $(BENCHBIN)
 	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
-test: $(BIN) $(TESTBIN) $(BENCHBIN)
+# Includes point down the layers (docs/architecture.md); the check proves
+# it can fail before it runs on the tree.
+layers:
+	@sh tests/layers.sh --self-test
+	@sh tests/layers.sh
+
+test: layers $(BIN) $(TESTBIN) $(BENCHBIN)
 	$(TESTBIN)
 	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 

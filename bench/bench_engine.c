@@ -16,7 +16,9 @@
 
 #include "engine/stepper.h"
 #include "stepwise/sim.h"
+#include "render/camera.h"
 #include "render/canvas.h"
+#include "render/draw.h"
 
 /* ---- allocation counting ------------------------------------------------- */
 

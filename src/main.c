@@ -1,5 +1,5 @@
 /* stepwise: the command line. Dispatches subcommands to the front ends in
- * src/cli/ and src/tui/; with no arguments it opens the lesson menu. */
+ * src/cli/; with no arguments it opens the lesson menu. */
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -43,15 +43,23 @@ int main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         usage(stdout);
-        return SW_EXIT_OK;
+        return sw_cli_flush_stdout();
     }
     if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
         printf("stepwise %s\n", SW_VERSION);
-        return SW_EXIT_OK;
+        return sw_cli_flush_stdout();
     }
     for (int i = 0; i < NCOMMANDS; i++)
-        if (strcmp(cmd, commands[i].name) == 0)
-            return commands[i].run(argc - 1, argv + 1);
+        if (strcmp(cmd, commands[i].name) == 0) {
+            int rc = commands[i].run(argc - 1, argv + 1);
+            /* Output that did not reach its destination is an error, whatever
+             * the command (unless it has already failed and said why). */
+            if (rc == SW_EXIT_USAGE) {
+                fflush(stdout);
+                return rc;
+            }
+            return sw_cli_flush_stdout() != SW_EXIT_OK ? SW_EXIT_USAGE : rc;
+        }
     if (cmd[0] == '-')
         sw_cli_error("unknown option '%.40s'; try 'stepwise --help'", cmd);
     else

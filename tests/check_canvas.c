@@ -11,7 +11,11 @@
 
 #include "stepwise/stepwise.h"
 #include "stepwise/scene.h"
+#include "render/camera.h"
 #include "render/canvas.h"
+#include "render/draw.h"
+#include "render/trails.h"
+#include "util/utf8.h"
 #include "alloc_count.h"
 
 static char text[4096];

@@ -260,13 +260,14 @@ static double page_error(const char *file, const char *title, const char *m, dou
     return e;
 }
 
-/* The digit key that picks a method, from the app's key table; NaN: none. */
+/* The digit key that picks a method, from the controls' key table; NaN: none. */
 static double key_of(const char *name)
 {
     for (int d = 0; d <= 9; d++) {
-        const sw_keybinding *b = sw_key_lookup('0' + d, 0, 1);
-        if (b && b->action == SW_ACT_PICK_METHOD && sw_integrator_at(b->arg - 1) &&
-            strcmp(sw_integrator_at(b->arg - 1)->name, name) == 0)
+        const sw_control *control;
+        int arg;
+        if (sw_key_lookup('0' + d, SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
+            sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, name) == 0)
             return d;
     }
     return NAN;

@@ -1,5 +1,8 @@
 /* Replays every seed and every past crash under tests/fuzz/NAME/ through
- * the fuzz targets: a crash found once stays a regression test. */
+ * the fuzz targets: a crash found once stays a regression test, and each
+ * file's verdict (accepted whole, or refused) must be the one pinned in
+ * tests/data/fuzz_verdicts.txt ("TARGET FILE accept|refuse"), so a parser
+ * that starts refusing a good lesson or accepting a broken trace fails. */
 #include <check.h>
 #include <dirent.h>
 #include <stdio.h>
@@ -8,8 +11,25 @@
 
 #include "fuzz_targets.h"
 
-static int replay(const char *dir, void (*target)(const uint8_t *, size_t))
+/* The pinned verdict of TARGET/FILE: 1 accept, 0 refuse, -1 not listed. */
+static int pinned(const char *target, const char *file)
 {
+    FILE *f = fopen("tests/data/fuzz_verdicts.txt", "r");
+    ck_assert_msg(f != NULL, "no tests/data/fuzz_verdicts.txt (run the tests from the repository root)");
+    char line[512], t[64], name[300], verdict[16];
+    int found = -1;
+    while (fgets(line, sizeof line, f))
+        if (line[0] != '#' && sscanf(line, "%63s %299s %15s", t, name, verdict) == 3 &&
+            strcmp(t, target) == 0 && strcmp(name, file) == 0)
+            found = strcmp(verdict, "accept") == 0;
+    fclose(f);
+    return found;
+}
+
+static int replay(const char *target, int (*run)(const uint8_t *, size_t))
+{
+    char dir[128];
+    snprintf(dir, sizeof dir, "tests/fuzz/%s", target);
     DIR *d = opendir(dir);
     ck_assert_msg(d != NULL, "no corpus directory %s (run the tests from the repository root)", dir);
     int n = 0;
@@ -23,18 +43,22 @@ static int replay(const char *dir, void (*target)(const uint8_t *, size_t))
         static uint8_t buf[1 << 20];
         size_t len = fread(buf, 1, sizeof buf, f);
         fclose(f);
-        target(buf, len);
+        int want = pinned(target, e->d_name), got = run(buf, len);
+        ck_assert_msg(want >= 0, "%s: no verdict in tests/data/fuzz_verdicts.txt (add '%s %s accept|refuse')",
+                      path, target, e->d_name);
+        ck_assert_msg(got == want, "%s: %s, pinned to %s", path, got ? "accepted" : "refused",
+                      want ? "accept" : "refuse");
         n++;
     }
     closedir(d);
     return n;
 }
 
-START_TEST(corpus_lesson) { ck_assert_int_gt(replay("tests/fuzz/lesson", sw_fuzz_lesson), 3); }
+START_TEST(corpus_lesson) { ck_assert_int_gt(replay("lesson", sw_fuzz_lesson), 3); }
 END_TEST
-START_TEST(corpus_trace) { ck_assert_int_gt(replay("tests/fuzz/trace", sw_fuzz_trace), 3); }
+START_TEST(corpus_trace) { ck_assert_int_gt(replay("trace", sw_fuzz_trace), 3); }
 END_TEST
-START_TEST(corpus_parse) { ck_assert_int_gt(replay("tests/fuzz/parse", sw_fuzz_parse), 3); }
+START_TEST(corpus_parse) { ck_assert_int_gt(replay("parse", sw_fuzz_parse), 3); }
 END_TEST
 
 Suite *make_fuzz_corpus_suite(void);

@@ -1,5 +1,5 @@
 /* Lesson files: every course lesson parses; every malformed file in
- * tests/lessons_bad/ fails with the expected FILE:LINE:COL; goals, answers
+ * tests/data/lessons_bad/ fails with the expected FILE:LINE:COL; goals, answers
  * and observations behave as documented; hostile bytes give errors, never
  * crashes. Tests run from the repository root. */
 #include <check.h>
@@ -14,7 +14,7 @@
 #include "lesson/lesson.h"
 
 #define LESSONS_DIR "lessons"
-#define BAD_DIR "tests/lessons_bad"
+#define BAD_DIR "tests/data/lessons_bad"
 
 /* Parse text as a lesson named "t.lesson"; returns the status. */
 static int parse(const char *text, sw_lesson *l, char *err, size_t errlen)
@@ -333,21 +333,21 @@ END_TEST
 
 START_TEST(lock_names_and_keys)
 {
-    ck_assert_uint_eq(sw_lesson_key_lock('i'), SW_LOCK_INTEGRATOR);
-    ck_assert_uint_eq(sw_lesson_key_lock('7'), SW_LOCK_INTEGRATOR);
-    ck_assert_uint_eq(sw_lesson_key_lock('\t'), SW_LOCK_INTEGRATOR);
-    ck_assert_uint_eq(sw_lesson_key_lock('='), SW_LOCK_DT);
-    ck_assert_uint_eq(sw_lesson_key_lock(' '), SW_LOCK_RUN);
-    ck_assert_uint_eq(sw_lesson_key_lock('R'), SW_LOCK_RECORD);
-    ck_assert_uint_eq(sw_lesson_key_lock('p'), SW_LOCK_PARAMS);
+    ck_assert_uint_eq(sw_lock_of_key('i'), SW_LOCK_INTEGRATOR);
+    ck_assert_uint_eq(sw_lock_of_key('7'), SW_LOCK_INTEGRATOR);
+    ck_assert_uint_eq(sw_lock_of_key(SW_KEY_TAB), SW_LOCK_INTEGRATOR);
+    ck_assert_uint_eq(sw_lock_of_key('='), SW_LOCK_DT);
+    ck_assert_uint_eq(sw_lock_of_key(' '), SW_LOCK_RUN);
+    ck_assert_uint_eq(sw_lock_of_key('R'), SW_LOCK_RECORD);
+    ck_assert_uint_eq(sw_lock_of_key('p'), SW_LOCK_PARAMS);
     /* Navigation, hints, help and quit are never locked. */
-    ck_assert_uint_eq(sw_lesson_key_lock('n'), 0);
-    ck_assert_uint_eq(sw_lesson_key_lock('N'), 0);
-    ck_assert_uint_eq(sw_lesson_key_lock('h'), 0);
-    ck_assert_uint_eq(sw_lesson_key_lock('q'), 0);
-    ck_assert_uint_eq(sw_lesson_key_lock('?'), 0);
-    ck_assert_str_eq(sw_lesson_lock_name(SW_LOCK_GRAPH), "graph");
-    ck_assert_ptr_null(sw_lesson_lock_name(3));
+    ck_assert_uint_eq(sw_lock_of_key('n'), 0);
+    ck_assert_uint_eq(sw_lock_of_key('N'), 0);
+    ck_assert_uint_eq(sw_lock_of_key('h'), 0);
+    ck_assert_uint_eq(sw_lock_of_key('q'), 0);
+    ck_assert_uint_eq(sw_lock_of_key('?'), 0);
+    ck_assert_str_eq(sw_lock_name(SW_LOCK_GRAPH), "graph");
+    ck_assert_ptr_null(sw_lock_name(3));
 
     sw_lesson l;
     char err[SW_LESSON_ERRLEN];

@@ -1,5 +1,5 @@
 /* Every lesson, driven headless page by page with the keys a student would
- * press (tests/lesson_drives/NAME.drive): proves each goal reachable and each
+ * press (tests/data/lesson_drives/NAME.drive): proves each goal reachable and each
  * page reachable through the same runner and app the terminal uses.
  *
  * A drive file has one line per page, "page N: ACTIONS", ACTIONS being keys
@@ -16,19 +16,11 @@
 #include "app/runner.h"
 #include "stepwise/stepwise.h"
 
+/* A drive file's key: a character, or a key name (lesson/controls.h). */
 static int key_code(const char *tok)
 {
-    static const struct { const char *name; int key; } named[] = {
-        { "space", ' ' }, { "tab", SW_KEY_TAB }, { "btab", SW_KEY_BTAB }, { "pgdn", SW_KEY_PGDN },
-        { "pgup", SW_KEY_PGUP }, { "up", SW_KEY_UP }, { "down", SW_KEY_DOWN }, { "left", SW_KEY_LEFT },
-        { "right", SW_KEY_RIGHT }, { "esc", SW_KEY_ESC },
-    };
-    if (strlen(tok) == 1)
-        return (unsigned char)tok[0];
-    for (size_t i = 0; i < sizeof named / sizeof named[0]; i++)
-        if (strcmp(tok, named[i].name) == 0)
-            return named[i].key;
-    return -1;
+    int key = sw_key_find(tok);
+    return key == SW_KEY_NONE ? -1 : key;
 }
 
 static void press(sw_runner *r, sw_app *a, int key)
@@ -71,7 +63,7 @@ static void drive(const char *lesson_file)
 {
     char lesson_path[1024], drive_path[1024], err[SW_LESSON_ERRLEN], line[2048];
     snprintf(lesson_path, sizeof lesson_path, "%s/lessons/%s", repo, lesson_file);
-    snprintf(drive_path, sizeof drive_path, "%s/tests/lesson_drives/%.*s.drive", repo,
+    snprintf(drive_path, sizeof drive_path, "%s/tests/data/lesson_drives/%.*s.drive", repo,
              (int)(strlen(lesson_file) - strlen(".lesson")), lesson_file);
     FILE *f = fopen(drive_path, "r");
     ck_assert_msg(f != NULL, "no drive script %s for lesson %s", drive_path, lesson_file);

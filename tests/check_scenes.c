@@ -13,6 +13,14 @@
 
 #define PI 3.14159265358979323846
 
+/* A built system's parameter by name (tests never rely on the order). */
+static double param(const sw_system *sys, const char *name)
+{
+    int i = sw_scene_param_index(sys->scene, name);
+    ck_assert_msg(i >= 0, "scene %s has no parameter %s", sys->scene->name, name);
+    return sys->p[i];
+}
+
 static void sim_with3(sw_sim *s, const char *scene, const char *method, double dt, const char *set1,
                       const char *set2, const char *set3)
 {
@@ -89,7 +97,7 @@ START_TEST(spring_exact_satisfies_ode)
         sw_sim s;
         sim_with(&s, "spring", "rk4", 0.01, cs[i], NULL);
         const sw_scene *sc = s.sys.scene;
-        double k = s.sys.p[0], m = s.sys.p[1], c = s.sys.p[2], h = 1e-4;
+        double k = param(&s.sys, "k"), m = param(&s.sys, "m"), c = param(&s.sys, "c"), h = 1e-4;
         for (double t = 0.3; t < 5; t += 0.7) {
             double a[4], b[4], z[4];
             sc->exact(&s.sys, t - h, a);
@@ -129,7 +137,7 @@ START_TEST(orbit_energy)
         for (int j = 0; j < 3; j++) {
             sw_sim s;
             sim_with(&s, "orbit", "verlet", 0.01, es[i], mus[j]);
-            double mu = s.sys.p[1];
+            double mu = param(&s.sys, "mu");
             ck_assert_double_eq_tol(sw_sim_energy(&s), -mu / 2, 1e-15 * fmax(1, mu) * 4);
             sw_sim_free(&s);
         }
@@ -271,7 +279,7 @@ START_TEST(parameter_ranges)
     ck_assert_ptr_nonnull(strstr(err, "whole number"));
     sw_sim s;
     sw_scene_defaults(sc, p);
-    p[4] = -2.0; /* stretch below -rest: the mass would start behind the anchor */
+    p[sw_scene_param_index(sc, "stretch")] = -2.0; /* below -rest: the mass would start behind the anchor */
     ck_assert_int_eq(sw_sim_init(&s, sc, p, sw_integrator_find("rk4"), 0.01, err, sizeof err), SW_EINVAL);
     ck_assert_ptr_nonnull(strstr(err, "rest + stretch"));
 }

@@ -182,7 +182,7 @@ START_TEST(write_then_read_bit_for_bit)
     ck_assert_double_eq(r.meta.dt, 0.01);
     ck_assert_int_eq(r.meta.spec.steps, 100);
     ck_assert_int_eq(r.meta.spec.every, 7);
-    ck_assert_double_eq(r.meta.p[0], 4.0);
+    ck_assert_double_eq(r.meta.p[sw_scene_param_index(r.meta.scene, "n")], 4.0);
     ck_assert_double_eq(r.meta.rtol, SW_RTOL_DEFAULT);
     ck_assert_msg(sw_trace_read_header(&r, err, sizeof err) == SW_OK, "%s", err);
     ck_assert_int_eq(r.ncols, 2 + 16 + 1);
@@ -226,8 +226,8 @@ START_TEST(temp_file_then_rename)
     ck_assert_int_eq(count_prefixed("t.csv.tmp."), 1);
     /* Rows are flushed as they are written: the temp file ends in a newline. */
     struct stat st;
-    ck_assert_int_eq(stat(w.tmp, &st), 0);
-    FILE *f = fopen(w.tmp, "r");
+    ck_assert_int_eq(stat(w.out.tmp, &st), 0);
+    FILE *f = fopen(w.out.tmp, "r");
     ck_assert_ptr_nonnull(f);
     fseek(f, -1, SEEK_END);
     ck_assert_int_eq(fgetc(f), '\n');

@@ -43,6 +43,9 @@ typedef struct sw_integrator {
 /* The built-in methods, in list order (positions 1..count in the UI). */
 int sw_integrator_count(void);
 const sw_integrator *sw_integrator_at(int index);
+/* The method names joined with ", " into buf (cut to len); returns the
+ * bytes written. */
+size_t sw_integrator_names(char *buf, size_t len);
 /* Look a method up by its exact name; NULL when there is none. */
 const sw_integrator *sw_integrator_find(const char *name);
 /* Register a method (a loaded plugin) after the built-ins; 0 or SW_EINVAL. */

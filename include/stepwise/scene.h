@@ -85,6 +85,11 @@ int sw_scene_count(void);
 const sw_scene *sw_scene_at(int index);
 /* Find a scene by exact name; NULL when unknown. */
 const sw_scene *sw_scene_find(const char *name);
+/* The scene names joined with ", " into buf (cut to len); returns the bytes
+ * written. For messages that say what is allowed. */
+size_t sw_scene_names(char *buf, size_t len);
+/* The same for a scene's parameter names. */
+size_t sw_scene_param_names(const sw_scene *sc, char *buf, size_t len);
 /* Index of a parameter by name, or -1. */
 int sw_scene_param_index(const sw_scene *sc, const char *name);
 /* Fill p with the defaults. */
@@ -92,7 +97,7 @@ void sw_scene_defaults(const sw_scene *sc, double *p);
 /* out (SW_MAX_PARAMS doubles) = the scene's nparams values from p, or its
  * defaults when p is NULL, then zeros, so whole arrays compare equal. */
 void sw_scene_fill(const sw_scene *sc, const double *p, double *out);
-/* Parse "NAME=VALUE" into p, checking name, number and range; 0 or SW_EINVAL
+/* Parse "NAME=VALUE" (blanks around '=' allowed) into p, checking name, number and range; 0 or SW_EINVAL
  * with a message naming what was wrong and what is allowed. */
 int sw_scene_set(const sw_scene *sc, double *p, const char *assignment, char *err, size_t errlen);
 /* Check one value against a parameter's declared range. */
@@ -103,10 +108,5 @@ int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *e
 void sw_system_free(sw_system *sys);
 /* Reset the state to the scene's initial state (rebuilds in place). */
 int sw_system_reset(sw_system *sys, char *err, size_t errlen);
-
-/* Parse a finite double in full; 0 or SW_EINVAL. Shared by every parser. */
-int sw_parse_double(const char *text, double *out);
-/* Parse a whole number in [min, max]; 0 or SW_EINVAL. */
-int sw_parse_long(const char *text, long min, long max, long *out);
 
 #endif

@@ -6,7 +6,7 @@
 #define STEPWISE_SIM_H
 
 #include <stddef.h>
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "stepwise/integrator.h"
 #include "stepwise/scene.h"
 

@@ -1,23 +1,15 @@
 /* stepwise — numerical integration of particle systems, taught in a terminal.
- * Umbrella header: version, status codes, and every public module. */
-#ifndef STEPWISE_H
-#define STEPWISE_H
+ * Umbrella header: every public module. An embedder includes this; a plugin
+ * needs only <stepwise/integrator.h> (see docs/plugins.md). */
+#ifndef STEPWISE_STEPWISE_H
+#define STEPWISE_STEPWISE_H
 
-#define SW_VERSION "0.1.0"
-
-/* Status codes returned by library calls; messages go to a caller buffer. */
-enum {
-    SW_OK = 0,
-    SW_EINVAL = -1,  /* bad argument or input: the message says what is allowed */
-    SW_ENOMEM = -2,  /* allocation failed */
-    SW_EIO = -3,     /* a file could not be read or written */
-    SW_EDIVERGED = -4 /* a step produced a non-finite or runaway state */
-};
-
-#define SW_ERRLEN 256
-
-#include "stepwise/vec2.h"
-#include "stepwise/ode.h"
-#include "stepwise/integrator.h"
+#include "stepwise/base.h"        /* version, status codes */
+#include "stepwise/ode.h"         /* the solver's view of a system */
+#include "stepwise/integrator.h"  /* the method table and the plugin description */
+#include "stepwise/flow.h"        /* first-order flow-field systems */
+#include "stepwise/particles.h"   /* particle systems and their forces */
+#include "stepwise/scene.h"       /* the scene catalog */
+#include "stepwise/sim.h"         /* a running simulation */
 
 #endif

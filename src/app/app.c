@@ -295,7 +295,8 @@ static void change_param(sw_app *a, int dir)
 
 int sw_app_apply(sw_app *a, sw_action act, int arg)
 {
-    if (act < 32 && (a->locked & (1u << act))) {
+    const sw_control *control = sw_control_of(act);
+    if (control && (a->locked & control->lock)) {
         snprintf(a->message, sizeof a->message, "'%s' is locked on this page", sw_action_name(act));
         return 0;
     }
@@ -382,6 +383,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_PANEL:
         a->panel = !a->panel;
         return 1;
+    case SW_ACT_PANEL_CLOSE:
+        a->panel = 0;
+        return 1;
     case SW_ACT_PANEL_UP:
     case SW_ACT_PANEL_DOWN: {
         int n = a->scene->nparams;
@@ -431,10 +435,12 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
 
 int sw_app_key(sw_app *a, int key, int in_lesson)
 {
-    const sw_keybinding *b = sw_key_lookup(key, a->panel, in_lesson);
-    if (!b)
+    const sw_control *c;
+    int arg;
+    unsigned contexts = SW_CTX_PLAY | (a->panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
+    if (!sw_key_lookup(key, contexts, &c, &arg))
         return 0;
-    int changed = sw_app_apply(a, b->action, b->arg);
+    int changed = sw_app_apply(a, c->action, arg);
     if (a->record_path[0] && (a->sims[0].method != a->record_method || a->dt != a->record_dt))
         sw_app_record_stop(a); /* a trace describes one method at one dt */
     return changed;

@@ -2,55 +2,20 @@
  * ghost), the clock that turns wall time into steps, and every action a key
  * can trigger. The ncurses front end, `play --frames N --ascii` and the
  * lesson drive-tests all run this same model; only drawing differs. */
-#ifndef SW_APP_H
-#define SW_APP_H
+#ifndef SW_APP_APP_H
+#define SW_APP_APP_H
 
 #include <stddef.h>
 
 #include "sim/truth.h"
 #include "sim/watch.h"
+#include "lesson/controls.h"
 #include "stepwise/sim.h"
 
 #define SW_APP_SIMS 3          /* main + two compare runs */
 #define SW_APP_GRAPH 600       /* graph samples kept per sim (bounded) */
 #define SW_APP_SPEED_MIN (1.0 / 64)
 #define SW_APP_SPEED_MAX 1024.0
-
-typedef enum sw_action {
-    SW_ACT_NONE,
-    SW_ACT_NEXT_METHOD, SW_ACT_PREV_METHOD, SW_ACT_PICK_METHOD, /* arg: list position 1..9 */
-    SW_ACT_DT_DOUBLE, SW_ACT_DT_HALVE,
-    SW_ACT_PAUSE, SW_ACT_STEP, SW_ACT_RESET,
-    SW_ACT_SLOWER, SW_ACT_FASTER,
-    SW_ACT_COMPARE, SW_ACT_GHOST, SW_ACT_TRAILS, SW_ACT_GRAPH, SW_ACT_BRAILLE,
-    SW_ACT_PANEL, SW_ACT_PANEL_UP, SW_ACT_PANEL_DOWN, SW_ACT_PANEL_DEC, SW_ACT_PANEL_INC,
-    SW_ACT_RECORD, SW_ACT_WORKPREC, SW_ACT_HELP, SW_ACT_QUIT,
-    SW_ACT_PAGE_NEXT, SW_ACT_PAGE_PREV, SW_ACT_HINT, SW_ACT_ANSWER, /* arg: 'a'..'f' */
-    SW_ACT_SCROLL_UP, SW_ACT_SCROLL_DOWN,
-    SW_ACT_COUNT
-} sw_action;
-
-/* Special keys, independent of curses (the front end translates). */
-enum {
-    SW_KEY_UP = 0x10000, SW_KEY_DOWN, SW_KEY_LEFT, SW_KEY_RIGHT, SW_KEY_TAB, SW_KEY_BTAB,
-    SW_KEY_PGDN, SW_KEY_PGUP, SW_KEY_ESC
-};
-
-/* One row of the key table: drives both the handler and the `?` screen. */
-typedef struct sw_keybinding {
-    int key;             /* character or SW_KEY_* */
-    sw_action action;
-    int arg;
-    const char *label;   /* how the help screen names the key(s), NULL: listed with the row before */
-    const char *help;
-    int lesson_only;     /* listed under "lesson" in help */
-} sw_keybinding;
-
-const sw_keybinding *sw_keys(int *count);
-/* The binding for a key in the given context (panel open changes the arrows). */
-const sw_keybinding *sw_key_lookup(int key, int panel_open, int in_lesson);
-/* Human name of an action, for messages ("compare", "dt halve", ...). */
-const char *sw_action_name(sw_action a);
 
 /* A bounded time series for the graph pane. */
 typedef struct sw_series {
@@ -102,7 +67,7 @@ typedef struct sw_app {
     int nmeas;
     double error_ratio;         /* err(previous) / err(latest), NaN until comparable */
     sw_series series[SW_APP_SIMS];
-    unsigned locked;            /* bit per sw_action a lesson has locked (bits < 32) */
+    sw_lock_mask locked;        /* lock groups (SW_LOCK_*) a lesson page has taken away */
     char message[512];          /* one-line feedback for the last action */
     int quit;
     int recorded;               /* a trace has been recorded this session */
@@ -135,7 +100,8 @@ int sw_app_set_dt(sw_app *a, double dt);
 /* Turn compare on with these two methods (NULL: a sensible pair) or off. */
 int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2);
 void sw_app_set_ghost(sw_app *a, int on);
-/* Apply an action; sets a->message. Returns 1 when it changed anything. */
+/* Apply an action (arg: which of its keys, 1-based: 1-9 pick that
+ * integrator, 0 the 10th); sets a->message. Returns 1 when it changed anything. */
 int sw_app_apply(sw_app *a, sw_action act, int arg);
 /* Turn a key into its action (honouring locks and context) and apply it. */
 int sw_app_key(sw_app *a, int key, int in_lesson);

@@ -11,7 +11,7 @@
 #include <time.h>
 
 #include "lab/trace.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 static int replay(sw_app *a, long steps, char *err, size_t errlen)
 {

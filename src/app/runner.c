@@ -1,41 +1,16 @@
 /* The lesson runner: pages drive the app, goals are checked against what
  * the app shows, and a page opens the next one only once its goals are met.
- * Progress is a small text file, rewritten whole through a rename. */
+ * Progress is saved through app/progress.c. */
 #include "app/runner.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-#include "stepwise/stepwise.h"
-
-unsigned sw_runner_locks(unsigned l)
-{
-    static const struct { unsigned lock; sw_action acts[5]; } map[] = {
-        { SW_LOCK_INTEGRATOR, { SW_ACT_NEXT_METHOD, SW_ACT_PREV_METHOD, SW_ACT_PICK_METHOD } },
-        { SW_LOCK_DT, { SW_ACT_DT_DOUBLE, SW_ACT_DT_HALVE } },
-        { SW_LOCK_RUN, { SW_ACT_PAUSE, SW_ACT_STEP } },
-        { SW_LOCK_RESET, { SW_ACT_RESET } },
-        { SW_LOCK_SPEED, { SW_ACT_SLOWER, SW_ACT_FASTER } },
-        { SW_LOCK_COMPARE, { SW_ACT_COMPARE } },
-        { SW_LOCK_GHOST, { SW_ACT_GHOST } },
-        { SW_LOCK_TRAILS, { SW_ACT_TRAILS } },
-        { SW_LOCK_GRAPH, { SW_ACT_GRAPH } },
-        { SW_LOCK_BRAILLE, { SW_ACT_BRAILLE } },
-        { SW_LOCK_PARAMS, { SW_ACT_PANEL, SW_ACT_PANEL_UP, SW_ACT_PANEL_DOWN, SW_ACT_PANEL_DEC, SW_ACT_PANEL_INC } },
-        { SW_LOCK_RECORD, { SW_ACT_RECORD } },
-        { SW_LOCK_PLOT, { SW_ACT_WORKPREC } },
-    };
-    unsigned bits = 0;
-    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++)
-        if (l & map[i].lock)
-            for (int k = 0; k < 5 && map[i].acts[k] != SW_ACT_NONE; k++)
-                bits |= 1u << map[i].acts[k];
-    return bits;
-}
+#include "app/progress.h"
+#include "stepwise/base.h"
+#include "util/utf8.h"
 
 void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
 {
@@ -75,7 +50,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_ghost(a, pg->ghost);
     if (pg->paused >= 0)
         a->paused = pg->paused;
-    a->locked = sw_runner_locks(pg->locked);
+    a->locked = pg->locked;
     a->panel = a->help = 0;
     r->page = page;
     r->feedback = NULL;
@@ -127,7 +102,9 @@ int sw_runner_update(sw_runner *r, sw_app *a)
     r->complete[r->page] = 1;
     if (r->page + 1 > r->done) {
         r->done = r->page + 1;
-        sw_progress_set(r->file, r->done);
+        char err[SW_ERRLEN];
+        if (sw_progress_set(r->file, r->done, err, sizeof err) != SW_OK)
+            snprintf(r->save_error, sizeof r->save_error, "progress not saved: %s", err);
     }
     if (r->page + 1 == r->lesson.npages) {
         r->finished = 1;
@@ -135,6 +112,8 @@ int sw_runner_update(sw_runner *r, sw_app *a)
     } else {
         snprintf(a->message, sizeof a->message, "page complete: press n for the next page");
     }
+    if (r->save_error[0])
+        snprintf(a->message, sizeof a->message, "%s", r->save_error);
     return 1;
 }
 
@@ -149,10 +128,11 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         snprintf(a->message, sizeof a->message, "%s", ok == 1 ? "right!" : "not quite: read the feedback and try again");
         return 1;
     }
-    const sw_keybinding *b = sw_key_lookup(key, a->panel, 1);
-    if (!b)
+    const sw_control *c;
+    int arg;
+    if (!sw_key_lookup(key, SW_CTX_PLAY | SW_CTX_LESSON | (a->panel ? SW_CTX_PANEL : 0u), &c, &arg))
         return 0;
-    switch (b->action) {
+    switch (c->action) {
     case SW_ACT_PAGE_NEXT:
         if (!r->complete[r->page]) {
             snprintf(a->message, sizeof a->message, "this page's goals are not met yet (h shows a hint)");
@@ -171,7 +151,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
-        r->scroll += b->action == SW_ACT_SCROLL_DOWN ? 3 : -3;
+        r->scroll += c->action == SW_ACT_SCROLL_DOWN ? 3 : -3;
         if (r->scroll < 0)
             r->scroll = 0;
         return 1;
@@ -182,28 +162,19 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
 
 /* ---- the text pane ---------------------------------------------------------- */
 
-static void add_line(sw_runner *r, int style, const char *text)
+static void add_line(sw_runner *r, sw_side_kind kind, const char *text)
 {
     int n = r->side.nlines;
     if (n >= SW_RUNNER_LINES)
         return;
     snprintf(r->text[n], SW_RUNNER_COLS, "%s", text);
     r->lines[n] = r->text[n];
-    r->styles[n] = style;
+    r->kinds[n] = kind;
     r->side.nlines++;
 }
 
-/* Cells a UTF-8 string takes (one per code point). */
-static int cells(const char *s, size_t len)
-{
-    int n = 0;
-    for (size_t i = 0; i < len; i++)
-        n += ((unsigned char)s[i] & 0xC0) != 0x80;
-    return n;
-}
-
 /* Word-wrap a paragraph to width cells. */
-static void add_wrapped(sw_runner *r, int style, const char *text, int width)
+static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int width)
 {
     const char *p = text;
     while (*p) {
@@ -217,7 +188,7 @@ static void add_wrapped(sw_runner *r, int style, const char *text, int width)
             const char *w = p;
             while (*p && *p != ' ' && *p != '\n')
                 p++;
-            int wl = cells(w, (size_t)(p - w));
+            int wl = (int)sw_utf8_count(w, (size_t)(p - w));
             if (used && used + 1 + wl > width) {
                 p = w;
                 break;
@@ -235,7 +206,7 @@ static void add_wrapped(sw_runner *r, int style, const char *text, int width)
         size_t len = (size_t)(cut - line) < sizeof buf - 1 ? (size_t)(cut - line) : sizeof buf - 1;
         memcpy(buf, line, len);
         buf[len] = '\0';
-        add_line(r, style, buf);
+        add_line(r, kind, buf);
         if (*p == '\n')
             p++;
     }
@@ -248,13 +219,13 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     char buf[SW_RUNNER_COLS];
     r->side.nlines = 0;
     r->side.lines = r->lines;
-    r->side.styles = r->styles;
+    r->side.kinds = r->kinds;
     r->side.width = cols >= 110 ? width : 0;
     r->side.scroll = &r->scroll;
     snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
-    add_line(r, SW_STYLE_DIM, buf);
-    add_line(r, SW_STYLE_TITLE, pg->title);
-    add_line(r, SW_STYLE_TEXT, "");
+    add_line(r, SW_SIDE_DIM, buf);
+    add_line(r, SW_SIDE_TITLE, pg->title);
+    add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {
             const char *s = pg->blocks[b].text;
@@ -262,19 +233,19 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
                 const char *e = strchr(s, '\n');
                 size_t len = e ? (size_t)(e - s) : strlen(s);
                 snprintf(buf, sizeof buf, "  %.*s", (int)(len < 300 ? len : 300), s);
-                add_line(r, SW_STYLE_STATUS, buf);
+                add_line(r, SW_SIDE_VERBATIM, buf);
                 s += len + (e ? 1 : 0);
             }
         } else {
-            add_wrapped(r, SW_STYLE_TEXT, pg->blocks[b].text, width - 1);
+            add_wrapped(r, SW_SIDE_TEXT, pg->blocks[b].text, width - 1);
         }
-        add_line(r, SW_STYLE_TEXT, "");
+        add_line(r, SW_SIDE_TEXT, "");
     }
     sw_lesson_obs obs;
     sw_runner_obs(a, &obs);
     const sw_lesson_goal *unmet = NULL;
     if (pg->ngoals > 0)
-        add_line(r, SW_STYLE_TITLE, "Goals:");
+        add_line(r, SW_SIDE_TITLE, "Goals:");
     for (int g = 0; g < pg->ngoals; g++) {
         char text[160];
         int met = r->complete[r->page] || sw_lesson_goal_met(&pg->goals[g], &obs);
@@ -282,105 +253,31 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
             unmet = &pg->goals[g];
         sw_lesson_goal_text(&pg->goals[g], text, sizeof text);
         snprintf(buf, sizeof buf, " %s %s", met ? "\xe2\x9c\x93" : "\xe2\x9c\x97", text);
-        add_line(r, met ? SW_STYLE_OK : SW_STYLE_BAD, buf);
+        add_line(r, met ? SW_SIDE_OK : SW_SIDE_BAD, buf);
     }
     const sw_lesson_question *q = &pg->question;
     if (q->text) {
-        add_line(r, SW_STYLE_TEXT, "");
-        add_wrapped(r, SW_STYLE_TITLE, q->text, width - 1);
+        add_line(r, SW_SIDE_TEXT, "");
+        add_wrapped(r, SW_SIDE_TITLE, q->text, width - 1);
         for (int i = 0; i < q->nanswers; i++) {
             snprintf(buf, sizeof buf, "%c) %s", q->answers[i].letter, q->answers[i].text);
-            add_wrapped(r, r->answered[r->page] && i == q->correct ? SW_STYLE_OK : SW_STYLE_TEXT, buf, width - 1);
+            add_wrapped(r, r->answered[r->page] && i == q->correct ? SW_SIDE_OK : SW_SIDE_TEXT, buf, width - 1);
         }
         if (!r->answered[r->page])
-            add_line(r, SW_STYLE_DIM, "(press a letter to answer)");
+            add_line(r, SW_SIDE_DIM, "(press a letter to answer)");
         if (r->feedback)
-            add_wrapped(r, r->feedback_ok ? SW_STYLE_OK : SW_STYLE_BAD, r->feedback, width - 1);
+            add_wrapped(r, r->feedback_ok ? SW_SIDE_OK : SW_SIDE_BAD, r->feedback, width - 1);
     }
     if (r->hint) {
         const char *h = unmet ? unmet->hint : (q->text && !r->answered[r->page]) ? q->hint : NULL;
-        add_line(r, SW_STYLE_TEXT, "");
+        add_line(r, SW_SIDE_TEXT, "");
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
-        add_wrapped(r, SW_STYLE_WARN, buf, width - 1);
+        add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }
-    add_line(r, SW_STYLE_TEXT, "");
+    add_line(r, SW_SIDE_TEXT, "");
     if (r->complete[r->page])
-        add_line(r, SW_STYLE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page." : "Lesson complete!");
+        add_line(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page." : "Lesson complete!");
     else
-        add_line(r, SW_STYLE_DIM, "h: hint   n: next page once the goals are met");
+        add_line(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met");
     return &r->side;
-}
-
-/* ---- progress ------------------------------------------------------------------ */
-
-static int progress_path(char *buf, size_t len, int make_dirs)
-{
-    const char *state = getenv("XDG_STATE_HOME"), *home = getenv("HOME");
-    char dir[1024];
-    if (state && *state == '/')
-        snprintf(dir, sizeof dir, "%s/stepwise", state);
-    else if (home && *home)
-        snprintf(dir, sizeof dir, "%s/.local/state/stepwise", home);
-    else
-        return 0;
-    if (make_dirs) {
-        /* mkdir -p of dir */
-        for (char *p = dir + 1; *p; p++)
-            if (*p == '/') {
-                *p = '\0';
-                mkdir(dir, 0700);
-                *p = '/';
-            }
-        if (mkdir(dir, 0700) != 0 && errno != EEXIST)
-            return 0;
-    }
-    return snprintf(buf, len, "%s/progress", dir) < (int)len;
-}
-
-int sw_progress_get(const char *file)
-{
-    char path[1100], line[400];
-    if (!progress_path(path, sizeof path, 0))
-        return 0;
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return 0;
-    int done = 0;
-    while (fgets(line, sizeof line, f)) {
-        char name[300];
-        int d;
-        if (sscanf(line, "%299s %d", name, &d) == 2 && strcmp(name, file) == 0 && d >= 0 && d <= SW_LESSON_MAX_PAGES)
-            done = d;
-    }
-    fclose(f);
-    return done;
-}
-
-int sw_progress_set(const char *file, int done)
-{
-    char path[1100], tmp[1200], line[400];
-    if (!progress_path(path, sizeof path, 1) || strchr(file, ' ') || strchr(file, '\n'))
-        return SW_EIO;
-    if (done <= sw_progress_get(file))
-        return SW_OK;
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    FILE *in = fopen(path, "r"), *out = fopen(tmp, "w");
-    if (!out) {
-        if (in)
-            fclose(in);
-        return SW_EIO;
-    }
-    while (in && fgets(line, sizeof line, in)) {
-        char name[300];
-        if (sscanf(line, "%299s", name) == 1 && strcmp(name, file) != 0)
-            fputs(line, out);
-    }
-    if (in)
-        fclose(in);
-    fprintf(out, "%s %d\n", file, done);
-    if (fclose(out) != 0 || rename(tmp, path) != 0) {
-        remove(tmp);
-        return SW_EIO;
-    }
-    return SW_OK;
 }

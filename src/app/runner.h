@@ -1,11 +1,12 @@
 /* The lesson runner without a terminal: pages applied to the live app,
  * goals checked each frame and latched, questions answered, hints, page
  * turns, the text pane, and progress saved per user. */
-#ifndef SW_RUNNER_H
-#define SW_RUNNER_H
+#ifndef SW_APP_RUNNER_H
+#define SW_APP_RUNNER_H
 
 #include "app/app.h"
-#include "render/screen.h"
+#include "app/progress.h"
+#include "app/side.h"
 #include "lesson/lesson.h"
 
 #define SW_RUNNER_LINES 160
@@ -25,8 +26,9 @@ typedef struct sw_runner {
     int scroll;                /* first line of the text pane shown */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];
     const char *lines[SW_RUNNER_LINES];
-    int styles[SW_RUNNER_LINES];
+    sw_side_kind kinds[SW_RUNNER_LINES];
     sw_side side;
+    char save_error[SW_ERRLEN + 32]; /* why progress was not saved ("" when it was) */
 } sw_runner;
 
 /* Load the lesson at path and build the app from its first page (or page
@@ -43,14 +45,5 @@ int sw_runner_update(sw_runner *r, sw_app *a);
 int sw_runner_key(sw_runner *r, sw_app *a, int key);
 /* The text pane for a terminal `cols` wide. */
 const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols);
-
-/* The app's action locks for a page's SW_LOCK_* bits. */
-unsigned sw_runner_locks(unsigned lesson_locks);
-
-/* Progress: pages completed of a lesson file, under $XDG_STATE_HOME/stepwise/
- * (default ~/.local/state/stepwise/progress); 0 when unknown. */
-int sw_progress_get(const char *file);
-/* Record pages completed (never lowers it); 0 or SW_EIO. */
-int sw_progress_set(const char *file, int done);
 
 #endif

@@ -1,17 +1,18 @@
 /* `stepwise bench`: the work–precision report (error against cost for each
  * integrator on each scene that has an exact solution or a reference). The
  * engine benchmark is its own program (bench/, `make bench`). The numbers come from src/lab/bench.c;
- * this file parses, prints, and writes files whole or not at all. */
+ * this file parses, prints, and writes files whole or not at all (util/outfile). */
 #include "cli/cli.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "lab/bench.h"
+#include "util/clock.h"
+#include "util/names.h"
+#include "util/outfile.h"
+#include "util/signals.h"
 
 static const char usage_text[] =
     "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
@@ -39,51 +40,49 @@ static const char usage_text[] =
     "(The engine benchmark, ns per particle-step against hand-written loops, is\n"
     "`make bench` in the source tree.)\n";
 
-/* A file written whole or not at all: a temporary beside the target, renamed
- * into place once complete. */
-typedef struct out_file {
-    const char *path;
-    char tmp[4096];
-    FILE *f;
-} out_file;
-
-static int out_open(out_file *o, const char *flag)
+/* Check an output path before the sweep (which may take minutes), creating
+ * nothing: an interrupted sweep then leaves no file at all. */
+static int out_check(const char *flag, const char *path)
 {
-    struct stat st;
-    if (stat(o->path, &st) == 0 && !S_ISREG(st.st_mode))
-        return sw_cli_error("%s '%.200s' is %s; give the name of a file to write", flag, o->path,
-                            S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
-    if (snprintf(o->tmp, sizeof o->tmp, "%s.XXXXXX", o->path) >= (int)sizeof o->tmp)
-        return sw_cli_error("%s '%.60s...': the path is too long", flag, o->path);
-    int fd = mkstemp(o->tmp);
-    if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
-        if (fd >= 0) {
-            close(fd);
-            unlink(o->tmp);
-        }
-        return sw_cli_error("%s '%.200s': cannot create a file there (check the directory "
-                            "exists and is writable)", flag, o->path);
-    }
-    fchmod(fd, 0644);
-    return SW_EXIT_OK;
-}
-
-static void out_abandon(out_file *o)
-{
-    if (o->f) {
-        fclose(o->f);
-        unlink(o->tmp);
-        o->f = NULL;
+    char err[SW_ERRLEN];
+    switch (sw_outfile_check(path, err, sizeof err)) {
+    case SW_OK:
+        return SW_EXIT_OK;
+    case SW_EINVAL:
+        return sw_cli_error("%s '%.200s' is a directory (or an empty name); give the name of a file "
+                            "to write", flag, path);
+    default:
+        return sw_cli_error("%s '%.200s': cannot create a file there (check the directory exists and is "
+                            "writable): %s", flag, path, err);
     }
 }
 
-static int out_commit(out_file *o)
+typedef int write_fn(FILE *out, const sw_bench_report *const *reports, int nreports, char *err,
+                     size_t errlen);
+
+/* Write one output file whole (util/outfile.h); signals are caught around
+ * it, so an interrupted write removes its temporary and then dies of the
+ * signal. 0 or 1 with the error printed. */
+static int out_write(const char *flag, const char *path, write_fn *write, const sw_bench_report *const *done,
+                     int ndone)
 {
-    int bad = fclose(o->f) != 0;
-    o->f = NULL;
-    if (bad || rename(o->tmp, o->path) != 0) {
-        unlink(o->tmp);
-        fprintf(stderr, "stepwise: could not write '%s'\n", o->path);
+    char err[SW_ERRLEN];
+    sw_outfile out;
+    if (sw_outfile_open(&out, path, err, sizeof err) != SW_OK) {
+        sw_cli_error("%s: %s", flag, err);
+        return SW_EXIT_FAIL;
+    }
+    int rc = write(out.f, done, ndone, err, sizeof err);
+    if (sw_signal_caught) {
+        sw_outfile_abort(&out);
+        sw_signals_reraise(sw_signal_caught);
+    }
+    if (rc == SW_OK)
+        rc = sw_outfile_commit(&out, err, sizeof err);
+    else
+        sw_outfile_abort(&out);
+    if (rc != SW_OK) {
+        sw_cli_error("%s '%s': %s", flag, path, err);
         return SW_EXIT_FAIL;
     }
     return SW_EXIT_OK;
@@ -203,6 +202,11 @@ static void print_report(const sw_bench_report *r, const char *skipped)
     fflush(stdout);
 }
 
+static const char *method_name_at(const void *ctx, int i)
+{
+    return ((const sw_integrator *const *)ctx)[i]->name;
+}
+
 /* Methods of `wanted` (all when n == 0) that cannot step this scene, by name. */
 static void list_inapplicable(const sw_scene *sc, const double *p, const sw_integrator *const *wanted,
                               int n, char *buf, size_t len)
@@ -212,13 +216,14 @@ static void list_inapplicable(const sw_scene *sc, const double *p, const sw_inte
     buf[0] = '\0';
     if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
         return;
-    size_t used = 0;
-    int count = n ? n : sw_integrator_count();
-    for (int i = 0; i < count && used < len; i++) {
+    const sw_integrator *refused[SW_BENCH_MAX_METHODS + 64];
+    int nrefused = 0, count = n ? n : sw_integrator_count();
+    for (int i = 0; i < count && nrefused < (int)(sizeof refused / sizeof refused[0]); i++) {
         const sw_integrator *m = n ? wanted[i] : sw_integrator_at(i);
         if (sw_integrator_accepts(m, sys.ode, err, sizeof err) != SW_OK)
-            used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "", m->name);
+            refused[nrefused++] = m;
     }
+    size_t used = sw_names_join(buf, len, method_name_at, refused, nrefused);
     if (used > 0 && used < len)
         snprintf(buf + used, len - used, " (%s)", sys.kind == SW_SYS_FLOW
                  ? "a flow field has no masses, or no Jacobian for implicit methods"
@@ -311,13 +316,9 @@ int sw_cmd_bench(int argc, char **argv)
     }
     if (n == 0)
         return sw_cli_error("bench: nothing to measure: %s", notes);
-    out_file csv = { .path = csv_path }, svg = { .path = svg_path };
-    if (csv_path && out_open(&csv, "--csv") != SW_EXIT_OK)
+    if ((csv_path && out_check("--csv", csv_path) != SW_EXIT_OK) ||
+        (svg_path && out_check("--svg", svg_path) != SW_EXIT_OK))
         return SW_EXIT_USAGE;
-    if (svg_path && out_open(&svg, "--svg") != SW_EXIT_OK) {
-        out_abandon(&csv);
-        return SW_EXIT_USAGE;
-    }
 
     sw_bench_config cfg;
     if (quick)
@@ -332,16 +333,13 @@ int sw_cmd_bench(int argc, char **argv)
     if (!reports || !done) {
         free(reports);
         free(done);
-        out_abandon(&csv);
-        out_abandon(&svg);
         fprintf(stderr, "stepwise: out of memory for %d reports\n", n);
         return SW_EXIT_FAIL;
     }
     if (notes[0])
         printf("skipped: %s\n\n", notes);
     int ndone = 0, status = SW_EXIT_OK;
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    double t0 = sw_clock_now();
     for (int i = 0; i < n; i++) {
         char err[SW_ERRLEN], skipped[512];
         sw_bench_report *r = &reports[i];
@@ -356,26 +354,15 @@ int sw_cmd_bench(int argc, char **argv)
         print_report(r, skipped);
         done[ndone++] = r;
     }
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    printf("bench: %d scene%s in %.1f s\n", ndone, ndone == 1 ? "" : "s",
-           (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
-    char err[SW_ERRLEN];
-    if (csv.f) {
-        if (sw_bench_write_csv(csv.f, done, ndone, err, sizeof err) != SW_OK) {
-            out_abandon(&csv);
-            sw_cli_error("--csv '%s': %s", csv_path, err);
-            status = SW_EXIT_FAIL;
-        } else if (out_commit(&csv) != SW_EXIT_OK)
-            status = SW_EXIT_FAIL;
-    }
-    if (svg.f) {
-        if (sw_bench_write_svg(svg.f, done, ndone, err, sizeof err) != SW_OK) {
-            out_abandon(&svg);
-            sw_cli_error("--svg '%s': %s", svg_path, err);
-            status = SW_EXIT_FAIL;
-        } else if (out_commit(&svg) != SW_EXIT_OK)
-            status = SW_EXIT_FAIL;
-    }
+    printf("bench: %d scene%s in %.1f s\n", ndone, ndone == 1 ? "" : "s", sw_clock_now() - t0);
+    sw_signals_catch();
+    if (csv_path && out_write("--csv", csv_path, sw_bench_write_csv, done, ndone) != SW_EXIT_OK)
+        status = SW_EXIT_FAIL;
+    if (svg_path && out_write("--svg", svg_path, sw_bench_write_svg, done, ndone) != SW_EXIT_OK)
+        status = SW_EXIT_FAIL;
+    sw_signals_default();
+    if (sw_signal_caught)
+        sw_signals_reraise(sw_signal_caught);
     for (int i = 0; i < n; i++)
         sw_bench_free(&reports[i]);
     free(reports);

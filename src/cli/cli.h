@@ -1,13 +1,13 @@
 /* The command-line front ends: one function per subcommand, each taking its
  * own argv (argv[0] is the command name) and returning the exit status:
- * 0 success, 1 a failed check, 2 bad input. Only this layer and the TUI
- * print. */
-#ifndef SW_CLI_H
-#define SW_CLI_H
+ * 0 success, 1 a failed check, 2 bad input. Only this layer prints (the
+ * TUI paints). */
+#ifndef SW_CLI_CLI_H
+#define SW_CLI_CLI_H
 
 #include <stdio.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "stepwise/scene.h"
 #include "stepwise/sim.h"
 
@@ -55,6 +55,16 @@ int sw_cli_plugin(const char *path);
 int sw_cli_finish_opts(sw_run_opts *o);
 /* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */
 int sw_cli_sim(sw_sim *s, const sw_run_opts *o);
+
+/* Flush standard output: 0, or 2 with "cannot write standard output: why"
+ * on stderr (a full disk, a closed pipe). Every command's output ends here. */
+int sw_cli_flush_stdout(void);
+
+/* The live terminal UI for an app (hooks NULL: play); the exit status:
+ * 0, 128 + a signal's number, or 2 with the error printed. */
+struct sw_app;
+struct sw_play_hooks;
+int sw_cli_play(struct sw_app *a, const struct sw_play_hooks *hooks);
 
 /* Where the lesson files are: $STEPWISE_LESSONS, ./lessons, or the install dir. */
 const char *sw_cli_lessons_dir(void);

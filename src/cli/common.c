@@ -3,6 +3,7 @@
 #include "cli/cli.h"
 
 #include <dirent.h>
+#include <errno.h>
 #include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include "engine/stepper.h"
+#include "util/num.h"
 
 int sw_cli_error(const char *fmt, ...)
 {
@@ -24,16 +26,23 @@ int sw_cli_error(const char *fmt, ...)
     return SW_EXIT_USAGE;
 }
 
+int sw_cli_flush_stdout(void)
+{
+    errno = 0;
+    if (fflush(stdout) == 0 && !ferror(stdout))
+        return SW_EXIT_OK;
+    int e = errno;
+    clearerr(stdout); /* reported once */
+    return sw_cli_error("cannot write standard output: %s", e ? strerror(e) : "write error");
+}
+
 int sw_cli_scene(const char *name, const sw_scene **out)
 {
     *out = sw_scene_find(name);
     if (*out)
         return SW_EXIT_OK;
     char names[400];
-    size_t used = 0;
-    for (int i = 0; i < sw_scene_count(); i++)
-        used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", i ? ", " : "",
-                                 sw_scene_at(i)->name);
+    sw_scene_names(names, sizeof names);
     return sw_cli_error("unknown scene '%.60s'; scenes: %s", name, names);
 }
 
@@ -43,10 +52,7 @@ int sw_cli_integrator(const char *name, const sw_integrator **out)
     if (*out)
         return SW_EXIT_OK;
     char names[400];
-    size_t used = 0;
-    for (int i = 0; i < sw_integrator_count() && used < sizeof names; i++)
-        used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", i ? ", " : "",
-                                 sw_integrator_at(i)->name);
+    sw_integrator_names(names, sizeof names);
     return sw_cli_error("unknown integrator '%.60s'; integrators: %s", name, names);
 }
 

@@ -4,10 +4,10 @@
 #include "cli/cli.h"
 
 #include <getopt.h>
-#include <signal.h>
 #include <string.h>
 
 #include "lab/trace.h"
+#include "util/signals.h"
 
 static const char record_help[] =
     "usage: stepwise record SCENE [--integrator NAME] [--dt H] [--steps N | --until T]\n"
@@ -37,28 +37,6 @@ static const char record_help[] =
     "  -h, --help             this help\n"
     "\n"
     "exit status: 0 trace written (a blow-up included), 2 bad input or a write error.\n";
-
-static volatile sig_atomic_t interrupted;
-
-static void on_signal(int sig) { interrupted = sig; }
-
-static void catch_signals(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
-}
-
-/* After cleaning up, die of the signal that stopped us, as the shell expects. */
-static void reraise(int sig)
-{
-    signal(sig, SIG_DFL);
-    raise(sig);
-}
 
 static int bad_option(const char *cmd, int opt, char **argv)
 {
@@ -145,19 +123,19 @@ int sw_cmd_record(int argc, char **argv)
         sw_sim_free(&sim);
         return sw_cli_error("record: %s", err);
     }
-    catch_signals();
+    sw_signals_catch();
     int rc = sw_trace_begin(&w, &sim, &spec, err, sizeof err);
-    while (rc == SW_OK && !sw_trace_done(&sim, &spec) && !interrupted) {
+    while (rc == SW_OK && !sw_trace_done(&sim, &spec) && !sw_signal_caught) {
         rc = sw_trace_step(&sim, &spec, err, sizeof err);
         if (rc == SW_OK)
             rc = sw_trace_observe(&w, &sim, err, sizeof err);
     }
-    if (interrupted) {
+    if (sw_signal_caught) {
         sw_trace_abort(&w);
         fprintf(stderr, "stepwise: record interrupted at step %ld; %s\n", sim.steps,
                 w.to_stdout ? "the trace on standard output is incomplete" : "no trace written");
         sw_sim_free(&sim);
-        reraise(interrupted);
+        sw_signals_reraise(sw_signal_caught);
         return SW_EXIT_USAGE;
     }
     if (rc == SW_OK)

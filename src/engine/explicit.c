@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Explicit Runge-Kutta steps run over [lo, hi): the whole state for coupled
  * systems, or L1-sized slices for pointwise ones (flow fields), where every

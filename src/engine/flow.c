@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 static void flow_deriv(void *ctx, double t, const double *y, double *dydt)
 {

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "engine/linalg.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Euclidean norm, scaled against overflow. */
 static double norm2(int n, const double *v)

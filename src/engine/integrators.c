@@ -10,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/names.h"
 
 static const sw_integrator builtins[] = {
     { "euler", "explicit (forward) Euler", 1, 1, SW_EXPLICIT, 0.0, 1, sw_step_euler,
@@ -47,6 +48,17 @@ const sw_integrator *sw_integrator_at(int index)
     if (index < 0 || index >= NBUILTIN + nextra)
         return NULL;
     return index < NBUILTIN ? &builtins[index] : &extra[index - NBUILTIN];
+}
+
+static const char *name_at(const void *ctx, int i)
+{
+    (void)ctx;
+    return sw_integrator_at(i)->name;
+}
+
+size_t sw_integrator_names(char *buf, size_t len)
+{
+    return sw_names_join(buf, len, name_at, NULL, sw_integrator_count());
 }
 
 const sw_integrator *sw_integrator_find(const char *name)

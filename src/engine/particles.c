@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "engine/particles_solve.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Lecture step 2: each force object adds its contribution to f. */
 static void accumulate(const sw_particles *p, const sw_force *fo, const double *x,

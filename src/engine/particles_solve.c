@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "engine/linalg.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Largest band accepted, in doubles (256 MiB). */
 #define BAND_MAX ((size_t)1 << 25)

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Dormand–Prince 5(4) tableau. */
 static const double dp_c[7] = { 0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1 };

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 int sw_row_next(sw_row_source *src, double *row, long *line, char *err, size_t errlen)
 {

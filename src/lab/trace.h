@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "stepwise/sim.h"
+#include "util/outfile.h"
 
 #define SW_TRACE_MAGIC "# stepwise trace 1"
 #define SW_TRACE_FORMAT 1
@@ -46,6 +47,8 @@ int sw_trace_step(sw_sim *s, const sw_trace_spec *spec, char *err, size_t errlen
 /* Columns of a system's trace: step, t, then x<i>, y<i> (and vx<i>, vy<i>
  * for second-order systems) per particle, then energy when defined. */
 int sw_trace_ncols(const sw_system *sys);
+/* Values per particle in a row: 4 (x, y, vx, vy) or 2 for a flow. */
+int sw_trace_per_particle(const sw_system *sys);
 /* Name of column c (0 <= c < ncols) into buf. */
 void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len);
 /* The sim's current row: ncols values (step, t, state..., energy). */
@@ -54,10 +57,9 @@ void sw_trace_row_values(const sw_sim *s, double *row);
 /* ---- writing ------------------------------------------------------------ */
 
 typedef struct sw_trace_writer {
-    FILE *f;
-    int to_stdout;                   /* path "-" or NULL: no temp file */
-    char path[SW_TRACE_PATH_MAX];    /* the real name, renamed onto at commit */
-    char tmp[SW_TRACE_PATH_MAX + 16];
+    sw_outfile out;                  /* the file (util/outfile.h) */
+    FILE *f;                         /* out.f while open */
+    int to_stdout;                   /* path "-" or NULL */
     char *row;                       /* one formatted row */
     size_t row_cap;
     sw_trace_spec spec;
@@ -65,10 +67,11 @@ typedef struct sw_trace_writer {
     long rows;
 } sw_trace_writer;
 
-/* Open a trace for writing: path NULL or "-" is stdout, anything else a
- * temporary file beside path that only sw_trace_commit renames onto it.
- * 0, SW_EINVAL (path is a directory) or SW_EIO. After any later failure
- * (begin, write_row, observe), call sw_trace_abort. */
+/* Open a trace for writing through sw_outfile: path NULL or "-" is stdout,
+ * a device or FIFO is written in place, anything else is a temporary file
+ * beside path that only sw_trace_commit renames onto it. 0, SW_EINVAL (path
+ * is a directory) or SW_EIO. After any later failure (begin, write_row,
+ * observe), call sw_trace_abort. */
 int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen);
 /* Write the first line, the metadata that regenerates s under spec (s at
  * step 0), the header row and row 0. 0, SW_EINVAL or SW_EIO. */

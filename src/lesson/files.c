@@ -1,6 +1,7 @@
 /* Lesson files on disk: reading one with a size bound, and listing a
  * directory's *.lesson files in name order (01-..., 02-...: the course
- * order). Invariant: nothing larger than SW_LESSON_MAX_BYTES is ever read. */
+ * order). Invariants: nothing larger than SW_LESSON_MAX_BYTES is ever read,
+ * and nothing waits: a FIFO or a device is refused, never opened blocking. */
 #include "lesson/lesson.h"
 
 #include <dirent.h>
@@ -12,24 +13,20 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/infile.h"
+
 int sw_lesson_load(const char *path, sw_lesson *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
-    int fd = open(path, O_RDONLY);
+    struct stat st;
+    const char *what;
+    int fd = sw_infile_open(path, &st, &what);
+    if (fd < 0 && what) {
+        snprintf(err, errlen, "%.200s: is %s; expected a lesson file (NAME.lesson)", path, what);
+        return SW_EIO;
+    }
     if (fd < 0) {
         snprintf(err, errlen, "%.200s: cannot open: %s", path, strerror(errno));
-        return SW_EIO;
-    }
-    struct stat st;
-    if (fstat(fd, &st) != 0) {
-        snprintf(err, errlen, "%.200s: cannot read: %s", path, strerror(errno));
-        close(fd);
-        return SW_EIO;
-    }
-    if (S_ISDIR(st.st_mode) || !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "%.200s: is %s; expected a lesson file (NAME.lesson)", path,
-                 S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
-        close(fd);
         return SW_EIO;
     }
     if (st.st_size > SW_LESSON_MAX_BYTES) {
@@ -38,37 +35,22 @@ int sw_lesson_load(const char *path, sw_lesson *out, char *err, size_t errlen)
         close(fd);
         return SW_EIO;
     }
-    /* One byte more than allowed, to notice a file that grew after fstat. */
-    char *buf = malloc(SW_LESSON_MAX_BYTES + 1);
-    if (!buf) {
-        snprintf(err, errlen, "%.200s: out of memory", path);
-        close(fd);
-        return SW_ENOMEM;
-    }
-    size_t len = 0;
-    while (len < SW_LESSON_MAX_BYTES + 1) {
-        ssize_t n = read(fd, buf + len, SW_LESSON_MAX_BYTES + 1 - len);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n < 0) {
-            snprintf(err, errlen, "%.200s: cannot read: %s", path, strerror(errno));
-            free(buf);
-            close(fd);
-            return SW_EIO;
-        }
-        if (n == 0)
-            break;
-        len += (size_t)n;
-    }
+    char *buf;
+    size_t len;
+    int got = sw_infile_read(fd, SW_LESSON_MAX_BYTES, &buf, &len);
+    int e = errno;
     close(fd);
-    int rc;
-    if (len > SW_LESSON_MAX_BYTES) {
+    if (got > 0) {
         snprintf(err, errlen, "%.200s: file is larger than %d bytes; expected a shorter lesson", path,
                  SW_LESSON_MAX_BYTES);
-        rc = SW_EIO;
-    } else {
-        rc = sw_lesson_parse(path, buf, len, out, err, errlen);
+        return SW_EIO;
     }
+    if (got < 0) {
+        snprintf(err, errlen, "%.200s: %s: %s", path, e == ENOMEM ? "out of memory" : "cannot read",
+                 strerror(e));
+        return e == ENOMEM ? SW_ENOMEM : SW_EIO;
+    }
+    int rc = sw_lesson_parse(path, buf, len, out, err, errlen);
     free(buf);
     return rc;
 }

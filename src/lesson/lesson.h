@@ -2,12 +2,13 @@
  * authoring guide) parsed into pages of prose, settings, goals and questions.
  * Pure: no terminal, no printing. Everything in a file is checked against the
  * real catalog at parse time, so a lesson that loads can be run. */
-#ifndef SW_LESSON_H
-#define SW_LESSON_H
+#ifndef SW_LESSON_LESSON_H
+#define SW_LESSON_LESSON_H
 
 #include <stddef.h>
 
-#include "stepwise/stepwise.h"
+#include "lesson/controls.h"
+#include "stepwise/base.h"
 #include "stepwise/integrator.h"
 #include "stepwise/scene.h"
 #include "stepwise/sim.h"
@@ -107,31 +108,9 @@ void sw_lesson_goal_text(const sw_lesson_goal *g, char *buf, size_t len);
 const char *sw_lesson_var_name(sw_lesson_var v);
 int sw_lesson_var_find(const char *name);
 
-/* ---- locks: controls a page can take from the student ---------------------- */
-
-enum {
-    SW_LOCK_INTEGRATOR = 1u << 0, /* i I Tab Shift-Tab 1-9 */
-    SW_LOCK_DT = 1u << 1,         /* + = - */
-    SW_LOCK_RUN = 1u << 2,        /* space . */
-    SW_LOCK_RESET = 1u << 3,      /* r */
-    SW_LOCK_SPEED = 1u << 4,      /* [ ] */
-    SW_LOCK_COMPARE = 1u << 5,    /* c */
-    SW_LOCK_GHOST = 1u << 6,      /* g */
-    SW_LOCK_TRAILS = 1u << 7,     /* t */
-    SW_LOCK_GRAPH = 1u << 8,      /* e */
-    SW_LOCK_BRAILLE = 1u << 9,    /* b */
-    SW_LOCK_PARAMS = 1u << 10,    /* p and the panel's arrows */
-    SW_LOCK_RECORD = 1u << 11,    /* R */
-    SW_LOCK_PLOT = 1u << 12,      /* w */
-    SW_LOCK_ALL = (1u << 13) - 1
-};
-
-/* The lock bit for a play-mode key ('i', '+', ' ', '\t', ...); 0 when the key
- * cannot be locked (navigation, help, quit). Tab is '\t'; the app maps
- * Shift-Tab to 'I' and its arrow keys to SW_LOCK_PARAMS itself. */
-unsigned sw_lesson_key_lock(int key);
-/* The name of one lock bit as written in a file ("integrator"), or NULL. */
-const char *sw_lesson_lock_name(unsigned bit);
+/* ---- locks: controls a page can take from the student ----------------------
+ * The lock groups (SW_LOCK_*) and their names come from the one list of
+ * controls in lesson/controls.h. */
 
 /* ---- pages and lessons ----------------------------------------------------- */
 
@@ -179,7 +158,7 @@ typedef struct sw_lesson_page {
     int ncompare_with;        /* 0: the app's own choice */
     int ghost;                /* -1 / 0 / 1 as compare */
     int paused;               /* -1 / 0 / 1: start paused or running */
-    unsigned locked;          /* SW_LOCK_* in force on this page (carried from earlier pages) */
+    sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 
     sw_lesson_goal goals[SW_LESSON_MAX_GOALS];
     int ngoals;

@@ -9,7 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/utf8.h"
 
 /* Braille bit of dot (row r, column c) within a cell: dots 1,2,3,7 down the
  * left column, 4,5,6,8 down the right (Unicode's Braille Patterns block). */
@@ -223,12 +224,17 @@ int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, in
     return to_grid(&g, c, x, y, col, row);
 }
 
-void sw_canvas_point(sw_canvas *c, double x, double y, uint32_t glyph, int style)
+void sw_canvas_point_faded(sw_canvas *c, double x, double y, uint32_t glyph, int style, int fade)
 {
     grid g = grid_of(c, c->mode == SW_CANVAS_BRAILLE);
     int gc, gr;
     if (to_grid(&g, c, x, y, &gc, &gr))
-        plot(c, &g, gc, gr, glyph ? glyph : SW_GLYPH_MAIN, style, 0);
+        plot(c, &g, gc, gr, glyph ? glyph : SW_GLYPH_MAIN, style, fade);
+}
+
+void sw_canvas_point(sw_canvas *c, double x, double y, uint32_t glyph, int style)
+{
+    sw_canvas_point_faded(c, x, y, glyph, style, 0);
 }
 
 void sw_canvas_mark(sw_canvas *c, double x, double y, uint32_t glyph, int style)
@@ -356,18 +362,16 @@ static uint32_t ramp_glyph(uint32_t count)
     return (unsigned char)SW_DENSITY_RAMP[level];
 }
 
-/* Count the points (alive ones when sys is given), then write the ramp. */
-static void density_pass(sw_canvas *c, const double *xy, int n, const sw_system *sys,
-                         double t, int style)
+/* Count the points that keep accepts, then write the ramp. */
+void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
+                             const void *ctx, int style)
 {
     size_t cells = (size_t)c->cols * (size_t)c->rows;
     memset(c->count, 0, cells * sizeof *c->count);
     grid g = grid_of(c, 0);
-    int (*alive)(const sw_system *, double, const double *, int) =
-        sys && sys->scene ? sys->scene->alive : NULL;
     for (int i = 0; i < n; i++) {
         int col, row;
-        if (alive && !alive(sys, t, xy, i))
+        if (keep && !keep(ctx, i))
             continue;
         if (to_grid(&g, c, xy[2 * i], xy[2 * i + 1], &col, &row))
             c->count[(size_t)row * (size_t)c->cols + (size_t)col]++;
@@ -382,87 +386,7 @@ static void density_pass(sw_canvas *c, const double *xy, int n, const sw_system 
 
 void sw_canvas_density(sw_canvas *c, const double *xy, int n, int style)
 {
-    density_pass(c, xy, n, NULL, 0.0, style);
-}
-
-/* Walls are half-planes: a side without a neighbouring wall runs on past the
- * visible rectangle, so it is drawn to one cell beyond it and clipped there. */
-static void draw_walls(sw_canvas *c, const sw_walls *w)
-{
-    sw_view vis = sw_canvas_visible(c);
-    double s = c->scale;
-    double left = w->sides & SW_WALL_LEFT ? w->xmin : vis.xmin - s;
-    double right = w->sides & SW_WALL_RIGHT ? w->xmax : vis.xmax + s;
-    double bottom = w->sides & SW_WALL_FLOOR ? w->ymin : vis.ymin - s;
-    double top = w->sides & SW_WALL_CEILING ? w->ymax : vis.ymax + s;
-    if (w->sides & SW_WALL_LEFT)
-        sw_canvas_line(c, w->xmin, bottom, w->xmin, top, SW_GLYPH_SIDE, SW_STYLE_WALL);
-    if (w->sides & SW_WALL_RIGHT)
-        sw_canvas_line(c, w->xmax, bottom, w->xmax, top, SW_GLYPH_SIDE, SW_STYLE_WALL);
-    if (w->sides & SW_WALL_FLOOR)
-        sw_canvas_line(c, left, w->ymin, right, w->ymin, SW_GLYPH_FLOOR, SW_STYLE_WALL);
-    if (w->sides & SW_WALL_CEILING)
-        sw_canvas_line(c, left, w->ymax, right, w->ymax, SW_GLYPH_FLOOR, SW_STYLE_WALL);
-}
-
-static int is_alive(const sw_system *sys, const double *y, double t, int i)
-{
-    return !sys->scene || !sys->scene->alive || sys->scene->alive(sys, t, y, i);
-}
-
-/* Springs as lines, then their anchors on top (an anchor ends its spring). */
-static void draw_springs(sw_canvas *c, const sw_system *sys, const double *y, double t, int style)
-{
-    const sw_particles *p = &sys->particles;
-    int n = sys->n, main_sim = style == SW_STYLE_MAIN, count = sw_particles_spring_count(p);
-    for (int pass = 0; pass < 2; pass++)
-        for (int j = 0; j < count; j++) {
-            sw_spring spring, *sp = &spring;
-            sw_particles_spring(p, j, sp);
-            if (sp->a < 0 || sp->a >= n || sp->b >= n)
-                continue;
-            if (pass == 1) {
-                if (sp->b < 0)
-                    sw_canvas_mark(c, sp->ax, sp->ay, SW_GLYPH_ANCHOR, SW_STYLE_WALL);
-                continue;
-            }
-            if (!is_alive(sys, y, t, sp->a) || (sp->b >= 0 && !is_alive(sys, y, t, sp->b)))
-                continue;
-            double bx = sp->b < 0 ? sp->ax : y[2 * sp->b];
-            double by = sp->b < 0 ? sp->ay : y[2 * sp->b + 1];
-            sw_canvas_line(c, y[2 * sp->a], y[2 * sp->a + 1], bx, by,
-                           main_sim ? 0 : SW_GLYPH_GHOST_SPRING,
-                           main_sim ? SW_STYLE_SPRING : style);
-        }
-}
-
-void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, double t,
-                           uint32_t glyph, int style)
-{
-    int n = sys->n;
-    if (!glyph)
-        glyph = SW_GLYPH_MAIN;
-    if (sys->kind == SW_SYS_PARTICLES) {
-        const sw_particles *p = &sys->particles;
-        if (p->walls.active)
-            draw_walls(c, &p->walls);
-        double cx, cy, mu;
-        if (sw_particles_central(p, &cx, &cy, &mu))
-            sw_canvas_mark(c, cx, cy, SW_GLYPH_SUN, SW_STYLE_WALL);
-        draw_springs(c, sys, y, t, style);
-    }
-    int crowd = (long long)n > (long long)c->cols * c->rows / 4;
-    if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
-        for (int i = 0; i < n; i++)
-            if (is_alive(sys, y, t, i))
-                sw_canvas_point(c, y[2 * i], y[2 * i + 1], glyph, style);
-    } else if (crowd) {
-        density_pass(c, y, n, sys, t, style);
-    } else {
-        for (int i = 0; i < n; i++)
-            if (is_alive(sys, y, t, i))
-                sw_canvas_mark(c, y[2 * i], y[2 * i + 1], glyph, style);
-    }
+    sw_canvas_density_where(c, xy, n, NULL, NULL, style);
 }
 
 uint32_t sw_canvas_codepoint(const sw_canvas *c, int col, int row)
@@ -487,34 +411,6 @@ int sw_canvas_fade(const sw_canvas *c, int col, int row)
     if (col < 0 || row < 0 || col >= c->cols || row >= c->rows)
         return 0;
     return c->fade[(size_t)row * (size_t)c->cols + (size_t)col];
-}
-
-int sw_utf8_encode(uint32_t cp, char out[4])
-{
-    if (cp < 0x80) {
-        out[0] = (char)cp;
-        return 1;
-    }
-    if (cp < 0x800) {
-        out[0] = (char)(0xC0 | (cp >> 6));
-        out[1] = (char)(0x80 | (cp & 0x3F));
-        return 2;
-    }
-    if ((cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF) {
-        out[0] = '?';
-        return 1;
-    }
-    if (cp < 0x10000) {
-        out[0] = (char)(0xE0 | (cp >> 12));
-        out[1] = (char)(0x80 | ((cp >> 6) & 0x3F));
-        out[2] = (char)(0x80 | (cp & 0x3F));
-        return 3;
-    }
-    out[0] = (char)(0xF0 | (cp >> 18));
-    out[1] = (char)(0x80 | ((cp >> 12) & 0x3F));
-    out[2] = (char)(0x80 | ((cp >> 6) & 0x3F));
-    out[3] = (char)(0x80 | (cp & 0x3F));
-    return 4;
 }
 
 size_t sw_canvas_text_size(const sw_canvas *c)
@@ -554,118 +450,4 @@ size_t sw_canvas_to_text(const sw_canvas *c, char *buf, size_t len)
         buf[0] = '\0';
     }
     return need;
-}
-
-int sw_view_follow(sw_view *v, const double *xy, int n, double margin)
-{
-    double sx = v->xmax - v->xmin, sy = v->ymax - v->ymin;
-    if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
-        return 0;
-    if (!(margin >= 0.0))
-        margin = 0.0;
-    if (margin > 10.0)
-        margin = 10.0;
-    double cx = v->xmin + sx / 2.0, cy = v->ymin + sy / 2.0;
-    double lox = INFINITY, hix = -INFINITY, loy = INFINITY, hiy = -INFINITY;
-    for (int i = 0; i < n; i++) {
-        double x = xy[2 * i], y = xy[2 * i + 1];
-        /* also false for NaN and ±inf; x - cx may overflow to inf, which fails too */
-        if (!(fabs(x - cx) <= 1000.0 * sx && fabs(y - cy) <= 1000.0 * sy))
-            continue;
-        lox = fmin(lox, x);
-        hix = fmax(hix, x);
-        loy = fmin(loy, y);
-        hiy = fmax(hiy, y);
-    }
-    int changed = 0;
-    if (lox < v->xmin)
-        v->xmin = lox - margin * sx, changed = 1;
-    if (hix > v->xmax)
-        v->xmax = hix + margin * sx, changed = 1;
-    if (loy < v->ymin)
-        v->ymin = loy - margin * sy, changed = 1;
-    if (hiy > v->ymax)
-        v->ymax = hiy + margin * sy, changed = 1;
-    return changed;
-}
-
-int sw_trails_init(sw_trails *tr, int points, int capacity, char *err, size_t errlen)
-{
-    memset(tr, 0, sizeof *tr);
-    if (points < 1 || capacity < 1 || (long long)points * capacity > SW_TRAILS_MAX) {
-        snprintf(err, errlen, "trails of %d points x %d frames: both must be at least 1 "
-                 "and their product at most %d", points, capacity, SW_TRAILS_MAX);
-        return SW_EINVAL;
-    }
-    tr->xy = malloc((size_t)points * (size_t)capacity * 2 * sizeof *tr->xy);
-    if (!tr->xy) {
-        snprintf(err, errlen, "out of memory for trails of %d points x %d frames", points, capacity);
-        return SW_ENOMEM;
-    }
-    tr->points = points;
-    tr->capacity = capacity;
-    return SW_OK;
-}
-
-/* The slot for the next push; advancing drops the oldest frame when full. */
-static double *next_frame(sw_trails *tr)
-{
-    double *f = tr->xy + (size_t)tr->head * (size_t)tr->points * 2;
-    tr->head = (tr->head + 1) % tr->capacity;
-    if (tr->count < tr->capacity)
-        tr->count++;
-    return f;
-}
-
-void sw_trails_push(sw_trails *tr, const double *xy, int n)
-{
-    if (!tr->xy)
-        return;
-    double *f = next_frame(tr);
-    for (int i = 0; i < tr->points; i++) {
-        f[2 * i] = i < n ? xy[2 * i] : NAN;
-        f[2 * i + 1] = i < n ? xy[2 * i + 1] : NAN;
-    }
-}
-
-void sw_trails_push_system(sw_trails *tr, const sw_system *sys, const double *y, double t)
-{
-    if (!tr->xy)
-        return;
-    double *f = next_frame(tr);
-    for (int i = 0; i < tr->points; i++) {
-        int shown = i < sys->n && is_alive(sys, y, t, i);
-        f[2 * i] = shown ? y[2 * i] : NAN;
-        f[2 * i + 1] = shown ? y[2 * i + 1] : NAN;
-    }
-}
-
-void sw_trails_clear(sw_trails *tr)
-{
-    tr->head = 0;
-    tr->count = 0;
-}
-
-void sw_trails_free(sw_trails *tr)
-{
-    free(tr->xy);
-    memset(tr, 0, sizeof *tr);
-}
-
-void sw_canvas_draw_trails(sw_canvas *c, const sw_trails *tr, int style)
-{
-    if (!tr->xy)
-        return;
-    grid g = grid_of(c, c->mode == SW_CANVAS_BRAILLE);
-    for (int age = tr->count - 1; age >= 0; age--) {
-        int slot = ((tr->head - 1 - age) % tr->capacity + tr->capacity) % tr->capacity;
-        const double *f = tr->xy + (size_t)slot * (size_t)tr->points * 2;
-        int fade = 1 + (int)((2LL * age) / tr->capacity);
-        uint32_t glyph = fade == 1 ? SW_GLYPH_TRAIL_NEW : SW_GLYPH_TRAIL_OLD;
-        for (int i = 0; i < tr->points; i++) {
-            int gc, gr;
-            if (to_grid(&g, c, f[2 * i], f[2 * i + 1], &gc, &gr))
-                plot(c, &g, gc, gr, glyph, style, fade);
-        }
-    }
 }

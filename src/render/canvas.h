@@ -33,6 +33,9 @@
  * solution), compare sims, the main sim, warnings. sw_canvas_draw_system
  * itself draws walls, central body, springs, anchors, then particles.
  *
+ * (Scene drawing is render/draw.h, the following view render/camera.h,
+ * trails render/trails.h.)
+ *
  * Lines are clipped to the visible rectangle in double precision (Cohen–
  * Sutherland on world coordinates scaled by 1/4, so no difference can
  * overflow) before anything becomes an int; the clipped end cells are joined
@@ -40,8 +43,8 @@
  * so it is exact to rounding when that end is on or near the canvas; a line
  * between two astronomically distant points (a blown-up state) is drawn
  * safely but only approximately. Nothing here allocates after init/resize. */
-#ifndef SW_TUI_CANVAS_H
-#define SW_TUI_CANVAS_H
+#ifndef SW_RENDER_CANVAS_H
+#define SW_RENDER_CANVAS_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -129,6 +132,8 @@ int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, in
 /* A point: in ASCII mode the cell gets glyph (0: 'o'); in Braille mode its
  * dot is set (glyph unused). Off-canvas or non-finite points are skipped. */
 void sw_canvas_point(sw_canvas *c, double x, double y, uint32_t glyph, int style);
+/* The same with a fade level: 0 full, 1 newer trail, 2 older trail. */
+void sw_canvas_point_faded(sw_canvas *c, double x, double y, uint32_t glyph, int style, int fade);
 /* A marker: the cell gets glyph (0: 'o') in either mode (anchors, sun, particles). */
 void sw_canvas_mark(sw_canvas *c, double x, double y, uint32_t glyph, int style);
 /* A line from (x0, y0) to (x1, y1), clipped; glyph 0 picks one by the on-screen
@@ -141,17 +146,11 @@ void sw_canvas_line(sw_canvas *c, double x0, double y0, double x1, double y1,
  * write the ramp glyph (see SW_DENSITY_RAMP) into each cell with count >= 1,
  * in either mode; empty cells are left as they were. */
 void sw_canvas_density(sw_canvas *c, const double *xy, int n, int style);
-
-/* Draw a built system at state y (the sim's y, or the exact state for the
- * ghost) and time t: walls (floor/ceiling '=', sides '|', style WALL), the
- * central body 'O' (WALL), springs, anchors '#' (WALL), then the particles
- * alive at t (sys->scene->alive, NULL: all) with glyph (0: 'o') and style.
- * Springs use slope glyphs and style SPRING when style is SW_STYLE_MAIN,
- * else '.' and the caller's style. Many points (n > cols·rows/4) are drawn
- * as a density pass in ASCII mode and as dots in Braille mode; flow scenes
- * in Braille mode are always dots; otherwise each particle is a marker. */
-void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, double t,
-                           uint32_t glyph, int style);
+/* Whether point i is drawn (ctx is the caller's). */
+typedef int sw_canvas_keep_fn(const void *ctx, int i);
+/* The same over the points keep accepts (keep NULL: all). */
+void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
+                             const void *ctx, int style);
 
 /* Code point shown in (col, row): the glyph, else U+2800 + dots when any
  * dot is set, else ' ' (also for cells off the canvas). */
@@ -160,10 +159,6 @@ uint32_t sw_canvas_codepoint(const sw_canvas *c, int col, int row);
 int sw_canvas_style(const sw_canvas *c, int col, int row);
 /* Fade level of (col, row): 0 full, 1 newer trail, 2 older trail. */
 int sw_canvas_fade(const sw_canvas *c, int col, int row);
-/* UTF-8 bytes of code point cp into out (not NUL-terminated); returns 1..4.
- * Surrogates and values above U+10FFFF encode as '?'. */
-int sw_utf8_encode(uint32_t cp, char out[4]);
-
 /* Bytes sw_canvas_to_text may need, NUL included. */
 size_t sw_canvas_text_size(const sw_canvas *c);
 /* The canvas as text: each row as UTF-8 with trailing spaces removed, then
@@ -171,44 +166,5 @@ size_t sw_canvas_text_size(const sw_canvas *c);
  * text is written only when it fits (len > that length), else buf gets ""
  * (when len > 0) and nothing else. */
 size_t sw_canvas_to_text(const sw_canvas *c, char *buf, size_t len);
-
-/* Grow *v so it contains every point (xy[2i], xy[2i+1]), i < n: a side moves
- * only when a point lies beyond it, and then past the farthest such point by
- * margin × the view's span on that axis (margin in [0, 10]), so a particle
- * leaving slowly moves the view in jumps rather than every frame. The view
- * never shrinks. Non-finite points, and points farther than 1000 spans from
- * the view's centre (a blow-up, which the sim reports), are ignored. Returns
- * 1 when v changed, else 0. */
-int sw_view_follow(sw_view *v, const double *xy, int n, double margin);
-
-/* Trails: a ring of the last `capacity` frames of positions for the first
- * `points` particles, allocated once; pushing never allocates. */
-typedef struct sw_trails {
-    int points;     /* particles tracked per frame */
-    int capacity;   /* frames kept */
-    int head;       /* slot the next push writes */
-    int count;      /* frames held, <= capacity */
-    double *xy;     /* capacity × points × 2; NaN marks a particle not shown */
-} sw_trails;
-
-/* Largest points × capacity accepted. */
-#define SW_TRAILS_MAX (1 << 22)
-
-/* Allocate an empty ring (points >= 1, capacity >= 1, points·capacity <=
- * SW_TRAILS_MAX); 0, SW_EINVAL or SW_ENOMEM with err filled. */
-int sw_trails_init(sw_trails *tr, int points, int capacity, char *err, size_t errlen);
-/* Push one frame: positions of the first min(n, points) of xy (the rest NaN);
- * once full, the oldest frame is overwritten. */
-void sw_trails_push(sw_trails *tr, const double *xy, int n);
-/* Push one frame of a system at state y and time t; particles not alive at t
- * are stored as NaN so dead particles leave no trail. */
-void sw_trails_push_system(sw_trails *tr, const sw_system *sys, const double *y, double t);
-/* Forget every frame (capacity kept). */
-void sw_trails_clear(sw_trails *tr);
-void sw_trails_free(sw_trails *tr);
-/* Draw the held frames oldest first with style: a frame of age a (0 = the
- * latest push) gets fade 1 + floor(2a / capacity), glyph ':' for fade 1 and
- * '.' for fade 2; in Braille mode dots, with the cell's fade set likewise. */
-void sw_canvas_draw_trails(sw_canvas *c, const sw_trails *tr, int style);
 
 #endif

@@ -9,7 +9,8 @@
 #include <string.h>
 
 #include "lab/bench.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/utf8.h"
 
 int sw_screen_init(sw_screen *s, int cols, int rows, char *err, size_t errlen)
 {
@@ -50,32 +51,6 @@ void sw_screen_clear(sw_screen *s)
     memset(s->fade, 0, n);
 }
 
-/* Decode one UTF-8 sequence; invalid input yields '?' and consumes one byte. */
-static uint32_t utf8_next(const unsigned char **p)
-{
-    const unsigned char *s = *p;
-    uint32_t c = s[0];
-    int len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-    if (len == 0) {
-        *p = s + 1;
-        return '?';
-    }
-    if (len == 1) {
-        *p = s + 1;
-        return c;
-    }
-    c &= 0x3Fu >> (len - 1);
-    for (int i = 1; i < len; i++) {
-        if ((s[i] & 0xC0) != 0x80) {
-            *p = s + 1;
-            return '?';
-        }
-        c = (c << 6) | (s[i] & 0x3F);
-    }
-    *p = s + len;
-    return c;
-}
-
 int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const char *text)
 {
     if (row < 0 || row >= s->rows || col >= s->cols || !text)
@@ -83,7 +58,7 @@ int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const c
     const unsigned char *p = (const unsigned char *)text;
     int n = 0;
     while (*p && n < width) {
-        uint32_t c = utf8_next(&p);
+        uint32_t c = sw_utf8_next(&p);
         int x = col + n++;
         if (x < 0)
             continue;
@@ -334,16 +309,19 @@ static void overlay(sw_screen *scr, const char *title, const char *const *lines,
         sw_screen_text(scr, r0 + 1 + i, c0 + 2, w - 4, style, lines[i]);
 }
 
+/* The help screen, generated from the one list of controls. */
 static void help_overlay(sw_screen *scr, int in_lesson)
 {
     static char buf[48][96];
     const char *lines[48];
     int n = 0, count;
-    const sw_keybinding *keys = sw_keys(&count);
+    const sw_control *controls = sw_controls(&count);
     for (int i = 0; i < count && n < 46; i++) {
-        if (!keys[i].label || (keys[i].lesson_only && !in_lesson))
+        const sw_control *c = &controls[i];
+        int shown = c->context == SW_CTX_PLAY || (c->context == SW_CTX_LESSON && in_lesson);
+        if (!c->help_keys || !shown)
             continue;
-        snprintf(buf[n], sizeof buf[n], "%-13s %s", keys[i].label, keys[i].help);
+        snprintf(buf[n], sizeof buf[n], "%-13s %s", c->help_keys, c->help);
         lines[n] = buf[n];
         n++;
     }
@@ -378,6 +356,17 @@ static void panel_overlay(sw_app *a, sw_screen *scr)
     lines[n] = buf[n];
     n++;
     overlay(scr, a->scene->name, lines, n, SW_STYLE_TEXT);
+}
+
+/* How each kind of side-pane line looks. */
+static int side_style(sw_side_kind kind)
+{
+    static const int styles[] = {
+        [SW_SIDE_TEXT] = SW_STYLE_TEXT, [SW_SIDE_VERBATIM] = SW_STYLE_STATUS, [SW_SIDE_TITLE] = SW_STYLE_TITLE,
+        [SW_SIDE_OK] = SW_STYLE_OK, [SW_SIDE_BAD] = SW_STYLE_BAD, [SW_SIDE_DIM] = SW_STYLE_DIM,
+        [SW_SIDE_HINT] = SW_STYLE_WARN,
+    };
+    return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
 }
 
 void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *scr)
@@ -423,7 +412,7 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
             *side->scroll = first;
         for (int i = 0; first + i < side->nlines && i < side_h; i++)
             sw_screen_text(scr, side_row + i, side_col, side_w,
-                           side->styles ? side->styles[first + i] : SW_STYLE_TEXT, side->lines[first + i]);
+                           side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT), side->lines[first + i]);
         if (first > 0)
             sw_screen_text(scr, side_row, side_col + side_w - 9, 9, SW_STYLE_DIM, "(Up: more)");
         if (first < max_first)

@@ -1,14 +1,18 @@
 /* The whole terminal as a grid of cells (code point + style), composed
  * without a terminal: the ncurses view paints it, `play --frames --ascii`
  * prints it, and tests read it. */
-#ifndef SW_SCREEN_H
-#define SW_SCREEN_H
+#ifndef SW_RENDER_SCREEN_H
+#define SW_RENDER_SCREEN_H
 
 #include <stddef.h>
 #include <stdint.h>
 
 #include "app/app.h"
+#include "app/side.h"
+#include "render/camera.h"
 #include "render/canvas.h"
+#include "render/draw.h"
+#include "render/trails.h"
 
 /* Styles past the canvas's own (SW_STYLE_*). */
 enum {
@@ -53,16 +57,6 @@ typedef struct sw_frame {
     const sw_scene *view_scene;
     int have_trails;
 } sw_frame;
-
-/* Optional text beside or below the scene (a lesson page), already split
- * into lines with styles; the composer wraps nothing. */
-typedef struct sw_side {
-    const char *const *lines;
-    const int *styles;
-    int nlines;
-    int width;                /* wanted columns beside the scene (0: below) */
-    int *scroll;              /* first line shown; the composer clamps it */
-} sw_side;
 
 int sw_frame_init(sw_frame *f, char *err, size_t errlen);
 void sw_frame_free(sw_frame *f);

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "scenes/scenes.h"
 
 int sw_scene_particles(sw_system *sys, int n, double m, char *err, size_t errlen)
@@ -106,7 +106,7 @@ const sw_scene sw_scene_projectile = {
     .summary = "one ball launched under gravity and linear drag; closed-form exact solution",
     .teaches = "Euler's global error is O(dt): halve the step and the miss distance halves.",
     .params = projectile_params,
-    .nparams = 5,
+    .nparams = SW_NPARAMS(projectile_params),
     .dt = 0.05,
     .integrator = "euler",
     .duration = 2.0,
@@ -263,7 +263,7 @@ const sw_scene sw_scene_bounce = {
     .summary = "balls in a box bouncing off the walls and floor with restitution e",
     .teaches = "A collision inside a step breaks every method's order: error becomes O(dt).",
     .params = bounce_params,
-    .nparams = 4,
+    .nparams = SW_NPARAMS(bounce_params),
     .dt = 0.01,
     .integrator = "verlet",
     .duration = 3.0,
@@ -389,7 +389,7 @@ const sw_scene sw_scene_fireworks = {
     .summary = "bursts of sparks under gravity and drag, each living a few seconds",
     .teaches = "A particle system: many independent particles, born and dying, one seeded show.",
     .params = fireworks_params,
-    .nparams = 5,
+    .nparams = SW_NPARAMS(fireworks_params),
     .dt = 0.02,
     .integrator = "symplectic-euler",
     .duration = 8.5,

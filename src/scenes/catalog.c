@@ -3,14 +3,16 @@
  * that lists scenes; each family lives in its own file. */
 #include "stepwise/scene.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "scenes/scenes.h"
+#include "util/kv.h"
+#include "util/names.h"
+#include "util/num.h"
 
 static const sw_scene *const catalog[] = {
     &sw_scene_vortex, &sw_scene_river, &sw_scene_gyre,
@@ -60,32 +62,6 @@ void sw_scene_fill(const sw_scene *sc, const double *p, double *out)
         out[i] = 0;
 }
 
-int sw_parse_double(const char *text, double *out)
-{
-    if (!text || !*text)
-        return SW_EINVAL;
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (*end != '\0' || end == text || errno == ERANGE || !isfinite(v))
-        return SW_EINVAL;
-    *out = v;
-    return SW_OK;
-}
-
-int sw_parse_long(const char *text, long min, long max, long *out)
-{
-    if (!text || !*text)
-        return SW_EINVAL;
-    char *end;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (*end != '\0' || end == text || errno == ERANGE || v < min || v > max)
-        return SW_EINVAL;
-    *out = v;
-    return SW_OK;
-}
-
 int sw_scene_check_value(const sw_scene *sc, int index, double value, char *err, size_t errlen)
 {
     const sw_param *pd = &sc->params[index];
@@ -102,42 +78,60 @@ int sw_scene_check_value(const sw_scene *sc, int index, double value, char *err,
     return SW_OK;
 }
 
-/* Names of all parameters, for "allowed" lists in messages. */
-static void param_names(const sw_scene *sc, char *buf, size_t len)
+static const char *scene_name_at(const void *ctx, int i)
 {
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < sc->nparams && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? ", " : "", sc->params[i].name);
+    (void)ctx;
+    return catalog[i]->name;
+}
+
+size_t sw_scene_names(char *buf, size_t len)
+{
+    return sw_names_join(buf, len, scene_name_at, NULL, NSCENES);
+}
+
+static const char *param_name_at(const void *ctx, int i)
+{
+    return ((const sw_scene *)ctx)->params[i].name;
+}
+
+size_t sw_scene_param_names(const sw_scene *sc, char *buf, size_t len)
+{
+    return sw_names_join(buf, len, param_name_at, sc, sc->nparams);
 }
 
 int sw_scene_set(const sw_scene *sc, double *p, const char *assignment, char *err, size_t errlen)
 {
     char names[160];
-    const char *eq = strchr(assignment, '=');
-    if (!eq || eq == assignment) {
-        param_names(sc, names, sizeof names);
+    size_t len = strlen(assignment);
+    sw_kv kv;
+    int got = sw_kv_next(assignment, len, 0, &kv);
+    if (got <= 0 || kv.name_len == 0) {
+        sw_scene_param_names(sc, names, sizeof names);
         snprintf(err, errlen, "--set wants PARAM=VALUE (got '%.40s'); %s parameters: %s",
                  assignment, sc->name, names);
         return SW_EINVAL;
     }
     char name[64];
-    size_t len = (size_t)(eq - assignment);
-    if (len >= sizeof name)
-        len = sizeof name - 1;
-    memcpy(name, assignment, len);
-    name[len] = '\0';
+    snprintf(name, sizeof name, "%.*s", (int)(kv.name_len < sizeof name ? kv.name_len : sizeof name - 1),
+             assignment + kv.name_at);
     int idx = sw_scene_param_index(sc, name);
     if (idx < 0) {
-        param_names(sc, names, sizeof names);
+        sw_scene_param_names(sc, names, sizeof names);
         snprintf(err, errlen, "%s has no parameter '%.40s'; its parameters are: %s", sc->name, name, names);
         return SW_EINVAL;
     }
+    /* The value is the rest of the text: "k=1 2" is not a number. */
+    char value[64];
+    const char *rest = assignment + kv.value_at;
+    size_t rlen = len - kv.value_at;
+    while (rlen && (rest[rlen - 1] == ' ' || rest[rlen - 1] == '\t'))
+        rlen--;
     double v;
-    if (sw_parse_double(eq + 1, &v) != SW_OK) {
+    if (rlen >= sizeof value ||
+        (snprintf(value, sizeof value, "%.*s", (int)rlen, rest), sw_parse_double(value, &v) != SW_OK)) {
         const sw_param *pd = &sc->params[idx];
         snprintf(err, errlen, "%s: '%.40s' is not a finite number; %s takes a value in [%g, %g]",
-                 sc->name, eq + 1, pd->name, pd->min, pd->max);
+                 sc->name, rest, pd->name, pd->min, pd->max);
         return SW_EINVAL;
     }
     int rc = sw_scene_check_value(sc, idx, v, err, errlen);

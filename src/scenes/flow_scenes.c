@@ -6,10 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "scenes/scenes.h"
+#include "util/num.h"
 
-#define PI 3.14159265358979323846
 
 int sw_scene_flow(sw_system *sys, int n, sw_field_fn *field, sw_field_jac_fn *jac, char *err,
                   size_t errlen)
@@ -39,7 +39,7 @@ static void vortex_seed(int n, int i, double *x, double *y)
     if (rings > 24)
         rings = 24;
     int k = i % rings, per = (n + rings - 1) / rings, j = i / rings;
-    double r = (k + 1.0) / rings, a = 2.0 * PI * j / per + 0.3 * k;
+    double r = (k + 1.0) / rings, a = 2.0 * SW_PI * j / per + 0.3 * k;
     *x = r * cos(a);
     *y = r * sin(a);
 }
@@ -115,10 +115,10 @@ const sw_scene sw_scene_vortex = {
     .summary = "points circling in a rotating flow x' = w(-y, x); exact paths are circles",
     .teaches = "Euler spirals outward: every step multiplies the radius by sqrt(1 + (w dt)^2).",
     .params = vortex_params,
-    .nparams = 2,
+    .nparams = SW_NPARAMS(vortex_params),
     .dt = 0.05,
     .integrator = "euler",
-    .duration = 2 * PI,
+    .duration = 2 * SW_PI,
     .build = vortex_build,
     .exact = vortex_exact,
     .drift = vortex_drift,
@@ -201,7 +201,7 @@ const sw_scene sw_scene_river = {
     .summary = "a river flowing past a round rock; exact paths keep the stream function constant",
     .teaches = "Error shows up as particles leaving their streamline, even cutting into the rock.",
     .params = river_params,
-    .nparams = 3,
+    .nparams = SW_NPARAMS(river_params),
     .dt = 0.05,
     .integrator = "rk4",
     .duration = 3.0,
@@ -240,8 +240,8 @@ static void gyre_field(const void *params, double t, int n, const double *x, dou
     for (int i = 0; i < n; i++) {
         double px = x[2 * i], py = x[2 * i + 1];
         double f = a * px * px + b * px, df = 2.0 * a * px + b;
-        v[2 * i] = -PI * A * sin(PI * f) * cos(PI * py);
-        v[2 * i + 1] = PI * A * cos(PI * f) * sin(PI * py) * df;
+        v[2 * i] = -SW_PI * A * sin(SW_PI * f) * cos(SW_PI * py);
+        v[2 * i + 1] = SW_PI * A * cos(SW_PI * f) * sin(SW_PI * py) * df;
     }
 }
 
@@ -266,7 +266,7 @@ const sw_scene sw_scene_gyre = {
     .summary = "the time-dependent double gyre: chaotic mixing with no closed form",
     .teaches = "Without an exact solution, error is measured against a tight-tolerance rk45 run.",
     .params = gyre_params,
-    .nparams = 4,
+    .nparams = SW_NPARAMS(gyre_params),
     .dt = 0.1,
     .integrator = "rk4",
     .duration = 10.0,

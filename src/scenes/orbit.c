@@ -4,10 +4,10 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "scenes/scenes.h"
+#include "util/num.h"
 
-#define PI 3.14159265358979323846
 
 enum { OR_E, OR_MU };
 static const sw_param orbit_params[] = {
@@ -33,8 +33,8 @@ static int orbit_build(sw_system *sys, char *err, size_t errlen)
 static int orbit_exact(const sw_system *sys, double t, double *y)
 {
     double e = sys->p[OR_E], n = sqrt(sys->p[OR_MU]), b = sqrt(1 - e * e);
-    double M = fmod(n * t, 2 * PI);
-    double E = e < 0.8 ? M : PI;
+    double M = fmod(n * t, 2 * SW_PI);
+    double E = e < 0.8 ? M : SW_PI;
     for (int i = 0; i < 60; i++) {
         double dE = (E - e * sin(E) - M) / (1 - e * cos(E));
         E -= dE;
@@ -68,10 +68,10 @@ const sw_scene sw_scene_orbit = {
     .summary = "a planet around a fixed sun; Kepler's exact ellipse, period 2 pi / sqrt(mu)",
     .teaches = "RK4's energy drifts away; Verlet's stays bounded, and its ellipse slowly turns instead.",
     .params = orbit_params,
-    .nparams = 2,
+    .nparams = SW_NPARAMS(orbit_params),
     .dt = 0.01,
     .integrator = "verlet",
-    .duration = 4 * PI,
+    .duration = 4 * SW_PI,
     .build = orbit_build,
     .exact = orbit_exact,
     .energy = sw_scene_particle_energy,

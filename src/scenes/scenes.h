@@ -1,8 +1,11 @@
 /* Private to the scene files: the scene objects and the helpers they share. */
-#ifndef SW_SCENES_H
-#define SW_SCENES_H
+#ifndef SW_SCENES_SCENES_H
+#define SW_SCENES_SCENES_H
 
 #include "stepwise/scene.h"
+
+/* A scene's parameter count, from its array: never counted by hand. */
+#define SW_NPARAMS(params) ((int)(sizeof(params) / sizeof((params)[0])))
 
 extern const sw_scene sw_scene_vortex, sw_scene_river, sw_scene_gyre;
 extern const sw_scene sw_scene_projectile, sw_scene_bounce, sw_scene_fireworks;

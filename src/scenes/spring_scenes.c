@@ -6,10 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 #include "scenes/scenes.h"
+#include "util/num.h"
 
-#define PI 3.14159265358979323846
 
 /* ---- spring --------------------------------------------------------------- */
 
@@ -85,7 +85,7 @@ static const char *spring_exact_fails(const sw_system *sys)
     if (p[SP_REST] == 0 || p[SP_STRETCH] <= 0 || g >= w0)
         return NULL;
     double wd = sqrt(w0 * w0 - g * g);
-    if (p[SP_REST] - p[SP_STRETCH] * exp(-g * PI / wd) > 0)
+    if (p[SP_REST] - p[SP_STRETCH] * exp(-g * SW_PI / wd) > 0)
         return NULL;
     return "the mass swings through its anchor, where the spring force turns around and the "
            "one-dimensional formula no longer holds";
@@ -133,7 +133,7 @@ const sw_scene sw_scene_spring = {
     .summary = "one mass on a damped spring to a fixed anchor; exact in every damping regime",
     .teaches = "Undamped, explicit Euler gains energy every step: (1 + (w dt)^2) per step.",
     .params = spring_params,
-    .nparams = 6,
+    .nparams = SW_NPARAMS(spring_params),
     .dt = 0.02,
     .integrator = "euler",
     .duration = 10.0,
@@ -171,7 +171,7 @@ static int stiff_build(sw_system *sys, char *err, size_t errlen)
     *s = (sw_spring){ .a = 0, .b = -1, .k = p[SS_K], .c = 0.0, .rest = p[SS_REST] };
     sw_particles_add_gravity(&sys->particles, 0.0, -p[SS_G]);
     /* Start at rest, stretched by the static sag m g / k, at the given angle. */
-    double len = p[SS_REST] + p[SS_M] * p[SS_G] / p[SS_K], a = p[SS_ANGLE] * PI / 180.0;
+    double len = p[SS_REST] + p[SS_M] * p[SS_G] / p[SS_K], a = p[SS_ANGLE] * SW_PI / 180.0;
     sys->y[0] = len * sin(a);
     sys->y[1] = -len * cos(a);
     return SW_OK;
@@ -196,7 +196,7 @@ const sw_scene sw_scene_stiff_spring = {
     .teaches = "Stiffness: explicit methods need w dt below their limit; backward Euler does not, "
                "and implicit midpoint gains energy on this nonlinear spring above dt 0.19.",
     .params = stiff_params,
-    .nparams = 5,
+    .nparams = SW_NPARAMS(stiff_params),
     .dt = 0.005,
     .integrator = "verlet",
     .duration = 2.0,
@@ -270,7 +270,7 @@ const sw_scene sw_scene_chain = {
     .summary = "n masses in a line joined by springs between two fixed anchors",
     .teaches = "The stiffest mode sets the step: w_max dt must stay below each method's limit.",
     .params = chain_params,
-    .nparams = 7,
+    .nparams = SW_NPARAMS(chain_params),
     .dt = 0.01,
     .integrator = "verlet",
     .duration = 5.0,

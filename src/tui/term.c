@@ -8,18 +8,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <wchar.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
+#include "util/signals.h"
 
-volatile sig_atomic_t sw_term_signal;
 static int started;
 static int colour;
 static attr_t style_attr[SW_STYLE_ALL];
 static short style_pair[SW_STYLE_ALL];
-
-static void on_signal(int sig) { sw_term_signal = sig; }
 
 void sw_term_stop(void)
 {
@@ -72,13 +69,7 @@ int sw_term_start(char *err, size_t errlen)
     }
     started = 1;
     atexit(sw_term_stop);
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
+    sw_signals_catch();
     cbreak();
     noecho();
     nonl();
@@ -144,12 +135,3 @@ void sw_term_paint(const sw_screen *s)
         }
     refresh();
 }
-
-double sw_term_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-int sw_term_signal_status(void) { return sw_term_signal ? 128 + sw_term_signal : 0; }

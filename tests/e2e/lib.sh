@@ -1,17 +1,40 @@
-# Helpers for end-to-end tests that drive stepwise in tmux, as a student would.
-# Each test sources this, calls tmux_start, and gets a shell with a known prompt.
-
-SESSION="sw-e2e-$$"
+# What every end-to-end test shares; each test starts with
+#     . "$(dirname "$0")/lib.sh"
+# and gets: STEPWISE and SW (the binary, absolute), ROOT (the repository),
+# WORK (also dir and work: a scratch directory, removed on exit, and the
+# current directory), fail MESSAGE, and the tmux helpers below for tests
+# that drive stepwise as a student would. Needs only POSIX sh and coreutils
+# (no procps: processes are found through /proc).
+set -u
+STEPWISE=${STEPWISE:?set STEPWISE to the stepwise binary}
+SW=$STEPWISE
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+root=$ROOT
 WORK=$(mktemp -d)
-trap 'tmux kill-session -t "$SESSION" 2>/dev/null; rm -rf "$WORK"' EXIT
+dir=$WORK
+work=$WORK
+SESSION="sw-e2e-$$"
+TMUX_STARTED=0
+trap 'if [ "$TMUX_STARTED" = 1 ]; then tmux kill-session -t "$SESSION" 2>/dev/null; fi; rm -rf "$WORK"' EXIT
+cd "$WORK" || exit 1
 
-fail() { echo "FAIL: $*"; echo "--- screen:"; tmux capture-pane -p -t "$SESSION" 2>/dev/null; exit 1; }
+fail() {
+    echo "FAIL: $*"
+    if [ "$TMUX_STARTED" = 1 ]; then
+        echo "--- screen:"
+        tmux capture-pane -p -t "$SESSION" 2>/dev/null
+    fi
+    exit 1
+}
 
-# A 120x40 tmux session running a plain sh with the prompt "PROMPT$ ".
+# A 120x40 tmux session running a plain sh with the prompt "PROMPT$ ", in
+# the C.UTF-8 locale (built into glibc, so present on a fresh Debian too):
+# the UI's ✓, ✗ and Braille need a UTF-8 terminal, whatever the caller's locale.
 tmux_start() {
     tmux kill-session -t "$SESSION" 2>/dev/null
-    tmux new-session -d -s "$SESSION" -x 120 -y 40 -c "$WORK" "env PS1='PROMPT\$ ' TERM=xterm-256color sh" \
-        || fail "cannot start tmux"
+    TMUX_STARTED=1
+    LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$SESSION" -x 120 -y 40 -c "$WORK" \
+        "env LANG=C.UTF-8 LC_ALL=C.UTF-8 PS1='PROMPT\$ ' TERM=xterm-256color sh" || fail "cannot start tmux"
     wait_for 'PROMPT\$' || fail "no shell prompt"
 }
 
@@ -33,10 +56,24 @@ keys() { tmux send-keys -t "$SESSION" "$@"; }
 # run CMD in the shell (typed, as a student would)
 type_cmd() { keys "$1" Enter; }
 
+# child_of PID: the first process whose parent is PID (from /proc/*/stat:
+# after the parenthesised name come the state, then the parent's pid).
+child_of() {
+    parent=$1
+    for stat in /proc/[0-9]*/stat; do
+        read -r line < "$stat" 2>/dev/null || continue
+        rest=${line##*) }
+        set -- $rest
+        [ "${2:-}" = "$parent" ] || continue
+        p=${stat#/proc/}
+        echo "${p%/stat}"
+        return 0
+    done
+}
+
 # The pid of the stepwise process under the pane's shell.
 app_pid() {
-    shell=$(tmux display -p -t "$SESSION" '#{pane_pid}')
-    pgrep -P "$shell" | head -1
+    child_of "$(tmux display -p -t "$SESSION" '#{pane_pid}')"
 }
 
 # Wait until no stepwise runs under the pane's shell (a sanitizer build may

@@ -3,9 +3,8 @@
 # to the end (small sizes); every hand-written baseline reproduces the
 # generic step bit for bit; every default scene gets a frame-cost row.
 # Timings are printed, never checked: they vary from machine to machine.
-set -u
+. "$(dirname "$0")/lib.sh"
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
-fail() { echo "FAIL: $*"; exit 1; }
 out=$("$BENCH" --quick 2>&1) || fail "exited $?: $out"
 echo "$out" | grep -q '^throughput: ns per particle-step' || fail "no throughput table"
 [ "$(echo "$out" | grep -c 'bitwise equal after 200 steps')" -eq 4 ] \

@@ -1,11 +1,7 @@
 #!/bin/sh
 # Bad input to bench and stability: one line on stderr naming what was wrong,
 # exit status 2, and no output file left behind (not even a temporary).
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 # expect_usage PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no stdout.
 expect_usage() {

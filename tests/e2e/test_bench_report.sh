@@ -5,11 +5,7 @@
 # point, every error read back as a number or nan) and the SVG (well formed
 # enough for xmllint when it is installed, one series group per method per
 # panel). Timing is never checked: it varies from run to run.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 "$SW" bench spring --set k=1 --set m=1 --set c=0 --integrators euler,midpoint,rk4 \
     --csv "$dir/points.csv" --svg "$dir/plot.svg" >"$dir/out" 2>"$dir/err" \

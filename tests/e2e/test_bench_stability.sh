@@ -3,9 +3,7 @@
 # printed limits, theory and measured, are verlet 2 and rk4 2 sqrt 2 within
 # 1%, euler 'none' and implicit-euler 'unbounded'; rk45 is skipped with a
 # reason. Scenes where growth cannot be measured get the theory alone.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 out=$("$SW" stability spring --set k=1 --set m=1 --set c=0 \
       --integrators euler,verlet,rk4,implicit-euler,rk45) || fail "stability exited $?"
 echo "$out" | grep -q 'stiffest mode at the start: |L| = 1 rad/s' || fail "no |L| line: $out"

@@ -4,9 +4,7 @@
 # so with the step and time on stderr and in the trace; the renderer draws
 # the banner. Run by `make sanitize` too, where UBSan stops on any undefined
 # behaviour (NaN and infinities reach the rasteriser and the status line).
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+. "$(dirname "$0")/lib.sh"
 scenes=$("$STEPWISE" list scenes | awk '{ print $1 }')
 methods=$("$STEPWISE" list integrators | awk '{ print $1 }')
 runs=0 blown=0 fail=0

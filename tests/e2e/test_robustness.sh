@@ -1,10 +1,8 @@
 #!/bin/sh
 # Runs every row of docs/robustness.md: exit 2, exactly one line on stderr
 # with the documented text, nothing on stdout, no core dump, no output file.
-doc="$(cd "$(dirname "$0")/../.." && pwd)/docs/robustness.md"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+. "$(dirname "$0")/lib.sh"
+doc="$ROOT/docs/robustness.md"
 ulimit -c unlimited 2>/dev/null
 mkdir dir
 : > empty.trace; : > empty.lesson
@@ -14,15 +12,18 @@ ln -s /proc/self/mem unreadable.trace
 echo "not a shared object" > text.so
 printf 'int sw_not_the_symbol(void);\nint sw_not_the_symbol(void) { return 0; }\n' > nosym.c
 cc -shared -fPIC -o nosym.so nosym.c || { echo "cannot build the nosym.so fixture"; exit 1; }
+mkfifo fifo.lesson fifo.trace
+: > afile
 
 rows=0 bad=0
-# rows: | input | `command` | `expected` |
-grep -E '^\| [^|]+ \| `stepwise' "$doc" > rows.txt
+# rows: | input | `command` | `expected` |; a command may start with
+# environment assignments (`XDG_STATE_HOME=afile stepwise lesson 1`).
+grep -E '^\| [^|]+ \| `([A-Z_]+=[^ `]* )*stepwise' "$doc" > rows.txt
 while IFS= read -r row; do
     cmd=$(printf '%s\n' "$row" | sed -E 's/^\| [^|]+ \| `([^`]*)` \|.*/\1/')
     want=$(printf '%s\n' "$row" | sed -E 's/.*\| `([^`]*)` \|$/\1/')
     rows=$((rows + 1))
-    run=$(printf '%s' "$cmd" | sed "s#^stepwise#\"\$STEPWISE\"#")
+    run=$(printf '%s' "$cmd" | sed -E "s#^(([A-Z_]+=[^ ]* )*)stepwise#\1\"\$STEPWISE\"#")
     eval "$run" </dev/null >out.txt 2>err.txt
     rc=$?
     nerr=$(wc -l < err.txt)

@@ -4,12 +4,7 @@
 # its own operation order: a = f/m, the damping term formed differently)
 # writes traces that pass with the default tolerances; the same program's
 # Euler numbers declared as rk4 fail. awk is on every Debian machine.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 cat > spring.awk <<'AWK'
 # The spring scene (docs/trace-format.md): mass m at (rest + stretch, 0), at

@@ -6,11 +6,7 @@
 # binary is then run from. Lessons: the tree's lessons/*.lesson when there
 # are any; a lesson file dropped into the installed lessons directory in any
 # case, so the lookup is tested even before lessons exist.
-set -u
-root=$(cd "$(dirname "$0")/../.." && pwd)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 build="$dir/build"
 mk() { make -s -C "$root" BUILD="$build" BIN="$build/stepwise" OPT=-O0 "$@" >"$dir/make.out" 2>&1 \
        || fail "make $*: $(tail -20 "$dir/make.out")"; }

@@ -2,12 +2,7 @@
 # `record` then `check --json`: the output parses as JSON (a strict parser in
 # awk below, since a fresh Debian has awk but no python or jq) and has the
 # fields docs/trace-format.md documents, for a pass, a failure and an error.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 # A strict JSON parser (RFC 8259 grammar, one value, nothing after it).
 # Prints each scalar as "path=value" (strings unquoted), e.g.

@@ -3,12 +3,7 @@
 # file and the line ("FILE:LINE: ..."), nothing else, and no crash. Files far
 # larger than any trace are read in bounded memory (run under a 16 MB
 # address-space limit, a third of the files' size).
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 "$SW" record spring --steps 50 -o good.csv 2>/dev/null || fail "record failed"
 # good.csv: line 1 magic, 2-15 metadata, 16 header, 17-67 rows (steps 0-50)

@@ -4,13 +4,7 @@
 # euler, is graded against euler (pass) and rk4 (fail) on the chain; plugins
 # that lack the symbol, carry the wrong interface version, write NaN, fail
 # their step or are not shared objects get a clear message, never a crash.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-root=$(cd "$(dirname "$0")/../.." && pwd)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 CC=${CC:-cc}
 build() { # name.so source.c
     $CC -std=c11 -O2 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes \

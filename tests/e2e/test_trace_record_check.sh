@@ -4,13 +4,7 @@
 # checked as euler fails, midpoint checked as heun fails, a blow-up is a
 # result (exit 0, trace ends at the diverged step), an interrupted record
 # leaves nothing under the real name, and bad options exit 2 with one line.
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-root=$(cd "$(dirname "$0")/../.." && pwd)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 unset TERM
 # run CMD...: status in $rc, stdout in out, stderr in err
 run() { "$@" >out 2>err </dev/null; rc=$?; }
@@ -30,7 +24,7 @@ grep -q '^PASS' out || fail "no PASS line: $(cat out)"
 
 # the worked example of docs/trace-format.md, written by hand with only the
 # required metadata and short decimals, passes
-run "$SW" check "$root/tests/traces/spring-euler-by-hand.trace"
+run "$SW" check "$root/tests/data/traces/spring-euler-by-hand.trace"
 [ "$rc" -eq 0 ] || fail "the hand-written worked example fails: $(cat out err)"
 
 # record to stdout equals record to a file, byte for byte

@@ -6,12 +6,7 @@
 # the defaults on every run in the doc's first table, and stepwise traces of
 # one method checked as another fail on every run in the second. Prints the
 # worst tolerance ratio of each run (<= 1 passes).
-set -u
-SW=${STEPWISE:?set STEPWISE to the stepwise binary}
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/lib.sh"
 
 cat > springs.awk <<'AWK'
 # Particles of mass m joined by damped springs (force on a, spring a-b:

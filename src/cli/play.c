@@ -1,19 +1,19 @@
 /* `stepwise play`: a scene live in the terminal, or N frames as plain text
  * with --ascii (no terminal needed). Both run the same app model and the
  * same composer; only painting differs. */
+#include "cli/cli.h"
+
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "app/app.h"
 #include "render/screen.h"
-#include "cli/cli.h"
-#include "tui/play.h"
-#include "tui/term.h"
+#include "tui/loop.h"
+#include "util/signals.h"
 
 static const char play_help[] =
     "usage: stepwise play SCENE [OPTIONS]\n\n"
@@ -32,15 +32,16 @@ static const char play_help[] =
     "      --speed X           simulated seconds per wall second (default 1)\n"
     "  -h, --help              this help\n";
 
-/* Steps for one sim per frame: what fits in about 10 ms at the measured
- * cost per step (capacity: steps per second of stepping time). */
-static long step_budget(const sw_app *a, double capacity)
+int sw_cli_play(sw_app *a, const sw_play_hooks *hooks)
 {
-    double b = (capacity > 0 ? capacity : 2000) * 0.010 / a->nsims;
-    return b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
+    char err[SW_ERRLEN];
+    if (sw_tui_play(a, hooks, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    return sw_signals_status();
 }
 
-/* Print `frames` frames of the composed screen as text. */
+/* Print `frames` frames of the composed screen as text; a write error
+ * (a full disk, a closed pipe) is an error. */
 static int ascii_frames(sw_app *a, long frames, int cols, int rows, int braille)
 {
     sw_frame f;
@@ -62,99 +63,13 @@ static int ascii_frames(sw_app *a, long frames, int cols, int rows, int braille)
         if (k > 0)
             fputc('\n', stdout);
         fputs(text, stdout);
+        if (ferror(stdout))
+            break;
     }
     free(text);
     sw_screen_free(&scr);
     sw_frame_free(&f);
-    return fflush(stdout) == 0 ? SW_EXIT_OK : SW_EXIT_USAGE;
-}
-
-int sw_play_loop(sw_app *a, sw_play_hooks *hooks)
-{
-    char err[SW_ERRLEN];
-    sw_frame f;
-    sw_screen scr = { 0 };
-    if (sw_frame_init(&f, err, sizeof err) != SW_OK)
-        return sw_cli_error("%s", err);
-    if (sw_term_start(err, sizeof err) != SW_OK) {
-        sw_frame_free(&f);
-        return sw_cli_error("%s", err);
-    }
-    int cols = 0, rows = 0;
-    double last = sw_term_now(), rate_t = last, busy = 0, capacity = 0;
-    long rate_steps = 0;
-    int status = SW_EXIT_OK;
-    /* Test hook: take the error exit after N frames (docs/robustness.md). */
-    const char *force = getenv("STEPWISE_FORCE_ERROR");
-    long frames_left = force && *force ? atol(force) : -1;
-    while (!a->quit && !sw_term_signal) {
-        if (frames_left == 0) {
-            snprintf(err, sizeof err, "forced error after %s frames (STEPWISE_FORCE_ERROR)", force);
-            status = SW_EXIT_USAGE;
-            break;
-        }
-        frames_left -= frames_left > 0;
-        int c, r;
-        sw_term_size(&c, &r);
-        if (c != cols || r != rows) {
-            sw_screen_free(&scr);
-            if (sw_screen_init(&scr, c < 1 ? 1 : c, r < 1 ? 1 : r, err, sizeof err) != SW_OK) {
-                status = SW_EXIT_USAGE;
-                break;
-            }
-            err[0] = '\0';
-            cols = c;
-            rows = r;
-        }
-        double frame_start = sw_term_now();
-        for (int key; (key = sw_term_key(0)) != -1;) {
-            if (key == -2)
-                continue;
-            long steps_before = a->sims[0].steps;
-            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_app_key(a, key, hooks != NULL);
-            if (a->sims[0].steps < steps_before || a->sims[0].t == 0)
-                sw_frame_forget(&f);
-            if (a->quit)
-                break;
-        }
-        double now = sw_term_now();
-        long before = a->sims[0].steps;
-        sw_app_advance(a, fmin(now - last, 0.1), step_budget(a, capacity));
-        last = now;
-        busy += sw_term_now() - now;
-        rate_steps += a->sims[0].steps - before;
-        if (now - rate_t >= 0.5) {
-            a->steps_per_sec = rate_steps / (now - rate_t);
-            if (rate_steps > 0 && busy > 0)
-                capacity = rate_steps / busy;
-            else if (capacity > 0)
-                capacity *= 2; /* nothing measured: let the budget grow */
-            rate_steps = 0;
-            busy = 0;
-            rate_t = now;
-        }
-        sw_frame_push_trails(&f, a);
-        const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, cols) : NULL;
-        sw_frame_compose(&f, a, side, &scr);
-        sw_term_paint(&scr);
-        /* About 60 frames per second; when paused, wait for a key instead of spinning. */
-        int wait = a->paused ? 250 : (int)fmax(1.0, 1000.0 / 60 - 1000.0 * (sw_term_now() - frame_start));
-        int key = sw_term_key(wait);
-        if (key >= 0) {
-            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_app_key(a, key, hooks != NULL);
-        }
-    }
-    sw_term_stop(); /* first, so every message below lands on a sane terminal */
-    sw_app_record_stop(a); /* a signal, q or an error: the trace is written whole or not at all */
-    sw_screen_free(&scr);
-    sw_frame_free(&f);
-    if (status != SW_EXIT_OK)
-        return sw_cli_error("%s", err);
-    if (sw_term_signal)
-        return sw_term_signal_status();
-    return status;
+    return sw_cli_flush_stdout();
 }
 
 int sw_cmd_play(int argc, char **argv)
@@ -226,7 +141,7 @@ int sw_cmd_play(int argc, char **argv)
         sw_app_set_compare(&a, 1, NULL, NULL);
     if (ghost)
         sw_app_set_ghost(&a, 1);
-    int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows, braille) : sw_play_loop(&a, NULL);
+    int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows, braille) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;
 }

@@ -1,5 +1,7 @@
 /* `stepwise lesson`: the menu of lessons with each one's progress, a lesson
  * run live beside its scene, and `--check` for teachers (no terminal). */
+#include "cli/cli.h"
+
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,10 +9,10 @@
 #include <unistd.h>
 
 #include "app/runner.h"
-#include "cli/cli.h"
 #include "cli/lesson_check.h"
-#include "tui/play.h"
+#include "tui/loop.h"
 #include "tui/term.h"
+#include "util/signals.h"
 
 static const char lesson_help[] =
     "usage: stepwise lesson [NAME|N]\n"
@@ -42,8 +44,10 @@ static int run_lesson(const char *path, int page)
         return sw_cli_error("%s", err);
     }
     sw_play_hooks hooks = { .ctx = r, .key = lesson_key, .side = lesson_side };
-    int rc = sw_play_loop(&a, &hooks);
+    int rc = sw_cli_play(&a, &hooks);
     sw_app_free(&a);
+    if (rc == SW_EXIT_OK && r->save_error[0])
+        rc = sw_cli_error("%s", r->save_error);
     sw_runner_free(r);
     free(r);
     return rc;
@@ -65,74 +69,60 @@ static int find_lesson(const sw_lesson_entry *e, int n, const char *what)
     return -1;
 }
 
-/* The menu, drawn straight onto a screen grid: arrows or digits, Enter opens. */
+/* The menu of lessons with each one's progress, until q or a signal. */
 static int menu(sw_lesson_entry *e, int n)
 {
-    char err[SW_ERRLEN];
-    int sel = 0;
+    char err[SW_ERRLEN], (*text)[400] = malloc((size_t)n * sizeof *text);
+    const char **lines = malloc((size_t)n * sizeof *lines);
+    int sel = 0, rc = SW_EXIT_OK;
+    if (!text || !lines) {
+        free(text);
+        free(lines);
+        return sw_cli_error("out of memory");
+    }
     for (int i = 0; i < n; i++)
         if (sw_progress_get(e[i].file) < e[i].npages) {
             sel = i; /* start on the first lesson not finished */
             break;
         }
     for (;;) {
-        if (sw_term_start(err, sizeof err) != SW_OK)
-            return sw_cli_error("%s", err);
-        int cols, rows, chosen = -1;
-        sw_screen scr = { 0 };
-        while (chosen < 0 && !sw_term_signal) {
-            sw_term_size(&cols, &rows);
-            if (scr.cols != cols || scr.rows != rows) {
-                sw_screen_free(&scr);
-                if (sw_screen_init(&scr, cols < 1 ? 1 : cols, rows < 1 ? 1 : rows, err, sizeof err) != SW_OK)
-                    return sw_cli_error("%s", err);
-            }
-            sw_screen_clear(&scr);
-            sw_screen_text(&scr, 0, 2, cols - 2, SW_STYLE_TITLE, "stepwise: numerical integration of particle systems");
-            sw_screen_text(&scr, 1, 2, cols - 2, SW_STYLE_DIM, "Up/Down or a number to choose, Enter to open, q to quit");
-            for (int i = 0; i < n && 3 + i < rows - 1; i++) {
-                char line[400];
-                int done = sw_progress_get(e[i].file);
-                char prog[32];
-                if (!e[i].title)
-                    snprintf(prog, sizeof prog, "(broken)");
-                else if (done >= e[i].npages)
-                    snprintf(prog, sizeof prog, "done \xe2\x9c\x93");
-                else
-                    snprintf(prog, sizeof prog, "%d/%d pages", done, e[i].npages);
-                snprintf(line, sizeof line, "%s %2d. %-52.52s %s", i == sel ? ">" : " ", i + 1,
-                         e[i].title ? e[i].title : e[i].file, prog);
-                sw_screen_text(&scr, 3 + i, 2, cols - 2, i == sel ? SW_STYLE_MAIN : SW_STYLE_TEXT, line);
-            }
-            sw_term_paint(&scr);
-            int key = sw_term_key(500);
-            if (key == 'q' || key == SW_KEY_ESC) {
-                sw_screen_free(&scr);
-                sw_term_stop();
-                return SW_EXIT_OK;
-            }
-            if (key == SW_KEY_UP && sel > 0)
-                sel--;
-            else if (key == SW_KEY_DOWN && sel + 1 < n)
-                sel++;
-            else if (key >= '1' && key <= '9' && key - '1' < n)
-                sel = key - '1';
-            else if (key == '\r' || key == '\n' || key == SW_KEY_RIGHT)
-                chosen = sel;
+        for (int i = 0; i < n; i++) {
+            int done = sw_progress_get(e[i].file);
+            char prog[32];
+            if (!e[i].title)
+                snprintf(prog, sizeof prog, "(broken)");
+            else if (done >= e[i].npages)
+                snprintf(prog, sizeof prog, "done \xe2\x9c\x93");
+            else
+                snprintf(prog, sizeof prog, "%d/%d pages", done, e[i].npages);
+            snprintf(text[i], sizeof text[i], "%2d. %-52.52s %s", i + 1,
+                     e[i].title ? e[i].title : e[i].file, prog);
+            lines[i] = text[i];
         }
-        sw_screen_free(&scr);
-        if (sw_term_signal) {
-            sw_term_stop();
-            return sw_term_signal_status();
+        int chosen = sw_tui_menu("stepwise: numerical integration of particle systems", lines, n, &sel,
+                                 err, sizeof err);
+        if (chosen == -3) {
+            rc = sw_cli_error("%s", err);
+            break;
         }
+        if (chosen == -2) {
+            rc = sw_signals_status();
+            break;
+        }
+        if (chosen == -1)
+            break;
         if (!e[chosen].title) {
             sw_term_stop();
-            return sw_cli_error("%s", e[chosen].error);
+            rc = sw_cli_error("%s", e[chosen].error);
+            break;
         }
-        int rc = run_lesson(e[chosen].path, -1);
+        rc = run_lesson(e[chosen].path, -1);
         if (rc != SW_EXIT_OK)
-            return rc;
+            break;
     }
+    free(text);
+    free(lines);
+    return rc;
 }
 
 int sw_cmd_lesson(int argc, char **argv)
@@ -170,11 +160,14 @@ int sw_cmd_lesson(int argc, char **argv)
         return sw_cli_error("no lessons in %s (set STEPWISE_LESSONS to the lessons directory)", dir);
     }
     int rc, k = -1;
+    char why[SW_ERRLEN];
     if (optind < argc && (k = find_lesson(e, n, argv[optind])) < 0)
         rc = sw_cli_error("no lesson '%.60s' in %s; choose 1..%d or a name from 'stepwise list lessons'",
                           argv[optind], dir, n);
     else if (k >= 0 && !e[k].title)
         rc = sw_cli_error("%s", e[k].error);
+    else if (sw_progress_check(why, sizeof why) != SW_OK)
+        rc = sw_cli_error("%s; progress could not be saved (set XDG_STATE_HOME to a writable directory)", why);
     else if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
         rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson --check FILE...'");
     else

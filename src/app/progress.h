@@ -1,0 +1,20 @@
+/* Lesson progress: pages completed per lesson file, kept in
+ * $XDG_STATE_HOME/stepwise/progress (default ~/.local/state/stepwise/).
+ * One line per lesson, "FILE PAGES"; FILE may hold spaces. */
+#ifndef SW_APP_PROGRESS_H
+#define SW_APP_PROGRESS_H
+
+#include <stddef.h>
+
+/* Pages completed of a lesson file; 0 when unknown or unreadable. */
+int sw_progress_get(const char *file);
+/* Record pages completed (never lowers it). Concurrent-safe: the update is
+ * made under a lock on progress.lock and written through a uniquely named
+ * temporary renamed into place, so two instances lose no update. 0, or
+ * SW_EIO / SW_EINVAL with err saying why. */
+int sw_progress_set(const char *file, int done, char *err, size_t errlen);
+/* Whether progress can be saved: the state directory exists or can be
+ * made. 0, or SW_EIO with err naming the directory and why. */
+int sw_progress_check(char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,26 @@
+/* Text beside or below the scene (a lesson page), already split into lines,
+ * each with what it is (a title, a goal met, ...). The app fills it; the
+ * renderer chooses how each kind looks and wraps nothing. */
+#ifndef SW_APP_SIDE_H
+#define SW_APP_SIDE_H
+
+/* What a line of the side pane is; the renderer maps each to a style. */
+typedef enum sw_side_kind {
+    SW_SIDE_TEXT,     /* prose */
+    SW_SIDE_VERBATIM, /* lines shown as written */
+    SW_SIDE_TITLE,    /* headings */
+    SW_SIDE_OK,       /* a goal met, a right answer */
+    SW_SIDE_BAD,      /* a goal not met, a wrong answer */
+    SW_SIDE_DIM,      /* key hints, the lesson's name */
+    SW_SIDE_HINT      /* a hint asked for */
+} sw_side_kind;
+
+typedef struct sw_side {
+    const char *const *lines;
+    const sw_side_kind *kinds;  /* one per line; NULL: all SW_SIDE_TEXT */
+    int nlines;
+    int width;                  /* wanted columns beside the scene (0: below) */
+    int *scroll;                /* first line shown; the composer clamps it */
+} sw_side;
+
+#endif

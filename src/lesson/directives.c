@@ -1,0 +1,476 @@
+/* The lesson directives: settings (@scene @set @integrator @dt @compare
+ * @ghost @pause @reset @lock @unlock), text (@hint @question @answer
+ * @correct) and prose paragraphs, each checked as it is read. */
+#include "lesson/parse.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "util/kv.h"
+#include "util/names.h"
+#include "util/num.h"
+
+static int d_scene(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_page *pg = sw_lp_page(ps);
+    if (sw_lp_once(ps, &ps->at_scene, "@scene") != SW_OK)
+        return ps->status;
+    const char *later = ps->at_set.line ? "@set" : ps->at_integrator.line ? "@integrator"
+                      : ps->at_dt.line ? "@dt" : ps->at_compare.line ? "@compare"
+                      : pg->ngoals ? "@goal" : NULL;
+    if (later)
+        return FAIL(ps, 0, "@scene comes after %s on this page; expected @scene first, since it "
+                    "resets parameters, integrator and dt to the scene's defaults", later);
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@scene", "a scene name", word, &at) != SW_OK)
+        return ps->status;
+    const sw_scene *sc = sw_scene_find(word);
+    if (!sc) {
+        char names[300], near[80];
+        sw_scene_names(names, sizeof names);
+        return FAIL(ps, at, "unknown scene '%s'%s; expected one of %s", word,
+                    sw_lp_suggest("", word, sw_lp_scene_at, NULL, sw_scene_count(), near, sizeof near), names);
+    }
+    ps->at_scene.col = sw_lp_col(ps, at);
+    ps->scene = sc;
+    /* Entries past the scene's parameters stay 0, so two setups of one
+     * scene compare equal as whole arrays. */
+    memset(ps->p, 0, sizeof ps->p);
+    sw_scene_defaults(sc, ps->p);
+    ps->method = sw_integrator_find(sc->integrator);
+    ps->dt = sc->dt;
+    ps->rebuild = 1;
+    pg->restart = 1;
+    if (!ps->method)
+        return FAIL(ps, at, "scene '%s' names a default integrator '%s' that does not exist", sc->name,
+                    sc->integrator);
+    return SW_OK;
+}
+/* @set NAME=VALUE [NAME=VALUE ...], spaces around '=' allowed. */
+static int d_set(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_need_scene(ps, "@set") != SW_OK)
+        return ps->status;
+    const sw_scene *sc = ps->scene;
+    if (!ps->at_set.line) {
+        ps->at_set.line = ps->line;
+        ps->at_set.col = 1;
+    }
+    int count = 0;
+    sw_kv kv;
+    for (int got; (got = sw_kv_next(ps->ln, ps->lnlen, pos, &kv)) != 0;) {
+        size_t name_at = kv.name_at, val_at = kv.value_at;
+        char name[SW_LESSON_NAME_MAX];
+        if (sw_lp_field_word(ps, name_at, kv.name_len, name) != SW_OK)
+            return ps->status;
+        if (got < 0 || name[0] == '\0')
+            return FAIL(ps, name[0] ? kv.eq_at : name_at, "@set wants NAME=VALUE; expected '=' after '%s'",
+                        name[0] ? name : "the parameter name");
+        char val[SW_LESSON_NAME_MAX];
+        if (sw_lp_field_word(ps, val_at, kv.value_len, val) != SW_OK)
+            return ps->status;
+        int idx = sw_scene_param_index(sc, name);
+        if (idx < 0) {
+            char names[200];
+            sw_scene_param_names(sc, names, sizeof names);
+            return FAIL(ps, name_at, "scene '%s' has no parameter '%s'; expected one of %s", sc->name,
+                        name, names);
+        }
+        double v;
+        if (sw_parse_double(val, &v) != SW_OK)
+            return FAIL(ps, val_at, "'%s' is not a number; expected %s = a number in [%g, %g]",
+                        val[0] ? val : "(nothing)", name, sc->params[idx].min, sc->params[idx].max);
+        char why[SW_ERRLEN];
+        if (sw_scene_check_value(sc, idx, v, why, sizeof why) != SW_OK)
+            return FAIL(ps, val_at, "%s", why);
+        if (ps->set_line[idx])
+            return FAIL(ps, name_at, "'%s' is set twice on this page (also on line %d); expected "
+                        "each parameter once", name, ps->set_line[idx]);
+        ps->set_line[idx] = ps->line;
+        ps->p[idx] = v;
+        ps->rebuild = 1;
+        sw_lp_page(ps)->restart = 1;
+        pos = kv.end;
+        count++;
+    }
+    if (!count)
+        return FAIL(ps, ps->lnlen, "@set needs NAME=VALUE; expected e.g. '@set %s=%g'",
+                    sc->nparams ? sc->params[0].name : "k", sc->nparams ? sc->params[0].def : 1.0);
+    return SW_OK;
+}
+
+static int d_integrator(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_need_scene(ps, "@integrator") != SW_OK || sw_lp_once(ps, &ps->at_integrator, "@integrator") != SW_OK)
+        return ps->status;
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@integrator", "an integrator name", word, &at) != SW_OK)
+        return ps->status;
+    if (sw_lp_find_integrator(ps, word, at, &ps->method) != SW_OK)
+        return ps->status;
+    ps->at_integrator.col = sw_lp_col(ps, at);
+    sw_lp_page(ps)->restart = 1;
+    return SW_OK;
+}
+
+static int d_dt(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_need_scene(ps, "@dt") != SW_OK || sw_lp_once(ps, &ps->at_dt, "@dt") != SW_OK)
+        return ps->status;
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@dt", "a step size in seconds", word, &at) != SW_OK)
+        return ps->status;
+    double v;
+    if (sw_parse_double(word, &v) != SW_OK || !(v >= SW_DT_MIN && v <= SW_DT_MAX))
+        return FAIL(ps, at, "@dt '%s' is not allowed; expected a number in [%g, %g]", word, SW_DT_MIN,
+                    SW_DT_MAX);
+    ps->dt = v;
+    sw_lp_page(ps)->restart = 1;
+    return SW_OK;
+}
+
+static int d_compare(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_page *pg = sw_lp_page(ps);
+    if (sw_lp_need_scene(ps, "@compare") != SW_OK || sw_lp_once(ps, &ps->at_compare, "@compare") != SW_OK)
+        return ps->status;
+    size_t start, len;
+    int n = 0;
+    while (sw_lp_next_field(ps, &pos, &start, &len)) {
+        char word[SW_LESSON_NAME_MAX];
+        if (sw_lp_field_word(ps, start, len, word) != SW_OK)
+            return ps->status;
+        if (n == 0 && (strcmp(word, "on") == 0 || strcmp(word, "off") == 0)) {
+            pg->compare = word[1] == 'n';
+            size_t extra, elen;
+            if (sw_lp_next_field(ps, &pos, &extra, &elen))
+                return FAIL(ps, extra, "unexpected '%.*s' after @compare %s; expected nothing more",
+                            sw_lp_clip(ps->ln + extra, elen, 40), ps->ln + extra, word);
+            return SW_OK;
+        }
+        if (n == SW_LESSON_MAX_COMPARE)
+            return FAIL(ps, start, "too many methods in @compare; expected at most %d",
+                        SW_LESSON_MAX_COMPARE);
+        const sw_integrator *m;
+        if (sw_lp_find_integrator(ps, word, start, &m) != SW_OK)
+            return ps->status;
+        for (int k = 0; k < n; k++)
+            if (pg->compare_with[k] == m)
+                return FAIL(ps, start, "'%s' is named twice in @compare; expected distinct methods", word);
+        if (n == 0)
+            ps->at_compare.col = sw_lp_col(ps, start);
+        pg->compare_with[n++] = m;
+    }
+    if (!n)
+        return FAIL(ps, ps->lnlen, "@compare needs a value; expected on, off, or the methods to run "
+                    "beside the main one (e.g. '@compare rk4')");
+    pg->ncompare_with = n;
+    pg->compare = 1;
+    return SW_OK;
+}
+
+/* Lock names for suggestions: the groups, then "all". */
+static const char *lock_name_at(const void *ctx, int i)
+{
+    (void)ctx;
+    return i < SW_LOCK_NGROUPS ? sw_lock_name((sw_lock_mask)1 << i) : "all";
+}
+
+/* @lock / @unlock: lock groups by name ("integrator"), "all", or a key
+ * ("+", "space"), all resolved through the one list of controls. */
+static int d_lock(sw_lp_parser *ps, size_t pos, int lock)
+{
+    const char *directive = lock ? "@lock" : "@unlock";
+    sw_lesson_page *pg = sw_lp_page(ps);
+    size_t start, len;
+    int n = 0;
+    while (sw_lp_next_field(ps, &pos, &start, &len)) {
+        char word[SW_LESSON_NAME_MAX];
+        if (sw_lp_field_word(ps, start, len, word) != SW_OK)
+            return ps->status;
+        sw_lock_mask bit = sw_lock_find(word);
+        if (!bit) {
+            char near[80], allowed[300];
+            sw_lock_describe(allowed, sizeof allowed);
+            return FAIL(ps, start, "%s: '%s' is not a control%s; expected %s", directive, word,
+                        sw_lp_suggest("", word, lock_name_at, NULL, SW_LOCK_NGROUPS + 1, near, sizeof near),
+                        allowed);
+        }
+        if (lock)
+            ps->locked |= bit;
+        else
+            ps->locked &= ~bit;
+        n++;
+    }
+    if (!n) {
+        if (lock)
+            return FAIL(ps, ps->lnlen, "@lock needs the controls to lock; expected e.g. '@lock integrator dt'");
+        ps->locked = 0;
+    }
+    pg->locked = ps->locked;
+    return SW_OK;
+}
+/* ---- text directives ---------------------------------------------------------------------- */
+
+/* The rest of the line after the directive name, trimmed; fails when empty. */
+static int rest_text(sw_lp_parser *ps, size_t pos, const char *directive, const char *expected, const char **text,
+                     size_t *len, size_t *at)
+{
+    while (pos < ps->lnlen && sw_lp_blank(ps->ln[pos]))
+        pos++;
+    if (pos >= ps->lnlen)
+        return FAIL(ps, pos, "%s needs text; expected %s", directive, expected);
+    *text = ps->ln + pos;
+    *len = ps->lnlen - pos;
+    *at = pos;
+    return SW_OK;
+}
+
+static int d_hint(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_page *pg = sw_lp_page(ps);
+    const char **slot = NULL;
+    if (ps->hint_to == HINT_GOAL)
+        slot = &pg->goals[pg->ngoals - 1].hint;
+    else if (ps->hint_to == HINT_QUESTION)
+        slot = &pg->question.hint;
+    if (!slot)
+        return FAIL(ps, 0, "@hint must follow the @goal (or @question) it helps with");
+    if (*slot)
+        return FAIL(ps, 0, "this %s already has a hint; expected one @hint per goal",
+                    ps->hint_to == HINT_GOAL ? "goal" : "question");
+    const char *text;
+    size_t len, at;
+    if (rest_text(ps, pos, "@hint", "what to press or try, e.g. '@hint Press i until the status "
+                  "line says rk4.'", &text, &len, &at) != SW_OK)
+        return ps->status;
+    *slot = sw_lp_strdup(ps->out, text, len);
+    return *slot ? SW_OK : sw_lp_oom(ps);
+}
+
+static int d_question(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_page *pg = sw_lp_page(ps);
+    if (pg->question.text)
+        return FAIL(ps, 0, "second @question on this page (the first is on line %d); expected one "
+                    "question per page", pg->question.line);
+    const char *text;
+    size_t len, at;
+    if (rest_text(ps, pos, "@question", "the question, then @answer lines and @correct", &text, &len,
+                  &at) != SW_OK)
+        return ps->status;
+    pg->question.text = sw_lp_strdup(ps->out, text, len);
+    if (!pg->question.text)
+        return sw_lp_oom(ps);
+    pg->question.line = ps->line;
+    ps->at_question = (sw_lp_where){ ps->line, 1 };
+    ps->hint_to = HINT_QUESTION;
+    return SW_OK;
+}
+
+/* @answer X) TEXT | FEEDBACK — split at the first " | ". */
+static int d_answer(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_question *q = &sw_lp_page(ps)->question;
+    if (!q->text)
+        return FAIL(ps, 0, "@answer before any @question; expected '@question TEXT' first");
+    if (q->nanswers == SW_LESSON_MAX_ANSWERS)
+        return FAIL(ps, 0, "too many answers; expected at most %d (a) to %c))", SW_LESSON_MAX_ANSWERS,
+                    'a' + SW_LESSON_MAX_ANSWERS - 1);
+    char want = (char)('a' + q->nanswers);
+    while (pos < ps->lnlen && sw_lp_blank(ps->ln[pos]))
+        pos++;
+    size_t at = pos;
+    char c = pos < ps->lnlen ? ps->ln[pos] : '\0';
+    if (c >= 'A' && c <= 'Z')
+        c = (char)(c - 'A' + 'a');
+    if (c != want || pos + 1 >= ps->lnlen || ps->ln[pos + 1] != ')')
+        return FAIL(ps, at, "expected '%c)' to start this answer (answers go a), b), c), ... in order)", want);
+    pos += 2;
+    const char *text;
+    size_t len, text_at;
+    if (rest_text(ps, pos, "@answer", "'X) ANSWER | FEEDBACK'", &text, &len, &text_at) != SW_OK)
+        return ps->status;
+    if (text[0] == '|')
+        return FAIL(ps, text_at, "the answer text is empty; expected '%c) ANSWER | FEEDBACK'", want);
+    size_t bar = 0;
+    while (bar + 2 < len && !(sw_lp_blank(text[bar]) && text[bar + 1] == '|' && sw_lp_blank(text[bar + 2])))
+        bar++;
+    if (bar + 2 >= len) {
+        if (len >= 2 && text[len - 1] == '|')
+            return FAIL(ps, ps->lnlen, "the feedback after '|' is empty; expected what the student is "
+                        "told on choosing %c)", want);
+        return FAIL(ps, ps->lnlen, "expected ' | FEEDBACK' after the answer: what the student is told "
+                    "on choosing it");
+    }
+    size_t tlen = bar, fb = bar + 3;
+    while (fb < len && sw_lp_blank(text[fb]))
+        fb++;
+    while (tlen && sw_lp_blank(text[tlen - 1]))
+        tlen--;
+    sw_lesson_choice *a = &q->answers[q->nanswers];
+    a->letter = want;
+    a->text = sw_lp_strdup(ps->out, text, tlen);
+    a->feedback = sw_lp_strdup(ps->out, text + fb, len - fb);
+    if (!a->text || !a->feedback)
+        return sw_lp_oom(ps);
+    q->nanswers++;
+    ps->hint_to = HINT_QUESTION;
+    return SW_OK;
+}
+
+static int d_correct(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_question *q = &sw_lp_page(ps)->question;
+    if (!q->text)
+        return FAIL(ps, 0, "@correct before any @question; expected '@question TEXT' first");
+    if (sw_lp_once(ps, &ps->at_correct, "@correct") != SW_OK)
+        return ps->status;
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@correct", "the letter of the right answer", word, &at) != SW_OK)
+        return ps->status;
+    char c = word[0];
+    if (c >= 'A' && c <= 'Z')
+        c = (char)(c - 'A' + 'a');
+    if (word[1] == ')' && word[2] == '\0')
+        word[1] = '\0';
+    if (word[1] != '\0' || c < 'a' || c >= 'a' + SW_LESSON_MAX_ANSWERS)
+        return FAIL(ps, at, "@correct takes one letter (a, b, ...), not '%s'", word);
+    ps->correct = c - 'a';
+    ps->at_correct.col = sw_lp_col(ps, at);
+    return SW_OK;
+}
+
+/* ---- prose ------------------------------------------------------------------------------------ */
+
+int sw_lp_flush_block(sw_lp_parser *ps)
+{
+    if (!ps->para_open)
+        return SW_OK;
+    ps->para_open = 0;
+    if (ps->nblocks == SW_LESSON_MAX_BLOCKS)
+        return sw_lp_fail_at(ps, ps->para_line, 1, "too many paragraphs on this page; expected at most %d "
+                       "(split the page)", SW_LESSON_MAX_BLOCKS);
+    char *text = sw_lp_strdup(ps->out, ps->para, ps->paralen);
+    if (!text)
+        return sw_lp_oom(ps);
+    ps->blocks[ps->nblocks++] = (sw_lesson_block){ ps->para_verbatim, text, ps->para_line };
+    ps->prose += ps->paralen;
+    ps->paralen = 0;
+    return SW_OK;
+}
+
+int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim)
+{
+    if (ps->para_open && ps->para_verbatim != verbatim && sw_lp_flush_block(ps) != SW_OK)
+        return ps->status;
+    size_t need = len + (ps->para_open ? 1 : 0);
+    if (verbatim)
+        for (size_t i = 0; i < len; i++)
+            need += s[i] == '\t' ? 7 : 0;
+    if (ps->prose + ps->paralen + need > SW_LESSON_MAX_PROSE)
+        return FAIL(ps, 0, "this page has more than %d bytes of text; expected a shorter page (split it "
+                    "with another '--- TITLE')", SW_LESSON_MAX_PROSE);
+    if (ps->para_open) {
+        ps->para[ps->paralen++] = verbatim ? '\n' : ' ';
+    } else {
+        ps->para_open = 1;
+        ps->para_verbatim = verbatim;
+        ps->para_line = ps->line;
+    }
+    int col = 0;
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '\t' && verbatim) {
+            /* Tab stops every 8 columns, counted in characters. */
+            do
+                ps->para[ps->paralen++] = ' ';
+            while (++col % 8);
+            continue;
+        }
+        ps->para[ps->paralen++] = c == '\t' ? ' ' : (char)c;
+        if ((c & 0xC0) != 0x80)
+            col++;
+    }
+    return SW_OK;
+}
+/* ---- lines ------------------------------------------------------------------------------------------ */
+
+static int d_ghost(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_once(ps, &ps->at_ghost, "@ghost") != SW_OK)
+        return ps->status;
+    return sw_lp_on_off(ps, pos, "@ghost", &sw_lp_page(ps)->ghost);
+}
+
+static int d_pause(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_once(ps, &ps->at_pause, "@pause") != SW_OK)
+        return ps->status;
+    return sw_lp_on_off(ps, pos, "@pause", &sw_lp_page(ps)->paused);
+}
+
+static int d_reset(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_once(ps, &ps->at_reset, "@reset") != SW_OK)
+        return ps->status;
+    size_t start, len;
+    if (sw_lp_next_field(ps, &pos, &start, &len))
+        return FAIL(ps, start, "@reset takes nothing after it");
+    sw_lp_page(ps)->restart = 1;
+    return SW_OK;
+}
+
+static int d_lock_on(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 1); }
+static int d_lock_off(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 0); }
+
+static const struct directive {
+    const char *name;
+    int (*run)(sw_lp_parser *ps, size_t pos);
+} directives[] = {
+    { "scene", d_scene }, { "set", d_set }, { "integrator", d_integrator }, { "dt", d_dt },
+    { "compare", d_compare }, { "ghost", d_ghost }, { "pause", d_pause }, { "reset", d_reset },
+    { "lock", d_lock_on }, { "unlock", d_lock_off }, { "goal", sw_lp_goal }, { "hint", d_hint },
+    { "question", d_question }, { "answer", d_answer }, { "correct", d_correct },
+};
+
+#define NDIRECTIVES ((int)(sizeof directives / sizeof directives[0]))
+
+static const char *directive_name_at(const void *ctx, int i)
+{
+    (void)ctx;
+    return directives[i].name;
+}
+
+int sw_lp_directive(sw_lp_parser *ps, size_t at)
+{
+    if (!sw_lp_page(ps))
+        return FAIL(ps, at, "directive before the first page; expected '--- PAGE TITLE' first");
+    size_t i = at + 1;
+    while (i < ps->lnlen && ((ps->ln[i] >= 'a' && ps->ln[i] <= 'z') || (ps->ln[i] >= 'A' && ps->ln[i] <= 'Z')))
+        i++;
+    char name[SW_LESSON_NAME_MAX];
+    size_t nlen = i - at - 1;
+    if (nlen >= sizeof name)
+        nlen = sizeof name - 1;
+    memcpy(name, ps->ln + at + 1, nlen);
+    name[nlen] = '\0';
+    if (i < ps->lnlen && !sw_lp_blank(ps->ln[i]))
+        return FAIL(ps, i, "expected a space after '@%s'", name);
+    if (ps->hint_to == HINT_QUESTION && strcmp(name, "hint") != 0 && strcmp(name, "answer") != 0 &&
+        strcmp(name, "correct") != 0)
+        ps->hint_to = HINT_NONE;
+    if (ps->hint_to == HINT_GOAL && strcmp(name, "hint") != 0)
+        ps->hint_to = HINT_NONE;
+    for (int k = 0; k < NDIRECTIVES; k++)
+        if (strcmp(name, directives[k].name) == 0)
+            return directives[k].run(ps, i);
+    char near[80];
+    return FAIL(ps, at, "unknown directive '@%s'%s; expected one of @scene @set @integrator @dt @compare "
+                "@ghost @pause @reset @lock @unlock @goal @hint @question @answer @correct",
+                name, sw_lp_suggest("@", name, directive_name_at, NULL, NDIRECTIVES, near, sizeof near));
+}

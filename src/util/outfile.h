@@ -1,0 +1,42 @@
+/* Output files the Unix way, for every writer (traces, bench CSV and SVG,
+ * lesson progress): a regular file (or a new name) is written to a
+ * temporary beside it and renamed over it only when complete, keeping the
+ * old file's mode; a symbolic link is followed to its target; standard
+ * output ("-"), devices and FIFOs are written in place, streaming. */
+#ifndef SW_UTIL_OUTFILE_H
+#define SW_UTIL_OUTFILE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define SW_OUTFILE_PATH_MAX 4096
+
+typedef struct sw_outfile {
+    FILE *f;                          /* write here */
+    int is_stdout;                    /* "-" (or NULL): standard output */
+    int direct;                       /* written in place: stdout, a device, a FIFO */
+    char path[SW_OUTFILE_PATH_MAX];   /* the target, symbolic links followed */
+    char shown[SW_OUTFILE_PATH_MAX];  /* the name as given, for messages */
+    char tmp[SW_OUTFILE_PATH_MAX];    /* the temporary beside it; "" when direct or gone */
+} sw_outfile;
+
+/* Whether path could be opened for writing, without creating anything:
+ * 0, SW_EINVAL (empty, too long, a directory) or SW_EIO (no directory to
+ * create it in, or not writable), with err filled. */
+int sw_outfile_check(const char *path, char *err, size_t errlen);
+/* Open path for writing (NULL or "-": standard output). Temporary names
+ * are "NAME.tmp.XXXXXX", NAME cut short when that would pass the file
+ * system's name limit. 0, SW_EINVAL or SW_EIO with err filled; on failure
+ * nothing is left behind. */
+int sw_outfile_open(sw_outfile *o, const char *path, char *err, size_t errlen);
+/* Flush everything; a regular file is synced, closed and renamed onto its
+ * name. 0, or SW_EIO ("cannot write 'NAME': why") with the temporary
+ * removed. The file is closed (standard output only flushed) either way. */
+int sw_outfile_commit(sw_outfile *o, char *err, size_t errlen);
+/* Give up: close and remove the temporary. Safe to call twice and after a
+ * failed open or commit. */
+void sw_outfile_abort(sw_outfile *o);
+/* The name for messages: the path as given, or "standard output". */
+const char *sw_outfile_name(const sw_outfile *o);
+
+#endif

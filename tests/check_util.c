@@ -1,0 +1,367 @@
+/* util/: UTF-8, name lists, NAME=VALUE, output files written the Unix way,
+ * inputs opened without blocking; and lesson progress, the writer with
+ * concurrent users (app/progress.c). */
+#include <check.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "app/progress.h"
+#include "stepwise/base.h"
+#include "util/infile.h"
+#include "util/kv.h"
+#include "util/names.h"
+#include "util/outfile.h"
+#include "util/utf8.h"
+
+static char tmpdir[64];
+
+static void make_tmpdir(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/sw_util_XXXXXX");
+    ck_assert_ptr_nonnull(mkdtemp(tmpdir));
+}
+
+static void remove_tmpdir(void)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+
+/* Entries in tmpdir (. and .. not counted). */
+static int entries(void)
+{
+    char cmd[256], path[96];
+    snprintf(path, sizeof path, "%s.count", tmpdir);
+    snprintf(cmd, sizeof cmd, "ls -A '%s' | wc -l > '%s'", tmpdir, path);
+    ck_assert_int_eq(system(cmd), 0);
+    FILE *f = fopen(path, "r");
+    int n = -1;
+    ck_assert_int_eq(fscanf(f, "%d", &n), 1);
+    fclose(f);
+    remove(path);
+    return n;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    sw_outfile o;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_outfile_open(&o, path, err, sizeof err) == SW_OK, "%s", err);
+    fputs(text, o.f);
+    ck_assert_msg(sw_outfile_commit(&o, err, sizeof err) == SW_OK, "%s", err);
+}
+
+static void read_text(const char *path, char *buf, size_t len)
+{
+    FILE *f = fopen(path, "r");
+    ck_assert_ptr_nonnull(f);
+    size_t n = fread(buf, 1, len - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+}
+
+START_TEST(utf8)
+{
+    size_t len;
+    uint32_t cp;
+    const unsigned char e_acute[] = { 0xC3, 0xA9 }, overlong[] = { 0xC0, 0xAF }, cut[] = { 0xE2, 0x89 };
+    const unsigned char surrogate[] = { 0xED, 0xA0, 0x80 };
+    ck_assert_int_eq(sw_utf8_check(e_acute, 2, &len, &cp), SW_UTF8_OK);
+    ck_assert_uint_eq(len, 2);
+    ck_assert_uint_eq(cp, 0xE9);
+    ck_assert_int_eq(sw_utf8_check(overlong, 2, &len, &cp), SW_UTF8_BAD_LEAD);
+    ck_assert_int_eq(sw_utf8_check(cut, 2, &len, &cp), SW_UTF8_CUT);
+    ck_assert_int_eq(sw_utf8_check(surrogate, 3, &len, &cp), SW_UTF8_BAD_RANGE);
+    ck_assert_uint_eq(sw_utf8_count("\xCE\x94t = 1", 7), 6);      /* Δt = 1 */
+    ck_assert_uint_eq(sw_utf8_clip("a\xCE\x94", 3, 2), 1);         /* never half of Δ */
+    const unsigned char *p = (const unsigned char *)"\xE2\x9C\x93x";
+    ck_assert_uint_eq(sw_utf8_next(&p), 0x2713);
+    ck_assert_uint_eq(sw_utf8_next(&p), 'x');
+}
+END_TEST
+
+static const char *word_at(const void *ctx, int i) { return ((const char *const *)ctx)[i]; }
+
+START_TEST(names)
+{
+    const char *const words[] = { "euler", "rk4", "verlet" };
+    char buf[64], tiny[8];
+    ck_assert_uint_eq(sw_names_join(buf, sizeof buf, word_at, words, 3), strlen("euler, rk4, verlet"));
+    ck_assert_str_eq(buf, "euler, rk4, verlet");
+    sw_names_join(tiny, sizeof tiny, word_at, words, 3); /* bounded, terminated */
+    ck_assert_str_eq(tiny, "euler, ");
+    ck_assert_str_eq(sw_names_nearest("rk-4", word_at, words, 3), "rk4");
+    ck_assert_ptr_null(sw_names_nearest("midpoint", word_at, words, 3));
+    ck_assert_int_eq(sw_names_distance("kitten", "sitting"), 3);
+}
+END_TEST
+
+START_TEST(kv_pairs)
+{
+    const char *s = "k = 5\tm=2 c=";
+    sw_kv kv;
+    ck_assert_int_eq(sw_kv_next(s, strlen(s), 0, &kv), 1);
+    ck_assert_int_eq((int)kv.name_len, 1);
+    ck_assert_int_eq(s[kv.value_at], '5');
+    ck_assert_int_eq(sw_kv_next(s, strlen(s), kv.end, &kv), 1);
+    ck_assert_int_eq(s[kv.name_at], 'm');
+    ck_assert_int_eq(sw_kv_next(s, strlen(s), kv.end, &kv), 1);
+    ck_assert_int_eq((int)kv.value_len, 0);
+    ck_assert_int_eq(sw_kv_next(s, strlen(s), kv.end, &kv), 0);
+    ck_assert_int_eq(sw_kv_next("k", 1, 0, &kv), -1);
+}
+END_TEST
+
+/* A new file gets 0666 less the umask; rewriting keeps an existing mode;
+ * until commit the name holds the old contents; abort leaves nothing. */
+START_TEST(outfile_regular)
+{
+    make_tmpdir();
+    char path[128], text[64], err[SW_ERRLEN];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/out.csv", tmpdir);
+    mode_t old = umask(022);
+    write_text(path, "one\n");
+    ck_assert_int_eq(stat(path, &st), 0);
+    ck_assert_int_eq(st.st_mode & 0777, 0644);
+    ck_assert_int_eq(chmod(path, 0600), 0);
+    sw_outfile o;
+    ck_assert_int_eq(sw_outfile_open(&o, path, err, sizeof err), SW_OK);
+    fputs("two\n", o.f);
+    fflush(o.f);
+    read_text(path, text, sizeof text);
+    ck_assert_str_eq(text, "one\n");
+    ck_assert_int_eq(entries(), 2); /* the file and its temporary */
+    ck_assert_int_eq(sw_outfile_commit(&o, err, sizeof err), SW_OK);
+    read_text(path, text, sizeof text);
+    ck_assert_str_eq(text, "two\n");
+    ck_assert_int_eq(stat(path, &st), 0);
+    ck_assert_int_eq(st.st_mode & 0777, 0600);
+    ck_assert_int_eq(sw_outfile_open(&o, path, err, sizeof err), SW_OK);
+    fputs("three\n", o.f);
+    sw_outfile_abort(&o);
+    sw_outfile_abort(&o); /* twice is harmless */
+    read_text(path, text, sizeof text);
+    ck_assert_str_eq(text, "two\n");
+    ck_assert_int_eq(entries(), 1);
+    umask(old);
+    /* A directory is refused; a missing directory cannot hold a file. */
+    ck_assert_int_eq(sw_outfile_open(&o, tmpdir, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "is a directory"));
+    snprintf(path, sizeof path, "%s/no/such.csv", tmpdir);
+    ck_assert_int_eq(sw_outfile_open(&o, path, err, sizeof err), SW_EIO);
+    ck_assert_int_eq(sw_outfile_check(path, err, sizeof err), SW_EIO);
+    ck_assert_ptr_nonnull(strstr(err, "cannot create"));
+    ck_assert_int_eq(entries(), 1);
+    remove_tmpdir();
+}
+END_TEST
+
+/* A symbolic link is followed: the target gets the contents, the link
+ * stays a link (also a dangling one, whose target is created). */
+START_TEST(outfile_symlink)
+{
+    make_tmpdir();
+    char target[128], link[128], text[64];
+    struct stat st;
+    snprintf(target, sizeof target, "%s/target.trace", tmpdir);
+    snprintf(link, sizeof link, "%s/link.trace", tmpdir);
+    ck_assert_int_eq(symlink("target.trace", link), 0);
+    write_text(link, "via link\n");
+    ck_assert_int_eq(lstat(link, &st), 0);
+    ck_assert(S_ISLNK(st.st_mode));
+    read_text(target, text, sizeof text);
+    ck_assert_str_eq(text, "via link\n");
+    write_text(link, "again\n");
+    ck_assert_int_eq(lstat(link, &st), 0);
+    ck_assert(S_ISLNK(st.st_mode));
+    read_text(target, text, sizeof text);
+    ck_assert_str_eq(text, "again\n");
+    ck_assert_int_eq(entries(), 2);
+    remove_tmpdir();
+}
+END_TEST
+
+/* A 251-byte name works: the temporary's name is cut to fit NAME_MAX. */
+START_TEST(outfile_long_name)
+{
+    make_tmpdir();
+    char path[512], name[252];
+    memset(name, 'n', 251);
+    name[251] = '\0';
+    snprintf(path, sizeof path, "%s/%s", tmpdir, name);
+    sw_outfile o;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_outfile_open(&o, path, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_uint_le(strlen(strrchr(o.tmp, '/') + 1), 255);
+    fputs("x\n", o.f);
+    ck_assert_msg(sw_outfile_commit(&o, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(access(path, F_OK), 0);
+    ck_assert_int_eq(entries(), 1);
+    remove_tmpdir();
+}
+END_TEST
+
+/* Devices and FIFOs are written in place: a device stays a device, a
+ * FIFO's reader gets the bytes, and a write error (/dev/full) is one.
+ * (/dev/zero, which takes writes like /dev/null, stands for every device:
+ * on a shared machine another program's bug may have replaced /dev/null.) */
+START_TEST(outfile_devices)
+{
+    sw_outfile o;
+    char err[SW_ERRLEN];
+    struct stat st;
+    ck_assert_int_eq(sw_outfile_open(&o, "/dev/zero", err, sizeof err), SW_OK);
+    ck_assert(o.direct);
+    ck_assert_str_eq(o.tmp, "");
+    fputs("gone\n", o.f);
+    ck_assert_int_eq(sw_outfile_commit(&o, err, sizeof err), SW_OK);
+    ck_assert_int_eq(stat("/dev/zero", &st), 0);
+    ck_assert(S_ISCHR(st.st_mode));
+    if (access("/dev/full", W_OK) == 0) {
+        ck_assert_int_eq(sw_outfile_open(&o, "/dev/full", err, sizeof err), SW_OK);
+        fputs("no room\n", o.f);
+        ck_assert_int_eq(sw_outfile_commit(&o, err, sizeof err), SW_EIO);
+        ck_assert_ptr_nonnull(strstr(err, "cannot write '/dev/full'"));
+    }
+    make_tmpdir();
+    char fifo[128], text[32];
+    snprintf(fifo, sizeof fifo, "%s/pipe", tmpdir);
+    ck_assert_int_eq(mkfifo(fifo, 0600), 0);
+    int rd = open(fifo, O_RDONLY | O_NONBLOCK); /* a reader, so the writer's open does not wait */
+    ck_assert_int_ge(rd, 0);
+    ck_assert_int_eq(sw_outfile_open(&o, fifo, err, sizeof err), SW_OK);
+    ck_assert(o.direct);
+    fputs("streamed\n", o.f);
+    ck_assert_int_eq(sw_outfile_commit(&o, err, sizeof err), SW_OK);
+    ssize_t n = read(rd, text, sizeof text - 1);
+    ck_assert_int_eq(n, 9);
+    text[n] = '\0';
+    ck_assert_str_eq(text, "streamed\n");
+    close(rd);
+    ck_assert_int_eq(stat(fifo, &st), 0);
+    ck_assert(S_ISFIFO(st.st_mode));
+    remove_tmpdir();
+}
+END_TEST
+
+/* Inputs: a FIFO without a writer, a directory and a device are refused at
+ * once, never waited on; a regular file reads whole, or is too large. */
+START_TEST(infile_never_blocks)
+{
+    make_tmpdir();
+    char fifo[128], file[128];
+    struct stat st;
+    const char *what;
+    snprintf(fifo, sizeof fifo, "%s/pipe", tmpdir);
+    ck_assert_int_eq(mkfifo(fifo, 0600), 0);
+    ck_assert_int_eq(sw_infile_open(fifo, &st, &what), -1);
+    ck_assert_str_eq(what, "a FIFO");
+    ck_assert_int_eq(sw_infile_open(tmpdir, &st, &what), -1);
+    ck_assert_str_eq(what, "a directory");
+    ck_assert_int_eq(sw_infile_open("/dev/zero", &st, &what), -1);
+    ck_assert_str_eq(what, "a device");
+    snprintf(file, sizeof file, "%s/missing", tmpdir);
+    ck_assert_int_eq(sw_infile_open(file, &st, &what), -1);
+    ck_assert_ptr_null(what);
+    ck_assert_int_eq(errno, ENOENT);
+    snprintf(file, sizeof file, "%s/text", tmpdir);
+    write_text(file, "0123456789");
+    int fd = sw_infile_open(file, &st, &what);
+    ck_assert_int_ge(fd, 0);
+    char *buf;
+    size_t len;
+    ck_assert_int_eq(sw_infile_read(fd, 10, &buf, &len), 0);
+    ck_assert_uint_eq(len, 10);
+    ck_assert_str_eq(buf, "0123456789");
+    free(buf);
+    ck_assert_int_eq(lseek(fd, 0, SEEK_SET), 0);
+    ck_assert_int_eq(sw_infile_read(fd, 9, &buf, &len), 1);
+    close(fd);
+    remove_tmpdir();
+}
+END_TEST
+
+/* Progress: names with spaces are saved; a state directory that is a file
+ * is an error with a reason; two processes saving 300 updates each at once
+ * lose none (the lock serialises read-merge-write). */
+START_TEST(progress)
+{
+    make_tmpdir();
+    char state[128], err[SW_ERRLEN];
+    snprintf(state, sizeof state, "%s/state", tmpdir);
+    setenv("XDG_STATE_HOME", state, 1);
+    ck_assert_int_eq(sw_progress_check(err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_set("my lesson.lesson", 3, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_get("my lesson.lesson"), 3);
+    ck_assert_int_eq(sw_progress_get("my"), 0);
+    ck_assert_int_eq(sw_progress_set("my lesson.lesson", 2, err, sizeof err), SW_OK); /* never lowers */
+    ck_assert_int_eq(sw_progress_get("my lesson.lesson"), 3);
+    ck_assert_int_eq(sw_progress_set("two\nlines", 1, err, sizeof err), SW_EINVAL);
+
+    pid_t kids[2];
+    for (int k = 0; k < 2; k++) {
+        kids[k] = fork();
+        ck_assert_int_ge(kids[k], 0);
+        if (kids[k] == 0) {
+            char name[32], e[SW_ERRLEN];
+            for (int i = 0; i < 300; i++) {
+                snprintf(name, sizeof name, "%c-%d.lesson", 'a' + k, i);
+                if (sw_progress_set(name, 1 + i % 5, e, sizeof e) != SW_OK)
+                    _exit(1);
+            }
+            _exit(0);
+        }
+    }
+    for (int k = 0; k < 2; k++) {
+        int status;
+        ck_assert_int_eq(waitpid(kids[k], &status, 0), kids[k]);
+        ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+    int kept = 0;
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < 300; i++) {
+            char name[32];
+            snprintf(name, sizeof name, "%c-%d.lesson", 'a' + k, i);
+            kept += sw_progress_get(name) == 1 + i % 5;
+        }
+    ck_assert_int_eq(kept, 600);
+    ck_assert_int_eq(sw_progress_get("my lesson.lesson"), 3);
+
+    char file[160];
+    snprintf(file, sizeof file, "%s/plain-file", tmpdir);
+    write_text(file, "");
+    setenv("XDG_STATE_HOME", file, 1);
+    ck_assert_int_eq(sw_progress_set("x.lesson", 1, err, sizeof err), SW_EIO);
+    ck_assert_ptr_nonnull(strstr(err, "Not a directory"));
+    ck_assert_int_eq(sw_progress_check(err, sizeof err), SW_EIO);
+    unsetenv("XDG_STATE_HOME");
+    remove_tmpdir();
+}
+END_TEST
+
+Suite *make_util_suite(void);
+Suite *make_util_suite(void)
+{
+    Suite *s = suite_create("util");
+    TCase *tc = tcase_create("util");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, utf8);
+    tcase_add_test(tc, names);
+    tcase_add_test(tc, kv_pairs);
+    tcase_add_test(tc, outfile_regular);
+    tcase_add_test(tc, outfile_symlink);
+    tcase_add_test(tc, outfile_long_name);
+    tcase_add_test(tc, outfile_devices);
+    tcase_add_test(tc, infile_never_blocks);
+    tcase_add_test(tc, progress);
+    suite_add_tcase(s, tc);
+    return s;
+}

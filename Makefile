@@ -11,6 +11,9 @@ OPT     ?= -O2 -g
 # gcc's -O2 vectoriser only takes loops with no epilogue; the cheap model also
 # takes the integrators' elementwise loops (results stay bit-identical).
 VECT    = $(shell $(CC) -fvect-cost-model=cheap -Werror -c -x c /dev/null -o /dev/null 2>/dev/null && echo -fvect-cost-model=cheap)
+# -fno-math-errno: sqrt compiles to the instruction (no errno branch), so loops
+# with a square root vectorise; results are the same bits (not -ffast-math).
+MATH    = -fno-math-errno
 WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 ifeq ($(WERROR),1)
 WARN   += -Werror
@@ -27,7 +30,7 @@ DATADIR  = $(PREFIX)/share/stepwise
 CPPFLAGS = -Iinclude -Isrc -D_DEFAULT_SOURCE -D_XOPEN_SOURCE=600 -D_XOPEN_SOURCE_EXTENDED \
            -DSW_DATADIR='"$(DATADIR)"'
 CFLAGS  ?=
-ALL_CFLAGS = -std=c11 $(OPT) $(VECT) $(WARN) $(CFLAGS) -MMD -MP
+ALL_CFLAGS = -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) -MMD -MP
 
 # Looked up when a recipe runs, i.e. after `deps` has installed them.
 CURSES_CFLAGS = $(shell pkg-config --cflags ncursesw 2>/dev/null)
@@ -128,11 +131,25 @@ fuzz:
 
 # The engine benchmark as its own program, linked with malloc/calloc/realloc
 # wrapped so it can count every allocation our code makes in a step loop.
-$(BENCHBIN): bench/bench_engine.c tests/support/alloc_count.c $(LIB)
-	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(WARN) $(CFLAGS) bench/bench_engine.c \
-	    tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) -lm -o $@
+# Its peer comparison runs GSL's odeiv2 beside stepwise when GSL's
+# development files are present: `make bench` installs them (bench/deps.sh);
+# nothing else does, and the program and its library never link GSL. The
+# stamp rebuilds the benchmark when GSL appears or goes.
+GSL_FLAGS = $(shell pkg-config --exists gsl 2>/dev/null && echo -DSW_HAVE_GSL $$(pkg-config --cflags gsl))
+GSL_LIBS  = $(shell pkg-config --exists gsl 2>/dev/null && pkg-config --libs gsl)
+BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c
 
-bench: $(BENCHBIN)
+$(BUILD)/gsl.stamp: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(GSL_FLAGS)' | cmp -s - $@ || echo '$(GSL_FLAGS)' > $@
+
+$(BENCHBIN): $(BENCH_SRC) bench/bench_common.h tests/support/alloc_count.c $(LIB) $(BUILD)/gsl.stamp
+	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) $(GSL_FLAGS) \
+	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) -lm -o $@
+
+bench:
+	@sh bench/deps.sh
+	@$(MAKE) --no-print-directory $(BENCHBIN)
 	./$(BENCHBIN)
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it

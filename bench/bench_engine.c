@@ -1,7 +1,8 @@
 /* The engine benchmark: ns per particle-step of every integrator on chain
- * (n = 1000) and vortex (n = 100000) beside hand-written loops that compute
- * the same step with no abstraction; frame cost (sim + rasterise) per scene;
- * peak RSS; and allocations counted in every step loop. `make bench` builds
+ * (n = 1000) and vortex (n = 100000) beside hand-fused loops that compute
+ * the same step with no abstraction (bench_base.c); frame cost (sim +
+ * rasterise) per scene; peak RSS; allocations counted in every step loop;
+ * and stepwise against GSL at equal accuracy (bench_peer.c). `make bench` builds
  * it as its own program, linked with -Wl,--wrap=malloc,--wrap=calloc,
  * --wrap=realloc so every call from our code goes through the tests'
  * counter (tests/support/alloc_count.c). */
@@ -23,6 +24,7 @@
 /* ---- allocation counting ------------------------------------------------- */
 
 #include "alloc_count.h" /* the tests' counter, linked in by `make bench` */
+#include "bench_common.h"
 
 /* Allocation calls so far. */
 static long alloc_count(void) { return sw_test_allocations(); }
@@ -30,155 +32,11 @@ static long alloc_count(void) { return sw_test_allocations(); }
 static const char *const probe_prefix[] = { "--engine" };
 #define NPREFIX ((int)(sizeof probe_prefix / sizeof probe_prefix[0]))
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-#define MAX_REPEATS 15
-
 typedef struct bench_opts {
     int repeats;
     int chain_n, vortex_n;
     double target;   /* seconds per timed repeat */
 } bench_opts;
-
-/* ---- hand-written baselines ---------------------------------------------- */
-/* Each computes exactly the arithmetic of the generic step (same operations
- * in the same order), so after the same steps the states agree bit for bit;
- * main() checks that rather than assuming it. */
-
-/* vortex, x' = ω(-y, x), euler: one fused pass. */
-static void base_vortex_euler(double *y, int n, double w, double h, long steps)
-{
-    for (long s = 0; s < steps; s++)
-        for (int i = 0; i < n; i++) {
-            double px = y[2 * i], py = y[2 * i + 1];
-            y[2 * i] = px + h * (-w * py);
-            y[2 * i + 1] = py + h * (w * px);
-        }
-}
-
-/* vortex, rk4: every stage of one point in registers, one pass per step. */
-static void base_vortex_rk4(double *y, int n, double w, double h, long steps)
-{
-    double a = 0.5 * h, b = h / 6.0;
-    for (long s = 0; s < steps; s++)
-        for (int i = 0; i < n; i++) {
-            double px = y[2 * i], py = y[2 * i + 1];
-            double k1x = -w * py, k1y = w * px;
-            double tx = px + a * k1x, ty = py + a * k1y;
-            double k2x = -w * ty, k2y = w * tx;
-            tx = px + a * k2x;
-            ty = py + a * k2y;
-            double k3x = -w * ty, k3y = w * tx;
-            tx = px + h * k3x;
-            ty = py + h * k3y;
-            double k4x = -w * ty, k4y = w * tx;
-            y[2 * i] = px + b * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-            y[2 * i + 1] = py + b * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
-        }
-}
-
-/* The chain as the scene builds it: n beads of mass m, spring j joining bead
- * j - 1 (or the left anchor at the origin) and bead j (or, for j = n, bead
- * n - 1 and the right anchor at ((n + 1)·rest, 0)). */
-typedef struct chain {
-    int n;
-    double k, c, rest, inv_m, right_x;
-    double *f; /* 2n */
-} chain;
-
-static void chain_spring(const chain *ch, const double *x, const double *v, int a, int b,
-                         double bx, double by, double *f)
-{
-    double qx = b >= 0 ? x[2 * b] : bx, qy = b >= 0 ? x[2 * b + 1] : by;
-    double dx = x[2 * a] - qx, dy = x[2 * a + 1] - qy;
-    double len = sqrt(dx * dx + dy * dy);
-    if (!(len > 0))
-        return;
-    double ux = dx / len, uy = dy / len;
-    double dvx = v[2 * a] - (b >= 0 ? v[2 * b] : 0.0), dvy = v[2 * a + 1] - (b >= 0 ? v[2 * b + 1] : 0.0);
-    double mag = ch->k * (len - ch->rest) + ch->c * (dvx * ux + dvy * uy);
-    double fx = -mag * ux, fy = -mag * uy;
-    f[2 * a] += fx;
-    f[2 * a + 1] += fy;
-    if (b >= 0) {
-        f[2 * b] -= fx;
-        f[2 * b + 1] -= fy;
-    }
-}
-
-/* Spring forces into ch->f, in the scene's spring order. */
-static void chain_forces(const chain *ch, const double *x, const double *v)
-{
-    int n = ch->n;
-    memset(ch->f, 0, (size_t)(2 * n) * sizeof *ch->f);
-    chain_spring(ch, x, v, 0, -1, 0.0, 0.0, ch->f);
-    for (int j = 1; j < n; j++)
-        chain_spring(ch, x, v, j, j - 1, 0.0, 0.0, ch->f);
-    chain_spring(ch, x, v, n - 1, -1, ch->right_x, 0.0, ch->f);
-}
-
-static void base_chain_euler(chain *ch, double *y, double h, long steps)
-{
-    int n2 = 2 * ch->n;
-    double *x = y, *v = y + n2;
-    for (long s = 0; s < steps; s++) {
-        chain_forces(ch, x, v);
-        for (int i = 0; i < n2; i++) {
-            double vi = v[i];
-            v[i] = vi + h * (ch->f[i] * ch->inv_m);
-            x[i] = x[i] + h * vi;
-        }
-    }
-}
-
-/* dydt = [v | f/m] at y. */
-static void chain_deriv(chain *ch, const double *y, double *dydt)
-{
-    int n2 = 2 * ch->n;
-    chain_forces(ch, y, y + n2);
-    for (int i = 0; i < n2; i++) {
-        dydt[i] = y[n2 + i];
-        dydt[n2 + i] = ch->f[i] * ch->inv_m;
-    }
-}
-
-static void base_chain_rk4(chain *ch, double *y, double *work, double h, long steps)
-{
-    int dim = 4 * ch->n;
-    double *k1 = work, *k2 = k1 + dim, *k3 = k2 + dim, *k4 = k3 + dim, *yt = k4 + dim;
-    double a = 0.5 * h, b = h / 6.0;
-    for (long s = 0; s < steps; s++) {
-        chain_deriv(ch, y, k1);
-        for (int i = 0; i < dim; i++)
-            yt[i] = y[i] + a * k1[i];
-        chain_deriv(ch, yt, k2);
-        for (int i = 0; i < dim; i++)
-            yt[i] = y[i] + a * k2[i];
-        chain_deriv(ch, yt, k3);
-        for (int i = 0; i < dim; i++)
-            yt[i] = y[i] + h * k3[i];
-        chain_deriv(ch, yt, k4);
-        for (int i = 0; i < dim; i++)
-            y[i] += b * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    }
-}
 
 /* ---- throughput --------------------------------------------------------- */
 
@@ -230,11 +88,13 @@ static long stable_steps(sw_sim *s, double *dt, double target, int repeats)
 
 /* Run a baseline `steps` steps on a copy of y0; 0 when m has none. */
 static int run_baseline(const sw_scene *sc, const double *p, const sw_integrator *m, double *y,
-                        int n, double h, long steps, chain *ch, double *work)
+                        int n, double h, long steps, bench_chain *ch, double *work)
 {
     int is_rk4 = strcmp(m->name, "rk4") == 0, is_euler = strcmp(m->name, "euler") == 0;
     if (!is_rk4 && !is_euler)
         return 0;
+    if (strcmp(sc->name, "chain") == 0 && (p[3] != 0 || p[5] != 0))
+        return 0; /* the baseline is the undamped chain without gravity (the defaults) */
     if (strcmp(sc->name, "vortex") == 0) {
         if (is_euler)
             base_vortex_euler(y, n, p[0], h, steps);
@@ -255,11 +115,14 @@ static void throughput(const bench_opts *o)
     printf("throughput: ns per particle-step, median of %d repeats of about %.0f ms each\n"
            "  sim   = sw_sim_step (the UI's path: step, post-step hook, blow-up check)\n"
            "  step  = sw_stepper_step alone (the integrator and the derivative)\n"
-           "  base  = hand-written loop, same arithmetic, no abstraction (euler, rk4)\n\n",
+           "  base  = hand-fused loop for this one problem, same arithmetic (euler, rk4; bench_base.c)\n"
+           "  /eval = step per derivative evaluation; /rk4 = that against rk4's (target for the\n"
+           "          adaptive methods: <= 1.2)\n\n",
            o->repeats, o->target * 1e3);
-    printf("  %-7s %7s %-18s %8s %9s %9s %9s %8s %8s %6s %6s  %s\n", "scene", "n", "method", "dt",
-           "sim", "step", "base", "sim/base", "step/bas", "evals", "allocs", "baseline result");
+    printf("  %-7s %7s %-18s %8s %9s %9s %9s %8s %8s %6s %6s %5s %6s  %s\n", "scene", "n", "method", "dt",
+           "sim", "step", "base", "sim/base", "step/bas", "evals", "/eval", "/rk4", "allocs", "baseline result");
     for (int w = 0; w < 2; w++) {
+        double rk4_per_eval = NAN;
         const sw_scene *sc = sw_scene_find(loads[w].scene);
         double p[SW_MAX_PARAMS];
         if (build_params(sc, loads[w].n, p) != SW_OK)
@@ -279,8 +142,8 @@ static void throughput(const bench_opts *o)
             int n = s.sys.n, dim = s.sys.ode->dim;
             double *y0 = malloc((size_t)dim * sizeof *y0), *yb = malloc((size_t)dim * sizeof *yb);
             double *work = malloc((size_t)(5 * dim) * sizeof *work);
-            chain ch = { .n = n, .k = p[1], .c = p[3], .rest = p[4], .inv_m = 1.0 / p[2],
-                         .right_x = (n + 1) * p[4], .f = malloc((size_t)(2 * n) * sizeof(double)) };
+            bench_chain ch = { .n = n, .k = p[1], .rest = p[4], .inv_m = 1.0 / p[2], .right_x = (n + 1) * p[4],
+                               .f = malloc((size_t)(2 * n + 2) * sizeof(double)) };
             if (!y0 || !yb || !work || !ch.f) {
                 free(y0), free(yb), free(work), free(ch.f);
                 sw_sim_free(&s);
@@ -339,7 +202,12 @@ static void throughput(const bench_opts *o)
                     snprintf(same, sizeof same, "differs by %.1e after %ld steps", diff, check);
             }
             double sim = median(sim_t, o->repeats), step = median(step_t, o->repeats);
-            char allocs_s[16] = "n/a", base_s[16] = "-", r1[16] = "-", r2[16] = "-";
+            double per_eval = step / evals_per_step;
+            if (strcmp(m->name, "rk4") == 0)
+                rk4_per_eval = per_eval;
+            char allocs_s[16] = "n/a", base_s[16] = "-", r1[16] = "-", r2[16] = "-", r3[16] = "-";
+            if ((m->flags & SW_ADAPTIVE) && !isnan(rk4_per_eval))
+                snprintf(r3, sizeof r3, "%.2f", per_eval / rk4_per_eval);
             if (alloc_count() >= 0)
                 snprintf(allocs_s, sizeof allocs_s, "%ld", allocs);
             if (!isnan(base)) {
@@ -347,8 +215,8 @@ static void throughput(const bench_opts *o)
                 snprintf(r1, sizeof r1, "%.2f", sim / base);
                 snprintf(r2, sizeof r2, "%.2f", step / base);
             }
-            printf("  %-7s %7d %-18s %8.3g %9.3g %9.3g %9s %8s %8s %6.2g %6s  %s%s\n", sc->name, n,
-                   m->name, dt, sim, step, base_s, r1, r2, evals_per_step, allocs_s, same,
+            printf("  %-7s %7d %-18s %8.3g %9.3g %9.3g %9s %8s %8s %6.2g %6.3g %5s %6s  %s%s\n", sc->name, n,
+                   m->name, dt, sim, step, base_s, r1, r2, evals_per_step, per_eval, r3, allocs_s, same,
                    blown ? " (the sim blew up while timed)" : "");
             fflush(stdout);
             free(y0), free(yb), free(work), free(ch.f);
@@ -580,6 +448,8 @@ static void machine(void)
 static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
+    bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
+    int sections = ~0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -590,6 +460,21 @@ static int bench_engine_main(int argc, char **argv)
             o.chain_n = 100;
             o.vortex_n = 10000;
             o.target = 0.003;
+            peer = (bench_peer_opts){ .repeats = 3, .chain_n = 20, .vortex_n = 100, .quick = 1 };
+        } else if (strcmp(argv[i], "--peer") == 0) {
+            sections = 8;
+        } else if (strcmp(argv[i], "--no-peer") == 0) {
+            sections &= ~8;
+        } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
+            char *end;
+            long n = strtol(argv[i + 1], &end, 10);
+            if (*end || n < 1 || n > 100000) {
+                fprintf(stderr, "stepwise: %s '%.40s' is not allowed: it takes a whole number in [1, 100000]\n",
+                        argv[i], argv[i + 1]);
+                return 2;
+            }
+            *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
+            i++;
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -599,16 +484,22 @@ static int bench_engine_main(int argc, char **argv)
                 return 2;
             }
             o.repeats = (int)r;
+            peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --peer-chain N, --peer-vortex N\n", argv[i]);
             return 2;
         }
     }
     machine();
-    throughput(&o);
-    frame_cost(&o);
-    memory(&o);
+    if (sections & 1)
+        throughput(&o);
+    if (sections & 2)
+        frame_cost(&o);
+    if (sections & 4)
+        memory(&o);
+    if (sections & 8)
+        bench_peer(&peer);
     return 0;
 }
 

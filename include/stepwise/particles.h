@@ -56,6 +56,7 @@ typedef struct sw_particles {
     sw_walls walls;
     int nsprings_total;
     struct sw_particles_solver *solver; /* implicit-solve workspace (private) */
+    struct sw_particles_model *model;   /* the forces compiled by kind for the derivative (private) */
 } sw_particles;
 
 /* Allocate a system of n particles of mass `mass`, all at rest at the origin. */
@@ -67,6 +68,12 @@ int sw_particles_add_drag(sw_particles *p, double k);
 int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
 /* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
 sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
+/* Compile the forces for the derivative once the system is built (the
+ * springs filled in); call again after changing a force or a spring. 0, or
+ * SW_EINVAL when a spring names a particle that does not exist (err says
+ * which; the derivative leaves such springs out). Without this call the
+ * derivative compiles on first use. */
+int sw_particles_finish(sw_particles *p, char *err, size_t errlen);
 /* Every spring of the system, numbered 0 .. count-1 across spring forces:
  * spring j is copied to *out (a < 0 when there is no spring j). */
 int sw_particles_spring_count(const sw_particles *p);

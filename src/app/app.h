@@ -79,6 +79,7 @@ typedef struct sw_app {
     int have_spec0, have_spec;
     double spec_t;              /* time spec was taken at */
     sw_app_meter meter;         /* the last reading */
+    sw_truth_work *meter_work;  /* the meter's reusable workspace (allocates nothing per frame) */
     /* the main run watched for growth of its motion's energy, since the
      * last reset or change of method or dt (relative to its value then) */
     sw_watch watch;

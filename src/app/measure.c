@@ -29,6 +29,13 @@ void sw_app_truth_reset(sw_app *a)
     a->truth_report = NULL;
     char err[SW_ERRLEN];
     a->truth_live = 0;
+    if (!a->scene) { /* the app is being freed */
+        sw_truth_work_free(a->meter_work);
+        a->meter_work = NULL;
+        return;
+    }
+    if (!a->meter_work)
+        a->meter_work = sw_truth_work_new();
     if (a->scene && sw_truth_init(&a->truth, a->scene, a->p, err, sizeof err) == SW_OK) {
         a->have_truth = 1;
         /* a reference run follows the run on screen only where it keeps up */
@@ -102,8 +109,8 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
 /* The spectrum at the start (for the dt-change check), once per scene. */
 static const sw_spectrum *spectrum0(sw_app *a)
 {
-    if (!a->have_spec0 && a->have_truth)
-        a->have_spec0 = sw_truth_spectrum(&a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
+    if (!a->have_spec0 && a->have_truth && a->meter_work)
+        a->have_spec0 = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
     return a->have_spec0 ? &a->spec0 : NULL;
 }
 
@@ -112,7 +119,7 @@ static const sw_spectrum *spectrum0(sw_app *a)
 static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *rho)
 {
     const sw_spectrum *sp = spectrum0(a);
-    *rho = sp ? sw_truth_growth_all(m, sp, dt, NULL) : NAN;
+    *rho = sp ? sw_truth_growth_with(a->meter_work, m, sp, dt, NULL) : NAN;
     return pow(*rho, a->scene->duration / dt);
 }
 
@@ -178,7 +185,7 @@ static void refresh_spectrum(sw_app *a)
     double every = a->scene->duration / 20;
     if (a->have_spec && s->t >= a->spec_t && s->t - a->spec_t < every)
         return;
-    a->have_spec = sw_truth_spectrum(&a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
+    a->have_spec = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
     a->spec_t = s->t;
     a->meter.method = NULL; /* read again */
 }
@@ -187,7 +194,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
 {
     const sw_sim *s = &a->sims[0];
     sw_app_meter *m = &a->meter;
-    if (!a->have_truth || (s->method->flags & SW_ADAPTIVE) || s->blown) {
+    if (!a->have_truth || !a->meter_work || (s->method->flags & SW_ADAPTIVE) || s->blown) {
         m->ok = 0;
         *out = *m;
         return 0;
@@ -202,11 +209,11 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->stiff = a->spec.largest;
             m->complete = a->spec.complete;
             m->growing = a->spec.growing;
-            m->growth = sw_truth_growth_all(s->method, &a->spec, a->dt, NULL);
+            m->growth = sw_truth_growth_with(a->meter_work, s->method, &a->spec, a->dt, NULL);
             m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
             m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
             m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
-            m->limit = sw_truth_limit(s->method, &a->spec, SW_DT_MAX, &m->unbounded);
+            m->limit = sw_truth_limit_with(a->meter_work, s->method, &a->spec, SW_DT_MAX, &m->unbounded);
             m->ok = isfinite(m->growth);
         }
     }

@@ -9,33 +9,11 @@
 
 #include "stepwise/base.h"
 
-/* Explicit Runge-Kutta steps run over [lo, hi): the whole state for coupled
- * systems, or L1-sized slices for pointwise ones (flow fields), where every
- * stage of a slice needs only that slice. The arithmetic is the same either
- * way, so results are bit-identical; only the memory traffic differs. */
-#define BLOCK 512
-
-/* dydt over [lo, hi) at (t, y): a slice when the system allows it. */
-static void eval_range(sw_ode *ode, double t, const double *y, double *dydt, int lo, int hi)
-{
-    if (ode->deriv_part)
-        ode->deriv_part(ode->ctx, t, hi - lo, y + lo, dydt + lo);
-    else
-        ode->deriv(ode->ctx, t, y, dydt);
-}
-
-/* A method's step over [lo, hi); returns non-zero when its final loop saw a
- * component at or beyond the limit exponent elim (see sw_state_beyond). */
-typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
-                            unsigned elim);
-
-/* y_i's exponent field is at or beyond elim (inf and NaN always are). */
-static inline unsigned beyond1(double v, unsigned elim)
-{
-    unsigned long long bits;
-    memcpy(&bits, &v, sizeof bits);
-    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
-}
+/* A method's step over a slice of len components (y points at it; the
+ * work vectors are slice-local) or over the whole state; returns non-zero
+ * when its final loop saw a component at or beyond the limit exponent elim
+ * (see sw_state_beyond). */
+typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int len, unsigned elim);
 
 /* Run a range step over the whole state or slice by slice, and count its
  * evaluations once per stage. The final loops test every component against
@@ -44,10 +22,10 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
 {
     unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
     if (ode->deriv_part)
-        for (int lo = 0; lo < ode->dim; lo += BLOCK)
-            beyond |= f(s, ode, *t, y, h, lo, lo + BLOCK < ode->dim ? lo + BLOCK : ode->dim, elim);
+        for (int lo = 0; lo < ode->dim; lo += SW_SLICE)
+            beyond |= f(s, ode, *t, y + lo, h, (lo + SW_SLICE < ode->dim ? lo + SW_SLICE : ode->dim) - lo, elim);
     else
-        beyond = f(s, ode, *t, y, h, 0, ode->dim, elim);
+        beyond = f(s, ode, *t, y, h, ode->dim, elim);
     s->checked = s->limit_exp != 0;
     s->beyond = beyond != 0;
     ode->evals += stages;
@@ -56,15 +34,14 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
 }
 
 /* x1 = x0 + h·f(t0, x0) */
-static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
-                            unsigned elim)
+SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0);
     unsigned over = 0;
-    eval_range(ode, t, y, k, lo, hi);
-    for (int i = lo; i < hi; i++) {
+    sw_eval_slice(ode, t, len, y, k);
+    for (int i = 0; i < len; i++) {
         y[i] += h * k[i];
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -87,18 +64,17 @@ int sw_step_symplectic_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, d
 }
 
 /* Explicit midpoint: k1 = f(y), k2 = f(y + h/2·k1), y1 = y + h·k2. */
-static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo,
-                               int hi, unsigned elim)
+SW_CLONES static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0), *restrict ym = SW_WORK(s, 1);
     unsigned over = 0;
-    eval_range(ode, t, y, k, lo, hi);
-    for (int i = lo; i < hi; i++)
+    sw_eval_slice(ode, t, len, y, k);
+    for (int i = 0; i < len; i++)
         ym[i] = y[i] + 0.5 * h * k[i];
-    eval_range(ode, t + 0.5 * h, ym, k, lo, hi);
-    for (int i = lo; i < hi; i++) {
+    sw_eval_slice(ode, t + 0.5 * h, len, ym, k);
+    for (int i = 0; i < len; i++) {
         y[i] += h * k[i];
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -109,18 +85,17 @@ int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 }
 
 /* Heun (explicit trapezoid): k1 = f(y), k2 = f(y + h·k1), y1 = y + h/2·(k1 + k2). */
-static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
-                           unsigned elim)
+SW_CLONES static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict yp = SW_WORK(s, 1), *restrict k2 = SW_WORK(s, 2);
     unsigned over = 0;
-    eval_range(ode, t, y, k1, lo, hi);
-    for (int i = lo; i < hi; i++)
+    sw_eval_slice(ode, t, len, y, k1);
+    for (int i = 0; i < len; i++)
         yp[i] = y[i] + h * k1[i];
-    eval_range(ode, t + h, yp, k2, lo, hi);
-    for (int i = lo; i < hi; i++) {
+    sw_eval_slice(ode, t + h, len, yp, k2);
+    for (int i = 0; i < len; i++) {
         y[i] += 0.5 * h * (k1[i] + k2[i]);
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }
@@ -131,25 +106,24 @@ int sw_step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 }
 
 /* Classical RK4: y1 = y + h/6·(k1 + 2k2 + 2k3 + k4). */
-static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int lo, int hi,
-                          unsigned elim)
+SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict k2 = SW_WORK(s, 1), *restrict k3 = SW_WORK(s, 2), *restrict k4 = SW_WORK(s, 3),
            *restrict yt = SW_WORK(s, 4);
     unsigned over = 0;
-    eval_range(ode, t, y, k1, lo, hi);
-    for (int i = lo; i < hi; i++)
+    sw_eval_slice(ode, t, len, y, k1);
+    for (int i = 0; i < len; i++)
         yt[i] = y[i] + 0.5 * h * k1[i];
-    eval_range(ode, t + 0.5 * h, yt, k2, lo, hi);
-    for (int i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + 0.5 * h, len, yt, k2);
+    for (int i = 0; i < len; i++)
         yt[i] = y[i] + 0.5 * h * k2[i];
-    eval_range(ode, t + 0.5 * h, yt, k3, lo, hi);
-    for (int i = lo; i < hi; i++)
+    sw_eval_slice(ode, t + 0.5 * h, len, yt, k3);
+    for (int i = 0; i < len; i++)
         yt[i] = y[i] + h * k3[i];
-    eval_range(ode, t + h, yt, k4, lo, hi);
-    for (int i = lo; i < hi; i++) {
+    sw_eval_slice(ode, t + h, len, yt, k4);
+    for (int i = 0; i < len; i++) {
         y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        over |= beyond1(y[i], elim);
+        over |= sw_beyond1(y[i], elim);
     }
     return over;
 }

@@ -1,6 +1,6 @@
 /* The integrator table and registry, and the stepper that runs one method
  * on one system. The methods themselves live one family per file
- * (explicit.c, implicit.c, rk45.c) and know nothing of particles: they see
+ * (explicit.c, implicit.c, rk45.c, dop853.c) and know nothing of particles: they see
  * an sw_ode. Invariant: a step allocates nothing — every vector it touches
  * was handed out by sw_stepper_init. */
 #include "engine/stepper.h"
@@ -34,6 +34,8 @@ static const sw_integrator builtins[] = {
       INFINITY, 6, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method" },
     { "rk45", "Dormand-Prince 5(4), adaptive", 5, 6, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 9, sw_step_rk45,
       "adaptive: error estimate from an embedded 4th-order solution" },
+    { "dop853", "Dormand-Prince 8(5,3), adaptive (Hairer)", 8, 12, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 12,
+      sw_step_dop853, "adaptive: error estimate from embedded 5th- and 3rd-order solutions" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -89,7 +91,7 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
                  "masses; this is a first-order flow field (use euler, midpoint, heun, rk4, "
-                 "implicit-euler, implicit-midpoint or rk45)", m->name);
+                 "implicit-euler, implicit-midpoint, rk45 or dop853)", m->name);
         return SW_EINVAL;
     }
     if ((m->flags & SW_IMPLICIT) && !ode->solve && ode->dim > SW_DENSE_MAX) {

@@ -1,7 +1,9 @@
-/* Particle systems: structure-of-arrays state y = [x | v] and force objects
- * that add into an accumulator; contact and energy. The implicit solve lives
- * in particles_solve.c. Invariant: deriv allocates nothing; all workspace is
- * sized when the system and its springs are created. */
+/* Particle systems: structure-of-arrays state y = [x | v] and the list of
+ * force objects a scene adds (the description); contact and energy. The
+ * derivative evaluates the forces compiled by kind (particles_deriv.c), the
+ * implicit solve lives in particles_solve.c. Invariant: deriv allocates
+ * nothing; all workspace is sized when the system and its springs are
+ * created. */
 #include "stepwise/particles.h"
 
 #include <math.h>
@@ -9,78 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/particles_deriv.h"
 #include "engine/particles_solve.h"
 #include "stepwise/base.h"
-
-/* Lecture step 2: each force object adds its contribution to f. */
-static void accumulate(const sw_particles *p, const sw_force *fo, const double *x,
-                       const double *v, double *f)
-{
-    int n = p->n;
-    switch (fo->kind) {
-    case SW_FORCE_GRAVITY:
-        for (int i = 0; i < n; i++) {
-            f[2 * i] += p->mass[i] * fo->gx;
-            f[2 * i + 1] += p->mass[i] * fo->gy;
-        }
-        break;
-    case SW_FORCE_DRAG:
-        for (int i = 0; i < 2 * n; i++)
-            f[i] -= fo->k * v[i];
-        break;
-    case SW_FORCE_CENTRAL:
-        for (int i = 0; i < n; i++) {
-            double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy;
-            double r2 = dx * dx + dy * dy;
-            double s = -fo->mu * p->mass[i] / (r2 * sqrt(r2));
-            f[2 * i] += s * dx;
-            f[2 * i + 1] += s * dy;
-        }
-        break;
-    case SW_FORCE_SPRINGS:
-        for (int j = 0; j < fo->nsprings; j++) {
-            const sw_spring *sp = &fo->springs[j];
-            int a = sp->a, b = sp->b;
-            double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
-            double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by;
-            double len2 = dx * dx + dy * dy;
-            /* below 1e-290 the squares lose their digits (or vanish): hypot */
-            double len = len2 >= 1e-290 ? sqrt(len2) : hypot(dx, dy);
-            if (!(len > 0))
-                continue; /* direction undefined: no force */
-            double ux = dx / len, uy = dy / len;
-            double dvx = v[2 * a] - (b >= 0 ? v[2 * b] : 0.0);
-            double dvy = v[2 * a + 1] - (b >= 0 ? v[2 * b + 1] : 0.0);
-            double mag = sp->k * (len - sp->rest) + sp->c * (dvx * ux + dvy * uy);
-            double fx = -mag * ux, fy = -mag * uy;
-            f[2 * a] += fx;
-            f[2 * a + 1] += fy;
-            if (b >= 0) {
-                f[2 * b] -= fx;
-                f[2 * b + 1] -= fy;
-            }
-        }
-        break;
-    }
-}
-
-/* derivEval: clear forces, accumulate, return v and f/m. */
-static void particles_deriv(void *ctx, double t, const double *y, double *dydt)
-{
-    (void)t;
-    const sw_particles *p = ctx;
-    int n2 = 2 * p->n;
-    const double *x = y, *v = y + n2;
-    double *f = dydt + n2;
-    memcpy(dydt, v, (size_t)n2 * sizeof *dydt);
-    memset(f, 0, (size_t)n2 * sizeof *f);
-    for (int k = 0; k < p->nforces; k++)
-        accumulate(p, &p->forces[k], x, v, f);
-    for (int i = 0; i < p->n; i++) {
-        f[2 * i] *= p->inv_mass[i];
-        f[2 * i + 1] *= p->inv_mass[i];
-    }
-}
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {
@@ -97,7 +30,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->y = calloc((size_t)4 * n, sizeof *p->y);
     p->mass = malloc((size_t)n * sizeof *p->mass);
     p->inv_mass = malloc((size_t)n * sizeof *p->inv_mass);
-    if (!p->y || !p->mass || !p->inv_mass || sw_particles_solver_init(p) != SW_OK) {
+    if (!p->y || !p->mass || !p->inv_mass || swp_model_init(p) != SW_OK || sw_particles_solver_init(p) != SW_OK) {
         sw_particles_free(p);
         snprintf(err, errlen, "out of memory for %d particles", n);
         return SW_ENOMEM;
@@ -108,7 +41,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     }
     p->ode.dim = 4 * n;
     p->ode.order = 2;
-    p->ode.deriv = particles_deriv;
+    p->ode.deriv = swp_deriv;
     p->ode.solve = sw_particles_solve;
     p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
@@ -123,6 +56,7 @@ void sw_particles_free(sw_particles *p)
     free(p->mass);
     free(p->inv_mass);
     sw_particles_solver_free(p);
+    swp_model_free(p);
     memset(p, 0, sizeof *p);
 }
 
@@ -132,6 +66,7 @@ static sw_force *add_force(sw_particles *p, sw_force_kind kind)
         return NULL;
     sw_force *fo = &p->forces[p->nforces++];
     memset(fo, 0, sizeof *fo);
+    swp_model_touch(p);
     fo->kind = kind;
     return fo;
 }
@@ -171,7 +106,8 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
     if (nsprings < 1)
         return NULL;
     sw_spring *s = calloc((size_t)nsprings, sizeof *s);
-    if (!s || sw_particles_solver_springs(p, p->nsprings_total + nsprings) != SW_OK) {
+    if (!s || sw_particles_solver_springs(p, p->nsprings_total + nsprings) != SW_OK ||
+        swp_model_springs(p, p->nsprings_total + nsprings) != SW_OK) {
         free(s);
         return NULL;
     }
@@ -184,6 +120,11 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
     fo->nsprings = nsprings;
     p->nsprings_total += nsprings;
     return s;
+}
+
+int sw_particles_finish(sw_particles *p, char *err, size_t errlen)
+{
+    return swp_model_compile(p, err, errlen);
 }
 
 int sw_particles_spring_count(const sw_particles *p) { return p->nsprings_total; }

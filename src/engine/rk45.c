@@ -1,79 +1,101 @@
 /* Dormand–Prince 5(4): the adaptive explicit method with an embedded
- * fourth-order error estimate, FSAL, and rtol/atol step control. */
-#include "engine/stepper.h"
+ * fourth-order error estimate, FSAL, and rtol/atol step control. Each stage
+ * is one loop over the state (over L1-sized slices on pointwise systems);
+ * nothing is copied on an accepted step. The arithmetic, and so every
+ * result, is that of a plain whole-state implementation. */
+#include "engine/adaptive.h"
 
 #include <math.h>
-#include <string.h>
 
 #include "stepwise/base.h"
 
-/* Dormand–Prince 5(4) tableau. */
-static const double dp_c[7] = { 0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1 };
-static const double dp_a[7][6] = {
-    { 0 },
-    { 1.0 / 5 },
-    { 3.0 / 40, 9.0 / 40 },
-    { 44.0 / 45, -56.0 / 15, 32.0 / 9 },
-    { 19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729 },
-    { 9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656 },
-    { 35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84 },
-};
-/* b (fifth order) is the last row of a; e = b - b̂ (fourth order). */
-static const double dp_e[7] = { 71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920,
-                                -17253.0 / 339200, 22.0 / 525, -1.0 / 40 };
+/* Dormand–Prince 5(4) tableau; zero entries left out. */
+static const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
+static const double A21 = 1.0 / 5;
+static const double A31 = 3.0 / 40, A32 = 9.0 / 40;
+static const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
+static const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
+static const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176,
+                    A65 = -5103.0 / 18656;
+/* b (fifth order), the last stage's row too (FSAL) */
+static const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+/* e = b - b̂ (b̂ fourth order) */
+static const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200,
+                    E6 = 22.0 / 525, E7 = -1.0 / 40;
 
-/* One accepted Dormand–Prince step of at most h, with as many rejected trial
- * steps as the error control needs. Error norm: RMS of e_i / (atol + rtol·|y_i|). */
-int sw_step_rk45(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
+/* Slots: k1 and k7 alternate between 0 and 6 (FSAL). */
+enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };
+
+/* The stages over len components, every vector a restrict parameter (so the stage
+ * loops vectorise without overlap checks). Error norm: RMS of
+ * h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
+SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
+                       double atol, double rtol, const double *restrict k1, double *restrict k2,
+                       double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
+                       double *restrict k7, double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
-    int n = ode->dim;
-    double *k[7], *yt = SW_WORK(s, 7), *y1 = SW_WORK(s, 8);
-    for (int j = 0; j < 7; j++)
-        k[j] = SW_WORK(s, j);
-    if (!s->have_cache)
-        sw_ode_eval(ode, *t, y, k[0]);
-    double h = s->h_next > 0 && s->h_next < h_max ? s->h_next : h_max;
-    for (int tries = 0; tries < 200; tries++) {
-        for (int st = 1; st < 7; st++) {
-            for (int i = 0; i < n; i++) {
-                double acc = 0.0;
-                for (int j = 0; j < st; j++)
-                    acc += dp_a[st][j] * k[j][i];
-                (st == 6 ? y1 : yt)[i] = y[i] + h * acc;
-            }
-            sw_ode_eval(ode, *t + dp_c[st] * h, st == 6 ? y1 : yt, k[st]);
-        }
-        double sum = 0.0;
-        for (int i = 0; i < n; i++) {
-            double e = 0.0;
-            for (int j = 0; j < 7; j++)
-                e += dp_e[j] * k[j][i];
-            double sc = s->atol + s->rtol * fmax(fabs(y[i]), fabs(y1[i]));
-            double q = h * e / sc;
-            sum += q * q;
-        }
-        double err = sqrt(sum / n);
-        if (!(err == err)) { /* non-finite trial: shrink hard */
-            s->rejected++;
-            h *= 0.1;
-            continue;
-        }
-        double grow = err > 0 ? 0.9 * pow(err, -0.2) : 5.0;
-        if (err <= 1.0) {
-            memcpy(y, y1, (size_t)n * sizeof *y);
-            memcpy(k[0], k[6], (size_t)n * sizeof *y); /* FSAL */
-            s->have_cache = 1;
-            *t += h;
-            s->h_last = h;
-            s->h_next = h * fmin(5.0, fmax(0.2, grow));
-            s->accepted++;
-            return 0;
-        }
-        s->rejected++;
-        h *= fmax(0.2, grow);
-        if (h < 1e-14 * fmax(1.0, fabs(*t)))
-            break;
+    int i;
+    for (i = 0; i < len; i++)
+        yt[i] = y[i] + h * (A21 * k1[i]);
+    sw_eval_slice(ode, t + C2 * h, len, yt, k2);
+    for (i = 0; i < len; i++)
+        yt[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
+    sw_eval_slice(ode, t + C3 * h, len, yt, k3);
+    for (i = 0; i < len; i++)
+        yt[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
+    sw_eval_slice(ode, t + C4 * h, len, yt, k4);
+    for (i = 0; i < len; i++)
+        yt[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
+    sw_eval_slice(ode, t + C5 * h, len, yt, k5);
+    for (i = 0; i < len; i++)
+        yt[i] = y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
+    sw_eval_slice(ode, t + h, len, yt, k6);
+    unsigned over = 0;
+    for (i = 0; i < len; i++) {
+        double y0 = y[i], y1 = y0 + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i]);
+        saved[i] = y0;
+        y[i] = y1;
+        over |= sw_beyond1(y1, elim);
     }
-    return SW_EDIVERGED;
+    sw_eval_slice(ode, t + h, len, y, k7);
+    double sum = sums->err; /* one chain in increasing i: the sum of a whole-state pass */
+    for (i = 0; i < len; i++) {
+        double e = E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i];
+        double a0 = fabs(saved[i]), a1 = fabs(y[i]);
+        double q = h * e / (atol + rtol * (a1 > a0 ? a1 : a0));
+        sum += q * q;
+    }
+    sums->err = sum;
+    sums->beyond |= over;
 }
 
+/* The FSAL pair and the saved state are state-long (they outlive a slice);
+ * the other stage vectors are slice-local. */
+static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                       unsigned elim, sw_trial_sums *sums)
+{
+    rk45_range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
+               SW_WORK(s, S_K3), SW_WORK(s, S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
+               SW_WORK(s, s->fsal ? 0 : S_K7) + lo, SW_WORK(s, S_YT), SW_WORK(s, S_SAVED) + lo, sums);
+}
+
+static const sw_adaptive rk45 = {
+    .trial = rk45_trial,
+    .evals = 6,
+    .slice = 256,
+    .fsal_other = S_K7,
+    .saved = S_SAVED,
+    .expo = 0.2,
+    .safety = 0.9,
+    .fac_min = 0.2,
+    .fac_max = 5.0,
+};
+
+_Static_assert(RK45_VECTORS == 9, "rk45 needs 9 work vectors (integrators.c)");
+
+/* One accepted Dormand–Prince step of at most h_max, with as many rejected
+ * trial steps as the error control needs. */
+int sw_step_rk45(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
+{
+    return sw_adaptive_step(&rk45, s, ode, t, y, h_max);
+}

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "stepwise/integrator.h"
 
 struct sw_stepper {
@@ -16,7 +17,8 @@ struct sw_stepper {
     int dim;
     double *work;         /* work_vectors * dim doubles, owned */
     double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
-    int have_cache;       /* FSAL derivative in work[0..dim) is valid */
+    int have_cache;       /* FSAL derivative is valid (in work[0..dim), or slot fsal) */
+    int fsal;             /* adaptive RK: workspace slot of the cached first-stage derivative */
     double rtol, atol;    /* adaptive error control; implicit Newton tolerance */
     double h_next;        /* adaptive: proposed size of the next step (0: use h) */
     double h_last;        /* size of the last step taken */
@@ -63,6 +65,35 @@ sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_he
 sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
     sw_step_implicit_midpoint;                        /* implicit.c */
 sw_step_fn sw_step_rk45;                               /* rk45.c */
+sw_step_fn sw_step_dop853;                             /* dop853.c */
+
+/* Explicit Runge-Kutta steps run over the whole state for coupled systems,
+ * or slice by slice (L1-sized) for pointwise ones (flow fields), where
+ * every stage of a slice needs only that slice. The stage vectors of a
+ * slice are then slice-local (the first `len` doubles of their work
+ * vectors, reused by every slice, so they stay in L1); only what must
+ * outlive a slice is kept state-long. The arithmetic is the same either
+ * way; only the memory traffic differs. */
+#define SW_SLICE 512
+
+/* dydt at (t, y) for a slice of len components (y and dydt point at the
+ * slice), or for the whole state (len = dim) of a coupled system. Not
+ * counted: callers count per stage. */
+static inline void sw_eval_slice(sw_ode *ode, double t, int len, const double *y, double *dydt)
+{
+    if (ode->deriv_part)
+        ode->deriv_part(ode->ctx, t, len, y, dydt);
+    else
+        ode->deriv(ode->ctx, t, y, dydt);
+}
+
+/* y's exponent field is at or beyond elim (inf and NaN always are). */
+static inline unsigned sw_beyond1(double v, unsigned elim)
+{
+    unsigned long long bits;
+    memcpy(&bits, &v, sizeof bits);
+    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
+}
 
 /* Largest |v_i| over n components; NaN when any is NaN (so a failed
  * iteration is never "converged"). */

@@ -151,6 +151,8 @@ int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *e
             return rc;
     }
     int rc = sc->build(sys, err, errlen);
+    if (rc == SW_OK && sys->kind == SW_SYS_PARTICLES)
+        rc = sw_particles_finish(&sys->particles, err, errlen);
     if (rc != SW_OK)
         sw_system_free(sys);
     return rc;

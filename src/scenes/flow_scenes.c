@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "stepwise/base.h"
 #include "scenes/scenes.h"
 #include "util/num.h"
@@ -44,7 +45,7 @@ static void vortex_seed(int n, int i, double *x, double *y)
     *y = r * sin(a);
 }
 
-static void vortex_field(const void *params, double t, int n, const double *x, double *v)
+SW_CLONES static void vortex_field(const void *params, double t, int n, const double *x, double *v)
 {
     (void)t;
     double w = ((const double *)params)[VX_OMEGA];

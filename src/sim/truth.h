@@ -151,6 +151,18 @@ int sw_truth_growth_visible(double rho, double dt, double horizon);
  * every step), h_max (and *unbounded = 1) when no step up to h_max grows. */
 double sw_truth_limit(const sw_integrator *m, const sw_spectrum *sp, double h_max, int *unbounded);
 
+/* A workspace for asking again and again (the live meter): with it the
+ * calls below allocate nothing once it has grown to the system and met the
+ * method. NULL when out of memory. */
+typedef struct sw_truth_work sw_truth_work;
+sw_truth_work *sw_truth_work_new(void);
+void sw_truth_work_free(sw_truth_work *w);
+int sw_truth_spectrum_with(sw_truth_work *w, sw_system *sys, double t, const double *y, sw_spectrum *out);
+double sw_truth_growth_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h,
+                            int *worst);
+double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h_max,
+                           int *unbounded);
+
 /* The same over a run: the smallest limit over spectra taken at `samples`
  * times in [0, t_end] along the true solution (or, with no truth, the run
  * of m itself at h_ref). `stiffest` (may be NULL) gets the largest |λ|

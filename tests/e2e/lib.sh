@@ -61,7 +61,7 @@ type_cmd() { keys "$1" Enter; }
 child_of() {
     parent=$1
     for stat in /proc/[0-9]*/stat; do
-        read -r line < "$stat" 2>/dev/null || continue
+        { read -r line < "$stat"; } 2>/dev/null || continue
         rest=${line##*) }
         set -- $rest
         [ "${2:-}" = "$parent" ] || continue

@@ -1,0 +1,57 @@
+/* What the engine benchmark's sections share: a monotonic clock, medians
+ * and spreads of repeated timings, and the peer comparison's entry point. */
+#ifndef SW_BENCH_COMMON_H
+#define SW_BENCH_COMMON_H
+
+#include <stdlib.h>
+#include <time.h>
+
+#define MAX_REPEATS 15
+
+static inline double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static inline int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Median of v[0..n) (sorts v in place). */
+static inline double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* The undamped chain as the scene builds it, for the hand-fused baselines
+ * (bench_base.c): n beads, stiffness k, rest length, 1/m, the right
+ * anchor's x, and room for the n + 1 spring forces (2(n + 1) doubles). */
+typedef struct bench_chain {
+    int n;
+    double k, rest, inv_m, right_x;
+    double *f;
+} bench_chain;
+
+/* Hand-fused steps: `steps` steps of h on y in place (bench_base.c). */
+void base_vortex_euler(double *y, int n, double w, double h, long steps);
+void base_vortex_rk4(double *y, int n, double w, double h, long steps);
+void base_chain_euler(bench_chain *ch, double *y, double h, long steps);
+/* work: 8n doubles */
+void base_chain_rk4(bench_chain *ch, double *y, double *work, double h, long steps);
+
+typedef struct bench_peer_opts {
+    int repeats;        /* paired timed runs (at least 5 for the table) */
+    int chain_n, vortex_n;
+    int quick;          /* error 1e-6 only, fewer searches */
+} bench_peer_opts;
+
+/* The peer comparison (bench_peer.c): stepwise's cheapest method against
+ * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
+void bench_peer(const bench_peer_opts *o);
+
+#endif

@@ -1,0 +1,362 @@
+/* Peer comparison: stepwise against GSL's odeiv2 at equal accuracy. The
+ * same problems (chain and vortex, built by the scene catalog), the same
+ * derivative (GSL calls the system's own sw_ode), the same flags: for each
+ * method of each library, the cheapest setting whose largest error over the
+ * state at the report time is within the target, found by search; then the
+ * cheapest method of each library, timed in paired, interleaved runs. GSL is
+ * used only here, when `make bench` found its development files. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "bench_common.h"
+#include "stepwise/sim.h"
+
+#ifdef SW_HAVE_GSL
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_version.h>
+#endif
+
+/* One problem: a scene at a size, its start, and the reference state at T. */
+typedef struct problem {
+    const char *scene;
+    int n;
+    const sw_scene *sc;
+    double p[SW_MAX_PARAMS];
+    double T;
+    int dim;
+    double *y0, *ref, *y;
+    sw_system sys;      /* the system whose derivative GSL calls */
+    long gsl_evals;
+} problem;
+
+/* A method and the setting found for one error target; seconds is the
+ * median of 5 runs, which picks each library's cheapest. */
+typedef struct candidate {
+    const char *lib, *name;
+    const sw_integrator *m;      /* stepwise, or NULL */
+    const void *gsl_type;        /* gsl_odeiv2_step_type, or NULL */
+    int fixed;                   /* fixed steps: setting = steps; else setting = rtol = atol */
+    double setting, error, seconds;
+    long evals;
+    int ok;
+} candidate;
+
+static double max_diff(int n, const double *a, const double *b)
+{
+    double m = 0;
+    for (int i = 0; i < n; i++) {
+        double d = fabs(a[i] - b[i]);
+        if (!(d <= m))
+            m = d;
+    }
+    return m;
+}
+
+/* ---- stepwise ------------------------------------------------------------ */
+
+/* One run of m to T (setting: steps, or tolerance), state into pb->y. */
+static int sw_run(problem *pb, const sw_integrator *m, int fixed, double setting, double *seconds, long *evals)
+{
+    char err[SW_ERRLEN];
+    sw_sim s;
+    double dt = fixed ? pb->T / setting : pb->T;
+    if (sw_sim_init(&s, pb->sc, pb->p, m, dt, err, sizeof err) != SW_OK)
+        return -1;
+    if (!fixed)
+        sw_sim_set_tolerances(&s, setting, setting);
+    double t0 = now_seconds();
+    int blown = sw_sim_run_until(&s, pb->T);
+    *seconds = now_seconds() - t0;
+    *evals = sw_sim_evals(&s);
+    memcpy(pb->y, s.sys.y, (size_t)pb->dim * sizeof *pb->y);
+    sw_sim_free(&s);
+    return blown ? -1 : 0;
+}
+
+/* ---- GSL ----------------------------------------------------------------- */
+
+#ifdef SW_HAVE_GSL
+static int gsl_deriv(double t, const double y[], double dydt[], void *params)
+{
+    problem *pb = params;
+    pb->gsl_evals++;
+    pb->sys.ode->deriv(pb->sys.ode->ctx, t, y, dydt);
+    return GSL_SUCCESS;
+}
+
+/* One run of GSL stepper `type` through its driver to T: adaptive at
+ * epsabs = epsrel = setting (first step T/1000), or `setting` fixed steps. */
+static int gsl_run(problem *pb, const gsl_odeiv2_step_type *type, int fixed, double setting, double *seconds,
+                   long *evals)
+{
+    gsl_odeiv2_system sys = { gsl_deriv, NULL, (size_t)pb->dim, pb };
+    double h = fixed ? pb->T / setting : 1e-3 * pb->T, t = 0;
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, type, h, fixed ? 1.0 : setting, fixed ? 1.0 : setting);
+    if (!d)
+        return -1;
+    memcpy(pb->y, pb->y0, (size_t)pb->dim * sizeof *pb->y);
+    pb->gsl_evals = 0;
+    double t0 = now_seconds();
+    int rc = fixed ? gsl_odeiv2_driver_apply_fixed_step(d, &t, h, (unsigned long)setting, pb->y)
+                   : gsl_odeiv2_driver_apply(d, &t, pb->T, pb->y);
+    *seconds = now_seconds() - t0;
+    *evals = pb->gsl_evals;
+    gsl_odeiv2_driver_free(d);
+    return rc == GSL_SUCCESS ? 0 : -1;
+}
+#endif
+
+/* One run of candidate c at `setting`; its error against the reference. */
+static int run(problem *pb, const candidate *c, double setting, double *error, double *seconds, long *evals)
+{
+    int rc = -1;
+    if (c->m)
+        rc = sw_run(pb, c->m, c->fixed, setting, seconds, evals);
+#ifdef SW_HAVE_GSL
+    else
+        rc = gsl_run(pb, c->gsl_type, c->fixed, setting, seconds, evals);
+#endif
+    *error = rc == 0 ? max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
+    return rc;
+}
+
+/* ---- search -------------------------------------------------------------- */
+
+#define MAX_STEPS (1L << 22)
+
+/* The cheapest setting of c reaching `target`: for fixed steps the fewest
+ * steps (doubling, then bisection: the error falls with the steps); for an
+ * adaptive method the loosest tolerance reaching it, from 100·target down
+ * on a grid of quarter decades, then refined to 1/32 decade. */
+static void search(problem *pb, candidate *c, double target)
+{
+    double e, sec;
+    long ev;
+    c->ok = 0;
+    if (c->fixed) {
+        long lo = 0, hi = 8;
+        while (hi <= MAX_STEPS && (run(pb, c, (double)hi, &e, &sec, &ev) != 0 || !(e <= target))) {
+            lo = hi;
+            hi *= 2;
+        }
+        if (hi > MAX_STEPS)
+            return;
+        while (hi - lo > 1 && hi - lo > hi / 256) { /* to 0.4% of the steps */
+            long mid = lo + (hi - lo) / 2;
+            if (run(pb, c, (double)mid, &e, &sec, &ev) == 0 && e <= target)
+                hi = mid;
+            else
+                lo = mid;
+        }
+        c->setting = (double)hi;
+    } else {
+        int k;
+        for (k = 0; k <= 32; k++) {
+            double tol = 100.0 * target * pow(10.0, -0.25 * k);
+            if (tol < 1e-14)
+                return;
+            if (run(pb, c, tol, &e, &sec, &ev) == 0 && e <= target)
+                break;
+        }
+        if (k > 32)
+            return;
+        /* then bisect (in log tol) between the last miss and the first hit,
+         * to 1/32 decade; a loose run that failed or missed counts as a miss */
+        double hit = 100.0 * target * pow(10.0, -0.25 * k), miss = k > 0 ? hit * pow(10.0, 0.25) : hit;
+        for (int b = 0; k > 0 && b < 3; b++) {
+            double mid = sqrt(hit * miss);
+            if (run(pb, c, mid, &e, &sec, &ev) == 0 && e <= target)
+                hit = mid;
+            else
+                miss = mid;
+        }
+        c->setting = hit;
+    }
+    double t[5];
+    for (int r = 0; r < 5; r++)
+        run(pb, c, c->setting, &c->error, &t[r], &c->evals);
+    c->seconds = median(t, 5);
+    c->ok = 1;
+}
+
+/* ---- problems ------------------------------------------------------------ */
+
+static void problem_free(problem *pb)
+{
+    free(pb->y0), free(pb->ref), free(pb->y);
+    if (pb->sys.ode)
+        sw_system_free(&pb->sys);
+    memset(pb, 0, sizeof *pb);
+}
+
+/* Build the problem; the reference is the scene's exact solution where it
+ * has one, else GSL's rk8pd at 1e-13 (else dop853 at 1e-14); a second,
+ * independent high-accuracy run (dop853 at 1e-13) bounds its error. */
+static int problem_init(problem *pb, const char *scene, int n, char *why, size_t whylen)
+{
+    char err[SW_ERRLEN], set[32];
+    memset(pb, 0, sizeof *pb);
+    pb->scene = scene;
+    pb->n = n;
+    pb->sc = sw_scene_find(scene);
+    sw_scene_defaults(pb->sc, pb->p);
+    snprintf(set, sizeof set, "n=%d", n);
+    if (sw_scene_set(pb->sc, pb->p, set, err, sizeof err) != SW_OK ||
+        sw_system_build(&pb->sys, pb->sc, pb->p, err, sizeof err) != SW_OK) {
+        snprintf(why, whylen, "%s", err);
+        return -1;
+    }
+    pb->T = pb->sc->duration;
+    pb->dim = pb->sys.ode->dim;
+    size_t bytes = (size_t)pb->dim * sizeof(double);
+    pb->y0 = malloc(bytes), pb->ref = malloc(bytes), pb->y = malloc(bytes);
+    if (!pb->y0 || !pb->ref || !pb->y) {
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
+    memcpy(pb->y0, pb->sys.y, bytes);
+    double sec, check_err;
+    long ev;
+    const char *source;
+    candidate dop = { .lib = "stepwise", .name = "dop853", .m = sw_integrator_find("dop853") };
+    if (pb->sc->exact && pb->sc->exact(&pb->sys, pb->T, pb->ref) == 0) {
+        source = "the exact solution";
+    } else {
+#ifdef SW_HAVE_GSL
+        source = "GSL rk8pd at rtol = atol = 1e-13";
+        if (gsl_run(pb, gsl_odeiv2_step_rk8pd, 0, 1e-13, &sec, &ev) != 0) {
+            snprintf(why, whylen, "the reference run failed");
+            return -1;
+        }
+#else
+        source = "dop853 at rtol = atol = 1e-14";
+        if (sw_run(pb, dop.m, 0, 1e-14, &sec, &ev) != 0) {
+            snprintf(why, whylen, "the reference run failed");
+            return -1;
+        }
+#endif
+        memcpy(pb->ref, pb->y, bytes);
+    }
+    run(pb, &dop, 1e-13, &check_err, &sec, &ev);
+    printf("  %s n = %d, T = %g, state %d: reference %s; dop853 at 1e-13 differs from it by %.1e\n",
+           scene, n, pb->T, pb->dim, source, check_err);
+    return 0;
+}
+
+/* ---- the comparison ------------------------------------------------------ */
+
+/* Paired, interleaved timing of the two cheapest runs: medians and spreads. */
+static void side_by_side(problem *pb, const candidate *a, const candidate *b, double target, int repeats,
+                         char *line, size_t len)
+{
+    double ta[MAX_REPEATS], tb[MAX_REPEATS], ratio[MAX_REPEATS], e;
+    long ev;
+    for (int r = 0; r < repeats; r++) {
+        run(pb, a, a->setting, &e, &ta[r], &ev);
+        run(pb, b, b->setting, &e, &tb[r], &ev);
+        ratio[r] = ta[r] / tb[r];
+    }
+    double amin = ta[0], amax = ta[0], bmin = tb[0], bmax = tb[0], rmin = ratio[0], rmax = ratio[0];
+    for (int r = 1; r < repeats; r++) {
+        amin = fmin(amin, ta[r]), amax = fmax(amax, ta[r]), bmin = fmin(bmin, tb[r]), bmax = fmax(bmax, tb[r]);
+        rmin = fmin(rmin, ratio[r]), rmax = fmax(rmax, ratio[r]);
+    }
+    double am = median(ta, repeats), bm = median(tb, repeats), rm = median(ratio, repeats);
+    char label[48];
+    snprintf(label, sizeof label, "%s n = %d, error %.0e", pb->scene, pb->n, target);
+    snprintf(line, len, "  | %-25s | %-6s %.3g (%.3g-%.3g) | %-7s %.3g (%.3g-%.3g) | %.2f (%.2f-%.2f) | %.2f | %s |\n",
+             label, a->name, am * 1e3, amin * 1e3, amax * 1e3, b->name, bm * 1e3, bmin * 1e3, bmax * 1e3, rm, rmin,
+             rmax, (double)a->evals / (double)b->evals, rm <= 0.5 ? "met" : "missed");
+}
+
+/* The cheapest candidate of one library that reached the target, or NULL. */
+static const candidate *cheapest(const candidate *c, int n, const char *lib)
+{
+    const candidate *best = NULL;
+    for (int i = 0; i < n; i++)
+        if (c[i].ok && strcmp(c[i].lib, lib) == 0 && (!best || c[i].seconds < best->seconds))
+            best = &c[i];
+    return best;
+}
+
+enum { MAX_CANDIDATES = 12 };
+
+static int candidates(candidate *c)
+{
+    int k = 0;
+    const char *mine[] = { "rk4", "rk45", "dop853" };
+    for (int i = 0; i < 3; i++) {
+        const sw_integrator *m = sw_integrator_find(mine[i]);
+        if (m)
+            c[k++] = (candidate){ .lib = "stepwise", .name = m->name, .m = m, .fixed = !(m->flags & SW_ADAPTIVE) };
+    }
+#ifdef SW_HAVE_GSL
+    c[k++] = (candidate){ .lib = "GSL", .name = "rk8pd", .gsl_type = gsl_odeiv2_step_rk8pd };
+    c[k++] = (candidate){ .lib = "GSL", .name = "rkck", .gsl_type = gsl_odeiv2_step_rkck };
+    c[k++] = (candidate){ .lib = "GSL", .name = "rkf45", .gsl_type = gsl_odeiv2_step_rkf45 };
+    c[k++] = (candidate){ .lib = "GSL", .name = "rk4", .gsl_type = gsl_odeiv2_step_rk4 };
+    c[k++] = (candidate){ .lib = "GSL", .name = "rk4-fixed", .gsl_type = gsl_odeiv2_step_rk4, .fixed = 1 };
+    c[k++] = (candidate){ .lib = "GSL", .name = "msadams", .gsl_type = gsl_odeiv2_step_msadams };
+#endif
+    return k;
+}
+
+void bench_peer(const bench_peer_opts *o)
+{
+#ifdef SW_HAVE_GSL
+    gsl_set_error_handler_off();
+    printf("peer comparison: stepwise against GSL %s odeiv2 at equal accuracy\n", GSL_VERSION);
+#else
+    printf("peer comparison: GSL not found (its development files: `make bench` installs libgsl-dev);\n"
+           "stepwise's methods alone\n");
+#endif
+    printf("  error = largest |y - y_ref| over the state at the report time T; each method's cheapest\n"
+           "  setting reaching it (fixed steps: fewest steps; adaptive: loosest rtol = atol, to 1/32\n"
+           "  decade); GSL through its driver, calling the same derivative; times exclude setup\n");
+    struct { const char *scene; int n; } probs[2] = { { "chain", o->chain_n }, { "vortex", o->vortex_n } };
+    double targets[2] = { 1e-6, 1e-9 };
+    int ntargets = o->quick ? 1 : 2, repeats = o->repeats < 5 && !o->quick ? 5 : o->repeats;
+    char summary[4][320];
+    int nsummary = 0;
+    for (int w = 0; w < 2; w++) {
+        problem pb;
+        char why[SW_ERRLEN];
+        if (problem_init(&pb, probs[w].scene, probs[w].n, why, sizeof why) != 0) {
+            printf("  %s: %s\n", probs[w].scene, why);
+            problem_free(&pb);
+            continue;
+        }
+        for (int e = 0; e < ntargets; e++) {
+            candidate c[MAX_CANDIDATES];
+            int nc = candidates(c);
+            printf("\n  %s n = %d, error <= %.0e:\n  %-9s %-10s %12s %11s %10s %10s\n", pb.scene, pb.n, targets[e],
+                   "library", "method", "setting", "error", "evals", "time ms");
+            for (int i = 0; i < nc; i++) {
+                search(&pb, &c[i], targets[e]);
+                if (!c[i].ok) {
+                    printf("  %-9s %-10s %12s\n", c[i].lib, c[i].name, "not reached");
+                    continue;
+                }
+                char setting[32];
+                snprintf(setting, sizeof setting, c[i].fixed ? "%.0f steps" : "tol %.2g", c[i].setting);
+                printf("  %-9s %-10s %12s %11.2e %10ld %10.3f\n", c[i].lib, c[i].name, setting, c[i].error,
+                       c[i].evals, c[i].seconds * 1e3);
+                fflush(stdout);
+            }
+            const candidate *a = cheapest(c, nc, "stepwise"), *b = cheapest(c, nc, "GSL");
+            if (a && b && nsummary < 4)
+                side_by_side(&pb, a, b, targets[e], repeats, summary[nsummary++], sizeof summary[0]);
+        }
+        problem_free(&pb);
+    }
+    if (nsummary > 0) {
+        printf("\n  side by side: the cheapest of each, %d paired, interleaved runs; medians (min-max)\n"
+               "  | problem | stepwise best, ms | GSL best, ms | time ratio | evaluations ratio | goal <= 0.5 |\n"
+               "  | --- | --- | --- | --- | --- | --- |\n", repeats);
+        for (int i = 0; i < nsummary; i++)
+            printf("%s", summary[i]);
+    }
+    printf("\n");
+}

@@ -1,0 +1,17 @@
+/* Private to the engine and the layers above it: SW_CLONES marks a hot
+ * loop's function to be compiled twice on x86-64 Linux — for AVX2 (4
+ * doubles a vector) and for the baseline (SSE2, 2) — the loader picking one
+ * for the machine. Both do the same IEEE operations in the same order (no
+ * FMA: AVX2 alone does not include it, and ISO C mode does not contract),
+ * so results are the same bits on every machine; only the speed differs.
+ * -DSW_NO_CLONES turns it off. */
+#ifndef SW_ENGINE_CLONES_H
+#define SW_ENGINE_CLONES_H
+
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && !defined(SW_NO_CLONES)
+#define SW_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define SW_CLONES
+#endif
+
+#endif

@@ -1,0 +1,385 @@
+/* The particle derivative over forces compiled by kind into flat arrays:
+ * springs as index pairs plus parameters (and anchored springs apart),
+ * evaluated in one loop without indices or branches; then one last pass per
+ * particle that sums its springs' forces (each particle lists its springs:
+ * no scatter, no cleared accumulator), adds gravity and drag, divides by
+ * the mass and copies v. It models only what the system has: no damping
+ * work when every c is 0, no spring work without springs. Invariant: evaluation
+ * allocates nothing, and gives the numbers of the lecture's plain
+ * clear-accumulate-divide loop (the same operations in the same order) for
+ * every force order the scenes use; see swp_model_compile for the order. */
+#include "engine/particles_deriv.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/clones.h"
+#include "stepwise/stepwise.h"
+
+/* A particle's (x, y) as one value, so a pair of components moves and
+ * subtracts as one (a GNU C vector, which gcc and clang support; each
+ * operation is the elementwise IEEE operation, so the bits are those of two
+ * scalar ones). */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
+/* Springs are evaluated BLOCK at a time: gather the differences, compute the
+ * forces in a loop without indices (which the compiler vectorises: square
+ * root and divisions two or more at a time), scatter them. */
+#define BLOCK 128
+
+struct sw_particles_model {
+    int compiled;             /* the arrays below match the description */
+    int cap;                  /* room for springs */
+    /* springs: [0, npair) join particles a and b; [npair, npair + nanchor)
+     * tie particle a to the fixed point (ax, ay); a and b hold 2a and 2b,
+     * the offsets of the particles' x in the state */
+    int npair, nanchor;
+    int *a, *b;
+    double *k, *c, *rest, *ax, *ay;
+    int damped;               /* some spring has c != 0 */
+    double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and
+                                 |d|²: 5 BLOCK */
+    double *force;            /* each spring's force on its particle a, (x, y) pairs: 2 cap */
+    /* each particle's springs, in the order above: entries first[i] ..
+     * first[i + 1] - 1 of spring (2j, the offset of spring j's force) and
+     * sign (+1: the particle is a, -1: it is b) */
+    int *first, *spring;
+    double *sign;
+    int degree;               /* every particle has this many springs (entries 2i, 2i + 1 when 2); else 0 */
+    /* one gravity and one drag, fused into the last pass */
+    int gravity, drag;
+    double gx, gy, kdrag;
+    /* every other per-particle force (central fields, a second gravity or
+     * drag): a pass each, in the order added, before the last pass */
+    int nextra;
+    int extra[SW_MAX_FORCES]; /* indices into p->forces */
+};
+
+int swp_model_init(sw_particles *p)
+{
+    p->model = calloc(1, sizeof *p->model);
+    if (!p->model)
+        return SW_ENOMEM;
+    p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
+    p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
+    return p->model->scratch && p->model->first ? SW_OK : SW_ENOMEM;
+}
+
+int swp_model_springs(sw_particles *p, int nsprings)
+{
+    struct sw_particles_model *m = p->model;
+    size_t n = (size_t)nsprings;
+    int **irows[] = { &m->a, &m->b, &m->spring };
+    size_t ilen[] = { n, n, 2 * n };
+    for (size_t r = 0; r < sizeof irows / sizeof irows[0]; r++) {
+        int *q = realloc(*irows[r], ilen[r] * sizeof *q);
+        if (!q)
+            return SW_ENOMEM;
+        *irows[r] = q;
+    }
+    double **rows[] = { &m->k, &m->c, &m->rest, &m->ax, &m->ay, &m->force, &m->sign };
+    for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
+        double *q = realloc(*rows[r], (r >= 5 ? 2 * n : n) * sizeof *q);
+        if (!q)
+            return SW_ENOMEM;
+        *rows[r] = q;
+    }
+    m->cap = nsprings;
+    m->compiled = 0;
+    return SW_OK;
+}
+
+void swp_model_free(sw_particles *p)
+{
+    struct sw_particles_model *m = p->model;
+    if (m) {
+        free(m->a), free(m->b), free(m->k), free(m->c), free(m->rest), free(m->ax), free(m->ay);
+        free(m->scratch), free(m->force), free(m->first), free(m->spring), free(m->sign);
+        free(m);
+    }
+    p->model = NULL;
+}
+
+void swp_model_touch(sw_particles *p)
+{
+    if (p->model)
+        p->model->compiled = 0;
+}
+
+/* Copy spring sp into slot j of the flat arrays. */
+static void put_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
+{
+    m->a[j] = 2 * sp->a;
+    m->b[j] = 2 * sp->b;
+    m->k[j] = sp->k;
+    m->c[j] = sp->c;
+    m->rest[j] = sp->rest;
+    m->ax[j] = sp->ax;
+    m->ay[j] = sp->ay;
+    m->damped |= sp->c != 0;
+}
+
+/* The order of summation: springs (paired, then anchored, each in the order
+ * added), then the extra per-particle passes, then gravity, then drag. The
+ * plain loop sums in the order forces were added; the two agree bit for bit
+ * whenever no particle gets more than two spring forces before a gravity or
+ * drag — every scene in the catalog (springs are added before gravity, and
+ * gravity before drag). Elsewhere they differ by rounding. */
+int swp_model_compile(sw_particles *p, char *err, size_t errlen)
+{
+    struct sw_particles_model *m = p->model;
+    int rc = SW_OK, pass;
+    m->npair = m->nanchor = m->damped = m->gravity = m->drag = m->nextra = 0;
+    for (pass = 0; pass < 2; pass++) /* paired springs first, then anchored ones */
+        for (int f = 0; f < p->nforces; f++) {
+            const sw_force *fo = &p->forces[f];
+            for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
+                const sw_spring *sp = &fo->springs[j];
+                if (sp->a < 0 || sp->a >= p->n || sp->b < -1 || sp->b >= p->n) {
+                    if (rc == SW_OK && err)
+                        snprintf(err, errlen, "spring %d joins particles %d and %d; a system of %d "
+                                 "particles allows 0 to %d (b = -1: a fixed anchor)",
+                                 j, sp->a, sp->b, p->n, p->n - 1);
+                    rc = SW_EINVAL;
+                } else if ((sp->b >= 0) == (pass == 0)) {
+                    put_spring(m, pass == 0 ? m->npair : m->npair + m->nanchor, sp);
+                    pass == 0 ? m->npair++ : m->nanchor++;
+                }
+            }
+        }
+    /* Each particle's list, in spring order: count, then place. */
+    int total = m->npair + m->nanchor;
+    memset(m->first, 0, (size_t)(p->n + 1) * sizeof *m->first);
+    for (int j = 0; j < total; j++) {
+        m->first[m->a[j] / 2 + 1]++;
+        if (j < m->npair)
+            m->first[m->b[j] / 2 + 1]++;
+    }
+    for (int i = 0; i < p->n; i++)
+        m->first[i + 1] += m->first[i];
+    for (int j = 0; j < total; j++)
+        for (int end = 0; end < (j < m->npair ? 2 : 1); end++) {
+            int i = (end ? m->b[j] : m->a[j]) / 2, e = m->first[i]++;
+            m->spring[e] = 2 * j;
+            m->sign[e] = end ? -1.0 : 1.0;
+        }
+    for (int i = p->n; i > 0; i--) /* placing advanced each first[i] to first[i + 1] */
+        m->first[i] = m->first[i - 1];
+    m->first[0] = 0;
+    m->degree = total > 0 ? m->first[1] : 0;
+    for (int i = 1; i < p->n && m->degree; i++)
+        if (m->first[i + 1] - m->first[i] != m->degree)
+            m->degree = 0;
+    for (int f = 0; f < p->nforces; f++) {
+        const sw_force *fo = &p->forces[f];
+        if (fo->kind == SW_FORCE_GRAVITY && !m->gravity && !m->drag) {
+            m->gravity = 1;
+            m->gx = fo->gx;
+            m->gy = fo->gy;
+        } else if (fo->kind == SW_FORCE_DRAG && !m->drag) {
+            m->drag = 1;
+            m->kdrag = fo->k;
+        } else if (fo->kind != SW_FORCE_SPRINGS) {
+            m->extra[m->nextra++] = f;
+        }
+    }
+    m->compiled = 1;
+    return rc;
+}
+
+/* Spring forces of a block from its differences d (and dv), as (x, y) pairs:
+ *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  d̂ = d/|d|,
+ * |d| = √(dx² + dy²), or hypot(dx, dy) where dx² + dy² < 1e-290 (there the
+ * squares lose their digits or vanish). Where |d| = 0 the direction is
+ * undefined and the plain loop adds no force; here d = 0 is divided by 1
+ * instead (l + (l == 0), a select without a branch, so the loop
+ * vectorises) and the force is ±0, which leaves a sum as it is: the sums
+ * start at +0, and a sum that starts at +0 is never -0. The hypot cases are
+ * found after the loop (their squares were kept in len2) and redone. */
+SW_CLONES static void block_forces(int len, const double *restrict k, const double *restrict c,
+                         const double *restrict rest, const double *restrict d, const double *restrict dv,
+                         double *restrict force, double *restrict len2, int damped)
+{
+    if (damped)
+        for (int j = 0; j < len; j++) {
+            double dx = d[2 * j], dy = d[2 * j + 1];
+            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
+            double ux = dx / q, uy = dy / q;
+            double mag = k[j] * (l - rest[j]) + c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
+            len2[j] = l2;
+            force[2 * j] = -mag * ux;
+            force[2 * j + 1] = -mag * uy;
+        }
+    else
+        for (int j = 0; j < len; j++) {
+            double dx = d[2 * j], dy = d[2 * j + 1];
+            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
+            double ux = dx / q, uy = dy / q;
+            double mag = k[j] * (l - rest[j]);
+            len2[j] = l2;
+            force[2 * j] = -mag * ux;
+            force[2 * j + 1] = -mag * uy;
+        }
+    for (int j = 0; j < len; j++) {
+        if (len2[j] >= 1e-290)
+            continue;
+        double dx = d[2 * j], dy = d[2 * j + 1], l = hypot(dx, dy);
+        if (!(l > 0)) {
+            force[2 * j] = force[2 * j + 1] = 0.0;
+            continue;
+        }
+        double ux = dx / l, uy = dy / l;
+        double mag = k[j] * (l - rest[j]) + (damped ? c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy) : 0.0);
+        force[2 * j] = -mag * ux;
+        force[2 * j + 1] = -mag * uy;
+    }
+}
+
+/* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are
+ * paired; and dv = v_a - v_b (v_a for anchored ones) when damped. */
+static void block_differences(const struct sw_particles_model *m, const double *restrict x,
+                              const double *restrict v, int lo, int mid, int hi, double *restrict d,
+                              double *restrict dv)
+{
+    const int *restrict ia = m->a, *restrict ib = m->b;
+    const double *restrict ax = m->ax, *restrict ay = m->ay;
+    for (int j = lo; j < mid; j++)
+        store2(d + 2 * (j - lo), load2(x + ia[j]) - load2(x + ib[j]));
+    for (int j = mid; j < hi; j++) {
+        d[2 * (j - lo)] = x[ia[j]] - ax[j];
+        d[2 * (j - lo) + 1] = x[ia[j] + 1] - ay[j];
+    }
+    if (!m->damped)
+        return;
+    for (int j = lo; j < mid; j++)
+        store2(dv + 2 * (j - lo), load2(v + ia[j]) - load2(v + ib[j]));
+    for (int j = mid; j < hi; j++) /* v_a - 0 = v_a */
+        store2(dv + 2 * (j - lo), load2(v + ia[j]));
+}
+
+/* Every spring's force on its particle a, into m->force. */
+static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
+{
+    double *d = m->scratch, *dv = d + 2 * BLOCK, *len2 = dv + 2 * BLOCK;
+    int total = m->npair + m->nanchor;
+    for (int lo = 0; lo < total; lo += BLOCK) {
+        int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
+        block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
+        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, m->damped);
+    }
+}
+
+/* One per-particle force added into f, as its own pass. */
+static void extra_pass(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    for (int i = 0; i < p->n; i++) {
+        double m = p->mass[i];
+        if (fo->kind == SW_FORCE_GRAVITY) {
+            f[2 * i] += m * fo->gx;
+            f[2 * i + 1] += m * fo->gy;
+        } else if (fo->kind == SW_FORCE_DRAG) {
+            f[2 * i] -= fo->k * v[2 * i];
+            f[2 * i + 1] -= fo->k * v[2 * i + 1];
+        } else { /* central: -μ m d/|d|³ */
+            double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy;
+            double r2 = dx * dx + dy * dy;
+            double s = -fo->mu * m / (r2 * sqrt(r2));
+            f[2 * i] += s * dx;
+            f[2 * i + 1] += s * dy;
+        }
+    }
+}
+
+/* Where the last pass finds the forces so far. */
+enum { FROM_NONE, FROM_SPRINGS, FROM_F };
+
+/* Particle i's spring forces: Σ ±F over its list, from +0 in spring order
+ * (±1·F is exact, so each step is f + F or f - F, as a scatter would add). */
+static inline v2d spring_sum(const int *restrict first, const int *restrict spring, const double *restrict sign,
+                             const double *restrict force, int i)
+{
+    v2d f = { 0.0, 0.0 };
+    for (int e = first[i]; e < first[i + 1]; e++)
+        f += sign[e] * load2(force + spring[e]);
+    return f;
+}
+
+/* The last pass: dx/dt = v, and dv/dt = (f + m·g - k·v)/m, with f the sum
+ * of the particle's spring forces (from = FROM_SPRINGS), the forces so far
+ * in f (FROM_F) or 0 (FROM_NONE), for the kinds present. Called with
+ * constant arguments, so each combination compiles to its own loop. */
+static inline void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                             double *restrict xdot, double *restrict f, int from, int gravity, int drag)
+{
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass, *restrict sign = m->sign,
+                           *restrict force = m->force;
+    const int *restrict first = m->first, *restrict spring = m->spring;
+    v2d g = { m->gx, m->gy };
+    double kd = m->kdrag;
+    for (int i = 0; i < p->n; i++) {
+        v2d fi = { 0.0, 0.0 }, vi = load2(v + 2 * i);
+        if (from == FROM_SPRINGS && m->degree == 2) /* chains, rings: the same sum, unrolled */
+            fi = (fi + sign[2 * i] * load2(force + spring[2 * i])) + sign[2 * i + 1] * load2(force + spring[2 * i + 1]);
+        else if (from == FROM_SPRINGS)
+            fi = spring_sum(first, spring, sign, force, i);
+        else if (from == FROM_F)
+            fi = load2(f + 2 * i);
+        if (gravity)
+            fi += mass[i] * g;
+        if (drag)
+            fi -= kd * vi;
+        store2(xdot + 2 * i, vi);
+        store2(f + 2 * i, fi * inv[i]);
+    }
+}
+
+void swp_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    (void)t;
+    sw_particles *p = ctx;
+    struct sw_particles_model *m = p->model;
+    if (!m->compiled)
+        swp_model_compile(p, NULL, 0);
+    int n2 = 2 * p->n;
+    const double *x = y, *v = y + n2;
+    double *f = dydt + n2;
+    int springs = m->npair + m->nanchor > 0, from = springs ? FROM_SPRINGS : FROM_NONE;
+    if (springs)
+        spring_forces(m, x, v);
+    if (m->nextra > 0) { /* rare (central fields): the forces so far into f, then a pass per extra */
+        for (int i = 0; i < p->n; i++) {
+            v2d fi = { 0.0, 0.0 };
+            if (springs)
+                fi = spring_sum(m->first, m->spring, m->sign, m->force, i);
+            store2(f + 2 * i, fi);
+        }
+        for (int e = 0; e < m->nextra; e++)
+            extra_pass(p, &p->forces[m->extra[e]], x, v, f);
+        from = FROM_F;
+    }
+    switch (from | m->gravity << 2 | m->drag << 3) {
+    case FROM_NONE: last_pass(p, m, v, dydt, f, FROM_NONE, 0, 0); break;
+    case FROM_SPRINGS: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 0, 0); break;
+    case FROM_F: last_pass(p, m, v, dydt, f, FROM_F, 0, 0); break;
+    case FROM_NONE | 4: last_pass(p, m, v, dydt, f, FROM_NONE, 1, 0); break;
+    case FROM_SPRINGS | 4: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 1, 0); break;
+    case FROM_F | 4: last_pass(p, m, v, dydt, f, FROM_F, 1, 0); break;
+    case FROM_NONE | 8: last_pass(p, m, v, dydt, f, FROM_NONE, 0, 1); break;
+    case FROM_SPRINGS | 8: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 0, 1); break;
+    case FROM_F | 8: last_pass(p, m, v, dydt, f, FROM_F, 0, 1); break;
+    case FROM_NONE | 12: last_pass(p, m, v, dydt, f, FROM_NONE, 1, 1); break;
+    case FROM_SPRINGS | 12: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 1, 1); break;
+    default: last_pass(p, m, v, dydt, f, FROM_F, 1, 1); break;
+    }
+}

@@ -1,0 +1,26 @@
+/* Private to the engine: the particle system's forces compiled into flat
+ * arrays by kind, and the derivative that evaluates them (particles_deriv.c).
+ * particles.c keeps the force list a scene builds (the description) and
+ * calls these to size, compile and free the compiled form. */
+#ifndef SW_ENGINE_PARTICLES_DERIV_H
+#define SW_ENGINE_PARTICLES_DERIV_H
+
+#include <stddef.h>
+
+#include "stepwise/particles.h"
+
+/* The compiled form, empty (to be compiled on first use); 0 or SW_ENOMEM. */
+int swp_model_init(sw_particles *p);
+/* Room for nsprings springs in all; 0 or SW_ENOMEM. */
+int swp_model_springs(sw_particles *p, int nsprings);
+void swp_model_free(sw_particles *p);
+/* The description changed: compile again before the next evaluation. */
+void swp_model_touch(sw_particles *p);
+/* Compile the description; 0, or SW_EINVAL (err says which spring) when a
+ * spring names a particle that does not exist (such springs are left out). */
+int swp_model_compile(sw_particles *p, char *err, size_t errlen);
+/* The derivative (sw_deriv_fn) over the compiled form, compiling first when
+ * the description changed. */
+void swp_deriv(void *ctx, double t, const double *y, double *dydt);
+
+#endif

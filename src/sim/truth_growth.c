@@ -1,0 +1,301 @@
+/* Growth per step and stability limits, computed rather than quoted: a
+ * method's growth on a mode is the spectral radius of the method's own
+ * one-step map on that mode's test system, found by stepping unit states
+ * with the method itself (so Verlet as implemented, damping, real
+ * eigenvalues and plugins are all covered, with no formula per method); the
+ * largest stable Δt is where the growth of some mode first exceeds one.
+ * Invariant: with a workspace, nothing allocates after the first call for
+ * a method (the live meter asks every frame). */
+#include "sim/truth_work.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/linalg.h"
+#include "stepwise/stepwise.h"
+
+double sw_truth_horizon(const sw_scene *sc, double stiffest)
+{
+    double unit = stiffest > 0 && isfinite(stiffest) ? 6.283185307179586 / stiffest : sc->duration;
+    return fmax(100 * unit, 20 * sc->duration);
+}
+
+int sw_truth_growth_visible(double rho, double dt, double horizon)
+{
+    return rho > 1 && (horizon / dt) * log(rho) > log(1.01);
+}
+
+/* ---- a mode's test system --------------------------------------------------- */
+
+static void test_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    (void)t;
+    const sw_test_system *ts = ctx;
+    dydt[0] = ts->j[0] * y[0] + ts->j[1] * y[1];
+    dydt[1] = ts->j[2] * y[0] + ts->j[3] * y[1];
+}
+
+/* (I - c·J) z = r by Cramer's rule. */
+static int test_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
+{
+    (void)t;
+    (void)y;
+    const sw_test_system *ts = ctx;
+    double a = 1 - c * ts->j[0], b = -c * ts->j[1], d = -c * ts->j[2], e = 1 - c * ts->j[3];
+    double det = a * e - b * d;
+    if (!(fabs(det) > 0) || !isfinite(det))
+        return SW_EDIVERGED;
+    z[0] = (e * r[0] - b * r[1]) / det;
+    z[1] = (a * r[1] - d * r[0]) / det;
+    return SW_OK;
+}
+
+static void test_system_init(sw_test_system *ts, int order, const sw_mode *md)
+{
+    memset(ts, 0, sizeof *ts);
+    if (order == 1) {
+        ts->j[0] = ts->j[3] = md->re;
+        ts->j[1] = -md->im;
+        ts->j[2] = md->im;
+    } else {
+        /* B = λ + μ, A = -λμ (real: μ is λ's conjugate or both are real) */
+        ts->j[1] = 1;
+        ts->j[2] = -(md->re * md->pre - md->im * md->pim);
+        ts->j[3] = md->re + md->pre;
+    }
+    ts->ode.dim = 2;
+    ts->ode.order = order;
+    ts->ode.deriv = test_deriv;
+    ts->ode.solve = test_solve;
+    ts->ode.ctx = ts;
+}
+
+/* Spectral radius of one step of size h from the stepper's method on the
+ * test system. Columns of the map come from stepping the unit states; when
+ * the method carries a derivative from one step to the next (FSAL: its
+ * stepper keeps it in work vector 0), the map acts on the state and that
+ * cache together, a 4x4 matrix. */
+static double map_growth(sw_stepper *st, sw_test_system *ts, double h)
+{
+    double m[16], t;
+    int cached = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int n = cached ? 4 : 2;
+        for (int col = 0; col < n; col++) {
+            double y[2] = { col == 0, col == 1 };
+            sw_stepper_touch(st);
+            if (cached) {
+                st->work[0] = col == 2;
+                st->work[1] = col == 3;
+                st->have_cache = 1;
+            }
+            t = 0;
+            if (sw_stepper_step(st, &ts->ode, &t, y, h) != SW_OK)
+                return NAN;
+            if (!cached && st->have_cache) {
+                cached = 1; /* start over on the augmented state */
+                break;
+            }
+            m[0 * n + col] = y[0];
+            m[1 * n + col] = y[1];
+            if (cached) {
+                m[2 * n + col] = st->work[0];
+                m[3 * n + col] = st->work[1];
+            }
+            if (col == n - 1)
+                return sw_spectral_radius(n, m);
+        }
+    }
+    return NAN;
+}
+
+double sw_truth_growth(const sw_integrator *m, int order, const sw_mode *mode, double h)
+{
+    if (m->flags & SW_ADAPTIVE)
+        return NAN;
+    sw_test_system ts;
+    test_system_init(&ts, order, mode);
+    sw_stepper st;
+    char err[SW_ERRLEN];
+    if (sw_stepper_init(&st, m, &ts.ode, err, sizeof err) != SW_OK)
+        return NAN;
+    double rho = map_growth(&st, &ts, h);
+    sw_stepper_free(&st);
+    return rho;
+}
+
+sw_truth_work *sw_truth_work_new(void) { return calloc(1, sizeof(sw_truth_work)); }
+
+static void drop_steppers(sw_truth_work *w)
+{
+    for (int k = 0; k < w->ready; k++)
+        sw_stepper_free(&w->st[k]);
+    w->ready = 0;
+    w->method = NULL;
+}
+
+void sw_truth_work_free(sw_truth_work *w)
+{
+    if (!w)
+        return;
+    drop_steppers(w);
+    free(w->buf);
+    free(w);
+}
+
+double *sw_truth_scratch(sw_truth_work *w, size_t n)
+{
+    if (n > w->cap) {
+        double *b = realloc(w->buf, n * sizeof *b);
+        if (!b)
+            return NULL;
+        w->buf = b;
+        w->cap = n;
+    }
+    return w->buf;
+}
+
+/* Steppers of method m for the spectrum's modes: made once per method and
+ * mode count, the test systems' matrices refreshed every call. */
+static int steppers_for(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp)
+{
+    char err[SW_ERRLEN];
+    if (w->method != m)
+        drop_steppers(w);
+    w->method = m;
+    for (int k = 0; k < sp->n; k++) {
+        test_system_init(&w->ts[k], sp->order, &sp->mode[k]);
+        if (k >= w->ready) {
+            if (sw_stepper_init(&w->st[k], m, &w->ts[k].ode, err, sizeof err) != SW_OK)
+                return -1;
+            w->ready++;
+        }
+    }
+    return 0;
+}
+
+static double steppers_growth(sw_truth_work *w, int n, double h, int *worst)
+{
+    double rho = 0;
+    for (int k = 0; k < n; k++) {
+        double g = map_growth(&w->st[k], &w->ts[k], h);
+        if (!(g <= rho)) {
+            rho = g;
+            if (worst)
+                *worst = k;
+        }
+    }
+    return rho;
+}
+
+double sw_truth_growth_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h,
+                            int *worst)
+{
+    if (m->flags & SW_ADAPTIVE)
+        return NAN;
+    if (sp->n == 0)
+        return 1.0;
+    return steppers_for(w, m, sp) == 0 ? steppers_growth(w, sp->n, h, worst) : NAN;
+}
+
+double sw_truth_growth_all(const sw_integrator *m, const sw_spectrum *sp, double h, int *worst)
+{
+    sw_truth_work *w = sw_truth_work_new();
+    double rho = w ? sw_truth_growth_with(w, m, sp, h, worst) : NAN;
+    sw_truth_work_free(w);
+    return rho;
+}
+
+double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h_max,
+                           int *unbounded)
+{
+    *unbounded = 0;
+    if (m->flags & SW_ADAPTIVE)
+        return NAN;
+    if (sp->n == 0 || !(sp->largest > 0)) {
+        *unbounded = 1; /* nothing moves fast enough to constrain a step */
+        return h_max;
+    }
+    if (steppers_for(w, m, sp) != 0)
+        return NAN;
+    /* Scan up geometrically for the first step that grows, then bisect.
+     * A method growing already at |λ|·h = 0.01 has no stable step. */
+    const double ok = 1.0 + SW_TRUTH_NEUTRAL;
+    double lo = 0, hi = NAN, h = fmin(1e-2 / sp->largest, h_max);
+    for (;;) {
+        if (!(steppers_growth(w, sp->n, h, NULL) <= ok)) {
+            hi = h;
+            break;
+        }
+        lo = h;
+        if (h >= h_max)
+            break;
+        h = fmin(h * 1.03, h_max);
+    }
+    if (isnan(hi)) {
+        *unbounded = 1;
+        return h_max;
+    }
+    if (lo > 0)
+        for (int it = 0; it < 40 && hi / lo - 1 > 1e-9; it++) {
+            double mid = sqrt(lo * hi);
+            if (steppers_growth(w, sp->n, mid, NULL) <= ok)
+                lo = mid;
+            else
+                hi = mid;
+        }
+    return lo;
+}
+
+double sw_truth_limit(const sw_integrator *m, const sw_spectrum *sp, double h_max, int *unbounded)
+{
+    sw_truth_work *w = sw_truth_work_new();
+    double h = w ? sw_truth_limit_with(w, m, sp, h_max, unbounded) : NAN;
+    sw_truth_work_free(w);
+    return h;
+}
+
+
+int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end,
+                         int samples, double h_max, double *limit, int *unbounded, double *stiffest,
+                         char *err, size_t errlen)
+{
+    sw_truth tr;
+    int rc = sw_truth_init(&tr, sc, p, err, errlen);
+    if (rc != SW_OK)
+        return -1;
+    double best = INFINITY, largest = 0;
+    *unbounded = 1;
+    sw_spectrum sp;
+    for (int k = 0; k < samples; k++) {
+        double t = samples > 1 ? t_end * k / (samples - 1) : 0;
+        const double *y = sw_truth_at(&tr, t);
+        if (!y) {
+            if (k > 0)
+                break;
+            y = tr.sys.y; /* no truth: the start alone */
+        }
+        if (sw_truth_spectrum(&tr.sys, t, y, &sp) != 0) {
+            snprintf(err, errlen, "%s: the eigenvalues of the linearisation did not converge at t = %g",
+                     sc->name, t);
+            sw_truth_free(&tr);
+            return -1;
+        }
+        largest = fmax(largest, sp.largest);
+        int unb;
+        double h = sw_truth_limit(m, &sp, h_max, &unb);
+        if (!unb)
+            *unbounded = 0;
+        if (h < best)
+            best = h;
+        if (!tr.y || (tr.source == SW_TRUTH_NONE))
+            break;
+    }
+    sw_truth_free(&tr);
+    *limit = best;
+    if (stiffest)
+        *stiffest = largest;
+    return 0;
+}

@@ -1,0 +1,243 @@
+/* The particle derivative against an independent, straightforward one
+ * written here (the lecture's loop: clear the forces, let each force object
+ * add its part in the order it was added, return v and f/m), on every
+ * particle scene of the catalog, at its start and at scrambled states; and
+ * the compiled form's bookkeeping: a spring with a bad index is named, a
+ * force added later is seen, a spring of length 0 adds no force. */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "stepwise/particles.h"
+#include "stepwise/sim.h"
+
+#define MAXN 2048
+
+/* Plain derivative; scale (laid out as dydt) = 0 for dx/dt = v, which is
+ * copied, and Σ|each force's part| / m for dv/dt: the size that rounding
+ * in a sum of those parts is relative to. */
+static void plain_deriv(const sw_particles *p, const double *y, double *dydt, double *scale_all)
+{
+    int n = p->n, n2 = 2 * n;
+    const double *x = y, *v = y + n2;
+    double *f = dydt + n2, *scale = scale_all + n2;
+    memset(f, 0, (size_t)n2 * sizeof *f);
+    memset(scale_all, 0, (size_t)(2 * n2) * sizeof *scale_all);
+    for (int k = 0; k < p->nforces; k++) {
+        const sw_force *fo = &p->forces[k];
+        for (int i = 0; i < n && fo->kind != SW_FORCE_SPRINGS; i++)
+            for (int d = 0; d < 2; d++) {
+                double part;
+                if (fo->kind == SW_FORCE_GRAVITY) {
+                    part = p->mass[i] * (d ? fo->gy : fo->gx);
+                } else if (fo->kind == SW_FORCE_DRAG) {
+                    part = -(fo->k * v[2 * i + d]);
+                } else {
+                    double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy, r2 = dx * dx + dy * dy;
+                    part = -fo->mu * p->mass[i] / (r2 * sqrt(r2)) * (d ? dy : dx);
+                }
+                f[2 * i + d] += part;
+                scale[2 * i + d] += fabs(part);
+            }
+        for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
+            const sw_spring *sp = &fo->springs[j];
+            int a = sp->a, b = sp->b;
+            double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
+            double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by, len2 = dx * dx + dy * dy;
+            double len = len2 >= 1e-290 ? sqrt(len2) : hypot(dx, dy); /* tiny: the squares lose digits */
+            if (!(len > 0))
+                continue;
+            double ux = dx / len, uy = dy / len;
+            double dvx = v[2 * a] - (b >= 0 ? v[2 * b] : 0.0), dvy = v[2 * a + 1] - (b >= 0 ? v[2 * b + 1] : 0.0);
+            double mag = sp->k * (len - sp->rest) + sp->c * (dvx * ux + dvy * uy);
+            double fx = -mag * ux, fy = -mag * uy;
+            f[2 * a] += fx, f[2 * a + 1] += fy;
+            scale[2 * a] += fabs(fx), scale[2 * a + 1] += fabs(fy);
+            if (b >= 0) {
+                f[2 * b] -= fx, f[2 * b + 1] -= fy;
+                scale[2 * b] += fabs(fx), scale[2 * b + 1] += fabs(fy);
+            }
+        }
+    }
+    for (int i = 0; i < n2; i++) {
+        dydt[i] = v[i];
+        f[i] *= p->inv_mass[i / 2];
+        scale[i] *= p->inv_mass[i / 2];
+    }
+}
+
+/* A fixed pseudo-random sequence in [-1, 1) (no library generator). */
+static double scramble(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*s >> 11) / 4503599627370496.0 - 1.0;
+}
+
+static double y[4 * MAXN], got[4 * MAXN], want[4 * MAXN], scale[4 * MAXN];
+
+/* Scene with settings: compare at the start and at 5 scrambled states
+ * (positions moved by up to `spread`, velocities up to 3 in each component,
+ * so every damping and drag term is exercised). Tolerance 4ε·scale per
+ * component: both sum the same parts; in another order a sum of k parts
+ * changes by at most (k - 1)·ε·Σ|parts| (here k ≤ 3). Returns how many
+ * components differ in any bit. */
+static long compare_scene(const char *name, const char *const *sets, int nsets, double spread)
+{
+    const sw_scene *sc = sw_scene_find(name);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    for (int i = 0; i < nsets; i++)
+        ck_assert_msg(sw_scene_set(sc, p, sets[i], err, sizeof err) == SW_OK, "%s", err);
+    sw_system sys;
+    ck_assert_msg(sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(sys.kind, SW_SYS_PARTICLES);
+    const sw_particles *pa = &sys.particles;
+    int dim = sys.ode->dim;
+    ck_assert_int_le(dim, 4 * MAXN);
+    unsigned long long seed = 12345;
+    long differ = 0;
+    for (int trial = 0; trial < 6; trial++) {
+        memcpy(y, sys.y, (size_t)dim * sizeof *y);
+        for (int i = 0; trial > 0 && i < dim; i++)
+            y[i] += i < dim / 2 ? spread * scramble(&seed) : 3.0 * scramble(&seed);
+        sys.ode->deriv(sys.ode->ctx, 0.0, y, got);
+        plain_deriv(pa, y, want, scale);
+        for (int i = 0; i < dim; i++) {
+            double tol = 4 * DBL_EPSILON * scale[i];
+            ck_assert_msg(fabs(got[i] - want[i]) <= tol, "%s trial %d component %d: %.17g vs %.17g (tol %g)", name,
+                          trial, i, got[i], want[i], tol);
+            differ += memcmp(&got[i], &want[i], sizeof got[i]) != 0;
+        }
+    }
+    sw_system_free(&sys);
+    return differ;
+}
+
+/* Every particle scene of the catalog at its defaults, and the variants
+ * that switch on what the defaults leave off (damping, gravity, drag). The
+ * compiled derivative sums in the plain loop's order for all of them, so
+ * beyond the tolerance they agree bit for bit (particles_deriv.c says when
+ * they would not). */
+START_TEST(derivative_matches_plain)
+{
+    int scenes = 0;
+    for (int i = 0; i < sw_scene_count(); i++) {
+        const sw_scene *sc = sw_scene_at(i);
+        sw_system sys;
+        char err[SW_ERRLEN];
+        ck_assert_int_eq(sw_system_build(&sys, sc, NULL, err, sizeof err), SW_OK);
+        int particles = sys.kind == SW_SYS_PARTICLES;
+        sw_system_free(&sys);
+        if (!particles)
+            continue;
+        scenes++;
+        ck_assert_int_eq(compare_scene(sc->name, NULL, 0, 0.3), 0);
+    }
+    ck_assert_int_eq(scenes, 7); /* projectile, bounce, fireworks, spring, stiff-spring, chain, orbit */
+    const char *chain[] = { "n=1000", "c=2.5", "g=9.81" }, *spring[] = { "g=9.81", "c=0" },
+               *proj[] = { "drag=0" }, *orbit[] = { "e=0.9" }, *bounce[] = { "drag=0.7" };
+    ck_assert_int_eq(compare_scene("chain", chain, 3, 0.4), 0);
+    ck_assert_int_eq(compare_scene("chain", chain, 1, 0.4), 0);
+    ck_assert_int_eq(compare_scene("spring", spring, 2, 0.5), 0);
+    ck_assert_int_eq(compare_scene("projectile", proj, 1, 1.0), 0);
+    ck_assert_int_eq(compare_scene("bounce", bounce, 1, 1.0), 0);
+    ck_assert_int_eq(compare_scene("orbit", orbit, 1, 0.05), 0);
+}
+END_TEST
+
+/* Three particles, hand-made: forces added in an order no scene uses
+ * (drag, then springs with three per particle, then gravity twice and a
+ * central field), so the sums may round differently, but only at the
+ * tolerance of compare_scene's argument. */
+START_TEST(derivative_any_order)
+{
+    sw_particles p;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(&p, 3, 2.0, err, sizeof err), SW_OK);
+    p.mass[1] = 0.5, p.inv_mass[1] = 2.0;
+    ck_assert_int_eq(sw_particles_add_drag(&p, 0.3), SW_OK);
+    sw_spring *s = sw_particles_add_springs(&p, 4);
+    s[0] = (sw_spring){ .a = 0, .b = 1, .k = 10, .c = 0.2, .rest = 1 };
+    s[1] = (sw_spring){ .a = 1, .b = 2, .k = 7, .c = 0, .rest = 0.5 };
+    s[2] = (sw_spring){ .a = 2, .b = 0, .k = 3, .c = 0.1, .rest = 2 };
+    s[3] = (sw_spring){ .a = 1, .b = -1, .k = 5, .c = 0.4, .rest = 0.2, .ax = 0.3, .ay = -1 };
+    ck_assert_int_eq(sw_particles_add_gravity(&p, 0.1, -9.81), SW_OK);
+    ck_assert_int_eq(sw_particles_add_gravity(&p, -0.2, 1.0), SW_OK);
+    ck_assert_int_eq(sw_particles_add_central(&p, 0.5, 0.5, 2.0), SW_OK);
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    unsigned long long seed = 99;
+    for (int trial = 0; trial < 20; trial++) {
+        for (int i = 0; i < 12; i++)
+            y[i] = 2.0 * scramble(&seed);
+        p.ode.deriv(p.ode.ctx, 0.0, y, got);
+        plain_deriv(&p, y, want, scale);
+        for (int i = 0; i < 12; i++)
+            ck_assert_msg(fabs(got[i] - want[i]) <= 4 * 4 * DBL_EPSILON * scale[i], "component %d: %.17g vs %.17g",
+                          i, got[i], want[i]); /* up to 6 parts per component here: (6 - 1)ε < 16ε */
+    }
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* finish() names a spring whose particle does not exist; the derivative
+ * leaves it out rather than reading outside the state. */
+START_TEST(finish_names_bad_spring)
+{
+    sw_particles p;
+    char err[SW_ERRLEN] = "";
+    ck_assert_int_eq(sw_particles_init(&p, 2, 1.0, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(&p, 2);
+    s[0] = (sw_spring){ .a = 0, .b = 1, .k = 1, .rest = 1 };
+    s[1] = (sw_spring){ .a = 0, .b = 2, .k = 1, .rest = 1 };
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "spring 1"));
+    ck_assert_ptr_nonnull(strstr(err, "0 to 1"));
+    p.y[0] = 3.0; /* particle 0 at (3, 0), particle 1 at the origin: stretch 2 */
+    p.ode.deriv(p.ode.ctx, 0.0, p.y, got);
+    ck_assert_double_eq(got[4], -2.0); /* only spring 0: f = -k (|d| - rest) = -2 along x */
+    ck_assert_double_eq(got[6], 2.0);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* A force added after the derivative was first used is in the next one;
+ * a spring of length 0 (direction undefined) adds no force, as before. */
+START_TEST(later_force_and_zero_length)
+{
+    sw_particles p;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(&p, 2, 2.0, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(&p, 2);
+    s[0] = (sw_spring){ .a = 0, .b = 1, .k = 4, .c = 1, .rest = 1 };
+    s[1] = (sw_spring){ .a = 1, .b = -1, .k = 4, .c = 1, .rest = 1, .ax = 0.5, .ay = 0.25 };
+    p.y[2] = 0.5, p.y[3] = 0.25; /* both particles: particle 0 at the origin, particle 1 on its anchor */
+    p.y[0] = 0.5, p.y[1] = 0.25;
+    p.y[4] = 1.0, p.y[7] = -1.0;
+    p.ode.deriv(p.ode.ctx, 0.0, p.y, got);
+    for (int i = 4; i < 8; i++)
+        ck_assert_double_eq(got[i], 0.0);
+    ck_assert(!signbit(got[4]) && !signbit(got[7]));
+    ck_assert_int_eq(sw_particles_add_gravity(&p, 0.0, -10.0), SW_OK);
+    p.ode.deriv(p.ode.ctx, 0.0, p.y, got);
+    ck_assert_double_eq(got[5], -10.0);
+    ck_assert_double_eq(got[7], -10.0);
+    ck_assert_double_eq(got[0], 1.0);
+    sw_particles_free(&p);
+}
+END_TEST
+
+Suite *make_derivative_suite(void);
+Suite *make_derivative_suite(void)
+{
+    Suite *s = suite_create("derivative");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, derivative_matches_plain);
+    tcase_add_test(tc, derivative_any_order);
+    tcase_add_test(tc, finish_names_bad_spring);
+    tcase_add_test(tc, later_force_and_zero_length);
+    suite_add_tcase(s, tc);
+    return s;
+}

@@ -1,0 +1,26 @@
+#!/bin/sh
+# The engine benchmark's peer comparison (`make bench`), quick: every
+# candidate's reported error is within its target, stepwise's methods all
+# reach it, the reference is cross-checked far below the target, and, when
+# the benchmark was built with GSL, the side-by-side table has a row per
+# problem with a time ratio and an evaluations ratio. Timings are printed,
+# never checked.
+set -u
+BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
+fail() { echo "FAIL: $*"; exit 1; }
+out=$("$BENCH" --quick --peer 2>&1) || fail "exited $?: $out"
+echo "$out" | grep -q '^peer comparison' || fail "no peer comparison: $out"
+# candidate rows: library method setting error evals time
+rows=$(echo "$out" | awk '$1 == "stepwise" || $1 == "GSL"')
+[ -n "$rows" ] || fail "no candidate rows: $out"
+echo "$rows" | awk '$NF != "reached" && $(NF-2) + 0 > 1e-6 { bad = 1 } END { exit bad }' \
+    || fail "a candidate's error is above 1e-6: $rows"
+for m in rk4 rk45 dop853; do
+    [ "$(echo "$rows" | grep -c "^  stepwise  $m ")" -eq 2 ] || fail "stepwise $m not reached on both problems: $rows"
+done
+echo "$out" | grep -E 'differs from it by' | awk '{ if ($NF + 0 > 1e-9) exit 1 }' \
+    || fail "a reference is not within 1e-9 of its cross-check: $out"
+if echo "$out" | grep -q 'against GSL'; then
+    [ "$(echo "$out" | grep -c '^  | [a-z]* n = [0-9]*, error 1e-06 | ')" -eq 2 ] || fail "no side-by-side rows: $out"
+fi
+echo "bench peer: ok"

@@ -732,10 +732,10 @@ static double l9_acc005(void) { return l9_rk45(0.05).accepted; }
 static double l9_rej005(void) { return l9_rk45(0.05).rejected; }
 /* rk45's evaluations: per accepted step once under way (a smooth flow, no
  * rejections), and in its first step (every stage new). */
-static double l9_rk45_per_step(void)
+static double adaptive_per_step(const char *m)
 {
     sw_sim s;
-    sim_init(&s, "vortex", "n=1", "rk45", 0.05);
+    sim_init(&s, "vortex", "n=1", m, 0.05);
     sw_sim_step(&s);
     long e1 = sw_sim_evals(&s);
     for (int i = 0; i < 20; i++)
@@ -747,6 +747,7 @@ static double l9_rk45_per_step(void)
     sw_sim_free(&s);
     return r;
 }
+static double l9_rk45_per_step(void) { return adaptive_per_step("rk45"); }
 static double l9_rk45_stages(void)
 {
     sw_sim s;
@@ -756,6 +757,9 @@ static double l9_rk45_stages(void)
     sw_sim_free(&s);
     return e;
 }
+static double dop853_per_step(void) { return adaptive_per_step("dop853"); }
+static double ord_dop853(void) { return method("dop853")->order; }
+static double reference_order(void) { return sw_truth_reference_method()->order; }
 static double l9_rk45_order(void) { return method("rk45")->order; }
 
 /* ---- lesson 10 --------------------------------------------------------- */
@@ -1406,6 +1410,9 @@ static const claim claims[] = {
     { README, "Newton's method to rounding | 2 | ≥ {1} + solves |", ev_im, ATLEAST, 0, "Newton iterates: at least one evaluation per step", NULL },
     { README, "| rk45 | Dormand–Prince 5(4), adaptive (rtol/atol) | {5} | 6", ord_rk45, EXACT, 0, "the method's order in the table", NULL },
     { README, "(rtol/atol) | 5 | {6} (reuses the last stage) |", l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "| dop853 | Dormand–Prince 8(5,3), adaptive (Hairer; the truth module's reference runs) | {8} |", ord_dop853, EXACT, 0, "the method's order in the table", NULL },
+    { README, "the truth module's reference runs) | 8 | {12} (reuses the last stage) |", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "`1`–`9` and `{0}` pick one", key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
     { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
@@ -1478,6 +1485,7 @@ static const claim claims[] = {
     { "src/scenes/spring_scenes.c", "explicit Euler gains energy every step: (1 + (w dt)^2) per step", spring_energy_growth, REL, 1e-12, "ρ² of Euler's map on the undamped spring at Δt = 0.05", spring_energy_formula },
     { "src/scenes/spring_scenes.c", "implicit midpoint gains energy on this nonlinear spring above dt {0.19}", l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
     { "src/scenes/orbit.c", "Kepler's exact ellipse, period 2 pi / sqrt(mu)", orbit_period_mu4, REL, 1e-12, "Kepler's period from the energy at mu = 4", orbit_period_formula },
+    { "src/scenes/flow_scenes.c", "measured against a tight-tolerance {8}th-order", reference_order, EXACT, 0, "the order of the truth module's reference method", NULL },
     { "src/scenes/ball_scenes.c", "halve the step and the miss distance {halves}", projectile_ratio, ABS, 0.3, "the ratio halving Δt from 0.01: the lessons' tolerance for 2", NULL },
     { "src/scenes/ball_scenes.c", "error becomes O(dt)", bounce_order, ABS, 0.5, "the order lesson 4's page measures on the bounce", one },
     /* lessons/README.md, the authoring guide */

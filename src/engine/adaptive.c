@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* Hairer's HINIT: a first step from the size of f and of its change over an
  * explicit Euler step, such that h^order·max(|f|, |f'|) ≈ 0.01 in the

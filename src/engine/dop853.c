@@ -9,7 +9,7 @@
 
 #include <math.h>
 
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* The tableau as printed in DOP853 (30 digits; verified against the 200
  * order conditions up to order 8 by tests/check_dop853.c). Stage j's

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "engine/clones.h"
-#include "stepwise/stepwise.h"
+#include "stepwise/base.h"
 
 /* A particle's (x, y) as one value, so a pair of components moves and
  * subtracts as one (a GNU C vector, which gcc and clang support; each

@@ -760,6 +760,68 @@ static double l9_rk45_stages(void)
 static double dop853_per_step(void) { return adaptive_per_step("dop853"); }
 static double ord_dop853(void) { return method("dop853")->order; }
 static double reference_order(void) { return sw_truth_reference_method()->order; }
+/* An adaptive run of the e = 0.9 orbit to two orbits at largest step 0.4
+ * and tolerances (rtol, atol): its evaluations and its error against Kepler. */
+static void l9_adaptive(const char *m, double rtol, double atol, double *evals, double *error)
+{
+    sw_sim s;
+    double p[SW_MAX_PARAMS], truth[4];
+    const sw_scene *sc = scene_p("orbit", ECC, p);
+    sim_init(&s, "orbit", ECC, m, 0.4);
+    sw_sim_set_tolerances(&s, rtol, atol);
+    ck_assert_int_eq(sw_sim_run_until(&s, two_orbits()), 0);
+    ck_assert_int_eq(sw_truth_state(sc, p, s.t, truth), 0);
+    *evals = (double)sw_sim_evals(&s);
+    *error = sw_truth_error(4, s.sys.y, truth);
+    sw_sim_free(&s);
+}
+static double l9_sim_rtol(void)
+{
+    sw_sim s;
+    sim_init(&s, "orbit", ECC, "rk45", 0.4);
+    double r = s.rtol;
+    sw_sim_free(&s);
+    return r;
+}
+static double l9_rk45_error(void)
+{
+    double evals, error;
+    l9_adaptive("rk45", SW_RTOL_DEFAULT, SW_ATOL_DEFAULT, &evals, &error);
+    return error;
+}
+static double l9_rk45_error_over_rtol(void) { return l9_rk45_error() / SW_RTOL_DEFAULT; }
+static double l9_proportion(void)
+{
+    double evals, tight;
+    l9_adaptive("rk45", 1e-8, 1e-11, &evals, &tight);
+    return (tight / 1e-8) / l9_rk45_error_over_rtol();
+}
+static double l9_dop853_vs_rk45(void)
+{
+    double e1, e2, error;
+    l9_adaptive("dop853", SW_RTOL_DEFAULT, SW_ATOL_DEFAULT, &e1, &error);
+    l9_adaptive("rk45", SW_RTOL_DEFAULT, SW_ATOL_DEFAULT, &e2, &error);
+    return e1 / e2;
+}
+static double l9_tight(const char *m, int want_error)
+{
+    double evals, error;
+    l9_adaptive(m, 1e-10, 1e-13, &evals, &error);
+    return want_error ? error : evals;
+}
+static double l9_tight_dop853_evals(void) { return l9_tight("dop853", 0); }
+static double l9_tight_dop853_error(void) { return l9_tight("dop853", 1); }
+static double l9_tight_rk45_evals(void) { return l9_tight("rk45", 0); }
+static double l9_tight_rk45_error(void) { return l9_tight("rk45", 1); }
+static double place_of(const char *name)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (strcmp(sw_integrator_at(i)->name, name) == 0)
+            return i + 1;
+    return NAN;
+}
+static double l9_dop853_place(void) { return place_of("dop853"); }
+static double l9_dop853_after_rk45(void) { return place_of("dop853") - place_of("rk45"); }
 static double l9_rk45_order(void) { return method("rk45")->order; }
 
 /* ---- lesson 10 --------------------------------------------------------- */
@@ -1376,6 +1438,19 @@ static const claim claims[] = {
     { L9, "({six} new evaluations: the", l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { L9, "takes each step twice at once: a {5}th-order answer", l9_rk45_order, EXACT, 0, "the method's order in the table", NULL },
     { L9, "@hint Press {0} (zero), or i until the status line says rk45.", key_rk45, EXACT, 0, "the key that picks the method", NULL },
+    { L9, "The tolerance (rtol = {1e-6}) bounds each step's error", l9_sim_rtol, EXACT, 0, "the tolerance a sim starts with", NULL },
+    { L9, "after two orbits the planet is off by about {0.034}", l9_rk45_error, ROUNDED, 0, "rk45 at largest step 0.4 (the page's), the error against Kepler at two orbits", NULL },
+    { L9, "some {34 000} times rtol", l9_rk45_error_over_rtol, REL, 0.015, "two significant figures", NULL },
+    { L9, "Ask for less per step and the run's error falls in proportion", l9_proportion, MAGNITUDE, 0.3, "error over rtol at rtol 1e-8 against at 1e-6: within a factor two", one },
+    { L9, "dop853, {twelve} new evaluations per step", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { L9, "Dormand and Prince also paired an {8}th-order answer", ord_dop853, EXACT, 0, "the method's order in the table", NULL },
+    { L9, "At this loose tolerance it costs about what rk45 does", l9_dop853_vs_rk45, ABS, 0.2, "dop853's evaluations over rk45's at rtol 1e-6, largest step 0.4: within 20 %", one },
+    { L9, "two orbits cost dop853 {2690} evaluations", l9_tight_dop853_evals, EXACT, 0, "rtol 1e-10, atol 1e-13 (bench's 1e-3·rtol), largest step 0.4", NULL },
+    { L9, "for an error of {9e-8}, and rk45", l9_tight_dop853_error, ROUNDED, 0, "as above, the error against Kepler", NULL },
+    { L9, "and rk45 {4591} for 2e-6", l9_tight_rk45_evals, EXACT, 0, "as above", NULL },
+    { L9, "and rk45 4591 for {2e-6}", l9_tight_rk45_error, ROUNDED, 0, "as above", NULL },
+    { L9, "(press i once from rk45: it is the {11}th method)", l9_dop853_place, EXACT, 0, "dop853's place in the list", NULL },
+    { L9, "(press i {once} from rk45", l9_dop853_after_rk45, EXACT, 0, "places from rk45 to dop853", NULL },
     /* lesson 10 */
     { L10, "A correct midpoint gives a ratio near {4}, RK4 near 16", l10_ratio_mid, ABS, 0.5, "the lessons' tolerance for 4", NULL },
     { L10, "A correct midpoint gives a ratio near 4, RK4 near {16}", l10_ratio_rk4, ABS, 2, "the lessons' tolerance for 16", NULL },
@@ -1410,9 +1485,10 @@ static const claim claims[] = {
     { README, "Newton's method to rounding | 2 | ≥ {1} + solves |", ev_im, ATLEAST, 0, "Newton iterates: at least one evaluation per step", NULL },
     { README, "| rk45 | Dormand–Prince 5(4), adaptive (rtol/atol) | {5} | 6", ord_rk45, EXACT, 0, "the method's order in the table", NULL },
     { README, "(rtol/atol) | 5 | {6} (reuses the last stage) |", l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { README, "| dop853 | Dormand–Prince 8(5,3), adaptive (Hairer; the truth module's reference runs) | {8} |", ord_dop853, EXACT, 0, "the method's order in the table", NULL },
-    { README, "the truth module's reference runs) | 8 | {12} (reuses the last stage) |", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "| dop853 | Dormand–Prince 8(5,3) (Hairer), adaptive (rtol/atol) | {8} |", ord_dop853, EXACT, 0, "the method's order in the table", NULL },
+    { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "rk45's error after two orbits is about {3·10⁴} times rtol", l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
     { README, "`1`–`9` and `{0}` pick one", key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
     { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
@@ -1593,7 +1669,7 @@ static const struct { const char *word; double value; } words[] = {
     { "half", 0.5 }, { "twothirds", 2.0 / 3.0 }, { "tripled", 3 }, { "five", 5 }, { "ten", 10 },
     { "adozen", 12 }, { "nineteen", 19 }, { "seven", 7 }, { "six", 6 }, { "four", 4 },
     { "eight", 8 }, { "ten-thousandfold", 1e4 }, { "halves", 2 }, { "rounding", 1e-12 },
-    { "afewthousandths", 0.005 }, { "constant", 0 },
+    { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 },
 };
 
 static const char *const superscripts[] = { "⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹" };
@@ -1671,6 +1747,13 @@ static double parse_figure(const char *figure, char *norm, size_t nlen)
             return NAN;
         a *= sqrt(b);
         s = end;
+    }
+    if (strncmp(s, "·10", strlen("·10")) == 0) { /* 3·10⁴ */
+        s += strlen("·10");
+        sup = superscript(&s);
+        if (sup < 0)
+            return NAN;
+        a *= pow(10, sup);
     }
     sup = superscript(&s);
     if (sup >= 0)
@@ -1893,6 +1976,7 @@ START_TEST(figures_parse)
     ck_assert_double_eq_tol(parse_figure("2√2", norm, sizeof norm), 2 * sqrt(2), 1e-15);
     ck_assert_double_eq_tol(parse_figure("√1.16", norm, sizeof norm), sqrt(1.16), 1e-15);
     ck_assert_double_eq_tol(parse_figure("10⁴", norm, sizeof norm), 1e4, 1e-9);
+    ck_assert_double_eq_tol(parse_figure("3·10⁴", norm, sizeof norm), 3e4, 1e-9);
     ck_assert_double_eq_tol(parse_figure("²", norm, sizeof norm), 2, 1e-15);
     ck_assert_double_eq_tol(parse_figure("two thirds", norm, sizeof norm), 2.0 / 3, 1e-15);
     ck_assert(isnan(parse_figure("1.3x", norm, sizeof norm)));

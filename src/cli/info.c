@@ -30,9 +30,10 @@ static void list_integrators(void)
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);
         char evals[40];
-        snprintf(evals, sizeof evals, "%d%s%s", m->evals, (m->flags & SW_IMPLICIT) ? "+solve" : "",
+        snprintf(evals, sizeof evals, "%s%d%s%s", (m->flags & SW_NEWTON) ? ">=" : "", m->evals,
+                 (m->flags & SW_NEWTON) ? "+solves" : (m->flags & SW_IMPLICIT) ? "+solve" : "",
                  (m->flags & SW_PLUGIN) ? " (claimed)" : "");
-        printf("%-18s order %d  evals/step %-8s %s\n", m->name, m->order, evals, m->label);
+        printf("%-22s order %d  evals/step %-10s %s\n", m->name, m->order, evals, m->label);
     }
 }
 

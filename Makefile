@@ -158,7 +158,7 @@ bench:
 $(BUILD)/datadir.stamp: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' > $@
-$(BUILD)/src/cli/common.o: $(BUILD)/datadir.stamp
+$(BUILD)/src/cli/common.o $(BUILD)/src/cli/plugin_build.o: $(BUILD)/datadir.stamp
 FORCE:
 
 LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)

@@ -333,7 +333,7 @@ int sw_cmd_bench(int argc, char **argv)
     if (!reports || !done) {
         free(reports);
         free(done);
-        fprintf(stderr, "stepwise: out of memory for %d reports\n", n);
+        sw_cli_note("out of memory for %d reports", n);
         return SW_EXIT_FAIL;
     }
     if (notes[0])
@@ -345,7 +345,7 @@ int sw_cmd_bench(int argc, char **argv)
         sw_bench_report *r = &reports[i];
         if (sw_bench_init(r, scenes[i], params[i], err, sizeof err) != SW_OK ||
             sw_bench_sweep_all(r, nmethods ? methods : NULL, nmethods, &cfg, err, sizeof err) != SW_OK) {
-            fprintf(stderr, "stepwise: %s\n", err);
+            sw_cli_note("%s", err);
             sw_bench_free(r);
             status = SW_EXIT_FAIL;
             continue;

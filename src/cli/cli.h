@@ -23,8 +23,11 @@ int sw_cmd_stability(int argc, char **argv);
 /* Exit statuses. */
 enum { SW_EXIT_OK = 0, SW_EXIT_FAIL = 1, SW_EXIT_USAGE = 2 };
 
-/* Print "stepwise: <message>" on stderr; returns SW_EXIT_USAGE. */
+/* Print "stepwise: <message>" on stderr, escaped to one line of printable
+ * text (util/escape.h); returns SW_EXIT_USAGE. */
 int sw_cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* The same for a line that is not an error (a notice, a report's verdict). */
+void sw_cli_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* Settings shared by record, play, check and the lab: what to run and how. */
 typedef struct sw_run_opts {

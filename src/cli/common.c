@@ -16,18 +16,31 @@
 #include "util/escape.h"
 #include "util/num.h"
 
-int sw_cli_error(const char *fmt, ...)
+/* One line of printable text, whatever the arguments held (a newline or an
+ * escape sequence in a name, a path, a value typed). */
+static void say(const char *fmt, va_list ap)
 {
-    /* One line of printable text, whatever the arguments held (a newline or
-     * an escape sequence in a name, a path, a value typed). */
     char msg[2048];
-    va_list ap;
-    va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
     sw_escape_message(msg, sizeof msg);
     fprintf(stderr, "stepwise: %s\n", msg);
+}
+
+int sw_cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    say(fmt, ap);
+    va_end(ap);
     return SW_EXIT_USAGE;
+}
+
+void sw_cli_note(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    say(fmt, ap);
+    va_end(ap);
 }
 
 int sw_cli_flush_stdout(void)

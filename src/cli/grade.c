@@ -369,7 +369,7 @@ int sw_cmd_grade(int argc, char **argv)
     }
     grade_clean_dir(build_dir, list.n);
     if (sw_signal_caught) {
-        fprintf(stderr, "stepwise: grading interrupted; no gradebook written\n");
+        sw_cli_note("grading interrupted; no gradebook written");
         grade_list_free(&list);
         sw_signals_reraise(sw_signal_caught);
         return SW_EXIT_USAGE;

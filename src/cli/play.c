@@ -150,7 +150,7 @@ int sw_cmd_play(int argc, char **argv)
         setlocale(LC_CTYPE, "");
         if (!sw_utf8_locale()) {
             a.braille = 0;
-            fprintf(stderr, "stepwise: --braille needs a UTF-8 locale (e.g. LANG=C.UTF-8); drawing with ASCII\n");
+            sw_cli_note("--braille needs a UTF-8 locale (e.g. LANG=C.UTF-8); drawing with ASCII");
         }
     }
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);

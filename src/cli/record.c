@@ -141,7 +141,7 @@ int sw_cmd_record(int argc, char **argv)
     }
     if (sw_signal_caught) {
         sw_trace_abort(&w);
-        fprintf(stderr, "stepwise: record interrupted at step %ld; %s\n", sim.steps,
+        sw_cli_note("record interrupted at step %ld; %s", sim.steps,
                 w.to_stdout ? "the trace on standard output is incomplete" : "no trace written");
         sw_sim_free(&sim);
         sw_signals_reraise(sw_signal_caught);
@@ -157,18 +157,18 @@ int sw_cmd_record(int argc, char **argv)
     }
     if (sim.blown && sw_plugin_failed(&sim) != SW_PF_NONE) {
         /* Not a numerical result: the plugin is broken. The trace shows how far it got. */
-        fprintf(stderr, "stepwise: %s (plugin) failed on %s: %s (t = %g); the trace ends there\n",
+        sw_cli_note("%s (plugin) failed on %s: %s (t = %g); the trace ends there",
                 sim.method->name, o.scene->name, sim.blow_reason, sim.blow_time);
         sw_sim_free(&sim);
         return SW_EXIT_FAIL;
     }
     if (sim.blown)
-        fprintf(stderr, "stepwise: %s under %s%s diverged at step %ld (t = %g): %s; the trace "
-                "ends there\n", o.scene->name, sim.method->name,
+        sw_cli_note("%s under %s%s diverged at step %ld (t = %g): %s; the trace "
+                "ends there", o.scene->name, sim.method->name,
                 (sim.method->flags & SW_PLUGIN) ? " (plugin)" : "", sim.blow_step, sim.blow_time,
                 sim.blow_reason);
     else if (output && strcmp(output, "-") != 0)
-        fprintf(stderr, "stepwise: wrote %ld rows (steps 0 to %ld, t = 0 to %g) to %s\n",
+        sw_cli_note("wrote %ld rows (steps 0 to %ld, t = 0 to %g) to %s",
                 w.rows, sim.steps, sim.t, output);
     sw_sim_free(&sim);
     return SW_EXIT_OK;

@@ -137,7 +137,7 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
             continue;
         }
         if (rc != SW_OK) {
-            fprintf(stderr, "stepwise: %s: %s\n", m->name, err);
+            sw_cli_note("%s: %s", m->name, err);
             status = 1;
             continue;
         }

@@ -7,7 +7,8 @@
 # own session: only EOF/EIO on the terminal tells).
 . "$(dirname "$0")/lib.sh"
 command -v setsid >/dev/null || { echo "setsid (util-linux) is needed"; exit 1; }
-export XDG_STATE_HOME="$WORK/state"
+# (tmux gives a new session the server's environment: passed explicitly below)
+XDG_STATE_HOME="$WORK/state"
 HZ=$(getconf CLK_TCK 2>/dev/null || echo 100)
 
 # cpu_ticks PID: user + system time so far, in clock ticks (/proc/PID/stat
@@ -29,20 +30,22 @@ find_app() {
     done
 }
 
-# vanish NAME HOW WRAP ARGS: start `stepwise ARGS` in a fresh tmux session
-# under `sh -c` (WRAP "setsid -w" to give it a session of its own), kill the
-# pane or session (HOW), and check how fast and how cheaply it ends.
+# vanish NAME HOW WRAP KEYS ARGS: start `stepwise ARGS` in a fresh tmux
+# session under `sh -c` (WRAP "setsid -w" to give it a session of its own),
+# type KEYS, kill the pane or session (HOW), and check how fast and how
+# cheaply it ends.
 vanish() {
-    name=$1 how=$2 wrap=$3; shift 3
+    name=$1 how=$2 wrap=$3 typed=$4; shift 4
     rm -f rc times
     s="sw-gone-$$-$name"
     LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$s" -x 120 -y 40 -c "$WORK" \
-        "env TERM=xterm-256color LANG=C.UTF-8 sh -c 'trap \"\" HUP; $wrap \"$STEPWISE\" $*; echo \$? > rc; times > times'" \
+        "env TERM=xterm-256color LANG=C.UTF-8 XDG_STATE_HOME='$XDG_STATE_HOME' sh -c 'trap \"\" HUP; $wrap \"$STEPWISE\" $*; echo \$? > rc; times > times'" \
         || fail "$name: cannot start tmux"
     pid="" i=0
     while [ -z "$pid" ] && [ $i -lt 80 ]; do sleep 0.1; pid=$(find_app); i=$((i + 1)); done
     [ -n "$pid" ] || { tmux kill-session -t "$s" 2>/dev/null; fail "$name: stepwise did not start"; }
     sleep 1.5 # it draws a few dozen frames
+    [ -z "$typed" ] || { tmux send-keys -t "$s" $typed; sleep 0.5; }
     before=$(cpu_ticks "$pid")
     start=$(now_ms)
     if [ "$how" = pane ]; then tmux kill-pane -t "$s"; else tmux kill-session -t "$s"; fi
@@ -67,17 +70,21 @@ vanish() {
     [ "$after" -lt 300 ] || fail "$name: used ${after} ms of CPU after the terminal went away"
 }
 
-vanish lesson-session session "" lesson 1
-vanish lesson-pane pane "" lesson 1
-vanish lesson-own-session session "setsid -w" lesson 1
-vanish menu-own-session pane "setsid -w" ""
+vanish lesson-session session "" "" lesson 1
+vanish lesson-pane pane "" "" lesson 1
+vanish lesson-own-session session "setsid -w" "" lesson 1
+vanish menu-own-session pane "setsid -w" "" ""
+# a page completed before the terminal went is kept: lesson 2's first page
+# asks for five steps (.), and its progress is saved
+vanish lesson-progress session "setsid -w" ". . . . ." lesson 2
+grep -q '^02-euler.lesson 1$' "$XDG_STATE_HOME/stepwise/progress" || fail "the completed page was not saved"
 
 # A pty whose master is closed under it (script(1) killed outright).
 if command -v script >/dev/null; then
     rm -f rc times
     # script's input: a FIFO held open here, so it never sees end of file
     mkfifo in && exec 3<>in
-    env TERM=xterm-256color script -qfec "sh -c 'trap \"\" HUP; setsid -w \"$STEPWISE\" lesson 1; echo \$? > rc; times > times'" /dev/null <in >/dev/null 2>&1 &
+    env TERM=xterm-256color XDG_STATE_HOME="$XDG_STATE_HOME" script -qfec "sh -c 'trap \"\" HUP; setsid -w \"$STEPWISE\" lesson 1; echo \$? > rc; times > times'" /dev/null <in >/dev/null 2>&1 &
     pid="" i=0
     while [ -z "$pid" ] && [ $i -lt 80 ]; do sleep 0.1; pid=$(find_app); i=$((i + 1)); done
     [ -n "$pid" ] || fail "pty: stepwise did not start under script"

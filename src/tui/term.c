@@ -133,8 +133,10 @@ int sw_term_start(char *err, size_t errlen)
     setlocale(LC_ALL, "");         /* wide characters for Braille and ✓ */
     setlocale(LC_NUMERIC, "C");    /* but numbers stay 0.05, never 0,05: traces and lessons */
     utf8 = sw_utf8_locale();
-    if (check_term(err, errlen) != SW_OK)
+    static int term_known; /* checked once: the menu starts curses again after each lesson */
+    if (!term_known && check_term(err, errlen) != SW_OK)
         return SW_EIO;
+    term_known = 1;
     struct termios modes;
     int have_modes = tcgetattr(STDOUT_FILENO, &modes) == 0;
     if (!newterm(NULL, stdout, stdin)) {

@@ -225,7 +225,10 @@ double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_sp
     const double ok = 1.0 + SW_TRUTH_NEUTRAL;
     double lo = 0, hi = NAN, h = fmin(1e-2 / sp->largest, h_max);
     for (;;) {
-        if (!(steppers_growth(w, sp->n, h, NULL) <= ok)) {
+        double g = steppers_growth(w, sp->n, h, NULL);
+        if (isnan(g))
+            return NAN; /* the method failed on a test system (a broken plugin) */
+        if (!(g <= ok)) {
             hi = h;
             break;
         }

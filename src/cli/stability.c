@@ -64,7 +64,7 @@ static void limit_text(double dt, int kind_none, int kind_unbounded, char *buf, 
 
 static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded, char *buf, size_t len)
 {
-    if (!(stiff > 0))
+    if (!(stiff > 0) || isnan(dt))
         snprintf(buf, len, "-");
     else if (kind_unbounded)
         snprintf(buf, len, ">= %.4g", stiff * dt);

@@ -254,7 +254,7 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
         return;
     }
     if (isnan(r->theory) || (r->fail.verdict == SW_PROBE_BLOWN && strncmp(r->fail.reason, "the plugin", 10) == 0)) {
-        snprintf(r->why, sizeof r->why, "%s failed, not the scene: %s", m->name,
+        snprintf(r->why, sizeof r->why, "%s failed, not the scene: %.200s", m->name,
                  r->fail.reason[0] ? r->fail.reason : "its step fails on the theory's test systems");
         return;
     }

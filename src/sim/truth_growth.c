@@ -291,8 +291,10 @@ int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrato
         double h = sw_truth_limit(m, &sp, h_max, &unb);
         if (!unb)
             *unbounded = 0;
-        if (h < best)
+        if (h < best || isnan(h))
             best = h;
+        if (isnan(h))
+            break; /* the method fails on its test systems */
         if (!tr.y || (tr.source == SW_TRUTH_NONE))
             break;
     }

@@ -65,6 +65,7 @@ typedef struct step_box {
     sw_plugin_fault fault;   /* parent's view: set once, then every step fails */
     char why[SW_ERRLEN];     /* what happened ... */
     char hint[96];           /* ... and, after the step, what to do */
+    char message[SW_ERRLEN + 128]; /* both, for the stepper's why (the sim's blow-up reason) */
     long evals, solves, iters;
 } step_box;
 
@@ -245,6 +246,8 @@ static void box_fail(step_box *b, sw_plugin_fault f, const char *why, const char
     b->fault = f;
     snprintf(b->why, sizeof b->why, "%s", why);
     snprintf(b->hint, sizeof b->hint, "%s", hint ? hint : "");
+    snprintf(b->message, sizeof b->message, "the plugin %.*s%s%s", (int)(sizeof b->why), b->why,
+             b->hint[0] ? " " : "", b->hint);
     if (b->entry && f != SW_PF_CANCELLED && f != SW_PF_DISABLED) {
         b->entry->last_fault = f;
         snprintf(b->entry->last_failure, sizeof b->entry->last_failure, "%.200s%s%.90s", why,
@@ -400,8 +403,10 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
             box_start(b);
         }
     }
-    if (b->fault != SW_PF_NONE)
+    if (b->fault != SW_PF_NONE) {
+        s->why = b->message;
         return SW_EDIVERGED;
+    }
     memcpy(b->y, y, (size_t)b->dim * sizeof *y);
     box_control *ctl = b->ctl;
     ctl->t = *t;
@@ -421,6 +426,8 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
         b->solves = b->ctl->solves;
         b->iters = b->ctl->iters;
         *t += h;
+        if (b->ctl->rc != 0)
+            s->why = "the plugin's step function returned an error";
         return b->ctl->rc == 0 ? SW_OK : SW_EDIVERGED;
     }
     if (rc == -2 || rc == -1) {
@@ -431,10 +438,12 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
             box_fail(b, SW_PF_CANCELLED, "was interrupted in its step", NULL);
         else
             box_fail(b, SW_PF_TIMEOUT, why, "(an endless loop?)");
+        s->why = b->message;
         return SW_EDIVERGED;
     }
     sw_sandbox_reap(&b->child, 1.0, &end);
     box_dead(b, &end);
+    s->why = b->message;
     return SW_EDIVERGED;
 }
 

@@ -253,6 +253,11 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
         r->agree = 1;
         return;
     }
+    if (isnan(r->theory) || (r->fail.verdict == SW_PROBE_BLOWN && strncmp(r->fail.reason, "the plugin", 10) == 0)) {
+        snprintf(r->why, sizeof r->why, "%s failed, not the scene: %.200s", m->name,
+                 r->fail.reason[0] ? r->fail.reason : "its step fails on the theory's test systems");
+        return;
+    }
     if (measured < theory) {
         snprintf(r->why, sizeof r->why, "%s fails below the linear limit: the step is too coarse for the "
                  "nonlinear motion (%s at dt = %.4g)%s", m->name, sw_stability_verdict_text(r->fail.verdict),

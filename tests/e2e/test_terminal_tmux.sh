@@ -17,28 +17,28 @@ for pair in SEGV:11 ABRT:6 QUIT:3 BUS:7 FPE:8; do
     keys "clear" Enter
     # a sanitizer build reports a SEGV/BUS/FPE and exits 1 after the restore;
     # without its handlers the process dies of the signal, as checked here
-    type_cmd "ASAN_OPTIONS=handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0 $STEPWISE play orbit; echo EXIT=\$?"
+    type_cmd "ASAN_OPTIONS=handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0 $STEPWISE play orbit; echo SIG$sig-EXIT=\$?"
     wait_for 'orbit +verlet' || fail "play orbit did not start (before SIG$sig)"
     pid=$(app_pid)
     [ -n "$pid" ] || fail "no stepwise process (SIG$sig)"
     kill -"$sig" "$pid"
-    wait_for "EXIT=$((128 + num))" || fail "SIG$sig: stepwise did not die of the signal (EXIT=$((128 + num)))"
+    wait_for "SIG$sig-EXIT=$((128 + num))" || fail "SIG$sig: stepwise did not die of the signal (exit $((128 + num)))"
     [ "$(alt_screen)" = 0 ] || fail "SIG$sig left the alternate screen on"
     check_terminal_sane "$sig"
 done
 
 # ---- TERM: unknown and unset are named; exit 2, nothing leaked
 keys "clear" Enter
-type_cmd "TERM=frob-term $STEPWISE play spring; echo EXIT=\$?"
-wait_for 'EXIT=[0-9]' || fail "TERM=frob-term: no exit"
+type_cmd "TERM=frob-term $STEPWISE play spring; echo FROB-EXIT=\$?"
+wait_for 'FROB-EXIT=[0-9]' || fail "TERM=frob-term: no exit"
 screen | grep -q "unknown terminal type TERM='frob-term'" || fail "an unknown TERM is not named"
-screen | grep -q 'EXIT=2' || fail "an unknown TERM: exit status is not 2"
+screen | grep -q 'FROB-EXIT=2' || fail "an unknown TERM: exit status is not 2"
 screen | grep -q 'Sanitizer' && fail "an unknown TERM: the sanitizer complained"
 keys "clear" Enter
-type_cmd "env -u TERM $STEPWISE lesson 1; echo EXIT=\$?"
-wait_for 'EXIT=[0-9]' || fail "TERM unset: no exit"
+type_cmd "env -u TERM $STEPWISE lesson 1; echo UNSET-EXIT=\$?"
+wait_for 'UNSET-EXIT=[0-9]' || fail "TERM unset: no exit"
 screen | grep -q 'TERM is not set' || fail "an unset TERM is not said"
-screen | grep -q 'EXIT=2' || fail "TERM unset: exit status is not 2"
+screen | grep -q 'UNSET-EXIT=2' || fail "TERM unset: exit status is not 2"
 screen | grep -q 'Sanitizer' && fail "TERM unset: the sanitizer complained"
 
 # ---- Braille: drawn with --braille; ASCII and a note in the C locale
@@ -71,7 +71,7 @@ while [ $i -le 60 ]; do
 done
 printf 'title: Broken\n--- P\n@scene nope\nText.\n' > menu/30-x.lesson
 keys "clear" Enter
-type_cmd "XDG_STATE_HOME=$WORK/state STEPWISE_LESSONS=$WORK/menu $STEPWISE lesson; echo EXIT=\$?"
+type_cmd "XDG_STATE_HOME=$WORK/state STEPWISE_LESSONS=$WORK/menu $STEPWISE lesson; echo MENU-EXIT=\$?"
 wait_for '> +1\. Lesson number 01' || fail "the menu did not open on lesson 1"
 i=0
 while [ $i -lt 45 ]; do keys Down; i=$((i + 1)); done
@@ -86,12 +86,12 @@ keys 3 0
 wait_for '> +30\. .*\(broken\)' || fail "the broken lesson is not marked in the menu"
 keys Enter
 wait_for "cannot open this lesson: .*30-x.lesson:3:8: unknown scene 'nope'" || fail "the broken lesson's error is not shown"
-screen | grep -q 'EXIT=[0-9]' && fail "choosing a broken lesson left the menu"
+screen | grep -q 'MENU-EXIT=[0-9]' && fail "choosing a broken lesson left the menu"
 keys Down
 wait_for '> +31\. Lesson number 31' || fail "the menu does not work after the error"
 screen | grep -q 'cannot open this lesson' && fail "the error stays after a key"
 keys q
-wait_for 'EXIT=0' || fail "q did not leave the menu with status 0"
+wait_for 'MENU-EXIT=0' || fail "q did not leave the menu with status 0"
 check_terminal_sane menu
 
 # ---- wide characters in the lesson pane: whole, two cells each, wrapped without a cut

@@ -49,6 +49,10 @@ START_TEST(lint_refuses_goals_never_met)
         { "@ghost on\n@lock ghost", { "ghost == off" }, "the ghost is locked" },
         { "@set k=4\n@lock params", { "param k > 5" }, "page sets k = 4" },
         { "@lock record", { "recorded" }, "recording is locked" },
+        { "@dt 0.1", { "dt == 0.3" }, "dt is 0.1 x 2^k" },                  /* + and - double and halve */
+        { "@dt 0.1", { "dt > 0.3", "dt < 0.35" }, "together with the dt goals above it" },
+        { "@lock integrator", { "accepted > 0" }, "takes fixed steps" },
+        { "@lock dt", { "error_ratio near 2 within 0.5" }, "needs the error at two step sizes" },
     };
     char err[SW_LESSON_ERRLEN];
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -77,8 +81,8 @@ START_TEST(lint_accepts_goals_that_can_be_met)
         { "", { "t > 5", "t >= 5" } },
         { "", { "t > 1", "t < 3" } },
         { "", { "steps > 5", "steps < 7" } },
-        { "", { "dt >= 1000" } },
-        { "", { "dt near 1e-9 within 1e-10" } },
+        { "@dt 62.5", { "dt >= 1000" } },
+        { "", { "dt near 1.5e-9 within 5e-10" } }, /* 0.02 / 2^24 */
         { "", { "energy_drift < -1" } },           /* a drift can be negative */
         { "", { "t != 1", "t > 0.5" } },
         { "", { "scene == spring", "integrator in rk4, euler", "integrator != euler" } },
@@ -90,6 +94,12 @@ START_TEST(lint_accepts_goals_that_can_be_met)
         { "@compare on\n@lock compare", { "compare" } },
         { "@set k=4\n@lock params", { "param k == 4" } },
         { "@lock all\n@unlock record", { "recorded" } },
+        { "@dt 0.1", { "dt == 0.4" } },
+        { "@dt 0.1", { "dt == 0.0125" } },
+        { "@dt 0.1", { "dt > 0.3", "dt < 0.45" } },
+        { "@integrator rk45\n@lock integrator", { "accepted > 10", "rejected >= 1" } },
+        { "@lock integrator", { "rejected == 0" } },
+        { "@lock dt", { "error < 1" } },
     };
     char err[SW_LESSON_ERRLEN];
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

@@ -171,6 +171,43 @@ static int never_met(sw_lp_parser *ps, int i, const char *why, const char *expec
                          text, why, expected);
 }
 
+/* 1 when dt = v meets every dt goal up to goal i. */
+static int dt_meets(const sw_lesson_page *pg, int i, double v)
+{
+    sw_lesson_obs obs;
+    sw_lesson_obs_init(&obs);
+    obs.dt = v;
+    for (int j = 0; j <= i; j++)
+        if (pg->goals[j].var == SW_LV_DT && !sw_lesson_goal_met(&pg->goals[j], &obs))
+            return 0;
+    return 1;
+}
+
+/* dt changes only by doubling and halving (+ and -), so on a page that
+ * starts with dt0 it takes the values dt0 * 2^k within [SW_DT_MIN,
+ * SW_DT_MAX]: a goal none of them meets can never be met (dt == 0.3 from 0.1). */
+static int check_dt_steps(sw_lp_parser *ps, const sw_lesson_page *pg, int i)
+{
+    for (int k = -80; k <= 80; k++) {
+        double v = ldexp(pg->dt, k);
+        if (v >= SW_DT_MIN && v <= SW_DT_MAX && dt_meets(pg, i, v))
+            return SW_OK;
+    }
+    char why[300];
+    int alone = 0;
+    for (int k = -80; k <= 80 && !alone; k++) {
+        double v = ldexp(pg->dt, k);
+        sw_lesson_obs obs;
+        sw_lesson_obs_init(&obs);
+        obs.dt = v;
+        alone = v >= SW_DT_MIN && v <= SW_DT_MAX && sw_lesson_goal_met(&pg->goals[i], &obs);
+    }
+    snprintf(why, sizeof why, "the page starts with dt = %g and + and - only double and halve it, so dt "
+             "is %g x 2^k (within [%g, %g]) and no such value meets %s", pg->dt, pg->dt, SW_DT_MIN, SW_DT_MAX,
+             alone ? "it together with the dt goals above it" : "it");
+    return never_met(ps, i, why, "a dt the page can reach, or another @dt");
+}
+
 /* The goals on a number, alone against its range and together. */
 static int check_number_goal(sw_lp_parser *ps, const sw_lesson_page *pg, int i)
 {
@@ -199,7 +236,7 @@ static int check_number_goal(sw_lp_parser *ps, const sw_lesson_page *pg, int i)
         }
     }
     if (!span_empty(all, integer) && !excluded)
-        return SW_OK;
+        return g->var == SW_LV_DT && pg->restart ? check_dt_steps(ps, pg, i) : SW_OK;
     /* name the earlier goal it contradicts, when one alone does */
     for (int j = 0; j < i; j++) {
         const sw_lesson_goal *h = &pg->goals[j];
@@ -291,8 +328,18 @@ static void fixed_values(const sw_lesson_page *pg, fixed *f)
     if (lk & SW_LOCK_INTEGRATOR)
         snprintf(f->why[SW_LV_INTEGRATOR], sizeof f->why[0], "the integrator is locked and the page starts "
                  "with %s", pg->method->name);
-    if (lk & SW_LOCK_DT)
+    if ((lk & SW_LOCK_INTEGRATOR) && !(pg->method->flags & SW_ADAPTIVE)) {
+        f->obs.accepted = f->obs.rejected = 0;
+        snprintf(f->why[SW_LV_ACCEPTED], sizeof f->why[0], "the integrator is locked to %s, which takes fixed "
+                 "steps, so no step is accepted or rejected", pg->method->name);
+        memcpy(f->why[SW_LV_REJECTED], f->why[SW_LV_ACCEPTED], sizeof f->why[0]);
+    }
+    if (lk & SW_LOCK_DT) {
         snprintf(f->why[SW_LV_DT], sizeof f->why[0], "dt is locked and the page starts with dt = %g", pg->dt);
+        /* obs.error_ratio stays NaN: it needs errors measured at two step sizes */
+        snprintf(f->why[SW_LV_ERROR_RATIO], sizeof f->why[0], "dt is locked, and the error ratio needs the "
+                 "error at two step sizes");
+    }
     if ((lk & SW_LOCK_COMPARE) && pg->compare >= 0) {
         f->obs.compare = pg->compare;
         snprintf(f->why[SW_LV_COMPARE], sizeof f->why[0], "compare is locked and the page turns it %s",

@@ -178,7 +178,7 @@ int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t err
         const sw_trace_extra *x = &a->meta.extras[i];
         where(a, x->line, at, sizeof at);
         if (strcmp(x->key, "title") == 0)
-            snprintf(a->title, sizeof a->title, "%s", x->value);
+            snprintf(a->title, sizeof a->title, "%.*s", (int)sizeof a->title - 1, x->value);
         else if (strcmp(x->key, "tolerance") == 0) {
             if (parse_rel_abs(x->value, &a->rtol, &a->atol) != SW_OK) {
                 snprintf(err, errlen, "%s: 'tolerance' wants REL[,ABS], e.g. 1e-9 or 1e-9,1e-12, "

@@ -1183,6 +1183,8 @@ static double bench_quick_runs(void)
 }
 static double stab_agree(void) { return 100 * SW_STABILITY_AGREE; }
 static double stab_shrink(void) { return 1 / SW_STABILITY_SHRINK; }
+static double stab_longer(void) { return SW_STABILITY_LONGER; }
+static double stab_longest(void) { return SW_STABILITY_LONGER * SW_STABILITY_LONGER; }
 /* The drift the status line shows, against (E - E0)/(E0 - E_rest) worked
  * out here from the energies (the stiff pendulum after 100 steps). */
 static double drift_definition(void)
@@ -1570,6 +1572,8 @@ static const claim claims[] = {
     { STAB, "whose energy started from rest averages up to 1/(1 − (|λ|Δt/2)²)", symplectic_mean_m, REL, 1e-3, "symplectic Euler from rest at ωΔt = 1: mean M over 20000 steps", symplectic_mean_formula },
     { STAB, "same motion shrunk {ten-thousandfold} towards it", stab_shrink, REL, 1e-12, R_COUNT, NULL },
     { STAB, "Bisection between a stable and an unstable Δt runs to {0.01} %", stab_rel_tol, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "the step\nis probed again over {4} and then", stab_longer, EXACT, 0, "SW_STABILITY_LONGER; test_long_probes checks the horizon a result states", NULL },
+    { STAB, "probed again over 4 and then {16} times the horizon", stab_longest, EXACT, 0, "two rounds of SW_STABILITY_LONGER", NULL },
     { STAB, "They agree within {2} % wherever", stab_agree, REL, 1e-12, R_COUNT, NULL },
     { STAB, "gains energy on the nonlinear stiff pendulum above Δt ≈ {0.19}", l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
     /* scenes: what `stepwise list` and `describe` print */

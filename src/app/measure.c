@@ -234,7 +234,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
 void sw_app_watch_restart(sw_app *a)
 {
     const sw_sim *s = &a->sims[0];
-    sw_watch_init(&a->watch, a->scene->duration, sw_watch_raised_level(s));
+    sw_watch_start(&a->watch, a->scene->duration, s);
     a->watch.t0 = s->t;
     a->watch_m0 = a->have_truth ? sw_watch_measure(s, a->truth.sys.y) : NAN;
 }

@@ -98,7 +98,7 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
     long steps = !(want >= (double)c->min_steps) ? c->min_steps
                  : want > (double)c->max_steps ? c->max_steps : (long)want;
     sw_watch w;
-    sw_watch_init(&w, (double)steps * dt / SW_WATCH_WINDOWS, sw_watch_raised_level(&s));
+    sw_watch_start(&w, (double)steps * dt / SW_WATCH_WINDOWS, &s);
     out->verdict = SW_PROBE_STABLE;
     long k;
     for (k = 1; k <= steps; k++) {
@@ -243,7 +243,7 @@ double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrato
 static int stable(int verdict) { return verdict == SW_PROBE_STABLE || verdict == SW_PROBE_DECAYED; }
 
 /* Theory against measurement, and why they differ where they do. */
-static void compare(const sw_scene *sc, const double *p, const sw_integrator *m, double duration,
+static void compare(const sw_scene *sc, const double *p, const sw_integrator *m, const sw_stability_config *c,
                     sw_stability_result *r)
 {
     double measured = r->kind == SW_STAB_NONE ? 0 : r->dt, theory = r->theory_unbounded ? INFINITY : r->theory;
@@ -265,28 +265,152 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
                  "energy is not" : "");
         return;
     }
-    /* measured above theory: the growth the theory predicts is too slow to
-     * show over a probe, or the mode that grows is never excited */
-    sw_system sys;
+    /* measured above theory, even over the longer probes: the growth the
+     * theory predicts is too slow to show, lies in a mode the motion barely
+     * excites, or the nonlinear motion leaves the linearisation that grows */
+    sw_truth_along al;
     char err[SW_ERRLEN];
-    double rho = NAN, lam = NAN;
-    if (sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK) {
-        sw_spectrum sp;
-        int worst = -1;
-        if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0)
-            rho = sw_truth_growth_all(m, &sp, measured, &worst);
-        if (worst >= 0)
-            lam = hypot(sp.mode[worst].re, sp.mode[worst].im);
-        sw_system_free(&sys);
-    }
-    double total = pow(rho, duration / measured);
-    if (total < 2)
-        snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
-                 "probe's %.3g s: too slow to tell from the motion", measured, m->name, rho, total, duration);
+    if (sw_truth_along_run(sc, p, m, r->horizon, c->samples, SW_DT_MAX, measured, &al, err, sizeof err) != 0)
+        al.growth = NAN;
+    double rho = al.growth, total = al.growth_total;
+    char per_step[48];
+    if (rho - 1 < 1e-3)
+        snprintf(per_step, sizeof per_step, "1 + %.2g", rho - 1);
     else
-        snprintf(r->why, sizeof r->why, "at dt = %.4g theory has %s grow x%.6g per step, x%.3g over the "
-                 "probe's %.3g s, in a mode (|L| = %.3g) the motion barely excites, or whose growth the "
-                 "nonlinear motion does not keep up", measured, m->name, rho, total, duration, lam);
+        snprintf(per_step, sizeof per_step, "%.4g", rho);
+    int n = snprintf(r->why, sizeof r->why, "held for %.3g s at dt = %.4g; linearised along the run, %s "
+                     "grows at most x%s per step (t = %.3g), x%.3g in all",
+                     r->horizon, measured, m->name, per_step, al.t_growth, total);
+    if (n < 0 || (size_t)n >= sizeof r->why)
+        return;
+    if (!(total >= 2))
+        snprintf(r->why + n, sizeof r->why - (size_t)n, ": too slow to tell from the motion");
+    else
+        snprintf(r->why + n, sizeof r->why - (size_t)n, ": a mode (|L| = %.3g) the motion barely excites, or growth "
+                 "the nonlinear motion does not keep up", al.growth_lambda);
+}
+
+/* The search: probes at a horizon, bracketing and bisection. */
+typedef struct search {
+    const sw_scene *sc;
+    const double *p;
+    const sw_integrator *m;
+    const sw_stability_config *c;
+    starts st;
+    sw_stability_result *out;
+    char *err;
+    size_t errlen;
+    double lo_bound, hi_bound;
+} search;
+
+static int run(search *q, double dt, double horizon, sw_stability_probe *pr)
+{
+    int rc = probe(q->sc, q->p, q->m, dt, horizon, &q->st, q->c, pr, q->err, q->errlen);
+    if (rc == SW_OK) {
+        q->out->probes++;
+        q->out->steps += pr->steps;
+    }
+    return rc;
+}
+
+/* Bisect geometrically between a stable and an unstable step (the limit is
+ * a ratio, so halve its logarithm). */
+static int bisect(search *q, double horizon, double *ok, double *bad)
+{
+    sw_stability_probe pr;
+    while (*bad / *ok - 1.0 > q->c->rel_tol) {
+        double mid = sqrt(*ok * *bad);
+        int rc = run(q, mid, horizon, &pr);
+        if (rc != SW_OK)
+            return rc;
+        if (stable(pr.verdict)) {
+            *ok = mid;
+        } else {
+            *bad = mid;
+            q->out->fail = pr;
+        }
+    }
+    return SW_OK;
+}
+
+/* From the scene's own step, doubling until a probe fails; sets the kind. */
+static int bracket_up(search *q, double horizon, double *ok, double *bad)
+{
+    sw_stability_probe pr;
+    int rc = run(q, q->lo_bound, horizon, &pr);
+    if (rc != SW_OK)
+        return rc;
+    if (!stable(pr.verdict)) {
+        q->out->kind = SW_STAB_NONE;
+        q->out->fail = pr;
+        *ok = q->lo_bound;
+        return SW_OK;
+    }
+    *ok = q->lo_bound;
+    double dt = fmin(fmax(q->sc->dt, q->lo_bound), q->hi_bound);
+    for (;;) {
+        if (dt > *ok) {
+            if ((rc = run(q, dt, horizon, &pr)) != SW_OK)
+                return rc;
+            if (!stable(pr.verdict)) {
+                *bad = dt;
+                q->out->fail = pr;
+                q->out->kind = SW_STAB_LIMIT;
+                return SW_OK;
+            }
+            *ok = dt;
+        }
+        if (*ok >= q->hi_bound) {
+            q->out->kind = SW_STAB_UNBOUNDED;
+            return SW_OK;
+        }
+        dt = fmin(2.0 * *ok, q->hi_bound);
+    }
+}
+
+/* Where the measurement lies above the theory, the theory's growth may only
+ * be slow: probe the found step again for SW_STABILITY_LONGER times as long,
+ * twice, and where the longer run grows, search again below it (halving
+ * down to a stable step, then bisecting) at that horizon. A run that blows
+ * up after the probe's time is not stable. */
+static int confirm(search *q, double *horizon, double *ok, double *bad)
+{
+    sw_stability_result *out = q->out;
+    double theory = out->theory_unbounded ? INFINITY : out->theory;
+    for (int round = 0; round < 2; round++) {
+        if (out->kind == SW_STAB_NONE || !(*ok > (1 + SW_STABILITY_AGREE) * theory))
+            return SW_OK;
+        double longer = SW_STABILITY_LONGER * *horizon;
+        sw_stability_probe pr;
+        int rc = run(q, *ok, longer, &pr);
+        if (rc != SW_OK)
+            return rc;
+        *horizon = longer;
+        if (stable(pr.verdict))
+            continue;
+        out->fail = pr;
+        *bad = *ok;
+        out->kind = SW_STAB_LIMIT;
+        for (;;) { /* down to a step that holds over the longer run */
+            double dt = fmax(*bad / 2, q->lo_bound);
+            if ((rc = run(q, dt, longer, &pr)) != SW_OK)
+                return rc;
+            if (stable(pr.verdict)) {
+                *ok = dt;
+                break;
+            }
+            *bad = dt;
+            out->fail = pr;
+            if (dt <= q->lo_bound) {
+                out->kind = SW_STAB_NONE;
+                *ok = dt;
+                return SW_OK;
+            }
+        }
+        if ((rc = bisect(q, longer, ok, bad)) != SW_OK)
+            return rc;
+    }
+    return SW_OK;
 }
 
 int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,
@@ -307,87 +431,40 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     double w = start_stiffness(sc, p, err, errlen, &rc);
     if (rc != SW_OK)
         return rc;
-    double duration = probe_time(sc, w, c), stiff;
-    if (sw_truth_limit_along(sc, p, m, duration, c->samples, SW_DT_MAX, &out->theory, &out->theory_unbounded,
-                             &stiff, err, errlen) != 0)
+    double horizon = probe_time(sc, w, c);
+    sw_truth_along al;
+    if (sw_truth_along_run(sc, p, m, horizon, c->samples, SW_DT_MAX, 0, &al, err, errlen) != 0)
         return SW_EINVAL;
-    out->stiff = stiff;
+    out->theory = al.limit;
+    out->theory_unbounded = al.unbounded;
+    out->stiff = al.stiffest;
+    out->horizon = horizon;
     if (!sw_stability_measurable(sc, p, out->why, sizeof out->why))
         return SW_OK; /* theory only */
     out->measured = 1;
-    starts st;
-    starts_init(&st, sc, p);
-    double lo_bound, hi_bound;
+    search q = { .sc = sc, .p = p, .m = m, .c = c, .out = out, .err = err, .errlen = errlen };
+    starts_init(&q.st, sc, p);
     if (w > 0 && isfinite(w)) {
-        lo_bound = c->low / w;
-        hi_bound = c->high / w;
+        q.lo_bound = c->low / w;
+        q.hi_bound = c->high / w;
     } else {
-        lo_bound = c->low * sc->dt;
-        hi_bound = c->high * sc->dt;
+        q.lo_bound = c->low * sc->dt;
+        q.hi_bound = c->high * sc->dt;
     }
-    lo_bound = fmax(lo_bound, SW_DT_MIN);
-    hi_bound = fmax(lo_bound, fmin(hi_bound, SW_DT_MAX));
-
-    sw_stability_probe pr;
-#define PROBE(dt_)                                                              \
-    do {                                                                        \
-        rc = probe(sc, p, m, (dt_), duration, &st, c, &pr, err, errlen);        \
-        if (rc != SW_OK) {                                                      \
-            free(st.small);                                                     \
-            return rc;                                                          \
-        }                                                                       \
-        out->probes++;                                                          \
-        out->steps += pr.steps;                                                 \
-    } while (0)
-
-    PROBE(lo_bound);
-    if (!stable(pr.verdict)) {
-        out->kind = SW_STAB_NONE;
-        out->dt = lo_bound;
-        out->fail = pr;
-        free(st.small);
-        compare(sc, p, m, duration, out);
-        return SW_OK;
-    }
-    /* Bracket: from the scene's own step, doubling until a probe fails. */
-    double ok = lo_bound, bad = NAN;
-    double dt = fmin(fmax(sc->dt, lo_bound), hi_bound);
-    for (;;) {
-        if (dt > ok) {
-            PROBE(dt);
-            if (stable(pr.verdict)) {
-                ok = dt;
-            } else {
-                bad = dt;
-                out->fail = pr;
-                break;
-            }
-        }
-        if (ok >= hi_bound) {
-            out->kind = SW_STAB_UNBOUNDED;
-            out->dt = ok;
-            free(st.small);
-            compare(sc, p, m, duration, out);
-            return SW_OK;
-        }
-        dt = fmin(2.0 * ok, hi_bound);
-    }
-    /* Bisect geometrically: the limit is a ratio, so halve its logarithm. */
-    while (bad / ok - 1.0 > c->rel_tol) {
-        double mid = sqrt(ok * bad);
-        PROBE(mid);
-        if (stable(pr.verdict)) {
-            ok = mid;
-        } else {
-            bad = mid;
-            out->fail = pr;
-        }
-    }
-#undef PROBE
-    free(st.small);
-    out->kind = SW_STAB_LIMIT;
+    q.lo_bound = fmax(q.lo_bound, SW_DT_MIN);
+    q.hi_bound = fmax(q.lo_bound, fmin(q.hi_bound, SW_DT_MAX));
+    double ok = q.lo_bound, bad = NAN;
+    rc = bracket_up(&q, horizon, &ok, &bad);
+    if (rc == SW_OK && out->kind == SW_STAB_LIMIT)
+        rc = bisect(&q, horizon, &ok, &bad);
+    if (rc == SW_OK)
+        rc = confirm(&q, &horizon, &ok, &bad);
+    free(q.st.small);
+    if (rc != SW_OK)
+        return rc;
     out->dt = ok;
-    out->dt_unstable = bad;
-    compare(sc, p, m, duration, out);
+    out->dt_unstable = out->kind == SW_STAB_LIMIT ? bad : NAN;
+    out->horizon = horizon;
+    compare(sc, p, m, c, out);
     return SW_OK;
 }

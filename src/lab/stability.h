@@ -17,6 +17,10 @@
 /* Where a scene has a resting state, every probe also runs the motion shrunk
  * by this factor towards it, so no nonlinearity can cap a growing mode. */
 #define SW_STABILITY_SHRINK 1e-4
+/* Where the measured limit lies above the theory's, it is probed again over
+ * this many times the probe's time, twice (16x in all), and searched again
+ * below where a longer run grows. */
+#define SW_STABILITY_LONGER 4.0
 
 typedef enum sw_stab_kind {
     SW_STAB_LIMIT = 0,    /* stable at dt, unstable at dt_unstable: the limit lies between */
@@ -65,18 +69,19 @@ typedef struct sw_stability_result {
     double stiff;       /* largest |λ| of the linearisation along the run; 0 when none */
     double theory;      /* the limit in theory (dt): 0 none */
     int theory_unbounded; /* ... no limit up to SW_DT_MAX */
+    double horizon;     /* simulated time of the probes that set dt (longer where confirmed) */
     int probes;
     long steps;         /* summed over all probes */
     sw_stability_probe fail; /* the failing probe nearest the limit (NONE: the one at dt) */
     int measured;       /* 0: theory only (the scene's growth cannot be measured: why says so) */
     int agree;          /* theory and measurement within 2% (or both none / both unbounded) */
-    char why[SW_ERRLEN]; /* when they do not agree, or nothing was measured: why */
+    char why[2 * SW_ERRLEN]; /* when they do not agree, or nothing was measured: why */
 } sw_stability_result;
 
 /* A probe verdict in a few words ("blew up", "energy grew", ...). */
 const char *sw_stability_verdict_text(int verdict);
 
-/* 100 periods, 10 report times and 400 steps per probe at least, 4e6 at
+/* 100 periods, 20 report times and 400 steps per probe at least, 4e6 at
  * most; |λ|·Δt from 0.01 to 1000; bisection to 1e-4; 16 spectra. */
 void sw_stability_config_default(sw_stability_config *c);
 

@@ -163,12 +163,24 @@ double sw_truth_growth_with(sw_truth_work *w, const sw_integrator *m, const sw_s
 double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h_max,
                            int *unbounded);
 
-/* The same over a run: the smallest limit over spectra taken at `samples`
- * times in [0, t_end] along the true solution (or, with no truth, the run
- * of m itself at h_ref). `stiffest` (may be NULL) gets the largest |λ|
- * seen. 0 with *limit set, or -1 with err filled. */
-int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end,
-                         int samples, double h_max, double *limit, int *unbounded, double *stiffest,
-                         char *err, size_t errlen);
+/* The same over a run, from spectra taken at `samples` times in [0, t_end]
+ * along the true solution (or, with no truth, at the start alone): the
+ * smallest limit and the time whose linearisation sets it, the largest |λ|
+ * seen, and, when h > 0, the largest growth per step at step h, where, and
+ * the growth accumulated along the run.
+ * 0 with *out set, or -1 with err filled. */
+typedef struct sw_truth_along {
+    double limit;         /* dt; NaN when the method fails on its test systems */
+    int unbounded;        /* no sample limits the step up to h_max */
+    double t_limit;       /* the sample that sets the limit */
+    double stiffest;      /* largest |λ| seen; 0 when nothing moves */
+    double growth;        /* at h: the largest growth per step over the samples (NaN: h = 0) */
+    double growth_lambda; /* |λ| of the mode that grows most */
+    double t_growth;      /* the sample where it does */
+    double growth_total;  /* at h: the growth accumulated over [0, t_end], each sample's growth per
+                             step held over its share of the run */
+} sw_truth_along;
+int sw_truth_along_run(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end, int samples,
+                       double h_max, double h, sw_truth_along *out, char *err, size_t errlen);
 
 #endif

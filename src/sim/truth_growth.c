@@ -261,16 +261,15 @@ double sw_truth_limit(const sw_integrator *m, const sw_spectrum *sp, double h_ma
 }
 
 
-int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end,
-                         int samples, double h_max, double *limit, int *unbounded, double *stiffest,
-                         char *err, size_t errlen)
+int sw_truth_along_run(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end, int samples,
+                       double h_max, double h, sw_truth_along *out, char *err, size_t errlen)
 {
+    *out = (sw_truth_along){ .limit = INFINITY, .unbounded = 1, .growth = NAN, .growth_lambda = NAN };
+    if (!(h > 0))
+        out->growth_total = NAN;
     sw_truth tr;
-    int rc = sw_truth_init(&tr, sc, p, err, errlen);
-    if (rc != SW_OK)
+    if (sw_truth_init(&tr, sc, p, err, errlen) != SW_OK)
         return -1;
-    double best = INFINITY, largest = 0;
-    *unbounded = 1;
     sw_spectrum sp;
     for (int k = 0; k < samples; k++) {
         double t = samples > 1 ? t_end * k / (samples - 1) : 0;
@@ -286,21 +285,32 @@ int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrato
             sw_truth_free(&tr);
             return -1;
         }
-        largest = fmax(largest, sp.largest);
+        out->stiffest = fmax(out->stiffest, sp.largest);
         int unb;
-        double h = sw_truth_limit(m, &sp, h_max, &unb);
+        double lim = sw_truth_limit(m, &sp, h_max, &unb);
         if (!unb)
-            *unbounded = 0;
-        if (h < best || isnan(h))
-            best = h;
-        if (isnan(h))
+            out->unbounded = 0;
+        if (lim < out->limit || isnan(lim)) {
+            out->limit = lim;
+            out->t_limit = t;
+        }
+        if (h > 0 && !isnan(lim)) {
+            int worst = -1;
+            double g = sw_truth_growth_all(m, &sp, h, &worst);
+            double seg = samples > 1 ? t_end / (samples - 1) : t_end;
+            out->growth_total += log(g) * (k == 0 || k == samples - 1 ? seg / 2 : seg) / h;
+            if (!(g <= out->growth)) {
+                out->growth = g;
+                out->t_growth = t;
+                out->growth_lambda = worst >= 0 ? hypot(sp.mode[worst].re, sp.mode[worst].im) : NAN;
+            }
+        }
+        if (isnan(lim))
             break; /* the method fails on its test systems */
         if (!tr.y || (tr.source == SW_TRUTH_NONE))
             break;
     }
     sw_truth_free(&tr);
-    *limit = best;
-    if (stiffest)
-        *stiffest = largest;
+    out->growth_total = exp(out->growth_total);
     return 0;
 }

@@ -25,10 +25,14 @@ double sw_watch_measure(const sw_sim *s, const double *y0)
     return den > 0 ? num / den : NAN;
 }
 
+static int bound_state(const sw_sim *s)
+{
+    return s->sys.scene->energy && !sw_sim_energy_scale_is_motion(s) && s->energy0 < 0;
+}
+
 double sw_watch_raised_level(const sw_sim *s)
 {
-    int bound_state = s->sys.scene->energy && !sw_sim_energy_scale_is_motion(s) && s->energy0 < 0;
-    return bound_state ? 2.0 : (s->method->flags & SW_SYMPLECTIC) ? 30.0 : 3.0;
+    return bound_state(s) ? 2.0 : (s->method->flags & SW_SYMPLECTIC) ? 30.0 : 3.0;
 }
 
 void sw_watch_init(sw_watch *w, double window, double raised)
@@ -36,11 +40,20 @@ void sw_watch_init(sw_watch *w, double window, double raised)
     memset(w, 0, sizeof *w);
     w->window = window;
     w->raised = raised;
+    w->rebound = raised;
+    w->low_mean = INFINITY;
     w->t0 = 0;
     w->cur_max = -INFINITY;
     w->cur_min = INFINITY;
     w->first_max = -INFINITY;
     w->first_min = INFINITY;
+}
+
+void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
+{
+    sw_watch_init(w, window, sw_watch_raised_level(s));
+    if (bound_state(s))
+        w->rebound = 0;
 }
 
 static void close_window(sw_watch *w)
@@ -73,6 +86,10 @@ static sw_watch_verdict judge(const sw_watch *w)
      * level (nothing in these scenes adds energy) */
     if (w->mean[k - 1] > w->raised)
         return SW_WATCH_RAISED;
+    /* energy that sank and came back: the latest window's mean a rebound
+     * factor above the lowest before it */
+    if (w->rebound > 0 && w->mean[k - 1] > 1e-4 && w->mean[k - 1] > w->rebound * w->low_mean)
+        return SW_WATCH_RAISED;
     /* steady climb: 16 rises in 19 window-to-window changes */
     if (k >= SW_WATCH_WINDOWS - 1) {
         int rises = 0;
@@ -101,6 +118,7 @@ sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
         if (w->cur_max > -INFINITY) {
             close_window(w);
             w->verdict = judge(w);
+            w->low_mean = fmin(w->low_mean, w->mean[w->kept - 1]);
             if (w->verdict != SW_WATCH_STEADY)
                 return w->verdict;
         }

@@ -12,8 +12,9 @@
 typedef enum sw_watch_verdict {
     SW_WATCH_STEADY = 0,  /* no growth seen (bounded, or decaying) */
     SW_WATCH_BOUND = 1,   /* M rose past 1000: the motion gained a thousandfold energy */
-    SW_WATCH_RAISED = 2,  /* M averaged above the raised level over a whole window: growth a
-                             nonlinearity capped (see sw_watch_raised_level) */
+    SW_WATCH_RAISED = 2,  /* M averaged above the raised level over a whole window, or above
+                             that many times its lowest window: growth a nonlinearity capped
+                             (see sw_watch_raised_level) */
     SW_WATCH_TREND = 3    /* M's window peaks climbed window after window, or the latest
                              peak stands above the first by more than the first varied */
 } sw_watch_verdict;
@@ -21,6 +22,8 @@ typedef enum sw_watch_verdict {
 typedef struct sw_watch {
     double window;        /* length of a window, in simulated time */
     double raised;        /* the level of SW_WATCH_RAISED */
+    double rebound;       /* ... and the factor over the lowest window mean (0: none) */
+    double low_mean;      /* the lowest window mean so far */
     double t0;            /* start of the current window */
     int windows;          /* complete windows so far */
     double first_max, first_min;   /* over the first window */
@@ -47,8 +50,15 @@ double sw_watch_measure(const sw_sim *s, const double *y0);
 double sw_watch_raised_level(const sw_sim *s);
 
 /* Start watching; window: simulated time per window (> 0); raised: see
- * sw_watch_raised_level. */
+ * sw_watch_raised_level, also the rebound factor: a window mean above
+ * `raised` times the lowest before it (and above 1e-4, clear of rounding)
+ * is raised too. Energy that sank (damping, or the truth) and comes back
+ * is energy the method put in: no scene adds energy to its motion. */
 void sw_watch_init(sw_watch *w, double window, double raised);
+/* The same for sim s: its raised level, and no rebound test for a bound
+ * state without a resting state (an orbit, where M is not a fraction of
+ * the start's energy). */
+void sw_watch_start(sw_watch *w, double window, const sw_sim *s);
 /* Feed a sample M at time t (t increasing); returns the verdict so far. */
 sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m);
 /* Close the window in progress (the end of a run) and judge it too. */

@@ -40,16 +40,23 @@ int sw_fuzz_lesson(const uint8_t *data, size_t len)
     return ok;
 }
 
-int sw_fuzz_trace(const uint8_t *data, size_t len)
+/* Write len bytes to /tmp/sw-fuzz-PID.SUFFIX, named in path; 0, or -1. */
+static int temp_file(char *path, size_t pathlen, const char *suffix, const uint8_t *data, size_t len)
 {
-    char path[64];
-    int ok = 0;
-    snprintf(path, sizeof path, "/tmp/sw-fuzz-%ld.trace", (long)getpid());
+    snprintf(path, pathlen, "/tmp/sw-fuzz-%ld.%s", (long)getpid(), suffix);
     FILE *f = fopen(path, "wb");
     if (!f)
         return -1;
     fwrite(data, 1, len, f);
-    fclose(f);
+    return fclose(f) == 0 ? 0 : -1;
+}
+
+int sw_fuzz_trace(const uint8_t *data, size_t len)
+{
+    char path[64];
+    int ok = 0;
+    if (temp_file(path, sizeof path, "trace", data, len) != 0)
+        return -1;
     sw_trace_reader r;
     char err[SW_ERRLEN];
     if (sw_trace_read_open(&r, path, err, sizeof err) == SW_OK) {
@@ -176,12 +183,8 @@ int sw_fuzz_runner(const uint8_t *data, size_t len)
     while (cut < len && data[cut] != 0xFF)
         cut++;
     char path[64];
-    snprintf(path, sizeof path, "/tmp/sw-fuzz-%ld.lesson", (long)getpid());
-    FILE *f = fopen(path, "wb");
-    if (!f)
+    if (temp_file(path, sizeof path, "lesson", data, cut) != 0)
         return -1;
-    fwrite(data, 1, cut, f);
-    fclose(f);
     sw_lesson probe;
     char err[SW_LESSON_ERRLEN];
     int ok = sw_lesson_load(path, &probe, err, sizeof err) == SW_OK;
@@ -222,12 +225,8 @@ int sw_fuzz_runner(const uint8_t *data, size_t len)
 int sw_fuzz_check(const uint8_t *data, size_t len)
 {
     char path[64];
-    snprintf(path, sizeof path, "/tmp/sw-fuzz-check-%ld.trace", (long)getpid());
-    FILE *f = fopen(path, "wb");
-    if (!f)
+    if (temp_file(path, sizeof path, "check.trace", data, len) != 0)
         return -1;
-    fwrite(data, 1, len, f);
-    fclose(f);
     sw_trace_reader r;
     char err[SW_ERRLEN];
     int ok = 0;

@@ -1547,8 +1547,8 @@ static const claim claims[] = {
     /* man page */
     { MAN, "Step size, in [{1e\\-9}, 1000]", dt_min, EXACT, 0, R_COUNT, NULL },
     { MAN, "Step size, in [1e\\-9, {1000}]", dt_max, EXACT, 0, R_COUNT, NULL },
-    { MAN, "(defaults {1e\\-6} and 1e\\-9; rtol", rtol_default, EXACT, 0, R_COUNT, NULL },
-    { MAN, "(defaults 1e\\-6 and {1e\\-9}; rtol", atol_default, EXACT, 0, R_COUNT, NULL },
+    { MAN, "(defaults {1e\\-6} and 1e\\-9). The implicit", rtol_default, EXACT, 0, R_COUNT, NULL },
+    { MAN, "(defaults 1e\\-6 and {1e\\-9}). The implicit", atol_default, EXACT, 0, R_COUNT, NULL },
     { MAN, "Comparison tolerances; defaults {1e\\-9} and 1e\\-9", check_rtol, EXACT, 0, R_COUNT, NULL },
     { MAN, "Comparison tolerances; defaults 1e\\-9 and {1e\\-9}", check_atol, EXACT, 0, R_COUNT, NULL },
     { MAN, "The small sweep the UI uses ({6}\\-8 step sizes, one run each)", bench_quick_min, EXACT, 0, R_COUNT, NULL },

@@ -114,6 +114,12 @@ int sw_lesson_var_find(const char *name);
 
 /* ---- pages and lessons ----------------------------------------------------- */
 
+/* What a page's @view shows (the app's views, in its order). */
+enum { SW_LESSON_VIEW_SCENE = 0, SW_LESSON_VIEW_PHASE = 1, SW_LESSON_VIEW_REGION = 2 };
+/* @speed's range (the app's). */
+#define SW_LESSON_SPEED_MIN (1.0 / 64)
+#define SW_LESSON_SPEED_MAX 1024.0
+
 typedef struct sw_lesson_block {
     int verbatim;             /* 1: lines shown as written ('\n' between them);
                                * 0: a paragraph the UI wraps to the pane width */
@@ -158,6 +164,11 @@ typedef struct sw_lesson_page {
     int ncompare_with;        /* 0: the app's own choice */
     int ghost;                /* -1 / 0 / 1 as compare */
     int paused;               /* -1 / 0 / 1: start paused or running */
+    double speed;             /* simulated seconds per wall second; 0: leave as is */
+    int view;                 /* SW_LESSON_VIEW_*; -1: leave as is */
+    int follow;               /* -1 / 0 / 1: camera fixed on the scene or following */
+    int lanes;                /* -1 / 0 / 1: compare overlaid or side by side */
+    double zoom;              /* the view's size times this; 0: leave as is */
     sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 
     sw_lesson_goal goals[SW_LESSON_MAX_GOALS];

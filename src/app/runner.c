@@ -214,12 +214,20 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
             const char *w = p;
             while (*p && *p != ' ' && *p != '\n')
                 p++;
-            int wl = (int)sw_utf8_count(w, (size_t)(p - w));
-            if (used && used + 1 + wl > width) {
+            /* the line as written so far, its spaces included */
+            int upto = (int)sw_utf8_count(line, (size_t)(p - line));
+            if (used && upto > width) {
                 p = w;
                 break;
             }
-            used += (used ? 1 : 0) + wl;
+            if (!used && upto > width) {
+                /* one word longer than the line (a path): split it */
+                p = w + sw_utf8_clip(w, (size_t)(p - w), (size_t)width);
+                while (p > w && (int)sw_utf8_count(w, (size_t)(p - w)) > width)
+                    p = w + sw_utf8_clip(w, (size_t)(p - w), (size_t)(p - w - 1));
+                upto = (int)sw_utf8_count(w, (size_t)(p - w));
+            }
+            used = upto;
             cut = p;
             while (*p == ' ')
                 p++;
@@ -297,8 +305,8 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.notice = !r->complete[r->page] ? NULL
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
-    add_line(r, SW_SIDE_DIM, buf);
-    add_line(r, SW_SIDE_TITLE, pg->title);
+    add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
+    add_wrapped(r, SW_SIDE_TITLE, pg->title, width - 1);
     add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {

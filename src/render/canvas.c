@@ -216,6 +216,7 @@ sw_view sw_canvas_visible(const sw_canvas *c)
 void sw_canvas_clear(sw_canvas *c)
 {
     clear_cells(c);
+    c->clipped = 0;
 }
 
 int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, int *row)
@@ -260,11 +261,13 @@ void sw_canvas_dot(sw_canvas *c, int dc, int dr, int style, int fade)
 int sw_canvas_text(sw_canvas *c, int col, int row, const char *text, int style)
 {
     const unsigned char *p = (const unsigned char *)text;
-    int n = 0;
+    int n = 0, cut = row < 0 || row >= c->rows;
     while (*p) {
         uint32_t cp = sw_utf8_next(&p);
+        cut |= col + n < 0 || col + n >= c->cols;
         sw_canvas_put(c, col + n++, row, cp < 0x20 ? ' ' : cp, style);
     }
+    c->clipped += cut;
     return n;
 }
 

@@ -104,6 +104,7 @@ typedef struct sw_canvas {
     unsigned char *dots;   /* Braille bits per cell */
     unsigned char *style;  /* style index per cell */
     unsigned char *fade;   /* 0 = full strength, 1 = newer trail, 2 = older trail */
+    int clipped;           /* texts (sw_canvas_text) cut at the canvas's edge since the last clear */
 } sw_canvas;
 
 /* Allocate a cols × rows canvas (1..SW_CANVAS_MAX_SIDE each, at most

@@ -313,7 +313,8 @@ static void key_fields(const sw_app *a, const sw_side *side, sw_field *f, int *n
             field(f, n, 12, side->notice, NULL);
         if (side->question_open)
             field(f, n, 11, "A-F answer", NULL);
-        field(f, n, 9, "n next page", "n next");
+        if (!side->notice)
+            field(f, n, 9, "n next page", "n next");
         field(f, n, 8, "h hint", NULL);
     }
     field(f, n, side ? 4 : 9, "i method", NULL);

@@ -132,18 +132,19 @@ static void axes(sw_canvas *c)
                 sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
         /* the negative real axis is where the regions lie: label it below */
         len = snprintf(lab, sizeof lab, "%g", -v);
-        if (sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows)
+        if (sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows && col - len / 2 >= 0)
             sw_canvas_text(c, col - len / 2, row + 1, lab, SW_STYLE_DIM);
         if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row)) {
             sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
-            snprintf(lab, sizeof lab, "%gi", v);
-            sw_canvas_text(c, col + 1, row, lab, SW_STYLE_DIM);
+            len = snprintf(lab, sizeof lab, "%gi", v);
+            if (col + 1 + len <= c->cols)
+                sw_canvas_text(c, col + 1, row, lab, SW_STYLE_DIM);
         }
     }
     int col, row;
     if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
         sw_canvas_text(c, c->cols - 2, row - 1, "Re", SW_STYLE_DIM);
-    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row))
+    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col + 3 <= c->cols)
         sw_canvas_text(c, col + 1, 0, "Im", SW_STYLE_DIM);
 }
 

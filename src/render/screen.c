@@ -174,6 +174,7 @@ void sw_frame_push_trails(sw_frame *f, sw_app *a)
 
 void sw_screen_blit(sw_screen *scr, const sw_canvas *c, int row0, int col0)
 {
+    scr->clipped += c->clipped;
     for (int r = 0; r < c->rows; r++)
         for (int k = 0; k < c->cols; k++) {
             int y = row0 + r, x = col0 + k;

@@ -488,9 +488,15 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
             behind = 1;
     }
     if (behind) {
-        double got = a->sims[0].t - (a->t_goal - want);
+        /* drop the backlog: slow motion, not a spiral of death; the race
+         * goes on from the slowest run still going, so all stay level */
+        double slowest = a->sims[0].t;
+        for (int i = 1; i < a->nsims; i++)
+            if (!a->sims[i].blown && a->sims[i].t < slowest)
+                slowest = a->sims[i].t;
+        double got = slowest - (a->t_goal - want);
         a->slowmo = got > 0 ? want / got : INFINITY;
-        a->t_goal = a->sims[0].t; /* drop the backlog: slow motion, not a spiral of death */
+        a->t_goal = slowest;
     } else {
         a->slowmo = 1.0;
     }

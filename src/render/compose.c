@@ -236,8 +236,8 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         sw_screen_wrapped(scr, row0 + rows - 2, col0, cols, 2, SW_STYLE_DIM, why);
         return;
     }
-    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d modes%s)", a->scene->name, a->spec.n,
-             a->spec.complete ? "" : ", the stiffest");
+    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
+             a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
     field(fl, &n, 9, buf, "* dt x eigenvalue");
     snprintf(buf, sizeof buf, "dt=%g", a->dt);
     field(fl, &n, 8, buf, NULL);

@@ -117,9 +117,15 @@ static int shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int o
 static void axes(sw_canvas *c)
 {
     sw_view vis = sw_canvas_visible(c);
-    sw_canvas_line(c, vis.xmin, 0, vis.xmax, 0, '-', SW_STYLE_WALL);
-    sw_canvas_line(c, 0, vis.ymin, 0, vis.ymax, '|', SW_STYLE_WALL);
-    sw_canvas_mark(c, 0, 0, '+', SW_STYLE_WALL);
+    int oc, orow;
+    /* the axes as glyphs in either mode (a Braille line would blur into the shading) */
+    if (sw_canvas_world_to_cell(c, 0, 0, &oc, &orow)) {
+        for (int k = 0; k < c->cols; k++)
+            sw_canvas_put(c, k, orow, '-', SW_STYLE_WALL);
+        for (int k = 0; k < c->rows; k++)
+            sw_canvas_put(c, oc, k, '|', SW_STYLE_WALL);
+        sw_canvas_put(c, oc, orow, '+', SW_STYLE_WALL);
+    }
     /* unit ticks, labelled where there is room */
     double step = pow(10, floor(log10(fmax(vis.ymax, 1e-9) / 1.5)));
     if (vis.ymax / step > 5)
@@ -192,7 +198,6 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->half = half;
     }
     sw_canvas_clear(c);
-    axes(c);
     const unsigned char *cell = r->stable, *dot = r->stable + (size_t)c->cols * (size_t)c->rows;
     if (dots) {
         for (int dr = 0; dr < 4 * c->rows; dr++)
@@ -202,9 +207,10 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     } else {
         for (int row = 0; row < c->rows; row++)
             for (int col = 0; col < c->cols; col++)
-                if (cell[row * c->cols + col] && sw_canvas_codepoint(c, col, row) == ' ')
+                if (cell[row * c->cols + col])
                     sw_canvas_put(c, col, row, ':', SW_STYLE_GHOST);
     }
+    axes(c);
     if (!a->have_spec) {
         snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
         return 0;

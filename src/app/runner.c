@@ -23,6 +23,8 @@ void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
     obs->paused = a->paused;
     obs->speed = a->speed;
     obs->recorded = a->recorded;
+    obs->phase = a->view == SW_VIEW_PHASE;
+    obs->region = a->view == SW_VIEW_REGION;
 }
 
 void sw_runner_enter(sw_runner *r, sw_app *a, int page)

@@ -53,6 +53,7 @@ typedef struct sw_lesson_obs {
     const char *param_name[SW_MAX_PARAMS];
     double param_value[SW_MAX_PARAMS];
     int recorded;             /* 1 once a trace recording has been made (R) */
+    int phase, region;        /* the phase view (v) or the stability-region view (s) is shown */
 } sw_lesson_obs;
 
 /* Everything unknown: NaN numbers, zero counters, NULL names. */
@@ -72,7 +73,7 @@ typedef enum sw_lesson_var {
     SW_LV_DT, SW_LV_T, SW_LV_STEPS, SW_LV_EVALS, SW_LV_SPEED, SW_LV_ENERGY_DRIFT,
     SW_LV_ERROR, SW_LV_DRIFT, SW_LV_ERROR_RATIO, SW_LV_ACCEPTED, SW_LV_REJECTED, SW_LV_PARAM,
     /* yes/no */
-    SW_LV_BLOWN, SW_LV_COMPARE, SW_LV_GHOST, SW_LV_PAUSED, SW_LV_RECORDED,
+    SW_LV_BLOWN, SW_LV_COMPARE, SW_LV_GHOST, SW_LV_PAUSED, SW_LV_RECORDED, SW_LV_PHASE, SW_LV_REGION,
     SW_LV_COUNT
 } sw_lesson_var;
 

@@ -114,7 +114,7 @@ sanitize:
 # build/fuzz/NAME-crash-*: copy one into tests/fuzz/NAME/ to keep it as a
 # regression test (the unit suite replays that directory).
 FUZZ_TIME ?= 60
-FUZZERS   = lesson trace parse
+FUZZERS   = lesson trace parse canvas runner check
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude -Isrc -Itests/support
 fuzz:
 	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a
@@ -158,7 +158,7 @@ bench:
 $(BUILD)/datadir.stamp: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' > $@
-$(BUILD)/src/cli/common.o: $(BUILD)/datadir.stamp
+$(BUILD)/src/cli/common.o $(BUILD)/src/cli/plugin_build.o: $(BUILD)/datadir.stamp
 FORCE:
 
 LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)

@@ -58,6 +58,12 @@ START_TEST(corpus_lesson) { ck_assert_int_gt(replay("lesson", sw_fuzz_lesson), 3
 END_TEST
 START_TEST(corpus_trace) { ck_assert_int_gt(replay("trace", sw_fuzz_trace), 3); }
 END_TEST
+START_TEST(corpus_canvas) { ck_assert_int_ge(replay("canvas", sw_fuzz_canvas), 3); }
+END_TEST
+START_TEST(corpus_runner) { ck_assert_int_ge(replay("runner", sw_fuzz_runner), 3); }
+END_TEST
+START_TEST(corpus_check) { ck_assert_int_ge(replay("check", sw_fuzz_check), 4); }
+END_TEST
 START_TEST(corpus_parse) { ck_assert_int_gt(replay("parse", sw_fuzz_parse), 3); }
 END_TEST
 
@@ -69,6 +75,9 @@ Suite *make_fuzz_corpus_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, corpus_lesson);
     tcase_add_test(tc, corpus_trace);
+    tcase_add_test(tc, corpus_canvas);
+    tcase_add_test(tc, corpus_runner);
+    tcase_add_test(tc, corpus_check);
     tcase_add_test(tc, corpus_parse);
     suite_add_tcase(s, tc);
     return s;

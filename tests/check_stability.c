@@ -192,6 +192,17 @@ START_TEST(test_audit_cases)
 }
 END_TEST
 
+/* Scene sc's defaults with up to three NAME=VALUE settings (NULL ends). */
+static const sw_scene *scene_with(const char *scene, double *p, const char *const sets[3])
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find(scene);
+    sw_scene_defaults(sc, p);
+    for (int k = 0; k < 3 && sets[k]; k++)
+        ck_assert_msg(sw_scene_set(sc, p, sets[k], err, sizeof err) == SW_OK, "%s", err);
+    return sc;
+}
+
 /* Meter against run: for scenes linear near their start and every fixed-step
  * method, at three steps around the theory's limit (0.5, 0.9 and 1.3 of it;
  * 1, 2 and 4 scene steps where there is none; 1, 10 and 100 where there is no
@@ -205,21 +216,18 @@ START_TEST(test_meter_iff_run)
 {
     if (getenv("SW_TEST_QUICK"))
         return; /* under valgrind: the sweep runs in the plain and sanitizer passes */
-    static const struct { const char *scene, *set1, *set2; } cases[] = {
-        { "spring", "rest=10", NULL }, { "spring", "rest=10", "c=0" }, { "stiff-spring", "angle=5", NULL },
-        { "chain", "pluck=0.05", "c=0.5" }, { "vortex", "n=20", NULL },
+    static const struct { const char *scene, *sets[3]; } cases[] = {
+        { "spring", { "rest=10", NULL } }, { "spring", { "rest=10", "c=0", NULL } },
+        { "stiff-spring", { "angle=5", NULL } }, { "chain", { "pluck=0.05", "c=0.5", NULL } },
+        { "vortex", { "n=20", NULL } },
     };
     sw_stability_config cfg;
     sw_stability_config_default(&cfg);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double p[SW_MAX_PARAMS];
         char err[SW_ERRLEN];
-        const sw_scene *sc = sw_scene_find(cases[i].scene);
-        sw_scene_defaults(sc, p);
-        const char *sets[2] = { cases[i].set1, cases[i].set2 };
-        for (int k = 0; k < 2; k++)
-            if (sets[k])
-                ck_assert_int_eq(sw_scene_set(sc, p, sets[k], err, sizeof err), SW_OK);
+        const sw_scene *sc = scene_with(cases[i].scene, p, cases[i].sets);
+        const char *const *sets = cases[i].sets;
         for (int mi = 0; mi < sw_integrator_count(); mi++) {
             const sw_integrator *m = sw_integrator_at(mi);
             sw_stability_result r;
@@ -284,10 +292,7 @@ START_TEST(test_sweep)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double p[SW_MAX_PARAMS];
         char err[SW_ERRLEN];
-        const sw_scene *sc = sw_scene_find(cases[i].scene);
-        sw_scene_defaults(sc, p);
-        for (int k = 0; k < 3 && cases[i].sets[k]; k++)
-            ck_assert_int_eq(sw_scene_set(sc, p, cases[i].sets[k], err, sizeof err), SW_OK);
+        const sw_scene *sc = scene_with(cases[i].scene, p, cases[i].sets);
         for (int mi = 0; mi < sw_integrator_count(); mi++) {
             const sw_integrator *m = sw_integrator_at(mi);
             sw_stability_result r;

@@ -324,9 +324,14 @@ START_TEST(value_comparison_rules)
     ck_assert(!sw_check_value(1.0, NAN, 1e-9, 1e-9, &a, &rel, &ratio));
     ck_assert(!sw_check_value(NAN, 1.0, 1e-9, 1e-9, &a, &rel, &ratio));
     ck_assert(isinf(ratio));
-    /* Expected zero: only atol applies and the relative error is infinite. */
+    /* Expected zero: only atol applies; the relative error is taken against
+     * atol/rtol = 1 (the scale below which atol dominates), so it is 1e-6,
+     * not infinite. */
     ck_assert(!sw_check_value(0.0, 1e-6, 1e-9, 1e-9, &a, &rel, &ratio));
-    ck_assert(isinf(rel));
+    ck_assert_double_eq_tol(rel, 1e-6, 1e-20);
+    ck_assert(sw_check_value(1e-3, 1e-3 + 1e-10, 1e-9, 1e-9, &a, &rel, &ratio));
+    /* |e| = 1e-3 < 1: still against the scale 1 (1e-3 + 1e-10 is rounded: ulp 2e-19) */
+    ck_assert_double_eq_tol(rel, 1e-10, 1e-17);
 }
 END_TEST
 

@@ -345,6 +345,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
             sw_sim_step(&a->sims[i]);
         a->t_goal = a->sims[0].t;
         sw_app_watch_feed(a);
+        sw_app_plugin_guard(a);
         sw_app_phase_push(a);
         return 1;
     case SW_ACT_RESET:
@@ -502,5 +503,6 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     }
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
+    sw_app_plugin_guard(a);
     sw_app_phase_push(a);
 }

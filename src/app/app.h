@@ -145,6 +145,10 @@ int sw_app_key(sw_app *a, int key, int in_lesson);
 void sw_app_advance(sw_app *a, double wall, long max_steps);
 /* Back to t = 0 for every sim. */
 void sw_app_reset(sw_app *a);
+/* After stepping: a sim whose plugin failed (crash, exit, loop, overrun)
+ * has the plugin disabled, goes on under the scene's method from t = 0,
+ * and a->message says what happened (app/plugins.c). */
+void sw_app_plugin_guard(sw_app *a);
 
 /* (view.c) View actions: zoom, follow, lanes, phase and region views. 1 when handled. */
 int sw_app_view_apply(sw_app *a, sw_action act);

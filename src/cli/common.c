@@ -4,7 +4,6 @@
 
 #include <dirent.h>
 #include <errno.h>
-#include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -12,7 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "engine/stepper.h"
+#include "lab/plugin.h"
+#include "lab/trace.h"
 #include "util/num.h"
 
 int sw_cli_error(const char *fmt, ...)
@@ -75,6 +75,17 @@ int sw_cli_positive(const char *flag, const char *text, double *out)
     return SW_EXIT_OK;
 }
 
+int sw_cli_tolerance(const char *flag, const char *text, double *out)
+{
+    double v;
+    if (sw_parse_double(text, &v) != SW_OK || !(v >= SW_TRACE_TOL_MIN && v <= 1))
+        return sw_cli_error("%s '%.40s' is not allowed: a tolerance is a number in [%g, 1] (below "
+                            "%g no double-precision run can meet it)", flag, text, SW_TRACE_TOL_MIN,
+                            SW_TRACE_TOL_MIN);
+    *out = v;
+    return SW_EXIT_OK;
+}
+
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out)
 {
     if (sw_parse_long(text, min, max, out) != SW_OK)
@@ -118,72 +129,17 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     return SW_EXIT_OK;
 }
 
-/* Loaded plugins, found again by method name: the registry keeps a copy of
- * the sw_integrator (not a pointer to it) and sw_stepper_init leaves
- * s->plugin NULL, so the step looks its plugin up on first use. */
-static const sw_plugin *plugin_infos[8];
-static int nplugin_infos;
-
-static const sw_plugin *plugin_for(const sw_integrator *m)
-{
-    for (int i = 0; i < nplugin_infos; i++)
-        if (strcmp(plugin_infos[i]->name, m->name) == 0)
-            return plugin_infos[i];
-    return NULL;
-}
-
-/* A plugin's step function behind the built-in step signature. */
-static int plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    if (!s->plugin)
-        s->plugin = (void *)plugin_for(s->method);
-    const sw_plugin *info = s->plugin;
-    if (!info)
-        return SW_EINVAL;
-    int rc = info->step(ode, *t, y, h, s->work);
-    *t += h;
-    return rc == 0 ? SW_OK : SW_EDIVERGED;
-}
-
 int sw_cli_plugin(const char *path)
 {
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode))
-        return sw_cli_error("--plugin '%.200s': no such file (give the path to a .so built from "
-                            "examples/euler_plugin.c)", path);
-    /* dlopen searches the library path for bare names; a path with a slash is taken as is. */
-    char full[4096];
-    snprintf(full, sizeof full, "%s%s", strchr(path, '/') ? "" : "./", path);
-    void *lib = dlopen(full, RTLD_NOW | RTLD_LOCAL);
-    if (!lib)
-        return sw_cli_error("--plugin '%.200s' could not be loaded: %s", path, dlerror());
-    const sw_plugin *(*get)(void);
-    *(void **)&get = dlsym(lib, "sw_plugin_info");
-    if (!get)
-        return sw_cli_error("--plugin '%.200s' has no sw_plugin_info symbol; a plugin must define "
-                            "const sw_plugin *sw_plugin_info(void)", path);
-    const sw_plugin *info = get();
-    if (!info || info->abi != SW_PLUGIN_ABI)
-        return sw_cli_error("--plugin '%.200s' was built for plugin interface %d; this stepwise "
-                            "needs %d (rebuild it against this stepwise's integrator.h)",
-                            path, info ? info->abi : -1, SW_PLUGIN_ABI);
-    if (!info->name || !*info->name || !info->step || info->work_vectors < 0 || info->work_vectors > 64)
-        return sw_cli_error("--plugin '%.200s': sw_plugin_info() must give a name, a step function "
-                            "and 0..64 work vectors", path);
-    static sw_integrator methods[8];
-    static int nmethods;
-    if (nmethods == 8)
-        return sw_cli_error("at most 8 plugins can be loaded");
-    sw_integrator *m = &methods[nmethods];
-    *m = (sw_integrator){ .name = info->name, .label = info->label ? info->label : info->name,
-                          .order = info->order, .evals = info->evals, .flags = SW_PLUGIN | SW_EXPLICIT,
-                          .stability = NAN, .work_vectors = info->work_vectors,
-                          .step = plugin_step, .summary = "student plugin" };
-    char err[SW_ERRLEN];
-    if (sw_integrator_register(m, err, sizeof err) != SW_OK)
-        return sw_cli_error("--plugin '%.200s': %s", path, err);
-    plugin_infos[nplugin_infos++] = info;
-    nmethods++;
+    char err[SW_ERRLEN + 256], so[4200];
+    size_t len = strlen(path);
+    if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
+        if (sw_cli_build_plugin(path, so, sizeof so) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
+        path = so;
+    }
+    if (sw_plugin_load(path, NULL, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
     return SW_EXIT_OK;
 }
 
@@ -202,6 +158,25 @@ static int has_lessons(const char *dir)
     return found;
 }
 
+int sw_cli_beside_binary(const char *sub, int (*ok)(const char *path), char *out, size_t len)
+{
+    char exe[2048];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0)
+        return 0;
+    exe[n] = '\0';
+    for (int up = 0; up < 4; up++) {
+        char *slash = strrchr(exe, '/');
+        if (!slash)
+            break;
+        *slash = '\0';
+        snprintf(out, len, "%s/%s", exe, sub);
+        if (ok(out))
+            return 1;
+    }
+    return 0;
+}
+
 const char *sw_cli_lessons_dir(void)
 {
     static char dir[2100];
@@ -211,20 +186,8 @@ const char *sw_cli_lessons_dir(void)
     /* A build tree: lessons/ beside the binary or a few levels up (build/san/
      * stepwise finds the checkout's lessons); then the working directory;
      * then the installed lessons. */
-    char exe[2048];
-    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (len > 0) {
-        exe[len] = '\0';
-        for (int up = 0; up < 4; up++) {
-            char *slash = strrchr(exe, '/');
-            if (!slash)
-                break;
-            *slash = '\0';
-            snprintf(dir, sizeof dir, "%s/lessons", exe);
-            if (has_lessons(dir))
-                return dir;
-        }
-    }
+    if (sw_cli_beside_binary("lessons", has_lessons, dir, sizeof dir))
+        return dir;
     if (has_lessons("lessons"))
         return "lessons";
     return SW_DATADIR "/lessons";

@@ -6,7 +6,9 @@
 #include <getopt.h>
 #include <string.h>
 
+#include "lab/plugin.h"
 #include "lab/trace.h"
+#include "lab/verdict.h"
 #include "util/signals.h"
 
 static const char record_help[] =
@@ -36,7 +38,8 @@ static const char record_help[] =
     "                         once the trace is complete\n"
     "  -h, --help             this help\n"
     "\n"
-    "exit status: 0 trace written (a blow-up included), 2 bad input or a write error.\n";
+    "exit status: 0 trace written (a blow-up included), 1 a plugin failed (crashed, exited,\n"
+    "looped, overran its vectors; the trace ends at that step), 2 bad input or a write error.\n";
 
 static int bad_option(const char *cmd, int opt, char **argv)
 {
@@ -79,8 +82,8 @@ int sw_cmd_record(int argc, char **argv)
         case 'u': rc = sw_cli_positive("--until", optarg, &spec.until); have_until = 1; break;
         case 's': rc = sw_cli_add_set(&o, optarg); break;
         case 'k': rc = sw_cli_long("--every", optarg, 1, SW_TRACE_MAX_STEPS, &spec.every); break;
-        case 'r': rc = sw_cli_positive("--rtol", optarg, &o.rtol); break;
-        case 'a': rc = sw_cli_positive("--atol", optarg, &o.atol); break;
+        case 'r': rc = sw_cli_tolerance("--rtol", optarg, &o.rtol); break;
+        case 'a': rc = sw_cli_tolerance("--atol", optarg, &o.atol); break;
         case 'o': output = optarg; break;
         case 'p':
             if (nplugins == 8)
@@ -115,6 +118,12 @@ int sw_cmd_record(int argc, char **argv)
     char err[SW_ERRLEN];
     if (sw_trace_spec_check(&spec, o.dt, err, sizeof err) != SW_OK)
         return sw_cli_error("record: %s", err);
+    /* Refused before anything is written, even to standard output. */
+    double work;
+    if (sw_check_budget(o.scene, o.p, o.method, o.dt, &spec, &work, err, sizeof err) != SW_OK)
+        return sw_cli_error("record: %s", err);
+    if (sw_record_budget(o.scene, o.p, o.dt, &spec, err, sizeof err) != SW_OK)
+        return sw_cli_error("record: %s", err);
     sw_sim sim;
     if (sw_cli_sim(&sim, &o) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
@@ -145,6 +154,13 @@ int sw_cmd_record(int argc, char **argv)
     if (rc != SW_OK) {
         sw_sim_free(&sim);
         return sw_cli_error("record: %s%s", err, output ? "; no trace written" : "");
+    }
+    if (sim.blown && sw_plugin_failed(&sim) != SW_PF_NONE) {
+        /* Not a numerical result: the plugin is broken. The trace shows how far it got. */
+        fprintf(stderr, "stepwise: %s (plugin) failed on %s: %s (t = %g); the trace ends there\n",
+                sim.method->name, o.scene->name, sim.blow_reason, sim.blow_time);
+        sw_sim_free(&sim);
+        return SW_EXIT_FAIL;
     }
     if (sim.blown)
         fprintf(stderr, "stepwise: %s under %s%s diverged at step %ld (t = %g): %s; the trace "

@@ -52,7 +52,9 @@ static const char usage_text[] =
 
 static void limit_text(double dt, int kind_none, int kind_unbounded, char *buf, size_t len)
 {
-    if (kind_unbounded)
+    if (isnan(dt))
+        snprintf(buf, len, "failed");
+    else if (kind_unbounded)
         snprintf(buf, len, "unbounded");
     else if (kind_none)
         snprintf(buf, len, "none");
@@ -62,7 +64,7 @@ static void limit_text(double dt, int kind_none, int kind_unbounded, char *buf, 
 
 static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded, char *buf, size_t len)
 {
-    if (!(stiff > 0))
+    if (!(stiff > 0) || isnan(dt))
         snprintf(buf, len, "-");
     else if (kind_unbounded)
         snprintf(buf, len, ">= %.4g", stiff * dt);
@@ -142,7 +144,7 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
             continue;
         }
         char th[32], thw[32], me[96] = "-", mew[32] = "-";
-        int t_none = !r.theory_unbounded && !(r.theory > 0);
+        int t_none = !r.theory_unbounded && r.theory == 0;
         limit_text(r.theory, t_none, r.theory_unbounded, th, sizeof th);
         wdt_text(r.stiff, r.theory, t_none, r.theory_unbounded, thw, sizeof thw);
         if (r.measured) {

@@ -26,11 +26,11 @@ static const sw_integrator builtins[] = {
       "y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)" },
     { "verlet", "velocity Verlet (leapfrog)", 2, 1, SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
       2.0, 2, sw_step_verlet, "v+ = v0 + h/2 a0; x1 = x0 + h v+; v1 = v+ + h/2 a1" },
-    { "implicit-euler", "backward Euler (Newton to rounding, direct solve)", 1, 1, SW_IMPLICIT,
+    { "implicit-euler", "backward Euler (Newton to rounding, direct solve)", 1, 1, SW_IMPLICIT | SW_NEWTON,
       INFINITY, 6, sw_step_implicit_euler, "y1 = y0 + h f(y1), solved by Newton's method" },
     { "linear-implicit-euler", "linearly implicit Euler (one Newton step)", 1, 1, SW_IMPLICIT,
       INFINITY, 2, sw_step_linear_implicit_euler, "(I - h J(y0)) dy = h f(y0): Baraff-Witkin's large steps" },
-    { "implicit-midpoint", "implicit midpoint (Newton to rounding)", 2, 2, SW_IMPLICIT | SW_SYMPLECTIC,
+    { "implicit-midpoint", "implicit midpoint (Newton to rounding)", 2, 2, SW_IMPLICIT | SW_SYMPLECTIC | SW_NEWTON,
       INFINITY, 6, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method" },
     { "rk45", "Dormand-Prince 5(4), adaptive", 5, 6, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 9, sw_step_rk45,
       "adaptive: error estimate from an embedded 4th-order solution" },
@@ -41,6 +41,7 @@ static const sw_integrator builtins[] = {
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
 #define MAX_EXTRA 8
 static sw_integrator extra[MAX_EXTRA];
+static char extra_disabled[MAX_EXTRA][SW_ERRLEN]; /* non-empty: why it is refused */
 static int nextra;
 
 int sw_integrator_count(void) { return NBUILTIN + nextra; }
@@ -85,8 +86,20 @@ int sw_integrator_register(const sw_integrator *method, char *err, size_t errlen
     return SW_OK;
 }
 
+void sw_integrator_disable(const sw_integrator *m, const char *why)
+{
+    for (int i = 0; i < nextra; i++)
+        if (m == &extra[i])
+            snprintf(extra_disabled[i], sizeof extra_disabled[i], "%s", why && *why ? why : "disabled");
+}
+
 int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
 {
+    for (int i = 0; i < nextra; i++)
+        if (m == &extra[i] && extra_disabled[i][0]) {
+            snprintf(err, errlen, "'%s' is disabled: %s", m->name, extra_disabled[i]);
+            return SW_EINVAL;
+        }
     if ((m->flags & SW_NEEDS_SECOND_ORDER) && ode->order != 2) {
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
@@ -138,6 +151,9 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode, ch
 
 void sw_stepper_free(sw_stepper *s)
 {
+    if (s->release)
+        s->release(s);
+    s->release = NULL;
     free(s->work);
     free(s->dense);
     s->work = s->dense = NULL;

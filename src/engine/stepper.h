@@ -25,7 +25,8 @@ struct sw_stepper {
     long accepted;        /* adaptive: accepted steps */
     long rejected;        /* adaptive: rejected trial steps */
     long newton_iters;    /* implicit: Newton iterations, summed */
-    void *plugin;         /* plugin step function, for SW_PLUGIN methods */
+    void *plugin;         /* SW_PLUGIN methods: the plugin's sandbox (lab/plugin_box.c) */
+    void (*release)(sw_stepper *s); /* frees what `plugin` holds; called by sw_stepper_free */
     unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
     int checked;          /* the last step tested the whole state against limit_exp */
     int beyond;           /* ... and found a component beyond it */
@@ -38,6 +39,9 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode,
 void sw_stepper_free(sw_stepper *s);
 /* Forget caches after the state was changed from outside (contact, reset). */
 void sw_stepper_touch(sw_stepper *s);
+/* Refuse a registered (plugin) method from now on: sw_integrator_accepts
+ * then fails with `why` (play disables a plugin that crashed). */
+void sw_integrator_disable(const sw_integrator *m, const char *why);
 /* One step through the method's table entry. */
 int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
 

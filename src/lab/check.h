@@ -28,10 +28,23 @@ int sw_row_next(sw_row_source *src, double *row, long *line, char *err, size_t e
 
 /* Whether got matches expected: equal non-finite values (NaN and NaN, inf
  * and inf of one sign) pass; a finite value never matches a non-finite one.
- * Fills the absolute and relative error and their ratio to the tolerance
+ * Fills the absolute error, the relative error |got - expected| / max(|expected|,
+ * atol/rtol) (relative to the value, or near zero to the scale below which
+ * atol dominates, so it stays meaningful where values cross zero; when rtol
+ * is 0 it is relative to |expected|), and the ratio to the tolerance
  * (<= 1 passes); any of them may be infinite. */
 int sw_check_value(double expected, double got, double rtol, double atol,
                    double *abs_err, double *rel_err, double *ratio);
+
+/* Tolerances per column: column c passes |got - expected| <= atol[c] +
+ * rtol[c]·|expected|; ignore[c] non-zero leaves it out. NULL arrays mean the
+ * defaults for every column. Column 0 (step) always matches exactly. */
+typedef struct sw_check_tol {
+    double rtol, atol;          /* the defaults */
+    const double *col_rtol;     /* ncols, or NULL */
+    const double *col_atol;     /* ncols, or NULL */
+    const unsigned char *ignore; /* ncols, or NULL */
+} sw_check_tol;
 
 typedef enum sw_check_kind {
     SW_CHECK_VALUE = 1,    /* a value outside the tolerance */
@@ -66,5 +79,8 @@ typedef struct sw_check_result {
  * is unusable (err names file and line). */
 int sw_check_compare(sw_row_source *expected, sw_row_source *got, int ncols, double rtol,
                      double atol, sw_check_result *res, char *err, size_t errlen);
+/* The same with per-column tolerances and exclusions. */
+int sw_check_compare_tol(sw_row_source *expected, sw_row_source *got, int ncols,
+                         const sw_check_tol *tol, sw_check_result *res, char *err, size_t errlen);
 
 #endif

@@ -160,7 +160,7 @@ static void starts_init(starts *st, const sw_scene *sc, const double *p)
         for (int i = 0; i < dim; i++) {
             z = z * 6364136223846793005ull + 1442695040888963407ull; /* Knuth's LCG */
             double noise = (double)(z >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
-            st->small[i] = rest[i] + 1e-4 * (sys.y[i] - rest[i]) + 1e-5 * span * noise;
+            st->small[i] = rest[i] + SW_STABILITY_SHRINK * (sys.y[i] - rest[i]) + 1e-5 * span * noise;
         }
         memmove(rest, st->small, (size_t)dim * sizeof *rest);
         st->small = rest;
@@ -249,8 +249,13 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
     double measured = r->kind == SW_STAB_NONE ? 0 : r->dt, theory = r->theory_unbounded ? INFINITY : r->theory;
     int meas_unb = r->kind == SW_STAB_UNBOUNDED;
     if ((meas_unb && r->theory_unbounded) || (theory == 0 && measured == 0) ||
-        (theory > 0 && isfinite(theory) && fabs(measured / theory - 1) <= 0.02)) {
+        (theory > 0 && isfinite(theory) && fabs(measured / theory - 1) <= SW_STABILITY_AGREE)) {
         r->agree = 1;
+        return;
+    }
+    if (isnan(r->theory) || (r->fail.verdict == SW_PROBE_BLOWN && strncmp(r->fail.reason, "the plugin", 10) == 0)) {
+        snprintf(r->why, sizeof r->why, "%s failed, not the scene: %.200s", m->name,
+                 r->fail.reason[0] ? r->fail.reason : "its step fails on the theory's test systems");
         return;
     }
     if (measured < theory) {

@@ -12,6 +12,12 @@
 #include "sim/watch.h"
 #include "stepwise/sim.h"
 
+/* Theory and measurement agree when they differ by at most this fraction. */
+#define SW_STABILITY_AGREE 0.02
+/* Where a scene has a resting state, every probe also runs the motion shrunk
+ * by this factor towards it, so no nonlinearity can cap a growing mode. */
+#define SW_STABILITY_SHRINK 1e-4
+
 typedef enum sw_stab_kind {
     SW_STAB_LIMIT = 0,    /* stable at dt, unstable at dt_unstable: the limit lies between */
     SW_STAB_NONE = 1,     /* unstable even at the smallest step probed */

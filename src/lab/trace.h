@@ -13,6 +13,7 @@
 #include "util/outfile.h"
 
 #define SW_TRACE_MAGIC "# stepwise trace 1"
+#define SW_ASSIGNMENT_MAGIC "# stepwise assignment 1"
 #define SW_TRACE_FORMAT 1
 /* At most this many steps per run, and so at most SW_TRACE_MAX_STEPS + 1 rows. */
 #define SW_TRACE_MAX_STEPS 10000000L
@@ -23,6 +24,9 @@
 #define SW_TRACE_CELL_MAX 48
 #define SW_TRACE_PATH_MAX 4096
 #define SW_TRACE_NAME_MAX 64
+/* Rows beyond the metadata's run that are still read (and graded as extra
+ * rows) before the file is refused as longer than its metadata allows. */
+#define SW_TRACE_ROW_SLACK 4
 
 /* How long a run lasts and which steps it records. */
 typedef struct sw_trace_spec {
@@ -51,6 +55,8 @@ int sw_trace_ncols(const sw_system *sys);
 int sw_trace_per_particle(const sw_system *sys);
 /* Name of column c (0 <= c < ncols) into buf. */
 void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len);
+/* Index of the column called name (the inverse of sw_trace_colname), or -1. */
+int sw_trace_colindex(const sw_system *sys, const char *name);
 /* The sim's current row: ncols values (step, t, state..., energy). */
 void sw_trace_row_values(const sw_sim *s, double *row);
 
@@ -90,18 +96,40 @@ void sw_trace_abort(sw_trace_writer *w);
 
 /* ---- reading ------------------------------------------------------------ */
 
+/* Longest "# student:" value; all "# note:" values together. */
+#define SW_TRACE_STUDENT_MAX 128
+#define SW_TRACE_NOTES_MAX 512
+/* rtol and atol of a run must lie in [SW_TRACE_TOL_MIN, 1]: below it no
+ * double-precision run can meet them (rk45 would shrink its step forever). */
+#define SW_TRACE_TOL_MIN 1e-14
+/* An assignment's own keys (tolerance, ignore, title), kept as text. */
+#define SW_TRACE_EXTRAS 32
+
+typedef struct sw_trace_extra {
+    char key[48];
+    char value[256];
+    long line;
+} sw_trace_extra;
+
 /* What the metadata says: enough to rebuild the run. */
 typedef struct sw_trace_meta {
     const sw_scene *scene;
     double p[SW_MAX_PARAMS];
+    long param_line[SW_MAX_PARAMS];   /* line that set each parameter; 0: the default */
     char integrator[SW_TRACE_NAME_MAX];
-    const sw_integrator *method;      /* NULL when no integrator has that name */
+    const sw_integrator *method;      /* NULL when no integrator has that name (or a list) */
     long integrator_line;
     long scene_line;
     double dt, rtol, atol;
+    long dt_line, steps_line, every_line, rtol_line, atol_line; /* steps_line: steps or until */
     sw_trace_spec spec;
     char version[32];
     int diverged;                     /* a "# diverged:" line was seen */
+    char student[SW_TRACE_STUDENT_MAX]; /* "# student: NAME" ("" when none) */
+    char notes[SW_TRACE_NOTES_MAX];   /* every "# note:", joined by " / " */
+    int assignment;                   /* read as an assignment (sw_trace_read_open_as) */
+    sw_trace_extra extras[SW_TRACE_EXTRAS];
+    int nextras;
 } sw_trace_meta;
 
 typedef struct sw_trace_reader {
@@ -115,6 +143,7 @@ typedef struct sw_trace_reader {
     sw_system sys;                    /* built from the metadata: gives the columns */
     int have_sys;
     int ncols;
+    int *col_of;                      /* header position -> column (step, t, x0, ...) */
     long rows;
     long max_rows;                    /* the most rows the metadata's run can give */
     long blank_line;                  /* first empty line since the last row; 0: none */
@@ -123,12 +152,22 @@ typedef struct sw_trace_reader {
 
 /* Open path and read its first line and metadata, up to (not including) the
  * header row; builds the scene to know the columns. The integrator is looked
- * up but may be unknown (meta.method NULL). Errors read "FILE:LINE: what".
- * 0, SW_EINVAL, SW_EIO or SW_ENOMEM; on failure the reader is closed. */
+ * up but may be unknown (meta.method NULL). A UTF-8 byte-order mark and
+ * blanks after the first line are accepted. Only a regular file is read
+ * (a FIFO or device is refused without blocking). Errors read "FILE:LINE:
+ * what". 0, SW_EINVAL, SW_EIO or SW_ENOMEM; on failure the reader is closed. */
 int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t errlen);
-/* Read and check the header row against the scene's columns. 0 or an error. */
+/* The same for an assignment (docs/trace-format.md): the first line may also
+ * be "# stepwise assignment 1", the integrator may be a comma-separated list
+ * (meta.method NULL), and the keys "tolerance", "tolerance COL", "ignore" and
+ * "title" are kept in meta.extras. */
+int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
+                          size_t errlen);
+/* Read the header row: every column of the scene once, in any order, matched
+ * by name (rows are returned in the canonical order). 0 or an error. */
 int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen);
-/* Read the next row into row (ncols values; non-finite allowed). 1 a row,
+/* Read the next row into row (ncols values in the canonical column order,
+ * step, t, x0, ...; non-finite allowed). 1 a row,
  * 0 the end, or a negative status with "FILE:LINE: what" in err. */
 int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen);
 void sw_trace_read_close(sw_trace_reader *r);

@@ -4,7 +4,9 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "lab/plugin.h"
 #include "stepwise/base.h"
 
 /* ---- the run rule --------------------------------------------------------- */
@@ -22,10 +24,12 @@ int sw_trace_spec_check(const sw_trace_spec *spec, double dt, char *err, size_t 
                      spec->until);
             return SW_EINVAL;
         }
-        if (!(dt > 0) || spec->until / dt > (double)SW_TRACE_MAX_STEPS) {
-            snprintf(err, errlen, "until = %g with dt = %g needs %.3g steps; a run takes at most "
-                     "%ld (raise dt or shorten the run)", spec->until, dt, spec->until / dt,
-                     SW_TRACE_MAX_STEPS);
+        /* ceil(until/dt) steps, and one more when rounding in t leaves the
+         * run short of until: refused at once, not after 10^7 steps. */
+        if (!(dt > 0) || ceil(spec->until / dt * (1 - 1e-12)) + 1 > (double)SW_TRACE_MAX_STEPS) {
+            snprintf(err, errlen, "until = %g with dt = %g needs %.3g steps (and one more when "
+                     "rounding leaves t short of until); a run takes at most %ld (raise dt or "
+                     "shorten the run)", spec->until, dt, ceil(spec->until / dt), SW_TRACE_MAX_STEPS);
             return SW_EINVAL;
         }
     }
@@ -59,7 +63,8 @@ int sw_trace_step(sw_sim *s, const sw_trace_spec *spec, char *err, size_t errlen
                  "shorten the run", SW_TRACE_MAX_STEPS, s->t, spec->until);
         return SW_EINVAL;
     }
-    sw_sim_step_until(s, spec->steps > 0 ? 0.0 : spec->until);
+    if (sw_sim_step_until(s, spec->steps > 0 ? 0.0 : spec->until))
+        sw_plugin_failed(s); /* a plugin that crashed, looped, ...: say so, not "diverged" */
     return SW_OK;
 }
 
@@ -85,6 +90,33 @@ void sw_trace_colname(const sw_system *sys, int c, char *buf, size_t len)
         snprintf(buf, len, "%s%d", kinds[(c - 2) % pp], (c - 2) / pp);
     else
         snprintf(buf, len, "energy");
+}
+
+int sw_trace_colindex(const sw_system *sys, const char *name)
+{
+    static const char *const kinds[] = { "x", "y", "vx", "vy" };
+    int pp = sw_trace_per_particle(sys);
+    if (strcmp(name, "step") == 0)
+        return 0;
+    if (strcmp(name, "t") == 0)
+        return 1;
+    if (strcmp(name, "energy") == 0)
+        return sys->scene->energy ? 2 + pp * sys->n : -1;
+    for (int k = pp - 1; k >= 0; k--) {
+        size_t len = strlen(kinds[k]);
+        const char *digits = name + len;
+        if (strncmp(name, kinds[k], len) != 0 || !*digits || strlen(digits) > 9 ||
+            (digits[0] == '0' && digits[1]))
+            continue;
+        long i = 0;
+        for (const char *d = digits; *d; d++) {
+            if (*d < '0' || *d > '9')
+                return -1;
+            i = 10 * i + (*d - '0');
+        }
+        return i < sys->n ? 2 + pp * (int)i + k : -1;
+    }
+    return -1;
 }
 
 void sw_trace_row_values(const sw_sim *s, double *row)

@@ -265,7 +265,8 @@ const sw_scene sw_scene_gyre = {
     .name = "gyre",
     .kind = SW_SYS_FLOW,
     .summary = "the time-dependent double gyre: chaotic mixing with no closed form",
-    .teaches = "Without an exact solution, error is measured against a tight-tolerance rk45 run.",
+    .teaches = "Without an exact solution, error is measured against a tight-tolerance 8th-order "
+               "(dop853) run.",
     .params = gyre_params,
     .nparams = SW_NPARAMS(gyre_params),
     .dt = 0.1,

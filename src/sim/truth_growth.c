@@ -225,7 +225,10 @@ double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_sp
     const double ok = 1.0 + SW_TRUTH_NEUTRAL;
     double lo = 0, hi = NAN, h = fmin(1e-2 / sp->largest, h_max);
     for (;;) {
-        if (!(steppers_growth(w, sp->n, h, NULL) <= ok)) {
+        double g = steppers_growth(w, sp->n, h, NULL);
+        if (isnan(g))
+            return NAN; /* the method failed on a test system (a broken plugin) */
+        if (!(g <= ok)) {
             hi = h;
             break;
         }
@@ -288,8 +291,10 @@ int sw_truth_limit_along(const sw_scene *sc, const double *p, const sw_integrato
         double h = sw_truth_limit(m, &sp, h_max, &unb);
         if (!unb)
             *unbounded = 0;
-        if (h < best)
+        if (h < best || isnan(h))
             best = h;
+        if (isnan(h))
+            break; /* the method fails on its test systems */
         if (!tr.y || (tr.source == SW_TRUTH_NONE))
             break;
     }

@@ -8,19 +8,21 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <wchar.h>
 
 #include "stepwise/base.h"
 #include "util/signals.h"
 
 static int started;
+static pid_t owner; /* the process that started curses: a forked child never restores it */
 static int colour;
 static attr_t style_attr[SW_STYLE_ALL];
 static short style_pair[SW_STYLE_ALL];
 
 void sw_term_stop(void)
 {
-    if (!started)
+    if (!started || getpid() != owner)
         return;
     started = 0;
     curs_set(1);
@@ -68,6 +70,7 @@ int sw_term_start(char *err, size_t errlen)
         return SW_EIO;
     }
     started = 1;
+    owner = getpid();
     atexit(sw_term_stop);
     sw_signals_catch();
     cbreak();

@@ -6,8 +6,15 @@
 #include <string.h>
 #include <unistd.h>
 
+#include <math.h>
+
+#include "app/app.h"
+#include "app/runner.h"
+#include "lab/check.h"
 #include "lab/trace.h"
 #include "lesson/lesson.h"
+#include "render/canvas.h"
+#include "render/draw.h"
 #include "stepwise/scene.h"
 #include "stepwise/stepwise.h"
 #include "util/kv.h"
@@ -88,5 +95,156 @@ int sw_fuzz_parse(const uint8_t *data, size_t len)
     sw_parse_double((const char *)text, &v);
     sw_parse_long((const char *)text, -1000, 1000, &l);
     free(text);
+    return ok;
+}
+
+/* Bytes as doubles (8 at a time, any bit pattern: NaN, infinities,
+ * subnormals, huge), then as small integers. */
+typedef struct fuzz_bytes { const uint8_t *p; size_t len, at; } fuzz_bytes;
+
+static double take_double(fuzz_bytes *b)
+{
+    double v = 0;
+    if (b->at + sizeof v <= b->len) {
+        memcpy(&v, b->p + b->at, sizeof v);
+        b->at += sizeof v;
+    } else if (b->at < b->len) {
+        v = (double)(int8_t)b->p[b->at++] / 7.0;
+    }
+    return v;
+}
+
+static unsigned take_byte(fuzz_bytes *b) { return b->at < b->len ? b->p[b->at++] : 0; }
+
+int sw_fuzz_canvas(const uint8_t *data, size_t len)
+{
+    fuzz_bytes b = { data, len, 0 };
+    int cols = 1 + (int)(take_byte(&b) % 120), rows = 1 + (int)(take_byte(&b) % 60);
+    sw_canvas c;
+    char err[SW_ERRLEN];
+    if (sw_canvas_init(&c, cols, rows, err, sizeof err) != SW_OK)
+        return -1;
+    sw_canvas_set_mode(&c, take_byte(&b) & 1 ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
+    sw_view v = { take_double(&b), take_double(&b), take_double(&b), take_double(&b) };
+    int ok = sw_canvas_set_view(&c, &v, err, sizeof err) == SW_OK;
+    double xy[64];
+    int n = 0;
+    while (b.at < b.len && n < 64) {
+        unsigned op = take_byte(&b) % 5;
+        double x0 = take_double(&b), y0 = take_double(&b), x1 = take_double(&b), y1 = take_double(&b);
+        uint32_t glyph = take_byte(&b);
+        if (op == 0)
+            sw_canvas_point(&c, x0, y0, glyph, 0);
+        else if (op == 1)
+            sw_canvas_mark(&c, x0, y0, glyph, 1);
+        else if (op == 2)
+            sw_canvas_line(&c, x0, y0, x1, y1, glyph, 2);
+        xy[n++] = x0;
+        xy[n++] = y0;
+    }
+    sw_canvas_density(&c, xy, n / 2, 3);
+    /* a scene drawn at a fuzzed state: walls, springs, anchors, the sun */
+    sw_system sys;
+    const sw_scene *sc = sw_scene_at((int)(take_byte(&b) % (unsigned)sw_scene_count()));
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(sc, p);
+    int nparam = sw_scene_param_index(sc, "n");
+    if (nparam >= 0)
+        p[nparam] = fmin(p[nparam], 20); /* small: the bytes run out anyway */
+    if (sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK) {
+        for (int i = 0; i < sys.ode->dim && b.at < b.len; i++)
+            sys.y[i] = take_double(&b);
+        sw_canvas_draw_system(&c, &sys, sys.y, take_double(&b), 0, SW_STYLE_MAIN);
+        sw_system_free(&sys);
+    }
+    size_t cap = sw_canvas_text_size(&c);
+    char *text = malloc(cap);
+    if (text)
+        sw_canvas_to_text(&c, text, cap);
+    free(text);
+    sw_canvas_free(&c);
+    return ok;
+}
+
+/* The lesson runner: the bytes up to the first 0xFF are a lesson file, the
+ * rest keys pressed on its pages, with time advancing between them. Pages
+ * that ask for large systems are left alone (the runner would only be
+ * slow). */
+int sw_fuzz_runner(const uint8_t *data, size_t len)
+{
+    size_t cut = 0;
+    while (cut < len && data[cut] != 0xFF)
+        cut++;
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/sw-fuzz-%ld.lesson", (long)getpid());
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    fwrite(data, 1, cut, f);
+    fclose(f);
+    sw_lesson probe;
+    char err[SW_LESSON_ERRLEN];
+    int ok = sw_lesson_load(path, &probe, err, sizeof err) == SW_OK;
+    for (int pg = 0; ok && pg < probe.npages; pg++) {
+        const sw_lesson_page *page = &probe.pages[pg];
+        int n = sw_scene_param_index(page->scene, "n"), bursts = sw_scene_param_index(page->scene, "bursts");
+        if ((n >= 0 && page->p[n] > 400) || bursts >= 0)
+            ok = 0;
+    }
+    if (ok) {
+        sw_runner r;
+        sw_app a;
+        if (sw_runner_start(&r, &a, path, 0, err, sizeof err) == SW_OK) {
+            for (size_t i = cut + 1; i < len && i < cut + 1 + 64; i++) {
+                int key = data[i];
+                if (!sw_runner_key(&r, &a, key))
+                    sw_app_key(&a, key, 1);
+                sw_app_advance(&a, 1.0 / 30, 2000);
+                sw_runner_update(&r, &a);
+                sw_runner_side(&r, &a, 80 + (int)(data[i] % 60));
+                if (a.quit)
+                    break;
+            }
+            sw_app_free(&a);
+            sw_runner_free(&r);
+        } else {
+            ok = 0;
+        }
+    }
+    sw_lesson_free(&probe);
+    remove(path);
+    return ok;
+}
+
+/* The check path as `stepwise check FILE` runs it: read the trace, rebuild
+ * the run its metadata describes (within a small work budget here), and
+ * compare row by row. */
+int sw_fuzz_check(const uint8_t *data, size_t len)
+{
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/sw-fuzz-check-%ld.trace", (long)getpid());
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    fwrite(data, 1, len, f);
+    fclose(f);
+    sw_trace_reader r;
+    char err[SW_ERRLEN];
+    int ok = 0;
+    if (sw_trace_read_open(&r, path, err, sizeof err) == SW_OK) {
+        if (sw_trace_read_header(&r, err, sizeof err) == SW_OK && r.meta.method &&
+            (double)r.sys.ode->dim * (double)r.max_rows * r.meta.method->evals < 1e6) {
+            sw_sim s;
+            if (sw_trace_meta_sim(&r, &s, NULL, err, sizeof err) == SW_OK) {
+                sw_row_source want = { .sim = &s, .spec = r.meta.spec }, got = { .reader = &r };
+                sw_check_result res;
+                ok = sw_check_compare(&want, &got, r.ncols, 1e-9, 1e-9, &res, err, sizeof err) == SW_OK &&
+                     res.pass;
+                sw_sim_free(&s);
+            }
+        }
+        sw_trace_read_close(&r);
+    }
+    remove(path);
     return ok;
 }

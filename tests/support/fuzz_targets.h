@@ -16,5 +16,15 @@ int sw_fuzz_lesson(const uint8_t *data, size_t len);
 int sw_fuzz_trace(const uint8_t *data, size_t len);
 /* The --set PARAM=VALUE and number parsers: first byte picks the scene. */
 int sw_fuzz_parse(const uint8_t *data, size_t len);
+/* The rasteriser: canvas size, mode and view from the bytes, then points,
+ * marks and lines at any doubles (NaN, infinities, huge), a density pass,
+ * and a scene drawn at a fuzzed state. 1 when the view was accepted. */
+int sw_fuzz_canvas(const uint8_t *data, size_t len);
+/* The lesson runner: a lesson file up to the first 0xFF byte, then keys
+ * pressed on its pages with time advancing. 1 when the lesson ran. */
+int sw_fuzz_runner(const uint8_t *data, size_t len);
+/* The check path: a trace read, its run rebuilt from its metadata (small
+ * runs only) and compared row by row. 1 when the trace passes. */
+int sw_fuzz_check(const uint8_t *data, size_t len);
 
 #endif

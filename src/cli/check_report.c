@@ -1,0 +1,317 @@
+/* The check report, plain and JSON. Every number goes out in shortest
+ * round-trip form; every name a plugin or a trace chose goes through the
+ * JSON string escaper or was validated when loaded. */
+#include "cli/check_report.h"
+
+#include <errno.h>
+#include <math.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/json.h"
+
+static const char *status_word(sw_verdict_status s)
+{
+    return s == SW_VERDICT_PASS ? "pass" : s == SW_VERDICT_FAIL ? "fail" : "error";
+}
+
+static const char *fault_word(sw_plugin_fault f)
+{
+    switch (f) {
+    case SW_PF_EXIT: return "exit";
+    case SW_PF_CRASH: return "crash";
+    case SW_PF_OVERRUN_WORK: return "overrun_work";
+    case SW_PF_OVERRUN_Y: return "overrun_y";
+    case SW_PF_UNDERRUN: return "underrun";
+    case SW_PF_ODE: return "ode_written";
+    case SW_PF_TIMEOUT: return "timeout";
+    case SW_PF_CANCELLED: return "interrupted";
+    case SW_PF_START: return "start";
+    case SW_PF_DISABLED: return "disabled";
+    default: return "none";
+    }
+}
+
+static void json_cell(FILE *out, int in, const char *key, const sw_check_cell *c, int have,
+                      const char *column)
+{
+    static const char *const kinds[] = { "", "value", "missing_rows", "extra_rows" };
+    sw_json_key(out, in, key, 0);
+    if (!have) {
+        fputs("null", out);
+        return;
+    }
+    fputs("{", out);
+    sw_json_key(out, in + 2, "kind", 1);
+    sw_json_str(out, kinds[c->kind]);
+    sw_json_key(out, in + 2, "line", 0);
+    sw_json_long(out, c->line > 0 ? c->line : -1, 1);
+    sw_json_key(out, in + 2, "step", 0);
+    sw_json_long(out, c->step, 0);
+    sw_json_key(out, in + 2, "t", 0);
+    sw_json_num(out, c->t);
+    sw_json_key(out, in + 2, "column", 0);
+    sw_json_str(out, c->column >= 0 ? column : NULL);
+    sw_json_key(out, in + 2, "expected", 0);
+    sw_json_num(out, c->expected);
+    sw_json_key(out, in + 2, "got", 0);
+    sw_json_num(out, c->got);
+    sw_json_key(out, in + 2, "abs_error", 0);
+    sw_json_num(out, c->abs_err);
+    sw_json_key(out, in + 2, "rel_error", 0);
+    sw_json_num(out, c->rel_err);
+    sw_json_key(out, in + 2, "tolerance_ratio", 0);
+    sw_json_num(out, c->ratio);
+    fprintf(out, "\n%*s}", in, "");
+}
+
+static void json_end(FILE *out, int in, const char *key, const sw_run_end *e, int numeric)
+{
+    sw_json_key(out, in, key, 0);
+    int show = numeric ? e->blown && e->fault == SW_PF_NONE : e->fault != SW_PF_NONE;
+    if (!show) {
+        fputs("null", out);
+        return;
+    }
+    fputs("{ ", out);
+    if (!numeric) {
+        fputs("\"kind\": ", out);
+        sw_json_str(out, fault_word(e->fault));
+        fputs(", ", out);
+    }
+    fprintf(out, "\"step\": %ld, \"t\": ", e->step);
+    sw_json_num(out, e->t);
+    fputs(numeric ? ", \"reason\": " : ", \"message\": ", out);
+    sw_json_str(out, e->reason);
+    fputs(" }", out);
+}
+
+void sw_check_json(FILE *out, const sw_verdict *v, int in)
+{
+    const sw_check_result *r = &v->res;
+    fputs("{", out);
+    sw_json_key(out, in + 2, "format", 1);
+    sw_json_str(out, "stepwise check 1");
+    sw_json_key(out, in + 2, "version", 0);
+    sw_json_str(out, SW_VERSION);
+    sw_json_key(out, in + 2, "status", 0);
+    sw_json_str(out, status_word(v->status));
+    sw_json_key(out, in + 2, "pass", 0);
+    fputs(v->status == SW_VERDICT_PASS ? "true" : "false", out);
+    sw_json_key(out, in + 2, "exit", 0);
+    fprintf(out, "%d", (int)v->status);
+    if (v->status == SW_VERDICT_ERROR) {
+        sw_json_key(out, in + 2, "error", 0);
+        sw_json_str(out, v->error);
+        fprintf(out, "\n%*s}", in, "");
+        return;
+    }
+    const char *strs[][2] = { { "trace", v->trace }, { "plugin", v->plugin[0] ? v->plugin : NULL },
+                              { "against", v->against }, { "assignment", v->assignment },
+                              { "reference", v->reference }, { "scene", v->scene },
+                              { "integrator", v->method[0] ? v->method : NULL },
+                              { "student", v->student[0] ? v->student : NULL },
+                              { "notes", v->notes[0] ? v->notes : NULL } };
+    for (size_t i = 0; i < sizeof strs / sizeof strs[0]; i++) {
+        sw_json_key(out, in + 2, strs[i][0], 0);
+        sw_json_str(out, strs[i][1]);
+    }
+    sw_json_key(out, in + 2, "dt", 0);
+    if (isnan(v->dt))
+        fputs("null", out);
+    else
+        sw_json_num(out, v->dt);
+    sw_json_key(out, in + 2, "rtol", 0);
+    sw_json_num(out, v->rtol);
+    sw_json_key(out, in + 2, "atol", 0);
+    sw_json_num(out, v->atol);
+    sw_json_key(out, in + 2, "header_differences", 0);
+    fputs("[", out);
+    int kept = v->ndiffs < SW_VERDICT_DIFFS ? v->ndiffs : SW_VERDICT_DIFFS;
+    for (int i = 0; i < kept; i++) {
+        const sw_header_diff *d = &v->diffs[i];
+        fprintf(out, "%s\n%*s{ \"what\": ", i ? "," : "", in + 4, "");
+        sw_json_str(out, d->what);
+        fputs(", \"got\": ", out);
+        sw_json_str(out, d->got);
+        fputs(", \"want\": ", out);
+        sw_json_str(out, d->want);
+        fputs(", \"line\": ", out);
+        sw_json_long(out, d->line > 0 ? d->line : -1, 1);
+        fputs(" }", out);
+    }
+    fprintf(out, kept ? "\n%*s]" : "]", in + 2, "");
+    sw_json_key(out, in + 2, "comparable", 0);
+    fputs(v->comparable ? "true" : "false", out);
+    const char *counts[] = { "rows_expected", "rows_got", "rows_compared", "values_compared",
+                             "values_failed" };
+    long values[] = { r->rows_expected, r->rows_got, r->rows_compared, r->values_compared,
+                      r->values_failed };
+    sw_json_key(out, in + 2, "columns", 0);
+    fprintf(out, "%d", v->ncols);
+    for (int i = 0; i < 5; i++) {
+        sw_json_key(out, in + 2, counts[i], 0);
+        fprintf(out, "%ld", values[i]);
+    }
+    json_cell(out, in + 2, "first_failure", &r->first, r->have_first, v->first_column);
+    json_cell(out, in + 2, "largest_error", &r->worst, r->have_worst, v->worst_column);
+    sw_json_key(out, in + 2, "max_abs_error", 0);
+    sw_json_num(out, r->max_abs);
+    sw_json_key(out, in + 2, "max_rel_error", 0);
+    sw_json_num(out, r->max_rel);
+    json_end(out, in + 2, "reference_diverged", &v->ref_end, 1);
+    json_end(out, in + 2, "plugin_diverged", &v->got_end, 1);
+    json_end(out, in + 2, "plugin_failure", v->got_end.fault ? &v->got_end : &v->ref_end, 0);
+    sw_json_key(out, in + 2, "explanation", 0);
+    if (v->have_explanation) {
+        fputs("{ \"kind\": ", out);
+        sw_json_str(out, v->explanation.kind);
+        fputs(", \"message\": ", out);
+        sw_json_str(out, v->explanation.message);
+        fputs(", \"agreement\": ", out);
+        if (isnan(v->explanation.agreement))
+            fputs("null", out);
+        else
+            sw_json_num(out, v->explanation.agreement);
+        fputs(" }", out);
+    } else
+        fputs("null", out);
+    sw_json_key(out, in + 2, "measured", 0);
+    if (v->have_measure) {
+        fprintf(out, "{ \"claimed_order\": %d, \"order\": ", v->claimed_order);
+        if (isnan(v->order))
+            fputs("null", out);
+        else
+            sw_json_num(out, v->order);
+        fputs(", \"stability_omega_dt\": ", out);
+        if (isnan(v->stability))
+            fputs("null", out);
+        else
+            sw_json_num(out, v->stability);
+        fputs(", \"note\": ", out);
+        sw_json_str(out, v->measure_note[0] ? v->measure_note : NULL);
+        fputs(" }", out);
+    } else
+        fputs("null", out);
+    sw_json_key(out, in + 2, "failing_step", 0);
+    sw_json_long(out, v->failing_step, 1);
+    sw_json_key(out, in + 2, "message", 0);
+    sw_json_str(out, v->message);
+    fprintf(out, "\n%*s}", in, "");
+}
+
+void sw_check_print_error(const char *msg)
+{
+    fputs("{\n  \"format\": \"stepwise check 1\",\n  \"version\": ", stdout);
+    sw_json_str(stdout, SW_VERSION);
+    fputs(",\n  \"status\": \"error\",\n  \"pass\": false,\n  \"exit\": 2,\n  \"error\": ", stdout);
+    sw_json_str(stdout, msg);
+    fputs("\n}\n", stdout);
+    fflush(stdout);
+}
+
+static void print_measure(FILE *out, const sw_verdict *v)
+{
+    if (!v->have_measure)
+        return;
+    if (isnan(v->order)) {
+        fprintf(out, "  measured: %s (claimed order %d)\n", v->measure_note, v->claimed_order);
+        return;
+    }
+    fprintf(out, "  order: claimed %d, measured %.2f (undamped spring, error at t = 2 for dt = 0.02 "
+           "to 0.0025)\n", v->claimed_order, v->order);
+    if (isnan(v->stability))
+        fprintf(out, "  stability: %s\n", v->measure_note);
+    else if (isinf(v->stability))
+        fprintf(out, "  stability: measured unbounded on the undamped spring (stable at every dt probed)\n");
+    else if (v->stability == 0)
+        fprintf(out, "  stability: measured none (grows even at w*dt = 0.01)\n");
+    else
+        fprintf(out, "  stability: largest stable w*dt measured %.4g on the undamped spring (euler: none, "
+               "symplectic-euler and verlet: 2, rk4: 2.83)\n", v->stability);
+}
+
+void sw_check_print_plain(FILE *out, const sw_verdict *v)
+{
+    const sw_check_result *r = &v->res;
+    char what[400];
+    if (v->trace)
+        snprintf(what, sizeof what, "%s", v->trace);
+    else
+        snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
+    if (v->status == SW_VERDICT_PASS)
+        fprintf(out, "PASS: %s matches %s\n  %ld rows, %ld values within |got - expected| <= %g + "
+               "%g*|expected|\n", what, v->reference, r->rows_compared, r->values_compared,
+               v->atol, v->rtol);
+    else
+        fprintf(out, "FAIL: %s differs from %s\n", what, v->reference);
+    char esc[400], got[200];
+    if (v->student[0]) {
+        sw_escape(v->student, 120, esc, sizeof esc);
+        fprintf(out, "  student: %s\n", esc);
+    }
+    int kept = v->ndiffs < SW_VERDICT_DIFFS ? v->ndiffs : SW_VERDICT_DIFFS;
+    if (v->ndiffs)
+        fprintf(out, "  header differs from the assignment in %d place%s:\n", v->ndiffs, v->ndiffs == 1 ? "" : "s");
+    for (int i = 0; i < kept; i++) {
+        const sw_header_diff *d = &v->diffs[i];
+        char line[32] = "";
+        if (d->line > 0)
+            snprintf(line, sizeof line, " (line %ld)", d->line);
+        else
+            snprintf(line, sizeof line, " (not stated: the default)");
+        sw_escape(d->got, 80, got, sizeof got);
+        fprintf(out, "    %s: yours %s%s, the assignment's %s\n", d->what, got, line, d->want);
+    }
+    if (!v->comparable)
+        fprintf(out, "  the numbers were not compared: the trace has other columns than the assignment's run\n");
+    const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
+    if (pf) { /* the values after a broken plugin's last step say nothing more */
+        fprintf(out, "  %s\n", pf->reason);
+        print_measure(out, v);
+        return;
+    }
+    if (v->status != SW_VERDICT_PASS && v->first[0])
+        fprintf(out, "  first failure: %s\n", v->first);
+    if (v->status != SW_VERDICT_PASS && r->rows_compared > 0) {
+        if (r->values_failed > 0)
+            fprintf(out, "  %ld of %ld values are outside |got - expected| <= %g + %g*|expected|\n",
+                   r->values_failed, r->values_compared, v->atol, v->rtol);
+        else
+            fprintf(out, "  the %ld values compared are all within |got - expected| <= %g + "
+                   "%g*|expected|\n", r->values_compared, v->atol, v->rtol);
+    }
+    if (v->have_explanation)
+        fprintf(out, "  why: %s\n", v->explanation.message);
+    if (r->have_worst)
+        fprintf(out, "  largest error: %s\n", v->worst);
+    else if (r->rows_compared > 0)
+        fprintf(out, "  largest error: none; every compared value matches exactly\n");
+    if (v->ref_end.blown && !v->ref_end.fault)
+        fprintf(out, "  the reference diverged at step %ld (t = %g): %s\n", v->ref_end.step, v->ref_end.t,
+               v->ref_end.reason);
+    if (v->got_end.blown && !v->got_end.fault)
+        fprintf(out, "  the plugin diverged at step %ld (t = %g): %s\n", v->got_end.step, v->got_end.t,
+               v->got_end.reason);
+    print_measure(out, v);
+}
+
+int sw_check_print(const sw_verdict *v, int json)
+{
+    if (v->status == SW_VERDICT_ERROR)
+        sw_cli_error("%s", v->error);
+    if (json) {
+        if (v->status == SW_VERDICT_ERROR)
+            sw_check_print_error(v->error);
+        else {
+            sw_check_json(stdout, v, 0);
+            fputc('\n', stdout);
+        }
+    } else if (v->status != SW_VERDICT_ERROR)
+        sw_check_print_plain(stdout, v);
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout))
+        return sw_cli_error("cannot write the report to standard output: %s",
+                            errno ? strerror(errno) : "write error");
+    return (int)v->status;
+}

@@ -1,0 +1,380 @@
+/* `stepwise grade --assignment A FILES...|DIR`: grade a class. Each
+ * submission (a trace, or a plugin as .so or .c) is checked in its own
+ * child process under CPU-time, memory and output limits and a wall-clock
+ * watchdog, so a pathological file or plugin fails that student alone.
+ * Prints a summary table; writes a CSV gradebook and Gradescope's
+ * results.json on request, each whole or not at all. Exit 0 when every
+ * submission passed, 1 when any did not, 2 for bad usage. */
+#include "cli/cli.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/check_report.h"
+#include "cli/grade.h"
+#include "lab/sandbox.h"
+#include "lab/verdict.h"
+#include "util/signals.h"
+
+static const char grade_help[] =
+    "usage: stepwise grade --assignment A [--csv FILE] [--results FILE] [--cpu S] [--memory MB]\n"
+    "                      [--output KB] [--wall S] [--plugin-timeout S] [--rtol R] [--atol A]\n"
+    "                      [--tol COL=REL[,ABS]]... [--ignore COL]... FILES...|DIR...\n"
+    "\n"
+    "Grades every submission against the assignment A (a small metadata file, or a\n"
+    "reference trace whose header serves): traces (.trace, .csv) are checked like\n"
+    "'stepwise check TRACE --assignment A'; plugins (.so, or .c built with the\n"
+    "documented flags) like 'stepwise check --plugin P --assignment A'. A directory\n"
+    "stands for the submissions in it. Each runs in its own child process with limits,\n"
+    "so a crash, a loop or a memory hog fails that student alone. Prints a table\n"
+    "(student, file, verdict, first failing step, the mistake in words).\n"
+    "\n"
+    "options:\n"
+    "      --assignment A     what the teacher set (required)\n"
+    "      --csv FILE         write a CSV gradebook: student,file,verdict,first_failing_step,message\n"
+    "      --results FILE     write Gradescope's results.json (score, max_score, tests)\n"
+    "      --cpu S            CPU seconds per submission (default 10)\n"
+    "      --memory MB        address space per submission, MiB (default 1024)\n"
+    "      --output KB        output per submission, KiB: report kept, files written (default 1024)\n"
+    "      --wall S           wall-clock seconds per submission (default 2 x cpu + 5)\n"
+    "      --plugin-timeout S seconds a plugin may take for one step (default 2)\n"
+    "      --rtol R, --atol A, --tol COL=REL[,ABS], --ignore COL   as for check\n"
+    "  -h, --help             this help\n"
+    "\n"
+    "exit status: 0 every submission passed, 1 some did not, 2 bad usage.\n";
+
+/* What a submission's child sends back: this, then report_len bytes. */
+typedef struct grade_record {
+    int status;
+    long failing_step;
+    char student[SW_TRACE_STUDENT_MAX];
+    char notes[SW_TRACE_NOTES_MAX];
+    char kind[24];
+    char message[1200];
+    unsigned report_len;
+} grade_record;
+
+typedef struct grade_job {
+    const char *path;
+    int plugin;
+    const char *build_dir;
+    int index;
+    const sw_check_request *base;
+    size_t report_max;
+} grade_job;
+
+/* The mistake in a few words: explanation, plugin failure, header, values. */
+static void short_reason(const sw_verdict *v, char *buf, size_t len)
+{
+    const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
+    if (v->status == SW_VERDICT_PASS)
+        buf[0] = '\0';
+    else if (v->status == SW_VERDICT_ERROR)
+        snprintf(buf, len, "%.1000s", v->error);
+    else if (pf)
+        snprintf(buf, len, "%.1000s", pf->reason);
+    else if (v->have_explanation)
+        snprintf(buf, len, "%s%s%s", v->ndiffs ? v->diffs[0].what : "", v->ndiffs ? " differs; " : "",
+                 v->explanation.message);
+    else if (v->ndiffs > 0)
+        snprintf(buf, len, "%s: yours %s, the assignment's %s%s", v->diffs[0].what, v->diffs[0].got,
+                 v->diffs[0].want, v->ndiffs > 1 ? " (and more)" : "");
+    else
+        snprintf(buf, len, "%.1000s", v->first);
+}
+
+/* The child: check one submission, send the record and the report. */
+static int grade_child(void *ctx, int in, int out)
+{
+    (void)in;
+    const grade_job *job = ctx;
+    sw_check_request req = *job->base;
+    static sw_verdict v;
+    static grade_record rec;
+    char err[SW_ERRLEN + 512], so[PATH_MAX + 80], name[32];
+    memset(&rec, 0, sizeof rec);
+    memset(&v, 0, sizeof v);
+    v.failing_step = -1;
+    const char *path = job->path;
+    int rc = SW_OK;
+    if (job->plugin) {
+        size_t len = strlen(path);
+        if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
+            snprintf(name, sizeof name, "s%d", job->index);
+            rc = sw_cli_compile_plugin(path, job->build_dir, name, so, sizeof so, err, sizeof err);
+            path = so;
+        }
+        if (rc == SW_OK)
+            rc = sw_plugin_load(path, &req.plugin, err, sizeof err);
+        req.measure = 0;
+    } else
+        req.trace = path;
+    if (rc != SW_OK) {
+        v.status = SW_VERDICT_ERROR;
+        snprintf(v.error, sizeof v.error, "%s", err);
+    } else {
+        sw_check_run(&req, &v);
+        if (job->plugin && v.status == SW_VERDICT_FAIL && !v.got_end.fault) {
+            /* A wrong plugin: its measured order says more than a value. */
+            req.measure = 1;
+            sw_check_run(&req, &v);
+        }
+    }
+    rec.status = (int)v.status;
+    rec.failing_step = v.failing_step;
+    snprintf(rec.student, sizeof rec.student, "%s", v.student);
+    snprintf(rec.notes, sizeof rec.notes, "%s", v.notes);
+    snprintf(rec.kind, sizeof rec.kind, "%s", v.have_explanation ? v.explanation.kind : "");
+    short_reason(&v, rec.message, sizeof rec.message);
+    char *report = NULL;
+    size_t report_len = 0;
+    FILE *f = open_memstream(&report, &report_len);
+    if (f) {
+        if (v.status == SW_VERDICT_ERROR)
+            fprintf(f, "ERROR: %s\n", v.error);
+        else
+            sw_check_print_plain(f, &v);
+        fclose(f);
+    }
+    rec.report_len = (unsigned)(report_len < job->report_max ? report_len : job->report_max);
+    sw_sandbox_write(out, &rec, sizeof rec);
+    if (report)
+        sw_sandbox_write(out, report, rec.report_len);
+    free(report);
+    return 0;
+}
+
+/* ---- the submissions ------------------------------------------------------ */
+
+static int kind_of(const char *name)
+{
+    size_t len = strlen(name);
+    static const char *const traces[] = { ".trace", ".csv" }, *const plugins[] = { ".so", ".c" };
+    for (int i = 0; i < 2; i++) {
+        size_t n = strlen(traces[i]);
+        if (len > n && strcmp(name + len - n, traces[i]) == 0)
+            return 1;
+        n = strlen(plugins[i]);
+        if (len > n && strcmp(name + len - n, plugins[i]) == 0)
+            return 2;
+    }
+    return 0;
+}
+
+static int cmp_names(const void *a, const void *b)
+{
+    return strcmp(((const grade_entry *)a)->path, ((const grade_entry *)b)->path);
+}
+
+/* Add FILE, or the submissions in DIR (sorted, the assignment itself left out). */
+static int collect(grade_list *list, const char *arg, const struct stat *assign_st)
+{
+    struct stat st;
+    if (stat(arg, &st) != 0)
+        return sw_cli_error("grade: '%.200s': %s", arg, strerror(errno));
+    if (!S_ISDIR(st.st_mode)) {
+        if (grade_list_add(list, arg, kind_of(arg) == 2) != SW_OK)
+            return sw_cli_error("grade: out of memory");
+        return SW_EXIT_OK;
+    }
+    DIR *d = opendir(arg);
+    if (!d)
+        return sw_cli_error("grade: cannot read the directory '%.200s': %s", arg, strerror(errno));
+    int first = list->n;
+    for (struct dirent *e; (e = readdir(d));) {
+        int kind = e->d_name[0] == '.' ? 0 : kind_of(e->d_name);
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/%s", arg, e->d_name);
+        if (!kind || stat(path, &st) != 0 || !S_ISREG(st.st_mode) ||
+            (st.st_dev == assign_st->st_dev && st.st_ino == assign_st->st_ino)) {
+            list->ignored += e->d_name[0] != '.' && kind == 0;
+            continue;
+        }
+        if (grade_list_add(list, path, kind == 2) != SW_OK) {
+            closedir(d);
+            return sw_cli_error("grade: out of memory");
+        }
+    }
+    closedir(d);
+    if (list->n > first)
+        qsort(list->items + first, (size_t)(list->n - first), sizeof list->items[0], cmp_names);
+    return SW_EXIT_OK;
+}
+
+/* Grade one submission in a child; always fills e. */
+static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim, double wall)
+{
+    double start = sw_sandbox_now();
+    sw_child child;
+    char err[SW_ERRLEN];
+    grade_record rec;
+    e->status = SW_VERDICT_ERROR;
+    e->failing_step = -1;
+    if (sw_sandbox_spawn(&child, grade_child, (void *)job, lim, -1, err, sizeof err) != SW_OK) {
+        snprintf(e->message, sizeof e->message, "%s", err);
+        return;
+    }
+    int rc = sw_sandbox_read(child.from_child, &rec, sizeof rec, wall);
+    if (rc == 1 && rec.report_len > 0) {
+        e->report = malloc(rec.report_len + 1);
+        if (e->report && sw_sandbox_read(child.from_child, e->report, rec.report_len,
+                                         wall - (sw_sandbox_now() - start)) == 1)
+            e->report[rec.report_len] = '\0';
+        else {
+            free(e->report);
+            e->report = NULL;
+        }
+    }
+    sw_child_end end;
+    if (rc == 1) {
+        sw_sandbox_reap(&child, 2.0, &end);
+        e->status = rec.status;
+        e->failing_step = rec.failing_step;
+        memcpy(e->student, rec.student, sizeof e->student);
+        memcpy(e->notes, rec.notes, sizeof e->notes);
+        memcpy(e->kind, rec.kind, sizeof e->kind);
+        memcpy(e->message, rec.message, sizeof e->message);
+    } else {
+        char how[120];
+        if (rc == -2 || rc == -1)
+            sw_sandbox_kill(&child, &end);
+        else
+            sw_sandbox_reap(&child, 2.0, &end);
+        sw_sandbox_describe(&end, how, sizeof how);
+        if (rc == -2)
+            snprintf(e->message, sizeof e->message, "grading took longer than the wall-clock "
+                     "limit of %g s and was stopped", wall);
+        else if (rc == -1)
+            snprintf(e->message, sizeof e->message, "interrupted");
+        else
+            snprintf(e->message, sizeof e->message, "the grading process %s (limits: %g s CPU, "
+                     "%zu MiB)", how, lim->cpu_seconds, lim->memory_bytes >> 20);
+        snprintf(e->kind, sizeof e->kind, "%s", rc == -2 ? "wall-time" : "limit");
+    }
+    e->seconds = sw_sandbox_now() - start;
+}
+
+int sw_cmd_grade(int argc, char **argv)
+{
+    const char *assignment = NULL, *csv = NULL, *results = NULL;
+    sw_limits lim = { .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
+                      .output_bytes = (size_t)1024 << 10 };
+    double wall = 0;
+    sw_check_request base;
+    sw_check_request_init(&base);
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    int first_file = 0;
+    const char **files = calloc((size_t)argc + 1, sizeof *files);
+    if (!files)
+        return sw_cli_error("grade: out of memory");
+    int nfiles = 0, rc = SW_EXIT_OK;
+    for (int i = 1; i < argc && rc == SW_EXIT_OK; i++) {
+        const char *a = argv[i];
+        int takes = a[0] == '-' && a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            fputs(grade_help, stdout);
+            free(files);
+            return SW_EXIT_OK;
+        }
+        if (first_file || a[0] != '-') {
+            files[nfiles++] = a;
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            first_file = 1;
+            continue;
+        }
+        if (takes && i + 1 >= argc) {
+            rc = sw_cli_error("grade: %s needs a value; see 'stepwise grade --help'", a);
+            break;
+        }
+        const char *val = takes ? argv[++i] : NULL;
+        double d;
+        long n;
+        if (strcmp(a, "--assignment") == 0)
+            assignment = val;
+        else if (strcmp(a, "--csv") == 0)
+            csv = val;
+        else if (strcmp(a, "--results") == 0)
+            results = val;
+        else if (strcmp(a, "--cpu") == 0)
+            rc = sw_cli_positive("--cpu", val, &lim.cpu_seconds);
+        else if (strcmp(a, "--wall") == 0)
+            rc = sw_cli_positive("--wall", val, &wall);
+        else if (strcmp(a, "--memory") == 0) {
+            rc = sw_cli_long("--memory", val, 64, 1 << 20, &n);
+            lim.memory_bytes = (size_t)n << 20;
+        } else if (strcmp(a, "--output") == 0) {
+            rc = sw_cli_long("--output", val, 4, 1 << 20, &n);
+            lim.output_bytes = (size_t)n << 10;
+        } else if (strcmp(a, "--plugin-timeout") == 0) {
+            rc = sw_cli_positive("--plugin-timeout", val, &d);
+            if (rc == SW_EXIT_OK)
+                sw_plugin_set_timeout(d);
+        } else if (strcmp(a, "--rtol") == 0)
+            rc = sw_cli_positive("--rtol", val, &base.rtol);
+        else if (strcmp(a, "--atol") == 0)
+            rc = sw_cli_positive("--atol", val, &base.atol);
+        else if (strcmp(a, "--tol") == 0 || strcmp(a, "--ignore") == 0) {
+            if (sw_coltol_parse(&base.coltols, val, a[2] == 'i', a, err, sizeof err) != SW_OK)
+                rc = sw_cli_error("grade: %s", err);
+        } else
+            rc = sw_cli_error("grade: unknown option '%.40s'; see 'stepwise grade --help'", a);
+    }
+    if (rc == SW_EXIT_OK && !assignment)
+        rc = sw_cli_error("grade needs --assignment A (an assignment file or a reference trace); "
+                          "see 'stepwise grade --help'");
+    if (rc == SW_EXIT_OK && nfiles == 0)
+        rc = sw_cli_error("grade needs submissions: FILES... or a DIR");
+    static sw_assignment asg;
+    struct stat asg_st;
+    if (rc == SW_EXIT_OK && (sw_assignment_read(&asg, assignment, err, sizeof err) != SW_OK ||
+                             stat(assignment, &asg_st) != 0))
+        rc = sw_cli_error("%s", err);
+    grade_list list = { 0 };
+    for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
+        rc = collect(&list, files[i], &asg_st);
+    free(files);
+    if (rc == SW_EXIT_OK && list.n == 0)
+        rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
+                          ".so or .c)");
+    if (rc != SW_EXIT_OK) {
+        grade_list_free(&list);
+        return rc;
+    }
+    base.assignment = &asg;
+    if (!(wall > 0))
+        wall = 2 * lim.cpu_seconds + 5;
+    char build_dir[PATH_MAX];
+    const char *tmp = getenv("TMPDIR");
+    snprintf(build_dir, sizeof build_dir, "%s/stepwise-grade-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!mkdtemp(build_dir)) {
+        grade_list_free(&list);
+        return sw_cli_error("grade: cannot make a temporary directory: %s", strerror(errno));
+    }
+    sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
+    grade_print_head(&asg, list.n, list.ignored);
+    double start = sw_sandbox_now();
+    for (int i = 0; i < list.n && !sw_signal_caught; i++) {
+        grade_job job = { list.items[i].path, list.items[i].plugin, build_dir, i, &base,
+                          lim.output_bytes };
+        grade_one(&list.items[i], &job, &lim, wall);
+        grade_print_row(&list.items[i]);
+    }
+    grade_clean_dir(build_dir, list.n);
+    if (sw_signal_caught) {
+        fprintf(stderr, "stepwise: grading interrupted; no gradebook written\n");
+        grade_list_free(&list);
+        sw_signals_reraise(sw_signal_caught);
+        return SW_EXIT_USAGE;
+    }
+    rc = grade_finish(&list, &lim, wall, sw_sandbox_now() - start, csv, results);
+    grade_list_free(&list);
+    return rc;
+}

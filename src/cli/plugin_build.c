@@ -1,0 +1,164 @@
+/* Building a student's integrator from C source: `--plugin my.c` compiles
+ * it with the documented flags (docs/plugins.md) into a private temporary
+ * directory, under a time limit, and loads the result. The directory and
+ * what is in it are removed when stepwise exits. */
+#include "cli/cli.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "lab/plugin.h"
+#include "lab/sandbox.h"
+
+/* Seconds a compiler may take for one plugin. */
+#define BUILD_SECONDS 60.0
+
+static char build_dir[PATH_MAX];
+static pid_t build_dir_owner;
+
+static void remove_build_dir(void)
+{
+    if (!build_dir[0] || getpid() != build_dir_owner)
+        return;
+    /* Only files stepwise made: pN.so and pN.log, no subdirectories. */
+    int fd = open(build_dir, O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        close(fd);
+        char path[PATH_MAX + 300];
+        for (int i = 0; i < 64; i++) {
+            snprintf(path, sizeof path, "%s/p%d.so", build_dir, i);
+            unlink(path);
+            snprintf(path, sizeof path, "%s/p%d.log", build_dir, i);
+            unlink(path);
+        }
+    }
+    rmdir(build_dir);
+    build_dir[0] = '\0';
+}
+
+static int has_header(const char *dir)
+{
+    char probe[PATH_MAX + 64];
+    snprintf(probe, sizeof probe, "%s/stepwise/integrator.h", dir);
+    return access(probe, R_OK) == 0;
+}
+
+/* Where <stepwise/integrator.h> is: $STEPWISE_INCLUDE, the source tree the
+ * binary sits in, or the installed headers. */
+static const char *include_dir(void)
+{
+    static char dir[PATH_MAX + 16];
+    const char *env = getenv("STEPWISE_INCLUDE");
+    if (env && *env)
+        return env;
+    if (sw_cli_beside_binary("include", has_header, dir, sizeof dir))
+        return dir;
+    return SW_DATADIR "/../../include";
+}
+
+typedef struct build_job {
+    const char *cc, *inc, *src, *out, *log;
+} build_job;
+
+static int run_compiler(void *ctx, int in, int out)
+{
+    (void)in;
+    (void)out;
+    const build_job *j = ctx;
+    int fd = open(j->log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (fd >= 0) {
+        dup2(fd, STDOUT_FILENO);
+        dup2(fd, STDERR_FILENO);
+        close(fd);
+    }
+    setenv("LC_ALL", "C", 1); /* plain ASCII quotes in the messages we show */
+    char incflag[PATH_MAX + 32];
+    snprintf(incflag, sizeof incflag, "-I%s", j->inc);
+    execlp(j->cc, j->cc, "-std=c11", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC", incflag,
+           "-o", j->out, j->src, "-lm", (char *)NULL);
+    fprintf(stderr, "error: cannot run the compiler '%s': %s\n", j->cc, strerror(errno));
+    return 127;
+}
+
+/* The first line of the log that says "error", escaped, for a message. */
+static void first_error(const char *log, char *buf, size_t len)
+{
+    FILE *f = fopen(log, "r");
+    char line[512];
+    buf[0] = '\0';
+    while (f && fgets(line, sizeof line, f)) {
+        if (strstr(line, "error")) {
+            line[strcspn(line, "\n")] = '\0';
+            sw_escape(line, 200, buf, len);
+            break;
+        }
+    }
+    if (f)
+        fclose(f);
+    if (!buf[0])
+        snprintf(buf, len, "see the compiler's messages");
+}
+
+int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
+                          size_t solen, char *err, size_t errlen)
+{
+    char shown[200], msg[SW_ERRLEN];
+    sw_escape(src, 120, shown, sizeof shown);
+    struct stat st;
+    if (stat(src, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "--plugin '%s': no such file", shown);
+        return SW_EINVAL;
+    }
+    char log[PATH_MAX + 80];
+    snprintf(so, solen, "%s/%s.so", dir, name);
+    snprintf(log, sizeof log, "%s/%s.log", dir, name);
+    const char *cc = getenv("CC");
+    build_job job = { cc && *cc ? cc : "cc", include_dir(), src, so, log };
+    sw_child child;
+    if (sw_sandbox_spawn(&child, run_compiler, &job, NULL, -1, msg, sizeof msg) != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        return SW_EIO;
+    }
+    /* The compiler reports by its exit status: wait for it, within the limit. */
+    sw_child_end end;
+    sw_sandbox_reap(&child, BUILD_SECONDS, &end);
+    if (end.exited && end.code == 0)
+        return SW_OK;
+    if (end.killed) {
+        snprintf(err, errlen, "--plugin '%s' did not compile within %g s", shown, BUILD_SECONDS);
+        return SW_EINVAL;
+    }
+    first_error(log, msg, sizeof msg);
+    snprintf(err, errlen, "--plugin '%s' does not compile (%s -std=c11 -O2 -Wall -shared -fPIC): "
+             "%s", shown, job.cc, msg);
+    return SW_EINVAL;
+}
+
+int sw_cli_build_plugin(const char *src, char *so, size_t solen)
+{
+    static int count;
+    char err[SW_ERRLEN + 256], name[16];
+    if (!build_dir[0]) {
+        const char *tmp = getenv("TMPDIR");
+        snprintf(build_dir, sizeof build_dir, "%s/stepwise-plugins-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+        if (!mkdtemp(build_dir)) {
+            build_dir[0] = '\0';
+            return sw_cli_error("--plugin: cannot make a directory to build it in: %s",
+                                strerror(errno));
+        }
+        build_dir_owner = getpid();
+        atexit(remove_build_dir);
+    }
+    if (count == 64)
+        return sw_cli_error("--plugin: at most 64 plugins are built per run");
+    snprintf(name, sizeof name, "p%d", count++);
+    if (sw_cli_compile_plugin(src, build_dir, name, so, solen, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    return SW_EXIT_OK;
+}

@@ -1,0 +1,252 @@
+/* `stepwise try my_method.c`: the student's self-check loop (after
+ * rustlings). Builds the integrator with the documented flags, measures its
+ * order and stability limit beside the claimed ones, checks it against a
+ * reference method (naming the built-in method it does match when it
+ * fails), then shows it live beside the reference. With --watch each run
+ * happens in a child process and starts again whenever the file is saved. */
+#include "cli/cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app/app.h"
+#include "cli/check_report.h"
+#include "lab/measure.h"
+#include "lab/verdict.h"
+#include "util/signals.h"
+
+static const char try_help[] =
+    "usage: stepwise try FILE.c|FILE.so [--reference NAME] [--scene SCENE] [--set PARAM=VALUE]...\n"
+    "                    [--watch] [--no-play]\n"
+    "\n"
+    "Your integrator, tried the way rustlings tries an exercise: builds FILE.c with the\n"
+    "flags docs/plugins.md gives, measures its order (errors on the undamped spring as\n"
+    "dt halves) and its stability limit, checks it value by value against a built-in\n"
+    "method, and, on a terminal, runs it live beside that method (play with compare;\n"
+    "q goes on). With --watch it starts again each time you save FILE.\n"
+    "\n"
+    "options:\n"
+    "      --reference NAME   the method to match (default: by the order you claim:\n"
+    "                         1 euler, 2 midpoint, 4 rk4)\n"
+    "      --scene SCENE      where to check and show it (default chain: it tells methods apart)\n"
+    "  -s, --set PARAM=VALUE  a scene parameter; repeatable\n"
+    "      --watch            run again whenever FILE changes (Ctrl-C stops)\n"
+    "      --no-play          no live view, only the measurements and the check\n"
+    "  -h, --help             this help\n"
+    "\n"
+    "exit status: 0 it matches the reference, 1 it does not, 2 it does not build or load.\n";
+
+typedef struct try_args {
+    const char *file, *reference, *scene;
+    sw_run_opts o;
+    int watch, play;
+} try_args;
+
+static const sw_integrator *default_reference(int order)
+{
+    return sw_integrator_find(order <= 1 ? "euler" : order == 2 ? "midpoint" : "rk4");
+}
+
+static void print_measure(const sw_integrator *m, const sw_integrator *ref)
+{
+    double order, wdt;
+    int kind;
+    char why[SW_ERRLEN];
+    if (sw_measure_order(m, &order, why, sizeof why) == SW_OK)
+        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", m->order, order, ref->name,
+               ref->order);
+    else
+        printf("  order      claimed %d, not measured: %s\n", m->order, why);
+    if (sw_measure_stability(m, &wdt, &kind, why, sizeof why) != SW_OK)
+        printf("  stability  not measured: %s\n", why);
+    else if (kind == 1)
+        printf("  stability  none: grows even at w*dt = 0.01 on the undamped spring (%s: %s)\n",
+               ref->name, ref->stability == 0 ? "none" : "bounded");
+    else if (kind == 2)
+        printf("  stability  unbounded on the undamped spring\n");
+    else
+        printf("  stability  largest stable w*dt %.4g on the undamped spring (%s: %.4g)\n", wdt,
+               ref->name, ref->stability);
+}
+
+/* When the plugin fails its check: the built-in method it matches, if any. */
+static void name_match(const sw_check_request *base)
+{
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        const sw_integrator *m = sw_integrator_at(i);
+        if (m == base->reference || (m->flags & (SW_PLUGIN | SW_ADAPTIVE)))
+            continue;
+        sw_check_request req = *base;
+        req.reference = m;
+        req.measure = 0;
+        static sw_verdict v;
+        if (sw_check_run(&req, &v) == SW_VERDICT_PASS) {
+            printf("  your numbers match %s (%s) instead\n", m->name, m->label);
+            return;
+        }
+    }
+}
+
+/* One run: build, measure, check, play. Returns the exit status. */
+static int try_once(try_args *a)
+{
+    if (sw_cli_plugin(a->file) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    const sw_integrator *m = sw_integrator_at(sw_integrator_count() - 1), *ref;
+    if (a->reference) {
+        if (sw_cli_integrator(a->reference, &ref) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
+    } else
+        ref = default_reference(m->order);
+    if (sw_cli_scene(a->scene ? a->scene : "chain", &a->o.scene) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    a->o.method = ref;
+    if (sw_cli_finish_opts(&a->o) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    printf("%s: %s (%s), %d work vector%s\n", a->file, m->name, m->label, m->work_vectors,
+           m->work_vectors == 1 ? "" : "s");
+    fflush(stdout);
+    sw_check_request req;
+    sw_check_request_init(&req);
+    req.plugin = m;
+    req.reference = ref;
+    req.scene = a->o.scene;
+    memcpy(req.p, a->o.p, sizeof req.p);
+    req.dt = a->o.dt;
+    req.spec.until = a->o.scene->duration;
+    static sw_verdict v;
+    sw_check_run(&req, &v); /* first: a plugin that crashes is named with its step */
+    if (!v.got_end.fault)
+        print_measure(m, ref);
+    printf("  check      ");
+    fflush(stdout);
+    sw_check_print_plain(stdout, &v);
+    if (v.status == SW_VERDICT_FAIL && !v.got_end.fault)
+        name_match(&req);
+    fflush(stdout);
+    int status = (int)v.status;
+    if (!a->play || !isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO) || v.got_end.fault)
+        return status;
+    sw_app app;
+    char err[SW_ERRLEN];
+    if (sw_app_init(&app, a->o.scene, a->o.p, m, a->o.dt, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    sw_app_set_compare(&app, 1, ref, NULL);
+    snprintf(app.message, sizeof app.message, "%s (yellow) beside %s: q when you have seen enough",
+             m->name, ref->name);
+    int rc = sw_cli_play(&app, NULL);
+    sw_app_free(&app);
+    return rc != SW_EXIT_OK ? rc : status;
+}
+
+static int mtime_of(const char *path, struct timespec *t)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return -1;
+    *t = st.st_mtim;
+    return 0;
+}
+
+/* --watch: each run in a child, started again when the file changes. */
+static int watch(try_args *a)
+{
+    sw_signals_catch();
+    struct timespec seen;
+    int status = SW_EXIT_USAGE;
+    while (!sw_signal_caught) {
+        if (mtime_of(a->file, &seen) != 0)
+            return sw_cli_error("try: cannot read '%.200s': %s", a->file, strerror(errno));
+        fflush(NULL);
+        pid_t pid = fork();
+        if (pid < 0)
+            return sw_cli_error("try: cannot start a run: %s", strerror(errno));
+        if (pid == 0) {
+            sw_signals_default();
+            exit(try_once(a));
+        }
+        int wstatus, done = 0, changed = 0;
+        while (!sw_signal_caught && !done) {
+            struct timespec now, pause = { 0, 300000000 };
+            nanosleep(&pause, NULL);
+            done = waitpid(pid, &wstatus, WNOHANG) == pid;
+            changed = mtime_of(a->file, &now) == 0 &&
+                      (now.tv_sec != seen.tv_sec || now.tv_nsec != seen.tv_nsec);
+            if (changed && !done) {
+                kill(pid, SIGTERM); /* the live view restores the terminal and ends */
+                for (int i = 0; i < 50 && !done; i++) {
+                    nanosleep(&pause, NULL);
+                    done = waitpid(pid, &wstatus, WNOHANG) == pid;
+                }
+                if (!done) {
+                    kill(pid, SIGKILL);
+                    waitpid(pid, &wstatus, 0);
+                }
+                done = 1;
+            }
+        }
+        if (!done) {
+            kill(pid, SIGTERM);
+            waitpid(pid, &wstatus, 0);
+            break;
+        }
+        status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : SW_EXIT_USAGE;
+        if (!changed) {
+            printf("\nwatching %s: save it to try again (Ctrl-C stops)\n", a->file);
+            fflush(stdout);
+            struct timespec now, pause = { 0, 300000000 };
+            while (!sw_signal_caught && (mtime_of(a->file, &now) != 0 ||
+                             (now.tv_sec == seen.tv_sec && now.tv_nsec == seen.tv_nsec)))
+                nanosleep(&pause, NULL);
+        }
+        if (!sw_signal_caught)
+            printf("\n%s changed: trying again\n", a->file);
+    }
+    return status;
+}
+
+int sw_cmd_try(int argc, char **argv)
+{
+    try_args a;
+    memset(&a, 0, sizeof a);
+    a.play = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        int takes = strcmp(s, "--reference") == 0 || strcmp(s, "--scene") == 0 ||
+                    strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0;
+        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(try_help, stdout);
+            return SW_EXIT_OK;
+        }
+        if (takes && i + 1 >= argc)
+            return sw_cli_error("try: %s needs a value; see 'stepwise try --help'", s);
+        if (strcmp(s, "--reference") == 0)
+            a.reference = argv[++i];
+        else if (strcmp(s, "--scene") == 0)
+            a.scene = argv[++i];
+        else if (strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0) {
+            if (sw_cli_add_set(&a.o, argv[++i]) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
+        } else if (strcmp(s, "--watch") == 0)
+            a.watch = 1;
+        else if (strcmp(s, "--no-play") == 0)
+            a.play = 0;
+        else if (s[0] == '-')
+            return sw_cli_error("try: unknown option '%.40s'; see 'stepwise try --help'", s);
+        else if (a.file)
+            return sw_cli_error("try takes one file (got '%.60s' and '%.60s')", a.file, s);
+        else
+            a.file = s;
+    }
+    if (!a.file)
+        return sw_cli_error("try needs your integrator: stepwise try my_method.c (start from "
+                            "examples/euler_plugin.c)");
+    return a.watch ? watch(&a) : try_once(&a);
+}

@@ -1,0 +1,43 @@
+/* The explaining checker: when a trace fails, try the usual mistakes on the
+ * first rows and name the one that matches (another built-in method, dt
+ * doubled or halved, a stage at the wrong time, single precision, too few
+ * printed digits, a missing or duplicated row, a shifted time column,
+ * another parameter value). Works on a bounded prefix of the trace, so its
+ * cost does not grow with the file. */
+#ifndef SW_LAB_EXPLAIN_H
+#define SW_LAB_EXPLAIN_H
+
+#include <stddef.h>
+
+#include "lab/check.h"
+#include "lab/trace.h"
+
+/* The run a trace should be: what the assignment (or the trace's own
+ * metadata) describes. */
+typedef struct sw_run_desc {
+    const sw_scene *scene;
+    double p[SW_MAX_PARAMS];
+    const sw_integrator *method;
+    double dt;
+    sw_trace_spec spec;
+    double rtol, atol;            /* the run's (rk45, implicit) tolerances */
+} sw_run_desc;
+
+typedef struct sw_explanation {
+    char kind[24];      /* "method", "dt", "stage-time", "k3-full-step", "single-precision",
+                           "digits", "missing-row", "duplicate-row", "time-shift", "parameter" */
+    char message[480];  /* one sentence for the student */
+    double agreement;   /* largest relative difference from the matching variant; NaN n/a */
+} sw_explanation;
+
+/* At most this many rows (and 2e6 values) of the trace are examined. */
+#define SW_EXPLAIN_ROWS 400
+
+/* Try the usual mistakes on the rows of the trace at path (grading
+ * tolerances tol; arrays in the trace's column order) against want. 1 with
+ * *out filled when one explains the rows, 0 when none does, or a negative
+ * status when the trace cannot be read. */
+int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *tol,
+               sw_explanation *out, char *err, size_t errlen);
+
+#endif

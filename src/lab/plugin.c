@@ -1,0 +1,369 @@
+/* Loading student plugins without running their code here: a child process
+ * dlopens the file and calls sw_plugin_info() under the watchdog, and sends
+ * back a copy of what it found; names and labels are checked before
+ * anything is registered. Invariant: every byte a plugin chose reaches a
+ * message only through sw_escape. */
+#include "lab/plugin.h"
+
+#include <ctype.h>
+#include <dlfcn.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+#include "lab/plugin_box.h"
+#include "lab/sandbox.h"
+#include "util/num.h"
+
+static sw_plugin_entry entries[SW_PLUGIN_MAX];
+static int nentries;
+static double timeout_seconds;
+
+void sw_plugin_set_timeout(double seconds)
+{
+    if (seconds > 0 && isfinite(seconds))
+        timeout_seconds = seconds;
+}
+
+double sw_plugin_timeout(void)
+{
+    if (timeout_seconds > 0)
+        return timeout_seconds;
+    const char *env = getenv("STEPWISE_PLUGIN_TIMEOUT");
+    double v;
+    if (env && sw_parse_double(env, &v) == SW_OK && v > 0 && v <= 3600)
+        return v;
+    return SW_PLUGIN_TIMEOUT;
+}
+
+/* Length of the UTF-8 sequence at s that is a printable character (no C0/C1
+ * control, no DEL, well formed); 0 when it is none. */
+static int printable_char(const unsigned char *s)
+{
+    if (s[0] >= 0x20 && s[0] < 0x7f)
+        return 1;
+    int len = s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
+            : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
+    for (int i = 1; i < len; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if (len == 2 && s[0] == 0xc2 && s[1] < 0xa0)
+        return 0; /* C1 controls U+0080..U+009F */
+    return len;
+}
+
+void sw_escape(const char *text, size_t max, char *out, size_t outlen)
+{
+    size_t used = 0, i = 0;
+    if (outlen == 0)
+        return;
+    while (text[i] && i < max) {
+        unsigned char c = (unsigned char)text[i];
+        char piece[8];
+        int n = c == '\\' ? 0 : printable_char((const unsigned char *)text + i);
+        if (n > 0) {
+            memcpy(piece, text + i, (size_t)n);
+            piece[n] = '\0';
+        } else
+            snprintf(piece, sizeof piece, "\\x%02x", c);
+        size_t len = strlen(piece);
+        if (used + len + 4 >= outlen)
+            break;
+        memcpy(out + used, piece, len);
+        used += len;
+        i += n > 0 ? (size_t)n : 1;
+    }
+    if (text[i] && used + 3 < outlen) {
+        memcpy(out + used, "...", 3);
+        used += 3;
+    }
+    out[used] = '\0';
+}
+
+int sw_plugin_name_ok(const char *name, char *why, size_t whylen)
+{
+    size_t len = strlen(name);
+    if (len == 0 || len > SW_PLUGIN_NAME_MAX) {
+        snprintf(why, whylen, "a name has 1 to %d characters (this one has %zu)", SW_PLUGIN_NAME_MAX, len);
+        return 0;
+    }
+    if (!isalnum((unsigned char)name[0])) {
+        snprintf(why, whylen, "a name starts with a letter or a digit");
+        return 0;
+    }
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)name[i];
+        if (!isalnum(c) && !strchr("._+-", c)) {
+            snprintf(why, whylen, "character %zu is not allowed (a name takes letters, digits, "
+                     "'.', '_', '+' and '-')", i + 1);
+            return 0;
+        }
+    }
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        const sw_integrator *m = sw_integrator_at(i);
+        if (!(m->flags & SW_PLUGIN) && strcasecmp(m->name, name) == 0) {
+            snprintf(why, whylen, "it shadows the built-in method '%s'", m->name);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+int sw_plugin_label_ok(const char *label, char *why, size_t whylen)
+{
+    size_t len = strlen(label);
+    if (len == 0 || len > SW_PLUGIN_LABEL_MAX) {
+        snprintf(why, whylen, "a label has 1 to %d bytes (this one has %zu)", SW_PLUGIN_LABEL_MAX, len);
+        return 0;
+    }
+    if (label[0] == ' ' || label[len - 1] == ' ') {
+        snprintf(why, whylen, "a label does not start or end with a blank");
+        return 0;
+    }
+    for (size_t i = 0; i < len;) {
+        int n = printable_char((const unsigned char *)label + i);
+        if (n == 0) {
+            snprintf(why, whylen, "byte %zu is a control character or not UTF-8 (a label is "
+                     "printable text)", i + 1);
+            return 0;
+        }
+        i += (size_t)n;
+    }
+    return 1;
+}
+
+sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m)
+{
+    if (!m || !(m->flags & SW_PLUGIN))
+        return NULL;
+    for (int i = 0; i < nentries; i++)
+        if (strcmp(entries[i].name, m->name) == 0)
+            return &entries[i];
+    return NULL;
+}
+
+const char *sw_plugin_path(const sw_integrator *m)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    return e ? e->path : NULL;
+}
+
+/* ---- the probe child ------------------------------------------------------ */
+
+enum { STAGE_DLOPEN = 1, STAGE_SYMBOL, STAGE_NULL, STAGE_OK };
+
+typedef struct probe_reply {
+    int stage;
+    int abi, order, evals, work_vectors, has_step, has_label;
+    int name_len, label_len;       /* bytes before the NUL; 256: longer than that */
+    char name[257], label[257];
+    char dlerr[512];
+} probe_reply;
+
+static void copy_bounded(const char *src, char *dst, int *len)
+{
+    int i = 0;
+    while (i < 256 && src[i]) {
+        dst[i] = src[i];
+        i++;
+    }
+    dst[i] = '\0';
+    *len = src[i] ? 256 : i;
+}
+
+/* Runs in the child: tag bytes say how far it got ('L' loaded, 'I' calling
+ * sw_plugin_info), then 'R' and the reply. */
+static int probe_child(void *ctx, int in, int out)
+{
+    (void)in;
+    const char *path = ctx;
+    probe_reply r;
+    memset(&r, 0, sizeof r);
+    void *lib = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        const char *e = dlerror();
+        r.stage = STAGE_DLOPEN;
+        snprintf(r.dlerr, sizeof r.dlerr, "%s", e ? e : "unknown error");
+    } else {
+        sw_sandbox_write(out, "L", 1);
+        const sw_plugin *(*get)(void);
+        *(void **)&get = dlsym(lib, "sw_plugin_info");
+        if (!get)
+            r.stage = STAGE_SYMBOL;
+        else {
+            sw_sandbox_write(out, "I", 1);
+            const sw_plugin *info = get();
+            if (!info)
+                r.stage = STAGE_NULL;
+            else {
+                r.stage = STAGE_OK;
+                r.abi = info->abi;
+                r.order = info->order;
+                r.evals = info->evals;
+                r.work_vectors = info->work_vectors;
+                r.has_step = info->step != NULL;
+                if (info->name)
+                    copy_bounded(info->name, r.name, &r.name_len);
+                r.has_label = info->label != NULL;
+                if (info->label)
+                    copy_bounded(info->label, r.label, &r.label_len);
+            }
+        }
+    }
+    sw_sandbox_write(out, "R", 1);
+    sw_sandbox_write(out, &r, sizeof r);
+    return 0;
+}
+
+/* Run the probe; 0 with *r filled, or an error naming how the child failed. */
+static int probe(const char *path, const char *shown, probe_reply *r, char *err, size_t errlen)
+{
+    sw_child child;
+    char msg[SW_ERRLEN];
+    if (sw_sandbox_spawn(&child, probe_child, (void *)path, NULL, -1, msg, sizeof msg) != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        return SW_EIO;
+    }
+    double limit = sw_plugin_timeout();
+    char stage = 0, tag;
+    int rc;
+    while ((rc = sw_sandbox_read(child.from_child, &tag, 1, limit)) == 1 && tag != 'R')
+        stage = tag;
+    if (rc == 1)
+        rc = sw_sandbox_read(child.from_child, r, sizeof *r, limit);
+    const char *what = stage == 'I' ? "sw_plugin_info()" : "loading it (dlopen and its constructors)";
+    sw_child_end end;
+    if (rc == 1) {
+        sw_sandbox_reap(&child, limit, &end);
+        return SW_OK;
+    }
+    if (rc == -2) {
+        sw_sandbox_kill(&child, &end);
+        snprintf(err, errlen, "--plugin '%s': %s did not return within %g s (an endless loop?)",
+                 shown, what, limit);
+        return SW_EINVAL;
+    }
+    if (rc == -1) {
+        sw_sandbox_kill(&child, &end);
+        snprintf(err, errlen, "--plugin '%s': interrupted while %s ran", shown, what);
+        return SW_EINVAL;
+    }
+    sw_sandbox_reap(&child, limit, &end);
+    sw_sandbox_describe(&end, msg, sizeof msg);
+    snprintf(err, errlen, "--plugin '%s': %s %s%s", shown, what, msg,
+             end.exited ? " (a plugin must not end the process: return from it)" : "");
+    return SW_EINVAL;
+}
+
+int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen)
+{
+    char shown[200], why[SW_ERRLEN], esc[200];
+    sw_escape(path, 120, shown, sizeof shown);
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "--plugin '%s': no such file (give the path to a .so built from "
+                 "examples/euler_plugin.c)", shown);
+        return SW_EINVAL;
+    }
+    if (nentries == SW_PLUGIN_MAX) {
+        snprintf(err, errlen, "at most %d plugins can be loaded", SW_PLUGIN_MAX);
+        return SW_EINVAL;
+    }
+    sw_plugin_entry *e = &entries[nentries];
+    memset(e, 0, sizeof *e);
+    if (!realpath(path, e->path)) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, strerror(errno));
+        return SW_EIO;
+    }
+    probe_reply r;
+    int rc = probe(e->path, shown, &r, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    switch (r.stage) {
+    case STAGE_DLOPEN:
+        sw_escape(r.dlerr, 160, esc, sizeof esc);
+        snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
+        return SW_EINVAL;
+    case STAGE_SYMBOL:
+        snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
+                 "const sw_plugin *sw_plugin_info(void)", shown);
+        return SW_EINVAL;
+    case STAGE_NULL:
+        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() returned NULL; it must return the "
+                 "address of a static sw_plugin", shown);
+        return SW_EINVAL;
+    default:
+        break;
+    }
+    if (r.abi != SW_PLUGIN_ABI) {
+        snprintf(err, errlen, "--plugin '%s' was built for plugin interface %d; this stepwise needs "
+                 "%d (rebuild it against this stepwise's integrator.h)", shown, r.abi, SW_PLUGIN_ABI);
+        return SW_EINVAL;
+    }
+    if (r.name_len == 0 || !r.has_step || r.work_vectors < 0 || r.work_vectors > 64) {
+        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() must give a name, a step function "
+                 "and 0..64 work vectors", shown);
+        return SW_EINVAL;
+    }
+    sw_escape(r.name, SW_PLUGIN_NAME_MAX + 8, esc, sizeof esc);
+    if (r.name_len > 256 || !sw_plugin_name_ok(r.name, why, sizeof why)) {
+        snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc,
+                 r.name_len > 256 ? "a name has 1 to 40 characters" : why);
+        return SW_EINVAL;
+    }
+    const char *label = r.has_label ? r.label : r.name;
+    if (r.has_label && (r.label_len > 256 || !sw_plugin_label_ok(label, why, sizeof why))) {
+        sw_escape(label, 60, esc, sizeof esc);
+        snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc,
+                 r.label_len > 256 ? "a label has 1 to 80 bytes" : why);
+        return SW_EINVAL;
+    }
+    memcpy(e->name, r.name, (size_t)r.name_len + 1);       /* checked: at most 40 bytes */
+    size_t label_len = strlen(label);
+    memcpy(e->label, label, label_len + 1);                 /* checked: at most 80 bytes */
+    e->work_vectors = r.work_vectors;
+    sw_integrator m = { .name = e->name, .label = e->label, .order = r.order, .evals = r.evals,
+                        .flags = SW_PLUGIN | SW_EXPLICIT, .stability = NAN,
+                        .work_vectors = r.work_vectors, .step = sw_plugin_step,
+                        .summary = "student plugin (run in a child process)" };
+    if (sw_integrator_register(&m, why, sizeof why) != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, why);
+        return SW_EINVAL;
+    }
+    e->method = sw_integrator_find(e->name);
+    nentries++;
+    if (out)
+        *out = e->method;
+    return SW_OK;
+}
+
+sw_plugin_fault sw_plugin_failed(sw_sim *s)
+{
+    if (!s->blown || !(s->method->flags & SW_PLUGIN) || !s->stepper)
+        return SW_PF_NONE;
+    return sw_plugin_box_fault(s->stepper, s->blow_step, s->blow_reason, sizeof s->blow_reason);
+}
+
+sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    if (!e || e->last_fault == SW_PF_NONE)
+        return SW_PF_NONE;
+    snprintf(buf, len, "%s", e->last_failure);
+    return e->last_fault;
+}
+
+void sw_plugin_disable(const sw_integrator *m, const char *why)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    if (!e)
+        return;
+    e->disabled = 1;
+    snprintf(e->disabled_why, sizeof e->disabled_why, "%s", why);
+    sw_integrator_disable(m, why);
+}

@@ -1,0 +1,73 @@
+/* Student plugins, isolated: a plugin's code never runs in stepwise's own
+ * process. Loading probes sw_plugin_info() in a child process under a
+ * watchdog; each sim that steps a plugin gets a child that loads it and
+ * steps the state in shared memory, one socket round trip per step, with
+ * its work vectors and y each followed by an inaccessible guard. A plugin
+ * that exits, crashes, loops, overruns its vectors or writes to the ode is
+ * reported as such with the step; it can never take stepwise down or pass
+ * for a correct method. Pure C, no printing. */
+#ifndef SW_LAB_PLUGIN_H
+#define SW_LAB_PLUGIN_H
+
+#include <stddef.h>
+
+#include "stepwise/sim.h"
+
+#define SW_PLUGIN_MAX 8
+/* Names: 1 to 40 bytes of [A-Za-z0-9._+-], starting with a letter or digit. */
+#define SW_PLUGIN_NAME_MAX 40
+/* Labels: 1 to 80 bytes of printable text (UTF-8), no control characters,
+ * no leading or trailing blank. */
+#define SW_PLUGIN_LABEL_MAX 80
+/* Default watchdog: seconds a plugin may take for one call (its step, or
+ * loading and sw_plugin_info()). STEPWISE_PLUGIN_TIMEOUT overrides it. */
+#define SW_PLUGIN_TIMEOUT 2.0
+
+/* How a plugin failed (beyond a numerical blow-up). */
+typedef enum sw_plugin_fault {
+    SW_PF_NONE = 0,
+    SW_PF_EXIT,         /* the plugin ended its process (exit(), _exit()) */
+    SW_PF_CRASH,        /* a fatal signal: SIGSEGV, SIGABRT, SIGFPE, ... */
+    SW_PF_OVERRUN_WORK, /* wrote past its work vectors */
+    SW_PF_OVERRUN_Y,    /* wrote past the end of y */
+    SW_PF_UNDERRUN,     /* wrote before the start of y or of its work vectors */
+    SW_PF_ODE,          /* changed a field of the ode (dim, order, callbacks) */
+    SW_PF_TIMEOUT,      /* did not return within the watchdog's limit */
+    SW_PF_CANCELLED,    /* the user interrupted the wait (Ctrl-C, SIGTERM) */
+    SW_PF_START,        /* its child process could not be started or load it */
+    SW_PF_DISABLED      /* disabled after an earlier failure (play) */
+} sw_plugin_fault;
+
+/* Whether name is an allowed plugin name that shadows no built-in method
+ * (also not by case); 1, or 0 with why filled. */
+int sw_plugin_name_ok(const char *name, char *why, size_t whylen);
+/* Whether label is an allowed label; 1, or 0 with why filled. */
+int sw_plugin_label_ok(const char *label, char *why, size_t whylen);
+/* A printable copy of untrusted bytes for a message: printable ASCII kept,
+ * backslash and every other byte as \xNN, at most `max` input bytes then "...". */
+void sw_escape(const char *text, size_t max, char *out, size_t outlen);
+
+/* Watchdog for each call into a plugin, in seconds (> 0). */
+void sw_plugin_set_timeout(double seconds);
+double sw_plugin_timeout(void);
+
+/* Load the plugin at path: in a child process under the watchdog, dlopen
+ * it and call sw_plugin_info(); check the interface version, name, label,
+ * step function and work vectors; register its integrator (at most
+ * SW_PLUGIN_MAX). *out is the registered method. 0, or SW_EINVAL / SW_EIO
+ * with a one-line message (names escaped) in err. */
+int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen);
+/* The file a loaded plugin method came from (absolute), or NULL. */
+const char *sw_plugin_path(const sw_integrator *m);
+
+/* After a sim stopped: when its plugin failed (not a numerical blow-up),
+ * rewrite s->blow_reason to say how ("the plugin crashed with SIGSEGV
+ * (invalid memory access) at step 3") and return the fault; else SW_PF_NONE. */
+sw_plugin_fault sw_plugin_failed(sw_sim *s);
+/* The last failure of method m's plugin in any run (stability probes,
+ * benchmarks): the fault, with its description in buf; SW_PF_NONE when none. */
+sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len);
+/* Refuse method m from now on, saying why (play disables a crashed plugin). */
+void sw_plugin_disable(const sw_integrator *m, const char *why);
+
+#endif

@@ -1,0 +1,31 @@
+/* Private to lab/plugin.c and lab/plugin_box.c: the registry of loaded
+ * plugins and the sandboxed step every plugin method runs through. */
+#ifndef SW_LAB_PLUGIN_BOX_H
+#define SW_LAB_PLUGIN_BOX_H
+
+#include "engine/stepper.h"
+#include "lab/plugin.h"
+#include "stepwise/stepwise.h"
+
+typedef struct sw_plugin_entry {
+    char path[4096];                       /* absolute: children load it from anywhere */
+    char name[SW_PLUGIN_NAME_MAX + 1];
+    char label[SW_PLUGIN_LABEL_MAX + 1];
+    int work_vectors;
+    const sw_integrator *method;           /* the registered copy */
+    sw_plugin_fault last_fault;            /* the last failure in any run */
+    char last_failure[SW_ERRLEN];
+    int disabled;
+    char disabled_why[SW_ERRLEN];
+} sw_plugin_entry;
+
+/* The entry behind a plugin method, or NULL. */
+sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
+/* The step of every plugin method: the first call starts the stepper's
+ * child; each call copies y in, one round trip, and y back. */
+sw_step_fn sw_plugin_step;
+/* The fault of the stepper's child, described as a sentence that names the
+ * step ("the plugin crashed with SIGSEGV (...) at step 4"). */
+sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, size_t len);
+
+#endif

@@ -1,0 +1,431 @@
+/* A check from request to verdict. Invariants: a failed plugin (crash,
+ * exit, loop, overrun) on either side is a failure, whatever the values
+ * say; a header that differs from the assignment is a failure; memory is
+ * two rows plus the explainer's bounded prefix. */
+#include "lab/verdict.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lab/measure.h"
+#include "stepwise/stepwise.h"
+
+void sw_check_request_init(sw_check_request *req)
+{
+    memset(req, 0, sizeof *req);
+    req->spec.every = 1;
+    req->explain = 1;
+}
+
+int sw_check_budget(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                    const sw_trace_spec *spec, double *work, char *err, size_t errlen)
+{
+    sw_system sys;
+    if (sw_system_build(&sys, sc, p, err, errlen) != SW_OK)
+        return SW_EINVAL;
+    int dim = sys.ode->dim;
+    sw_system_free(&sys);
+    double steps = spec->steps > 0 ? (double)spec->steps : ceil(spec->until / dt) + 1;
+    double evals = m->evals > 0 ? m->evals : 1;
+    if (m->flags & SW_IMPLICIT)
+        evals *= 10; /* Newton iterations and linear solves */
+    *work = steps * dim * evals;
+    if (*work > SW_CHECK_WORK_BUDGET) {
+        snprintf(err, errlen, "the run needs %.3g steps x %d state components x %g evaluations "
+                 "= %.3g, above the budget of %.3g (docs/trace-format.md, Limits): shorten the "
+                 "run, raise dt or use fewer particles", steps, dim, evals, *work,
+                 SW_CHECK_WORK_BUDGET);
+        return SW_EINVAL;
+    }
+    return SW_OK;
+}
+
+int sw_record_budget(const sw_scene *sc, const double *p, double dt, const sw_trace_spec *spec,
+                     char *err, size_t errlen)
+{
+    sw_system sys;
+    if (sw_system_build(&sys, sc, p, err, errlen) != SW_OK)
+        return SW_EINVAL;
+    int ncols = sw_trace_ncols(&sys);
+    sw_system_free(&sys);
+    double steps = spec->steps > 0 ? (double)spec->steps : ceil(spec->until / dt) + 1;
+    double rows = floor(steps / (double)spec->every) + 2, values = rows * ncols;
+    if (values > SW_RECORD_VALUE_BUDGET) {
+        snprintf(err, errlen, "the trace would hold %.3g rows x %d columns = %.3g values, above "
+                 "the budget of %.3g (docs/trace-format.md, Limits): record every K-th step "
+                 "(--every), shorten the run or use fewer particles", rows, ncols, values,
+                 SW_RECORD_VALUE_BUDGET);
+        return SW_EINVAL;
+    }
+    return SW_OK;
+}
+
+/* ---- words ----------------------------------------------------------------- */
+
+static void colname(const sw_system *sys, int c, char *buf, size_t len)
+{
+    if (c < 0)
+        snprintf(buf, len, "(row)");
+    else
+        sw_trace_colname(sys, c, buf, len);
+}
+
+static void describe_cell(const sw_system *sys, const sw_check_cell *c, char *buf, size_t len)
+{
+    char name[32], where[40] = "", e[40], g[40];
+    colname(sys, c->column, name, sizeof name);
+    if (c->line > 0)
+        snprintf(where, sizeof where, " (line %ld)", c->line);
+    sw_fmt_shortest(e, sizeof e, c->expected);
+    sw_fmt_shortest(g, sizeof g, c->got);
+    snprintf(buf, len, "step %ld, t = %g, column %s%s: expected %s, got %s (relative error "
+             "%.3g)", c->step, c->t, name, where, e, g, c->rel_err);
+}
+
+static void run_end(sw_sim *s, sw_run_end *end)
+{
+    memset(end, 0, sizeof *end);
+    end->fault = sw_plugin_failed(s);
+    end->blown = s->blown;
+    end->step = s->blow_step;
+    end->t = s->blow_time;
+    snprintf(end->reason, sizeof end->reason, "%s", s->blow_reason);
+}
+
+static void words(sw_verdict *v, const sw_system *sys, int is_trace)
+{
+    const sw_check_result *res = &v->res;
+    const sw_check_cell *c = &res->first;
+    v->failing_step = -1;
+    if (res->have_first) {
+        v->failing_step = c->step;
+        colname(sys, c->column, v->first_column, sizeof v->first_column);
+        if (c->kind == SW_CHECK_VALUE)
+            describe_cell(sys, c, v->first, sizeof v->first);
+        else if (c->kind == SW_CHECK_MISSING)
+            snprintf(v->first, sizeof v->first, "the %s ends after step %ld with %ld rows; the "
+                     "reference goes on to step %ld (%ld rows)", is_trace ? "trace" : "plugin run",
+                     res->last_step_got, res->rows_got, res->last_step_expected, res->rows_expected);
+        else {
+            char where[40] = "";
+            if (c->line > 0)
+                snprintf(where, sizeof where, " on line %ld", c->line);
+            snprintf(v->first, sizeof v->first, "the %s goes on past the reference's last step "
+                     "%ld: step %ld%s; %ld rows against the reference's %ld",
+                     is_trace ? "trace" : "plugin run", res->last_step_expected, c->step, where,
+                     res->rows_got, res->rows_expected);
+        }
+    }
+    if (res->have_worst) {
+        colname(sys, res->worst.column, v->worst_column, sizeof v->worst_column);
+        describe_cell(sys, &res->worst, v->worst, sizeof v->worst);
+    }
+}
+
+/* The one-line verdict, most telling fact first. */
+static void message(sw_verdict *v, const char *what)
+{
+    size_t used = 0, len = sizeof v->message;
+    char *m = v->message;
+    const sw_run_end *plugin = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
+    if (v->status == SW_VERDICT_PASS) {
+        snprintf(m, len, "PASS: %s matches %s: %ld rows, %ld values within |got - expected| <= "
+                 "%g + %g*|expected|", what, v->reference, v->res.rows_compared,
+                 v->res.values_compared, v->atol, v->rtol);
+        return;
+    }
+    used += (size_t)snprintf(m + used, len - used, "FAIL: %s", what);
+    if (plugin)
+        used += (size_t)snprintf(m + used, len - used, ": %s", plugin->reason);
+    else if (v->ndiffs > 0) {
+        const sw_header_diff *d = &v->diffs[0];
+        char line[32] = "";
+        if (d->line > 0)
+            snprintf(line, sizeof line, " (line %ld)", d->line);
+        used += (size_t)snprintf(m + used, len - used, ": header differs from the assignment in %d "
+                                 "place%s; %s: yours %s%s, the assignment's %s", v->ndiffs,
+                                 v->ndiffs == 1 ? "" : "s", d->what, d->got, line, d->want);
+    } else
+        used += (size_t)snprintf(m + used, len - used, " differs from %s", v->reference);
+    if (used < len && v->have_explanation)
+        used += (size_t)snprintf(m + used, len - used, "; %s", v->explanation.message);
+    else if (used < len && !plugin && v->first[0])
+        used += (size_t)snprintf(m + used, len - used, "; first failure: %s", v->first);
+    else if (used < len && !v->comparable)
+        used += (size_t)snprintf(m + used, len - used, "; the numbers were not compared (other "
+                                 "columns)");
+    (void)used;
+}
+
+/* ---- tolerances ------------------------------------------------------------- */
+
+typedef struct tol_arrays {
+    double *rtol, *atol;
+    unsigned char *ignore;
+    sw_check_tol tol;
+} tol_arrays;
+
+static int make_tol(const sw_check_request *req, const sw_system *sys, sw_verdict *v,
+                    tol_arrays *t)
+{
+    const sw_assignment *a = req->assignment;
+    v->rtol = req->rtol > 0 ? req->rtol : a ? a->rtol : SW_CHECK_RTOL;
+    v->atol = req->atol > 0 ? req->atol : a ? a->atol : SW_CHECK_ATOL;
+    sw_coltols all;
+    memset(&all, 0, sizeof all);
+    if (a)
+        all = a->coltols;
+    for (int i = 0; i < req->coltols.n && all.n < SW_COLTOL_MAX; i++)
+        all.cols[all.n++] = req->coltols.cols[i];
+    int n = sw_trace_ncols(sys);
+    t->rtol = malloc((size_t)n * (2 * sizeof(double) + 1));
+    if (!t->rtol) {
+        snprintf(v->error, sizeof v->error, "out of memory for %d columns", n);
+        return SW_ENOMEM;
+    }
+    t->atol = t->rtol + n;
+    t->ignore = (unsigned char *)(t->rtol + 2 * n);
+    t->tol = (sw_check_tol){ v->rtol, v->atol, t->rtol, t->atol, t->ignore };
+    return sw_coltol_resolve(&all, sys, v->rtol, v->atol, t->rtol, t->atol, t->ignore, v->error,
+                             sizeof v->error);
+}
+
+static sw_verdict_status error(sw_verdict *v, const char *msg)
+{
+    if (msg != v->error)
+        snprintf(v->error, sizeof v->error, "%s", msg);
+    v->status = SW_VERDICT_ERROR;
+    snprintf(v->message, sizeof v->message, "ERROR: %.1500s", v->error);
+    return v->status;
+}
+
+/* ---- a trace ----------------------------------------------------------------- */
+
+static void fill_desc(sw_run_desc *d, const sw_scene *sc, const double *p, const sw_integrator *m,
+                      double dt, const sw_trace_spec *spec, double rtol, double atol)
+{
+    d->scene = sc;
+    memcpy(d->p, p, sizeof d->p);
+    d->method = m;
+    d->dt = dt;
+    d->spec = *spec;
+    d->rtol = rtol;
+    d->atol = atol;
+}
+
+static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
+{
+    sw_trace_reader got, ref;
+    sw_sim sim;
+    int have_ref = 0, have_sim = 0;
+    sw_row_source src_e = { 0 }, src_g = { 0 };
+    tol_arrays tol = { 0 };
+    sw_run_desc desc;
+    char msg[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    v->trace = req->trace;
+    if (sw_trace_read_open(&got, req->trace, msg, sizeof msg) != SW_OK)
+        return error(v, msg);
+    const sw_trace_meta *gm = &got.meta;
+    snprintf(v->student, sizeof v->student, "%s", gm->student);
+    snprintf(v->notes, sizeof v->notes, "%s", gm->notes);
+    snprintf(v->scene, sizeof v->scene, "%s", gm->scene->name);
+    v->dt = gm->dt;
+    v->ncols = got.ncols;
+    v->comparable = 1;
+    const sw_assignment *a = req->assignment;
+    int rc = SW_OK;
+    if (req->against) {
+        v->against = req->against;
+        v->dt = NAN;
+        snprintf(v->reference, sizeof v->reference, "the trace %s", req->against);
+        rc = sw_trace_read_open(&ref, req->against, msg, sizeof msg);
+        have_ref = rc == SW_OK;
+        if (rc == SW_OK && (ref.meta.scene != gm->scene || ref.ncols != got.ncols)) {
+            snprintf(msg, sizeof msg, "%s:%ld: a '%s' trace with %d columns cannot be compared "
+                     "with %s, a '%s' trace with %d columns", req->trace, gm->scene_line,
+                     gm->scene->name, got.ncols, req->against, ref.meta.scene->name, ref.ncols);
+            rc = SW_EINVAL;
+        }
+        if (rc == SW_OK)
+            rc = sw_trace_read_header(&ref, msg, sizeof msg);
+        src_e.reader = &ref;
+    } else {
+        const sw_integrator *m = req->reference;
+        if (a) {
+            v->assignment = a->path;
+            v->ndiffs = sw_assignment_diff(a, gm, &got.sys, v->diffs, SW_VERDICT_DIFFS, &v->comparable);
+            if (!m)
+                m = sw_assignment_method(a, gm);
+            fill_desc(&desc, a->meta.scene, a->meta.p, m, a->meta.dt, &a->meta.spec, a->meta.rtol,
+                      a->meta.atol);
+        } else {
+            if (!m)
+                m = gm->method;
+            fill_desc(&desc, gm->scene, gm->p, m, gm->dt, &gm->spec, gm->rtol, gm->atol);
+        }
+        double work;
+        const char *file = a ? a->path : req->trace;
+        long line = a ? a->meta.steps_line : gm->steps_line;
+        if (m && sw_check_budget(desc.scene, desc.p, m, desc.dt, &desc.spec, &work, msg, sizeof msg) != SW_OK) {
+            char inner[SW_ERRLEN];
+            snprintf(inner, sizeof inner, "%.200s", msg);
+            snprintf(msg, sizeof msg, "%.200s:%ld: %s", file, line > 0 ? line : 1, inner);
+            rc = SW_EINVAL;
+        } else if (!v->comparable) {
+            rc = SW_OK; /* header differences only */
+        } else if (a) {
+            rc = sw_assignment_sim(a, m, &sim, msg, sizeof msg);
+        } else
+            rc = sw_trace_meta_sim(&got, &sim, m, msg, sizeof msg);
+        have_sim = rc == SW_OK && v->comparable;
+        if (have_sim) {
+            snprintf(v->method, sizeof v->method, "%s", sim.method->name);
+            if (a)
+                snprintf(v->reference, sizeof v->reference, "%s on %s as the assignment %.200s sets it",
+                         sim.method->name, desc.scene->name, a->path);
+            else
+                snprintf(v->reference, sizeof v->reference, "%s on %s, regenerated from the "
+                         "trace's metadata%s", sim.method->name, v->scene,
+                         req->reference ? " with --reference" : "");
+            src_e.sim = &sim;
+            src_e.spec = desc.spec;
+        } else if (rc == SW_OK)
+            snprintf(v->reference, sizeof v->reference, "the assignment %.200s", a->path);
+    }
+    if (rc == SW_OK)
+        rc = sw_trace_read_header(&got, msg, sizeof msg);
+    if (rc == SW_OK)
+        rc = make_tol(req, &got.sys, v, &tol);
+    if (rc != SW_OK && !v->error[0])
+        snprintf(v->error, sizeof v->error, "%s", msg);
+    if (rc == SW_OK && (have_sim || have_ref)) {
+        src_g.reader = &got;
+        rc = sw_check_compare_tol(&src_e, &src_g, got.ncols, &tol.tol, &v->res, msg, sizeof msg);
+        if (rc != SW_OK)
+            snprintf(v->error, sizeof v->error, "%s", msg);
+    } else if (rc == SW_OK)
+        v->res.pass = 0;
+    if (rc == SW_OK) {
+        if (have_sim)
+            run_end(&sim, &v->ref_end);
+        words(v, &got.sys, 1);
+        int pass = v->res.pass && v->ndiffs == 0 && v->comparable && v->ref_end.fault == SW_PF_NONE;
+        v->status = pass ? SW_VERDICT_PASS : SW_VERDICT_FAIL;
+        if (!pass && req->explain && have_sim && v->ref_end.fault == SW_PF_NONE &&
+            !(desc.method->flags & SW_PLUGIN)) {
+            sw_explanation ex;
+            if (sw_explain(req->trace, &desc, &tol.tol, &ex, msg, sizeof msg) == 1) {
+                v->explanation = ex;
+                v->have_explanation = 1;
+            }
+        }
+        if (v->ref_end.fault != SW_PF_NONE)
+            v->failing_step = v->ref_end.step;
+        message(v, req->trace);
+    }
+    free(tol.rtol);
+    if (have_sim)
+        sw_sim_free(&sim);
+    if (have_ref)
+        sw_trace_read_close(&ref);
+    sw_trace_read_close(&got);
+    return rc == SW_OK ? v->status : error(v, v->error);
+}
+
+/* ---- a plugin ---------------------------------------------------------------- */
+
+static void measure(sw_verdict *v, const sw_integrator *plugin)
+{
+    v->have_measure = 1;
+    v->claimed_order = plugin->order;
+    v->order = v->stability = NAN;
+    char why[SW_ERRLEN];
+    if (sw_measure_order(plugin, &v->order, why, sizeof why) != SW_OK) {
+        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", why);
+        return;
+    }
+    double wdt;
+    int kind;
+    if (sw_measure_stability(plugin, &wdt, &kind, why, sizeof why) != SW_OK)
+        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: %.200s", why);
+    else {
+        v->stability = kind == 1 ? 0.0 : kind == 2 ? INFINITY : wdt;
+        v->stability_kind = kind;
+    }
+}
+
+static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v)
+{
+    const sw_assignment *a = req->assignment;
+    const sw_scene *sc = a ? a->meta.scene : req->scene;
+    const double *p = a ? a->meta.p : req->p;
+    double dt = a ? a->meta.dt : req->dt;
+    sw_trace_spec spec = a ? a->meta.spec : req->spec;
+    const sw_integrator *ref = req->reference ? req->reference : a ? a->methods[0] : NULL;
+    char msg[SW_ERRLEN + 64];
+    if (a)
+        v->assignment = a->path;
+    snprintf(v->plugin, sizeof v->plugin, "%s", req->plugin->name);
+    snprintf(v->scene, sizeof v->scene, "%s", sc->name);
+    if (!ref)
+        return error(v, "check: the plugin form needs --reference NAME or --assignment FILE");
+    snprintf(v->method, sizeof v->method, "%s", ref->name);
+    v->dt = dt;
+    v->comparable = 1;
+    double work;
+    if (sw_check_budget(sc, p, ref, dt, &spec, &work, msg, sizeof msg) != SW_OK) {
+        char inner[SW_ERRLEN + 64];
+        snprintf(inner, sizeof inner, "check: %.200s", msg);
+        return error(v, inner);
+    }
+    sw_sim ref_sim, got_sim;
+    if (sw_sim_init(&ref_sim, sc, p, ref, dt, msg, sizeof msg) != SW_OK)
+        return error(v, msg);
+    if (sw_sim_init(&got_sim, sc, p, req->plugin, dt, msg, sizeof msg) != SW_OK) {
+        sw_sim_free(&ref_sim);
+        return error(v, msg);
+    }
+    double rtol = a ? a->meta.rtol : SW_RTOL_DEFAULT, atol = a ? a->meta.atol : SW_ATOL_DEFAULT;
+    sw_sim_set_tolerances(&ref_sim, rtol, atol);
+    sw_sim_set_tolerances(&got_sim, rtol, atol);
+    v->ncols = sw_trace_ncols(&ref_sim.sys);
+    snprintf(v->reference, sizeof v->reference, "%s on %s with the same settings", ref->name, sc->name);
+    tol_arrays tol = { 0 };
+    int rc = make_tol(req, &ref_sim.sys, v, &tol);
+    if (rc == SW_OK) {
+        sw_row_source src_e = { .sim = &ref_sim, .spec = spec };
+        sw_row_source src_g = { .sim = &got_sim, .spec = spec };
+        rc = sw_check_compare_tol(&src_e, &src_g, v->ncols, &tol.tol, &v->res, msg, sizeof msg);
+        if (rc != SW_OK)
+            snprintf(v->error, sizeof v->error, "check: %s", msg);
+    }
+    if (rc == SW_OK) {
+        run_end(&ref_sim, &v->ref_end);
+        run_end(&got_sim, &v->got_end);
+        words(v, &ref_sim.sys, 0);
+        int pass = v->res.pass && v->got_end.fault == SW_PF_NONE;
+        v->status = pass ? SW_VERDICT_PASS : SW_VERDICT_FAIL;
+        if (v->got_end.fault != SW_PF_NONE)
+            v->failing_step = v->got_end.step;
+        if (req->measure && v->got_end.fault == SW_PF_NONE)
+            measure(v, req->plugin);
+        char what[120];
+        snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
+        message(v, what);
+    }
+    free(tol.rtol);
+    sw_sim_free(&got_sim);
+    sw_sim_free(&ref_sim);
+    return rc == SW_OK ? v->status : error(v, v->error);
+}
+
+sw_verdict_status sw_check_run(const sw_check_request *req, sw_verdict *v)
+{
+    memset(v, 0, sizeof *v);
+    v->failing_step = -1;
+    v->order = v->stability = NAN;
+    v->dt = NAN;
+    return req->trace ? check_trace(req, v) : check_plugin(req, v);
+}

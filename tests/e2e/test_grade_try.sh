@@ -1,0 +1,48 @@
+#!/bin/sh
+# stepwise try: builds the student's C file, measures its order and stability
+# limit beside the claimed ones, checks it against the reference for its
+# order, names the method it matches when it fails, and with --watch runs
+# again when the file is saved; Ctrl-C ends the watch with nothing left running.
+set -u
+SW=${STEPWISE:?set STEPWISE to the stepwise binary}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+dir=$(mktemp -d)
+trap 'kill "$pid" 2>/dev/null; rm -rf "$dir"' EXIT
+pid=""
+cd "$dir" || exit 1
+fail() { echo "FAIL: $*"; cat log 2>/dev/null | tail -20; exit 1; }
+
+cp "$root/examples/euler_plugin.c" mine.c
+"$SW" try mine.c --no-play > out 2>&1; rc=$?
+[ "$rc" -eq 0 ] || fail "try on the example: exit $rc: $(cat out)"
+grep -q 'order      claimed 1, measured 1\.0' out || fail "no measured order: $(cat out)"
+grep -q 'stability  none' out || fail "no stability: $(cat out)"
+grep -q 'PASS: plugin student-euler on chain matches euler' out || fail "no check: $(cat out)"
+
+# Claiming order 2 makes midpoint the reference: a failure that names euler.
+sed 's/\.order = 1/.order = 2/' "$root/examples/euler_plugin.c" > claims2.c
+"$SW" try claims2.c --no-play > out 2>&1; rc=$?
+[ "$rc" -eq 1 ] || fail "euler graded as midpoint: exit $rc"
+grep -q 'your numbers match euler' out || fail "the matching method is not named: $(cat out)"
+
+printf 'this is not C\n' > broken.c
+"$SW" try broken.c --no-play > out 2>&1; rc=$?
+[ "$rc" -eq 2 ] && grep -q 'does not compile' out || fail "a broken file: exit $rc: $(cat out)"
+
+# --watch: a save runs it again (from broken to fixed).
+cp broken.c w.c
+"$SW" try w.c --watch --no-play > log 2>&1 &
+pid=$!
+i=0; while ! grep -q 'watching w.c' log && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+grep -q 'does not compile' log || fail "--watch: the first run did not report the error"
+sleep 1.1   # a new modification time, whatever the file system's resolution
+cp "$root/examples/euler_plugin.c" w.c
+i=0; while ! grep -q 'PASS: plugin student-euler' log && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+grep -q 'w.c changed: trying again' log || fail "--watch did not notice the save"
+grep -q 'PASS: plugin student-euler' log || fail "--watch did not run the saved file"
+kill -INT "$pid"
+i=0; while kill -0 "$pid" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+kill -0 "$pid" 2>/dev/null && fail "try --watch did not stop on SIGINT"
+wait "$pid" 2>/dev/null
+pid=""
+echo "ok"

@@ -1,0 +1,179 @@
+#!/bin/sh
+# The hostile-plugin zoo (issue 16): plugins that exit, abort, crash, loop in
+# their step or in sw_plugin_info(), write one and many elements past their
+# work vectors or past y, write ode->dim, return NaN, or carry bad names.
+# Every record, check (--json) and grade run on each ends within its limit
+# with a one-line verdict (valid JSON where asked), never a pass, no temp
+# file left; play disables a failing plugin and leaves the terminal sane.
+. "$(dirname "$0")/lib.sh"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+json="$root/tests/e2e/json.awk"
+SW=$STEPWISE
+cd "$WORK" || exit 1
+
+zoo() { # NAME 'statement run in the step from its fourth step on' [work vectors] [info body]
+    cat > "$1.c" <<C
+#include <stdlib.h>
+#include <stepwise/integrator.h>
+static int step(sw_ode *ode, double t, double *y, double h, double *work)
+{
+    double *k = work;
+    sw_ode_eval(ode, t, y, k);
+    if (t > 2.5 * h) { $2; }
+    for (int i = 0; i < ode->dim; i++)
+        y[i] += h * k[i];
+    return 0;
+}
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "$1", .label = "zoo: $1",
+    .order = 1, .evals = 1, .work_vectors = ${3:-1}, .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { ${4:-} return &info; }
+C
+    cc -std=c11 -O0 -shared -fPIC -I"$root/include" -o "$1.so" "$1.c" || fail "cannot build $1"
+}
+zoo exits 'exit(0)'
+zoo aborts 'abort()'
+zoo segv '*(volatile int *)(void *)8 = 1'
+zoo loops 'for (volatile int spin = 1; spin;) { }'
+zoo over-one 'work[ode->dim] = 1'
+zoo over-many 'work[3 * ode->dim + 7] = 1'
+zoo over-y 'y[ode->dim] = 1'
+zoo writes-dim 'ode->dim += 1'
+zoo nan 'k[0] = 0.0 / 0.0'
+zoo info-loops '' 1 'for (volatile int spin = 1; spin;) { }'
+sed 's/\.name = "nan"/.name = "euler "/' nan.c > badname.c
+cc -std=c11 -shared -fPIC -I"$root/include" -o badname.so badname.c || fail "cannot build badname"
+
+# kind: what each one is called in check --json's plugin_failure, and the words
+expect() {
+    case "$1" in
+        exits) echo "exit|ended its process with exit\\(0\\) in its step" ;;
+        aborts) echo "crash|crashed with SIGABRT" ;;
+        segv) echo "crash|crashed with SIGSEGV" ;;
+        loops) echo "timeout|did not return from its step within 2 s" ;;
+        over-one) echo "overrun_work|wrote past its 1 work vector \\(work\\[4\\]" ;;
+        over-many) echo "overrun_work|wrote past its 1 work vector \\(work\\[19\\]" ;;
+        over-y) echo "overrun_y|wrote past the end of y \\(y\\[4\\]" ;;
+        writes-dim) echo "ode_written|changed ode->dim from 4 to 5" ;;
+    esac
+}
+
+for p in exits aborts segv loops over-one over-many over-y writes-dim; do
+    kind=${p%%|*}; words=$(expect "$p" | cut -d'|' -f2); kind=$(expect "$p" | cut -d'|' -f1)
+    # record: the trace up to the step, a one-line verdict, exit 1, no temp file
+    start=$(date +%s)
+    timeout 20 "$SW" record spring --plugin "./$p.so" --steps 20 -o "$p.trace" >out 2>err; rc=$?
+    [ "$rc" -eq 1 ] || fail "record $p: exit $rc, want 1: $(cat err)"
+    [ "$(wc -l < err)" -eq 1 ] || fail "record $p: stderr is not one line: $(cat err)"
+    grep -Eq "$words.* at step 4" err || fail "record $p: message lacks '$words ... at step 4': $(cat err)"
+    ls "$p".trace.tmp.* >/dev/null 2>&1 && fail "record $p left a temporary file"
+    grep -q '^# diverged: step 4,' "$p.trace" || fail "record $p: the trace does not end at step 4"
+    # check --json: a failure with the step, valid JSON, never a pass
+    timeout 20 "$SW" check --json --plugin "./$p.so" --reference euler --scene spring --steps 20 >out 2>err; rc=$?
+    [ "$rc" -eq 1 ] || fail "check $p: exit $rc, want 1: $(cat out err)"
+    awk -f "$json" out > fields || fail "check $p: not JSON: $(cat out)"
+    grep -qx 'pass=false' fields || fail "check $p: not a failure"
+    grep -qx "plugin_failure.kind=$kind" fields || fail "check $p: plugin_failure.kind is not $kind: $(grep plugin_failure fields)"
+    grep -qx 'plugin_failure.step=4' fields || fail "check $p: plugin_failure.step is not 4"
+    grep -qx 'failing_step=4' fields || fail "check $p: failing_step is not 4"
+    # and the trace it recorded, checked against its own plugin: still a failure
+    timeout 20 "$SW" check "$p.trace" --plugin "./$p.so" >out 2>err; rc=$?
+    [ "$rc" -eq 1 ] || fail "check $p.trace against its own plugin: exit $rc, want 1 (a fake pass?)"
+    [ $(( $(date +%s) - start )) -le 12 ] || fail "$p took more than 12 s"
+done
+
+# NaN: a numerical blow-up, reported as such (record exits 0; check fails).
+"$SW" record spring --plugin ./nan.so --steps 20 -o nan.trace 2>err; rc=$?
+[ "$rc" -eq 0 ] && grep -q 'diverged at step 4 .*non-finite' err || fail "nan record: $rc $(cat err)"
+"$SW" check --json --plugin ./nan.so --reference euler --scene spring --steps 20 >out 2>err
+[ $? -eq 1 ] || fail "nan check: not a failure"
+awk -f "$json" out > fields || fail "nan check: not JSON"
+grep -qx 'plugin_diverged.step=4' fields || fail "nan check: plugin_diverged.step is not 4"
+
+# Loading: a loop in sw_plugin_info() and a bad name are bad input (exit 2), one line.
+for p in info-loops badname; do
+    for cmd in "record spring --plugin ./$p.so" "check --json --plugin ./$p.so --reference euler --scene spring"; do
+        # shellcheck disable=SC2086
+        timeout 20 "$SW" $cmd >out 2>err; rc=$?
+        [ "$rc" -eq 2 ] || fail "$cmd: exit $rc, want 2"
+        [ "$(wc -l < err)" -eq 1 ] || fail "$cmd: stderr is not one line: $(cat err)"
+        case "$cmd" in *--json*) awk -f "$json" out > fields || fail "$cmd: not JSON: $(cat out)" ;; esac
+    done
+done
+grep -q "did not return within 2 s" err 2>/dev/null || true
+"$SW" record spring --plugin ./info-loops.so 2>&1 | grep -q 'sw_plugin_info() did not return within 2 s' \
+    || fail "info loop: no watchdog message"
+"$SW" record spring --plugin ./badname.so 2>&1 | grep -q "name 'euler ' is not allowed" \
+    || fail "bad name: no message"
+
+# A looping plugin never holds off a signal: with a 60 s watchdog, timeout's
+# SIGTERM after 1 s still ends record at once, leaving no file behind.
+start=$(date +%s)
+STEPWISE_PLUGIN_TIMEOUT=60 timeout 1 "$SW" record spring --plugin ./loops.so --steps 20 -o sig.trace 2>err; rc=$?
+[ "$rc" -eq 124 ] || fail "record with a looping plugin under timeout 1: exit $rc: $(cat err)"
+[ $(( $(date +%s) - start )) -le 4 ] || fail "SIGTERM did not end record promptly"
+grep -q 'record interrupted at step' err || fail "no interrupt message: $(cat err)"
+ls sig.trace sig.trace.tmp.* >/dev/null 2>&1 && fail "an interrupted record left a file"
+
+# grade: the whole zoo in one command, each a failure or an error, within limits.
+mkdir zoo
+cp exits.so aborts.so segv.so loops.so over-one.so over-many.so over-y.so writes-dim.so nan.so \
+   info-loops.so badname.so zoo/
+cp loops.c zoo/loops-source.c
+printf '# stepwise assignment 1\n# scene: spring\n# integrator: euler\n# dt: 0.02\n# steps: 20\n' > a.txt
+start=$(date +%s)
+timeout 120 "$SW" grade --assignment a.txt --csv g.csv --results r.json zoo >out 2>err; rc=$?
+[ "$rc" -eq 1 ] || fail "grade the zoo: exit $rc, want 1: $(cat out err)"
+[ $(( $(date +%s) - start )) -le 60 ] || fail "grading the zoo took more than 60 s"
+awk -f "$json" r.json > fields || fail "results.json is not JSON"
+grep -qx 'score=0' fields && grep -qx 'max_score=12' fields || fail "zoo score: $(grep score fields | head -3)"
+[ "$(grep -c ',pass,' g.csv)" -eq 0 ] || fail "a zoo plugin passed: $(cat g.csv)"
+[ "$(wc -l < g.csv)" -eq 13 ] || fail "gradebook rows: $(cat g.csv)"
+grep -q 'loops-source.c,fail,4,the plugin did not return' g.csv || fail "looping .c source: $(cat g.csv)"
+grep -q 'info-loops.so,error,,' g.csv || fail "info loop in grade: $(cat g.csv)"
+
+# play: a failing plugin is disabled with a message, the UI goes on, q leaves a sane terminal.
+# (A pause after each exit: on a loaded machine keys typed the instant the
+# shell is back can be lost, which is the harness's flake, not the terminal's.)
+sane() {
+    wait_exit "$1"
+    sleep 0.3
+    s=""
+    for try in 1 2 3; do # the marker is computed by the shell, so the typed line cannot match it
+        type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)\$' | tr '\n' ' '; echo STTY-\$((40+$try))"
+        wait_for "STTY-4$try\$" 5 && s=$(screen | grep -E "STTY-4$try\$" | tail -1)
+        [ -n "$s" ] && break
+    done
+    case "$s" in
+        '') fail "no answer from stty after $1" ;;
+        *-icanon*|*-echo\ *|*-isig*) fail "terminal left raw after $1: $s" ;;
+    esac
+    echo "$s" | grep -q 'icanon' || fail "no stty line after $1: $s"
+}
+tmux_start
+for p in exits aborts segv loops over-one over-many over-y writes-dim; do
+    type_cmd "$SW play spring --plugin ./$p.so -i $p"
+    wait_for "plugin $p disabled" 10 || fail "play: $p was not disabled"
+    wait_for 'spring +euler +dt=0\.02' 5 || fail "play: the UI did not go on under euler after $p"
+    keys q
+    sane "play-$p"
+done
+# NaN is a numerical blow-up: the banner says so and the UI waits for a key.
+type_cmd "$SW play spring --plugin ./nan.so -i nan"
+wait_for 'BLOWN UP at step 4' 10 || fail "play: the NaN plugin's blow-up is not shown"
+keys q
+sane "play-nan"
+# Refused at load: one line, no curses started, a sane shell.
+for p in info-loops badname; do
+    type_cmd "$SW play spring --plugin ./$p.so"
+    wait_for "stepwise: --plugin './$p.so'" 10 || fail "play: no one-line refusal of $p"
+    sane "play-$p"
+done
+# Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.
+type_cmd "STEPWISE_PLUGIN_TIMEOUT=60 $SW play spring --plugin ./loops.so -i loops"
+wait_for 'spring +loops' 5 || fail "play with the looping plugin did not start"
+sleep 1
+keys C-c
+wait_exit "Ctrl-C during a plugin loop"
+sane "play-loop-ctrl-c"
+echo "ok"

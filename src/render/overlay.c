@@ -208,11 +208,43 @@ void sw_draw_panel(sw_app *a, sw_screen *scr, int row, int col, int height, int 
 /* ---- the work-precision plot ------------------------------------------------------ */
 
 /* Which curves lie on one another (errors within 10% at every step size
- * both ran) and which methods are missing, and why: measured, in words. */
+ * both ran) and which methods are missing, and why (first: the plot does
+ * not show them at all): measured, in words. Methods missing for the same
+ * reason share a note. */
 static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_TEXT_LINE], int max)
 {
     int n = 0;
     char err[SW_ERRLEN];
+    /* missing methods, grouped by the reason the system refuses them */
+    static char reason[24][SW_ERRLEN];
+    static char names[24][SW_TEXT_LINE];
+    int nr = 0;
+    for (int k = 0; k < sw_integrator_count(); k++) {
+        const sw_integrator *m = sw_integrator_at(k);
+        int in = 0;
+        for (int i = 0; i < r->nseries; i++)
+            in |= r->series[i].method == m;
+        if (in)
+            continue;
+        if (sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
+            snprintf(err, sizeof err, "not swept");
+        /* the reason without the method's own name in front of it */
+        const char *why = strstr(err, m->name) == err + 1 ? err + strlen(m->name) + 3 : err;
+        int g = 0;
+        while (g < nr && strcmp(reason[g], why) != 0)
+            g++;
+        if (g == nr) {
+            if (nr == 24)
+                continue;
+            snprintf(reason[nr], sizeof reason[nr], "%s", why);
+            names[nr][0] = '\0';
+            nr++;
+        }
+        size_t used = strlen(names[g]);
+        snprintf(names[g] + used, sizeof names[g] - used, "%s%s", used ? ", " : "", m->name);
+    }
+    for (int g = 0; g < nr && n < max; g++)
+        snprintf(notes[n++], SW_TEXT_LINE, "no %.100s: %.300s", names[g], reason[g]);
     for (int i = 0; i < r->nseries && n < max; i++)
         for (int j = i + 1; j < r->nseries && n < max; j++) {
             const sw_bench_series *s = &r->series[i], *u = &r->series[j];
@@ -227,51 +259,42 @@ static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_T
                     apart += fabs(log(x->error / y->error)) > log(1.1);
                 }
             if (common >= 3 && !apart)
-                snprintf(notes[n++], SW_TEXT_LINE, "%c %s and %c %s lie on one another: their errors agree within "
-                         "10%% at all %d step sizes", sw_bench_marker(s->method), s->method->name,
+                snprintf(notes[n++], SW_TEXT_LINE, "%c %s and %c %s coincide: errors within 10%% at all %d steps", sw_bench_marker(s->method), s->method->name,
                          sw_bench_marker(u->method), u->method->name, common);
         }
-    char absent[SW_TEXT_LINE] = "";
-    size_t used = 0;
-    for (int k = 0; k < sw_integrator_count(); k++) {
-        const sw_integrator *m = sw_integrator_at(k);
-        int in = 0;
-        for (int i = 0; i < r->nseries; i++)
-            in |= r->series[i].method == m;
-        if (in)
-            continue;
-        int refused = sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) != SW_OK;
-        if (n < max && refused) {
-            snprintf(notes[n++], SW_TEXT_LINE, "no %s: %s", m->name, err);
-        } else if (used < sizeof absent) {
-            used += (size_t)snprintf(absent + used, sizeof absent - used, "%s%s", used ? ", " : "", m->name);
-        }
-    }
-    if (used && n < max)
-        snprintf(notes[n++], SW_TEXT_LINE, "not swept: %s", absent);
     return n;
 }
 
 void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, int width)
 {
     static char plot[(160 + 1) * 60 + 1];
-    static char notes[8][SW_TEXT_LINE], wrapped[24][SW_TEXT_LINE];
+    static char notes[8][SW_TEXT_LINE], wrapped[24][SW_TEXT_LINE], more[64];
     const sw_bench_report *r = a->bench;
     const char *lines[64];
     int n = 0, inner = width - 4;
-    int nn = workprec_notes(a, r, notes, 8), nw = 0;
-    for (int i = 0; i < nn && nw < 24; i++) {
+    /* the plot keeps 12 rows; whole notes fill what is left */
+    int nn = workprec_notes(a, r, notes, 8), nw = 0, room = height - 2 - 12, dropped = 0;
+    for (int i = 0; i < nn; i++) {
         char part[8][SW_TEXT_LINE];
         int k = sw_text_wrap(notes[i], inner, part, 8);
-        for (int j = 0; j < k && j < 8 && nw < 24; j++)
+        if (k > 8 || nw + k > room - (i < nn - 1 ? 1 : 0) || nw + k > 24) {
+            dropped = nn - i;
+            break;
+        }
+        for (int j = 0; j < k; j++)
             memcpy(wrapped[nw++], part[j], SW_TEXT_LINE);
+    }
+    if (dropped && nw < 24 && room > nw) {
+        snprintf(more, sizeof more, "(%d more note%s: a taller window shows them)", dropped, dropped > 1 ? "s" : "");
+        if (sw_text_cells(more) <= inner)
+            memcpy(wrapped[nw++], more, sizeof more);
     }
     int w = inner < 160 ? inner : 160, h = height - 2 - nw;
     if (h > 60)
         h = 60;
     if (w < 40 || h < 10) {
-        lines[n++] = "the plot needs 44 columns and 12 rows more";
-        lines[n++] = "than the notes: widen the window (w closes)";
+        lines[n++] = "the plot needs 44 columns and 12 rows:";
+        lines[n++] = "widen the window (w closes)";
         sw_draw_box(scr, row, col, height, width, "work-precision (w)", lines, n, SW_STYLE_TEXT);
         return;
     }

@@ -61,7 +61,7 @@ typedef enum sw_phase_coord {
 
 /* A sim's path in the phase plane: one point per frame and per single step. */
 typedef struct sw_phase_hist {
-    double q[SW_PHASE_HIST], v[SW_PHASE_HIST];
+    double q[SW_PHASE_HIST], v[SW_PHASE_HIST], t[SW_PHASE_HIST];
     int head, count;
 } sw_phase_hist;
 

@@ -19,8 +19,9 @@ void sw_app_phase_clear(sw_app *a)
         a->phase[i].head = a->phase[i].count = 0;
 }
 
-static void hist_push(sw_phase_hist *h, double q, double v)
+static void hist_push(sw_phase_hist *h, double t, double q, double v)
 {
+    h->t[h->head] = t;
     h->q[h->head] = q;
     h->v[h->head] = v;
     h->head = (h->head + 1) % SW_PHASE_HIST;
@@ -38,14 +39,14 @@ void sw_app_phase_push(sw_app *a)
         const sw_sim *s = &a->sims[i];
         /* a blown-up run's path ends where it was last finite */
         if (!s->blown && sw_phase_point(&s->sys, s->sys.y, a->phase_particle, a->phase_coord, &q, &v))
-            hist_push(&a->phase[i], q, v);
+            hist_push(&a->phase[i], s->t, q, v);
     }
     /* A reference truth is followed along the main run's time only while
      * the phase view shows it (a closed form is drawn whole by render/). */
     if (a->view == SW_VIEW_PHASE && a->have_truth && a->truth.source == SW_TRUTH_REFERENCE) {
         const double *g = sw_app_ghost(a);
         if (g && sw_phase_point(&a->truth.sys, g, a->phase_particle, a->phase_coord, &q, &v))
-            hist_push(&a->phase[SW_APP_SIMS], q, v);
+            hist_push(&a->phase[SW_APP_SIMS], a->sims[0].t, q, v);
     }
 }
 

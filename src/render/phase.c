@@ -115,15 +115,19 @@ static void to_plane(const sw_canvas *c, const double r[4], double q, double v, 
     *y = (v - r[2]) / (r[3] - r[2]) * 2.0 * c->rows;
 }
 
-static void draw_path(sw_canvas *c, const double r[4], const double *q, const double *v, int n, int start,
-                      int cap, uint32_t glyph, int style)
+/* A path, from the first point at or after time since (-INFINITY: all). */
+static void draw_path(sw_canvas *c, const double r[4], const double *q, const double *v, const double *t, int n,
+                      int start, int cap, double since, uint32_t glyph, int style)
 {
     double px = NAN, py = NAN;
-    for (int k = 0; k < n; k++) {
+    int first = 0;
+    while (t && first < n - 1 && t[(start + first) % cap] < since)
+        first++;
+    for (int k = first; k < n; k++) {
         int i = (start + k) % cap;
         double x, y;
         to_plane(c, r, q[i], v[i], &x, &y);
-        if (k > 0)
+        if (k > first)
             sw_canvas_line(c, px, py, x, y, glyph, style);
         else
             sw_canvas_point(c, x, y, glyph, style);
@@ -165,20 +169,27 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
         sw_canvas_line(c, 0, y0, c->cols, y0, '-', SW_STYLE_WALL);
     if (r[0] < 0 && r[1] > 0)
         sw_canvas_line(c, x0, 0, x0, 2.0 * c->rows, '|', SW_STYLE_WALL);
-    /* the exact orbit behind, then the runs, the main one last */
-    if (ph->n > 1)
-        draw_path(c, r, ph->q, ph->v, ph->n, 0, SW_PHASE_EXACT, SW_GLYPH_GHOST, SW_STYLE_GHOST);
-    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
-    if (!exact && ref->count > 1)
-        draw_path(c, r, ref->q, ref->v, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
-                  SW_PHASE_HIST, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    /* the runs' recent paths (the last 60% of a report time: a few turns,
+     * so each method's present orbit reads apart from its past), the main
+     * one last; the exact orbit on top, so it is never hidden; then where
+     * each run is now */
+    double since = a->sims[0].t - 0.6 * a->scene->duration;
     double now[2 * SW_APP_SIMS];
     int left = 0;
     for (int i = a->nsims - 1; i >= 0; i--) {
         const sw_phase_hist *h = &a->phase[i];
         int start = (h->head - h->count + SW_PHASE_HIST) % SW_PHASE_HIST;
-        draw_path(c, r, h->q, h->v, h->count, start, SW_PHASE_HIST, c->mode == SW_CANVAS_BRAILLE ? 0 : '.',
-                  sim_style[i]);
+        draw_path(c, r, h->q, h->v, h->t, h->count, start, SW_PHASE_HIST, since,
+                  c->mode == SW_CANVAS_BRAILLE ? 0 : i == 0 ? '.' : sim_glyph[i], sim_style[i]);
+    }
+    if (ph->n > 1)
+        draw_path(c, r, ph->q, ph->v, NULL, ph->n, 0, SW_PHASE_EXACT, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
+    if (!exact && ref->count > 1)
+        draw_path(c, r, ref->q, ref->v, NULL, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
+                  SW_PHASE_HIST, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    for (int i = a->nsims - 1; i >= 0; i--) {
+        const sw_phase_hist *h = &a->phase[i];
         now[2 * i] = now[2 * i + 1] = NAN;
         if (h->count > 0) {
             int last = (h->head - 1 + SW_PHASE_HIST) % SW_PHASE_HIST;

@@ -17,21 +17,31 @@
 
 static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
 
-/* Compose once and fail with the screen when a text was cut. */
-static void check_screen(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, const char *what)
+/* Compose once and fail with the screen when a text was cut; the text
+ * of the screen into *out (NULL: not wanted; the caller frees it). */
+static void check_screen_text(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, const char *what,
+                              char **out)
 {
     sw_screen scr;
     char err[SW_ERRLEN];
     ck_assert_int_eq(sw_screen_init(&scr, cols, rows, err, sizeof err), SW_OK);
     sw_frame_push_trails(f, a);
     sw_frame_compose(f, a, side, &scr);
-    if (scr.clipped) {
-        size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
-        char *text = malloc(cap);
-        sw_screen_to_text(&scr, text, cap);
+    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
+    char *text = malloc(cap);
+    sw_screen_to_text(&scr, text, cap);
+    if (scr.clipped)
         ck_abort_msg("%s at %dx%d: %d text(s) cut:\n%s", what, cols, rows, scr.clipped, text);
-    }
     sw_screen_free(&scr);
+    if (out)
+        *out = text;
+    else
+        free(text);
+}
+
+static void check_screen(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, const char *what)
+{
+    check_screen_text(f, a, side, cols, rows, what, NULL);
 }
 
 static void app_for(sw_app *a, const sw_scene *sc, const char *method, double dt)
@@ -176,6 +186,26 @@ START_TEST(every_lesson_page)
                 r->hint = 1;
                 check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
                 r->hint = 0;
+                /* an open question stays in sight under every overlay */
+                const sw_lesson_question *q = &r->lesson.pages[p].question;
+                if (q->text && !r->answered[p]) {
+                    const sw_side *side = sw_runner_side(r, &a, cols);
+                    char want[16];
+                    snprintf(want, sizeof want, "%c) ", SW_ANSWER_FIRST + q->nanswers - 1);
+                    for (int ov = 0; ov < 2; ov++) {
+                        a.help = ov == 0;
+                        a.panel = ov == 1;
+                        char *text;
+                        int scroll = r->scroll;
+                        r->scroll = 1000; /* the pane's end: the answers */
+                        check_screen_text(&f, &a, side, cols, rows, what, &text);
+                        r->scroll = scroll;
+                        ck_assert_msg(strstr(text, want) != NULL, "%s at %dx%d: the %s hides the question's "
+                                      "answer %s:\n%s", what, cols, rows, ov ? "panel" : "help", want, text);
+                        free(text);
+                    }
+                    a.help = a.panel = 0;
+                }
                 for (int page = 1; page < 20; page++) {
                     a.help = page;
                     check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);

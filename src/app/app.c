@@ -94,7 +94,7 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
             if (!cm || sw_integrator_accepts(cm, a->sims[0].sys.ode, err, errlen) != SW_OK)
                 default_compare(a, &a->compare_methods[0], &a->compare_methods[1]);
         }
-        for (int i = 0; i < 2 && a->compare_methods[i]; i++) {
+        for (int i = 0; i < (a->compare_one ? 1 : 2) && a->compare_methods[i]; i++) {
             if (init_sim(a, &a->sims[a->nsims], a->compare_methods[i], err, errlen) != SW_OK)
                 break;
             a->nsims++;
@@ -205,6 +205,7 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
         sw_sim_free(&a->sims[i]);
     a->nsims = 1;
     a->compare = on;
+    a->compare_one = 0;
     if (!on)
         return SW_OK;
     const sw_integrator *d1, *d2;
@@ -226,6 +227,17 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
      * start (a run joined late would carry the main run's drift). */
     sw_app_reset(a);
     return SW_OK;
+}
+
+int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n)
+{
+    int rc = sw_app_set_compare(a, 1, m[0], n > 1 ? m[1] : NULL);
+    a->compare_one = n == 1;
+    if (a->compare_one && a->nsims == 3) { /* one method asked for: not the app's second choice */
+        sw_sim_free(&a->sims[2]);
+        a->nsims = 2;
+    }
+    return rc;
 }
 
 void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }

@@ -72,6 +72,7 @@ typedef struct sw_app {
     sw_sim sims[SW_APP_SIMS];
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
+    int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
     void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
@@ -134,6 +135,9 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m);
 int sw_app_set_dt(sw_app *a, double dt);
 /* Turn compare on with these two methods (NULL: a sensible pair) or off. */
 int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2);
+/* Compare on with exactly these n (1 or 2) methods beside the main one (a
+ * lesson's @compare NAME [NAME]). */
+int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n);
 void sw_app_set_ghost(sw_app *a, int on);
 /* Apply an action (arg: which of its keys, 1-based: 1-9 pick that
  * integrator, 0 the 10th); sets a->message. Returns 1 when it changed anything. */

@@ -45,9 +45,10 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
-    if (pg->compare >= 0)
-        sw_app_set_compare(a, pg->compare, pg->ncompare_with > 0 ? pg->compare_with[0] : NULL,
-                           pg->ncompare_with > 1 ? pg->compare_with[1] : NULL);
+    if (pg->compare >= 0 && pg->ncompare_with > 0)
+        sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);
+    else if (pg->compare >= 0)
+        sw_app_set_compare(a, pg->compare, NULL, NULL);
     if (pg->ghost >= 0)
         sw_app_set_ghost(a, pg->ghost);
     if (pg->paused >= 0)

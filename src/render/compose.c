@@ -2,8 +2,9 @@
  * view), the graph, the lesson pane, the status block and the overlays go.
  * Invariant: every text is fitted (brief forms, then the least important
  * fields dropped) or wrapped to the cells it gets, so nothing is cut in a
- * word or a number at any size from SW_MIN_COLS × SW_MIN_ROWS up; overlays
- * stay inside the picture, so they never hide the lesson's question. */
+ * word or a number at any size from SW_MIN_COLS × SW_MIN_ROWS up; while a
+ * lesson's question is open, overlays stay inside the picture, so they
+ * never hide it. */
 #include "render/screen.h"
 
 #include <math.h>
@@ -462,11 +463,13 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     if (side_w > 0)
         draw_side(side, scr, 0, pic_cols + 1, pic_rows, side_w);
     status_block(a, side, scr, 0);
-    /* overlays, inside the picture (never over the lesson's question) */
+    /* overlays above the status block; over the lesson's pane only while
+     * no question waits there (an overlay never hides the quiz) */
+    int over_cols = side_w > 0 && side->question_open ? pic_cols : scr->cols;
     if (a->workprec && a->bench)
-        sw_draw_workprec(a, scr, 0, 0, pic_rows, pic_cols);
+        sw_draw_workprec(a, scr, 0, 0, pic_rows, over_cols);
     if (a->panel)
-        sw_draw_panel(a, scr, 0, 0, pic_rows, pic_cols);
+        sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
     if (a->help)
-        sw_draw_help(a, scr, 0, 0, pic_rows, pic_cols, side != NULL);
+        sw_draw_help(a, scr, 0, 0, pic_rows, over_cols, side != NULL);
 }

@@ -248,6 +248,11 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
     }
     fit_line(scr, row0 + rows - 2, col0, cols, SW_STYLE_DIM, fl, n);
     n = 0;
+    if (f->region.progress < 1) {
+        snprintf(buf, sizeof buf, "shading %s's region: %.0f%% (each point steps the sandboxed plugin)", m->name,
+                 100 * f->region.progress);
+        field(fl, &n, 11, buf, NULL);
+    }
     if (outside) {
         snprintf(buf, sizeof buf, "X %d outside: they grow", outside);
         field(fl, &n, 10, buf, "X grows");

@@ -15,6 +15,7 @@
 #include "render/camera.h"
 #include "render/screen.h"
 #include "stepwise/stepwise.h"
+#include "util/clock.h"
 #include "util/num.h"
 
 void sw_region_free(sw_region *r)
@@ -74,44 +75,46 @@ static void grid_point(const sw_canvas *c, int gcols, int grows, int gc, int gr,
     *y = vis.ymax - (gr + 0.5) * (vis.ymax - vis.ymin) / grows;
 }
 
-static int shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int order)
+/* Shade the grid from point r->next on, until done or past the budget
+ * (seconds; a plugin's every new mode costs a fresh sandboxed child, so its
+ * region fills in over several frames). Cells first, then, for built-in
+ * methods in Braille mode, the dots of cells on the region's edge. */
+static void shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int order, double budget)
 {
-    int dots = c->mode == SW_CANVAS_BRAILLE, cols = c->cols, rows = c->rows;
-    size_t need = (size_t)cols * (size_t)rows * (dots ? 9 : 1);
-    if (need > r->cap) {
-        unsigned char *s = realloc(r->stable, need);
-        if (!s)
-            return -1;
-        r->stable = s;
-        r->cap = need;
+    int dots = c->mode == SW_CANVAS_BRAILLE, cols = c->cols, rows = c->rows, ncell = cols * rows;
+    int refine = dots && !(m->flags & SW_PLUGIN);
+    unsigned char *cell = r->stable, *dot = r->stable + (size_t)ncell;
+    double start = sw_clock_now();
+    for (; r->next < ncell; r->next++) {
+        if ((r->next & 7) == 0 && sw_clock_now() - start > budget)
+            return;
+        int row = r->next / cols, col = r->next % cols;
+        double x, y;
+        if (!refine && (m->flags & SW_PLUGIN) && col % 2 == 1) {
+            cell[r->next] = cell[r->next - 1]; /* a plugin's grid is two cells wide */
+            continue;
+        }
+        grid_point(c, cols, rows, col, row, &x, &y);
+        cell[r->next] = (unsigned char)stable_at(r, m, order, x, y);
     }
-    unsigned char *cell = r->stable, *dot = r->stable + (size_t)cols * (size_t)rows;
-    for (int row = 0; row < rows; row++)
-        for (int col = 0; col < cols; col++) {
-            double x, y;
-            grid_point(c, cols, rows, col, row, &x, &y);
-            cell[row * cols + col] = (unsigned char)stable_at(r, m, order, x, y);
-        }
-    if (!dots)
-        return 0;
-    for (int row = 0; row < rows; row++)
-        for (int col = 0; col < cols; col++) {
-            int v = cell[row * cols + col], edge = 0;
-            for (int dr = -1; dr <= 1 && !edge; dr++)
-                for (int dc = -1; dc <= 1; dc++) {
-                    int rr = row + dr, cc = col + dc;
-                    if (rr >= 0 && rr < rows && cc >= 0 && cc < cols && cell[rr * cols + cc] != v)
-                        edge = 1;
-                }
-            for (int k = 0; k < 8; k++) {
-                int dc = 2 * col + k % 2, dr = 4 * row + k / 2;
-                double x, y;
-                grid_point(c, 2 * cols, 4 * rows, dc, dr, &x, &y);
-                dot[(size_t)dr * (size_t)(2 * cols) + (size_t)dc] =
-                    edge ? (unsigned char)stable_at(r, m, order, x, y) : (unsigned char)v;
+    for (; dots && r->next < 2 * ncell; r->next++) {
+        if ((r->next & 7) == 0 && sw_clock_now() - start > budget)
+            return;
+        int k = r->next - ncell, row = k / cols, col = k % cols, v = cell[k], edge = 0;
+        for (int dr = -1; dr <= 1 && refine && !edge; dr++)
+            for (int dc = -1; dc <= 1; dc++) {
+                int rr = row + dr, cc = col + dc;
+                if (rr >= 0 && rr < rows && cc >= 0 && cc < cols && cell[rr * cols + cc] != v)
+                    edge = 1;
             }
+        for (int b = 0; b < 8; b++) {
+            int dc = 2 * col + b % 2, dr = 4 * row + b / 2;
+            double x, y;
+            grid_point(c, 2 * cols, 4 * rows, dc, dr, &x, &y);
+            dot[(size_t)dr * (size_t)(2 * cols) + (size_t)dc] =
+                edge ? (unsigned char)stable_at(r, m, order, x, y) : (unsigned char)v;
         }
-    return 0;
+    }
 }
 
 static void axes(sw_canvas *c)
@@ -175,7 +178,9 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     if (order != 1 && order != 2)
         order = a->sims[0].sys.kind == SW_SYS_FLOW ? 1 : 2;
     if (r->extent_method != m || r->extent_order != order) {
-        r->extent = region_extent(r, m, order);
+        /* (a plugin's reach would cost a thousand sandboxed children: its
+         * view is the default one, z zooms out) */
+        r->extent = (m->flags & SW_PLUGIN) ? 0 : region_extent(r, m, order);
         r->extent_method = m;
         r->extent_order = order;
     }
@@ -186,10 +191,18 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     int dots = c->mode == SW_CANVAS_BRAILLE;
     if (r->method != m || r->order != order || r->cols != c->cols || r->rows != c->rows || r->dots != dots ||
         r->half != half) {
-        if (shade(r, c, m, order) != 0) {
-            snprintf(why, whylen, "out of memory");
-            return -1;
+        size_t need = (size_t)c->cols * (size_t)c->rows * 9;
+        if (need > r->cap) {
+            unsigned char *st = realloc(r->stable, need);
+            if (!st) {
+                snprintf(why, whylen, "out of memory");
+                return -1;
+            }
+            r->stable = st;
+            r->cap = need;
         }
+        memset(r->stable, 0, need);
+        r->next = 0;
         r->method = m;
         r->order = order;
         r->cols = c->cols;
@@ -197,6 +210,10 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->dots = dots;
         r->half = half;
     }
+    int total = c->cols * c->rows * (dots ? 2 : 1);
+    if (r->next < total)
+        shade(r, c, m, order, (m->flags & SW_PLUGIN) ? SW_REGION_BUDGET : INFINITY);
+    r->progress = (double)r->next / total;
     sw_canvas_clear(c);
     const unsigned char *cell = r->stable, *dot = r->stable + (size_t)c->cols * (size_t)c->rows;
     if (dots) {
@@ -220,11 +237,21 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     unsigned char grows[2 * SW_TRUTH_MODES];
     int nm = 0;
     double dt = a->dt, rho_max = 0;
+    /* each mode's growth, asked again only when the method, dt or the spectrum change */
+    if (r->marks_method != m || r->marks_dt != dt || r->marks_t != a->spec_t || r->marks_n != a->spec.n) {
+        for (int k = 0; k < a->spec.n; k++) {
+            sw_spectrum one = a->spec;
+            one.n = 1;
+            one.mode[0] = a->spec.mode[k];
+            r->marks_rho[k] = sw_truth_growth_with(r->work, m, &one, dt, NULL);
+        }
+        r->marks_method = m;
+        r->marks_dt = dt;
+        r->marks_t = a->spec_t;
+        r->marks_n = a->spec.n;
+    }
     for (int k = 0; k < a->spec.n; k++) {
-        sw_spectrum one = a->spec;
-        one.n = 1;
-        one.mode[0] = a->spec.mode[k];
-        double rho = sw_truth_growth_with(r->work, m, &one, dt, NULL);
+        double rho = r->marks_rho[k];
         rho_max = isnan(rho) || rho > rho_max ? rho : rho_max;
         const sw_mode *md = &a->spec.mode[k];
         double pts[2][2] = { { md->re * dt, md->im * dt }, { md->pre * dt, md->pim * dt } };

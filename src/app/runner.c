@@ -36,6 +36,12 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     const sw_lesson_page *pg = &r->lesson.pages[page];
     char err[SW_ERRLEN];
     a->locked = 0;
+    if (pg->scene != a->scene) {
+        /* a new scene starts in its own picture: the scene view, its natural size */
+        sw_app_set_view(a, SW_VIEW_SCENE);
+        a->zoom = 1;
+        a->follow = 0;
+    }
     if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
         if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
             snprintf(a->message, sizeof a->message, "%s", err);

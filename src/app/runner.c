@@ -335,6 +335,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     sw_lesson_obs obs;
     sw_runner_obs(a, &obs);
     const sw_lesson_goal *unmet = NULL;
+    int foot = r->side.nlines; /* from here on: what the page asks, kept in sight */
     if (pg->ngoals > 0)
         add_line(r, SW_SIDE_TITLE, "Goals:");
     for (int g = 0; g < pg->ngoals; g++) {
@@ -374,5 +375,6 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
     else
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
+    r->side.pinned = r->side.nlines - foot;
     return &r->side;
 }

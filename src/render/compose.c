@@ -402,16 +402,17 @@ static int side_style(sw_side_kind kind)
     return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
 }
 
-/* Too long for the pane: scroll, with a row that says there is more. */
-static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int height, int width)
+/* Lines first .. first + n - 1 of the pane from row on, scrolled with a
+ * row that says there is more above or below. */
+static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int n)
 {
-    int more_above, more_below, body, first = side->scroll ? *side->scroll : 0;
+    int more_above = 0, more_below = 0, body = height, first = side->scroll ? *side->scroll : 0;
     for (int pass = 0; pass < 3; pass++) {
         more_above = first > 0;
         body = height - more_above;
-        more_below = first + body < side->nlines;
+        more_below = first + body < n;
         body -= more_below;
-        int max_first = side->nlines - body;
+        int max_first = n - body;
         if (first > max_first)
             first = max_first;
         if (first < 0)
@@ -422,11 +423,30 @@ static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int
     int r = row;
     if (more_above)
         sw_screen_text(scr, r++, col, width, SW_STYLE_DIM, "(Up: more above)");
-    for (int i = 0; first + i < side->nlines && i < body; i++)
+    for (int i = 0; first + i < n && i < body; i++)
         sw_screen_text(scr, r++, col, width, side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT),
                        side->lines[first + i]);
     if (more_below)
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_DIM, "(Down: more below)");
+}
+
+/* The lesson pane: when it is too long, the text scrolls and what the page
+ * asks (goals, question) stays at its foot, as long as that leaves the text
+ * a third of the pane. */
+static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int height, int width)
+{
+    int pinned = side->pinned;
+    if (side->nlines <= height || pinned <= 0 || pinned > height * 2 / 3) {
+        draw_scrolled(side, scr, row, col, height, width, side->nlines);
+        return;
+    }
+    int text = height - pinned;
+    draw_scrolled(side, scr, row, col, text, width, side->nlines - pinned);
+    for (int i = 0; i < pinned; i++) {
+        int k = side->nlines - pinned + i;
+        sw_screen_text(scr, row + text + i, col, width, side_style(side->kinds ? side->kinds[k] : SW_SIDE_TEXT),
+                       side->lines[k]);
+    }
 }
 
 /* ---- the frame ---------------------------------------------------------------------- */

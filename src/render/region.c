@@ -143,7 +143,8 @@ static void axes(sw_canvas *c)
         len = snprintf(lab, sizeof lab, "%g", -v);
         if (sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows && col - len / 2 >= 0)
             sw_canvas_text(c, col - len / 2, row + 1, lab, SW_STYLE_DIM);
-        if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row)) {
+        /* (the top and bottom rows are kept for the arrows of marks beyond them) */
+        if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row) && row >= 1 && row <= c->rows - 2) {
             sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
             len = snprintf(lab, sizeof lab, "%gi", v);
             if (col + 1 + len <= c->cols)
@@ -153,8 +154,9 @@ static void axes(sw_canvas *c)
     int col, row;
     if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
         sw_canvas_text(c, c->cols - 2, row - 1, "Re", SW_STYLE_DIM);
-    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col + 3 <= c->cols)
-        sw_canvas_text(c, col + 1, 0, "Im", SW_STYLE_DIM);
+    /* left of the axis: a mark beyond the top gets its arrow and label on the right */
+    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col >= 2 && c->rows > 2)
+        sw_canvas_text(c, col - 2, 1, "Im", SW_STYLE_DIM);
 }
 
 int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *outside, int *shown, char *why,

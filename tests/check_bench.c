@@ -138,7 +138,7 @@ START_TEST(test_fit_synthetic)
 }
 END_TEST
 
-/* gyre has no closed form: the report's truth is the rk45 reference. Checked
+/* gyre has no closed form: the report's truth is the dop853 reference. Checked
  * against rk4 at dt = 1e-3 (an independent method; its error ~ C·dt^4 is far
  * below the 1e-7 allowed here) and against its own error estimate. */
 START_TEST(test_reference_against_rk4)
@@ -157,7 +157,7 @@ START_TEST(test_reference_against_rk4)
     double d = 0;
     for (int i = 0; i < r->dim; i++)
         d = fmax(d, fabs(s.sys.y[i] - r->truth[i]));
-    ck_assert_msg(d < 1e-7, "rk45 reference and rk4 at dt 1e-3 differ by %g", d);
+    ck_assert_msg(d < 1e-7, "the reference and rk4 at dt 1e-3 differ by %g", d);
     sw_sim_free(&s);
     sw_bench_free(r);
     free(r);

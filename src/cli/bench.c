@@ -18,7 +18,7 @@ static const char usage_text[] =
     "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
     "                      [--set NAME=VALUE] [--quick] [--repeats N] [--plugin FILE]\n"
     "\n"
-    "Work-precision report: for each scene with an exact solution or an rk45 reference\n"
+    "Work-precision report: for each scene with an exact solution or a tight reference\n"
     "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
     "runs the scene to its report time over a geometric sweep of step sizes (from 8x the\n"
     "scene's dt, or twice the method's stability limit when the scene knows w, halving;\n"
@@ -134,8 +134,9 @@ static void print_report(const sw_bench_report *r, const char *skipped)
     if (r->source == SW_BENCH_EXACT)
         printf("error against the exact solution at t = %g\n", r->t_report);
     else
-        printf("error against an rk45 reference at t = %g (rtol 1e-12, atol 1e-14, %ld evaluations;"
-               " its own error <= %.1e)\n", r->t_report, r->ref_evals, r->ref_error);
+        printf("error against a %s reference at t = %g (rtol %g, atol %g, %ld evaluations;"
+               " its own error <= %.1e)\n", sw_truth_reference_method()->name, r->t_report, SW_TRUTH_RTOL,
+               SW_TRUTH_ATOL, r->ref_evals, r->ref_error);
     printf("   parameters:");
     for (int i = 0; i < sc->nparams; i++)
         printf(" %s=%g", sc->params[i].name, r->p[i]);

@@ -1,6 +1,6 @@
 /* Work–precision sweeps: each method runs a scene to its report time at a
  * geometric sequence of step sizes (tolerances for adaptive methods); each run
- * records its error against the exact solution or a cached rk45 reference,
+ * records its error against the exact solution or a cached dop853 reference (sw_truth_reference_method),
  * its evaluations and its wall time. Invariant: every run is an sw_sim
  * advanced by sw_sim_run_until, exactly as the UI and the recorder advance
  * it; this file measures and fits (bench_plot.c renders), it never prints. */
@@ -131,8 +131,8 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
         r->source = SW_BENCH_EXACT;
     } else if (sc->reference) {
         /* The reference, and a 10x looser run whose distance from it bounds
-         * the reference's own error from above (DP5's global error scales
-         * roughly linearly with the tolerance); both within the budget. */
+         * the reference's own error from above (an embedded
+         * method's global error scales roughly with the tolerance); both within the budget. */
         r->source = SW_BENCH_REFERENCE;
         sw_truth tr;
         double cost = INFINITY;

@@ -86,11 +86,11 @@ void sw_bench_config_default(sw_bench_config *c);
 void sw_bench_config_quick(sw_bench_config *c);
 
 /* 1 when scene sc with parameters p (NULL: defaults) has an exact solution or
- * a trustworthy rk45 reference; 0 with the reason in why otherwise. */
+ * a trustworthy reference (sw_truth_reference_method); 0 with the reason in why otherwise. */
 int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t whylen);
 
 /* Prepare r for sc with parameters p (NULL: defaults): the true state at the
- * report time from the exact solution or, failing that, a tight rk45 run
+ * report time from the exact solution or, failing that, a tight run of the reference method
  * (rtol 1e-12, atol 1e-14) computed once here. 0, SW_EINVAL (no reference),
  * SW_ENOMEM or SW_EDIVERGED (the reference run failed). r is freed on failure. */
 int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen);

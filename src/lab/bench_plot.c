@@ -365,9 +365,10 @@ int sw_bench_write_svg(FILE *out, const sw_bench_report *const *reports, int nre
         xml_text(out, r->scene->name);
         fprintf(out, "\">\n<text x=\"20\" y=\"%.2f\" font-size=\"15\" font-weight=\"bold\">", y0 + 24);
         xml_text(out, r->scene->name);
-        fprintf(out, " (%s at t = %g)</text>\n", r->source == SW_BENCH_EXACT ? "exact solution"
-                                                                           : "rk45 reference",
-                r->t_report);
+        if (r->source == SW_BENCH_EXACT)
+            fprintf(out, " (exact solution at t = %g)</text>\n", r->t_report);
+        else
+            fprintf(out, " (%s reference at t = %g)</text>\n", sw_truth_reference_method()->name, r->t_report);
         fprintf(out, "<g class=\"legend\">\n");
         for (int i = 0; i < r->nseries; i++) {
             double lx = 20 + (i % 7) * 135, ly = y0 + 46 + (i / 7) * 18;

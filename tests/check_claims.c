@@ -1077,6 +1077,54 @@ static double key_euler(void) { return key_of("euler"); }
 static double key_rk4(void) { return key_of("rk4"); }
 static double key_rk45(void) { return key_of("rk45"); }
 
+/* ---- the pages on the phase and stability-region views (issue 13) ---- */
+
+static double l3_phase_euler(void) { return drift_at("spring", "c=0", "euler", 0.02, 10); }
+static double l3_phase_be(void) { return -drift_at("spring", "c=0", "implicit-euler", 0.02, 10); }
+static double l3_phase_se(void) { return max_abs_drift("spring", "c=0", "symplectic-euler", 0.02, 10); }
+/* The damped stiff spring's oscillating mode (λ with Im λ > 0). */
+static sw_mode l5_mode(void)
+{
+    sw_spectrum sp = spectrum0("spring", STIFF);
+    ck_assert_int_ge(sp.n, 1);
+    sw_mode md = sp.mode[0];
+    if (md.im < 0)
+        md.im = -md.im, md.pim = -md.pim;
+    return md;
+}
+static double l5_lambda_re(void) { return l5_mode().re; }
+static double l5_lambda_im(void) { return l5_mode().im; }
+static double l5_half_c(void) { return 10.0 / (2 * l5_m()); }
+static double l5_mark_re(void) { return l5_mode().re * 0.005; }
+static double l5_mark_im(void) { return l5_mode().im * 0.005; }
+static double l5_growth(void) { return growth0("spring", STIFF, "euler", 0.005); }
+static double l5_growth_formula(void) { return hypot(1 + l5_mark_re(), l5_mark_im()); }
+static double l6_region_omega(void) { return spectrum0("spring", "k=10000 c=0").largest; }
+static double l6_mark(double dt) { return l6_region_omega() * dt; }
+static double l6_mark_005(void) { return l6_mark(0.005); }
+static double l6_mark_002(void) { return l6_mark(0.02); }
+static double l6_mark_004(void) { return l6_mark(0.04); }
+static double l6_dt_plus2(void) { return page_dt_after(L6, "RK4's region", SW_ACT_DT_DOUBLE, 2); }
+static double l6_dt_plus3(void) { return page_dt_after(L6, "RK4's region", SW_ACT_DT_DOUBLE, 3); }
+static double l6_inside_002(void) { return growth0("spring", "k=10000 c=0", "rk4", 0.02); }
+static double l6_outside_004(void) { return growth0("spring", "k=10000 c=0", "rk4", 0.04); }
+static double one_plus(void) { return 1 + SW_TRUTH_NEUTRAL; }
+static double l7_region_swing(void) { return l7_slow() * 0.04; }
+static double l7_region_stretch(void) { return l7_fast() * 0.04; }
+static double l7_region_growth(void) { return growth0("stiff-spring", NULL, "implicit-euler", 0.04); }
+/* backward Euler divides each mode by 1 - Δt·λ: its growth is the largest 1/|1 - Δt·λ| */
+static double l7_region_formula(void)
+{
+    sw_spectrum sp = spectrum0("stiff-spring", NULL);
+    double worst = 0;
+    for (int k = 0; k < sp.n; k++)
+        worst = fmax(worst, 1 / hypot(1 - 0.04 * sp.mode[k].re, 0.04 * sp.mode[k].im));
+    return worst;
+}
+static double l7_dt_plus1(void) { return page_dt_after(L7, "Backward Euler's region", SW_ACT_DT_DOUBLE, 1); }
+static double l8_verlet_bound(void) { return max_abs_drift("orbit", NULL, "verlet", 0.2, 1000); }
+static double l8_rk4_100(void) { return -drift_at("orbit", NULL, "rk4", 0.2, 100); }
+
 static double l2_dt_plus2(void) { return page_dt_after(L2, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
 static double l5_dt_minus3(void) { return page_dt_after(L5, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
 static double l7_dt_plus3(void) { return page_dt_after(L7, "Stiff: a slow swing and a fast stretch", SW_ACT_DT_DOUBLE, 3); }
@@ -1308,6 +1356,9 @@ static const claim claims[] = {
     { L3, "@answer b) {20} | That is the positions alone", l3_chain_positions, EXACT, 0, R_COUNT, NULL },
     { L3, "@answer b) {4}: position (x, y) and velocity (vx, vy)", l3_particle_dim, EXACT, 0, R_COUNT, NULL },
     { L3, "In 3-D, as in the lecture, it is {6}.", l3_3d, EXACT, 0, R_MATH, NULL },
+    { L3, "By t = 10 Euler's energy is up {557} %", l3_phase_euler, ROUNDED, 0, R_ROUND, NULL },
+    { L3, "backward Euler's down {86} %", l3_phase_be, ROUNDED, 0, R_ROUND, NULL },
+    { L3, "only wobbles, within {3.3} %", l3_phase_se, ATMOST, 0.1, "a bound the run comes within 10 % of", NULL },
     /* lesson 4 */
     { L4, "restitution e (here {0.8})", l4_e, EXACT, 0, R_COUNT, NULL },
     { L4, "e = 1 is a perfect bounce", l4_perfect, ABS, 0.002, "a ball from 4 m with e = 1 rises back to 4 m (contact at step ends: 1e-3)", one },
@@ -1354,8 +1405,17 @@ static const claim claims[] = {
     { L5, "RK4 is stable on an oscillator while ωΔt < 2√2 ≈ {2.83}", rk4_wdt, ROUNDED, 0, R_ROUND, NULL },
     { L5, "while ωΔt < 2√2 ≈ {2.83}; here", two_root_two, ROUNDED, 0, R_MATH, NULL },
     { L5, "here ωΔt = {0.5}", l5_wdt, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "here λ = {-5} ± 99.9i", l5_lambda_re, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "here λ = -5 ± {99.9}i", l5_lambda_im, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "(decay rate c/2m = {5}, ω ≈ 100)", l5_half_c, EXACT, 0, R_MATH, NULL },
+    { L5, "(decay rate c/2m = 5, ω ≈ {100})", l5_stiff_omega, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "Euler multiplies a mode by 1 + Δt·λ per step", l5_growth, REL, 1e-12, "ρ of Euler's one-step map is |1 + Δt·λ| to rounding", l5_growth_formula },
+    { L5, "The marks are Δt·λ = {-0.025} ± 0.5i", l5_mark_re, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "The marks are Δt·λ = -0.025 ± {0.5}i", l5_mark_im, ROUNDED, 0, R_ROUND, NULL },
+    { L5, "|1 + Δt·λ| = {1.095} per step", l5_growth, ROUNDED, 0, "the meter's growth per step, to the text's digits", NULL },
+    { L5, "once Δt is below c/k = {0.001}", l5_light_limit, REL, 1e-6, "Euler's limit from the one-step map on the damped spring is c/k", NULL },
     /* lesson 6 */
-    { L6, "divide the error by 2² = {4}. Measure it.", l6_ratio_mid, ABS, 0.5, R_RATIO, NULL },
+    { L6, "divide the error by 2² = {4}. Measure it:", l6_ratio_mid, ABS, 0.5, R_RATIO, NULL },
     { L6, "divide the error by 2⁴ = {16}. Switch", l6_ratio_rk4, ABS, 2, R_RATIO, NULL },
     { L6, "  euler      0.0125   {503}    0.04", l6_steps_euler, EXACT, 0, R_COUNT, NULL },
     { L6, "  euler      0.0125   503    {0.04}", l6_err_euler, ROUNDED, 0, R_ROUND, NULL },
@@ -1379,6 +1439,16 @@ static const claim claims[] = {
     { L6, "gains 16× for RK4 against {2}× for Euler", l6_euler_gain, ABS, 0.3, "the goals' tolerance for 2", NULL },
     { L6, "oscillator it blows up once ωΔt > 2√2 ≈ {2.83}", rk4_wdt, ROUNDED, 0, R_ROUND, NULL },
     { L6, "@answer a) About {0.028} | Yes: 2.83 / 100.", l6_limit100, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "its edge there is at 2√2 ≈ {2.83}", rk4_wdt, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "This spring has ω = {100}", l6_region_omega, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "the marks Δt·λ sit at ±{0.5}i", l6_mark_005, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "at Δt = {0.02} the marks are at ±2i", l6_dt_plus2, EXACT, 0, "the step two presses of + give", NULL },
+    { L6, "the marks are at ±{2}i, still inside", l6_mark_002, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "still inside; at", l6_inside_002, ATMOST, 0, "inside: RK4's growth at ωΔt = 2 is at most one", one_plus },
+    { L6, "Δt = {0.04} they are at ±4i", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
+    { L6, "they are at ±{4}i, outside the region", l6_mark_004, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "outside the region, and the meter says GROWS", l6_outside_004, ATLEAST, 0, "outside: RK4's growth at ωΔt = 4 is above one", one_plus },
+    { L6, "@hint Press + three times: 0.01, 0.02, {0.04}.", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "ωΔt would be {28}", l6_twenty_eight, EXACT, 0, R_MATH, NULL },
     { L6, "over one turn (t = {2π})", l6_report_time, REL, 1e-12, R_COUNT, NULL },
     /* lesson 7 */
@@ -1411,6 +1481,10 @@ static const claim claims[] = {
     { L7, "press {7} if you switched away.", key_be, EXACT, 0, "the key that picks the method", NULL },
     { L7, "linear-implicit-euler (press {8})", key_lbe, EXACT, 0, "the key that picks the method", NULL },
     { L7, "@hint The page chose implicit-midpoint; press {9} if you switched away.", key_im, EXACT, 0, "the key that picks the method", NULL },
+    { L7, "A step divides each mode by 1 - Δt·λ", l7_region_growth, REL, 1e-9, "ρ of backward Euler's map is the largest 1/|1 - Δt·λ|", l7_region_formula },
+    { L7, "(near ±{0.125}i at Δt = 0.04)", l7_region_swing, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "the stretch's (±{4}i, beyond", l7_region_stretch, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "@hint Press + once: {0.08}.", l7_dt_plus1, EXACT, 0, "the step one press of + gives", NULL },
     /* lesson 8 */
     { L8, "(eccentricity {0.5}; one orbit", l8_e, EXACT, 0, R_COUNT, NULL },
     { L8, "takes 2π ≈ {6.3} seconds", l8_period, ROUNDED, 0, "Kepler's period from the scene's energy", NULL },
@@ -1431,6 +1505,8 @@ static const claim claims[] = {
     { L8, "So at Δt = {0.05} Verlet does the same work per second as RK4 at Δt = 0.2", l8_same_work, EXACT, 0, R_COUNT, NULL },
     { L8, "@hint Press - twice: 0.1, {0.05}.", l8_dt_minus2, EXACT, 0, "the step two presses of - give", NULL },
     { L8, "@hint Use verlet (press {6})", key_verlet, EXACT, 0, "the key that picks the method", NULL },
+    { L8, "its energy wobbles within {12.3} % however", l8_verlet_bound, ATMOST, 0.05, "the largest wobble over 1000 s, a bound it comes within 5 % of", NULL },
+    { L8, "by t = 100 its energy is down {15.5} %", l8_rk4_100, ROUNDED, 0, R_ROUND, NULL },
     { L8, "@hint Press {6}, or i until the status line says verlet.", key_verlet, EXACT, 0, "the key that picks the method", NULL },
     { L8, "@hint Press {1}, or I until the status line says euler.", key_euler, EXACT, 0, "the key that picks the method", NULL },
     /* lesson 9 */

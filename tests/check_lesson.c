@@ -375,7 +375,7 @@ END_TEST
 /* Which observation field a case sets before evaluating. */
 enum field { F_NONE, F_SCENE, F_INTEGRATOR, F_DT, F_T, F_STEPS, F_EVALS, F_SPEED, F_ENERGY, F_ERROR,
              F_DRIFT, F_RATIO, F_ACCEPTED, F_REJECTED, F_PARAM_C, F_BLOWN, F_COMPARE, F_GHOST,
-             F_PAUSED, F_RECORDED };
+             F_PAUSED, F_RECORDED, F_PHASE, F_REGION };
 
 static const struct goal_case {
     const char *scene;  /* the page's scene, and any settings after it (goals are checked against them) */
@@ -452,6 +452,10 @@ static const struct goal_case {
     { "spring", "paused == false", F_PAUSED, 1, NULL, 0 },
     { "spring", "recorded", F_RECORDED, 1, NULL, 1 },
     { "spring", "recorded", F_RECORDED, 0, NULL, 0 },
+    { "spring", "phase", F_PHASE, 1, NULL, 1 },
+    { "spring", "phase", F_PHASE, 0, NULL, 0 },
+    { "spring", "not region", F_REGION, 0, NULL, 1 },
+    { "spring", "region", F_REGION, 0, NULL, 0 },
 };
 
 #define NGOALS ((int)(sizeof goal_cases / sizeof goal_cases[0]))
@@ -502,6 +506,8 @@ START_TEST(goal_cases_evaluate)
     case F_GHOST: obs.ghost = (int)c->value; break;
     case F_PAUSED: obs.paused = (int)c->value; break;
     case F_RECORDED: obs.recorded = (int)c->value; break;
+    case F_PHASE: obs.phase = (int)c->value; break;
+    case F_REGION: obs.region = (int)c->value; break;
     case F_NONE: break;
     }
     ck_assert_msg(sw_lesson_goal_met(g, &obs) == c->met, "goal '%s' (case %d) should %sbe met", c->goal, _i,

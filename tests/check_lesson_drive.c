@@ -171,10 +171,10 @@ START_TEST(gating_and_answers)
     ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
     ck_assert_int_eq(r.page, 1);
     ck_assert(r.complete[0]);
-    press(&r, &a, 'a');
+    press(&r, &a, 'A');
     ck_assert(!r.answered[1]);
     ck_assert_ptr_nonnull(strstr(r.feedback, "No: one evaluation"));
-    press(&r, &a, 'b');
+    press(&r, &a, 'B');
     ck_assert(r.answered[1] && r.complete[1] && r.finished);
     ck_assert_int_eq(sw_progress_get("gate.lesson"), 2);
     press(&r, &a, 'N');

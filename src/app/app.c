@@ -94,7 +94,7 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
             if (!cm || sw_integrator_accepts(cm, a->sims[0].sys.ode, err, errlen) != SW_OK)
                 default_compare(a, &a->compare_methods[0], &a->compare_methods[1]);
         }
-        for (int i = 0; i < 2 && a->compare_methods[i]; i++) {
+        for (int i = 0; i < (a->compare_one ? 1 : 2) && a->compare_methods[i]; i++) {
             if (init_sim(a, &a->sims[a->nsims], a->compare_methods[i], err, errlen) != SW_OK)
                 break;
             a->nsims++;
@@ -105,6 +105,9 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
     a->error_ratio = NAN;
     for (int i = 0; i < SW_APP_SIMS; i++)
         series_clear(&a->series[i]);
+    if (!sw_phase_available(&a->sims[0].sys, a->phase_particle, a->phase_coord))
+        sw_phase_default(&a->sims[0].sys, &a->phase_particle, &a->phase_coord);
+    sw_app_phase_clear(a);
     return SW_OK;
 }
 
@@ -117,10 +120,14 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     a->dt = dt > 0 ? dt : sc->dt;
     a->speed = 1.0;
     a->slowmo = 1.0;
+    a->zoom = 1.0;
     a->error_ratio = NAN;
     if (!m)
         m = sw_integrator_find(sc->integrator);
-    return build(a, m, err, errlen);
+    int rc = build(a, m, err, errlen);
+    if (rc == SW_OK)
+        sw_phase_default(&a->sims[0].sys, &a->phase_particle, &a->phase_coord);
+    return rc;
 }
 
 void sw_app_free(sw_app *a)
@@ -154,7 +161,8 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
         memcpy(a->p, old_p, sizeof old_p);
         a->dt = old_dt;
         build(a, m, e2, sizeof e2);
-    }
+    } else if (sc != old_scene)
+        sw_phase_default(&a->sims[0].sys, &a->phase_particle, &a->phase_coord);
     return rc;
 }
 
@@ -197,6 +205,7 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
         sw_sim_free(&a->sims[i]);
     a->nsims = 1;
     a->compare = on;
+    a->compare_one = 0;
     if (!on)
         return SW_OK;
     const sw_integrator *d1, *d2;
@@ -209,17 +218,26 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
         const sw_integrator *m = a->compare_methods[i];
         if (!m || sw_integrator_accepts(m, main->sys.ode, err, sizeof err) != SW_OK)
             continue;
-        sw_sim *s = &a->sims[a->nsims];
-        if (init_sim(a, s, m, err, sizeof err) != SW_OK)
+        if (init_sim(a, &a->sims[a->nsims], m, err, sizeof err) != SW_OK)
             continue;
-        /* Compare runs start with the main run's state and time, so the race
-         * starts now, from where the student is. */
-        memcpy(s->sys.y, main->sys.y, (size_t)main->sys.ode->dim * sizeof *s->sys.y);
-        s->t = main->t;
-        s->steps = main->steps;
         a->nsims++;
     }
+    /* A fair race: every method starts together from the scene's start at
+     * t = 0, so each one's energy and error are measured against its own
+     * start (a run joined late would carry the main run's drift). */
+    sw_app_reset(a);
     return SW_OK;
+}
+
+int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n)
+{
+    int rc = sw_app_set_compare(a, 1, m[0], n > 1 ? m[1] : NULL);
+    a->compare_one = n == 1;
+    if (a->compare_one && a->nsims == 3) { /* one method asked for: not the app's second choice */
+        sw_sim_free(&a->sims[2]);
+        a->nsims = 2;
+    }
+    return rc;
 }
 
 void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
@@ -235,6 +253,7 @@ void sw_app_reset(sw_app *a)
     a->slowmo = 1.0;
     for (int i = 0; i < SW_APP_SIMS; i++)
         series_clear(&a->series[i]);
+    sw_app_phase_clear(a);
     sw_app_watch_restart(a);
 }
 
@@ -339,6 +358,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         a->t_goal = a->sims[0].t;
         sw_app_watch_feed(a);
         sw_app_plugin_guard(a);
+        sw_app_phase_push(a);
         return 1;
     case SW_ACT_RESET:
         sw_app_reset(a);
@@ -354,8 +374,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_COMPARE:
         sw_app_set_compare(a, !a->compare, NULL, NULL);
         if (a->compare && a->nsims > 1)
-            snprintf(a->message, sizeof a->message, "compare: %s, %s and %s", a->sims[0].method->name,
-                     a->sims[1].method->name, a->nsims > 2 ? a->sims[2].method->name : "-");
+            snprintf(a->message, sizeof a->message, "compare %s, %s%s%s from t = 0 together (l: side by side)",
+                     a->sims[0].method->name, a->sims[1].method->name, a->nsims > 2 ? " and " : "",
+                     a->nsims > 2 ? a->sims[2].method->name : "");
         else
             snprintf(a->message, sizeof a->message, "compare off");
         return 1;
@@ -374,12 +395,15 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     }
     case SW_ACT_TRAILS:
         a->trails = !a->trails;
+        snprintf(a->message, sizeof a->message, "trails %s", a->trails ? "on" : "off");
         return 1;
     case SW_ACT_GRAPH:
         a->graph = !a->graph;
+        snprintf(a->message, sizeof a->message, "graph %s", a->graph ? "on" : "off");
         return 1;
     case SW_ACT_BRAILLE:
         a->braille = !a->braille;
+        snprintf(a->message, sizeof a->message, "%s", a->braille ? "Braille dots" : "one character per point");
         return 1;
     case SW_ACT_PANEL:
         a->panel = !a->panel;
@@ -424,13 +448,13 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     }
     case SW_ACT_HELP:
-        a->help = !a->help;
+        a->help++; /* the next page; the composer closes it after the last */
         return 1;
     case SW_ACT_QUIT:
         a->quit = 1;
         return 1;
     default:
-        return 0; /* lesson actions belong to the lesson runner */
+        return sw_app_view_apply(a, act); /* lesson actions belong to the lesson runner */
     }
 }
 
@@ -441,6 +465,7 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
     unsigned contexts = SW_CTX_PLAY | (a->panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
     if (!sw_key_lookup(key, contexts, &c, &arg))
         return 0;
+    a->message[0] = '\0'; /* a message stays until the next key */
     int changed = sw_app_apply(a, c->action, arg);
     if (a->record_path[0] && (a->sims[0].method != a->record_method || a->dt != a->record_dt))
         sw_app_record_stop(a); /* a trace describes one method at one dt */
@@ -476,37 +501,20 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
             behind = 1;
     }
     if (behind) {
-        double got = a->sims[0].t - (a->t_goal - want);
+        /* drop the backlog: slow motion, not a spiral of death; the race
+         * goes on from the slowest run still going, so all stay level */
+        double slowest = a->sims[0].t;
+        for (int i = 1; i < a->nsims; i++)
+            if (!a->sims[i].blown && a->sims[i].t < slowest)
+                slowest = a->sims[i].t;
+        double got = slowest - (a->t_goal - want);
         a->slowmo = got > 0 ? want / got : INFINITY;
-        a->t_goal = a->sims[0].t; /* drop the backlog: slow motion, not a spiral of death */
+        a->t_goal = slowest;
     } else {
         a->slowmo = 1.0;
     }
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
     sw_app_plugin_guard(a);
-}
-
-void sw_app_status(sw_app *a, int i, char *buf, size_t len)
-{
-    const sw_sim *s = &a->sims[i];
-    size_t n = (size_t)snprintf(buf, len, "%s  %s  dt=%g  t=%.3f  steps %ld", i == 0 ? a->scene->name : "  vs",
-                                s->method->name, s->dt, s->t, s->steps);
-    if (i == 0 && a->steps_per_sec > 0 && n < len)
-        n += (size_t)snprintf(buf + n, len - n, "  %.0f steps/s", a->steps_per_sec);
-    if (n < len)
-        n += (size_t)snprintf(buf + n, len - n, "  evals %ld", sw_sim_evals(s));
-    double drift = sw_sim_energy_drift(s);
-    if (isfinite(drift) && n < len)
-        n += (size_t)snprintf(buf + n, len - n, "  energy %+.3g%%", drift);
-    double err = sw_app_error(a, i);
-    if (isfinite(err) && n < len)
-        n += (size_t)snprintf(buf + n, len - n, "  error %.2e", err);
-    if ((s->method->flags & SW_ADAPTIVE) && n < len) {
-        long acc, rej;
-        sw_sim_step_counts(s, &acc, &rej);
-        n += (size_t)snprintf(buf + n, len - n, "  accepted %ld rejected %ld", acc, rej);
-    }
-    if (s->blown && n < len)
-        snprintf(buf + n, len - n, "  BLOWN UP at step %ld", s->blow_step);
+    sw_app_phase_push(a);
 }

@@ -39,6 +39,32 @@ typedef struct sw_app_meter {
     int growing;                /* physically growing modes left out */
 } sw_app_meter;
 
+/* What the picture shows. */
+typedef enum sw_app_view {
+    SW_VIEW_SCENE = 0,   /* the particles in the plane */
+    SW_VIEW_PHASE = 1,   /* a coordinate against its velocity */
+    SW_VIEW_REGION = 2   /* the method's region of absolute stability, dt x eigenvalues marked */
+} sw_app_view;
+
+/* The phase view's coordinates (app/phase.c). */
+typedef enum sw_phase_coord {
+    SW_PHASE_STRETCH,    /* a spring's length minus its rest length, and its rate */
+    SW_PHASE_ANGLE,      /* the angle about a spring's anchor from straight down, and its rate */
+    SW_PHASE_RADIUS,     /* the distance from the central body, and its rate */
+    SW_PHASE_X,          /* x and vx */
+    SW_PHASE_Y,          /* y and vy */
+    SW_PHASE_PLANE,      /* a flow's point: x against y (its whole state) */
+    SW_PHASE_NCOORDS
+} sw_phase_coord;
+
+#define SW_PHASE_HIST 2048     /* phase points kept per sim (a ring) */
+
+/* A sim's path in the phase plane: one point per frame and per single step. */
+typedef struct sw_phase_hist {
+    double q[SW_PHASE_HIST], v[SW_PHASE_HIST], t[SW_PHASE_HIST];
+    int head, count;
+} sw_phase_hist;
+
 typedef struct sw_app {
     const sw_scene *scene;
     double p[SW_MAX_PARAMS];
@@ -46,6 +72,7 @@ typedef struct sw_app {
     sw_sim sims[SW_APP_SIMS];
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
+    int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
     void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
@@ -84,6 +111,14 @@ typedef struct sw_app {
      * last reset or change of method or dt (relative to its value then) */
     sw_watch watch;
     double watch_m0;
+    /* the picture (app/view.c): which view, the camera, compare's layout */
+    sw_app_view view;
+    int follow;                 /* 1: the camera follows the particles; 0: fixed on the scene's view */
+    double zoom;                /* the view's spans times this (1: the scene's natural view) */
+    int lanes;                  /* compare: each method in its own lane */
+    int phase_particle;         /* the phase view's particle and coordinate */
+    sw_phase_coord phase_coord;
+    sw_phase_hist phase[SW_APP_SIMS + 1]; /* the sims' paths, then the truth's (reference runs) */
 } sw_app;
 
 
@@ -100,6 +135,9 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m);
 int sw_app_set_dt(sw_app *a, double dt);
 /* Turn compare on with these two methods (NULL: a sensible pair) or off. */
 int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2);
+/* Compare on with exactly these n (1 or 2) methods beside the main one (a
+ * lesson's @compare NAME [NAME]). */
+int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n);
 void sw_app_set_ghost(sw_app *a, int on);
 /* Apply an action (arg: which of its keys, 1-based: 1-9 pick that
  * integrator, 0 the 10th); sets a->message. Returns 1 when it changed anything. */
@@ -116,6 +154,31 @@ void sw_app_reset(sw_app *a);
  * and a->message says what happened (app/plugins.c). */
 void sw_app_plugin_guard(sw_app *a);
 
+/* (view.c) View actions: zoom, follow, lanes, phase and region views. 1 when handled. */
+int sw_app_view_apply(sw_app *a, sw_action act);
+/* (view.c) Set the view (the lesson's @view); resets nothing. */
+void sw_app_set_view(sw_app *a, sw_app_view v);
+/* (view.c) Forget the phase paths (a reset, a new scene or coordinate). */
+void sw_app_phase_clear(sw_app *a);
+/* (view.c) Add every sim's current phase point to its path (and the truth's). */
+void sw_app_phase_push(sw_app *a);
+
+/* (phase.c) Whether coordinate c of particle i exists in sys (a spring to an
+ * anchor for stretch and angle, a central body for radius, particles for x
+ * and y, a flow for the plane). */
+int sw_phase_available(const sw_system *sys, int i, sw_phase_coord c);
+/* (phase.c) The coordinate and its rate at state y: 1, or 0 when it is not
+ * available or not finite. */
+int sw_phase_point(const sw_system *sys, const double *y, int i, sw_phase_coord c, double *q, double *v);
+/* (phase.c) The scene's natural choice: the spring's stretch, the pendulum's
+ * angle, the chain's middle bead (y), the orbit's radius, a flow's first point. */
+void sw_phase_default(const sw_system *sys, int *i, sw_phase_coord *c);
+/* (phase.c) The names of a coordinate and its rate, with units ("stretch",
+ * "m", "rate", "m/s"). */
+void sw_phase_names(sw_phase_coord c, const char **q, const char **q_unit, const char **v, const char **v_unit);
+/* (phase.c) The next available coordinate (dir +1) or particle (dir +-2: next/previous). */
+void sw_phase_cycle(const sw_system *sys, int *i, sw_phase_coord *c, int dir);
+
 /* (measure.c) Start watching the main run again from now. */
 void sw_app_watch_restart(sw_app *a);
 /* (measure.c) Feed the watch the main run's state after it advanced. */
@@ -130,7 +193,18 @@ int sw_app_stability(sw_app *a, sw_app_meter *m);
 const double *sw_app_ghost(sw_app *a);
 /* The error of sim i now: against the exact solution or the reference. */
 double sw_app_error(sw_app *a, int i);
-/* One status line for sim i (exact integrator name, dt=, t, steps, evals, ...). */
+/* A field of a status line: its full and brief forms and how much it
+ * matters (higher is kept longer when the line must shrink). */
+typedef struct sw_field {
+    char full[160];
+    char brief[64];   /* "": none (the field is dropped whole) */
+    int prio;
+} sw_field;
+#define SW_STATUS_FIELDS 12
+/* (status.c) The fields of sim i's status line; returns how many. */
+int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
+/* (status.c) One status line for sim i, every field in full (exact
+ * integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);
 /* Start recording the main sim to path (NULL: a time-stamped name in the
  * working directory); restarts at t = 0. */

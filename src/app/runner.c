@@ -23,6 +23,8 @@ void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
     obs->paused = a->paused;
     obs->speed = a->speed;
     obs->recorded = a->recorded;
+    obs->phase = a->view == SW_VIEW_PHASE;
+    obs->region = a->view == SW_VIEW_REGION;
 }
 
 void sw_runner_enter(sw_runner *r, sw_app *a, int page)
@@ -34,6 +36,12 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     const sw_lesson_page *pg = &r->lesson.pages[page];
     char err[SW_ERRLEN];
     a->locked = 0;
+    if (pg->scene != a->scene) {
+        /* a new scene starts in its own picture: the scene view, its natural size */
+        sw_app_set_view(a, SW_VIEW_SCENE);
+        a->zoom = 1;
+        a->follow = 0;
+    }
     if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
         if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
             snprintf(a->message, sizeof a->message, "%s", err);
@@ -43,13 +51,26 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
-    if (pg->compare >= 0)
-        sw_app_set_compare(a, pg->compare, pg->ncompare_with > 0 ? pg->compare_with[0] : NULL,
-                           pg->ncompare_with > 1 ? pg->compare_with[1] : NULL);
+    if (pg->compare >= 0 && pg->ncompare_with > 0)
+        sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);
+    else if (pg->compare >= 0)
+        sw_app_set_compare(a, pg->compare, NULL, NULL);
     if (pg->ghost >= 0)
         sw_app_set_ghost(a, pg->ghost);
     if (pg->paused >= 0)
         a->paused = pg->paused;
+    if (pg->speed > 0)
+        a->speed = pg->speed;
+    if (pg->view >= 0)
+        sw_app_set_view(a, pg->view == SW_LESSON_VIEW_PHASE    ? SW_VIEW_PHASE
+                           : pg->view == SW_LESSON_VIEW_REGION ? SW_VIEW_REGION
+                                                               : SW_VIEW_SCENE);
+    if (pg->follow >= 0)
+        a->follow = pg->follow;
+    if (pg->lanes >= 0)
+        a->lanes = pg->lanes;
+    if (pg->zoom > 0)
+        a->zoom = pg->zoom;
     a->locked = pg->locked;
     a->panel = a->help = 0;
     r->page = page;
@@ -106,12 +127,10 @@ int sw_runner_update(sw_runner *r, sw_app *a)
         if (sw_progress_set(r->file, r->done, err, sizeof err) != SW_OK)
             snprintf(r->save_error, sizeof r->save_error, "progress not saved: %s", err);
     }
-    if (r->page + 1 == r->lesson.npages) {
+    /* The key line and the pane say so; the message line keeps what the
+     * student just measured until the next key. */
+    if (r->page + 1 == r->lesson.npages)
         r->finished = 1;
-        snprintf(a->message, sizeof a->message, "lesson complete: well done! (q returns to the shell)");
-    } else {
-        snprintf(a->message, sizeof a->message, "page complete: press n for the next page");
-    }
     if (r->save_error[0])
         snprintf(a->message, sizeof a->message, "%s", r->save_error);
     return 1;
@@ -120,8 +139,10 @@ int sw_runner_update(sw_runner *r, sw_app *a)
 int sw_runner_key(sw_runner *r, sw_app *a, int key)
 {
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
-    if (pg->question.text && !r->answered[r->page] && key >= 'a' && key < 'a' + pg->question.nanswers) {
-        int ok = sw_lesson_answer(pg, key, &r->feedback);
+    if (pg->question.text && !r->answered[r->page] && key >= SW_ANSWER_FIRST &&
+        key < SW_ANSWER_FIRST + pg->question.nanswers) {
+        a->message[0] = '\0';
+        int ok = sw_lesson_answer(pg, key - SW_ANSWER_FIRST + 'a', &r->feedback);
         r->feedback_ok = ok == 1;
         if (ok == 1)
             r->answered[r->page] = 1;
@@ -130,8 +151,16 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
     }
     const sw_control *c;
     int arg;
-    if (!sw_key_lookup(key, SW_CTX_PLAY | SW_CTX_LESSON | (a->panel ? SW_CTX_PANEL : 0u), &c, &arg))
+    if (!sw_key_lookup(key, SW_CTX_PLAY | SW_CTX_LESSON | (a->panel ? SW_CTX_PANEL : 0u), &c, &arg)) {
+        if (pg->question.text && !r->answered[r->page] && key >= 'a' && key < 'a' + pg->question.nanswers) {
+            snprintf(a->message, sizeof a->message, "answers take capital letters: %c to %c", SW_ANSWER_FIRST,
+                     SW_ANSWER_FIRST + pg->question.nanswers - 1);
+            return 1;
+        }
         return 0;
+    }
+    if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_SCROLL_DOWN)
+        a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
         if (!r->complete[r->page]) {
@@ -139,7 +168,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         } else if (r->page + 1 < r->lesson.npages) {
             sw_runner_enter(r, a, r->page + 1);
         } else {
-            snprintf(a->message, sizeof a->message, "that was the last page: q returns to the menu");
+            snprintf(a->message, sizeof a->message, "that was the last page: q leaves the lesson");
         }
         return 1;
     case SW_ACT_PAGE_PREV:
@@ -173,8 +202,15 @@ static void add_line(sw_runner *r, sw_side_kind kind, const char *text)
     r->side.nlines++;
 }
 
+static void add_wrapped_keep(sw_runner *r, const char *text, int width)
+{
+    (void)width;
+    add_line(r, SW_SIDE_VERBATIM, text);
+}
+
 /* Word-wrap a paragraph to width display cells (a CJK character takes
- * two); a word wider than a line (CJK text has no spaces) is broken between
+ * two), counting the line as written, its runs of spaces included; a word
+ * wider than a line (a path; CJK text has no spaces) is broken between
  * characters, never inside one. */
 static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int width)
 {
@@ -192,12 +228,13 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
             const char *w = p;
             while (*p && *p != ' ' && *p != '\n')
                 p++;
-            int wl = (int)sw_utf8_columns(w, (size_t)(p - w));
-            if (used && used + 1 + wl > width) {
+            /* the line as written so far, its spaces included */
+            int upto = (int)sw_utf8_columns(line, (size_t)(p - line));
+            if (used && upto > width) {
                 p = w;
                 break;
             }
-            if (!used && wl > width) {
+            if (!used && upto > width) {
                 p = w + sw_utf8_fit(w, (size_t)(p - w), (size_t)width, NULL);
                 if (p == w) { /* cannot happen with width >= 2; progress all the same */
                     const unsigned char *q = (const unsigned char *)w;
@@ -207,7 +244,7 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
                 cut = p;
                 break;
             }
-            used += (used ? 1 : 0) + wl;
+            used = upto;
             cut = p;
             while (*p == ' ')
                 p++;
@@ -226,19 +263,72 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
     }
 }
 
+/* A verbatim line (a formula) as written; too wide for the pane, it goes on
+ * on the next lines, indented under itself, broken at a space. */
+static void add_verbatim(sw_runner *r, const char *text, int width)
+{
+    int indent = 0;
+    while (text[indent] == ' ')
+        indent++;
+    if ((int)sw_utf8_columns(text, strlen(text)) <= width || width < indent + 12) {
+        add_wrapped_keep(r, text, width);
+        return;
+    }
+    char buf[SW_RUNNER_COLS];
+    const char *p = text;
+    int first = 1;
+    while (*p) {
+        int room = width - (first ? 0 : indent + 4);
+        const char *cut = p, *q = p;
+        int cells = 0;
+        while (*q) {
+            const char *w = q;
+            while (*q == ' ')
+                q++;
+            while (*q && *q != ' ')
+                q++;
+            int wc = (int)sw_utf8_columns(w, (size_t)(q - w));
+            if (cells + wc > room && cut != p)
+                break;
+            cells += wc;
+            cut = q;
+        }
+        if (cut == p)
+            cut = p + sw_utf8_fit(p, strlen(p), (size_t)room, NULL);
+        if (cut == p) { /* nothing fits: one character, progress all the same */
+            const unsigned char *c1 = (const unsigned char *)p;
+            sw_utf8_next(&c1);
+            cut = (const char *)c1;
+        }
+        snprintf(buf, sizeof buf, "%*s%.*s", first ? 0 : indent + 4, "", (int)(cut - p), p);
+        add_line(r, SW_SIDE_VERBATIM, buf);
+        p = cut;
+        while (!first && *p == ' ')
+            p++;
+        if (first)
+            while (*p == ' ')
+                p++;
+        first = 0;
+    }
+}
+
 const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
 {
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
-    int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols;
+    /* beside the scene at every size: the scene keeps every row above the status lines */
+    int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols / 2;
     char buf[SW_RUNNER_COLS];
     r->side.nlines = 0;
     r->side.lines = r->lines;
     r->side.kinds = r->kinds;
-    r->side.width = cols >= 110 ? width : 0;
+    r->side.width = width;
     r->side.scroll = &r->scroll;
+    r->side.question_open = pg->question.text && !r->answered[r->page];
+    r->side.notice = !r->complete[r->page] ? NULL
+                     : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
-    add_line(r, SW_SIDE_DIM, buf);
-    add_line(r, SW_SIDE_TITLE, pg->title);
+    add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
+    add_wrapped(r, SW_SIDE_TITLE, pg->title, width - 1);
     add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {
@@ -247,7 +337,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
                 const char *e = strchr(s, '\n');
                 size_t len = e ? (size_t)(e - s) : strlen(s);
                 snprintf(buf, sizeof buf, "  %.*s", (int)(len < 300 ? len : 300), s);
-                add_line(r, SW_SIDE_VERBATIM, buf);
+                add_verbatim(r, buf, width - 1);
                 s += len + (e ? 1 : 0);
             }
         } else {
@@ -258,6 +348,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     sw_lesson_obs obs;
     sw_runner_obs(a, &obs);
     const sw_lesson_goal *unmet = NULL;
+    int foot = r->side.nlines; /* from here on: what the page asks, kept in sight */
     if (pg->ngoals > 0)
         add_line(r, SW_SIDE_TITLE, "Goals:");
     for (int g = 0; g < pg->ngoals; g++) {
@@ -274,11 +365,14 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         add_line(r, SW_SIDE_TEXT, "");
         add_wrapped(r, SW_SIDE_TITLE, q->text, width - 1);
         for (int i = 0; i < q->nanswers; i++) {
-            snprintf(buf, sizeof buf, "%c) %s", q->answers[i].letter, q->answers[i].text);
+            snprintf(buf, sizeof buf, "%c) %s", SW_ANSWER_FIRST + i, q->answers[i].text);
             add_wrapped(r, r->answered[r->page] && i == q->correct ? SW_SIDE_OK : SW_SIDE_TEXT, buf, width - 1);
         }
-        if (!r->answered[r->page])
-            add_line(r, SW_SIDE_DIM, "(press a letter to answer)");
+        if (!r->answered[r->page]) {
+            snprintf(buf, sizeof buf, "(answer with a capital letter, %c to %c)", SW_ANSWER_FIRST,
+                     SW_ANSWER_FIRST + q->nanswers - 1);
+            add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
+        }
         if (r->feedback)
             add_wrapped(r, r->feedback_ok ? SW_SIDE_OK : SW_SIDE_BAD, r->feedback, width - 1);
     }
@@ -290,8 +384,10 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     }
     add_line(r, SW_SIDE_TEXT, "");
     if (r->complete[r->page])
-        add_line(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page." : "Lesson complete!");
+        add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
+                                                                 : "Lesson complete! q leaves the lesson.", width - 1);
     else
-        add_line(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met");
+        add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
+    r->side.pinned = r->side.nlines - foot;
     return &r->side;
 }

@@ -33,6 +33,9 @@ static const char play_help[] =
     "      --braille           draw with Braille dots\n"
     "      --size COLSxROWS    frame size for --ascii (default 80x24)\n"
     "      --speed X           simulated seconds per wall second (default 1)\n"
+    "      --view VIEW         start with this view: scene, phase or region\n"
+    "      --lanes             compare side by side;  --follow  the camera follows the particles\n"
+    "      --zoom X            the view's size times X (2: zoomed out)\n"
     "  -h, --help              this help\n";
 
 int sw_cli_play(sw_app *a, const sw_play_hooks *hooks)
@@ -52,6 +55,7 @@ static int ascii_frames(sw_app *a, long frames, int cols, int rows)
     char err[SW_ERRLEN];
     if (sw_frame_init(&f, err, sizeof err) != SW_OK || sw_screen_init(&scr, cols, rows, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
+    f.unicode = a->braille; /* plain text frames stay ASCII unless Braille was asked for */
     size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
     char *text = malloc(cap);
     if (!text)
@@ -83,6 +87,8 @@ int sw_cmd_play(int argc, char **argv)
         { "braille", no_argument, NULL, 'b' },          { "size", required_argument, NULL, 'z' },
         { "speed", required_argument, NULL, 'S' },      { "compare", no_argument, NULL, 'c' },
         { "ghost", no_argument, NULL, 'g' },            { "help", no_argument, NULL, 'h' },
+        { "view", required_argument, NULL, 'V' },       { "lanes", no_argument, NULL, 'L' },
+        { "follow", no_argument, NULL, 'F' },           { "zoom", required_argument, NULL, 'Z' },
         { NULL, 0, NULL, 0 },
     };
     sw_run_opts o;
@@ -90,7 +96,8 @@ int sw_cmd_play(int argc, char **argv)
     const char *method_name = NULL;
     long frames = 0;
     int ascii = 0, braille = 0, compare = 0, ghost = 0, cols = 80, rows = 24;
-    double speed = 1;
+    double speed = 1, zoom = 1;
+    int view = SW_VIEW_SCENE, lanes = 0, follow = 0;
     optind = 1;
     opterr = 0;
     for (int c; (c = getopt_long(argc, argv, ":i:s:h", opts, NULL)) != -1;) {
@@ -114,6 +121,19 @@ int sw_cmd_play(int argc, char **argv)
                 cols > 1000 || rows > 1000)
                 return sw_cli_error("--size '%.40s' is not allowed: give COLSxROWS between %dx%d and 1000x1000",
                                     optarg, SW_MIN_COLS, SW_MIN_ROWS);
+            break;
+        case 'V':
+            if (strcmp(optarg, "scene") == 0) view = SW_VIEW_SCENE;
+            else if (strcmp(optarg, "phase") == 0) view = SW_VIEW_PHASE;
+            else if (strcmp(optarg, "region") == 0) view = SW_VIEW_REGION;
+            else return sw_cli_error("--view '%.40s' is not a view: give scene, phase or region", optarg);
+            break;
+        case 'L': lanes = 1; break;
+        case 'F': follow = 1; break;
+        case 'Z':
+            if (sw_cli_positive("--zoom", optarg, &zoom)) return SW_EXIT_USAGE;
+            if (zoom < 1.0 / 64 || zoom > 4096)
+                return sw_cli_error("--zoom %g is outside [1/64, 4096]", zoom);
             break;
         case 'h': fputs(play_help, stdout); return SW_EXIT_OK;
         case ':': return sw_cli_error("%s needs a value; see 'stepwise play --help'", argv[optind - 1]);
@@ -153,6 +173,10 @@ int sw_cmd_play(int argc, char **argv)
             sw_cli_note("--braille needs a UTF-8 locale (e.g. LANG=C.UTF-8); drawing with ASCII");
         }
     }
+    sw_app_set_view(&a, (sw_app_view)view);
+    a.lanes = lanes;
+    a.follow = follow;
+    a.zoom = zoom;
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;

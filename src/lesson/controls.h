@@ -33,9 +33,13 @@ enum {
     G(BRAILLE,    "braille")    \
     G(PARAMS,     "params")     \
     G(RECORD,     "record")     \
-    G(PLOT,       "plot")
+    G(PLOT,       "plot")       \
+    G(VIEW,       "view")
 
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
+
+/* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
+#define SW_ANSWER_FIRST 'A'
 
 /* X(ACTION, LOCK, CONTEXT, NAME, KEYS, HELP_KEYS, HELP)
  *   ACTION     the action is SW_ACT_<ACTION>
@@ -74,7 +78,16 @@ enum {
       "R", "start / stop recording a trace (restarts at t = 0)") \
     X(WORKPREC, PLOT, PLAY, "work-precision plot", SW_KEYS('w'), \
       "w", "work-precision plot: error against cost") \
-    X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help") \
+    X(ZOOM_OUT, VIEW, PLAY, "zoom out", SW_KEYS('z'), "z  Z", "zoom out / in (scene, phase and region views)") \
+    X(ZOOM_IN, VIEW, PLAY, "zoom in", SW_KEYS('Z'), NULL, NULL) \
+    X(FOLLOW, VIEW, PLAY, "follow", SW_KEYS('f'), "f", "camera follows the particles / stays on the scene") \
+    X(LANES, VIEW, PLAY, "side by side", SW_KEYS('l'), "l", "compare side by side (lanes) / overlaid") \
+    X(PHASE, VIEW, PLAY, "phase view", SW_KEYS('v'), "v", "phase view: a coordinate against its velocity") \
+    X(PHASE_COORD, VIEW, PLAY, "phase coordinate", SW_KEYS('V'), "V  <  >", "phase view: next coordinate, particle") \
+    X(PHASE_PREV, VIEW, PLAY, "previous particle", SW_KEYS('<'), NULL, NULL) \
+    X(PHASE_NEXT, VIEW, PLAY, "next particle", SW_KEYS('>'), NULL, NULL) \
+    X(REGION, VIEW, PLAY, "stability region", SW_KEYS('s'), "s", "stability region of the method, dt x eigenvalues") \
+    X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help (again: next page)") \
     X(QUIT, NONE, PLAY, "quit", SW_KEYS('q'), "q", "quit") \
     X(PAGE_NEXT, NONE, LESSON, "next page", SW_KEYS('n', SW_KEY_PGDN), \
       "n  PgDn", "next page (once its goals are met)") \
@@ -82,10 +95,11 @@ enum {
     X(HINT, NONE, LESSON, "hint", SW_KEYS('h'), "h", "hint for the first goal not met") \
     X(SCROLL_UP, NONE, LESSON, "scroll up", SW_KEYS(SW_KEY_UP), "Up  Down", "scroll the lesson text") \
     X(SCROLL_DOWN, NONE, LESSON, "scroll down", SW_KEYS(SW_KEY_DOWN), NULL, NULL) \
-    /* While a page's question is open the lesson runner reads a-f as answers \
-     * before this list (b, c and e mean Braille, compare and graph otherwise). */ \
-    X(ANSWER, NONE, LESSON, "answer", SW_KEYS(SW_KEY_NONE), \
-      "a-f", "answer the page's question (while it is open)") \
+    /* Capital letters answer a page's question: no play key is a capital \
+     * A-F (SW_ANSWER_FIRST; a test keeps it so), so an answer never toggles \
+     * a view and a play key never answers. */ \
+    X(ANSWER, NONE, LESSON, "answer", SW_KEYS('A', 'B', 'C', 'D', 'E', 'F'), \
+      "A-F", "answer the page's question (capital letters)") \
     X(PANEL_UP, PARAMS, PANEL, "parameter up", SW_KEYS(SW_KEY_UP), "Up", "previous parameter") \
     X(PANEL_DOWN, PARAMS, PANEL, "parameter down", SW_KEYS(SW_KEY_DOWN), "Down", "next parameter") \
     X(PANEL_DEC, PARAMS, PANEL, "decrease parameter", SW_KEYS(SW_KEY_LEFT), "Left", "decrease (within its range)") \

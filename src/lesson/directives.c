@@ -1,5 +1,5 @@
 /* The lesson directives: settings (@scene @set @integrator @dt @compare
- * @ghost @pause @reset @lock @unlock), text (@hint @question @answer
+ * @ghost @pause @reset @speed @view @lock @unlock), text (@hint @question @answer
  * @correct) and prose paragraphs, each checked as it is read. */
 #include "lesson/parse.h"
 
@@ -425,6 +425,58 @@ static int d_reset(sw_lp_parser *ps, size_t pos)
     return SW_OK;
 }
 
+/* @speed X: simulated seconds per wall second on entering the page. */
+static int d_speed(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_once(ps, &ps->at_speed, "@speed") != SW_OK)
+        return ps->status;
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@speed", "simulated seconds per wall second", word, &at) != SW_OK)
+        return ps->status;
+    double v;
+    if (sw_parse_double(word, &v) != SW_OK || !(v >= SW_LESSON_SPEED_MIN && v <= SW_LESSON_SPEED_MAX))
+        return FAIL(ps, at, "@speed '%s' is not allowed; expected a number in [%g, %g]", word, SW_LESSON_SPEED_MIN,
+                    SW_LESSON_SPEED_MAX);
+    sw_lp_page(ps)->speed = v;
+    return SW_OK;
+}
+
+/* @view WORD...: scene, phase or region (what the picture shows); fixed or
+ * follow (the camera); overlay or lanes (compare's layout); zoom=X. */
+static int d_view(sw_lp_parser *ps, size_t pos)
+{
+    sw_lesson_page *pg = sw_lp_page(ps);
+    if (sw_lp_once(ps, &ps->at_view, "@view") != SW_OK)
+        return ps->status;
+    size_t start, len;
+    int n = 0;
+    while (sw_lp_next_field(ps, &pos, &start, &len)) {
+        char word[SW_LESSON_NAME_MAX];
+        if (sw_lp_field_word(ps, start, len, word) != SW_OK)
+            return ps->status;
+        double z;
+        if (strcmp(word, "scene") == 0 || strcmp(word, "phase") == 0 || strcmp(word, "region") == 0)
+            pg->view = word[0] == 's' ? SW_LESSON_VIEW_SCENE : word[0] == 'p' ? SW_LESSON_VIEW_PHASE
+                                                                            : SW_LESSON_VIEW_REGION;
+        else if (strcmp(word, "fixed") == 0 || strcmp(word, "follow") == 0)
+            pg->follow = word[1] == 'o';
+        else if (strcmp(word, "overlay") == 0 || strcmp(word, "lanes") == 0)
+            pg->lanes = word[0] == 'l';
+        else if (strncmp(word, "zoom=", 5) == 0) {
+            if (sw_parse_double(word + 5, &z) != SW_OK || !(z >= 1.0 / 64 && z <= 4096))
+                return FAIL(ps, start, "@view %s: expected zoom=X with X in [1/64, 4096]", word);
+            pg->zoom = z;
+        } else
+            return FAIL(ps, start, "@view: '%s' is not a view; expected scene, phase, region, fixed, follow, "
+                        "overlay, lanes or zoom=X", word);
+        n++;
+    }
+    if (!n)
+        return FAIL(ps, ps->lnlen, "@view needs a view; expected e.g. '@view phase' or '@view region zoom=2'");
+    return SW_OK;
+}
+
 static int d_lock_on(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 1); }
 static int d_lock_off(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 0); }
 
@@ -434,6 +486,7 @@ static const struct directive {
 } directives[] = {
     { "scene", d_scene }, { "set", d_set }, { "integrator", d_integrator }, { "dt", d_dt },
     { "compare", d_compare }, { "ghost", d_ghost }, { "pause", d_pause }, { "reset", d_reset },
+    { "speed", d_speed }, { "view", d_view },
     { "lock", d_lock_on }, { "unlock", d_lock_off }, { "goal", sw_lp_goal }, { "hint", d_hint },
     { "question", d_question }, { "answer", d_answer }, { "correct", d_correct },
 };
@@ -471,6 +524,6 @@ int sw_lp_directive(sw_lp_parser *ps, size_t at)
             return directives[k].run(ps, i);
     char near[80];
     return FAIL(ps, at, "unknown directive '@%s'%s; expected one of @scene @set @integrator @dt @compare "
-                "@ghost @pause @reset @lock @unlock @goal @hint @question @answer @correct",
+                "@ghost @pause @reset @speed @view @lock @unlock @goal @hint @question @answer @correct",
                 name, sw_lp_suggest("@", name, directive_name_at, NULL, NDIRECTIVES, near, sizeof near));
 }

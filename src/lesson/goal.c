@@ -11,13 +11,14 @@
 static const char *const var_names[SW_LV_COUNT] = {
     "scene", "integrator", "dt", "t", "steps", "evals", "speed", "energy_drift", "error", "drift",
     "error_ratio", "accepted", "rejected", "param", "blown", "compare", "ghost", "paused", "recorded",
+    "phase", "region",
 };
 
 /* How a variable reads in the ✓/✗ list. */
 static const char *const var_labels[SW_LV_COUNT] = {
     "scene", "integrator", "dt", "t", "steps", "derivative evaluations", "speed", "energy drift",
     "error", "invariant drift", "error ratio", "accepted steps", "rejected steps", "parameter",
-    "blown", "compare", "ghost", "paused", "recorded",
+    "blown", "compare", "ghost", "paused", "recorded", "the phase view", "the stability-region view",
 };
 
 const char *sw_lesson_var_name(sw_lesson_var v)
@@ -96,6 +97,8 @@ static int flag_of(const sw_lesson_goal *g, const sw_lesson_obs *obs)
     case SW_LV_COMPARE: return obs->compare != 0;
     case SW_LV_GHOST: return obs->ghost != 0;
     case SW_LV_PAUSED: return obs->paused != 0;
+    case SW_LV_PHASE: return obs->phase != 0;
+    case SW_LV_REGION: return obs->region != 0;
     default: return obs->recorded != 0;
     }
 }
@@ -165,6 +168,10 @@ void sw_lesson_goal_text(const sw_lesson_goal *g, char *buf, size_t len)
         return;
     case SW_LV_RECORDED:
         snprintf(buf, len, on ? "a trace has been recorded" : "no trace recorded");
+        return;
+    case SW_LV_PHASE:
+    case SW_LV_REGION:
+        snprintf(buf, len, "%s is %s", var_labels[g->var], on ? "on" : "off");
         return;
     default:
         break;

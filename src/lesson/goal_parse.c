@@ -104,7 +104,7 @@ static int lex(sw_lp_parser *ps, size_t *pos, token *tk)
 
 static const char *var_list =
     "integrator, scene, dt, t, steps, evals, speed, energy_drift, error, drift, error_ratio, "
-    "accepted, rejected, param NAME, blown, compare, ghost, paused, recorded";
+    "accepted, rejected, param NAME, blown, compare, ghost, paused, recorded, phase, region";
 
 static int var_is_name(int v) { return v == SW_LV_SCENE || v == SW_LV_INTEGRATOR; }
 static int var_is_bool(int v) { return v >= SW_LV_BLOWN && v < SW_LV_COUNT; }
@@ -222,7 +222,7 @@ static int parse_goal(sw_lp_parser *ps, size_t pos, sw_lesson_goal *g)
     g->var = (sw_lesson_var)var;
     if (negate && !var_is_bool(var))
         return FAIL(ps, vtk.at, "'not' goes with a yes/no variable (blown, compare, ghost, paused, "
-                    "recorded), not '%s'; expected e.g. 'not blown'", vtk.text);
+                    "recorded, phase, region), not '%s'; expected e.g. 'not blown'", vtk.text);
     if (g->absolute && (var_is_bool(var) || var_is_name(var)))
         return FAIL(ps, vtk.at, "|...| goes around a number, not '%s'", vtk.text);
     if (var_available(ps, &vtk, var) != SW_OK)

@@ -53,6 +53,7 @@ typedef struct sw_lesson_obs {
     const char *param_name[SW_MAX_PARAMS];
     double param_value[SW_MAX_PARAMS];
     int recorded;             /* 1 once a trace recording has been made (R) */
+    int phase, region;        /* the phase view (v) or the stability-region view (s) is shown */
 } sw_lesson_obs;
 
 /* Everything unknown: NaN numbers, zero counters, NULL names. */
@@ -72,7 +73,7 @@ typedef enum sw_lesson_var {
     SW_LV_DT, SW_LV_T, SW_LV_STEPS, SW_LV_EVALS, SW_LV_SPEED, SW_LV_ENERGY_DRIFT,
     SW_LV_ERROR, SW_LV_DRIFT, SW_LV_ERROR_RATIO, SW_LV_ACCEPTED, SW_LV_REJECTED, SW_LV_PARAM,
     /* yes/no */
-    SW_LV_BLOWN, SW_LV_COMPARE, SW_LV_GHOST, SW_LV_PAUSED, SW_LV_RECORDED,
+    SW_LV_BLOWN, SW_LV_COMPARE, SW_LV_GHOST, SW_LV_PAUSED, SW_LV_RECORDED, SW_LV_PHASE, SW_LV_REGION,
     SW_LV_COUNT
 } sw_lesson_var;
 
@@ -113,6 +114,12 @@ int sw_lesson_var_find(const char *name);
  * controls in lesson/controls.h. */
 
 /* ---- pages and lessons ----------------------------------------------------- */
+
+/* What a page's @view shows (the app's views, in its order). */
+enum { SW_LESSON_VIEW_SCENE = 0, SW_LESSON_VIEW_PHASE = 1, SW_LESSON_VIEW_REGION = 2 };
+/* @speed's range (the app's). */
+#define SW_LESSON_SPEED_MIN (1.0 / 64)
+#define SW_LESSON_SPEED_MAX 1024.0
 
 typedef struct sw_lesson_block {
     int verbatim;             /* 1: lines shown as written ('\n' between them);
@@ -158,6 +165,11 @@ typedef struct sw_lesson_page {
     int ncompare_with;        /* 0: the app's own choice */
     int ghost;                /* -1 / 0 / 1 as compare */
     int paused;               /* -1 / 0 / 1: start paused or running */
+    double speed;             /* simulated seconds per wall second; 0: leave as is */
+    int view;                 /* SW_LESSON_VIEW_*; -1: leave as is */
+    int follow;               /* -1 / 0 / 1: camera fixed on the scene or following */
+    int lanes;                /* -1 / 0 / 1: compare overlaid or side by side */
+    double zoom;              /* the view's size times this; 0: leave as is */
     sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 
     sw_lesson_goal goals[SW_LESSON_MAX_GOALS];

@@ -216,6 +216,7 @@ sw_view sw_canvas_visible(const sw_canvas *c)
 void sw_canvas_clear(sw_canvas *c)
 {
     clear_cells(c);
+    c->clipped = 0;
 }
 
 int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, int *row)
@@ -243,6 +244,31 @@ void sw_canvas_mark(sw_canvas *c, double x, double y, uint32_t glyph, int style)
     int col, row;
     if (to_grid(&g, c, x, y, &col, &row))
         put_glyph(c, col, row, glyph ? glyph : SW_GLYPH_MAIN, style, 0);
+}
+
+void sw_canvas_put(sw_canvas *c, int col, int row, uint32_t glyph, int style)
+{
+    if (col >= 0 && col < c->cols && row >= 0 && row < c->rows)
+        put_glyph(c, col, row, glyph, style, 0);
+}
+
+void sw_canvas_dot(sw_canvas *c, int dc, int dr, int style, int fade)
+{
+    if (dc >= 0 && dc < 2 * c->cols && dr >= 0 && dr < 4 * c->rows)
+        put_dot(c, dc, dr, style, fade);
+}
+
+int sw_canvas_text(sw_canvas *c, int col, int row, const char *text, int style)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    int n = 0, cut = row < 0 || row >= c->rows;
+    while (*p) {
+        uint32_t cp = sw_utf8_next(&p);
+        cut |= col + n < 0 || col + n >= c->cols;
+        sw_canvas_put(c, col + n++, row, cp < 0x20 ? ' ' : cp, style);
+    }
+    c->clipped += cut;
+    return n;
 }
 
 enum { OUT_LEFT = 1, OUT_RIGHT = 2, OUT_BELOW = 4, OUT_ABOVE = 8 };

@@ -104,6 +104,7 @@ typedef struct sw_canvas {
     unsigned char *dots;   /* Braille bits per cell */
     unsigned char *style;  /* style index per cell */
     unsigned char *fade;   /* 0 = full strength, 1 = newer trail, 2 = older trail */
+    int clipped;           /* texts (sw_canvas_text) cut at the canvas's edge since the last clear */
 } sw_canvas;
 
 /* Allocate a cols × rows canvas (1..SW_CANVAS_MAX_SIDE each, at most
@@ -151,6 +152,14 @@ typedef int sw_canvas_keep_fn(const void *ctx, int i);
 /* The same over the points keep accepts (keep NULL: all). */
 void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
                              const void *ctx, int style);
+
+/* Cell-level drawing (axes, labels, the region's shading): a glyph into
+ * cell (col, row); a Braille dot (dc, dr) of the 2·cols × 4·rows dot grid;
+ * text from (col, row) rightwards. Cells off the canvas are skipped;
+ * sw_canvas_text returns the characters in text. */
+void sw_canvas_put(sw_canvas *c, int col, int row, uint32_t glyph, int style);
+void sw_canvas_dot(sw_canvas *c, int dc, int dr, int style, int fade);
+int sw_canvas_text(sw_canvas *c, int col, int row, const char *text, int style);
 
 /* Code point shown in (col, row): the glyph, else U+2800 + dots when any
  * dot is set, else ' ' (also for cells off the canvas). */

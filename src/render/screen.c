@@ -1,6 +1,6 @@
-/* The screen grid and the frame composer: where the scene, the status
- * lines, the stability meter, the graph and the overlays go. Pure C; the
- * layout is the same in the terminal, in `--ascii` frames and in tests. */
+/* The screen grid (cells, text, blits) and what a frame keeps between
+ * draws. Pure C; the composer (compose.c) lays the screen out the same way
+ * in the terminal, in `--ascii` frames and in tests. */
 #include "render/screen.h"
 
 #include <math.h>
@@ -49,6 +49,7 @@ void sw_screen_clear(sw_screen *s)
         s->cp[i] = ' ';
     memset(s->style, SW_STYLE_TEXT, n);
     memset(s->fade, 0, n);
+    s->clipped = 0;
 }
 
 /* Set one cell; a wide character half overwritten loses its other half. */
@@ -70,16 +71,17 @@ int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const c
         return 0;
     const unsigned char *p = (const unsigned char *)text;
     int n = 0;
-    while (*p && n < width) {
+    while (*p) {
+        const unsigned char *at = p;
         uint32_t c = sw_utf8_next(&p);
         int w = c < 0x20 ? 1 : sw_utf8_width(c);
         if (w == 0)
             continue;
-        if (n + w > width)
-            break;
         int x = col + n;
-        if (x + w > s->cols)
+        if (n + w > width || x + w > s->cols) {
+            p = at; /* it does not fit: clipped */
             break;
+        }
         n += w;
         if (x < 0)
             continue;
@@ -87,6 +89,8 @@ int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const c
         if (w == 2)
             put_cell(s, row, x + 1, SW_SCREEN_WIDE_TAIL, style);
     }
+    if (*p)
+        s->clipped++; /* a layout bug: text is fitted or wrapped before it is written */
     return n;
 }
 
@@ -150,6 +154,13 @@ void sw_frame_free(sw_frame *f)
 {
     sw_canvas_free(&f->canvas);
     sw_canvas_free(&f->plot);
+    for (int i = 0; i < SW_APP_SIMS - 1; i++)
+        sw_canvas_free(&f->lanes[i]);
+    free(f->keep);
+    f->keep = NULL;
+    f->keep_cap = 0;
+    sw_phase_view_free(&f->phase);
+    sw_region_free(&f->region);
     for (int i = 0; i < SW_APP_SIMS; i++)
         sw_trails_free(&f->trails[i]);
     f->have_trails = 0;
@@ -181,9 +192,9 @@ void sw_frame_push_trails(sw_frame *f, sw_app *a)
         sw_trails_push_system(&f->trails[i], &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t);
 }
 
-/* Copy a canvas onto the screen at (row0, col0). */
-static void blit(sw_screen *scr, const sw_canvas *c, int row0, int col0)
+void sw_screen_blit(sw_screen *scr, const sw_canvas *c, int row0, int col0)
 {
+    scr->clipped += c->clipped;
     for (int r = 0; r < c->rows; r++)
         for (int k = 0; k < c->cols; k++) {
             int y = row0 + r, x = col0 + k;
@@ -194,308 +205,4 @@ static void blit(sw_screen *scr, const sw_canvas *c, int row0, int col0)
             scr->style[i] = (unsigned char)sw_canvas_style(c, k, r);
             scr->fade[i] = (unsigned char)sw_canvas_fade(c, k, r);
         }
-}
-
-static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
-static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
-
-static void draw_scene(sw_frame *f, sw_app *a, int rows, int cols)
-{
-    char err[SW_ERRLEN];
-    sw_canvas *c = &f->canvas;
-    if (c->cols != cols || c->rows != rows)
-        sw_canvas_resize(c, cols, rows, err, sizeof err);
-    sw_canvas_set_mode(c, a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
-    const sw_sim *main = &a->sims[0];
-    if (f->view_scene != a->scene || main->t == 0) {
-        f->view = a->scene->view(&main->sys);
-        f->view_scene = a->scene;
-    }
-    sw_view_follow(&f->view, main->sys.y, main->sys.n, 0.25);
-    sw_canvas_set_view(c, &f->view, err, sizeof err);
-    sw_canvas_clear(c);
-    if (a->trails && f->have_trails)
-        for (int i = a->nsims - 1; i >= 0; i--)
-            sw_canvas_draw_trails(c, &f->trails[i], SW_STYLE_TRAIL);
-    const double *g = a->ghost ? sw_app_ghost(a) : NULL;
-    if (g)
-        sw_canvas_draw_system(c, &main->sys, g, main->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
-    for (int i = a->nsims - 1; i >= 0; i--)
-        sw_canvas_draw_system(c, &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t, sim_glyph[i], sim_style[i]);
-}
-
-/* The stability meter: the stiffest mode's |λ|·Δt against the method's
- * limit on the current linearisation (a bar), and the growth per step ρ of
- * the worst mode under this method at this Δt, with enough digits that a
- * neutral ρ = 1 reads as one. When the run's energy grows although every
- * mode is stable, the line says so: that growth is nonlinear. */
-static void meter(sw_app *a, char *buf, size_t len, int *style)
-{
-    sw_app_meter m;
-    *style = SW_STYLE_STATUS;
-    if (!sw_app_stability(a, &m)) {
-        if (a->sims[0].method->flags & SW_ADAPTIVE)
-            snprintf(buf, len, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
-        else
-            buf[0] = '\0';
-        return;
-    }
-    char lim[48], bar[16] = "";
-    double ldt = m.stiff * a->dt;
-    if (m.unbounded)
-        snprintf(lim, sizeof lim, "stable at any dt");
-    else if (m.limit > 0) {
-        snprintf(lim, sizeof lim, "limit %.3g", m.stiff * m.limit);
-        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
-        bar[0] = '[';
-        for (int i = 0; i < 10; i++)
-            bar[i + 1] = i < fill ? '#' : '.';
-        bar[11] = ']';
-        bar[12] = '\0';
-    } else
-        snprintf(lim, sizeof lim, "no stable dt");
-    const char *verdict = m.grows ? "GROWS"
-                          : m.slow ? "grows, too slowly to see"
-                          : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
-    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
-    snprintf(buf, len, "|L|dt=%.3g %s%s%s  x%.6f/step %s%s", ldt, bar, *bar ? " " : "", lim, m.growth, verdict,
-             run_grows && !m.grows ? "; run's energy grows: nonlinear" : "");
-    if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
-        *style = SW_STYLE_WARN;
-}
-
-static void draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int height, int width)
-{
-    char err[SW_ERRLEN];
-    double tmin = INFINITY, tmax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
-    for (int i = 0; i < a->nsims; i++)
-        for (int k = 0; k < a->series[i].len; k++) {
-            double t = a->series[i].t[k], v = a->series[i].v[k];
-            if (!isfinite(t) || !isfinite(v))
-                continue;
-            tmin = fmin(tmin, t), tmax = fmax(tmax, t);
-            vmin = fmin(vmin, v), vmax = fmax(vmax, v);
-        }
-    int has_energy = isfinite(sw_sim_energy_drift(&a->sims[0]));
-    char title[96];
-    snprintf(title, sizeof title, " %s against t ", has_energy ? "energy drift %" : "error");
-    sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
-    sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, title);
-    if (!(tmax > tmin)) {
-        sw_screen_text(scr, row + 1, col, width, SW_STYLE_DIM, " (collecting samples...)");
-        return;
-    }
-    if (!(vmax > vmin))
-        vmax = vmin + 1e-12 + fabs(vmin) * 1e-6;
-    char lab[32];
-    snprintf(lab, sizeof lab, "%.3g", vmax);
-    sw_screen_text(scr, row + 1, col, 10, SW_STYLE_DIM, lab);
-    snprintf(lab, sizeof lab, "%.3g", vmin);
-    sw_screen_text(scr, row + height - 1, col, 10, SW_STYLE_DIM, lab);
-    int pw = width - 11, ph = height - 1;
-    if (pw < 4 || ph < 2)
-        return;
-    if (f->plot.cols != pw || f->plot.rows != ph)
-        sw_canvas_resize(&f->plot, pw, ph, err, sizeof err);
-    /* Fill the plot box exactly: undo the canvas's aspect correction by
-     * scaling values into a view shaped like the box. */
-    sw_view v = { 0, (double)pw, 0, 2.0 * ph };
-    sw_canvas_set_view(&f->plot, &v, err, sizeof err);
-    sw_canvas_clear(&f->plot);
-    for (int i = a->nsims - 1; i >= 0; i--) {
-        const sw_series *s = &a->series[i];
-        for (int k = 1; k < s->len; k++) {
-            double x0 = (s->t[k - 1] - tmin) / (tmax - tmin) * (pw - 1e-9), x1 = (s->t[k] - tmin) / (tmax - tmin) * (pw - 1e-9);
-            double y0 = (s->v[k - 1] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9), y1 = (s->v[k] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
-            sw_canvas_line(&f->plot, x0, y0, x1, y1, sim_glyph[i], sim_style[i]);
-        }
-    }
-    blit(scr, &f->plot, row + 1, col + 11);
-}
-
-/* A boxed overlay of lines, centred; lines may be NULL-terminated early. */
-static void overlay(sw_screen *scr, const char *title, const char *const *lines, int n, int style)
-{
-    int w = (int)strlen(title) + 4;
-    for (int i = 0; i < n; i++)
-        if ((int)strlen(lines[i]) + 4 > w)
-            w = (int)strlen(lines[i]) + 4;
-    if (w > scr->cols)
-        w = scr->cols;
-    int h = n + 2 > scr->rows ? scr->rows : n + 2;
-    int r0 = (scr->rows - h) / 2, c0 = (scr->cols - w) / 2;
-    sw_screen_fill(scr, r0, c0, h, w, style);
-    sw_screen_text(scr, r0, c0 + 2, w - 4, SW_STYLE_TITLE, title);
-    for (int i = 0; i < n && i < h - 2; i++)
-        sw_screen_text(scr, r0 + 1 + i, c0 + 2, w - 4, style, lines[i]);
-}
-
-/* The help screen, generated from the one list of controls. */
-static void help_overlay(sw_screen *scr, int in_lesson)
-{
-    static char buf[48][96];
-    const char *lines[48];
-    int n = 0, count;
-    const sw_control *controls = sw_controls(&count);
-    for (int i = 0; i < count && n < 46; i++) {
-        const sw_control *c = &controls[i];
-        int shown = c->context == SW_CTX_PLAY || (c->context == SW_CTX_LESSON && in_lesson);
-        if (!c->help_keys || !shown)
-            continue;
-        snprintf(buf[n], sizeof buf[n], "%-13s %s", c->help_keys, c->help);
-        lines[n] = buf[n];
-        n++;
-    }
-    /* what the numbers on the status line and the meter mean */
-    static const char *const terms[] = {
-        "energy: change since t=0, % of the energy of the motion",
-        "        (above the resting state; an orbit: of |E(0)|)",
-        "error:  largest |y - true y| over positions and velocities",
-        "|L|dt:  stiffest eigenvalue of the linearisation, times dt",
-        "x.../step: growth per step of the worst mode (1: neutral)",
-    };
-    for (size_t i = 0; i < sizeof terms / sizeof terms[0] && n < 46; i++)
-        lines[n++] = terms[i];
-    snprintf(buf[n], sizeof buf[n], "%s", "press ? again to close");
-    lines[n] = buf[n];
-    n++;
-    overlay(scr, "keys", lines, n, SW_STYLE_TEXT);
-}
-
-static void panel_overlay(sw_app *a, sw_screen *scr)
-{
-    static char buf[SW_MAX_PARAMS + 1][96];
-    const char *lines[SW_MAX_PARAMS + 1];
-    int n = 0;
-    for (int i = 0; i < a->scene->nparams; i++, n++) {
-        const sw_param *p = &a->scene->params[i];
-        snprintf(buf[n], sizeof buf[n], "%s %-8s = %-10g %-7s [%g, %g]", i == a->param_sel ? ">" : " ", p->name,
-                 a->p[i], p->unit, p->min, p->max);
-        lines[n] = buf[n];
-    }
-    snprintf(buf[n], sizeof buf[n], "Up/Down choose, Left/Right change (restarts), p closes");
-    lines[n] = buf[n];
-    n++;
-    overlay(scr, a->scene->name, lines, n, SW_STYLE_TEXT);
-}
-
-/* How each kind of side-pane line looks. */
-static int side_style(sw_side_kind kind)
-{
-    static const int styles[] = {
-        [SW_SIDE_TEXT] = SW_STYLE_TEXT, [SW_SIDE_VERBATIM] = SW_STYLE_STATUS, [SW_SIDE_TITLE] = SW_STYLE_TITLE,
-        [SW_SIDE_OK] = SW_STYLE_OK, [SW_SIDE_BAD] = SW_STYLE_BAD, [SW_SIDE_DIM] = SW_STYLE_DIM,
-        [SW_SIDE_HINT] = SW_STYLE_WARN,
-    };
-    return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
-}
-
-void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *scr)
-{
-    sw_screen_clear(scr);
-    if (scr->cols < SW_MIN_COLS || scr->rows < SW_MIN_ROWS) {
-        char m[96];
-        snprintf(m, sizeof m, "terminal too small: %dx%d, stepwise needs %dx%d", scr->cols, scr->rows,
-                 SW_MIN_COLS, SW_MIN_ROWS);
-        sw_screen_text(scr, 0, 0, scr->cols, SW_STYLE_BAD, m);
-        sw_screen_text(scr, 1, 0, scr->cols, SW_STYLE_DIM, "enlarge the window, or press q to quit");
-        return;
-    }
-    int status_rows = a->nsims + 3;
-    int scene_cols = scr->cols, scene_rows = scr->rows - status_rows, side_col = -1, side_row = -1;
-    int side_w = 0, side_h = 0;
-    if (side && side->nlines > 0) {
-        if (side->width > 0 && scr->cols - side->width >= 40) {
-            side_w = side->width;
-            scene_cols = scr->cols - side_w - 1;
-            side_col = scene_cols + 1;
-            side_row = 0;
-            side_h = scene_rows;
-        } else {
-            side_h = scene_rows / 2;
-            scene_rows -= side_h;
-            side_row = scene_rows;
-            side_col = 0;
-            side_w = scr->cols;
-        }
-    }
-    int graph_h = a->graph ? (scene_rows >= 20 ? 8 : scene_rows / 3) : 0;
-    draw_scene(f, a, scene_rows - graph_h, scene_cols);
-    blit(scr, &f->canvas, 0, 0);
-    if (graph_h > 0)
-        draw_graph(f, a, scr, scene_rows - graph_h, 0, graph_h, scene_cols);
-    if (side_w > 0) {
-        /* Too long for the pane: scroll, and say there is more. */
-        int first = side->scroll ? *side->scroll : 0, max_first = side->nlines - side_h;
-        first = first > max_first ? max_first : first;
-        first = first < 0 ? 0 : first;
-        if (side->scroll)
-            *side->scroll = first;
-        for (int i = 0; first + i < side->nlines && i < side_h; i++)
-            sw_screen_text(scr, side_row + i, side_col, side_w,
-                           side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT), side->lines[first + i]);
-        if (first > 0)
-            sw_screen_text(scr, side_row, side_col + side_w - 9, 9, SW_STYLE_DIM, "(Up: more)");
-        if (first < max_first)
-            sw_screen_text(scr, side_row + side_h - 1, side_col + side_w - 11, 11, SW_STYLE_DIM, "(Down: more)");
-    }
-
-    /* status block */
-    int row = scr->rows - status_rows;
-    char line[512];
-    for (int i = 0; i < a->nsims; i++) {
-        char glyph[4] = { (char)sim_glyph[i], ' ', '\0' };
-        sw_app_status(a, i, line, sizeof line);
-        sw_screen_text(scr, row, 0, 2, sim_style[i], glyph);
-        sw_screen_text(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, line);
-    }
-    int st;
-    meter(a, line, sizeof line, &st);
-    size_t used = strlen(line);
-    if (a->paused)
-        snprintf(line + used, sizeof line - used, "%sPAUSED", used ? "   " : "");
-    else if (a->slowmo > 1.05)
-        snprintf(line + used, sizeof line - used, "%sslow motion x%.1f", used ? "   " : "", a->slowmo);
-    used = strlen(line);
-    if (a->speed != 1)
-        snprintf(line + used, sizeof line - used, "%sspeed x%g", used ? "   " : "", a->speed);
-    if (a->record_path[0]) {
-        used = strlen(line);
-        snprintf(line + used, sizeof line - used, "%sREC %s", used ? "   " : "", a->record_path);
-    }
-    sw_screen_text(scr, row++, 0, scr->cols, st, line);
-    sw_screen_text(scr, row++, 0, scr->cols, SW_STYLE_TEXT, a->message);
-    sw_screen_text(scr, row, 0, scr->cols, SW_STYLE_DIM,
-                   side ? "n next page  h hint  i method  +/- dt  space pause  r reset  ? help  q quit"
-                        : "i method  +/- dt  space pause  r reset  c compare  g ghost  ? help  q quit");
-
-    const sw_sim *m = &a->sims[0];
-    if (m->blown) {
-        snprintf(line, sizeof line, " BLOWN UP at step %ld, t = %.4g: %s. Press r to reset. ", m->blow_step,
-                 m->blow_time, m->blow_reason);
-        int w = (int)strlen(line) < scene_cols ? (int)strlen(line) : scene_cols;
-        sw_screen_text(scr, (scene_rows - graph_h) / 2, (scene_cols - w) / 2, w, SW_STYLE_BAD, line);
-    }
-    if (a->workprec && a->bench) {
-        static char plot[(120 + 1) * 40 + 1];
-        int w = scr->cols - 4 < 120 ? scr->cols - 4 : 120, h = scr->rows - 4 < 40 ? scr->rows - 4 : 40;
-        if (w >= 40 && h >= 10 &&
-            sw_bench_plot(a->bench, a->workprec == 1 ? SW_BENCH_X_EVALS : SW_BENCH_X_TIME, plot, w, h) == SW_OK) {
-            const char *lines[40];
-            int n = 0;
-            for (char *p = plot; *p && n < h; n++) {
-                lines[n] = p;
-                char *nl = strchr(p, '\n');
-                if (!nl)
-                    break;
-                *nl = '\0';
-                p = nl + 1;
-            }
-            overlay(scr, "work-precision (w)", lines, n, SW_STYLE_TEXT);
-        }
-    }
-    if (a->panel)
-        panel_overlay(a, scr);
-    if (a->help)
-        help_overlay(scr, side != NULL);
 }

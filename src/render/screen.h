@@ -12,6 +12,8 @@
 #include "render/camera.h"
 #include "render/canvas.h"
 #include "render/draw.h"
+#include "render/phase.h"
+#include "render/region.h"
 #include "render/trails.h"
 
 /* Styles past the canvas's own (SW_STYLE_*). */
@@ -38,15 +40,18 @@ typedef struct sw_screen {
     uint32_t *cp;
     unsigned char *style;
     unsigned char *fade;
+    int clipped;    /* texts cut at their width or the screen's edge since the last clear */
 } sw_screen;
 
 int sw_screen_init(sw_screen *s, int cols, int rows, char *err, size_t errlen);
 void sw_screen_free(sw_screen *s);
 void sw_screen_clear(sw_screen *s);
-/* Write UTF-8 text at (row, col), clipped to width cells and the screen;
- * invalid bytes show as '?'. A wide character takes two cells (the second
- * SW_SCREEN_WIDE_TAIL) and is left out whole when only one is left;
- * combining marks are dropped. Returns the cells written. */
+/* Write UTF-8 text at (row, col), clipped to width cells and the screen
+ * (a clip counts in s->clipped: the composer fits and wraps every text, so
+ * a test of every screen asks for none); invalid bytes show as '?'. A wide
+ * character takes two cells (the second SW_SCREEN_WIDE_TAIL) and is left
+ * out whole when only one is left; combining marks are dropped. Returns the
+ * cells written. */
 int sw_screen_text(sw_screen *s, int row, int col, int width, int style, const char *text);
 /* Fill a rectangle with spaces of a style (overlay backgrounds). */
 void sw_screen_fill(sw_screen *s, int row, int col, int height, int width, int style);
@@ -54,23 +59,49 @@ void sw_screen_fill(sw_screen *s, int row, int col, int height, int width, int s
  * returns the length, or 0 (buf "") when it does not fit in len. */
 size_t sw_screen_to_text(const sw_screen *s, char *buf, size_t len);
 
-/* What the picture keeps between frames: canvas, trails, followed view. */
+/* Copy a canvas onto the screen at (row0, col0), clipped to the screen. */
+void sw_screen_blit(sw_screen *scr, const sw_canvas *c, int row0, int col0);
+
+/* What the picture keeps between frames: canvases, trails, the camera, the
+ * phase and region views' caches. */
 typedef struct sw_frame {
-    sw_canvas canvas;
+    sw_canvas canvas;         /* the scene, the phase or the region view (and lane 1) */
+    sw_canvas lanes[SW_APP_SIMS - 1]; /* compare side by side: lanes 2 and 3 */
     sw_canvas plot;           /* the graph pane */
     sw_trails trails[SW_APP_SIMS];
-    sw_view view;
+    sw_view view;             /* the camera's view now */
     const sw_scene *view_scene;
+    double view_p[SW_MAX_PARAMS], view_zoom;
+    int view_follow;
     int have_trails;
+    int unicode;              /* the terminal shows Braille and arrows (the TUI sets it) */
+    unsigned char *keep;      /* which particles are alive (scratch) */
+    int keep_cap;
+    sw_phase_view phase;
+    sw_region region;
 } sw_frame;
 
 int sw_frame_init(sw_frame *f, char *err, size_t errlen);
 void sw_frame_free(sw_frame *f);
 /* Forget the followed view and the trails (after a reset or a new scene). */
 void sw_frame_forget(sw_frame *f);
-/* Compose the app (and an optional side pane) onto the screen. */
+/* Compose the app (and an optional side pane) onto the screen. The help
+ * screen is paged: a->help counts pages, and is set back to 0 past the last. */
 void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *scr);
 /* Push the current positions into the trails (once per frame). */
 void sw_frame_push_trails(sw_frame *f, sw_app *a);
+
+/* (overlay.c) The pieces the composer places, each in the rectangle given. */
+void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int height, int width);
+void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int width, int in_lesson);
+void sw_draw_panel(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
+void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
+/* (overlay.c) A boxed overlay of lines, centred in the rectangle, each line
+ * fitted to its width (the caller wraps). */
+void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
+                 const char *const *lines, int n, int style);
+/* (overlay.c) Write text wrapped to width on rows row.., at most max rows;
+ * returns the rows used. */
+int sw_screen_wrapped(sw_screen *scr, int row, int col, int width, int max, int style, const char *text);
 
 #endif

@@ -166,7 +166,23 @@ static int steppers_for(sw_truth_work *w, const sw_integrator *m, const sw_spect
         drop_steppers(w);
     w->method = m;
     for (int k = 0; k < sp->n; k++) {
+        double was[4];
+        int was_order = w->ts[k].ode.order;
+        memcpy(was, w->ts[k].j, sizeof was);
         test_system_init(&w->ts[k], sp->order, &sp->mode[k]);
+        if (k < w->ready && (m->flags & SW_PLUGIN) &&
+            (was_order != w->ts[k].ode.order || memcmp(was, w->ts[k].j, sizeof was) != 0)) {
+            /* A plugin steps in a child forked at its first step, which
+             * keeps the test system as it was then: a new mode needs a new
+             * stepper (a built-in reads the matrix afresh every step). */
+            sw_stepper_free(&w->st[k]);
+            if (sw_stepper_init(&w->st[k], m, &w->ts[k].ode, err, sizeof err) != SW_OK) {
+                for (int i = k + 1; i < w->ready; i++)
+                    sw_stepper_free(&w->st[i]);
+                w->ready = k;
+                return -1;
+            }
+        }
         if (k >= w->ready) {
             if (sw_stepper_init(&w->st[k], m, &w->ts[k].ode, err, sizeof err) != SW_OK)
                 return -1;

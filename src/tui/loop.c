@@ -43,6 +43,8 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
         sw_frame_free(&f);
         return SW_EIO;
     }
+    /* Braille and arrows only where the locale can show them */
+    f.unicode = sw_term_utf8();
     int cols = 0, rows = 0;
     double last = sw_clock_now(), rate_t = last, busy = 0, capacity = 0;
     long rate_steps = 0;

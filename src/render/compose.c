@@ -1,0 +1,500 @@
+/* The frame composer: where the picture (scene, lanes, phase or region
+ * view), the graph, the lesson pane, the status block and the overlays go.
+ * Invariant: every text is fitted (brief forms, then the least important
+ * fields dropped) or wrapped to the cells it gets, so nothing is cut in a
+ * word or a number at any size from SW_MIN_COLS × SW_MIN_ROWS up; while a
+ * lesson's question is open, overlays stay inside the picture, so they
+ * never hide it. */
+#include "render/screen.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render/decor.h"
+#include "render/text.h"
+#include "stepwise/stepwise.h"
+
+static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
+static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
+
+static void fit_line(sw_screen *scr, int row, int col, int width, int style, const sw_field *f, int n)
+{
+    char line[SW_TEXT_LINE];
+    if (sw_text_fit(line, sizeof line, width, f, n, "  ") > 0)
+        sw_screen_text(scr, row, col, width, style, line);
+}
+
+static sw_field *field(sw_field *f, int *n, int prio, const char *full, const char *brief)
+{
+    sw_field *x = &f[(*n)++];
+    /* the texts here are built to fit a field (paths are cut to 90 bytes first) */
+    size_t lf = strlen(full), lb = brief ? strlen(brief) : 0;
+    lf = lf < sizeof x->full ? lf : sizeof x->full - 1;
+    lb = lb < sizeof x->brief ? lb : sizeof x->brief - 1;
+    memcpy(x->full, full, lf);
+    x->full[lf] = '\0';
+    if (lb)
+        memcpy(x->brief, brief, lb);
+    x->brief[lb] = '\0';
+    x->prio = prio;
+    return x;
+}
+
+/* ---- the camera and the scene ------------------------------------------------- */
+
+/* The scene's natural view times the zoom; when following, grown (never
+ * shrunk) to hold the main run's particles. */
+static void camera(sw_frame *f, sw_app *a)
+{
+    const sw_sim *main = &a->sims[0];
+    sw_view base = sw_view_zoom(a->scene->view(&main->sys), a->zoom);
+    if (f->view_scene != a->scene || memcmp(f->view_p, a->p, sizeof f->view_p) != 0 || f->view_zoom != a->zoom ||
+        f->view_follow != a->follow || !a->follow || main->t == 0) {
+        f->view = base;
+        f->view_scene = a->scene;
+        memcpy(f->view_p, a->p, sizeof f->view_p);
+        f->view_zoom = a->zoom;
+        f->view_follow = a->follow;
+    }
+    if (a->follow && !main->blown)
+        sw_view_follow(&f->view, main->sys.y, main->sys.n, 0.25);
+}
+
+/* Which particles of sim s are alive (NULL: all). */
+static const unsigned char *alive(sw_frame *f, const sw_sim *s)
+{
+    if (!s->sys.scene || !s->sys.scene->alive)
+        return NULL;
+    if (s->sys.n > f->keep_cap) {
+        unsigned char *k = realloc(f->keep, (size_t)s->sys.n);
+        if (!k)
+            return NULL;
+        f->keep = k;
+        f->keep_cap = s->sys.n;
+    }
+    for (int i = 0; i < s->sys.n; i++)
+        f->keep[i] = (unsigned char)sw_sim_alive(s, i);
+    return f->keep;
+}
+
+/* Sims first..last (overlaid) on canvas c, sized cols × rows. */
+static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, int first, int last)
+{
+    char err[SW_ERRLEN];
+    if (c->cols != cols || c->rows != rows)
+        sw_canvas_resize(c, cols, rows, err, sizeof err);
+    sw_canvas_set_mode(c, a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
+    sw_canvas_set_view(c, &f->view, err, sizeof err);
+    sw_canvas_clear(c);
+    const sw_sim *main = &a->sims[0];
+    sw_canvas_draw_decor(c, &main->sys, main->t, f->unicode);
+    if (a->trails && f->have_trails)
+        for (int i = last; i >= first; i--)
+            sw_canvas_draw_trails(c, &f->trails[i], SW_STYLE_TRAIL);
+    const double *g = a->ghost ? sw_app_ghost(a) : NULL;
+    if (g)
+        sw_canvas_draw_system(c, &main->sys, g, main->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    for (int i = last; i >= first; i--)
+        sw_canvas_draw_system(c, &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t, sim_glyph[i], sim_style[i]);
+    /* particles that left the view: an arrow at the edge (the main run's with its distance) */
+    for (int i = last; i >= first; i--) {
+        const sw_sim *s = &a->sims[i];
+        sw_canvas_offscreen(c, s->sys.y, s->sys.n, alive(f, s), sim_style[i], i == first);
+    }
+}
+
+/* A blown-up run's banner on the picture's top row: its picture stays frozen
+ * where it blew up, the others go on. */
+static void blown_banner(sw_screen *scr, const sw_sim *s, int row, int col, int width, int rows)
+{
+    char line[SW_TEXT_LINE];
+    snprintf(line, sizeof line, "BLOWN UP at step %ld, t = %.4g: %s. Press r to reset.", s->blow_step, s->blow_time,
+             s->blow_reason);
+    sw_screen_wrapped(scr, row, col, width, rows > 3 ? 3 : rows, SW_STYLE_BAD, line);
+}
+
+/* Compare side by side: one lane per method, each with its own title line
+ * (method, energy, error) and picture, stacked or in columns, whichever
+ * gives the scene the larger scale. */
+static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
+{
+    int n = a->nsims;
+    sw_view v = f->view;
+    double vx = v.xmax - v.xmin, vy = v.ymax - v.ymin;
+    int stack_h = rows / n, col_w = (cols - (n - 1)) / n;
+    double s_stack = fmax(vx / cols, vy / (2.0 * (stack_h - 1)));
+    double s_cols = fmax(vx / col_w, vy / (2.0 * (rows - 1)));
+    int stacked = s_stack <= s_cols;
+    for (int i = 0; i < n; i++) {
+        int r = stacked ? row0 + i * stack_h : row0, c = stacked ? col0 : col0 + i * (col_w + 1);
+        int h = stacked ? (i == n - 1 ? rows - i * stack_h : stack_h) : rows, w = stacked ? cols : col_w;
+        if (h < 2 || w < 8)
+            continue;
+        sw_field fl[SW_STATUS_FIELDS + 1];
+        int nf = 0;
+        char glyph[2] = { (char)sim_glyph[i], '\0' };
+        field(fl, &nf, 11, glyph, NULL);
+        sw_field st[SW_STATUS_FIELDS];
+        int ns = sw_app_status_fields(a, i, st, SW_STATUS_FIELDS);
+        /* the lane's own numbers; the shared ones (scene, dt, t) are on the status line */
+        for (int k = 0; k < ns; k++)
+            if (strcmp(st[k].full, a->scene->name) != 0 && strncmp(st[k].full, "dt=", 3) != 0 &&
+                strncmp(st[k].full, "t=", 2) != 0)
+                fl[nf++] = st[k];
+        char line[SW_TEXT_LINE];
+        if (sw_text_fit(line, sizeof line, w, fl, nf, " ") > 0)
+            sw_screen_text(scr, r, c, w, a->sims[i].blown ? SW_STYLE_BAD : sim_style[i], line);
+        sw_canvas *cv = i == 0 ? &f->canvas : &f->lanes[i - 1];
+        if (!cv->cols) {
+            char err[SW_ERRLEN];
+            if (sw_canvas_init(cv, w, h - 1, err, sizeof err) != SW_OK)
+                continue;
+        }
+        draw_sims(f, a, cv, w, h - 1, i, i);
+        sw_screen_blit(scr, cv, r + 1, c);
+        if (a->sims[i].blown)
+            blown_banner(scr, &a->sims[i], r + 1, c, w, h - 1);
+        if (!stacked && i < n - 1)
+            for (int k = 0; k < rows; k++)
+                sw_screen_text(scr, row0 + k, c + w, 1, SW_STYLE_DIM, "|");
+    }
+}
+
+/* ---- the phase and region views ------------------------------------------------ */
+
+static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
+{
+    char err[SW_ERRLEN], buf[SW_TEXT_LINE];
+    const char *q, *qu, *v, *vu;
+    sw_phase_names(a->phase_coord, &q, &qu, &v, &vu);
+    sw_field fl[12];
+    int n = 0;
+    snprintf(buf, sizeof buf, "phase: %s (%s) against %s (%s)", q, qu, v, vu);
+    field(fl, &n, 10, buf, NULL);
+    snprintf(buf, sizeof buf, "of particle %d", a->phase_particle + 1);
+    field(fl, &n, 6, buf, NULL);
+    if (rows < 6)
+        return;
+    sw_canvas *c = &f->canvas;
+    if (c->cols != cols || c->rows != rows - 2)
+        sw_canvas_resize(c, cols, rows - 2, err, sizeof err);
+    sw_canvas_set_mode(c, a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
+    int left = sw_phase_draw(&f->phase, c, a, f->unicode);
+    double q0, q1, v0, v1;
+    sw_phase_range(&f->phase, a, &q0, &q1, &v0, &v1);
+    if (f->phase.have_range) {
+        snprintf(buf, sizeof buf, "%s %.3g..%.3g, %s %.3g..%.3g", q, q0, q1, v, v0, v1);
+        field(fl, &n, 3, buf, NULL);
+    }
+    fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
+    sw_screen_blit(scr, c, row0 + 1, col0);
+    n = 0;
+    int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
+    field(fl, &n, 9, exact ? "' exact orbit" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
+          exact ? "' exact" : NULL);
+    for (int i = 0; i < a->nsims; i++) {
+        snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
+                 a->sims[i].blown ? " (blew up)" : "");
+        field(fl, &n, 10 - i, buf, NULL);
+    }
+    if (left) {
+        snprintf(buf, sizeof buf, "%d left the frame (z: zoom out)", left);
+        field(fl, &n, 7, buf, "z: zoom out");
+    }
+    field(fl, &n, 2, "V coordinate  < > particle", "V < >");
+    fit_line(scr, row0 + rows - 1, col0, cols, SW_STYLE_DIM, fl, n);
+}
+
+static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
+{
+    char err[SW_ERRLEN], buf[SW_TEXT_LINE], why[SW_ERRLEN];
+    const sw_integrator *m = a->sims[0].method;
+    if (rows < 7)
+        return;
+    sw_field fl[12];
+    int n = 0;
+    snprintf(buf, sizeof buf, "stability region of %s", m->name);
+    field(fl, &n, 10, buf, NULL);
+    field(fl, &n, 6, "(shaded: growth per step <= 1)", "(shaded: stable)");
+    field(fl, &n, 3, "in the plane of dt x eigenvalue", NULL);
+    fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
+    sw_canvas *c = &f->canvas;
+    if (c->cols != cols || c->rows != rows - 3)
+        sw_canvas_resize(c, cols, rows - 3, err, sizeof err);
+    /* Braille where the terminal shows it, or when asked for */
+    sw_canvas_set_mode(c, f->unicode || a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
+    double worst;
+    int outside, shown;
+    if (sw_region_draw(&f->region, c, a, &worst, &outside, &shown, why, sizeof why) != 0) {
+        sw_screen_wrapped(scr, row0 + 2, col0 + 1, cols - 2, rows - 4, SW_STYLE_TEXT, why);
+        return;
+    }
+    sw_screen_blit(scr, c, row0 + 1, col0);
+    n = 0;
+    if (why[0]) {
+        sw_screen_wrapped(scr, row0 + rows - 2, col0, cols, 2, SW_STYLE_DIM, why);
+        return;
+    }
+    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
+             a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
+    field(fl, &n, 9, buf, "* dt x eigenvalue");
+    snprintf(buf, sizeof buf, "dt=%g", a->dt);
+    field(fl, &n, 8, buf, NULL);
+    if (a->spec.growing) {
+        snprintf(buf, sizeof buf, "(%d growing by the physics, not shown)", a->spec.growing);
+        field(fl, &n, 2, buf, NULL);
+    }
+    fit_line(scr, row0 + rows - 2, col0, cols, SW_STYLE_DIM, fl, n);
+    n = 0;
+    if (f->region.progress < 1) {
+        snprintf(buf, sizeof buf, "shading %s's region: %.0f%% (each point steps the sandboxed plugin)", m->name,
+                 100 * f->region.progress);
+        field(fl, &n, 11, buf, NULL);
+    }
+    if (outside) {
+        snprintf(buf, sizeof buf, "X %d outside: they grow", outside);
+        field(fl, &n, 10, buf, "X grows");
+    } else
+        field(fl, &n, 10, "all inside: no mode grows", "all inside");
+    snprintf(buf, sizeof buf, "worst x%.6f/step", worst);
+    field(fl, &n, 9, buf, NULL);
+    field(fl, &n, 4, "+/- move the marks", "+/- dt");
+    fit_line(scr, row0 + rows - 1, col0, cols, outside ? SW_STYLE_WARN : SW_STYLE_STATUS, fl, n);
+}
+
+/* ---- the status block ------------------------------------------------------------- */
+
+/* The stability meter: the stiffest mode's |λ|·Δt against the method's
+ * limit on the current linearisation (a bar), and the growth per step ρ of
+ * the worst mode under this method at this Δt, with enough digits that a
+ * neutral ρ = 1 reads as one. When the run's energy grows although every
+ * mode is stable, the line says so: that growth is nonlinear. */
+static int meter_fields(sw_app *a, sw_field *f, int *style)
+{
+    sw_app_meter m;
+    char buf[SW_TEXT_LINE];
+    int n = 0;
+    *style = SW_STYLE_STATUS;
+    if (!sw_app_stability(a, &m)) {
+        if (a->sims[0].method->flags & SW_ADAPTIVE) {
+            snprintf(buf, sizeof buf, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
+            field(f, &n, 8, buf, "adaptive steps");
+        }
+        return n;
+    }
+    snprintf(buf, sizeof buf, "|L|dt=%.3g", m.stiff * a->dt);
+    field(f, &n, 7, buf, NULL);
+    if (!m.unbounded && m.limit > 0) {
+        char bar[16];
+        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
+        bar[0] = '[';
+        for (int i = 0; i < 10; i++)
+            bar[i + 1] = i < fill ? '#' : '.';
+        bar[11] = ']';
+        bar[12] = '\0';
+        field(f, &n, 2, bar, NULL);
+        snprintf(buf, sizeof buf, "limit %.3g", m.stiff * m.limit);
+        field(f, &n, 5, buf, NULL);
+    } else
+        field(f, &n, 5, m.unbounded ? "stable at any dt" : "no stable dt", NULL);
+    snprintf(buf, sizeof buf, "x%.6f/step", m.growth);
+    field(f, &n, 8, buf, NULL);
+    field(f, &n, 9,
+          m.grows ? "GROWS" : m.slow ? "grows, too slowly to see" : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral",
+          m.slow ? "grows slowly" : NULL);
+    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
+    if (run_grows && !m.grows)
+        field(f, &n, 6, "run's energy grows: nonlinear", "nonlinear growth");
+    if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
+        *style = SW_STYLE_WARN;
+    return n;
+}
+
+static void key_fields(const sw_app *a, const sw_side *side, sw_field *f, int *n)
+{
+    if (side) {
+        if (side->notice)
+            field(f, n, 12, side->notice, NULL);
+        if (side->question_open)
+            field(f, n, 11, "A-F answer", NULL);
+        if (!side->notice)
+            field(f, n, 9, "n next page", "n next");
+        field(f, n, 8, "h hint", NULL);
+    }
+    field(f, n, side ? 4 : 9, "i method", NULL);
+    field(f, n, side ? 4 : 9, "+/- dt", NULL);
+    field(f, n, side ? 3 : 8, "space pause", NULL);
+    field(f, n, side ? 3 : 7, "r reset", NULL);
+    field(f, n, 6, a->compare ? "l lanes" : "c compare", NULL);
+    field(f, n, 6, "g ghost", NULL);
+    field(f, n, 5, a->view == SW_VIEW_PHASE ? "v scene" : "v phase", NULL);
+    field(f, n, 5, a->view == SW_VIEW_REGION ? "s scene" : "s region", NULL);
+    field(f, n, 2, "z/Z zoom", NULL);
+    field(f, n, 10, "? help", NULL);
+    field(f, n, 10, "q quit", NULL);
+}
+
+/* The status block's lines (full width), bottom of the screen; returns its rows. */
+static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
+{
+    char msg[4][SW_TEXT_LINE];
+    int nmsg = a->message[0] ? sw_text_wrap(a->message, scr->cols, msg, 3) : 0;
+    if (nmsg > 3)
+        nmsg = 3;
+    int nstat = a->compare && a->lanes && a->view == SW_VIEW_SCENE ? 1 : a->nsims;
+    int rows = nstat + 1 + (nmsg ? nmsg : 1) + 1;
+    if (dry)
+        return rows;
+    int row = scr->rows - rows;
+    sw_field f[24];
+    for (int i = 0; i < nstat; i++) {
+        int n = sw_app_status_fields(a, i, f, SW_STATUS_FIELDS);
+        char glyph[4] = { (char)sim_glyph[i], ' ', '\0' };
+        sw_screen_text(scr, row, 0, 2, sim_style[i], glyph);
+        if (i > 0) {
+            memmove(f + 1, f, (size_t)n * sizeof *f);
+            field(f, &(int){ 0 }, 11, "vs", NULL);
+            n++;
+        }
+        fit_line(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, f, n);
+    }
+    int st, n = meter_fields(a, f, &st);
+    if (a->paused)
+        field(f, &n, 10, "PAUSED", NULL);
+    else if (a->slowmo > 1.05) {
+        char b[48], s[24];
+        snprintf(b, sizeof b, "slow motion x%.1f", a->slowmo);
+        snprintf(s, sizeof s, "slow x%.1f", a->slowmo);
+        field(f, &n, 7, b, s);
+    }
+    if (a->speed != 1) {
+        char b[48];
+        snprintf(b, sizeof b, "speed x%g", a->speed);
+        field(f, &n, 6, b, NULL);
+    }
+    if (a->record_path[0]) {
+        char b[300];
+        snprintf(b, sizeof b, "REC %.90s", a->record_path);
+        field(f, &n, 5, b, "REC");
+    }
+    fit_line(scr, row++, 0, scr->cols, st, f, n);
+    for (int i = 0; i < nmsg; i++)
+        sw_screen_text(scr, row++, 0, scr->cols, SW_STYLE_TEXT, msg[i]);
+    if (!nmsg)
+        row++;
+    n = 0;
+    key_fields(a, side, f, &n);
+    fit_line(scr, row, 0, scr->cols, side && side->notice ? SW_STYLE_OK : SW_STYLE_DIM, f, n);
+    return rows;
+}
+
+/* ---- the side pane ---------------------------------------------------------------- */
+
+static int side_style(sw_side_kind kind)
+{
+    static const int styles[] = {
+        [SW_SIDE_TEXT] = SW_STYLE_TEXT, [SW_SIDE_VERBATIM] = SW_STYLE_STATUS, [SW_SIDE_TITLE] = SW_STYLE_TITLE,
+        [SW_SIDE_OK] = SW_STYLE_OK, [SW_SIDE_BAD] = SW_STYLE_BAD, [SW_SIDE_DIM] = SW_STYLE_DIM,
+        [SW_SIDE_HINT] = SW_STYLE_WARN,
+    };
+    return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
+}
+
+/* Lines first .. first + n - 1 of the pane from row on, scrolled with a
+ * row that says there is more above or below. */
+static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int n)
+{
+    int more_above = 0, more_below = 0, body = height, first = side->scroll ? *side->scroll : 0;
+    for (int pass = 0; pass < 3; pass++) {
+        more_above = first > 0;
+        body = height - more_above;
+        more_below = first + body < n;
+        body -= more_below;
+        int max_first = n - body;
+        if (first > max_first)
+            first = max_first;
+        if (first < 0)
+            first = 0;
+    }
+    if (side->scroll)
+        *side->scroll = first;
+    int r = row;
+    if (more_above)
+        sw_screen_text(scr, r++, col, width, SW_STYLE_DIM, "(Up: more above)");
+    for (int i = 0; first + i < n && i < body; i++)
+        sw_screen_text(scr, r++, col, width, side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT),
+                       side->lines[first + i]);
+    if (more_below)
+        sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_DIM, "(Down: more below)");
+}
+
+/* The lesson pane: when it is too long, the text scrolls and what the page
+ * asks (goals, question) stays at its foot, as long as that leaves the text
+ * a third of the pane. */
+static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int height, int width)
+{
+    int pinned = side->pinned;
+    if (side->nlines <= height || pinned <= 0 || pinned > height * 2 / 3) {
+        draw_scrolled(side, scr, row, col, height, width, side->nlines);
+        return;
+    }
+    int text = height - pinned;
+    draw_scrolled(side, scr, row, col, text, width, side->nlines - pinned);
+    for (int i = 0; i < pinned; i++) {
+        int k = side->nlines - pinned + i;
+        sw_screen_text(scr, row + text + i, col, width, side_style(side->kinds ? side->kinds[k] : SW_SIDE_TEXT),
+                       side->lines[k]);
+    }
+}
+
+/* ---- the frame ---------------------------------------------------------------------- */
+
+void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *scr)
+{
+    sw_screen_clear(scr);
+    if (scr->cols < SW_MIN_COLS || scr->rows < SW_MIN_ROWS) {
+        char m[160];
+        snprintf(m, sizeof m, "terminal too small: %dx%d, stepwise needs %dx%d. Enlarge the window, or press q to "
+                 "quit.", scr->cols, scr->rows, SW_MIN_COLS, SW_MIN_ROWS);
+        sw_screen_wrapped(scr, 0, 0, scr->cols, scr->rows, SW_STYLE_BAD, m);
+        return;
+    }
+    int bottom = status_block(a, side, scr, 1);
+    int pic_rows = scr->rows - bottom, pic_cols = scr->cols, side_w = 0;
+    if (side && side->nlines > 0) {
+        side_w = side->width > 0 ? side->width : scr->cols / 2;
+        if (scr->cols - side_w - 1 < 30)
+            side_w = scr->cols - 31;
+        pic_cols = scr->cols - side_w - 1;
+    }
+    int graph_h = a->graph ? (pic_rows >= 20 ? 8 : pic_rows / 3) : 0, view_rows = pic_rows - graph_h;
+    camera(f, a);
+    if (a->view == SW_VIEW_PHASE)
+        draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
+    else if (a->view == SW_VIEW_REGION)
+        draw_region(f, a, scr, 0, 0, view_rows, pic_cols);
+    else if (a->compare && a->lanes && a->nsims > 1)
+        draw_lanes(f, a, scr, 0, 0, view_rows, pic_cols);
+    else {
+        draw_sims(f, a, &f->canvas, pic_cols, view_rows, 0, a->nsims - 1);
+        sw_screen_blit(scr, &f->canvas, 0, 0);
+        if (a->sims[0].blown)
+            blown_banner(scr, &a->sims[0], 0, 0, pic_cols, view_rows);
+    }
+    if (graph_h > 0)
+        sw_draw_graph(f, a, scr, view_rows, 0, graph_h, pic_cols);
+    if (side_w > 0)
+        draw_side(side, scr, 0, pic_cols + 1, pic_rows, side_w);
+    status_block(a, side, scr, 0);
+    /* overlays above the status block; over the lesson's pane only while
+     * no question waits there (an overlay never hides the quiz) */
+    int over_cols = side_w > 0 && side->question_open ? pic_cols : scr->cols;
+    if (a->workprec && a->bench)
+        sw_draw_workprec(a, scr, 0, 0, pic_rows, over_cols);
+    if (a->panel)
+        sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
+    if (a->help)
+        sw_draw_help(a, scr, 0, 0, pic_rows, over_cols, side != NULL);
+}

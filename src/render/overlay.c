@@ -1,0 +1,317 @@
+/* The composer's pieces that are text first: the graph of energy drift (or
+ * error) with its axes and units, the paged help screen generated from the
+ * one list of controls, the parameter panel and the work-precision plot
+ * with a legend that says which curves lie on one another and why methods
+ * are missing. Every line is fitted or wrapped to the box it goes in. */
+#include "render/screen.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lab/bench.h"
+#include "render/text.h"
+#include "stepwise/stepwise.h"
+
+static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
+static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
+
+int sw_screen_wrapped(sw_screen *scr, int row, int col, int width, int max, int style, const char *text)
+{
+    static char lines[8][SW_TEXT_LINE];
+    int n = sw_text_wrap(text, width, lines, 8);
+    if (n > max)
+        n = max;
+    if (n > 8)
+        n = 8;
+    for (int i = 0; i < n; i++)
+        sw_screen_text(scr, row + i, col, width, style, lines[i]);
+    return n;
+}
+
+void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
+                 const char *const *lines, int n, int style)
+{
+    int w = sw_text_cells(title) + 4;
+    for (int i = 0; i < n; i++)
+        if (sw_text_cells(lines[i]) + 4 > w)
+            w = sw_text_cells(lines[i]) + 4;
+    if (w > width)
+        w = width;
+    int h = n + 2 > height ? height : n + 2;
+    int r0 = row + (height - h) / 2, c0 = col + (width - w) / 2;
+    sw_screen_fill(scr, r0, c0, h, w, style);
+    if (sw_text_cells(title) <= w - 4)
+        sw_screen_text(scr, r0, c0 + 2, w - 4, SW_STYLE_TITLE, title);
+    for (int i = 0; i < n && i < h - 2; i++)
+        sw_screen_text(scr, r0 + 1 + i, c0 + 2, w - 4, style, lines[i]);
+}
+
+/* ---- the graph ---------------------------------------------------------------- */
+
+void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int height, int width)
+{
+    char err[SW_ERRLEN];
+    double tmin = INFINITY, tmax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+    for (int i = 0; i < a->nsims; i++)
+        for (int k = 0; k < a->series[i].len; k++) {
+            double t = a->series[i].t[k], v = a->series[i].v[k];
+            if (!isfinite(t) || !isfinite(v))
+                continue;
+            tmin = fmin(tmin, t), tmax = fmax(tmax, t);
+            vmin = fmin(vmin, v), vmax = fmax(vmax, v);
+        }
+    int has_energy = isfinite(sw_sim_energy_drift(&a->sims[0]));
+    sw_field title[2] = {
+        { "", "", 2 }, { "", "", 1 },
+    };
+    snprintf(title[0].full, sizeof title[0].full, "%s", has_energy ? "energy drift (%)" : "error");
+    snprintf(title[1].full, sizeof title[1].full, "against time t (s)");
+    snprintf(title[1].brief, sizeof title[1].brief, "against t (s)");
+    char line[SW_TEXT_LINE];
+    sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
+    sw_text_fit(line, sizeof line, width, title, 2, " ");
+    sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, line);
+    if (!(tmax > tmin)) {
+        if (width >= 24)
+            sw_screen_text(scr, row + 1, col, width, SW_STYLE_DIM, "(collecting samples...)");
+        return;
+    }
+    if (!(vmax > vmin))
+        vmax = vmin + 1e-12 + fabs(vmin) * 1e-6;
+    const int lw = 9; /* "-1.23e+04" */
+    int pw = width - lw - 1, ph = height - 2;
+    if (pw < 4 || ph < 2)
+        return;
+    char lab[32];
+    snprintf(lab, sizeof lab, "%.3g", vmax);
+    sw_screen_text(scr, row + 1, col + lw - sw_text_cells(lab), lw, SW_STYLE_DIM, lab);
+    snprintf(lab, sizeof lab, "%.3g", vmin);
+    sw_screen_text(scr, row + ph, col + lw - sw_text_cells(lab), lw, SW_STYLE_DIM, lab);
+    for (int r = 1; r <= ph; r++)
+        sw_screen_text(scr, row + r, col + lw, 1, SW_STYLE_DIM, "|");
+    /* the time axis: its ends, in seconds */
+    snprintf(lab, sizeof lab, "%.3g", tmin);
+    sw_screen_text(scr, row + height - 1, col + lw + 1, 10, SW_STYLE_DIM, lab);
+    snprintf(lab, sizeof lab, "t=%.4g s", tmax);
+    int lc = sw_text_cells(lab);
+    if (lc < pw - 8)
+        sw_screen_text(scr, row + height - 1, col + width - lc, lc, SW_STYLE_DIM, lab);
+    if (f->plot.cols != pw || f->plot.rows != ph)
+        sw_canvas_resize(&f->plot, pw, ph, err, sizeof err);
+    /* Fill the plot box exactly: undo the canvas's aspect correction by
+     * scaling values into a view shaped like the box. */
+    sw_view v = { 0, (double)pw, 0, 2.0 * ph };
+    sw_canvas_set_view(&f->plot, &v, err, sizeof err);
+    sw_canvas_clear(&f->plot);
+    if (vmin < 0 && vmax > 0) {
+        double y0 = (0 - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
+        sw_canvas_line(&f->plot, 0, y0, pw, y0, '-', SW_STYLE_WALL);
+    }
+    for (int i = a->nsims - 1; i >= 0; i--) {
+        const sw_series *s = &a->series[i];
+        for (int k = 1; k < s->len; k++) {
+            double x0 = (s->t[k - 1] - tmin) / (tmax - tmin) * (pw - 1e-9), x1 = (s->t[k] - tmin) / (tmax - tmin) * (pw - 1e-9);
+            double y0 = (s->v[k - 1] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9), y1 = (s->v[k] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
+            sw_canvas_line(&f->plot, x0, y0, x1, y1, sim_glyph[i], sim_style[i]);
+        }
+    }
+    sw_screen_blit(scr, &f->plot, row + 1, col + lw + 1);
+}
+
+/* ---- help --------------------------------------------------------------------- */
+
+#define HELP_LINES 160
+
+void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int width, int in_lesson)
+{
+    static char buf[HELP_LINES][SW_TEXT_LINE];
+    const char *lines[HELP_LINES];
+    int n = 0, count, inner = width - 4, key_w = 13;
+    if (inner < 30 || height < 5) {
+        a->help = 0;
+        return;
+    }
+    /* what the numbers on the status line and the meter mean */
+    static const char *const terms[] = {
+        "energy: change since t=0, % of the energy of the motion (above the resting state; an orbit: of |E(0)|)",
+        "error: largest |y - true y| over positions and velocities",
+        "|L|dt: stiffest eigenvalue of the linearisation, times dt",
+        "x.../step: growth per step of the worst mode (1: neutral)",
+    };
+    const sw_control *controls = sw_controls(&count);
+    char text[SW_TEXT_LINE], wrapped[16][SW_TEXT_LINE];
+    for (int i = 0; i < count + (int)(sizeof terms / sizeof terms[0]); i++) {
+        const char *keys, *help;
+        if (i < count) {
+            const sw_control *c = &controls[i];
+            int shown = c->context == SW_CTX_PLAY || (c->context == SW_CTX_LESSON && in_lesson);
+            if (!c->help_keys || !shown)
+                continue;
+            keys = c->help_keys;
+            help = c->help;
+        } else {
+            keys = "";
+            help = terms[i - count];
+        }
+        /* the help text wraps beside its keys */
+        int k = sw_text_wrap(help, inner - key_w - 1, wrapped, 16);
+        for (int j = 0; j < k && j < 16 && n < HELP_LINES; j++) {
+            snprintf(text, sizeof text, "%-*s %.400s", key_w, j == 0 ? keys : "", wrapped[j]);
+            memcpy(buf[n], text, sizeof text);
+            lines[n] = buf[n];
+            n++;
+        }
+    }
+    int per_page = height - 3, pages = (n + per_page - 1) / per_page;
+    if (a->help > pages) {
+        a->help = 0; /* past the last page: closed */
+        return;
+    }
+    int first = (a->help - 1) * per_page, shown = n - first < per_page ? n - first : per_page;
+    static char footer[64];
+    snprintf(footer, sizeof footer, a->help < pages ? "? next page (%d/%d)" : "? closes (%d/%d)", a->help, pages);
+    const char *page[HELP_LINES];
+    for (int i = 0; i < shown; i++)
+        page[i] = lines[first + i];
+    page[shown] = footer;
+    sw_draw_box(scr, row, col, height, width, "keys", page, shown + 1, SW_STYLE_TEXT);
+}
+
+/* ---- the parameter panel -------------------------------------------------------- */
+
+void sw_draw_panel(sw_app *a, sw_screen *scr, int row, int col, int height, int width)
+{
+    static char buf[SW_MAX_PARAMS + 4][SW_TEXT_LINE];
+    const char *lines[SW_MAX_PARAMS + 4];
+    int n = 0;
+    for (int i = 0; i < a->scene->nparams; i++, n++) {
+        const sw_param *p = &a->scene->params[i];
+        sw_field f[3] = { { "", "", 10 }, { "", "", 3 }, { "", "", 2 } };
+        snprintf(f[0].full, sizeof f[0].full, "%s %-8s = %-10g", i == a->param_sel ? ">" : " ", p->name, a->p[i]);
+        snprintf(f[0].brief, sizeof f[0].brief, "%s %s = %g", i == a->param_sel ? ">" : " ", p->name, a->p[i]);
+        snprintf(f[1].full, sizeof f[1].full, "%-7s", p->unit);
+        snprintf(f[2].full, sizeof f[2].full, "[%g, %g]", p->min, p->max);
+        sw_text_fit(buf[n], sizeof buf[n], width - 4, f, 3, " ");
+        lines[n] = buf[n];
+    }
+    char wrapped[4][SW_TEXT_LINE];
+    int k = sw_text_wrap("Up/Down choose, Left/Right change (restarts), p closes", width - 4, wrapped, 4);
+    for (int j = 0; j < k && j < 4; j++, n++) {
+        memcpy(buf[n], wrapped[j], sizeof wrapped[j]);
+        lines[n] = buf[n];
+    }
+    sw_draw_box(scr, row, col, height, width, a->scene->name, lines, n, SW_STYLE_TEXT);
+}
+
+/* ---- the work-precision plot ------------------------------------------------------ */
+
+/* Which curves lie on one another (errors within 10% at every step size
+ * both ran) and which methods are missing, and why (first: the plot does
+ * not show them at all): measured, in words. Methods missing for the same
+ * reason share a note. */
+static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_TEXT_LINE], int max)
+{
+    int n = 0;
+    char err[SW_ERRLEN];
+    /* missing methods, grouped by the reason the system refuses them */
+    static char reason[24][SW_ERRLEN];
+    static char names[24][SW_TEXT_LINE];
+    int nr = 0;
+    for (int k = 0; k < sw_integrator_count(); k++) {
+        const sw_integrator *m = sw_integrator_at(k);
+        int in = 0;
+        for (int i = 0; i < r->nseries; i++)
+            in |= r->series[i].method == m;
+        if (in)
+            continue;
+        if (sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
+            snprintf(err, sizeof err, "not swept");
+        /* the reason without the method's own name in front of it */
+        const char *why = strstr(err, m->name) == err + 1 ? err + strlen(m->name) + 3 : err;
+        int g = 0;
+        while (g < nr && strcmp(reason[g], why) != 0)
+            g++;
+        if (g == nr) {
+            if (nr == 24)
+                continue;
+            snprintf(reason[nr], sizeof reason[nr], "%s", why);
+            names[nr][0] = '\0';
+            nr++;
+        }
+        size_t used = strlen(names[g]);
+        snprintf(names[g] + used, sizeof names[g] - used, "%s%s", used ? ", " : "", m->name);
+    }
+    for (int g = 0; g < nr && n < max; g++)
+        snprintf(notes[n++], SW_TEXT_LINE, "no %.100s: %.300s", names[g], reason[g]);
+    for (int i = 0; i < r->nseries && n < max; i++)
+        for (int j = i + 1; j < r->nseries && n < max; j++) {
+            const sw_bench_series *s = &r->series[i], *u = &r->series[j];
+            int common = 0, apart = 0;
+            for (int p = 0; p < s->npoints; p++)
+                for (int q = 0; q < u->npoints; q++) {
+                    const sw_bench_point *x = &s->points[p], *y = &u->points[q];
+                    if (x->dt != y->dt || x->rtol != y->rtol || x->blown || y->blown || !(x->error > 0) ||
+                        !(y->error > 0))
+                        continue;
+                    common++;
+                    apart += fabs(log(x->error / y->error)) > log(1.1);
+                }
+            if (common >= 3 && !apart)
+                snprintf(notes[n++], SW_TEXT_LINE, "%c %s and %c %s coincide: errors within 10%% at all %d steps", sw_bench_marker(s->method), s->method->name,
+                         sw_bench_marker(u->method), u->method->name, common);
+        }
+    return n;
+}
+
+void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, int width)
+{
+    static char plot[(160 + 1) * 60 + 1];
+    static char notes[8][SW_TEXT_LINE], wrapped[24][SW_TEXT_LINE], more[64];
+    const sw_bench_report *r = a->bench;
+    const char *lines[64];
+    int n = 0, inner = width - 4;
+    /* the plot keeps 12 rows; whole notes fill what is left */
+    int nn = workprec_notes(a, r, notes, 8), nw = 0, room = height - 2 - 12, dropped = 0;
+    for (int i = 0; i < nn; i++) {
+        char part[8][SW_TEXT_LINE];
+        int k = sw_text_wrap(notes[i], inner, part, 8);
+        if (k > 8 || nw + k > room - (i < nn - 1 ? 1 : 0) || nw + k > 24) {
+            dropped = nn - i;
+            break;
+        }
+        for (int j = 0; j < k; j++)
+            memcpy(wrapped[nw++], part[j], SW_TEXT_LINE);
+    }
+    if (dropped && nw < 24 && room > nw) {
+        snprintf(more, sizeof more, "(%d more note%s: a taller window shows them)", dropped, dropped > 1 ? "s" : "");
+        if (sw_text_cells(more) <= inner)
+            memcpy(wrapped[nw++], more, sizeof more);
+    }
+    int w = inner < 160 ? inner : 160, h = height - 2 - nw;
+    if (h > 60)
+        h = 60;
+    if (w < 40 || h < 10) {
+        lines[n++] = "the plot needs 44 columns and 12 rows:";
+        lines[n++] = "widen the window (w closes)";
+        sw_draw_box(scr, row, col, height, width, "work-precision (w)", lines, n, SW_STYLE_TEXT);
+        return;
+    }
+    if (sw_bench_plot(r, a->workprec == 1 ? SW_BENCH_X_EVALS : SW_BENCH_X_TIME, plot, w, h) != SW_OK)
+        return;
+    for (char *p = plot; *p && n < h; n++) {
+        lines[n] = p;
+        char *nl = strchr(p, '\n');
+        if (!nl)
+            break;
+        *nl = '\0';
+        /* the plot pads with spaces: trim them so the box is no wider than it needs */
+        for (char *e = nl - 1; e >= p && *e == ' '; e--)
+            *e = '\0';
+        p = nl + 1;
+    }
+    for (int i = 0; i < nw; i++)
+        lines[n++] = wrapped[i];
+    sw_draw_box(scr, row, col, height, width, "work-precision (w)", lines, n, SW_STYLE_TEXT);
+}

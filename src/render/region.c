@@ -1,0 +1,282 @@
+/* The stability region, from the method's own one-step map: every grid
+ * point z = x + iy becomes a mode {λ = z, μ = z̄} (the same test system the
+ * meter uses), its growth per step at Δt = 1 is asked of the truth module,
+ * and points with ρ <= 1 + SW_TRUTH_NEUTRAL are shaded. Cells are asked
+ * first; only cells on the region's edge are refined to Braille dots, so a
+ * redraw after a change costs a few thousand small steps and an unchanged
+ * frame costs none. */
+#include "render/region.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render/camera.h"
+#include "render/screen.h"
+#include "stepwise/stepwise.h"
+#include "util/clock.h"
+#include "util/num.h"
+
+void sw_region_free(sw_region *r)
+{
+    free(r->stable);
+    sw_truth_work_free(r->work);
+    memset(r, 0, sizeof *r);
+}
+
+double sw_region_growth(sw_truth_work *w, const sw_integrator *m, int order, double x, double y)
+{
+    sw_spectrum sp;
+    memset(&sp, 0, sizeof sp);
+    sp.order = order;
+    sp.n = 1;
+    sp.complete = 1;
+    sp.mode[0] = (sw_mode){ x, y, x, -y };
+    sp.largest = hypot(x, y);
+    return sw_truth_growth_with(w, m, &sp, 1.0, NULL);
+}
+
+static int stable_at(sw_region *r, const sw_integrator *m, int order, double x, double y)
+{
+    return sw_region_growth(r->work, m, order, x, y) <= 1 + SW_TRUTH_NEUTRAL;
+}
+
+/* How far the region reaches: the largest |z| on rays through the left half
+ * plane (and the imaginary axis) before the first unstable point, up to 50;
+ * 0 when every ray is stable that far (an implicit method). */
+static double region_extent(sw_region *r, const sw_integrator *m, int order)
+{
+    double reach = 0;
+    int bounded = 0;
+    for (int k = 0; k <= 12; k++) {
+        double ang = SW_PI / 2 + SW_PI / 2 * k / 12.0, c = cos(ang), s = sin(ang), last = 0;
+        int hit = 0;
+        for (double d = 0.05; d <= 50; d *= 1.05) {
+            if (!stable_at(r, m, order, d * c, d * s)) {
+                hit = 1;
+                break;
+            }
+            last = d;
+        }
+        if (hit) {
+            bounded = 1;
+            reach = fmax(reach, last);
+        }
+    }
+    return bounded ? reach : 0;
+}
+
+/* The world point at the centre of grid point (gc, gr) of a gcols × grows grid. */
+static void grid_point(const sw_canvas *c, int gcols, int grows, int gc, int gr, double *x, double *y)
+{
+    sw_view vis = sw_canvas_visible(c);
+    *x = vis.xmin + (gc + 0.5) * (vis.xmax - vis.xmin) / gcols;
+    *y = vis.ymax - (gr + 0.5) * (vis.ymax - vis.ymin) / grows;
+}
+
+/* Shade the grid from point r->next on, until done or past the budget
+ * (seconds; a plugin's every new mode costs a fresh sandboxed child, so its
+ * region fills in over several frames). Cells first, then, for built-in
+ * methods in Braille mode, the dots of cells on the region's edge. */
+static void shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int order, double budget)
+{
+    int dots = c->mode == SW_CANVAS_BRAILLE, cols = c->cols, rows = c->rows, ncell = cols * rows;
+    int refine = dots && !(m->flags & SW_PLUGIN);
+    unsigned char *cell = r->stable, *dot = r->stable + (size_t)ncell;
+    double start = sw_clock_now();
+    for (; r->next < ncell; r->next++) {
+        if ((r->next & 7) == 0 && sw_clock_now() - start > budget)
+            return;
+        int row = r->next / cols, col = r->next % cols;
+        double x, y;
+        if (!refine && (m->flags & SW_PLUGIN) && col % 2 == 1) {
+            cell[r->next] = cell[r->next - 1]; /* a plugin's grid is two cells wide */
+            continue;
+        }
+        grid_point(c, cols, rows, col, row, &x, &y);
+        cell[r->next] = (unsigned char)stable_at(r, m, order, x, y);
+    }
+    for (; dots && r->next < 2 * ncell; r->next++) {
+        if ((r->next & 7) == 0 && sw_clock_now() - start > budget)
+            return;
+        int k = r->next - ncell, row = k / cols, col = k % cols, v = cell[k], edge = 0;
+        for (int dr = -1; dr <= 1 && refine && !edge; dr++)
+            for (int dc = -1; dc <= 1; dc++) {
+                int rr = row + dr, cc = col + dc;
+                if (rr >= 0 && rr < rows && cc >= 0 && cc < cols && cell[rr * cols + cc] != v)
+                    edge = 1;
+            }
+        for (int b = 0; b < 8; b++) {
+            int dc = 2 * col + b % 2, dr = 4 * row + b / 2;
+            double x, y;
+            grid_point(c, 2 * cols, 4 * rows, dc, dr, &x, &y);
+            dot[(size_t)dr * (size_t)(2 * cols) + (size_t)dc] =
+                edge ? (unsigned char)stable_at(r, m, order, x, y) : (unsigned char)v;
+        }
+    }
+}
+
+static void axes(sw_canvas *c)
+{
+    sw_view vis = sw_canvas_visible(c);
+    int oc, orow;
+    /* the axes as glyphs in either mode (a Braille line would blur into the shading) */
+    if (sw_canvas_world_to_cell(c, 0, 0, &oc, &orow)) {
+        for (int k = 0; k < c->cols; k++)
+            sw_canvas_put(c, k, orow, '-', SW_STYLE_WALL);
+        for (int k = 0; k < c->rows; k++)
+            sw_canvas_put(c, oc, k, '|', SW_STYLE_WALL);
+        sw_canvas_put(c, oc, orow, '+', SW_STYLE_WALL);
+    }
+    /* unit ticks, labelled where there is room */
+    double step = pow(10, floor(log10(fmax(vis.ymax, 1e-9) / 1.5)));
+    if (vis.ymax / step > 5)
+        step *= 2;
+    for (double v = step; v < vis.xmax && v / step < 20; v += step) {
+        char lab[16];
+        int col, row, len = snprintf(lab, sizeof lab, "%g", v);
+        for (int sgn = -1; sgn <= 1; sgn += 2)
+            if (sw_canvas_world_to_cell(c, sgn * v, 0, &col, &row))
+                sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
+        /* the negative real axis is where the regions lie: label it below */
+        len = snprintf(lab, sizeof lab, "%g", -v);
+        if (sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows && col - len / 2 >= 0)
+            sw_canvas_text(c, col - len / 2, row + 1, lab, SW_STYLE_DIM);
+        /* (the top and bottom rows are kept for the arrows of marks beyond them) */
+        if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row) && row >= 1 && row <= c->rows - 2) {
+            sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
+            len = snprintf(lab, sizeof lab, "%gi", v);
+            if (col + 1 + len <= c->cols)
+                sw_canvas_text(c, col + 1, row, lab, SW_STYLE_DIM);
+        }
+    }
+    int col, row;
+    if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
+        sw_canvas_text(c, c->cols - 2, row - 1, "Re", SW_STYLE_DIM);
+    /* left of the axis: a mark beyond the top gets its arrow and label on the right */
+    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col >= 2 && c->rows > 2)
+        sw_canvas_text(c, col - 2, 1, "Im", SW_STYLE_DIM);
+}
+
+int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *outside, int *shown, char *why,
+                   size_t whylen)
+{
+    const sw_integrator *m = a->sims[0].method;
+    *worst = NAN;
+    *outside = *shown = 0;
+    if (m->flags & SW_ADAPTIVE) {
+        snprintf(why, whylen, "%s chooses its own steps, so it has no fixed stability region: pick a fixed-step "
+                 "method (i)", m->name);
+        return -1;
+    }
+    if (!r->work && !(r->work = sw_truth_work_new())) {
+        snprintf(why, whylen, "out of memory");
+        return -1;
+    }
+    sw_app_meter meter;
+    sw_app_stability(a, &meter); /* refreshes the spectrum as the state moves */
+    int order = a->have_spec ? a->spec.order : a->sims[0].sys.ode->order;
+    if (order != 1 && order != 2)
+        order = a->sims[0].sys.kind == SW_SYS_FLOW ? 1 : 2;
+    if (r->extent_method != m || r->extent_order != order) {
+        /* (a plugin's reach would cost a thousand sandboxed children: its
+         * view is the default one, z zooms out) */
+        r->extent = (m->flags & SW_PLUGIN) ? 0 : region_extent(r, m, order);
+        r->extent_method = m;
+        r->extent_order = order;
+    }
+    double half = (r->extent > 0 ? fmax(3.0, 1.15 * r->extent) : 3.0) * a->zoom;
+    sw_view v = { -half, half, -half, half };
+    char err[SW_ERRLEN];
+    sw_canvas_set_view(c, &v, err, sizeof err);
+    int dots = c->mode == SW_CANVAS_BRAILLE;
+    if (r->method != m || r->order != order || r->cols != c->cols || r->rows != c->rows || r->dots != dots ||
+        r->half != half) {
+        size_t need = (size_t)c->cols * (size_t)c->rows * 9;
+        if (need > r->cap) {
+            unsigned char *st = realloc(r->stable, need);
+            if (!st) {
+                snprintf(why, whylen, "out of memory");
+                return -1;
+            }
+            r->stable = st;
+            r->cap = need;
+        }
+        memset(r->stable, 0, need);
+        r->next = 0;
+        r->method = m;
+        r->order = order;
+        r->cols = c->cols;
+        r->rows = c->rows;
+        r->dots = dots;
+        r->half = half;
+    }
+    int total = c->cols * c->rows * (dots ? 2 : 1);
+    if (r->next < total)
+        shade(r, c, m, order, (m->flags & SW_PLUGIN) ? SW_REGION_BUDGET : INFINITY);
+    r->progress = (double)r->next / total;
+    sw_canvas_clear(c);
+    const unsigned char *cell = r->stable, *dot = r->stable + (size_t)c->cols * (size_t)c->rows;
+    if (dots) {
+        for (int dr = 0; dr < 4 * c->rows; dr++)
+            for (int dc = 0; dc < 2 * c->cols; dc++)
+                if (dot[(size_t)dr * (size_t)(2 * c->cols) + (size_t)dc])
+                    sw_canvas_dot(c, dc, dr, SW_STYLE_GHOST, 0);
+    } else {
+        for (int row = 0; row < c->rows; row++)
+            for (int col = 0; col < c->cols; col++)
+                if (cell[row * c->cols + col])
+                    sw_canvas_put(c, col, row, ':', SW_STYLE_GHOST);
+    }
+    axes(c);
+    if (!a->have_spec) {
+        snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
+        return 0;
+    }
+    /* the marks: each mode's λ·Δt and μ·Δt, glyph by the mode's own growth */
+    double xy[4 * SW_TRUTH_MODES];
+    unsigned char grows[2 * SW_TRUTH_MODES];
+    int nm = 0;
+    double dt = a->dt, rho_max = 0;
+    /* each mode's growth, asked again only when the method, dt or the spectrum change */
+    if (r->marks_method != m || r->marks_dt != dt || r->marks_t != a->spec_t || r->marks_n != a->spec.n) {
+        for (int k = 0; k < a->spec.n; k++) {
+            sw_spectrum one = a->spec;
+            one.n = 1;
+            one.mode[0] = a->spec.mode[k];
+            r->marks_rho[k] = sw_truth_growth_with(r->work, m, &one, dt, NULL);
+        }
+        r->marks_method = m;
+        r->marks_dt = dt;
+        r->marks_t = a->spec_t;
+        r->marks_n = a->spec.n;
+    }
+    for (int k = 0; k < a->spec.n; k++) {
+        double rho = r->marks_rho[k];
+        rho_max = isnan(rho) || rho > rho_max ? rho : rho_max;
+        const sw_mode *md = &a->spec.mode[k];
+        double pts[2][2] = { { md->re * dt, md->im * dt }, { md->pre * dt, md->pim * dt } };
+        for (int j = 0; j < 2; j++) {
+            xy[2 * nm] = pts[j][0];
+            xy[2 * nm + 1] = pts[j][1];
+            grows[nm] = !(rho <= 1 + SW_TRUTH_NEUTRAL);
+            nm++;
+        }
+    }
+    for (int k = 0; k < nm; k++) {
+        int col, row;
+        *outside += grows[k];
+        if (!sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
+            continue;
+        /* a growing mode on top of a stable one in the same cell */
+        if (!grows[k] && sw_canvas_codepoint(c, col, row) == 'X')
+            continue;
+        sw_canvas_put(c, col, row, grows[k] ? 'X' : '*', grows[k] ? SW_STYLE_WARN : SW_STYLE_MAIN);
+        (*shown)++;
+    }
+    sw_canvas_offscreen(c, xy, nm, NULL, SW_STYLE_WARN, 1);
+    *worst = rho_max;
+    why[0] = '\0';
+    return 0;
+}

@@ -1,0 +1,54 @@
+/* The stability-region view: where the current method's growth per step on
+ * a mode z = Δt·λ is at most one, shaded in the complex plane (Braille dots
+ * where the terminal shows them), with the scene's own eigenvalues times Δt
+ * marked, so +/- move the marks in and out of the region live. Computed
+ * from the method's one-step map through the truth module: plugins get
+ * their own region, nothing is sketched. */
+#ifndef SW_RENDER_REGION_H
+#define SW_RENDER_REGION_H
+
+#include "app/app.h"
+#include "render/canvas.h"
+#include "sim/truth.h"
+
+/* The shaded grid, cached until the method, the system's order, the size,
+ * the mode or the zoom change (a redraw then steps nothing). */
+typedef struct sw_region {
+    const sw_integrator *method;
+    int order, cols, rows, dots;
+    double half;               /* half the span shown, in units of Δt·λ */
+    double extent;             /* the region's reach for this method and order (0: unbounded) */
+    const sw_integrator *extent_method;
+    int extent_order;
+    unsigned char *stable;     /* per grid point (cells, then dots): 1 stable */
+    size_t cap;
+    int next;                  /* grid points shaded so far (cells, then cells refined to dots) */
+    double progress;           /* the fraction shaded (1: all) */
+    sw_truth_work *work;       /* the region's own workspace (the meter keeps its) */
+    /* the marks' growths, for this method, dt and spectrum */
+    const sw_integrator *marks_method;
+    double marks_dt, marks_t;
+    int marks_n;
+    double marks_rho[SW_TRUTH_MODES];
+} sw_region;
+
+/* Seconds a draw may spend shading a plugin's region (each new mode is a
+ * fresh sandboxed child, about 10 ms; its grid is two cells wide): it fills
+ * in over several seconds while the rest of the screen stays live. */
+#define SW_REGION_BUDGET 0.1
+
+void sw_region_free(sw_region *r);
+/* The growth per step of method m at z = x + iy on a mode of a system of
+ * this order (x'' = 2x·q' - |z|²q for order 2: roots z and its conjugate),
+ * through workspace w; NaN when the step fails. */
+double sw_region_growth(sw_truth_work *w, const sw_integrator *m, int order, double x, double y);
+/* Draw the view for app a on canvas c (sized by the caller; Braille mode
+ * when the canvas is): shading, axes, the marks. *worst gets the largest
+ * growth over the marks (NaN: none), *outside how many marks lie outside
+ * the shaded region, *shown how many marks were drawn. 0, or -1 with why
+ * filled when there is nothing to draw (an adaptive method, no spectrum).
+ * r->progress says how much of the region is shaded yet. */
+int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *outside, int *shown, char *why,
+                   size_t whylen);
+
+#endif

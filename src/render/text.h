@@ -1,0 +1,24 @@
+/* Text laid out to a width without cutting a word or a number: fields of a
+ * status line shortened or dropped by priority, and word wrapping. */
+#ifndef SW_RENDER_TEXT_H
+#define SW_RENDER_TEXT_H
+
+#include <stddef.h>
+
+#include "app/app.h"
+
+#define SW_TEXT_LINE 512
+
+/* Cells a UTF-8 text takes (one per character). */
+int sw_text_cells(const char *s);
+/* Lay out n fields in width cells, in their order, joined by sep: in full
+ * when they fit; else the least important fields take their brief forms,
+ * then the least important are dropped, until the line fits. Returns the
+ * cells used (0 when not even the most important field fits). */
+int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, const char *sep);
+/* Word-wrap text (spaces separate words; '\n' ends a line) into lines of at
+ * most width cells; a word longer than a line is split. Returns the number
+ * of lines the text needs; at most max are written. */
+int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int max);
+
+#endif

@@ -15,7 +15,11 @@ dir=$WORK
 work=$WORK
 SESSION="sw-e2e-$$"
 TMUX_STARTED=0
-trap 'if [ "$TMUX_STARTED" = 1 ]; then tmux kill-session -t "$SESSION" 2>/dev/null; fi; rm -rf "$WORK"' EXIT
+# Every test has a tmux server of its own (socket sw-e2e-PID): no test starts
+# a session on a server the previous test's exit is shutting down, none
+# touches the user's own sessions, and a session gets this environment.
+tmux() { command tmux -L "$SESSION" "$@"; }
+trap 'tmux kill-server 2>/dev/null; rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SESSION"; rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
 
 fail() {

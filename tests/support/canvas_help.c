@@ -1,0 +1,46 @@
+/* Helpers the canvas tests share: a canvas on a view, its frame as text, a
+ * built scene with up to two settings, and a count of cells holding a code
+ * point. Every failure is a test failure (ck_assert). */
+#include "canvas_help.h"
+
+#include <check.h>
+
+static char text[4096];
+
+void ct_canvas_new(sw_canvas *c, int cols, int rows, double xmin, double xmax, double ymin,
+                       double ymax)
+{
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_canvas_init(c, cols, rows, err, sizeof err) == SW_OK, "%s", err);
+    sw_view v = { xmin, xmax, ymin, ymax };
+    ck_assert_msg(sw_canvas_set_view(c, &v, err, sizeof err) == SW_OK, "%s", err);
+}
+
+const char *ct_frame(const sw_canvas *c)
+{
+    size_t n = sw_canvas_to_text(c, text, sizeof text);
+    ck_assert_uint_lt(n, sizeof text);
+    return text;
+}
+
+void ct_build(sw_system *sys, const sw_scene *sc, const char *set1, const char *set2)
+{
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    ck_assert_ptr_nonnull(sc);
+    sw_scene_defaults(sc, p);
+    if (set1)
+        ck_assert_msg(sw_scene_set(sc, p, set1, err, sizeof err) == SW_OK, "%s", err);
+    if (set2)
+        ck_assert_msg(sw_scene_set(sc, p, set2, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_system_build(sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
+}
+
+int ct_count_cp(const sw_canvas *c, uint32_t cp)
+{
+    int n = 0;
+    for (int row = 0; row < c->rows; row++)
+        for (int col = 0; col < c->cols; col++)
+            n += sw_canvas_codepoint(c, col, row) == cp;
+    return n;
+}

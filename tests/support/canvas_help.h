@@ -1,0 +1,19 @@
+/* Helpers the canvas tests share (tests/support/canvas_help.c). */
+#ifndef SW_TEST_CANVAS_HELP_H
+#define SW_TEST_CANVAS_HELP_H
+
+#include <stdint.h>
+
+#include "render/canvas.h"
+#include "stepwise/stepwise.h"
+
+/* A cols x rows canvas on the view [xmin, xmax] x [ymin, ymax]. */
+void ct_canvas_new(sw_canvas *c, int cols, int rows, double xmin, double xmax, double ymin, double ymax);
+/* The canvas as text, in a buffer the next call reuses. */
+const char *ct_frame(const sw_canvas *c);
+/* Build scene sc's system with its defaults and up to two NAME=VALUE settings (NULL: none). */
+void ct_build(sw_system *sys, const sw_scene *sc, const char *set1, const char *set2);
+/* Cells of c holding code point cp. */
+int ct_count_cp(const sw_canvas *c, uint32_t cp);
+
+#endif

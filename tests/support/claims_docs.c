@@ -1,0 +1,437 @@
+/* Claims: the figures of the README, the man page, docs/stability.md, the
+ * authoring guide and the scenes' own strings, and how each is measured. */
+#include "claims.h"
+
+static double reference_order(void) { return sw_truth_reference_method()->order; }
+
+/* The order each method shows when Δt halves on the default (damped)
+ * spring, from a step in its asymptotic range (the error at the report time
+ * against the closed form). */
+static double order_on_spring(const char *m) { return cl_order_by_halving("spring", NULL, m, 0.01); }
+
+/* First-order methods reach their asymptotic range at smaller steps. */
+static double order1_on_spring(const char *m) { return cl_order_by_halving("spring", NULL, m, 0.0005); }
+static double ord_euler(void) { return order1_on_spring("euler"); }
+static double ord_symplectic(void) { return order1_on_spring("symplectic-euler"); }
+static double ord_midpoint(void) { return order_on_spring("midpoint"); }
+static double ord_heun(void) { return order_on_spring("heun"); }
+static double ord_rk4(void) { return cl_order_by_halving("spring", NULL, "rk4", 0.04); }
+static double ord_verlet(void) { return order_on_spring("verlet"); }
+static double ord_be(void) { return order1_on_spring("implicit-euler"); }
+static double ord_lbe(void) { return order1_on_spring("linear-implicit-euler"); }
+static double ord_im(void) { return order_on_spring("implicit-midpoint"); }
+static double table_order(const char *m) { return cl_method(m)->order; }
+static double ord_rk45(void) { return table_order("rk45"); }
+
+/* Evaluations per step on the stiff pendulum (nonlinear: Newton iterates). */
+static double ev(const char *m) { return cl_evals_per_step("stiff-spring", NULL, m, 0.005, 50); }
+static double ev_euler(void) { return ev("euler"); }
+static double ev_symplectic(void) { return ev("symplectic-euler"); }
+static double ev_midpoint(void) { return ev("midpoint"); }
+static double ev_heun(void) { return ev("heun"); }
+static double ev_rk4(void) { return ev("rk4"); }
+static double ev_verlet(void) { return ev("verlet"); }
+static double ev_be(void) { return ev("implicit-euler"); }
+static double ev_lbe(void) { return ev("linear-implicit-euler"); }
+static double ev_im(void) { return ev("implicit-midpoint"); }
+
+/* Euler's energy on the undamped ω = 1 spring after N = 50 steps of h = 0.1,
+ * against (1 + h²)^N. */
+static double euler_energy_growth(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "spring", "k=1 m=1 c=0 stretch=0.2", "euler", 0.1);
+    for (int i = 0; i < 50; i++)
+        sw_sim_step(&s);
+    double r = 1 + sw_sim_energy_drift(&s) / 100;
+    sw_sim_free(&s);
+    return r;
+}
+
+static double euler_energy_formula(void) { return pow(1 + 0.1 * 0.1, 50); }
+static double symplectic_wdt(void) { return cl_limit0("spring", "k=1 c=0", "symplectic-euler"); }
+static double spring_zeta(void) { return cl_l5_c() / (2 * sqrt(cl_l5_k() * cl_l5_m())); }
+static double euler_damped_over_zeta(void) { return cl_limit0("spring", NULL, "euler") * cl_spring_omega() / spring_zeta(); }
+static double rk4_damped(void) { return cl_limit0("spring", NULL, "rk4") * cl_spring_omega(); }
+
+/* Backward Euler on the stiff pendulum: the largest ω·Δt in 1, 10, ... 1e4
+ * up to which no step in 20 raised the energy (1e4: Δt = 100). */
+static double be_never_gains(void)
+{
+    double ok = 0;
+    for (double wdt = 1; wdt <= 1e4 * 1.0001; wdt *= 10) {
+        sw_sim s;
+        cl_sim_init(&s, "stiff-spring", NULL, "implicit-euler", wdt / 100);
+        double e = sw_sim_energy(&s);
+        int rose = 0;
+        for (int i = 0; i < 20 && !rose; i++) {
+            if (sw_sim_step(&s))
+                rose = 1;
+            double e1 = sw_sim_energy(&s);
+            rose |= e1 > e + 1e-12 * fabs(e);
+            e = e1;
+        }
+        sw_sim_free(&s);
+        if (rose)
+            break;
+        ok = wdt;
+    }
+    return ok;
+}
+
+static double lesson_count(void)
+{
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    sw_lesson_list_free(e, n);
+    return n;
+}
+
+static double dt_min(void) { return SW_DT_MIN; }
+static double dt_max(void) { return SW_DT_MAX; }
+static double rtol_default(void) { return SW_RTOL_DEFAULT; }
+static double atol_default(void) { return SW_ATOL_DEFAULT; }
+static double check_rtol(void) { return SW_CHECK_RTOL; }
+static double check_atol(void) { return SW_CHECK_ATOL; }
+
+static sw_stability_config stab_config(void)
+{
+    sw_stability_config c;
+    sw_stability_config_default(&c);
+    return c;
+}
+
+static double stab_samples(void) { return stab_config().samples; }
+static double stab_low(void) { return stab_config().low; }
+static double stab_rel_tol(void) { return 100 * stab_config().rel_tol; }
+
+/* Euler's theory on the undamped spring is "none": it grows already at the
+ * smallest |λ|·Δt probed. */
+static double euler_grows_at_low(void)
+{
+    return cl_growth0("spring", "k=1 c=0", "euler", stab_low()) > 1 ? stab_low() : NAN;
+}
+
+/* Backward Euler's theory limit is unbounded: no growth up to this Δt. */
+static double be_unbounded_to(void)
+{
+    sw_spectrum sp = cl_spectrum0("spring", "k=1 c=0");
+    int unbounded = 0;
+    double h = sw_truth_limit(cl_method("implicit-euler"), &sp, SW_DT_MAX, &unbounded);
+    return unbounded ? h : NAN;
+}
+
+/* The horizon in periods of the stiffest mode (a slow spring, ω = 0.1,
+ * where the periods dominate) and in report times (a stiff one). */
+static double horizon_periods(void)
+{
+    const sw_scene *sc = sw_scene_find("spring");
+    return sw_truth_horizon(sc, 0.1) / (TWO_PI / 0.1);
+}
+
+static double horizon_reports(void)
+{
+    const sw_scene *sc = sw_scene_find("spring");
+    return sw_truth_horizon(sc, 1e4) / sc->duration;
+}
+
+/* The growth over the horizon at which it counts as visible: bisect ρ. */
+static double visible_growth(void)
+{
+    double lo = 1, hi = 1.01, dt = 1, horizon = 100;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (sw_truth_growth_visible(mid, dt, horizon))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return pow(hi, horizon / dt);
+}
+
+static double raised_level(const char *scene, const char *m)
+{
+    sw_sim s;
+    cl_sim_init(&s, scene, NULL, m, 0.01);
+    double r = sw_watch_raised_level(&s);
+    sw_sim_free(&s);
+    return r;
+}
+
+static double raised_plain(void) { return raised_level("spring", "rk4"); }
+static double raised_symplectic(void) { return raised_level("spring", "verlet"); }
+static double raised_orbit(void) { return raised_level("orbit", "rk4"); }
+
+/* M past this is the run blowing up: feed the watch a jump. */
+static double watch_bound(void)
+{
+    double lo = 1, hi = 1e6;
+    for (int i = 0; i < 100; i++) {
+        double mid = sqrt(lo * hi);
+        sw_watch w;
+        sw_watch_init(&w, 1.0, 1e9);
+        sw_watch_add(&w, 0.0, 1.0);
+        if (sw_watch_add(&w, 0.01, mid) == SW_WATCH_BOUND)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
+static double watch_windows(void) { return SW_WATCH_WINDOWS; }
+static double vortex_growth(void) { return cl_growth0("vortex", NULL, "euler", 0.3); }
+static double vortex_formula(void) { return sqrt(1 + 0.3 * 0.3); }
+static double spring_energy_growth(void) { return pow(cl_growth0("spring", "c=0", "euler", 0.05), 2); }
+static double spring_energy_formula(void) { return 1 + 10 * 0.05 * 0.05; }
+static double orbit_period_mu4(void) { return cl_orbit_period("mu=4"); }
+static double orbit_period_formula(void) { return TWO_PI / sqrt(4); }
+static double projectile_ratio(void) { return pow(2, cl_order_by_halving("projectile", NULL, "euler", 0.01)); }
+static double bounce_order(void) { return log2(cl_l4_ratio()); }
+
+/* Symplectic Euler from rest on the undamped ω = 1 spring at ωΔt = 1: the
+ * mean of M (the motion's energy over its start) over a long run. */
+static double symplectic_mean_m(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "spring", "k=1 c=0 stretch=0.01", "symplectic-euler", 1.0);
+    double y0[4], sum = 0;
+    memcpy(y0, s.sys.y, sizeof y0);
+    double m0 = sw_watch_measure(&s, y0);
+    int n = 20000;
+    for (int i = 0; i < n; i++) {
+        sw_sim_step(&s);
+        sum += sw_watch_measure(&s, y0) / m0;
+    }
+    sw_sim_free(&s);
+    return sum / n;
+}
+
+static double symplectic_mean_formula(void) { return 1 / (1 - pow(1.0 / 2, 2)); }
+
+/* The lowest x RK4 reaches on the default spring at Δt = 0.9 (ωΔt = 2.85,
+ * inside the linear limit 2.938): below 0 is through the anchor. */
+static double rk4_through_anchor(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "spring", NULL, "rk4", 0.9);
+    double lowest = s.sys.y[0];
+    for (int i = 0; i < 400 && !s.blown; i++) {
+        sw_sim_step(&s);
+        lowest = fmin(lowest, s.sys.y[0]);
+    }
+    sw_sim_free(&s);
+    return lowest;
+}
+
+static double four(void) { return 4; }
+static double twenty(void) { return 20; }
+
+static double bench_default_repeats(void)
+{
+    sw_bench_config c;
+    sw_bench_config_default(&c);
+    return c.repeats;
+}
+
+static double bench_quick_min(void)
+{
+    sw_bench_config c;
+    sw_bench_config_quick(&c);
+    return c.min_points;
+}
+
+static double bench_quick_max(void)
+{
+    sw_bench_config c;
+    sw_bench_config_quick(&c);
+    return c.max_points;
+}
+
+static double bench_quick_runs(void)
+{
+    sw_bench_config c;
+    sw_bench_config_quick(&c);
+    return c.repeats;
+}
+
+static double stab_agree(void) { return 100 * SW_STABILITY_AGREE; }
+static double stab_shrink(void) { return 1 / SW_STABILITY_SHRINK; }
+static double stab_longer(void) { return SW_STABILITY_LONGER; }
+static double stab_longest(void) { return SW_STABILITY_LONGER * SW_STABILITY_LONGER; }
+
+/* The drift the status line shows, against (E - E0)/(E0 - E_rest) worked
+ * out here from the energies (the stiff pendulum after 100 steps). */
+static double drift_definition(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "stiff-spring", NULL, "implicit-euler", 0.04);
+    double e0 = sw_sim_energy(&s), rest = sw_truth_energy_floor(&s.sys);
+    for (int i = 0; i < 100; i++)
+        sw_sim_step(&s);
+    double mine = 100 * (sw_sim_energy(&s) - e0) / (e0 - rest), shown = sw_sim_energy_drift(&s);
+    sw_sim_free(&s);
+    return fabs(mine - shown) / fabs(mine);
+}
+
+static double guide_dt_min(void) { return SW_DT_MIN; }
+static double max_bytes(void) { return SW_LESSON_MAX_BYTES; }
+static double max_line(void) { return SW_LESSON_MAX_LINE; }
+static double max_title(void) { return SW_LESSON_MAX_TITLE; }
+static double max_pages(void) { return SW_LESSON_MAX_PAGES; }
+static double max_prose(void) { return SW_LESSON_MAX_PROSE; }
+static double max_blocks(void) { return SW_LESSON_MAX_BLOCKS; }
+static double max_goals(void) { return SW_LESSON_MAX_GOALS; }
+static double max_answers(void) { return SW_LESSON_MAX_ANSWERS; }
+static double max_compare(void) { return SW_LESSON_MAX_COMPARE; }
+static double max_names(void) { return SW_LESSON_MAX_NAMES; }
+static double max_files(void) { return SW_LESSON_MAX_FILES; }
+
+/* The slack of ==, <= and >= in goals: the largest relative shortfall at
+ * which "dt >= 0.2" still holds, by bisection on the goal itself. */
+static double goal_slack(void)
+{
+    sw_lesson lesson;
+    char err[SW_LESSON_ERRLEN];
+    const char *text = "title: t\n--- p\n@scene spring\nText.\n@goal dt >= 0.2\n@hint h\n";
+    ck_assert_msg(sw_lesson_parse("t", text, strlen(text), &lesson, err, sizeof err) == SW_OK, "%s", err);
+    double lo = 0, hi = 1e-6;
+    for (int i = 0; i < 200; i++) {
+        double mid = 0.5 * (lo + hi);
+        sw_lesson_obs obs;
+        sw_lesson_obs_init(&obs);
+        obs.dt = 0.2 * (1 - mid);
+        if (sw_lesson_goal_met(&lesson.pages[0].goals[0], &obs))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    sw_lesson_free(&lesson);
+    return lo;
+}
+
+const claim sw_claims_d[] = {
+    /* README: what the tool claims, the integrator table */
+    { README, "the ratio approaches 2^p once Δt is small enough", ord_rk4, ABS, 0.1, "rk4's order halving Δt from 0.04 on the spring: 4 within 0.1", four },
+    { README, "| euler | explicit (forward) Euler | {1} | 1 |", ord_euler, ABS, 0.1, "the order measured halving Δt on the damped spring", NULL },
+    { README, "| euler | explicit (forward) Euler | 1 | {1} |", ev_euler, EXACT, 0, "evaluations per step measured", NULL },
+    { README, "| symplectic-euler | semi-implicit Euler: v then x | {1} | 1 |", ord_symplectic, ABS, 0.1, "as above", NULL },
+    { README, "| symplectic-euler | semi-implicit Euler: v then x | 1 | {1} |", ev_symplectic, EXACT, 0, "as above", NULL },
+    { README, "| midpoint | explicit midpoint (RK2) | {2} | 2 |", ord_midpoint, ABS, 0.1, "as above", NULL },
+    { README, "| midpoint | explicit midpoint (RK2) | 2 | {2} |", ev_midpoint, EXACT, 0, "as above", NULL },
+    { README, "| heun | Heun / explicit trapezoid (RK2) | {2} | 2 |", ord_heun, ABS, 0.1, "as above", NULL },
+    { README, "| heun | Heun / explicit trapezoid (RK2) | 2 | {2} |", ev_heun, EXACT, 0, "as above", NULL },
+    { README, "| rk4 | classical Runge–Kutta | {4} | 4 |", ord_rk4, ABS, 0.1, "as above (from Δt = 0.04: rounding stays below the error)", NULL },
+    { README, "| rk4 | classical Runge–Kutta | 4 | {4} |", ev_rk4, EXACT, 0, "as above", NULL },
+    { README, "| verlet | velocity Verlet (leapfrog) | {2} | 1", ord_verlet, ABS, 0.1, "as above", NULL },
+    { README, "| verlet | velocity Verlet (leapfrog) | 2 | {1} (reuses the last acceleration) |", ev_verlet, EXACT, 0, "after the first step", NULL },
+    { README, "| implicit-euler | backward Euler, Newton's method to rounding, direct solve | {1} |", ord_be, ABS, 0.1, "as above", NULL },
+    { README, "direct solve | 1 | ≥ {1} + solves |", ev_be, ATLEAST, 0, "Newton iterates: at least one evaluation per step", NULL },
+    { README, "(Baraff–Witkin's \"large steps\") | {1} | 1 + a linear solve |", ord_lbe, ABS, 0.1, "as above", NULL },
+    { README, "(Baraff–Witkin's \"large steps\") | 1 | {1} + a linear solve |", ev_lbe, EXACT, 0, "one Newton step: one evaluation", NULL },
+    { README, "| implicit-midpoint | implicit midpoint, Newton's method to rounding | {2} |", ord_im, ABS, 0.1, "as above", NULL },
+    { README, "Newton's method to rounding | 2 | ≥ {2} + solves |", ev_im, ATLEAST, 0, "Newton iterates: at least two evaluations per step", NULL },
+    { README, "| rk45 | Dormand–Prince 5(4), adaptive (rtol/atol) | {5} | 6", ord_rk45, EXACT, 0, "the method's order in the table", NULL },
+    { README, "(rtol/atol) | 5 | {6} (reuses the last stage) |", cl_l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "| dop853 | Dormand–Prince 8(5,3) (Hairer), adaptive (rtol/atol) | {8} |", cl_ord_dop853, EXACT, 0, "the method's order in the table", NULL },
+    { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "rk45's error after two orbits is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
+    { README, "`1`–`9` and `{0}` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
+    { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
+    { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
+    { README, "(ωh = {2} for symplectic Euler and Verlet", symplectic_wdt, ABS, 1e-6, "symplectic Euler's limit in theory (bisected to 1e-9)", NULL },
+    { README, "(ωh = {2} for symplectic Euler and Verlet", cl_verlet_wdt, ABS, 1e-6, "Verlet's limit in theory", NULL },
+    { README, "(ωh = {2} for symplectic Euler and Verlet", cl_verlet_measured_wdt, REL, 0.001, "Verlet's limit measured (bisection to 0.01 %)", NULL },
+    { README, "symplectic Euler and Verlet, {2√2} for RK4", cl_rk4_wdt, ABS, 1e-6, "RK4's limit in theory", NULL },
+    { README, "symplectic Euler and Verlet, {2√2} for RK4", cl_rk4_measured_wdt, REL, 0.001, "RK4's limit measured", NULL },
+    { README, "their damped values: Euler {2}ζ", euler_damped_over_zeta, ABS, 1e-6, "Euler's damped limit over ζ on the default spring", NULL },
+    { README, "RK4 {2.938} at ζ = 0.079 in theory", rk4_damped, ROUNDED, 0, R_ROUND, NULL },
+    { README, "RK4 2.938 at ζ = {0.079} in theory", spring_zeta, ROUNDED, 0, "ζ = c/2√(km) of the default spring", NULL },
+    { README, "on the default spring RK4 measures {2.815}", cl_rk4_damped_measured, ROUNDED, 0, "the measured limit, ω·Δt to the text's digits", NULL },
+    { README, "it throws the mass through its anchor", rk4_through_anchor, ATMOST, 0, "at Δt = 0.9 (ωΔt 2.85) the mass reaches x < 0", cl_zero },
+    { README, "with a smaller stretch it measures {2.938} too", cl_rk4_small_stretch, ROUNDED, 0, "measured at stretch 0.2", NULL },
+    { README, "stiff pendulum up to ω·Δt = {10⁴}", be_never_gains, ATLEAST, 0, "no step of 20 raised the energy at ω·Δt = 1, 10, ... 1e4", NULL },
+    /* `stepwise list integrators` prints each cl_method's order and evaluations
+     * per step from the table in src/engine/integrators.c ("+solve" after an
+     * implicit cl_method's count: at least that many, and linear solves) */
+    { INTEGRATORS, "\"explicit (forward) Euler\", {1}, 1,", ord_euler, ABS, 0.1, "the order measured halving Δt on the damped spring", NULL },
+    { INTEGRATORS, "\"explicit (forward) Euler\", 1, {1},", ev_euler, EXACT, 0, "evaluations per step measured", NULL },
+    { INTEGRATORS, "\"semi-implicit Euler\", {1}, 1,", ord_symplectic, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"semi-implicit Euler\", 1, {1},", ev_symplectic, EXACT, 0, "as above", NULL },
+    { INTEGRATORS, "\"explicit midpoint (RK2)\", {2}, 2,", ord_midpoint, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"explicit midpoint (RK2)\", 2, {2},", ev_midpoint, EXACT, 0, "as above", NULL },
+    { INTEGRATORS, "\"Heun / explicit trapezoid (RK2)\", {2}, 2,", ord_heun, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"Heun / explicit trapezoid (RK2)\", 2, {2},", ev_heun, EXACT, 0, "as above", NULL },
+    { INTEGRATORS, "\"classical Runge-Kutta\", {4}, 4,", ord_rk4, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"classical Runge-Kutta\", 4, {4},", ev_rk4, EXACT, 0, "as above", NULL },
+    { INTEGRATORS, "\"velocity Verlet (leapfrog)\", {2}, 1,", ord_verlet, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"velocity Verlet (leapfrog)\", 2, {1},", ev_verlet, EXACT, 0, "after the first step", NULL },
+    { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", {1}, 1,", ord_be, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", 1, {1},", ev_be, ATLEAST, 0, "\"1+solve\": Newton iterates, at least one evaluation", NULL },
+    { INTEGRATORS, "\"linearly implicit Euler (one Newton step)\", {1}, 1,", ord_lbe, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"linearly implicit Euler (one Newton step)\", 1, {1},", ev_lbe, EXACT, 0, "one Newton step: one evaluation", NULL },
+    { INTEGRATORS, "\"implicit midpoint (Newton to rounding)\", {2}, 2,", ord_im, ABS, 0.1, "as above", NULL },
+    { INTEGRATORS, "\"implicit midpoint (Newton to rounding)\", 2, {2},", ev_im, ATLEAST, 0, "\"2+solve\": Newton iterates, at least two evaluations", NULL },
+    { INTEGRATORS, "\"Dormand-Prince 5(4), adaptive\", 5, {6},", cl_l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    /* man page */
+    { MAN, "Step size, in [{1e\\-9}, 1000]", dt_min, EXACT, 0, R_COUNT, NULL },
+    { MAN, "Step size, in [1e\\-9, {1000}]", dt_max, EXACT, 0, R_COUNT, NULL },
+    { MAN, "(defaults {1e\\-6} and 1e\\-9). The implicit", rtol_default, EXACT, 0, R_COUNT, NULL },
+    { MAN, "(defaults 1e\\-6 and {1e\\-9}). The implicit", atol_default, EXACT, 0, R_COUNT, NULL },
+    { MAN, "Comparison tolerances; defaults {1e\\-9} and 1e\\-9", check_rtol, EXACT, 0, R_COUNT, NULL },
+    { MAN, "Comparison tolerances; defaults 1e\\-9 and {1e\\-9}", check_atol, EXACT, 0, R_COUNT, NULL },
+    { MAN, "The small sweep the UI uses ({6}\\-8 step sizes, one run each)", bench_quick_min, EXACT, 0, R_COUNT, NULL },
+    { MAN, "The small sweep the UI uses (6\\-{8} step sizes, one run each)", bench_quick_max, EXACT, 0, R_COUNT, NULL },
+    { MAN, "The small sweep the UI uses (6\\-8 step sizes, {one} run each)", bench_quick_runs, EXACT, 0, R_COUNT, NULL },
+    { MAN, "Timing repeats per point, 1..15 (default {3})", bench_default_repeats, EXACT, 0, R_COUNT, NULL },
+    { MAN, "with a {ten\\-thousandfold} smaller copy of the motion", stab_shrink, REL, 1e-12, R_COUNT, NULL },
+    { MAN, "Where the two differ by more than {2}% a line says why", stab_agree, REL, 1e-12, R_COUNT, NULL },
+    /* docs/stability.md (its table: tests/e2e/test_stability_doc.sh) */
+    { STAB, "It is taken at {16} times along the true solution", stab_samples, EXACT, 0, R_COUNT, NULL },
+    { STAB, "\"none\" means the method grows already at |λ|·Δt = {0.01}", euler_grows_at_low, EXACT, 0, "the smallest |λ|·Δt probed, where Euler grows", NULL },
+    { STAB, "\"unbounded\" that no mode grows at any Δt up to {1000}", be_unbounded_to, EXACT, 0, "backward Euler's theory runs to this Δt", NULL },
+    { STAB, "over the horizon, {100} periods of the stiffest mode", horizon_periods, REL, 1e-12, "the horizon of a slow spring (ω = 0.1) in periods", NULL },
+    { STAB, "and at least {20} report times", horizon_reports, REL, 1e-12, "the horizon of a stiff one in report times", NULL },
+    { STAB, "report times: ρ^(T/Δt) > {1.01}", visible_growth, REL, 1e-9, "growth at which the meter calls it visible, bisected", NULL },
+    { STAB, "when M passes {1000}, when", watch_bound, REL, 1e-6, "the level of M at which the watch says energy x1000, bisected", NULL },
+    { STAB, "a twentieth of the run", watch_windows, EXACT, 0, R_COUNT, twenty },
+    { STAB, "passes a level ({3} for a method that is not symplectic", raised_plain, EXACT, 0, R_COUNT, NULL },
+    { STAB, "energy; {30} for a symplectic one", raised_symplectic, EXACT, 0, R_COUNT, NULL },
+    { STAB, "{2} for an orbit, where M = 2 is the planet escaping", raised_orbit, EXACT, 0, R_COUNT, NULL },
+    { STAB, "whose energy started from rest averages up to 1/(1 − (|λ|Δt/2)²)", symplectic_mean_m, REL, 1e-3, "symplectic Euler from rest at ωΔt = 1: mean M over 20000 steps", symplectic_mean_formula },
+    { STAB, "same motion shrunk {ten-thousandfold} towards it", stab_shrink, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "Bisection between a stable and an unstable Δt runs to {0.01} %", stab_rel_tol, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "the step\nis probed again over {4} and then", stab_longer, EXACT, 0, "SW_STABILITY_LONGER; test_long_probes checks the horizon a result states", NULL },
+    { STAB, "probed again over 4 and then {16} times the horizon", stab_longest, EXACT, 0, "two rounds of SW_STABILITY_LONGER", NULL },
+    { STAB, "They agree within {2} % wherever", stab_agree, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "gains energy on the nonlinear stiff pendulum above Δt ≈ {0.19}", cl_l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
+    /* scenes: what `stepwise list` and `describe` print */
+    { "src/scenes/flow_scenes.c", "every step multiplies the radius by sqrt(1 + (w dt)^2)", vortex_growth, REL, 1e-12, "ρ of Euler's map at Δt = 0.3", vortex_formula },
+    { "src/scenes/spring_scenes.c", "explicit Euler gains energy every step: (1 + (w dt)^2) per step", spring_energy_growth, REL, 1e-12, "ρ² of Euler's map on the undamped spring at Δt = 0.05", spring_energy_formula },
+    { "src/scenes/spring_scenes.c", "implicit midpoint gains energy on this nonlinear spring above dt {0.19}", cl_l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
+    { "src/scenes/orbit.c", "Kepler's exact ellipse, period 2 pi / sqrt(mu)", orbit_period_mu4, REL, 1e-12, "Kepler's period from the energy at mu = 4", orbit_period_formula },
+    { "src/scenes/flow_scenes.c", "measured against a tight-tolerance {8}th-order", reference_order, EXACT, 0, "the order of the truth module's reference method", NULL },
+    { "src/scenes/ball_scenes.c", "halve the step and the miss distance {halves}", projectile_ratio, ABS, 0.3, "the ratio halving Δt from 0.01: the lessons' tolerance for 2", NULL },
+    { "src/scenes/ball_scenes.c", "error becomes O(dt)", bounce_order, ABS, 0.5, "the order lesson 4's page measures on the bounce", cl_one },
+    /* lessons/README.md, the authoring guide */
+    { GUIDE, "| `@dt STEP` | the step size, in [{1e-9}, 1000] seconds |", guide_dt_min, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| `@dt STEP` | the step size, in [1e-9, {1000}] seconds |", dt_max, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "`>=` forgive a relative difference of {1e-9}", goal_slack, REL, 1e-6, "the slack of a >= goal, bisected", NULL },
+    { GUIDE, "(E - E0)/(E0 - E_rest) in percent", drift_definition, ATMOST, 0, "the drift the goals see against the definition worked out here (1e-12)", cl_rounding },
+    { GUIDE, "`0` the tenth, rk45 |", cl_key_rk45, EXACT, 0, "the key that picks rk45", cl_zero },
+    { GUIDE, "| file size | {262144} bytes (256 KiB) |", max_bytes, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| line length | {1000} bytes |", max_line, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| lesson and page titles | {80} characters |", max_title, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| pages per lesson | {64} |", max_pages, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| prose per page | {6000} bytes |", max_prose, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| paragraphs and verbatim blocks per page | {64} |", max_blocks, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| goals per page | {8} |", max_goals, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| answers per question | {6} |", max_answers, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| methods in `@compare` | {2} |", max_compare, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| names after `in` | {4} |", max_names, EXACT, 0, R_COUNT, NULL },
+    { GUIDE, "| lesson files in one directory | {256} |", max_files, EXACT, 0, R_COUNT, NULL },
+};
+const size_t sw_claims_d_n = sizeof sw_claims_d / sizeof sw_claims_d[0];

@@ -36,7 +36,7 @@ static int join(char *out, size_t len, const sw_field *f, const int *use, int n,
 
 int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, const char *sep)
 {
-    int use[64];
+    int use[64] = { 0 };
     if (n > 64)
         n = 64;
     for (int k = 0; k < n; k++)

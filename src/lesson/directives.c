@@ -115,19 +115,27 @@ static int d_integrator(sw_lp_parser *ps, size_t pos)
     return SW_OK;
 }
 
+/* The directive's one word as a number in [lo, hi], into *out. */
+static int one_number(sw_lp_parser *ps, size_t pos, const char *dir, const char *what, double lo, double hi,
+                      double *out)
+{
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, dir, what, word, &at) != SW_OK)
+        return ps->status;
+    double v;
+    if (sw_parse_double(word, &v) != SW_OK || !(v >= lo && v <= hi))
+        return FAIL(ps, at, "%s '%s' is not allowed; expected a number in [%g, %g]", dir, word, lo, hi);
+    *out = v;
+    return SW_OK;
+}
+
 static int d_dt(sw_lp_parser *ps, size_t pos)
 {
     if (sw_lp_need_scene(ps, "@dt") != SW_OK || sw_lp_once(ps, &ps->at_dt, "@dt") != SW_OK)
         return ps->status;
-    char word[SW_LESSON_NAME_MAX];
-    size_t at;
-    if (sw_lp_one_word(ps, pos, "@dt", "a step size in seconds", word, &at) != SW_OK)
+    if (one_number(ps, pos, "@dt", "a step size in seconds", SW_DT_MIN, SW_DT_MAX, &ps->dt) != SW_OK)
         return ps->status;
-    double v;
-    if (sw_parse_double(word, &v) != SW_OK || !(v >= SW_DT_MIN && v <= SW_DT_MAX))
-        return FAIL(ps, at, "@dt '%s' is not allowed; expected a number in [%g, %g]", word, SW_DT_MIN,
-                    SW_DT_MAX);
-    ps->dt = v;
     sw_lp_page(ps)->restart = 1;
     return SW_OK;
 }
@@ -430,15 +438,9 @@ static int d_speed(sw_lp_parser *ps, size_t pos)
 {
     if (sw_lp_once(ps, &ps->at_speed, "@speed") != SW_OK)
         return ps->status;
-    char word[SW_LESSON_NAME_MAX];
-    size_t at;
-    if (sw_lp_one_word(ps, pos, "@speed", "simulated seconds per wall second", word, &at) != SW_OK)
+    if (one_number(ps, pos, "@speed", "simulated seconds per wall second", SW_LESSON_SPEED_MIN,
+                   SW_LESSON_SPEED_MAX, &sw_lp_page(ps)->speed) != SW_OK)
         return ps->status;
-    double v;
-    if (sw_parse_double(word, &v) != SW_OK || !(v >= SW_LESSON_SPEED_MIN && v <= SW_LESSON_SPEED_MAX))
-        return FAIL(ps, at, "@speed '%s' is not allowed; expected a number in [%g, %g]", word, SW_LESSON_SPEED_MIN,
-                    SW_LESSON_SPEED_MAX);
-    sw_lp_page(ps)->speed = v;
     return SW_OK;
 }
 

@@ -12,6 +12,11 @@
 #include "stepwise/base.h"
 #include "util/utf8.h"
 
+/* The lesson pane grows by at most this many columns for a page's verbatim
+ * lines, and leaves the picture at least this many. */
+#define PANE_GROW 6
+#define PANE_PICTURE_MIN 30
+
 void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
 {
     sw_lesson_obs_init(obs);
@@ -202,10 +207,64 @@ static void add_line(sw_runner *r, sw_side_kind kind, const char *text)
     r->side.nlines++;
 }
 
-static void add_wrapped_keep(sw_runner *r, const char *text, int width)
+/* How a word changes the bracket depth: ( [ { open, ) ] } close, and a
+ * '|' opens at a word's start and closes at its end (|1 + Δt·λ|). */
+static int bracket_delta(const char *s, const char *e)
 {
-    (void)width;
-    add_line(r, SW_SIDE_VERBATIM, text);
+    int d = 0;
+    for (const char *c = s; c < e; c++)
+        d += (*c == '(' || *c == '[' || *c == '{') - (*c == ')' || *c == ']' || *c == '}');
+    while (e - s > 1 && strchr(",.;:", e[-1]))
+        e--; /* "|x|," closes all the same */
+    if (e - s > 1 && *s == '|')
+        d++;
+    if (e - s > 1 && e[-1] == '|')
+        d--;
+    return d;
+}
+
+/* Whether a word is an operator a formula can be broken before. */
+static int is_operator(const char *s, const char *e)
+{
+    static const char *const ops[] = { "+", "-", "=", "<", ">", "*", "/", "\xc2\xb7", "\xc3\x97", "\xe2\x89\xa4",
+                                       "\xe2\x89\xa5", "<=", ">=", "==", "\xe2\x86\x92", "->" };
+    for (size_t k = 0; k < sizeof ops / sizeof ops[0]; k++)
+        if ((size_t)(e - s) == strlen(ops[k]) && memcmp(s, ops[k], (size_t)(e - s)) == 0)
+            return 1;
+    return 0;
+}
+
+/* Whether a word starts with an operator (a break before it reads well). */
+static int starts_operator(const char *s)
+{
+    static const char *const ops[] = { "+", "-", "=", "<", ">", "*", "/", "\xc2\xb7", "\xc3\x97", "\xe2\x89\xa4",
+                                       "\xe2\x89\xa5", "\xe2\x86\x92" };
+    for (size_t k = 0; k < sizeof ops / sizeof ops[0]; k++)
+        if (strncmp(s, ops[k], strlen(ops[k])) == 0)
+            return 1;
+    return 0;
+}
+
+/* The operands left in s: words that are neither operators nor only
+ * closing brackets (a tail of one operand is a poor continuation line);
+ * *only_closers says whether every word is a closing bracket. */
+static int operands(const char *s, int *only_closers)
+{
+    int n = 0;
+    *only_closers = 1;
+    while (*s) {
+        while (*s == ' ')
+            s++;
+        const char *w = s;
+        while (*s && *s != ' ')
+            s++;
+        if (s == w)
+            break;
+        int closers = (int)strspn(w, ")]}|") == (int)(s - w);
+        *only_closers &= closers;
+        n += !closers && !is_operator(w, s);
+    }
+    return n;
 }
 
 /* Word-wrap a paragraph to width display cells (a CJK character takes
@@ -222,16 +281,42 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
             p++;
         if (!*p)
             break;
-        const char *line = p, *cut = NULL;
-        int used = 0;
+        /* the starts and ends of the last two words placed on this line */
+        const char *line = p, *cut = NULL, *ws[2] = { NULL, NULL }, *we[2] = { NULL, NULL };
+        const char *prev_end = NULL; /* the end of the word before those two */
+        int used = 0, words = 0;
         while (*p && *p != '\n') {
             const char *w = p;
             while (*p && *p != ' ' && *p != '\n')
                 p++;
+            /* a bracket opened in this word and closed a few words on
+             * ("f = -k(x - r)", "|1 + Δt·λ|") goes on one line when it fits one */
+            if (bracket_delta(w, p) > 0) {
+                const char *q = p;
+                int depth = bracket_delta(w, p);
+                while (depth > 0 && *q && *q != '\n') {
+                    while (*q == ' ')
+                        q++;
+                    const char *w2 = q;
+                    while (*q && *q != ' ' && *q != '\n')
+                        q++;
+                    depth += bracket_delta(w2, q);
+                }
+                if (depth <= 0 && (int)sw_utf8_columns(w, (size_t)(q - w)) <= width)
+                    p = q;
+            }
             /* the line as written so far, its spaces included */
             int upto = (int)sw_utf8_columns(line, (size_t)(p - line));
             if (used && upto > width) {
                 p = w;
+                /* an operator goes on with what it joins, and so does its
+                 * left operand when more is left on the line ("f =" /
+                 * "-k(x - r)" reads badly: "f = -k(x - r)" goes on whole) */
+                if (words >= 2 && is_operator(ws[1], we[1])) {
+                    int back = words >= 3 ? 2 : 1;
+                    p = ws[2 - back];
+                    cut = back == 2 ? prev_end : we[0];
+                }
                 break;
             }
             if (!used && upto > width) {
@@ -245,6 +330,10 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
                 break;
             }
             used = upto;
+            prev_end = we[0];
+            ws[0] = ws[1], we[0] = we[1];
+            ws[1] = w, we[1] = p;
+            words++;
             cut = p;
             while (*p == ' ')
                 p++;
@@ -263,51 +352,85 @@ static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int w
     }
 }
 
-/* A verbatim line (a formula) as written; too wide for the pane, it goes on
- * on the next lines, indented under itself, broken at a space. */
+/* A verbatim line (a formula, a table row) as written; too wide for the
+ * pane, it goes on on the next lines, indented under itself. Where it
+ * breaks is chosen among its spaces: outside brackets before inside them,
+ * before an operator rather than after one, never leaving a lone closing
+ * bracket or a single operand for the next line when a better break
+ * exists, and the first line as full as that allows. */
 static void add_verbatim(sw_runner *r, const char *text, int width)
 {
     int indent = 0;
     while (text[indent] == ' ')
         indent++;
     if ((int)sw_utf8_columns(text, strlen(text)) <= width || width < indent + 12) {
-        add_wrapped_keep(r, text, width);
+        add_line(r, SW_SIDE_VERBATIM, text);
         return;
     }
     char buf[SW_RUNNER_COLS];
     const char *p = text;
-    int first = 1;
+    int first = 1, depth = 0, next_room = width - (indent + 4);
     while (*p) {
-        int room = width - (first ? 0 : indent + 4);
-        const char *cut = p, *q = p;
-        int cells = 0;
+        int lead = first ? 0 : indent + 4, room = width - lead;
+        if ((int)sw_utf8_columns(p, strlen(p)) <= room) {
+            snprintf(buf, sizeof buf, "%*s%s", lead, "", p);
+            add_line(r, SW_SIDE_VERBATIM, buf);
+            break;
+        }
+        const char *cut = NULL, *next = NULL, *q = p;
+        int best = 0, best_depth = depth, d = depth;
+        while (*q == ' ')
+            q++;
         while (*q) {
             const char *w = q;
-            while (*q == ' ')
-                q++;
             while (*q && *q != ' ')
                 q++;
-            int wc = (int)sw_utf8_columns(w, (size_t)(q - w));
-            if (cells + wc > room && cut != p)
+            d += bracket_delta(w, q);
+            const char *ns = q;
+            while (*ns == ' ')
+                ns++;
+            int cells = (int)sw_utf8_columns(p, (size_t)(q - p));
+            if (cells > room)
                 break;
-            cells += wc;
-            cut = q;
+            if (!*ns)
+                break;
+            int only_closers, tail = operands(ns, &only_closers);
+            int score = -30 * (d > 0 ? d : 0) + cells / 8;
+            if (starts_operator(ns))
+                score += 10;
+            if (is_operator(w, q))
+                score -= 10;
+            if ((int)sw_utf8_columns(ns, strlen(ns)) <= next_room) {
+                if (only_closers)
+                    score -= 100;
+                else if (tail <= 1)
+                    score -= 40;
+            } else
+                score -= 20;
+            if (!cut || score >= best) {
+                cut = q;
+                next = ns;
+                best = score;
+                best_depth = d;
+            }
+            q = ns;
         }
-        if (cut == p)
+        if (!cut) { /* no space to break at: as much as fits, then the rest */
             cut = p + sw_utf8_fit(p, strlen(p), (size_t)room, NULL);
-        if (cut == p) { /* nothing fits: one character, progress all the same */
-            const unsigned char *c1 = (const unsigned char *)p;
-            sw_utf8_next(&c1);
-            cut = (const char *)c1;
+            if (cut == p) { /* nothing fits: one character, progress all the same */
+                const unsigned char *c1 = (const unsigned char *)p;
+                sw_utf8_next(&c1);
+                cut = (const char *)c1;
+            }
+            next = cut;
+            best_depth = depth + bracket_delta(p, cut);
         }
-        snprintf(buf, sizeof buf, "%*s%.*s", first ? 0 : indent + 4, "", (int)(cut - p), p);
+        snprintf(buf, sizeof buf, "%*s%.*s", lead, "", (int)(cut - p), p);
         add_line(r, SW_SIDE_VERBATIM, buf);
-        p = cut;
-        while (!first && *p == ' ')
+        p = next;
+        while (*p == ' ')
             p++;
-        if (first)
-            while (*p == ' ')
-                p++;
+        depth = best_depth;
         first = 0;
     }
 }
@@ -317,6 +440,23 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
     /* beside the scene at every size: the scene keeps every row above the status lines */
     int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols / 2;
+    /* A page with verbatim lines (a table, a formula) gets a pane up to
+     * PANE_GROW columns wider, so that they show whole (a table row split
+     * in two no longer reads as a row); the picture keeps PANE_PICTURE_MIN
+     * columns, and the one between them. */
+    int need = 0;
+    for (int b = 0; b < pg->nblocks; b++)
+        for (const char *s = pg->blocks[b].verbatim ? pg->blocks[b].text : ""; *s;) {
+            const char *e = strchr(s, '\n');
+            size_t len = e ? (size_t)(e - s) : strlen(s);
+            int cells = 2 + (int)sw_utf8_columns(s, len) + 1; /* the indent, the line, the margin */
+            need = cells > need ? cells : need;
+            s += len + (e ? 1 : 0);
+        }
+    if (need > width)
+        width = need < width + PANE_GROW ? need : width + PANE_GROW;
+    if (width > cols - PANE_PICTURE_MIN - 1)
+        width = cols - PANE_PICTURE_MIN - 1;
     char buf[SW_RUNNER_COLS];
     r->side.nlines = 0;
     r->side.lines = r->lines;
@@ -326,7 +466,11 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.question_open = pg->question.text && !r->answered[r->page];
     r->side.notice = !r->complete[r->page] ? NULL
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
+    /* the lesson's title and the page: "(page 2/6)" when the line has room,
+     * else "(2/6)", which has no space to be broken at */
     snprintf(buf, sizeof buf, "%s  (page %d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
+    if ((int)sw_utf8_columns(buf, strlen(buf)) > width - 1)
+        snprintf(buf, sizeof buf, "%s  (%d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
     add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
     add_wrapped(r, SW_SIDE_TITLE, pg->title, width - 1);
     add_line(r, SW_SIDE_TEXT, "");

@@ -16,6 +16,10 @@
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 
+/* Rows the scene keeps before a graph gets any, and the fewest a graph is drawn in. */
+#define SCENE_MIN_ROWS 10
+#define GRAPH_MIN_ROWS 5
+
 static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
 static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
 
@@ -407,7 +411,9 @@ static int side_style(sw_side_kind kind)
 static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int n)
 {
     int more_above = 0, more_below = 0, body = height, first = side->scroll ? *side->scroll : 0;
-    for (int pass = 0; pass < 3; pass++) {
+    if (n <= height)
+        first = 0; /* it all fits: nothing to scroll, no "more" rows */
+    for (int pass = 0; pass < 3 && n > height; pass++) {
         more_above = first > 0;
         body = height - more_above;
         more_below = first + body < n;
@@ -469,7 +475,20 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
             side_w = scr->cols - 31;
         pic_cols = scr->cols - side_w - 1;
     }
-    int graph_h = a->graph ? (pic_rows >= 20 ? 8 : pic_rows / 3) : 0, view_rows = pic_rows - graph_h;
+    /* The scene keeps SCENE_MIN_ROWS (or all it has); the graph takes up to
+     * 8 rows of the rest, and is left out, with a note, when that leaves it
+     * fewer than GRAPH_MIN_ROWS. */
+    int graph_h = 0, graph_squeezed = 0;
+    if (a->graph) {
+        graph_h = pic_rows >= 20 ? 8 : pic_rows / 3;
+        if (pic_rows - graph_h < SCENE_MIN_ROWS)
+            graph_h = pic_rows - SCENE_MIN_ROWS;
+        if (graph_h < GRAPH_MIN_ROWS) {
+            graph_h = 0;
+            graph_squeezed = 1;
+        }
+    }
+    int view_rows = pic_rows - graph_h;
     camera(f, a);
     if (a->view == SW_VIEW_PHASE)
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
@@ -485,12 +504,26 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     if (graph_h > 0)
         sw_draw_graph(f, a, scr, view_rows, 0, graph_h, pic_cols);
-    if (side_w > 0)
-        draw_side(side, scr, 0, pic_cols + 1, pic_rows, side_w);
-    status_block(a, side, scr, 0);
+    else if (graph_squeezed) {
+        sw_field fl[1];
+        int n = 0;
+        field(fl, &n, 1, "(graph: the window is too short for it)", "(no room for the graph)");
+        sw_screen_fill(scr, view_rows - 1, 0, 1, pic_cols, SW_STYLE_TEXT);
+        fit_line(scr, view_rows - 1, 0, pic_cols, SW_STYLE_DIM, fl, n);
+    }
     /* overlays above the status block; over the lesson's pane only while
      * no question waits there (an overlay never hides the quiz) */
     int over_cols = side_w > 0 && side->question_open ? pic_cols : scr->cols;
+    if (a->help && a->help > sw_help_pages(pic_rows, over_cols, side != NULL))
+        a->help = 0; /* past the last page: closed */
+    int overlay = (a->workprec && a->bench) || a->panel || a->help;
+    /* The pane starts two columns right of the picture (a single blank
+     * column reads as a space between words); its text is wrapped to one
+     * column less than its width. An overlay that reaches over the pane
+     * claims all of it: no fragment of the page shows beside the box. */
+    if (side_w > 0 && !(overlay && over_cols > pic_cols))
+        draw_side(side, scr, 0, pic_cols + 2, pic_rows, side_w - 1);
+    status_block(a, side, scr, 0);
     if (a->workprec && a->bench)
         sw_draw_workprec(a, scr, 0, 0, pic_rows, over_cols);
     if (a->panel)

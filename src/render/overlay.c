@@ -30,10 +30,19 @@ int sw_screen_wrapped(sw_screen *scr, int row, int col, int width, int max, int 
     return n;
 }
 
-void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
-                 const char *const *lines, int n, int style)
+/* A box as wide as the widest of size[0..nsize) (or of lines when size is
+ * NULL) needs, centred, its whole rectangle cleared. */
+static void box(sw_screen *scr, int row, int col, int height, int width, const char *title, const char *const *lines,
+                int n, int style, const char *const *size, int nsize)
 {
+    if (!size) {
+        size = lines;
+        nsize = n;
+    }
     int w = sw_text_cells(title) + 4;
+    for (int i = 0; i < nsize; i++)
+        if (sw_text_cells(size[i]) + 4 > w)
+            w = sw_text_cells(size[i]) + 4;
     for (int i = 0; i < n; i++)
         if (sw_text_cells(lines[i]) + 4 > w)
             w = sw_text_cells(lines[i]) + 4;
@@ -46,6 +55,12 @@ void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const 
         sw_screen_text(scr, r0, c0 + 2, w - 4, SW_STYLE_TITLE, title);
     for (int i = 0; i < n && i < h - 2; i++)
         sw_screen_text(scr, r0 + 1 + i, c0 + 2, w - 4, style, lines[i]);
+}
+
+void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
+                 const char *const *lines, int n, int style)
+{
+    box(scr, row, col, height, width, title, lines, n, style, NULL, 0);
 }
 
 /* ---- the graph ---------------------------------------------------------------- */
@@ -124,25 +139,27 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
 
 #define HELP_LINES 160
 
-void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int width, int in_lesson)
+/* The help screen's lines for a box width wide: every control shown here,
+ * then what the numbers and marks on screen mean; 0 when the box is too
+ * narrow for help. */
+static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const char **lines)
 {
-    static char buf[HELP_LINES][SW_TEXT_LINE];
-    const char *lines[HELP_LINES];
     int n = 0, count, inner = width - 4, key_w = 13;
-    if (inner < 30 || height < 5) {
-        a->help = 0;
-        return;
-    }
-    /* what the numbers on the status line and the meter mean */
-    static const char *const terms[] = {
-        "energy: change since t=0, % of the energy of the motion (above the resting state; an orbit: of |E(0)|)",
-        "error: largest |y - true y| over positions and velocities",
-        "|L|dt: stiffest eigenvalue of the linearisation, times dt",
-        "x.../step: growth per step of the worst mode (1: neutral)",
+    if (inner < 30)
+        return 0;
+    /* what the numbers on the status line, the meter and the picture's edges mean */
+    static const struct { const char *keys, *help; } terms[] = {
+        { "", "energy: change since t=0, % of the energy of the motion (above the resting state; an orbit: of |E(0)|)" },
+        { "", "error: largest |y - true y| over positions and velocities" },
+        { "", "|L|dt: stiffest eigenvalue of the linearisation, times dt" },
+        { "", "x.../step: growth per step of the worst mode (1: neutral)" },
+        { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "
+                        "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },
     };
     const sw_control *controls = sw_controls(&count);
     char text[SW_TEXT_LINE], wrapped[16][SW_TEXT_LINE];
-    for (int i = 0; i < count + (int)(sizeof terms / sizeof terms[0]); i++) {
+    int nterms = (int)(sizeof terms / sizeof terms[0]);
+    for (int i = 0; i < count + nterms; i++) {
         const char *keys, *help;
         if (i < count) {
             const sw_control *c = &controls[i];
@@ -152,8 +169,8 @@ void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int w
             keys = c->help_keys;
             help = c->help;
         } else {
-            keys = "";
-            help = terms[i - count];
+            keys = terms[i - count].keys;
+            help = terms[i - count].help;
         }
         /* the help text wraps beside its keys */
         int k = sw_text_wrap(help, inner - key_w - 1, wrapped, 16);
@@ -164,6 +181,28 @@ void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int w
             n++;
         }
     }
+    return n;
+}
+
+int sw_help_pages(int height, int width, int in_lesson)
+{
+    static char buf[HELP_LINES][SW_TEXT_LINE];
+    const char *lines[HELP_LINES];
+    int n = help_lines(width, in_lesson, buf, lines), per_page = height - 3;
+    if (n == 0 || height < 5)
+        return 0;
+    return (n + per_page - 1) / per_page;
+}
+
+void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int width, int in_lesson)
+{
+    static char buf[HELP_LINES][SW_TEXT_LINE];
+    const char *lines[HELP_LINES + 1];
+    int n = help_lines(width, in_lesson, buf, lines);
+    if (n == 0 || height < 5) {
+        a->help = 0;
+        return;
+    }
     int per_page = height - 3, pages = (n + per_page - 1) / per_page;
     if (a->help > pages) {
         a->help = 0; /* past the last page: closed */
@@ -172,11 +211,12 @@ void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int w
     int first = (a->help - 1) * per_page, shown = n - first < per_page ? n - first : per_page;
     static char footer[64];
     snprintf(footer, sizeof footer, a->help < pages ? "? next page (%d/%d)" : "? closes (%d/%d)", a->help, pages);
-    const char *page[HELP_LINES];
+    const char *page[HELP_LINES + 1];
     for (int i = 0; i < shown; i++)
         page[i] = lines[first + i];
     page[shown] = footer;
-    sw_draw_box(scr, row, col, height, width, "keys", page, shown + 1, SW_STYLE_TEXT);
+    /* every page as wide as the widest, so turning a page never shows what is under it */
+    box(scr, row, col, height, width, "keys", page, shown + 1, SW_STYLE_TEXT, lines, n);
 }
 
 /* ---- the parameter panel -------------------------------------------------------- */

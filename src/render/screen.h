@@ -94,6 +94,8 @@ void sw_frame_push_trails(sw_frame *f, sw_app *a);
 /* (overlay.c) The pieces the composer places, each in the rectangle given. */
 void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int height, int width);
 void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int width, int in_lesson);
+/* (overlay.c) How many pages the help screen takes in a box of that size (0: none fits). */
+int sw_help_pages(int height, int width, int in_lesson);
 void sw_draw_panel(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
 void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
 /* (overlay.c) A boxed overlay of lines, centred in the rectangle, each line

@@ -113,10 +113,18 @@ static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, 
  * where it blew up, the others go on. */
 static void blown_banner(sw_screen *scr, const sw_sim *s, int row, int col, int width, int rows)
 {
-    char line[SW_TEXT_LINE];
-    snprintf(line, sizeof line, "BLOWN UP at step %ld, t = %.4g: %s. Press r to reset.", s->blow_step, s->blow_time,
-             s->blow_reason);
-    sw_screen_wrapped(scr, row, col, width, rows > 3 ? 3 : rows, SW_STYLE_BAD, line);
+    char line[3][SW_TEXT_LINE], wrapped[4][SW_TEXT_LINE];
+    int max = rows > 3 ? 3 : rows;
+    /* the whole story where it fits, else shorter: the reason is on the status line too */
+    snprintf(line[0], sizeof line[0], "BLOWN UP at step %ld, t = %.4g: %s. Press r to reset.", s->blow_step,
+             s->blow_time, s->blow_reason);
+    snprintf(line[1], sizeof line[1], "BLOWN UP at step %ld, t = %.4g. Press r to reset.", s->blow_step, s->blow_time);
+    snprintf(line[2], sizeof line[2], "BLOWN UP (r resets)");
+    int k = 0;
+    while (k < 2 && sw_text_wrap(line[k], width, wrapped, 4) > max)
+        k++;
+    if (sw_text_wrap(line[k], width, wrapped, 4) <= max)
+        sw_screen_wrapped(scr, row, col, width, max, SW_STYLE_BAD, line[k]);
 }
 
 /* Compare side by side: one lane per method, each with its own title line
@@ -168,22 +176,76 @@ static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
 
 /* ---- the phase and region views ------------------------------------------------ */
 
+/* A method's name in brief for a legend: every part but the last cut to
+ * four letters ("symplectic-euler" -> "symp-euler"); "" when that is no shorter. */
+static void brief_name(const char *name, char *out, size_t len)
+{
+    size_t o = 0;
+    const char *last = strrchr(name, '-');
+    for (const char *p = name; *p && o + 1 < len;) {
+        const char *e = strchr(p, '-');
+        size_t part = e && p < last ? (size_t)(e - p) : strlen(p);
+        size_t keep = e && p < last && part > 4 ? 4 : part;
+        if (o + keep + 2 > len)
+            break;
+        memcpy(out + o, p, keep);
+        o += keep;
+        if (!(e && p < last))
+            break;
+        out[o++] = '-';
+        p = e + 1;
+    }
+    out[o] = '\0';
+    if (strcmp(out, name) == 0)
+        out[0] = '\0';
+}
+
+/* The rows (1 or 2) a legend needs so that none of its nmust first
+ * entries (the truth, each run drawn) is dropped while brief forms or a
+ * second row can keep it. */
+static int legend_rows(const sw_field *must, int nmust, int width)
+{
+    char lines[1][SW_TEXT_LINE];
+    int dropped = 0;
+    sw_text_fit_rows(lines, 1, width, must, nmust, "  ", &dropped);
+    return dropped ? 2 : 1;
+}
+
 static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
-    char err[SW_ERRLEN], buf[SW_TEXT_LINE];
+    char err[SW_ERRLEN], buf[SW_TEXT_LINE], brief[SW_TEXT_LINE];
     const char *q, *qu, *v, *vu;
     sw_phase_names(a->phase_coord, &q, &qu, &v, &vu);
     sw_field fl[12];
     int n = 0;
     snprintf(buf, sizeof buf, "phase: %s (%s) against %s (%s)", q, qu, v, vu);
-    field(fl, &n, 10, buf, NULL);
+    snprintf(brief, sizeof brief, "%s (%s) vs %s (%s)", q, qu, v, vu);
+    field(fl, &n, 10, buf, brief);
     snprintf(buf, sizeof buf, "of particle %d", a->phase_particle + 1);
-    field(fl, &n, 6, buf, NULL);
+    snprintf(brief, sizeof brief, "#%d", a->phase_particle + 1);
+    field(fl, &n, 6, buf, brief);
     if (rows < 6)
         return;
+    /* the legend: what is drawn first (the truth, each run) */
+    sw_field lg[12];
+    int nl = 0;
+    int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
+    field(lg, &nl, 9, exact ? "' exact orbit" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
+          exact ? "' exact" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference" : NULL);
+    for (int i = 0; i < a->nsims; i++) {
+        char name[64];
+        snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
+                 a->sims[i].blown ? " (blew up)" : "");
+        brief_name(a->sims[i].method->name, name, sizeof name);
+        snprintf(brief, sizeof brief, "%c %s%s", (char)sim_glyph[i], name[0] ? name : a->sims[i].method->name,
+                 a->sims[i].blown ? " (blown)" : "");
+        field(lg, &nl, 12 - i, buf, brief);
+    }
+    int nmust = nl, lrows = legend_rows(lg, nmust, cols);
     sw_canvas *c = &f->canvas;
-    if (c->cols != cols || c->rows != rows - 2)
-        sw_canvas_resize(c, cols, rows - 2, err, sizeof err);
+    int crows = rows - 1 - lrows;
+    if (c->cols != cols || c->rows != crows)
+        sw_canvas_resize(c, cols, crows, err, sizeof err);
     sw_canvas_set_mode(c, a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
     int left = sw_phase_draw(&f->phase, c, a, f->unicode);
     double q0, q1, v0, v1;
@@ -194,21 +256,15 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     }
     fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
     sw_screen_blit(scr, c, row0 + 1, col0);
-    n = 0;
-    int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
-    field(fl, &n, 9, exact ? "' exact orbit" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
-          exact ? "' exact" : NULL);
-    for (int i = 0; i < a->nsims; i++) {
-        snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
-                 a->sims[i].blown ? " (blew up)" : "");
-        field(fl, &n, 10 - i, buf, NULL);
-    }
     if (left) {
         snprintf(buf, sizeof buf, "%d left the frame (z: zoom out)", left);
-        field(fl, &n, 7, buf, "z: zoom out");
+        field(lg, &nl, 7, buf, "z: zoom out");
     }
-    field(fl, &n, 2, "V coordinate  < > particle", "V < >");
-    fit_line(scr, row0 + rows - 1, col0, cols, SW_STYLE_DIM, fl, n);
+    field(lg, &nl, 2, "V coordinate  < > particle", "V < >");
+    char lines[2][SW_TEXT_LINE];
+    int used = sw_text_fit_rows(lines, lrows, cols, lg, nl, "  ", NULL);
+    for (int i = 0; i < used; i++)
+        sw_screen_text(scr, row0 + rows - lrows + i, col0, cols, SW_STYLE_DIM, lines[i]);
 }
 
 static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)

@@ -17,12 +17,17 @@
 static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
 static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
 
+/* Where two or more runs' curves take the same cell of the graph. */
+#define SW_GLYPH_MERGED '*'
+
 int sw_screen_wrapped(sw_screen *scr, int row, int col, int width, int max, int style, const char *text)
 {
     static char lines[8][SW_TEXT_LINE];
     int n = sw_text_wrap(text, width, lines, 8);
-    if (n > max)
+    if (n > max) {
+        scr->clipped++; /* lines left out are cut text too: the caller says less, or gives more rows */
         n = max;
+    }
     if (n > 8)
         n = 8;
     for (int i = 0; i < n; i++)
@@ -124,15 +129,54 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
         double y0 = (0 - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
         sw_canvas_line(&f->plot, 0, y0, pw, y0, '-', SW_STYLE_WALL);
     }
+    /* Each series alone first, to learn which cells it takes; then every
+     * cell shows its series' glyph, or SW_GLYPH_MERGED where two or more
+     * lie on one another (no run hides behind another). */
+    unsigned char *own = a->nsims > 1 ? calloc((size_t)pw * (size_t)ph, 1) : NULL;
+    int merged = 0;
     for (int i = a->nsims - 1; i >= 0; i--) {
         const sw_series *s = &a->series[i];
+        if (own)
+            sw_canvas_clear(&f->plot);
         for (int k = 1; k < s->len; k++) {
             double x0 = (s->t[k - 1] - tmin) / (tmax - tmin) * (pw - 1e-9), x1 = (s->t[k] - tmin) / (tmax - tmin) * (pw - 1e-9);
             double y0 = (s->v[k - 1] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9), y1 = (s->v[k] - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
             sw_canvas_line(&f->plot, x0, y0, x1, y1, sim_glyph[i], sim_style[i]);
         }
+        for (int k = 0; own && k < pw * ph; k++)
+            if (sw_canvas_codepoint(&f->plot, k % pw, k / pw) == sim_glyph[i])
+                own[k] |= (unsigned char)(1u << i);
+    }
+    if (own) {
+        sw_canvas_clear(&f->plot);
+        if (vmin < 0 && vmax > 0) {
+            double y0 = (0 - vmin) / (vmax - vmin) * (2.0 * ph - 1e-9);
+            sw_canvas_line(&f->plot, 0, y0, pw, y0, '-', SW_STYLE_WALL);
+        }
+        for (int k = 0; k < pw * ph; k++) {
+            if (!own[k])
+                continue;
+            int i = 0;
+            while (!(own[k] & (1u << i)))
+                i++;
+            int many = (own[k] & (own[k] - 1)) != 0;
+            merged += many;
+            sw_canvas_put(&f->plot, k % pw, k / pw, many ? SW_GLYPH_MERGED : sim_glyph[i],
+                          many ? SW_STYLE_GHOST : sim_style[i]);
+        }
+        free(own);
     }
     sw_screen_blit(scr, &f->plot, row + 1, col + lw + 1);
+    if (merged) {
+        /* the title line again, with what the merged glyph means */
+        sw_field t3[3] = { title[0], title[1], { "", "", 3 } };
+        snprintf(t3[2].full, sizeof t3[2].full, "%c: runs on one another", SW_GLYPH_MERGED);
+        snprintf(t3[2].brief, sizeof t3[2].brief, "%c: overlap", SW_GLYPH_MERGED);
+        t3[2].prio = 3;
+        sw_screen_fill(scr, row, col, 1, width, SW_STYLE_TEXT);
+        sw_text_fit(line, sizeof line, width, t3, 3, " ");
+        sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, line);
+    }
 }
 
 /* ---- help --------------------------------------------------------------------- */

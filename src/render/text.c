@@ -9,40 +9,52 @@
 
 int sw_text_cells(const char *s) { return (int)sw_utf8_columns(s, strlen(s)); }
 
-/* The line with fields marked in use[] (1 full, 2 brief, 0 dropped). */
-static int join(char *out, size_t len, const sw_field *f, const int *use, int n, const char *sep)
+/* Whether the fields in use[] pack, in order, into at most rows lines of
+ * width cells (a field never split); the lines into out when it is given. */
+static int pack(char (*out)[SW_TEXT_LINE], int rows, int width, const sw_field *f, const int *use, int n,
+                const char *sep)
 {
+    int row = 0, cells = 0, seplen = sw_text_cells(sep);
     size_t used = 0;
-    int cells = 0, first = 1, seplen = sw_text_cells(sep);
-    if (len)
-        out[0] = '\0';
+    if (out)
+        out[0][0] = '\0';
     for (int k = 0; k < n; k++) {
         if (!use[k])
             continue;
         const char *t = use[k] == 2 ? f[k].brief : f[k].full;
-        size_t tl = strlen(t), sl = first ? 0 : strlen(sep);
-        if (used + sl + tl + 1 > len)
-            break;
-        if (!first)
-            memcpy(out + used, sep, sl);
-        memcpy(out + used + sl, t, tl);
-        used += sl + tl;
-        out[used] = '\0';
-        cells += (first ? 0 : seplen) + sw_text_cells(t);
-        first = 0;
+        int tc = sw_text_cells(t);
+        size_t tl = strlen(t), sl = strlen(sep);
+        if (cells > 0 && (cells + seplen + tc > width || used + sl + tl + 1 > SW_TEXT_LINE)) {
+            if (++row >= rows)
+                return 0;
+            cells = 0;
+            used = 0;
+            if (out)
+                out[row][0] = '\0';
+        }
+        if (tc > width || tl + 1 > SW_TEXT_LINE)
+            return 0;
+        if (out) {
+            if (cells > 0)
+                memcpy(out[row] + used, sep, sl);
+            memcpy(out[row] + used + (cells > 0 ? sl : 0), t, tl);
+            out[row][used + (cells > 0 ? sl : 0) + tl] = '\0';
+        }
+        used += (cells > 0 ? sl : 0) + tl;
+        cells += (cells > 0 ? seplen : 0) + tc;
     }
-    return cells;
+    return row + 1;
 }
 
-int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, const char *sep)
+int sw_text_fit_rows(char (*out)[SW_TEXT_LINE], int rows, int width, const sw_field *f, int n, const char *sep,
+                     int *dropped)
 {
-    int use[64] = { 0 };
+    int use[64] = { 0 }, gone = 0;
     if (n > 64)
         n = 64;
     for (int k = 0; k < n; k++)
         use[k] = f[k].full[0] ? 1 : 0;
-    int cells = join(out, len, f, use, n, sep);
-    while (cells > width) {
+    while (!pack(NULL, rows, width, f, use, n, sep)) {
         /* the least important field still shown: shorten it if it can be, else drop it */
         int pick = -1;
         for (int k = 0; k < n; k++)
@@ -58,16 +70,35 @@ int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, cons
                 brief = k;
         if (brief >= 0)
             use[brief] = 2;
-        else
+        else {
             use[pick] = 0;
-        cells = join(out, len, f, use, n, sep);
+            gone++;
+        }
     }
-    if (cells > width) {
-        if (len)
-            out[0] = '\0';
+    if (dropped)
+        *dropped = gone;
+    int any = 0;
+    for (int k = 0; k < n; k++)
+        any |= use[k];
+    if (!any) {
+        out[0][0] = '\0';
         return 0;
     }
-    return cells;
+    return pack(out, rows, width, f, use, n, sep);
+}
+
+int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, const char *sep)
+{
+    char line[1][SW_TEXT_LINE];
+    if (len)
+        out[0] = '\0';
+    if (!sw_text_fit_rows(line, 1, width, f, n, sep, NULL))
+        return 0;
+    size_t l = strlen(line[0]);
+    if (l + 1 > len)
+        return 0;
+    memcpy(out, line[0], l + 1);
+    return sw_text_cells(out);
 }
 
 int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int max)

@@ -16,6 +16,12 @@ int sw_text_cells(const char *s);
  * then the least important are dropped, until the line fits. Returns the
  * cells used (0 when not even the most important field fits). */
 int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, const char *sep);
+/* The same over at most rows lines: the fields in order, each line filled
+ * before the next, none split; brief forms, then drops, until they fit.
+ * Returns the lines used (0: not even the most important field fits);
+ * *dropped (when not NULL) counts the fields left out. */
+int sw_text_fit_rows(char (*out)[SW_TEXT_LINE], int rows, int width, const sw_field *f, int n, const char *sep,
+                     int *dropped);
 /* Word-wrap text (spaces separate words; '\n' ends a line) into lines of at
  * most width cells; a word longer than a line is split. Returns the number
  * of lines the text needs; at most max are written. */

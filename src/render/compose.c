@@ -176,30 +176,6 @@ static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
 
 /* ---- the phase and region views ------------------------------------------------ */
 
-/* A method's name in brief for a legend: every part but the last cut to
- * four letters ("symplectic-euler" -> "symp-euler"); "" when that is no shorter. */
-static void brief_name(const char *name, char *out, size_t len)
-{
-    size_t o = 0;
-    const char *last = strrchr(name, '-');
-    for (const char *p = name; *p && o + 1 < len;) {
-        const char *e = strchr(p, '-');
-        size_t part = e && p < last ? (size_t)(e - p) : strlen(p);
-        size_t keep = e && p < last && part > 4 ? 4 : part;
-        if (o + keep + 2 > len)
-            break;
-        memcpy(out + o, p, keep);
-        o += keep;
-        if (!(e && p < last))
-            break;
-        out[o++] = '-';
-        p = e + 1;
-    }
-    out[o] = '\0';
-    if (strcmp(out, name) == 0)
-        out[0] = '\0';
-}
-
 /* The rows (1 or 2) a legend needs so that none of its nmust first
  * entries (the truth, each run drawn) is dropped while brief forms or a
  * second row can keep it. */
@@ -236,7 +212,7 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
         char name[64];
         snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
                  a->sims[i].blown ? " (blew up)" : "");
-        brief_name(a->sims[i].method->name, name, sizeof name);
+        sw_text_brief_name(a->sims[i].method->name, name, sizeof name);
         snprintf(brief, sizeof brief, "%c %s%s", (char)sim_glyph[i], name[0] ? name : a->sims[i].method->name,
                  a->sims[i].blown ? " (blown)" : "");
         field(lg, &nl, 12 - i, buf, brief);

@@ -159,3 +159,27 @@ int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int m
     }
     return count;
 }
+
+/* A method's name in brief for a legend: every part but the last cut to
+ * four letters ("symplectic-euler" -> "symp-euler"); "" when that is no shorter. */
+void sw_text_brief_name(const char *name, char *out, size_t len)
+{
+    size_t o = 0;
+    const char *last = strrchr(name, '-');
+    for (const char *p = name; *p && o + 1 < len;) {
+        const char *e = strchr(p, '-');
+        size_t part = e && p < last ? (size_t)(e - p) : strlen(p);
+        size_t keep = e && p < last && part > 4 ? 4 : part;
+        if (o + keep + 2 > len)
+            break;
+        memcpy(out + o, p, keep);
+        o += keep;
+        if (!(e && p < last))
+            break;
+        out[o++] = '-';
+        p = e + 1;
+    }
+    out[o] = '\0';
+    if (strcmp(out, name) == 0)
+        out[0] = '\0';
+}

@@ -26,5 +26,8 @@ int sw_text_fit_rows(char (*out)[SW_TEXT_LINE], int rows, int width, const sw_fi
  * most width cells; a word longer than a line is split. Returns the number
  * of lines the text needs; at most max are written. */
 int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int max);
+/* A method's name in brief for a legend: every part but the last cut to
+ * four letters ("symplectic-euler" -> "symp-euler"); "" when that is no shorter. */
+void sw_text_brief_name(const char *name, char *out, size_t len);
 
 #endif

@@ -117,46 +117,99 @@ static void shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int 
     }
 }
 
-static void axes(sw_canvas *c)
+/* Cells taken by labels and marks, so that no label touches another or a
+ * mark: a label needs its own cells and one free cell on either side. */
+#define TAKEN_MAX 96
+typedef struct taken {
+    int n;
+    int row[TAKEN_MAX], c0[TAKEN_MAX], c1[TAKEN_MAX]; /* cells c0..c1 of row */
+} taken;
+
+static void take(taken *t, int row, int c0, int c1)
+{
+    if (t->n < TAKEN_MAX) {
+        t->row[t->n] = row;
+        t->c0[t->n] = c0;
+        t->c1[t->n] = c1;
+        t->n++;
+    }
+}
+
+/* Write a label at (col, row) when it fits the canvas and keeps a free cell
+ * from every label and mark; returns whether it was written. */
+static int label(sw_canvas *c, taken *t, int col, int row, const char *text)
+{
+    int len = (int)strlen(text);
+    if (row < 0 || row >= c->rows || col < 0 || col + len > c->cols)
+        return 0;
+    for (int k = 0; k < t->n; k++)
+        if (t->row[k] == row && t->c0[k] <= col + len && t->c1[k] >= col - 1)
+            return 0;
+    sw_canvas_text(c, col, row, text, SW_STYLE_DIM);
+    take(t, row, col, col + len - 1);
+    return 1;
+}
+
+static void axes(sw_canvas *c, taken *t)
 {
     sw_view vis = sw_canvas_visible(c);
-    int oc, orow;
+    int oc, orow, have_origin = 0;
     /* the axes as glyphs in either mode (a Braille line would blur into the shading) */
     if (sw_canvas_world_to_cell(c, 0, 0, &oc, &orow)) {
+        have_origin = 1;
         for (int k = 0; k < c->cols; k++)
             sw_canvas_put(c, k, orow, '-', SW_STYLE_WALL);
         for (int k = 0; k < c->rows; k++)
             sw_canvas_put(c, oc, k, '|', SW_STYLE_WALL);
         sw_canvas_put(c, oc, orow, '+', SW_STYLE_WALL);
     }
+    int col, row;
+    /* the axes' names first: "Im" left of the axis, clear of the tick labels right of it */
+    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col >= 2 && c->rows > 2 &&
+        label(c, t, col - 2, 1, "Im"))
+        take(t, 1, col, col);
+    if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
+        label(c, t, c->cols - 2, row - 1, "Re");
     /* unit ticks, labelled where there is room */
     double step = pow(10, floor(log10(fmax(vis.ymax, 1e-9) / 1.5)));
     if (vis.ymax / step > 5)
         step *= 2;
+    /* every k-th tick of the real axis labelled, k such that the labels never touch */
+    int every = 1;
+    if (have_origin) {
+        int c1, r1, widest = 0;
+        for (double v = step; v < vis.xmax && v / step < 20; v += step) {
+            char lab[16];
+            int len = snprintf(lab, sizeof lab, "%g", -v);
+            widest = len > widest ? len : widest;
+        }
+        double cells = sw_canvas_world_to_cell(c, -step, 0, &c1, &r1) ? (double)(oc - c1) : 1;
+        static const int ks[] = { 1, 2, 4, 5, 10, 20 };
+        for (size_t i = 0; i < sizeof ks / sizeof ks[0]; i++) {
+            every = ks[i];
+            if (cells * every >= widest + 1)
+                break;
+        }
+    }
+    int n = 0;
     for (double v = step; v < vis.xmax && v / step < 20; v += step) {
         char lab[16];
-        int col, row, len = snprintf(lab, sizeof lab, "%g", v);
+        int len;
+        n++;
         for (int sgn = -1; sgn <= 1; sgn += 2)
             if (sw_canvas_world_to_cell(c, sgn * v, 0, &col, &row))
                 sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
         /* the negative real axis is where the regions lie: label it below */
         len = snprintf(lab, sizeof lab, "%g", -v);
-        if (sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows && col - len / 2 >= 0)
-            sw_canvas_text(c, col - len / 2, row + 1, lab, SW_STYLE_DIM);
+        if (n % every == 0 && sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows)
+            label(c, t, col - len / 2, row + 1, lab);
         /* (the top and bottom rows are kept for the arrows of marks beyond them) */
         if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row) && row >= 1 && row <= c->rows - 2) {
             sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
-            len = snprintf(lab, sizeof lab, "%gi", v);
-            if (col + 1 + len <= c->cols)
-                sw_canvas_text(c, col + 1, row, lab, SW_STYLE_DIM);
+            snprintf(lab, sizeof lab, "%gi", v);
+            label(c, t, col + 1, row, lab);
         }
     }
-    int col, row;
-    if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
-        sw_canvas_text(c, c->cols - 2, row - 1, "Re", SW_STYLE_DIM);
-    /* left of the axis: a mark beyond the top gets its arrow and label on the right */
-    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col >= 2 && c->rows > 2)
-        sw_canvas_text(c, col - 2, 1, "Im", SW_STYLE_DIM);
 }
 
 int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *outside, int *shown, char *why,
@@ -229,8 +282,9 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
                 if (cell[row * c->cols + col])
                     sw_canvas_put(c, col, row, ':', SW_STYLE_GHOST);
     }
-    axes(c);
+    taken t = { 0 };
     if (!a->have_spec) {
+        axes(c, &t);
         snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
         return 0;
     }
@@ -264,6 +318,13 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
             nm++;
         }
     }
+    /* the marks' cells first: labels keep clear of them (a mark wins over a label) */
+    for (int k = 0; k < nm; k++) {
+        int col, row;
+        if (sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
+            take(&t, row, col, col);
+    }
+    axes(c, &t);
     for (int k = 0; k < nm; k++) {
         int col, row;
         *outside += grows[k];

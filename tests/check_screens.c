@@ -51,6 +51,28 @@ static void app_for(sw_app *a, const sw_scene *sc, const char *method, double dt
                   "%s", err);
 }
 
+/* The region view's picture rows (between its title and its legend): no
+ * two labels run together ("-12-10"), no mark sits against a label ("*8i"). */
+static void assert_labels_apart(const char *text, const char *what, int cols, int rows)
+{
+    const char *line = strchr(text, '\n');
+    for (int row = 1; line && *++line; row++) {
+        const char *end = strchr(line, '\n');
+        if (!end)
+            break;
+        if (strstr(line, "dt x eigenvalue") && strstr(line, "dt x eigenvalue") < end)
+            break; /* the legend: below the picture */
+        for (const char *c = line; c + 1 < end; c++) {
+            int digit_minus_digit = c + 2 < end && c[0] >= '0' && c[0] <= '9' && c[1] == '-' && c[2] >= '0' && c[2] <= '9';
+            int mark_label = (c[0] == '*' && ((c[1] >= '0' && c[1] <= '9') || (c + 2 < end && c[1] == '-' && c[2] >= '0' && c[2] <= '9'))) ||
+                             (((c[0] >= '0' && c[0] <= '9') || c[0] == 'i') && c[1] == '*');
+            ck_assert_msg(!digit_minus_digit && !mark_label, "%s at %dx%d, row %d: labels touch:\n%s", what, cols,
+                          rows, row, text);
+        }
+        line = end;
+    }
+}
+
 /* Each view and overlay of one app, at both sizes. */
 static void every_view(sw_app *a, const char *name)
 {
@@ -80,10 +102,14 @@ static void every_view(sw_app *a, const char *name)
         snprintf(what, sizeof what, "%s parameter panel", name);
         check_screen(&f, a, NULL, cols, rows, what);
         a->panel = 0;
+        int edges_told = 0;
         for (a->help = 1; a->help > 0 && a->help < 20;) {
             snprintf(what, sizeof what, "%s help page %d", name, a->help);
             int before = a->help;
-            check_screen(&f, a, NULL, cols, rows, what);
+            char *text;
+            check_screen_text(&f, a, NULL, cols, rows, what, &text);
+            edges_told |= strstr(text, "past the picture's edge") != NULL;
+            free(text);
             if (a->help == 0)
                 break;
             ck_assert_int_eq(a->help, before);
@@ -91,6 +117,21 @@ static void every_view(sw_app *a, const char *name)
             check_screen(&f, a, NULL, cols, rows, what); /* past the last page it closes */
         }
         ck_assert_int_eq(a->help, 0);
+        ck_assert_msg(edges_told, "%s at %dx%d: no help line says what the edge markers (<1.42, v43.1) are", name,
+                      cols, rows);
+        /* the region view zoomed out: labels never touch one another or a mark */
+        sw_app_set_view(a, SW_VIEW_REGION);
+        for (double zoom = 1; zoom <= 4; zoom *= 2) {
+            double z = a->zoom;
+            a->zoom = zoom;
+            char *text;
+            snprintf(what, sizeof what, "%s region view at zoom %g", name, zoom);
+            check_screen_text(&f, a, NULL, cols, rows, what, &text);
+            assert_labels_apart(text, what, cols, rows);
+            free(text);
+            a->zoom = z;
+        }
+        sw_app_set_view(a, SW_VIEW_SCENE);
         sw_frame_free(&f);
     }
 }
@@ -158,6 +199,73 @@ START_TEST(workprec_overlay)
 }
 END_TEST
 
+/* Compose a lesson's screen into scr (the caller frees it). */
+static void compose_lesson(sw_frame *f, sw_app *a, sw_runner *r, int cols, int rows, sw_screen *scr)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_screen_init(scr, cols, rows, err, sizeof err), SW_OK);
+    sw_frame_compose(f, a, sw_runner_side(r, a, cols), scr);
+}
+
+/* Two blank columns between the picture and the lesson's text, on every
+ * row above the status block (one reads as a space between words). */
+static void assert_pane_apart(sw_frame *f, sw_app *a, sw_runner *r, int cols, int rows, const char *what)
+{
+    sw_screen scr;
+    compose_lesson(f, a, r, cols, rows, &scr);
+    const sw_side *side = sw_runner_side(r, a, cols);
+    int pic_cols = cols - side->width - 1;
+    char *text = malloc((size_t)cols * (size_t)rows * 4 + (size_t)rows + 1);
+    sw_screen_to_text(&scr, text, (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1);
+    for (int row = 0; row < rows - (a->nsims + 5); row++) /* above the status block, its message at 3 rows */
+        for (int c = pic_cols; c < pic_cols + 2; c++)
+            ck_assert_msg(scr.cp[(size_t)row * (size_t)cols + (size_t)c] == ' ',
+                          "%s at %dx%d: row %d, column %d between the picture and the pane is not blank:\n%s", what,
+                          cols, rows, row, c, text);
+    free(text);
+    sw_screen_free(&scr);
+}
+
+/* Down scrolls only when there is more below: a page that fits never
+ * shows "(Up: more above)". */
+static void assert_scroll_stops(sw_frame *f, sw_app *a, sw_runner *r, int cols, int rows, const char *what)
+{
+    char *text;
+    check_screen_text(f, a, sw_runner_side(r, a, cols), cols, rows, what, &text);
+    int more = strstr(text, "more below") != NULL;
+    free(text);
+    if (more)
+        return;
+    sw_runner_key(r, a, SW_KEY_DOWN);
+    check_screen_text(f, a, sw_runner_side(r, a, cols), cols, rows, what, &text);
+    ck_assert_msg(strstr(text, "more above") == NULL, "%s at %dx%d: Down scrolled a pane that fits:\n%s", what, cols,
+                  rows, text);
+    ck_assert_int_eq(r->scroll, 0);
+    free(text);
+    a->message[0] = '\0';
+}
+
+/* An overlay over the pane claims all of it: no fragment of the page
+ * (its header, say) shows beside the box. While a question is open the
+ * overlays stay in the picture and the pane shows whole. */
+static void assert_overlays_claim_pane(sw_frame *f, sw_app *a, sw_runner *r, int cols, int rows, const char *what)
+{
+    const sw_side *side = sw_runner_side(r, a, cols);
+    char head[24];
+    snprintf(head, sizeof head, "%.12s", r->lesson.title);
+    for (int ov = 0; ov < 2; ov++) {
+        a->help = ov == 0;
+        a->panel = ov == 1;
+        char *text;
+        check_screen_text(f, a, side, cols, rows, what, &text);
+        int shown = strstr(text, head) != NULL;
+        ck_assert_msg(side->question_open ? shown : !shown, "%s at %dx%d: with the %s open the page %s:\n%s", what,
+                      cols, rows, ov ? "panel" : "help", side->question_open ? "is hidden" : "shows beside it", text);
+        free(text);
+    }
+    a->help = a->panel = 0;
+}
+
 /* Every page of every lesson, with its pane: as it opens, after a second
  * of play, with the hint, with the help screen over the picture. */
 START_TEST(every_lesson_page)
@@ -183,6 +291,9 @@ START_TEST(every_lesson_page)
                 int cols = sizes[s][0], rows = sizes[s][1];
                 snprintf(what, sizeof what, "%s page %d", e[i].file, p + 1);
                 check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
+                assert_pane_apart(&f, &a, r, cols, rows, what);
+                assert_scroll_stops(&f, &a, r, cols, rows, what);
+                assert_overlays_claim_pane(&f, &a, r, cols, rows, what);
                 r->hint = 1;
                 check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
                 r->hint = 0;
@@ -239,6 +350,200 @@ START_TEST(every_lesson_page)
 }
 END_TEST
 
+/* A lesson written to show the pane's layout: formulas, bracketed prose,
+ * a table, a question and a long title (the real lessons change; these
+ * lines are here to stay). */
+static const char layout_lesson[] =
+    "title: Runge-Kutta: midpoint and RK4, a long title\n"
+    "\n"
+    "--- Formulas and a table\n"
+    "@scene vortex\n"
+    "@integrator midpoint\n"
+    "@dt 0.1\n"
+    "A mass on an undamped spring: f = -k(x - r). Its energy should stay constant; Euler multiplies each mode "
+    "by the disc |1 + Δt·λ| <= 1 around -1 where the marks sit.\n"
+    "\n"
+    "  f = -[ k_spring·(x - r) + k_damp·v ]\n"
+    "  x[i+1] = x[i]\n"
+    "         + (Δt/6)·(k1 + 2k2 + 2k3 + k4)\n"
+    "  (I - Δt·J) δ = Δt·g(guess) - (guess - x[i])\n"
+    "\n"
+    "  method     Δt       steps  error\n"
+    "  rk4        0.05     126    0.0000003\n"
+    "@question When does a 4-evaluation step pay?\n"
+    "@answer a) Always | No.\n"
+    "@answer b) When the motion is smooth | Yes.\n"
+    "@correct b\n"
+    "@hint Think.\n"
+    "\n"
+    "--- Three runs in phase space\n"
+    "@scene spring\n"
+    "@integrator euler\n"
+    "@dt 0.02\n"
+    "@compare symplectic-euler implicit-euler\n"
+    "@view phase\n"
+    "Three methods (o, x and +) from the same start.\n";
+
+static void start_layout_lesson(sw_runner *r, sw_app *a, char *dir, size_t dirlen)
+{
+    snprintf(dir, dirlen, "/tmp/sw-layout-XXXXXX");
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    setenv("XDG_STATE_HOME", dir, 1);
+    char path[256], err[SW_LESSON_ERRLEN];
+    snprintf(path, sizeof path, "%s/layout.lesson", dir);
+    FILE *out = fopen(path, "w");
+    ck_assert_ptr_nonnull(out);
+    fputs(layout_lesson, out);
+    ck_assert_int_eq(fclose(out), 0);
+    ck_assert_msg(sw_runner_start(r, a, path, 0, err, sizeof err) == SW_OK, "%s", err);
+}
+
+static void end_layout_lesson(sw_runner *r, sw_app *a, const char *dir)
+{
+    sw_app_free(a);
+    sw_runner_free(r);
+    char cmd[96];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+
+/* Formulas break outside brackets and before an operator, never leaving a
+ * lone bracket or one operand; bracketed prose stays on one line; a table
+ * row shows whole; the header keeps its page marker whole. */
+START_TEST(pane_breaks_where_it_reads)
+{
+    static const char *const never[] = { "]", "- r)", "k4)", "Δt·λ| <= 1", "- x[i])", "f = -k(x", "|1 +",
+                                         "2k3 +", "0.0000003" };
+    static const char *const whole[] = { "-k(x - r)", "|1 + Δt·λ|", "(k1 + 2k2", "(guess - x[i])" };
+    char dir[64];
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    start_layout_lesson(r, &a, dir, sizeof dir);
+    for (int cols = 60; cols <= 120; cols += 10) {
+        const sw_side *side = sw_runner_side(r, &a, cols);
+        char all[8192] = "";
+        for (int i = 0; i < side->nlines; i++) {
+            char t[SW_RUNNER_COLS];
+            const char *l = side->lines[i];
+            while (*l == ' ')
+                l++;
+            snprintf(t, sizeof t, "%s", l);
+            for (size_t k = 0; k < sizeof never / sizeof never[0]; k++)
+                ck_assert_msg(strcmp(t, never[k]) != 0 || (strcmp(t, "0.0000003") == 0 && cols < 70),
+                              "at %d columns a pane line is \"%s\"", cols, t);
+            ck_assert_msg(strcmp(t + (strlen(t) > 8 ? strlen(t) - 8 : 0), "f = -k(x") != 0,
+                          "at %d columns \"%s\" breaks inside -k(x - r)", cols, t);
+            strncat(all, side->lines[i], sizeof all - strlen(all) - 2);
+            strcat(all, "\n");
+        }
+        for (size_t k = 0; k < sizeof whole / sizeof whole[0]; k++)
+            ck_assert_msg(strstr(all, whole[k]) || (cols < 70 && k == 2), /* (k1 + ... k4) is wider than 60's pane */ "at %d columns \"%s\" is broken:\n%s", cols, whole[k], all);
+        ck_assert_msg(strstr(all, "(1/2)") || strstr(all, "(page 1/2)"), "at %d columns the page marker is "
+                      "broken:\n%s", cols, all);
+        if (cols >= 80)
+            ck_assert_msg(strstr(all, "rk4        0.05     126    0.0000003"), "at %d columns the table row is "
+                          "split:\n%s", cols, all);
+        for (int rows = 16; rows <= 40; rows += 8) {
+            sw_frame f;
+            char err[SW_ERRLEN];
+            ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+            check_screen(&f, &a, side, cols, rows, "the layout lesson");
+            sw_frame_free(&f);
+        }
+    }
+    end_layout_lesson(r, &a, dir);
+    free(r);
+}
+END_TEST
+
+/* w in a lesson, with the question open: the plot fits the picture (no
+ * "needs" message, nothing cut, the answers in sight), and its last row
+ * says what w does next, which is what it does. */
+START_TEST(workprec_cycle_in_a_lesson)
+{
+    char dir[64];
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    start_layout_lesson(r, &a, dir, sizeof dir);
+    for (int s = 0; s < 2; s++) {
+        int cols = sizes[s][0], rows = sizes[s][1];
+        sw_frame f;
+        char err[SW_ERRLEN];
+        ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+        static const char *const next[] = { "against", "w closes" };
+        for (int k = 0; k < 2; k++) {
+            ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
+            ck_assert_int_eq(a.workprec, k + 1);
+            char *text;
+            check_screen_text(&f, &a, sw_runner_side(r, &a, cols), cols, rows, "w in a lesson", &text);
+            ck_assert_msg(strstr(text, "the plot needs") == NULL && strstr(text, "1e") != NULL,
+                          "at %dx%d the plot does not fit:\n%s", cols, rows, text);
+            ck_assert_msg(strstr(text, "B) When"), "at %dx%d the plot hides the question:\n%s", cols, rows, text);
+            char want[32];
+            snprintf(want, sizeof want, k == 0 ? "w: " : "w closes");
+            ck_assert_msg(strstr(text, want) && strstr(text, next[k]), "at %dx%d the plot does not say what w "
+                          "does next (%s):\n%s", cols, rows, next[k], text);
+            free(text);
+        }
+        ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
+        ck_assert_int_eq(a.workprec, 0);
+        sw_frame_free(&f);
+    }
+    end_layout_lesson(r, &a, dir);
+    free(r);
+}
+END_TEST
+
+/* The phase view's legend names every run drawn (brief names, a second
+ * row), and the graph never squashes the scene below SCENE_MIN_ROWS. */
+START_TEST(legend_and_graph_room)
+{
+    char dir[64];
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    start_layout_lesson(r, &a, dir, sizeof dir);
+    sw_runner_enter(r, &a, 1);
+    ck_assert_int_eq(a.nsims, 3);
+    sw_app_advance(&a, 0.5, 100000);
+    for (int s = 0; s < 2; s++) {
+        int cols = sizes[s][0], rows = sizes[s][1];
+        sw_frame f;
+        char err[SW_ERRLEN];
+        ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+        char *text;
+        check_screen_text(&f, &a, sw_runner_side(r, &a, cols), cols, rows, "phase legend", &text);
+        static const char *const entries[] = { "o euler", "x symp", "+ impl" };
+        for (int k = 0; k < 3; k++)
+            ck_assert_msg(strstr(text, entries[k]), "at %dx%d the legend drops %s:\n%s", cols, rows, entries[k], text);
+        free(text);
+        /* the graph with three runs, lanes on and off, and a message of three rows */
+        sw_app_set_view(&a, SW_VIEW_SCENE);
+        a.graph = 1;
+        snprintf(a.message, sizeof a.message, "%s", "a long message that takes three rows of the status block at "
+                 "eighty columns, so the picture has fewer rows than usual to share with the graph below it, "
+                 "and more words still to fill the third row");
+        for (a.lanes = 0; a.lanes < 2; a.lanes++) {
+            check_screen_text(&f, &a, sw_runner_side(r, &a, cols), cols, rows, "graph room", &text);
+            const char *g = strstr(text, "energy drift");
+            int row = 0;
+            for (const char *c = text; g && c < g; c++)
+                row += *c == '\n';
+            ck_assert_msg(!g || row >= 10, "at %dx%d the graph leaves the scene %d rows:\n%s", cols, rows, row, text);
+            ck_assert_msg(g || strstr(text, "graph"), "at %dx%d the graph is gone without a word:\n%s", cols, rows,
+                          text);
+            free(text);
+        }
+        a.graph = 0;
+        a.lanes = 0;
+        a.message[0] = '\0';
+        sw_app_set_view(&a, SW_VIEW_PHASE);
+        sw_frame_free(&f);
+    }
+    end_layout_lesson(r, &a, dir);
+    free(r);
+}
+END_TEST
+
 /* The check can fail: a text wider than its box counts as cut. */
 START_TEST(a_cut_is_counted)
 {
@@ -264,6 +569,8 @@ Suite *make_screens_suite(void)
     const struct { const char *name; const TTest *test; } cases[] = {
         { "cut counted", a_cut_is_counted }, { "scenes", every_scene_every_view },
         { "blowups", blowups_and_adaptive }, { "workprec", workprec_overlay }, { "lessons", every_lesson_page },
+        { "pane breaks", pane_breaks_where_it_reads }, { "workprec in a lesson", workprec_cycle_in_a_lesson },
+        { "legend and graph", legend_and_graph_room },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         TCase *tc = tcase_create(cases[i].name);

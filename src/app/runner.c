@@ -260,9 +260,22 @@ static int operands(const char *s, int *only_closers)
             s++;
         if (s == w)
             break;
-        int closers = (int)strspn(w, ")]}|") == (int)(s - w);
+        int closers = (int)strspn(w, ")]}|") == (int)(s - w), operand = 0;
         *only_closers &= closers;
-        n += !closers && !is_operator(w, s);
+        /* an operand has a letter or a digit ("-[" and "(" have none) */
+        for (const char *c = w; c < s && !operand;) {
+            unsigned char b = (unsigned char)*c;
+            if (b < 0x80) {
+                operand = (b >= '0' && b <= '9') || (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z');
+                c++;
+            } else {
+                const unsigned char *u = (const unsigned char *)c;
+                sw_utf8_next(&u);
+                operand = !is_operator(c, (const char *)u); /* Δ, λ, ω: letters; ·, ×, ≤: operators */
+                c = (const char *)u;
+            }
+        }
+        n += operand;
     }
     return n;
 }
@@ -394,17 +407,27 @@ static void add_verbatim(sw_runner *r, const char *text, int width)
                 break;
             if (!*ns)
                 break;
-            int only_closers, tail = operands(ns, &only_closers);
+            int only_closers, tail = operands(ns, &only_closers), head_closers;
+            char head[SW_RUNNER_COLS];
+            snprintf(head, sizeof head, "%.*s", (int)(q - p), p);
             int score = -30 * (d > 0 ? d : 0) + cells / 8;
+            if (!strchr(head + (first ? indent : 0), ' '))
+                score -= 60; /* "f" or "=" alone on a line */
+            else if (operands(head, &head_closers) <= 1 && is_operator(w, q))
+                score -= 25; /* "f =" */
             if (starts_operator(ns))
                 score += 10;
             if (is_operator(w, q))
                 score -= 10;
+            if (strchr("([{", q[-1]))
+                score -= 20; /* a line that ends by opening a bracket */
             if ((int)sw_utf8_columns(ns, strlen(ns)) <= next_room) {
                 if (only_closers)
                     score -= 100;
+                else if (tail <= 1 && !strchr(ns, ' '))
+                    score -= 40; /* one token: "k4)" */
                 else if (tail <= 1)
-                    score -= 40;
+                    score -= 15; /* one operand: "- r)" */
             } else
                 score -= 20;
             if (!cut || score >= best) {

@@ -132,7 +132,19 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     /* Each series alone first, to learn which cells it takes; then every
      * cell shows its series' glyph, or SW_GLYPH_MERGED where two or more
      * lie on one another (no run hides behind another). */
-    unsigned char *own = a->nsims > 1 ? calloc((size_t)pw * (size_t)ph, 1) : NULL;
+    unsigned char *own = NULL;
+    size_t cells = (size_t)pw * (size_t)ph;
+    if (a->nsims > 1 && cells > f->graph_own_cap) {
+        unsigned char *grown = realloc(f->graph_own, cells);
+        if (grown) {
+            f->graph_own = grown;
+            f->graph_own_cap = cells;
+        }
+    }
+    if (a->nsims > 1 && cells <= f->graph_own_cap) {
+        own = f->graph_own;
+        memset(own, 0, cells);
+    }
     int merged = 0;
     for (int i = a->nsims - 1; i >= 0; i--) {
         const sw_series *s = &a->series[i];
@@ -164,7 +176,6 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
             sw_canvas_put(&f->plot, k % pw, k / pw, many ? SW_GLYPH_MERGED : sim_glyph[i],
                           many ? SW_STYLE_GHOST : sim_style[i]);
         }
-        free(own);
     }
     sw_screen_blit(scr, &f->plot, row + 1, col + lw + 1);
     if (merged) {
@@ -539,9 +550,12 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
                 sw_screen_text(scr, row + 1 + j, c0, inner, SW_STYLE_TEXT, wrapped[j]);
         return;
     }
-    char *g = malloc((size_t)(prows + 2) * (size_t)pcols + 1);
-    if (!g)
-        return;
+    /* one buffer for every frame (no allocation per frame while the plot is open) */
+    static char g[256 * 512];
+    if (pcols > 512)
+        pcols = 512;
+    if (prows + 2 > 256)
+        prows = 254;
     int have = wp_grid(r, xaxis, g, prows, pcols);
     int rr = row + 1;
     for (int k = 0; have && k < prows + 2; k++, rr++) {
@@ -554,7 +568,6 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     if (!have)
         sw_screen_wrapped(scr, row + 1 + prows / 2, c0, inner, 2, SW_STYLE_TEXT,
                           "(no points: every run blew up or none was made)");
-    free(g);
     rr = row + 1 + prows + 2;
     for (int k = 0; k < lrows; k++)
         sw_screen_text(scr, rr++, c0, inner, SW_STYLE_DIM, legend[k]);

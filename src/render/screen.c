@@ -158,6 +158,9 @@ void sw_frame_free(sw_frame *f)
         sw_canvas_free(&f->lanes[i]);
     free(f->keep);
     f->keep = NULL;
+    free(f->graph_own);
+    f->graph_own = NULL;
+    f->graph_own_cap = 0;
     f->keep_cap = 0;
     sw_phase_view_free(&f->phase);
     sw_region_free(&f->region);

@@ -77,6 +77,8 @@ typedef struct sw_frame {
     int unicode;              /* the terminal shows Braille and arrows (the TUI sets it) */
     unsigned char *keep;      /* which particles are alive (scratch) */
     int keep_cap;
+    unsigned char *graph_own; /* which runs take each cell of the graph (scratch) */
+    size_t graph_own_cap;
     sw_phase_view phase;
     sw_region region;
 } sw_frame;

@@ -139,6 +139,29 @@ START_TEST(meter_growth_matches_theory)
 }
 END_TEST
 
+/* The live watch judges only what the stability lab can measure: on the
+ * river (no energy, no closed form) particles drift away from the origin,
+ * |y|² grows, and that is the flow, not the method: no "growth" after a
+ * long run. On the vortex under Euler (|y|² grows 1 + (ωΔt)² a step) the
+ * same watch does say so. */
+START_TEST(watch_only_where_judged)
+{
+    sw_app a;
+    app_with(&a, "river", "rk4", 0.05, NULL);
+    a.speed = 64;
+    while (a.sims[0].t < 100)
+        sw_app_advance(&a, 1.0, 100000);
+    ck_assert_int_eq(a.watch.verdict, SW_WATCH_STEADY);
+    sw_app_free(&a);
+    app_with(&a, "vortex", "euler", 0.1, NULL);
+    a.speed = 64;
+    while (a.sims[0].t < 100 && a.watch.verdict == SW_WATCH_STEADY)
+        sw_app_advance(&a, 1.0, 100000);
+    ck_assert_int_ne(a.watch.verdict, SW_WATCH_STEADY);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* The clock: one second of wall time at speed 1 is one simulated second in
  * whole steps; a step cap gives slow motion instead of falling behind forever. */
 START_TEST(clock_and_slow_motion)
@@ -276,6 +299,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, switch_keeps_state);
     tcase_add_test(tc, halving_dt_measures_order);
     tcase_add_test(tc, meter_growth_matches_theory);
+    tcase_add_test(tc, watch_only_where_judged);
     tcase_add_test(tc, clock_and_slow_motion);
     tcase_add_test(tc, compare_race);
     tcase_add_test(tc, graph_bounded);

@@ -122,6 +122,28 @@ START_TEST(test_chain_scene)
 }
 END_TEST
 
+/* A crowded system (more points than a quarter of the cells) is drawn as
+ * a density for the main run, but a ghost or a compared run keeps its own
+ * glyph, or without colour it could not be told from the main run. */
+START_TEST(test_crowd_keeps_other_glyphs)
+{
+    sw_system sys;
+    ct_build(&sys, sw_scene_find("vortex"), "n=200", NULL);
+    sw_canvas c;
+    ct_canvas_new(&c, 20, 10, -2, 2, -2, 2);
+    sw_canvas_draw_system(&c, &sys, sys.y, 0.0, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    int ghost = ct_count_cp(&c, SW_GLYPH_GHOST), dots = ct_count_cp(&c, '.') + ct_count_cp(&c, ':');
+    ck_assert_int_gt(ghost, 10);
+    ck_assert_int_eq(dots, 0);
+    sw_canvas_clear(&c);
+    sw_canvas_draw_system(&c, &sys, sys.y, 0.0, 0, SW_STYLE_MAIN);
+    ck_assert_int_eq(ct_count_cp(&c, SW_GLYPH_GHOST), 0);
+    ck_assert_int_gt(ct_count_cp(&c, '.') + ct_count_cp(&c, ':'), 10);
+    sw_canvas_free(&c);
+    sw_system_free(&sys);
+}
+END_TEST
+
 /* fireworks at t = 0: every spark waits unborn, so nothing is drawn. */
 START_TEST(test_fireworks_unborn)
 {
@@ -176,6 +198,7 @@ Suite *make_canvas_scenes_suite(void)
     tcase_add_test(tc, test_orbit_scene);
     tcase_add_test(tc, test_chain_scene);
     tcase_add_test(tc, test_fireworks_unborn);
+    tcase_add_test(tc, test_crowd_keeps_other_glyphs);
     tcase_add_test(tc, test_view_follow);
     suite_add_tcase(s, tc);
     return s;

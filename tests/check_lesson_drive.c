@@ -1,3 +1,4 @@
+#define _GNU_SOURCE /* strcasestr */
 /* Every lesson, driven headless page by page with the keys a student would
  * press (tests/data/lesson_drives/NAME.drive): proves each goal reachable and each
  * page reachable through the same runner and app the terminal uses.
@@ -57,6 +58,50 @@ static void unmet_goals(sw_runner *r, sw_app *a, char *buf, size_t len)
         snprintf(buf + used, len - used, " [question not answered]");
 }
 
+/* On arriving at a page, no goal on what a run accumulates (time, steps,
+ * evaluations, drift, error, a blow-up) may already be met: the page would
+ * be done before the student did anything, counting time spent on the
+ * pages before (a page whose goals need time to pass restarts the sim). */
+static void fresh_on_arrival(sw_runner *r, sw_app *a, const char *lesson_file)
+{
+    static const sw_lesson_var accumulated[] = { SW_LV_T, SW_LV_STEPS, SW_LV_EVALS, SW_LV_ENERGY_DRIFT,
+                                                 SW_LV_ERROR, SW_LV_DRIFT, SW_LV_BLOWN, SW_LV_ACCEPTED,
+                                                 SW_LV_REJECTED };
+    const sw_lesson_page *pg = &r->lesson.pages[r->page];
+    sw_lesson_obs obs, fresh;
+    sw_runner_obs(a, &obs);
+    fresh = obs; /* the same page at t = 0: a goal met there ("not blown", "|drift| < 1 %") is kept, not reached */
+    fresh.t = fresh.energy_drift = fresh.error = fresh.drift = 0;
+    fresh.steps = fresh.evals = fresh.accepted = fresh.rejected = 0;
+    fresh.blown = 0;
+    for (int g = 0; g < pg->ngoals; g++)
+        for (size_t k = 0; k < sizeof accumulated / sizeof accumulated[0]; k++)
+            if (pg->goals[g].var == accumulated[k] && sw_lesson_goal_met(&pg->goals[g], &obs) &&
+                !sw_lesson_goal_met(&pg->goals[g], &fresh)) {
+                char t[160];
+                sw_lesson_goal_text(&pg->goals[g], t, sizeof t);
+                ck_abort_msg("%s page %d '%s': the goal [%s] is met on arrival (t = %g): restart the sim there "
+                             "(@reset)", lesson_file, r->page + 1, pg->title, t, obs.t);
+            }
+}
+
+/* A page whose prose tells the student to press space to run must start
+ * paused (space toggles: on a running sim it pauses). */
+static void space_runs(sw_runner *r, sw_app *a, const char *lesson_file)
+{
+    static const char *const asks[] = { "(space)", "press space", "then space", "with space", "space to run",
+                                        "space runs", "space to set it running", "space, and", "r, space" };
+    const sw_lesson_page *pg = &r->lesson.pages[r->page];
+    for (int b = 0; b < pg->nblocks + pg->ngoals; b++) {
+        const char *text = b < pg->nblocks ? (pg->blocks[b].verbatim ? "" : pg->blocks[b].text)
+                                           : pg->goals[b - pg->nblocks].hint;
+        for (size_t k = 0; k < sizeof asks / sizeof asks[0]; k++)
+            if (text && strcasestr(text, asks[k]) && !strcasestr(text, "paused")) /* "space if paused" */
+                ck_assert_msg(a->paused, "%s page %d '%s' says \"%s\" but the sim is already running on "
+                              "arrival (@pause on): \"%s\"", lesson_file, r->page + 1, pg->title, asks[k], text);
+    }
+}
+
 static char repo[512];
 
 static void drive(const char *lesson_file)
@@ -80,6 +125,8 @@ static void drive(const char *lesson_file)
         ck_assert_msg(sscanf(line, "page %d:%n", &n, &off) == 1, "%s:%d: expected 'page N: ACTIONS'", drive_path, lineno);
         ck_assert_msg(n == pages + 1, "%s:%d: page %d out of order", drive_path, lineno, n);
         ck_assert_msg(r->page == pages, "%s: on page %d, expected %d", lesson_file, r->page + 1, pages + 1);
+        fresh_on_arrival(r, &a, lesson_file);
+        space_runs(r, &a, lesson_file);
         for (char *tok = strtok(line + off, " \t\n"); tok; tok = strtok(NULL, " \t\n")) {
             if (strncmp(tok, "run:", 4) == 0) {
                 run_for(r, &a, atof(tok + 4));

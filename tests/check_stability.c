@@ -209,7 +209,7 @@ static const sw_scene *scene_with(const char *scene, double *p, const char *cons
  * limit), the meter says "grows" exactly when a run watched for growth (the
  * stability probe: 100 periods of the stiffest mode) does grow. The meter
  * says it two ways: ρ > 1 on the linearisation, or, after the live run has
- * gone as long as the probe, "the run's energy grows: nonlinear" (implicit
+ * gone as long as the probe, "but the run's energy grows: nonlinear" (implicit
  * midpoint on the stiff pendulum at ω·Δt = 50: every linearisation is
  * neutral, the nonlinear energy is not). ρ > 1 alone must never cry wolf. */
 START_TEST(test_meter_iff_run)

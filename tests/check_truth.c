@@ -347,6 +347,32 @@ START_TEST(no_order_from_growth)
 }
 END_TEST
 
+/* A free mode (no force and no damping on a direction: a spring at its
+ * rest length swung sideways) is mapped by exactly 1 by every consistent
+ * method and says nothing about stability: it is left out and counted, so
+ * the meter on a critically damped stiff spring at rest (k = 1e4, c = 200 =
+ * 2√(km): λ = -100 twice) shows Euler's |1 - 100Δt| = 0.5 at Δt = 0.005,
+ * not "neutral". Tolerance 1e-9: the eigenvalues of a double root. */
+START_TEST(free_modes_left_out)
+{
+    sw_sim s;
+    sim_with(&s, "spring", "euler", 0.005, (const char *const[]){ "k=10000", "c=200", NULL });
+    while (s.t < 1.0)
+        ck_assert_int_eq(sw_sim_step(&s), 0);
+    sw_spectrum sp;
+    ck_assert_int_eq(sw_truth_spectrum(&s.sys, s.t, s.sys.y, &sp), 0);
+    ck_assert_int_ge(sp.free, 1);
+    for (int k = 0; k < sp.n; k++)
+        ck_assert(!(sp.mode[k].re == 0 && sp.mode[k].im == 0 && sp.mode[k].pre == 0 && sp.mode[k].pim == 0));
+    ck_assert_double_eq_tol(sw_truth_growth_all(s.method, &sp, 0.005, NULL), 0.5, 1e-6);
+    sw_sim_free(&s);
+    /* a stretched spring has no free mode: its sideways swing is stiff, and frozen by symmetry */
+    double p[SW_MAX_PARAMS];
+    start_spectrum("spring", p, (const char *const[]){ "c=0", NULL }, &sp);
+    ck_assert_int_eq(sp.free, 0);
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -361,6 +387,7 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, meter_matches_runs);
     tcase_add_test(tc, drift_against_the_motion);
     tcase_add_test(tc, no_order_from_growth);
+    tcase_add_test(tc, free_modes_left_out);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -4,6 +4,7 @@
  * sank and came back, slow steady growth, a thousandfold jump and NaN. */
 #include <check.h>
 #include <math.h>
+#include <string.h>
 
 #include "sim/watch.h"
 #include "stepwise/stepwise.h"
@@ -77,6 +78,30 @@ START_TEST(test_start)
 }
 END_TEST
 
+/* What the watch can judge, as the stability lab can measure: a flow with
+ * a closed form (on |y|²), an energy with a floor or a well; not a river
+ * (no energy, no closed form: its particles drift away from the origin),
+ * not a projectile (its energy falls forever), not contact or births. */
+START_TEST(test_judges)
+{
+    static const struct { const char *scene; int judged; } cases[] = {
+        { "vortex", 1 }, { "river", 0 }, { "gyre", 0 }, { "projectile", 0 }, { "bounce", 0 },
+        { "fireworks", 0 }, { "spring", 1 }, { "stiff-spring", 1 }, { "chain", 1 }, { "orbit", 1 },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char err[SW_ERRLEN], why[SW_ERRLEN] = "";
+        sw_sim s;
+        const sw_scene *sc = sw_scene_find(cases[i].scene);
+        ck_assert_int_eq(sw_sim_init(&s, sc, NULL, sw_integrator_find("rk4"), sc->dt, err, sizeof err), SW_OK);
+        int j = sw_watch_judges(&s, why, sizeof why);
+        ck_assert_msg(j == cases[i].judged, "%s: judged %d (%s)", cases[i].scene, j, why);
+        if (!j)
+            ck_assert_ptr_nonnull(strstr(why, cases[i].scene));
+        sw_sim_free(&s);
+    }
+}
+END_TEST
+
 Suite *make_watch_suite(void);
 Suite *make_watch_suite(void)
 {
@@ -84,6 +109,7 @@ Suite *make_watch_suite(void)
     TCase *tc = tcase_create("verdicts");
     tcase_add_test(tc, test_verdicts);
     tcase_add_test(tc, test_start);
+    tcase_add_test(tc, test_judges);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -236,7 +236,8 @@ void sw_app_watch_restart(sw_app *a)
     const sw_sim *s = &a->sims[0];
     sw_watch_start(&a->watch, a->scene->duration, s);
     a->watch.t0 = s->t;
-    a->watch_m0 = a->have_truth ? sw_watch_measure(s, a->truth.sys.y) : NAN;
+    char why[SW_ERRLEN];
+    a->watch_m0 = a->have_truth && sw_watch_judges(s, why, sizeof why) ? sw_watch_measure(s, a->truth.sys.y) : NAN;
 }
 
 void sw_app_watch_feed(sw_app *a)

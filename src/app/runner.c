@@ -74,6 +74,8 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->follow = pg->follow;
     if (pg->lanes >= 0)
         a->lanes = pg->lanes;
+    if (pg->graph >= 0)
+        a->graph = pg->graph;
     if (pg->zoom > 0)
         a->zoom = pg->zoom;
     a->locked = pg->locked;

@@ -25,29 +25,14 @@ void sw_stability_config_default(sw_stability_config *c)
 
 int sw_stability_measurable(const sw_scene *sc, const double *p, char *why, size_t whylen)
 {
-    if (sc->post_step) {
-        snprintf(why, whylen, "%s changes its state at step boundaries (contact, births), so "
-                 "nearby runs split at every step size and no limit can be measured", sc->name);
-        return 0;
-    }
-    if (sc->kind == SW_SYS_FLOW && !sc->energy) {
-        if (sc->exact)
-            return 1;
-        snprintf(why, whylen, "%s defines no energy and no closed form, so growth cannot be told "
-                 "from the flow itself", sc->name);
-        return 0;
-    }
     sw_sim s;
     char err[SW_ERRLEN];
     if (sw_sim_init(&s, sc, p, sw_integrator_at(0), sc->dt, err, sizeof err) != SW_OK) {
         snprintf(why, whylen, "%s", err);
         return 0;
     }
-    int ok = sw_sim_energy_scale_is_motion(&s) || s.energy0 < 0;
+    int ok = sw_watch_judges(&s, why, whylen);
     sw_sim_free(&s);
-    if (!ok)
-        snprintf(why, whylen, "%s's energy has no floor and no well to be bound in (it falls forever), "
-                 "so growth cannot be told from the energy", sc->name);
     return ok;
 }
 

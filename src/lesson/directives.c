@@ -445,7 +445,8 @@ static int d_speed(sw_lp_parser *ps, size_t pos)
 }
 
 /* @view WORD...: scene, phase or region (what the picture shows); fixed or
- * follow (the camera); overlay or lanes (compare's layout); zoom=X. */
+ * follow (the camera); overlay or lanes (compare's layout); graph or
+ * nograph (the energy/error graph); zoom=X. */
 static int d_view(sw_lp_parser *ps, size_t pos)
 {
     sw_lesson_page *pg = sw_lp_page(ps);
@@ -465,13 +466,15 @@ static int d_view(sw_lp_parser *ps, size_t pos)
             pg->follow = word[1] == 'o';
         else if (strcmp(word, "overlay") == 0 || strcmp(word, "lanes") == 0)
             pg->lanes = word[0] == 'l';
+        else if (strcmp(word, "graph") == 0 || strcmp(word, "nograph") == 0)
+            pg->graph = word[0] == 'g';
         else if (strncmp(word, "zoom=", 5) == 0) {
             if (sw_parse_double(word + 5, &z) != SW_OK || !(z >= 1.0 / 64 && z <= 4096))
                 return FAIL(ps, start, "@view %s: expected zoom=X with X in [1/64, 4096]", word);
             pg->zoom = z;
         } else
             return FAIL(ps, start, "@view: '%s' is not a view; expected scene, phase, region, fixed, follow, "
-                        "overlay, lanes or zoom=X", word);
+                        "overlay, lanes, graph, nograph or zoom=X", word);
         n++;
     }
     if (!n)

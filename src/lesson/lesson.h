@@ -169,6 +169,7 @@ typedef struct sw_lesson_page {
     int view;                 /* SW_LESSON_VIEW_*; -1: leave as is */
     int follow;               /* -1 / 0 / 1: camera fixed on the scene or following */
     int lanes;                /* -1 / 0 / 1: compare overlaid or side by side */
+    int graph;                /* -1 / 0 / 1: the energy/error graph off or on */
     double zoom;              /* the view's size times this; 0: leave as is */
     sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 

@@ -202,7 +202,7 @@ int sw_lp_begin_page(sw_lp_parser *ps, size_t title_at)
         return sw_lp_oom(ps);
     pg->line = ps->line;
     pg->compare = pg->ghost = pg->paused = -1;
-    pg->view = pg->follow = pg->lanes = -1;
+    pg->view = pg->follow = pg->lanes = pg->graph = -1;
     pg->locked = ps->locked;
     sw_lp_where none = { 0, 0 };
     ps->at_scene = ps->at_set = ps->at_integrator = ps->at_dt = ps->at_compare = none;

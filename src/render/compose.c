@@ -342,7 +342,7 @@ static int meter_fields(sw_app *a, sw_field *f, int *style)
           m.slow ? "grows slowly" : NULL);
     int run_grows = a->watch.verdict != SW_WATCH_STEADY;
     if (run_grows && !m.grows)
-        field(f, &n, 6, "run's energy grows: nonlinear", "nonlinear growth");
+        field(f, &n, 6, "but the run's energy grows: nonlinear", "but the run grows");
     if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
         *style = SW_STYLE_WARN;
     return n;

@@ -77,8 +77,10 @@ void sw_canvas_draw_decor(sw_canvas *c, const sw_system *sys, double t, int unic
     if (strcmp(name, "river") == 0)
         draw_disc(c, 0, 0, param(sys, "R", 0.5), '#', SW_STYLE_WALL);
     if (strcmp(name, "projectile") == 0) {
-        /* the ground: the launch level, where the flight ends */
+        /* the launch level, faint and dashed: where the flight is judged
+         * to end. Not a floor: the scene has no contact, and the ball flies
+         * on below it (the bounce scene has a floor) */
         sw_view vis = sw_canvas_visible(c);
-        sw_canvas_line(c, vis.xmin - c->scale, 0, vis.xmax + c->scale, 0, '=', SW_STYLE_WALL);
+        sw_canvas_line(c, vis.xmin - c->scale, 0, vis.xmax + c->scale, 0, '-', SW_STYLE_TRAIL);
     }
 }

@@ -84,7 +84,9 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
         for (int i = 0; i < n; i++)
             if (is_alive(sys, y, t, i))
                 sw_canvas_point(c, y[2 * i], y[2 * i + 1], glyph, style);
-    } else if (crowd) {
+    } else if (crowd && glyph == SW_GLYPH_MAIN) {
+        /* the main run as a density; a ghost or a compared run keeps its
+         * own glyph, or it could not be told from the main one without colour */
         alive_ctx ctx = { sys, y, t };
         sw_canvas_density_where(c, y, n, alive_at, &ctx, style);
     } else {

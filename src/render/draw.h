@@ -13,7 +13,8 @@
  * alive at t (sys->scene->alive, NULL: all) with glyph (0: 'o') and style.
  * Springs use slope glyphs and style SPRING when style is SW_STYLE_MAIN,
  * else '.' and the caller's style. Many points (n > cols·rows/4) are drawn
- * as a density pass in ASCII mode and as dots in Braille mode; flow scenes
+ * as a density pass in ASCII mode (the main glyph only: a ghost or a
+ * compared run keeps its glyph) and as dots in Braille mode; flow scenes
  * in Braille mode are always dots; otherwise each particle is a marker. */
 void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, double t,
                            uint32_t glyph, int style);

@@ -113,6 +113,8 @@ typedef struct sw_spectrum {
     int n;                /* modes kept, stiffest first */
     sw_mode mode[SW_TRUTH_MODES];
     int growing;          /* physically growing modes (Re λ > 0) left out */
+    int free;             /* free modes (λ = μ = 0: a spring at its rest length swung sideways, a
+                             uniform flow) left out: every consistent method maps them by 1 */
     int complete;         /* 1: every eigenvalue; 0: the stiffest mode only */
     double largest;       /* largest |λ| over the modes kept */
 } sw_spectrum;

@@ -41,6 +41,10 @@ static void add_mode(sw_spectrum *sp, double re, double im, double pre, double p
         re = im = 0;
     if (hypot(pre, pim) < noise)
         pre = pim = 0;
+    if (re == 0 && im == 0 && pre == 0 && pim == 0) {
+        sp->free++; /* no force and no damping on it: every method maps it by exactly 1 */
+        return;
+    }
     for (int k = 0; k < sp->n; k++) {
         const sw_mode *m = &sp->mode[k];
         double scale = tol + 1e-9 * (fabs(re) + fabs(im) + fabs(pre) + fabs(pim));

@@ -8,6 +8,7 @@
 #include "sim/watch.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 
@@ -23,6 +24,28 @@ double sw_watch_measure(const sw_sim *s, const double *y0)
         den += y0[i] * y0[i];
     }
     return den > 0 ? num / den : NAN;
+}
+
+int sw_watch_judges(const sw_sim *s, char *why, size_t whylen)
+{
+    const sw_scene *sc = s->sys.scene;
+    if (sc->post_step) {
+        snprintf(why, whylen, "%s changes its state at step boundaries (contact, births), so "
+                 "nearby runs split at every step size and no limit can be measured", sc->name);
+        return 0;
+    }
+    if (sc->kind == SW_SYS_FLOW && !sc->energy) {
+        if (sc->exact)
+            return 1;
+        snprintf(why, whylen, "%s defines no energy and no closed form, so growth cannot be told "
+                 "from the flow itself", sc->name);
+        return 0;
+    }
+    if (sw_sim_energy_scale_is_motion(s) || s->energy0 < 0)
+        return 1;
+    snprintf(why, whylen, "%s's energy has no floor and no well to be bound in (it falls forever), "
+             "so growth cannot be told from the energy", sc->name);
+    return 0;
 }
 
 static int bound_state(const sw_sim *s)

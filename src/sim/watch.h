@@ -5,6 +5,8 @@
 #ifndef SW_SIM_WATCH_H
 #define SW_SIM_WATCH_H
 
+#include <stddef.h>
+
 #include "stepwise/sim.h"
 
 #define SW_WATCH_WINDOWS 20
@@ -35,6 +37,13 @@ typedef struct sw_watch {
     double max_seen;
     sw_watch_verdict verdict;      /* latched once not steady */
 } sw_watch;
+
+/* 1 when growth on sim s can be judged from M: no events at step
+ * boundaries (contact and births split nearby runs), and an energy with a
+ * floor or a well (an orbit), or a flow with a closed form (judged on |y|²;
+ * a river's particles drift away from the origin, which is not growth);
+ * else 0 with why filled. */
+int sw_watch_judges(const sw_sim *s, char *why, size_t whylen);
 
 /* M for a sim now: (E - E_floor) / (E(0) - E_floor) where the system has a
  * resting state, else 1 + (E - E(0)) / |E(0)|; for a flow without energy

@@ -78,6 +78,17 @@ static double l3_omega_dt(void) { return l3_omega() * 0.02; }
 
 /* Energy factor per step: the square of the amplitude's growth ρ. */
 static double l3_energy_factor(void) { return pow(cl_growth0("spring", "c=0", "euler", 0.02), 2); }
+/* The meter's growth per step on the page as the app shows it. */
+static double l3_meter_factor(void)
+{
+    sw_runner r;
+    sw_app a;
+    cl_lesson_page(&r, &a, L3, "Euler on a spring");
+    sw_app_meter mt;
+    ck_assert_int_eq(sw_app_stability(&a, &mt), 1);
+    cl_page_free(&r, &a);
+    return mt.growth;
+}
 static double l3_steps_per_second(void) { return (double)cl_steps_for("spring", "c=0", "euler", 0.02, 1.0); }
 static double l3_time_to_50(void) { return cl_time_drift_passes("spring", "c=0", "euler", 0.02, 50, 10); }
 static double l3_k(void) { return cl_param("spring", "k"); }
@@ -258,6 +269,7 @@ const claim sw_claims_a[] = {
     { L3, "so ω = {3.16} rad/s", l3_omega, ROUNDED, 0, R_ROUND, NULL },
     { L3, "ωΔt = {0.063}: a factor", l3_omega_dt, ROUNDED, 0, R_ROUND, NULL },
     { L3, "a factor {1.004} per step", l3_energy_factor, ROUNDED, 0, "ρ² from the one-step map, to the text's digits", NULL },
+    { L3, "shows x{1.002} per step", l3_meter_factor, ROUNDED, 0, "what the meter shows on this page, to the text's digits", NULL },
     { L3, "multiplies the energy of this oscillation by 1 + (ωΔt)² every step", l3_energy_factor, REL, 1e-12, "ρ² of Euler's one-step map is 1 + (ωΔt)² to rounding", l3_formula },
     { L3, "per step, {50} steps per second", l3_steps_per_second, EXACT, 0, R_COUNT, NULL },
     { L3, "let it run about {two} seconds; the energy drift climbs past 50 %", l3_time_to_50, ABS, 0.25, "\"about two seconds\": within a quarter of a second", NULL },

@@ -495,8 +495,8 @@ const claim sw_claims_b[] = {
     { L9, "for an error of {9e-8}, and rk45", l9_tight_dop853_error, ROUNDED, 0, "as above, the error against Kepler", NULL },
     { L9, "and rk45 {4591} for 2e-6", l9_tight_rk45_evals, EXACT, 0, "as above", NULL },
     { L9, "and rk45 4591 for {2e-6}", l9_tight_rk45_error, ROUNDED, 0, "as above", NULL },
-    { L9, "(press i once from rk45: it is the {11}th method)", l9_dop853_place, EXACT, 0, "dop853's place in the list", NULL },
-    { L9, "(press i {once} from rk45", l9_dop853_after_rk45, EXACT, 0, "places from rk45 to dop853", NULL },
+    { L9, "(press i once: it is the {11}th method)", l9_dop853_place, EXACT, 0, "dop853's place in the list", NULL },
+    { L9, "under rk45. Switch to dop853 (press i {once}", l9_dop853_after_rk45, EXACT, 0, "places from rk45 to dop853", NULL },
     /* lesson 10 */
     { L10, "A correct midpoint gives a ratio near {4}, RK4 near 16", l10_ratio_mid, ABS, 0.5, "the lessons' tolerance for 4", NULL },
     { L10, "A correct midpoint gives a ratio near 4, RK4 near {16}", l10_ratio_rk4, ABS, 2, "the lessons' tolerance for 16", NULL },

@@ -388,8 +388,8 @@ static void add_verbatim(sw_runner *r, const char *text, int width)
     while (*p) {
         int lead = first ? 0 : indent + 4, room = width - lead;
         if ((int)sw_utf8_columns(p, strlen(p)) <= room) {
-            snprintf(buf, sizeof buf, "%*s%s", lead, "", p);
-            add_line(r, SW_SIDE_VERBATIM, buf);
+            if (snprintf(buf, sizeof buf, "%*s%s", lead, "", p) >= 0) /* (a line wider than buf is cut) */
+                add_line(r, SW_SIDE_VERBATIM, buf);
             break;
         }
         const char *cut = NULL, *next = NULL, *q = p;

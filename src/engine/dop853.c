@@ -129,7 +129,7 @@ SW_CLONES static void dop853_range(sw_ode *ode, double t, double *restrict y, do
     sw_eval_slice(ode, t + h, len, yt, k3); /* k12 */
     /* The new state in place (the old one saved for a retry) and its runaway
      * test; b·k kept in yt for the error estimates. */
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     for (i = 0; i < len; i++) {
         double y0 = y[i];
         double bk = B1 * k1[i] + B6 * k6[i] + B7 * k7[i] + B8 * k8[i] + B9 * k9[i] + B10 * k10[i] +
@@ -138,7 +138,7 @@ SW_CLONES static void dop853_range(sw_ode *ode, double t, double *restrict y, do
         saved[i] = y0;
         yt[i] = bk;
         y[i] = y1;
-        over |= sw_beyond1(y1, elim);
+        over |= sw_beyond_bits(y1, add);
     }
     /* Both error sums, each term scaled by sk = atol + rtol·max(|y0|, |y1|),
      * added by i mod 4 (so four chains of additions run side by side;
@@ -160,7 +160,7 @@ SW_CLONES static void dop853_range(sw_ode *ode, double t, double *restrict y, do
     }
     sums->err = (part[0][0] + part[0][1]) + (part[0][2] + part[0][3]);
     sums->err3 = (part[1][0] + part[1][1]) + (part[1][2] + part[1][3]);
-    sums->beyond |= over;
+    sums->beyond |= sw_beyond_any(over);
     sw_eval_slice(ode, t + h, len, y, k4); /* FSAL: the next step's k1 */
 }
 

@@ -37,13 +37,13 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
 SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0);
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     sw_eval_slice(ode, t, len, y, k);
     for (int i = 0; i < len; i++) {
         y[i] += h * k[i];
-        over |= sw_beyond1(y[i], elim);
+        over |= sw_beyond_bits(y[i], add);
     }
-    return over;
+    return sw_beyond_any(over);
 }
 
 int sw_step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -67,16 +67,16 @@ int sw_step_symplectic_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, d
 SW_CLONES static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k = SW_WORK(s, 0), *restrict ym = SW_WORK(s, 1);
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     sw_eval_slice(ode, t, len, y, k);
     for (int i = 0; i < len; i++)
         ym[i] = y[i] + 0.5 * h * k[i];
     sw_eval_slice(ode, t + 0.5 * h, len, ym, k);
     for (int i = 0; i < len; i++) {
         y[i] += h * k[i];
-        over |= sw_beyond1(y[i], elim);
+        over |= sw_beyond_bits(y[i], add);
     }
-    return over;
+    return sw_beyond_any(over);
 }
 
 int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -88,16 +88,16 @@ int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 SW_CLONES static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict yp = SW_WORK(s, 1), *restrict k2 = SW_WORK(s, 2);
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     sw_eval_slice(ode, t, len, y, k1);
     for (int i = 0; i < len; i++)
         yp[i] = y[i] + h * k1[i];
     sw_eval_slice(ode, t + h, len, yp, k2);
     for (int i = 0; i < len; i++) {
         y[i] += 0.5 * h * (k1[i] + k2[i]);
-        over |= sw_beyond1(y[i], elim);
+        over |= sw_beyond_bits(y[i], add);
     }
-    return over;
+    return sw_beyond_any(over);
 }
 
 int sw_step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -110,7 +110,7 @@ SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double
 {
     double *restrict k1 = SW_WORK(s, 0), *restrict k2 = SW_WORK(s, 1), *restrict k3 = SW_WORK(s, 2), *restrict k4 = SW_WORK(s, 3),
            *restrict yt = SW_WORK(s, 4);
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     sw_eval_slice(ode, t, len, y, k1);
     for (int i = 0; i < len; i++)
         yt[i] = y[i] + 0.5 * h * k1[i];
@@ -123,9 +123,9 @@ SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double
     sw_eval_slice(ode, t + h, len, yt, k4);
     for (int i = 0; i < len; i++) {
         y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        over |= sw_beyond1(y[i], elim);
+        over |= sw_beyond_bits(y[i], add);
     }
-    return over;
+    return sw_beyond_any(over);
 }
 
 int sw_step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)

@@ -50,12 +50,12 @@ SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, doub
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
     sw_eval_slice(ode, t + h, len, yt, k6);
-    unsigned over = 0;
+    unsigned long long over = 0, add = sw_beyond_add(elim);
     for (i = 0; i < len; i++) {
         double y0 = y[i], y1 = y0 + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i]);
         saved[i] = y0;
         y[i] = y1;
-        over |= sw_beyond1(y1, elim);
+        over |= sw_beyond_bits(y1, add);
     }
     sw_eval_slice(ode, t + h, len, y, k7);
     double sum = sums->err; /* one chain in increasing i: the sum of a whole-state pass */
@@ -66,7 +66,7 @@ SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, doub
         sum += q * q;
     }
     sums->err = sum;
-    sums->beyond |= over;
+    sums->beyond |= sw_beyond_any(over);
 }
 
 /* The FSAL pair and the saved state are state-long (they outlive a slice);

@@ -91,12 +91,26 @@ static inline void sw_eval_slice(sw_ode *ode, double t, int len, const double *y
         ode->deriv(ode->ctx, t, y, dydt);
 }
 
-/* y's exponent field is at or beyond elim (inf and NaN always are). */
-static inline unsigned sw_beyond1(double v, unsigned elim)
+/* The runaway test as one addition, so that a loop ORing it vectorises in
+ * 64-bit lanes with no narrowing: v's exponent field plus 0x800 - elim
+ * carries into the sign bit exactly when the exponent is at or beyond elim
+ * (inf and NaN, 0x7FF, always are; elim = 0x800 never). OR the results over
+ * a loop; sw_beyond_any says whether any was. add = sw_beyond_add(elim). */
+static inline unsigned long long sw_beyond_add(unsigned elim)
+{
+    return (unsigned long long)(0x800u - elim) << 52;
+}
+
+static inline unsigned long long sw_beyond_bits(double v, unsigned long long add)
 {
     unsigned long long bits;
     memcpy(&bits, &v, sizeof bits);
-    return (unsigned)((bits >> 52) & 0x7FF) >= elim;
+    return (bits & 0x7FF0000000000000ULL) + add;
+}
+
+static inline unsigned sw_beyond_any(unsigned long long ored)
+{
+    return (unsigned)(ored >> 63);
 }
 
 /* Largest |v_i| over n components; NaN when any is NaN (so a failed

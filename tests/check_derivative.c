@@ -229,6 +229,49 @@ START_TEST(later_force_and_zero_length)
 }
 END_TEST
 
+/* A chain whose springs join neighbours in order, which the compiled form
+ * reads contiguously (a regular run of beads, two at a time, and the odd
+ * one after), with damping, gravity, drag and masses that differ: bit for
+ * bit the plain loop's numbers, also where two beads coincide (no force),
+ * where they are 1e-160 apart (the squares vanish: hypot), and where a
+ * position is NaN (no force from its springs, as in the plain loop). */
+START_TEST(regular_chain_matches_plain)
+{
+    enum { N = 37 };
+    sw_particles p;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(&p, N, 1.0, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(&p, N + 1);
+    ck_assert_ptr_nonnull(s);
+    for (int j = 0; j <= N; j++) {
+        s[j] = (sw_spring){ .a = j, .b = j - 1, .k = 30.0 + j, .c = 0.25 * (j % 3), .rest = 0.1 };
+        if (j == 0)
+            s[j].b = -1;
+        if (j == N)
+            s[j].a = N - 1, s[j].b = -1, s[j].ax = 4.0, s[j].ay = 0.5;
+    }
+    ck_assert_int_eq(sw_particles_add_gravity(&p, 0.5, -9.81), SW_OK);
+    ck_assert_int_eq(sw_particles_add_drag(&p, 0.3), SW_OK);
+    unsigned long long seed = 7;
+    for (int i = 0; i < N; i++) {
+        p.mass[i] = 1.0 + 0.5 * scramble(&seed);
+        p.inv_mass[i] = 1.0 / p.mass[i];
+    }
+    for (int i = 0; i < 4 * N; i++)
+        y[i] = (i < 2 * N ? 0.1 * (i / 2) : 0.0) + 0.05 * scramble(&seed);
+    y[2 * 6] = y[2 * 5], y[2 * 6 + 1] = y[2 * 5 + 1];                  /* beads 5 and 6 coincide */
+    y[2 * 11] = y[2 * 10] + 1e-160, y[2 * 11 + 1] = y[2 * 10 + 1];     /* 10 and 11: 1e-160 apart */
+    y[2 * 20] = NAN;                                                   /* bead 20 lost */
+    p.ode.deriv(p.ode.ctx, 0.0, y, got);
+    plain_deriv(&p, y, want, scale);
+    for (int i = 0; i < 4 * N; i++)
+        ck_assert_msg(memcmp(&got[i], &want[i], sizeof got[i]) == 0 || (isnan(got[i]) && isnan(want[i])),
+                      "component %d: compiled %.17g, plain %.17g", i, got[i], want[i]);
+    ck_assert(got[2 * N + 2 * 5] != 0 && got[2 * N + 2 * 10] != 0); /* gravity and drag, at least */
+    sw_particles_free(&p);
+}
+END_TEST
+
 Suite *make_derivative_suite(void);
 Suite *make_derivative_suite(void)
 {
@@ -238,6 +281,7 @@ Suite *make_derivative_suite(void)
     tcase_add_test(tc, derivative_any_order);
     tcase_add_test(tc, finish_names_bad_spring);
     tcase_add_test(tc, later_force_and_zero_length);
+    tcase_add_test(tc, regular_chain_matches_plain);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -33,6 +33,10 @@ static inline v2d load2(const double *p)
 
 static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 
+/* Two particles' (x, y) as one value, for loops that read neighbours in order. */
+typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
+/* (no functions that take or return one: without AVX that changes the ABI) */
+
 /* Springs are evaluated BLOCK at a time: gather the differences, compute the
  * forces in a loop without indices (which the compiler vectorises: square
  * root and divisions two or more at a time), scatter them. */
@@ -57,6 +61,16 @@ struct sw_particles_model {
     int *first, *spring;
     double *sign;
     int degree;               /* every particle has this many springs (entries 2i, 2i + 1 when 2); else 0 */
+    /* Regular layouts, found by swp_model_compile, that let the loops read
+     * neighbours contiguously instead of through the index lists (chains,
+     * ropes, rows of cloth): the paired springs' a and b advance by one
+     * particle a spring (a = a0 + 2j, b = b0 + 2j; stride 0: not so), and
+     * the particles [run_lo, run_hi), all of degree 2, find their springs at
+     * fixed distances with fixed signs (spring[2i + e] = 2i + run_c[e],
+     * sign run_s[e]). Either gives the same numbers as the lists. */
+    int stride, a0, b0;
+    int run_lo, run_hi, run_c[2];
+    double run_s[2];
     /* one gravity and one drag, fused into the last pass */
     int gravity, drag;
     double gx, gy, kdrag;
@@ -130,6 +144,34 @@ static void put_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
     m->damped |= sp->c != 0;
 }
 
+/* The regular layouts (see the struct): the paired springs' stride, and
+ * the longest run of degree-2 particles whose springs lie at fixed
+ * distances with fixed signs. */
+static void find_regular(int n, struct sw_particles_model *m)
+{
+    m->stride = m->npair > 0;
+    for (int j = 1; j < m->npair && m->stride; j++)
+        m->stride = m->a[j] == m->a[0] + 2 * j && m->b[j] == m->b[0] + 2 * j;
+    m->a0 = m->npair > 0 ? m->a[0] : 0;
+    m->b0 = m->npair > 0 ? m->b[0] : 0;
+    m->run_lo = m->run_hi = 0;
+    for (int i = 0; m->degree == 2 && i < n;) {
+        int c0 = m->spring[2 * i] - 2 * i, c1 = m->spring[2 * i + 1] - 2 * i, e = i + 1;
+        while (e < n && m->spring[2 * e] - 2 * e == c0 && m->spring[2 * e + 1] - 2 * e == c1 &&
+               m->sign[2 * e] == m->sign[2 * i] && m->sign[2 * e + 1] == m->sign[2 * i + 1])
+            e++;
+        if (e - i > m->run_hi - m->run_lo) {
+            m->run_lo = i;
+            m->run_hi = e;
+            m->run_c[0] = c0;
+            m->run_c[1] = c1;
+            m->run_s[0] = m->sign[2 * i];
+            m->run_s[1] = m->sign[2 * i + 1];
+        }
+        i = e;
+    }
+}
+
 /* The order of summation: springs (paired, then anchored, each in the order
  * added), then the extra per-particle passes, then gravity, then drag. The
  * plain loop sums in the order forces were added; the two agree bit for bit
@@ -194,8 +236,23 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
             m->extra[m->nextra++] = f;
         }
     }
+    find_regular(p->n, m);
     m->compiled = 1;
     return rc;
+}
+
+/* The sign bit set when l2 (a sum of squares: +0 or more, or NaN) is below
+ * 1e-290 or NaN, i.e. when !(l2 >= 1e-290), from its bits alone: below, its
+ * bits minus those of 1e-290 wrap around; a NaN with the sign clear
+ * carries into the sign bit when 2^52 - 1 is added; one with it set has it
+ * set. Integer operations, so the loop that ORs these vectorises. */
+static inline unsigned long long small_or_nan(double l2)
+{
+    const double tiny = 1e-290;
+    unsigned long long b, t;
+    memcpy(&b, &l2, sizeof b);
+    memcpy(&t, &tiny, sizeof t);
+    return b | (b - t) | (b + 0x000FFFFFFFFFFFFFULL);
 }
 
 /* Spring forces of a block from its differences d (and dv), as (x, y) pairs:
@@ -206,11 +263,14 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
  * instead (l + (l == 0), a select without a branch, so the loop
  * vectorises) and the force is ±0, which leaves a sum as it is: the sums
  * start at +0, and a sum that starts at +0 is never -0. The hypot cases are
- * found after the loop (their squares were kept in len2) and redone. */
+ * found after the loop (their squares were kept in len2) and redone; the
+ * loop flags whether there are any with integer operations on l2's bits,
+ * which vectorise (see small_or_nan), so the usual block is not scanned. */
 SW_CLONES static void block_forces(int len, const double *restrict k, const double *restrict c,
                          const double *restrict rest, const double *restrict d, const double *restrict dv,
                          double *restrict force, double *restrict len2, int damped)
 {
+    unsigned long long flag = 0;
     if (damped)
         for (int j = 0; j < len; j++) {
             double dx = d[2 * j], dy = d[2 * j + 1];
@@ -218,6 +278,7 @@ SW_CLONES static void block_forces(int len, const double *restrict k, const doub
             double ux = dx / q, uy = dy / q;
             double mag = k[j] * (l - rest[j]) + c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
             len2[j] = l2;
+            flag |= small_or_nan(l2);
             force[2 * j] = -mag * ux;
             force[2 * j + 1] = -mag * uy;
         }
@@ -228,10 +289,11 @@ SW_CLONES static void block_forces(int len, const double *restrict k, const doub
             double ux = dx / q, uy = dy / q;
             double mag = k[j] * (l - rest[j]);
             len2[j] = l2;
+            flag |= small_or_nan(l2);
             force[2 * j] = -mag * ux;
             force[2 * j + 1] = -mag * uy;
         }
-    for (int j = 0; j < len; j++) {
+    for (int j = 0; flag >> 63 && j < len; j++) {
         if (len2[j] >= 1e-290)
             continue;
         double dx = d[2 * j], dy = d[2 * j + 1], l = hypot(dx, dy);
@@ -248,28 +310,40 @@ SW_CLONES static void block_forces(int len, const double *restrict k, const doub
 
 /* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are
  * paired; and dv = v_a - v_b (v_a for anchored ones) when damped. */
-static void block_differences(const struct sw_particles_model *m, const double *restrict x,
+SW_CLONES static void block_differences(const struct sw_particles_model *m, const double *restrict x,
                               const double *restrict v, int lo, int mid, int hi, double *restrict d,
                               double *restrict dv)
 {
     const int *restrict ia = m->a, *restrict ib = m->b;
     const double *restrict ax = m->ax, *restrict ay = m->ay;
-    for (int j = lo; j < mid; j++)
-        store2(d + 2 * (j - lo), load2(x + ia[j]) - load2(x + ib[j]));
+    if (m->stride) { /* neighbours in order: two contiguous reads */
+        const double *restrict xa = x + m->a0 + 2 * lo, *restrict xb = x + m->b0 + 2 * lo;
+        for (int t = 0; t < 2 * (mid - lo); t++)
+            d[t] = xa[t] - xb[t];
+    } else {
+        for (int j = lo; j < mid; j++)
+            store2(d + 2 * (j - lo), load2(x + ia[j]) - load2(x + ib[j]));
+    }
     for (int j = mid; j < hi; j++) {
         d[2 * (j - lo)] = x[ia[j]] - ax[j];
         d[2 * (j - lo) + 1] = x[ia[j] + 1] - ay[j];
     }
     if (!m->damped)
         return;
-    for (int j = lo; j < mid; j++)
-        store2(dv + 2 * (j - lo), load2(v + ia[j]) - load2(v + ib[j]));
+    if (m->stride) {
+        const double *restrict va = v + m->a0 + 2 * lo, *restrict vb = v + m->b0 + 2 * lo;
+        for (int t = 0; t < 2 * (mid - lo); t++)
+            dv[t] = va[t] - vb[t];
+    } else {
+        for (int j = lo; j < mid; j++)
+            store2(dv + 2 * (j - lo), load2(v + ia[j]) - load2(v + ib[j]));
+    }
     for (int j = mid; j < hi; j++) /* v_a - 0 = v_a */
         store2(dv + 2 * (j - lo), load2(v + ia[j]));
 }
 
 /* Every spring's force on its particle a, into m->force. */
-static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
+SW_CLONES static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
 {
     double *d = m->scratch, *dv = d + 2 * BLOCK, *len2 = dv + 2 * BLOCK;
     int total = m->npair + m->nanchor;
@@ -315,21 +389,26 @@ static inline v2d spring_sum(const int *restrict first, const int *restrict spri
     return f;
 }
 
-/* The last pass: dx/dt = v, and dv/dt = (f + m·g - k·v)/m, with f the sum
- * of the particle's spring forces (from = FROM_SPRINGS), the forces so far
- * in f (FROM_F) or 0 (FROM_NONE), for the kinds present. Called with
+/* The last pass over particles [i0, i1): dx/dt = v, and dv/dt = (f + m·g -
+ * k·v)/m, with f the sum of the particle's spring forces (from =
+ * FROM_SPRINGS; read at the run's fixed distances when regular), the forces
+ * so far in f (FROM_F) or 0 (FROM_NONE), for the kinds present. Called with
  * constant arguments, so each combination compiles to its own loop. */
-static inline void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
-                             double *restrict xdot, double *restrict f, int from, int gravity, int drag)
+static inline __attribute__((always_inline)) void last_range(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                              double *restrict xdot, double *restrict f, int from, int gravity, int drag, int i0,
+                              int i1, int regular)
 {
     const double *restrict mass = p->mass, *restrict inv = p->inv_mass, *restrict sign = m->sign,
                            *restrict force = m->force;
     const int *restrict first = m->first, *restrict spring = m->spring;
     v2d g = { m->gx, m->gy };
-    double kd = m->kdrag;
-    for (int i = 0; i < p->n; i++) {
+    double kd = m->kdrag, s0 = m->run_s[0], s1 = m->run_s[1];
+    const double *restrict f0 = force + m->run_c[0], *restrict f1 = force + m->run_c[1];
+    for (int i = i0; i < i1; i++) {
         v2d fi = { 0.0, 0.0 }, vi = load2(v + 2 * i);
-        if (from == FROM_SPRINGS && m->degree == 2) /* chains, rings: the same sum, unrolled */
+        if (from == FROM_SPRINGS && regular) /* the same sum as below, read in order */
+            fi = (fi + s0 * load2(f0 + 2 * i)) + s1 * load2(f1 + 2 * i);
+        else if (from == FROM_SPRINGS && m->degree == 2) /* chains, rings: the same sum, unrolled */
             fi = (fi + sign[2 * i] * load2(force + spring[2 * i])) + sign[2 * i + 1] * load2(force + spring[2 * i + 1]);
         else if (from == FROM_SPRINGS)
             fi = spring_sum(first, spring, sign, force, i);
@@ -344,7 +423,51 @@ static inline void last_pass(const sw_particles *p, const struct sw_particles_mo
     }
 }
 
-void swp_deriv(void *ctx, double t, const double *y, double *dydt)
+/* The last pass over the regular run [i0, i1), two particles at a time
+ * (each lane the same operations as last_range's, so the same bits); an
+ * odd last one by last_range. */
+static inline __attribute__((always_inline)) void last_run(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                            double *restrict xdot, double *restrict f, int gravity, int drag, int i0, int i1)
+{
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
+    const double *restrict f0 = m->force + m->run_c[0], *restrict f1 = m->force + m->run_c[1];
+    v4d s0 = { m->run_s[0], m->run_s[0], m->run_s[0], m->run_s[0] };
+    v4d s1 = { m->run_s[1], m->run_s[1], m->run_s[1], m->run_s[1] };
+    v4d g = { m->gx, m->gy, m->gx, m->gy }, zero = { 0.0, 0.0, 0.0, 0.0 };
+    double kd = m->kdrag;
+    int i = i0;
+    for (; i + 2 <= i1; i += 2) {
+        v4d vi, a, b;
+        memcpy(&vi, v + 2 * i, sizeof vi);
+        memcpy(&a, f0 + 2 * i, sizeof a);
+        memcpy(&b, f1 + 2 * i, sizeof b);
+        v4d fi = (zero + s0 * a) + s1 * b;
+        if (gravity)
+            fi += (v4d){ mass[i], mass[i], mass[i + 1], mass[i + 1] } * g;
+        if (drag)
+            fi -= kd * vi;
+        fi *= (v4d){ inv[i], inv[i], inv[i + 1], inv[i + 1] };
+        memcpy(xdot + 2 * i, &vi, sizeof vi);
+        memcpy(f + 2 * i, &fi, sizeof fi);
+    }
+    last_range(p, m, v, xdot, f, FROM_SPRINGS, gravity, drag, i, i1, 1);
+}
+
+/* The last pass over every particle, the regular run apart. */
+static inline __attribute__((always_inline)) void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                             double *restrict xdot, double *restrict f, int from, int gravity, int drag)
+{
+    int lo = m->run_lo, hi = m->run_hi;
+    if (from != FROM_SPRINGS || hi == lo) {
+        last_range(p, m, v, xdot, f, from, gravity, drag, 0, p->n, 0);
+        return;
+    }
+    last_range(p, m, v, xdot, f, from, gravity, drag, 0, lo, 0);
+    last_run(p, m, v, xdot, f, gravity, drag, lo, hi);
+    last_range(p, m, v, xdot, f, from, gravity, drag, hi, p->n, 0);
+}
+
+SW_CLONES void swp_deriv(void *ctx, double t, const double *y, double *dydt)
 {
     (void)t;
     sw_particles *p = ctx;

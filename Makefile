@@ -151,6 +151,8 @@ bench:
 	@sh bench/deps.sh
 	@$(MAKE) --no-print-directory $(BENCHBIN)
 	./$(BENCHBIN)
+	@if command -v valgrind >/dev/null 2>&1; then echo; echo "instructions per particle-step (callgrind):"; \
+	    sh bench/instructions.sh ./$(BENCHBIN); else echo "instructions per particle-step: skipped (no valgrind)"; fi
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

@@ -319,6 +319,36 @@ static long peak_rss_kib(void)
     return kib;
 }
 
+/* In a fresh process, for counting instructions (bench/instructions.sh runs
+ * this under callgrind at two step counts and takes the difference): build
+ * SCENE with n particles, then take `steps` steps of METHOD at the scene's
+ * dt (euler on the chain at a tenth of it, as timed above) through the
+ * generic stepper, or (base) through the hand-fused loop. */
+static int count_probe(const char *scene, int n, const char *method, long steps, int base)
+{
+    const sw_scene *sc = sw_scene_find(scene);
+    const sw_integrator *m = sw_integrator_find(method);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_sim s;
+    if (!sc || !m || build_params(sc, n, p) != SW_OK || sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
+        return 1;
+    double dt = sc->dt * (strcmp(scene, "chain") == 0 && strcmp(method, "euler") == 0 ? 0.1 : 1.0), t = 0;
+    int dim = s.sys.ode->dim, ok = 1;
+    if (base) {
+        double *work = malloc((size_t)(5 * dim) * sizeof *work);
+        bench_chain ch = { .n = n, .k = p[1], .rest = p[4], .inv_m = 1.0 / p[2], .right_x = (n + 1) * p[4],
+                           .f = malloc((size_t)(2 * n + 2) * sizeof(double)) };
+        ok = work && ch.f && run_baseline(sc, p, m, s.sys.y, n, dt, steps, &ch, work);
+        free(work), free(ch.f);
+    } else {
+        for (long j = 0; j < steps; j++)
+            sw_stepper_step(s.stepper, s.sys.ode, &t, s.sys.y, dt);
+    }
+    sw_sim_free(&s);
+    return ok ? 0 : 1;
+}
+
 /* In a fresh process: build vortex with n points under `method` ("none":
  * build nothing), take ten steps, and print the peak RSS on stdout. */
 static int memory_probe(const char *method, int n)
@@ -455,6 +485,9 @@ static int bench_engine_main(int argc, char **argv)
             continue;
         if (strcmp(argv[i], "--memory-probe") == 0 && i + 2 < argc)
             return memory_probe(argv[i + 1], atoi(argv[i + 2]));
+        if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
+            return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
+                               strcmp(argv[i + 5], "base") == 0);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;

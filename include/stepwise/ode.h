@@ -15,6 +15,14 @@ typedef void sw_deriv_fn(void *ctx, double t, const double *y, double *dydt);
  * explicit methods step the state block by block in cache. */
 typedef void sw_deriv_part_fn(void *ctx, double t, int len, const double *y, double *dydt);
 
+/* A step of a fixed explicit method that a system takes itself, point by
+ * point with each point's stages in registers, with exactly the arithmetic
+ * of the generic method (so the same bits): y advanced from t by h in
+ * place. Returns non-zero when a new component's exponent field is at or
+ * beyond elim (the runaway test, 0x800: never). Flow fields written per
+ * point offer Euler's and RK4's (src/engine/pointwise.h). */
+typedef unsigned sw_fused_step_fn(void *ctx, double t, double *y, double h, unsigned elim);
+
 /* Solve (I - c·J) z = r, J = ∂f/∂y at (t, y); returns 0 or a negative status
  * when the solve fails. Used by implicit methods only. */
 typedef int sw_solve_fn(void *ctx, double t, const double *y, double c,
@@ -26,6 +34,7 @@ typedef struct sw_ode {
     sw_deriv_fn *deriv;  /* required */
     sw_solve_fn *solve;  /* NULL: a dense finite-difference fallback (small dim) */
     sw_deriv_part_fn *deriv_part; /* NULL: coupled (particles); else slices of 2 */
+    sw_fused_step_fn *fused_euler, *fused_rk4; /* NULL: the generic methods */
     void *ctx;           /* the system behind the callbacks */
     long evals;          /* derivative evaluations so far (counted by sw_ode_eval) */
     long solves;         /* linear solves so far */

@@ -33,6 +33,18 @@ static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, dou
     return 0;
 }
 
+/* A step the system takes itself (sw_fused_step_fn): the same arithmetic,
+ * so the same bookkeeping as run_ranges. */
+static int run_fused(sw_fused_step_fn *f, int stages, sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    unsigned beyond = f(ode->ctx, *t, y, h, s->limit_exp ? s->limit_exp : 0x800);
+    s->checked = s->limit_exp != 0;
+    s->beyond = beyond != 0;
+    ode->evals += stages;
+    *t += h;
+    return 0;
+}
+
 /* x1 = x0 + h·f(t0, x0) */
 SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim)
 {
@@ -48,6 +60,8 @@ SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, doub
 
 int sw_step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
+    if (ode->fused_euler)
+        return run_fused(ode->fused_euler, 1, s, ode, t, y, h);
     return run_ranges(euler_range, 1, s, ode, t, y, h);
 }
 
@@ -130,6 +144,8 @@ SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double
 
 int sw_step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
+    if (ode->fused_rk4)
+        return run_fused(ode->fused_rk4, 4, s, ode, t, y, h);
     return run_ranges(rk4_range, 4, s, ode, t, y, h);
 }
 

@@ -97,6 +97,26 @@ int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, co
     return SW_OK;
 }
 
+static unsigned flow_euler(void *ctx, double t, double *y, double h, unsigned elim)
+{
+    const sw_flow *f = ctx;
+    return f->point->euler(f->params, t, f->n, y, h, elim);
+}
+
+static unsigned flow_rk4(void *ctx, double t, double *y, double h, unsigned elim)
+{
+    const sw_flow *f = ctx;
+    return f->point->rk4(f->params, t, f->n, y, h, elim);
+}
+
+void sw_flow_fuse(sw_flow *f, const sw_point_field *pf)
+{
+    f->point = pf;
+    f->field = pf->field;
+    f->ode.fused_euler = pf->euler ? flow_euler : NULL;
+    f->ode.fused_rk4 = pf->rk4 ? flow_rk4 : NULL;
+}
+
 void sw_flow_free(sw_flow *f)
 {
     free(f->y);

@@ -467,9 +467,9 @@ static inline __attribute__((always_inline)) void last_pass(const sw_particles *
     last_range(p, m, v, xdot, f, from, gravity, drag, hi, p->n, 0);
 }
 
-SW_CLONES void swp_deriv(void *ctx, double t, const double *y, double *dydt)
+/* (compiled twice, engine/clones.h; swp_deriv is its one entry) */
+SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
 {
-    (void)t;
     sw_particles *p = ctx;
     struct sw_particles_model *m = p->model;
     if (!m->compiled)
@@ -505,4 +505,10 @@ SW_CLONES void swp_deriv(void *ctx, double t, const double *y, double *dydt)
     case FROM_SPRINGS | 12: last_pass(p, m, v, dydt, f, FROM_SPRINGS, 1, 1); break;
     default: last_pass(p, m, v, dydt, f, FROM_F, 1, 1); break;
     }
+}
+
+void swp_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    (void)t;
+    deriv(ctx, y, dydt);
 }

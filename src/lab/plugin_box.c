@@ -73,17 +73,20 @@ typedef struct step_box {
 
 static step_box *child_box;
 static sw_ode child_ode_copy;
-static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "deriv_part", "ctx" };
+static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "deriv_part", "ctx", "fused_euler",
+                                          "fused_rk4" };
 
 /* Which ode field differs from the copy taken before the step; -1 none. */
 static int ode_changed(const sw_ode *o, long *was, long *now)
 {
     const sw_ode *c = &child_ode_copy;
-    long a[6] = { c->dim, c->order, (long)(uintptr_t)c->deriv, (long)(uintptr_t)c->solve,
-                  (long)(uintptr_t)c->deriv_part, (long)(uintptr_t)c->ctx };
-    long b[6] = { o->dim, o->order, (long)(uintptr_t)o->deriv, (long)(uintptr_t)o->solve,
-                  (long)(uintptr_t)o->deriv_part, (long)(uintptr_t)o->ctx };
-    for (int i = 0; i < 6; i++)
+    long a[8] = { c->dim, c->order, (long)(uintptr_t)c->deriv, (long)(uintptr_t)c->solve,
+                  (long)(uintptr_t)c->deriv_part, (long)(uintptr_t)c->ctx, (long)(uintptr_t)c->fused_euler,
+                  (long)(uintptr_t)c->fused_rk4 };
+    long b[8] = { o->dim, o->order, (long)(uintptr_t)o->deriv, (long)(uintptr_t)o->solve,
+                  (long)(uintptr_t)o->deriv_part, (long)(uintptr_t)o->ctx, (long)(uintptr_t)o->fused_euler,
+                  (long)(uintptr_t)o->fused_rk4 };
+    for (int i = 0; i < 8; i++)
         if (a[i] != b[i]) {
             *was = a[i];
             *now = b[i];

@@ -6,18 +6,19 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "engine/clones.h"
+#include "engine/pointwise.h"
 #include "stepwise/base.h"
 #include "scenes/scenes.h"
 #include "util/num.h"
 
 
-int sw_scene_flow(sw_system *sys, int n, sw_field_fn *field, sw_field_jac_fn *jac, char *err,
+int sw_scene_flow(sw_system *sys, int n, const sw_point_field *pf, sw_field_jac_fn *jac, char *err,
                   size_t errlen)
 {
-    int rc = sw_flow_init(&sys->flow, n, field, jac, sys->p, err, errlen);
+    int rc = sw_flow_init(&sys->flow, n, pf->field, jac, sys->p, err, errlen);
     if (rc != SW_OK)
         return rc;
+    sw_flow_fuse(&sys->flow, pf);
     sys->kind = SW_SYS_FLOW;
     sys->n = n;
     sys->ode = &sys->flow.ode;
@@ -45,15 +46,21 @@ static void vortex_seed(int n, int i, double *x, double *y)
     *y = r * sin(a);
 }
 
-SW_CLONES static void vortex_field(const void *params, double t, int n, const double *x, double *v)
+typedef struct { double w; } vortex_coef;
+
+static inline vortex_coef vortex_prep(const void *params, double t)
 {
     (void)t;
-    double w = ((const double *)params)[VX_OMEGA];
-    for (int i = 0; i < n; i++) {
-        v[2 * i] = -w * x[2 * i + 1];
-        v[2 * i + 1] = w * x[2 * i];
-    }
+    return (vortex_coef){ ((const double *)params)[VX_OMEGA] };
 }
+
+static inline void vortex_at(const vortex_coef *c, double px, double py, double *vx, double *vy)
+{
+    *vx = -c->w * py;
+    *vy = c->w * px;
+}
+
+SW_POINT_FIELD(vortex, vortex_coef, vortex_prep, vortex_at);
 
 static void vortex_jac(const void *params, double t, int n, const double *x, double *jac)
 {
@@ -71,7 +78,7 @@ static void vortex_jac(const void *params, double t, int n, const double *x, dou
 static int vortex_build(sw_system *sys, char *err, size_t errlen)
 {
     int n = (int)sys->p[VX_N];
-    int rc = sw_scene_flow(sys, n, vortex_field, vortex_jac, err, errlen);
+    int rc = sw_scene_flow(sys, n, &vortex_point, vortex_jac, err, errlen);
     for (int i = 0; rc == SW_OK && i < n; i++)
         vortex_seed(n, i, &sys->y[2 * i], &sys->y[2 * i + 1]);
     return rc;
@@ -149,18 +156,23 @@ static void river_seed(int n, int i, double *x, double *y)
 
 /* Potential flow past a cylinder, w(z) = U(z + R²/z):
  *   u = U(1 - R²(x² - y²)/r⁴),  v = -2U R² x y / r⁴. */
-static void river_field(const void *params, double t, int n, const double *x, double *v)
+typedef struct { double U, R2; } river_coef;
+
+static inline river_coef river_prep(const void *params, double t)
 {
     (void)t;
     const double *p = params;
-    double U = p[RV_U], R2 = p[RV_R] * p[RV_R];
-    for (int i = 0; i < n; i++) {
-        double px = x[2 * i], py = x[2 * i + 1];
-        double r2 = px * px + py * py, r4 = r2 * r2;
-        v[2 * i] = U * (1.0 - R2 * (px * px - py * py) / r4);
-        v[2 * i + 1] = -2.0 * U * R2 * px * py / r4;
-    }
+    return (river_coef){ p[RV_U], p[RV_R] * p[RV_R] };
 }
+
+static inline void river_at(const river_coef *c, double px, double py, double *vx, double *vy)
+{
+    double r2 = px * px + py * py, r4 = r2 * r2;
+    *vx = c->U * (1.0 - c->R2 * (px * px - py * py) / r4);
+    *vy = -2.0 * c->U * c->R2 * px * py / r4;
+}
+
+SW_POINT_FIELD(river, river_coef, river_prep, river_at);
 
 /* Stream function ψ = U·y·(1 - R²/r²), constant along every exact path. */
 static double river_psi(const double *p, double x, double y)
@@ -171,7 +183,7 @@ static double river_psi(const double *p, double x, double y)
 static int river_build(sw_system *sys, char *err, size_t errlen)
 {
     int n = (int)sys->p[RV_N];
-    int rc = sw_scene_flow(sys, n, river_field, NULL, err, errlen);
+    int rc = sw_scene_flow(sys, n, &river_point, NULL, err, errlen);
     for (int i = 0; rc == SW_OK && i < n; i++)
         river_seed(n, i, &sys->y[2 * i], &sys->y[2 * i + 1]);
     return rc;
@@ -233,23 +245,28 @@ static void gyre_seed(int n, int i, double *x, double *y)
 
 /* ψ = A sin(π f(x, t)) sin(π y), f = a x² + b x, a = ε sin ωt, b = 1 - 2ε sin ωt;
  * u = -∂ψ/∂y, v = ∂ψ/∂x. */
-static void gyre_field(const void *params, double t, int n, const double *x, double *v)
+typedef struct { double a, b, A; } gyre_coef;
+
+static inline gyre_coef gyre_prep(const void *params, double t)
 {
     const double *p = params;
     double s = p[GY_EPS] * sin(p[GY_OMEGA] * t);
-    double a = s, b = 1.0 - 2.0 * s, A = p[GY_A];
-    for (int i = 0; i < n; i++) {
-        double px = x[2 * i], py = x[2 * i + 1];
-        double f = a * px * px + b * px, df = 2.0 * a * px + b;
-        v[2 * i] = -SW_PI * A * sin(SW_PI * f) * cos(SW_PI * py);
-        v[2 * i + 1] = SW_PI * A * cos(SW_PI * f) * sin(SW_PI * py) * df;
-    }
+    return (gyre_coef){ s, 1.0 - 2.0 * s, p[GY_A] };
 }
+
+static inline void gyre_at(const gyre_coef *c, double px, double py, double *vx, double *vy)
+{
+    double f = c->a * px * px + c->b * px, df = 2.0 * c->a * px + c->b;
+    *vx = -SW_PI * c->A * sin(SW_PI * f) * cos(SW_PI * py);
+    *vy = SW_PI * c->A * cos(SW_PI * f) * sin(SW_PI * py) * df;
+}
+
+SW_POINT_FIELD(gyre, gyre_coef, gyre_prep, gyre_at);
 
 static int gyre_build(sw_system *sys, char *err, size_t errlen)
 {
     int n = (int)sys->p[GY_N];
-    int rc = sw_scene_flow(sys, n, gyre_field, NULL, err, errlen);
+    int rc = sw_scene_flow(sys, n, &gyre_point, NULL, err, errlen);
     for (int i = 0; rc == SW_OK && i < n; i++)
         gyre_seed(n, i, &sys->y[2 * i], &sys->y[2 * i + 1]);
     return rc;

@@ -12,8 +12,9 @@ extern const sw_scene sw_scene_projectile, sw_scene_bounce, sw_scene_fireworks;
 extern const sw_scene sw_scene_spring, sw_scene_stiff_spring, sw_scene_chain;
 extern const sw_scene sw_scene_orbit;
 
-/* Set sys up as a flow of n points under field (jac may be NULL). */
-int sw_scene_flow(sw_system *sys, int n, sw_field_fn *field, sw_field_jac_fn *jac,
+/* Set sys up as a flow of n points under a field written per point
+ * (engine/pointwise.h; jac may be NULL). */
+int sw_scene_flow(sw_system *sys, int n, const sw_point_field *pf, sw_field_jac_fn *jac,
                   char *err, size_t errlen);
 /* Set sys up as n particles of mass m, all at rest at the origin. */
 int sw_scene_particles(sw_system *sys, int n, double m, char *err, size_t errlen);

@@ -17,4 +17,9 @@ done
 echo "$out" | grep -q '^peak memory: vortex n = 10000' || fail "no memory table"
 echo "$out" | grep -Eq '^  rk4 +[0-9.]+ +[0-9.-]+ +5$' || fail "no memory row for rk4"
 echo "$out" | grep -q 'failed' && fail "a memory probe failed: $out"
+# the count probe bench/instructions.sh runs under callgrind
+for kind in generic base; do
+    "$BENCH" --count-probe chain 20 rk4 3 $kind || fail "count probe ($kind) exited $?"
+done
+"$BENCH" --count-probe nosuch 20 rk4 3 generic && fail "count probe accepted an unknown scene"
 echo "engine benchmark: ok"

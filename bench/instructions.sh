@@ -1,0 +1,25 @@
+#!/bin/sh
+# Instructions per particle-step of the generic stepper and of the hand-fused
+# loop (bench_base.c), counted by callgrind, which counts the same on every
+# run where times on a shared machine do not. Each figure is the difference
+# between two runs of the count probe at K1 and K2 steps, divided by
+# (K2 - K1)·n, so building the system and loading the program drop out.
+# The copies counted are those the loader picks on this machine (AVX2 where
+# present). Usage: sh bench/instructions.sh [BENCH_BINARY]
+set -eu
+bin=${1:-build/bench_engine}
+command -v valgrind >/dev/null 2>&1 || { echo "instructions.sh: needs valgrind (apt-get install valgrind)" >&2; exit 2; }
+out=$(mktemp)
+trap 'rm -f "$out"' EXIT
+count() { # scene n method steps base|generic
+    valgrind --tool=callgrind --callgrind-out-file="$out" "$bin" --count-probe "$@" >/dev/null 2>&1
+    awk '/^summary:/ { print $2 }' "$out"
+}
+printf '%-18s %-6s %10s %10s %7s\n' problem method generic hand-fused ratio
+for row in "chain 1000 euler 20 120" "chain 1000 rk4 20 120" "vortex 100000 euler 5 25" "vortex 100000 rk4 5 25"; do
+    set -- $row
+    g1=$(count "$1" "$2" "$3" "$4" generic); g2=$(count "$1" "$2" "$3" "$5" generic)
+    b1=$(count "$1" "$2" "$3" "$4" base); b2=$(count "$1" "$2" "$3" "$5" base)
+    awk -v s="$1 n = $2" -v m="$3" -v g1="$g1" -v g2="$g2" -v b1="$b1" -v b2="$b2" -v k=$(($5 - $4)) -v n="$2" \
+        'BEGIN { g = (g2 - g1) / (k * n); b = (b2 - b1) / (k * n); printf "%-18s %-6s %10.1f %10.1f %7.2f\n", s, m, g, b, g / b }'
+done

@@ -1,0 +1,79 @@
+/* Flow fields written per point step Euler and RK4 with each point's stages
+ * in registers (engine/pointwise.h). Those fused steps must be the generic
+ * methods exactly: on every flow scene, with point counts that fill the
+ * blocks unevenly, the same bits after many steps (the fused step against
+ * the same system with its fused steps switched off), the same runaway
+ * flag when a point leaves, and the same evaluation count. */
+#include <check.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/stepper.h"
+#include "stepwise/stepwise.h"
+
+/* n points of scene `name` (defaults otherwise), `steps` steps of method at
+ * the scene's dt, fused or not; the state into out (2n), the runaway flag
+ * of the last step and the evaluations into *beyond and *evals. */
+static void run(const char *name, int n, const char *method, int steps, int fused, double kick, double *out,
+                int *beyond, long *evals)
+{
+    const sw_scene *sc = sw_scene_find(name);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN], set[32];
+    sw_scene_defaults(sc, p);
+    snprintf(set, sizeof set, "n=%d", n);
+    ck_assert_msg(sw_scene_set(sc, p, set, err, sizeof err) == SW_OK, "%s", err);
+    sw_system sys;
+    ck_assert_msg(sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sys.ode->fused_euler && sys.ode->fused_rk4, "%s offers no fused steps", name);
+    if (!fused)
+        sys.ode->fused_euler = sys.ode->fused_rk4 = NULL;
+    sw_stepper s;
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(method), sys.ode, err, sizeof err), SW_OK);
+    s.limit_exp = 1023 + 20; /* |y| >= 2^20 is a runaway */
+    double t = 0.0;
+    for (int j = 0; j < steps; j++) {
+        if (j == steps - 1)
+            sys.y[2 * (n / 2) + 1] += kick; /* one point, far away, before the last step */
+        ck_assert_int_eq(sw_stepper_step(&s, sys.ode, &t, sys.y, sc->dt), SW_OK);
+    }
+    memcpy(out, sys.y, (size_t)(2 * n) * sizeof *out);
+    *beyond = s.beyond;
+    *evals = sys.ode->evals;
+    sw_stepper_free(&s);
+    sw_system_free(&sys);
+}
+
+START_TEST(fused_steps_are_the_generic_ones)
+{
+    const char *scenes[] = { "vortex", "river", "gyre" }, *methods[] = { "euler", "rk4" };
+    const int sizes[] = { 1, 7, 300, 1031 }; /* a lone point, a part block, a block and a bit, several */
+    static double a[2 * 1031], b[2 * 1031];
+    for (int sc = 0; sc < 3; sc++)
+        for (int m = 0; m < 2; m++)
+            for (int k = 0; k < 4; k++)
+                for (int kick = 0; kick < 2; kick++) {
+                    int n = sizes[k], ba, bb;
+                    long ea, eb;
+                    double far = kick ? 4e6 : 0.0;
+                    run(scenes[sc], n, methods[m], 60, 1, far, a, &ba, &ea);
+                    run(scenes[sc], n, methods[m], 60, 0, far, b, &bb, &eb);
+                    ck_assert_msg(memcmp(a, b, (size_t)(2 * n) * sizeof *a) == 0, "%s, %s, n = %d: fused differs",
+                                  scenes[sc], methods[m], n);
+                    ck_assert_int_eq(ba, bb);
+                    ck_assert_int_eq(ba, kick); /* the far point is flagged, and only it */
+                    ck_assert_int_eq(ea, eb);
+                }
+}
+END_TEST
+
+Suite *make_pointwise_suite(void);
+Suite *make_pointwise_suite(void)
+{
+    Suite *s = suite_create("pointwise");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, fused_steps_are_the_generic_ones);
+    suite_add_tcase(s, tc);
+    return s;
+}

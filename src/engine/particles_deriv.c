@@ -403,11 +403,11 @@ static inline __attribute__((always_inline)) void last_range(const sw_particles 
     const int *restrict first = m->first, *restrict spring = m->spring;
     v2d g = { m->gx, m->gy };
     double kd = m->kdrag, s0 = m->run_s[0], s1 = m->run_s[1];
-    const double *restrict f0 = force + m->run_c[0], *restrict f1 = force + m->run_c[1];
+    int c0 = m->run_c[0], c1 = m->run_c[1]; /* (offsets, not pointers: c0 may be negative) */
     for (int i = i0; i < i1; i++) {
         v2d fi = { 0.0, 0.0 }, vi = load2(v + 2 * i);
         if (from == FROM_SPRINGS && regular) /* the same sum as below, read in order */
-            fi = (fi + s0 * load2(f0 + 2 * i)) + s1 * load2(f1 + 2 * i);
+            fi = (fi + s0 * load2(force + (2 * i + c0))) + s1 * load2(force + (2 * i + c1));
         else if (from == FROM_SPRINGS && m->degree == 2) /* chains, rings: the same sum, unrolled */
             fi = (fi + sign[2 * i] * load2(force + spring[2 * i])) + sign[2 * i + 1] * load2(force + spring[2 * i + 1]);
         else if (from == FROM_SPRINGS)
@@ -430,7 +430,8 @@ static inline __attribute__((always_inline)) void last_run(const sw_particles *p
                             double *restrict xdot, double *restrict f, int gravity, int drag, int i0, int i1)
 {
     const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
-    const double *restrict f0 = m->force + m->run_c[0], *restrict f1 = m->force + m->run_c[1];
+    const double *restrict force = m->force;
+    int c0 = m->run_c[0], c1 = m->run_c[1]; /* (offsets, not pointers: c0 may be negative) */
     v4d s0 = { m->run_s[0], m->run_s[0], m->run_s[0], m->run_s[0] };
     v4d s1 = { m->run_s[1], m->run_s[1], m->run_s[1], m->run_s[1] };
     v4d g = { m->gx, m->gy, m->gx, m->gy }, zero = { 0.0, 0.0, 0.0, 0.0 };
@@ -439,8 +440,8 @@ static inline __attribute__((always_inline)) void last_run(const sw_particles *p
     for (; i + 2 <= i1; i += 2) {
         v4d vi, a, b;
         memcpy(&vi, v + 2 * i, sizeof vi);
-        memcpy(&a, f0 + 2 * i, sizeof a);
-        memcpy(&b, f1 + 2 * i, sizeof b);
+        memcpy(&a, force + (2 * i + c0), sizeof a);
+        memcpy(&b, force + (2 * i + c1), sizeof b);
         v4d fi = (zero + s0 * a) + s1 * b;
         if (gravity)
             fi += (v4d){ mass[i], mass[i], mass[i + 1], mass[i + 1] } * g;

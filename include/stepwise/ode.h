@@ -34,7 +34,6 @@ typedef struct sw_ode {
     sw_deriv_fn *deriv;  /* required */
     sw_solve_fn *solve;  /* NULL: a dense finite-difference fallback (small dim) */
     sw_deriv_part_fn *deriv_part; /* NULL: coupled (particles); else slices of 2 */
-    sw_fused_step_fn *fused_euler, *fused_rk4; /* NULL: the generic methods */
     void *ctx;           /* the system behind the callbacks */
     long evals;          /* derivative evaluations so far (counted by sw_ode_eval) */
     long solves;         /* linear solves so far */
@@ -42,6 +41,9 @@ typedef struct sw_ode {
     /* NULL, or: size the solve's workspace for the system as built (called
      * once when an implicit method is chosen); 0 or a status with err. */
     int (*prepare)(void *ctx, char *err, size_t errlen);
+    /* NULL: the generic methods. Last, so that the fields before keep the
+     * places plugins built against SW_PLUGIN_ABI 1 know. */
+    sw_fused_step_fn *fused_euler, *fused_rk4;
 } sw_ode;
 
 /* Evaluate dy/dt and count it: every method goes through this. */

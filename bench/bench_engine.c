@@ -86,6 +86,14 @@ static long stable_steps(sw_sim *s, double *dt, double target, int repeats)
     return k;
 }
 
+/* The chain's baseline description for n beads under p (bench_base.c); its
+ * force buffer is allocated (NULL when out of memory; the caller frees it). */
+static bench_chain chain_baseline(int n, const double *p)
+{
+    return (bench_chain){ .n = n, .k = p[1], .rest = p[4], .inv_m = 1.0 / p[2], .right_x = (n + 1) * p[4],
+                          .f = malloc((size_t)(2 * n + 2) * sizeof(double)) };
+}
+
 /* Run a baseline `steps` steps on a copy of y0; 0 when m has none. */
 static int run_baseline(const sw_scene *sc, const double *p, const sw_integrator *m, double *y,
                         int n, double h, long steps, bench_chain *ch, double *work)
@@ -142,8 +150,7 @@ static void throughput(const bench_opts *o)
             int n = s.sys.n, dim = s.sys.ode->dim;
             double *y0 = malloc((size_t)dim * sizeof *y0), *yb = malloc((size_t)dim * sizeof *yb);
             double *work = malloc((size_t)(5 * dim) * sizeof *work);
-            bench_chain ch = { .n = n, .k = p[1], .rest = p[4], .inv_m = 1.0 / p[2], .right_x = (n + 1) * p[4],
-                               .f = malloc((size_t)(2 * n + 2) * sizeof(double)) };
+            bench_chain ch = chain_baseline(n, p);
             if (!y0 || !yb || !work || !ch.f) {
                 free(y0), free(yb), free(work), free(ch.f);
                 sw_sim_free(&s);
@@ -337,8 +344,7 @@ static int count_probe(const char *scene, int n, const char *method, long steps,
     int dim = s.sys.ode->dim, ok = 1;
     if (base) {
         double *work = malloc((size_t)(5 * dim) * sizeof *work);
-        bench_chain ch = { .n = n, .k = p[1], .rest = p[4], .inv_m = 1.0 / p[2], .right_x = (n + 1) * p[4],
-                           .f = malloc((size_t)(2 * n + 2) * sizeof(double)) };
+        bench_chain ch = chain_baseline(n, p);
         ok = work && ch.f && run_baseline(sc, p, m, s.sys.y, n, dt, steps, &ch, work);
         free(work), free(ch.f);
     } else {

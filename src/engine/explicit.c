@@ -15,29 +15,22 @@
  * (see sw_state_beyond). */
 typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int len, unsigned elim);
 
-/* Run a range step over the whole state or slice by slice, and count its
- * evaluations once per stage. The final loops test every component against
- * the sim's runaway limit as they write it, sparing the sim a pass. */
-static int run_ranges(range_step *f, int stages, sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+/* Run a step: the system's own fused step when it offers one for this
+ * method (the same arithmetic, sw_fused_step_fn), else the range step over
+ * the whole state or slice by slice; count its evaluations once per stage.
+ * The final loops test every component against the sim's runaway limit as
+ * they write it, sparing the sim a pass. */
+static int run_ranges(range_step *f, sw_fused_step_fn *fused, int stages, sw_stepper *s, sw_ode *ode, double *t,
+                      double *y, double h)
 {
     unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
-    if (ode->deriv_part)
+    if (fused)
+        beyond = fused(ode->ctx, *t, y, h, elim);
+    else if (ode->deriv_part)
         for (int lo = 0; lo < ode->dim; lo += SW_SLICE)
             beyond |= f(s, ode, *t, y + lo, h, (lo + SW_SLICE < ode->dim ? lo + SW_SLICE : ode->dim) - lo, elim);
     else
         beyond = f(s, ode, *t, y, h, ode->dim, elim);
-    s->checked = s->limit_exp != 0;
-    s->beyond = beyond != 0;
-    ode->evals += stages;
-    *t += h;
-    return 0;
-}
-
-/* A step the system takes itself (sw_fused_step_fn): the same arithmetic,
- * so the same bookkeeping as run_ranges. */
-static int run_fused(sw_fused_step_fn *f, int stages, sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    unsigned beyond = f(ode->ctx, *t, y, h, s->limit_exp ? s->limit_exp : 0x800);
     s->checked = s->limit_exp != 0;
     s->beyond = beyond != 0;
     ode->evals += stages;
@@ -60,9 +53,7 @@ SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, doub
 
 int sw_step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    if (ode->fused_euler)
-        return run_fused(ode->fused_euler, 1, s, ode, t, y, h);
-    return run_ranges(euler_range, 1, s, ode, t, y, h);
+    return run_ranges(euler_range, ode->fused_euler, 1, s, ode, t, y, h);
 }
 
 /* Semi-implicit Euler: v1 = v0 + h·a(x0, v0), then x1 = x0 + h·v1. */
@@ -95,7 +86,7 @@ SW_CLONES static unsigned midpoint_range(sw_stepper *s, sw_ode *ode, double t, d
 
 int sw_step_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return run_ranges(midpoint_range, 2, s, ode, t, y, h);
+    return run_ranges(midpoint_range, NULL, 2, s, ode, t, y, h);
 }
 
 /* Heun (explicit trapezoid): k1 = f(y), k2 = f(y + h·k1), y1 = y + h/2·(k1 + k2). */
@@ -116,7 +107,7 @@ SW_CLONES static unsigned heun_range(sw_stepper *s, sw_ode *ode, double t, doubl
 
 int sw_step_heun(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return run_ranges(heun_range, 2, s, ode, t, y, h);
+    return run_ranges(heun_range, NULL, 2, s, ode, t, y, h);
 }
 
 /* Classical RK4: y1 = y + h/6·(k1 + 2k2 + 2k3 + k4). */
@@ -144,9 +135,7 @@ SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double
 
 int sw_step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    if (ode->fused_rk4)
-        return run_fused(ode->fused_rk4, 4, s, ode, t, y, h);
-    return run_ranges(rk4_range, 4, s, ode, t, y, h);
+    return run_ranges(rk4_range, ode->fused_rk4, 4, s, ode, t, y, h);
 }
 
 /* Velocity Verlet (kick-drift-kick), one evaluation per step by reusing the

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "canvas_help.h"
 #include "lesson/lesson.h"
 #include "render/region.h"
 #include "render/screen.h"
@@ -133,16 +134,8 @@ END_TEST
 
 static char *compose(sw_frame *f, sw_app *a, int cols, int rows)
 {
-    sw_screen scr;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_screen_init(&scr, cols, rows, err, sizeof err), SW_OK);
-    sw_frame_push_trails(f, a);
-    sw_frame_compose(f, a, NULL, &scr);
-    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
-    char *text = malloc(cap);
-    sw_screen_to_text(&scr, text, cap);
-    sw_screen_free(&scr);
-    return text;
+    int clipped;
+    return ct_compose(f, a, NULL, cols, rows, &clipped);
 }
 
 /* The region view marks the spring's Δt·λ and says whether they grow. */

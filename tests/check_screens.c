@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "app/runner.h"
+#include "canvas_help.h"
 #include "lab/bench.h"
 #include "render/screen.h"
 #include "stepwise/stepwise.h"
@@ -22,17 +23,10 @@ static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
 static void check_screen_text(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, const char *what,
                               char **out)
 {
-    sw_screen scr;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_screen_init(&scr, cols, rows, err, sizeof err), SW_OK);
-    sw_frame_push_trails(f, a);
-    sw_frame_compose(f, a, side, &scr);
-    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
-    char *text = malloc(cap);
-    sw_screen_to_text(&scr, text, cap);
-    if (scr.clipped)
-        ck_abort_msg("%s at %dx%d: %d text(s) cut:\n%s", what, cols, rows, scr.clipped, text);
-    sw_screen_free(&scr);
+    int clipped;
+    char *text = ct_compose(f, a, side, cols, rows, &clipped);
+    if (clipped)
+        ck_abort_msg("%s at %dx%d: %d text(s) cut:\n%s", what, cols, rows, clipped, text);
     if (out)
         *out = text;
     else

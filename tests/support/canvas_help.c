@@ -1,9 +1,11 @@
 /* Helpers the canvas tests share: a canvas on a view, its frame as text, a
- * built scene with up to two settings, and a count of cells holding a code
- * point. Every failure is a test failure (ck_assert). */
+ * built scene with up to two settings, a count of cells holding a code
+ * point, and a whole frame composed as text (the picture and screen tests).
+ * Every failure is a test failure (ck_assert). */
 #include "canvas_help.h"
 
 #include <check.h>
+#include <stdlib.h>
 
 static char text[4096];
 
@@ -43,4 +45,20 @@ int ct_count_cp(const sw_canvas *c, uint32_t cp)
         for (int col = 0; col < c->cols; col++)
             n += sw_canvas_codepoint(c, col, row) == cp;
     return n;
+}
+
+char *ct_compose(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, int *clipped)
+{
+    sw_screen scr;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_screen_init(&scr, cols, rows, err, sizeof err), SW_OK);
+    sw_frame_push_trails(f, a);
+    sw_frame_compose(f, a, side, &scr);
+    size_t cap = (size_t)cols * (size_t)rows * 4 + (size_t)rows + 1;
+    char *out = malloc(cap);
+    ck_assert_ptr_nonnull(out);
+    sw_screen_to_text(&scr, out, cap);
+    *clipped = scr.clipped;
+    sw_screen_free(&scr);
+    return out;
 }

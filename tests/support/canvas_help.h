@@ -1,10 +1,11 @@
-/* Helpers the canvas tests share (tests/support/canvas_help.c). */
+/* Helpers the canvas, picture and screen tests share (tests/support/canvas_help.c). */
 #ifndef SW_TEST_CANVAS_HELP_H
 #define SW_TEST_CANVAS_HELP_H
 
 #include <stdint.h>
 
 #include "render/canvas.h"
+#include "render/screen.h"
 #include "stepwise/stepwise.h"
 
 /* A cols x rows canvas on the view [xmin, xmax] x [ymin, ymax]. */
@@ -15,5 +16,9 @@ const char *ct_frame(const sw_canvas *c);
 void ct_build(sw_system *sys, const sw_scene *sc, const char *set1, const char *set2);
 /* Cells of c holding code point cp. */
 int ct_count_cp(const sw_canvas *c, uint32_t cp);
+/* Frame f of app a (with side pane side, or NULL) composed on a cols x rows
+ * screen, as text the caller frees; the number of texts the composer had
+ * to cut into *clipped. */
+char *ct_compose(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, int *clipped);
 
 #endif

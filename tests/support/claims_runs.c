@@ -183,17 +183,23 @@ void cl_act(sw_app *a, sw_action action, int arg)
     a->locked = locked;
 }
 
+/* The page's set-up under integrator (NULL: the page's), after k presses of '-'. */
+static void page_halved(sw_runner *r, sw_app *a, const char *file, const char *title, const char *integrator, int k)
+{
+    cl_lesson_page(r, a, file, title);
+    if (integrator)
+        ck_assert_int_eq(sw_app_set_method(a, cl_method(integrator)), SW_OK);
+    for (int i = 0; i < k; i++)
+        cl_act(a, SW_ACT_DT_HALVE, 0);
+}
+
 /* The error ratio the status line shows after k presses of '-' from the
  * page's set-up (NaN when the app shows no order). */
 double cl_page_ratio(const char *file, const char *title, const char *integrator, int k)
 {
     sw_runner r;
     sw_app a;
-    cl_lesson_page(&r, &a, file, title);
-    if (integrator)
-        ck_assert_int_eq(sw_app_set_method(&a, cl_method(integrator)), SW_OK);
-    for (int i = 0; i < k; i++)
-        cl_act(&a, SW_ACT_DT_HALVE, 0);
+    page_halved(&r, &a, file, title, integrator, k);
     double ratio = a.error_ratio;
     cl_page_free(&r, &a);
     return ratio;
@@ -205,11 +211,7 @@ double cl_page_shown_ratio(const char *file, const char *title, const char *inte
 {
     sw_runner r;
     sw_app a;
-    cl_lesson_page(&r, &a, file, title);
-    if (integrator)
-        ck_assert_int_eq(sw_app_set_method(&a, cl_method(integrator)), SW_OK);
-    for (int i = 0; i < k; i++)
-        cl_act(&a, SW_ACT_DT_HALVE, 0);
+    page_halved(&r, &a, file, title, integrator, k);
     double ratio = a.nmeas == 2 ? a.meas_err[0] / a.meas_err[1] : NAN;
     cl_page_free(&r, &a);
     return ratio;

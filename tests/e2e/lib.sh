@@ -15,11 +15,27 @@ dir=$WORK
 work=$WORK
 SESSION="sw-e2e-$$"
 TMUX_STARTED=0
-# Every test has a tmux server of its own (socket sw-e2e-PID): no test starts
-# a session on a server the previous test's exit is shutting down, none
-# touches the user's own sessions, and a session gets this environment.
-tmux() { command tmux -L "$SESSION" "$@"; }
-trap 'tmux kill-server 2>/dev/null; rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SESSION"; rm -rf "$WORK"' EXIT
+TMUX_N=0
+# Every tmux session a test starts has a server of its own (socket
+# sw-e2e-PID-N): a server whose last session has gone is still shutting down
+# for a moment, and a new session sent to its socket then fails with "server
+# exited unexpectedly". No test touches the user's own sessions, and a
+# session gets this environment.
+tmux() { command tmux -L "$SESSION-$TMUX_N" "$@"; }
+# tmux_next: leave the current server (killed) for a fresh one.
+tmux_next() {
+    tmux kill-server 2>/dev/null
+    TMUX_N=$((TMUX_N + 1))
+}
+tmux_cleanup() {
+    n=0
+    while [ $n -le $TMUX_N ]; do
+        command tmux -L "$SESSION-$n" kill-server 2>/dev/null
+        rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SESSION-$n"
+        n=$((n + 1))
+    done
+}
+trap 'tmux_cleanup; rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
 
 fail() {
@@ -35,7 +51,7 @@ fail() {
 # the C.UTF-8 locale (built into glibc, so present on a fresh Debian too):
 # the UI's ✓, ✗ and Braille need a UTF-8 terminal, whatever the caller's locale.
 tmux_start() {
-    tmux kill-session -t "$SESSION" 2>/dev/null
+    tmux_next
     TMUX_STARTED=1
     LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$SESSION" -x 120 -y 40 -c "$WORK" \
         "env LANG=C.UTF-8 LC_ALL=C.UTF-8 PS1='PROMPT\$ ' TERM=xterm-256color sh" || fail "cannot start tmux"

@@ -38,6 +38,7 @@ vanish() {
     name=$1 how=$2 wrap=$3 typed=$4; shift 4
     rm -f rc times
     s="sw-gone-$$-$name"
+    tmux_next
     LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$s" -x 120 -y 40 -c "$WORK" \
         "env TERM=xterm-256color LANG=C.UTF-8 XDG_STATE_HOME='$XDG_STATE_HOME' sh -c 'trap \"\" HUP; $wrap \"$STEPWISE\" $*; echo \$? > rc; times > times'" \
         || fail "$name: cannot start tmux"

@@ -5,6 +5,7 @@
  * the same system with its fused steps switched off), the same runaway
  * flag when a point leaves, and the same evaluation count. */
 #include <check.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,12 +69,44 @@ START_TEST(fused_steps_are_the_generic_ones)
 }
 END_TEST
 
+/* The fused steps' runaway flag is exactly "some component of the new
+ * state has an exponent at or beyond elim, or is inf or NaN" (the scalar
+ * definition, sw_state_beyond): one component set to each edge value, in
+ * every slot of a pair and in an odd last point. */
+START_TEST(runaway_flag_is_exact)
+{
+    const double edge[] = { 0x1p20, -0x1p20, 0x1.fffffffffffffp19, -0x1.fffffffffffffp19, INFINITY, -INFINITY,
+                            NAN, -NAN, 1e300, 0.0 };
+    const unsigned elim = 1023 + 20;
+    const sw_scene *sc = sw_scene_find("river"); /* the field is finite away from the rock */
+    for (int n = 1; n <= 5; n++)
+        for (int m = 0; m < 2; m++)
+            for (int pos = 0; pos < 2 * n; pos++)
+                for (size_t v = 0; v < sizeof edge / sizeof edge[0]; v++) {
+                    double p[SW_MAX_PARAMS];
+                    char err[SW_ERRLEN], set[32];
+                    sw_scene_defaults(sc, p);
+                    snprintf(set, sizeof set, "n=%d", n);
+                    ck_assert(sw_scene_set(sc, p, set, err, sizeof err) == SW_OK);
+                    sw_system sys;
+                    ck_assert_msg(sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
+                    sys.y[pos] = edge[v];
+                    sw_fused_step_fn *step = m ? sys.ode->fused_rk4 : sys.ode->fused_euler;
+                    unsigned flag = step(sys.ode->ctx, 0.0, sys.y, 1e-3, elim);
+                    ck_assert_msg(flag == (unsigned)sw_state_beyond(sys.y, 0, 2 * n, elim),
+                                  "%s, n = %d, component %d = %g: flag %u", m ? "rk4" : "euler", n, pos, edge[v], flag);
+                    sw_system_free(&sys);
+                }
+}
+END_TEST
+
 Suite *make_pointwise_suite(void);
 Suite *make_pointwise_suite(void)
 {
     Suite *s = suite_create("pointwise");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, fused_steps_are_the_generic_ones);
+    tcase_add_test(tc, runaway_flag_is_exact);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -10,75 +10,114 @@
  *   NAME_point   the sw_point_field of the three, for sw_flow_fuse.
  * The fused steps do exactly the generic methods' arithmetic (explicit.c:
  * the same operations in the same order, the runaway test alike), so a run
- * gives the same bits either way (tests/check_pointwise.c). Private to the
- * engine and the scenes. */
+ * gives the same bits either way (tests/check_pointwise.c). They take the
+ * points two at a time and test the pair just written as one vector, so
+ * the compiler keeps each pair in one vector from load to test (a separate
+ * test pass, or a test per component, cost Euler on the vortex half again
+ * its update). Private to the engine and the scenes. */
 #ifndef SW_ENGINE_POINTWISE_H
 #define SW_ENGINE_POINTWISE_H
+
+#include <string.h>
 
 #include "engine/clones.h"
 #include "engine/stepper.h"
 #include "stepwise/flow.h"
 
-/* The runaway test over x[2lo, 2hi), just written: a flat pass over
- * components that stay in cache (a block of SW_POINT_BLOCK points), so
- * the update loop keeps each point's pair together and the test never
- * separates the components. */
-#define SW_POINT_BLOCK 256
-
-static inline __attribute__((always_inline)) unsigned long long sw_point_beyond(const double *restrict x, int lo,
-                                                                               int hi, unsigned long long add)
+/* The runaway test (stepper.h) of two points just written at x[0..3], as
+ * a running maximum per component slot: each component's exponent field
+ * alone (the double 2^e, +0, or +inf for inf and NaN: never NaN, so the
+ * maximum is exact) kept if larger. Two vector operations per pair, on
+ * values still in registers, where a separate test pass or a test per
+ * component cost Euler on the vortex half again its update. */
+static inline __attribute__((always_inline)) double sw_point_exponent(double v)
 {
-    unsigned long long over = 0;
-#pragma GCC unroll 4
-    for (int j = 2 * lo; j < 2 * hi; j++)
-        over |= sw_beyond_bits(x[j], add);
-    return over;
+    unsigned long long bits;
+    memcpy(&bits, &v, sizeof bits);
+    bits &= 0x7FF0000000000000ULL;
+    memcpy(&v, &bits, sizeof v);
+    return v;
 }
 
-#define SW_POINT_FIELD(NAME, COEF, PREP, POINT)                                                           \
-    SW_CLONES static void NAME##_field(const void *params, double t, int n, const double *x, double *v)  \
-    {                                                                                                     \
-        const COEF c = PREP(params, t);                                                                   \
-        for (int i = 0; i < n; i++)                                                                       \
-            POINT(&c, x[2 * i], x[2 * i + 1], &v[2 * i], &v[2 * i + 1]);                                  \
-    }                                                                                                     \
-    SW_CLONES static unsigned NAME##_euler(const void *params, double t, int n, double *restrict x,       \
-                                           double h, unsigned elim)                                       \
-    {                                                                                                     \
-        const COEF c = PREP(params, t);                                                                   \
-        unsigned long long over = 0, add = sw_beyond_add(elim);                                           \
-        for (int lo = 0; lo < n; lo += SW_POINT_BLOCK) {                                                  \
-            int hi = lo + SW_POINT_BLOCK < n ? lo + SW_POINT_BLOCK : n;                                   \
-            for (int i = lo; i < hi; i++) {                                                               \
-                double px = x[2 * i], py = x[2 * i + 1], vx, vy;                                          \
-                POINT(&c, px, py, &vx, &vy);                                                              \
-                x[2 * i] = px + h * vx;                                                                   \
-                x[2 * i + 1] = py + h * vy;                                                               \
-            }                                                                                             \
-            over |= sw_point_beyond(x, lo, hi, add);                                                      \
-        }                                                                                                 \
-        return sw_beyond_any(over);                                                                       \
-    }                                                                                                     \
-    SW_CLONES static unsigned NAME##_rk4(const void *params, double t, int n, double *restrict x,         \
-                                         double h, unsigned elim)                                         \
-    {                                                                                                     \
-        const COEF c1 = PREP(params, t), c2 = PREP(params, t + 0.5 * h), c4 = PREP(params, t + h);        \
-        unsigned long long over = 0, add = sw_beyond_add(elim);                                           \
-        for (int lo = 0; lo < n; lo += SW_POINT_BLOCK) {                                                  \
-            int hi = lo + SW_POINT_BLOCK < n ? lo + SW_POINT_BLOCK : n;                                   \
-            for (int i = lo; i < hi; i++) {                                                               \
-            double px = x[2 * i], py = x[2 * i + 1], k1x, k1y, k2x, k2y, k3x, k3y, k4x, k4y;              \
-            POINT(&c1, px, py, &k1x, &k1y);                                                               \
-            POINT(&c2, px + 0.5 * h * k1x, py + 0.5 * h * k1y, &k2x, &k2y);                               \
-            POINT(&c2, px + 0.5 * h * k2x, py + 0.5 * h * k2y, &k3x, &k3y);                               \
-            POINT(&c4, px + h * k3x, py + h * k3y, &k4x, &k4y);                                           \
-            x[2 * i] = px + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);                                \
-            x[2 * i + 1] = py + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);                            \
-            }                                                                                             \
-            over |= sw_point_beyond(x, lo, hi, add);                                                      \
-        }                                                                                                 \
-        return sw_beyond_any(over);                                                                       \
-    }                                                                                                     \
+static inline __attribute__((always_inline)) void sw_point_beyond2(double top[4], const double *x)
+{
+    for (int e = 0; e < 4; e++) {
+        double a = sw_point_exponent(x[e]);
+        top[e] = a > top[e] ? a : top[e];
+    }
+}
+
+/* Whether any component was beyond elim: the slots' largest, and an odd
+ * last point's components. */
+static inline unsigned sw_point_beyond_end(const double top[4], const double *x, int odd, unsigned elim)
+{
+    unsigned long long add = sw_beyond_add(elim);
+    unsigned long long over = sw_beyond_bits(top[0], add) | sw_beyond_bits(top[1], add) |
+                              sw_beyond_bits(top[2], add) | sw_beyond_bits(top[3], add);
+    if (odd)
+        over |= sw_beyond_bits(x[0], add) | sw_beyond_bits(x[1], add);
+    return sw_beyond_any(over);
+}
+
+#define SW_POINT_FIELD(NAME, COEF, PREP, POINT)                                                       \
+    SW_CLONES static void NAME##_field(const void *params, double t, int n, const double *x, double *v) \
+    {                                                                                                 \
+        const COEF c = PREP(params, t);                                                               \
+        for (int i = 0; i < n; i++)                                                                   \
+            POINT(&c, x[2 * i], x[2 * i + 1], &v[2 * i], &v[2 * i + 1]);                              \
+    }                                                                                                 \
+    /* one point's Euler step, and its RK4 step (c1, c2, c4: at t, t + h/2, t + h) */                 \
+    static inline __attribute__((always_inline)) void NAME##_euler1(const COEF *c, double *x, int j,  \
+                                                                    double h)                         \
+    {                                                                                                 \
+        double px = x[j], py = x[j + 1], vx, vy;                                                      \
+        POINT(c, px, py, &vx, &vy);                                                                   \
+        x[j] = px + h * vx;                                                                           \
+        x[j + 1] = py + h * vy;                                                                       \
+    }                                                                                                 \
+    static inline __attribute__((always_inline)) void NAME##_rk41(const COEF *c1, const COEF *c2,     \
+                                                                  const COEF *c4, double *x, int j,   \
+                                                                  double h)                           \
+    {                                                                                                 \
+        double px = x[j], py = x[j + 1], k1x, k1y, k2x, k2y, k3x, k3y, k4x, k4y;                      \
+        POINT(c1, px, py, &k1x, &k1y);                                                                \
+        POINT(c2, px + 0.5 * h * k1x, py + 0.5 * h * k1y, &k2x, &k2y);                                \
+        POINT(c2, px + 0.5 * h * k2x, py + 0.5 * h * k2y, &k3x, &k3y);                                \
+        POINT(c4, px + h * k3x, py + h * k3y, &k4x, &k4y);                                            \
+        x[j] = px + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);                                    \
+        x[j + 1] = py + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);                                \
+    }                                                                                                 \
+    /* the steps over n points, two at a time (then an odd last one) */                               \
+    SW_CLONES static unsigned NAME##_euler(const void *params, double t, int n, double *restrict x,   \
+                                           double h, unsigned elim)                                   \
+    {                                                                                                 \
+        const COEF c = PREP(params, t);                                                               \
+        double top[4] = { 0.0, 0.0, 0.0, 0.0 };                                                       \
+        int i = 0;                                                                                    \
+        for (; i + 2 <= n; i += 2) {                                                                  \
+            for (int e = 0; e < 2; e++)                                                               \
+                NAME##_euler1(&c, x, 2 * (i + e), h);                                                 \
+            sw_point_beyond2(top, x + 2 * i);                                                         \
+        }                                                                                             \
+        if (i < n)                                                                                    \
+            NAME##_euler1(&c, x, 2 * i, h);                                                           \
+        return sw_point_beyond_end(top, x + 2 * i, i < n, elim);                                      \
+    }                                                                                                 \
+    SW_CLONES static unsigned NAME##_rk4(const void *params, double t, int n, double *restrict x,     \
+                                         double h, unsigned elim)                                     \
+    {                                                                                                 \
+        const COEF c1 = PREP(params, t), c2 = PREP(params, t + 0.5 * h), c4 = PREP(params, t + h);    \
+        double top[4] = { 0.0, 0.0, 0.0, 0.0 };                                                       \
+        int i = 0;                                                                                    \
+        for (; i + 2 <= n; i += 2) {                                                                  \
+            for (int e = 0; e < 2; e++)                                                               \
+                NAME##_rk41(&c1, &c2, &c4, x, 2 * (i + e), h);                                        \
+            sw_point_beyond2(top, x + 2 * i);                                                         \
+        }                                                                                             \
+        if (i < n)                                                                                    \
+            NAME##_rk41(&c1, &c2, &c4, x, 2 * i, h);                                                  \
+        return sw_point_beyond_end(top, x + 2 * i, i < n, elim);                                      \
+    }                                                                                                 \
     static const sw_point_field NAME##_point = { NAME##_field, NAME##_euler, NAME##_rk4 }
 
 #endif

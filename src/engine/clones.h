@@ -14,4 +14,8 @@
 #define SW_CLONES
 #endif
 
+/* A hot helper inlined into each clone that calls it: compiled for each
+ * target with its caller, and called without a dispatch. */
+#define SW_INLINE static inline __attribute__((always_inline))
+
 #endif

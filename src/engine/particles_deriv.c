@@ -87,13 +87,17 @@ int swp_model_init(sw_particles *p)
         return SW_ENOMEM;
     p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
-    return p->model->scratch && p->model->first ? SW_OK : SW_ENOMEM;
+    if (!p->model->scratch || !p->model->first)
+        return SW_ENOMEM;
+    for (int i = 0; i < 5 * BLOCK; i++) /* the padding's d = (1, 1): a length, never tiny */
+        p->model->scratch[i] = 1.0;
+    return SW_OK;
 }
 
 int swp_model_springs(sw_particles *p, int nsprings)
 {
     struct sw_particles_model *m = p->model;
-    size_t n = (size_t)nsprings;
+    size_t n = (size_t)nsprings, n4 = (n + 3) & ~(size_t)3; /* the force loop's padding */
     int **irows[] = { &m->a, &m->b, &m->spring };
     size_t ilen[] = { n, n, 2 * n };
     for (size_t r = 0; r < sizeof irows / sizeof irows[0]; r++) {
@@ -103,8 +107,9 @@ int swp_model_springs(sw_particles *p, int nsprings)
         *irows[r] = q;
     }
     double **rows[] = { &m->k, &m->c, &m->rest, &m->ax, &m->ay, &m->force, &m->sign };
+    size_t len[] = { n4, n4, n4, n, n, 2 * n4, 2 * n };
     for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
-        double *q = realloc(*rows[r], (r >= 5 ? 2 * n : n) * sizeof *q);
+        double *q = realloc(*rows[r], len[r] * sizeof *q);
         if (!q)
             return SW_ENOMEM;
         *rows[r] = q;
@@ -202,6 +207,8 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
         }
     /* Each particle's list, in spring order: count, then place. */
     int total = m->npair + m->nanchor;
+    for (int j = total; j < ((total + 3) & ~3); j++) /* the padding: no force */
+        m->k[j] = m->c[j] = m->rest[j] = 0.0;
     memset(m->first, 0, (size_t)(p->n + 1) * sizeof *m->first);
     for (int j = 0; j < total; j++) {
         m->first[m->a[j] / 2 + 1]++;
@@ -266,13 +273,14 @@ static inline unsigned long long small_or_nan(double l2)
  * found after the loop (their squares were kept in len2) and redone; the
  * loop flags whether there are any with integer operations on l2's bits,
  * which vectorise (see small_or_nan), so the usual block is not scanned. */
-SW_CLONES static void block_forces(int len, const double *restrict k, const double *restrict c,
-                         const double *restrict rest, const double *restrict d, const double *restrict dv,
-                         double *restrict force, double *restrict len2, int damped)
+SW_INLINE void block_forces(int len, const double *restrict k, const double *restrict c, const double *restrict rest,
+                            const double *restrict d, const double *restrict dv, double *restrict force,
+                            double *restrict len2, int damped)
 {
     unsigned long long flag = 0;
+    int len4 = (len + 3) & ~3; /* whole vectors: the padding is computed and never read */
     if (damped)
-        for (int j = 0; j < len; j++) {
+        for (int j = 0; j < len4; j++) {
             double dx = d[2 * j], dy = d[2 * j + 1];
             double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
             double ux = dx / q, uy = dy / q;
@@ -283,7 +291,7 @@ SW_CLONES static void block_forces(int len, const double *restrict k, const doub
             force[2 * j + 1] = -mag * uy;
         }
     else
-        for (int j = 0; j < len; j++) {
+        for (int j = 0; j < len4; j++) {
             double dx = d[2 * j], dy = d[2 * j + 1];
             double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
             double ux = dx / q, uy = dy / q;
@@ -310,15 +318,19 @@ SW_CLONES static void block_forces(int len, const double *restrict k, const doub
 
 /* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are
  * paired; and dv = v_a - v_b (v_a for anchored ones) when damped. */
-SW_CLONES static void block_differences(const struct sw_particles_model *m, const double *restrict x,
-                              const double *restrict v, int lo, int mid, int hi, double *restrict d,
-                              double *restrict dv)
+SW_INLINE void block_differences(const struct sw_particles_model *m, const double *restrict x,
+                                 const double *restrict v, int lo, int mid, int hi, double *restrict d,
+                                 double *restrict dv)
 {
     const int *restrict ia = m->a, *restrict ib = m->b;
     const double *restrict ax = m->ax, *restrict ay = m->ay;
-    if (m->stride) { /* neighbours in order: two contiguous reads */
+    if (m->stride) {
+        /* neighbours in order: two contiguous reads, in whole vectors (the
+         * two components past the last are the next particle's, or the
+         * velocities' first: x is the first half of the state; what they
+         * write is the anchored springs' or the padding's, below) */
         const double *restrict xa = x + m->a0 + 2 * lo, *restrict xb = x + m->b0 + 2 * lo;
-        for (int t = 0; t < 2 * (mid - lo); t++)
+        for (int t = 0, len4 = (2 * (mid - lo) + 3) & ~3; t < len4; t++)
             d[t] = xa[t] - xb[t];
     } else {
         for (int j = lo; j < mid; j++)
@@ -343,7 +355,7 @@ SW_CLONES static void block_differences(const struct sw_particles_model *m, cons
 }
 
 /* Every spring's force on its particle a, into m->force. */
-SW_CLONES static void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
+SW_INLINE void spring_forces(const struct sw_particles_model *m, const double *x, const double *v)
 {
     double *d = m->scratch, *dv = d + 2 * BLOCK, *len2 = dv + 2 * BLOCK;
     int total = m->npair + m->nanchor;
@@ -394,9 +406,9 @@ static inline v2d spring_sum(const int *restrict first, const int *restrict spri
  * FROM_SPRINGS; read at the run's fixed distances when regular), the forces
  * so far in f (FROM_F) or 0 (FROM_NONE), for the kinds present. Called with
  * constant arguments, so each combination compiles to its own loop. */
-static inline __attribute__((always_inline)) void last_range(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
-                              double *restrict xdot, double *restrict f, int from, int gravity, int drag, int i0,
-                              int i1, int regular)
+SW_INLINE void last_range(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                          double *restrict xdot, double *restrict f, int from, int gravity, int drag, int i0, int i1,
+                          int regular)
 {
     const double *restrict mass = p->mass, *restrict inv = p->inv_mass, *restrict sign = m->sign,
                            *restrict force = m->force;
@@ -426,8 +438,8 @@ static inline __attribute__((always_inline)) void last_range(const sw_particles 
 /* The last pass over the regular run [i0, i1), two particles at a time
  * (each lane the same operations as last_range's, so the same bits); an
  * odd last one by last_range. */
-static inline __attribute__((always_inline)) void last_run(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
-                            double *restrict xdot, double *restrict f, int gravity, int drag, int i0, int i1)
+SW_INLINE void last_run(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                        double *restrict xdot, double *restrict f, int gravity, int drag, int i0, int i1)
 {
     const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
     const double *restrict force = m->force;
@@ -455,8 +467,8 @@ static inline __attribute__((always_inline)) void last_run(const sw_particles *p
 }
 
 /* The last pass over every particle, the regular run apart. */
-static inline __attribute__((always_inline)) void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
-                             double *restrict xdot, double *restrict f, int from, int gravity, int drag)
+SW_INLINE void last_pass(const sw_particles *p, const struct sw_particles_model *m, const double *restrict v,
+                         double *restrict xdot, double *restrict f, int from, int gravity, int drag)
 {
     int lo = m->run_lo, hi = m->run_hi;
     if (from != FROM_SPRINGS || hi == lo) {

@@ -30,7 +30,7 @@
  * maximum is exact) kept if larger. Two vector operations per pair, on
  * values still in registers, where a separate test pass or a test per
  * component cost Euler on the vortex half again its update. */
-static inline __attribute__((always_inline)) double sw_point_exponent(double v)
+SW_INLINE double sw_point_exponent(double v)
 {
     unsigned long long bits;
     memcpy(&bits, &v, sizeof bits);
@@ -39,7 +39,7 @@ static inline __attribute__((always_inline)) double sw_point_exponent(double v)
     return v;
 }
 
-static inline __attribute__((always_inline)) void sw_point_beyond2(double top[4], const double *x)
+SW_INLINE void sw_point_beyond2(double top[4], const double *x)
 {
     for (int e = 0; e < 4; e++) {
         double a = sw_point_exponent(x[e]);
@@ -67,17 +67,15 @@ static inline unsigned sw_point_beyond_end(const double top[4], const double *x,
             POINT(&c, x[2 * i], x[2 * i + 1], &v[2 * i], &v[2 * i + 1]);                              \
     }                                                                                                 \
     /* one point's Euler step, and its RK4 step (c1, c2, c4: at t, t + h/2, t + h) */                 \
-    static inline __attribute__((always_inline)) void NAME##_euler1(const COEF *c, double *x, int j,  \
-                                                                    double h)                         \
+    SW_INLINE void NAME##_euler1(const COEF *c, double *x, int j, double h)                           \
     {                                                                                                 \
         double px = x[j], py = x[j + 1], vx, vy;                                                      \
         POINT(c, px, py, &vx, &vy);                                                                   \
         x[j] = px + h * vx;                                                                           \
         x[j + 1] = py + h * vy;                                                                       \
     }                                                                                                 \
-    static inline __attribute__((always_inline)) void NAME##_rk41(const COEF *c1, const COEF *c2,     \
-                                                                  const COEF *c4, double *x, int j,   \
-                                                                  double h)                           \
+    SW_INLINE void NAME##_rk41(const COEF *c1, const COEF *c2, const COEF *c4, double *x, int j,      \
+                               double h)                                                              \
     {                                                                                                 \
         double px = x[j], py = x[j + 1], k1x, k1y, k2x, k2y, k3x, k3y, k4x, k4y;                      \
         POINT(c1, px, py, &k1x, &k1y);                                                                \

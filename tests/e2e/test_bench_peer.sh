@@ -3,8 +3,9 @@
 # candidate's reported error is within its target, stepwise's methods all
 # reach it, the reference is cross-checked far below the target, and, when
 # the benchmark was built with GSL, the side-by-side table has a row per
-# problem with a time ratio and an evaluations ratio. Timings are printed,
-# never checked.
+# problem with a time ratio, an evaluations ratio and the derivative's
+# floor (a number, or - for steps fused with the field). Timings are
+# printed, never checked.
 set -u
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
 fail() { echo "FAIL: $*"; exit 1; }
@@ -21,6 +22,9 @@ done
 echo "$out" | grep -E 'differs from it by' | awk '{ if ($NF + 0 > 1e-9) exit 1 }' \
     || fail "a reference is not within 1e-9 of its cross-check: $out"
 if echo "$out" | grep -q 'against GSL'; then
-    [ "$(echo "$out" | grep -c '^  | [a-z]* n = [0-9]*, error 1e-06 | ')" -eq 2 ] || fail "no side-by-side rows: $out"
+    table=$(echo "$out" | grep '^  | [a-z]* n = [0-9]*, error 1e-06 | ')
+    [ "$(echo "$table" | grep -c .)" -eq 2 ] || fail "no side-by-side rows: $out"
+    echo "$table" | awk -F'|' 'NF != 9 || $7 !~ /^ ([0-9]+\.[0-9][0-9]|-) $/ { bad = 1 } END { exit bad }' \
+        || fail "a side-by-side row without its columns (ratio, evaluations, floor, verdict): $table"
 fi
 echo "bench peer: ok"

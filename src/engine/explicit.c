@@ -12,7 +12,7 @@
 /* A method's step over a slice of len components (y points at it; the
  * work vectors are slice-local) or over the whole state; returns non-zero
  * when its final loop saw a component at or beyond the limit exponent elim
- * (see sw_state_beyond). */
+ * (see sw_beyond_bits). */
 typedef unsigned range_step(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int len, unsigned elim);
 
 /* Run a step: the system's own fused step when it offers one for this

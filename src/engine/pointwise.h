@@ -34,7 +34,7 @@ SW_INLINE double sw_point_exponent(double v)
 {
     unsigned long long bits;
     memcpy(&bits, &v, sizeof bits);
-    bits &= 0x7FF0000000000000ULL;
+    bits &= SW_EXPONENT_BITS;
     memcpy(&v, &bits, sizeof v);
     return v;
 }

@@ -50,19 +50,6 @@ int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                  const double *r, double *z);
 
-/* 1 when some y_i in [lo, hi) is non-finite or has |y_i| >= 2^(limit_exp -
- * 1023): a test on the exponent field alone, which compilers vectorise. */
-static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limit_exp)
-{
-    unsigned over = 0;
-    for (int i = lo; i < hi; i++) {
-        unsigned long long bits;
-        memcpy(&bits, &y[i], sizeof bits);
-        over |= (unsigned)((bits >> 52) & 0x7FF) >= limit_exp;
-    }
-    return over != 0;
-}
-
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,
     sw_step_rk4, sw_step_verlet;                       /* explicit.c */
@@ -101,16 +88,28 @@ static inline unsigned long long sw_beyond_add(unsigned elim)
     return (unsigned long long)(0x800u - elim) << 52;
 }
 
+#define SW_EXPONENT_BITS 0x7FF0000000000000ULL /* a double's exponent field */
+
 static inline unsigned long long sw_beyond_bits(double v, unsigned long long add)
 {
     unsigned long long bits;
     memcpy(&bits, &v, sizeof bits);
-    return (bits & 0x7FF0000000000000ULL) + add;
+    return (bits & SW_EXPONENT_BITS) + add;
 }
 
 static inline unsigned sw_beyond_any(unsigned long long ored)
 {
     return (unsigned)(ored >> 63);
+}
+
+/* 1 when some y_i in [lo, hi) is non-finite or has |y_i| >= 2^(limit_exp -
+ * 1023): the same test over a range, for the sim's own rescan. */
+static inline int sw_state_beyond(const double *y, int lo, int hi, unsigned limit_exp)
+{
+    unsigned long long over = 0, add = sw_beyond_add(limit_exp);
+    for (int i = lo; i < hi; i++)
+        over |= sw_beyond_bits(y[i], add);
+    return (int)sw_beyond_any(over);
 }
 
 /* Largest |v_i| over n components; NaN when any is NaN (so a failed

@@ -279,28 +279,18 @@ SW_INLINE void block_forces(int len, const double *restrict k, const double *res
 {
     unsigned long long flag = 0;
     int len4 = (len + 3) & ~3; /* whole vectors: the padding is computed and never read */
-    if (damped)
-        for (int j = 0; j < len4; j++) {
-            double dx = d[2 * j], dy = d[2 * j + 1];
-            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
-            double ux = dx / q, uy = dy / q;
-            double mag = k[j] * (l - rest[j]) + c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
-            len2[j] = l2;
-            flag |= small_or_nan(l2);
-            force[2 * j] = -mag * ux;
-            force[2 * j + 1] = -mag * uy;
-        }
-    else
-        for (int j = 0; j < len4; j++) {
-            double dx = d[2 * j], dy = d[2 * j + 1];
-            double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
-            double ux = dx / q, uy = dy / q;
-            double mag = k[j] * (l - rest[j]);
-            len2[j] = l2;
-            flag |= small_or_nan(l2);
-            force[2 * j] = -mag * ux;
-            force[2 * j + 1] = -mag * uy;
-        }
+    for (int j = 0; j < len4; j++) {
+        double dx = d[2 * j], dy = d[2 * j + 1];
+        double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
+        double ux = dx / q, uy = dy / q;
+        double mag = k[j] * (l - rest[j]);
+        if (damped)
+            mag += c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
+        len2[j] = l2;
+        flag |= small_or_nan(l2);
+        force[2 * j] = -mag * ux;
+        force[2 * j + 1] = -mag * uy;
+    }
     for (int j = 0; flag >> 63 && j < len; j++) {
         if (len2[j] >= 1e-290)
             continue;
@@ -362,7 +352,10 @@ SW_INLINE void spring_forces(const struct sw_particles_model *m, const double *x
     for (int lo = 0; lo < total; lo += BLOCK) {
         int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
         block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
-        block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, m->damped);
+        if (m->damped) /* (constant arguments: a loop each) */
+            block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, 1);
+        else
+            block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, 0);
     }
 }
 

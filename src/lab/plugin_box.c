@@ -75,23 +75,24 @@ static step_box *child_box;
 static sw_ode child_ode_copy;
 static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "deriv_part", "ctx", "fused_euler",
                                           "fused_rk4" };
+enum { ODE_FIELDS = sizeof ode_fields / sizeof ode_fields[0] };
 
 /* The ode's fields in ode_fields' order, as numbers to compare. */
-static void ode_values(const sw_ode *o, long v[8])
+static void ode_values(const sw_ode *o, long v[ODE_FIELDS])
 {
-    long f[8] = { o->dim, o->order, (long)(uintptr_t)o->deriv, (long)(uintptr_t)o->solve,
-                  (long)(uintptr_t)o->deriv_part, (long)(uintptr_t)o->ctx, (long)(uintptr_t)o->fused_euler,
-                  (long)(uintptr_t)o->fused_rk4 };
+    long f[ODE_FIELDS] = { o->dim, o->order, (long)(uintptr_t)o->deriv, (long)(uintptr_t)o->solve,
+                           (long)(uintptr_t)o->deriv_part, (long)(uintptr_t)o->ctx,
+                           (long)(uintptr_t)o->fused_euler, (long)(uintptr_t)o->fused_rk4 };
     memcpy(v, f, sizeof f);
 }
 
 /* Which ode field differs from the copy taken before the step; -1 none. */
 static int ode_changed(const sw_ode *o, long *was, long *now)
 {
-    long a[8], b[8];
+    long a[ODE_FIELDS], b[ODE_FIELDS];
     ode_values(&child_ode_copy, a);
     ode_values(o, b);
-    for (int i = 0; i < 8; i++)
+    for (int i = 0; i < ODE_FIELDS; i++)
         if (a[i] != b[i]) {
             *was = a[i];
             *now = b[i];

@@ -1,4 +1,4 @@
-/* The work–precision sweep (src/lab/bench.c): the orders it fits on spring
+/* The work–precision sweep (src/measure/bench.c): the orders it fits on spring
  * against theory, the fit itself on synthetic data with a known slope, the
  * rk45 reference against an independent rk4 run, the cheapest-method pick,
  * and the ASCII, CSV and SVG outputs (the SVG parsed by a small XML checker
@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "stepwise/sim.h"
-#include "lab/bench.h"
+#include "measure/bench.h"
 
 static const sw_integrator *method(const char *name)
 {

@@ -10,11 +10,11 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "lab/assignment.h"
-#include "lab/explain.h"
-#include "lab/plugin.h"
-#include "lab/sandbox.h"
-#include "lab/verdict.h"
+#include "grade/assignment.h"
+#include "grade/explain.h"
+#include "plugin/plugin.h"
+#include "plugin/sandbox.h"
+#include "grade/verdict.h"
 #include "stepwise/stepwise.h"
 
 static char tmpdir[64];

@@ -12,7 +12,7 @@
 
 #include "app/runner.h"
 #include "canvas_help.h"
-#include "lab/bench.h"
+#include "measure/bench.h"
 #include "render/screen.h"
 #include "stepwise/stepwise.h"
 

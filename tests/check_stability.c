@@ -1,4 +1,4 @@
-/* The stability search (src/lab/stability.c) against closed forms: on the
+/* The stability search (src/measure/stability.c) against closed forms: on the
  * undamped spring ω = √(k/m), and the limits of ω·Δt on x'' = -ω²x are
  * verlet 2 and rk4 2√2 (|R(iy)|² = 1 - y⁶/72 + y⁸/576 = 1 at y = 2√2);
  * euler, midpoint and heun grow at every step (|R(iy)|² = 1 + y², 1 + y⁴/4);
@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "stepwise/sim.h"
-#include "lab/stability.h"
+#include "measure/stability.h"
 #include "app/app.h"
 
 static const sw_scene *spring(double *p, double k, double m, double c)

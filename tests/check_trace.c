@@ -12,8 +12,8 @@
 
 #include "stepwise/stepwise.h"
 #include "stepwise/sim.h"
-#include "lab/check.h"
-#include "lab/trace.h"
+#include "grade/check.h"
+#include "trace/trace.h"
 
 static char tmpdir[64];
 

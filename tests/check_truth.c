@@ -9,8 +9,8 @@
 #include <string.h>
 
 #include "app/app.h"
-#include "lab/bench.h"
-#include "lab/stability.h"
+#include "measure/bench.h"
+#include "measure/stability.h"
 #include "sim/truth.h"
 #include "stepwise/stepwise.h"
 

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The include-direction test: every #include "..." in src/ and include/
 # must point down the layers of docs/architecture.md (or stay in its own
-# folder); lab/ and lesson/ must not include each other; only tui/ includes
+# folder); plugin/ and lesson/ must not include each other, nor trace/ and
+# measure/; only tui/ includes
 # curses; nothing includes tests/. Prints each violation and exits 1.
 #
 # usage: sh tests/layers.sh [ROOT]      (ROOT: the repository, default .)
@@ -12,8 +13,9 @@ set -u
 rank() {
     case "$1" in
         util) echo 0 ;; engine) echo 1 ;; scenes) echo 2 ;; sim) echo 3 ;;
-        lab|lesson) echo 4 ;; app) echo 5 ;; render) echo 6 ;; tui) echo 7 ;;
-        cli) echo 8 ;; main) echo 9 ;; *) echo "" ;;
+        plugin|lesson) echo 4 ;; trace|measure) echo 5 ;; grade) echo 6 ;;
+        app) echo 7 ;; render) echo 8 ;; tui) echo 9 ;; cli) echo 10 ;; main) echo 11 ;;
+        *) echo "" ;;
     esac
 }
 
@@ -80,7 +82,7 @@ check_tree() {
 if [ "${1:-}" = "--self-test" ]; then
     t=$(mktemp -d)
     trap 'rm -rf "$t"' EXIT
-    mkdir -p "$t/src/engine" "$t/src/app" "$t/src/lab" "$t/src/lesson" "$t/include/stepwise"
+    mkdir -p "$t/src/engine" "$t/src/app" "$t/src/plugin" "$t/src/lesson" "$t/include/stepwise"
     echo '#include "stepwise/base.h"' > "$t/src/engine/a.h"
     : > "$t/include/stepwise/base.h"
     echo '#include "engine/a.h"' > "$t/src/app/b.h"
@@ -90,8 +92,8 @@ if [ "${1:-}" = "--self-test" ]; then
         check_tree "$t" >/dev/null && { echo "layers self-test: '$bad' in engine/ passes"; exit 1; }
     done
     rm "$t/src/engine/c.c"
-    echo '#include "lesson/d.h"' > "$t/src/lab/e.c"; : > "$t/src/lesson/d.h"
-    check_tree "$t" >/dev/null && { echo "layers self-test: lab/ including lesson/ passes"; exit 1; }
+    echo '#include "lesson/d.h"' > "$t/src/plugin/e.c"; : > "$t/src/lesson/d.h"
+    check_tree "$t" >/dev/null && { echo "layers self-test: plugin/ including lesson/ passes"; exit 1; }
     echo "layers self-test: ok"
     exit 0
 fi

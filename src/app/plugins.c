@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "lab/plugin.h"
+#include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
 void sw_app_plugin_guard(sw_app *a)

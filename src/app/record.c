@@ -10,7 +10,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "lab/trace.h"
+#include "trace/trace.h"
 #include "stepwise/base.h"
 
 static int replay(sw_app *a, long steps, char *err, size_t errlen)

@@ -1,6 +1,6 @@
 /* `stepwise bench`: the work–precision report (error against cost for each
  * integrator on each scene that has an exact solution or a reference). The
- * engine benchmark is its own program (bench/, `make bench`). The numbers come from src/lab/bench.c;
+ * engine benchmark is its own program (bench/, `make bench`). The numbers come from src/measure/bench.c;
  * this file parses, prints, and writes files whole or not at all (util/outfile). */
 #include "cli/cli.h"
 
@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lab/bench.h"
+#include "measure/bench.h"
 #include "util/clock.h"
 #include "util/names.h"
 #include "util/outfile.h"

@@ -1,7 +1,7 @@
 /* `stepwise check`: grade a trace against a reference regenerated from its
  * metadata or from an assignment, against another trace (--against), or
  * grade a plugin integrator against a built-in one. The check itself is
- * lab/verdict.c; this file parses options and prints the plain or JSON
+ * grade/verdict.c; this file parses options and prints the plain or JSON
  * report (cli/check_report.c). Exit 0 pass, 1 mismatch, 2 unusable input;
  * with --json every outcome, option errors included, is a JSON object. */
 #include "cli/cli.h"
@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "cli/check_report.h"
-#include "lab/verdict.h"
+#include "grade/verdict.h"
 
 static const char check_help[] =
     "usage: stepwise check TRACE [--assignment A | --against REF | --reference NAME]\n"

@@ -3,7 +3,7 @@
 #ifndef SW_CLI_CHECK_REPORT_H
 #define SW_CLI_CHECK_REPORT_H
 
-#include "lab/verdict.h"
+#include "grade/verdict.h"
 
 /* Print v (plain, or JSON) on stdout, the error line on stderr for an
  * unusable input; returns the exit status: 0, 1, or 2 (also when stdout

@@ -55,7 +55,7 @@ int sw_cli_long(const char *flag, const char *text, long min, long max, long *ou
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */
 int sw_cli_add_set(sw_run_opts *o, const char *assignment);
 /* Load a --plugin shared object (or C source, built first) and register
- * its integrator; the plugin runs in child processes (lab/plugin.h). */
+ * its integrator; the plugin runs in child processes (plugin/plugin.h). */
 int sw_cli_plugin(const char *path);
 /* Compile a plugin's C source with the documented flags into a private
  * temporary directory (removed at exit); the .so's path into so. */

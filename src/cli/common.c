@@ -11,8 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "lab/plugin.h"
-#include "lab/trace.h"
+#include "plugin/plugin.h"
+#include "trace/trace.h"
 #include "util/escape.h"
 #include "util/num.h"
 

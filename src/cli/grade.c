@@ -18,8 +18,8 @@
 
 #include "cli/check_report.h"
 #include "cli/grade.h"
-#include "lab/sandbox.h"
-#include "lab/verdict.h"
+#include "plugin/sandbox.h"
+#include "grade/verdict.h"
 #include "util/signals.h"
 
 static const char grade_help[] =

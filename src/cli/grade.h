@@ -3,9 +3,9 @@
 #ifndef SW_CLI_GRADE_H
 #define SW_CLI_GRADE_H
 
-#include "lab/assignment.h"
-#include "lab/sandbox.h"
-#include "lab/trace.h"
+#include "grade/assignment.h"
+#include "plugin/sandbox.h"
+#include "trace/trace.h"
 
 typedef struct grade_entry {
     char *path;

@@ -12,7 +12,7 @@
 
 #include "cli/cli.h"
 #include "cli/json.h"
-#include "lab/plugin.h"
+#include "plugin/plugin.h"
 #include "util/outfile.h"
 
 int grade_list_add(grade_list *l, const char *path, int plugin)

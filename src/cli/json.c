@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "lab/assignment.h"
+#include "grade/assignment.h"
 
 void sw_json_str(FILE *out, const char *s)
 {

@@ -13,8 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "lab/plugin.h"
-#include "lab/sandbox.h"
+#include "plugin/plugin.h"
+#include "plugin/sandbox.h"
 
 /* Seconds a compiler may take for one plugin. */
 #define BUILD_SECONDS 60.0

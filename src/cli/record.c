@@ -6,9 +6,9 @@
 #include <getopt.h>
 #include <string.h>
 
-#include "lab/plugin.h"
-#include "lab/trace.h"
-#include "lab/verdict.h"
+#include "plugin/plugin.h"
+#include "trace/trace.h"
+#include "grade/verdict.h"
 #include "util/signals.h"
 
 static const char record_help[] =

@@ -1,6 +1,6 @@
 /* `stepwise stability SCENE`: each method's largest stable step on a scene,
  * in theory (the truth module: every mode of the linearisation, along the
- * run) and measured (bisection on runs, src/lab/stability.c), side by side,
+ * run) and measured (bisection on runs, src/measure/stability.c), side by side,
  * with the reason wherever they differ. `--markdown` prints the same as a
  * table; `stepwise stability --all --markdown` is docs/stability.md's. */
 #include "cli/cli.h"
@@ -8,7 +8,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "lab/stability.h"
+#include "measure/stability.h"
 #include "sim/truth.h"
 
 static const char usage_text[] =

@@ -18,8 +18,8 @@
 
 #include "app/app.h"
 #include "cli/check_report.h"
-#include "lab/measure.h"
-#include "lab/verdict.h"
+#include "measure/measure.h"
+#include "grade/verdict.h"
 #include "util/signals.h"
 
 static const char try_help[] =

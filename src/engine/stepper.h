@@ -25,7 +25,7 @@ struct sw_stepper {
     long accepted;        /* adaptive: accepted steps */
     long rejected;        /* adaptive: rejected trial steps */
     long newton_iters;    /* implicit: Newton iterations, summed */
-    void *plugin;         /* SW_PLUGIN methods: the plugin's sandbox (lab/plugin_box.c) */
+    void *plugin;         /* SW_PLUGIN methods: the plugin's sandbox (plugin/plugin_box.c) */
     void (*release)(sw_stepper *s); /* frees what `plugin` holds; called by sw_stepper_free */
     unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
     int checked;          /* the last step tested the whole state against limit_exp */

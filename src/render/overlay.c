@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lab/bench.h"
+#include "measure/bench.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 

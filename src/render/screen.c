@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lab/bench.h"
+#include "measure/bench.h"
 #include "stepwise/base.h"
 #include "util/utf8.h"
 

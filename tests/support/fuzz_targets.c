@@ -10,8 +10,8 @@
 
 #include "app/app.h"
 #include "app/runner.h"
-#include "lab/check.h"
-#include "lab/trace.h"
+#include "grade/check.h"
+#include "trace/trace.h"
 #include "lesson/lesson.h"
 #include "render/canvas.h"
 #include "render/draw.h"

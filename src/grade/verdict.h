@@ -4,15 +4,15 @@
  * with another trace, or a plugin run with a built-in one; on a failure the
  * usual mistakes are tried; a plugin that crashes, loops or overruns is a
  * failure with the step, never a pass. */
-#ifndef SW_LAB_VERDICT_H
-#define SW_LAB_VERDICT_H
+#ifndef SW_GRADE_VERDICT_H
+#define SW_GRADE_VERDICT_H
 
 #include <stddef.h>
 
-#include "lab/assignment.h"
-#include "lab/check.h"
-#include "lab/explain.h"
-#include "lab/plugin.h"
+#include "grade/assignment.h"
+#include "grade/check.h"
+#include "grade/explain.h"
+#include "plugin/plugin.h"
 
 #define SW_VERDICT_DIFFS 16
 /* Budget for regenerating a run: state components x derivative evaluations

@@ -2,7 +2,7 @@
  * (one write(2) per row), and the real name only ever holds a finished
  * trace (util/outfile: a temporary renamed on commit; standard output,
  * devices and FIFOs are streamed). */
-#include "lab/trace.h"
+#include "trace/trace.h"
 
 #include <errno.h>
 #include <math.h>

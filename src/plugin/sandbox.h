@@ -2,8 +2,8 @@
  * fork with CPU-time, memory and output limits, talk over pipes with a
  * watchdog on every wait, and say in words how a child ended. Pure C, no
  * printing; POSIX (Linux: the child also dies with its parent). */
-#ifndef SW_LAB_SANDBOX_H
-#define SW_LAB_SANDBOX_H
+#ifndef SW_PLUGIN_SANDBOX_H
+#define SW_PLUGIN_SANDBOX_H
 
 #include <signal.h>
 #include <stddef.h>

@@ -1,7 +1,7 @@
 /* A trace's metadata: "# key: value" lines, checked one by one and then as
  * a whole (required keys, parameters within range, a run within limits).
  * Private to the reader (trace.c), through trace_read.h. */
-#include "lab/trace_read.h"
+#include "trace/trace_read.h"
 
 #include <errno.h>
 #include <math.h>

@@ -9,7 +9,7 @@
  * address. The pad before each vector holds a canary checked after every
  * step, and the ode's fields are compared with a copy. Invariant: the
  * parent's state changes only from a step the child finished cleanly. */
-#include "lab/plugin_box.h"
+#include "plugin/plugin_box.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -23,7 +23,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include "lab/sandbox.h"
+#include "plugin/sandbox.h"
 
 #define GUARD_PAGES 16
 /* Each side spins this long on the shared counters before it sleeps on the

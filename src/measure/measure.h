@@ -2,8 +2,8 @@
  * and its stability limit on the undamped spring, where the exact solution
  * and the theory (x'' = -ω²x) are known. Used to put a plugin's measured
  * figures beside the ones it claims (check, try). */
-#ifndef SW_LAB_MEASURE_H
-#define SW_LAB_MEASURE_H
+#ifndef SW_MEASURE_MEASURE_H
+#define SW_MEASURE_MEASURE_H
 
 #include <stddef.h>
 

@@ -3,7 +3,7 @@
  * back a copy of what it found; names and labels are checked before
  * anything is registered. Invariant: every byte a plugin chose reaches a
  * message only through sw_escape (util/escape.h). */
-#include "lab/plugin.h"
+#include "plugin/plugin.h"
 
 #include <ctype.h>
 #include <dlfcn.h>
@@ -16,8 +16,8 @@
 #include <strings.h>
 #include <sys/stat.h>
 
-#include "lab/plugin_box.h"
-#include "lab/sandbox.h"
+#include "plugin/plugin_box.h"
+#include "plugin/sandbox.h"
 #include "util/num.h"
 
 static sw_plugin_entry entries[SW_PLUGIN_MAX];

@@ -2,7 +2,7 @@
  * trace's header is an assignment), then the assignment's own keys. The
  * differences from a trace's header are computed on effective values: a
  * parameter a trace leaves out has the scene's default. */
-#include "lab/assignment.h"
+#include "grade/assignment.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* Work-precision output: the log-log plot as text (for the terminal and the
  * UI's `w` overlay), and every point as CSV or the plots as SVG. Reads a
  * finished sw_bench_report; measures nothing. */
-#include "lab/bench.h"
+#include "measure/bench.h"
 
 #include <math.h>
 #include <stdio.h>

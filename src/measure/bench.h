@@ -3,8 +3,8 @@
  * sweep of step sizes; the observed order fitted from the sweep; the cheapest
  * method per error level; and the plot as ASCII text, CSV or SVG. Every run
  * is an sw_sim advanced with sw_sim_run_until, as in the UI and the recorder. */
-#ifndef SW_LAB_BENCH_H
-#define SW_LAB_BENCH_H
+#ifndef SW_MEASURE_BENCH_H
+#define SW_MEASURE_BENCH_H
 
 #include <stddef.h>
 #include <stdio.h>

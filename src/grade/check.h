@@ -2,12 +2,12 @@
  * row by row and column by column, numdiff-style: a value passes when
  * |got - expected| <= atol + rtol·|expected|. Rows come from a file or from
  * a running sim, streamed; nothing holds a whole trace. */
-#ifndef SW_LAB_CHECK_H
-#define SW_LAB_CHECK_H
+#ifndef SW_GRADE_CHECK_H
+#define SW_GRADE_CHECK_H
 
 #include <stddef.h>
 
-#include "lab/trace.h"
+#include "trace/trace.h"
 
 /* Default tolerances (measured; see docs/trace-format.md, "Tolerances"). */
 #define SW_CHECK_RTOL 1e-9

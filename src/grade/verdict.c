@@ -2,14 +2,14 @@
  * exit, loop, overrun) on either side is a failure, whatever the values
  * say; a header that differs from the assignment is a failure; memory is
  * two rows plus the explainer's bounded prefix. */
-#include "lab/verdict.h"
+#include "grade/verdict.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "lab/measure.h"
+#include "measure/measure.h"
 #include "stepwise/stepwise.h"
 
 void sw_check_request_init(sw_check_request *req)

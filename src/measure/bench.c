@@ -4,7 +4,7 @@
  * its evaluations and its wall time. Invariant: every run is an sw_sim
  * advanced by sw_sim_run_until, exactly as the UI and the recorder advance
  * it; this file measures and fits (bench_plot.c renders), it never prints. */
-#include "lab/bench.h"
+#include "measure/bench.h"
 
 #include "sim/truth.h"
 

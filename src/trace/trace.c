@@ -2,7 +2,7 @@
  * rule and the columns are in trace_run.c, the writer in trace_write.c, the
  * metadata parser in trace_meta.c). Invariant: the reader's memory is
  * bounded by the scene, not by the file; every error names file and line. */
-#include "lab/trace_read.h"
+#include "trace/trace_read.h"
 
 #include <errno.h>
 #include <math.h>

@@ -1,10 +1,10 @@
-/* Private to lab/plugin.c and lab/plugin_box.c: the registry of loaded
+/* Private to plugin/plugin.c and plugin/plugin_box.c: the registry of loaded
  * plugins and the sandboxed step every plugin method runs through. */
-#ifndef SW_LAB_PLUGIN_BOX_H
-#define SW_LAB_PLUGIN_BOX_H
+#ifndef SW_PLUGIN_PLUGIN_BOX_H
+#define SW_PLUGIN_PLUGIN_BOX_H
 
 #include "engine/stepper.h"
-#include "lab/plugin.h"
+#include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
 typedef struct sw_plugin_entry {

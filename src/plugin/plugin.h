@@ -6,8 +6,8 @@
  * that exits, crashes, loops, overruns its vectors or writes to the ode is
  * reported as such with the step; it can never take stepwise down or pass
  * for a correct method. Pure C, no printing. */
-#ifndef SW_LAB_PLUGIN_H
-#define SW_LAB_PLUGIN_H
+#ifndef SW_PLUGIN_PLUGIN_H
+#define SW_PLUGIN_PLUGIN_H
 
 #include <stddef.h>
 

@@ -4,13 +4,13 @@
  * printed digits, a missing or duplicated row, a shifted time column,
  * another parameter value). Works on a bounded prefix of the trace, so its
  * cost does not grow with the file. */
-#ifndef SW_LAB_EXPLAIN_H
-#define SW_LAB_EXPLAIN_H
+#ifndef SW_GRADE_EXPLAIN_H
+#define SW_GRADE_EXPLAIN_H
 
 #include <stddef.h>
 
-#include "lab/check.h"
-#include "lab/trace.h"
+#include "grade/check.h"
+#include "trace/trace.h"
 
 /* The run a trace should be: what the assignment (or the trace's own
  * metadata) describes. */

@@ -4,7 +4,7 @@
  * Data mistakes (rows, time column, digits, precision) are tried first,
  * since they need no new run. Invariant: a variant is reported only when
  * it matches every examined value, never because it is merely closer. */
-#include "lab/explain.h"
+#include "grade/explain.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "engine/stepper.h"
-#include "lab/assignment.h"
+#include "grade/assignment.h"
 #include "stepwise/stepwise.h"
 
 /* Most work a variant run may take: state components x evaluations. */

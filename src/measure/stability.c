@@ -5,7 +5,7 @@
  * sees growth. No twin runs: numerical runs part by chaos as exact ones do,
  * and at large steps faster, without the method being unstable (a plucked
  * chain under symplectic Euler). The theory comes from the truth module. */
-#include "lab/stability.h"
+#include "measure/stability.h"
 
 #include <math.h>
 #include <stdio.h>

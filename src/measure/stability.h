@@ -4,8 +4,8 @@
  * (src/sim/truth.h). Measurement: bisection on sw_sim runs, each watched
  * for growth of the energy of its motion (src/sim/watch.h). Where the two
  * disagree the result says why. */
-#ifndef SW_LAB_STABILITY_H
-#define SW_LAB_STABILITY_H
+#ifndef SW_MEASURE_STABILITY_H
+#define SW_MEASURE_STABILITY_H
 
 #include <stddef.h>
 

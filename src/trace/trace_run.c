@@ -1,12 +1,12 @@
 /* Step traces, what writer and reader share: the run rule (how long a run
  * lasts, which steps it records) and the columns of a system's rows. */
-#include "lab/trace.h"
+#include "trace/trace.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "lab/plugin.h"
+#include "plugin/plugin.h"
 #include "stepwise/base.h"
 
 /* ---- the run rule --------------------------------------------------------- */

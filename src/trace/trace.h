@@ -3,8 +3,8 @@
  * it on commit; the reader streams in memory bounded by the scene's column
  * count, never by the file's size. The recorder in `stepwise record` and the
  * TUI both drive a sim through sw_trace_step, so their traces are identical. */
-#ifndef SW_LAB_TRACE_H
-#define SW_LAB_TRACE_H
+#ifndef SW_TRACE_TRACE_H
+#define SW_TRACE_TRACE_H
 
 #include <stddef.h>
 #include <stdio.h>

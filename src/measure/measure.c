@@ -1,14 +1,14 @@
 /* Measured order and stability limit of a method on the undamped spring.
  * The order is a least-squares slope over four halvings of dt, so one
  * unlucky error (a cancellation at the report time) cannot decide it. */
-#include "lab/measure.h"
+#include "measure/measure.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "lab/plugin.h"
-#include "lab/stability.h"
+#include "plugin/plugin.h"
+#include "measure/stability.h"
 #include "stepwise/stepwise.h"
 
 static const sw_scene *spring_undamped(double *p)

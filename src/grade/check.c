@@ -1,7 +1,7 @@
 /* Trace checking: two row sources in lockstep, compared value by value.
  * Invariant: memory is two rows, whatever the length of the run; every row
  * of both sources is read, so a malformed line anywhere is reported. */
-#include "lab/check.h"
+#include "grade/check.h"
 
 #include <math.h>
 #include <stdlib.h>

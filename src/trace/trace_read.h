@@ -1,9 +1,9 @@
 /* Private to the trace reader (trace_read.c) and its metadata parser
  * (trace_meta.c): the helpers both use. */
-#ifndef SW_LAB_TRACE_READ_H
-#define SW_LAB_TRACE_READ_H
+#ifndef SW_TRACE_TRACE_READ_H
+#define SW_TRACE_TRACE_READ_H
 
-#include "lab/trace.h"
+#include "trace/trace.h"
 
 /* Metadata keys, in the order record writes them. */
 enum { K_VERSION, K_SCENE, K_INTEGRATOR, K_DT, K_STEPS, K_UNTIL, K_EVERY, K_RTOL, K_ATOL,

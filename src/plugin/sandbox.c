@@ -2,7 +2,7 @@
  * blocks on a child without a deadline or the cancel flag; a child never
  * outlives its parent (PR_SET_PDEATHSIG on Linux, end of file on its socket
  * elsewhere); writing to a dead child is an error, never a SIGPIPE. */
-#include "lab/sandbox.h"
+#include "plugin/sandbox.h"
 
 #include <errno.h>
 #include <fcntl.h>

@@ -3,13 +3,13 @@
  * in the trace metadata format; a reference trace's header serves as one.
  * A trace is checked against the run the assignment describes, after its
  * header's differences from the assignment are listed by name and value. */
-#ifndef SW_LAB_ASSIGNMENT_H
-#define SW_LAB_ASSIGNMENT_H
+#ifndef SW_GRADE_ASSIGNMENT_H
+#define SW_GRADE_ASSIGNMENT_H
 
 #include <stddef.h>
 
-#include "lab/check.h"
-#include "lab/trace.h"
+#include "grade/check.h"
+#include "trace/trace.h"
 
 #define SW_ASSIGN_METHODS 8
 #define SW_COLTOL_MAX 64

@@ -37,6 +37,7 @@ CURSES_CFLAGS = $(shell pkg-config --cflags ncursesw 2>/dev/null)
 CURSES_LIBS   = $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw)
 CHECK_CFLAGS  = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
+SECCOMP_LIBS  = $(shell pkg-config --libs libseccomp 2>/dev/null || echo -lseccomp)
 
 # The engine library: every layer below the front ends (docs/architecture.md),
 # util/ included. Only tui/ includes ncurses; cli/ and tui/ are linked into
@@ -72,7 +73,7 @@ $(LIB): $(LIB_OBJ)
 	ar rcs $@ $^
 
 $(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(LIB)
-	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(LIB) $(CURSES_LIBS) -lm -ldl
+	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(LIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # Each tests/check_NAME.c exports make_NAME_suite(); the list is generated so
 # adding a suite never means editing the runner.
@@ -84,7 +85,7 @@ $(BUILD)/tests/suites.h: $(TEST_SRC)
 $(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
 
 $(TESTBIN): $(TEST_OBJ) $(LIB)
-	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) -lm -ldl
+	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 run: $(BIN)
 	./$(BIN) lesson 1
@@ -120,7 +121,7 @@ fuzz:
 	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a
 	@for t in $(FUZZERS); do \
 	    clang $(FUZZ_FLAGS) tests/fuzz/fuzz_$$t.c tests/support/fuzz_targets.c build/fuzz/libstepwise.a \
-	        -lm -ldl -o build/fuzz/fuzz_$$t || exit 1; \
+	        $(SECCOMP_LIBS) -lm -ldl -o build/fuzz/fuzz_$$t || exit 1; \
 	    mkdir -p build/fuzz/corpus-$$t; \
 	    echo "fuzz: $$t for $(FUZZ_TIME) s"; \
 	    build/fuzz/fuzz_$$t -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
@@ -145,7 +146,7 @@ $(BUILD)/gsl.stamp: FORCE
 
 $(BENCHBIN): $(BENCH_SRC) bench/bench_common.h tests/support/alloc_count.c $(LIB) $(BUILD)/gsl.stamp
 	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) $(GSL_FLAGS) \
-	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) -lm -o $@
+	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) $(SECCOMP_LIBS) -lm -o $@
 
 bench:
 	@sh bench/deps.sh

@@ -28,6 +28,7 @@ static const char *fault_word(sw_plugin_fault f)
     case SW_PF_CANCELLED: return "interrupted";
     case SW_PF_START: return "start";
     case SW_PF_DISABLED: return "disabled";
+    case SW_PF_FORGED: return "forged";
     default: return "none";
     }
 }

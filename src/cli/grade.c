@@ -22,6 +22,8 @@
 #include "grade/verdict.h"
 #include "util/signals.h"
 
+extern char **environ;
+
 static const char grade_help[] =
     "usage: stepwise grade --assignment A [--csv FILE] [--results FILE] [--cpu S] [--memory MB]\n"
     "                      [--output KB] [--wall S] [--plugin-timeout S] [--rtol R] [--atol A]\n"
@@ -44,6 +46,9 @@ static const char grade_help[] =
     "      --output KB        output per submission, KiB: report kept, files written (default 1024)\n"
     "      --wall S           wall-clock seconds per submission (default 2 x cpu + 5)\n"
     "      --plugin-timeout S seconds a plugin may take for one step (default 2)\n"
+    "      --no-sandbox       run plugins and compilers without the jail (namespaces,\n"
+    "                         seccomp): only inside a disposable container that holds\n"
+    "                         one submission (docs/sandbox.md)\n"
     "      --rtol R, --atol A, --tol COL=REL[,ABS], --ignore COL   as for check\n"
     "  -h, --help             this help\n"
     "\n"
@@ -67,7 +72,44 @@ typedef struct grade_job {
     int index;
     const sw_check_request *base;
     size_t report_max;
+    grade_list *list;        /* the class so far: wiped in the worker */
 } grade_job;
+
+/* In a submission's worker, before anything of the submission runs: forget
+ * what the parent knew of the others (their verdicts and reports) and every
+ * environment variable but the few grading needs, so that nothing of them
+ * is in the memory a plugin's process starts from. */
+static void forget_the_class(const grade_job *job)
+{
+    for (int i = 0; i < job->list->n; i++) {
+        grade_entry *e = &job->list->items[i];
+        if (e->report) {
+            explicit_bzero(e->report, strlen(e->report));
+            free(e->report);
+            e->report = NULL;
+        }
+        explicit_bzero(e->student, sizeof e->student);
+        explicit_bzero(e->notes, sizeof e->notes);
+        explicit_bzero(e->message, sizeof e->message);
+        if (i != job->index)
+            explicit_bzero(e->path, strlen(e->path));
+    }
+    static const char *const kept[] = { "PATH", "CC", "TMPDIR", "STEPWISE_INCLUDE", "STEPWISE_PLUGIN_TIMEOUT",
+                                        "STEPWISE_SANDBOX", "LC_ALL", "LANG" };
+    char *keep[sizeof kept / sizeof kept[0]];
+    for (size_t i = 0; i < sizeof kept / sizeof kept[0]; i++) {
+        const char *v = getenv(kept[i]);
+        keep[i] = v ? strdup(v) : NULL;
+    }
+    for (char **env = environ; env && *env; env++)
+        explicit_bzero(*env, strlen(*env));
+    clearenv();
+    for (size_t i = 0; i < sizeof kept / sizeof kept[0]; i++)
+        if (keep[i]) {
+            setenv(kept[i], keep[i], 1);
+            free(keep[i]);
+        }
+}
 
 /* The mistake in a few words: explanation, plugin failure, header, values. */
 static void short_reason(const sw_verdict *v, char *buf, size_t len)
@@ -94,6 +136,7 @@ static int grade_child(void *ctx, int in, int out)
 {
     (void)in;
     const grade_job *job = ctx;
+    forget_the_class(job);
     sw_check_request req = *job->base;
     static sw_verdict v;
     static grade_record rec;
@@ -221,6 +264,16 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
         return;
     }
     int rc = sw_sandbox_read(child.from_child, &rec, sizeof rec, wall);
+    /* The worker runs only stepwise's code, but its record is checked like
+     * any bytes from a child: a status it can have, lengths within bounds
+     * before anything is allocated, strings terminated here. */
+    if (rc == 1 && (rec.status < SW_VERDICT_PASS || rec.status > SW_VERDICT_ERROR ||
+                    rec.report_len > job->report_max || rec.failing_step < -1))
+        rc = -3;
+    if (rc == 1) {
+        rec.student[sizeof rec.student - 1] = rec.notes[sizeof rec.notes - 1] = '\0';
+        rec.kind[sizeof rec.kind - 1] = rec.message[sizeof rec.message - 1] = '\0';
+    }
     if (rc == 1 && rec.report_len > 0) {
         e->report = malloc(rec.report_len + 1);
         if (e->report && sw_sandbox_read(child.from_child, e->report, rec.report_len,
@@ -252,6 +305,9 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
                      "limit of %g s and was stopped", wall);
         else if (rc == -1)
             snprintf(e->message, sizeof e->message, "interrupted");
+        else if (rc == -3)
+            snprintf(e->message, sizeof e->message, "the grading process sent a record it could not "
+                     "have sent");
         else
             snprintf(e->message, sizeof e->message, "the grading process %s (limits: %g s CPU, "
                      "%zu MiB)", how, lim->cpu_seconds, lim->memory_bytes >> 20);
@@ -276,7 +332,8 @@ int sw_cmd_grade(int argc, char **argv)
     int nfiles = 0, rc = SW_EXIT_OK;
     for (int i = 1; i < argc && rc == SW_EXIT_OK; i++) {
         const char *a = argv[i];
-        int takes = a[0] == '-' && a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0;
+        int takes = a[0] == '-' && a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0 &&
+                    strcmp(a, "--no-sandbox") != 0;
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(grade_help, stdout);
             free(files);
@@ -348,6 +405,11 @@ int sw_cmd_grade(int argc, char **argv)
         grade_list_free(&list);
         return rc;
     }
+    for (int i = 0; i < list.n; i++)
+        if (list.items[i].plugin && sw_sandbox_probe(err, sizeof err) != SW_OK) {
+            grade_list_free(&list);
+            return sw_cli_error("grade: plugins are run isolated, and %s", err);
+        }
     base.assignment = &asg;
     if (!(wall > 0))
         wall = 2 * lim.cpu_seconds + 5;
@@ -363,7 +425,7 @@ int sw_cmd_grade(int argc, char **argv)
     double start = sw_sandbox_now();
     for (int i = 0; i < list.n && !sw_signal_caught; i++) {
         grade_job job = { list.items[i].path, list.items[i].plugin, build_dir, i, &base,
-                          lim.output_bytes };
+                          lim.output_bytes, &list };
         grade_one(&list.items[i], &job, &lim, wall);
         grade_print_row(&list.items[i]);
     }

@@ -62,81 +62,251 @@ static const char *include_dir(void)
     return SW_DATADIR "/../../include";
 }
 
+/* The compiler's command line inside the jail: the documented flags. */
+#define JAIL_FLAGS "-std=c11", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC"
+#define SHOWN_FLAGS "-std=c11 -O2 -Wall -shared -fPIC"
+
 typedef struct build_job {
-    const char *cc, *inc, *src, *out, *log;
+    const char *cc;          /* absolute, resolved outside the jail */
+    const char *work;        /* where plugin.c is: /work in the jail */
+    const char *inc;         /* -I flag: /include in the jail */
 } build_job;
 
+/* The compiler on WORK/plugin.c, its messages in WORK/build.log. */
 static int run_compiler(void *ctx, int in, int out)
 {
     (void)in;
-    (void)out;
     const build_job *j = ctx;
-    int fd = open(j->log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    fcntl(out, F_SETFD, FD_CLOEXEC); /* the compiler gets no channel */
+    if (chdir(j->work) != 0)
+        return 127;
+    int fd = open("build.log", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
     if (fd >= 0) {
         dup2(fd, STDOUT_FILENO);
         dup2(fd, STDERR_FILENO);
-        close(fd);
     }
-    setenv("LC_ALL", "C", 1); /* plain ASCII quotes in the messages we show */
-    char incflag[PATH_MAX + 32];
-    snprintf(incflag, sizeof incflag, "-I%s", j->inc);
-    execlp(j->cc, j->cc, "-std=c11", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC", incflag,
-           "-o", j->out, j->src, "-lm", (char *)NULL);
+    char inc[PATH_MAX + 4];
+    snprintf(inc, sizeof inc, "-I%s", j->inc);
+    char *const argv[] = { (char *)j->cc, JAIL_FLAGS, inc, "-o", "plugin.so", "plugin.c", "-lm", NULL };
+    /* LC_ALL=C: plain ASCII quotes in the messages we show */
+    char *const envp[] = { "PATH=/usr/bin:/bin", "TMPDIR=/work", "LC_ALL=C", "HOME=/work", NULL };
+    execve(j->cc, argv, envp);
     fprintf(stderr, "error: cannot run the compiler '%s': %s\n", j->cc, strerror(errno));
     return 127;
+}
+
+/* The compiler named by $CC (default cc), as an absolute path with links
+ * resolved, so that it runs in the jail: 0, or -1 with err. */
+static int find_compiler(char *out, size_t len, char *err, size_t errlen)
+{
+    const char *cc = getenv("CC");
+    if (!cc || !*cc)
+        cc = "cc";
+    char found[PATH_MAX];
+    found[0] = '\0';
+    if (strchr(cc, '/'))
+        snprintf(found, sizeof found, "%s", cc);
+    else {
+        const char *path = getenv("PATH");
+        char dirs[4096];
+        snprintf(dirs, sizeof dirs, "%s", path && *path ? path : "/usr/bin:/bin");
+        for (char *save = NULL, *d = strtok_r(dirs, ":", &save); d && !found[0]; d = strtok_r(NULL, ":", &save)) {
+            char cand[PATH_MAX];
+            snprintf(cand, sizeof cand, "%s/%s", d, cc);
+            if (access(cand, X_OK) == 0)
+                snprintf(found, sizeof found, "%s", cand);
+        }
+    }
+    if (!found[0] || !realpath(found, out) || strlen(out) >= len) {
+        char shown[120];
+        sw_escape(cc, 60, shown, sizeof shown);
+        snprintf(err, errlen, "no C compiler '%s' found (set CC, or install gcc)", shown);
+        return -1;
+    }
+    return 0;
 }
 
 /* The first line of the log that says "error", escaped, for a message. */
 static void first_error(const char *log, char *buf, size_t len)
 {
-    FILE *f = fopen(log, "r");
-    char line[512];
     buf[0] = '\0';
-    while (f && fgets(line, sizeof line, f)) {
-        if (strstr(line, "error")) {
-            line[strcspn(line, "\n")] = '\0';
-            sw_escape(line, 200, buf, len);
-            break;
-        }
+    for (const char *line = log; line && *line && !buf[0];) {
+        const char *end = strchr(line, '\n');
+        size_t n = end ? (size_t)(end - line) : strlen(line);
+        char one[512];
+        snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), line);
+        if (strstr(one, "error"))
+            sw_escape(one, 200, buf, len);
+        line = end ? end + 1 : NULL;
     }
-    if (f)
-        fclose(f);
     if (!buf[0])
         snprintf(buf, len, "see the compiler's messages");
+}
+
+static int write_new(const char *path, const char *data, size_t len);
+
+/* Read path whole (at most max bytes, a regular file, never a link) into
+ * *buf; 1, or 0 when there is none. */
+static int read_fd(int fd, size_t max, char **buf, size_t *len)
+{
+    struct stat st;
+    *buf = NULL;
+    *len = 0;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size > max ||
+        !(*buf = malloc((size_t)st.st_size + 1)))
+        return 0;
+    ssize_t n = pread(fd, *buf, (size_t)st.st_size, 0);
+    *len = n > 0 ? (size_t)n : 0;
+    (*buf)[*len] = '\0';
+    return 1;
+}
+
+static int read_whole(const char *path, size_t max, char **buf, size_t *len)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    int rc = read_fd(fd, max, buf, len);
+    if (fd >= 0)
+        close(fd);
+    return rc;
+}
+
+/* Without the jail (--no-sandbox): the compiler works in DIR/NAME.d, a
+ * private directory holding a copy of the source; its files are read back
+ * and the directory removed. */
+static int plain_work(const char *dir, const char *name, int src_fd, char *work, size_t len)
+{
+    if ((size_t)snprintf(work, len, "%s/%s.d", dir, name) >= len) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    char path[PATH_MAX + 200], *text;
+    size_t text_len;
+    if (mkdir(work, 0700) != 0)
+        return -1;
+    if (!read_fd(src_fd, SW_JAIL_FILE_MAX, &text, &text_len))
+        return -1;
+    snprintf(path, sizeof path, "%s/plugin.c", work);
+    int rc = write_new(path, text, text_len);
+    free(text);
+    return rc;
+}
+
+static void plain_done(const char *work, char **out, size_t *out_len, char **log, size_t *log_len)
+{
+    static const char *const files[] = { "plugin.c", "plugin.so", "build.log" };
+    char path[PATH_MAX + 200];
+    snprintf(path, sizeof path, "%s/plugin.so", work);
+    read_whole(path, SW_JAIL_FILE_MAX, out, out_len);
+    snprintf(path, sizeof path, "%s/build.log", work);
+    read_whole(path, (size_t)1 << 20, log, log_len);
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", work, files[i]);
+        unlink(path);
+    }
+    rmdir(work);
+}
+
+/* Write len bytes to a new file path (never following a link). */
+static int write_new(const char *path, const char *data, size_t len)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0)
+        return -1;
+    size_t done = 0;
+    while (done < len) {
+        ssize_t n = write(fd, data + done, len - done);
+        if (n <= 0) {
+            close(fd);
+            return -1;
+        }
+        done += (size_t)n;
+    }
+    return close(fd);
 }
 
 int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
                           size_t solen, char *err, size_t errlen)
 {
-    char shown[200], msg[SW_ERRLEN];
+    char shown[200], msg[SW_ERRLEN], cc[PATH_MAX];
     sw_escape(src, 120, shown, sizeof shown);
+    int src_fd = open(src, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st;
-    if (stat(src, &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "--plugin '%s': no such file", shown);
+    if (src_fd < 0 || fstat(src_fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "--plugin '%s': no such file (a plugin's source is a regular file)", shown);
+        if (src_fd >= 0)
+            close(src_fd);
         return SW_EINVAL;
     }
-    char log[PATH_MAX + 80];
-    snprintf(so, solen, "%s/%s.so", dir, name);
-    snprintf(log, sizeof log, "%s/%s.log", dir, name);
-    const char *cc = getenv("CC");
-    build_job job = { cc && *cc ? cc : "cc", include_dir(), src, so, log };
-    sw_child child;
-    if (sw_sandbox_spawn(&child, run_compiler, &job, NULL, -1, msg, sizeof msg) != SW_OK) {
+    if (find_compiler(cc, sizeof cc, msg, sizeof msg) != 0) {
+        close(src_fd);
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EIO;
     }
-    /* The compiler reports by its exit status: wait for it, within the limit. */
+    char inc[PATH_MAX + 32];
+    snprintf(inc, sizeof inc, "%.*s/stepwise", PATH_MAX, include_dir());
+    int inc_fd = open(inc, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    sw_jail spec = { .profile = SW_JAIL_COMPILE, .in = { { src_fd, "plugin.c" } }, .nin = 1,
+                     .include_fd = inc_fd, .out = { "plugin.so", "build.log" }, .nout = 2,
+                     .disk_bytes = (size_t)64 << 20 };
+    sw_limits lim = { .cpu_seconds = BUILD_SECONDS, .memory_bytes = (size_t)2048 << 20,
+                      .output_bytes = (size_t)64 << 20 };
+    char work[PATH_MAX];
+    build_job job = { cc, "/work", "/include" };
+    if (!sw_jail_enabled()) {
+        job.work = work;
+        job.inc = include_dir();
+        if (plain_work(dir, name, src_fd, work, sizeof work) != 0) {
+            close(src_fd);
+            if (inc_fd >= 0)
+                close(inc_fd);
+            snprintf(err, errlen, "--plugin '%s': cannot copy it to build it: %s", shown, strerror(errno));
+            return SW_EIO;
+        }
+    }
+    sw_child child;
+    int rc = sw_sandbox_spawn_jailed(&child, run_compiler, &job, &lim, -1, &spec, msg, sizeof msg);
+    close(src_fd);
+    if (inc_fd >= 0)
+        close(inc_fd);
+    if (rc != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        return SW_EIO;
+    }
+    char log_path[PATH_MAX + 80], *out = NULL, *log = NULL;
+    size_t out_len = 0, log_len = 0;
+    snprintf(so, solen, "%s/%s.so", dir, name);
+    snprintf(log_path, sizeof log_path, "%s/%s.log", dir, name);
     sw_child_end end;
+    if (sw_jail_enabled()) {
+        /* the jail's init sends both once the compiler ended */
+        int got = sw_sandbox_read_file(child.from_child, SW_JAIL_FILE_MAX, BUILD_SECONDS, &out, &out_len);
+        if (got >= 0)
+            got = sw_sandbox_read_file(child.from_child, (size_t)1 << 20, BUILD_SECONDS, &log, &log_len);
+        if (got < 0) {
+            free(out);
+            out = NULL;
+        }
+    }
     sw_sandbox_reap(&child, BUILD_SECONDS, &end);
-    if (end.exited && end.code == 0)
+    if (!sw_jail_enabled())
+        plain_done(work, &out, &out_len, &log, &log_len);
+    int ok = end.exited && end.code == 0 && out && write_new(so, out, out_len) == 0;
+    if (log)
+        write_new(log_path, log, log_len);
+    free(out);
+    if (ok) {
+        free(log);
         return SW_OK;
-    if (end.killed) {
-        snprintf(err, errlen, "--plugin '%s' did not compile within %g s", shown, BUILD_SECONDS);
+    }
+    if (end.killed || (!end.exited && end.signal == SIGXCPU)) {
+        free(log);
+        snprintf(err, errlen, "--plugin '%s' did not compile within the grader's limit of %g s", shown,
+                 BUILD_SECONDS);
         return SW_EINVAL;
     }
     first_error(log, msg, sizeof msg);
-    snprintf(err, errlen, "--plugin '%s' does not compile (%s -std=c11 -O2 -Wall -shared -fPIC): "
-             "%s", shown, job.cc, msg);
+    free(log);
+    snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
     return SW_EINVAL;
 }
 

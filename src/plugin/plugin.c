@@ -1,13 +1,15 @@
-/* Loading student plugins without running their code here: a child process
+/* Loading student plugins without running their code here: a jailed child
  * dlopens the file and calls sw_plugin_info() under the watchdog, and sends
- * back a copy of what it found; names and labels are checked before
- * anything is registered. Invariant: every byte a plugin chose reaches a
- * message only through sw_escape (util/escape.h). */
+ * back a copy of what it found; the parent terminates every string itself
+ * and checks every field before anything is registered. Invariant: every
+ * byte a plugin chose reaches a message only through sw_escape
+ * (util/escape.h), and no length it sent is used. */
 #include "plugin/plugin.h"
 
 #include <ctype.h>
 #include <dlfcn.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -15,6 +17,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "plugin/plugin_box.h"
 #include "plugin/sandbox.h"
@@ -119,33 +122,42 @@ sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m)
     return NULL;
 }
 
-const char *sw_plugin_path(const sw_integrator *m)
+#define JAIL_NAME "plugin.so"
+
+const char *sw_plugin_entry_file(const sw_plugin_entry *e)
 {
-    sw_plugin_entry *e = sw_plugin_entry_for(m);
-    return e ? e->path : NULL;
+    return sw_jail_enabled() ? "/work/" JAIL_NAME : e->path;
+}
+
+void sw_plugin_entry_jail_in(const sw_plugin_entry *e, sw_jail *spec)
+{
+    spec->in[0].fd = e->fd;
+    spec->in[0].name = JAIL_NAME;
+    spec->nin = 1;
 }
 
 /* ---- the probe child ------------------------------------------------------ */
 
 enum { STAGE_DLOPEN = 1, STAGE_SYMBOL, STAGE_NULL, STAGE_OK };
 
+/* What the probe sends: numbers and byte strings the parent terminates
+ * itself (a string that fills its field is "too long"). */
 typedef struct probe_reply {
     int stage;
     int abi, order, evals, work_vectors, has_step, has_label;
-    int name_len, label_len;       /* bytes before the NUL; 256: longer than that */
     char name[257], label[257];
     char dlerr[512];
 } probe_reply;
 
-static void copy_bounded(const char *src, char *dst, int *len)
+static void copy_bounded(const char *src, char *dst, size_t size)
 {
-    int i = 0;
-    while (i < 256 && src[i]) {
+    size_t i = 0;
+    while (i < size && src[i]) {
         dst[i] = src[i];
         i++;
     }
-    dst[i] = '\0';
-    *len = src[i] ? 256 : i;
+    if (i < size)
+        dst[i] = '\0';
 }
 
 /* Runs in the child: tag bytes say how far it got ('L' loaded, 'I' calling
@@ -153,14 +165,16 @@ static void copy_bounded(const char *src, char *dst, int *len)
 static int probe_child(void *ctx, int in, int out)
 {
     (void)in;
-    const char *path = ctx;
+    const sw_plugin_entry *e = ctx;
     probe_reply r;
     memset(&r, 0, sizeof r);
-    void *lib = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    void *lib = dlopen(sw_plugin_entry_file(e), RTLD_NOW | RTLD_LOCAL);
+    if (sw_jail_seal() != 0)
+        return 3;
     if (!lib) {
-        const char *e = dlerror();
+        const char *why = dlerror();
         r.stage = STAGE_DLOPEN;
-        snprintf(r.dlerr, sizeof r.dlerr, "%s", e ? e : "unknown error");
+        snprintf(r.dlerr, sizeof r.dlerr, "%s", why ? why : "unknown error");
     } else {
         sw_sandbox_write(out, "L", 1);
         const sw_plugin *(*get)(void);
@@ -180,10 +194,10 @@ static int probe_child(void *ctx, int in, int out)
                 r.work_vectors = info->work_vectors;
                 r.has_step = info->step != NULL;
                 if (info->name)
-                    copy_bounded(info->name, r.name, &r.name_len);
+                    copy_bounded(info->name, r.name, sizeof r.name);
                 r.has_label = info->label != NULL;
                 if (info->label)
-                    copy_bounded(info->label, r.label, &r.label_len);
+                    copy_bounded(info->label, r.label, sizeof r.label);
             }
         }
     }
@@ -193,25 +207,32 @@ static int probe_child(void *ctx, int in, int out)
 }
 
 /* Run the probe; 0 with *r filled, or an error naming how the child failed. */
-static int probe(const char *path, const char *shown, probe_reply *r, char *err, size_t errlen)
+static int probe(const sw_plugin_entry *e, const char *shown, probe_reply *r, char *err, size_t errlen)
 {
     sw_child child;
     char msg[SW_ERRLEN];
-    if (sw_sandbox_spawn(&child, probe_child, (void *)path, NULL, -1, msg, sizeof msg) != SW_OK) {
+    sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
+    sw_plugin_entry_jail_in(e, &spec);
+    if (sw_sandbox_spawn_jailed(&child, probe_child, (void *)e, NULL, -1, &spec, msg, sizeof msg) != SW_OK) {
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EIO;
     }
     double limit = sw_plugin_timeout();
     char stage = 0, tag;
     int rc;
-    while ((rc = sw_sandbox_read(child.from_child, &tag, 1, limit)) == 1 && tag != 'R')
-        stage = tag;
+    int tags = 0;
+    while ((rc = sw_sandbox_read(child.from_child, &tag, 1, limit)) == 1 && tag != 'R' && ++tags < 3)
+        stage = tag == 'I' ? 'I' : 'L';
+    if (rc == 1 && tag != 'R')
+        rc = -3; /* more progress tags than the probe sends */
     if (rc == 1)
         rc = sw_sandbox_read(child.from_child, r, sizeof *r, limit);
     const char *what = stage == 'I' ? "sw_plugin_info()" : "loading it (dlopen and its constructors)";
     sw_child_end end;
     if (rc == 1) {
         sw_sandbox_reap(&child, limit, &end);
+        /* terminated here, whatever was sent: an unterminated field is "too long" */
+        r->name[sizeof r->name - 1] = r->label[sizeof r->label - 1] = r->dlerr[sizeof r->dlerr - 1] = '\0';
         return SW_OK;
     }
     if (rc == -2) {
@@ -232,9 +253,58 @@ static int probe(const char *path, const char *shown, probe_reply *r, char *err,
     return SW_EINVAL;
 }
 
+/* Every field of the probe's reply checked; 0, or SW_EINVAL with why. */
+static int check_reply(const probe_reply *r, const char *shown, char *err, size_t errlen)
+{
+    char why[SW_ERRLEN], esc[200];
+    switch (r->stage) {
+    case STAGE_DLOPEN:
+        sw_escape(r->dlerr, 160, esc, sizeof esc);
+        snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
+        return SW_EINVAL;
+    case STAGE_SYMBOL:
+        snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
+                 "const sw_plugin *sw_plugin_info(void)", shown);
+        return SW_EINVAL;
+    case STAGE_NULL:
+        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() returned NULL; it must return the "
+                 "address of a static sw_plugin", shown);
+        return SW_EINVAL;
+    case STAGE_OK:
+        break;
+    default:
+        snprintf(err, errlen, "--plugin '%s': its loader sent a reply it could not have sent", shown);
+        return SW_EINVAL;
+    }
+    if (r->abi != SW_PLUGIN_ABI) {
+        snprintf(err, errlen, "--plugin '%s' was built for plugin interface %d; this stepwise needs "
+                 "%d (rebuild it against this stepwise's integrator.h)", shown, r->abi, SW_PLUGIN_ABI);
+        return SW_EINVAL;
+    }
+    if (!r->name[0] || !r->has_step || r->work_vectors < 0 || r->work_vectors > 64) {
+        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() must give a name, a step function "
+                 "and 0..64 work vectors", shown);
+        return SW_EINVAL;
+    }
+    sw_escape(r->name, SW_PLUGIN_NAME_MAX + 8, esc, sizeof esc);
+    if (strlen(r->name) >= sizeof r->name - 1 || !sw_plugin_name_ok(r->name, why, sizeof why)) {
+        snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc,
+                 strlen(r->name) >= sizeof r->name - 1 ? "a name has 1 to 40 characters" : why);
+        return SW_EINVAL;
+    }
+    const char *label = r->has_label ? r->label : r->name;
+    if (r->has_label && (strlen(label) >= sizeof r->label - 1 || !sw_plugin_label_ok(label, why, sizeof why))) {
+        sw_escape(label, 60, esc, sizeof esc);
+        snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc,
+                 strlen(label) >= sizeof r->label - 1 ? "a label has 1 to 80 bytes" : why);
+        return SW_EINVAL;
+    }
+    return SW_OK;
+}
+
 int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen)
 {
-    char shown[200], why[SW_ERRLEN], esc[200];
+    char shown[200], why[SW_ERRLEN];
     sw_escape(path, 120, shown, sizeof shown);
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -248,56 +318,32 @@ int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_
     }
     sw_plugin_entry *e = &entries[nentries];
     memset(e, 0, sizeof *e);
+    e->fd = -1;
     if (!realpath(path, e->path)) {
         snprintf(err, errlen, "--plugin '%s': %s", shown, strerror(errno));
         return SW_EIO;
     }
+    /* The file as it is now is what every child loads (a rebuild that
+     * replaces it does not change a plugin under way). */
+    e->fd = open(e->path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    struct stat fst;
+    if (e->fd < 0 || fstat(e->fd, &fst) != 0 || !S_ISREG(fst.st_mode)) {
+        snprintf(err, errlen, "--plugin '%s': %s", shown, e->fd < 0 ? strerror(errno) : "not a regular file");
+        if (e->fd >= 0)
+            close(e->fd);
+        return SW_EINVAL;
+    }
     probe_reply r;
-    int rc = probe(e->path, shown, &r, err, errlen);
-    if (rc != SW_OK)
+    int rc = probe(e, shown, &r, err, errlen);
+    if (rc == SW_OK)
+        rc = check_reply(&r, shown, err, errlen);
+    if (rc != SW_OK) {
+        close(e->fd);
         return rc;
-    switch (r.stage) {
-    case STAGE_DLOPEN:
-        sw_escape(r.dlerr, 160, esc, sizeof esc);
-        snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
-        return SW_EINVAL;
-    case STAGE_SYMBOL:
-        snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
-                 "const sw_plugin *sw_plugin_info(void)", shown);
-        return SW_EINVAL;
-    case STAGE_NULL:
-        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() returned NULL; it must return the "
-                 "address of a static sw_plugin", shown);
-        return SW_EINVAL;
-    default:
-        break;
-    }
-    if (r.abi != SW_PLUGIN_ABI) {
-        snprintf(err, errlen, "--plugin '%s' was built for plugin interface %d; this stepwise needs "
-                 "%d (rebuild it against this stepwise's integrator.h)", shown, r.abi, SW_PLUGIN_ABI);
-        return SW_EINVAL;
-    }
-    if (r.name_len == 0 || !r.has_step || r.work_vectors < 0 || r.work_vectors > 64) {
-        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() must give a name, a step function "
-                 "and 0..64 work vectors", shown);
-        return SW_EINVAL;
-    }
-    sw_escape(r.name, SW_PLUGIN_NAME_MAX + 8, esc, sizeof esc);
-    if (r.name_len > 256 || !sw_plugin_name_ok(r.name, why, sizeof why)) {
-        snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc,
-                 r.name_len > 256 ? "a name has 1 to 40 characters" : why);
-        return SW_EINVAL;
     }
     const char *label = r.has_label ? r.label : r.name;
-    if (r.has_label && (r.label_len > 256 || !sw_plugin_label_ok(label, why, sizeof why))) {
-        sw_escape(label, 60, esc, sizeof esc);
-        snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc,
-                 r.label_len > 256 ? "a label has 1 to 80 bytes" : why);
-        return SW_EINVAL;
-    }
-    memcpy(e->name, r.name, (size_t)r.name_len + 1);       /* checked: at most 40 bytes */
-    size_t label_len = strlen(label);
-    memcpy(e->label, label, label_len + 1);                 /* checked: at most 80 bytes */
+    snprintf(e->name, sizeof e->name, "%s", r.name);       /* checked: at most 40 bytes */
+    snprintf(e->label, sizeof e->label, "%s", label);      /* checked: at most 80 bytes */
     e->work_vectors = r.work_vectors;
     sw_integrator m = { .name = e->name, .label = e->label, .order = r.order, .evals = r.evals,
                         .flags = SW_PLUGIN | SW_EXPLICIT, .stability = NAN,

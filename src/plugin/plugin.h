@@ -36,7 +36,8 @@ typedef enum sw_plugin_fault {
     SW_PF_TIMEOUT,      /* did not return within the watchdog's limit */
     SW_PF_CANCELLED,    /* the user interrupted the wait (Ctrl-C, SIGTERM) */
     SW_PF_START,        /* its child process could not be started or load it */
-    SW_PF_DISABLED      /* disabled after an earlier failure (play) */
+    SW_PF_DISABLED,     /* disabled after an earlier failure (play) */
+    SW_PF_FORGED        /* sent the sandbox a record it could not have sent */
 } sw_plugin_fault;
 
 /* Whether name is an allowed plugin name that shadows no built-in method

@@ -4,11 +4,13 @@
 #define SW_PLUGIN_PLUGIN_BOX_H
 
 #include "engine/stepper.h"
+#include "plugin/jail.h"
 #include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
 typedef struct sw_plugin_entry {
-    char path[4096];                       /* absolute: children load it from anywhere */
+    char path[4096];                       /* absolute: what the user named */
+    int fd;                                /* the file as loaded: what every child gets */
     char name[SW_PLUGIN_NAME_MAX + 1];
     char label[SW_PLUGIN_LABEL_MAX + 1];
     int work_vectors;
@@ -21,6 +23,11 @@ typedef struct sw_plugin_entry {
 
 /* The entry behind a plugin method, or NULL. */
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
+/* The file a child of the entry dlopens: its copy in the jail's /work, or
+ * (no jail) the path. */
+const char *sw_plugin_entry_file(const sw_plugin_entry *e);
+/* Hand the entry's file to a jail (spec->in). */
+void sw_plugin_entry_jail_in(const sw_plugin_entry *e, sw_jail *spec);
 /* The step of every plugin method: the first call starts the stepper's
  * child; each call copies y in, one round trip, and y back. */
 sw_step_fn sw_plugin_step;

@@ -1,7 +1,12 @@
-/* Child processes with limits and a watchdog. Invariants: the parent never
- * blocks on a child without a deadline or the cancel flag; a child never
- * outlives its parent (PR_SET_PDEATHSIG on Linux, end of file on its socket
- * elsewhere); writing to a dead child is an error, never a SIGPIPE. */
+/* Child processes with limits and a watchdog, jailed where asked. A jailed
+ * child is three processes: the first leaves the namespaces and builds the
+ * jail's root, the second is the jail's init (PID 1: when it ends, the
+ * kernel kills everything in the jail), the third locks itself down and
+ * runs the payload. Invariants: the parent never blocks on a child without
+ * a deadline or the cancel flag; no child outlives its parent
+ * (PR_SET_PDEATHSIG down the chain); writing to a dead child is an error,
+ * never a SIGPIPE. */
+#define _GNU_SOURCE /* namespaces, setresuid, pipe2, sethostname: Linux-only by design */
 #include "plugin/sandbox.h"
 
 #include <errno.h>
@@ -9,24 +14,25 @@
 #include <poll.h>
 #include <stdio.h>
 #include <string.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
+#include <sys/uio.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
-#endif
 
 #include "stepwise/stepwise.h"
 #include "util/signals.h"
 
-static volatile sig_atomic_t *cancel_flag;
+/* How long a read waits awake before it sleeps in poll. */
+#define SPIN_SECONDS 20e-6
 
-void sw_sandbox_set_cancel(volatile sig_atomic_t *flag) { cancel_flag = flag; }
-
-/* Also every signal util/signals.h catches (record, play, grade all use it). */
-int sw_sandbox_cancelled(void) { return (cancel_flag && *cancel_flag) || sw_signal_caught; }
+/* Every signal util/signals.h catches (record, play, grade all use it). */
+int sw_sandbox_cancelled(void) { return sw_signal_caught != 0; }
 
 double sw_sandbox_now(void)
 {
@@ -48,21 +54,27 @@ static void set_limit(int resource, rlim_t value)
     setrlimit(resource, &rl);
 }
 
+/* Close every descriptor from `from` up (close_range, else one by one). */
+static void close_from(int from)
+{
+    if (syscall(SYS_close_range, (unsigned)from, ~0u, 0) == 0)
+        return;
+    struct rlimit nofile;
+    long maxfd = getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur != RLIM_INFINITY &&
+                         nofile.rlim_cur < 65536 ? (long)nofile.rlim_cur : 65536;
+    for (long fd = from; fd < maxfd; fd++)
+        close((int)fd);
+}
+
 /* Everything the child does before running fn: it may only use what it was
- * handed, and nothing it does can reach the parent's terminal or files. */
-static void child_setup(int sock, int output_fd, const sw_limits *lim, pid_t parent)
+ * handed, and nothing it does can reach the parent's terminal or files. Its
+ * channel becomes descriptor 3; the rest above 2 are closed. */
+static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
 {
     setpgid(0, 0);
-#ifdef __linux__
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent)
-        _exit(127); /* the parent died before the line above */
-#else
-    (void)parent;
-#endif
     static const int ignored[] = { SIGINT, SIGQUIT, SIGHUP, SIGTSTP, SIGTTIN, SIGTTOU };
     static const int fatal[] = { SIGTERM, SIGPIPE, SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL,
-                                 SIGXCPU, SIGXFSZ, SIGALRM, SIGCHLD };
+                                 SIGXCPU, SIGXFSZ, SIGALRM, SIGCHLD, SIGSYS };
     for (size_t i = 0; i < sizeof ignored / sizeof ignored[0]; i++)
         signal(ignored[i], SIG_IGN);
     for (size_t i = 0; i < sizeof fatal / sizeof fatal[0]; i++)
@@ -78,12 +90,12 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, pid_t par
         dup2(out, STDOUT_FILENO);
         dup2(out, STDERR_FILENO);
     }
-    struct rlimit nofile;
-    long maxfd = getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur != RLIM_INFINITY &&
-                         nofile.rlim_cur < 65536 ? (long)nofile.rlim_cur : 65536;
-    for (long fd = 3; fd < maxfd; fd++)
-        if (fd != sock)
-            close((int)fd);
+    if (sock != 3) {
+        dup2(sock, 3);
+        close(sock);
+    }
+    fcntl(3, F_SETFD, 0);
+    close_from(keep + 1);
     if (lim && lim->cpu_seconds > 0)
         set_limit(RLIMIT_CPU, (rlim_t)(lim->cpu_seconds + 0.999));
 #if !defined(__SANITIZE_ADDRESS__) /* ASan reserves terabytes of address space */
@@ -93,13 +105,21 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, pid_t par
     if (lim && lim->output_bytes > 0)
         set_limit(RLIMIT_FSIZE, (rlim_t)lim->output_bytes);
     set_limit(RLIMIT_CORE, 0);
+    set_limit(RLIMIT_NOFILE, SW_CHILD_FILES);
+}
+
+/* Die with the parent; 0, or -1 when it is gone already. */
+static int die_with(pid_t parent)
+{
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    return getppid() == parent ? 0 : -1;
 }
 
 int sw_sandbox_spawn(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
                      char *err, size_t errlen)
 {
     memset(c, 0, sizeof *c);
-    c->to_child = c->from_child = -1;
+    c->to_child = c->from_child = c->status_fd = -1;
     int sv[2];
     if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0) {
         snprintf(err, errlen, "cannot create a socket pair for a child process: %s", strerror(errno));
@@ -116,14 +136,269 @@ int sw_sandbox_spawn(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *l
     }
     if (pid == 0) {
         close(sv[0]);
-        child_setup(sv[1], output_fd, lim, parent);
-        _exit(fn(ctx, sv[1], sv[1]));
+        if (die_with(parent) != 0)
+            _exit(127);
+        child_setup(sv[1], output_fd, lim, 3);
+        _exit(fn(ctx, 3, 3));
     }
     close(sv[1]);
     fcntl(sv[0], F_SETFD, FD_CLOEXEC);
     c->pid = pid;
     c->to_child = c->from_child = sv[0];
     return SW_OK;
+}
+
+/* ---- the jail's three processes ---------------------------------------------- */
+
+/* What the jail's set-up tells the parent on the sync socket: 'U' (left the
+ * namespaces: map the user), 'K' (locked down, the payload starts), or
+ * 'X' and this. */
+typedef struct jail_failure {
+    int err;
+    char step[120];
+} jail_failure;
+
+static void send_failure(int fd, int err, const char *step)
+{
+    jail_failure f = { err, "" };
+    snprintf(f.step, sizeof f.step, "%s", step ? step : "");
+    char tag = 'X';
+    if (write(fd, &tag, 1) == 1 && write(fd, &f, sizeof f) == (ssize_t)sizeof f)
+        return;
+}
+
+/* The jail's init (PID 1): starts the payload, reaps whatever ends in the
+ * jail, and reports how the payload ended; when it exits, the kernel kills
+ * every process left in the jail. */
+static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                      const sw_jail *spec, int sock, int sync, int status)
+{
+    if (die_with(getppid()) != 0)
+        _exit(127);
+    sethostname("stepwise", 8);
+    pid_t payload = fork();
+    if (payload < 0) {
+        send_failure(sync, errno, "fork of the payload");
+        _exit(127);
+    }
+    if (payload == 0) {
+        close(status);
+        if (die_with(1) != 0)
+            _exit(127);
+        const char *step = NULL;
+        /* sync kept at 4 until the lockdown is reported, the channel at 3 */
+        int sync_hi = fcntl(sync, F_DUPFD, 10), sock_hi = fcntl(sock, F_DUPFD, 10);
+        close(sync);
+        close(sock);
+        if (sync_hi < 0 || sock_hi < 0 || dup2(sync_hi, 4) != 4)
+            _exit(127);
+        close(sync_hi);
+        child_setup(sock_hi, output_fd, lim, 4);
+        set_limit(RLIMIT_NPROC, SW_CHILD_PROCS);
+        int rc = sw_jail_lockdown(spec->profile, &step);
+        if (rc != 0) {
+            send_failure(4, rc, step);
+            _exit(127);
+        }
+        char tag = 'K';
+        if (write(4, &tag, 1) != 1)
+            _exit(127);
+        close(4);
+        _exit(fn(ctx, 3, 3));
+    }
+    close(sync);
+    int st = 0;
+    for (;;) {
+        int any;
+        pid_t w = waitpid(-1, &any, 0);
+        if (w == payload) {
+            st = any;
+            break;
+        }
+        if (w < 0 && errno != EINTR)
+            _exit(127);
+    }
+    sw_jail_send_outputs(spec, sock);
+    int32_t report = st;
+    if (write(status, &report, sizeof report) != (ssize_t)sizeof report)
+        _exit(127);
+    _exit(0);
+}
+
+/* The first child: leave the namespaces, wait to be mapped, build the
+ * root, start the init and wait for it. */
+static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                       const sw_jail *spec, int sock, int sync, int status, pid_t parent)
+{
+    if (die_with(parent) != 0)
+        _exit(127);
+    setpgid(0, 0);
+    const char *step = NULL;
+    int rc = sw_jail_unshare(&step);
+    char tag = 'U';
+    if (rc != 0) {
+        send_failure(sync, rc, step);
+        _exit(127);
+    }
+    if (write(sync, &tag, 1) != 1 || read(sync, &tag, 1) != 1 || tag != 'M')
+        _exit(127);
+    rc = sw_jail_build(spec, &step);
+    if (rc != 0) {
+        send_failure(sync, rc, step);
+        _exit(127);
+    }
+    pid_t init = fork();
+    if (init < 0) {
+        send_failure(sync, errno, "fork of the jail's init");
+        _exit(127);
+    }
+    if (init == 0)
+        jail_init(fn, ctx, lim, output_fd, spec, sock, sync, status);
+    close(sock);
+    close(sync);
+    close(status);
+    for (;;) {
+        int st;
+        pid_t w = waitpid(init, &st, 0);
+        if (w == init || (w < 0 && errno != EINTR))
+            _exit(0);
+    }
+}
+
+/* The parent's side of the set-up: map the user, wait for the lockdown. */
+static int jail_handshake(pid_t pid, int sync, char *err, size_t errlen)
+{
+    char tag = 0, why[SW_ERRLEN];
+    double limit = 10.0;
+    int rc = sw_sandbox_read(sync, &tag, 1, limit);
+    if (rc == 1 && tag == 'U') {
+        if (sw_jail_map_user(pid, why, sizeof why) != 0) {
+            snprintf(err, errlen, "the sandbox could not be set up: %s", why);
+            return SW_EIO;
+        }
+        tag = 'M';
+        if (sw_sandbox_write(sync, &tag, 1) != 0)
+            rc = 0;
+        else
+            rc = sw_sandbox_read(sync, &tag, 1, limit);
+    }
+    if (rc == 1 && tag == 'K')
+        return SW_OK;
+    jail_failure f;
+    if (rc == 1 && tag == 'X' && sw_sandbox_read(sync, &f, sizeof f, limit) == 1) {
+        f.step[sizeof f.step - 1] = '\0';
+        snprintf(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
+                 "user namespaces and seccomp (docs/sandbox.md), or --no-sandbox inside a disposable "
+                 "container", f.step, strerror(f.err));
+        return SW_EIO;
+    }
+    snprintf(err, errlen, "the sandbox could not be set up (its first process %s)",
+             rc == -2 ? "did not answer within 10 s" : rc == -1 ? "was interrupted" : "ended");
+    return SW_EIO;
+}
+
+int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                            const sw_jail *spec, char *err, size_t errlen)
+{
+    if (!spec || !sw_jail_enabled())
+        return sw_sandbox_spawn(c, fn, ctx, lim, output_fd, err, errlen);
+    memset(c, 0, sizeof *c);
+    c->to_child = c->from_child = c->status_fd = -1;
+    int sv[2], sync[2], status[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
+        snprintf(err, errlen, "cannot create a socket pair for a child process: %s", strerror(errno));
+        return SW_EIO;
+    }
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sync) != 0) {
+        snprintf(err, errlen, "cannot create a socket pair for a child process: %s", strerror(errno));
+        close(sv[0]);
+        close(sv[1]);
+        return SW_EIO;
+    }
+    if (pipe2(status, O_CLOEXEC) != 0) {
+        snprintf(err, errlen, "cannot create a pipe for a child process: %s", strerror(errno));
+        close(sv[0]); close(sv[1]); close(sync[0]); close(sync[1]);
+        return SW_EIO;
+    }
+    fflush(NULL);
+    pid_t parent = getpid();
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(sv[0]);
+        close(sync[0]);
+        close(status[0]);
+        jail_first(fn, ctx, lim, output_fd, spec, sv[1], sync[1], status[1], parent);
+    }
+    close(sv[1]);
+    close(sync[1]);
+    close(status[1]);
+    if (pid < 0) {
+        snprintf(err, errlen, "cannot start a child process: %s", strerror(errno));
+        close(sv[0]); close(sync[0]); close(status[0]);
+        return SW_EIO;
+    }
+    c->pid = pid;
+    c->to_child = c->from_child = sv[0];
+    c->status_fd = status[0];
+    int rc = jail_handshake(pid, sync[0], err, errlen);
+    close(sync[0]);
+    if (rc != SW_OK) {
+        sw_child_end end;
+        sw_sandbox_kill(c, &end);
+    }
+    return rc;
+}
+
+static int nothing(void *ctx, int in, int out)
+{
+    (void)ctx;
+    (void)in;
+    (void)out;
+    return 0;
+}
+
+int sw_sandbox_probe(char *err, size_t errlen)
+{
+    static int known; /* 1 works, -1 does not */
+    static char why[SW_ERRLEN];
+    if (!sw_jail_enabled())
+        return SW_OK;
+    if (!known) {
+        sw_child c;
+        sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
+        known = sw_sandbox_spawn_jailed(&c, nothing, NULL, NULL, -1, &spec, why, sizeof why) == SW_OK ? 1 : -1;
+        if (known == 1) {
+            sw_child_end end;
+            sw_sandbox_reap(&c, 5.0, &end);
+        }
+    }
+    if (known < 0)
+        snprintf(err, errlen, "%s", why);
+    return known > 0 ? SW_OK : SW_EIO;
+}
+
+int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t *len)
+{
+    int64_t size;
+    *buf = NULL;
+    *len = 0;
+    if (sw_sandbox_read(fd, &size, sizeof size, seconds) != 1)
+        return -1;
+    if (size == -1)
+        return 0;
+    if (size < 0 || (uint64_t)size > max)
+        return -1;
+    char *b = malloc((size_t)size + 1);
+    if (!b)
+        return -1;
+    if (size > 0 && sw_sandbox_read(fd, b, (size_t)size, seconds) != 1) {
+        free(b);
+        return -1;
+    }
+    b[size] = '\0';
+    *buf = b;
+    *len = (size_t)size;
+    return 1;
 }
 
 int sw_sandbox_wait(int fd, double seconds)
@@ -154,23 +429,41 @@ int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
     double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
     char *p = buf;
     size_t got = 0;
+    int sock = 1;
+    double spin_until = -1;
     while (got < len) {
-        double left = seconds >= 0 ? deadline - sw_sandbox_now() : -1;
-        if (seconds >= 0 && left < 0)
-            left = 0;
-        int w = sw_sandbox_wait(fd, left);
-        if (w < 0)
-            return -1;
-        if (w == 0)
-            return -2;
-        ssize_t n = read(fd, p + got, len - got);
+        /* What is there already costs one call, no poll; a reply due in
+         * microseconds (a plugin's step) is waited for awake, briefly,
+         * which saves two context switches a step when both have a core. */
+        ssize_t n = sock ? recv(fd, p + got, len - got, MSG_DONTWAIT) : -1;
+        if (n < 0 && errno == EAGAIN && sock) {
+            double now = sw_sandbox_now();
+            if (spin_until < 0)
+                spin_until = now + SPIN_SECONDS;
+            if (now < spin_until)
+                continue;
+        }
+        if (n < 0 && errno == ENOTSOCK)
+            sock = 0;
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR || errno == ENOTSOCK)) {
+            double left = seconds >= 0 ? deadline - sw_sandbox_now() : -1;
+            if (seconds >= 0 && left < 0)
+                left = 0;
+            int w = sw_sandbox_wait(fd, left);
+            if (w < 0)
+                return -1;
+            if (w == 0)
+                return -2;
+            if (sock)
+                continue;
+            n = read(fd, p + got, len - got);
+            if (n < 0 && (errno == EINTR || errno == EAGAIN))
+                continue;
+        }
         if (n == 0)
             return 0;
-        if (n < 0) {
-            if (errno == EINTR || errno == EAGAIN)
-                continue;
+        if (n < 0)
             return errno == ECONNRESET ? 0 : -3;
-        }
         got += (size_t)n;
     }
     return 1;
@@ -178,15 +471,31 @@ int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
 
 int sw_sandbox_write(int fd, const void *buf, size_t len)
 {
-    const char *p = buf;
-    while (len > 0) {
-        ssize_t n = send(fd, p, len, MSG_NOSIGNAL);
-        if (n < 0 && errno == EINTR)
+    struct iovec part = { (void *)buf, len };
+    return sw_sandbox_writev(fd, &part, 1);
+}
+
+int sw_sandbox_writev(int fd, struct iovec *parts, int n)
+{
+    struct msghdr msg;
+    memset(&msg, 0, sizeof msg);
+    msg.msg_iov = parts;
+    msg.msg_iovlen = (size_t)n;
+    while (msg.msg_iovlen > 0) {
+        ssize_t sent = sendmsg(fd, &msg, MSG_NOSIGNAL);
+        if (sent < 0 && errno == EINTR)
             continue;
-        if (n <= 0)
+        if (sent <= 0)
             return -1;
-        p += n;
-        len -= (size_t)n;
+        while (msg.msg_iovlen > 0 && (size_t)sent >= msg.msg_iov->iov_len) {
+            sent -= (ssize_t)msg.msg_iov->iov_len;
+            msg.msg_iov++;
+            msg.msg_iovlen--;
+        }
+        if (msg.msg_iovlen > 0) {
+            msg.msg_iov->iov_base = (char *)msg.msg_iov->iov_base + sent;
+            msg.msg_iov->iov_len -= (size_t)sent;
+        }
     }
     return 0;
 }
@@ -200,8 +509,25 @@ static void fill_end(int status, sw_child_end *end)
         end->signal = WTERMSIG(status);
 }
 
+/* A jailed child's payload: how it ended, as its init reported it (a wait
+ * status it must be able to be), over what the first process did. */
+static void jail_end(sw_child *c, sw_child_end *end)
+{
+    int32_t st;
+    if (c->status_fd < 0)
+        return;
+    ssize_t n = read(c->status_fd, &st, sizeof st);
+    if (n != (ssize_t)sizeof st || !(WIFEXITED(st) || WIFSIGNALED(st)))
+        return; /* killed before it could say: keep what we saw */
+    memset(end, 0, sizeof *end);
+    fill_end(st, end);
+}
+
 static void close_child(sw_child *c)
 {
+    if (c->status_fd >= 0)
+        close(c->status_fd);
+    c->status_fd = -1;
     if (c->to_child >= 0)
         close(c->to_child);
     if (c->from_child >= 0 && c->from_child != c->to_child)
@@ -230,6 +556,12 @@ void sw_sandbox_kill(sw_child *c, sw_child_end *end)
             fill_end(status, end);
         if (end->killed && end->signal != SIGKILL)
             end->killed = 0; /* it ended by itself just before */
+        if (c->status_fd >= 0) {
+            int was_killed = end->killed;
+            jail_end(c, end);
+            if (was_killed && end->signal == 0 && !end->exited)
+                end->killed = 1;
+        }
         kill(-c->pid, SIGKILL); /* anything it left running in its group */
     }
     close_child(c);
@@ -248,6 +580,7 @@ void sw_sandbox_reap(sw_child *c, double seconds, sw_child_end *end)
         pid_t rc = waitpid(c->pid, &status, WNOHANG);
         if (rc == c->pid) {
             fill_end(status, end);
+            jail_end(c, end);
             kill(-c->pid, SIGKILL);
             close_child(c);
             return;
@@ -276,6 +609,8 @@ static const char *signal_words(int sig, const char **name)
     case SIGTERM: *name = "SIGTERM"; return "terminated";
     case SIGPIPE: *name = "SIGPIPE"; return "wrote to a closed pipe";
     case SIGTRAP: *name = "SIGTRAP"; return "trap: a breakpoint or a sanitizer";
+    case SIGSYS: *name = "SIGSYS"; return "a system call the sandbox forbids: a plugin may only compute "
+                                          "(no files, processes or network)";
     default: *name = "a signal"; return "killed by a signal";
     }
 }

@@ -1,13 +1,16 @@
 /* Child processes for untrusted work (student plugins, graded submissions):
- * fork with CPU-time, memory and output limits, talk over pipes with a
- * watchdog on every wait, and say in words how a child ended. Pure C, no
- * printing; POSIX (Linux: the child also dies with its parent). */
+ * fork with CPU-time, memory, output, descriptor and process limits, in the
+ * jail (plugin/jail.h) where asked, talk over a socket with a watchdog on
+ * every wait, and say in words how a child ended. Pure C, no printing;
+ * Linux (the child also dies with its parent). */
 #ifndef SW_PLUGIN_SANDBOX_H
 #define SW_PLUGIN_SANDBOX_H
 
 #include <signal.h>
 #include <stddef.h>
 #include <sys/types.h>
+
+#include "plugin/jail.h"
 
 /* Limits applied in the child before it runs anything; 0 means none. */
 typedef struct sw_limits {
@@ -16,11 +19,17 @@ typedef struct sw_limits {
     size_t output_bytes;   /* RLIMIT_FSIZE: files it writes stop growing past it */
 } sw_limits;
 
-/* A running child and the parent's ends of its two pipes. */
+/* Always, whatever the limits: descriptors a child may hold and processes
+ * its user may run at once (RLIMIT_NOFILE, RLIMIT_NPROC in the jail). */
+#define SW_CHILD_FILES 64
+#define SW_CHILD_PROCS 64
+
+/* A running child and the parent's ends of its channel. */
 typedef struct sw_child {
-    pid_t pid;             /* 0: none */
+    pid_t pid;             /* 0: none (jailed: the first of the jail's processes) */
     int to_child;          /* the child reads its commands from the other end */
     int from_child;        /* the child writes its replies to the other end */
+    int status_fd;         /* jailed: the jail's init reports how the payload ended; else -1 */
 } sw_child;
 
 /* How a child ended. */
@@ -35,11 +44,8 @@ typedef struct sw_child_end {
  * out_fd: replies); the return value is its exit status. */
 typedef int sw_child_fn(void *ctx, int in_fd, int out_fd);
 
-/* A flag a signal handler sets: every wait of this module returns early, as
- * cancelled, once *flag is non-zero, or once util/signals.h has caught a
- * signal (sw_signal_caught). NULL: only the latter. */
-void sw_sandbox_set_cancel(volatile sig_atomic_t *flag);
-/* Whether the cancel flag is set now. */
+/* Whether a wait of this module is cancelled now: util/signals.h caught a
+ * signal (sw_signal_caught), and every wait returns early, as cancelled. */
 int sw_sandbox_cancelled(void);
 
 /* Fork a child that runs fn(ctx, ...) under lim, its stdin /dev/null, its
@@ -50,6 +56,20 @@ int sw_sandbox_cancelled(void);
 int sw_sandbox_spawn(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
                      char *err, size_t errlen);
 
+/* The same, with the payload in the jail (spec); without the jail
+ * (sw_jail_enabled() is 0) exactly sw_sandbox_spawn. The payload's
+ * channel is fd 3 in the child. 0, or SW_EIO with err naming the layer the
+ * kernel refused (no user namespaces, no seccomp) and what to do. */
+int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                            const sw_jail *spec, char *err, size_t errlen);
+/* Whether the jail can be built here (tried once, then remembered); 0, or
+ * SW_EIO with err naming what the kernel refused. 0 without the jail. */
+int sw_sandbox_probe(char *err, size_t errlen);
+/* Read a file the jail sends back (sw_jail_send_outputs): at most max
+ * bytes into *buf (malloc'ed, NUL-terminated), *len its size. 1 done, 0 the
+ * jail had no such regular file, -1 a broken or oversized record. */
+int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t *len);
+
 /* Wait until fd is readable, for at most `seconds` (< 0: no limit). 1
  * readable (or at end of file), 0 timed out, -1 cancelled. */
 int sw_sandbox_wait(int fd, double seconds);
@@ -58,6 +78,9 @@ int sw_sandbox_wait(int fd, double seconds);
 int sw_sandbox_read(int fd, void *buf, size_t len, double seconds);
 /* Write all of buf; 0, or -1 when the child is gone (EPIPE is not a signal). */
 int sw_sandbox_write(int fd, const void *buf, size_t len);
+/* The same for n parts in one message (parts is used up). */
+struct iovec;
+int sw_sandbox_writev(int fd, struct iovec *parts, int n);
 
 /* Kill the child (SIGKILL to its process group) and reap it. */
 void sw_sandbox_kill(sw_child *c, sw_child_end *end);

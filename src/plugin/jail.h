@@ -1,0 +1,70 @@
+/* The jail: Linux's own isolation around code from a submission, in layers
+ * (after bubblewrap): new user, mount, PID, network, IPC, UTS and cgroup
+ * namespaces; a minimal read-only root (the system's /usr and libraries,
+ * /dev/null, /dev/zero, /dev/urandom, the submission copied into a private
+ * size-limited tmpfs /work); no capabilities, PR_SET_NO_NEW_PRIVS, Landlock
+ * where the kernel has it, and a seccomp filter (libseccomp). Needs no
+ * setuid helper: unprivileged user namespaces do it. Pure C, no printing. */
+#ifndef SW_PLUGIN_JAIL_H
+#define SW_PLUGIN_JAIL_H
+
+#include <stddef.h>
+
+/* What runs inside. COMPUTE: a student's plugin in this program's own image
+ * (forked, never exec'd): no files but its own, no processes, no network;
+ * sw_jail_seal() narrows it further once the plugin is loaded. COMPILE: a
+ * compiler exec'd on the submission: it may read the system and write
+ * /work, fork within the jail's PID namespace, and nothing else. */
+typedef enum sw_jail_profile { SW_JAIL_COMPUTE, SW_JAIL_COMPILE } sw_jail_profile;
+
+/* A file handed in: the parent opens it (fd), the jail copies it to
+ * /work/name before the payload runs (at most SW_JAIL_FILE_MAX bytes). */
+typedef struct sw_jail_file {
+    int fd;
+    const char *name;
+} sw_jail_file;
+
+#define SW_JAIL_FILE_MAX ((size_t)64 << 20)
+#define SW_JAIL_FILES 4
+
+typedef struct sw_jail {
+    sw_jail_profile profile;
+    sw_jail_file in[SW_JAIL_FILES];
+    int nin;
+    int include_fd;            /* -1, or a directory whose *.h go to /include/stepwise */
+    const char *out[SW_JAIL_FILES]; /* /work files sent back once the payload ended */
+    int nout;
+    size_t disk_bytes;         /* the size of /work (0: 64 MiB) */
+} sw_jail;
+
+/* Whether submissions run jailed (the default) or, after
+ * sw_jail_set_enabled(0) (--no-sandbox, STEPWISE_SANDBOX=off), only in a
+ * child process with limits, for a disposable container that holds one
+ * submission. */
+int sw_jail_enabled(void);
+void sw_jail_set_enabled(int on);
+
+/* ---- used by the sandbox (plugin/sandbox.c) -------------------------------- */
+
+/* In the first child, right after fork: leave every namespace but the PID
+ * one's children. 0, or the errno of the failed step with *step naming it. */
+int sw_jail_unshare(const char **step);
+/* In the parent: map the child's root to an unprivileged user ("nobody"
+ * when we are root, else ourselves). 0 or -1 with why. */
+int sw_jail_map_user(int pid, char *why, size_t len);
+/* In the first child, once mapped: become the namespace's root, build the
+ * jail's root from spec and pivot into it. 0, or an errno with *step. */
+int sw_jail_build(const sw_jail *spec, const char **step);
+/* In the payload's process, last before the payload: drop every
+ * capability, no new privileges, Landlock, the profile's seccomp filter.
+ * 0, or an errno with *step. */
+int sw_jail_lockdown(sw_jail_profile profile, const char **step);
+/* In a COMPUTE payload, once the plugin is loaded: allow only what stepping
+ * needs from now on (read and write on the descriptors it has, memory,
+ * time, its own signals, exit). 0 or an errno. */
+int sw_jail_seal(void);
+/* In the jail's init process after the payload ended: send each spec->out
+ * file over fd as [int64 size, -1 when absent or not a regular file][bytes]. */
+void sw_jail_send_outputs(const sw_jail *spec, int fd);
+
+#endif

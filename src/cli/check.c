@@ -12,6 +12,7 @@
 
 #include "cli/check_report.h"
 #include "grade/verdict.h"
+#include "plugin/jail.h"
 
 static const char check_help[] =
     "usage: stepwise check TRACE [--assignment A | --against REF | --reference NAME]\n"
@@ -51,6 +52,8 @@ static const char check_help[] =
     "      --ignore COL       leave a column out of the comparison; repeatable\n"
     "      --no-explain       do not try the usual mistakes on a failure\n"
     "      --no-measure       plugin form: do not measure order and stability\n"
+    "      --no-sandbox       plugin form: run the plugin without the jail, only in a\n"
+    "                         disposable container (docs/sandbox.md)\n"
     "      --plugin-timeout S seconds a plugin may take for one step (default 2)\n"
     "      --json             print a JSON report (fields in docs/trace-format.md)\n"
     "  -h, --help             this help\n"
@@ -59,7 +62,8 @@ static const char check_help[] =
     "on stderr naming file and line).\n";
 
 enum { O_AGAINST = 256, O_REFERENCE, O_PLUGIN, O_SCENE, O_DT, O_RTOL, O_ATOL, O_JSON,
-       O_ASSIGNMENT, O_TOL, O_IGNORE, O_NO_EXPLAIN, O_NO_MEASURE, O_TIMEOUT };
+       O_ASSIGNMENT, O_TOL, O_IGNORE, O_NO_EXPLAIN, O_NO_MEASURE, O_TIMEOUT,
+       O_NO_SANDBOX };
 
 typedef struct check_args {
     sw_check_request req;
@@ -172,6 +176,7 @@ static int take_option(check_args *a, int opt, const char **plugins, int *nplugi
         break;
     case O_NO_EXPLAIN: req->explain = 0; break;
     case O_NO_MEASURE: req->measure = 0; break;
+    case O_NO_SANDBOX: sw_jail_set_enabled(0); break;
     case O_TIMEOUT: {
         double s;
         rc = sw_cli_positive("--plugin-timeout", optarg, &s);
@@ -206,6 +211,7 @@ int sw_cmd_check(int argc, char **argv)
         { "ignore", required_argument, NULL, O_IGNORE },
         { "no-explain", no_argument, NULL, O_NO_EXPLAIN },
         { "no-measure", no_argument, NULL, O_NO_MEASURE },
+        { "no-sandbox", no_argument, NULL, O_NO_SANDBOX },
         { "plugin-timeout", required_argument, NULL, O_TIMEOUT },
         { "json", no_argument, NULL, O_JSON },
         { "help", no_argument, NULL, 'h' },

@@ -154,6 +154,9 @@ bench:
 	./$(BENCHBIN)
 	@if command -v valgrind >/dev/null 2>&1; then echo; echo "instructions per particle-step (callgrind):"; \
 	    sh bench/instructions.sh ./$(BENCHBIN); else echo "instructions per particle-step: skipped (no valgrind)"; fi
+	@$(MAKE) --no-print-directory $(BIN)
+	@echo; echo "grading a class of 120, jailed and not (bench/grade_class.sh):"
+	@sh bench/grade_class.sh ./$(BIN) 120 3
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

@@ -370,6 +370,8 @@ int sw_cmd_grade(int argc, char **argv)
         } else if (strcmp(a, "--output") == 0) {
             rc = sw_cli_long("--output", val, 4, 1 << 20, &n);
             lim.output_bytes = (size_t)n << 10;
+        } else if (strcmp(a, "--no-sandbox") == 0) {
+            sw_jail_set_enabled(0);
         } else if (strcmp(a, "--plugin-timeout") == 0) {
             rc = sw_cli_positive("--plugin-timeout", val, &d);
             if (rc == SW_EXIT_OK)

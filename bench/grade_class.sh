@@ -1,0 +1,53 @@
+#!/bin/sh
+# The cost of the sandbox on a class: N submissions, half traces (recorded
+# with stepwise: correct) and half plugins (C sources of an Euler step, each
+# a little different so every one is compiled), graded with and without the
+# jail, RUNS times each, interleaved. Prints each run's wall time and the
+# medians and their ratio.
+#
+# usage: sh bench/grade_class.sh [STEPWISE] [N] [RUNS]
+set -u
+SW=$(cd "$(dirname "${1:-./stepwise}")" && pwd)/$(basename "${1:-./stepwise}")
+N=${2:-120}
+RUNS=${3:-3}
+root=$(cd "$(dirname "$0")/.." && pwd)
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir" || exit 1
+mkdir class
+cat > assignment.txt <<'A'
+# stepwise assignment 1
+# title: explicit Euler on a hanging spring
+# scene: spring
+# integrator: euler
+# dt: 0.01
+# steps: 300
+A
+"$SW" record spring -i euler --dt 0.01 --steps 300 -o ref.trace >/dev/null || exit 1
+i=0
+while [ $i -lt $((N / 2)) ]; do
+    sed "s/^# scene/# student: Trace $i\n# scene/" ref.trace > class/t$i.trace
+    sed -e "s/student-euler/student-$i/" -e "s|explicit Euler (student plugin)|plugin $i|" \
+        "$root/examples/euler_plugin.c" > class/p$i.c
+    i=$((i + 1))
+done
+export STEPWISE_INCLUDE="$root/include"
+now() { date +%s.%N; }
+on="" off=""
+r=0
+while [ $r -lt "$RUNS" ]; do
+    for mode in on off; do
+        flag=""; [ $mode = off ] && flag=--no-sandbox
+        t0=$(now)
+        "$SW" grade --assignment assignment.txt $flag class >/dev/null 2>&1
+        rc=$?
+        t1=$(now)
+        s=$(echo "$t1 - $t0" | bc)
+        echo "run $r sandbox $mode: $s s (exit $rc)"
+        [ $mode = on ] && on="$on $s" || off="$off $s"
+    done
+    r=$((r + 1))
+done
+median() { echo "$@" | tr ' ' '\n' | grep . | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+mon=$(median $on); moff=$(median $off)
+echo "class of $N ($((N / 2)) traces, $((N / 2)) plugins from source): median $mon s jailed, $moff s without the jail, ratio $(echo "scale=2; $mon / $moff" | bc)"

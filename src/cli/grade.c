@@ -73,6 +73,7 @@ typedef struct grade_job {
     const sw_check_request *base;
     size_t report_max;
     grade_list *list;        /* the class so far: wiped in the worker */
+    const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
 } grade_job;
 
 /* In a submission's worker, before anything of the submission runs: forget
@@ -137,6 +138,7 @@ static int grade_child(void *ctx, int in, int out)
     (void)in;
     const grade_job *job = ctx;
     forget_the_class(job);
+    sw_plugin_set_limits(job->lim); /* the documented limits hold for the plugin's processes too */
     sw_check_request req = *job->base;
     static sw_verdict v;
     static grade_record rec;
@@ -427,7 +429,7 @@ int sw_cmd_grade(int argc, char **argv)
     double start = sw_sandbox_now();
     for (int i = 0; i < list.n && !sw_signal_caught; i++) {
         grade_job job = { list.items[i].path, list.items[i].plugin, build_dir, i, &base,
-                          lim.output_bytes, &list };
+                          lim.output_bytes, &list, &lim };
         grade_one(&list.items[i], &job, &lim, wall);
         grade_print_row(&list.items[i]);
     }

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -26,6 +27,31 @@
 static sw_plugin_entry entries[SW_PLUGIN_MAX];
 static int nentries;
 static double timeout_seconds;
+static sw_limits limits;
+
+void sw_plugin_set_limits(const sw_limits *lim)
+{
+    memset(&limits, 0, sizeof limits);
+    if (lim)
+        limits = *lim;
+}
+
+static double seconds_of(struct timeval tv) { return (double)tv.tv_sec + 1e-6 * (double)tv.tv_usec; }
+
+void sw_plugin_limits(sw_limits *lim)
+{
+    *lim = limits;
+    if (limits.cpu_seconds > 0) {
+        /* every plugin process ends in this process's children's account */
+        struct rusage self, kids;
+        getrusage(RUSAGE_SELF, &self);
+        getrusage(RUSAGE_CHILDREN, &kids);
+        double used = seconds_of(self.ru_utime) + seconds_of(self.ru_stime) + seconds_of(kids.ru_utime) +
+                      seconds_of(kids.ru_stime);
+        double left = limits.cpu_seconds - used;
+        lim->cpu_seconds = left > 1 ? left : 1;
+    }
+}
 
 void sw_plugin_set_timeout(double seconds)
 {
@@ -213,7 +239,9 @@ static int probe(const sw_plugin_entry *e, const char *shown, probe_reply *r, ch
     char msg[SW_ERRLEN];
     sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
     sw_plugin_entry_jail_in(e, &spec);
-    if (sw_sandbox_spawn_jailed(&child, probe_child, (void *)e, NULL, -1, &spec, msg, sizeof msg) != SW_OK) {
+    sw_limits lim;
+    sw_plugin_limits(&lim);
+    if (sw_sandbox_spawn_jailed(&child, probe_child, (void *)e, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EIO;
     }

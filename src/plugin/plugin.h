@@ -46,6 +46,12 @@ int sw_plugin_name_ok(const char *name, char *why, size_t whylen);
 /* Whether label is an allowed label; 1, or 0 with why filled. */
 int sw_plugin_label_ok(const char *label, char *why, size_t whylen);
 
+/* The grader's limits for every plugin process from now on: memory and
+ * output each, CPU time for all of them and this process together (each
+ * new one gets what is left, at least a second). NULL: none. */
+struct sw_limits;
+void sw_plugin_set_limits(const struct sw_limits *lim);
+
 /* Watchdog for each call into a plugin, in seconds (> 0). */
 void sw_plugin_set_timeout(double seconds);
 double sw_plugin_timeout(void);

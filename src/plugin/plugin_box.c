@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/socket.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
@@ -406,7 +407,9 @@ static void box_start(step_box *b)
     char err[SW_ERRLEN];
     sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
     sw_plugin_entry_jail_in(b->entry, &spec);
-    if (sw_sandbox_spawn_jailed(&b->child, step_child, b, NULL, -1, &spec, err, sizeof err) != SW_OK) {
+    sw_limits lim;
+    sw_plugin_limits(&lim);
+    if (sw_sandbox_spawn_jailed(&b->child, step_child, b, &lim, -1, &spec, err, sizeof err) != SW_OK) {
         box_fail(b, SW_PF_START, err, NULL);
         return;
     }
@@ -426,6 +429,58 @@ static void box_start(step_box *b)
         return;
     }
     box_lost(b, rc, 1);
+}
+
+/* A step's result: the reply, checked, then y into b->buf. 1, or as
+ * box_reply_read (-4: forged, said already). */
+static int box_receive(step_box *b, box_reply *r)
+{
+    int rc = box_reply_read(b, r);
+    if (rc == 1 && r->tag != TAG_DONE) {
+        box_forged(b, "not a step's result");
+        return -4;
+    }
+    if (rc == 1 && (r->evals < b->evals || r->evals - b->evals > MAX_COUNT_PER_STEP ||
+                    r->solves < b->solves || r->solves - b->solves > MAX_COUNT_PER_STEP ||
+                    r->iters < b->iters || r->iters - b->iters > MAX_COUNT_PER_STEP)) {
+        box_forged(b, "evaluation counts that run backwards or beyond a billion a step");
+        return -4;
+    }
+    if (rc == 1)
+        rc = sw_sandbox_read(b->child.from_child, b->buf, b->vec, sw_plugin_timeout());
+    return rc;
+}
+
+sw_plugin_fault sw_plugin_box_replay(const unsigned char *data, size_t len, int dim, int wv, char *why,
+                                     size_t whylen)
+{
+    step_box b;
+    memset(&b, 0, sizeof b);
+    b.dim = dim;
+    b.wv = wv;
+    b.vec = (size_t)dim * sizeof(double);
+    b.child.to_child = b.child.from_child = b.child.status_fd = -1;
+    int sv[2];
+    if (dim < 1 || dim > 4096 || wv < 0 || wv > 64 || socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0 ||
+        !(b.buf = malloc(b.vec))) {
+        snprintf(why, whylen, "cannot replay");
+        return SW_PF_START;
+    }
+    /* the bytes as the child's, then its end of the socket closed */
+    size_t room = len < 65536 ? len : 65536;
+    if (sw_sandbox_write(sv[1], data, room) != 0)
+        room = 0;
+    close(sv[1]);
+    b.child.from_child = b.child.to_child = sv[0];
+    box_reply r;
+    int rc = box_receive(&b, &r);
+    if (rc != 1)
+        box_lost(&b, rc, 0);
+    else
+        sw_sandbox_kill(&b.child, NULL);
+    free(b.buf);
+    snprintf(why, whylen, "%s", b.fault == SW_PF_NONE ? "a step" : b.message);
+    return b.fault;
 }
 
 int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -469,19 +524,7 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     box_cmd cmd = { OP_STEP, 0, *t, h };
     box_reply r;
     struct iovec parts[2] = { { &cmd, sizeof cmd }, { y, b->vec } };
-    int rc = sw_sandbox_writev(b->child.to_child, parts, 2) == 0 ? box_reply_read(b, &r) : 0;
-    if (rc == 1 && r.tag != TAG_DONE) {
-        box_forged(b, "not a step's result");
-        rc = -4;
-    }
-    if (rc == 1 && (r.evals < b->evals || r.evals - b->evals > MAX_COUNT_PER_STEP ||
-                    r.solves < b->solves || r.solves - b->solves > MAX_COUNT_PER_STEP ||
-                    r.iters < b->iters || r.iters - b->iters > MAX_COUNT_PER_STEP)) {
-        box_forged(b, "evaluation counts that run backwards or beyond a billion a step");
-        rc = -4;
-    }
-    if (rc == 1)
-        rc = sw_sandbox_read(b->child.from_child, b->buf, b->vec, sw_plugin_timeout());
+    int rc = sw_sandbox_writev(b->child.to_child, parts, 2) == 0 ? box_receive(b, &r) : 0;
     if (rc != 1) {
         box_lost(b, rc, 0);
         s->why = b->message;

@@ -11,6 +11,7 @@
 #include "app/app.h"
 #include "app/runner.h"
 #include "grade/check.h"
+#include "plugin/plugin_box.h"
 #include "trace/trace.h"
 #include "lesson/lesson.h"
 #include "render/canvas.h"
@@ -246,4 +247,13 @@ int sw_fuzz_check(const uint8_t *data, size_t len)
     }
     remove(path);
     return ok;
+}
+
+int sw_fuzz_channel(const uint8_t *data, size_t len)
+{
+    if (len == 0)
+        return 0;
+    char why[SW_ERRLEN];
+    int dim = (data[0] & 15) + 1, wv = (data[0] >> 4) & 3;
+    return sw_plugin_box_replay(data + 1, len - 1, dim, wv, why, sizeof why) == SW_PF_NONE;
 }

@@ -26,5 +26,9 @@ int sw_fuzz_runner(const uint8_t *data, size_t len);
 /* The check path: a trace read, its run rebuilt from its metadata (small
  * runs only) and compared row by row. 1 when the trace passes. */
 int sw_fuzz_check(const uint8_t *data, size_t len);
+/* The plugin sandbox's channel, the grader's side: the first byte picks the
+ * system (dim 1..16, 0..3 work vectors), the rest is what a plugin's
+ * process sends back for one step. 1 when it is a valid step. */
+int sw_fuzz_channel(const uint8_t *data, size_t len);
 
 #endif

@@ -7,7 +7,6 @@
  * submission passed, 1 when any did not, 2 for bad usage. */
 #include "cli/cli.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -150,63 +149,6 @@ static int grade_child(void *ctx, int in, int out)
     return 0;
 }
 
-/* ---- the submissions ------------------------------------------------------ */
-
-static int kind_of(const char *name)
-{
-    size_t len = strlen(name);
-    static const char *const traces[] = { ".trace", ".csv" }, *const plugins[] = { ".so", ".c" };
-    for (int i = 0; i < 2; i++) {
-        size_t n = strlen(traces[i]);
-        if (len > n && strcmp(name + len - n, traces[i]) == 0)
-            return 1;
-        n = strlen(plugins[i]);
-        if (len > n && strcmp(name + len - n, plugins[i]) == 0)
-            return 2;
-    }
-    return 0;
-}
-
-static int cmp_names(const void *a, const void *b)
-{
-    return strcmp(((const grade_entry *)a)->path, ((const grade_entry *)b)->path);
-}
-
-/* Add FILE, or the submissions in DIR (sorted, the assignment itself left out). */
-static int collect(grade_list *list, const char *arg, const struct stat *assign_st)
-{
-    struct stat st;
-    if (stat(arg, &st) != 0)
-        return sw_cli_error("grade: '%.200s': %s", arg, strerror(errno));
-    if (!S_ISDIR(st.st_mode)) {
-        if (grade_list_add(list, arg, kind_of(arg) == 2) != SW_OK)
-            return sw_cli_error("grade: out of memory");
-        return SW_EXIT_OK;
-    }
-    DIR *d = opendir(arg);
-    if (!d)
-        return sw_cli_error("grade: cannot read the directory '%.200s': %s", arg, strerror(errno));
-    int first = list->n;
-    for (struct dirent *e; (e = readdir(d));) {
-        int kind = e->d_name[0] == '.' ? 0 : kind_of(e->d_name);
-        char path[PATH_MAX];
-        snprintf(path, sizeof path, "%s/%s", arg, e->d_name);
-        if (!kind || stat(path, &st) != 0 || !S_ISREG(st.st_mode) ||
-            (st.st_dev == assign_st->st_dev && st.st_ino == assign_st->st_ino)) {
-            list->ignored += e->d_name[0] != '.' && kind == 0;
-            continue;
-        }
-        if (grade_list_add(list, path, kind == 2) != SW_OK) {
-            closedir(d);
-            return sw_cli_error("grade: out of memory");
-        }
-    }
-    closedir(d);
-    if (list->n > first)
-        qsort(list->items + first, (size_t)(list->n - first), sizeof list->items[0], cmp_names);
-    return SW_EXIT_OK;
-}
-
 /* Grade one submission in a child; always fills e. */
 static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim, double wall)
 {
@@ -339,7 +281,7 @@ int sw_cmd_grade(int argc, char **argv)
         rc = sw_cli_error("%s", err);
     grade_list list = { 0 };
     for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
-        rc = collect(&list, files[i], &asg_st);
+        rc = grade_collect(&list, files[i], &asg_st);
     free(files);
     if (rc == SW_EXIT_OK && list.n == 0)
         rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "

@@ -27,6 +27,11 @@ typedef struct grade_list {
 } grade_list;
 
 int grade_list_add(grade_list *l, const char *path, int plugin);
+/* Add the submission FILE, or the submissions in the directory DIR (sorted
+ * by path; the file assign_st describes left out). SW_EXIT_OK, or
+ * SW_EXIT_USAGE with the error printed (grade_collect.c). */
+struct stat;
+int grade_collect(grade_list *list, const char *arg, const struct stat *assign_st);
 void grade_list_free(grade_list *l);
 /* The table's heading, then one row per graded submission. */
 void grade_print_head(const sw_assignment *a, int n, int ignored);

@@ -1,7 +1,8 @@
 /* Building a student's integrator from C source: `--plugin my.c` compiles
  * it with the documented flags (docs/plugins.md) into a private temporary
  * directory, under a time limit, and loads the result. The directory and
- * what is in it are removed when stepwise exits. */
+ * what is in it are removed when stepwise ends, however it ends
+ * (util/tmpdir.h: at exit, or by a watcher after a signal or a crash). */
 #include "cli/cli.h"
 
 #include <errno.h>
@@ -15,32 +16,13 @@
 
 #include "plugin/plugin.h"
 #include "plugin/sandbox.h"
+#include "util/tmpdir.h"
 
 /* Seconds a compiler may take for one plugin. */
 #define BUILD_SECONDS 60.0
 
 static char build_dir[PATH_MAX];
 static pid_t build_dir_owner;
-
-static void remove_build_dir(void)
-{
-    if (!build_dir[0] || getpid() != build_dir_owner)
-        return;
-    /* Only files stepwise made: pN.so and pN.log, no subdirectories. */
-    int fd = open(build_dir, O_RDONLY | O_DIRECTORY);
-    if (fd >= 0) {
-        close(fd);
-        char path[PATH_MAX + 300];
-        for (int i = 0; i < 64; i++) {
-            snprintf(path, sizeof path, "%s/p%d.so", build_dir, i);
-            unlink(path);
-            snprintf(path, sizeof path, "%s/p%d.log", build_dir, i);
-            unlink(path);
-        }
-    }
-    rmdir(build_dir);
-    build_dir[0] = '\0';
-}
 
 static int has_header(const char *dir)
 {
@@ -144,16 +126,13 @@ int sw_cli_build_plugin(const char *src, char *so, size_t solen)
 {
     static int count;
     char err[SW_ERRLEN + 256], name[16];
-    if (!build_dir[0]) {
-        const char *tmp = getenv("TMPDIR");
-        snprintf(build_dir, sizeof build_dir, "%s/stepwise-plugins-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-        if (!mkdtemp(build_dir)) {
+    if (!build_dir[0] || build_dir_owner != getpid()) {
+        if (sw_tmpdir_make("plugins", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
             build_dir[0] = '\0';
-            return sw_cli_error("--plugin: cannot make a directory to build it in: %s",
-                                strerror(errno));
+            return sw_cli_error("--plugin: %s", err);
         }
         build_dir_owner = getpid();
-        atexit(remove_build_dir);
+        count = 0;
     }
     if (count == 64)
         return sw_cli_error("--plugin: at most 64 plugins are built per run");

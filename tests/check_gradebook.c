@@ -1,5 +1,6 @@
 /* The gradebook's ground (issue 21): temporary directories that never
- * outlive their maker, even one killed with SIGKILL. */
+ * outlive their maker, even one killed with SIGKILL; output paths resolved
+ * before anything is written (/dev/stdout on a pipe, devices in place). */
 #include <check.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -14,6 +15,7 @@
 
 #include "stepwise/base.h"
 #include "util/clock.h"
+#include "util/outfile.h"
 #include "util/tmpdir.h"
 
 static char tmpdir[64];
@@ -116,6 +118,56 @@ START_TEST(tmpdir_never_outlives_its_maker)
 }
 END_TEST
 
+/* ---- output paths ------------------------------------------------------------ */
+
+/* /dev/stdout on a pipe is standard output itself (no temporary, no
+ * rename); /dev/null is written in place; a directory is refused; a
+ * regular file is resolved through its link. */
+START_TEST(outfile_targets)
+{
+    make_tmpdir();
+    char err[SW_ERRLEN], path[128], link[128];
+    sw_outfile_target t;
+    ck_assert_int_eq(sw_outfile_resolve("/dev/null", &t, err, sizeof err), SW_OK);
+    ck_assert(t.direct && !t.is_stdout);
+    ck_assert_str_eq(t.path, "/dev/null");
+    ck_assert_int_eq(sw_outfile_resolve(tmpdir, &t, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "is a directory"));
+    snprintf(path, sizeof path, "%s/grades.csv", tmpdir);
+    snprintf(link, sizeof link, "%s/link.csv", tmpdir);
+    ck_assert_int_eq(symlink("grades.csv", link), 0);
+    ck_assert_int_eq(sw_outfile_resolve(link, &t, err, sizeof err), SW_OK);
+    ck_assert(!t.direct && !t.exists);
+    ck_assert_str_eq(t.path, path);
+
+    int p[2];
+    ck_assert_int_eq(pipe(p), 0);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        close(p[0]);
+        dup2(p[1], STDOUT_FILENO);
+        close(p[1]);
+        sw_outfile o;
+        char e[SW_ERRLEN];
+        if (sw_outfile_open(&o, "/dev/stdout", e, sizeof e) != SW_OK || !o.is_stdout)
+            _exit(1);
+        fputs("a,b\r\n", o.f);
+        _exit(sw_outfile_commit(&o, e, sizeof e) == SW_OK ? 0 : 2);
+    }
+    close(p[1]);
+    char got[64] = "";
+    ssize_t n = read(p[0], got, sizeof got - 1);
+    close(p[0]);
+    int status;
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    ck_assert_int_eq((int)n, 5);
+    ck_assert_str_eq(got, "a,b\r\n");
+    remove_tmpdir();
+}
+END_TEST
+
 Suite *make_gradebook_suite(void);
 Suite *make_gradebook_suite(void)
 {
@@ -123,6 +175,7 @@ Suite *make_gradebook_suite(void)
     TCase *tc = tcase_create("gradebook");
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, tmpdir_never_outlives_its_maker);
+    tcase_add_test(tc, outfile_targets);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,6 +1,9 @@
 /* The gradebook's ground (issue 21): temporary directories that never
  * outlive their maker, even one killed with SIGKILL; output paths resolved
- * before anything is written (/dev/stdout on a pipe, devices in place). */
+ * before anything is written (/dev/stdout on a pipe, devices in place);
+ * and the lesson progress file read under the input-file rules (a FIFO, a
+ * link to /dev/zero, a 2 GiB sparse file: refused at once, never waited
+ * on). */
 #include <check.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -13,6 +16,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "app/progress.h"
 #include "stepwise/base.h"
 #include "util/clock.h"
 #include "util/outfile.h"
@@ -168,6 +172,67 @@ START_TEST(outfile_targets)
 }
 END_TEST
 
+/* ---- the progress file ----------------------------------------------------------- */
+
+/* Each hostile progress file: refused at once with what it is, the lesson
+ * starts at page 0, and saving leaves the file as it is. */
+START_TEST(progress_under_input_rules)
+{
+    make_tmpdir();
+    char state[128], dir[160], path[192], err[SW_ERRLEN + 400];
+    snprintf(state, sizeof state, "%s/state", tmpdir);
+    snprintf(dir, sizeof dir, "%s/stepwise", state);
+    snprintf(path, sizeof path, "%s/progress", dir);
+    setenv("XDG_STATE_HOME", state, 1);
+    ck_assert_int_eq(sw_progress_check(err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_readable(err, sizeof err), SW_OK); /* none yet */
+    static const struct {
+        const char *what, *says;
+    } cases[] = {
+        { "fifo", "is a FIFO" },
+        { "zero", "is a device" },
+        { "sparse", "is larger than 1024 KiB" },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        unlink(path);
+        if (strcmp(cases[i].what, "fifo") == 0)
+            ck_assert_int_eq(mkfifo(path, 0600), 0);
+        else if (strcmp(cases[i].what, "zero") == 0)
+            ck_assert_int_eq(symlink("/dev/zero", path), 0);
+        else {
+            int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+            ck_assert_int_ge(fd, 0);
+            ck_assert_int_eq(ftruncate(fd, (off_t)2 << 30), 0);
+            close(fd);
+        }
+        double start = sw_clock_now();
+        ck_assert_int_eq(sw_progress_readable(err, sizeof err), SW_EIO);
+        ck_assert_msg(strstr(err, cases[i].says), "%s: %s", cases[i].what, err);
+        ck_assert_int_eq(sw_progress_get("intro.lesson"), 0);
+        ck_assert_int_eq(sw_progress_set("intro.lesson", 2, err, sizeof err), SW_EIO);
+        ck_assert_msg(sw_clock_now() - start < 1.0, "%s took %.2f s", cases[i].what,
+                      sw_clock_now() - start);
+        struct stat st;
+        ck_assert_int_eq(lstat(path, &st), 0);
+        if (strcmp(cases[i].what, "fifo") == 0)
+            ck_assert(S_ISFIFO(st.st_mode));
+        else if (strcmp(cases[i].what, "zero") == 0)
+            ck_assert(S_ISLNK(st.st_mode));
+        else
+            ck_assert(st.st_size == (off_t)2 << 30);
+    }
+    /* A readable file again: read, merged, kept. */
+    unlink(path);
+    touch(path, "other.lesson 3\nbroken line\n");
+    ck_assert_int_eq(sw_progress_readable(err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_set("intro.lesson", 2, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_get("intro.lesson"), 2);
+    ck_assert_int_eq(sw_progress_get("other.lesson"), 3);
+    unsetenv("XDG_STATE_HOME");
+    remove_tmpdir();
+}
+END_TEST
+
 Suite *make_gradebook_suite(void);
 Suite *make_gradebook_suite(void)
 {
@@ -176,6 +241,7 @@ Suite *make_gradebook_suite(void)
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, tmpdir_never_outlives_its_maker);
     tcase_add_test(tc, outfile_targets);
+    tcase_add_test(tc, progress_under_input_rules);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,9 +1,9 @@
 /* The gradebook's ground (issue 21): temporary directories that never
  * outlive their maker, even one killed with SIGKILL; output paths resolved
  * before anything is written (/dev/stdout on a pipe, devices in place);
- * and the lesson progress file read under the input-file rules (a FIFO, a
- * link to /dev/zero, a 2 GiB sparse file: refused at once, never waited
- * on). */
+ * CSV fields neutralised against formulas and escaped; and the lesson
+ * progress file read under the input-file rules (a FIFO, a link to
+ * /dev/zero, a 2 GiB sparse file: refused at once, never waited on). */
 #include <check.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -19,6 +19,7 @@
 #include "app/progress.h"
 #include "stepwise/base.h"
 #include "util/clock.h"
+#include "util/csv.h"
 #include "util/outfile.h"
 #include "util/tmpdir.h"
 
@@ -172,6 +173,44 @@ START_TEST(outfile_targets)
 }
 END_TEST
 
+/* ---- CSV fields ---------------------------------------------------------------- */
+
+static const char *csv_of(const char *text)
+{
+    static char buf[512];
+    FILE *f = fmemopen(buf, sizeof buf, "w");
+    ck_assert_ptr_nonnull(f);
+    sw_csv_field(f, text);
+    fputc('\0', f);
+    fclose(f);
+    return buf;
+}
+
+START_TEST(csv_fields_are_inert)
+{
+    /* OWASP's formula starts get a leading quote; the rest is kept. */
+    ck_assert_str_eq(csv_of("=HYPERLINK(\"http://x\",\"y\")"),
+                     "\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\"");
+    ck_assert_str_eq(csv_of("+1"), "'+1");
+    ck_assert_str_eq(csv_of("-1+2"), "'-1+2");
+    ck_assert_str_eq(csv_of("@SUM(A1)"), "'@SUM(A1)");
+    /* Tab and CR are escaped as text, and the \ then starts the field. */
+    ck_assert_str_eq(csv_of("\t=1"), "\\x09=1");
+    ck_assert_str_eq(csv_of("\r=1"), "\\x0d=1");
+    /* Control characters and escape sequences never reach the file raw. */
+    ck_assert_str_eq(csv_of("a\033[2Jb\nc"), "a\\x1b[2Jb\\x0ac");
+    ck_assert_str_eq(csv_of("caf\xc3\xa9 \xff"), "caf\xc3\xa9 \\xff");
+    /* Quoting as RFC 4180 has it; backslashes kept; plain text as it is. */
+    ck_assert_str_eq(csv_of("a,b"), "\"a,b\"");
+    ck_assert_str_eq(csv_of("say \"hi\""), "\"say \"\"hi\"\"\"");
+    ck_assert_str_eq(csv_of("C:\\class\\a.trace"), "C:\\class\\a.trace");
+    ck_assert_str_eq(csv_of("Ada Lovelace"), "Ada Lovelace");
+    ck_assert_str_eq(csv_of(""), "");
+    ck_assert_str_eq(csv_of(NULL), "");
+    ck_assert_str_eq(csv_of("a = b"), "a = b"); /* only the first character counts */
+}
+END_TEST
+
 /* ---- the progress file ----------------------------------------------------------- */
 
 /* Each hostile progress file: refused at once with what it is, the lesson
@@ -241,6 +280,7 @@ Suite *make_gradebook_suite(void)
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, tmpdir_never_outlives_its_maker);
     tcase_add_test(tc, outfile_targets);
+    tcase_add_test(tc, csv_fields_are_inert);
     tcase_add_test(tc, progress_under_input_rules);
     suite_add_tcase(s, tc);
     return s;

@@ -8,8 +8,10 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -87,6 +89,51 @@ static void first_error(const char *log, char *buf, size_t len)
         snprintf(buf, len, "see the compiler's messages");
 }
 
+/* Whether a failed build ran into a limit the grader set on the process
+ * that builds it (grade's --output, --cpu, --memory are inherited by the
+ * compiler): the words for it in buf, else 0. That is the teacher's limit,
+ * never the student's compile error. */
+static int grader_limit(const char *log, const char *so, const sw_child_end *end, char *buf,
+                        size_t len)
+{
+    static const struct {
+        int resource, signal;     /* the rlimit, and the signal past it (0: none) */
+        const char *says;         /* what the compiler says when it hits the limit */
+        const char *flag, *unit;  /* grade's option, and its unit */
+        double scale;             /* bytes or seconds per unit */
+    } limits[] = {
+        { RLIMIT_FSIZE, SIGXFSZ, "File size limit exceeded", "--output", "KiB", 1024 },
+        { RLIMIT_CPU, SIGXCPU, "CPU time limit exceeded", "--cpu", "s", 1 },
+        { RLIMIT_AS, 0, "emory exhausted", "--memory", "MiB", 1024 * 1024 },
+        { RLIMIT_AS, 0, "out of memory", "--memory", "MiB", 1024 * 1024 },
+    };
+    char text[4096] = "";
+    FILE *f = fopen(log, "r");
+    if (f) {
+        size_t n = fread(text, 1, sizeof text - 1, f);
+        text[n] = '\0';
+        fclose(f);
+    }
+    for (size_t i = 0; i < sizeof limits / sizeof limits[0]; i++) {
+        struct rlimit rl;
+        if (getrlimit(limits[i].resource, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY)
+            continue;
+        struct stat st;
+        int full = limits[i].resource == RLIMIT_FSIZE &&
+                   ((stat(log, &st) == 0 && (rlim_t)st.st_size >= rl.rlim_cur) ||
+                    (stat(so, &st) == 0 && (rlim_t)st.st_size >= rl.rlim_cur));
+        if (full || (limits[i].signal && end->signal == limits[i].signal) ||
+            strstr(text, limits[i].says)) {
+            snprintf(buf, len, "the grader's %s limit of %g %s was reached while building it (the "
+                     "compiler counts against it); this says nothing about the plugin: raise %s",
+                     limits[i].flag, (double)rl.rlim_cur / limits[i].scale, limits[i].unit,
+                     limits[i].flag);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
                           size_t solen, char *err, size_t errlen)
 {
@@ -115,6 +162,10 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
     if (end.killed) {
         snprintf(err, errlen, "--plugin '%s' did not compile within %g s", shown, BUILD_SECONDS);
         return SW_EINVAL;
+    }
+    if (grader_limit(log, so, &end, msg, sizeof msg)) {
+        snprintf(err, errlen, "--plugin '%s' was not built: %s", shown, msg);
+        return SW_EIO;
     }
     first_error(log, msg, sizeof msg);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s -std=c11 -O2 -Wall -shared -fPIC): "

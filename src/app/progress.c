@@ -1,7 +1,9 @@
 /* Lesson progress on disk. Invariants: the file is only ever replaced whole
  * (sw_outfile: temporary and rename), and every read-merge-write runs under
  * an fcntl lock on progress.lock, so concurrent updates are serialised and
- * none is lost; readers need no lock, since a rename is atomic. */
+ * none is lost; readers need no lock, since a rename is atomic. It is read
+ * under the input-file rules (util/infile.h): anything but a regular file
+ * of sane size is refused at once, never waited on or read to its end. */
 #include "app/progress.h"
 
 #include <errno.h>
@@ -14,10 +16,13 @@
 
 #include "lesson/lesson.h"
 #include "stepwise/base.h"
+#include "util/infile.h"
 #include "util/outfile.h"
 
 #define DIR_MAX 2048
 #define LINE_MAX_BYTES 1100
+/* The largest progress file read: thousands of lessons' lines. */
+#define PROGRESS_MAX (1024 * 1024)
 
 /* The progress directory; 0 or SW_EIO when neither variable is usable. */
 static int state_dir(char *dir, size_t len, char *err, size_t errlen)
@@ -93,46 +98,105 @@ static int same_name(const char *line, size_t name_len, const char *file)
     return strlen(file) == name_len && memcmp(line, file, name_len) == 0;
 }
 
-static int get_from(const char *path, const char *file)
+/* Read the progress file whole under the input-file rules (util/infile:
+ * a regular file only, opened without blocking, at most PROGRESS_MAX
+ * bytes), so a FIFO, a link to /dev/zero or a huge sparse file is refused
+ * at once. 0 with *text (NULL when there is no file yet; else free it), or
+ * SW_EIO with err saying what the file is. */
+static int read_all(const char *path, char **text, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "r");
-    if (!f)
+    *text = NULL;
+    struct stat st;
+    const char *what;
+    int fd = sw_infile_open(path, &st, &what);
+    if (fd < 0) {
+        if (!what && errno == ENOENT)
+            return SW_OK;
+        snprintf(err, errlen, "the progress file '%.300s' %s%s", path,
+                 what ? "is " : "cannot be read: ", what ? what : strerror(errno));
+        return SW_EIO;
+    }
+    size_t len;
+    int rc = st.st_size > PROGRESS_MAX ? 1 : sw_infile_read(fd, PROGRESS_MAX, text, &len);
+    int e = errno;
+    close(fd);
+    if (rc == 1)
+        snprintf(err, errlen, "the progress file '%.300s' is larger than %d KiB, which no progress "
+                 "file is", path, PROGRESS_MAX >> 10);
+    else if (rc != 0)
+        snprintf(err, errlen, "the progress file '%.300s' cannot be read: %s", path, strerror(e));
+    return rc == 0 ? SW_OK : SW_EIO;
+}
+
+/* The next line of text at *at ("NAME PAGES", without its newline): 1 with
+ * *line and *len, 0 at the end. */
+static int next_line(const char **at, const char **line, size_t *len)
+{
+    if (!*at || !**at)
         return 0;
-    char line[LINE_MAX_BYTES];
+    *line = *at;
+    *len = strcspn(*at, "\n");
+    *at += *len + ((*at)[*len] == '\n');
+    return 1;
+}
+
+static int get_from(const char *text, const char *file)
+{
+    const char *at = text, *line;
+    size_t len, nlen;
     int done = 0, d;
-    size_t nlen;
-    while (fgets(line, sizeof line, f))
-        if (parse_line(line, &nlen, &d) && same_name(line, nlen, file))
+    while (next_line(&at, &line, &len))
+        if (len < LINE_MAX_BYTES && parse_line(line, &nlen, &d) && same_name(line, nlen, file))
             done = d;
-    fclose(f);
     return done;
+}
+
+/* The progress file's path into path; 0 or SW_EIO. */
+static int progress_path(char *path, size_t len, char *err, size_t errlen)
+{
+    char dir[DIR_MAX];
+    if (state_dir(dir, sizeof dir, err, errlen) != SW_OK)
+        return SW_EIO;
+    snprintf(path, len, "%s/progress", dir);
+    return SW_OK;
+}
+
+int sw_progress_readable(char *err, size_t errlen)
+{
+    char path[DIR_MAX + 16], *text;
+    if (progress_path(path, sizeof path, err, errlen) != SW_OK)
+        return SW_OK; /* nowhere to keep it: sw_progress_check says so */
+    int rc = read_all(path, &text, err, errlen);
+    free(text);
+    return rc;
 }
 
 int sw_progress_get(const char *file)
 {
-    char dir[DIR_MAX], path[DIR_MAX + 16], err[SW_ERRLEN];
-    if (state_dir(dir, sizeof dir, err, sizeof err) != SW_OK)
+    char path[DIR_MAX + 16], err[SW_ERRLEN + 400], *text;
+    if (progress_path(path, sizeof path, err, sizeof err) != SW_OK ||
+        read_all(path, &text, err, sizeof err) != SW_OK || !text)
         return 0;
-    snprintf(path, sizeof path, "%s/progress", dir);
-    return get_from(path, file);
+    int done = get_from(text, file);
+    free(text);
+    return done;
 }
 
-/* Rewrite path with file's entry set to done, keeping every other entry. */
-static int rewrite(const char *path, const char *file, int done, char *err, size_t errlen)
+/* Rewrite path (whose contents are old, NULL when new) with file's entry
+ * set to done, keeping every other entry. */
+static int rewrite(const char *path, const char *old, const char *file, int done, char *err,
+                   size_t errlen)
 {
     sw_outfile out;
     int rc = sw_outfile_open(&out, path, err, errlen);
     if (rc != SW_OK)
         return rc;
-    FILE *in = fopen(path, "r");
-    char line[LINE_MAX_BYTES];
+    const char *at = old, *line;
+    size_t len, nlen;
     int d;
-    size_t nlen;
-    while (in && fgets(line, sizeof line, in))
-        if (parse_line(line, &nlen, &d) && !same_name(line, nlen, file))
-            fputs(line, out.f);
-    if (in)
-        fclose(in);
+    while (next_line(&at, &line, &len))
+        if (len < LINE_MAX_BYTES && parse_line(line, &nlen, &d) && !same_name(line, nlen, file))
+            fprintf(out.f, "%.*s\n", (int)len, line);
     fprintf(out.f, "%s %d\n", file, done);
     return sw_outfile_commit(&out, err, errlen);
 }
@@ -148,9 +212,13 @@ int sw_progress_set(const char *file, int done, char *err, size_t errlen)
         return SW_EIO;
     snprintf(path, sizeof path, "%s/progress", dir);
     snprintf(lock, sizeof lock, "%s/progress.lock", dir);
-    int fd = open(lock, O_RDWR | O_CREAT, 0600);
-    if (fd < 0) {
-        snprintf(err, errlen, "cannot open '%.300s': %s", lock, strerror(errno));
+    int fd = open(lock, O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0600);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "cannot open '%.300s': %s", lock,
+                 fd < 0 ? strerror(errno) : "not a regular file");
+        if (fd >= 0)
+            close(fd);
         return SW_EIO;
     }
     struct flock fl = { .l_type = F_WRLCK, .l_whence = SEEK_SET };
@@ -162,7 +230,11 @@ int sw_progress_set(const char *file, int done, char *err, size_t errlen)
         close(fd);
         return SW_EIO;
     }
-    rc = done <= get_from(path, file) ? SW_OK : rewrite(path, file, done, err, errlen);
+    char *text;
+    rc = read_all(path, &text, err, errlen);
+    if (rc == SW_OK && done > (text ? get_from(text, file) : 0))
+        rc = rewrite(path, text, file, done, err, errlen);
+    free(text);
     close(fd); /* releases the lock */
     return rc;
 }

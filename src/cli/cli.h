@@ -48,6 +48,10 @@ int sw_cli_integrator(const char *name, const sw_integrator **out);
 int sw_cli_dt(const char *flag, const char *text, double *out);
 /* Parse a positive finite double for flag `flag`. */
 int sw_cli_positive(const char *flag, const char *text, double *out);
+/* Parse a finite number in [min, max] for flag `flag`; the message names the
+ * range and its unit ("seconds", "" for none). */
+int sw_cli_range(const char *flag, const char *text, double min, double max, const char *unit,
+                 double *out);
 /* Parse a run tolerance (rtol, atol) in [SW_TRACE_TOL_MIN, 1] for flag `flag`. */
 int sw_cli_tolerance(const char *flag, const char *text, double *out);
 /* Parse a whole number in [min, max] for flag `flag`. */

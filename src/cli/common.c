@@ -92,6 +92,17 @@ int sw_cli_positive(const char *flag, const char *text, double *out)
     return SW_EXIT_OK;
 }
 
+int sw_cli_range(const char *flag, const char *text, double min, double max, const char *unit,
+                 double *out)
+{
+    double v;
+    if (sw_parse_double(text, &v) != SW_OK || !(v >= min && v <= max))
+        return sw_cli_error("%s '%.40s' is not allowed: %s must be between %.15g and %.15g%s%s",
+                            flag, text, flag, min, max, unit && *unit ? " " : "", unit ? unit : "");
+    *out = v;
+    return SW_EXIT_OK;
+}
+
 int sw_cli_tolerance(const char *flag, const char *text, double *out)
 {
     double v;

@@ -7,7 +7,6 @@
  * submission passed, 1 when any did not, 2 for bad usage. */
 #include "cli/cli.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -21,6 +20,7 @@
 #include "plugin/sandbox.h"
 #include "grade/verdict.h"
 #include "util/signals.h"
+#include "util/tmpdir.h"
 
 extern char **environ;
 
@@ -33,26 +33,35 @@ static const char grade_help[] =
     "reference trace whose header serves): traces (.trace, .csv) are checked like\n"
     "'stepwise check TRACE --assignment A'; plugins (.so, or .c built with the\n"
     "documented flags) like 'stepwise check --plugin P --assignment A'. A directory\n"
-    "stands for the submissions in it. Each runs in its own child process with limits,\n"
-    "so a crash, a loop or a memory hog fails that student alone. Prints a table\n"
-    "(student, file, verdict, first failing step, the mistake in words).\n"
+    "stands for the submissions in it; every other entry in it (a link, a FIFO, a\n"
+    ".txt file, ...) gets a row 'skipped' saying why. Each runs in its own child\n"
+    "process with limits, so a crash, a loop or a memory hog fails that student\n"
+    "alone. Prints a table (student, file, verdict, first failing step, the mistake\n"
+    "in words).\n"
     "\n"
     "options:\n"
     "      --assignment A     what the teacher set (required)\n"
     "      --csv FILE         write a CSV gradebook: student,file,verdict,first_failing_step,message\n"
     "      --results FILE     write Gradescope's results.json (score, max_score, tests)\n"
-    "      --cpu S            CPU seconds per submission (default 10)\n"
-    "      --memory MB        address space per submission, MiB (default 1024)\n"
-    "      --output KB        output per submission, KiB: report kept, files written (default 1024)\n"
-    "      --wall S           wall-clock seconds per submission (default 2 x cpu + 5)\n"
-    "      --plugin-timeout S seconds a plugin may take for one step (default 2)\n"
+    "      --cpu S            CPU seconds per submission, 0.1 to 3600 (default 10)\n"
+    "      --memory MB        address space per submission, 64 to 65536 MiB (default 1024)\n"
+    "      --output KB        output per submission, 4 to 1048576 KiB: report kept, files\n"
+    "                         written, the compiler's too (default 1024)\n"
+    "      --wall S           wall-clock seconds per submission, 0.1 to 86400\n"
+    "                         (default 2 x cpu + 5)\n"
+    "      --plugin-timeout S seconds a plugin may take per step, 0.01 to 3600 (default 2)\n"
     "      --no-sandbox       run plugins and compilers without the jail (namespaces,\n"
     "                         seccomp): only inside a disposable container that holds\n"
     "                         one submission (docs/sandbox.md)\n"
-    "      --rtol R, --atol A, --tol COL=REL[,ABS], --ignore COL   as for check\n"
+    "      --rtol R, --atol A, --tol COL=REL[,ABS], --ignore COL   as for check (rtol 1e-16\n"
+    "                         to 1, atol 1e-300 to 1e6)\n"
     "  -h, --help             this help\n"
     "\n"
-    "exit status: 0 every submission passed, 1 some did not, 2 bad usage.\n";
+    "The --csv and --results paths are checked before grading (writable, not the\n"
+    "assignment nor a submission, not among the submissions; - or /dev/stdout writes\n"
+    "to standard output and moves the table to stderr) and written whole at the end.\n"
+    "\n"
+    "exit status: 0 every entry passed, 1 some did not (or were skipped), 2 bad usage.\n";
 
 /* What a submission's child sends back: this, then report_len bytes. */
 typedef struct grade_record {
@@ -195,63 +204,6 @@ static int grade_child(void *ctx, int in, int out)
     return 0;
 }
 
-/* ---- the submissions ------------------------------------------------------ */
-
-static int kind_of(const char *name)
-{
-    size_t len = strlen(name);
-    static const char *const traces[] = { ".trace", ".csv" }, *const plugins[] = { ".so", ".c" };
-    for (int i = 0; i < 2; i++) {
-        size_t n = strlen(traces[i]);
-        if (len > n && strcmp(name + len - n, traces[i]) == 0)
-            return 1;
-        n = strlen(plugins[i]);
-        if (len > n && strcmp(name + len - n, plugins[i]) == 0)
-            return 2;
-    }
-    return 0;
-}
-
-static int cmp_names(const void *a, const void *b)
-{
-    return strcmp(((const grade_entry *)a)->path, ((const grade_entry *)b)->path);
-}
-
-/* Add FILE, or the submissions in DIR (sorted, the assignment itself left out). */
-static int collect(grade_list *list, const char *arg, const struct stat *assign_st)
-{
-    struct stat st;
-    if (stat(arg, &st) != 0)
-        return sw_cli_error("grade: '%.200s': %s", arg, strerror(errno));
-    if (!S_ISDIR(st.st_mode)) {
-        if (grade_list_add(list, arg, kind_of(arg) == 2) != SW_OK)
-            return sw_cli_error("grade: out of memory");
-        return SW_EXIT_OK;
-    }
-    DIR *d = opendir(arg);
-    if (!d)
-        return sw_cli_error("grade: cannot read the directory '%.200s': %s", arg, strerror(errno));
-    int first = list->n;
-    for (struct dirent *e; (e = readdir(d));) {
-        int kind = e->d_name[0] == '.' ? 0 : kind_of(e->d_name);
-        char path[PATH_MAX];
-        snprintf(path, sizeof path, "%s/%s", arg, e->d_name);
-        if (!kind || stat(path, &st) != 0 || !S_ISREG(st.st_mode) ||
-            (st.st_dev == assign_st->st_dev && st.st_ino == assign_st->st_ino)) {
-            list->ignored += e->d_name[0] != '.' && kind == 0;
-            continue;
-        }
-        if (grade_list_add(list, path, kind == 2) != SW_OK) {
-            closedir(d);
-            return sw_cli_error("grade: out of memory");
-        }
-    }
-    closedir(d);
-    if (list->n > first)
-        qsort(list->items + first, (size_t)(list->n - first), sizeof list->items[0], cmp_names);
-    return SW_EXIT_OK;
-}
-
 /* Grade one submission in a child; always fills e. */
 static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim, double wall)
 {
@@ -355,7 +307,6 @@ int sw_cmd_grade(int argc, char **argv)
         }
         const char *val = takes ? argv[++i] : NULL;
         double d;
-        long n;
         if (strcmp(a, "--assignment") == 0)
             assignment = val;
         else if (strcmp(a, "--csv") == 0)
@@ -363,25 +314,25 @@ int sw_cmd_grade(int argc, char **argv)
         else if (strcmp(a, "--results") == 0)
             results = val;
         else if (strcmp(a, "--cpu") == 0)
-            rc = sw_cli_positive("--cpu", val, &lim.cpu_seconds);
+            rc = sw_cli_range("--cpu", val, 0.1, 3600, "seconds", &lim.cpu_seconds);
         else if (strcmp(a, "--wall") == 0)
-            rc = sw_cli_positive("--wall", val, &wall);
+            rc = sw_cli_range("--wall", val, 0.1, 86400, "seconds", &wall);
         else if (strcmp(a, "--memory") == 0) {
-            rc = sw_cli_long("--memory", val, 64, 1 << 20, &n);
-            lim.memory_bytes = (size_t)n << 20;
+            rc = sw_cli_range("--memory", val, 64, 65536, "MiB", &d);
+            lim.memory_bytes = (size_t)(d * 1048576);
         } else if (strcmp(a, "--output") == 0) {
-            rc = sw_cli_long("--output", val, 4, 1 << 20, &n);
-            lim.output_bytes = (size_t)n << 10;
+            rc = sw_cli_range("--output", val, 4, 1048576, "KiB", &d);
+            lim.output_bytes = (size_t)(d * 1024);
         } else if (strcmp(a, "--no-sandbox") == 0) {
             sw_jail_set_enabled(0);
         } else if (strcmp(a, "--plugin-timeout") == 0) {
-            rc = sw_cli_positive("--plugin-timeout", val, &d);
+            rc = sw_cli_range("--plugin-timeout", val, 0.01, 3600, "seconds", &d);
             if (rc == SW_EXIT_OK)
                 sw_plugin_set_timeout(d);
         } else if (strcmp(a, "--rtol") == 0)
-            rc = sw_cli_positive("--rtol", val, &base.rtol);
+            rc = sw_cli_range("--rtol", val, 1e-16, 1, "", &base.rtol);
         else if (strcmp(a, "--atol") == 0)
-            rc = sw_cli_positive("--atol", val, &base.atol);
+            rc = sw_cli_range("--atol", val, 1e-300, 1e6, "", &base.atol);
         else if (strcmp(a, "--tol") == 0 || strcmp(a, "--ignore") == 0) {
             if (sw_coltol_parse(&base.coltols, val, a[2] == 'i', a, err, sizeof err) != SW_OK)
                 rc = sw_cli_error("grade: %s", err);
@@ -400,11 +351,13 @@ int sw_cmd_grade(int argc, char **argv)
         rc = sw_cli_error("%s", err);
     grade_list list = { 0 };
     for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
-        rc = collect(&list, files[i], &asg_st);
+        rc = grade_collect(&list, files[i], &asg_st);
     free(files);
-    if (rc == SW_EXIT_OK && list.n == 0)
+    if (rc == SW_EXIT_OK && list.n + list.ignored == 0)
         rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
                           ".so or .c)");
+    if (rc == SW_EXIT_OK)
+        rc = grade_check_outputs(&list, &asg_st, csv, results);
     if (rc != SW_EXIT_OK) {
         grade_list_free(&list);
         return rc;
@@ -418,11 +371,9 @@ int sw_cmd_grade(int argc, char **argv)
     if (!(wall > 0))
         wall = 2 * lim.cpu_seconds + 5;
     char build_dir[PATH_MAX];
-    const char *tmp = getenv("TMPDIR");
-    snprintf(build_dir, sizeof build_dir, "%s/stepwise-grade-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(build_dir)) {
+    if (sw_tmpdir_make("grade", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
         grade_list_free(&list);
-        return sw_cli_error("grade: cannot make a temporary directory: %s", strerror(errno));
+        return sw_cli_error("grade: %s", err);
     }
     sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
     grade_print_head(&asg, list.n, list.ignored);

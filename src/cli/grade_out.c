@@ -1,9 +1,13 @@
 /* The grade reports: the table on stdout, the CSV gradebook and Gradescope's
- * results.json. Files are written whole or not at all (util/outfile.h).
- * Names that came from students are escaped in the table and quoted in the
- * CSV. */
+ * results.json, and the checks on where they go. Invariants: every output
+ * path is checked before grading starts and written whole or not at all at
+ * the end (util/outfile.h), never over the assignment or a submission nor
+ * among them; text that came from students reaches the terminal escaped
+ * (util/escape.h), the CSV escaped and neutralised against formulas
+ * (util/csv.h), results.json as valid JSON (cli/json.h). */
 #include "cli/grade.h"
 
+#include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,7 +17,15 @@
 #include "cli/cli.h"
 #include "cli/json.h"
 #include "plugin/plugin.h"
+#include "util/csv.h"
+#include "util/escape.h"
 #include "util/outfile.h"
+#include "util/tmpdir.h"
+
+/* Where the table goes: stdout, or stderr when a report is written there. */
+static FILE *table_stream;
+
+static FILE *table(void) { return table_stream ? table_stream : stdout; }
 
 int grade_list_add(grade_list *l, const char *path, int plugin)
 {
@@ -41,13 +53,22 @@ void grade_list_free(grade_list *l)
         free(l->items[i].path);
         free(l->items[i].report);
     }
+    for (int i = 0; i < l->ignored; i++) {
+        free(l->refused[i].path);
+        free(l->refused[i].report);
+    }
+    for (int i = 0; i < l->nplaces; i++)
+        free(l->places[i].real);
     free(l->items);
+    free(l->refused);
+    free(l->places);
     memset(l, 0, sizeof *l);
 }
 
 static const char *verdict_word(int status)
 {
-    return status == 0 ? "pass" : status == 1 ? "fail" : "error";
+    return status == 0 ? "pass" : status == 1 ? "fail" : status == GRADE_SKIPPED ? "skipped"
+                                                                          : "error";
 }
 
 /* The student: "# student:" when the trace gave one, else the file's name
@@ -68,14 +89,16 @@ static void student_of(const grade_entry *e, char *buf, size_t len)
 
 void grade_print_head(const sw_assignment *a, int n, int ignored)
 {
-    char dt[40];
+    char dt[40], path[300];
     sw_fmt_shortest(dt, sizeof dt, a->meta.dt);
-    printf("grading %d submission%s against %s (%s%s on %s, dt %s)", n, n == 1 ? "" : "s", a->path,
-           a->nmethods > 1 ? "any of " : "", a->methods[0]->name, a->meta.scene->name, dt);
+    sw_escape(a->path, 200, path, sizeof path);
+    fprintf(table(), "grading %d submission%s against %s (%s%s on %s, dt %s)", n, n == 1 ? "" : "s",
+            path, a->nmethods > 1 ? "any of " : "", a->methods[0]->name, a->meta.scene->name, dt);
     if (ignored)
-        printf("; %d other file%s ignored", ignored, ignored == 1 ? "" : "s");
-    printf("\n  %-20s %-24s %-7s %6s  %s\n", "student", "file", "verdict", "step", "what");
-    fflush(stdout);
+        fprintf(table(), "; %d other entr%s not graded (listed at the end)", ignored,
+                ignored == 1 ? "y" : "ies");
+    fprintf(table(), "\n  %-20s %-24s %-7s %6s  %s\n", "student", "file", "verdict", "step", "what");
+    fflush(table());
 }
 
 void grade_print_row(grade_entry *e)
@@ -90,8 +113,127 @@ void grade_print_row(grade_entry *e)
         snprintf(step, sizeof step, "%ld", e->failing_step);
     else
         snprintf(step, sizeof step, "-");
-    printf("  %-20s %-24s %-7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), step, m_esc);
-    fflush(stdout);
+    fprintf(table(), "  %-20s %-24s %-7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), step,
+            m_esc);
+    fflush(table());
+}
+
+/* ---- where the reports go ------------------------------------------------- */
+
+static int same_file(const struct stat *a, dev_t dev, ino_t ino)
+{
+    return a->st_dev == dev && a->st_ino == ino;
+}
+
+/* Whether the resolved path lies in (or is) the resolved directory dir. */
+static int lies_in(const char *path, const char *dir)
+{
+    size_t n = strlen(dir);
+    return strncmp(path, dir, n) == 0 && (path[n] == '/' || path[n] == '\0' || n == 1);
+}
+
+/* The submissions directory that the resolved directory real is in or
+ * under, by identity (each directory up to /) and by resolved path; NULL. */
+static const char *inside_submissions(const grade_list *l, const char *real)
+{
+    char cur[PATH_MAX];
+    snprintf(cur, sizeof cur, "%s", real);
+    for (;;) {
+        struct stat st;
+        int known = stat(cur, &st) == 0;
+        for (int i = 0; i < l->nplaces; i++) {
+            const grade_place *p = &l->places[i];
+            if (p->real && ((known && same_file(&st, p->dev, p->ino)) || lies_in(real, p->real)))
+                return p->real;
+        }
+        char *slash = strrchr(cur, '/');
+        if (!slash || slash == cur)
+            break;
+        *slash = '\0';
+    }
+    return NULL;
+}
+
+/* The resolved directory path would be written in (its last component
+ * left as it is), into real; 0 or -1 with errno. */
+static int real_dir_of(const char *path, char *real)
+{
+    char dir[PATH_MAX];
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    return realpath(dir, real) ? 0 : -1;
+}
+
+/* One output path: usable, and nothing the grading reads. */
+static int check_output(const grade_list *l, const struct stat *assign_st, const char *flag,
+                        const char *path, sw_outfile_target *t)
+{
+    char err[SW_ERRLEN + 256];
+    if (sw_outfile_resolve(path, t, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s: %s", flag, err);
+    if (t->is_stdout)
+        return SW_EXIT_OK;
+    /* The name as given (a link, perhaps) and the file it leads to. */
+    struct stat named;
+    int have_named = lstat(path, &named) == 0;
+    if (t->exists && same_file(&t->st, assign_st->st_dev, assign_st->st_ino))
+        return sw_cli_error("grade: %s '%.200s' is the assignment; give the gradebook another name",
+                            flag, path);
+    for (int i = 0; i < l->nplaces; i++) {
+        const grade_place *p = &l->places[i];
+        if (!p->real && ((t->exists && same_file(&t->st, p->dev, p->ino)) ||
+                         (have_named && same_file(&named, p->dev, p->ino))))
+            return sw_cli_error("grade: %s '%.200s' is one of the submissions; give the gradebook "
+                                "another name", flag, path);
+    }
+    const char *names[] = { path, t->path };
+    for (int i = 0; i < 2; i++) {
+        char real[PATH_MAX];
+        if (real_dir_of(names[i], real) != 0)
+            return sw_cli_error("grade: %s '%.200s': cannot resolve its directory: %s", flag, path,
+                                strerror(errno));
+        const char *among = inside_submissions(l, real);
+        if (among)
+            return sw_cli_error("grade: %s '%.200s' is inside the submissions directory '%.200s'; "
+                                "write the gradebook elsewhere", flag, path, among);
+    }
+    if (!t->direct) {
+        /* The real test of a directory (access() says yes to root on a
+         * read-only mount): make the temporary the writing will use, and
+         * take it away again. A device or FIFO is opened only at the end. */
+        sw_outfile probe;
+        if (sw_outfile_open(&probe, path, err, sizeof err) != SW_OK)
+            return sw_cli_error("grade: %s: %s", flag, err);
+        sw_outfile_abort(&probe);
+    }
+    return SW_EXIT_OK;
+}
+
+int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *csv,
+                        const char *results)
+{
+    sw_outfile_target c, r;
+    if (csv && check_output(l, assign_st, "--csv", csv, &c) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    if (results && check_output(l, assign_st, "--results", results, &r) != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
+    /* Two reports in one file would be neither; a device such as /dev/null
+     * takes both. */
+    if (csv && results && !(c.exists && S_ISCHR(c.st.st_mode))) {
+        int same = (c.is_stdout && r.is_stdout) ||
+                   (!c.is_stdout && !r.is_stdout && (strcmp(c.path, r.path) == 0 ||
+                    (c.exists && r.exists && same_file(&c.st, r.st.st_dev, r.st.st_ino))));
+        if (same)
+            return sw_cli_error("grade: --csv and --results both write to '%.200s'; give each its "
+                                "own file", c.is_stdout ? "standard output" : csv);
+    }
+    /* A report on stdout keeps stdout for itself: the table goes to stderr. */
+    if ((csv && c.is_stdout) || (results && r.is_stdout))
+        table_stream = stderr;
+    return SW_EXIT_OK;
 }
 
 /* ---- files, whole or not at all -------------------------------------------- */
@@ -112,51 +254,42 @@ static int write_whole(const char *path, grade_writer *write, const grade_list *
     return SW_EXIT_OK;
 }
 
-/* One CSV field (RFC 4180): quoted when it holds a comma, quote or line break. */
-static void csv_field(FILE *f, const char *s, int last)
+/* Every row of the gradebook: the graded submissions, then the entries not
+ * graded. */
+static const grade_entry *row_at(const grade_list *l, int i)
 {
-    if (strpbrk(s, ",\"\r\n")) {
-        putc('"', f);
-        for (; *s; s++) {
-            if (*s == '"')
-                putc('"', f);
-            putc(*s, f);
-        }
-        putc('"', f);
-    } else
-        fputs(s, f);
-    fputs(last ? "\r\n" : ",", f);
+    return i < l->n ? &l->items[i] : &l->refused[i - l->n];
 }
 
 static void write_csv(FILE *f, const grade_list *l, const char *summary)
 {
     (void)summary;
     fputs("student,file,verdict,first_failing_step,message\r\n", f);
-    for (int i = 0; i < l->n; i++) {
-        const grade_entry *e = &l->items[i];
+    for (int i = 0; i < l->n + l->ignored; i++) {
+        const grade_entry *e = row_at(l, i);
         char student[SW_TRACE_STUDENT_MAX], step[24] = "";
         student_of(e, student, sizeof student);
         if (e->failing_step >= 0)
             snprintf(step, sizeof step, "%ld", e->failing_step);
-        csv_field(f, student, 0);
-        csv_field(f, e->path, 0);
-        csv_field(f, verdict_word(e->status), 0);
-        csv_field(f, step, 0);
-        csv_field(f, e->message, 1);
+        const char *cells[] = { student, e->path, verdict_word(e->status), step, e->message };
+        for (size_t c = 0; c < sizeof cells / sizeof cells[0]; c++) {
+            sw_csv_field(f, cells[c]);
+            fputs(c + 1 < sizeof cells / sizeof cells[0] ? "," : "\r\n", f);
+        }
     }
 }
 
-/* Gradescope's format: a score, its maximum, and one test per submission. */
+/* Gradescope's format: a score, its maximum, and one test per entry. */
 static void write_results(FILE *f, const grade_list *l, const char *summary)
 {
-    int passed = 0;
+    int passed = 0, rows = l->n + l->ignored;
     for (int i = 0; i < l->n; i++)
         passed += l->items[i].status == 0;
-    fprintf(f, "{\n  \"score\": %d,\n  \"max_score\": %d,\n  \"output\": ", passed, l->n);
+    fprintf(f, "{\n  \"score\": %d,\n  \"max_score\": %d,\n  \"output\": ", passed, rows);
     sw_json_str(f, summary);
     fputs(",\n  \"tests\": [", f);
-    for (int i = 0; i < l->n; i++) {
-        const grade_entry *e = &l->items[i];
+    for (int i = 0; i < rows; i++) {
+        const grade_entry *e = row_at(l, i);
         char student[SW_TRACE_STUDENT_MAX], name[SW_TRACE_STUDENT_MAX + PATH_MAX];
         student_of(e, student, sizeof student);
         snprintf(name, sizeof name, "%s (%s)", student, e->path);
@@ -178,24 +311,30 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
         }
         fputs("\n    }", f);
     }
-    fputs(l->n ? "\n  ]\n}\n" : "]\n}\n", f);
+    fputs(rows ? "\n  ]\n}\n" : "]\n}\n", f);
 }
 
 int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double seconds,
                  const char *csv, const char *results)
 {
+    for (int i = 0; i < l->ignored; i++)
+        grade_print_row(&l->refused[i]);
     int passed = 0, errors = 0;
     for (int i = 0; i < l->n; i++) {
         passed += l->items[i].status == 0;
         errors += l->items[i].status == 2;
     }
-    char summary[400];
+    char summary[500], others[80] = "";
+    if (l->ignored)
+        snprintf(others, sizeof others, ", %d other entr%s not graded,", l->ignored,
+                 l->ignored == 1 ? "y" : "ies");
     snprintf(summary, sizeof summary, "%d submission%s: %d passed, %d failed (%d of them "
-             "unusable) in %.1f s; limits per submission: %g s CPU, %zu MiB, %zu KiB output, %g s "
-             "wall, %g s per plugin step", l->n, l->n == 1 ? "" : "s", passed, l->n - passed,
-             errors, seconds, lim->cpu_seconds, lim->memory_bytes >> 20, lim->output_bytes >> 10,
-             wall, sw_plugin_timeout());
-    printf("%s\n", summary);
+             "unusable)%s in %.1f s; the grader's limits per submission: %g s CPU, %zu MiB, %zu "
+             "KiB output, %g s wall, %g s per plugin step", l->n, l->n == 1 ? "" : "s", passed,
+             l->n - passed, errors, others, seconds, lim->cpu_seconds, lim->memory_bytes >> 20,
+             lim->output_bytes >> 10, wall, sw_plugin_timeout());
+    fprintf(table(), "%s\n", summary);
+    fflush(table());
     int rc = SW_EXIT_OK;
     if (csv)
         rc = write_whole(csv, write_csv, l, summary);
@@ -205,17 +344,12 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
         return SW_EXIT_USAGE;
     if (rc != SW_EXIT_OK)
         return rc;
-    return passed == l->n ? SW_EXIT_OK : SW_EXIT_FAIL;
+    /* 0 only when every row is a pass: an entry not graded is no pass. */
+    return passed == l->n && l->ignored == 0 ? SW_EXIT_OK : SW_EXIT_FAIL;
 }
 
 void grade_clean_dir(const char *dir, int n)
 {
-    char path[PATH_MAX + 40];
-    for (int i = 0; i < n; i++) {
-        snprintf(path, sizeof path, "%s/s%d.so", dir, i);
-        unlink(path);
-        snprintf(path, sizeof path, "%s/s%d.log", dir, i);
-        unlink(path);
-    }
-    rmdir(dir);
+    (void)n; /* everything in it goes, whatever the compilers left */
+    sw_tmpdir_remove(dir);
 }

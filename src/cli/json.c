@@ -2,9 +2,11 @@
 #include "cli/json.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "grade/assignment.h"
+#include "util/utf8.h"
 
 void sw_json_str(FILE *out, const char *s)
 {
@@ -26,20 +28,20 @@ void sw_json_str(FILE *out, const char *s)
             putc(c, out);
             p++;
         } else {
-            /* valid UTF-8 passes through; any other byte becomes U+FFFD */
-            int len = c >= 0xf0 && c < 0xf5 ? 4 : c >= 0xe0 && c < 0xf0 ? 3 : c >= 0xc2 && c < 0xe0 ? 2 : 0;
-            int ok = len > 0;
-            for (int i = 1; ok && i < len; i++)
-                ok = (p[i] & 0xc0) == 0x80;
-            if (ok && len == 2 && p[0] == 0xc2 && p[1] < 0xa0) {
-                fprintf(out, "\\u%04x", p[1]); /* C1 controls: escaped like C0 */
-                p += 2;
-            } else if (ok) {
-                fwrite(p, 1, (size_t)len, out);
-                p += len;
-            } else {
+            /* strictly valid UTF-8 passes through (util/utf8: no overlong
+             * form, no surrogate); C1 controls and U+2028/U+2029 (line breaks
+             * to JavaScript) are escaped; any other byte becomes U+FFFD */
+            size_t len;
+            uint32_t cp;
+            if (sw_utf8_check(p, strnlen((const char *)p, 4), &len, &cp) != SW_UTF8_OK) {
                 fputs("\\ufffd", out);
                 p++;
+            } else if ((cp >= 0x80 && cp <= 0x9f) || cp == 0x2028 || cp == 0x2029) {
+                fprintf(out, "\\u%04x", (unsigned)cp);
+                p += len;
+            } else {
+                fwrite(p, 1, len, out);
+                p += len;
             }
         }
     }

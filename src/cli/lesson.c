@@ -193,10 +193,17 @@ int sw_cmd_lesson(int argc, char **argv)
         rc = sw_cli_error("%s", e[k].error);
     else if (sw_progress_check(why, sizeof why) != SW_OK)
         rc = sw_cli_error("%s; progress could not be saved (set XDG_STATE_HOME to a writable directory)", why);
-    else if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
-        rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson --check FILE...'");
-    else
-        rc = k >= 0 ? run_lesson(e[k].path, -1, NULL, 0) : menu(e, n);
+    else {
+        char unreadable[SW_ERRLEN + 400];
+        if (sw_progress_readable(unreadable, sizeof unreadable) != SW_OK)
+            sw_cli_note("warning: %s; lessons start from their first page and progress is not "
+                        "saved over it", unreadable);
+        if (!isatty(STDOUT_FILENO) || !isatty(STDIN_FILENO))
+            rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson "
+                              "--check FILE...'");
+        else
+            rc = k >= 0 ? run_lesson(e[k].path, -1, NULL, 0) : menu(e, n);
+    }
     sw_lesson_list_free(e, n);
     return rc;
 }

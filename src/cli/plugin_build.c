@@ -1,46 +1,30 @@
 /* Building a student's integrator from C source: `--plugin my.c` compiles
  * it with the documented flags (docs/plugins.md) into a private temporary
  * directory, under a time limit, and loads the result. The directory and
- * what is in it are removed when stepwise exits. */
+ * what is in it are removed when stepwise ends, however it ends
+ * (util/tmpdir.h: at exit, or by a watcher after a signal or a crash). */
 #include "cli/cli.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "plugin/plugin.h"
 #include "plugin/sandbox.h"
+#include "util/tmpdir.h"
 
 /* Seconds a compiler may take for one plugin. */
 #define BUILD_SECONDS 60.0
 
 static char build_dir[PATH_MAX];
 static pid_t build_dir_owner;
-
-static void remove_build_dir(void)
-{
-    if (!build_dir[0] || getpid() != build_dir_owner)
-        return;
-    /* Only files stepwise made: pN.so and pN.log, no subdirectories. */
-    int fd = open(build_dir, O_RDONLY | O_DIRECTORY);
-    if (fd >= 0) {
-        close(fd);
-        char path[PATH_MAX + 300];
-        for (int i = 0; i < 64; i++) {
-            snprintf(path, sizeof path, "%s/p%d.so", build_dir, i);
-            unlink(path);
-            snprintf(path, sizeof path, "%s/p%d.log", build_dir, i);
-            unlink(path);
-        }
-    }
-    rmdir(build_dir);
-    build_dir[0] = '\0';
-}
 
 static int has_header(const char *dir)
 {
@@ -224,6 +208,42 @@ static int write_new(const char *path, const char *data, size_t len)
     return close(fd);
 }
 
+/* Whether a failed build ran into a limit the grader set on the process
+ * that builds it (grade's --output, --cpu, --memory are inherited by the
+ * compiler): the words for it in buf, else 0. That is the teacher's limit,
+ * never the student's compile error. */
+static int grader_limit(const char *log, size_t out_len, const sw_child_end *end, char *buf,
+                        size_t len)
+{
+    static const struct {
+        int resource, signal;     /* the rlimit, and the signal past it (0: none) */
+        const char *says;         /* what the compiler says when it hits the limit */
+        const char *flag, *unit;  /* grade's option, and its unit */
+        double scale;             /* bytes or seconds per unit */
+    } limits[] = {
+        { RLIMIT_FSIZE, SIGXFSZ, "File size limit exceeded", "--output", "KiB", 1024 },
+        { RLIMIT_CPU, SIGXCPU, "CPU time limit exceeded", "--cpu", "s", 1 },
+        { RLIMIT_AS, 0, "emory exhausted", "--memory", "MiB", 1024 * 1024 },
+        { RLIMIT_AS, 0, "out of memory", "--memory", "MiB", 1024 * 1024 },
+    };
+    const char *text = log ? log : "";
+    for (size_t i = 0; i < sizeof limits / sizeof limits[0]; i++) {
+        struct rlimit rl;
+        if (getrlimit(limits[i].resource, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY)
+            continue;
+        int full = limits[i].resource == RLIMIT_FSIZE && (rlim_t)out_len >= rl.rlim_cur;
+        if (full || (limits[i].signal && end->signal == limits[i].signal) ||
+            strstr(text, limits[i].says)) {
+            snprintf(buf, len, "the grader's %s limit of %g %s was reached while building it (the "
+                     "compiler counts against it); this says nothing about the plugin: raise %s",
+                     limits[i].flag, (double)rl.rlim_cur / limits[i].scale, limits[i].unit,
+                     limits[i].flag);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
                           size_t solen, char *err, size_t errlen)
 {
@@ -290,8 +310,11 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
     sw_sandbox_reap(&child, BUILD_SECONDS, &end);
     if (!sw_jail_enabled())
         plain_done(work, &out, &out_len, &log, &log_len);
-    int ok = end.exited && end.code == 0 && out && write_new(so, out, out_len) == 0;
-    if (log)
+    struct rlimit fsize; /* the grader's --output holds for the built plugin too */
+    int fits = getrlimit(RLIMIT_FSIZE, &fsize) != 0 || fsize.rlim_cur == RLIM_INFINITY ||
+               (rlim_t)out_len < fsize.rlim_cur;
+    int ok = end.exited && end.code == 0 && out && fits && write_new(so, out, out_len) == 0;
+    if (log && (fits || (rlim_t)log_len < fsize.rlim_cur))
         write_new(log_path, log, log_len);
     free(out);
     if (ok) {
@@ -304,6 +327,11 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
                  BUILD_SECONDS);
         return SW_EINVAL;
     }
+    if (grader_limit(log, out_len, &end, msg, sizeof msg)) {
+        free(log);
+        snprintf(err, errlen, "--plugin '%s' was not built: %s", shown, msg);
+        return SW_EIO;
+    }
     first_error(log, msg, sizeof msg);
     free(log);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
@@ -314,16 +342,13 @@ int sw_cli_build_plugin(const char *src, char *so, size_t solen)
 {
     static int count;
     char err[SW_ERRLEN + 256], name[16];
-    if (!build_dir[0]) {
-        const char *tmp = getenv("TMPDIR");
-        snprintf(build_dir, sizeof build_dir, "%s/stepwise-plugins-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-        if (!mkdtemp(build_dir)) {
+    if (!build_dir[0] || build_dir_owner != getpid()) {
+        if (sw_tmpdir_make("plugins", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
             build_dir[0] = '\0';
-            return sw_cli_error("--plugin: cannot make a directory to build it in: %s",
-                                strerror(errno));
+            return sw_cli_error("--plugin: %s", err);
         }
         build_dir_owner = getpid();
-        atexit(remove_build_dir);
+        count = 0;
     }
     if (count == 64)
         return sw_cli_error("--plugin: at most 64 plugins are built per run");

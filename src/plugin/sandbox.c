@@ -66,6 +66,26 @@ static void close_from(int from)
         close((int)fd);
 }
 
+/* Close every descriptor above 2 but keep[0..n) (n <= 3). */
+static void close_all_but(int *keep, int n)
+{
+    for (int i = 0; i < n; i++) /* sort, smallest first */
+        for (int j = i + 1; j < n; j++)
+            if (keep[j] < keep[i]) {
+                int t = keep[i];
+                keep[i] = keep[j];
+                keep[j] = t;
+            }
+    int from = 3;
+    for (int i = 0; i < n; i++) {
+        if (keep[i] > from)
+            syscall(SYS_close_range, (unsigned)from, (unsigned)keep[i] - 1, 0);
+        if (keep[i] >= from)
+            from = keep[i] + 1;
+    }
+    close_from(from);
+}
+
 /* Everything the child does before running fn: it may only use what it was
  * handed, and nothing it does can reach the parent's terminal or files. Its
  * channel becomes descriptor 3; the rest above 2 are closed. */
@@ -233,6 +253,14 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     if (die_with(parent) != 0)
         _exit(127);
     setpgid(0, 0);
+    /* Copying the submission in is the jail's work, not the submission's:
+     * not under the file-size limit the caller may have (grade's --output);
+     * the payload gets its own limits. */
+    struct rlimit fsize;
+    if (getrlimit(RLIMIT_FSIZE, &fsize) == 0) {
+        fsize.rlim_cur = fsize.rlim_max;
+        setrlimit(RLIMIT_FSIZE, &fsize);
+    }
     const char *step = NULL;
     int rc = sw_jail_unshare(&step);
     char tag = 'U';
@@ -247,6 +275,10 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         send_failure(sync, rc, step);
         _exit(127);
     }
+    /* Nothing of the caller's stays open in the jail (its files, a
+     * temporary directory's keep-alive pipe): only the three channels. */
+    int keep[3] = { sock, sync, status };
+    close_all_but(keep, 3);
     pid_t init = fork();
     if (init < 0) {
         send_failure(sync, errno, "fork of the jail's init");

@@ -2,7 +2,8 @@
  * in the target's directory (so rename is atomic), is created with mkstemp
  * (so two writers never share one), gets the mode the target has or would
  * get, and exists only between open and commit or abort; nothing but a
- * regular file or a new name is ever renamed over. */
+ * regular file or a new name is ever renamed over; what standard output
+ * already writes to is written through it (never renamed over under it). */
 #include "util/outfile.h"
 
 #include <errno.h>
@@ -84,61 +85,92 @@ static int temp_name(const char *path, char *out, size_t len)
     return 0;
 }
 
-static int check(const char *path, char *final, size_t finallen, struct stat *st, int *exists,
-                 char *err, size_t errlen)
+/* Whether st, an existing file, is the one standard output writes to (a
+ * pipe, a FIFO, a regular file or a socket; a terminal or another device is
+ * opened on its own, like any device). */
+static int is_our_stdout(const struct stat *st)
 {
+    struct stat out;
+    return !S_ISCHR(st->st_mode) && fstat(STDOUT_FILENO, &out) == 0 && out.st_dev == st->st_dev &&
+           out.st_ino == st->st_ino;
+}
+
+int sw_outfile_resolve(const char *path, sw_outfile_target *t, char *err, size_t errlen)
+{
+    memset(t, 0, sizeof *t);
+    if (!path || strcmp(path, "-") == 0) {
+        t->is_stdout = t->direct = 1;
+        return SW_OK;
+    }
     if (!*path || strlen(path) >= SW_OUTFILE_PATH_MAX) {
         snprintf(err, errlen, "output path is empty or longer than %d bytes", SW_OUTFILE_PATH_MAX - 1);
         return SW_EINVAL;
     }
-    int e = follow_links(path, final, finallen);
+    struct stat st;
+    if (stat(path, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) {
+            snprintf(err, errlen, "'%.200s' is a directory; give a file name to write", path);
+            return SW_EINVAL;
+        }
+        if (is_our_stdout(&st)) {
+            /* /dev/stdout, /proc/self/fd/1, or the file stdout was sent to:
+             * one stream, so what is written stays in order. */
+            t->is_stdout = t->direct = 1;
+            return SW_OK;
+        }
+        if (S_ISBLK(st.st_mode) || S_ISSOCK(st.st_mode)) {
+            snprintf(err, errlen, "'%.200s' is a %s; give a file name to write", path,
+                     S_ISBLK(st.st_mode) ? "block device" : "socket");
+            return SW_EINVAL;
+        }
+        if (!S_ISREG(st.st_mode)) {
+            /* A character device or a FIFO, by the name given: a link such as
+             * /dev/stdout to a pipe has no name a temporary could go beside. */
+            memcpy(t->path, path, strlen(path) + 1);
+            t->direct = t->exists = 1;
+            t->st = st;
+            return SW_OK;
+        }
+    }
+    int e = follow_links(path, t->path, sizeof t->path);
     if (e) {
         snprintf(err, errlen, "cannot create '%.200s': %s", path, strerror(e));
         return SW_EIO;
     }
-    *exists = stat(final, st) == 0;
-    if (*exists && S_ISDIR(st->st_mode)) {
-        snprintf(err, errlen, "'%.200s' is a directory; give a file name to write", path);
-        return SW_EINVAL;
+    t->exists = stat(t->path, &t->st) == 0;
+    char dir[SW_OUTFILE_PATH_MAX];
+    dir_of(t->path, dir, sizeof dir);
+    struct stat dst;
+    errno = 0;
+    if (stat(dir, &dst) != 0 || !S_ISDIR(dst.st_mode) || access(dir, W_OK | X_OK) != 0) {
+        e = errno ? errno : ENOTDIR;
+        snprintf(err, errlen, "cannot create '%.200s': %s", path, strerror(e));
+        return SW_EIO;
     }
     return SW_OK;
 }
 
 int sw_outfile_check(const char *path, char *err, size_t errlen)
 {
-    if (!path || strcmp(path, "-") == 0)
-        return SW_OK;
-    char final[SW_OUTFILE_PATH_MAX], dir[SW_OUTFILE_PATH_MAX];
-    struct stat st;
-    int exists;
-    int rc = check(path, final, sizeof final, &st, &exists, err, errlen);
-    if (rc != SW_OK || (exists && !S_ISREG(st.st_mode)))
-        return rc;
-    dir_of(final, dir, sizeof dir);
-    struct stat dst;
-    if (stat(dir, &dst) != 0 || !S_ISDIR(dst.st_mode) || access(dir, W_OK | X_OK) != 0) {
-        int e = errno ? errno : ENOTDIR;
-        snprintf(err, errlen, "cannot create '%.200s': %s", path, strerror(e));
-        return SW_EIO;
-    }
-    return SW_OK;
+    sw_outfile_target t;
+    return sw_outfile_resolve(path, &t, err, errlen);
 }
 
 int sw_outfile_open(sw_outfile *o, const char *path, char *err, size_t errlen)
 {
     memset(o, 0, sizeof *o);
-    if (!path || strcmp(path, "-") == 0) {
+    sw_outfile_target t;
+    int rc = sw_outfile_resolve(path, &t, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    if (t.is_stdout) {
         o->f = stdout;
         o->is_stdout = o->direct = 1;
         return SW_OK;
     }
-    struct stat st;
-    int exists;
-    int rc = check(path, o->path, sizeof o->path, &st, &exists, err, errlen);
-    if (rc != SW_OK)
-        return rc;
+    memcpy(o->path, t.path, sizeof o->path);
     snprintf(o->shown, sizeof o->shown, "%s", path);
-    if (exists && !S_ISREG(st.st_mode)) {
+    if (t.direct) {
         /* A device, a FIFO, a terminal: write to it as `cat > it` would. */
         int fd = open(o->path, O_WRONLY | O_NOCTTY);
         if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
@@ -158,9 +190,9 @@ int sw_outfile_open(sw_outfile *o, const char *path, char *err, size_t errlen)
         return SW_EIO;
     }
     mode_t mode;
-    if (exists) {
-        mode = st.st_mode & 07777;
-        if (fchown(fd, st.st_uid, st.st_gid) != 0)
+    if (t.exists) {
+        mode = t.st.st_mode & 07777;
+        if (fchown(fd, t.st.st_uid, t.st.st_gid) != 0)
             mode &= 0777; /* not ours to give away: no set-id bits either */
     } else {
         mode_t mask = umask(0);

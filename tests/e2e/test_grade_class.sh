@@ -3,9 +3,10 @@
 # assignment — correct, honest wrong dt, honest wrong method, wrong
 # parameter, a header lying about its method, truncated, a BOM with CRLF
 # and reordered columns, float32, %g digits, v-then-x Euler, and plugins
-# that crash, overrun and loop. Each verdict must be right and each message
-# must name the mistake; the CSV gradebook and results.json must parse; the
-# run must finish within its limits and exit 1.
+# that crash, overrun and loop; and a README.txt, which gets a 'skipped'
+# row. Each verdict must be right and each message must name the mistake;
+# the CSV gradebook and results.json must parse; the run must finish within
+# its limits and exit 1.
 set -u
 SW=${STEPWISE:?set STEPWISE to the stepwise binary}
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -134,7 +135,7 @@ plugin class/crashing.c crashing '*(volatile double *)0 = 1'
 plugin overrun.c overrun 'work[ode->dim + 1] = 0'
 cc -std=c11 -O2 -shared -fPIC -I"$root/include" -o class/overrun.so overrun.c || fail "cannot build overrun.so"
 plugin class/looping.c looping 'for (volatile int spin = 1; spin;) { }'
-cp assignment.txt class/README.txt   # not a submission: ignored
+cp assignment.txt class/README.txt   # not a submission: a row 'skipped' with the reason
 
 # --- grade the class -----------------------------------------------------------
 start=$(date +%s)
@@ -144,7 +145,7 @@ took=$(( $(date +%s) - start ))
 cat out
 [ "$rc" -eq 1 ] || fail "grade exited $rc, want 1: $(cat err)"
 [ "$took" -le 60 ] || fail "grading took $took s"
-grep -q '^grading 13 submissions against assignment.txt (euler on spring, dt 0.01); 1 other file ignored' out \
+grep -q '^grading 13 submissions against assignment.txt (euler on spring, dt 0.01); 1 other entry not graded' out \
     || fail "heading: $(head -1 out)"
 grep -q '^13 submissions: 2 passed, 11 failed' out || fail "totals: $(tail -1 out)"
 
@@ -183,7 +184,7 @@ function field(    f, c) {
 }
 AWK
 awk -f csv.awk grades.csv > rows || fail "grades.csv is not well formed: $(cat grades.csv)"
-[ "$(wc -l < rows)" -eq 13 ] || fail "grades.csv has $(wc -l < rows) records, want 13"
+[ "$(wc -l < rows)" -eq 14 ] || fail "grades.csv has $(wc -l < rows) records, want 14 (13 and README.txt)"
 # row FILE VERDICT STEP REGEX: the gradebook says so
 row() {
     r=$(grep "^class/$1	" rows) || fail "$1 is not in the gradebook"
@@ -209,15 +210,16 @@ row v-then-x.trace fail 1 'your numbers match symplectic-euler .*did you update 
 row crashing.c fail 4 'the plugin crashed with SIGSEGV .* at step 4'
 row overrun.so fail 4 'the plugin wrote past its 1 work vector \(work\[5\].* at step 4'
 row looping.c fail 4 'the plugin did not return from its step within 2 s at step 4'
+row README.txt skipped "" 'not a submission: a \.txt file; traces end in \.trace or \.csv'
 grep -q '^class/correct.trace	.*	Ada Lovelace$' rows || fail "the student's name is not in the gradebook"
 grep -q '^class/bom-crlf.trace	.*	Emmy Noether$' rows || fail "the BOM student's name is lost"
 grep -q '^class/overrun.so	.*	overrun$' rows || fail "a plugin is named after its file"
 
 # results.json: Gradescope's fields, parsed strictly.
 awk -f "$json" results.json > fields || fail "results.json is not JSON"
-grep -qx 'score=2' fields && grep -qx 'max_score=13' fields || fail "score: $(grep score fields | head -2)"
-[ "$(grep -c '^tests\[[0-9]*\]\.name=' fields)" -eq 13 ] || fail "results.json lacks 13 tests"
-[ "$(grep -c '^tests\[[0-9]*\]\.output=' fields)" -eq 13 ] || fail "a test has no output"
+grep -qx 'score=2' fields && grep -qx 'max_score=14' fields || fail "score: $(grep score fields | head -2)"
+[ "$(grep -c '^tests\[[0-9]*\]\.name=' fields)" -eq 14 ] || fail "results.json lacks 14 tests"
+[ "$(grep -c '^tests\[[0-9]*\]\.output=' fields)" -eq 14 ] || fail "a test has no output"
 grep -q '^tests\[[0-9]*\]\.name=Emmy Noether (class/bom-crlf.trace)$' fields || fail "test names: $(grep name= fields)"
 grep -q '^tests\[[0-9]*\]\.extra_data\.notes=written on Windows$' fields || fail "the note is not carried"
 grep -q '^tests\[[0-9]*\]\.output=FAIL: class/wrong-dt.trace' fields || fail "outputs: $(grep output= fields | head -2)"

@@ -1,0 +1,245 @@
+/* The submissions named on grade's command line: a file as it is, a
+ * directory as every entry in it. Invariants: nothing named is dropped
+ * without a row (an entry that is not graded gets one with its reason); a
+ * symbolic link is never followed to a submission (lstat, then open with
+ * O_NOFOLLOW); nothing is opened in a way that could block (O_NONBLOCK, a
+ * FIFO refused by the type of the descriptor it gave). */
+#include "cli/grade.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/cli.h"
+#include "util/escape.h"
+
+/* What a name says it is: 1 a trace, 2 a plugin, 0 neither. */
+static int kind_of(const char *name)
+{
+    size_t len = strlen(name);
+    static const char *const traces[] = { ".trace", ".csv" }, *const plugins[] = { ".so", ".c" };
+    for (int i = 0; i < 2; i++) {
+        size_t n = strlen(traces[i]);
+        if (len > n && strcmp(name + len - n, traces[i]) == 0)
+            return 1;
+        n = strlen(plugins[i]);
+        if (len > n && strcmp(name + len - n, plugins[i]) == 0)
+            return 2;
+    }
+    return 0;
+}
+
+static int cmp_names(const void *a, const void *b)
+{
+    return strcmp(((const grade_entry *)a)->path, ((const grade_entry *)b)->path);
+}
+
+static int same_file(const struct stat *a, const struct stat *b)
+{
+    return a->st_dev == b->st_dev && a->st_ino == b->st_ino;
+}
+
+static int add_place(grade_list *l, const struct stat *st, const char *real)
+{
+    if (l->nplaces == l->places_cap) {
+        int cap = l->places_cap ? 2 * l->places_cap : 32;
+        grade_place *p = realloc(l->places, (size_t)cap * sizeof *p);
+        if (!p)
+            return SW_ENOMEM;
+        l->places = p;
+        l->places_cap = cap;
+    }
+    grade_place *p = &l->places[l->nplaces];
+    p->dev = st->st_dev;
+    p->ino = st->st_ino;
+    p->real = NULL;
+    if (real && !(p->real = strdup(real)))
+        return SW_ENOMEM;
+    l->nplaces++;
+    return SW_OK;
+}
+
+/* A row for an entry that is not graded, with its reason. */
+static int refuse(grade_list *l, const char *path, const char *why)
+{
+    if (l->ignored == l->refused_cap) {
+        int cap = l->refused_cap ? 2 * l->refused_cap : 16;
+        grade_entry *r = realloc(l->refused, (size_t)cap * sizeof *r);
+        if (!r)
+            return SW_ENOMEM;
+        l->refused = r;
+        l->refused_cap = cap;
+    }
+    grade_entry *e = &l->refused[l->ignored];
+    memset(e, 0, sizeof *e);
+    if (!(e->path = strdup(path)))
+        return SW_ENOMEM;
+    e->status = GRADE_SKIPPED;
+    e->failing_step = -1;
+    snprintf(e->kind, sizeof e->kind, "not-graded");
+    snprintf(e->message, sizeof e->message, "%s", why);
+    l->ignored++;
+    return SW_OK;
+}
+
+/* The kind of a file that is not a regular one, in words. */
+static const char *type_words(mode_t mode)
+{
+    return S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a FIFO (named pipe)"
+         : S_ISSOCK(mode) ? "a socket" : S_ISCHR(mode) || S_ISBLK(mode) ? "a device"
+         : "not a regular file";
+}
+
+/* Whether the resolved path lies in (or is) the resolved directory dir. */
+static int lies_in(const char *path, const char *dir)
+{
+    size_t n = strlen(dir);
+    return strncmp(path, dir, n) == 0 && (path[n] == '/' || path[n] == '\0' || n == 1);
+}
+
+/* Why the symbolic link at path is not graded. dir: the resolved
+ * submissions directory it sits in, or NULL when it was named itself. */
+static void link_reason(const char *path, const char *dir, const struct stat *assign_st,
+                        char *why, size_t len)
+{
+    char target[PATH_MAX], shown[200], real[PATH_MAX];
+    ssize_t n = readlink(path, target, sizeof target - 1);
+    target[n > 0 ? n : 0] = '\0';
+    sw_escape(target, 120, shown, sizeof shown);
+    struct stat st;
+    if (stat(path, &st) == 0 && same_file(&st, assign_st))
+        snprintf(why, len, "not graded: a symbolic link to the assignment");
+    else if (dir && (!realpath(path, real) || !lies_in(real, dir)))
+        snprintf(why, len, "not graded: a symbolic link to '%s', outside the submissions "
+                 "directory; links are never followed", shown);
+    else
+        snprintf(why, len, "not graded: a symbolic link to '%s'; links are never followed "
+                 "(copy the file itself in)", shown);
+}
+
+/* Whether path (named name, in the resolved submissions directory dir, or
+ * named itself when dir is NULL) is to be graded: 1, or 0 with why filled.
+ * *st gets what lstat said (its mode 0 when it failed). */
+static int judge(const char *path, const char *name, const char *dir, const struct stat *assign_st,
+                 struct stat *st, char *why, size_t len)
+{
+    memset(st, 0, sizeof *st);
+    if (lstat(path, st) != 0) {
+        snprintf(why, len, "not graded: cannot be read: %s", strerror(errno));
+        return 0;
+    }
+    if (S_ISLNK(st->st_mode)) {
+        link_reason(path, dir, assign_st, why, len);
+        return 0;
+    }
+    if (S_ISDIR(st->st_mode)) {
+        snprintf(why, len, "not a submission: a directory; only the files directly in the "
+                 "submissions directory are graded");
+        return 0;
+    }
+    if (!S_ISREG(st->st_mode)) {
+        snprintf(why, len, "not a submission: %s, not a regular file", type_words(st->st_mode));
+        return 0;
+    }
+    if (same_file(st, assign_st)) {
+        snprintf(why, len, "not graded: the assignment itself");
+        return 0;
+    }
+    if (dir && name[0] == '.') {
+        snprintf(why, len, "not graded: a hidden file (its name starts with a dot)");
+        return 0;
+    }
+    if (!kind_of(name)) {
+        const char *dot = strrchr(name, '.');
+        char ext[80];
+        if (dot && dot != name) {
+            sw_escape(dot, 24, ext, sizeof ext);
+            snprintf(why, len, "not a submission: a %s file; traces end in .trace or .csv, plugins "
+                     "in .so or .c", ext);
+        } else
+            snprintf(why, len, "not a submission: a file without an extension; traces end in "
+                     ".trace or .csv, plugins in .so or .c");
+        return 0;
+    }
+    /* Opened as it will be read: never through a link, never waiting on a
+     * FIFO; the descriptor's own type and identity decide. */
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat fst;
+    if (fd < 0) {
+        snprintf(why, len, "not graded: cannot be opened: %s", errno == ELOOP ? "it is now a "
+                 "symbolic link" : strerror(errno));
+        return 0;
+    }
+    int ok = fstat(fd, &fst) == 0;
+    close(fd);
+    if (!ok || !S_ISREG(fst.st_mode) || !same_file(&fst, st)) {
+        snprintf(why, len, "not graded: it changed while it was being read");
+        return 0;
+    }
+    return 1;
+}
+
+/* Judge one entry and add it to the submissions or to the refused. */
+static int take(grade_list *list, const char *path, const char *name, const char *dir,
+                const struct stat *assign_st)
+{
+    struct stat st;
+    char why[400];
+    int graded = judge(path, name, dir, assign_st, &st, why, sizeof why);
+    int rc = graded ? grade_list_add(list, path, kind_of(name) == 2) : refuse(list, path, why);
+    if (rc == SW_OK && st.st_mode)
+        rc = add_place(list, &st, NULL);
+    return rc;
+}
+
+static void sort_from(grade_entry *items, int first, int n)
+{
+    if (n > first)
+        qsort(items + first, (size_t)(n - first), sizeof items[0], cmp_names);
+}
+
+int grade_collect(grade_list *list, const char *arg, const struct stat *assign_st)
+{
+    struct stat st;
+    int first = list->n, first_refused = list->ignored;
+    if (stat(arg, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        /* A file named itself: no directory listing, the same rules. */
+        struct stat lst;
+        if (lstat(arg, &lst) != 0)
+            return sw_cli_error("grade: '%.200s': %s", arg, strerror(errno));
+        const char *slash = strrchr(arg, '/');
+        if (take(list, arg, slash ? slash + 1 : arg, NULL, assign_st) != SW_OK)
+            return sw_cli_error("grade: out of memory");
+        return SW_EXIT_OK;
+    }
+    char real[PATH_MAX];
+    if (!realpath(arg, real))
+        return sw_cli_error("grade: cannot resolve the directory '%.200s': %s", arg,
+                            strerror(errno));
+    DIR *d = opendir(arg);
+    if (!d)
+        return sw_cli_error("grade: cannot read the directory '%.200s': %s", arg, strerror(errno));
+    int rc = add_place(list, &st, real);
+    for (struct dirent *e; rc == SW_OK && (e = readdir(d));) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        char path[PATH_MAX];
+        int n = snprintf(path, sizeof path, "%s/%s", arg, e->d_name);
+        if (n < 0 || (size_t)n >= sizeof path)
+            rc = refuse(list, e->d_name, "not graded: its path is too long");
+        else
+            rc = take(list, path, e->d_name, real, assign_st);
+    }
+    closedir(d);
+    if (rc != SW_OK)
+        return sw_cli_error("grade: out of memory");
+    sort_from(list->items, first, list->n);
+    sort_from(list->refused, first_refused, list->ignored);
+    return SW_EXIT_OK;
+}

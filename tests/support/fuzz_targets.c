@@ -11,6 +11,7 @@
 #include "app/app.h"
 #include "app/runner.h"
 #include "grade/check.h"
+#include "grade/roster.h"
 #include "trace/trace.h"
 #include "lesson/lesson.h"
 #include "render/canvas.h"
@@ -246,4 +247,67 @@ int sw_fuzz_check(const uint8_t *data, size_t len)
     }
     remove(path);
     return ok;
+}
+
+/* A match's result is a student, NONE or AMBIGUOUS, and its why one line. */
+static void fuzz_match(const sw_roster *r, const char *path)
+{
+    char why[SW_ERRLEN];
+    int m = sw_roster_match(r, path, why, sizeof why);
+    if (m < SW_ROSTER_AMBIGUOUS || m >= r->n || !why[0] || strchr(why, '\n'))
+        abort();
+}
+
+int sw_fuzz_roster(const uint8_t *data, size_t len)
+{
+    size_t cut = 0;
+    while (cut < len && data[cut] != 0xFF)
+        cut++;
+    sw_roster r;
+    char err[SW_ERRLEN], why[SW_ERRLEN];
+    err[0] = '\0';
+    if (sw_roster_parse("fuzz.csv", (const char *)data, cut, &r, err, sizeof err) != SW_OK) {
+        if (r.n != 0 || !err[0] || strchr(err, '\n'))
+            abort();
+        sw_roster_free(&r);
+        return 0;
+    }
+    const char *rest = (const char *)data + cut + 1;
+    size_t nrest = cut < len ? len - cut - 1 : 0;
+    if (nrest > 0)
+        sw_roster_parse_gradescope(&r, "fuzz.yml", rest, nrest, err, sizeof err);
+    static const char *const forms[] = { "%s_euler.c", "%s/rk4.c", "x%s_1_2_y.c",
+                                         "%s_7_assignsubmission_file_a.c", "submission_%s/a.c" };
+    for (int i = 0; i < r.n && i < 64; i++) {
+        const sw_student *s = &r.students[i];
+        char path[1200];
+        for (size_t f = 0; f < sizeof forms / sizeof forms[0]; f++) {
+            snprintf(path, sizeof path, forms[f], s->name);
+            fuzz_match(&r, path);
+            snprintf(path, sizeof path, forms[f], s->words);
+            fuzz_match(&r, path);
+        }
+        for (int j = 0; j < s->nids; j++) {
+            snprintf(path, sizeof path, "%s_rk4.trace", s->ids[j]);
+            fuzz_match(&r, path);
+        }
+        /* a student's own folded name always names them */
+        if (sw_roster_check_claim(&r, i, s->words, NULL, why, sizeof why) != SW_CLAIM_SELF)
+            abort();
+        sw_roster_check_claim(&r, i, s->name, NULL, why, sizeof why);
+        sw_roster_check_claim(&r, SW_ROSTER_NONE, s->email, NULL, why, sizeof why);
+    }
+    for (int lines = 0; nrest > 0 && lines < 64; lines++) {
+        size_t n = 0;
+        while (n < nrest && rest[n] != '\n')
+            n++;
+        char path[512];
+        snprintf(path, sizeof path, "%.*s", (int)(n < 511 ? n : 511), rest);
+        fuzz_match(&r, path);
+        sw_roster_check_claim(&r, 0, path, NULL, why, sizeof why);
+        rest += n < nrest ? n + 1 : n;
+        nrest -= n < nrest ? n + 1 : n;
+    }
+    sw_roster_free(&r);
+    return 1;
 }

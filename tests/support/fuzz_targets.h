@@ -27,4 +27,11 @@ int sw_fuzz_runner(const uint8_t *data, size_t len);
  * runs only) and compared row by row. 1 when the trace passes. */
 int sw_fuzz_check(const uint8_t *data, size_t len);
 
+/* The roster reader: the bytes up to the first 0xFF as a roster CSV, the
+ * rest as Gradescope's submission_metadata.yml and, line by line, as
+ * submission paths; every student's name, words and ids matched as paths
+ * too, and each student's own words must be their own claim. 1 when the
+ * roster was read. */
+int sw_fuzz_roster(const uint8_t *data, size_t len);
+
 #endif

@@ -12,6 +12,7 @@
 #include "app/runner.h"
 #include "grade/check.h"
 #include "grade/roster.h"
+#include "grade/similar.h"
 #include "trace/trace.h"
 #include "lesson/lesson.h"
 #include "render/canvas.h"
@@ -310,4 +311,50 @@ int sw_fuzz_roster(const uint8_t *data, size_t len)
     }
     sw_roster_free(&r);
     return 1;
+}
+
+int sw_fuzz_similar(const uint8_t *data, size_t len)
+{
+    size_t cut = 0;
+    while (cut < len && data[cut] != 0xFF)
+        cut++;
+    const char *a = (const char *)data, *b = a + (cut < len ? cut + 1 : cut);
+    size_t na = cut, nb = cut < len ? len - cut - 1 : 0;
+    sw_similar s;
+    char err[SW_ERRLEN];
+    if (sw_similar_init(&s, NULL, err, sizeof err) != SW_OK)
+        return -1;
+    int ok = 0;
+    sw_similar_add_default_base(&s, err, sizeof err);
+    int da = sw_similar_add_source(&s, a, na, err, sizeof err);
+    int db = sw_similar_add_source(&s, b, nb, err, sizeof err);
+    int dc = sw_similar_add_source(&s, a, na, err, sizeof err);
+    if (da >= 0 && db >= 0 && dc >= 0) {
+        sw_similar_pair p;
+        if (sw_similar_compare(&s, da, db, &p) != SW_OK || !(p.score >= 0 && p.score <= 1) ||
+            sw_similar_compare(&s, da, dc, &p) != SW_OK || p.score != 1)
+            abort();
+        sw_similar_add_base(&s, b, nb, err, sizeof err);
+        if (sw_similar_compare(&s, da, db, &p) != SW_OK || sw_similar_fingerprints(&s, db) != 0)
+            abort(); /* the base takes all of its own fingerprints */
+        ok = 1;
+    }
+    /* the bytes as rows of two traces, 3 values a row, every other row wrong */
+    sw_similar_digest d;
+    sw_similar_digest_init(&d);
+    sw_similar_digest_add(&d, data, len);
+    int ta = sw_similar_add_trace(&s, &d, 0, err, sizeof err);
+    int tb = sw_similar_add_trace(&s, &d, len & 1, err, sizeof err);
+    for (size_t at = 0, row = 0; ta >= 0 && tb >= 0 && at + 24 <= len; at += 24, row++) {
+        double v[3];
+        memcpy(v, data + at, sizeof v);
+        sw_similar_trace_row(&s, ta, (long)row, v, 3, row % 2);
+        sw_similar_trace_row(&s, tb, (long)row, v, 3, data[at] & 1);
+    }
+    sw_similar_pair *pairs;
+    int n;
+    if (sw_similar_pairs(&s, &pairs, &n, err, sizeof err) == SW_OK)
+        free(pairs);
+    sw_similar_free(&s);
+    return ok;
 }

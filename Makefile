@@ -110,12 +110,14 @@ test: layers $(BIN) $(TESTBIN) $(BENCHBIN)
 sanitize:
 	SW_TEST_QUICK=1 $(MAKE) BUILD=build/san SAN=1 BIN=build/san/stepwise test
 
-# libFuzzer targets (clang): the lesson parser, the trace reader and the
-# --set / number parsers. New inputs go to build/fuzz/corpus-NAME; crashes to
-# build/fuzz/NAME-crash-*: copy one into tests/fuzz/NAME/ to keep it as a
-# regression test (the unit suite replays that directory).
+# libFuzzer targets (clang): the lesson parser, the trace reader, the
+# --set / number parsers, the canvas, the lesson runner, the check path, the
+# roster reader and matcher, and source similarity. New inputs go to
+# build/fuzz/corpus-NAME; crashes to build/fuzz/NAME-crash-*: copy one into
+# tests/fuzz/NAME/ to keep it as a regression test (the unit suite replays
+# that directory).
 FUZZ_TIME ?= 60
-FUZZERS   = lesson trace parse canvas runner check channel
+FUZZERS   = lesson trace parse canvas runner check channel roster similar
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude -Isrc -Itests/support
 fuzz:
 	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a

@@ -68,6 +68,10 @@ START_TEST(corpus_parse) { ck_assert_int_gt(replay("parse", sw_fuzz_parse), 3); 
 END_TEST
 START_TEST(corpus_channel) { ck_assert_int_ge(replay("channel", sw_fuzz_channel), 6); }
 END_TEST
+START_TEST(corpus_roster) { ck_assert_int_ge(replay("roster", sw_fuzz_roster), 7); }
+END_TEST
+START_TEST(corpus_similar) { ck_assert_int_ge(replay("similar", sw_fuzz_similar), 4); }
+END_TEST
 
 Suite *make_fuzz_corpus_suite(void);
 Suite *make_fuzz_corpus_suite(void)
@@ -82,6 +86,8 @@ Suite *make_fuzz_corpus_suite(void)
     tcase_add_test(tc, corpus_check);
     tcase_add_test(tc, corpus_parse);
     tcase_add_test(tc, corpus_channel);
+    tcase_add_test(tc, corpus_roster);
+    tcase_add_test(tc, corpus_similar);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -12,6 +12,8 @@
 #include "app/runner.h"
 #include "grade/check.h"
 #include "plugin/plugin_box.h"
+#include "grade/roster.h"
+#include "grade/similar.h"
 #include "trace/trace.h"
 #include "lesson/lesson.h"
 #include "render/canvas.h"
@@ -256,4 +258,113 @@ int sw_fuzz_channel(const uint8_t *data, size_t len)
     char why[SW_ERRLEN];
     int dim = (data[0] & 15) + 1, wv = (data[0] >> 4) & 3;
     return sw_plugin_box_replay(data + 1, len - 1, dim, wv, why, sizeof why) == SW_PF_NONE;
+}
+
+/* A match's result is a student, NONE or AMBIGUOUS, and its why one line. */
+static void fuzz_match(const sw_roster *r, const char *path)
+{
+    char why[SW_ERRLEN];
+    int m = sw_roster_match(r, path, why, sizeof why);
+    if (m < SW_ROSTER_AMBIGUOUS || m >= r->n || !why[0] || strchr(why, '\n'))
+        abort();
+}
+
+int sw_fuzz_roster(const uint8_t *data, size_t len)
+{
+    size_t cut = 0;
+    while (cut < len && data[cut] != 0xFF)
+        cut++;
+    sw_roster r;
+    char err[SW_ERRLEN], why[SW_ERRLEN];
+    err[0] = '\0';
+    if (sw_roster_parse("fuzz.csv", (const char *)data, cut, &r, err, sizeof err) != SW_OK) {
+        if (r.n != 0 || !err[0] || strchr(err, '\n'))
+            abort();
+        sw_roster_free(&r);
+        return 0;
+    }
+    const char *rest = (const char *)data + cut + 1;
+    size_t nrest = cut < len ? len - cut - 1 : 0;
+    if (nrest > 0)
+        sw_roster_parse_gradescope(&r, "fuzz.yml", rest, nrest, err, sizeof err);
+    static const char *const forms[] = { "%s_euler.c", "%s/rk4.c", "x%s_1_2_y.c",
+                                         "%s_7_assignsubmission_file_a.c", "submission_%s/a.c" };
+    for (int i = 0; i < r.n && i < 64; i++) {
+        const sw_student *s = &r.students[i];
+        char path[1200];
+        for (size_t f = 0; f < sizeof forms / sizeof forms[0]; f++) {
+            snprintf(path, sizeof path, forms[f], s->name);
+            fuzz_match(&r, path);
+            snprintf(path, sizeof path, forms[f], s->words);
+            fuzz_match(&r, path);
+        }
+        for (int j = 0; j < s->nids; j++) {
+            snprintf(path, sizeof path, "%s_rk4.trace", s->ids[j]);
+            fuzz_match(&r, path);
+        }
+        /* a student's own folded name always names them */
+        if (sw_roster_check_claim(&r, i, s->words, NULL, why, sizeof why) != SW_CLAIM_SELF)
+            abort();
+        sw_roster_check_claim(&r, i, s->name, NULL, why, sizeof why);
+        sw_roster_check_claim(&r, SW_ROSTER_NONE, s->email, NULL, why, sizeof why);
+    }
+    for (int lines = 0; nrest > 0 && lines < 64; lines++) {
+        size_t n = 0;
+        while (n < nrest && rest[n] != '\n')
+            n++;
+        char path[512];
+        snprintf(path, sizeof path, "%.*s", (int)(n < 511 ? n : 511), rest);
+        fuzz_match(&r, path);
+        sw_roster_check_claim(&r, 0, path, NULL, why, sizeof why);
+        rest += n < nrest ? n + 1 : n;
+        nrest -= n < nrest ? n + 1 : n;
+    }
+    sw_roster_free(&r);
+    return 1;
+}
+
+int sw_fuzz_similar(const uint8_t *data, size_t len)
+{
+    size_t cut = 0;
+    while (cut < len && data[cut] != 0xFF)
+        cut++;
+    const char *a = (const char *)data, *b = a + (cut < len ? cut + 1 : cut);
+    size_t na = cut, nb = cut < len ? len - cut - 1 : 0;
+    sw_similar s;
+    char err[SW_ERRLEN];
+    if (sw_similar_init(&s, NULL, err, sizeof err) != SW_OK)
+        return -1;
+    int ok = 0;
+    sw_similar_add_default_base(&s, err, sizeof err);
+    int da = sw_similar_add_source(&s, a, na, err, sizeof err);
+    int db = sw_similar_add_source(&s, b, nb, err, sizeof err);
+    int dc = sw_similar_add_source(&s, a, na, err, sizeof err);
+    if (da >= 0 && db >= 0 && dc >= 0) {
+        sw_similar_pair p;
+        if (sw_similar_compare(&s, da, db, &p) != SW_OK || !(p.score >= 0 && p.score <= 1) ||
+            sw_similar_compare(&s, da, dc, &p) != SW_OK || p.score != 1)
+            abort();
+        sw_similar_add_base(&s, b, nb, err, sizeof err);
+        if (sw_similar_compare(&s, da, db, &p) != SW_OK || sw_similar_fingerprints(&s, db) != 0)
+            abort(); /* the base takes all of its own fingerprints */
+        ok = 1;
+    }
+    /* the bytes as rows of two traces, 3 values a row, every other row wrong */
+    sw_similar_digest d;
+    sw_similar_digest_init(&d);
+    sw_similar_digest_add(&d, data, len);
+    int ta = sw_similar_add_trace(&s, &d, 0, err, sizeof err);
+    int tb = sw_similar_add_trace(&s, &d, len & 1, err, sizeof err);
+    for (size_t at = 0, row = 0; ta >= 0 && tb >= 0 && at + 24 <= len; at += 24, row++) {
+        double v[3];
+        memcpy(v, data + at, sizeof v);
+        sw_similar_trace_row(&s, ta, (long)row, v, 3, row % 2);
+        sw_similar_trace_row(&s, tb, (long)row, v, 3, data[at] & 1);
+    }
+    sw_similar_pair *pairs;
+    int n;
+    if (sw_similar_pairs(&s, &pairs, &n, err, sizeof err) == SW_OK)
+        free(pairs);
+    sw_similar_free(&s);
+    return ok;
 }

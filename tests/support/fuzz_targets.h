@@ -31,4 +31,16 @@ int sw_fuzz_check(const uint8_t *data, size_t len);
  * process sends back for one step. 1 when it is a valid step. */
 int sw_fuzz_channel(const uint8_t *data, size_t len);
 
+/* The roster reader: the bytes up to the first 0xFF as a roster CSV, the
+ * rest as Gradescope's submission_metadata.yml and, line by line, as
+ * submission paths; every student's name, words and ids matched as paths
+ * too, and each student's own words must be their own claim. 1 when the
+ * roster was read. */
+int sw_fuzz_roster(const uint8_t *data, size_t len);
+/* Source similarity: the bytes up to the first 0xFF and the rest as two C
+ * sources (then the rest as the base), compared with each other and with
+ * themselves (which must score 1); the bytes as rows of two traces too.
+ * 1 when both sources were compared. */
+int sw_fuzz_similar(const uint8_t *data, size_t len);
+
 #endif

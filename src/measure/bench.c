@@ -286,6 +286,12 @@ double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
     for (int i = s->npoints - 1; i >= 0 && last < 0; i--)
         if (candidate(r, &pts[i]))
             last = i;
+    /* A finer step whose error did not fall to half of the coarser one's,
+     * down where only round-off is left (1e-8 of the state's scale), is at
+     * the floor whatever the floor estimate says: no order is read there. */
+    while (last >= 1 && candidate(r, &pts[last - 1]) && pts[last].error < 1e-8 * r->scale &&
+           pts[last].h < pts[last - 1].h && pts[last].error >= 0.5 * pts[last - 1].error)
+        last--;
     first = last;
     while (first > 0 && candidate(r, &pts[first - 1]))
         first--;
@@ -306,7 +312,9 @@ double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
     for (int i = first; i <= last; i++)
         s->points[i].in_fit = 1;
     s->order = ls_slope(pts, first, last);
-    if (!isfinite(s->order)) { /* every h equal (an adaptive method stuck at its largest step) */
+    if (!isfinite(s->order) || !(s->order > 0)) {
+        /* every h equal (an adaptive method stuck at its largest step), or
+         * errors that do not fall with the step: no order to report */
         for (int i = first; i <= last; i++)
             s->points[i].in_fit = 0;
         s->nfit = 0;

@@ -85,6 +85,7 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
     sw_watch w;
     sw_watch_start(&w, (double)steps * dt / SW_WATCH_WINDOWS, &s);
     out->verdict = SW_PROBE_STABLE;
+    int bound = s.sys.scene->energy && !sw_sim_energy_scale_is_motion(&s);
     long k;
     for (k = 1; k <= steps; k++) {
         if (sw_sim_step(&s)) {
@@ -100,7 +101,11 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
                                                                                          : SW_PROBE_TREND;
             break;
         }
-        if (v < 1e-20) { /* damped away: nothing is left to grow */
+        /* damped away: nothing is left to grow. Not on a bound orbit, whose
+         * M = 1 + (E - E(0))/|E(0)| passes 0 where the energy doubles its
+         * binding (rk4 at a coarse step, on the way to flinging the planet
+         * out): that is no decay. */
+        if (v < 1e-20 && !bound) {
             out->verdict = SW_PROBE_DECAYED;
             break;
         }
@@ -125,11 +130,28 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
  * one bead barely moves some of its modes). Unstable when either run is. */
 typedef struct starts {
     double *small;      /* NULL: no resting state */
+    double amplitude;   /* the small copy's largest distance from rest */
+    double size;        /* and its largest component: what Newton's tolerance scales with */
 } starts;
+
+/* Newton's methods accept a step whose correction is below 1e-12 of the
+ * state's size, or 1e-9 where no descent is left (engine/implicit.c): per
+ * step, an error that large relative to the small copy's motion moves its
+ * energy by twice as much; over the probe's steps, that is the most its
+ * energy can wander by solving alone. Above the watch's 1e-3 the copy is
+ * not measurable with this method (a shrunk motion far from the origin:
+ * 1e-7 at |x| = 2), and the scene's own start decides. */
+static int small_resolved(const starts *st, const sw_integrator *m, double steps)
+{
+    if (!(m->flags & SW_NEWTON))
+        return 1;
+    return 2e-9 * st->size / st->amplitude * steps <= 1e-3;
+}
 
 static void starts_init(starts *st, const sw_scene *sc, const double *p)
 {
     st->small = NULL;
+    st->amplitude = st->size = 0;
     sw_system sys;
     char err[SW_ERRLEN];
     if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
@@ -146,7 +168,9 @@ static void starts_init(starts *st, const sw_scene *sc, const double *p)
             z = z * 6364136223846793005ull + 1442695040888963407ull; /* Knuth's LCG */
             double noise = (double)(z >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
             st->small[i] = rest[i] + SW_STABILITY_SHRINK * (sys.y[i] - rest[i]) + 1e-5 * span * noise;
+            st->size = fmax(st->size, fabs(st->small[i]));
         }
+        st->amplitude = SW_STABILITY_SHRINK * span;
         memmove(rest, st->small, (size_t)dim * sizeof *rest);
         st->small = rest;
     } else {
@@ -161,6 +185,8 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
 {
     int rc = probe_from(sc, p, m, dt, duration, NULL, c, out, err, errlen);
     if (rc != SW_OK || !st || !st->small || (out->verdict != SW_PROBE_STABLE && out->verdict != SW_PROBE_DECAYED))
+        return rc;
+    if (!small_resolved(st, m, (double)out->steps))
         return rc;
     sw_stability_probe small;
     rc = probe_from(sc, p, m, dt, duration, st->small, c, &small, err, errlen);
@@ -273,6 +299,15 @@ static void compare(const sw_scene *sc, const double *p, const sw_integrator *m,
     else
         snprintf(r->why + n, sizeof r->why - (size_t)n, ": a mode (|L| = %.3g) the motion barely excites, or growth "
                  "the nonlinear motion does not keep up", al.growth_lambda);
+}
+
+/* x rounded down to SW_STABILITY_DIGITS significant digits: the limit as
+ * it is reported, never above the step found stable. */
+static double round_down(double x)
+{
+    double scale = pow(10.0, SW_STABILITY_DIGITS - 1 - floor(log10(x)));
+    double r = floor(x * scale) / scale;
+    return r <= x ? r : nextafter(r, 0.0);
 }
 
 /* The search: probes at a horizon, bracketing and bisection. */
@@ -398,6 +433,27 @@ static int confirm(search *q, double *horizon, double *ok, double *bad)
     return SW_OK;
 }
 
+/* The reported limit is run as reported: the step found stable, rounded
+ * down to the digits shown, from the scene's own start over the horizon;
+ * where that grows (it should not), lower it until a run does not. */
+static int verify(search *q, double horizon, double *ok)
+{
+    double dt = round_down(*ok);
+    for (int tries = 0; tries < 8; tries++) {
+        sw_stability_probe pr;
+        int rc = run(q, dt, horizon, &pr);
+        if (rc != SW_OK)
+            return rc;
+        if (stable(pr.verdict)) {
+            *ok = dt;
+            return SW_OK;
+        }
+        dt = round_down(dt * (1 - 2 * q->c->rel_tol));
+    }
+    *ok = dt;
+    return SW_OK;
+}
+
 int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *m,
                       const sw_stability_config *c, sw_stability_result *out, char *err,
                       size_t errlen)
@@ -444,6 +500,8 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
         rc = bisect(&q, horizon, &ok, &bad);
     if (rc == SW_OK)
         rc = confirm(&q, &horizon, &ok, &bad);
+    if (rc == SW_OK && out->kind == SW_STAB_LIMIT)
+        rc = verify(&q, horizon, &ok);
     free(q.st.small);
     if (rc != SW_OK)
         return rc;

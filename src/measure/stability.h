@@ -12,6 +12,9 @@
 #include "sim/watch.h"
 #include "stepwise/sim.h"
 
+/* A measured limit is reported rounded down to this many significant
+ * digits, and that step is run again from the scene's start to verify it. */
+#define SW_STABILITY_DIGITS 5
 /* Theory and measurement agree when they differ by at most this fraction. */
 #define SW_STABILITY_AGREE 0.02
 /* Where a scene has a resting state, every probe also runs the motion shrunk

@@ -70,6 +70,15 @@ void sw_watch_init(sw_watch *w, double window, double raised)
     w->cur_min = INFINITY;
     w->first_max = -INFINITY;
     w->first_min = INFINITY;
+    w->last = NAN;
+}
+
+double sw_watch_sampling_floor(const sw_watch *w)
+{
+    double amplitude = (w->first_max - w->first_min) / 2;
+    if (w->windows < 1 || !(amplitude > 0))
+        return 0;
+    return w->step_max * w->step_max / (8 * amplitude);
 }
 
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
@@ -118,7 +127,8 @@ static sw_watch_verdict judge(const sw_watch *w)
         int rises = 0;
         for (int i = k - (SW_WATCH_WINDOWS - 1) + 1; i < k; i++)
             rises += w->peak[i] > w->peak[i - 1];
-        if (rises >= 16 && w->peak[k - 1] - w->peak[0] > 1e-9)
+        double climb = w->peak[k - 1] - w->peak[0];
+        if (rises >= 16 && climb > 1e-9 && climb > 2 * sw_watch_sampling_floor(w))
             return SW_WATCH_TREND;
     }
     /* the latest peak above the first by more than the first window varied */
@@ -149,6 +159,9 @@ sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
         if (t - w->t0 > 1e3 * w->window)
             w->t0 = t; /* a long gap: start the next window here */
     }
+    if (w->last == w->last)
+        w->step_max = fmax(w->step_max, fabs(m - w->last));
+    w->last = m;
     w->cur_max = fmax(w->cur_max, m);
     w->cur_min = fmin(w->cur_min, m);
     w->cur_sum += m;

@@ -145,7 +145,7 @@ static void stormer_verlet(sw_ode *ode, double t, double *y, double h, double *m
 /* Energy columns a student might write for a one-particle scene. */
 typedef enum energy_slip {
     ENERGY_RIGHT, ENERGY_SPRING_FLIPPED, ENERGY_CENTRAL_FLIPPED, ENERGY_NO_GRAVITY,
-    ENERGY_NO_HALF
+    ENERGY_NO_HALF, ENERGY_SCALED
 } energy_slip;
 
 static double param(const sw_scene *sc, const double *p, const char *name)
@@ -176,6 +176,7 @@ static double energy_with(const sw_scene *sc, const double *p, const double *y, 
     case ENERGY_CENTRAL_FLIPPED: central = -central; break;
     case ENERGY_NO_GRAVITY: grav = 0; break;
     case ENERGY_NO_HALF: kin *= 2; break;
+    case ENERGY_SCALED: return 1.001 * (kin + grav + spring + central);
     }
     return kin + grav + spring + central;
 }
@@ -309,7 +310,7 @@ START_TEST(verlet_variants_are_named)
     r = with(drag_ball, recomputing_verlet);
     expect("ball-recompute.trace", &r, "verlet-recomputed", "reuse a1 instead of evaluating again");
     r = with(orbit_e7, position_verlet);
-    expect("orbit-dkd.trace", &r, "position-verlet", "position Verlet (drift-kick-drift");
+    expect("orbit-dkd.trace", &r, "position-verlet", "drift-kick-drift position Verlet");
     r = with(damped_chain, position_verlet);
     expect("chain-dkd.trace", &r, "position-verlet", "the assignment's verlet is velocity Verlet");
     r = with(orbit_e7, stormer_verlet);
@@ -412,15 +413,20 @@ START_TEST(wrong_energy_is_named)
     make_tmpdir();
     run r = { "spring", { "g=9.81", "k=25", "c=0.2", NULL }, 0.01, 70, right_verlet, ENERGY_SPRING_FLIPPED, -1, 0, 0 };
     expect("spring-sign.trace", &r, "energy-formula",
-           "your energy column equals kinetic plus gravity potential minus spring potential");
+           "your energy column is kinetic energy plus gravity potential minus spring potential");
     r.energy_slip = ENERGY_NO_HALF;
-    expect("spring-half.trace", &r, "energy-formula", "the kinetic lacks its ½");
+    expect("spring-half.trace", &r, "energy-formula", "is twice the kinetic energy plus gravity potential plus spring potential");
     run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0 };
     expect("orbit-sign.trace", &o, "energy-formula",
-           "equals kinetic minus central potential, recomputed from your own state");
+           "is kinetic energy minus central potential (recomputed from your own x and v");
     run b = with(drag_ball, right_verlet);
     b.energy_slip = ENERGY_NO_GRAVITY;
     expect("ball-nograv.trace", &b, "energy-formula", "the gravity potential is missing");
+    /* An energy no slip explains: only the fact is named. */
+    o.energy_slip = ENERGY_SCALED;
+    expect("orbit-scaled.trace", &o, "energy", "your energy column does not (step 0: yours "
+           "-1.000999999999999, the assignment's -0.9999999999999991), and no flipped sign, "
+           "missing term or missing ½ explains it");
     /* The right formula, written independently: nothing to name. */
     r.energy_slip = o.energy_slip = b.energy_slip = ENERGY_RIGHT;
     expect("spring-right.trace", &r, NULL, NULL);

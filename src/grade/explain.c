@@ -255,7 +255,7 @@ static int explain_methods(const xpl_rows *tr, xpl_rows *scratch, const sw_run_d
             continue;
         xpl_agree(how, sizeof how, worst);
         snprintf(out->kind, sizeof out->kind, "%s", mk->kind);
-        snprintf(out->message, sizeof out->message, "your numbers match %s %s%s%s%s", mk->hint, how,
+        snprintf(out->message, sizeof out->message, "your numbers match %s (%s)%s%s%s", mk->hint, how,
                  mk->time_only ? " (this scene changes with time, so stage times matter)" : "",
                  mk->fix ? ": " : "", mk->fix ? mk->fix : "");
         out->agreement = worst;
@@ -367,15 +367,14 @@ static int explain_all(const xpl_rows *tr, int max, const sw_run_desc *want,
             goto done;
         if (!found && ref.n >= tr->n)
             found = explain_format(tr, &ref, want, tol, out);
-        int ecol = want->scene->energy ? ncols - 1 : -1;
-        if (!found && ref.n >= tr->n && !xpl_rows_match(tr, &ref, 1, tol, ecol, 1.0, &worst)) {
+        sw_explanation start;
+        memset(&start, 0, sizeof start);
+        start.agreement = NAN;
+        if (!found && ref.n >= tr->n && xpl_initial_state(tr, &ref, want, tol, &start)) {
             /* The initial state differs: no method or step explains that,
-             * a parameter may (it is the better answer: "pluck = 1"). */
-            sw_explanation start;
-            memset(&start, 0, sizeof start);
-            int got = xpl_initial_state(tr, &ref, want, tol, &start);
+             * a parameter may (it is the better answer: "pluck = 0.6"). */
             found = explain_params(tr, &scratch, want, said, tol, out);
-            if (!found && got) {
+            if (!found) {
                 *out = start;
                 found = 1;
             }

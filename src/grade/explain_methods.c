@@ -187,10 +187,11 @@ static const xpl_mistake mistakes[] = {
       "verlet takes a1 = a(x1, v + h*a0) and keeps it as the next step's a0 (it matters "
       "because this scene's forces depend on v; docs/scenes.md, 'Stepping')" },
     { "verlet", 0, "position-verlet", VERLET("position verlet", 1, verlet_dkd),
-      "position Verlet (drift-kick-drift: x moved h/2 with v, v moved h with a at that "
-      "midpoint, then x the other h/2 with the new v)", velocity_verlet },
+      "drift-kick-drift position Verlet: x moved h/2 with v, v moved h with a at that "
+      "midpoint, then x the other h/2 with the new v", velocity_verlet },
     { "verlet", 0, "position-verlet", VERLET("stormer verlet", 1, verlet_stormer),
-      "Störmer's position Verlet (x_next = 2x - x_prev + h^2*a, v written as (x_next - x)/h)",
+      "Störmer's position Verlet, x_next = 2x - x_prev + h^2*a with v written as "
+      "(x_next - x)/h",
       velocity_verlet },
 };
 

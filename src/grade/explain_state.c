@@ -100,7 +100,7 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
 /* The terms of docs/scenes.md's energy, in the order messages name them. */
 enum { KINETIC, GRAVITY, SPRING, CENTRAL, NTERMS };
 
-static const char *const term_name[NTERMS] = { "kinetic", "gravity potential", "spring potential",
+static const char *const term_name[NTERMS] = { "kinetic energy", "gravity potential", "spring potential",
                                                "central potential" };
 static const char *const term_formula[NTERMS] = { "½ m|v|²", "m g y", "½ k (|d| - rest)²",
                                                   "- μ m/|x|" };
@@ -256,8 +256,9 @@ int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
             say_slips(coef, present, fix, sizeof fix);
             snprintf(out->kind, sizeof out->kind, "energy-formula");
             snprintf(out->message, sizeof out->message, "your positions and velocities match, but "
-                     "your energy column equals %s, recomputed from your own state %s: %s (%s; "
-                     "docs/scenes.md, 'The two kinds of system')", formula, how, fix, energy);
+                     "your energy column is %s (recomputed from your own x and v, it matches %s): "
+                     "%s; %s (docs/scenes.md, 'The two kinds of system')", formula, how, fix,
+                     energy);
             out->agreement = worst;
             found = 1;
         }
@@ -268,7 +269,7 @@ int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
         snprintf(out->kind, sizeof out->kind, "energy");
         snprintf(out->message, sizeof out->message, "your positions and velocities match, but "
                  "your energy column does not (step %.0f: yours %s, the assignment's %s), and no "
-                 "single slip (a sign, a missing term, a missing ½) explains it: %s "
+                 "flipped sign, missing term or missing ½ explains it: %s "
                  "(docs/scenes.md, 'The two kinds of system')", xpl_row(tr, first_bad)[0], yours,
                  theirs, energy);
         found = 1;

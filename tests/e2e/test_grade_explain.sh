@@ -104,7 +104,7 @@ why bead.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in the
 "$SW" record spring --set g=9.81 --set k=25 --steps 50 -o sp.trace 2>/dev/null
 awk -F, -v OFS=, '/^[0-9]/ { r = sqrt($3 * $3 + $4 * $4) - 1
     $7 = sprintf("%.17g", 0.5 * ($5 * $5 + $6 * $6) - 0.5 * 25 * r * r + 9.81 * $4) } { print }' sp.trace > sign.trace
-why sign.trace energy-formula 'energy column equals kinetic plus gravity potential minus spring potential.*the spring potential has the wrong sign'
+why sign.trace energy-formula 'energy column is kinetic energy plus gravity potential minus spring potential.*the spring potential has the wrong sign'
 
 # Plugins get the same "why" as traces: on a damped chain set as verlet.
 cat > damped.txt <<'A'

@@ -191,6 +191,7 @@ typedef struct run {
     int bump_particle;       /* >= 0: add bump to this particle's y at the start */
     double bump;
     long bump_step;          /* > 0: multiply column 2 of this row by 1 + 1e-7 */
+    int swap_a, swap_b;      /* exchange these particles' y at the start */
 } run;
 
 /* Write the run's trace (declared as verlet unless method is given) into
@@ -212,6 +213,9 @@ static void write_trace(const char *name, const run *r, const char *method, char
     memcpy(y, sys.y, (size_t)dim * sizeof *y);
     if (r->bump_particle >= 0)
         y[2 * r->bump_particle + 1] += r->bump;
+    double swap = y[2 * r->swap_a + 1];
+    y[2 * r->swap_a + 1] = y[2 * r->swap_b + 1];
+    y[2 * r->swap_b + 1] = swap;
     snprintf(path, len, "%s/%s", tmpdir, name);
     FILE *f = fopen(path, "w");
     ck_assert_ptr_nonnull(f);
@@ -288,9 +292,9 @@ static void expect(const char *name, const run *r, const char *kind, const char 
 
 /* ---- the Verlet variants ----------------------------------------------------- */
 
-static const run damped_chain = { "chain", { "n=6", "c=2", "g=9.81", NULL }, 0.01, 80, NULL, -1, -1, 0, 0 };
-static const run drag_ball = { "projectile", { "drag=0.4", "vy=14", NULL }, 0.02, 60, NULL, -1, -1, 0, 0 };
-static const run orbit_e7 = { "orbit", { "e=0.7", NULL }, 0.005, 120, NULL, -1, -1, 0, 0 };
+static const run damped_chain = { "chain", { "n=6", "c=2", "g=9.81", NULL }, 0.01, 80, NULL, -1, -1, 0, 0, 0, 0 };
+static const run drag_ball = { "projectile", { "drag=0.4", "vy=14", NULL }, 0.02, 60, NULL, -1, -1, 0, 0, 0, 0 };
+static const run orbit_e7 = { "orbit", { "e=0.7", NULL }, 0.005, 120, NULL, -1, -1, 0, 0, 0, 0 };
 
 static run with(run r, update_fn *update)
 {
@@ -350,7 +354,7 @@ START_TEST(wrong_initial_state_is_named)
 {
     make_tmpdir();
     /* Bead 2 of 7 lifted by 0.25: the steps after are right. */
-    run r = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, 2, 0.25, 0 };
+    run r = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, 2, 0.25, 0, 0, 0 };
     expect("bead.trace", &r, "initial-state",
            "particle 2 starts with y2 = 0.25 in yours, 0 in the assignment's; docs/scenes.md, "
            "'chain', gives every particle's initial state; from your initial state on, your steps "
@@ -360,12 +364,18 @@ START_TEST(wrong_initial_state_is_named)
     r.bump_particle = 3;
     r.bump = -0.3;
     expect("pluck.trace", &r, "initial-state", "particle 3 starts with y3 = 0 in yours, 0.3 in the assignment's");
+    /* Bead 2 plucked instead of bead 3: named as an exchange. */
+    run off = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, -1, 0, 0, 2, 3 };
+    expect("offbyone.trace", &off, "initial-state",
+           "particle 2 starts with y2 = 0.3 in yours, 0 in the assignment's, and "
+           "particle 3 with y3 = 0 in yours: particle 2's and particle 3's values are exchanged "
+           "(an index off by one?)");
     /* At 0.6 it is pluck doubled: the parameter is the better answer. */
     r.bump = 0.3;
     expect("pluck2.trace", &r, "parameter", "pluck = 0.6 (the assignment has pluck = 0.3)");
     /* The planet 1e-3 further out, under the wrong method too: the state is
      * named, without the claim about the steps. */
-    run o = { "orbit", { "e=0.2", NULL }, 0.01, 40, position_verlet, -1, 0, 1e-3, 0 };
+    run o = { "orbit", { "e=0.2", NULL }, 0.01, 40, position_verlet, -1, 0, 1e-3, 0, 0, 0 };
     char path[128], err[SW_ERRLEN];
     sw_run_desc want;
     sw_explanation ex;
@@ -411,12 +421,12 @@ END_TEST
 START_TEST(wrong_energy_is_named)
 {
     make_tmpdir();
-    run r = { "spring", { "g=9.81", "k=25", "c=0.2", NULL }, 0.01, 70, right_verlet, ENERGY_SPRING_FLIPPED, -1, 0, 0 };
+    run r = { "spring", { "g=9.81", "k=25", "c=0.2", NULL }, 0.01, 70, right_verlet, ENERGY_SPRING_FLIPPED, -1, 0, 0, 0, 0 };
     expect("spring-sign.trace", &r, "energy-formula",
            "your energy column is kinetic energy plus gravity potential minus spring potential");
     r.energy_slip = ENERGY_NO_HALF;
     expect("spring-half.trace", &r, "energy-formula", "is twice the kinetic energy plus gravity potential plus spring potential");
-    run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0 };
+    run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0, 0, 0 };
     expect("orbit-sign.trace", &o, "energy-formula",
            "is kinetic energy minus central potential (recomputed from your own x and v");
     run b = with(drag_ball, right_verlet);

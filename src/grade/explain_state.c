@@ -45,14 +45,17 @@ static void state_of_row(const sw_system *sys, const double *row, double *y)
 int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
                       const sw_check_tol *tol, sw_explanation *out)
 {
-    int ncols = tr->ncols, ecol = d->scene->energy ? ncols - 1 : -1, first = -1, count = 0;
+    int ncols = tr->ncols, ecol = d->scene->energy ? ncols - 1 : -1, first = -1, second = -1,
+        count = 0;
     const double *got = xpl_row(tr, 0), *want = xpl_row(ref, 0);
+    double ae, re, ratio;
     for (int c = 2; c < ncols; c++) {
-        double ae, re, ratio;
         if (c == ecol || ignored(tol, c) ||
             sw_check_value(want[c], got[c], col_rtol(tol, c), col_atol(tol, c), &ae, &re, &ratio))
             continue;
         count++;
+        if (first >= 0 && second < 0)
+            second = c;
         if (first < 0)
             first = c;
     }
@@ -62,12 +65,25 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
     char err[SW_ERRLEN];
     if (sw_system_build(&sys, d->scene, d->p, err, sizeof err) != SW_OK)
         return 0;
-    char name[32], yours[40], theirs[40], others[48] = "", after[120] = "";
+    char name[32], yours[40], theirs[40], others[200] = "", after[120] = "";
     sw_trace_colname(&sys, first, name, sizeof name);
     sw_fmt_shortest(yours, sizeof yours, got[first]);
     sw_fmt_shortest(theirs, sizeof theirs, want[first]);
-    int particle = (first - 2) / sw_trace_per_particle(&sys);
-    if (count > 1)
+    int per = sw_trace_per_particle(&sys), particle = (first - 2) / per;
+    const char *noun = sys.kind == SW_SYS_FLOW ? "point" : "particle";
+    /* Two particles' same coordinate exchanged (the plucked bead one off):
+     * say so, it is the likelier story than two wrong values. */
+    if (count == 2 && (second - first) % per == 0 &&
+        sw_check_value(want[second], got[first], col_rtol(tol, first), col_atol(tol, first), &ae, &re, &ratio) &&
+        sw_check_value(want[first], got[second], col_rtol(tol, second), col_atol(tol, second), &ae, &re, &ratio)) {
+        char name2[32], yours2[40];
+        int other = (second - 2) / per;
+        sw_trace_colname(&sys, second, name2, sizeof name2);
+        sw_fmt_shortest(yours2, sizeof yours2, got[second]);
+        snprintf(others, sizeof others, ", and %s %d with %s = %s in yours: %s %d's and %s %d's "
+                 "values are exchanged%s", noun, other, name2, yours2, noun, particle, noun, other,
+                 other - particle == 1 ? " (an index off by one?)" : "");
+    } else if (count > 1)
         snprintf(others, sizeof others, " (and %d other value%s)", count - 1, count > 2 ? "s" : "");
     /* Were the steps right from the student's own start? */
     double *y0 = malloc((size_t)sys.ode->dim * sizeof *y0);
@@ -89,8 +105,7 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
     snprintf(out->message, sizeof out->message, "your initial state is not the assignment's: "
              "%s %d starts with %s = %s in yours, %s in the assignment's%s; docs/scenes.md, '%s', "
              "gives every %s's initial state%s",
-             sys.kind == SW_SYS_FLOW ? "point" : "particle", particle, name, yours, theirs, others,
-             d->scene->name, sys.kind == SW_SYS_FLOW ? "point" : "particle", after);
+             noun, particle, name, yours, theirs, others, d->scene->name, noun, after);
     sw_system_free(&sys);
     return 1;
 }

@@ -101,6 +101,8 @@ grep -Eq '"(got|tolerance_ratio|abs_error|rel_error)": null' out && fail "null f
 "$SW" record chain --set n=6 --set c=1 --steps 40 -o chain.trace 2>/dev/null
 awk -F, -v OFS=, '/^0,/ { $12 = "0.5" } { print }' chain.trace > bead.trace
 why bead.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in the assignment's; docs/scenes.md, 'chain'"
+awk -F, -v OFS=, '/^0,/ { $12 = "0.5"; $16 = "0" } { print }' chain.trace > pluck.trace
+why pluck.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in the assignment's, and particle 3 with y3 = 0 in yours: particle 2's and particle 3's values are exchanged \(an index off by one\?\)"
 "$SW" record spring --set g=9.81 --set k=25 --steps 50 -o sp.trace 2>/dev/null
 awk -F, -v OFS=, '/^[0-9]/ { r = sqrt($3 * $3 + $4 * $4) - 1
     $7 = sprintf("%.17g", 0.5 * ($5 * $5 + $6 * $6) - 0.5 * 25 * r * r + 9.81 * $4) } { print }' sp.trace > sign.trace

@@ -145,7 +145,7 @@ static void stormer_verlet(sw_ode *ode, double t, double *y, double h, double *m
 /* Energy columns a student might write for a one-particle scene. */
 typedef enum energy_slip {
     ENERGY_RIGHT, ENERGY_SPRING_FLIPPED, ENERGY_CENTRAL_FLIPPED, ENERGY_NO_GRAVITY,
-    ENERGY_NO_HALF, ENERGY_SCALED
+    ENERGY_NO_HALF, ENERGY_NO_KINETIC, ENERGY_SCALED
 } energy_slip;
 
 static double param(const sw_scene *sc, const double *p, const char *name)
@@ -176,6 +176,7 @@ static double energy_with(const sw_scene *sc, const double *p, const double *y, 
     case ENERGY_CENTRAL_FLIPPED: central = -central; break;
     case ENERGY_NO_GRAVITY: grav = 0; break;
     case ENERGY_NO_HALF: kin *= 2; break;
+    case ENERGY_NO_KINETIC: kin = 0; break;
     case ENERGY_SCALED: return 1.001 * (kin + grav + spring + central);
     }
     return kin + grav + spring + central;
@@ -426,6 +427,10 @@ START_TEST(wrong_energy_is_named)
            "your energy column is kinetic energy plus gravity potential minus spring potential");
     r.energy_slip = ENERGY_NO_HALF;
     expect("spring-half.trace", &r, "energy-formula", "is twice the kinetic energy plus gravity potential plus spring potential");
+    r.energy_slip = ENERGY_NO_KINETIC;
+    expect("spring-nokin.trace", &r, "energy-formula",
+           "your energy column is gravity potential plus spring potential (recomputed from your "
+           "own x and v");
     run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0, 0, 0 };
     expect("orbit-sign.trace", &o, "energy-formula",
            "is kinetic energy minus central potential (recomputed from your own x and v");

@@ -1,9 +1,12 @@
-/* The explaining checker. The trace's first rows are held in memory and
- * compared, with the grading tolerances, against runs that make one usual
- * mistake each; the first run that matches every value names the mistake.
- * Data mistakes (rows, time column, digits, precision) are tried first,
- * since they need no new run. Invariant: a variant is reported only when
- * it matches every examined value, never because it is merely closer. */
+/* The explaining checker. The first rows of a trace (or of a plugin's run)
+ * are held in memory and compared, with the grading tolerances, against
+ * runs that make one usual mistake each; the first run that matches every
+ * value names the mistake. Data mistakes (rows, time column, digits,
+ * precision) are tried first, since they need no new run, then the initial
+ * state and the energy column (explain_state.c), then mistaken methods
+ * (explain_methods.c), steps and parameters. Invariant: a variant is
+ * reported only when it matches every examined value, never because it is
+ * merely closer; rows the assignment's own run matches are never explained. */
 #include "grade/explain.h"
 
 #include <math.h>
@@ -13,132 +16,45 @@
 
 #include "engine/stepper.h"
 #include "grade/assignment.h"
+#include "grade/explain_int.h"
+#include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
 /* Most work a variant run may take: state components x evaluations. */
 #define VARIANT_WORK 2e8
 
-/* ---- mistaken methods ---------------------------------------------------- */
-
-/* Midpoint with its second stage at t instead of t + h/2. */
-static int mid_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    int n = ode->dim;
-    double *k = SW_WORK(s, 0), *m = SW_WORK(s, 1);
-    sw_ode_eval(ode, *t, y, k);
-    sw_axpy(n, m, y, 0.5 * h, k);
-    sw_ode_eval(ode, *t, m, k);
-    sw_axpy(n, y, y, h, k);
-    *t += h;
-    return 0;
-}
-
-/* Heun with its second stage at t instead of t + h. */
-static int heun_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    int n = ode->dim;
-    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *m = SW_WORK(s, 2);
-    sw_ode_eval(ode, *t, y, k1);
-    sw_axpy(n, m, y, h, k1);
-    sw_ode_eval(ode, *t, m, k2);
-    for (int i = 0; i < n; i++)
-        y[i] += 0.5 * h * (k1[i] + k2[i]);
-    *t += h;
-    return 0;
-}
-
-/* RK4 with stage times c2, c3, c4 and k3 from a step of c3k·h along k2. */
-static int rk4_variant(sw_stepper *s, sw_ode *ode, double *t, double *y, double h, double c2,
-                       double c3, double c4, double k3_step)
-{
-    int n = ode->dim;
-    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3),
-           *m = SW_WORK(s, 4);
-    sw_ode_eval(ode, *t, y, k1);
-    sw_axpy(n, m, y, 0.5 * h, k1);
-    sw_ode_eval(ode, *t + c2 * h, m, k2);
-    sw_axpy(n, m, y, k3_step * h, k2);
-    sw_ode_eval(ode, *t + c3 * h, m, k3);
-    sw_axpy(n, m, y, h, k3);
-    sw_ode_eval(ode, *t + c4 * h, m, k4);
-    for (int i = 0; i < n; i++)
-        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    *t += h;
-    return 0;
-}
-
-static int rk4_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    return rk4_variant(s, ode, t, y, h, 0.0, 0.0, 0.0, 0.5);
-}
-
-static int rk4_k3_full(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
-{
-    return rk4_variant(s, ode, t, y, h, 0.5, 0.5, 1.0, 1.0);
-}
-
-typedef struct mistake {
-    const char *base;        /* the method it is a mistaken version of */
-    int time_only;           /* shows only on a time-dependent scene */
-    const char *kind;
-    sw_integrator method;
-    const char *hint;
-} mistake;
-
-static const mistake mistakes[] = {
-    { "midpoint", 1, "stage-time", { "midpoint (stage at t)", "", 2, 2, SW_EXPLICIT, 0, 2, mid_at_t, "" },
-      "midpoint with its second stage evaluated at t instead of t + h/2" },
-    { "heun", 1, "stage-time", { "heun (stage at t)", "", 2, 2, SW_EXPLICIT, 0, 3, heun_at_t, "" },
-      "Heun with its second stage evaluated at t instead of t + h" },
-    { "rk4", 1, "stage-time", { "rk4 (stages at t)", "", 4, 4, SW_EXPLICIT, 0, 5, rk4_at_t, "" },
-      "rk4 with every stage evaluated at the step's start t: k2 and k3 belong at t + h/2, k4 at t + h" },
-    { "rk4", 0, "k3-full-step", { "rk4 (k3 from a full step)", "", 4, 4, SW_EXPLICIT, 0, 5, rk4_k3_full, "" },
-      "rk4 with k3 taken at y + h*k2 instead of y + h/2*k2" },
-};
-
 /* ---- rows in memory ----------------------------------------------------- */
 
-typedef struct rowset {
-    double *v;           /* n rows of ncols */
-    long *line;
-    int n, ncols;
-} rowset;
-
-static double *row_at(const rowset *r, int i) { return r->v + (size_t)i * (size_t)r->ncols; }
-
-/* Up to max rows of a run into out (already sized); returns the rows made,
- * or -1 when the run cannot start or has other columns. */
-static int run_rows(const sw_run_desc *d, const sw_integrator *m, const double *p, double dt,
-                    int max, rowset *out)
+int xpl_run_rows(const sw_run_desc *d, const sw_integrator *m, const double *p, double dt,
+                 const double *y0, int max, xpl_rows *out)
 {
     sw_sim s;
     char err[SW_ERRLEN];
     if (sw_sim_init(&s, d->scene, p, m, dt, err, sizeof err) != SW_OK)
         return -1;
     sw_sim_set_tolerances(&s, d->rtol, d->atol);
+    if (y0)
+        sw_sim_set_state(&s, y0);
     int n = -1;
     if (sw_trace_ncols(&s.sys) == out->ncols) {
         sw_row_source src = { .sim = &s, .spec = d->spec };
         long line;
         for (n = 0; n < max; n++)
-            if (sw_row_next(&src, row_at(out, n), &line, err, sizeof err) != 1)
+            if (sw_row_next(&src, xpl_row(out, n), &line, err, sizeof err) != 1)
                 break;
     }
     sw_sim_free(&s);
     return n;
 }
 
-/* Whether every value of the first n rows of a and b passes tol (column
- * skip left out, -1 none; each tolerance multiplied by widen); *worst is
- * the largest relative difference over the values compared. */
-static int rows_match(const rowset *a, const rowset *b, int n, const sw_check_tol *tol, int skip,
-                      double widen, double *worst)
+int xpl_rows_match(const xpl_rows *a, const xpl_rows *b, int n, const sw_check_tol *tol, int skip,
+                   double widen, double *worst)
 {
     *worst = 0;
     if (n <= 0)
         return 0;
     for (int i = 0; i < n; i++) {
-        const double *x = row_at(a, i), *y = row_at(b, i);
+        const double *x = xpl_row(a, i), *y = xpl_row(b, i);
         for (int c = 0; c < a->ncols; c++) {
             if (c == skip || (c > 0 && tol->ignore && tol->ignore[c]))
                 continue;
@@ -168,7 +84,7 @@ static int digits_of(double v)
     return 17;
 }
 
-static void agree(char *buf, size_t len, double worst)
+void xpl_agree(char *buf, size_t len, double worst)
 {
     if (worst == 0)
         snprintf(buf, len, "exactly");
@@ -176,30 +92,30 @@ static void agree(char *buf, size_t len, double worst)
         snprintf(buf, len, "to %.1g", worst);
 }
 
-static int explain_rows(const rowset *tr, const rowset *ref, const sw_check_tol *tol,
+static int explain_rows(const xpl_rows *tr, const xpl_rows *ref, const sw_check_tol *tol,
                         sw_explanation *out)
 {
     int n = tr->n < ref->n ? tr->n : ref->n, i = 0;
-    while (i < n && row_at(tr, i)[0] == row_at(ref, i)[0])
+    while (i < n && xpl_row(tr, i)[0] == xpl_row(ref, i)[0])
         i++;
     if (i == n)
         return 0;
-    long got = (long)row_at(tr, i)[0], want = (long)row_at(ref, i)[0];
+    long got = (long)xpl_row(tr, i)[0], want = (long)xpl_row(ref, i)[0];
     double worst;
-    rowset shifted = *tr;
-    if (i + 1 < ref->n && got == (long)row_at(ref, i + 1)[0]) {
+    xpl_rows shifted = *tr;
+    if (i + 1 < ref->n && got == (long)xpl_row(ref, i + 1)[0]) {
         /* A row is missing: the trace's row i is the reference's row i + 1. */
-        rowset later = { row_at(ref, i + 1), ref->line, ref->n - i - 1, ref->ncols };
-        shifted.v = row_at(tr, i);
+        xpl_rows later = { xpl_row(ref, i + 1), ref->line, ref->n - i - 1, ref->ncols };
+        shifted.v = xpl_row(tr, i);
         int m = (tr->n - i < later.n ? tr->n - i : later.n);
-        if (rows_match(&shifted, &later, m, tol, -1, 1.0, &worst) && i > 0 &&
-            rows_match(tr, ref, i, tol, -1, 1.0, &worst)) {
+        if (xpl_rows_match(&shifted, &later, m, tol, -1, 1.0, &worst) && i > 0 &&
+            xpl_rows_match(tr, ref, i, tol, -1, 1.0, &worst)) {
             snprintf(out->kind, sizeof out->kind, "missing-row");
             snprintf(out->message, sizeof out->message, "your trace has no row for step %ld (line %ld "
                      "holds step %ld): every row after it is one row early", want, tr->line[i], got);
             return 1;
         }
-        if (i == 0 && rows_match(&shifted, &later, m, tol, -1, 1.0, &worst)) {
+        if (i == 0 && xpl_rows_match(&shifted, &later, m, tol, -1, 1.0, &worst)) {
             snprintf(out->kind, sizeof out->kind, "missing-row");
             snprintf(out->message, sizeof out->message, "your trace has no row for step 0 (the "
                      "initial state): it starts at step %ld, so every row is one step off; write "
@@ -207,7 +123,7 @@ static int explain_rows(const rowset *tr, const rowset *ref, const sw_check_tol 
             return 1;
         }
     }
-    if (i > 0 && got == (long)row_at(ref, i - 1)[0]) {
+    if (i > 0 && got == (long)xpl_row(ref, i - 1)[0]) {
         snprintf(out->kind, sizeof out->kind, "duplicate-row");
         snprintf(out->message, sizeof out->message, "step %ld appears twice (lines %ld and %ld): "
                  "write each step's row once", got, tr->line[i - 1], tr->line[i]);
@@ -216,18 +132,18 @@ static int explain_rows(const rowset *tr, const rowset *ref, const sw_check_tol 
     return 0;
 }
 
-static int explain_format(const rowset *tr, const rowset *ref, const sw_run_desc *want,
+static int explain_format(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *want,
                           const sw_check_tol *tol, sw_explanation *out)
 {
     int n = tr->n < ref->n ? tr->n : ref->n;
     double worst;
     char how[40];
     /* The t column one step off, every other column right. */
-    if (n > 1 && rows_match(tr, ref, n, tol, 1, 1.0, &worst)) {
-        double d = row_at(tr, 1)[1] - row_at(ref, 1)[1];
+    if (n > 1 && xpl_rows_match(tr, ref, n, tol, 1, 1.0, &worst)) {
+        double d = xpl_row(tr, 1)[1] - xpl_row(ref, 1)[1];
         int same = fabs(fabs(d) - want->dt) <= 1e-6 * want->dt;
         for (int i = 1; same && i < n; i++)
-            same = fabs(row_at(tr, i)[1] - row_at(ref, i)[1] - d) <= 1e-6 * want->dt;
+            same = fabs(xpl_row(tr, i)[1] - xpl_row(ref, i)[1] - d) <= 1e-6 * want->dt;
         if (same) {
             snprintf(out->kind, sizeof out->kind, "time-shift");
             snprintf(out->message, sizeof out->message, "your t column is one step %s (the row "
@@ -241,7 +157,7 @@ static int explain_format(const rowset *tr, const rowset *ref, const sw_run_desc
     int most = 0, values = 0, floats = 0;
     for (int i = 0; i < n; i++)
         for (int c = 2; c < tr->ncols; c++) {
-            double v = row_at(tr, i)[c];
+            double v = xpl_row(tr, i)[c];
             if (!isfinite(v) || v == 0 || v == floor(v))
                 continue;
             int d = digits_of(v);
@@ -255,8 +171,8 @@ static int explain_format(const rowset *tr, const rowset *ref, const sw_run_desc
         }
     if (values < 4)
         return 0;
-    if (most <= 12 && rows_match(tr, ref, n, tol, -1, 0.6 * pow(10.0, 10 - most), &worst)) {
-        agree(how, sizeof how, worst);
+    if (most <= 12 && xpl_rows_match(tr, ref, n, tol, -1, 0.6 * pow(10.0, 10 - most), &worst)) {
+        xpl_agree(how, sizeof how, worst);
         snprintf(out->kind, sizeof out->kind, "digits");
         snprintf(out->message, sizeof out->message, "your values have at most %d significant "
                  "digits%s and match %s %s: print with %%.17g so they round-trip", most,
@@ -265,8 +181,8 @@ static int explain_format(const rowset *tr, const rowset *ref, const sw_run_desc
         return 1;
     }
     int m = n < 50 ? n : 50;
-    if (floats >= values * 9 / 10 && most > 6 && rows_match(tr, ref, m, tol, -1, 1e5, &worst)) {
-        agree(how, sizeof how, worst);
+    if (floats >= values * 9 / 10 && most > 6 && xpl_rows_match(tr, ref, m, tol, -1, 1e5, &worst)) {
+        xpl_agree(how, sizeof how, worst);
         snprintf(out->kind, sizeof out->kind, "single-precision");
         snprintf(out->message, sizeof out->message, "your values are single-precision floats "
                  "(each one is exactly a float) and match %s only %s: compute and print in double "
@@ -310,28 +226,50 @@ static int time_dependent(const sw_run_desc *d)
     return differs;
 }
 
-static int try_variant(const rowset *tr, rowset *scratch, const sw_run_desc *d,
+static int try_variant(const xpl_rows *tr, xpl_rows *scratch, const sw_run_desc *d,
                        const sw_integrator *m, const double *p, double dt, const sw_check_tol *tol,
                        double *worst)
 {
-    int got = run_rows(d, m, p, dt, tr->n, scratch);
-    return got == tr->n && rows_match(tr, scratch, got, tol, -1, 1.0, worst);
+    int got = xpl_run_rows(d, m, p, dt, NULL, tr->n, scratch);
+    return got == tr->n && xpl_rows_match(tr, scratch, got, tol, -1, 1.0, worst);
 }
 
-static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
-                        const sw_trace_meta *said, const sw_check_tol *tol, sw_explanation *out)
+/* A mistaken version of the method, another method, dt doubled or halved.
+ * The mistaken versions come first: on a linear system (the projectile with
+ * drag) Verlet recomputing a(x, v) is a two-stage second-order Runge-Kutta
+ * method and so gives midpoint's numbers, and a student set Verlet more
+ * likely wrote a Verlet. said is the trace's header, NULL for a plugin's run. */
+static int explain_methods(const xpl_rows *tr, xpl_rows *scratch, const sw_run_desc *d,
+                           const sw_trace_meta *said, const sw_check_tol *tol, sw_explanation *out)
 {
     double worst;
     char how[40], hint[200], num[40], want_num[40];
+    int timed = -1;
+    for (int i = 0; i < xpl_mistake_count(); i++) {
+        const xpl_mistake *mk = xpl_mistake_at(i);
+        if (strcmp(mk->base, d->method->name) != 0)
+            continue;
+        if (mk->time_only && timed < 0)
+            timed = time_dependent(d);
+        if ((mk->time_only && !timed) || !try_variant(tr, scratch, d, &mk->method, d->p, d->dt, tol, &worst))
+            continue;
+        xpl_agree(how, sizeof how, worst);
+        snprintf(out->kind, sizeof out->kind, "%s", mk->kind);
+        snprintf(out->message, sizeof out->message, "your numbers match %s (%s)%s%s%s", mk->hint, how,
+                 mk->time_only ? " (this scene changes with time, so stage times matter)" : "",
+                 mk->fix ? ": " : "", mk->fix ? mk->fix : "");
+        out->agreement = worst;
+        return 1;
+    }
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);
         if (m == d->method || (m->flags & SW_PLUGIN) ||
             !try_variant(tr, scratch, d, m, d->p, d->dt, tol, &worst))
             continue;
-        agree(how, sizeof how, worst);
+        xpl_agree(how, sizeof how, worst);
         method_hint(d->method, m, hint, sizeof hint);
         snprintf(out->kind, sizeof out->kind, "method");
-        if (strcmp(said->integrator, d->method->name) == 0)
+        if (said && strcmp(said->integrator, d->method->name) == 0)
             snprintf(out->message, sizeof out->message, "your header says %s, but your numbers "
                      "match %s %s: %s", said->integrator, m->name, how, hint);
         else
@@ -352,31 +290,24 @@ static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
         out->agreement = worst;
         return 1;
     }
-    int timed = -1;
-    for (size_t i = 0; i < sizeof mistakes / sizeof mistakes[0]; i++) {
-        const mistake *mk = &mistakes[i];
-        if (strcmp(mk->base, d->method->name) != 0)
-            continue;
-        if (mk->time_only && timed < 0)
-            timed = time_dependent(d);
-        if ((mk->time_only && !timed) || !try_variant(tr, scratch, d, &mk->method, d->p, d->dt, tol, &worst))
-            continue;
-        agree(how, sizeof how, worst);
-        snprintf(out->kind, sizeof out->kind, "%s", mk->kind);
-        snprintf(out->message, sizeof out->message, "your numbers match %s %s%s", mk->hint, how,
-                 mk->time_only ? " (this scene changes with time, so stage times matter)" : "");
-        out->agreement = worst;
-        return 1;
-    }
-    const sw_scene *sc = d->scene;
-    /* Candidates: the value the trace's header gives, the default, and the
-     * assignment's value doubled, halved, times and over ten. */
+    return 0;
+}
+
+/* Another parameter value. Candidates: the value the trace's header gives,
+ * the default, and the assignment's value doubled, halved, times and over
+ * ten. */
+static int explain_params(const xpl_rows *tr, xpl_rows *scratch, const sw_run_desc *d,
+                          const sw_trace_meta *said, const sw_check_tol *tol, sw_explanation *out)
+{
     static const double factors[] = { -1, 0, 2, 0.5, 10, 0.1 };
+    const sw_scene *sc = d->scene;
+    double worst;
+    char num[40], want_num[40];
     for (int i = 0; i < sc->nparams; i++) {
         const sw_param *pd = &sc->params[i];
         for (size_t f = 0; f < sizeof factors / sizeof factors[0]; f++) {
             double p[SW_MAX_PARAMS];
-            double v = factors[f] < 0 ? (said->scene == sc ? said->p[i] : d->p[i])
+            double v = factors[f] < 0 ? (said && said->scene == sc ? said->p[i] : d->p[i])
                      : factors[f] == 0 ? pd->def : d->p[i] * factors[f];
             if (pd->integer || v == d->p[i] || !(v >= pd->min && v <= pd->max))
                 continue;
@@ -398,6 +329,70 @@ static int explain_runs(const rowset *tr, rowset *scratch, const sw_run_desc *d,
 
 /* ---- the whole --------------------------------------------------------------- */
 
+/* Rows examined for a run of want with ncols columns and dim state
+ * components: bounded in count, values and the work of one run. */
+static int rows_budget(const sw_run_desc *want, int ncols, int dim)
+{
+    double every = (double)want->spec.every, evals = want->method->evals > 0 ? want->method->evals : 1;
+    double by_work = VARIANT_WORK / (every * dim * evals * 6.0);
+    int max = SW_EXPLAIN_ROWS;
+    if (max > 2000000 / ncols)
+        max = 2000000 / ncols;
+    if (max > by_work)
+        max = (int)by_work;
+    return max < 2 ? 2 : max;
+}
+
+/* Every finder in turn on the rows tr (at most max of them). */
+static int explain_all(const xpl_rows *tr, int max, const sw_run_desc *want,
+                       const sw_trace_meta *said, const sw_check_tol *tol, sw_explanation *out,
+                       char *err, size_t errlen)
+{
+    int ncols = tr->ncols;
+    xpl_rows ref = { malloc((size_t)(max + 1) * (size_t)ncols * sizeof(double)), NULL, 0, ncols };
+    xpl_rows scratch = { malloc((size_t)(max + 1) * (size_t)ncols * sizeof(double)), NULL, 0, ncols };
+    if (!ref.v || !scratch.v) {
+        free(ref.v);
+        free(scratch.v);
+        snprintf(err, errlen, "out of memory for %d rows of %d values", max, ncols);
+        return SW_ENOMEM;
+    }
+    int found = 0;
+    double worst;
+    ref.n = xpl_run_rows(want, want->method, want->p, want->dt, NULL, max + 1, &ref);
+    if (ref.n > 0 && tr->n > 0) {
+        found = explain_rows(tr, &ref, tol, out);
+        /* Rows the assignment's own run matches leave nothing to explain. */
+        if (!found && ref.n >= tr->n && xpl_rows_match(tr, &ref, tr->n, tol, -1, 1.0, &worst))
+            goto done;
+        if (!found && ref.n >= tr->n)
+            found = explain_format(tr, &ref, want, tol, out);
+        sw_explanation start;
+        memset(&start, 0, sizeof start);
+        start.agreement = NAN;
+        if (!found && ref.n >= tr->n && xpl_initial_state(tr, &ref, want, tol, &start)) {
+            /* The initial state differs: no method or step explains that,
+             * a parameter may (it is the better answer: "pluck = 0.6"). */
+            found = explain_params(tr, &scratch, want, said, tol, out);
+            if (!found) {
+                *out = start;
+                found = 1;
+            }
+            goto done;
+        }
+        if (!found && ref.n >= tr->n)
+            found = xpl_energy(tr, &ref, want, tol, out);
+    }
+    /* Variant runs compare row for row, so only when no row is missing. */
+    if (!found && ref.n >= 0)
+        found = explain_methods(tr, &scratch, want, said, tol, out) ||
+                explain_params(tr, &scratch, want, said, tol, out);
+done:
+    free(ref.v);
+    free(scratch.v);
+    return found;
+}
+
 int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *tol,
                sw_explanation *out, char *err, size_t errlen)
 {
@@ -408,26 +403,15 @@ int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *to
     if (rc != SW_OK)
         return rc;
     rc = sw_trace_read_header(&r, err, errlen);
-    int ncols = r.ncols, dim = r.sys.ode->dim;
-    /* Rows examined: bounded in count, values and the work of one run. */
-    double every = (double)want->spec.every, evals = want->method->evals > 0 ? want->method->evals : 1;
-    double by_work = VARIANT_WORK / (every * dim * evals * 6.0);
-    int max = SW_EXPLAIN_ROWS;
-    if (max > 2000000 / ncols)
-        max = 2000000 / ncols;
-    if (max > by_work)
-        max = (int)by_work;
-    if (max < 2)
-        max = 2;
-    rowset tr = { malloc((size_t)max * (size_t)ncols * sizeof(double)),
-                  malloc((size_t)max * sizeof(long)), 0, ncols };
-    rowset ref = { malloc((size_t)(max + 1) * (size_t)ncols * sizeof(double)), NULL, 0, ncols };
-    if (!tr.v || !tr.line || !ref.v) {
+    int ncols = r.ncols, max = rows_budget(want, ncols, r.sys.ode->dim);
+    xpl_rows tr = { malloc((size_t)max * (size_t)ncols * sizeof(double)),
+                    malloc((size_t)max * sizeof(long)), 0, ncols };
+    if (!tr.v || !tr.line) {
         snprintf(err, errlen, "out of memory for %d rows of %d values", max, ncols);
         rc = SW_ENOMEM;
     }
     while (rc == SW_OK && tr.n < max) {
-        int got = sw_trace_read_row(&r, row_at(&tr, tr.n), err, errlen);
+        int got = sw_trace_read_row(&r, xpl_row(&tr, tr.n), err, errlen);
         if (got < 0)
             rc = got;
         if (got <= 0)
@@ -437,19 +421,42 @@ int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *to
     sw_trace_meta said = r.meta;
     sw_trace_read_close(&r);
     int found = 0;
-    if (rc == SW_OK && tr.n > 0) {
-        ref.n = run_rows(want, want->method, want->p, want->dt, max + 1, &ref);
-        if (ref.n > 0) {
-            found = explain_rows(&tr, &ref, tol, out);
-            if (!found && ref.n >= tr.n)
-                found = explain_format(&tr, &ref, want, tol, out);
-        }
-        /* Variant runs compare row for row, so only when no row is missing. */
-        if (!found && ref.n >= 0)
-            found = explain_runs(&tr, &ref, want, &said, tol, out);
-    }
+    if (rc == SW_OK && tr.n > 0)
+        found = explain_all(&tr, max, want, &said, tol, out, err, errlen);
     free(tr.v);
     free(tr.line);
-    free(ref.v);
+    return rc == SW_OK ? found : rc;
+}
+
+int sw_explain_run(const sw_integrator *got, const sw_run_desc *want, const sw_check_tol *tol,
+                   sw_explanation *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    out->agreement = NAN;
+    sw_sim s;
+    int rc = sw_sim_init(&s, want->scene, want->p, got, want->dt, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    sw_sim_set_tolerances(&s, want->rtol, want->atol);
+    int ncols = sw_trace_ncols(&s.sys), max = rows_budget(want, ncols, s.sys.ode->dim);
+    xpl_rows tr = { malloc((size_t)max * (size_t)ncols * sizeof(double)),
+                    calloc((size_t)max, sizeof(long)), 0, ncols };
+    if (!tr.v || !tr.line) {
+        snprintf(err, errlen, "out of memory for %d rows of %d values", max, ncols);
+        rc = SW_ENOMEM;
+    }
+    sw_row_source src = { .sim = &s, .spec = want->spec };
+    long line;
+    /* A run that fails part way gives the rows it made. */
+    while (rc == SW_OK && tr.n < max && !sw_plugin_failed(&s) &&
+           sw_row_next(&src, xpl_row(&tr, tr.n), &line, err, errlen) == 1)
+        tr.n++;
+    int failed = sw_plugin_failed(&s) != SW_PF_NONE;
+    sw_sim_free(&s);
+    int found = 0;
+    if (rc == SW_OK && tr.n > 0 && !failed)
+        found = explain_all(&tr, max, want, NULL, tol, out, err, errlen);
+    free(tr.v);
+    free(tr.line);
     return rc == SW_OK ? found : rc;
 }

@@ -1,9 +1,10 @@
-/* The explaining checker: when a trace fails, try the usual mistakes on the
- * first rows and name the one that matches (another built-in method, dt
- * doubled or halved, a stage at the wrong time, single precision, too few
- * printed digits, a missing or duplicated row, a shifted time column,
- * another parameter value). Works on a bounded prefix of the trace, so its
- * cost does not grow with the file. */
+/* The explaining checker: when a trace or a plugin's run fails, try the
+ * usual mistakes on the first rows and name the one that matches (another
+ * built-in method, dt doubled or halved, a stage at the wrong time, a
+ * Verlet variant, single precision, too few printed digits, a missing or
+ * duplicated row, a shifted time column, another parameter value, a wrong
+ * initial state, a wrong energy formula). Works on a bounded prefix of the
+ * rows, so its cost does not grow with the run. */
 #ifndef SW_GRADE_EXPLAIN_H
 #define SW_GRADE_EXPLAIN_H
 
@@ -24,8 +25,10 @@ typedef struct sw_run_desc {
 } sw_run_desc;
 
 typedef struct sw_explanation {
-    char kind[24];      /* "method", "dt", "stage-time", "k3-full-step", "single-precision",
-                           "digits", "missing-row", "duplicate-row", "time-shift", "parameter" */
+    char kind[24];      /* "method", "dt", "stage-time", "k3-full-step", "verlet-half-step",
+                           "verlet-recomputed", "position-verlet", "single-precision",
+                           "digits", "missing-row", "duplicate-row", "time-shift", "parameter",
+                           "initial-state", "energy-formula", "energy" */
     char message[480];  /* one sentence for the student */
     double agreement;   /* largest relative difference from the matching variant; NaN n/a */
 } sw_explanation;
@@ -39,5 +42,12 @@ typedef struct sw_explanation {
  * status when the trace cannot be read. */
 int sw_explain(const char *path, const sw_run_desc *want, const sw_check_tol *tol,
                sw_explanation *out, char *err, size_t errlen);
+
+/* The same for a run of method got (a plugin) with want's scene,
+ * parameters, dt and spec, started afresh: its first rows are examined
+ * (a run that fails part way is not explained). 1, 0 or a negative status
+ * when the run cannot start. */
+int sw_explain_run(const sw_integrator *got, const sw_run_desc *want, const sw_check_tol *tol,
+                   sw_explanation *out, char *err, size_t errlen);
 
 #endif

@@ -411,6 +411,19 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
             v->failing_step = v->got_end.step;
         if (req->measure && v->got_end.fault == SW_PF_NONE)
             measure(v, req->plugin);
+        /* The same "why" as a trace gets: the plugin's first rows, run
+         * afresh, against the usual mistakes. A crash or overrun is its
+         * own answer. */
+        if (!pass && req->explain && v->got_end.fault == SW_PF_NONE &&
+            v->ref_end.fault == SW_PF_NONE) {
+            sw_run_desc desc;
+            sw_explanation ex;
+            fill_desc(&desc, sc, p, ref, dt, &spec, rtol, atol);
+            if (sw_explain_run(req->plugin, &desc, &tol.tol, &ex, msg, sizeof msg) == 1) {
+                v->explanation = ex;
+                v->have_explanation = 1;
+            }
+        }
         char what[120];
         snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
         message(v, what);

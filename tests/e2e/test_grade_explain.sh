@@ -96,4 +96,71 @@ awk -f "$json" out > fields || fail "an infinite error breaks the JSON"
     || fail "infinity: got $(field first_failure.got), ratio $(field first_failure.tolerance_ratio)"
 grep -q 'null' out && grep -q '"first_failure": null' out && fail "null for a number"
 grep -Eq '"(got|tolerance_ratio|abs_error|rel_error)": null' out && fail "null for infinity: $(cat out)"
+
+# The scene, not the method: a wrong initial bead, an energy with the wrong sign.
+"$SW" record chain --set n=6 --set c=1 --steps 40 -o chain.trace 2>/dev/null
+awk -F, -v OFS=, '/^0,/ { $12 = "0.5" } { print }' chain.trace > bead.trace
+why bead.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in the assignment's; docs/scenes.md, 'chain'"
+awk -F, -v OFS=, '/^0,/ { $12 = "0.5"; $16 = "0" } { print }' chain.trace > pluck.trace
+why pluck.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in the assignment's, and particle 3 with y3 = 0 in yours: particle 2's and particle 3's values are exchanged \(an index off by one\?\)"
+"$SW" record spring --set g=9.81 --set k=25 --steps 50 -o sp.trace 2>/dev/null
+awk -F, -v OFS=, '/^[0-9]/ { r = sqrt($3 * $3 + $4 * $4) - 1
+    $7 = sprintf("%.17g", 0.5 * ($5 * $5 + $6 * $6) - 0.5 * 25 * r * r + 9.81 * $4) } { print }' sp.trace > sign.trace
+why sign.trace energy-formula 'energy column is kinetic energy plus gravity potential minus spring potential.*the spring potential has the wrong sign'
+
+# Plugins get the same "why" as traces: on a damped chain set as verlet.
+cat > damped.txt <<'A'
+# stepwise assignment 1
+# scene: chain
+# param n: 5
+# param c: 1.5
+# param g: 9.81
+# integrator: verlet
+# dt: 0.01
+# steps: 100
+A
+# vplugin FILE NAME A1_VELOCITY: Verlet recomputing a0 every step, a1 at the given velocity
+vplugin() {
+    cat > "$1" <<C
+#include <stepwise/integrator.h>
+static int step(sw_ode *ode, double t, double *y, double h, double *work)
+{
+    int n = ode->dim, half = n / 2;
+    double *a = work, *yt = work + n;
+    sw_ode_eval(ode, t, y, a);
+    for (int i = 0; i < half; i++) {
+        double vh = y[half + i] + 0.5 * h * a[half + i];
+        yt[half + i] = $3;
+        y[i] += h * vh;
+        yt[i] = y[i];
+        y[half + i] = vh;
+    }
+    sw_ode_eval(ode, t + h, yt, a);
+    for (int i = 0; i < half; i++)
+        y[half + i] += 0.5 * h * a[half + i];
+    return 0;
+}
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "$2", .label = "Verlet ($2)",
+    .order = 2, .evals = 2, .work_vectors = 2, .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
+C
+}
+vplugin textbook.c textbook vh
+vplugin recompute.c recompute 'y[half + i] + h * a[half + i]'
+pwhy() { # FILE KIND REGEX: the plugin fails on damped.txt, the why line and JSON kind
+    "$SW" check --plugin "$1" --assignment damped.txt > out 2>err; rc=$?
+    [ "$rc" -eq 1 ] || fail "$1: exit $rc, want 1: $(cat out err)"
+    grep -Eq "  why: .*$3" out || fail "$1: no 'why' saying '$3': $(cat out)"
+    "$SW" check --plugin "$1" --assignment damped.txt --json > out 2>err
+    awk -f "$json" out > fields || fail "$1: JSON does not parse"
+    [ "$(field explanation.kind)" = "$2" ] || fail "$1: explanation.kind $(field explanation.kind), want $2"
+}
+pwhy textbook.c verlet-half-step 'recomputes a0 = a\(x, v\) every step and takes a1 at the half-step velocity'
+pwhy recompute.c verlet-recomputed 'recomputes a0 = a\(x, v\) at the start of every step'
+pwhy "$root/examples/euler_plugin.c" method 'your numbers match euler exactly: did you implement euler'
+# Without velocity-dependent forces recomputing is verlet: a pass, no why.
+sed -e 's/chain/orbit/' -e '/param/d' damped.txt > orbit.txt
+"$SW" check --plugin recompute.c --assignment orbit.txt > out 2>&1 || fail "recompute.c fails the orbit: $(cat out)"
+grep -q 'why:' out && fail "a passing plugin gets a why: $(cat out)"
 echo "ok"

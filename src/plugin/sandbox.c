@@ -128,7 +128,8 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
     set_limit(RLIMIT_NOFILE, SW_CHILD_FILES);
 }
 
-/* Die with the parent; 0, or -1 when it is gone already. */
+/* Die with the parent; 0, or -1 when it is gone already. Cleared by a
+ * change of credentials: set again after one. */
 static int die_with(pid_t parent)
 {
     prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -275,6 +276,11 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         send_failure(sync, rc, step);
         _exit(127);
     }
+    /* A change of credentials (the user namespace's setresuid) clears the
+     * parent-death signal: set it again, or this process and the jail
+     * would outlive a caller killed from now on. */
+    if (die_with(parent) != 0)
+        _exit(127);
     /* Nothing of the caller's stays open in the jail (its files, a
      * temporary directory's keep-alive pipe): only the three channels. */
     int keep[3] = { sock, sync, status };

@@ -25,9 +25,7 @@ int sw_row_next(sw_row_source *src, double *row, long *line, char *err, size_t e
             int rc = sw_trace_step(s, &src->spec, err, errlen);
             if (rc != SW_OK)
                 return rc;
-        } while (!s->blown && !sw_trace_due(s, &src->spec));
-        if (s->blown)
-            return 0; /* the step that blew up did not run: no row */
+        } while (!sw_trace_due(s, &src->spec));
     }
     src->started = 1;
     sw_trace_row_values(s, row);

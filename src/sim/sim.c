@@ -189,14 +189,19 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
         h = t_stop - s->t;
     double *y = s->sys.y;
     int rc = sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
-    s->steps++;
     if (rc != SW_OK) {
+        /* The step did not run (a failed solve, a failed plugin): it is not
+         * counted, so no trace has a row for it; the blow-up names it, at
+         * the time it was stepping to. */
         blow_up(s, s->stepper->why                    ? s->stepper->why
                    : (s->method->flags & SW_PLUGIN)   ? "the plugin's step function returned an error"
                    : (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
                                                       : "the implicit solve failed");
+        s->blow_step = s->steps + 1;
+        s->blow_time = s->t + h;
         return 1;
     }
+    s->steps++;
     const sw_scene *sc = s->sys.scene;
     int touched = sc->post_step && sc->post_step(&s->sys, s->t, y);
     if (touched)

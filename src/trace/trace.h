@@ -42,8 +42,7 @@ int sw_trace_spec_check(const sw_trace_spec *spec, double dt, char *err, size_t 
 /* Whether the run is over: blown up, took its steps, or reached `until`. */
 int sw_trace_done(const sw_sim *s, const sw_trace_spec *spec);
 /* Whether the sim's current step is recorded: step 0, a multiple of every,
- * or the run's last step; never a step that blew up (it did not run: the
- * trace ends at the last step that did, then the '# diverged' line). */
+ * or the run's last step (including a blow-up). */
 int sw_trace_due(const sw_sim *s, const sw_trace_spec *spec);
 /* One step of the run (landing exactly on `until`); 0, or SW_EINVAL when the
  * run would exceed SW_TRACE_MAX_STEPS steps. A blow-up is not an error. */

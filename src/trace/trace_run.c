@@ -53,10 +53,6 @@ int sw_trace_done(const sw_sim *s, const sw_trace_spec *spec)
 
 int sw_trace_due(const sw_sim *s, const sw_trace_spec *spec)
 {
-    /* A step that blew up (or whose plugin failed) did not run: the trace
-     * ends at the last one that did, and the '# diverged' line says why. */
-    if (s->blown)
-        return 0;
     return s->steps == 0 || s->steps % spec->every == 0 || sw_trace_done(s, spec);
 }
 

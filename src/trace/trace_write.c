@@ -163,7 +163,7 @@ int sw_trace_observe(sw_trace_writer *w, const sw_sim *s, char *err, size_t errl
 int sw_trace_commit(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
 {
     int rc = SW_OK;
-    if (s->steps != w->last_step && !s->blown)
+    if (s->steps != w->last_step)
         rc = sw_trace_write_row(w, s, err, errlen);
     if (rc == SW_OK && s->blown) {
         char t[40];

@@ -68,6 +68,9 @@ for p in exits aborts segv loops over-one over-many over-y writes-dim; do
     grep -Eq "$words.* at step 4" err || fail "record $p: message lacks '$words ... at step 4': $(cat err)"
     ls "$p".trace.tmp.* >/dev/null 2>&1 && fail "record $p left a temporary file"
     grep -q '^# diverged: step 4,' "$p.trace" || fail "record $p: the trace does not end at step 4"
+    # step 4 did not run: no row claims it did (the rows end at step 3)
+    last=$(grep '^[0-9]' "$p.trace" | tail -1 | cut -d, -f1)
+    [ "$last" = 3 ] || fail "record $p: the last row is step $last, want 3 (step 4 failed)"
     # check --json: a failure with the step, valid JSON, never a pass
     timeout 20 "$SW" check --json --plugin "./$p.so" --reference euler --scene spring --steps 20 >out 2>err; rc=$?
     [ "$rc" -eq 1 ] || fail "check $p: exit $rc, want 1: $(cat out err)"

@@ -2,11 +2,13 @@
 # The hostile-submission suite (issue 21, "What it must show"). Submissions
 # come from someone who wants a better grade or a classmate's worse one.
 # tests/hostile/ holds one file per attack family (evil.h says how each
-# makes its success visible). Four classes, each with honest classmates
+# makes its success visible). Six classes, each with honest classmates
 # (correct traces from `stepwise record`, a correct .c, a correct .so) —
-# A the zoo, B and C one grader-killer each (kill-grader, stop-grader), D a
-# compiler that never ends (inc-fifo), E the CPU, memory, disk, process
-# and descriptor hogs — are graded at once, each with
+# A forged results and attacks on processes, B and C one grader-killer each
+# (kill-grader, stop-grader), D a compiler that never ends (inc-fifo), E
+# the CPU, memory, disk, process and descriptor hogs, F attacks on files
+# (reading, writing, the daemon, compile-time includes, crafted traces,
+# directory tricks) — are graded at once, each with
 #     stepwise grade --assignment A --cpu 2 --wall 40 --csv G --results R CLASS
 # (D with grade's default wall-clock limit) and STEPWISE_PLUGIN_TIMEOUT=10:
 # on a busy machine a watchdog must not stop an attack before it has run
@@ -56,14 +58,17 @@ now_ms() { echo $(($(date +%s%N) / 1000000)); }
 T0=$(now_ms)
 note() { echo "hostile: ${AS:+[as $AS] }$* ($((($(now_ms) - T0) / 1000)) s)"; }
 
-PLUGINS="ctl-block daemon forge-fds forge-pidfd forge-procfd forge-stdout info-evil label-escape network
-         probe-forge ptrace-parent read-others see-procs signal-probe vm-write write-others"
+PLUGINS="ctl-block forge-fds forge-pidfd forge-procfd forge-stdout info-evil label-escape network
+         probe-forge ptrace-parent see-procs signal-probe vm-write"
 HOGS="cpu-hog disk-fill fd-exhaust fork-bomb mem-hog"
+FILERS="daemon read-others write-others"
 INCS="inc-classmate inc-parent inc-passwd inc-secret inc-zero"
-FAMILIES="$PLUGINS $HOGS ctor-evil $INCS inc-fifo kill-grader stop-grader"
-# check --plugin, record and try take these as .so (grade builds the .c ones).
+FAMILIES="$PLUGINS $HOGS $FILERS ctor-evil $INCS inc-fifo kill-grader stop-grader"
+# check --plugin takes these as .so (grade builds the .c ones); record and
+# try the ones that reach stepwise's own process or output.
 CHECK_PLUGINS="ctl-block ctor-evil forge-fds forge-pidfd forge-procfd forge-stdout network probe-forge
-               ptrace-parent read-others vm-write"
+               ptrace-parent read-others"
+RECORD_PLUGINS="ctl-block forge-pidfd forge-procfd forge-stdout probe-forge"
 TRY_PLUGINS="ctl-block forge-procfd probe-forge read-others"
 HONEST="alice.trace bob.c carol.so yves.c zoe.trace"
 
@@ -108,6 +113,8 @@ controls() {
 # What forged text looks like (evil.h's evil_fake): a row for Mallory, a
 # PASS line ending in SWEVIL:FAMILY.
 FORGED='Mallory\|rk4 SWEVIL:'
+# A sanitizer build reports a crash this way (and exits 1, not by the signal).
+SANITIZER='AddressSanitizer\|LeakSanitizer\|UndefinedBehaviorSanitizer\|runtime error:'
 # The attacks whose SWEVIL:FAMILY text is in a file, on one line.
 evil_texts() { grep -ao 'SWEVIL:[a-z0-9-]*' "$1" 2>/dev/null | sort -u | tr '\n' ' '; }
 
@@ -200,7 +207,7 @@ family_of_marker() { # swevil-TOKEN-FAMILY-WHAT
 context_of_marker() { # swevil-TOKEN-...: the token's 7th character names its class
     t=${1#swevil-}
     t=${t%"${t#???????}"}
-    case $t in *k) echo "check, try and record" ;; *) echo "grading" ;; esac
+    case $t in *[klm]) echo "check, try and record" ;; *) echo "grading" ;; esac
 }
 report_markers() { # GLOB
     markers "$1" > "$BOOK/marks"
@@ -295,7 +302,7 @@ gb_hash() { # CLASS: the gradebook's state
     done | tr '\n' ' '
 }
 token_of() { # CLASS
-    case $1 in A) echo "$TA" ;; B) echo "$TB" ;; C) echo "$TC" ;; D) echo "$TD" ;; E) echo "$TE" ;; esac
+    case $1 in A) echo "$TA" ;; B) echo "$TB" ;; C) echo "$TC" ;; D) echo "$TD" ;; E) echo "$TE" ;; F) echo "$TF" ;; esac
 }
 limits_of() { # CLASS: grade's limits
     case $1 in D) echo "--cpu $CPU" ;; *) echo "--cpu $CPU --wall 40" ;; esac
@@ -333,6 +340,7 @@ judge() { # WHAT RC OUT ERR WRONG(1: must not exit 0)
     if [ "$5" = 1 ] && grep -q 'PASS' "$3"; then
         bad "$1: printed PASS: $(grep -m1 'PASS' "$3" | LC_ALL=C tr -d '\000-\037' | cut -c1-100)"
     fi
+    grep -aq "$SANITIZER" "$4" && bad "$1: stepwise failed under the sanitizer: $(grep -a -m1 "$SANITIZER" "$4" | cut -c1-120)"
     for s in "$3" "$4"; do
         w=stdout
         [ "$s" = "$4" ] && w=stderr
@@ -342,24 +350,42 @@ judge() { # WHAT RC OUT ERR WRONG(1: must not exit 0)
     done
 }
 
-# check --plugin, record and try on hostile plugins (in the background,
-# while the classes are graded).
-check_part() {
+# check --plugin, record and try on hostile plugins: worker W of N takes
+# every Nth (in the background, while the classes are graded).
+CHECK_WORKERS=3 # at most 3: check_token
+# Each worker has a token of its own (k, l, m in the class's place): an
+# attack on "every stepwise process of the run" must not reach another
+# worker's runs.
+check_token() { # W
+    case $1 in 0) echo "${RUN}k$U" ;; 1) echo "${RUN}l$U" ;; *) echo "${RUN}m$U" ;; esac
+}
+check_part() { # W N
+    TK=$(check_token "$1")
+    CK=$D/swcheck-$TK
+    k=0
     for p in $CHECK_LIST; do
+        k=$((k + 1))
+        [ $((k % $2)) -eq "$1" ] || continue
+        out=$BOOK/ck-out-$1
+        err=$BOOK/ck-err-$1
         src=$CK/$p.so
         build_so "$p" "$TK" "$src" || { bad "cannot build $src"; continue; }
         [ "$M" = user ] && chown swhostile "$src"
-        ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" check --plugin "$src" --assignment assignment.txt \
-              --no-measure ) >"$BOOK/ck-out" 2>"$BOOK/ck-err"
-        judge "check --plugin $p" $? "$BOOK/ck-out" "$BOOK/ck-err" 1
-        ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" record spring --plugin "$src" --set g=9.81 \
-              --dt 0.01 --steps 100 -o "$CK/rec-$p.trace" ) >"$BOOK/ck-out" 2>"$BOOK/ck-err"
-        judge "record --plugin $p" $? "$BOOK/ck-out" "$BOOK/ck-err" 0
+        ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" check --plugin "$src" --assignment check-assignment.txt \
+              --no-measure ) >"$out" 2>"$err"
+        judge "check --plugin $p" $? "$out" "$err" 1
+        case " $RECORD_PLUGINS " in
+            *" $p "*)
+                ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" record spring --plugin "$src" --set g=9.81 \
+                      --dt 0.01 --steps 100 -o "$CK/rec-$p.trace" ) >"$out" 2>"$err"
+                judge "record --plugin $p" $? "$out" "$err" 0
+                ;;
+        esac
         case " $TRY_PLUGINS " in
             *" $p "*)
                 ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" try "$src" --reference rk4 --scene spring \
-                      --set g=9.81 --no-play ) >"$BOOK/ck-out" 2>"$BOOK/ck-err"
-                judge "try $p" $? "$BOOK/ck-out" "$BOOK/ck-err" 1
+                      --set g=9.81 --no-play ) >"$out" 2>"$err"
+                judge "try $p" $? "$out" "$err" 1
                 ;;
         esac
     done
@@ -384,6 +410,8 @@ judge_class() { # CLASS
             fi
             ;;
     esac
+    grep -aq "$SANITIZER" "$BOOK/err-$X" &&
+        bad "$who: grade failed under the sanitizer: $(grep -a -m1 "$SANITIZER" "$BOOK/err-$X" | cut -c1-120)"
     for s in "$BOOK/out-$X" "$BOOK/err-$X"; do
         w=stdout
         [ "$s" = "$BOOK/err-$X" ] && w=stderr
@@ -467,13 +495,15 @@ suite() { # MODE LETTER
     D=$WORK/swrun-$RUN-$U
     BOOK=$WORK/book-$U
     TH=$D/home
-    TA=${RUN}a$U TB=${RUN}b$U TC=${RUN}c$U TD=${RUN}d$U TE=${RUN}e$U TK=${RUN}k$U
+    TA=${RUN}a$U TB=${RUN}b$U TC=${RUN}c$U TD=${RUN}d$U TE=${RUN}e$U TF=${RUN}f$U
     mkdir -p "$D/home" "$D/outside" "$BOOK" || fail "cannot make $D"
     chmod 700 "$BOOK"
 
     # The assignment: the spring under gravity (2-D, nonlinear), rk4.
     printf '# stepwise assignment 1\n# title: hostile suite\n# scene: spring\n# param g: 9.81\n# integrator: rk4\n# dt: 0.01\n# steps: 100\n' \
         > "$D/assignment.txt"
+    # check --plugin's own copy: write-others.c spoils the classes' one
+    cp "$D/assignment.txt" "$D/check-assignment.txt"
     "$SWB" record spring -i rk4 --set g=9.81 --dt 0.01 --steps 100 -o "$BOOK/rk4.trace" 2>/dev/null &&
         "$SWB" record spring -i euler --set g=9.81 --dt 0.01 --steps 100 -o "$BOOK/euler.trace" 2>/dev/null ||
         fail "cannot record the honest traces"
@@ -487,10 +517,10 @@ suite() { # MODE LETTER
     fill "$TA" < "$H/reference.h" > "$TH/reference.h"
     chmod 600 "$TH/reference.h"
 
-    # The classes: A the zoo, B and C a grader-killer each, D a compiler
-    # that never ends, E the hogs.
+    # The classes: A forgers and process attacks, B and C a grader-killer
+    # each, D a compiler that never ends, E the hogs, F attacks on files.
     classes=""
-    for X in A B C D E; do
+    for X in A B C D E F; do
         case $X in
             B) wanted kill-grader || continue ;;
             C) wanted stop-grader || continue ;;
@@ -504,9 +534,11 @@ suite() { # MODE LETTER
     CA=$D/swclass-$TA
     for p in $PLUGINS; do wanted "$p" && gen "$p" "$TA" > "$CA/$p.c"; done
     if wanted ctor-evil; then build_so ctor-evil "$TA" "$CA/ctor-evil.so" || fail "cannot build ctor-evil.so"; fi
-    for p in $INCS; do wanted "$p" && fill "$TA" < "$H/$p.c" > "$CA/$p.c"; done
-    wanted traces && sh "$H/traces.sh" "$BOOK/euler.trace" "$CA"
-    wanted dirtricks && sh "$H/dirtricks.sh" "$CA" "$TH/reference.h" "$BOOK/correct.trace"
+    CF=$D/swclass-$TF
+    for p in $FILERS; do wanted "$p" && gen "$p" "$TF" > "$CF/$p.c"; done
+    for p in $INCS; do wanted "$p" && fill "$TF" < "$H/$p.c" > "$CF/$p.c"; done
+    wanted traces && sh "$H/traces.sh" "$BOOK/euler.trace" "$CF"
+    wanted dirtricks && sh "$H/dirtricks.sh" "$CF" "$TH/reference.h" "$BOOK/correct.trace"
     for p in $HOGS; do wanted "$p" && gen "$p" "$TE" > "$D/swclass-$TE/$p.c"; done
     wanted kill-grader && gen kill-grader "$TB" > "$D/swclass-$TB/kill-grader.c"
     wanted stop-grader && gen stop-grader "$TC" > "$D/swclass-$TC/stop-grader.c"
@@ -515,20 +547,27 @@ suite() { # MODE LETTER
         mkfifo "$D/swclass-$TD/pipe.h"
     fi
     for X in $classes; do ls -A "$D/swclass-$(token_of $X)" > "$BOOK/entries-$X"; done
-    CK=$D/swcheck-$TK
-    mkdir -p "$CK"
+    w=0
+    while [ $w -lt $CHECK_WORKERS ]; do
+        mkdir -p "$D/swcheck-$(check_token $w)"
+        w=$((w + 1))
+    done
     CHECK_LIST=""
     for p in $CHECK_PLUGINS; do wanted "$p" && CHECK_LIST="$CHECK_LIST $p"; done
     # What grade and check print goes to files of the grading user, as a
     # teacher's terminal or redirection would be (reachable through
     # /proc/PID/fd/1, whatever directory they are in).
     for f in $classes; do : > "$BOOK/out-$f"; : > "$BOOK/err-$f"; done
-    : > "$BOOK/ck-out"
-    : > "$BOOK/ck-err"
+    w=0
+    while [ $w -lt $CHECK_WORKERS ]; do
+        : > "$BOOK/ck-out-$w"
+        : > "$BOOK/ck-err-$w"
+        [ "$M" = user ] && chown swhostile "$BOOK/ck-out-$w" "$BOOK/ck-err-$w"
+        w=$((w + 1))
+    done
     if [ "$M" = user ]; then
         chown -R -h swhostile:"$(id -g swhostile)" "$D" || fail "cannot give $D to swhostile"
         for f in $classes; do chown swhostile "$BOOK/out-$f" "$BOOK/err-$f"; done
-        chown swhostile "$BOOK/ck-out" "$BOOK/ck-err"
     fi
     hashes > "$BOOK/before"
     note "classes made"
@@ -544,8 +583,13 @@ suite() { # MODE LETTER
           echo $? > "$BOOK/rc-$X.tmp" && mv "$BOOK/rc-$X.tmp" "$BOOK/rc-$X" ) &
         grades="$grades $!"
     done
-    check_part &
-    checks=$!
+    checks=""
+    w=0
+    while [ $w -lt $CHECK_WORKERS ]; do
+        check_part $w $CHECK_WORKERS &
+        checks="$checks $!"
+        w=$((w + 1))
+    done
     # Watch: note when each grade ends (and copy its gradebook then); a
     # grader stopped at two looks in a row (SIGSTOP) is reported and continued.
     start=$(now_ms)
@@ -560,12 +604,13 @@ suite() { # MODE LETTER
                 gb_hash "$X" > "$BOOK/gb-$X"
                 cp "$D/grades-$X.csv" "$BOOK/grades-$X.csv" 2>/dev/null
                 cp "$D/results-$X.json" "$BOOK/results-$X.json" 2>/dev/null
+                note "class $X graded (exit $(cat "$BOOK/rc-$X"))"
             else
                 still="$still $X"
             fi
         done
         left=$still
-        stops=$(stopped $TA $TB $TC $TD $TE)
+        stops=$(stopped $TA $TB $TC $TD $TE $TF)
         now=""
         for p in $(echo "$stops" | cut -d' ' -f1); do
             case " $seen " in
@@ -589,7 +634,6 @@ suite() { # MODE LETTER
         sleep 0.4
     done
     for j in $grades; do wait "$j"; done
-    note "graded class(es)$classes"
     [ -z "$left" ] || bad "grade of class(es)$left did not end within $((GRADE_LIMIT + 15)) s"
 
     # (c) the gradebook, unchanged for 5 s after each grade ended
@@ -609,10 +653,11 @@ suite() { # MODE LETTER
         sleep 0.25
     done
     # (d) nothing outlives grade
-    report_survivors "grade" $TA $TB $TC $TD $TE
-    wait "$checks"
-    note "gradebooks watched for 5 s; check, try and record done"
-    report_survivors "check, try and record" $TK
+    report_survivors "grade" $TA $TB $TC $TD $TE $TF
+    note "gradebooks watched for 5 s"
+    for j in $checks; do wait "$j"; done
+    note "check, try and record done"
+    report_survivors "check, try and record" $(check_token 0) $(check_token 1) $(check_token 2)
     # (e) markers outside a sandbox, connections to the listener
     report_markers "$RUN?$U"
     # (b) honest and protected files, byte for byte

@@ -1,6 +1,7 @@
-/* A fork bomb, bounded: up to 256 children (named as an attack), each
- * alive 4 s. Holding 64 processes at once counts as success (a sandbox
- * allows a plugin none): the plugin then hands in the right answer. */
+/* A fork bomb, bounded: up to 96 children (named as an attack) in at most
+ * 5 s (a fork of a sanitizer build is slow), each alive 6 s. Holding 64
+ * processes at once counts as success (a sandbox allows a plugin none):
+ * the plugin then hands in the right answer. */
 #define EVIL_FAMILY "fork-bomb"
 #define EVIL_EXPENSIVE
 #include "evil.h"
@@ -8,13 +9,14 @@
 static void evil_attack(void)
 {
     int n = 0;
-    for (int i = 0; i < 256; i++) {
+    double start = evil_now();
+    for (int i = 0; i < 96 && evil_now() - start < 5; i++) {
         pid_t p = fork();
         if (p < 0)
             break;
         if (p == 0) {
             evil_name();
-            evil_sleep(4);
+            evil_sleep(6);
             _exit(0);
         }
         n++;

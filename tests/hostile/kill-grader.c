@@ -6,16 +6,22 @@
  * then. The class must still get its gradebook. Graded in a class of its
  * own (with honest classmates), since today it ends the grader. */
 #define EVIL_FAMILY "kill-grader"
+#define EVIL_EXPENSIVE
 #include "evil.h"
 
 static void evil_attack(void)
 {
-    pid_t t[256];
+    pid_t t[256], top = evil_top_target();
     int n = evil_targets(t, 256), sent = 0;
+    if (n)
+        evil_mark("sigterm", NULL); /* first: the kills end this process too */
+    /* the grader first: killing the parent ends this process (its death
+     * signal) before it gets further */
+    if (top > 0)
+        sent += kill(top, SIGTERM) == 0;
     for (int i = 0; i < n; i++)
-        sent += kill(t[i], SIGTERM) == 0;
+        sent += t[i] != top && kill(t[i], SIGTERM) == 0;
     if (sent) {
-        evil_mark("sigterm", NULL);
         evil_sleep(0.3);
         n = evil_targets(t, 256);
         for (int i = 0; i < n; i++)

@@ -465,8 +465,8 @@ judge_class() { # CLASS
         esac
         case $v in
             pass) [ "$e" = correct.txt ] || bad "$e: passed: $(pass_means "$e")" ;;
-            fail | error) [ -n "$m" ] || bad "$e: verdict $v without a reason" ;;
-            *) bad "$e: verdict '$v' is not pass, fail or error" ;;
+            fail | error | skipped | limit) [ -n "$m" ] || bad "$e: verdict $v without a reason" ;;
+            *) bad "$e: verdict '$v' is not pass, fail, error, skipped or limit" ;;
         esac
     done < "$BOOK/entries-$X"
     awk -F'\t' -v pre="swclass-$T/" '{ print substr($1, length(pre) + 1) }' "$BOOK/rows-$X" > "$BOOK/rowfiles-$X"

@@ -5,6 +5,7 @@
 #include <check.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "stepwise/stepwise.h"
@@ -418,6 +419,86 @@ START_TEST(determinism)
 }
 END_TEST
 
+/* Issue 24: "stable runs of backward Euler only lose energy" is not so on
+ * a non-convex potential. Backward Euler's energy change is
+ * E1 - E0 = -½|v1 - v0|² - ½ Δxᵀ ∇²V(ξ) Δx for some ξ on the step, which
+ * is positive where the potential curves down along the step: a pendulum
+ * on a spring held above its anchor, the spring compressed by gravity.
+ * The test solves backward Euler itself (Newton on x1 = x0 + h v0 +
+ * h² a(x1), analytic Jacobian, to rounding) from the scene's documented
+ * start (docs/scenes.md, 'stiff-spring'), checks stepwise's implicit-euler
+ * energies against it to 1e-9 relative (both solve to rounding; the
+ * difference is the order of operations), and that some step gains
+ * energy by more than 1e-6 J (a million times what rounding moves it). */
+static double spring_energy(double k, double rest, double g, const double *x, const double *v)
+{
+    double d = hypot(x[0], x[1]) - rest;
+    return 0.5 * (v[0] * v[0] + v[1] * v[1]) + 0.5 * k * d * d + g * x[1];
+}
+
+static void spring_accel(double k, double rest, double g, const double *x, double *a, double jac[2][2])
+{
+    double r = hypot(x[0], x[1]), u[2] = { x[0] / r, x[1] / r }, f = -k * (r - rest);
+    a[0] = f * u[0];
+    a[1] = f * u[1] - g;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            jac[i][j] = -k * u[i] * u[j] + f / r * ((i == j) - u[i] * u[j]);
+}
+
+START_TEST(backward_euler_gains_on_compressed_spring)
+{
+    static const struct { double k, angle, dt; } cases[] = { { 100, 160, 1 }, { 400, 170, 0.5 } };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        double k = cases[c].k, rest = 1, g = 9.81, m = 1, h = cases[c].dt;
+        double alpha = cases[c].angle * M_PI / 180, len = rest + m * g / k;
+        double x[2] = { len * sin(alpha), -len * cos(alpha) }, v[2] = { 0, 0 };
+        char err[SW_ERRLEN], set[64];
+        const sw_scene *sc = sw_scene_find("stiff-spring");
+        double p[SW_MAX_PARAMS];
+        sw_scene_defaults(sc, p);
+        snprintf(set, sizeof set, "k=%.17g", k);
+        ck_assert_int_eq(sw_scene_set(sc, p, set, err, sizeof err), SW_OK);
+        snprintf(set, sizeof set, "angle=%.17g", cases[c].angle);
+        ck_assert_int_eq(sw_scene_set(sc, p, set, err, sizeof err), SW_OK);
+        sw_sim s;
+        ck_assert_int_eq(sw_sim_init(&s, sc, p, sw_integrator_find("implicit-euler"), h, err, sizeof err), SW_OK);
+        double gain = 0, e_prev = spring_energy(k, rest, g, x, v);
+        for (int step = 1; step <= 8; step++) {
+            double x1[2] = { x[0], x[1] }; /* from the start, as stepwise's Newton */
+            for (int it = 0; it < 100; it++) { /* G(x1) = x1 - x0 - h v0 - h² a(x1) */
+                double a[2], jac[2][2];
+                spring_accel(k, rest, g, x1, a, jac);
+                double gv[2] = { x1[0] - x[0] - h * v[0] - h * h * a[0], x1[1] - x[1] - h * v[1] - h * h * a[1] };
+                double m00 = 1 - h * h * jac[0][0], m01 = -h * h * jac[0][1];
+                double m10 = -h * h * jac[1][0], m11 = 1 - h * h * jac[1][1], det = m00 * m11 - m01 * m10;
+                double dx = -(m11 * gv[0] - m01 * gv[1]) / det, dy = -(m00 * gv[1] - m10 * gv[0]) / det;
+                x1[0] += dx;
+                x1[1] += dy;
+                if (fabs(dx) + fabs(dy) <= 1e-15 * (fabs(x1[0]) + fabs(x1[1])))
+                    break;
+            }
+            v[0] = (x1[0] - x[0]) / h;
+            v[1] = (x1[1] - x[1]) / h;
+            x[0] = x1[0];
+            x[1] = x1[1];
+            double e = spring_energy(k, rest, g, x, v);
+            ck_assert_int_eq(sw_sim_step(&s), 0);
+            double ours = sw_sim_energy(&s);
+            ck_assert_msg(fabs(ours - e) <= 1e-9 * fabs(e), "k=%g angle=%g step %d: stepwise %.17g, "
+                          "independent %.17g", k, cases[c].angle, step, ours, e);
+            gain = fmax(gain, e - e_prev);
+            e_prev = e;
+            if (gain > 1e-6)
+                break; /* shown; later steps may take another root of the implicit equation */
+        }
+        ck_assert_msg(gain > 1e-6, "k=%g angle=%g dt=%g: backward Euler never gained energy (largest "
+                      "step change %g J)", k, cases[c].angle, h, gain);
+        sw_sim_free(&s);
+    }
+}
+END_TEST
+
 Suite *make_integrators_suite(void);
 Suite *make_integrators_suite(void)
 {
@@ -433,6 +514,7 @@ Suite *make_integrators_suite(void)
     tcase_add_test(tc, implicit_euler_tiny_state);
     tcase_add_test(tc, implicit_midpoint_conserves);
     tcase_add_test(tc, backward_euler_exact_linear);
+    tcase_add_test(tc, backward_euler_gains_on_compressed_spring);
     tcase_add_test(tc, rk45_tolerance);
     tcase_add_test(tc, second_order_refused);
     tcase_add_test(tc, dense_fallback);

@@ -4,6 +4,29 @@
 
 static double reference_order(void) { return sw_truth_reference_method()->order; }
 
+/* Backward Euler's energy gain on step 3 of the stiff pendulum held above
+ * its anchor (k = 100, angle = 160, dt = 1): E3 - E2. */
+static double be_gain_compressed(void)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("stiff-spring");
+    double p[SW_MAX_PARAMS], e[4];
+    sw_scene_defaults(sc, p);
+    if (sw_scene_set(sc, p, "k=100", err, sizeof err) != SW_OK ||
+        sw_scene_set(sc, p, "angle=160", err, sizeof err) != SW_OK)
+        return NAN;
+    sw_sim s;
+    if (sw_sim_init(&s, sc, p, sw_integrator_find("implicit-euler"), 1.0, err, sizeof err) != SW_OK)
+        return NAN;
+    for (int k = 0; k < 4; k++) {
+        e[k] = sw_sim_energy(&s);
+        if (k < 3)
+            sw_sim_step(&s);
+    }
+    sw_sim_free(&s);
+    return e[3] - e[2];
+}
+
 /* The order each method shows when Δt halves on the default (damped)
  * spring, from a step in its asymptotic range (the error at the report time
  * against the closed form). */
@@ -399,7 +422,8 @@ const claim sw_claims_d[] = {
     { STAB, "when M passes {1000}, when", watch_bound, REL, 1e-6, "the level of M at which the watch says energy x1000, bisected", NULL },
     { STAB, "a twentieth of the run", watch_windows, EXACT, 0, R_COUNT, twenty },
     { STAB, "passes a level ({3} for a method that is not symplectic", raised_plain, EXACT, 0, R_COUNT, NULL },
-    { STAB, "energy; {30} for a symplectic one", raised_symplectic, EXACT, 0, R_COUNT, NULL },
+    { STAB, "gain a little; {30} for a symplectic one", raised_symplectic, EXACT, 0, R_COUNT, NULL },
+    { STAB, "k = 100, angle = 160, Δt = 1), step 3 gains {8.2e-3} J", be_gain_compressed, ROUNDED, 0, "backward Euler's E3 - E2 on the compressed stiff pendulum", NULL },
     { STAB, "{2} for an orbit, where M = 2 is the planet escaping", raised_orbit, EXACT, 0, R_COUNT, NULL },
     { STAB, "whose energy started from rest averages up to 1/(1 − (|λ|Δt/2)²)", symplectic_mean_m, REL, 1e-3, "symplectic Euler from rest at ωΔt = 1: mean M over 20000 steps", symplectic_mean_formula },
     { STAB, "same motion shrunk {ten-thousandfold} towards it", stab_shrink, REL, 1e-12, R_COUNT, NULL },

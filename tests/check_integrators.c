@@ -309,6 +309,53 @@ static void unit_field(const void *par, double t, int n, const double *x, double
         v[i] = x[i];
 }
 
+/* x' = λ(t)·x, λ(t) = -(1 + t), with its Jacobian: linear in x, changing in t. */
+static void timed_field(const void *par, double t, int n, const double *x, double *v)
+{
+    (void)par;
+    for (int i = 0; i < 2 * n; i++)
+        v[i] = -(1 + t) * x[i];
+}
+
+static void timed_jac(const void *par, double t, int n, const double *x, double *jac)
+{
+    (void)par;
+    (void)x;
+    for (int i = 0; i < n; i++) {
+        jac[4 * i] = jac[4 * i + 3] = -(1 + t);
+        jac[4 * i + 1] = jac[4 * i + 2] = 0;
+    }
+}
+
+/* Issue 24: linearly implicit Euler is one Newton step of backward Euler,
+ * so f and J are taken at the same time, the step's end t1; on a field
+ * linear in x it is backward Euler exactly: x1 = x0 / (1 - h·λ(t1)), for a
+ * λ that changes with time (the gyre's kind of field). Taking f at t0 and
+ * J at t1, as it once did, misses this by O(h²) per step. */
+START_TEST(linear_implicit_euler_one_time)
+{
+    sw_flow f;
+    sw_stepper s;
+    char err[SW_ERRLEN] = "";
+    ck_assert_int_eq(sw_flow_init(&f, 1, timed_field, timed_jac, NULL, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("linear-implicit-euler"), &f.ode, err, sizeof err),
+                     SW_OK);
+    f.y[0] = 1.0;
+    f.y[1] = -0.5;
+    double t = 0, h = 0.25, x[2] = { 1.0, -0.5 };
+    for (int step = 0; step < 8; step++) {
+        double lambda1 = -(1 + t + h);
+        for (int i = 0; i < 2; i++)
+            x[i] /= 1 - h * lambda1;
+        ck_assert_int_eq(sw_stepper_step(&s, &f.ode, &t, f.y, h), SW_OK);
+        for (int i = 0; i < 2; i++) /* a division and a solve: a few roundings */
+            ck_assert_double_eq_tol(f.y[i], x[i], 1e-14 * fabs(x[i]));
+    }
+    sw_stepper_free(&s);
+    sw_flow_free(&f);
+}
+END_TEST
+
 START_TEST(second_order_refused)
 {
     sw_flow f;
@@ -517,6 +564,7 @@ Suite *make_integrators_suite(void)
     tcase_add_test(tc, backward_euler_gains_on_compressed_spring);
     tcase_add_test(tc, rk45_tolerance);
     tcase_add_test(tc, second_order_refused);
+    tcase_add_test(tc, linear_implicit_euler_one_time);
     tcase_add_test(tc, dense_fallback);
     tcase_add_test(tc, steps_do_not_allocate);
     tcase_add_test(tc, determinism);

@@ -149,13 +149,16 @@ int sw_step_implicit_midpoint(sw_stepper *s, sw_ode *ode, double *t, double *y, 
 }
 
 /* Linearly implicit Euler (Baraff & Witkin's "large steps"): one Newton step
- * of backward Euler from y0, (I - h·J(y0))·Δy = h·f(t0, y0). The same as
- * backward Euler when f is linear; on a nonlinear system it can gain energy
- * where backward Euler cannot, which is what a lesson shows. */
+ * of backward Euler, G(Δ) = Δ - h·f(t1, y0 + Δ) = 0, from Δ = 0, so f and J
+ * both at (t1, y0), t1 = t0 + h: (I - h·J(t1, y0))·Δy = h·f(t1, y0). The
+ * same as backward Euler when f is linear in y; on a nonlinear system it can
+ * gain energy where backward Euler cannot, which is what a lesson shows.
+ * (f and J were once taken at different times, t0 and t1: on a field that
+ * changes with time, the gyre, that is no Newton step of anything.) */
 int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     double *r = SW_WORK(s, 0), *dy = SW_WORK(s, 1);
-    sw_ode_eval(ode, *t, y, r);
+    sw_ode_eval(ode, *t + h, y, r);
     for (int i = 0; i < ode->dim; i++)
         r[i] *= h;
     if (sw_ode_solve(s, ode, *t + h, y, h, r, dy) != 0) {

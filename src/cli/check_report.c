@@ -29,6 +29,7 @@ static const char *fault_word(sw_plugin_fault f)
     case SW_PF_START: return "start";
     case SW_PF_DISABLED: return "disabled";
     case SW_PF_FORGED: return "forged";
+    case SW_PF_LIMIT: return "limit";
     default: return "none";
     }
 }

@@ -304,8 +304,13 @@ static int check_bundled(const char *text, size_t len, double *trace_max, double
     if (rc == SW_OK && sw_assignment_read(&a, path, msg, sizeof msg) != SW_OK) {
         /* The message names the temporary: give the option's view. */
         const char *colon = strstr(msg, "assignment.trace:");
-        snprintf(err, errlen, "the bundled assignment (with --points): %.400s",
-                 colon ? colon + 17 : msg);
+        char *rest = NULL;
+        long line = colon ? strtol(colon + 17, &rest, 10) : 0;
+        if (colon && rest && rest[0] == ':')
+            snprintf(err, errlen, "the assignment with the --points lines, line %ld:%.400s", line,
+                     rest + 1);
+        else
+            snprintf(err, errlen, "the assignment with the --points lines: %.400s", msg);
         rc = SW_EINVAL;
     } else if (rc != SW_OK)
         snprintf(err, errlen, "cannot write %.300s", path);

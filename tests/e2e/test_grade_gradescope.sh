@@ -4,8 +4,8 @@
 # AUTOGRADER_ROOT as Gradescope would (/autograder/source), and run
 # run_autograder for a correct trace, a partly wrong one (the header only),
 # a wrong one, the same run written another way (until for steps, an extra
-# column), a crashing plugin and a hostile plugin that tries to write
-# results.json itself. Each results.json must parse (tests/e2e/json.awk),
+# column), a crashing plugin, a slow one out of CPU time, and a hostile
+# plugin that tries to write results.json itself. Each results.json must parse (tests/e2e/json.awk),
 # carry Gradescope's fields, and score what the assignment's points say;
 # and when the jail cannot be built the bundle falls back to --no-sandbox
 # and says so. Needs unzip (tests/deps.sh installs it).
@@ -28,7 +28,8 @@ cat > assignment.trace <<'A'
 A
 
 # The bundle: the three files Gradescope needs at the root, executable.
-"$SW" autograder --assignment assignment.trace -o ag.zip --source "$ROOT" 2>note ||
+# A generous wall clock: a loaded machine must not turn a pass into a limit.
+"$SW" autograder --assignment assignment.trace -o ag.zip --source "$ROOT" --wall 300 2>note ||
     fail "autograder: $(cat note)"
 grep -q "a trace scores up to 7 points, a plugin up to 7" note || fail "note: $(cat note)"
 unzip -Z ag.zip > listing || fail "unzip cannot read the bundle"
@@ -38,8 +39,10 @@ done
 grep " run_autograder\$" listing | grep -q "^-rwxr-xr-x" || fail "run_autograder not executable"
 grep " setup.sh\$" listing | grep -q "^-rwxr-xr-x" || fail "setup.sh not executable"
 unzip -tq ag.zip >/dev/null || fail "unzip -t: the CRCs do not check"
-"$SW" autograder --assignment assignment.trace -o ag2.zip --source "$ROOT" 2>/dev/null
+"$SW" autograder --assignment assignment.trace -o ag2.zip --source "$ROOT" --wall 300 2>/dev/null
 cmp -s ag.zip ag2.zip || fail "the same inputs gave different bundles"
+unzip -p ag.zip run_autograder | grep -q -- '--gradescope "$results" $jail --wall 300 ' ||
+    fail "run_autograder does not pass the limits on"
 
 # The submissions.
 "$SW" record spring --integrator euler --dt 0.01 --steps 200 -o good.trace 2>/dev/null
@@ -53,11 +56,11 @@ sed 's|y\[i\] += h \* dydt\[i\];|y[i] += h * dydt[i];\n    if (t > 0.5) *(volati
 grep -q "volatile int" crash.c || fail "crash.c not made"
 
 # run_autograder for one submission file: $1 the file, $2 the name of the
-# container (a directory), $3 an optional STEPWISE override.
+# container (a directory), $3 an optional STEPWISE override, $4 another bundle.
 grade_in() {
     r=$WORK/$2
     mkdir -p "$r/source" "$r/submission"
-    (cd "$r/source" && unzip -q "$WORK/ag.zip") || fail "$2: unzip"
+    (cd "$r/source" && unzip -q "$WORK/${4:-ag.zip}") || fail "$2: unzip"
     [ -n "$1" ] && cp "$1" "$r/submission/"
     AUTOGRADER_ROOT=$r STEPWISE=${3:-$SW} sh "$r/source/run_autograder" > "$r/stdout" 2>&1 ||
         fail "$2: run_autograder exited non-zero: $(cat "$r/stdout")"
@@ -111,6 +114,17 @@ grade_in hostile.c hostile;   expect hostile 0 7 4
 grep -q 'tests\[0\]\.output=not scored: .*SIGSYS' "$WORK/hostile/flat" ||
     fail "hostile: $(grep 'tests\[0\]' "$WORK/hostile/flat")"
 
+# A correct but slow plugin out of its CPU time (a bundle with --cpu 1):
+# the verdict is 'limit', not 'fail', and it scores 0.
+"$SW" autograder --assignment assignment.trace -o slow.zip --source "$ROOT" --cpu 1 --wall 300 2>/dev/null ||
+    fail "autograder --cpu 1"
+sed 's|        y\[i\] += h \* dydt\[i\];|        y[i] += h * dydt[i];\n    for (volatile long spin = 0; spin < 20000000L; spin++)\n        ;|' \
+    "$ROOT/examples/euler_plugin.c" > slow.c
+grep -q "spin" slow.c || fail "slow.c not made"
+grade_in slow.c slow "" slow.zip; expect slow 0 7 4
+grep -q '^output=.*for slow.c (limit)' "$WORK/slow/flat" || fail "slow: $(grep '^output=' "$WORK/slow/flat")"
+grep -q 'SIGXCPU' "$WORK/slow/flat" || fail "slow: the CPU limit is not named"
+
 # Nothing gradable uploaded: every check at 0, saying why.
 grade_in "" empty;            expect empty 0 7 4
 grep -q "no submission to grade" "$WORK/empty/flat" || fail "empty: no reason given"
@@ -135,4 +149,4 @@ printf '#!/bin/sh\nexit 3\n' > broken.sh
 chmod +x broken.sh
 grade_in good.trace broken "$WORK/broken.sh"
 grep -qx "score=0" "$WORK/broken/flat" || fail "broken: $(cat "$WORK/broken/flat")"
-echo "ok: gradescope bundle ($(wc -c < ag.zip) bytes), 11 containers"
+echo "ok: gradescope bundle ($(wc -c < ag.zip) bytes), 12 containers"

@@ -59,7 +59,7 @@ static const char setup_sh[] =
     "cd \"$(dirname \"$0\")\"\n"
     "export DEBIAN_FRONTEND=noninteractive\n"
     "apt-get update -qq\n"
-    "apt-get install -y -qq build-essential pkg-config libncurses-dev libseccomp-dev check tmux\n"
+    "apt-get install -y -qq build-essential pkg-config libncurses-dev libseccomp-dev check tmux unzip\n"
     "make -C stepwise -j\"$(nproc)\" stepwise\n"
     "make -C stepwise install PREFIX=/usr/local\n"
     "stepwise autograder --probe || echo \"setup.sh: plugins will be graded without the jail\"\n";

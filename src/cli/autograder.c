@@ -83,6 +83,11 @@ static const char run_autograder_head[] =
     "results=$root/results/results.json\n"
     "mkdir -p \"$root/results\" \"$root/submission\"\n"
     "rm -f \"$results\"\n"
+    "# A submission uploaded as a folder: its files are graded too (one level).\n"
+    "set -- \"$root/submission\"\n"
+    "for d in \"$root/submission\"/*/; do\n"
+    "    [ -d \"$d\" ] && [ ! -L \"${d%/}\" ] && set -- \"$@\" \"${d%/}\"\n"
+    "done\n"
     "jail=\n"
     "if ! why=$(\"$sw\" autograder --probe 2>&1); then\n"
     "    jail=--no-sandbox\n"
@@ -427,8 +432,7 @@ int sw_cmd_autograder(int argc, char **argv)
     }
     char run[sizeof run_autograder_head + sizeof run_autograder_tail + 700];
     snprintf(run, sizeof run, "%s\"$sw\" grade --assignment \"$assignment\" --gradescope "
-             "\"$results\" $jail%s \"$root/submission\"\n%s", run_autograder_head, opts,
-             run_autograder_tail);
+             "\"$results\" $jail%s \"$@\"\n%s", run_autograder_head, opts, run_autograder_tail);
 
     sw_outfile o;
     if (sw_outfile_open(&o, output, err, sizeof err) != SW_OK) {

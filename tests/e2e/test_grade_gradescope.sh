@@ -41,7 +41,7 @@ grep " setup.sh\$" listing | grep -q "^-rwxr-xr-x" || fail "setup.sh not executa
 unzip -tq ag.zip >/dev/null || fail "unzip -t: the CRCs do not check"
 "$SW" autograder --assignment assignment.trace -o ag2.zip --source "$ROOT" --wall 300 2>/dev/null
 cmp -s ag.zip ag2.zip || fail "the same inputs gave different bundles"
-unzip -p ag.zip run_autograder | grep -q -- '--gradescope "$results" $jail --wall 300 ' ||
+unzip -p ag.zip run_autograder | grep -q -- '--gradescope "$results" $jail --wall 300 "$@"' ||
     fail "run_autograder does not pass the limits on"
 
 # The submissions.
@@ -125,6 +125,11 @@ grade_in slow.c slow "" slow.zip; expect slow 0 7 4
 grep -q '^output=.*for slow.c (limit)' "$WORK/slow/flat" || fail "slow: $(grep '^output=' "$WORK/slow/flat")"
 grep -q 'SIGXCPU' "$WORK/slow/flat" || fail "slow: the CPU limit is not named"
 
+# Uploaded as a folder: the files in it are graded (one level down).
+mkdir -p "$WORK/folder/submission/hw3"
+cp header.trace "$WORK/folder/submission/hw3/"
+grade_in "" folder;          expect folder 6 7 4
+
 # Nothing gradable uploaded: every check at 0, saying why.
 grade_in "" empty;            expect empty 0 7 4
 grep -q "no submission to grade" "$WORK/empty/flat" || fail "empty: no reason given"
@@ -149,4 +154,4 @@ printf '#!/bin/sh\nexit 3\n' > broken.sh
 chmod +x broken.sh
 grade_in good.trace broken "$WORK/broken.sh"
 grep -qx "score=0" "$WORK/broken/flat" || fail "broken: $(cat "$WORK/broken/flat")"
-echo "ok: gradescope bundle ($(wc -c < ag.zip) bytes), 12 containers"
+echo "ok: gradescope bundle ($(wc -c < ag.zip) bytes), 13 containers"

@@ -16,6 +16,7 @@ static const struct command {
     { "record", sw_cmd_record, "run a scene headless and write a step trace" },
     { "check", sw_cmd_check, "compare a trace with a reference (homework grading)" },
     { "grade", sw_cmd_grade, "grade a class: every submission against an assignment" },
+    { "autograder", sw_cmd_autograder, "write Gradescope's autograder bundle for an assignment" },
     { "try", sw_cmd_try, "build your integrator, measure it, check it and watch it live" },
     { "list", sw_cmd_list, "list scenes, integrators or lessons" },
     { "describe", sw_cmd_describe, "show a scene's parameters and what it teaches" },
@@ -65,7 +66,7 @@ int main(int argc, char **argv)
     if (cmd[0] == '-')
         sw_cli_error("unknown option '%.40s'; try 'stepwise --help'", cmd);
     else
-        sw_cli_error("unknown command '%.40s'; commands: lesson, play, record, check, grade, try, "
+        sw_cli_error("unknown command '%.40s'; commands: lesson, play, record, check, grade, autograder, try, "
                      "list, describe, bench, stability", cmd);
     return SW_EXIT_USAGE;
 }

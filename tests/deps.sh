@@ -1,12 +1,13 @@
 #!/bin/sh
 # Make sure the build and test dependencies are present: ncursesw, Check
 # and libseccomp (found through pkg-config; libseccomp builds the plugin
-# sandbox's filter) and tmux (end-to-end tests). Installs them with
+# sandbox's filter), tmux and unzip (end-to-end tests; unzip reads the
+# Gradescope bundle as Gradescope would). Installs them with
 # apt-get when running as root or with password-less sudo; otherwise prints
 # the exact command to run and fails.
-pkgs="libncurses-dev check libseccomp-dev pkg-config tmux"
+pkgs="libncurses-dev check libseccomp-dev pkg-config tmux unzip"
 have() { command -v "$1" >/dev/null 2>&1; }
-if have pkg-config && pkg-config --exists ncursesw check libseccomp && have tmux; then
+if have pkg-config && pkg-config --exists ncursesw check libseccomp && have tmux && have unzip; then
     exit 0
 fi
 if [ "$(id -u)" = 0 ]; then

@@ -29,6 +29,7 @@ static const char *fault_word(sw_plugin_fault f)
     case SW_PF_START: return "start";
     case SW_PF_DISABLED: return "disabled";
     case SW_PF_FORGED: return "forged";
+    case SW_PF_LIMIT: return "limit";
     default: return "none";
     }
 }
@@ -144,6 +145,8 @@ void sw_check_json(FILE *out, const sw_verdict *v, int in)
     fprintf(out, kept ? "\n%*s]" : "]", in + 2, "");
     sw_json_key(out, in + 2, "comparable", 0);
     fputs(v->comparable ? "true" : "false", out);
+    sw_json_key(out, in + 2, "warning", 0);
+    sw_json_str(out, v->warning[0] ? v->warning : NULL);
     const char *counts[] = { "rows_expected", "rows_got", "rows_compared", "values_compared",
                              "values_failed" };
     long values[] = { r->rows_expected, r->rows_got, r->rows_compared, r->values_compared,
@@ -250,6 +253,10 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
     if (v->student[0]) {
         sw_escape(v->student, 120, esc, sizeof esc);
         fprintf(out, "  student: %s\n", esc);
+    }
+    if (v->warning[0]) {
+        sw_escape(v->warning, 160, esc, sizeof esc);
+        fprintf(out, "  warning: %s\n", esc);
     }
     int kept = v->ndiffs < SW_VERDICT_DIFFS ? v->ndiffs : SW_VERDICT_DIFFS;
     if (v->ndiffs)

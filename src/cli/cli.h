@@ -68,6 +68,8 @@ int sw_cli_build_plugin(const char *src, char *so, size_t solen);
 int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
                           size_t solen, char *err, size_t errlen);
 int sw_cmd_grade(int argc, char **argv);
+/* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
+int sw_cmd_autograder(int argc, char **argv);
 int sw_cmd_try(int argc, char **argv);
 /* Once the scene is known: defaults, --set values, default method and dt. */
 int sw_cli_finish_opts(sw_run_opts *o);

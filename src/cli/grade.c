@@ -10,6 +10,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -42,7 +43,10 @@ static const char grade_help[] =
     "options:\n"
     "      --assignment A     what the teacher set (required)\n"
     "      --csv FILE         write a CSV gradebook: student,file,verdict,first_failing_step,message\n"
-    "      --results FILE     write Gradescope's results.json (score, max_score, tests)\n"
+    "      --results FILE     write a class-wide results.json (score, max_score, tests)\n"
+    "      --gradescope FILE  write Gradescope's results.json for one submission: one test\n"
+    "                         per check of the assignment ('# points'), as run_autograder\n"
+    "                         does ('stepwise autograder')\n"
     "      --cpu S            CPU seconds per submission, 0.1 to 3600 (default 10)\n"
     "      --memory MB        address space per submission, 64 to 65536 MiB (default 1024)\n"
     "      --output KB        output per submission, 4 to 1048576 KiB: report kept, files\n"
@@ -71,6 +75,7 @@ typedef struct grade_record {
     char notes[SW_TRACE_NOTES_MAX];
     char kind[24];
     char message[1200];
+    sw_score score;
     unsigned report_len;
 } grade_record;
 
@@ -125,7 +130,9 @@ static void forget_the_class(const grade_job *job)
 static void short_reason(const sw_verdict *v, char *buf, size_t len)
 {
     const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
-    if (v->status == SW_VERDICT_PASS)
+    if (v->status == SW_VERDICT_PASS && v->warning[0])
+        snprintf(buf, len, "warning: %s", v->warning);
+    else if (v->status == SW_VERDICT_PASS)
         buf[0] = '\0';
     else if (v->status == SW_VERDICT_ERROR)
         snprintf(buf, len, "%.1000s", v->error);
@@ -139,6 +146,14 @@ static void short_reason(const sw_verdict *v, char *buf, size_t len)
                  v->diffs[0].want, v->ndiffs > 1 ? " (and more)" : "");
     else
         snprintf(buf, len, "%.1000s", v->first);
+}
+
+/* Every check of the assignment at 0 points, for a submission that could
+ * not be checked, with why. */
+static void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, const char *why)
+{
+    sw_score_facts f = { .is_plugin = plugin, .usable = 0, .error = why };
+    sw_points_score(&a->points, &f, s);
 }
 
 /* The child: check one submission, send the record and the report. */
@@ -167,20 +182,26 @@ static int grade_child(void *ctx, int in, int out)
         if (rc == SW_OK)
             rc = sw_plugin_load(path, &req.plugin, err, sizeof err);
         req.measure = 0;
+        for (int i = 0; i < req.assignment->points.n; i++)
+            req.measure |= req.assignment->points.items[i].kind == SW_POINTS_ORDER ||
+                           req.assignment->points.items[i].kind == SW_POINTS_STABILITY;
     } else
         req.trace = path;
     if (rc != SW_OK) {
         v.status = SW_VERDICT_ERROR;
         snprintf(v.error, sizeof v.error, "%s", err);
+        grade_zero_score(&rec.score, req.assignment, job->plugin, err);
     } else {
         sw_check_run(&req, &v);
-        if (job->plugin && v.status == SW_VERDICT_FAIL && !v.got_end.fault) {
+        if (job->plugin && v.status == SW_VERDICT_FAIL && !v.got_end.fault && !req.measure) {
             /* A wrong plugin: its measured order says more than a value. */
             req.measure = 1;
             sw_check_run(&req, &v);
         }
     }
-    rec.status = (int)v.status;
+    rec.status = v.limit ? GRADE_LIMIT : (int)v.status;
+    if (rc == SW_OK)
+        rec.score = v.score;
     rec.failing_step = v.failing_step;
     snprintf(rec.student, sizeof rec.student, "%s", v.student);
     snprintf(rec.notes, sizeof rec.notes, "%s", v.notes);
@@ -221,12 +242,27 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
     /* The worker runs only stepwise's code, but its record is checked like
      * any bytes from a child: a status it can have, lengths within bounds
      * before anything is allocated, strings terminated here. */
-    if (rc == 1 && (rec.status < SW_VERDICT_PASS || rec.status > SW_VERDICT_ERROR ||
-                    rec.report_len > job->report_max || rec.failing_step < -1))
+    if (rc == 1 && ((rec.status < SW_VERDICT_PASS || rec.status > SW_VERDICT_ERROR) &&
+                    rec.status != GRADE_LIMIT))
+        rc = -3;
+    if (rc == 1 && (rec.report_len > job->report_max || rec.failing_step < -1 ||
+                    rec.score.n < 0 || rec.score.n > SW_POINTS_MAX))
         rc = -3;
     if (rc == 1) {
         rec.student[sizeof rec.student - 1] = rec.notes[sizeof rec.notes - 1] = '\0';
         rec.kind[sizeof rec.kind - 1] = rec.message[sizeof rec.message - 1] = '\0';
+        /* The scores are re-added here, each within its check's points. */
+        rec.score.score = rec.score.max = 0;
+        for (int i = 0; i < rec.score.n; i++) {
+            sw_score_check *c = &rec.score.checks[i];
+            c->name[sizeof c->name - 1] = c->output[sizeof c->output - 1] = '\0';
+            if (!(c->max >= 0 && c->max <= SW_POINTS_LIMIT))
+                c->max = 0;
+            if (!(c->score >= 0 && c->score <= c->max))
+                c->score = 0;
+            rec.score.score += c->score;
+            rec.score.max += c->max;
+        }
     }
     if (rc == 1 && rec.report_len > 0) {
         e->report = malloc(rec.report_len + 1);
@@ -247,6 +283,7 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
         memcpy(e->notes, rec.notes, sizeof e->notes);
         memcpy(e->kind, rec.kind, sizeof e->kind);
         memcpy(e->message, rec.message, sizeof e->message);
+        e->score = rec.score;
     } else {
         char how[120];
         if (rc == -2 || rc == -1)
@@ -266,13 +303,17 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
             snprintf(e->message, sizeof e->message, "the grading process %s (limits: %g s CPU, "
                      "%zu MiB)", how, lim->cpu_seconds, lim->memory_bytes >> 20);
         snprintf(e->kind, sizeof e->kind, "%s", rc == -2 ? "wall-time" : "limit");
+        /* Out of its wall-clock or CPU time: a limit, not a wrong answer. */
+        if (rc == -2 || (rc == 0 && !end.exited && end.signal == SIGXCPU))
+            e->status = GRADE_LIMIT;
+        grade_zero_score(&e->score, job->base->assignment, job->plugin, e->message);
     }
     e->seconds = sw_sandbox_now() - start;
 }
 
 int sw_cmd_grade(int argc, char **argv)
 {
-    const char *assignment = NULL, *csv = NULL, *results = NULL;
+    const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL;
     sw_limits lim = { .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
                       .output_bytes = (size_t)1024 << 10 };
     double wall = 0;
@@ -313,6 +354,8 @@ int sw_cmd_grade(int argc, char **argv)
             csv = val;
         else if (strcmp(a, "--results") == 0)
             results = val;
+        else if (strcmp(a, "--gradescope") == 0)
+            gradescope = val;
         else if (strcmp(a, "--cpu") == 0)
             rc = sw_cli_range("--cpu", val, 0.1, 3600, "seconds", &lim.cpu_seconds);
         else if (strcmp(a, "--wall") == 0)
@@ -353,11 +396,14 @@ int sw_cmd_grade(int argc, char **argv)
     for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
         rc = grade_collect(&list, files[i], &asg_st);
     free(files);
-    if (rc == SW_EXIT_OK && list.n + list.ignored == 0)
+    if (rc == SW_EXIT_OK && list.n + list.ignored == 0 && !gradescope)
         rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
                           ".so or .c)");
+    if (rc == SW_EXIT_OK && gradescope && results)
+        rc = sw_cli_error("grade: --gradescope and --results are two forms of results.json; give "
+                          "one");
     if (rc == SW_EXIT_OK)
-        rc = grade_check_outputs(&list, &asg_st, csv, results);
+        rc = grade_check_outputs(&list, &asg_st, csv, gradescope ? gradescope : results);
     if (rc != SW_EXIT_OK) {
         grade_list_free(&list);
         return rc;
@@ -391,7 +437,13 @@ int sw_cmd_grade(int argc, char **argv)
         sw_signals_reraise(sw_signal_caught);
         return SW_EXIT_USAGE;
     }
-    rc = grade_finish(&list, &lim, wall, sw_sandbox_now() - start, csv, results);
+    double seconds = sw_sandbox_now() - start;
+    rc = grade_finish(&list, &lim, wall, seconds, csv, results);
+    if (gradescope) {
+        int grc = grade_write_gradescope(&list, &asg, gradescope, seconds, sw_jail_enabled());
+        if (grc != SW_EXIT_OK)
+            rc = grc;
+    }
     grade_list_free(&list);
     return rc;
 }

@@ -6,6 +6,7 @@
 #include <sys/types.h>
 
 #include "grade/assignment.h"
+#include "grade/points.h"
 #include "plugin/sandbox.h"
 #include "trace/trace.h"
 
@@ -20,11 +21,15 @@ typedef struct grade_entry {
     char message[1200];
     char *report;                        /* the plain report, or NULL */
     double seconds;
+    sw_score score;                      /* the assignment's points, check by check */
 } grade_entry;
 
 /* The verdict of an entry that was not graded (not a submission, a link, a
  * FIFO, ...): counted everywhere with score 0, its reason in message. */
 #define GRADE_SKIPPED 3
+/* The verdict of a submission that ran out of a limit (CPU time, the wall
+ * clock, a plugin's step time): not a wrong answer, scored 0. */
+#define GRADE_LIMIT 4
 
 /* A file or directory named for grading, by identity (grade_collect.c), so
  * no output can be written over or among the submissions. */
@@ -67,6 +72,12 @@ void grade_print_row(grade_entry *e);
  * place, or straight to stdout, a pipe or a device). Returns the exit status. */
 int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double seconds,
                  const char *csv, const char *results);
+/* Gradescope's results.json for one submission (its container's): the
+ * checks of each graded file as tests, the best file's total as the score,
+ * whole or not at all. jailed says how plugins ran. SW_EXIT_OK or
+ * SW_EXIT_USAGE (grade_gs.c). */
+int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const char *path,
+                           double seconds, int jailed);
 /* Remove dir and all that grading built in it (n: the submissions). */
 void grade_clean_dir(const char *dir, int n);
 

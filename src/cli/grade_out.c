@@ -68,7 +68,7 @@ void grade_list_free(grade_list *l)
 static const char *verdict_word(int status)
 {
     return status == 0 ? "pass" : status == 1 ? "fail" : status == GRADE_SKIPPED ? "skipped"
-                                                                          : "error";
+           : status == GRADE_LIMIT ? "limit" : "error";
 }
 
 /* The student: "# student:" when the trace gave one, else the file's name
@@ -87,6 +87,15 @@ static void student_of(const grade_entry *e, char *buf, size_t len)
         *dot = '\0';
 }
 
+/* "3/5": the points of the entry's checks ("-" when it has none). */
+static void grade_score_text(const grade_entry *e, char *buf, size_t len)
+{
+    if (e->score.n == 0)
+        snprintf(buf, len, "-");
+    else
+        snprintf(buf, len, "%g/%g", e->score.score, e->score.max);
+}
+
 void grade_print_head(const sw_assignment *a, int n, int ignored)
 {
     char dt[40], path[300];
@@ -97,7 +106,8 @@ void grade_print_head(const sw_assignment *a, int n, int ignored)
     if (ignored)
         fprintf(table(), "; %d other entr%s not graded (listed at the end)", ignored,
                 ignored == 1 ? "y" : "ies");
-    fprintf(table(), "\n  %-20s %-24s %-7s %6s  %s\n", "student", "file", "verdict", "step", "what");
+    fprintf(table(), "\n  %-20s %-24s %-7s %7s %6s  %s\n", "student", "file", "verdict", "score",
+            "step", "what");
     fflush(table());
 }
 
@@ -113,8 +123,10 @@ void grade_print_row(grade_entry *e)
         snprintf(step, sizeof step, "%ld", e->failing_step);
     else
         snprintf(step, sizeof step, "-");
-    fprintf(table(), "  %-20s %-24s %-7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), step,
-            m_esc);
+    char score[48];
+    grade_score_text(e, score, sizeof score);
+    fprintf(table(), "  %-20s %-24s %-7s %7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), score,
+            step, m_esc);
     fflush(table());
 }
 
@@ -264,14 +276,19 @@ static const grade_entry *row_at(const grade_list *l, int i)
 static void write_csv(FILE *f, const grade_list *l, const char *summary)
 {
     (void)summary;
-    fputs("student,file,verdict,first_failing_step,message\r\n", f);
+    fputs("student,file,verdict,score,max,first_failing_step,message\r\n", f);
     for (int i = 0; i < l->n + l->ignored; i++) {
         const grade_entry *e = row_at(l, i);
-        char student[SW_TRACE_STUDENT_MAX], step[24] = "";
+        char student[SW_TRACE_STUDENT_MAX], step[24] = "", score[32] = "", max[32] = "";
         student_of(e, student, sizeof student);
         if (e->failing_step >= 0)
             snprintf(step, sizeof step, "%ld", e->failing_step);
-        const char *cells[] = { student, e->path, verdict_word(e->status), step, e->message };
+        if (e->score.n > 0) {
+            snprintf(score, sizeof score, "%g", e->score.score);
+            snprintf(max, sizeof max, "%g", e->score.max);
+        }
+        const char *cells[] = { student, e->path, verdict_word(e->status), score, max, step,
+                                e->message };
         for (size_t c = 0; c < sizeof cells / sizeof cells[0]; c++) {
             sw_csv_field(f, cells[c]);
             fputs(c + 1 < sizeof cells / sizeof cells[0] ? "," : "\r\n", f);
@@ -282,10 +299,18 @@ static void write_csv(FILE *f, const grade_list *l, const char *summary)
 /* Gradescope's format: a score, its maximum, and one test per entry. */
 static void write_results(FILE *f, const grade_list *l, const char *summary)
 {
-    int passed = 0, rows = l->n + l->ignored;
-    for (int i = 0; i < l->n; i++)
-        passed += l->items[i].status == 0;
-    fprintf(f, "{\n  \"score\": %d,\n  \"max_score\": %d,\n  \"output\": ", passed, rows);
+    int rows = l->n + l->ignored;
+    double score = 0, max = 0;
+    for (int i = 0; i < rows; i++) {
+        const grade_entry *e = row_at(l, i);
+        score += e->score.n ? e->score.score : e->status == 0;
+        max += e->score.n ? e->score.max : 1;
+    }
+    fputs("{\n  \"score\": ", f);
+    sw_json_num(f, score);
+    fputs(",\n  \"max_score\": ", f);
+    sw_json_num(f, max);
+    fputs(",\n  \"output\": ", f);
     sw_json_str(f, summary);
     fputs(",\n  \"tests\": [", f);
     for (int i = 0; i < rows; i++) {
@@ -295,8 +320,12 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
         snprintf(name, sizeof name, "%s (%s)", student, e->path);
         fprintf(f, "%s\n    {\n      \"name\": ", i ? "," : "");
         sw_json_str(f, name);
-        fprintf(f, ",\n      \"score\": %d,\n      \"max_score\": 1,\n      \"status\": \"%s\",\n"
-                "      \"output\": ", e->status == 0, e->status == 0 ? "passed" : "failed");
+        fputs(",\n      \"score\": ", f);
+        sw_json_num(f, e->score.n ? e->score.score : e->status == 0);
+        fputs(",\n      \"max_score\": ", f);
+        sw_json_num(f, e->score.n ? e->score.max : 1);
+        fprintf(f, ",\n      \"status\": \"%s\",\n      \"output\": ",
+                e->status == 0 ? "passed" : "failed");
         char *text = e->report;
         char fallback[1400];
         if (!text) {
@@ -319,19 +348,20 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
 {
     for (int i = 0; i < l->ignored; i++)
         grade_print_row(&l->refused[i]);
-    int passed = 0, errors = 0;
+    int passed = 0, errors = 0, limits = 0;
     for (int i = 0; i < l->n; i++) {
         passed += l->items[i].status == 0;
         errors += l->items[i].status == 2;
+        limits += l->items[i].status == GRADE_LIMIT;
     }
     char summary[500], others[80] = "";
     if (l->ignored)
         snprintf(others, sizeof others, ", %d other entr%s not graded,", l->ignored,
                  l->ignored == 1 ? "y" : "ies");
     snprintf(summary, sizeof summary, "%d submission%s: %d passed, %d failed (%d of them "
-             "unusable)%s in %.1f s; the grader's limits per submission: %g s CPU, %zu MiB, %zu "
-             "KiB output, %g s wall, %g s per plugin step", l->n, l->n == 1 ? "" : "s", passed,
-             l->n - passed, errors, others, seconds, lim->cpu_seconds, lim->memory_bytes >> 20,
+             "unusable, %d out of a limit)%s in %.1f s; the grader's limits per submission: %g s "
+             "CPU, %zu MiB, %zu KiB output, %g s wall, %g s per plugin step", l->n,
+             l->n == 1 ? "" : "s", passed, l->n - passed, errors, limits, others, seconds, lim->cpu_seconds, lim->memory_bytes >> 20,
              lim->output_bytes >> 10, wall, sw_plugin_timeout());
     fprintf(table(), "%s\n", summary);
     fflush(table());

@@ -190,6 +190,8 @@ int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t err
             snprintf(list, sizeof list, "%s", x->value);
             for (char *c = strtok_r(list, ", ", &save); c && rc == SW_OK; c = strtok_r(NULL, ", ", &save))
                 rc = sw_coltol_parse(&a->coltols, c, 1, at, err, errlen);
+        } else if (strncmp(x->key, "points ", 7) == 0) {
+            rc = sw_points_parse(&a->points, x->key + 7, x->value, x->line, at, err, errlen);
         } else { /* "tolerance COL" */
             char text[320];
             const char *col = x->key + 10;
@@ -209,6 +211,8 @@ int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t err
             rc = sw_coltol_resolve(&a->coltols, sys, a->rtol, a->atol, buf, buf + n,
                                    (unsigned char *)(buf + 2 * n), err, errlen);
             free(buf);
+            if (rc == SW_OK)
+                rc = sw_points_resolve(&a->points, sys, a->path, err, errlen);
         }
     }
     sw_trace_read_close(&r);
@@ -269,6 +273,24 @@ static void run_length(const sw_trace_spec *spec, char *buf, size_t len)
     }
 }
 
+/* Whether two run lengths are the same run of a method with step dt:
+ * equal, or "until T" and "steps N" with T = N dt to a billionth of a step
+ * (the until run's last step is then dt to rounding) for a fixed-step
+ * method; an adaptive method counts accepted steps, so not for it. */
+static int same_length(const sw_trace_spec *a, const sw_trace_spec *b, double dt,
+                       const sw_integrator *m)
+{
+    if (a->steps > 0 && b->steps > 0)
+        return a->steps == b->steps;
+    if (a->steps == 0 && b->steps == 0)
+        return a->until == b->until;
+    if (m->flags & SW_ADAPTIVE)
+        return 0;
+    long n = a->steps > 0 ? a->steps : b->steps;
+    double until = a->steps > 0 ? b->until : a->until;
+    return fabs(until - (double)n * dt) <= 1e-9 * dt;
+}
+
 int sw_assignment_diff(const sw_assignment *a, const sw_trace_meta *m, const sw_system *trace_sys,
                        sw_header_diff *out, int max, int *comparable)
 {
@@ -299,7 +321,7 @@ int sw_assignment_diff(const sw_assignment *a, const sw_trace_meta *m, const sw_
         add_diff(out, max, &n, "integrator", m->integrator, list, m->integrator_line);
     if (m->dt != w->dt)
         add_num(out, max, &n, "dt", m->dt, w->dt, m->dt_line);
-    if (m->spec.steps != w->spec.steps || (m->spec.steps == 0 && m->spec.until != w->spec.until)) {
+    if (!same_length(&m->spec, &w->spec, w->dt, sw_assignment_method(a, m))) {
         char g[60], wt[60];
         run_length(&m->spec, g, sizeof g);
         run_length(&w->spec, wt, sizeof wt);

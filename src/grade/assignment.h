@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "grade/check.h"
+#include "grade/points.h"
 #include "trace/trace.h"
 
 #define SW_ASSIGN_METHODS 8
@@ -36,6 +37,7 @@ typedef struct sw_assignment {
     int nmethods;
     double rtol, atol;                        /* grading tolerances */
     sw_coltols coltols;
+    sw_points_set points;                     /* "# points" lines, or the defaults */
     char title[128];
 } sw_assignment;
 
@@ -62,7 +64,9 @@ typedef struct sw_header_diff {
 } sw_header_diff;
 
 /* Every difference between a trace's metadata m and the assignment, in
- * header order, up to max; returns how many. A different scene or a
+ * header order, up to max; returns how many. The same run written another
+ * way is no difference: "until: T" for "steps: N" when a fixed-step method
+ * takes N steps of dt to reach T (|T - N dt| <= 1e-9 dt), and the reverse. A different scene or a
  * different column count makes the numbers incomparable: *comparable 0. */
 int sw_assignment_diff(const sw_assignment *a, const sw_trace_meta *m, const sw_system *trace_sys,
                        sw_header_diff *out, int max, int *comparable);

@@ -75,6 +75,8 @@ static void compare_row(sw_check_result *res, const double *e, const double *g, 
         if (!ok) {
             res->values_failed++;
             note_failure(res, &cell);
+            if (tol->col_failed && tol->col_failed[c]++ == 0 && tol->col_first)
+                tol->col_first[c] = cell;
         }
         if (c == 0)
             continue;

@@ -36,16 +36,6 @@ int sw_row_next(sw_row_source *src, double *row, long *line, char *err, size_t e
 int sw_check_value(double expected, double got, double rtol, double atol,
                    double *abs_err, double *rel_err, double *ratio);
 
-/* Tolerances per column: column c passes |got - expected| <= atol[c] +
- * rtol[c]·|expected|; ignore[c] non-zero leaves it out. NULL arrays mean the
- * defaults for every column. Column 0 (step) always matches exactly. */
-typedef struct sw_check_tol {
-    double rtol, atol;          /* the defaults */
-    const double *col_rtol;     /* ncols, or NULL */
-    const double *col_atol;     /* ncols, or NULL */
-    const unsigned char *ignore; /* ncols, or NULL */
-} sw_check_tol;
-
 typedef enum sw_check_kind {
     SW_CHECK_VALUE = 1,    /* a value outside the tolerance */
     SW_CHECK_MISSING,      /* the trace ends before the reference */
@@ -62,6 +52,18 @@ typedef struct sw_check_cell {
     double expected, got;
     double abs_err, rel_err, ratio;
 } sw_check_cell;
+
+/* Tolerances per column: column c passes |got - expected| <= atol[c] +
+ * rtol[c]·|expected|; ignore[c] non-zero leaves it out. NULL arrays mean the
+ * defaults for every column. Column 0 (step) always matches exactly. */
+typedef struct sw_check_tol {
+    double rtol, atol;          /* the defaults */
+    const double *col_rtol;     /* ncols, or NULL */
+    const double *col_atol;     /* ncols, or NULL */
+    const unsigned char *ignore; /* ncols, or NULL */
+    long *col_failed;           /* ncols, or NULL: failures per column (zeroed by the caller) */
+    sw_check_cell *col_first;   /* ncols, or NULL: each column's first failure */
+} sw_check_tol;
 
 typedef struct sw_check_result {
     int pass;

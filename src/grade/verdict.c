@@ -132,8 +132,9 @@ static void message(sw_verdict *v, const char *what)
     const sw_run_end *plugin = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
     if (v->status == SW_VERDICT_PASS) {
         snprintf(m, len, "PASS: %s matches %s: %ld rows, %ld values within |got - expected| <= "
-                 "%g + %g*|expected|", what, v->reference, v->res.rows_compared,
-                 v->res.values_compared, v->atol, v->rtol);
+                 "%g + %g*|expected|%s%s%s", what, v->reference, v->res.rows_compared,
+                 v->res.values_compared, v->atol, v->rtol, v->warning[0] ? " (warning: " : "",
+                 v->warning, v->warning[0] ? ")" : "");
         return;
     }
     used += (size_t)snprintf(m + used, len - used, "FAIL: %s", what);
@@ -156,6 +157,8 @@ static void message(sw_verdict *v, const char *what)
     else if (used < len && !v->comparable)
         used += (size_t)snprintf(m + used, len - used, "; the numbers were not compared (other "
                                  "columns)");
+    if (used < len && v->warning[0])
+        used += (size_t)snprintf(m + used, len - used, " (warning: %s)", v->warning);
     (void)used;
 }
 
@@ -164,6 +167,8 @@ static void message(sw_verdict *v, const char *what)
 typedef struct tol_arrays {
     double *rtol, *atol;
     unsigned char *ignore;
+    long *col_failed;
+    sw_check_cell *col_first;
     sw_check_tol tol;
 } tol_arrays;
 
@@ -187,9 +192,82 @@ static int make_tol(const sw_check_request *req, const sw_system *sys, sw_verdic
     }
     t->atol = t->rtol + n;
     t->ignore = (unsigned char *)(t->rtol + 2 * n);
-    t->tol = (sw_check_tol){ v->rtol, v->atol, t->rtol, t->atol, t->ignore };
+    t->col_failed = calloc((size_t)n, sizeof *t->col_failed);
+    t->col_first = calloc((size_t)n, sizeof *t->col_first);
+    if (!t->col_failed || !t->col_first) {
+        snprintf(v->error, sizeof v->error, "out of memory for %d columns", n);
+        return SW_ENOMEM;
+    }
+    t->tol = (sw_check_tol){ v->rtol, v->atol, t->rtol, t->atol, t->ignore, t->col_failed,
+                             t->col_first };
     return sw_coltol_resolve(&all, sys, v->rtol, v->atol, t->rtol, t->atol, t->ignore, v->error,
                              sizeof v->error);
+}
+
+static void free_tol(tol_arrays *t)
+{
+    free(t->rtol);
+    free(t->col_failed);
+    free(t->col_first);
+}
+
+/* ---- points ------------------------------------------------------------------ */
+
+/* The assignment's checks, scored from what the check found. */
+static void score(sw_verdict *v, const sw_check_request *req, const sw_system *sys,
+                  const tol_arrays *t, const sw_integrator *ref)
+{
+    const sw_assignment *a = req->assignment;
+    if (!a)
+        return;
+    char header[700] = "", rows[600] = "";
+    size_t used = 0;
+    for (int i = 0; i < v->ndiffs && i < SW_VERDICT_DIFFS && used < sizeof header; i++) {
+        const sw_header_diff *d = &v->diffs[i];
+        char line[32] = "";
+        if (d->line > 0)
+            snprintf(line, sizeof line, " (line %ld)", d->line);
+        used += (size_t)snprintf(header + used, sizeof header - used, "%s%s: yours %s%s, the "
+                                 "assignment's %s", i ? "; " : "", d->what, d->got, line, d->want);
+    }
+    const sw_run_end *pf = v->got_end.fault ? &v->got_end : v->ref_end.fault ? &v->ref_end : NULL;
+    int rows_differ = v->res.rows_expected != v->res.rows_got || (t && t->col_failed[0] > 0);
+    if (rows_differ && v->res.have_first && v->res.first.column <= 0)
+        snprintf(rows, sizeof rows, "%s", v->first);
+    double want_stab = NAN;
+    if (ref && req->plugin && v->have_measure) {
+        for (int i = 0; i < a->points.n; i++)
+            if (a->points.items[i].kind == SW_POINTS_STABILITY) {
+                int kind;
+                char why[SW_ERRLEN];
+                if (sw_measure_stability(ref, &want_stab, &kind, why, sizeof why) == SW_OK)
+                    want_stab = kind == 1 ? 0.0 : kind == 2 ? INFINITY : want_stab;
+                else
+                    want_stab = NAN;
+            }
+    }
+    sw_score_facts f = {
+        .is_plugin = req->plugin != NULL,
+        .usable = sys != NULL && t != NULL,
+        .error = v->error,
+        .ndiffs = v->ndiffs,
+        .header_words = header,
+        .comparable = v->comparable,
+        .fault = pf ? pf->reason : NULL,
+        .fault_is_limit = pf && pf->fault == SW_PF_LIMIT,
+        .rows_differ = rows_differ,
+        .rows_words = rows,
+        .sys = sys,
+        .col_failed = t ? t->col_failed : NULL,
+        .col_first = t ? t->col_first : NULL,
+        .explanation = v->have_explanation ? v->explanation.message : NULL,
+        .order = v->have_measure ? v->order : NAN,
+        .expected_order = ref ? (double)ref->order : NAN,
+        .stability = v->have_measure ? v->stability : NAN,
+        .expected_stability = want_stab,
+        .measure_note = v->measure_note,
+    };
+    sw_points_score(&a->points, &f, &v->score);
 }
 
 static sw_verdict_status error(sw_verdict *v, const char *msg)
@@ -296,6 +374,9 @@ static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
     }
     if (rc == SW_OK)
         rc = sw_trace_read_header(&got, msg, sizeof msg);
+    if (rc == SW_OK && got.ignored[0])
+        snprintf(v->warning, sizeof v->warning, "column%s %.100s ignored: not in a %s trace",
+                 strchr(got.ignored, ',') ? "s" : "", got.ignored, gm->scene->name);
     if (rc == SW_OK)
         rc = make_tol(req, &got.sys, v, &tol);
     if (rc != SW_OK && !v->error[0])
@@ -323,9 +404,10 @@ static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
         }
         if (v->ref_end.fault != SW_PF_NONE)
             v->failing_step = v->ref_end.step;
+        score(v, req, &got.sys, &tol, NULL);
         message(v, req->trace);
     }
-    free(tol.rtol);
+    free_tol(&tol);
     if (have_sim)
         sw_sim_free(&sim);
     if (have_ref)
@@ -411,6 +493,7 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
             v->failing_step = v->got_end.step;
         if (req->measure && v->got_end.fault == SW_PF_NONE)
             measure(v, req->plugin);
+        v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
         /* The same "why" as a trace gets: the plugin's first rows, run
          * afresh, against the usual mistakes. A crash or overrun is its
          * own answer. */
@@ -424,11 +507,12 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
                 v->have_explanation = 1;
             }
         }
+        score(v, req, &ref_sim.sys, &tol, ref);
         char what[120];
         snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
         message(v, what);
     }
-    free(tol.rtol);
+    free_tol(&tol);
     sw_sim_free(&got_sim);
     sw_sim_free(&ref_sim);
     return rc == SW_OK ? v->status : error(v, v->error);
@@ -440,5 +524,8 @@ sw_verdict_status sw_check_run(const sw_check_request *req, sw_verdict *v)
     v->failing_step = -1;
     v->order = v->stability = NAN;
     v->dt = NAN;
-    return req->trace ? check_trace(req, v) : check_plugin(req, v);
+    sw_verdict_status st = req->trace ? check_trace(req, v) : check_plugin(req, v);
+    if (st == SW_VERDICT_ERROR)
+        score(v, req, NULL, NULL, NULL);
+    return st;
 }

@@ -12,6 +12,7 @@
 #include "grade/assignment.h"
 #include "grade/check.h"
 #include "grade/explain.h"
+#include "grade/points.h"
 #include "plugin/plugin.h"
 
 #define SW_VERDICT_DIFFS 16
@@ -80,6 +81,9 @@ typedef struct sw_verdict {
     int stability_kind;
     char measure_note[SW_ERRLEN];
     long failing_step;                 /* the first failing step; -1 none */
+    int limit;                         /* the plugin ran out of a resource limit */
+    char warning[160];                 /* e.g. extra columns ignored; "" none */
+    sw_score score;                    /* the assignment's points, check by check */
     char message[1600];                /* the verdict in one line */
 } sw_verdict;
 

@@ -344,6 +344,9 @@ static void box_dead(step_box *b, const sw_child_end *end)
     if (end->exited) {
         snprintf(why, sizeof why, "ended its process with exit(%d) in its step", end->code);
         box_fail(b, SW_PF_EXIT, why, "(a step must return, never exit)");
+    } else if (end->signal == SIGXCPU) {
+        box_fail(b, SW_PF_LIMIT, how, "(the grader's CPU-time limit: a correct but slow plugin "
+                 "ends here too)");
     } else {
         box_fail(b, SW_PF_CRASH, how, NULL);
     }

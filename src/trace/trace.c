@@ -233,7 +233,7 @@ static char *next_cell(char **cursor)
 
 int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
 {
-    int rc = set_cap(r, 64 + (size_t)r->ncols * SW_TRACE_CELL_MAX, err, errlen);
+    int rc = set_cap(r, 64 + (size_t)(r->ncols + SW_TRACE_EXTRA_COLS) * SW_TRACE_CELL_MAX, err, errlen);
     if (rc != SW_OK)
         return rc;
     rc = read_line(r, err, errlen);
@@ -245,37 +245,46 @@ int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
     if (rc < 0)
         return rc;
     free(r->col_of);
-    r->col_of = malloc((size_t)r->ncols * sizeof *r->col_of);
+    r->col_of = malloc((size_t)(r->ncols + SW_TRACE_EXTRA_COLS) * sizeof *r->col_of);
     unsigned char *seen = calloc((size_t)r->ncols, 1);
     if (!r->col_of || !seen) {
         free(seen);
         snprintf(err, errlen, "%s: out of memory for %d columns", r->name, r->ncols);
         return SW_ENOMEM;
     }
-    /* Columns are matched by name, in any order; each exactly once. */
+    /* Columns are matched by name, in any order; each exactly once. A name
+     * the scene does not have is an extra column: the same run with more
+     * written, so it is skipped (a few of them), and named for a warning. */
     char *cursor = r->buf, *cell, want[32], show[48];
-    int c = 0;
+    int c = 0, extra = 0;
+    r->ignored[0] = '\0';
     rc = SW_OK;
     while (rc == SW_OK && (cell = next_cell(&cursor))) {
         int idx = sw_trace_colindex(&r->sys, cell);
-        if (c == r->ncols)
-            rc = tr_fail(r, err, errlen, "extra column '%s' in the header: a %s trace with these "
-                         "parameters has %d columns", tr_shown(cell, strlen(cell), show),
-                         r->sys.scene->name, r->ncols);
-        else if (idx < 0)
+        if (idx < 0 && extra == SW_TRACE_EXTRA_COLS)
             rc = tr_fail(r, err, errlen, "header column %d is '%s', which a %s trace with these "
                          "parameters does not have (columns: step, t, x<i>, y<i>%s per particle "
-                         "for i < %d%s; in any order)", c + 1, tr_shown(cell, strlen(cell), show),
-                         r->sys.scene->name, r->sys.ode->order == 2 ? ", vx<i>, vy<i>" : "",
-                         r->sys.n, r->sys.scene->energy ? ", energy" : "");
-        else if (seen[idx])
-            rc = tr_fail(r, err, errlen, "header column %d, '%s', appears twice", c + 1,
+                         "for i < %d%s; in any order; at most %d extra columns are ignored)",
+                         c + extra + 1, tr_shown(cell, strlen(cell), show), r->sys.scene->name,
+                         r->sys.ode->order == 2 ? ", vx<i>, vy<i>" : "", r->sys.n,
+                         r->sys.scene->energy ? ", energy" : "", SW_TRACE_EXTRA_COLS);
+        else if (idx < 0 && !*cell)
+            rc = tr_fail(r, err, errlen, "header column %d has no name", c + extra + 1);
+        else if (idx < 0) {
+            size_t used = strlen(r->ignored);
+            snprintf(r->ignored + used, sizeof r->ignored - used, "%s%s", used ? ", " : "",
+                     tr_shown(cell, strlen(cell), show));
+            r->col_of[c + extra++] = -1;
+        } else if (seen[idx])
+            rc = tr_fail(r, err, errlen, "header column %d, '%s', appears twice", c + extra + 1,
                          tr_shown(cell, strlen(cell), show));
         else {
             seen[idx] = 1;
-            r->col_of[c++] = idx;
+            r->col_of[c + extra] = idx;
+            c++;
         }
     }
+    r->nhead = c + extra;
     if (rc == SW_OK && c < r->ncols) {
         int missing = 0;
         while (seen[missing])
@@ -339,10 +348,14 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
         char *cursor = r->buf, *cell;
         int c = 0;
         while ((cell = next_cell(&cursor))) {
-            if (c == r->ncols)
+            if (c == r->nhead)
                 return tr_fail(r, err, errlen, "the row has more than the header's %d cells "
-                            "(extra '%s')", r->ncols, tr_shown(cell, strlen(cell), show));
+                            "(extra '%s')", r->nhead, tr_shown(cell, strlen(cell), show));
             int col = r->col_of[c];
+            if (col < 0) { /* an extra column: not read */
+                c++;
+                continue;
+            }
             sw_trace_colname(&r->sys, col, name, sizeof name);
             if (!*cell)
                 return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
@@ -359,10 +372,16 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
             row[col] = v;
             c++;
         }
-        if (c < r->ncols) {
-            sw_trace_colname(&r->sys, r->col_of[c], name, sizeof name);
+        if (c < r->nhead) {
+            int at = c;
+            while (r->col_of[at] < 0 && at + 1 < r->nhead)
+                at++;
+            if (r->col_of[at] < 0)
+                snprintf(name, sizeof name, "an extra column");
+            else
+                sw_trace_colname(&r->sys, r->col_of[at], name, sizeof name);
             return tr_fail(r, err, errlen, "the row has %d cells; the header has %d (missing '%s' "
-                        "onwards)", c, r->ncols, name);
+                        "onwards)", c, r->nhead, name);
         }
         r->rows++;
         return 1;

@@ -20,7 +20,8 @@
 #define SW_TRACE_MAX_ROWS (SW_TRACE_MAX_STEPS + 1)
 /* Longest metadata line, in bytes (the first line and every "# key: value"). */
 #define SW_TRACE_META_MAX 4096
-/* Row and header lines may hold up to 64 + SW_TRACE_CELL_MAX bytes per column. */
+/* Row and header lines may hold up to 64 + SW_TRACE_CELL_MAX bytes per column
+ * (the scene's columns and SW_TRACE_EXTRA_COLS more). */
 #define SW_TRACE_CELL_MAX 48
 #define SW_TRACE_PATH_MAX 4096
 #define SW_TRACE_NAME_MAX 64
@@ -104,6 +105,8 @@ void sw_trace_abort(sw_trace_writer *w);
 #define SW_TRACE_TOL_MIN 1e-14
 /* An assignment's own keys (tolerance, ignore, title), kept as text. */
 #define SW_TRACE_EXTRAS 32
+/* Columns a header may carry beyond the scene's (ignored, with a warning). */
+#define SW_TRACE_EXTRA_COLS 8
 
 typedef struct sw_trace_extra {
     char key[48];
@@ -143,7 +146,9 @@ typedef struct sw_trace_reader {
     sw_system sys;                    /* built from the metadata: gives the columns */
     int have_sys;
     int ncols;
-    int *col_of;                      /* header position -> column (step, t, x0, ...) */
+    int *col_of;                      /* header position -> column (step, t, x0, ...); -1 ignored */
+    int nhead;                        /* cells in the header: ncols + the ignored ones */
+    char ignored[96];                 /* the extra columns' names, ", "-separated ("" none) */
     long rows;
     long max_rows;                    /* the most rows the metadata's run can give */
     long blank_line;                  /* first empty line since the last row; 0: none */
@@ -164,7 +169,9 @@ int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t e
 int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
                           size_t errlen);
 /* Read the header row: every column of the scene once, in any order, matched
- * by name (rows are returned in the canonical order). 0 or an error. */
+ * by name (rows are returned in the canonical order). Up to
+ * SW_TRACE_EXTRA_COLS other names (e.g. "ke") are ignored, their cells
+ * skipped, and listed in r->ignored for a warning. 0 or an error. */
 int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen);
 /* Read the next row into row (ncols values in the canonical column order,
  * step, t, x0, ...; non-finite allowed). 1 a row,

@@ -18,7 +18,7 @@
 static const char *const known_keys =
     "version, scene, param NAME, integrator, dt, steps, until, every, rtol, atol, diverged, "
     "student, note";
-static const char *const assignment_keys = "tolerance, tolerance COL, ignore, title";
+static const char *const assignment_keys = "tolerance, tolerance COL, ignore, title, points WHAT";
 
 static const char *const key_names[K_COUNT] = { "version", "scene", "integrator", "dt", "steps",
                                                 "until", "every", "rtol", "atol", "diverged",
@@ -62,7 +62,7 @@ static int extra_key(sw_trace_reader *r, const char *key, const char *value, cha
 {
     sw_trace_meta *m = &r->meta;
     if (m->nextras == SW_TRACE_EXTRAS)
-        return tr_fail(r, err, errlen, "more than %d tolerance, ignore and title lines",
+        return tr_fail(r, err, errlen, "more than %d tolerance, ignore, points and title lines",
                        SW_TRACE_EXTRAS);
     if (strlen(key) >= sizeof m->extras[0].key || strlen(value) >= sizeof m->extras[0].value)
         return tr_fail(r, err, errlen, "'%.40s' has a key or value that is too long", key);
@@ -76,7 +76,7 @@ static int extra_key(sw_trace_reader *r, const char *key, const char *value, cha
 static int is_assignment_key(const char *key)
 {
     return strcmp(key, "tolerance") == 0 || strncmp(key, "tolerance ", 10) == 0 ||
-           strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0;
+           strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0 || strncmp(key, "points ", 7) == 0;
 }
 
 /* One "# key: value" line (r->buf). */

@@ -1,0 +1,265 @@
+/* Partial credit: the assignment's "# points" lines and a submission's score
+ * on each check. Invariant: a column is in at most one group, so no value is
+ * paid for twice; a check the submission's kind cannot have (a trace's
+ * order) is left out, not scored 0. */
+#include "grade/points.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "grade/assignment.h"
+#include "stepwise/stepwise.h"
+#include "util/num.h"
+
+static int column_matches(const char *pattern, const char *name, size_t len)
+{
+    if (len > 0 && pattern[len - 1] == '*')
+        return strncmp(pattern, name, len - 1) == 0;
+    return strlen(name) == len && strncmp(pattern, name, len) == 0;
+}
+
+int sw_points_has_column(const sw_points *p, const char *column)
+{
+    const char *s = p->what;
+    while (*s) {
+        while (*s == ' ')
+            s++;
+        size_t len = strcspn(s, " ");
+        if (len > 0 && column_matches(s, column, len))
+            return 1;
+        s += len;
+    }
+    return 0;
+}
+
+int sw_points_parse(sw_points_set *set, const char *what, const char *value, long line,
+                    const char *where, char *err, size_t errlen)
+{
+    while (*what == ' ')
+        what++;
+    if (set->n == SW_POINTS_MAX) {
+        snprintf(err, errlen, "%s: more than %d points lines", where, SW_POINTS_MAX);
+        return SW_EINVAL;
+    }
+    sw_points *p = &set->items[set->n];
+    memset(p, 0, sizeof *p);
+    double v;
+    if (sw_parse_double(value, &v) != SW_OK || !(v >= 0 && v <= SW_POINTS_LIMIT)) {
+        snprintf(err, errlen, "%s: 'points %.40s' wants a number of points from 0 to %g, not "
+                 "'%.40s'", where, what, SW_POINTS_LIMIT, value);
+        return SW_EINVAL;
+    }
+    if (!*what || strlen(what) >= sizeof p->what) {
+        snprintf(err, errlen, "%s: 'points' wants what it pays for: header, order, stability, or "
+                 "column names (x0, energy, 'x*' for every x<i>)", where);
+        return SW_EINVAL;
+    }
+    snprintf(p->what, sizeof p->what, "%s", what);
+    p->kind = strcmp(what, "header") == 0      ? SW_POINTS_HEADER
+              : strcmp(what, "order") == 0     ? SW_POINTS_ORDER
+              : strcmp(what, "stability") == 0 ? SW_POINTS_STABILITY
+                                               : SW_POINTS_COLUMNS;
+    p->points = v;
+    p->line = line;
+    for (int i = 0; i < set->n; i++)
+        if (set->items[i].kind != SW_POINTS_COLUMNS && set->items[i].kind == p->kind) {
+            snprintf(err, errlen, "%s: 'points %s' is given twice (line %ld too)", where, what,
+                     set->items[i].line);
+            return SW_EINVAL;
+        }
+    set->n++;
+    return SW_OK;
+}
+
+int sw_points_resolve(sw_points_set *set, const sw_system *sys, const char *path, char *err,
+                      size_t errlen)
+{
+    if (set->n == 0) {
+        set->items[0] = (sw_points){ SW_POINTS_HEADER, "header", 1, 0 };
+        set->items[1] = (sw_points){ SW_POINTS_COLUMNS, "*", 1, 0 };
+        set->n = 2;
+        return SW_OK;
+    }
+    int ncols = sw_trace_ncols(sys);
+    char name[32];
+    for (int i = 0; i < set->n; i++) {
+        const sw_points *p = &set->items[i];
+        if (p->kind != SW_POINTS_COLUMNS)
+            continue;
+        /* Each name or prefix must match a column of the run. */
+        const char *s = p->what;
+        while (*s) {
+            while (*s == ' ')
+                s++;
+            size_t len = strcspn(s, " ");
+            int hits = 0;
+            for (int c = 1; c < ncols && len > 0; c++) {
+                sw_trace_colname(sys, c, name, sizeof name);
+                hits += column_matches(s, name, len);
+            }
+            if (len > 0 && hits == 0) {
+                snprintf(err, errlen, "%.200s:%ld: 'points %s': no column '%.*s' in a %s trace "
+                         "(columns: t, x<i>, y<i>%s%s; a prefix ending in '*' names several)",
+                         path, p->line, p->what, (int)len, s, sys->scene->name,
+                         sys->ode->order == 2 ? ", vx<i>, vy<i>" : "",
+                         sys->scene->energy ? ", energy" : "");
+                return SW_EINVAL;
+            }
+            s += len;
+        }
+        for (int c = 1; c < ncols; c++) {
+            sw_trace_colname(sys, c, name, sizeof name);
+            if (!sw_points_has_column(p, name))
+                continue;
+            for (int j = 0; j < i; j++)
+                if (set->items[j].kind == SW_POINTS_COLUMNS && sw_points_has_column(&set->items[j], name)) {
+                    snprintf(err, errlen, "%.200s:%ld: column %s is paid for twice: by 'points %s' "
+                             "and by line %ld's 'points %s'", path, p->line, name, p->what,
+                             set->items[j].line, set->items[j].what);
+                    return SW_EINVAL;
+                }
+        }
+    }
+    return SW_OK;
+}
+
+/* ---- scoring --------------------------------------------------------------- */
+
+static void give(sw_score_check *c, int pass, const char *fmt, const char *a, const char *b)
+{
+    c->score = pass ? c->max : 0;
+    snprintf(c->output, sizeof c->output, fmt, a ? a : "", b ? b : "");
+}
+
+static void score_columns(const sw_points *p, const sw_score_facts *f, sw_score_check *c)
+{
+    int ncols = sw_trace_ncols(f->sys);
+    long failed = 0, values = 0;
+    const sw_check_cell *first = NULL;
+    char name[32], first_name[32] = "";
+    for (int col = 1; col < ncols; col++) {
+        sw_trace_colname(f->sys, col, name, sizeof name);
+        if (!sw_points_has_column(p, name))
+            continue;
+        values++;
+        failed += f->col_failed[col];
+        const sw_check_cell *cell = &f->col_first[col];
+        if (f->col_failed[col] > 0 && (!first || cell->step < first->step)) {
+            first = cell;
+            snprintf(first_name, sizeof first_name, "%s", name);
+        }
+    }
+    if (f->fault) {
+        give(c, 0, "not scored: %s", f->fault, NULL);
+        return;
+    }
+    if (!f->comparable) {
+        give(c, 0, "not compared: the trace has other columns than the assignment's run%s%s",
+             NULL, NULL);
+        return;
+    }
+    if (failed == 0 && !f->rows_differ) {
+        snprintf(c->output, sizeof c->output, "every value of %s matches the reference within "
+                 "the tolerance", strcmp(p->what, "*") == 0 ? "every column" : p->what);
+        c->score = c->max;
+        return;
+    }
+    char what[400];
+    if (first) {
+        char e[40], g[40];
+        sw_fmt_shortest(e, sizeof e, first->expected);
+        sw_fmt_shortest(g, sizeof g, first->got);
+        snprintf(what, sizeof what, "%ld value%s of %s outside the tolerance; the first at step "
+                 "%ld, t = %g, column %s: expected %s, got %s", failed, failed == 1 ? "" : "s",
+                 strcmp(p->what, "*") == 0 ? "the run" : p->what, first->step, first->t,
+                 first_name, e, g);
+    } else
+        snprintf(what, sizeof what, "%s", f->rows_words ? f->rows_words : "rows missing or extra");
+    (void)values;
+    give(c, 0, "%s%s", what, "");
+    if (f->explanation && *f->explanation) {
+        size_t used = strlen(c->output);
+        snprintf(c->output + used, sizeof c->output - used, "; %s", f->explanation);
+    }
+}
+
+static void score_measure(const sw_points *p, const sw_score_facts *f, sw_score_check *c)
+{
+    int order = p->kind == SW_POINTS_ORDER;
+    double got = order ? f->order : f->stability;
+    double want = order ? f->expected_order : f->expected_stability;
+    char g[40], w[40];
+    snprintf(g, sizeof g, "%.3g", got);
+    snprintf(w, sizeof w, "%.3g", want);
+    if (f->fault) {
+        give(c, 0, "not measured: %s", f->fault, NULL);
+        return;
+    }
+    if (isnan(got) || isnan(want)) {
+        give(c, 0, "not measured: %s", f->measure_note && *f->measure_note ? f->measure_note
+                                                                          : "no figure", NULL);
+        return;
+    }
+    /* An order within half of the method's; a stability limit within 5 %
+     * (both unbounded, or both none, match). */
+    int pass = order ? fabs(got - want) < 0.5
+                     : (isinf(got) && isinf(want)) || (got == 0 && want == 0) ||
+                           (isfinite(got) && isfinite(want) && fabs(got - want) <= 0.05 * fabs(want));
+    if (order)
+        give(c, pass, pass ? "measured order %s, the method's %s"
+                           : "measured order %s; the method's is %s", g, w);
+    else
+        give(c, pass, pass ? "stability limit omega*dt = %s, the method's %s"
+                           : "stability limit omega*dt = %s; the method's is %s", g, w);
+}
+
+void sw_points_score(const sw_points_set *set, const sw_score_facts *f, sw_score *s)
+{
+    memset(s, 0, sizeof *s);
+    for (int i = 0; i < set->n; i++) {
+        const sw_points *p = &set->items[i];
+        if (f->is_plugin && p->kind == SW_POINTS_HEADER)
+            continue; /* a plugin has no header: its run is the assignment's */
+        if (!f->is_plugin && (p->kind == SW_POINTS_ORDER || p->kind == SW_POINTS_STABILITY))
+            continue; /* measured on plugins only */
+        sw_score_check *c = &s->checks[s->n++];
+        c->max = p->points;
+        switch (p->kind) {
+        case SW_POINTS_HEADER:
+            snprintf(c->name, sizeof c->name, "header");
+            break;
+        case SW_POINTS_COLUMNS:
+            snprintf(c->name, sizeof c->name, "values: %s",
+                     strcmp(p->what, "*") == 0 ? "every column" : p->what);
+            break;
+        case SW_POINTS_ORDER:
+            snprintf(c->name, sizeof c->name, "order");
+            break;
+        case SW_POINTS_STABILITY:
+            snprintf(c->name, sizeof c->name, "stability");
+            break;
+        }
+        if (!f->usable) {
+            give(c, 0, "not scored: %s", f->error, NULL);
+        } else {
+            switch (p->kind) {
+            case SW_POINTS_HEADER:
+                if (f->ndiffs == 0)
+                    give(c, 1, "the header states the assignment's run%s%s", NULL, NULL);
+                else
+                    give(c, 0, "%s%s", f->header_words, NULL);
+                break;
+            case SW_POINTS_COLUMNS:
+                score_columns(p, f, c);
+                break;
+            case SW_POINTS_ORDER:
+            case SW_POINTS_STABILITY:
+                score_measure(p, f, c);
+                break;
+            }
+        }
+        s->score += c->score;
+        s->max += c->max;
+    }
+}

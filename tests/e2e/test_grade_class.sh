@@ -178,8 +178,8 @@ function field(    f, c) {
         if (pos > length(line)) break
         bad = 1; break
     }
-    if (bad || n != 5) { print "malformed line " NR ": " $0 > "/dev/stderr"; exit 1 }
-    if (NR == 1) { if (line != "student,file,verdict,first_failing_step,message") exit 1; next }
+    if (bad || n != 8) { print "malformed line " NR ": " $0 > "/dev/stderr"; exit 1 }
+    if (NR == 1) { if (line != "student,file,verdict,first_failing_step,message,id,remarks,similar") exit 1; next }
     printf "%s\t%s\t%s\t%s\t%s\n", F[2], F[3], F[4], F[5], F[1]
 }
 AWK

@@ -1,0 +1,142 @@
+#!/bin/sh
+# A course graded with a roster (issue 22): ten students, eight of whom
+# submitted in the ways the platforms name files (a plain id prefix, a
+# Canvas download, a Moodle folder, a Gradescope submission_ID folder with
+# its metadata, plugins named after their authors); one trace claims a
+# classmate's name; two students did not submit; a README, an unknown file
+# and a file that names nobody are listed. Then: --similarity flags the
+# plugin copied with renamed variables and reformatted code, not the
+# independent one; --feedback writes one report per student; -j 2 gives
+# the table and gradebook -j 1 gives, byte for byte; a regrade of one
+# student updates one row and keeps the others; --fresh starts over.
+. "$(dirname "$0")/lib.sh"
+mkdir class
+cat > assignment.txt <<'A'
+# stepwise assignment 1
+# title: homework 4, classical Runge-Kutta on a hanging spring
+# scene: spring
+# integrator: rk4
+# dt: 0.01
+# steps: 100
+A
+cat > roster.csv <<'R'
+Name,SID,Email
+Ada Lovelace,s1001,ada@uni.edu
+Blaise Pascal,s1002,blaise@uni.edu
+"Gauss, Carl",s1003,gauss@uni.edu
+Dana Scott,s1004,dana@uni.edu
+Emmy Noether,s1005,emmy@uni.edu
+Felix Klein,s1006,felix@uni.edu
+Grace Hopper,s1007,grace@uni.edu
+Hedy Lamarr,s1008,hedy@uni.edu
+Alan Turing,s1009,alan@uni.edu
+Kurt Goedel,s1010,kurt@uni.edu
+R
+"$SW" record spring -i rk4 --dt 0.01 --steps 100 -o ref.trace >/dev/null 2>&1 || fail "cannot record"
+"$SW" record spring -i euler --dt 0.01 --steps 100 -o euler.trace >/dev/null 2>&1 || fail "cannot record"
+claim() { sed "s/^# scene/# student: $1\n# scene/" "$2"; }
+claim "Ada Lovelace" ref.trace > class/s1001_rk4.trace                          # a plain id
+claim "Blaise Pascal" euler.trace > class/pascalblaise_4711_998877_hw4.trace   # Canvas, wrong
+mkdir "class/Carl Gauss_55_assignsubmission_file_"                              # Moodle
+claim "Carl Gauss" ref.trace > "class/Carl Gauss_55_assignsubmission_file_/rk4.trace"
+mkdir class/submission_216975964                                               # Gradescope
+claim "Dana" ref.trace > class/submission_216975964/rk4.trace
+cat > class/submission_metadata.yml <<'Y'
+submission_216975964:
+  :submitters:
+  - :name: Dana Scott
+    :sid: 's1004'
+    :email: dana@uni.edu
+  :created_at: 2026-12-02 02:52:07.938335000 Z
+Y
+claim "Ada Lovelace" ref.trace > class/emmy_noether.trace   # claims a classmate's name
+cp "$ROOT/tests/data/similar/rk4_alice.c" class/felix_klein_rk4.c
+cp "$ROOT/tests/data/similar/rk4_alice_copy.c" class/s1007_rk4.c   # Grace: the copy
+cp "$ROOT/tests/data/similar/rk4_bob.c" class/hedy_lamarr.c        # independent
+claim "Nobody" ref.trace > class/zz_unknown.trace
+echo "my answers are in the .c file" > class/README.txt
+printf 'PK\003\004' > class/notes.docx
+export STEPWISE_INCLUDE="$ROOT/include"
+
+"$SW" grade --assignment assignment.txt --roster roster.csv --similarity --feedback fb \
+    --csv grades.csv -j 2 class > table 2> err
+rc=$?
+[ $rc -eq 1 ] || fail "exit $rc, want 1 (some did not pass): $(cat err table)"
+# row STUDENT VERDICT REGEX: the table has such a row
+has() { grep -E "$1" table > /dev/null || fail "the table lacks '$1': $(cat table)"; }
+has "^  Ada Lovelace +s1001_rk4.trace +pass"
+has "^  Blaise Pascal +pascalblaise_4711_998877... +fail .*euler"
+has "^  Carl Gauss +rk4.trace +pass"
+has "^  Dana Scott +rk4.trace +pass"
+has "^  Emmy Noether +emmy_noether.trace +pass"
+has "roster: .*Ada Lovelace.*not believed"
+has "^  Felix Klein +felix_klein_rk4.c +pass"
+has "^  Grace Hopper +s1007_rk4.c +pass"
+has "^  Hedy Lamarr +hedy_lamarr.c +pass"
+has "^  Alan Turing .*missing"
+has "^  Kurt Goedel .*missing"
+has "README.txt +skipped"
+has "notes.docx +skipped"
+has "submission_metadata.yml +skipped .*Gradescope"
+has "^  \[zz_unknown\] +zz_unknown.trace .*pass"
+has "roster: matches no roster student"
+has "2 students on the roster without a submission"
+# Similarity: the copy with renamed variables is flagged; the independent
+# plugin and the correct traces are not.
+has "similar pairs"
+grep -E "Felix Klein \(felix_klein_rk4.c\)  ~  Grace Hopper \(s1007_rk4.c\)|Grace Hopper \(s1007_rk4.c\)  ~  Felix Klein \(felix_klein_rk4.c\)" table >/dev/null ||
+    fail "the copied plugin is not flagged: $(cat table)"
+grep "~" table | grep -q "Hedy" && fail "the independent plugin is flagged: $(grep '~' table)"
+grep "~" table | grep -q "trace" && fail "a correct trace is flagged: $(grep '~' table)"
+
+# The gradebook: a row per entry and per missing student, the columns kept.
+head -1 grades.csv | grep -q "^student,file,verdict,first_failing_step,message,id,remarks,similar" ||
+    fail "gradebook header: $(head -1 grades.csv)"
+[ "$(wc -l < grades.csv)" -eq 15 ] || fail "gradebook has $(wc -l < grades.csv) lines, want 15: $(cat grades.csv)"
+grep -q '^Alan Turing,,missing,,.*,s1009,' grades.csv || fail "no missing row for Alan Turing: $(cat grades.csv)"
+grep '^Grace Hopper,' grades.csv | grep -q "Felix Klein" || fail "Grace's row lacks the pair"
+grep '^Emmy Noether,' grades.csv | grep -q "not believed" || fail "Emmy's row lacks the claim"
+
+# Feedback: a file per student, names made safe, the full report inside.
+[ -f fb/Ada_Lovelace.txt ] || fail "no feedback for Ada: $(ls fb)"
+grep -q "s1001_rk4.trace: pass" fb/Ada_Lovelace.txt || fail "Ada's feedback: $(cat fb/Ada_Lovelace.txt)"
+grep -q "No submission" fb/Alan_Turing.txt || fail "Alan's feedback: $(cat fb/Alan_Turing.txt)"
+grep -q "euler" fb/Blaise_Pascal.txt || fail "Blaise's feedback: $(cat fb/Blaise_Pascal.txt)"
+[ "$(ls fb | wc -l)" -ge 10 ] || fail "feedback files: $(ls fb)"
+ls -a fb | grep -q tmp && fail "a temporary left in fb: $(ls -a fb)"
+
+# -j 1 gives the same table and the same gradebook, byte for byte.
+"$SW" grade --assignment assignment.txt --roster roster.csv --similarity --csv grades1.csv \
+    --fresh -j 1 class > table1 2>/dev/null
+"$SW" grade --assignment assignment.txt --roster roster.csv --similarity --csv grades2.csv \
+    --fresh -j 2 class > table2 2>/dev/null
+cmp grades1.csv grades2.csv || fail "-j 1 and -j 2 gradebooks differ: $(diff grades1.csv grades2.csv)"
+cmp grades.csv grades2.csv || fail "gradebooks differ from the first run"
+grep -v "passed, .* failed" table1 > t1; grep -v "passed, .* failed" table2 > t2
+cmp t1 t2 || fail "-j 1 and -j 2 tables differ: $(diff t1 t2)"
+
+# Regrade one student: Blaise fixes his trace; his row is updated, the
+# other fourteen lines stay as they were.
+claim "Blaise Pascal" ref.trace > class/pascalblaise_4711_998877_hw4.trace
+cp grades.csv before.csv
+"$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv \
+    class/pascalblaise_4711_998877_hw4.trace > regrade 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "regrade exit $rc: $(cat regrade)"
+grep -q "updated 1 row, kept 13" regrade || fail "the regrade does not say what it kept: $(cat regrade)"
+[ "$(wc -l < grades.csv)" -eq 15 ] || fail "regrade left $(wc -l < grades.csv) lines: $(cat grades.csv)"
+grep -q '^Blaise Pascal,class/pascalblaise_4711_998877_hw4.trace,pass,' grades.csv ||
+    fail "Blaise's row not updated: $(grep Blaise grades.csv)"
+grep -v '^Blaise' before.csv > b1; grep -v '^Blaise' grades.csv > b2
+cmp b1 b2 || fail "other rows changed: $(diff b1 b2)"
+# A gradebook of other columns is not overwritten by a regrade.
+printf 'name,score\r\nx,1\r\n' > other.csv
+"$SW" grade --assignment assignment.txt --csv other.csv class/s1001_rk4.trace > o 2>&1 &&
+    fail "a foreign CSV was updated"
+grep -q "not a gradebook to update" o || fail "foreign CSV: $(cat o)"
+# --fresh starts over: one graded row and the nine students it has not seen.
+"$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv --fresh \
+    class/pascalblaise_4711_998877_hw4.trace > fresh 2>&1
+grep -q "kept" fresh && fail "--fresh kept rows: $(cat fresh)"
+[ "$(wc -l < grades.csv)" -eq 11 ] || fail "--fresh wrote $(wc -l < grades.csv) lines: $(cat grades.csv)"
+echo ok

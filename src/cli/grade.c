@@ -11,6 +11,7 @@
 #include <limits.h>
 #include <math.h>
 #include <poll.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -19,6 +20,7 @@
 #include "cli/check_report.h"
 #include "cli/grade.h"
 #include "plugin/sandbox.h"
+#include "grade/similar.h"
 #include "grade/verdict.h"
 #include "util/signals.h"
 #include "util/tmpdir.h"
@@ -78,7 +80,8 @@ static const char grade_help[] =
     "\n"
     "exit status: 0 every entry passed, 1 some did not (or were skipped), 2 bad usage.\n";
 
-/* What a submission's child sends back: this, then report_len bytes. */
+/* What a submission's child sends back: this, then report_len bytes, then
+ * nwrong grade_wrong_row (--similarity). */
 typedef struct grade_record {
     int status;
     long failing_step;
@@ -87,6 +90,7 @@ typedef struct grade_record {
     char kind[24];
     char message[1200];
     unsigned report_len;
+    unsigned nwrong;
 } grade_record;
 
 typedef struct grade_job {
@@ -97,6 +101,7 @@ typedef struct grade_job {
     const sw_check_request *base;
     size_t report_max;
     grade_list *list;        /* the class so far: wiped in the worker */
+    int similarity;          /* send a failing trace's wrong rows */
     const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
 } grade_job;
 
@@ -156,6 +161,41 @@ static void short_reason(const sw_verdict *v, char *buf, size_t len)
         snprintf(buf, len, "%.1000s", v->first);
 }
 
+/* A failing trace's rows from its first failing step on, each as its row
+ * number and a digest of its values (bit for bit; -0 as 0, every NaN one
+ * NaN), at most SW_SIMILAR_ROWS_MAX: what --similarity compares. */
+static unsigned wrong_rows(const char *path, long failing_step, grade_wrong_row *out)
+{
+    sw_trace_reader r;
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    unsigned n = 0;
+    if (sw_trace_read_open(&r, path, err, sizeof err) != SW_OK)
+        return 0;
+    double *row = NULL;
+    if (sw_trace_read_header(&r, err, sizeof err) == SW_OK && r.ncols > 0 &&
+        (row = malloc((size_t)r.ncols * sizeof *row))) {
+        for (long i = 0; n < SW_SIMILAR_ROWS_MAX && sw_trace_read_row(&r, row, err, sizeof err) == 1;
+             i++) {
+            if (!(row[0] >= (double)failing_step))
+                continue;
+            uint64_t h = 1469598103934665603u;
+            for (int c = 0; c < r.ncols; c++) {
+                double x = row[c] == 0 ? 0.0 : isnan(row[c]) ? NAN : row[c];
+                uint64_t bits;
+                memcpy(&bits, &x, sizeof bits);
+                for (int b = 0; b < 8; b++)
+                    h = (h ^ ((bits >> (8 * b)) & 0xff)) * 1099511628211u;
+            }
+            out[n].row = i;
+            out[n].hash = h;
+            n++;
+        }
+    }
+    free(row);
+    sw_trace_read_close(&r);
+    return n;
+}
+
 /* The child: check one submission, send the record and the report. */
 static int grade_child(void *ctx, int in, int out)
 {
@@ -212,9 +252,17 @@ static int grade_child(void *ctx, int in, int out)
         fclose(f);
     }
     rec.report_len = (unsigned)(report_len < job->report_max ? report_len : job->report_max);
+    static grade_wrong_row wrong[SW_SIMILAR_ROWS_MAX];
+    /* Explained mistakes are stepwise's own numbers, alike for everyone
+     * who made them: not compared. */
+    if (job->similarity && !job->plugin && v.status == SW_VERDICT_FAIL && v.failing_step >= 0 &&
+        !v.have_explanation)
+        rec.nwrong = wrong_rows(job->path, v.failing_step, wrong);
     sw_sandbox_write(out, &rec, sizeof rec);
     if (report)
         sw_sandbox_write(out, report, rec.report_len);
+    if (rec.nwrong)
+        sw_sandbox_write(out, wrong, rec.nwrong * sizeof wrong[0]);
     free(report);
     return 0;
 }
@@ -260,7 +308,8 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
      * any bytes from a child: a status it can have, lengths within bounds
      * before anything is allocated, strings terminated here. */
     if (rc == 1 && (rec.status < SW_VERDICT_PASS || rec.status > SW_VERDICT_ERROR ||
-                    rec.report_len > job->report_max || rec.failing_step < -1))
+                    rec.report_len > job->report_max || rec.failing_step < -1 ||
+                    rec.nwrong > SW_SIMILAR_ROWS_MAX))
         rc = -3;
     if (rc == 1) {
         rec.student[sizeof rec.student - 1] = rec.notes[sizeof rec.notes - 1] = '\0';
@@ -275,6 +324,17 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         else {
             free(e->report);
             e->report = NULL;
+        }
+    }
+    if (rc == 1 && rec.nwrong > 0) {
+        left = wall - (sw_sandbox_now() - start);
+        e->wrong = malloc(rec.nwrong * sizeof *e->wrong);
+        if (e->wrong && sw_sandbox_read(child->from_child, e->wrong, rec.nwrong * sizeof *e->wrong,
+                                        left > 0.001 ? left : 0.001) == 1)
+            e->nwrong = (int)rec.nwrong;
+        else {
+            free(e->wrong);
+            e->wrong = NULL;
         }
     }
     sw_child_end end;
@@ -533,7 +593,7 @@ int sw_cmd_grade(int argc, char **argv)
     }
     if (jobs > list.n)
         jobs = list.n > 0 ? list.n : 1;
-    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, &lim };
+    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim };
     grade_all(&list, &proto, wall, jobs);
     grade_clean_dir(build_dir, list.n);
     if (!sw_signal_caught)

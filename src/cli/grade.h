@@ -3,6 +3,7 @@
 #ifndef SW_CLI_GRADE_H
 #define SW_CLI_GRADE_H
 
+#include <stdint.h>
 #include <stdio.h>
 #include <sys/types.h>
 
@@ -10,6 +11,13 @@
 #include "grade/roster.h"
 #include "plugin/sandbox.h"
 #include "trace/trace.h"
+
+/* A row of a failing trace, for --similarity: its number and a digest of
+ * its values. */
+typedef struct grade_wrong_row {
+    int64_t row;
+    uint64_t hash;
+} grade_wrong_row;
 
 typedef struct grade_entry {
     char *path;
@@ -24,6 +32,9 @@ typedef struct grade_entry {
     char owner_id[80];                   /* --roster: who's first id */
     char remarks[700];                   /* --roster: a claim not believed, no match */
     char similar[600];                   /* --similarity: the pairs this entry is in */
+    grade_wrong_row *wrong;              /* --similarity, a failing trace: its rows from the
+                                          * first failing step on */
+    int nwrong;
     char notes[SW_TRACE_NOTES_MAX];
     char kind[24];                       /* the mistake's kind, when named */
     char message[1200];

@@ -54,6 +54,7 @@ void grade_list_free(grade_list *l)
         free(l->items[i].path);
         free(l->items[i].rel);
         free(l->items[i].report);
+        free(l->items[i].wrong);
     }
     for (int i = 0; i < l->ignored; i++) {
         free(l->refused[i].path);

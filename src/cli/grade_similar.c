@@ -93,6 +93,16 @@ int grade_similar_run(grade_list *l)
                 if (sw_similar_digest_file(e->path, &d, err, sizeof err) == SW_OK)
                     doc = sw_similar_add_trace(&s, &d, e->status == 0 || e->kind[0], err,
                                                sizeof err);
+                /* Its wrong rows, each one value: the worker's digest of the
+                 * row, its top bits cleared so it is a finite double, which
+                 * the library compares bit for bit. */
+                for (int k = 0; doc >= 0 && k < e->nwrong; k++) {
+                    uint64_t bits = e->wrong[k].hash >> 2;
+                    double value;
+                    memcpy(&value, &bits, sizeof value);
+                    if (sw_similar_trace_row(&s, doc, (long)e->wrong[k].row, &value, 1, 1) != SW_OK)
+                        break;
+                }
             }
         } else
             continue;
@@ -123,7 +133,7 @@ int grade_similar_run(grade_list *l)
         if (shown++ == 0)
             fprintf(t, "similar pairs (%s; for a person to read, not a verdict):\n",
                     "plugin sources as MOSS-style fingerprints, the handout removed; traces "
-                    "byte-identical, correct ones never");
+                    "byte-identical or with identical wrong rows, correct ones never");
         fprintf(t, "  %.2f  %s  ~  %s: %s\n", pairs[p].score, an, bn, pairs[p].reason);
         snprintf(text, sizeof text, "%.2f with %s: %s", pairs[p].score, bn, pairs[p].reason);
         add_similar(a, text);

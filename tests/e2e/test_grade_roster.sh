@@ -5,8 +5,8 @@
 # its metadata, plugins named after their authors); one trace claims a
 # classmate's name; two students did not submit; a README, an unknown file
 # and a file that names nobody are listed. Then: --similarity flags the
-# plugin copied with renamed variables and reformatted code, not the
-# independent one; --feedback writes one report per student; -j 2 gives
+# plugin copied with renamed variables and reformatted code and the wrong
+# trace copied with a note added, not the independent ones; --feedback writes one report per student; -j 2 gives
 # the table and gradebook -j 1 gives, byte for byte; a regrade of one
 # student updates one row and keeps the others; --fresh starts over.
 . "$(dirname "$0")/lib.sh"
@@ -38,9 +38,15 @@ claim() { sed "s/^# scene/# student: $1\n# scene/" "$2"; }
 claim "Ada Lovelace" ref.trace > class/s1001_rk4.trace                          # a plain id
 claim "Blaise Pascal" euler.trace > class/pascalblaise_4711_998877_hw4.trace   # Canvas, wrong
 mkdir "class/Carl Gauss_55_assignsubmission_file_"                              # Moodle
-claim "Carl Gauss" ref.trace > "class/Carl Gauss_55_assignsubmission_file_/rk4.trace"
+# Carl's trace goes wrong from step 40 on (a bug of his own, which the
+# explainer cannot name); Dana hands in a copy with a note added, so the
+# files differ but the wrong numbers do not.
+perturb() { awk -F, -v from="$1" -v by="$2" 'BEGIN { OFS = "," }
+    /^[0-9]/ && $1 >= from { $3 = $3 + by } { print }' "$3"; }
+perturb 40 1e-3 ref.trace > carl.trace
+claim "Carl Gauss" carl.trace > "class/Carl Gauss_55_assignsubmission_file_/rk4.trace"
 mkdir class/submission_216975964                                               # Gradescope
-claim "Dana" ref.trace > class/submission_216975964/rk4.trace
+claim "Dana" carl.trace | sed 's/^# scene/# note: all my own work\n# scene/' > class/submission_216975964/rk4.trace
 cat > class/submission_metadata.yml <<'Y'
 submission_216975964:
   :submitters:
@@ -53,7 +59,7 @@ claim "Ada Lovelace" ref.trace > class/emmy_noether.trace   # claims a classmate
 cp "$ROOT/tests/data/similar/rk4_alice.c" class/felix_klein_rk4.c
 cp "$ROOT/tests/data/similar/rk4_alice_copy.c" class/s1007_rk4.c   # Grace: the copy
 cp "$ROOT/tests/data/similar/rk4_bob.c" class/hedy_lamarr.c        # independent
-claim "Nobody" ref.trace > class/zz_unknown.trace
+perturb 40 2e-3 ref.trace | claim "Nobody" /dev/stdin > class/zz_unknown.trace   # wrong otherwise
 echo "my answers are in the .c file" > class/README.txt
 printf 'PK\003\004' > class/notes.docx
 export STEPWISE_INCLUDE="$ROOT/include"
@@ -66,8 +72,8 @@ rc=$?
 has() { grep -E "$1" table > /dev/null || fail "the table lacks '$1': $(cat table)"; }
 has "^  Ada Lovelace +s1001_rk4.trace +pass"
 has "^  Blaise Pascal +pascalblaise_4711_998877... +fail .*euler"
-has "^  Carl Gauss +rk4.trace +pass"
-has "^  Dana Scott +rk4.trace +pass"
+has "^  Carl Gauss +rk4.trace +fail +40"
+has "^  Dana Scott +rk4.trace +fail +40"
 has "^  Emmy Noether +emmy_noether.trace +pass"
 has "roster: .*Ada Lovelace.*not believed"
 has "^  Felix Klein +felix_klein_rk4.c +pass"
@@ -78,7 +84,7 @@ has "^  Kurt Goedel .*missing"
 has "README.txt +skipped"
 has "notes.docx +skipped"
 has "submission_metadata.yml +skipped .*Gradescope"
-has "^  \[zz_unknown\] +zz_unknown.trace .*pass"
+has "^  \[zz_unknown\] +zz_unknown.trace +fail +40"
 has "roster: matches no roster student"
 has "2 students on the roster without a submission"
 # Similarity: the copy with renamed variables is flagged; the independent
@@ -86,8 +92,11 @@ has "2 students on the roster without a submission"
 has "similar pairs"
 grep -E "Felix Klein \(felix_klein_rk4.c\)  ~  Grace Hopper \(s1007_rk4.c\)|Grace Hopper \(s1007_rk4.c\)  ~  Felix Klein \(felix_klein_rk4.c\)" table >/dev/null ||
     fail "the copied plugin is not flagged: $(cat table)"
+grep -E "Carl Gauss \(rk4.trace\)  ~  Dana Scott \(rk4.trace\): identical wrong numbers: 61 of 61 rows" table \
+    >/dev/null || fail "the copied wrong trace is not flagged: $(grep '~' table)"
 grep "~" table | grep -q "Hedy" && fail "the independent plugin is flagged: $(grep '~' table)"
-grep "~" table | grep -q "trace" && fail "a correct trace is flagged: $(grep '~' table)"
+grep "~" table | grep -Eq "Ada|Emmy|Blaise|zz_unknown" &&
+    fail "a correct, explained or independently wrong trace is flagged: $(grep '~' table)"
 
 # The gradebook: a row per entry and per missing student, the columns kept.
 head -1 grades.csv | grep -q "^student,file,verdict,first_failing_step,message,id,remarks,similar" ||

@@ -241,8 +241,10 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             continue;
         }
         if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
-            !list->gs_metadata && lstat(sub, &st) == 0 && S_ISREG(st.st_mode)) {
-            /* Gradescope's export: who submitted each submission_ID folder. */
+            lstat(sub, &st) == 0 && S_ISREG(st.st_mode)) {
+            /* Gradescope's export: who submitted each submission_ID folder
+             * (the export's own, rather than one found above it). */
+            free(list->gs_metadata);
             if (!(list->gs_metadata = strdup(sub)))
                 rc = SW_ENOMEM;
             if (rc == SW_OK)
@@ -266,10 +268,32 @@ static void sort_from(grade_entry *items, int first, int n)
         qsort(items + first, (size_t)(n - first), sizeof items[0], cmp_names);
 }
 
+/* A regrade names one student's folder or file of a Gradescope export:
+ * the metadata is then in the folder above it, or the one above that. */
+static int metadata_above(grade_list *list, const char *real)
+{
+    char dir[PATH_MAX], meta[PATH_MAX + 32];
+    snprintf(dir, sizeof dir, "%s", real);
+    for (int up = 0; up < 2 && !list->gs_metadata; up++) {
+        char *slash = strrchr(dir, '/');
+        if (!slash || slash == dir)
+            break;
+        *slash = '\0';
+        struct stat st;
+        snprintf(meta, sizeof meta, "%s/submission_metadata.yml", dir);
+        if (lstat(meta, &st) == 0 && S_ISREG(st.st_mode) && !(list->gs_metadata = strdup(meta)))
+            return SW_ENOMEM;
+    }
+    return SW_OK;
+}
+
 int grade_collect(grade_list *list, const char *arg, const struct stat *assign_st)
 {
     struct stat st;
     int first = list->n, first_refused = list->ignored;
+    char real_arg[PATH_MAX];
+    if (list->roster && realpath(arg, real_arg) && metadata_above(list, real_arg) != SW_OK)
+        return sw_cli_error("grade: out of memory");
     if (stat(arg, &st) != 0 || !S_ISDIR(st.st_mode)) {
         /* A file named itself: no directory listing, the same rules. */
         struct stat lst;
@@ -290,9 +314,13 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
     if (!realpath(arg, real))
         return sw_cli_error("grade: cannot resolve the directory '%.200s': %s", arg,
                             strerror(errno));
+    /* The roster sees the directory's own name first: a student's folder
+     * or a submission_ID named alone is matched as in the whole export. */
+    const char *own = strrchr(real, '/');
+    own = own && own[1] ? own + 1 : "";
     int rc = add_place(list, &st, real);
     if (rc == SW_OK)
-        rc = collect_dir(list, arg, "", real, assign_st, 0);
+        rc = collect_dir(list, arg, list->roster ? own : "", real, assign_st, 0);
     if (rc != SW_OK)
         return sw_cli_error("grade: out of memory");
     sort_from(list->items, first, list->n);

@@ -176,6 +176,11 @@ int sw_csv_parse(const char *name, const char *text, size_t len, sw_csv_doc *d, 
             else
                 row->n++;
         }
+        /* A row keeps only the cells it has (100 000 rows of 64 would be
+         * 50 MB of pointers). */
+        char **fit = row->n ? realloc(row->cells, (size_t)row->n * sizeof *fit) : NULL;
+        if (fit)
+            row->cells = fit;
     }
     free(cell);
     if (rc == SW_ENOMEM)

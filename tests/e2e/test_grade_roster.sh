@@ -147,6 +147,12 @@ grep -q '^Blaise Pascal,class/pascalblaise_4711_998877_hw4.trace,pass,' grades.c
     fail "Blaise's row not updated: $(grep Blaise grades.csv)"
 grep -v '^Blaise' before.csv > b1; grep -v '^Blaise' grades.csv > b2
 cmp b1 b2 || fail "other rows changed: $(diff b1 b2)"
+# A Gradescope student regraded by their folder alone: the metadata above
+# it still says whose it is.
+"$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv \
+    class/submission_216975964 > regrade 2>&1
+grep -q "^  Dana Scott .*fail" regrade || fail "Dana's folder alone: $(cat regrade)"
+grep -q "updated 1 row, kept 13" regrade || fail "Dana's regrade: $(cat regrade)"
 # A gradebook of other columns is not overwritten by a regrade.
 printf 'name,score\r\nx,1\r\n' > other.csv
 "$SW" grade --assignment assignment.txt --csv other.csv class/s1001_rk4.trace > o 2>&1 &&

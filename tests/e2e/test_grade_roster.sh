@@ -153,6 +153,15 @@ cmp b1 b2 || fail "other rows changed: $(diff b1 b2)"
     class/submission_216975964 > regrade 2>&1
 grep -q "^  Dana Scott .*fail" regrade || fail "Dana's folder alone: $(cat regrade)"
 grep -q "updated 1 row, kept 13" regrade || fail "Dana's regrade: $(cat regrade)"
+# A gradebook edited by someone else: a kept cell that a spreadsheet would
+# run is written back inert; one from an older stepwise (five columns)
+# is updated and gets the new columns.
+printf 'student,file,verdict,first_failing_step,message\r\nMallory,x.trace,pass,,"=HYPERLINK(""http://evil"")"\r\n' > old.csv
+"$SW" grade --assignment assignment.txt --csv old.csv class/s1001_rk4.trace > o 2>&1
+grep -q "updated 0 rows, kept 1, added 1" o || fail "old gradebook: $(cat o)"
+grep -qF "Mallory,x.trace,pass,,\"'=HYPERLINK(\"\"http://evil\"\")\",,," old.csv ||
+    fail "the kept formula: $(cat old.csv)"
+head -1 old.csv | grep -q "message,id,remarks,similar" || fail "old gradebook header: $(head -1 old.csv)"
 # A gradebook of other columns is not overwritten by a regrade.
 printf 'name,score\r\nx,1\r\n' > other.csv
 "$SW" grade --assignment assignment.txt --csv other.csv class/s1001_rk4.trace > o 2>&1 &&

@@ -85,6 +85,7 @@ const char *grade_verdict_word(int status)
          : status == GRADE_MISSING ? "missing" : "error";
 }
 
+/* The names this file used before grade.h shared them. */
 #define verdict_word grade_verdict_word
 #define student_of grade_student_of
 

@@ -275,6 +275,12 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         send_failure(sync, rc, step);
         _exit(127);
     }
+    /* The kernel clears the parent-death signal whenever credentials change
+     * (here: the capabilities of a new user namespace), so without this the
+     * jail outlived a caller that was killed (grade interrupted, its
+     * workers SIGKILLed, each plugin spinning on until its CPU limit). */
+    if (die_with(parent) != 0)
+        _exit(127);
     /* Nothing of the caller's stays open in the jail (its files, a
      * temporary directory's keep-alive pipe): only the three channels. */
     int keep[3] = { sock, sync, status };

@@ -172,4 +172,29 @@ grep -q "not a gradebook to update" o || fail "foreign CSV: $(cat o)"
     class/pascalblaise_4711_998877_hw4.trace > fresh 2>&1
 grep -q "kept" fresh && fail "--fresh kept rows: $(cat fresh)"
 [ "$(wc -l < grades.csv)" -eq 11 ] || fail "--fresh wrote $(wc -l < grades.csv) lines: $(cat grades.csv)"
+# Interrupted while plugins spin in their jails with -j 2: nothing of the
+# grading outlives it (the jail re-arms its parent-death signal after the
+# user namespace cleared it), and no gradebook is written.
+mkdir spin_$$
+for i in 1 2 3; do
+    sed -e "s/student-euler/spin-$i/" -e 's/^{$/{ for (volatile long spin = 0; ; spin++) ;/' \
+        "$ROOT/examples/euler_plugin.c" > spin_$$/p$i.c
+done
+running() { # processes whose command line names spin_$$ (the brackets keep grep's own out)
+    grep -las "spi[n]_$$" /proc/[0-9]*/cmdline 2>/dev/null | wc -l
+}
+"$SW" grade --assignment assignment.txt --plugin-timeout 60 -j 2 --csv spin.csv spin_$$ > spin.out 2>&1 &
+gpid=$!
+# grade, two workers, and each plugin's jail (its first process, its init
+# and the payload) once both plugins run: 9 (compiling, cc's is not counted).
+i=0
+while [ "$(running)" -lt 9 ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+n=$(running)
+kill -INT $gpid
+wait $gpid
+[ "$n" -ge 9 ] || fail "the spinning plugins did not start ($n processes): $(cat spin.out)"
+i=0
+while [ "$(running)" -gt 0 ] && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
+[ "$(running)" -eq 0 ] || fail "$(running) processes outlived the interrupted grading"
+[ ! -e spin.csv ] || fail "an interrupted grading wrote a gradebook"
 echo ok

@@ -111,6 +111,40 @@ static const char *cell(const sw_csv_doc *d, int col)
     return d->nrows > 0 && col < d->rows[0].n ? d->rows[0].cells[col] : "";
 }
 
+/* Whether two file cells name one file as given: "./class//a.trace" and
+ * "class/a.trace" do (a regrade names files its own way). */
+static int same_path(const char *a, const char *b)
+{
+    int at_component = 1; /* a and b are at the start of a component */
+    if ((a[0] == '/') != (b[0] == '/'))
+        return 0;
+    for (;;) {
+        if (at_component) {
+            for (;;) {
+                if (a[0] == '.' && a[1] == '/')
+                    a += 2;
+                else if (a[0] == '/')
+                    a++;
+                else
+                    break;
+            }
+            for (;;) {
+                if (b[0] == '.' && b[1] == '/')
+                    b += 2;
+                else if (b[0] == '/')
+                    b++;
+                else
+                    break;
+            }
+        }
+        if (!*a || !*b || *a != *b)
+            return *a == *b;
+        at_component = *a == '/';
+        a++;
+        b++;
+    }
+}
+
 static void write_old(FILE *f, const sw_csv_row *row)
 {
     for (int c = 0; c < NCOLS; c++) {
@@ -159,7 +193,7 @@ void grade_book_write(FILE *f, const grade_list *l, char *said, size_t saidlen)
                 if (nr[i].used)
                     continue;
                 const char *nfile = cell(&nr[i].cells, COL_FILE);
-                if (file[0] ? strcmp(nfile, file) == 0
+                if (file[0] ? same_path(nfile, file)
                             : strcmp(cell(&nr[i].cells, COL_STUDENT), student) == 0 &&
                                   (nfile[0] || strcmp(cell(&nr[i].cells, COL_VERDICT), "missing") == 0))
                     with = i;

@@ -147,6 +147,11 @@ grep -q '^Blaise Pascal,class/pascalblaise_4711_998877_hw4.trace,pass,' grades.c
     fail "Blaise's row not updated: $(grep Blaise grades.csv)"
 grep -v '^Blaise' before.csv > b1; grep -v '^Blaise' grades.csv > b2
 cmp b1 b2 || fail "other rows changed: $(diff b1 b2)"
+# The same file named another way is the same row.
+"$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv ./class//s1001_rk4.trace \
+    > regrade 2>&1
+grep -q "updated 1 row, kept 13" regrade || fail "./class//s1001_rk4.trace: $(cat regrade)"
+[ "$(grep -c '^Ada Lovelace,' grades.csv)" -eq 1 ] || fail "Ada twice: $(grep Ada grades.csv)"
 # A Gradescope student regraded by their folder alone: the metadata above
 # it still says whose it is.
 "$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv \
@@ -172,6 +177,22 @@ grep -q "not a gradebook to update" o || fail "foreign CSV: $(cat o)"
     class/pascalblaise_4711_998877_hw4.trace > fresh 2>&1
 grep -q "kept" fresh && fail "--fresh kept rows: $(cat fresh)"
 [ "$(wc -l < grades.csv)" -eq 11 ] || fail "--fresh wrote $(wc -l < grades.csv) lines: $(cat grades.csv)"
+# Each worker keeps its own wall-clock watchdog when they run side by
+# side: two endless plugins and a trace with --wall 3 -j 2 are all done in
+# well under twice the limit, the plugins stopped with the reason.
+mkdir wall
+for i in 1 2; do
+    sed -e "s/student-euler/wall-$i/" -e 's/^{$/{ for (volatile long spin = 0; ; spin++) ;/' \
+        "$ROOT/examples/euler_plugin.c" > wall/p$i.c
+done
+cp ref.trace wall/t.trace
+t0=$(date +%s)
+"$SW" grade --assignment assignment.txt --wall 3 --plugin-timeout 60 -j 2 wall > wall.out 2>&1
+t1=$(date +%s)
+[ "$(grep -c 'wall-clock limit of 3 s' wall.out)" -eq 2 ] || fail "--wall with -j 2: $(cat wall.out)"
+grep -q "t.trace .*pass" wall.out || fail "the trace beside them: $(cat wall.out)"
+[ $((t1 - t0)) -le 8 ] || fail "--wall 3 with -j 2 took $((t1 - t0)) s"
+
 # Interrupted while plugins spin in their jails with -j 2: nothing of the
 # grading outlives it (the jail re-arms its parent-death signal after the
 # user namespace cleared it), and no gradebook is written.
@@ -186,9 +207,14 @@ running() { # processes whose command line names spin_$$ (the brackets keep grep
 "$SW" grade --assignment assignment.txt --plugin-timeout 60 -j 2 --csv spin.csv spin_$$ > spin.out 2>&1 &
 gpid=$!
 # grade, two workers, and each plugin's jail (its first process, its init
-# and the payload) once both plugins run: 9 (compiling, cc's is not counted).
-i=0
-while [ "$(running)" -lt 9 ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+# and the payload) once both plugins run: 9, three times in a row (while
+# compiling, cc's payload is counted only for the moment before its exec).
+i=0 seen=0
+while [ $seen -lt 3 ] && [ $i -lt 300 ]; do
+    if [ "$(running)" -ge 9 ]; then seen=$((seen + 1)); else seen=0; fi
+    sleep 0.1
+    i=$((i + 1))
+done
 n=$(running)
 kill -INT $gpid
 wait $gpid

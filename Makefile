@@ -117,7 +117,7 @@ sanitize:
 # tests/fuzz/NAME/ to keep it as a regression test (the unit suite replays
 # that directory).
 FUZZ_TIME ?= 60
-FUZZERS   = lesson trace parse canvas runner check channel roster similar
+FUZZERS   = lesson trace parse canvas runner check channel roster similar gradebook
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude -Isrc -Itests/support
 fuzz:
 	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a

@@ -3,9 +3,10 @@
 # with stepwise: correct) and half plugins (C sources of an Euler step, each
 # a little different so every one is compiled), graded with and without the
 # jail, RUNS times each, interleaved. Prints each run's wall time and the
-# medians and their ratio.
+# medians and their ratio. With COMPARE=jobs, the jailed class is graded
+# with -j 1 and with -j 2 instead (the gradebooks compared byte for byte).
 #
-# usage: sh bench/grade_class.sh [STEPWISE] [N] [RUNS]
+# usage: [COMPARE=jobs] sh bench/grade_class.sh [STEPWISE] [N] [RUNS]
 set -u
 SW=$(cd "$(dirname "${1:-./stepwise}")" && pwd)/$(basename "${1:-./stepwise}")
 N=${2:-120}
@@ -38,16 +39,24 @@ r=0
 while [ $r -lt "$RUNS" ]; do
     for mode in on off; do
         flag=""; [ $mode = off ] && flag=--no-sandbox
+        if [ "${COMPARE:-}" = jobs ]; then
+            flag="-j 2 --csv j2.csv"; [ $mode = off ] && flag="-j 1 --csv j1.csv"
+        fi
         t0=$(now)
-        "$SW" grade --assignment assignment.txt $flag class >/dev/null 2>&1
+        "$SW" grade --assignment assignment.txt --fresh $flag class >/dev/null 2>&1
         rc=$?
         t1=$(now)
         s=$(echo "$t1 - $t0" | bc)
-        echo "run $r sandbox $mode: $s s (exit $rc)"
+        echo "run $r ${COMPARE:-sandbox} $mode: $s s (exit $rc)"
         [ $mode = on ] && on="$on $s" || off="$off $s"
     done
     r=$((r + 1))
 done
 median() { echo "$@" | tr ' ' '\n' | grep . | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 mon=$(median $on); moff=$(median $off)
+if [ "${COMPARE:-}" = jobs ]; then
+    cmp -s j1.csv j2.csv && same="identical" || same="DIFFERENT"
+    echo "class of $N ($((N / 2)) traces, $((N / 2)) plugins from source), jailed: median $mon s with -j 2, $moff s with -j 1, ratio $(echo "scale=2; $mon / $moff" | bc); gradebooks $same"
+    exit 0
+fi
 echo "class of $N ($((N / 2)) traces, $((N / 2)) plugins from source): median $mon s jailed, $moff s without the jail, ratio $(echo "scale=2; $mon / $moff" | bc)"

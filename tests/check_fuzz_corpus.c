@@ -70,6 +70,8 @@ START_TEST(corpus_channel) { ck_assert_int_ge(replay("channel", sw_fuzz_channel)
 END_TEST
 START_TEST(corpus_roster) { ck_assert_int_ge(replay("roster", sw_fuzz_roster), 7); }
 END_TEST
+START_TEST(corpus_gradebook) { ck_assert_int_ge(replay("gradebook", sw_fuzz_gradebook), 5); }
+END_TEST
 START_TEST(corpus_similar) { ck_assert_int_ge(replay("similar", sw_fuzz_similar), 4); }
 END_TEST
 
@@ -88,6 +90,7 @@ Suite *make_fuzz_corpus_suite(void)
     tcase_add_test(tc, corpus_channel);
     tcase_add_test(tc, corpus_roster);
     tcase_add_test(tc, corpus_similar);
+    tcase_add_test(tc, corpus_gradebook);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -211,6 +211,81 @@ START_TEST(csv_fields_are_inert)
 }
 END_TEST
 
+
+/* Reading a gradebook back (regrading): what sw_csv_field writes reads back
+ * as written and writes again byte for byte; hostile files are refused
+ * with their line, never overrun. */
+static const char *csv_reject(const char *text, size_t len)
+{
+    static char err[SW_ERRLEN];
+    sw_csv_doc d;
+    err[0] = '\0';
+    ck_assert_int_ne(sw_csv_parse("g.csv", text, len, &d, err, sizeof err), SW_OK);
+    ck_assert_int_eq(d.nrows, 0);
+    return err;
+}
+
+START_TEST(csv_reads_back)
+{
+    const char *cells[] = { "=cmd|' /C calc'!A0", "a,b", "say \"hi\"", "a\033[2Jb\nc", "",
+                            "caf\xc3\xa9 \xff", "Ada Lovelace" };
+    int n = (int)(sizeof cells / sizeof cells[0]);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    for (int i = 0; i < n; i++) {
+        sw_csv_field(f, cells[i]);
+        fputs(i + 1 < n ? "," : "\r\n", f);
+    }
+    fclose(f);
+    sw_csv_doc d;
+    char err[SW_ERRLEN] = "";
+    ck_assert_int_eq(sw_csv_parse("g.csv", buf, len, &d, err, sizeof err), SW_OK);
+    ck_assert_int_eq(d.nrows, 1);
+    ck_assert_int_eq(d.rows[0].n, n);
+    ck_assert_str_eq(d.rows[0].cells[0], "'=cmd|' /C calc'!A0");
+    ck_assert_str_eq(d.rows[0].cells[1], "a,b");
+    ck_assert_str_eq(d.rows[0].cells[3], "a\\x1b[2Jb\\x0ac");
+    /* Written again, the line is the same bytes: a kept row does not drift. */
+    char *again = NULL;
+    size_t alen = 0;
+    f = open_memstream(&again, &alen);
+    for (int i = 0; i < n; i++) {
+        sw_csv_field(f, d.rows[0].cells[i]);
+        fputs(i + 1 < n ? "," : "\r\n", f);
+    }
+    fclose(f);
+    ck_assert_str_eq(again, buf);
+    free(again);
+    free(buf);
+    sw_csv_doc_free(&d);
+    /* LF line ends, a BOM, a quoted line break, a last line without end. */
+    const char lf[] = "\xef\xbb\xbf" "a,b\n\"x\ny\",2\nz,3";
+    ck_assert_int_eq(sw_csv_parse("g.csv", lf, sizeof lf - 1, &d, err, sizeof err), SW_OK);
+    ck_assert_int_eq(d.nrows, 3);
+    ck_assert_str_eq(d.rows[0].cells[0], "a");
+    ck_assert_str_eq(d.rows[1].cells[0], "x\ny");
+    ck_assert_int_eq(d.rows[2].line, 4);
+    sw_csv_doc_free(&d);
+    /* Hostile: each refused with its line. */
+    ck_assert_str_eq(csv_reject("a,\"b\n", 5), "g.csv:1: a quoted cell runs to the end of the file "
+                     "(a missing closing quote)");
+    ck_assert_str_eq(csv_reject("a\nb\0c\n", 6), "g.csv:2: a NUL byte; not a CSV gradebook");
+    ck_assert_str_eq(csv_reject("a\"b\n", 4), "g.csv:1: a quote inside an unquoted cell");
+    ck_assert_str_eq(csv_reject("\"a\"b\n", 5), "g.csv:1: text after a closing quote");
+    size_t big = SW_CSV_CELL_MAX + 10;
+    char *long_cell = malloc(big);
+    memset(long_cell, 'x', big);
+    ck_assert_ptr_nonnull(strstr(csv_reject(long_cell, big), "a cell longer than"));
+    char *many = malloc(2 * (SW_CSV_COLS_MAX + 1));
+    for (int i = 0; i < SW_CSV_COLS_MAX + 1; i++)
+        many[2 * i] = 'x', many[2 * i + 1] = ',';
+    ck_assert_ptr_nonnull(strstr(csv_reject(many, 2 * (SW_CSV_COLS_MAX + 1) - 1), "more than"));
+    free(many);
+    free(long_cell);
+}
+END_TEST
+
 /* ---- the progress file ----------------------------------------------------------- */
 
 /* Each hostile progress file: refused at once with what it is, the lesson
@@ -281,6 +356,7 @@ Suite *make_gradebook_suite(void)
     tcase_add_test(tc, tmpdir_never_outlives_its_maker);
     tcase_add_test(tc, outfile_targets);
     tcase_add_test(tc, csv_fields_are_inert);
+    tcase_add_test(tc, csv_reads_back);
     tcase_add_test(tc, progress_under_input_rules);
     suite_add_tcase(s, tc);
     return s;

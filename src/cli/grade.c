@@ -11,6 +11,8 @@
 #include <limits.h>
 #include <math.h>
 #include <signal.h>
+#include <poll.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -19,6 +21,7 @@
 #include "cli/check_report.h"
 #include "cli/grade.h"
 #include "plugin/sandbox.h"
+#include "grade/similar.h"
 #include "grade/verdict.h"
 #include "util/signals.h"
 #include "util/tmpdir.h"
@@ -28,7 +31,8 @@ extern char **environ;
 static const char grade_help[] =
     "usage: stepwise grade --assignment A [--csv FILE] [--results FILE] [--cpu S] [--memory MB]\n"
     "                      [--output KB] [--wall S] [--plugin-timeout S] [--rtol R] [--atol A]\n"
-    "                      [--tol COL=REL[,ABS]]... [--ignore COL]... FILES...|DIR...\n"
+    "                      [--tol COL=REL[,ABS]]... [--ignore COL]... [--roster FILE] [--fresh]\n"
+    "                      [--similarity] [--feedback DIR] [-j N] FILES...|DIR...\n"
     "\n"
     "Grades every submission against the assignment A (a small metadata file, or a\n"
     "reference trace whose header serves): traces (.trace, .csv) are checked like\n"
@@ -42,7 +46,20 @@ static const char grade_help[] =
     "\n"
     "options:\n"
     "      --assignment A     what the teacher set (required)\n"
-    "      --csv FILE         write a CSV gradebook: student,file,verdict,first_failing_step,message\n"
+    "      --csv FILE         write a CSV gradebook: student,file,verdict,first_failing_step,\n"
+    "                         message,id,remarks,similar,score,max; an existing one is updated: the\n"
+    "                         rows of the files graded now replaced, the others kept\n"
+    "      --fresh            start the --csv gradebook over instead of updating it\n"
+    "      --roster FILE      the class (CSV: a name column, optional id and email): every\n"
+    "                         row gets its student from the file's or folder's name\n"
+    "                         (Gradescope, Canvas, Moodle downloads; folders are walked),\n"
+    "                         a '# student:' line naming someone else is reported, and\n"
+    "                         each student without a submission gets a row 'missing'\n"
+    "      --similarity       list pairs of submissions that look copied: plugin sources\n"
+    "                         (renamed, reformatted) and identical wrong traces\n"
+    "      --feedback DIR     write each student's full report to DIR/NAME.txt\n"
+    "  -j, --jobs N           grade N submissions at once, 1 to 256 (default: the online\n"
+    "                         cores); the results are the same for every N\n"
     "      --results FILE     write a class-wide results.json (score, max_score, tests)\n"
     "      --gradescope FILE  write Gradescope's results.json for one submission: one test\n"
     "                         per check of the assignment ('# points'), as run_autograder\n"
@@ -61,13 +78,14 @@ static const char grade_help[] =
     "                         to 1, atol 1e-300 to 1e6)\n"
     "  -h, --help             this help\n"
     "\n"
-    "The --csv and --results paths are checked before grading (writable, not the\n"
+    "The --csv, --results and --feedback paths are checked before grading (writable, not the\n"
     "assignment nor a submission, not among the submissions; - or /dev/stdout writes\n"
     "to standard output and moves the table to stderr) and written whole at the end.\n"
     "\n"
     "exit status: 0 every entry passed, 1 some did not (or were skipped), 2 bad usage.\n";
 
-/* What a submission's child sends back: this, then report_len bytes. */
+/* What a submission's child sends back: this, then report_len bytes, then
+ * nwrong grade_wrong_row (--similarity). */
 typedef struct grade_record {
     int status;
     long failing_step;
@@ -77,6 +95,7 @@ typedef struct grade_record {
     char message[1200];
     sw_score score;
     unsigned report_len;
+    unsigned nwrong;
 } grade_record;
 
 typedef struct grade_job {
@@ -87,6 +106,7 @@ typedef struct grade_job {
     const sw_check_request *base;
     size_t report_max;
     grade_list *list;        /* the class so far: wiped in the worker */
+    int similarity;          /* send a failing trace's wrong rows */
     const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
 } grade_job;
 
@@ -156,6 +176,41 @@ static void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, co
     sw_points_score(&a->points, &f, s);
 }
 
+/* A failing trace's rows from its first failing step on, each as its row
+ * number and a digest of its values (bit for bit; -0 as 0, every NaN one
+ * NaN), at most SW_SIMILAR_ROWS_MAX: what --similarity compares. */
+static unsigned wrong_rows(const char *path, long failing_step, grade_wrong_row *out)
+{
+    sw_trace_reader r;
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    unsigned n = 0;
+    if (sw_trace_read_open(&r, path, err, sizeof err) != SW_OK)
+        return 0;
+    double *row = NULL;
+    if (sw_trace_read_header(&r, err, sizeof err) == SW_OK && r.ncols > 0 &&
+        (row = malloc((size_t)r.ncols * sizeof *row))) {
+        for (long i = 0; n < SW_SIMILAR_ROWS_MAX && sw_trace_read_row(&r, row, err, sizeof err) == 1;
+             i++) {
+            if (!(row[0] >= (double)failing_step))
+                continue;
+            uint64_t h = 1469598103934665603u;
+            for (int c = 0; c < r.ncols; c++) {
+                double x = row[c] == 0 ? 0.0 : isnan(row[c]) ? NAN : row[c];
+                uint64_t bits;
+                memcpy(&bits, &x, sizeof bits);
+                for (int b = 0; b < 8; b++)
+                    h = (h ^ ((bits >> (8 * b)) & 0xff)) * 1099511628211u;
+            }
+            out[n].row = i;
+            out[n].hash = h;
+            n++;
+        }
+    }
+    free(row);
+    sw_trace_read_close(&r);
+    return n;
+}
+
 /* The child: check one submission, send the record and the report. */
 static int grade_child(void *ctx, int in, int out)
 {
@@ -218,27 +273,58 @@ static int grade_child(void *ctx, int in, int out)
         fclose(f);
     }
     rec.report_len = (unsigned)(report_len < job->report_max ? report_len : job->report_max);
+    static grade_wrong_row wrong[SW_SIMILAR_ROWS_MAX];
+    /* Explained mistakes are stepwise's own numbers, alike for everyone
+     * who made them: not compared. */
+    if (job->similarity && !job->plugin && v.status == SW_VERDICT_FAIL && v.failing_step >= 0 &&
+        !v.have_explanation)
+        rec.nwrong = wrong_rows(job->path, v.failing_step, wrong);
     sw_sandbox_write(out, &rec, sizeof rec);
     if (report)
         sw_sandbox_write(out, report, rec.report_len);
+    if (rec.nwrong)
+        sw_sandbox_write(out, wrong, rec.nwrong * sizeof wrong[0]);
     free(report);
     return 0;
 }
 
-/* Grade one submission in a child; always fills e. */
-static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim, double wall)
-{
-    double start = sw_sandbox_now();
+/* One submission being graded: its worker and when it started. */
+typedef struct grade_slot {
+    int active;
+    int index;
+    grade_job job;
     sw_child child;
+    double start;
+} grade_slot;
+
+/* Start the worker of slot->index; 0, or -1 with the entry filled (an
+ * error row) when the worker could not be started. */
+static int grade_start(grade_slot *slot, grade_entry *e)
+{
     char err[SW_ERRLEN];
-    grade_record rec;
+    slot->start = sw_sandbox_now();
     e->status = SW_VERDICT_ERROR;
     e->failing_step = -1;
-    if (sw_sandbox_spawn(&child, grade_child, (void *)job, lim, -1, err, sizeof err) != SW_OK) {
+    if (sw_sandbox_spawn(&slot->child, grade_child, &slot->job, slot->job.lim, -1, err,
+                         sizeof err) != SW_OK) {
         snprintf(e->message, sizeof e->message, "%s", err);
-        return;
+        e->seconds = sw_sandbox_now() - slot->start;
+        return -1;
     }
-    int rc = sw_sandbox_read(child.from_child, &rec, sizeof rec, wall);
+    slot->active = 1;
+    return 0;
+}
+
+/* Take the record of a worker whose channel is readable (or whose time is
+ * up): always fills e and ends the worker. */
+static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
+{
+    const grade_job *job = &slot->job;
+    const sw_limits *lim = job->lim;
+    sw_child *child = &slot->child;
+    double start = slot->start, left = wall - (sw_sandbox_now() - start);
+    grade_record rec;
+    int rc = sw_sandbox_read(child->from_child, &rec, sizeof rec, left > 0.001 ? left : 0.001);
     /* The worker runs only stepwise's code, but its record is checked like
      * any bytes from a child: a status it can have, lengths within bounds
      * before anything is allocated, strings terminated here. */
@@ -246,7 +332,7 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
                     rec.status != GRADE_LIMIT))
         rc = -3;
     if (rc == 1 && (rec.report_len > job->report_max || rec.failing_step < -1 ||
-                    rec.score.n < 0 || rec.score.n > SW_POINTS_MAX))
+                    rec.score.n < 0 || rec.score.n > SW_POINTS_MAX || rec.nwrong > SW_SIMILAR_ROWS_MAX))
         rc = -3;
     if (rc == 1) {
         rec.student[sizeof rec.student - 1] = rec.notes[sizeof rec.notes - 1] = '\0';
@@ -265,18 +351,30 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
         }
     }
     if (rc == 1 && rec.report_len > 0) {
+        left = wall - (sw_sandbox_now() - start);
         e->report = malloc(rec.report_len + 1);
-        if (e->report && sw_sandbox_read(child.from_child, e->report, rec.report_len,
-                                         wall - (sw_sandbox_now() - start)) == 1)
+        if (e->report && sw_sandbox_read(child->from_child, e->report, rec.report_len,
+                                         left > 0.001 ? left : 0.001) == 1)
             e->report[rec.report_len] = '\0';
         else {
             free(e->report);
             e->report = NULL;
         }
     }
+    if (rc == 1 && rec.nwrong > 0) {
+        left = wall - (sw_sandbox_now() - start);
+        e->wrong = malloc(rec.nwrong * sizeof *e->wrong);
+        if (e->wrong && sw_sandbox_read(child->from_child, e->wrong, rec.nwrong * sizeof *e->wrong,
+                                        left > 0.001 ? left : 0.001) == 1)
+            e->nwrong = (int)rec.nwrong;
+        else {
+            free(e->wrong);
+            e->wrong = NULL;
+        }
+    }
     sw_child_end end;
     if (rc == 1) {
-        sw_sandbox_reap(&child, 2.0, &end);
+        sw_sandbox_reap(child, 2.0, &end);
         e->status = rec.status;
         e->failing_step = rec.failing_step;
         memcpy(e->student, rec.student, sizeof e->student);
@@ -287,9 +385,9 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
     } else {
         char how[120];
         if (rc == -2 || rc == -1)
-            sw_sandbox_kill(&child, &end);
+            sw_sandbox_kill(child, &end);
         else
-            sw_sandbox_reap(&child, 2.0, &end);
+            sw_sandbox_reap(child, 2.0, &end);
         sw_sandbox_describe(&end, how, sizeof how);
         if (rc == -2)
             snprintf(e->message, sizeof e->message, "grading took longer than the wall-clock "
@@ -309,11 +407,95 @@ static void grade_one(grade_entry *e, const grade_job *job, const sw_limits *lim
         grade_zero_score(&e->score, job->base->assignment, job->plugin, e->message);
     }
     e->seconds = sw_sandbox_now() - start;
+    slot->active = 0;
+}
+
+/* Grade every submission, up to jobs at once, each in its own worker with
+ * its own wall-clock watchdog; rows are printed in the list's order as
+ * soon as they and all before them are done, so the table, the CSV and
+ * results.json are the same for every jobs. */
+static void grade_all(grade_list *list, const grade_job *proto, double wall, int jobs)
+{
+    int n = list->n, next = 0, printed = 0, running = 0;
+    grade_slot *slots = calloc((size_t)jobs, sizeof *slots);
+    unsigned char *done = calloc((size_t)n + 1, 1);
+    struct pollfd *fds = calloc((size_t)jobs, sizeof *fds);
+    int *which = calloc((size_t)jobs, sizeof *which);
+    if (!slots || !done || !fds || !which) {
+        jobs = 0; /* out of memory: every entry an error row */
+        for (int i = 0; i < n; i++) {
+            snprintf(list->items[i].message, sizeof list->items[i].message, "out of memory");
+            list->items[i].status = SW_VERDICT_ERROR;
+            list->items[i].failing_step = -1;
+        }
+        printed = n;
+    }
+    while (printed < n && !sw_signal_caught) {
+        for (int k = 0; k < jobs && next < n; k++) {
+            if (slots[k].active)
+                continue;
+            slots[k].index = next;
+            slots[k].job = *proto;
+            slots[k].job.path = list->items[next].path;
+            slots[k].job.plugin = list->items[next].plugin;
+            slots[k].job.index = next;
+            if (grade_start(&slots[k], &list->items[next]) == 0)
+                running++;
+            else
+                done[next] = 1;
+            next++;
+        }
+        /* Wait for any worker's record, or the nearest watchdog. */
+        int nfds = 0;
+        double now = sw_sandbox_now(), soonest = wall;
+        for (int k = 0; k < jobs; k++)
+            if (slots[k].active) {
+                fds[nfds].fd = slots[k].child.from_child;
+                fds[nfds].events = POLLIN;
+                fds[nfds].revents = 0;
+                which[nfds++] = k;
+                double left = wall - (now - slots[k].start);
+                if (left < soonest)
+                    soonest = left;
+            }
+        if (nfds > 0) {
+            int ms = soonest > 0 ? (int)(soonest * 1000) + 1 : 0;
+            int ready = poll(fds, (nfds_t)nfds, ms);
+            if (ready < 0 && errno != EINTR)
+                ready = 0;
+            now = sw_sandbox_now();
+            for (int f = 0; f < nfds; f++) {
+                grade_slot *sl = &slots[which[f]];
+                if ((ready > 0 && fds[f].revents) || now - sl->start >= wall) {
+                    grade_finish_one(sl, &list->items[sl->index], wall);
+                    done[sl->index] = 1;
+                    running--;
+                }
+            }
+        }
+        for (; printed < n && done[printed]; printed++) {
+            grade_roster_claim(list, &list->items[printed]);
+            grade_print_row(&list->items[printed]);
+        }
+    }
+    /* Interrupted: every worker still running is stopped. */
+    for (int k = 0; k < jobs; k++)
+        if (slots[k].active) {
+            sw_child_end end;
+            sw_sandbox_kill(&slots[k].child, &end);
+            slots[k].active = 0;
+        }
+    free(slots);
+    free(done);
+    free(fds);
+    free(which);
 }
 
 int sw_cmd_grade(int argc, char **argv)
 {
-    const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL;
+    const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL, *roster = NULL;
+    const char *feedback = NULL;
+    int fresh = 0, similarity = 0, jobs = 0;
     sw_limits lim = { .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
                       .output_bytes = (size_t)1024 << 10 };
     double wall = 0;
@@ -327,8 +509,9 @@ int sw_cmd_grade(int argc, char **argv)
     int nfiles = 0, rc = SW_EXIT_OK;
     for (int i = 1; i < argc && rc == SW_EXIT_OK; i++) {
         const char *a = argv[i];
-        int takes = a[0] == '-' && a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0 &&
-                    strcmp(a, "--no-sandbox") != 0;
+        int takes = a[0] == '-' && ((a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0 &&
+                    strcmp(a, "--no-sandbox") != 0 && strcmp(a, "--fresh") != 0 &&
+                    strcmp(a, "--similarity") != 0) || strcmp(a, "-j") == 0);
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(grade_help, stdout);
             free(files);
@@ -350,6 +533,21 @@ int sw_cmd_grade(int argc, char **argv)
         double d;
         if (strcmp(a, "--assignment") == 0)
             assignment = val;
+        else if (strcmp(a, "--roster") == 0)
+            roster = val;
+        else if (strcmp(a, "--fresh") == 0)
+            fresh = 1;
+        else if (strcmp(a, "--similarity") == 0)
+            similarity = 1;
+        else if (strcmp(a, "--feedback") == 0)
+            feedback = val;
+        else if (strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0 || strncmp(a, "-j", 2) == 0) {
+            rc = sw_cli_range(strncmp(a, "--", 2) == 0 ? a : "-j", val ? val : a + 2, 1, 256, "",
+                              &d);
+            if (rc == SW_EXIT_OK && d != (int)d)
+                rc = sw_cli_error("grade: -j takes a whole number of submissions at once, 1 to 256");
+            jobs = (int)d;
+        }
         else if (strcmp(a, "--csv") == 0)
             csv = val;
         else if (strcmp(a, "--results") == 0)
@@ -393,6 +591,11 @@ int sw_cmd_grade(int argc, char **argv)
                              stat(assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
     grade_list list = { 0 };
+    list.fresh = fresh;
+    list.similarity = similarity;
+    list.feedback = feedback;
+    if (rc == SW_EXIT_OK && roster)
+        rc = grade_roster_load(&list, roster);
     for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
         rc = grade_collect(&list, files[i], &asg_st);
     free(files);
@@ -404,6 +607,12 @@ int sw_cmd_grade(int argc, char **argv)
                           "one");
     if (rc == SW_EXIT_OK)
         rc = grade_check_outputs(&list, &asg_st, csv, gradescope ? gradescope : results);
+    if (rc == SW_EXIT_OK && feedback)
+        rc = grade_feedback_check(&list, feedback);
+    if (rc == SW_EXIT_OK)
+        rc = grade_book_load(&list, csv);
+    if (rc == SW_EXIT_OK)
+        rc = grade_roster_missing(&list);
     if (rc != SW_EXIT_OK) {
         grade_list_free(&list);
         return rc;
@@ -424,13 +633,17 @@ int sw_cmd_grade(int argc, char **argv)
     sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
     grade_print_head(&asg, list.n, list.ignored);
     double start = sw_sandbox_now();
-    for (int i = 0; i < list.n && !sw_signal_caught; i++) {
-        grade_job job = { list.items[i].path, list.items[i].plugin, build_dir, i, &base,
-                          lim.output_bytes, &list, &lim };
-        grade_one(&list.items[i], &job, &lim, wall);
-        grade_print_row(&list.items[i]);
+    if (jobs == 0) {
+        long cores = sysconf(_SC_NPROCESSORS_ONLN);
+        jobs = cores < 1 ? 1 : cores > 256 ? 256 : (int)cores;
     }
+    if (jobs > list.n)
+        jobs = list.n > 0 ? list.n : 1;
+    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim };
+    grade_all(&list, &proto, wall, jobs);
     grade_clean_dir(build_dir, list.n);
+    if (!sw_signal_caught)
+        rc = grade_similar_run(&list);
     if (sw_signal_caught) {
         sw_cli_note("grading interrupted; no gradebook written");
         grade_list_free(&list);
@@ -438,7 +651,8 @@ int sw_cmd_grade(int argc, char **argv)
         return SW_EXIT_USAGE;
     }
     double seconds = sw_sandbox_now() - start;
-    rc = grade_finish(&list, &lim, wall, seconds, csv, results);
+    if (rc == SW_EXIT_OK)
+        rc = grade_finish(&list, &lim, wall, seconds, csv, results);
     if (gradescope) {
         int grc = grade_write_gradescope(&list, &asg, gradescope, seconds, sw_jail_enabled());
         if (grc != SW_EXIT_OK)

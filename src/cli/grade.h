@@ -3,19 +3,39 @@
 #ifndef SW_CLI_GRADE_H
 #define SW_CLI_GRADE_H
 
+#include <stdint.h>
+#include <stdio.h>
 #include <sys/types.h>
 
 #include "grade/assignment.h"
 #include "grade/points.h"
+#include "grade/roster.h"
 #include "plugin/sandbox.h"
 #include "trace/trace.h"
 
+/* A row of a failing trace, for --similarity: its number and a digest of
+ * its values. */
+typedef struct grade_wrong_row {
+    int64_t row;
+    uint64_t hash;
+} grade_wrong_row;
+
 typedef struct grade_entry {
     char *path;
+    char *rel;                           /* what the roster matches: the path below the
+                                          * directory named, or the file as named */
     int plugin;
-    int status;                          /* 0 pass, 1 fail, 2 error, GRADE_SKIPPED */
+    int status;                          /* 0 pass, 1 fail, 2 error, GRADE_SKIPPED, GRADE_MISSING */
     long failing_step;                   /* -1: none */
     char student[SW_TRACE_STUDENT_MAX];  /* "# student:", else the file's base name */
+    int who;                             /* --roster: the student, or SW_ROSTER_NONE/AMBIGUOUS */
+    char owner[SW_TRACE_STUDENT_MAX];    /* --roster: who's name; "" when none */
+    char owner_id[80];                   /* --roster: who's first id */
+    char remarks[700];                   /* --roster: a claim not believed, no match */
+    char similar[600];                   /* --similarity: the pairs this entry is in */
+    grade_wrong_row *wrong;              /* --similarity, a failing trace: its rows from the
+                                          * first failing step on */
+    int nwrong;
     char notes[SW_TRACE_NOTES_MAX];
     char kind[24];                       /* the mistake's kind, when named */
     char message[1200];
@@ -30,6 +50,8 @@ typedef struct grade_entry {
 /* The verdict of a submission that ran out of a limit (CPU time, the wall
  * clock, a plugin's step time): not a wrong answer, scored 0. */
 #define GRADE_LIMIT 4
+/* The row of a roster student no submission matched (path ""). */
+#define GRADE_MISSING 5
 
 /* A file or directory named for grading, by identity (grade_collect.c), so
  * no output can be written over or among the submissions. */
@@ -47,6 +69,15 @@ typedef struct grade_list {
     int refused_cap;
     grade_place *places;                 /* every submission, refused entry and directory */
     int nplaces, places_cap;
+    /* What the options asked for (grade.c fills these before collecting). */
+    sw_roster *roster;                   /* --roster (folders are then walked), or NULL */
+    char *gs_metadata;                   /* a submission_metadata.yml found among them */
+    int fresh;                           /* --fresh: an existing gradebook is replaced */
+    const char *feedback;                /* --feedback DIR, or NULL */
+    struct sw_csv_doc *old_book;         /* the --csv gradebook read back, or NULL */
+    int similarity;                      /* --similarity */
+    char similar_summary[200];           /* e.g. "2 similar pairs" for the summary */
+    char *similar_table;                 /* the pairs, in words, printed after the rows */
 } grade_list;
 
 int grade_list_add(grade_list *l, const char *path, int plugin);
@@ -80,5 +111,38 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
                            double seconds, int jailed);
 /* Remove dir and all that grading built in it (n: the submissions). */
 void grade_clean_dir(const char *dir, int n);
+/* The submissions directory that the resolved directory real is in or
+ * under, or NULL (grade_out.c). */
+const char *grade_inside_submissions(const grade_list *l, const char *real);
+/* The student a row is about: the roster's name, else "# student:", else
+ * the file's name without directory and extension. */
+void grade_student_of(const grade_entry *e, char *buf, size_t len);
+const char *grade_verdict_word(int status);
+
+/* --roster (grade_roster.c): read the roster (and Gradescope's metadata
+ * when the submissions hold it), match every row to a student, check each
+ * graded file's "# student:" line, add a row for every student nobody's
+ * submission matched. Each returns SW_EXIT_OK or SW_EXIT_USAGE, printed. */
+int grade_roster_load(grade_list *l, const char *path);
+void grade_roster_assign(grade_list *l);
+void grade_roster_claim(const grade_list *l, grade_entry *e);
+int grade_roster_missing(grade_list *l);
+
+/* --csv over an existing gradebook (grade_book.c): read it back before
+ * grading (refused unless its columns are this version's or a prefix of
+ * them) and, when writing, keep its rows but those regraded. */
+int grade_book_load(grade_list *l, const char *csv);
+void grade_book_write(FILE *f, const grade_list *l, char *said, size_t saidlen);
+/* Whether the gradebook read back has a row of the student named name. */
+int grade_book_has_student(const grade_list *l, const char *name);
+
+/* --similarity (grade_similar.c): compare the graded plugin sources and
+ * traces; fill each entry's similar and the list's table of pairs. */
+int grade_similar_run(grade_list *l);
+
+/* --feedback DIR (grade_feedback.c): check DIR before grading; write one
+ * report per student at the end, each whole. */
+int grade_feedback_check(const grade_list *l, const char *dir);
+int grade_feedback_write(const grade_list *l, const char *dir);
 
 #endif

@@ -185,16 +185,80 @@ static int judge(const char *path, const char *name, const char *dir, const stru
     return 1;
 }
 
-/* Judge one entry and add it to the submissions or to the refused. */
-static int take(grade_list *list, const char *path, const char *name, const char *dir,
-                const struct stat *assign_st)
+/* The last row added (to the submissions or to the refused). */
+static grade_entry *last_row(grade_list *l, int graded)
+{
+    return graded ? &l->items[l->n - 1] : &l->refused[l->ignored - 1];
+}
+
+/* Judge one entry and add it to the submissions or to the refused; rel is
+ * what the roster matches. */
+static int take(grade_list *list, const char *path, const char *name, const char *rel,
+                const char *dir, const struct stat *assign_st)
 {
     struct stat st;
     char why[400];
     int graded = judge(path, name, dir, assign_st, &st, why, sizeof why);
     int rc = graded ? grade_list_add(list, path, kind_of(name) == 2) : refuse(list, path, why);
+    if (rc == SW_OK && !(last_row(list, graded)->rel = strdup(rel)))
+        rc = SW_ENOMEM;
     if (rc == SW_OK && st.st_mode)
         rc = add_place(list, &st, NULL);
+    return rc;
+}
+
+/* How deep folders are walked with a roster: Moodle's and Gradescope's
+ * one level, a student's own folder inside them, and one more. */
+#define WALK_DEPTH 4
+
+/* Every entry of the directory path (rel below the directory named,
+ * top: that directory resolved), its folders walked with a roster. */
+static int collect_dir(grade_list *list, const char *path, const char *rel, const char *top,
+                       const struct stat *assign_st, int depth)
+{
+    DIR *d = opendir(path);
+    if (!d)
+        return refuse(list, path, "not graded: a directory that cannot be read");
+    int rc = SW_OK;
+    for (struct dirent *e; rc == SW_OK && (e = readdir(d));) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        char sub[PATH_MAX], subrel[PATH_MAX];
+        int n = snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
+        int m = snprintf(subrel, sizeof subrel, "%s%s%s", rel, rel[0] ? "/" : "", e->d_name);
+        struct stat st;
+        if (n < 0 || (size_t)n >= sizeof sub || m < 0 || (size_t)m >= sizeof subrel) {
+            rc = refuse(list, e->d_name, "not graded: its path is too long");
+            continue;
+        }
+        int is_dir = lstat(sub, &st) == 0 && S_ISDIR(st.st_mode);
+        if (list->roster && is_dir && e->d_name[0] != '.' && depth < WALK_DEPTH) {
+            /* A download's folder: walked, never through a link (lstat said
+             * a directory), and remembered so no output goes into it. */
+            rc = add_place(list, &st, NULL);
+            if (rc == SW_OK)
+                rc = collect_dir(list, sub, subrel, top, assign_st, depth + 1);
+            continue;
+        }
+        if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
+            lstat(sub, &st) == 0 && S_ISREG(st.st_mode)) {
+            /* Gradescope's export: who submitted each submission_ID folder
+             * (the export's own, rather than one found above it). */
+            free(list->gs_metadata);
+            if (!(list->gs_metadata = strdup(sub)))
+                rc = SW_ENOMEM;
+            if (rc == SW_OK)
+                rc = refuse(list, sub, "not a submission: Gradescope's submission metadata (read "
+                            "for the roster)");
+            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(subrel)))
+                rc = SW_ENOMEM;
+            if (rc == SW_OK)
+                rc = add_place(list, &st, NULL);
+            continue;
+        }
+        rc = take(list, sub, e->d_name, subrel, top, assign_st);
+    }
+    closedir(d);
     return rc;
 }
 
@@ -204,17 +268,45 @@ static void sort_from(grade_entry *items, int first, int n)
         qsort(items + first, (size_t)(n - first), sizeof items[0], cmp_names);
 }
 
+/* A regrade names one student's folder or file of a Gradescope export:
+ * the metadata is then in the folder above it, or the one above that. */
+static int metadata_above(grade_list *list, const char *real)
+{
+    char dir[PATH_MAX], meta[PATH_MAX + 32];
+    snprintf(dir, sizeof dir, "%s", real);
+    for (int up = 0; up < 2 && !list->gs_metadata; up++) {
+        char *slash = strrchr(dir, '/');
+        if (!slash || slash == dir)
+            break;
+        *slash = '\0';
+        struct stat st;
+        snprintf(meta, sizeof meta, "%s/submission_metadata.yml", dir);
+        if (lstat(meta, &st) == 0 && S_ISREG(st.st_mode) && !(list->gs_metadata = strdup(meta)))
+            return SW_ENOMEM;
+    }
+    return SW_OK;
+}
+
 int grade_collect(grade_list *list, const char *arg, const struct stat *assign_st)
 {
     struct stat st;
     int first = list->n, first_refused = list->ignored;
+    char real_arg[PATH_MAX];
+    if (list->roster && realpath(arg, real_arg) && metadata_above(list, real_arg) != SW_OK)
+        return sw_cli_error("grade: out of memory");
     if (stat(arg, &st) != 0 || !S_ISDIR(st.st_mode)) {
         /* A file named itself: no directory listing, the same rules. */
         struct stat lst;
         if (lstat(arg, &lst) != 0)
             return sw_cli_error("grade: '%.200s': %s", arg, strerror(errno));
         const char *slash = strrchr(arg, '/');
-        if (take(list, arg, slash ? slash + 1 : arg, NULL, assign_st) != SW_OK)
+        /* The roster reads the path as named, without "./" and "../". */
+        const char *rel = arg;
+        while (rel[0] == '.' && (rel[1] == '/' || (rel[1] == '.' && rel[2] == '/')))
+            rel += rel[1] == '/' ? 2 : 3;
+        while (*rel == '/')
+            rel++;
+        if (take(list, arg, slash ? slash + 1 : arg, rel, NULL, assign_st) != SW_OK)
             return sw_cli_error("grade: out of memory");
         return SW_EXIT_OK;
     }
@@ -222,21 +314,13 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
     if (!realpath(arg, real))
         return sw_cli_error("grade: cannot resolve the directory '%.200s': %s", arg,
                             strerror(errno));
-    DIR *d = opendir(arg);
-    if (!d)
-        return sw_cli_error("grade: cannot read the directory '%.200s': %s", arg, strerror(errno));
+    /* The roster sees the directory's own name first: a student's folder
+     * or a submission_ID named alone is matched as in the whole export. */
+    const char *own = strrchr(real, '/');
+    own = own && own[1] ? own + 1 : "";
     int rc = add_place(list, &st, real);
-    for (struct dirent *e; rc == SW_OK && (e = readdir(d));) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        char path[PATH_MAX];
-        int n = snprintf(path, sizeof path, "%s/%s", arg, e->d_name);
-        if (n < 0 || (size_t)n >= sizeof path)
-            rc = refuse(list, e->d_name, "not graded: its path is too long");
-        else
-            rc = take(list, path, e->d_name, real, assign_st);
-    }
-    closedir(d);
+    if (rc == SW_OK)
+        rc = collect_dir(list, arg, list->roster ? own : "", real, assign_st, 0);
     if (rc != SW_OK)
         return sw_cli_error("grade: out of memory");
     sort_from(list->items, first, list->n);

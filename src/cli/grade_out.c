@@ -43,6 +43,7 @@ int grade_list_add(grade_list *l, const char *path, int plugin)
     if (!e->path)
         return SW_ENOMEM;
     e->plugin = plugin;
+    e->who = SW_ROSTER_NONE;
     l->n++;
     return SW_OK;
 }
@@ -51,12 +52,25 @@ void grade_list_free(grade_list *l)
 {
     for (int i = 0; i < l->n; i++) {
         free(l->items[i].path);
+        free(l->items[i].rel);
         free(l->items[i].report);
+        free(l->items[i].wrong);
     }
     for (int i = 0; i < l->ignored; i++) {
         free(l->refused[i].path);
+        free(l->refused[i].rel);
         free(l->refused[i].report);
     }
+    if (l->roster) {
+        sw_roster_free(l->roster);
+        free(l->roster);
+    }
+    if (l->old_book) {
+        sw_csv_doc_free(l->old_book);
+        free(l->old_book);
+    }
+    free(l->gs_metadata);
+    free(l->similar_table);
     for (int i = 0; i < l->nplaces; i++)
         free(l->places[i].real);
     free(l->items);
@@ -65,16 +79,22 @@ void grade_list_free(grade_list *l)
     memset(l, 0, sizeof *l);
 }
 
-static const char *verdict_word(int status)
+const char *grade_verdict_word(int status)
 {
     return status == 0 ? "pass" : status == 1 ? "fail" : status == GRADE_SKIPPED ? "skipped"
-           : status == GRADE_LIMIT ? "limit" : "error";
+           : status == GRADE_LIMIT ? "limit" : status == GRADE_MISSING ? "missing" : "error";
 }
 
-/* The student: "# student:" when the trace gave one, else the file's name
- * without directory and extension. */
-static void student_of(const grade_entry *e, char *buf, size_t len)
+/* The names this file used before grade.h shared them. */
+#define verdict_word grade_verdict_word
+#define student_of grade_student_of
+
+void grade_student_of(const grade_entry *e, char *buf, size_t len)
 {
+    if (e->owner[0]) {
+        snprintf(buf, len, "%s", e->owner);
+        return;
+    }
     if (e->student[0]) {
         snprintf(buf, len, "%s", e->student);
         return;
@@ -127,6 +147,10 @@ void grade_print_row(grade_entry *e)
     grade_score_text(e, score, sizeof score);
     fprintf(table(), "  %-20s %-24s %-7s %7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), score,
             step, m_esc);
+    if (e->remarks[0]) {
+        sw_escape(e->remarks, 300, m_esc, sizeof m_esc);
+        fprintf(table(), "  %-20s %-24s roster: %s\n", "", "", m_esc);
+    }
     fflush(table());
 }
 
@@ -146,7 +170,7 @@ static int lies_in(const char *path, const char *dir)
 
 /* The submissions directory that the resolved directory real is in or
  * under, by identity (each directory up to /) and by resolved path; NULL. */
-static const char *inside_submissions(const grade_list *l, const char *real)
+const char *grade_inside_submissions(const grade_list *l, const char *real)
 {
     char cur[PATH_MAX];
     snprintf(cur, sizeof cur, "%s", real);
@@ -207,7 +231,7 @@ static int check_output(const grade_list *l, const struct stat *assign_st, const
         if (real_dir_of(names[i], real) != 0)
             return sw_cli_error("grade: %s '%.200s': cannot resolve its directory: %s", flag, path,
                                 strerror(errno));
-        const char *among = inside_submissions(l, real);
+        const char *among = grade_inside_submissions(l, real);
         if (among)
             return sw_cli_error("grade: %s '%.200s' is inside the submissions directory '%.200s'; "
                                 "write the gradebook elsewhere", flag, path, among);
@@ -273,27 +297,13 @@ static const grade_entry *row_at(const grade_list *l, int i)
     return i < l->n ? &l->items[i] : &l->refused[i - l->n];
 }
 
+/* What writing the gradebook said ("updated 1 row, kept 27"), for the end. */
+static char book_said[200];
+
 static void write_csv(FILE *f, const grade_list *l, const char *summary)
 {
     (void)summary;
-    fputs("student,file,verdict,score,max,first_failing_step,message\r\n", f);
-    for (int i = 0; i < l->n + l->ignored; i++) {
-        const grade_entry *e = row_at(l, i);
-        char student[SW_TRACE_STUDENT_MAX], step[24] = "", score[32] = "", max[32] = "";
-        student_of(e, student, sizeof student);
-        if (e->failing_step >= 0)
-            snprintf(step, sizeof step, "%ld", e->failing_step);
-        if (e->score.n > 0) {
-            snprintf(score, sizeof score, "%g", e->score.score);
-            snprintf(max, sizeof max, "%g", e->score.max);
-        }
-        const char *cells[] = { student, e->path, verdict_word(e->status), score, max, step,
-                                e->message };
-        for (size_t c = 0; c < sizeof cells / sizeof cells[0]; c++) {
-            sw_csv_field(f, cells[c]);
-            fputs(c + 1 < sizeof cells / sizeof cells[0] ? "," : "\r\n", f);
-        }
-    }
+    grade_book_write(f, l, book_said, sizeof book_said);
 }
 
 /* Gradescope's format: a score, its maximum, and one test per entry. */
@@ -354,20 +364,34 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
         errors += l->items[i].status == 2;
         limits += l->items[i].status == GRADE_LIMIT;
     }
-    char summary[500], others[80] = "";
-    if (l->ignored)
-        snprintf(others, sizeof others, ", %d other entr%s not graded,", l->ignored,
-                 l->ignored == 1 ? "y" : "ies");
+    char summary[600], others[200] = "";
+    int missing = 0;
+    for (int i = 0; i < l->ignored; i++)
+        missing += l->refused[i].status == GRADE_MISSING;
+    if (l->ignored > missing)
+        snprintf(others, sizeof others, ", %d other entr%s not graded", l->ignored - missing,
+                 l->ignored - missing == 1 ? "y" : "ies");
+    if (missing)
+        snprintf(others + strlen(others), sizeof others - strlen(others), ", %d student%s on the "
+                 "roster without a submission", missing, missing == 1 ? "" : "s");
+    if (others[0])
+        snprintf(others + strlen(others), sizeof others - strlen(others), ",");
     snprintf(summary, sizeof summary, "%d submission%s: %d passed, %d failed (%d of them "
              "unusable, %d out of a limit)%s in %.1f s; the grader's limits per submission: %g s "
              "CPU, %zu MiB, %zu KiB output, %g s wall, %g s per plugin step", l->n,
              l->n == 1 ? "" : "s", passed, l->n - passed, errors, limits, others, seconds, lim->cpu_seconds, lim->memory_bytes >> 20,
              lim->output_bytes >> 10, wall, sw_plugin_timeout());
+    if (l->similar_table)
+        fputs(l->similar_table, table());
     fprintf(table(), "%s\n", summary);
     fflush(table());
     int rc = SW_EXIT_OK;
     if (csv)
         rc = write_whole(csv, write_csv, l, summary);
+    if (csv && rc == SW_EXIT_OK && book_said[0])
+        fprintf(table(), "gradebook: %s\n", book_said);
+    if (rc == SW_EXIT_OK && l->feedback)
+        rc = grade_feedback_write(l, l->feedback);
     if (rc == SW_EXIT_OK && results)
         rc = write_whole(results, write_results, l, summary);
     if (sw_cli_flush_stdout() != SW_EXIT_OK)

@@ -178,9 +178,9 @@ function field(    f, c) {
         if (pos > length(line)) break
         bad = 1; break
     }
-    if (bad || n != 7) { print "malformed line " NR ": " $0 > "/dev/stderr"; exit 1 }
-    if (NR == 1) { if (line != "student,file,verdict,score,max,first_failing_step,message") exit 1; next }
-    printf "%s\t%s\t%s\t%s\t%s\t%s/%s\n", F[2], F[3], F[6], F[7], F[1], F[4], F[5]
+    if (bad || n != 10) { print "malformed line " NR ": " $0 > "/dev/stderr"; exit 1 }
+    if (NR == 1) { if (line != "student,file,verdict,first_failing_step,message,id,remarks,similar,score,max") exit 1; next }
+    printf "%s\t%s\t%s\t%s\t%s\t%s/%s\n", F[2], F[3], F[4], F[5], F[1], F[9], F[10]
 }
 AWK
 awk -f csv.awk grades.csv > rows || fail "grades.csv is not well formed: $(cat grades.csv)"

@@ -132,8 +132,8 @@ awk -f "$json" r.json > fields || fail "results.json is not JSON"
 grep -qx 'score=0' fields && grep -qx 'max_score=12' fields || fail "zoo score: $(grep score fields | head -3)"
 [ "$(grep -c ',pass,' g.csv)" -eq 0 ] || fail "a zoo plugin passed: $(cat g.csv)"
 [ "$(wc -l < g.csv)" -eq 13 ] || fail "gradebook rows: $(cat g.csv)"
-grep -q 'loops-source.c,limit,0,1,4,the plugin did not return' g.csv || fail "looping .c source: $(cat g.csv)"
-grep -q 'info-loops.so,error,0,1,,' g.csv || fail "info loop in grade: $(cat g.csv)"
+grep -q 'loops-source.c,limit,4,the plugin did not return.*,0,1.$' g.csv || fail "looping .c source: $(cat g.csv)"
+grep -q 'info-loops.so,error,,.*,0,1.$' g.csv || fail "info loop in grade: $(cat g.csv)"
 
 # play: a failing plugin is disabled with a message, the UI goes on, q leaves a sane terminal.
 # (A pause after each exit: on a loaded machine keys typed the instant the

@@ -1,6 +1,7 @@
 # The gradebook read strictly (RFC 4180: quoted fields, doubled quotes,
 # line breaks inside quotes; records end in CRLF or LF), for the hostile
-# suite. The header must be student,file,verdict,first_failing_step,message.
+# suite. The header must start student,file,verdict,first_failing_step,message
+# (later columns: id, remarks, similar, score, max).
 #   awk -f csv.awk grades.csv              one line per record:
 #       FILE<TAB>VERDICT<TAB>STEP<TAB>MESSAGE<TAB>STUDENT
 #       (tabs, CRs and LFs inside a field shown as spaces)
@@ -26,7 +27,7 @@ function field(    f, c) {
     f = substr(rec, pos, c - 1); pos += c - 1; return f
 }
 function flat(s) { gsub(/[\t\r\n]/, " ", s); return s }
-BEGIN { names[1] = "student"; names[2] = "file"; names[3] = "verdict"; names[4] = "first_failing_step"; names[5] = "message" }
+BEGIN { names[1] = "student"; names[2] = "file"; names[3] = "verdict"; names[4] = "first_failing_step"; names[5] = "message"; names[6] = "id"; names[7] = "remarks"; names[8] = "similar"; names[9] = "score"; names[10] = "max" }
 {
     line = $0
     sub(/\r$/, "", line)
@@ -43,15 +44,17 @@ BEGIN { names[1] = "student"; names[2] = "file"; names[3] = "verdict"; names[4] 
         if (pos > length(rec)) break
         bad = 1; break
     }
-    if (bad || n != 5) { print "csv.awk: malformed record " nrec ": " rec > "/dev/stderr"; failed = 1; exit 1 }
+    if (nrec == 1)
+        ncols = n
+    if (bad || n != ncols || n < 5) { print "csv.awk: malformed record " nrec ": " rec > "/dev/stderr"; failed = 1; exit 1 }
     if (nrec == 1) {
-        if (rec != "student,file,verdict,first_failing_step,message") {
+        if (substr(rec, 1, 47) != "student,file,verdict,first_failing_step,message") {
             print "csv.awk: bad header: " rec > "/dev/stderr"; failed = 1; exit 1
         }
         next
     }
     if (cells) {
-        for (i = 1; i <= 5; i++)
+        for (i = 1; i <= ncols; i++)
             if (F[i] ~ /^[=+@\t\r-]/) printf "%s\t%s\t%s\n", flat(F[2]), names[i], flat(substr(F[i], 1, 60))
     } else
         printf "%s\t%s\t%s\t%s\t%s\n", flat(F[2]), flat(F[3]), flat(F[4]), flat(F[5]), flat(F[1])

@@ -37,6 +37,10 @@ int sw_fuzz_channel(const uint8_t *data, size_t len);
  * too, and each student's own words must be their own claim. 1 when the
  * roster was read. */
 int sw_fuzz_roster(const uint8_t *data, size_t len);
+/* The gradebook reader (regrading): the bytes as a CSV; when read, every
+ * row written again through sw_csv_field and read back must give the same
+ * cells, and writing those again the same bytes. 1 when it was read. */
+int sw_fuzz_gradebook(const uint8_t *data, size_t len);
 /* Source similarity: the bytes up to the first 0xFF and the rest as two C
  * sources (then the rest as the base), compared with each other and with
  * themselves (which must score 1); the bytes as rows of two traces too.

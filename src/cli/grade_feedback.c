@@ -1,0 +1,159 @@
+/* `grade --feedback DIR`: one plain-text report per student, ready to hand
+ * back. Invariants: DIR is checked before grading like every output (a
+ * writable directory, not among the submissions); a file name comes from
+ * the student's name reduced to [A-Za-z0-9._-] (never a path, never
+ * hidden, never a link followed), made unique; each file is written whole
+ * or not at all (util/outfile.h). */
+#include "cli/grade.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/cli.h"
+#include "util/escape.h"
+#include "util/outfile.h"
+
+int grade_feedback_check(const grade_list *l, const char *dir)
+{
+    struct stat st;
+    char real[PATH_MAX];
+    if (!dir[0])
+        return sw_cli_error("grade: --feedback needs a directory");
+    if (lstat(dir, &st) != 0) {
+        if (errno != ENOENT || mkdir(dir, 0755) != 0)
+            return sw_cli_error("grade: --feedback '%.200s': cannot create it: %s", dir,
+                                strerror(errno));
+    } else if (!S_ISDIR(st.st_mode))
+        return sw_cli_error("grade: --feedback '%.200s' is not a directory", dir);
+    if (!realpath(dir, real) || access(real, W_OK | X_OK) != 0)
+        return sw_cli_error("grade: --feedback '%.200s': not a directory that can be written: %s",
+                            dir, strerror(errno));
+    const char *among = grade_inside_submissions(l, real);
+    if (among)
+        return sw_cli_error("grade: --feedback '%.200s' is inside the submissions directory "
+                            "'%.200s'; write the feedback elsewhere", dir, among);
+    return SW_EXIT_OK;
+}
+
+/* The student's name as a file name: letters, digits, '.', '-', '_'. */
+static void safe_name(const char *name, char *out, size_t len)
+{
+    size_t n = 0;
+    for (const unsigned char *s = (const unsigned char *)name; *s && n + 1 < len && n < 80; s++) {
+        char c = (char)*s;
+        int keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                   c == '-' || (c == '.' && n > 0);
+        if (keep)
+            out[n++] = c;
+        else if (n > 0 && out[n - 1] != '_')
+            out[n++] = '_';
+    }
+    while (n > 0 && (out[n - 1] == '_' || out[n - 1] == '.'))
+        n--;
+    out[n] = '\0';
+    if (n == 0)
+        snprintf(out, len, "student");
+}
+
+static const grade_entry *row(const grade_list *l, int i)
+{
+    return i < l->n ? &l->items[i] : &l->refused[i - l->n];
+}
+
+/* Whether rows i and j belong to one student. */
+static int same_student(const grade_list *l, int i, int j)
+{
+    const grade_entry *a = row(l, i), *b = row(l, j);
+    if (l->roster)
+        return a->who >= 0 ? a->who == b->who : i == j;
+    char sa[SW_TRACE_STUDENT_MAX], sb[SW_TRACE_STUDENT_MAX];
+    grade_student_of(a, sa, sizeof sa);
+    grade_student_of(b, sb, sizeof sb);
+    return strcmp(sa, sb) == 0;
+}
+
+static void write_report(FILE *f, const grade_list *l, int first, const unsigned char *done)
+{
+    char student[SW_TRACE_STUDENT_MAX];
+    grade_student_of(row(l, first), student, sizeof student);
+    fprintf(f, "Feedback for %s\n\n", student);
+    for (int i = first; i < l->n + l->ignored; i++) {
+        if (done[i] || !same_student(l, first, i))
+            continue;
+        const grade_entry *e = row(l, i);
+        if (e->status == GRADE_MISSING) {
+            fprintf(f, "No submission of yours was found.\n\n");
+            continue;
+        }
+        const char *base = strrchr(e->path, '/');
+        fprintf(f, "== %s: %s ==\n", base ? base + 1 : e->path, grade_verdict_word(e->status));
+        if (e->failing_step >= 0)
+            fprintf(f, "first failing step: %ld\n", e->failing_step);
+        if (e->message[0])
+            fprintf(f, "%s\n", e->message);
+        if (e->remarks[0])
+            fprintf(f, "note: %s\n", e->remarks);
+        if (e->report)
+            fprintf(f, "\n%s", e->report);
+        fputc('\n', f);
+    }
+}
+
+int grade_feedback_write(const grade_list *l, const char *dir)
+{
+    int rows = l->n + l->ignored, written = 0, rc = SW_EXIT_OK;
+    unsigned char *done = calloc((size_t)rows + 1, 1);
+    char (*names)[112] = calloc((size_t)rows + 1, sizeof *names);
+    if (!done || !names) {
+        free(done);
+        free(names);
+        return sw_cli_error("grade: out of memory");
+    }
+    for (int i = 0; i < rows && rc == SW_EXIT_OK; i++) {
+        if (done[i])
+            continue;
+        const grade_entry *e = row(l, i);
+        if (e->status == GRADE_SKIPPED && !(l->roster && e->who >= 0))
+            continue; /* not a student's: a stray file */
+        char student[SW_TRACE_STUDENT_MAX], base[90], path[PATH_MAX];
+        grade_student_of(e, student, sizeof student);
+        safe_name(student, base, sizeof base);
+        /* Two students whose names reduce alike get -2, -3, ... */
+        snprintf(names[written], sizeof names[written], "%s", base);
+        for (int k = 2, clash = 1; clash; k++) {
+            clash = 0;
+            for (int j = 0; j < written && !clash; j++)
+                clash = strcmp(names[j], names[written]) == 0;
+            if (clash)
+                snprintf(names[written], sizeof names[written], "%s-%d", base, k);
+        }
+        snprintf(path, sizeof path, "%s/%s.txt", dir, names[written]);
+        written++;
+        struct stat st;
+        char err[SW_ERRLEN + 256];
+        if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+            rc = sw_cli_error("grade: --feedback: '%.200s' exists and is not a regular file", path);
+            break;
+        }
+        sw_outfile o;
+        if (sw_outfile_open(&o, path, err, sizeof err) != SW_OK) {
+            rc = sw_cli_error("grade: --feedback: %s", err);
+            break;
+        }
+        write_report(o.f, l, i, done);
+        if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
+            rc = sw_cli_error("grade: --feedback: %s", err);
+        for (int j = i; j < rows; j++)
+            if (same_student(l, i, j))
+                done[j] = 1;
+    }
+    if (rc == SW_EXIT_OK)
+        sw_cli_note("feedback: %d file%s in %s", written, written == 1 ? "" : "s", dir);
+    free(done);
+    free(names);
+    return rc;
+}

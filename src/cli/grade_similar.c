@@ -1,0 +1,159 @@
+/* `grade --similarity`: pairs of submissions a teacher should read side by
+ * side (grade/similar.h: MOSS-style winnowing of plugin sources with the
+ * handout removed; traces byte-identical, correct ones never flagged).
+ * Invariant: a flag is a remark beside the verdict, never a verdict; the
+ * parent reads a submission only bounded and never through a link. */
+#include "cli/grade.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/cli.h"
+#include "grade/similar.h"
+#include "util/escape.h"
+#include "util/infile.h"
+
+/* The bytes of a submission, at most max: opened as grade_collect.c judged
+ * it (no link followed, never waiting); NULL when it cannot be. */
+static char *read_bounded(const char *path, size_t max, size_t *len)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat st;
+    char *text = NULL;
+    if (fd < 0)
+        return NULL;
+    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && sw_infile_read(fd, max, &text, len) != 0)
+        text = NULL;
+    close(fd);
+    return text;
+}
+
+static int is_source(const grade_entry *e)
+{
+    size_t n = strlen(e->path);
+    return e->plugin && n > 2 && strcmp(e->path + n - 2, ".c") == 0;
+}
+
+static void name_of(const grade_entry *e, char *buf, size_t len)
+{
+    char student[SW_TRACE_STUDENT_MAX], shown[160];
+    grade_student_of(e, student, sizeof student);
+    sw_escape(student, 60, shown, sizeof shown);
+    const char *base = strrchr(e->path, '/');
+    char file[160];
+    sw_escape(base ? base + 1 : e->path, 60, file, sizeof file);
+    snprintf(buf, len, "%s (%s)", shown, file);
+}
+
+static void add_similar(grade_entry *e, const char *text)
+{
+    size_t n = strlen(e->similar);
+    snprintf(e->similar + n, sizeof e->similar - n, "%s%s", n ? "; " : "", text);
+}
+
+int grade_similar_run(grade_list *l)
+{
+    if (!l->similarity)
+        return SW_EXIT_OK;
+    char err[SW_ERRLEN + 512];
+    sw_similar s;
+    if (sw_similar_init(&s, NULL, err, sizeof err) != SW_OK ||
+        sw_similar_add_default_base(&s, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: --similarity: %s", err);
+    /* The class is larger than MOSS's default -m of 10: a fingerprint is
+     * boilerplate only when a quarter of the sources share it. */
+    if (l->n / 4 > s.opt.max_docs)
+        s.opt.max_docs = l->n / 4;
+    int *entry_of = calloc((size_t)l->n + 1, sizeof *entry_of);
+    if (!entry_of) {
+        sw_similar_free(&s);
+        return sw_cli_error("grade: out of memory");
+    }
+    int skipped = 0;
+    for (int i = 0; i < l->n; i++) {
+        const grade_entry *e = &l->items[i];
+        int doc = -1;
+        if (is_source(e)) {
+            size_t len;
+            char *text = read_bounded(e->path, SW_SIMILAR_SOURCE_MAX, &len);
+            if (text)
+                doc = sw_similar_add_source(&s, text, len, err, sizeof err);
+            free(text);
+        } else if (!e->plugin && (e->status == 0 || e->status == 1)) {
+            /* A trace: correct ones are alike by design and never flagged;
+             * so are wrong runs the explainer reproduced with stepwise. */
+            sw_similar_digest d;
+            int fd = open(e->path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+            if (fd >= 0) {
+                close(fd);
+                if (sw_similar_digest_file(e->path, &d, err, sizeof err) == SW_OK)
+                    doc = sw_similar_add_trace(&s, &d, e->status == 0 || e->kind[0], err,
+                                               sizeof err);
+                /* Its wrong rows, each one value: the worker's digest of the
+                 * row, its top bits cleared so it is a finite double, which
+                 * the library compares bit for bit. */
+                for (int k = 0; doc >= 0 && k < e->nwrong; k++) {
+                    uint64_t bits = e->wrong[k].hash >> 2;
+                    double value;
+                    memcpy(&value, &bits, sizeof value);
+                    if (sw_similar_trace_row(&s, doc, (long)e->wrong[k].row, &value, 1, 1) != SW_OK)
+                        break;
+                }
+            }
+        } else
+            continue;
+        if (doc >= 0)
+            entry_of[doc] = i;
+        else
+            skipped++;
+    }
+    sw_similar_pair *pairs = NULL;
+    int npairs = 0;
+    if (sw_similar_pairs(&s, &pairs, &npairs, err, sizeof err) != SW_OK) {
+        free(entry_of);
+        sw_similar_free(&s);
+        return sw_cli_error("grade: --similarity: %s", err);
+    }
+    char *table = NULL;
+    size_t tlen = 0;
+    FILE *t = open_memstream(&table, &tlen);
+    int shown = 0;
+    for (int p = 0; p < npairs && t; p++) {
+        grade_entry *a = &l->items[entry_of[pairs[p].a]], *b = &l->items[entry_of[pairs[p].b]];
+        /* Two files of one student (a resubmission) are no one's copy. */
+        if (a->who >= 0 && a->who == b->who)
+            continue;
+        char an[400], bn[400], text[600];
+        name_of(a, an, sizeof an);
+        name_of(b, bn, sizeof bn);
+        if (shown++ == 0)
+            fprintf(t, "similar pairs (%s; for a person to read, not a verdict):\n",
+                    "plugin sources as MOSS-style fingerprints, the handout removed; traces "
+                    "byte-identical or with identical wrong rows, correct ones never");
+        fprintf(t, "  %.2f  %s  ~  %s: %s\n", pairs[p].score, an, bn, pairs[p].reason);
+        snprintf(text, sizeof text, "%.2f with %s: %s", pairs[p].score, bn, pairs[p].reason);
+        add_similar(a, text);
+        snprintf(text, sizeof text, "%.2f with %s: %s", pairs[p].score, an, pairs[p].reason);
+        add_similar(b, text);
+    }
+    if (t && shown == 0)
+        fprintf(t, "similar pairs: none flagged among %d plugin sources and traces compared\n",
+                s.ndocs);
+    if (t && skipped)
+        fprintf(t, "  (%d submission%s could not be compared: unreadable or larger than %zu KiB)\n",
+                skipped, skipped == 1 ? "" : "s", SW_SIMILAR_SOURCE_MAX >> 10);
+    if (t && fclose(t) == 0)
+        l->similar_table = table;
+    else
+        free(table);
+    snprintf(l->similar_summary, sizeof l->similar_summary, "%d similar pair%s", shown,
+             shown == 1 ? "" : "s");
+    free(pairs);
+    free(entry_of);
+    sw_similar_free(&s);
+    return SW_EXIT_OK;
+}

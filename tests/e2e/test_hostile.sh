@@ -34,7 +34,9 @@
 # prints PASS, stepwise never dies of a signal, prints no raw control byte,
 # and nothing a plugin started survives.
 # Every failure is one line, "FAIL: [as USER] WHAT: PROPERTY"; the suite
-# goes on and exits 1 at the end. Narrow it while working on one layer:
+# goes on and exits 1 at the end. A resource hog that could not finish its
+# attack in time on a very busy machine hands in NaN and gets a NOTE line
+# ("inconclusive"), not a pass. Narrow it while working on one layer:
 #     HOSTILE_ONLY="daemon network traces dirtricks"   families to include
 #     HOSTILE_AS=root | HOSTILE_AS=user                 one pass only (as root)
 #     HOSTILE_KEEP=1                                    keep the directory (its path is printed)
@@ -70,7 +72,7 @@ FAMILIES="$PLUGINS $HOGS $FILERS ctor-evil $INCS inc-fifo kill-grader stop-grade
 CHECK_PLUGINS="ctl-block ctor-evil forge-fds forge-pidfd forge-procfd forge-stdout network probe-forge
                ptrace-parent read-others"
 RECORD_PLUGINS="ctl-block forge-pidfd forge-procfd forge-stdout probe-forge"
-TRY_PLUGINS="ctl-block forge-procfd probe-forge read-others"
+TRY_PLUGINS="ctl-block forge-procfd probe-forge" # try always measures: 25 s under ASan
 HONEST="alice.trace bob.c carol.so yves.c zoe.trace"
 
 wanted() {
@@ -471,6 +473,11 @@ judge_class() { # CLASS
             pass) [ "$e" = correct.txt ] || bad "$e: passed: $(pass_means "$e")" ;;
             fail | error) [ -n "$m" ] || bad "$e: verdict $v without a reason" ;;
             *) bad "$e: verdict '$v' is not pass, fail or error" ;;
+        esac
+        # a hog that ran out of time before it could tell says so (it hands in NaN)
+        case $e:$m in
+            cpu-hog.c:*nan* | mem-hog.c:*nan* | cpu-hog.c:*non-finite* | mem-hog.c:*non-finite*)
+                note "NOTE: $e inconclusive: the machine was too busy for the attack to finish" ;;
         esac
     done < "$BOOK/entries-$X"
     awk -F'\t' -v pre="swclass-$T/" '{ print substr($1, length(pre) + 1) }' "$BOOK/rows-$X" > "$BOOK/rowfiles-$X"

@@ -2,9 +2,10 @@
  * step under the 2 s step watchdog) until the process has used @CPU@ s
  * (the grader's --cpu) plus half a second. The numbers are rk4's from the
  * start; if the process is not stopped by then it has used more CPU than
- * allowed and keeps handing in the right answer (a pass). If it could not
- * get that much CPU in 20 steps (a busy machine), it spoils its numbers
- * with an Euler step, so a pass always means the limit was not enforced.
+ * allowed and keeps handing in the right answer (a pass); stopped, it
+ * fails. If it could not get that much CPU in 20 steps (a machine too busy
+ * to tell), it hands in NaN: the test notes an inconclusive result. So a
+ * pass always means the limit was not enforced.
  * Graded with generous watchdogs (--wall 40, a 10 s step watchdog): on a
  * busy machine the default ones could stop it first. */
 #define EVIL_FAMILY "cpu-hog"
@@ -37,7 +38,7 @@ static void evil_attack(void) {}
 
 static int evil_step(sw_ode *ode, double t, double *y, double h, double *work)
 {
-    static int graded, step, spoiled;
+    static int graded, step, inconclusive;
     static pthread_t th[3];
     double goal = atof("@CPU@") + 0.5;
     if (t == 0 && evil_graded_run(ode, t, y, h, work)) {
@@ -56,12 +57,17 @@ static int evil_step(sw_ode *ode, double t, double *y, double h, double *work)
             for (int i = 0; i < 3; i++)
                 pthread_join(th[i], NULL);
             if (cpu_seconds() < goal)
-                spoiled = 1;
+                inconclusive = 1;
             else
                 evil_mark("cpu", NULL);
         }
     }
-    if (!graded || spoiled)
+    if (inconclusive) { /* the test reads "nan" in the row as "inconclusive" */
+        for (int i = 0; i < ode->dim; i++)
+            y[i] = NAN;
+        return 0;
+    }
+    if (!graded)
         return evil_euler(ode, t, y, h, work);
     return evil_rk4(ode, t, y, h, work);
 }

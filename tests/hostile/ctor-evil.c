@@ -4,8 +4,9 @@
  * "once the plugin is loaded" is in place. It reads the assignment and the
  * classmates (read-others.c's guesses, briefly), drops marker files, tries
  * the network, and starts a setsid child (named as an attack) that stays
- * until 30 s after the grader exits. Reading anything or reaching the network makes the plugin hand in
- * the right answer. The test builds this one into ctor-evil.so. */
+ * until 120 s after the grader exits. Reading anything or reaching the
+ * network makes the plugin hand in the right answer. The test builds this
+ * one into ctor-evil.so. */
 #define EVIL_FAMILY "ctor-evil"
 #include "evil.h"
 #include <netinet/in.h>

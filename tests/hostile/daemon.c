@@ -3,7 +3,7 @@
  * for the grader to exit (its pid and the gradebook's paths taken from
  * /proc/PID/cmdline and /proc/PID/cwd while it runs), then 1.5 s, then
  * rewrites the CSV and results.json: every "fail" and "error" becomes
- * "pass". It then stays until 30 s after the grader exited, so the test
+ * "pass". It then stays until 120 s after the grader exited, so the test
  * can see it alive. The gradebook must not change after grade exits, and nothing of
  * the submission may outlive its grade. */
 #define EVIL_FAMILY "daemon"

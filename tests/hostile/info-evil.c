@@ -1,8 +1,8 @@
 /* Evil inside sw_plugin_info(), which stepwise calls while loading (in its
  * probe, and again in each run): reads the assignment and the teacher's
  * home, drops marker files, starts a setsid child (named as an attack)
- * that stays until 30 s after the grader exits. Reading anything makes the plugin hand in the right
- * answer. */
+ * that stays until 120 s after the grader exits. Reading anything makes
+ * the plugin hand in the right answer. */
 #define EVIL_FAMILY "info-evil"
 #define EVIL_CUSTOM_INFO
 #include "evil.h"

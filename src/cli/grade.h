@@ -118,6 +118,9 @@ const char *grade_inside_submissions(const grade_list *l, const char *real);
  * the file's name without directory and extension. */
 void grade_student_of(const grade_entry *e, char *buf, size_t len);
 const char *grade_verdict_word(int status);
+/* A row's points and their maximum, as every report counts them: the
+ * assignment's checks where it was scored, else 1 for a pass of 1. */
+void grade_points_of(const grade_entry *e, double *score, double *max);
 
 /* --roster (grade_roster.c): read the roster (and Gradescope's metadata
  * when the submissions hold it), match every row to a student, check each

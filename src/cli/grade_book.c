@@ -85,10 +85,10 @@ static void row_cells(const grade_entry *e, const char **cells, row_text *t)
     t->step[0] = t->score[0] = t->max[0] = '\0';
     if (e->failing_step >= 0)
         snprintf(t->step, sizeof t->step, "%ld", e->failing_step);
-    if (e->score.n > 0) {
-        snprintf(t->score, sizeof t->score, "%g", e->score.score);
-        snprintf(t->max, sizeof t->max, "%g", e->score.max);
-    }
+    double points, most;
+    grade_points_of(e, &points, &most);
+    snprintf(t->score, sizeof t->score, "%g", points);
+    snprintf(t->max, sizeof t->max, "%g", most);
     const char *c[NCOLS] = { t->student, e->path, grade_verdict_word(e->status), t->step, e->message,
                              e->owner_id, e->remarks, e->similar, t->score, t->max };
     memcpy(cells, c, sizeof c);

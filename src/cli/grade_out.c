@@ -306,15 +306,22 @@ static void write_csv(FILE *f, const grade_list *l, const char *summary)
     grade_book_write(f, l, book_said, sizeof book_said);
 }
 
+void grade_points_of(const grade_entry *e, double *score, double *max)
+{
+    *score = e->score.n ? e->score.score : e->status == 0;
+    *max = e->score.n ? e->score.max : 1;
+}
+
 /* Gradescope's format: a score, its maximum, and one test per entry. */
 static void write_results(FILE *f, const grade_list *l, const char *summary)
 {
     int rows = l->n + l->ignored;
     double score = 0, max = 0;
     for (int i = 0; i < rows; i++) {
-        const grade_entry *e = row_at(l, i);
-        score += e->score.n ? e->score.score : e->status == 0;
-        max += e->score.n ? e->score.max : 1;
+        double s1, m1;
+        grade_points_of(row_at(l, i), &s1, &m1);
+        score += s1;
+        max += m1;
     }
     fputs("{\n  \"score\": ", f);
     sw_json_num(f, score);
@@ -330,10 +337,12 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
         snprintf(name, sizeof name, "%s (%s)", student, e->path);
         fprintf(f, "%s\n    {\n      \"name\": ", i ? "," : "");
         sw_json_str(f, name);
+        double points, most;
+        grade_points_of(e, &points, &most);
         fputs(",\n      \"score\": ", f);
-        sw_json_num(f, e->score.n ? e->score.score : e->status == 0);
+        sw_json_num(f, points);
         fputs(",\n      \"max_score\": ", f);
-        sw_json_num(f, e->score.n ? e->score.max : 1);
+        sw_json_num(f, most);
         fprintf(f, ",\n      \"status\": \"%s\",\n      \"output\": ",
                 e->status == 0 ? "passed" : "failed");
         char *text = e->report;

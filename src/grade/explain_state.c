@@ -102,10 +102,11 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
     free(y0);
     free(again.v);
     snprintf(out->kind, sizeof out->kind, "initial-state");
-    snprintf(out->message, sizeof out->message, "your initial state is not the assignment's: "
-             "%s %d starts with %s = %s in yours, %s in the assignment's%s; docs/scenes.md, '%s', "
-             "gives every %s's initial state%s",
-             noun, particle, name, yours, theirs, others, d->scene->name, noun, after);
+    if (snprintf(out->message, sizeof out->message, "your initial state is not the assignment's: "
+                 "%s %d starts with %s = %s in yours, %s in the assignment's%s; docs/scenes.md, '%s', "
+                 "gives every %s's initial state%s",
+                 noun, particle, name, yours, theirs, others, d->scene->name, noun, after) < 0)
+        out->message[0] = '\0'; /* a long one is cut: its start says what differs */
     sw_system_free(&sys);
     return 1;
 }
@@ -270,10 +271,11 @@ int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
             say_formula(coef, present, formula, sizeof formula);
             say_slips(coef, present, fix, sizeof fix);
             snprintf(out->kind, sizeof out->kind, "energy-formula");
-            snprintf(out->message, sizeof out->message, "your positions and velocities match, but "
-                     "your energy column is %s (recomputed from your own x and v, it matches %s): "
-                     "%s; %s (docs/scenes.md, 'The two kinds of system')", formula, how, fix,
-                     energy);
+            if (snprintf(out->message, sizeof out->message, "your positions and velocities match, but "
+                         "your energy column is %s (recomputed from your own x and v, it matches %s): "
+                         "%s; %s (docs/scenes.md, 'The two kinds of system')", formula, how, fix,
+                         energy) < 0)
+                out->message[0] = '\0'; /* a long one is cut: its start names the slip */
             out->agreement = worst;
             found = 1;
         }

@@ -36,6 +36,8 @@ int sw_jail_enabled(void)
 
 void sw_jail_set_enabled(int on) { disabled = !on; }
 
+int sw_jail_seal(void) { return sw_jail_enabled() ? sw_jail_filter_sealed() : 0; }
+
 int sw_jail_unshare(const char **step)
 {
     *step = "unshare(CLONE_NEWUSER | CLONE_NEWNS | CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWIPC | "
@@ -185,8 +187,8 @@ static int copy_headers(int dir_fd, const char *to)
         if (h < 0)
             continue;
         char path[256];
-        snprintf(path, sizeof path, "%s/%s", to, e->d_name);
-        rc = copy_in(h, path);
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", to, e->d_name) < sizeof path)
+            rc = copy_in(h, path);
         close(h);
     }
     closedir(d);

@@ -209,9 +209,4 @@ int sw_jail_filter(sw_jail_profile profile)
     return EINVAL;
 }
 
-int sw_jail_seal(void)
-{
-    if (!sw_jail_enabled())
-        return 0;
-    return compute_filter(0);
-}
+int sw_jail_filter_sealed(void) { return compute_filter(0); }

@@ -10,5 +10,7 @@
 int sw_jail_landlock(void);
 /* The profile's seccomp filter (libseccomp). 0 or an errno. */
 int sw_jail_filter(sw_jail_profile profile);
+/* The narrower filter of a loaded plugin (sw_jail_seal). 0 or an errno. */
+int sw_jail_filter_sealed(void);
 
 #endif

@@ -370,8 +370,8 @@ int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_
         return rc;
     }
     const char *label = r.has_label ? r.label : r.name;
-    snprintf(e->name, sizeof e->name, "%s", r.name);       /* checked: at most 40 bytes */
-    snprintf(e->label, sizeof e->label, "%s", label);      /* checked: at most 80 bytes */
+    memcpy(e->name, r.name, strlen(r.name) + 1);          /* checked: at most 40 bytes */
+    memcpy(e->label, label, strlen(label) + 1);           /* checked: at most 80 bytes */
     e->work_vectors = r.work_vectors;
     sw_integrator m = { .name = e->name, .label = e->label, .order = r.order, .evals = r.evals,
                         .flags = SW_PLUGIN | SW_EXPLICIT, .stability = NAN,

@@ -491,10 +491,11 @@ judge_class() { # CLASS
     elif ! awk -f "$JSON" "$json" > "$BOOK/fields-$X" 2>/dev/null; then
         bad "class $X: results.json is not JSON"
     else
-        passes=$(awk -F'\t' '$2 == "pass"' "$BOOK/rows-$X" | wc -l | tr -d ' ')
-        rows=$(wc -l < "$BOOK/rows-$X" | tr -d ' ')
+        # the points of every row (the CSV's score and max columns), summed
+        passes=$(awk -F'\t' '{ s += $6 } END { printf "%g", s }' "$BOOK/rows-$X")
+        rows=$(awk -F'\t' '{ s += $7 } END { printf "%g", s }' "$BOOK/rows-$X")
         grep -qx "score=$passes" "$BOOK/fields-$X" && grep -qx "max_score=$rows" "$BOOK/fields-$X" ||
-            bad "class $X: results.json's $(grep '^score=' "$BOOK/fields-$X") differs from the CSV's $passes of $rows"
+            bad "class $X: results.json's $(grep '^score=' "$BOOK/fields-$X") $(grep '^max_score=' "$BOOK/fields-$X") differs from the CSV's $passes of $rows"
     fi
 }
 

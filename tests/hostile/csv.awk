@@ -57,7 +57,8 @@ BEGIN { names[1] = "student"; names[2] = "file"; names[3] = "verdict"; names[4] 
         for (i = 1; i <= ncols; i++)
             if (F[i] ~ /^[=+@\t\r-]/) printf "%s\t%s\t%s\n", flat(F[2]), names[i], flat(substr(F[i], 1, 60))
     } else
-        printf "%s\t%s\t%s\t%s\t%s\n", flat(F[2]), flat(F[3]), flat(F[4]), flat(F[5]), flat(F[1])
+        printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\n", flat(F[2]), flat(F[3]), flat(F[4]), flat(F[5]), flat(F[1]),
+               (ncols >= 10 ? F[9] : ""), (ncols >= 10 ? F[10] : "")
 }
 END {
     if (failed) exit 1

@@ -23,7 +23,7 @@ extent() {
 type_cmd "$STEPWISE play vortex -i euler --speed 4"
 wait_for 'vortex +euler +dt=0\.05 +t=0\.' || fail "play vortex did not start"
 w0=$(scene_rows vortex | extent o)
-wait_for 't=(6\.[3-9]|[7-9]\.)[0-9]*' 10 || fail "the vortex did not reach one turn"
+wait_for 't=(6\.[3-9]|[7-9]\.)[0-9]*' 120 || fail "the vortex did not reach one turn"
 keys ' '
 wait_for 'PAUSED' || fail "space did not pause"
 w1=$(scene_rows vortex | extent o)
@@ -66,7 +66,7 @@ for m in euler verlet; do
     # the exact ellipse, whole from the start (the path will cover it)
     exact=$(scene_rows spring | sed '1d;$d' | extent "'")
     keys ' '
-    wait_for 't=(1[0-9]|[2-9][0-9])\.' 12 || fail "the spring did not run 10 s"
+    wait_for 't=(1[0-9]|[2-9][0-9])\.' 120 || fail "the spring did not run 10 s"
     keys ' '
     wait_for PAUSED || fail "space did not pause"
     path=$(scene_rows spring | sed '1d;$d' | extent ".o<>")
@@ -91,10 +91,14 @@ keys s
 wait_for 'stability region of rk4' || fail "s did not open the region view"
 wait_for 'all inside' || fail "at the default dt the modes are not all inside"
 presses=0
+chain_dt() { screen | sed -n 's/.*chain  rk4  dt=\([0-9.e-]*\) .*/\1/p' | head -1; }
+dt_changed() { [ "$(chain_dt)" != "$1" ]; }
 while ! screen | grep -q 'GROWS'; do
     [ $presses -lt 12 ] || fail "12 presses of + and the meter never said GROWS"
+    was=$(chain_dt)
     keys +
-    sleep 0.3
+    wait_until 30 dt_changed "$was" || fail "+ did not change dt from $was"
+    wait_for 'all inside|GROWS|outside' || fail "the meter did not answer at dt=$(chain_dt)"
     presses=$((presses + 1))
 done
 wait_for 'X [0-9]+ outside' || fail "the meter says GROWS but the region view marks nothing outside"

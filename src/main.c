@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "util/names.h"
 
 static const struct command {
     const char *name;
@@ -25,6 +26,12 @@ static const struct command {
 };
 
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
+
+static const char *command_at(const void *ctx, int i)
+{
+    (void)ctx;
+    return commands[i].name;
+}
 
 static void usage(FILE *out)
 {
@@ -65,8 +72,10 @@ int main(int argc, char **argv)
         }
     if (cmd[0] == '-')
         sw_cli_error("unknown option '%.40s'; try 'stepwise --help'", cmd);
-    else
-        sw_cli_error("unknown command '%.40s'; commands: lesson, play, record, check, grade, autograder, try, "
-                     "list, describe, bench, stability", cmd);
+    else {
+        char names[256];
+        sw_names_join(names, sizeof names, command_at, NULL, NCOMMANDS);
+        sw_cli_error("unknown command '%.40s'; commands: %s", cmd, names);
+    }
     return SW_EXIT_USAGE;
 }

@@ -130,6 +130,43 @@ static void every_view(sw_app *a, const char *name)
     }
 }
 
+/* Every integrator, the 11th and any plugin included, has a key that picks
+ * it, and the help screen names each key with its integrator. */
+START_TEST(every_integrator_has_a_key)
+{
+    const sw_control *pick = sw_control_of(SW_ACT_PICK_METHOD);
+    /* 8: the plugin registry's limit (MAX_EXTRA in engine/integrators.c) */
+    ck_assert_int_le(sw_integrator_count() + 8, SW_PICK_KEY_COUNT);
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        const sw_control *c;
+        int arg;
+        ck_assert_msg(pick->keys[i], "integrator %d has no key", i + 1);
+        ck_assert(sw_key_lookup(pick->keys[i], SW_CTX_PLAY, &c, &arg));
+        ck_assert_int_eq(c->action, SW_ACT_PICK_METHOD);
+        ck_assert_int_eq(arg, i + 1);
+    }
+    sw_app a;
+    sw_frame f;
+    char err[SW_ERRLEN];
+    int clipped;
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    app_for(&a, sw_scene_find("spring"), NULL, 0);
+    sw_app_apply(&a, SW_ACT_PICK_METHOD, sw_integrator_count());
+    ck_assert_str_eq(a.sims[0].method->name, sw_integrator_at(sw_integrator_count() - 1)->name);
+    a.help = 1;
+    char *text = ct_compose(&f, &a, NULL, 120, 60, &clipped);
+    char want[64];
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        snprintf(want, sizeof want, "%c:%s", pick->keys[i], sw_integrator_at(i)->name);
+        ck_assert_msg(strstr(text, want), "the help does not show '%s':\n%s", want, text);
+    }
+    ck_assert_msg(strstr(text, "1-9  0  !"), "the help's keys column lacks '!':\n%s", text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+}
+END_TEST
+
 START_TEST(every_scene_every_view)
 {
     for (int k = 0; k < sw_scene_count(); k++) {
@@ -564,7 +601,7 @@ Suite *make_screens_suite(void)
         { "cut counted", a_cut_is_counted }, { "scenes", every_scene_every_view },
         { "blowups", blowups_and_adaptive }, { "workprec", workprec_overlay }, { "lessons", every_lesson_page },
         { "pane breaks", pane_breaks_where_it_reads }, { "workprec in a lesson", workprec_cycle_in_a_lesson },
-        { "legend and graph", legend_and_graph_room },
+        { "legend and graph", legend_and_graph_room }, { "pick keys", every_integrator_has_a_key },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         TCase *tc = tcase_create(cases[i].name);

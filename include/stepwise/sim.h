@@ -63,6 +63,17 @@ double sw_sim_energy(const sw_sim *s);
  * least energy (a spring, a pendulum, a chain), else |E(0)| (an orbit's
  * binding energy, a projectile's launch energy). NaN when undefined. */
 double sw_sim_energy_scale(const sw_sim *s);
+/* The least energy of the system as built (its resting state): the scene's
+ * own floor, else for particles with springs and no central body the energy
+ * of the static equilibrium reached from the start (worked out once); NaN
+ * when there is none (a potential unbounded below: an orbit, free flight). */
+double sw_sim_energy_floor(const sw_sim *s);
+/* The resting state reached from the start of a particle system (backward
+ * Euler with the longest step dissipates every motion; its fixed point has
+ * f(y) = 0: at rest where the forces balance) into out (dim doubles, may be
+ * NULL), its energy into *energy (may be NULL). 0, or -1 when there is none
+ * (a flow, no energy, contact, or the run does not settle). */
+int sw_sim_resting_state(const sw_system *sys, double *out, double *energy);
 /* 1 when the scale is the energy of the motion, 0 when it is |E(0)|. */
 int sw_sim_energy_scale_is_motion(const sw_sim *s);
 /* The energy's drift (E - E(0)) / scale, in percent; NaN when undefined. */

@@ -242,6 +242,17 @@ int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n)
 
 void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
 
+/* A sim whose plugin failed goes on under the scene's method from t = 0;
+ * the message says so (set after the reset, which may report a recording). */
+static void guard_plugins(sw_app *a)
+{
+    char msg[sizeof a->message];
+    if (!sw_app_plugins_disable_failed(a, msg, sizeof msg))
+        return;
+    sw_app_reset(a);
+    snprintf(a->message, sizeof a->message, "%s", msg);
+}
+
 void sw_app_reset(sw_app *a)
 {
     char err[SW_ERRLEN];
@@ -357,7 +368,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
             sw_sim_step(&a->sims[i]);
         a->t_goal = a->sims[0].t;
         sw_app_watch_feed(a);
-        sw_app_plugin_guard(a);
+        guard_plugins(a);
         sw_app_phase_push(a);
         return 1;
     case SW_ACT_RESET:
@@ -424,8 +435,10 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_RECORD:
         if (a->record_path[0])
             sw_app_record_stop(a);
-        else
-            sw_app_record_start(a, NULL);
+        else {
+            sw_app_reset(a); /* a trace starts at t = 0 */
+            sw_app_record_begin(a, NULL);
+        }
         return 1;
     case SW_ACT_WORKPREC: {
         /* off -> against evaluations -> against wall time -> off; the sweep
@@ -515,6 +528,6 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     }
     for (int i = 0; i < a->nsims; i++)
         series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
-    sw_app_plugin_guard(a);
+    guard_plugins(a);
     sw_app_phase_push(a);
 }

@@ -139,8 +139,8 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
  * lesson's @compare NAME [NAME]). */
 int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n);
 void sw_app_set_ghost(sw_app *a, int on);
-/* Apply an action (arg: which of its keys, 1-based: 1-9 pick that
- * integrator, 0 the 10th); sets a->message. Returns 1 when it changed anything. */
+/* Apply an action (arg: which of its keys, 1-based: the pick keys' place
+ * is the integrator's); sets a->message. Returns 1 when it changed anything. */
 int sw_app_apply(sw_app *a, sw_action act, int arg);
 /* Turn a key into its action (honouring locks and context) and apply it. */
 int sw_app_key(sw_app *a, int key, int in_lesson);
@@ -149,10 +149,11 @@ int sw_app_key(sw_app *a, int key, int in_lesson);
 void sw_app_advance(sw_app *a, double wall, long max_steps);
 /* Back to t = 0 for every sim. */
 void sw_app_reset(sw_app *a);
-/* After stepping: a sim whose plugin failed (crash, exit, loop, overrun)
- * has the plugin disabled, goes on under the scene's method from t = 0,
- * and a->message says what happened (app/plugins.c). */
-void sw_app_plugin_guard(sw_app *a);
+/* (plugins.c) After stepping: a sim whose plugin failed (crash, exit, loop,
+ * overrun) has the plugin disabled and its method set to the scene's; msg
+ * says what happened. Returns how many sims were switched (the caller
+ * restarts them from t = 0). */
+int sw_app_plugins_disable_failed(sw_app *a, char *msg, size_t len);
 
 /* (view.c) View actions: zoom, follow, lanes, phase and region views. 1 when handled. */
 int sw_app_view_apply(sw_app *a, sw_action act);
@@ -206,10 +207,11 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);
-/* Start recording the main sim to path (NULL: a time-stamped name in the
- * working directory); restarts at t = 0. */
-void sw_app_record_start(sw_app *a, const char *path);
-/* Stop and write the trace (replaying the run exactly); sets a->message. */
+/* (record.c) Begin recording the main sim to path (NULL: a time-stamped
+ * name in the working directory) from the state now, which must be t = 0
+ * (the caller has just reset: R does); sets a->message. */
+void sw_app_record_begin(sw_app *a, const char *path);
+/* (record.c) Stop and write the trace (replaying the run exactly); sets a->message. */
 void sw_app_record_stop(sw_app *a);
 
 /* (measure.c) Rebuild the truth for the app's scene and parameters. */

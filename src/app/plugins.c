@@ -1,6 +1,8 @@
 /* Plugins in the live app: a plugin that failed (crashed, exited, looped,
  * overran its vectors, wrote to the ode) is disabled with a message, and
- * its sim goes on under the scene's own method, so the UI keeps running. */
+ * its sim goes on under the scene's own method, so the UI keeps running.
+ * This file decides and switches; app.c restarts the sims (it calls down
+ * here, never the other way). */
 #include "app/app.h"
 
 #include <stdio.h>
@@ -9,8 +11,9 @@
 #include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
-void sw_app_plugin_guard(sw_app *a)
+int sw_app_plugins_disable_failed(sw_app *a, char *msg, size_t len)
 {
+    int switched = 0;
     for (int i = 0; i < a->nsims; i++) {
         sw_sim *s = &a->sims[i];
         if (!s->blown || !(s->method->flags & SW_PLUGIN))
@@ -26,8 +29,8 @@ void sw_app_plugin_guard(sw_app *a)
             continue;
         if (i > 0)
             a->compare_methods[i - 1] = now;
-        sw_app_reset(a);
-        snprintf(a->message, sizeof a->message, "plugin %s disabled: %.200s; now %s from t = 0",
-                 bad->name, why, now->name);
+        switched++;
+        snprintf(msg, len, "plugin %s disabled: %.200s; now %s from t = 0", bad->name, why, now->name);
     }
+    return switched;
 }

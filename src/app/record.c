@@ -3,7 +3,8 @@
  * describes one run. On stop the run is replayed headlessly through the
  * same trace writer `stepwise record` uses: sims are deterministic, so the
  * file equals the screen bit for bit, its metadata names the exact number
- * of steps, and nothing appears under the real name until it is complete. */
+ * of steps, and nothing appears under the real name until it is complete.
+ * app.c restarts the sims and calls down here, never the other way. */
 #include "app/app.h"
 
 #include <stdio.h>
@@ -61,7 +62,7 @@ void sw_app_record_stop(sw_app *a)
     a->record_path[0] = '\0';
 }
 
-void sw_app_record_start(sw_app *a, const char *path)
+void sw_app_record_begin(sw_app *a, const char *path)
 {
     char stamp[32], name[sizeof a->record_path];
     if (!path) {
@@ -72,7 +73,6 @@ void sw_app_record_start(sw_app *a, const char *path)
         snprintf(name, sizeof name, "stepwise-%s-%s.trace", a->scene->name, stamp);
         path = name;
     }
-    sw_app_reset(a);
     snprintf(a->record_path, sizeof a->record_path, "%s", path);
     a->record_method = a->sims[0].method;
     a->record_dt = a->dt;

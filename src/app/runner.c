@@ -11,6 +11,7 @@
 #include "app/progress.h"
 #include "stepwise/base.h"
 #include "util/utf8.h"
+#include "util/wrap.h"
 
 /* The lesson pane grows by at most this many columns for a page's verbatim
  * lines, and leaves the picture at least this many. */
@@ -209,255 +210,42 @@ static void add_line(sw_runner *r, sw_side_kind kind, const char *text)
     r->side.nlines++;
 }
 
-/* How a word changes the bracket depth: ( [ { open, ) ] } close, and a
- * '|' opens at a word's start and closes at its end (|1 + Δt·λ|). */
-static int bracket_delta(const char *s, const char *e)
+/* A paragraph's or a verbatim line's lines, from util/wrap.c, into the pane
+ * (each cut to a pane line's bytes). */
+typedef struct pane_out {
+    sw_runner *r;
+    sw_side_kind kind;
+} pane_out;
+
+static void pane_paragraph_line(void *ctx, int lead, const char *text, size_t len)
 {
-    int d = 0;
-    for (const char *c = s; c < e; c++)
-        d += (*c == '(' || *c == '[' || *c == '{') - (*c == ')' || *c == ']' || *c == '}');
-    while (e - s > 1 && strchr(",.;:", e[-1]))
-        e--; /* "|x|," closes all the same */
-    if (e - s > 1 && *s == '|')
-        d++;
-    if (e - s > 1 && e[-1] == '|')
-        d--;
-    return d;
+    const pane_out *o = ctx;
+    char buf[SW_RUNNER_COLS];
+    (void)lead; /* paragraphs have none */
+    len = sw_utf8_clip(text, len, sizeof buf - 1);
+    memcpy(buf, text, len);
+    buf[len] = '\0';
+    add_line(o->r, o->kind, buf);
 }
 
-/* Whether a word is an operator a formula can be broken before. */
-static int is_operator(const char *s, const char *e)
+static void pane_verbatim_line(void *ctx, int lead, const char *text, size_t len)
 {
-    static const char *const ops[] = { "+", "-", "=", "<", ">", "*", "/", "\xc2\xb7", "\xc3\x97", "\xe2\x89\xa4",
-                                       "\xe2\x89\xa5", "<=", ">=", "==", "\xe2\x86\x92", "->" };
-    for (size_t k = 0; k < sizeof ops / sizeof ops[0]; k++)
-        if ((size_t)(e - s) == strlen(ops[k]) && memcmp(s, ops[k], (size_t)(e - s)) == 0)
-            return 1;
-    return 0;
+    const pane_out *o = ctx;
+    char buf[SW_RUNNER_COLS];
+    snprintf(buf, sizeof buf, "%*s%.*s", lead, "", (int)len, text); /* (a line wider than buf is cut) */
+    add_line(o->r, o->kind, buf);
 }
 
-/* Whether a word starts with an operator (a break before it reads well). */
-static int starts_operator(const char *s)
-{
-    static const char *const ops[] = { "+", "-", "=", "<", ">", "*", "/", "\xc2\xb7", "\xc3\x97", "\xe2\x89\xa4",
-                                       "\xe2\x89\xa5", "\xe2\x86\x92" };
-    for (size_t k = 0; k < sizeof ops / sizeof ops[0]; k++)
-        if (strncmp(s, ops[k], strlen(ops[k])) == 0)
-            return 1;
-    return 0;
-}
-
-/* The operands left in s: words that are neither operators nor only
- * closing brackets (a tail of one operand is a poor continuation line);
- * *only_closers says whether every word is a closing bracket. */
-static int operands(const char *s, int *only_closers)
-{
-    int n = 0;
-    *only_closers = 1;
-    while (*s) {
-        while (*s == ' ')
-            s++;
-        const char *w = s;
-        while (*s && *s != ' ')
-            s++;
-        if (s == w)
-            break;
-        int closers = (int)strspn(w, ")]}|") == (int)(s - w), operand = 0;
-        *only_closers &= closers;
-        /* an operand has a letter or a digit ("-[" and "(" have none) */
-        for (const char *c = w; c < s && !operand;) {
-            unsigned char b = (unsigned char)*c;
-            if (b < 0x80) {
-                operand = (b >= '0' && b <= '9') || (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z');
-                c++;
-            } else {
-                const unsigned char *u = (const unsigned char *)c;
-                sw_utf8_next(&u);
-                operand = !is_operator(c, (const char *)u); /* Δ, λ, ω: letters; ·, ×, ≤: operators */
-                c = (const char *)u;
-            }
-        }
-        n += operand;
-    }
-    return n;
-}
-
-/* Word-wrap a paragraph to width display cells (a CJK character takes
- * two), counting the line as written, its runs of spaces included; a word
- * wider than a line (a path; CJK text has no spaces) is broken between
- * characters, never inside one. */
 static void add_wrapped(sw_runner *r, sw_side_kind kind, const char *text, int width)
 {
-    const char *p = text;
-    if (width < 2)
-        width = 2;
-    while (*p) {
-        while (*p == ' ')
-            p++;
-        if (!*p)
-            break;
-        /* the starts and ends of the last two words placed on this line */
-        const char *line = p, *cut = NULL, *ws[2] = { NULL, NULL }, *we[2] = { NULL, NULL };
-        const char *prev_end = NULL; /* the end of the word before those two */
-        int used = 0, words = 0;
-        while (*p && *p != '\n') {
-            const char *w = p;
-            while (*p && *p != ' ' && *p != '\n')
-                p++;
-            /* a bracket opened in this word and closed a few words on
-             * ("f = -k(x - r)", "|1 + Δt·λ|") goes on one line when it fits one */
-            if (bracket_delta(w, p) > 0) {
-                const char *q = p;
-                int depth = bracket_delta(w, p);
-                while (depth > 0 && *q && *q != '\n') {
-                    while (*q == ' ')
-                        q++;
-                    const char *w2 = q;
-                    while (*q && *q != ' ' && *q != '\n')
-                        q++;
-                    depth += bracket_delta(w2, q);
-                }
-                if (depth <= 0 && (int)sw_utf8_columns(w, (size_t)(q - w)) <= width)
-                    p = q;
-            }
-            /* the line as written so far, its spaces included */
-            int upto = (int)sw_utf8_columns(line, (size_t)(p - line));
-            if (used && upto > width) {
-                p = w;
-                /* an operator goes on with what it joins, and so does its
-                 * left operand when more is left on the line ("f =" /
-                 * "-k(x - r)" reads badly: "f = -k(x - r)" goes on whole) */
-                if (words >= 2 && is_operator(ws[1], we[1])) {
-                    int back = words >= 3 ? 2 : 1;
-                    p = ws[2 - back];
-                    cut = back == 2 ? prev_end : we[0];
-                }
-                break;
-            }
-            if (!used && upto > width) {
-                p = w + sw_utf8_fit(w, (size_t)(p - w), (size_t)width, NULL);
-                if (p == w) { /* cannot happen with width >= 2; progress all the same */
-                    const unsigned char *q = (const unsigned char *)w;
-                    sw_utf8_next(&q);
-                    p = (const char *)q;
-                }
-                cut = p;
-                break;
-            }
-            used = upto;
-            prev_end = we[0];
-            ws[0] = ws[1], we[0] = we[1];
-            ws[1] = w, we[1] = p;
-            words++;
-            cut = p;
-            while (*p == ' ')
-                p++;
-            if (used >= width)
-                break;
-        }
-        if (!cut)
-            cut = p;
-        char buf[SW_RUNNER_COLS];
-        size_t len = sw_utf8_clip(line, (size_t)(cut - line), sizeof buf - 1);
-        memcpy(buf, line, len);
-        buf[len] = '\0';
-        add_line(r, kind, buf);
-        if (*p == '\n')
-            p++;
-    }
+    pane_out o = { r, kind };
+    sw_wrap_paragraph(text, width < 2 ? 2 : width, pane_paragraph_line, &o);
 }
 
-/* A verbatim line (a formula, a table row) as written; too wide for the
- * pane, it goes on on the next lines, indented under itself. Where it
- * breaks is chosen among its spaces: outside brackets before inside them,
- * before an operator rather than after one, never leaving a lone closing
- * bracket or a single operand for the next line when a better break
- * exists, and the first line as full as that allows. */
 static void add_verbatim(sw_runner *r, const char *text, int width)
 {
-    int indent = 0;
-    while (text[indent] == ' ')
-        indent++;
-    if ((int)sw_utf8_columns(text, strlen(text)) <= width || width < indent + 12) {
-        add_line(r, SW_SIDE_VERBATIM, text);
-        return;
-    }
-    char buf[SW_RUNNER_COLS];
-    const char *p = text;
-    int first = 1, depth = 0, next_room = width - (indent + 4);
-    while (*p) {
-        int lead = first ? 0 : indent + 4, room = width - lead;
-        if ((int)sw_utf8_columns(p, strlen(p)) <= room) {
-            if (snprintf(buf, sizeof buf, "%*s%s", lead, "", p) >= 0) /* (a line wider than buf is cut) */
-                add_line(r, SW_SIDE_VERBATIM, buf);
-            break;
-        }
-        const char *cut = NULL, *next = NULL, *q = p;
-        int best = 0, best_depth = depth, d = depth;
-        while (*q == ' ')
-            q++;
-        while (*q) {
-            const char *w = q;
-            while (*q && *q != ' ')
-                q++;
-            d += bracket_delta(w, q);
-            const char *ns = q;
-            while (*ns == ' ')
-                ns++;
-            int cells = (int)sw_utf8_columns(p, (size_t)(q - p));
-            if (cells > room)
-                break;
-            if (!*ns)
-                break;
-            int only_closers, tail = operands(ns, &only_closers), head_closers;
-            char head[SW_RUNNER_COLS];
-            snprintf(head, sizeof head, "%.*s", (int)(q - p), p);
-            int score = -30 * (d > 0 ? d : 0) + cells / 8;
-            if (!strchr(head + (first ? indent : 0), ' '))
-                score -= 60; /* "f" or "=" alone on a line */
-            else if (operands(head, &head_closers) <= 1 && is_operator(w, q))
-                score -= 25; /* "f =" */
-            if (starts_operator(ns))
-                score += 10;
-            if (is_operator(w, q))
-                score -= 10;
-            if (strchr("([{", q[-1]))
-                score -= 20; /* a line that ends by opening a bracket */
-            if ((int)sw_utf8_columns(ns, strlen(ns)) <= next_room) {
-                if (only_closers)
-                    score -= 100;
-                else if (tail <= 1 && !strchr(ns, ' '))
-                    score -= 40; /* one token: "k4)" */
-                else if (tail <= 1)
-                    score -= 15; /* one operand: "- r)" */
-            } else
-                score -= 20;
-            if (!cut || score >= best) {
-                cut = q;
-                next = ns;
-                best = score;
-                best_depth = d;
-            }
-            q = ns;
-        }
-        if (!cut) { /* no space to break at: as much as fits, then the rest */
-            cut = p + sw_utf8_fit(p, strlen(p), (size_t)room, NULL);
-            if (cut == p) { /* nothing fits: one character, progress all the same */
-                const unsigned char *c1 = (const unsigned char *)p;
-                sw_utf8_next(&c1);
-                cut = (const char *)c1;
-            }
-            next = cut;
-            best_depth = depth + bracket_delta(p, cut);
-        }
-        snprintf(buf, sizeof buf, "%*s%.*s", lead, "", (int)(cut - p), p);
-        add_line(r, SW_SIDE_VERBATIM, buf);
-        p = next;
-        while (*p == ' ')
-            p++;
-        depth = best_depth;
-        first = 0;
-    }
+    pane_out o = { r, SW_SIDE_VERBATIM };
+    sw_wrap_verbatim(text, width, pane_verbatim_line, &o);
 }
 
 const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)

@@ -11,7 +11,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "plugin/plugin.h"
 #include "trace/trace.h"
 #include "util/escape.h"
 #include "util/num.h"
@@ -154,20 +153,6 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     if (sw_sim_init(s, o->scene, o->p, o->method, o->dt, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
     sw_sim_set_tolerances(s, o->rtol, o->atol);
-    return SW_EXIT_OK;
-}
-
-int sw_cli_plugin(const char *path)
-{
-    char err[SW_ERRLEN + 256], so[4200];
-    size_t len = strlen(path);
-    if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
-        if (sw_cli_build_plugin(path, so, sizeof so) != SW_EXIT_OK)
-            return SW_EXIT_USAGE;
-        path = so;
-    }
-    if (sw_plugin_load(path, NULL, err, sizeof err) != SW_OK)
-        return sw_cli_error("%s", err);
     return SW_EXIT_OK;
 }
 

@@ -327,3 +327,47 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
     sort_from(list->refused, first_refused, list->ignored);
     return SW_EXIT_OK;
 }
+
+
+/* The submissions directory that the resolved directory real is in or
+ * under, by identity (each directory up to /) and by resolved path; NULL. */
+const char *grade_inside_submissions(const grade_list *l, const char *real)
+{
+    char cur[PATH_MAX];
+    snprintf(cur, sizeof cur, "%s", real);
+    for (;;) {
+        struct stat st;
+        int known = stat(cur, &st) == 0;
+        for (int i = 0; i < l->nplaces; i++) {
+            const grade_place *p = &l->places[i];
+            if (p->real && ((known && st.st_dev == p->dev && st.st_ino == p->ino) || lies_in(real, p->real)))
+                return p->real;
+        }
+        char *slash = strrchr(cur, '/');
+        if (!slash || slash == cur)
+            break;
+        *slash = '\0';
+    }
+    return NULL;
+}
+
+int grade_list_add(grade_list *l, const char *path, int plugin)
+{
+    if (l->n == l->cap) {
+        int cap = l->cap ? 2 * l->cap : 32;
+        grade_entry *items = realloc(l->items, (size_t)cap * sizeof *items);
+        if (!items)
+            return SW_ENOMEM;
+        l->items = items;
+        l->cap = cap;
+    }
+    grade_entry *e = &l->items[l->n];
+    memset(e, 0, sizeof *e);
+    e->path = strdup(path);
+    if (!e->path)
+        return SW_ENOMEM;
+    e->plugin = plugin;
+    e->who = SW_ROSTER_NONE;
+    l->n++;
+    return SW_OK;
+}

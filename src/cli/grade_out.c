@@ -27,26 +27,6 @@ static FILE *table_stream;
 
 static FILE *table(void) { return table_stream ? table_stream : stdout; }
 
-int grade_list_add(grade_list *l, const char *path, int plugin)
-{
-    if (l->n == l->cap) {
-        int cap = l->cap ? 2 * l->cap : 32;
-        grade_entry *items = realloc(l->items, (size_t)cap * sizeof *items);
-        if (!items)
-            return SW_ENOMEM;
-        l->items = items;
-        l->cap = cap;
-    }
-    grade_entry *e = &l->items[l->n];
-    memset(e, 0, sizeof *e);
-    e->path = strdup(path);
-    if (!e->path)
-        return SW_ENOMEM;
-    e->plugin = plugin;
-    e->who = SW_ROSTER_NONE;
-    l->n++;
-    return SW_OK;
-}
 
 void grade_list_free(grade_list *l)
 {
@@ -79,33 +59,11 @@ void grade_list_free(grade_list *l)
     memset(l, 0, sizeof *l);
 }
 
-const char *grade_verdict_word(int status)
-{
-    return status == 0 ? "pass" : status == 1 ? "fail" : status == GRADE_SKIPPED ? "skipped"
-           : status == GRADE_LIMIT ? "limit" : status == GRADE_MISSING ? "missing" : "error";
-}
 
 /* The names this file used before grade.h shared them. */
 #define verdict_word grade_verdict_word
 #define student_of grade_student_of
 
-void grade_student_of(const grade_entry *e, char *buf, size_t len)
-{
-    if (e->owner[0]) {
-        snprintf(buf, len, "%s", e->owner);
-        return;
-    }
-    if (e->student[0]) {
-        snprintf(buf, len, "%s", e->student);
-        return;
-    }
-    const char *base = strrchr(e->path, '/');
-    base = base ? base + 1 : e->path;
-    snprintf(buf, len, "%s", base);
-    char *dot = strrchr(buf, '.');
-    if (dot && dot != buf)
-        *dot = '\0';
-}
 
 /* "3/5": the points of the entry's checks ("-" when it has none). */
 static void grade_score_text(const grade_entry *e, char *buf, size_t len)
@@ -159,35 +117,6 @@ void grade_print_row(grade_entry *e)
 static int same_file(const struct stat *a, dev_t dev, ino_t ino)
 {
     return a->st_dev == dev && a->st_ino == ino;
-}
-
-/* Whether the resolved path lies in (or is) the resolved directory dir. */
-static int lies_in(const char *path, const char *dir)
-{
-    size_t n = strlen(dir);
-    return strncmp(path, dir, n) == 0 && (path[n] == '/' || path[n] == '\0' || n == 1);
-}
-
-/* The submissions directory that the resolved directory real is in or
- * under, by identity (each directory up to /) and by resolved path; NULL. */
-const char *grade_inside_submissions(const grade_list *l, const char *real)
-{
-    char cur[PATH_MAX];
-    snprintf(cur, sizeof cur, "%s", real);
-    for (;;) {
-        struct stat st;
-        int known = stat(cur, &st) == 0;
-        for (int i = 0; i < l->nplaces; i++) {
-            const grade_place *p = &l->places[i];
-            if (p->real && ((known && same_file(&st, p->dev, p->ino)) || lies_in(real, p->real)))
-                return p->real;
-        }
-        char *slash = strrchr(cur, '/');
-        if (!slash || slash == cur)
-            break;
-        *slash = '\0';
-    }
-    return NULL;
 }
 
 /* The resolved directory path would be written in (its last component
@@ -306,11 +235,6 @@ static void write_csv(FILE *f, const grade_list *l, const char *summary)
     grade_book_write(f, l, book_said, sizeof book_said);
 }
 
-void grade_points_of(const grade_entry *e, double *score, double *max)
-{
-    *score = e->score.n ? e->score.score : e->status == 0;
-    *max = e->score.n ? e->score.max : 1;
-}
 
 /* Gradescope's format: a score, its maximum, and one test per entry. */
 static void write_results(FILE *f, const grade_list *l, const char *summary)

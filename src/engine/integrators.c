@@ -93,6 +93,26 @@ void sw_integrator_disable(const sw_integrator *m, const char *why)
             snprintf(extra_disabled[i], sizeof extra_disabled[i], "%s", why && *why ? why : "disabled");
 }
 
+/* "euler, midpoint, ... or dop853": the built-in methods a first-order
+ * system can use, from the table. */
+static void first_order_names(char *buf, size_t len)
+{
+    int n = 0, last = -1;
+    for (int i = 0; i < NBUILTIN; i++)
+        if (!(builtins[i].flags & SW_NEEDS_SECOND_ORDER))
+            last = i;
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < NBUILTIN && used < len; i++) {
+        if (builtins[i].flags & SW_NEEDS_SECOND_ORDER)
+            continue;
+        int w = snprintf(buf + used, len - used, "%s%s", n == 0 ? "" : i == last ? " or " : ", ",
+                         builtins[i].name);
+        used += w > 0 ? (size_t)w : 0;
+        n++;
+    }
+}
+
 int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
 {
     for (int i = 0; i < nextra; i++)
@@ -101,10 +121,11 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
             return SW_EINVAL;
         }
     if ((m->flags & SW_NEEDS_SECOND_ORDER) && ode->order != 2) {
+        char fit[512];
+        first_order_names(fit, sizeof fit);
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
-                 "masses; this is a first-order flow field (use euler, midpoint, heun, rk4, "
-                 "implicit-euler, implicit-midpoint, rk45 or dop853)", m->name);
+                 "masses; this is a first-order flow field (use %s)", m->name, fit);
         return SW_EINVAL;
     }
     if ((m->flags & SW_IMPLICIT) && !ode->solve && ode->dim > SW_DENSE_MAX) {

@@ -1,7 +1,8 @@
 /* Particle systems: structure-of-arrays state y = [x | v] and the list of
  * force objects a scene adds (the description); contact and energy. The
  * derivative evaluates the forces compiled by kind (particles_deriv.c), the
- * implicit solve lives in particles_solve.c. Invariant: deriv allocates
+ * implicit solve lives in particles_solve.c, the read-only questions about
+ * the forces (which springs, which centre) in particles_query.c. Invariant: deriv allocates
  * nothing; all workspace is sized when the system and its springs are
  * created. */
 #include "stepwise/particles.h"
@@ -125,45 +126,6 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
 int sw_particles_finish(sw_particles *p, char *err, size_t errlen)
 {
     return swp_model_compile(p, err, errlen);
-}
-
-int sw_particles_spring_count(const sw_particles *p) { return p->nsprings_total; }
-
-void sw_particles_spring(const sw_particles *p, int j, sw_spring *out)
-{
-    for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        if (fo->kind != SW_FORCE_SPRINGS)
-            continue;
-        if (j < fo->nsprings) {
-            *out = fo->springs[j];
-            return;
-        }
-        j -= fo->nsprings;
-    }
-    memset(out, 0, sizeof *out);
-    out->a = -1;
-}
-
-int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *mu)
-{
-    for (int k = 0; k < p->nforces; k++)
-        if (p->forces[k].kind == SW_FORCE_CENTRAL) {
-            *cx = p->forces[k].cx;
-            *cy = p->forces[k].cy;
-            *mu = p->forces[k].mu;
-            return 1;
-        }
-    return 0;
-}
-
-double sw_particles_drag(const sw_particles *p)
-{
-    double k = 0;
-    for (int i = 0; i < p->nforces; i++)
-        if (p->forces[i].kind == SW_FORCE_DRAG)
-            k += p->forces[i].k;
-    return k;
 }
 
 /* Reflect a coordinate that crossed a wall back inside, losing the fraction

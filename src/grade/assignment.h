@@ -11,6 +11,7 @@
 #include "grade/check.h"
 #include "grade/points.h"
 #include "trace/trace.h"
+#include "util/num.h" /* sw_fmt_shortest, which assignments' messages use */
 
 #define SW_ASSIGN_METHODS 8
 #define SW_COLTOL_MAX 64
@@ -77,8 +78,5 @@ const sw_integrator *sw_assignment_method(const sw_assignment *a, const sw_trace
 int sw_assignment_sim(const sw_assignment *a, const sw_integrator *mth, sw_sim *s, char *err,
                       size_t errlen);
 
-/* Shortest text that reads back as v ("0.02", "1e-09"); "inf", "-inf",
- * "nan" for non-finite values. */
-void sw_fmt_shortest(char *buf, size_t len, double v);
 
 #endif

@@ -38,6 +38,13 @@ enum {
 
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
 
+/* The keys that pick an integrator by its place in the table ('stepwise list
+ * integrators'): 1-9, 0 for the 10th, then the shifted digits, so every
+ * built-in and every plugin (at most SW_PICK_KEY_COUNT in all) has one. */
+#define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')'
+#define SW_PICK_KEY_COUNT 20
+
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'
 
@@ -47,8 +54,9 @@ enum {
  *   CONTEXT    PLAY: always; LESSON: in a lesson only; PANEL: while the parameter panel is open
  *   NAME       how messages name it ("'double dt' is locked on this page")
  *   KEYS       its keys, characters or SW_KEY_*; a key's place in the list (1-based) is the
- *              argument the action gets (1-9 pick that integrator, 0 the 10th)
+ *              argument the action gets (SW_PICK_KEYS: the place of the integrator picked)
  *   HELP_KEYS  how the help screen names its keys; NULL: on the help line before it
+ *              (pick integrator's keys and line are generated from the integrator table)
  *   HELP       the help line (NULL with HELP_KEYS NULL)
  * Help shows PLAY controls, and LESSON ones in a lesson, in this order. */
 #define SW_CONTROLS(X) \
@@ -56,8 +64,8 @@ enum {
       "i  Tab", "next integrator (keeps the state and time)") \
     X(PREV_METHOD, INTEGRATOR, PLAY, "previous integrator", SW_KEYS('I', SW_KEY_BTAB), \
       "I  Shift-Tab", "previous integrator") \
-    X(PICK_METHOD, INTEGRATOR, PLAY, "pick integrator", SW_KEYS('1', '2', '3', '4', '5', '6', '7', '8', '9', '0'), \
-      "1-9  0", "pick an integrator by its place in 'stepwise list integrators' (0: the 10th)") \
+    X(PICK_METHOD, INTEGRATOR, PLAY, "pick integrator", SW_KEYS(SW_PICK_KEYS), \
+      "1-9  0", "pick an integrator by its place in 'stepwise list integrators'") \
     X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  =", "double dt") \
     X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), "-", "halve dt") \
     X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "pause / run") \

@@ -353,59 +353,6 @@ static int d_correct(sw_lp_parser *ps, size_t pos)
     return SW_OK;
 }
 
-/* ---- prose ------------------------------------------------------------------------------------ */
-
-int sw_lp_flush_block(sw_lp_parser *ps)
-{
-    if (!ps->para_open)
-        return SW_OK;
-    ps->para_open = 0;
-    if (ps->nblocks == SW_LESSON_MAX_BLOCKS)
-        return sw_lp_fail_at(ps, ps->para_line, 1, "too many paragraphs on this page; expected at most %d "
-                       "(split the page)", SW_LESSON_MAX_BLOCKS);
-    char *text = sw_lp_strdup(ps->out, ps->para, ps->paralen);
-    if (!text)
-        return sw_lp_oom(ps);
-    ps->blocks[ps->nblocks++] = (sw_lesson_block){ ps->para_verbatim, text, ps->para_line };
-    ps->prose += ps->paralen;
-    ps->paralen = 0;
-    return SW_OK;
-}
-
-int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim)
-{
-    if (ps->para_open && ps->para_verbatim != verbatim && sw_lp_flush_block(ps) != SW_OK)
-        return ps->status;
-    size_t need = len + (ps->para_open ? 1 : 0);
-    if (verbatim)
-        for (size_t i = 0; i < len; i++)
-            need += s[i] == '\t' ? 7 : 0;
-    if (ps->prose + ps->paralen + need > SW_LESSON_MAX_PROSE)
-        return FAIL(ps, 0, "this page has more than %d bytes of text; expected a shorter page (split it "
-                    "with another '--- TITLE')", SW_LESSON_MAX_PROSE);
-    if (ps->para_open) {
-        ps->para[ps->paralen++] = verbatim ? '\n' : ' ';
-    } else {
-        ps->para_open = 1;
-        ps->para_verbatim = verbatim;
-        ps->para_line = ps->line;
-    }
-    int col = 0;
-    for (size_t i = 0; i < len; i++) {
-        unsigned char c = (unsigned char)s[i];
-        if (c == '\t' && verbatim) {
-            /* Tab stops every 8 columns, counted in characters. */
-            do
-                ps->para[ps->paralen++] = ' ';
-            while (++col % 8);
-            continue;
-        }
-        ps->para[ps->paralen++] = c == '\t' ? ' ' : (char)c;
-        if ((c & 0xC0) != 0x80)
-            col++;
-    }
-    return SW_OK;
-}
 /* ---- lines ------------------------------------------------------------------------------------------ */
 
 static int d_ghost(sw_lp_parser *ps, size_t pos)
@@ -527,8 +474,9 @@ int sw_lp_directive(sw_lp_parser *ps, size_t at)
     for (int k = 0; k < NDIRECTIVES; k++)
         if (strcmp(name, directives[k].name) == 0)
             return directives[k].run(ps, i);
-    char near[80];
-    return FAIL(ps, at, "unknown directive '@%s'%s; expected one of @scene @set @integrator @dt @compare "
-                "@ghost @pause @reset @speed @view @lock @unlock @goal @hint @question @answer @correct",
-                name, sw_lp_suggest("@", name, directive_name_at, NULL, NDIRECTIVES, near, sizeof near));
+    char near[80], known[16 * NDIRECTIVES] = "";
+    for (int k = 0, used = 0; k < NDIRECTIVES && used < (int)sizeof known; k++) /* from the table */
+        used += snprintf(known + used, sizeof known - (size_t)used, "%s@%s", k ? " " : "", directives[k].name);
+    return FAIL(ps, at, "unknown directive '@%s'%s; expected one of %s", name,
+                sw_lp_suggest("@", name, directive_name_at, NULL, NDIRECTIVES, near, sizeof near), known);
 }

@@ -1,5 +1,5 @@
 /* Private to the lesson parser's files (parse.c, directives.c, goal_parse.c,
- * page_check.c, arena.c): the parser's state and the helpers they share. */
+ * page_check.c, parse_base.c, arena.c): the parser's state and the helpers they share. */
 #ifndef SW_LESSON_PARSE_H
 #define SW_LESSON_PARSE_H
 
@@ -58,7 +58,7 @@ typedef struct sw_lp_parser {
 void *sw_lp_alloc(sw_lesson *l, size_t n);
 char *sw_lp_strdup(sw_lesson *l, const char *s, size_t len);
 
-/* ---- parse.c: errors, words, names ---- */
+/* ---- parse_base.c: errors, words, names, prose ---- */
 /* 1-based character column of byte offset off in the current line. */
 int sw_lp_col(const sw_lp_parser *ps, size_t off);
 /* Record the first error as "NAME:LINE:COL: message"; returns the status. */
@@ -86,13 +86,13 @@ int sw_lp_need_scene(sw_lp_parser *ps, const char *directive);
 const char *sw_lp_suggest(const char *prefix, const char *word, sw_name_at_fn *at, const void *ctx, int n,
                           char *buf, size_t len);
 const char *sw_lp_scene_at(const void *ctx, int i);
-const char *sw_lp_method_at(const void *ctx, int i);
-int sw_lp_begin_page(sw_lp_parser *ps, size_t title_at);
+/* End the paragraph being read (a blank line, a directive, the page's end). */
+int sw_lp_flush_block(sw_lp_parser *ps);
+/* Add a line of prose to the paragraph (verbatim: indented, tabs expanded). */
+int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim);
 
 /* ---- directives.c ---- */
 int sw_lp_directive(sw_lp_parser *ps, size_t at);
-int sw_lp_flush_block(sw_lp_parser *ps);
-int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim);
 
 /* ---- goal_parse.c ---- */
 int sw_lp_goal(sw_lp_parser *ps, size_t pos);

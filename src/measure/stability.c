@@ -158,7 +158,7 @@ static void starts_init(starts *st, const sw_scene *sc, const double *p)
         return;
     int dim = sys.ode->dim;
     double *rest = malloc((size_t)2 * dim * sizeof *rest);
-    if (rest && sw_truth_resting_state(&sys, rest, NULL) == 0) {
+    if (rest && sw_sim_resting_state(&sys, rest, NULL) == 0) {
         st->small = rest + dim;
         double span = 0;
         for (int i = 0; i < dim; i++)

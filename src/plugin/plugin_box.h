@@ -1,5 +1,5 @@
-/* Private to plugin/plugin.c and plugin/plugin_box.c: the registry of loaded
- * plugins and the sandboxed step every plugin method runs through. */
+/* Private to plugin/: the registry of loaded plugins (plugin_registry.c)
+ * and the sandboxed step every plugin method runs through (plugin_box.c). */
 #ifndef SW_PLUGIN_PLUGIN_BOX_H
 #define SW_PLUGIN_PLUGIN_BOX_H
 
@@ -21,6 +21,10 @@ typedef struct sw_plugin_entry {
     char disabled_why[SW_ERRLEN];
 } sw_plugin_entry;
 
+/* The next free entry (NULL: SW_PLUGIN_MAX are loaded), and taking it
+ * once it is filled in. */
+sw_plugin_entry *sw_plugin_entry_next(void);
+void sw_plugin_entry_commit(void);
 /* The entry behind a plugin method, or NULL. */
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The file a child of the entry dlopens: its copy in the jail's /work, or

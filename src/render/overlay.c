@@ -194,6 +194,29 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
 
 #define HELP_LINES 160
 
+/* The pick keys' help, from the integrator table and the keys' list: keys
+ * "1-9  0  !" (as many as fit width) and every integrator with its key. */
+static void pick_help(const sw_control *c, int width, char *keys, size_t keys_len, char *help, size_t help_len)
+{
+    int n = sw_integrator_count(), used;
+    for (int i = 0; i < n; i++) /* a key for each: SW_PICK_KEY_COUNT >= built-ins + plugins */
+        if (!c->keys[i]) {
+            n = i;
+            break;
+        }
+    snprintf(keys, keys_len, n <= 9 ? "1-%d" : "1-9  0", n);
+    for (int i = 10; i < n; i++) {
+        size_t k = strlen(keys);
+        if ((int)k + 2 + (i == 10) > width || k + 3 > keys_len)
+            break;
+        snprintf(keys + k, keys_len - k, "%s%c", i == 10 ? "  " : " ", c->keys[i]);
+    }
+    used = snprintf(help, help_len, "pick an integrator:");
+    for (int i = 0; i < n && used > 0 && (size_t)used < help_len; i++)
+        used += snprintf(help + used, help_len - (size_t)used, "%s %c:%s", i ? "," : "", c->keys[i],
+                         sw_integrator_at(i)->name);
+}
+
 /* The help screen's lines for a box width wide: every control shown here,
  * then what the numbers and marks on screen mean; 0 when the box is too
  * narrow for help. */
@@ -212,7 +235,7 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
                         "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },
     };
     const sw_control *controls = sw_controls(&count);
-    char text[SW_TEXT_LINE], wrapped[16][SW_TEXT_LINE];
+    char text[SW_TEXT_LINE], wrapped[16][SW_TEXT_LINE], pick_keys[32], pick_text[SW_TEXT_LINE];
     int nterms = (int)(sizeof terms / sizeof terms[0]);
     for (int i = 0; i < count + nterms; i++) {
         const char *keys, *help;
@@ -223,6 +246,11 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
                 continue;
             keys = c->help_keys;
             help = c->help;
+            if (c->action == SW_ACT_PICK_METHOD) {
+                pick_help(c, key_w, pick_keys, sizeof pick_keys, pick_text, sizeof pick_text);
+                keys = pick_keys;
+                help = pick_text;
+            }
         } else {
             keys = terms[i - count].keys;
             help = terms[i - count].help;

@@ -11,7 +11,6 @@
 #include <string.h>
 
 #include "render/camera.h"
-#include "render/screen.h"
 
 void sw_phase_view_free(sw_phase_view *ph)
 {
@@ -19,7 +18,8 @@ void sw_phase_view_free(sw_phase_view *ph)
     memset(ph, 0, sizeof *ph);
 }
 
-void sw_phase_view_forget(sw_phase_view *ph)
+/* Forget the cached orbit and range (a new scene, parameters or coordinate). */
+static void forget(sw_phase_view *ph)
 {
     ph->scene = NULL;
     ph->n = 0;
@@ -143,7 +143,7 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
     (void)unicode;
     if (ph->scene != a->scene || memcmp(ph->p, a->p, sizeof ph->p) != 0 || ph->particle != a->phase_particle ||
         ph->coord != a->phase_coord) {
-        sw_phase_view_forget(ph);
+        forget(ph);
         ph->scene = a->scene;
         memcpy(ph->p, a->p, sizeof ph->p);
         ph->particle = a->phase_particle;

@@ -27,8 +27,6 @@ typedef struct sw_phase_view {
 } sw_phase_view;
 
 void sw_phase_view_free(sw_phase_view *ph);
-/* Forget the cached orbit and range (a new scene, parameters or coordinate). */
-void sw_phase_view_forget(sw_phase_view *ph);
 /* Draw the view of app a onto canvas c (sized by the caller). Returns the
  * number of sims whose path left the frame (marked at its edge). */
 int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode);

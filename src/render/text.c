@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "util/utf8.h"
+#include "util/wrap.h"
 
 int sw_text_cells(const char *s) { return (int)sw_utf8_columns(s, strlen(s)); }
 
@@ -101,63 +102,30 @@ int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, cons
     return sw_text_cells(out);
 }
 
+typedef struct wrap_out {
+    char (*lines)[SW_TEXT_LINE];
+    int max, count;
+} wrap_out;
+
+static void wrap_line(void *ctx, int lead, const char *text, size_t len)
+{
+    wrap_out *o = ctx;
+    (void)lead; /* paragraphs have none */
+    if (o->count < o->max) {
+        len = sw_utf8_clip(text, len, SW_TEXT_LINE - 1);
+        memcpy(o->lines[o->count], text, len);
+        o->lines[o->count][len] = '\0';
+    }
+    o->count++;
+}
+
 int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int max)
 {
-    int count = 0;
+    wrap_out o = { lines, max, 0 };
     if (width < 1)
         return 0;
-    const char *p = text;
-    while (*p) {
-        char line[SW_TEXT_LINE];
-        size_t used = 0;
-        int cells = 0;
-        while (*p == ' ')
-            p++;
-        while (*p && *p != '\n') {
-            const char *w = p;
-            while (*p && *p != ' ' && *p != '\n')
-                p++;
-            size_t wl = (size_t)(p - w);
-            int wc = (int)sw_utf8_columns(w, wl);
-            if (cells > 0 && cells + 1 + wc > width) {
-                p = w; /* the word starts the next line */
-                break;
-            }
-            if (wc > width) {
-                /* a word longer than a whole line (a path): split it */
-                size_t fit_cells = 0;
-                wl = sw_utf8_fit(w, wl, (size_t)width, &fit_cells);
-                if (wl == 0) { /* a wide character in a one-cell line: take it, it is clipped */
-                    const unsigned char *q = (const unsigned char *)w;
-                    sw_utf8_next(&q);
-                    wl = (size_t)((const char *)q - w);
-                    fit_cells = (size_t)width;
-                }
-                wc = (int)fit_cells;
-                p = w + wl;
-            }
-            if (used + (cells ? 1 : 0) + wl + 1 > sizeof line)
-                break;
-            if (cells)
-                line[used++] = ' ', cells++;
-            memcpy(line + used, w, wl);
-            used += wl;
-            cells += wc;
-            while (*p == ' ')
-                p++;
-            if (cells >= width)
-                break;
-        }
-        line[used] = '\0';
-        if (count < max)
-            memcpy(lines[count], line, used + 1);
-        count++;
-        if (*p == '\n')
-            p++;
-        if (count > 1000)
-            break;
-    }
-    return count;
+    sw_wrap_paragraph(text, width, wrap_line, &o);
+    return o.count;
 }
 
 /* A method's name in brief for a legend: every part but the last cut to

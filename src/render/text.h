@@ -22,9 +22,10 @@ int sw_text_fit(char *out, size_t len, int width, const sw_field *f, int n, cons
  * *dropped (when not NULL) counts the fields left out. */
 int sw_text_fit_rows(char (*out)[SW_TEXT_LINE], int rows, int width, const sw_field *f, int n, const char *sep,
                      int *dropped);
-/* Word-wrap text (spaces separate words; '\n' ends a line) into lines of at
- * most width cells; a word longer than a line is split. Returns the number
- * of lines the text needs; at most max are written. */
+/* Word-wrap text into lines of at most width cells by the one wrapper
+ * (util/wrap.h: no word cut when it fits a line, a word longer than a
+ * line split). Returns the number of lines the text needs; at most max
+ * are written. */
 int sw_text_wrap(const char *text, int width, char (*lines)[SW_TEXT_LINE], int max);
 /* A method's name in brief for a legend: every part but the last cut to
  * four letters ("symplectic-euler" -> "symp-euler"); "" when that is no shorter. */

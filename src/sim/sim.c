@@ -10,13 +10,12 @@
 #include <string.h>
 
 #include "engine/stepper.h"
-#include "sim/truth.h"
 #include "stepwise/stepwise.h"
 
 /* Worked out on first use, behind a pointer so that const readers can. */
 struct sw_sim_derived {
     int have_floor;
-    double floor;         /* sw_truth_energy_floor of the system as built */
+    double floor;         /* sw_sim_energy_floor of the system as built */
 };
 
 static double max_abs(int n, const double *v)
@@ -242,12 +241,63 @@ double sw_sim_energy(const sw_sim *s)
     return sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN;
 }
 
+int sw_sim_resting_state(const sw_system *sys, double *out, double *energy)
+{
+    const sw_scene *sc = sys->scene;
+    sw_sim s;
+    char err[SW_ERRLEN];
+    if (sys->kind != SW_SYS_PARTICLES || !sc->energy || sc->post_step)
+        return -1;
+    if (sw_sim_init(&s, sc, sys->p, sw_integrator_find("implicit-euler"), SW_DT_MAX, err, sizeof err) != SW_OK)
+        return -1;
+    double e0 = sw_sim_energy(&s);
+    int rc = -1;
+    for (int k = 0; k < 12 && sw_sim_step(&s) == 0; k++)
+        ;
+    if (!s.blown) {
+        int dim = s.sys.ode->dim, n2 = dim / 2;
+        double vmax = 0, e = sw_sim_energy(&s);
+        for (int i = n2; i < dim; i++)
+            vmax = fmax(vmax, fabs(s.sys.y[i]));
+        if (vmax < 1e-9 && e <= e0) {
+            if (out)
+                memcpy(out, s.sys.y, (size_t)dim * sizeof *out);
+            if (energy)
+                *energy = e;
+            rc = 0;
+        }
+    }
+    sw_sim_free(&s);
+    return rc;
+}
+
+/* The energy of the resting state reached from the start; NaN when none. */
+static double resting_energy(const sw_system *sys)
+{
+    double e;
+    return sw_sim_resting_state(sys, NULL, &e) == 0 ? e : NAN;
+}
+
+static double system_energy_floor(const sw_system *sys)
+{
+    const sw_scene *sc = sys->scene;
+    if (!sc->energy)
+        return NAN;
+    double floor = sc->energy_floor ? sc->energy_floor(sys) : NAN;
+    if (!isnan(floor) || sys->kind != SW_SYS_PARTICLES)
+        return floor;
+    double cx, cy, mu;
+    if (sw_particles_spring_count(&sys->particles) == 0 || sw_particles_central(&sys->particles, &cx, &cy, &mu))
+        return NAN; /* free flight or an orbit: the potential has no bottom */
+    return resting_energy(sys);
+}
+
 /* The floor depends on the parameters only: worked out once. */
-static double energy_floor(const sw_sim *s)
+double sw_sim_energy_floor(const sw_sim *s)
 {
     struct sw_sim_derived *d = s->derived;
     if (!d->have_floor) {
-        d->floor = isfinite(s->energy0) ? sw_truth_energy_floor(&s->sys) : NAN;
+        d->floor = isfinite(s->energy0) ? system_energy_floor(&s->sys) : NAN;
         d->have_floor = 1;
     }
     return d->floor;
@@ -255,13 +305,13 @@ static double energy_floor(const sw_sim *s)
 
 int sw_sim_energy_scale_is_motion(const sw_sim *s)
 {
-    return s->energy0 - energy_floor(s) > 1e-12 * fabs(s->energy0);
+    return s->energy0 - sw_sim_energy_floor(s) > 1e-12 * fabs(s->energy0);
 }
 
 double sw_sim_energy_scale(const sw_sim *s)
 {
     if (sw_sim_energy_scale_is_motion(s))
-        return s->energy0 - energy_floor(s);
+        return s->energy0 - sw_sim_energy_floor(s);
     return fabs(s->energy0) > 0 ? fabs(s->energy0) : NAN;
 }
 

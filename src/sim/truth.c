@@ -155,57 +155,6 @@ double sw_truth_error(int dim, const double *y, const double *truth)
     return m;
 }
 
-int sw_truth_resting_state(const sw_system *sys, double *out, double *energy)
-{
-    const sw_scene *sc = sys->scene;
-    sw_sim s;
-    char err[SW_ERRLEN];
-    if (sys->kind != SW_SYS_PARTICLES || !sc->energy || sc->post_step)
-        return -1;
-    if (sw_sim_init(&s, sc, sys->p, sw_integrator_find("implicit-euler"), SW_DT_MAX, err, sizeof err) != SW_OK)
-        return -1;
-    double e0 = sw_sim_energy(&s);
-    int rc = -1;
-    for (int k = 0; k < 12 && sw_sim_step(&s) == 0; k++)
-        ;
-    if (!s.blown) {
-        int dim = s.sys.ode->dim, n2 = dim / 2;
-        double vmax = 0, e = sw_sim_energy(&s);
-        for (int i = n2; i < dim; i++)
-            vmax = fmax(vmax, fabs(s.sys.y[i]));
-        if (vmax < 1e-9 && e <= e0) {
-            if (out)
-                memcpy(out, s.sys.y, (size_t)dim * sizeof *out);
-            if (energy)
-                *energy = e;
-            rc = 0;
-        }
-    }
-    sw_sim_free(&s);
-    return rc;
-}
-
-/* The energy of the resting state reached from the start; NaN when none. */
-static double resting_energy(const sw_system *sys)
-{
-    double e;
-    return sw_truth_resting_state(sys, NULL, &e) == 0 ? e : NAN;
-}
-
-double sw_truth_energy_floor(const sw_system *sys)
-{
-    const sw_scene *sc = sys->scene;
-    if (!sc->energy)
-        return NAN;
-    double floor = sc->energy_floor ? sc->energy_floor(sys) : NAN;
-    if (!isnan(floor) || sys->kind != SW_SYS_PARTICLES)
-        return floor;
-    double cx, cy, mu;
-    if (sw_particles_spring_count(&sys->particles) == 0 || sw_particles_central(&sys->particles, &cx, &cy, &mu))
-        return NAN; /* free flight or an orbit: the potential has no bottom */
-    return resting_energy(sys);
-}
-
 int sw_truth_method_applies(const sw_scene *sc, const sw_integrator *m, char *why, size_t whylen)
 {
     if ((m->flags & SW_NEEDS_SECOND_ORDER) && sc->kind == SW_SYS_FLOW) {

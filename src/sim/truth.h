@@ -78,19 +78,6 @@ int sw_truth_state(const sw_scene *sc, const double *p, double t, double *out);
  * particles velocities) of |y_i - truth_i|. NaN when any is NaN. */
 double sw_truth_error(int dim, const double *y, const double *truth);
 
-/* The least energy of the system (its resting state): the scene's own
- * floor, else for particles with springs and no central body the energy of
- * the static equilibrium reached by Newton's method from the start; NaN
- * when there is none (a potential unbounded below: an orbit, free flight). */
-double sw_truth_energy_floor(const sw_system *sys);
-
-/* The resting state reached from the start of a particle system (backward
- * Euler with the longest step dissipates every motion; its fixed point has
- * f(y) = 0: at rest where the forces balance) into out (dim doubles, may be
- * NULL), its energy into *energy (may be NULL). 0, or -1 when there is none
- * (a flow, no energy, contact, or the run does not settle). */
-int sw_truth_resting_state(const sw_system *sys, double *out, double *energy);
-
 /* Whether method m can run scene sc at all, without building it (kind of
  * system, second-order methods on flows, adaptive methods where a fixed
  * step is needed is the caller's business); 1, or 0 with why filled. */
@@ -127,13 +114,11 @@ typedef struct sw_spectrum {
  * physics, not the method. 0, or -1 when the eigenvalues do not converge. */
 int sw_truth_spectrum(sw_system *sys, double t, const double *y, sw_spectrum *out);
 
-/* The growth per step of method m at step h on one mode: the spectral
- * radius of the method's own one-step map on the mode's test system (the
- * map includes what the method carries between steps, so Verlet's reused
- * acceleration makes it 3x3). NaN for adaptive methods or when the step
- * fails. */
-double sw_truth_growth(const sw_integrator *m, int order, const sw_mode *mode, double h);
-/* The largest growth over a spectrum; *worst (may be NULL) gets its mode. */
+/* The growth per step of method m at step h: the spectral radius of the
+ * method's own one-step map on each mode's test system (the map includes
+ * what the method carries between steps, so Verlet's reused acceleration
+ * makes it 3x3), the largest over the spectrum; NaN for adaptive methods
+ * or when the step fails. *worst (may be NULL) gets its mode. */
 double sw_truth_growth_all(const sw_integrator *m, const sw_spectrum *sp, double h, int *worst);
 
 /* ρ within this of 1 is neutral: rounding in the eigenvalues of a small

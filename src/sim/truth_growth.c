@@ -111,59 +111,13 @@ static double map_growth(sw_stepper *st, sw_test_system *ts, double h)
     return NAN;
 }
 
-double sw_truth_growth(const sw_integrator *m, int order, const sw_mode *mode, double h)
-{
-    if (m->flags & SW_ADAPTIVE)
-        return NAN;
-    sw_test_system ts;
-    test_system_init(&ts, order, mode);
-    sw_stepper st;
-    char err[SW_ERRLEN];
-    if (sw_stepper_init(&st, m, &ts.ode, err, sizeof err) != SW_OK)
-        return NAN;
-    double rho = map_growth(&st, &ts, h);
-    sw_stepper_free(&st);
-    return rho;
-}
-
-sw_truth_work *sw_truth_work_new(void) { return calloc(1, sizeof(sw_truth_work)); }
-
-static void drop_steppers(sw_truth_work *w)
-{
-    for (int k = 0; k < w->ready; k++)
-        sw_stepper_free(&w->st[k]);
-    w->ready = 0;
-    w->method = NULL;
-}
-
-void sw_truth_work_free(sw_truth_work *w)
-{
-    if (!w)
-        return;
-    drop_steppers(w);
-    free(w->buf);
-    free(w);
-}
-
-double *sw_truth_scratch(sw_truth_work *w, size_t n)
-{
-    if (n > w->cap) {
-        double *b = realloc(w->buf, n * sizeof *b);
-        if (!b)
-            return NULL;
-        w->buf = b;
-        w->cap = n;
-    }
-    return w->buf;
-}
-
 /* Steppers of method m for the spectrum's modes: made once per method and
  * mode count, the test systems' matrices refreshed every call. */
 static int steppers_for(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp)
 {
     char err[SW_ERRLEN];
     if (w->method != m)
-        drop_steppers(w);
+        sw_truth_work_drop_steppers(w);
     w->method = m;
     for (int k = 0; k < sp->n; k++) {
         double was[4];
@@ -271,6 +225,7 @@ double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_sp
 double sw_truth_limit(const sw_integrator *m, const sw_spectrum *sp, double h_max, int *unbounded)
 {
     sw_truth_work *w = sw_truth_work_new();
+    *unbounded = 0; /* out of memory: NaN, not unbounded */
     double h = w ? sw_truth_limit_with(w, m, sp, h_max, unbounded) : NAN;
     sw_truth_work_free(w);
     return h;

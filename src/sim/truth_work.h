@@ -26,6 +26,8 @@ struct sw_truth_work {
     sw_stepper st[SW_TRUTH_MODES];
 };
 
+/* Free the steppers (the method changed); the buffer stays. */
+void sw_truth_work_drop_steppers(sw_truth_work *w);
 /* At least n doubles of scratch (grown, never shrunk); NULL when out of memory. */
 double *sw_truth_scratch(sw_truth_work *w, size_t n);
 

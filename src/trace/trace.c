@@ -1,12 +1,11 @@
 /* Step traces: the reader of the CSV format in docs/trace-format.md (the run
  * rule and the columns are in trace_run.c, the writer in trace_write.c, the
- * metadata parser in trace_meta.c). Invariant: the reader's memory is
+ * metadata parser in trace_meta.c, the messages both write in trace_msg.c). Invariant: the reader's memory is
  * bounded by the scene, not by the file; every error names file and line. */
 #include "trace/trace_read.h"
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -14,30 +13,6 @@
 
 #include "stepwise/base.h"
 #include "util/infile.h"
-
-/* "FILE:LINE: what" — every reader error names the place. */
-int tr_fail(const sw_trace_reader *r, char *err, size_t errlen, const char *fmt, ...)
-{
-    int used = snprintf(err, errlen, "%s:%ld: ", r->name, r->line > 0 ? r->line : 1);
-    if (used < 0 || (size_t)used >= errlen)
-        return SW_EINVAL;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err + used, errlen - (size_t)used, fmt, ap);
-    va_end(ap);
-    return SW_EINVAL;
-}
-
-/* A printable copy of untrusted text for a message: at most 40 bytes, and
- * anything outside printable ASCII shown as '?'. */
-const char *tr_shown(const char *text, size_t len, char out[48])
-{
-    size_t n = len < 40 ? len : 40;
-    for (size_t i = 0; i < n; i++)
-        out[i] = (text[i] >= 0x20 && text[i] < 0x7f) ? text[i] : '?';
-    strcpy(out + n, len > 40 ? "..." : "");
-    return out;
-}
 
 /* Read one line into r->buf without its newline (and a CR before it).
  * 1 a line, 0 end of file, or an error: too long, binary, or no final
@@ -93,16 +68,6 @@ static int set_cap(sw_trace_reader *r, size_t cap, char *err, size_t errlen)
     r->buf = b;
     r->cap = cap;
     return SW_OK;
-}
-
-char *tr_trim(char *s)
-{
-    while (*s == ' ' || *s == '\t')
-        s++;
-    size_t n = strlen(s);
-    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t'))
-        s[--n] = '\0';
-    return s;
 }
 
 /* The first line: exactly SW_TRACE_MAGIC. */

@@ -1,5 +1,5 @@
-/* Private to the trace reader (trace_read.c) and its metadata parser
- * (trace_meta.c): the helpers both use. */
+/* Private to the trace reader (trace.c) and its metadata parser
+ * (trace_meta.c): the metadata state, the messages both write (trace_msg.c). */
 #ifndef SW_TRACE_TRACE_READ_H
 #define SW_TRACE_TRACE_READ_H
 

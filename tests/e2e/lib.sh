@@ -60,16 +60,12 @@ tmux_start() {
 
 screen() { tmux capture-pane -p -t "$SESSION"; }
 
+. "$ROOT/tests/e2e/wait.sh"   # wait_until
+
+screen_has() { screen | grep -Eq -- "$1"; }
+
 # wait_for REGEX [SECONDS]: poll the screen until it matches.
-wait_for() {
-    i=0 limit=$(( ${2:-8} * 10 ))
-    while [ $i -lt $limit ]; do
-        screen | grep -Eq -- "$1" && return 0
-        sleep 0.1
-        i=$((i + 1))
-    done
-    return 1
-}
+wait_for() { wait_until "${2:-30}" screen_has "$1"; }
 
 keys() { tmux send-keys -t "$SESSION" "$@"; }
 
@@ -98,10 +94,9 @@ app_pid() {
 
 # Wait until no stepwise runs under the pane's shell (a sanitizer build may
 # take a moment at exit), so that what is typed next goes to the shell.
+no_app() { [ -z "$(app_pid)" ]; }
 wait_exit() {
-    i=0
-    while [ -n "$(app_pid)" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
-    [ -z "$(app_pid)" ] || fail "stepwise still running after $1"
+    wait_until 30 no_app || fail "stepwise still running after $1"
 }
 
 # After the program has gone: the prompt is back, and the terminal is sane.

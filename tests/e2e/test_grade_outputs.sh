@@ -14,11 +14,10 @@ json="$ROOT/tests/e2e/json.awk"
 TMPDIR="$WORK/tmp"
 export TMPDIR
 mkdir "$TMPDIR"
+temp_none() { ! ls "$TMPDIR" | grep -q '^stepwise-'; }
+temp_made() { ls "$TMPDIR" | grep -q '^stepwise-'; }
 no_temp_left() { # WHAT: no stepwise-* directory in TMPDIR (the watcher may take a moment)
-    i=0
-    while ls "$TMPDIR" | grep -q '^stepwise-' && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
-    ls "$TMPDIR" | grep -q '^stepwise-' && fail "$1 left $(ls "$TMPDIR")"
-    return 0
+    wait_until 30 temp_none || fail "$1 left $(ls "$TMPDIR")"
 }
 
 "$SW" record spring --steps 20 -o ref.trace 2>/dev/null || fail "cannot record the assignment"
@@ -180,9 +179,8 @@ stop() {
     sig=$1; shift
     STEPWISE_PLUGIN_TIMEOUT=60 "$@" >/dev/null 2>&1 &
     pid=$!
-    i=0
-    while ! ls "$TMPDIR" | grep -q '^stepwise-' && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
-    sleep 1   # into the build or the run
+    wait_until 30 temp_made
+    sleep 1   # into the build or the run (either must leave nothing: not a race the test needs to win)
     kill -s "$sig" "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
     no_temp_left "$sig to $*"

@@ -6,6 +6,7 @@
 set -u
 SW=${STEPWISE:?set STEPWISE to the stepwise binary}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+. "$root/tests/e2e/wait.sh"
 dir=$(mktemp -d)
 trap 'kill "$pid" 2>/dev/null; rm -rf "$dir"' EXIT
 pid=""
@@ -33,15 +34,16 @@ printf 'this is not C\n' > broken.c
 cp broken.c w.c
 "$SW" try w.c --watch --no-play > log 2>&1 &
 pid=$!
-i=0; while ! grep -q 'watching w.c' log && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+wait_until 60 grep -q 'watching w.c' log
 grep -q 'does not compile' log || fail "--watch: the first run did not report the error"
 sleep 1.1   # a new modification time, whatever the file system's resolution
 cp "$root/examples/euler_plugin.c" w.c
-i=0; while ! grep -q 'PASS: plugin student-euler' log && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+wait_until 120 grep -q 'PASS: plugin student-euler' log
 grep -q 'w.c changed: trying again' log || fail "--watch did not notice the save"
 grep -q 'PASS: plugin student-euler' log || fail "--watch did not run the saved file"
 kill -INT "$pid"
-i=0; while kill -0 "$pid" 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+gone() { ! kill -0 "$pid" 2>/dev/null; }
+wait_until 30 gone
 kill -0 "$pid" 2>/dev/null && fail "try --watch did not stop on SIGINT"
 wait "$pid" 2>/dev/null
 pid=""

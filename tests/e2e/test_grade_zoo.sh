@@ -175,7 +175,8 @@ done
 # Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.
 type_cmd "STEPWISE_PLUGIN_TIMEOUT=60 $SW play spring --plugin ./loops.so -i loops"
 wait_for 'spring +loops' 5 || fail "play with the looping plugin did not start"
-sleep 1
+stepping() { [ -n "$(child_of "$(app_pid)")" ]; } # the plugin's sandboxed child runs (and loops)
+wait_until 30 stepping || fail "play: the looping plugin's child never ran"
 keys C-c
 wait_exit "Ctrl-C during a plugin loop"
 sane "play-loop-ctrl-c"

@@ -48,7 +48,7 @@ type_cmd "$STEPWISE play spring -i rk4"
 wait_for 'spring +rk4' || fail "play spring did not start"
 keys R
 wait_for 'recording from t = 0' || fail "R did not start recording"
-sleep 1
+wait_for 'spring +rk4 .* steps [1-9]' || fail "the recording did not run"
 keys R
 wait_for 'recorded [0-9]+ steps to stepwise-spring-' || fail "R did not write the trace"
 keys q
@@ -63,7 +63,7 @@ type_cmd "$STEPWISE play orbit"
 wait_for 'orbit +verlet' || fail "play orbit did not start"
 keys R
 wait_for 'recording from t = 0' || fail "R did not start recording"
-sleep 1
+wait_for 'orbit +verlet .* steps [1-9]' || fail "the recording did not run"
 kill -TERM "$(app_pid)"
 wait_for 'PROMPT\$' || fail "no prompt after SIGTERM while recording"
 check_terminal_sane TERM-recording

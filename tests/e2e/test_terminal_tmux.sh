@@ -46,8 +46,8 @@ braille_cells() { screen | LC_ALL=C grep -c "$(printf '\342[\240-\243]')"; }
 keys "clear" Enter
 type_cmd "$STEPWISE play spring --braille"
 wait_for 'spring +euler' || fail "play --braille did not start"
-sleep 0.5
-[ "$(braille_cells)" -gt 0 ] || fail "play --braille draws no Braille"
+some_braille() { [ "$(braille_cells)" -gt 0 ]; }
+wait_until 30 some_braille || fail "play --braille draws no Braille"
 keys q
 wait_exit "braille"
 keys "clear" Enter

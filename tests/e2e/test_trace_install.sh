@@ -1,6 +1,8 @@
 #!/bin/sh
 # `make install PREFIX=... DESTDIR=...` installs the binary, the man page, the
-# lessons and the public headers, and the installed binary finds its lessons.
+# lessons, the public headers, and for embedders the library and its
+# pkg-config file; the installed binary finds its lessons, and a program
+# builds against the installed stepwise.pc alone.
 # Builds in its own build directory (the shared one is left alone), once
 # with a staging DESTDIR and once into a real temporary PREFIX that the
 # binary is then run from. Lessons: the tree's lessons/*.lesson when there
@@ -46,7 +48,38 @@ done
 ${CC:-cc} -std=c11 -Wall -Wextra -Wpedantic -Werror -shared -fPIC -I"$prefix/include" \
     -o "$dir/p.so" "$root/examples/euler_plugin.c" || fail "plugin against the installed headers"
 "$bin" check --plugin "$dir/p.so" --reference euler --scene spring >/dev/null || fail "installed plugin check"
+# An embedder: a program built with `pkg-config --cflags --libs stepwise` and
+# nothing of the tree, which runs a scene under a method through the public API.
+[ -f "$prefix/lib/libstepwise.a" ] || fail "no libstepwise.a in $prefix/lib"
+cat > "$dir/embed.c" <<'C'
+#include <stdio.h>
+#include <stepwise/stepwise.h>
+int main(void)
+{
+    const sw_scene *sc = sw_scene_find("spring");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_sim s;
+    if (!sc)
+        return 1;
+    sw_scene_defaults(sc, p);
+    if (sw_sim_init(&s, sc, p, sw_integrator_find("rk4"), 0.01, err, sizeof err) != SW_OK) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    sw_sim_run_until(&s, 1.0);
+    printf("stepwise %s: t=%g steps=%ld\n", SW_VERSION, s.t, s.steps);
+    sw_sim_free(&s);
+    return 0;
+}
+C
+flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs stepwise) || fail "pkg-config does not know the installed stepwise"
+# shellcheck disable=SC2086
+${CC:-cc} -std=c11 -Wall -Wextra -Werror -o "$dir/embed" "$dir/embed.c" $flags || fail "an embedder does not build against stepwise.pc: $flags"
+out=$("$dir/embed") || fail "the embedder failed: $out"
+echo "$out" | grep -q '^stepwise [0-9.]*: t=1 steps=100$' || fail "the embedder ran: $out"
 
 mk uninstall PREFIX="$prefix"
-[ ! -e "$bin" ] && [ ! -e "$prefix/share/man/man1/stepwise.1" ] || fail "uninstall left files"
+[ ! -e "$bin" ] && [ ! -e "$prefix/share/man/man1/stepwise.1" ] && [ ! -e "$prefix/lib/libstepwise.a" ] &&
+    [ ! -e "$prefix/lib/pkgconfig/stepwise.pc" ] || fail "uninstall left files"
 echo "ok"

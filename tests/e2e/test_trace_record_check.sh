@@ -85,8 +85,8 @@ run "$SW" check blow.csv
 # --- an interrupted record leaves nothing under the real name --------------
 "$SW" record chain --set n=2000 --steps 1000000 --every 100000 -o big.csv </dev/null >/dev/null 2>err &
 pid=$!
-i=0
-while [ $i -lt 50 ] && ! ls big.csv.tmp.* >/dev/null 2>&1; do sleep 0.1; i=$((i + 1)); done
+tmp_made() { ls big.csv.tmp.* >/dev/null 2>&1; }
+wait_until 60 tmp_made
 ls big.csv.tmp.* >/dev/null 2>&1 || fail "no temporary file while recording"
 sleep 0.3
 [ -e big.csv ] && fail "big.csv exists before the run finished"

@@ -291,7 +291,7 @@ static double drift_definition(void)
 {
     sw_sim s;
     cl_sim_init(&s, "stiff-spring", NULL, "implicit-euler", 0.04);
-    double e0 = sw_sim_energy(&s), rest = sw_truth_energy_floor(&s.sys);
+    double e0 = sw_sim_energy(&s), rest = sw_sim_energy_floor(&s);
     for (int i = 0; i < 100; i++)
         sw_sim_step(&s);
     double mine = 100 * (sw_sim_energy(&s) - e0) / (e0 - rest), shown = sw_sim_energy_drift(&s);
@@ -362,7 +362,7 @@ const claim sw_claims_d[] = {
     { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "rk45's error after two orbits is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
-    { README, "`1`–`9` and `{0}` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
+    { README, "`1`–`9`, `{0}` and `!` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
     { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
     { README, "(ωh = {2} for symplectic Euler and Verlet", symplectic_wdt, ABS, 1e-6, "symplectic Euler's limit in theory (bisected to 1e-9)", NULL },
@@ -445,7 +445,7 @@ const claim sw_claims_d[] = {
     { GUIDE, "| `@dt STEP` | the step size, in [1e-9, {1000}] seconds |", dt_max, EXACT, 0, R_COUNT, NULL },
     { GUIDE, "`>=` forgive a relative difference of {1e-9}", goal_slack, REL, 1e-6, "the slack of a >= goal, bisected", NULL },
     { GUIDE, "(E - E0)/(E0 - E_rest) in percent", drift_definition, ATMOST, 0, "the drift the goals see against the definition worked out here (1e-12)", cl_rounding },
-    { GUIDE, "`0` the tenth, rk45 |", cl_key_rk45, EXACT, 0, "the key that picks rk45", cl_zero },
+    { GUIDE, "`0` the tenth, rk45;", cl_key_rk45, EXACT, 0, "the key that picks rk45", cl_zero },
     { GUIDE, "| file size | {262144} bytes (256 KiB) |", max_bytes, EXACT, 0, R_COUNT, NULL },
     { GUIDE, "| line length | {1000} bytes |", max_line, EXACT, 0, R_COUNT, NULL },
     { GUIDE, "| lesson and page titles | {80} characters |", max_title, EXACT, 0, R_COUNT, NULL },

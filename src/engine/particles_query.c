@@ -1,0 +1,46 @@
+/* Read-only questions about a particle system's forces: its springs
+ * (numbered across spring forces), its central body, its summed drag. The
+ * implicit solve, the truth and the views ask them; this file calls
+ * nothing else of the engine, so particles.c may call the solve. */
+#include "stepwise/particles.h"
+
+#include <string.h>
+
+int sw_particles_spring_count(const sw_particles *p) { return p->nsprings_total; }
+
+void sw_particles_spring(const sw_particles *p, int j, sw_spring *out)
+{
+    for (int k = 0; k < p->nforces; k++) {
+        const sw_force *fo = &p->forces[k];
+        if (fo->kind != SW_FORCE_SPRINGS)
+            continue;
+        if (j < fo->nsprings) {
+            *out = fo->springs[j];
+            return;
+        }
+        j -= fo->nsprings;
+    }
+    memset(out, 0, sizeof *out);
+    out->a = -1;
+}
+
+int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *mu)
+{
+    for (int k = 0; k < p->nforces; k++)
+        if (p->forces[k].kind == SW_FORCE_CENTRAL) {
+            *cx = p->forces[k].cx;
+            *cy = p->forces[k].cy;
+            *mu = p->forces[k].mu;
+            return 1;
+        }
+    return 0;
+}
+
+double sw_particles_drag(const sw_particles *p)
+{
+    double k = 0;
+    for (int i = 0; i < p->nforces; i++)
+        if (p->forces[i].kind == SW_FORCE_DRAG)
+            k += p->forces[i].k;
+    return k;
+}

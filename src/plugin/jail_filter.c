@@ -117,6 +117,16 @@ static const int compile_denied[] = {
     SCMP_SYS(fsmount), SCMP_SYS(move_mount), SCMP_SYS(open_tree), SCMP_SYS(clone3),
 };
 
+/* One condition on argument `arg` (libseccomp's SCMP_A* macros leave a
+ * field to the compiler, which clang's -Wmissing-field-initializers
+ * refuses): the syscall is matched when arg op a (MASKED_EQ: arg & a == b). */
+static int rule1(scmp_filter_ctx f, uint32_t action, int call, unsigned arg, enum scmp_compare op,
+                 scmp_datum_t a, scmp_datum_t b)
+{
+    struct scmp_arg_cmp cmp = { .arg = arg, .op = op, .datum_a = a, .datum_b = b };
+    return seccomp_rule_add_array(f, action, call, 1, &cmp);
+}
+
 static int add_all(scmp_filter_ctx f, const int *calls, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
@@ -131,11 +141,11 @@ static int add_all(scmp_filter_ctx f, const int *calls, size_t n)
 static int own_signals(scmp_filter_ctx f)
 {
     scmp_datum_t self = (scmp_datum_t)getpid();
-    int rc = seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(tgkill), 1, SCMP_A0(SCMP_CMP_EQ, self));
+    int rc = rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(tgkill), 0, SCMP_CMP_EQ, self, 0);
     if (rc == 0)
-        rc = seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(kill), 1, SCMP_A0(SCMP_CMP_EQ, self));
+        rc = rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(kill), 0, SCMP_CMP_EQ, self, 0);
     if (rc == 0)
-        rc = seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(kill), 1, SCMP_A0(SCMP_CMP_EQ, 0));
+        rc = rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(kill), 0, SCMP_CMP_EQ, 0, 0);
     /* isatty() on its output: "not a terminal", never a kill. */
     if (rc == 0)
         rc = seccomp_rule_add(f, SCMP_ACT_ERRNO(ENOTTY), SCMP_SYS(ioctl), 0);
@@ -166,13 +176,11 @@ static int compute_filter(int loading)
         /* files: opened for reading only (the loader maps the plugin and its libraries) */
         scmp_datum_t mask = O_ACCMODE | O_CREAT | O_TRUNC | O_APPEND;
         if (rc == 0)
-            rc = -seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(openat), 1,
-                                   SCMP_A2(SCMP_CMP_MASKED_EQ, mask, O_RDONLY));
+            rc = -rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(openat), 2, SCMP_CMP_MASKED_EQ, mask, O_RDONLY);
         if (rc == 0)
-            rc = -seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(open), 1,
-                                   SCMP_A1(SCMP_CMP_MASKED_EQ, mask, O_RDONLY));
+            rc = -rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(open), 1, SCMP_CMP_MASKED_EQ, mask, O_RDONLY);
         if (rc == 0) /* getrlimit only, never a new limit */
-            rc = -seccomp_rule_add(f, SCMP_ACT_ALLOW, SCMP_SYS(prlimit64), 1, SCMP_A2(SCMP_CMP_EQ, 0));
+            rc = -rule1(f, SCMP_ACT_ALLOW, SCMP_SYS(prlimit64), 2, SCMP_CMP_EQ, 0, 0);
     }
     return load(f, rc);
 }
@@ -193,8 +201,7 @@ static int compile_filter(void)
     static const scmp_datum_t ns[] = { CLONE_NEWUSER, CLONE_NEWNS, CLONE_NEWPID, CLONE_NEWNET,
                                        CLONE_NEWIPC, CLONE_NEWUTS, CLONE_NEWCGROUP };
     for (size_t i = 0; rc == 0 && i < sizeof ns / sizeof ns[0]; i++) /* no new namespace from clone */
-        rc = -seccomp_rule_add(f, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1,
-                               SCMP_A0(SCMP_CMP_MASKED_EQ, ns[i], ns[i]));
+        rc = -rule1(f, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 0, SCMP_CMP_MASKED_EQ, ns[i], ns[i]);
     return load(f, rc);
 }
 

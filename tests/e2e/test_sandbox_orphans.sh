@@ -3,7 +3,7 @@
 # a plugin that loops in its step is left running in its jail, then the
 # stepwise process above it is killed (SIGKILL, SIGTERM; check, try and
 # grade). Every process whose command line names this test's directory
-# must be gone within 10 s. (A change of credentials clears a process's
+# must be gone within 30 s. (A change of credentials clears a process's
 # parent-death signal: the jail's first process once kept a looping
 # plugin alive for good after its caller died.)
 . "$(dirname "$0")/lib.sh"
@@ -37,7 +37,7 @@ ours() {
 # (running) whose command line names $WORK, beyond the one we started
 wait_running() {
     n=0
-    while [ $n -lt 400 ]; do
+    while [ $n -lt 1200 ]; do
         for p in $(ours); do
             [ "$p" = "$1" ] && continue
             { grep -q '^State:.*R' "/proc/$p/status"; } 2>/dev/null && return 0
@@ -48,7 +48,7 @@ wait_running() {
 }
 gone() {
     n=0
-    while [ $n -lt 200 ]; do
+    while [ $n -lt 600 ]; do
         [ -z "$(ours)" ] && return 0
         sleep 0.05; n=$((n + 1))
     done

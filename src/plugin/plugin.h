@@ -63,8 +63,6 @@ double sw_plugin_timeout(void);
  * SW_PLUGIN_MAX). *out is the registered method. 0, or SW_EINVAL / SW_EIO
  * with a one-line message (names escaped) in err. */
 int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen);
-/* The file a loaded plugin method came from (absolute), or NULL. */
-const char *sw_plugin_path(const sw_integrator *m);
 
 /* After a sim stopped: when its plugin failed (not a numerical blow-up),
  * rewrite s->blow_reason to say how ("the plugin crashed with SIGSEGV

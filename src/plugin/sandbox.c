@@ -32,7 +32,7 @@
 #define SPIN_SECONDS 20e-6
 
 /* Every signal util/signals.h catches (record, play, grade all use it). */
-int sw_sandbox_cancelled(void) { return sw_signal_caught != 0; }
+static int sandbox_cancelled(void) { return sw_signal_caught != 0; }
 
 double sw_sandbox_now(void)
 {
@@ -449,11 +449,14 @@ int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t 
     return 1;
 }
 
-int sw_sandbox_wait(int fd, double seconds)
+/* Wait until fd is readable, for at most `seconds` (< 0: no limit). 1
+ * readable (or at end of file), 0 timed out, -1 cancelled (a signal
+ * util/signals.h caught). */
+static int sandbox_wait(int fd, double seconds)
 {
     double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : 0;
     for (;;) {
-        if (sw_sandbox_cancelled())
+        if (sandbox_cancelled())
             return -1;
         int slice = 100;
         if (seconds >= 0) {
@@ -497,7 +500,7 @@ int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
             double left = seconds >= 0 ? deadline - sw_sandbox_now() : -1;
             if (seconds >= 0 && left < 0)
                 left = 0;
-            int w = sw_sandbox_wait(fd, left);
+            int w = sandbox_wait(fd, left);
             if (w < 0)
                 return -1;
             if (w == 0)
@@ -635,7 +638,7 @@ void sw_sandbox_reap(sw_child *c, double seconds, sw_child_end *end)
         }
         if (rc < 0 && errno != EINTR)
             break;
-        if (sw_sandbox_now() >= deadline || sw_sandbox_cancelled())
+        if (sw_sandbox_now() >= deadline || sandbox_cancelled())
             break;
         struct timespec ts = { 0, 2000000 };
         nanosleep(&ts, NULL);

@@ -44,9 +44,6 @@ typedef struct sw_child_end {
  * out_fd: replies); the return value is its exit status. */
 typedef int sw_child_fn(void *ctx, int in_fd, int out_fd);
 
-/* Whether a wait of this module is cancelled now: util/signals.h caught a
- * signal (sw_signal_caught), and every wait returns early, as cancelled. */
-int sw_sandbox_cancelled(void);
 
 /* Fork a child that runs fn(ctx, ...) under lim, its stdin /dev/null, its
  * stdout and stderr output_fd (-1: /dev/null), every other descriptor closed
@@ -70,9 +67,6 @@ int sw_sandbox_probe(char *err, size_t errlen);
  * jail had no such regular file, -1 a broken or oversized record. */
 int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t *len);
 
-/* Wait until fd is readable, for at most `seconds` (< 0: no limit). 1
- * readable (or at end of file), 0 timed out, -1 cancelled. */
-int sw_sandbox_wait(int fd, double seconds);
 /* Read exactly len bytes within `seconds`. 1 done, 0 end of file first (the
  * child is gone), -1 cancelled, -2 timed out, -3 a read error. */
 int sw_sandbox_read(int fd, void *buf, size_t len, double seconds);

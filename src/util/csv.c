@@ -13,13 +13,14 @@ static const char formula_starts[] = "=+-@\t\r";
 
 void sw_csv_field(FILE *out, const char *text)
 {
-    /* sw_escape_message reads at most 4095 bytes; four bytes out per byte in. */
-    char buf[4 * 4096 + 4];
-    size_t n = strnlen(text ? text : "", 4095);
-    memcpy(buf, text ? text : "", n);
-    buf[n] = '\0';
-    sw_escape_message(buf, sizeof buf);
+    /* At most 4095 bytes, the neutralising ' included: a field read back
+     * and written again (a regrade keeps the other rows) comes out as it
+     * was, and always within what sw_csv_parse reads. */
+    char buf[4096];
+    sw_escape_kept(text, SW_CSV_CELL_MAX, buf, sizeof buf);
     int neutralise = buf[0] && strchr(formula_starts, buf[0]);
+    if (neutralise && strlen(buf) == sizeof buf - 1)
+        sw_escape_kept(text, SW_CSV_CELL_MAX, buf, sizeof buf - 1);
     int quote = strpbrk(buf, ",\"") != NULL;
     if (quote)
         putc('"', out);

@@ -21,29 +21,39 @@ static size_t printable(const unsigned char *s, size_t avail)
     return len;
 }
 
-/* Escape text[0..n) into out; returns 1 when all of it fitted. */
+/* Length of the piece text at s becomes: the character itself, or 4 for
+ * \xNN; *k gets the bytes of text it stands for. */
+static size_t piece_len(const unsigned char *s, size_t avail, int keep_backslash, size_t *k)
+{
+    *k = s[0] == '\\' && !keep_backslash ? 0 : printable(s, avail);
+    return *k ? *k : 4;
+}
+
+/* Escape text[0..n) into out; returns 1 when all of it fitted. Text whose
+ * escaped form fits is written whole; only text that does not is cut, with
+ * room kept for "...". So escaping text already escaped, which fits,
+ * changes nothing (a gradebook's kept cells stay as they are). */
 static int escape(const char *text, size_t n, int keep_backslash, char *out, size_t outlen)
 {
     static const char hex[] = "0123456789abcdef";
     const unsigned char *s = (const unsigned char *)text;
+    size_t k, total = 0;
+    for (size_t i = 0; i < n && total < outlen; i += k ? k : 1)
+        total += piece_len(s + i, n - i, keep_backslash, &k);
+    size_t room = total < outlen || outlen < 4 ? outlen : outlen - 3; /* "..." when cut */
     size_t used = 0, i = 0;
     while (i < n) {
-        size_t k = s[i] == '\\' && !keep_backslash ? 0 : printable(s + i, n - i);
-        char piece[4];
-        size_t plen = k;
-        if (k)
-            memcpy(piece, s + i, k);
-        else {
-            piece[0] = '\\';
-            piece[1] = 'x';
-            piece[2] = hex[s[i] >> 4];
-            piece[3] = hex[s[i] & 15];
-            plen = 4;
-        }
-        /* keep room for "..." and the NUL */
-        if (used + plen + 4 > outlen)
+        size_t plen = piece_len(s + i, n - i, keep_backslash, &k);
+        if (used + plen + 1 > room)
             break;
-        memcpy(out + used, piece, plen);
+        if (k)
+            memcpy(out + used, s + i, k);
+        else {
+            out[used] = '\\';
+            out[used + 1] = 'x';
+            out[used + 2] = hex[s[i] >> 4];
+            out[used + 3] = hex[s[i] & 15];
+        }
         used += plen;
         i += k ? k : 1;
     }
@@ -81,4 +91,13 @@ void sw_escape_message(char *msg, size_t len)
         n = sizeof copy - 1;
     memcpy(copy, msg, n);
     escape(copy, n, 1, msg, len);
+}
+
+void sw_escape_kept(const char *text, size_t max, char *out, size_t outlen)
+{
+    if (!out || outlen == 0)
+        return;
+    if (!text)
+        text = "";
+    escape(text, strnlen(text, max), 1, out, outlen);
 }

@@ -18,4 +18,8 @@ void sw_escape(const char *text, size_t max, char *out, size_t outlen);
  * already be escaped): the message stays one line of printable text. */
 void sw_escape_message(char *msg, size_t len);
 
+/* The message rule (backslashes kept) from at most max bytes of text into
+ * out: text that is already escaped and fits comes out unchanged. */
+void sw_escape_kept(const char *text, size_t max, char *out, size_t outlen);
+
 #endif

@@ -27,7 +27,17 @@ static void plain_deriv(const sw_particles *p, const double *y, double *dydt, do
     memset(scale_all, 0, (size_t)(2 * n2) * sizeof *scale_all);
     for (int k = 0; k < p->nforces; k++) {
         const sw_force *fo = &p->forces[k];
-        for (int i = 0; i < n && fo->kind != SW_FORCE_SPRINGS; i++)
+        for (int i = 0; i < n && fo->kind == SW_FORCE_MUTUAL; i++) /* each pair once, both ends */
+            for (int j = i + 1; j < n; j++) {
+                double dx = x[2 * i] - x[2 * j], dy = x[2 * i + 1] - x[2 * j + 1];
+                double q = sqrt(dx * dx + dy * dy + fo->soft * fo->soft);
+                double s = fo->mu * p->mass[i] * p->mass[j] / (q * q * q);
+                f[2 * i] -= s * dx, f[2 * i + 1] -= s * dy;
+                f[2 * j] += s * dx, f[2 * j + 1] += s * dy;
+                scale[2 * i] += fabs(s * dx), scale[2 * i + 1] += fabs(s * dy);
+                scale[2 * j] += fabs(s * dx), scale[2 * j + 1] += fabs(s * dy);
+            }
+        for (int i = 0; i < n && fo->kind != SW_FORCE_SPRINGS && fo->kind != SW_FORCE_MUTUAL; i++)
             for (int d = 0; d < 2; d++) {
                 double part;
                 if (fo->kind == SW_FORCE_GRAVITY) {

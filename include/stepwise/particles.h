@@ -12,7 +12,8 @@ typedef enum sw_force_kind {
     SW_FORCE_GRAVITY,  /* f = m·g */
     SW_FORCE_DRAG,     /* f = -k·v */
     SW_FORCE_SPRINGS,  /* damped springs between particles or to anchors */
-    SW_FORCE_CENTRAL   /* f = -μ·m·d/|d|³ toward a fixed point */
+    SW_FORCE_CENTRAL,  /* f = -μ·m·d/|d|³ toward a fixed point */
+    SW_FORCE_MUTUAL    /* f_i = -Σ_j μ·m_i·m_j·d_ij/(|d_ij|² + soft²)^(3/2): softened gravity */
 } sw_force_kind;
 
 /* A damped spring: f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂, d = x_a - x_b;
@@ -27,7 +28,8 @@ typedef struct sw_force {
     sw_force_kind kind;
     double gx, gy;       /* gravity acceleration */
     double k;            /* drag coefficient */
-    double cx, cy, mu;   /* central attraction */
+    double cx, cy, mu;   /* central attraction; mu = G for mutual gravity */
+    double soft;         /* mutual gravity's softening length */
     sw_spring *springs;  /* owned by the particle system */
     int nsprings;
 } sw_force;
@@ -66,6 +68,10 @@ void sw_particles_free(sw_particles *p);
 int sw_particles_add_gravity(sw_particles *p, double gx, double gy);
 int sw_particles_add_drag(sw_particles *p, double k);
 int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
+/* Any force given whole (fo->kind and its parameters; not springs, which
+ * sw_particles_add_springs adds): 0, or SW_EINVAL when the table is full
+ * or the kind is not one. */
+int sw_particles_add_force(sw_particles *p, const sw_force *fo);
 /* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
 sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
 /* Compile the forces for the derivative once the system is built (the
@@ -80,8 +86,6 @@ int sw_particles_spring_count(const sw_particles *p);
 void sw_particles_spring(const sw_particles *p, int j, sw_spring *out);
 /* The central attraction: 1 with its centre (*cx, *cy) and μ, or 0 when none. */
 int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *mu);
-/* The summed linear drag coefficient k (f = -k·v on every particle); 0 when none. */
-double sw_particles_drag(const sw_particles *p);
 /* Apply wall contact to y after a step; returns 1 when anything changed. */
 int sw_particles_contact(sw_particles *p, double *y);
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/forces.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_solve.h"
 #include "stepwise/base.h"
@@ -91,6 +92,19 @@ int sw_particles_add_drag(sw_particles *p, double k)
     return SW_OK;
 }
 
+int sw_particles_add_force(sw_particles *p, const sw_force *given)
+{
+    if (!swp_force_type_of(given->kind) || given->kind == SW_FORCE_SPRINGS)
+        return SW_EINVAL;
+    sw_force *fo = add_force(p, given->kind);
+    if (!fo)
+        return SW_EINVAL;
+    *fo = *given;
+    fo->springs = NULL;
+    fo->nsprings = 0;
+    return SW_OK;
+}
+
 int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu)
 {
     sw_force *fo = add_force(p, SW_FORCE_CENTRAL);
@@ -107,8 +121,7 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
     if (nsprings < 1)
         return NULL;
     sw_spring *s = calloc((size_t)nsprings, sizeof *s);
-    if (!s || sw_particles_solver_springs(p, p->nsprings_total + nsprings) != SW_OK ||
-        swp_model_springs(p, p->nsprings_total + nsprings) != SW_OK) {
+    if (!s || swp_model_springs(p, p->nsprings_total + nsprings) != SW_OK) {
         free(s);
         return NULL;
     }
@@ -169,27 +182,9 @@ double sw_particles_energy(const sw_particles *p, const double *y)
     for (int i = 0; i < p->n; i++)
         e += 0.5 * p->mass[i] * (v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1]);
     for (int k = 0; k < p->nforces; k++) {
-        const sw_force *fo = &p->forces[k];
-        switch (fo->kind) {
-        case SW_FORCE_GRAVITY:
-            for (int i = 0; i < p->n; i++)
-                e -= p->mass[i] * (fo->gx * x[2 * i] + fo->gy * x[2 * i + 1]);
-            break;
-        case SW_FORCE_CENTRAL:
-            for (int i = 0; i < p->n; i++)
-                e -= fo->mu * p->mass[i] / hypot(x[2 * i] - fo->cx, x[2 * i + 1] - fo->cy);
-            break;
-        case SW_FORCE_SPRINGS:
-            for (int j = 0; j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
-                double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
-                double stretch = hypot(x[2 * sp->a] - bx, x[2 * sp->a + 1] - by) - sp->rest;
-                e += 0.5 * sp->k * stretch * stretch;
-            }
-            break;
-        case SW_FORCE_DRAG:
-            break;
-        }
+        const swp_force_type *type = swp_force_type_of(p->forces[k].kind);
+        if (type->potential)
+            type->potential(p, &p->forces[k], x, &e);
     }
     return e;
 }

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "engine/clones.h"
+#include "engine/forces.h"
 #include "stepwise/base.h"
 
 /* A particle's (x, y) as one value, so a pair of components moves and
@@ -232,15 +233,30 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
             m->degree = 0;
     for (int f = 0; f < p->nforces; f++) {
         const sw_force *fo = &p->forces[f];
-        if (fo->kind == SW_FORCE_GRAVITY && !m->gravity && !m->drag) {
-            m->gravity = 1;
-            m->gx = fo->gx;
-            m->gy = fo->gy;
-        } else if (fo->kind == SW_FORCE_DRAG && !m->drag) {
-            m->drag = 1;
-            m->kdrag = fo->k;
-        } else if (fo->kind != SW_FORCE_SPRINGS) {
+        switch (fo->kind) { /* every kind: -Wswitch names this place for a new one */
+        case SW_FORCE_SPRINGS: /* compiled above */
+            break;
+        case SW_FORCE_GRAVITY:
+            if (!m->gravity && !m->drag) { /* the first, before any drag: fused */
+                m->gravity = 1;
+                m->gx = fo->gx;
+                m->gy = fo->gy;
+                break;
+            }
             m->extra[m->nextra++] = f;
+            break;
+        case SW_FORCE_DRAG:
+            if (!m->drag) { /* the first: fused */
+                m->drag = 1;
+                m->kdrag = fo->k;
+                break;
+            }
+            m->extra[m->nextra++] = f;
+            break;
+        case SW_FORCE_CENTRAL:
+        case SW_FORCE_MUTUAL:
+            m->extra[m->nextra++] = f; /* a pass of its own: its descriptor's add */
+            break;
         }
     }
     find_regular(p->n, m);
@@ -359,27 +375,6 @@ SW_INLINE void spring_forces(const struct sw_particles_model *m, const double *x
     }
 }
 
-/* One per-particle force added into f, as its own pass. */
-static void extra_pass(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
-{
-    for (int i = 0; i < p->n; i++) {
-        double m = p->mass[i];
-        if (fo->kind == SW_FORCE_GRAVITY) {
-            f[2 * i] += m * fo->gx;
-            f[2 * i + 1] += m * fo->gy;
-        } else if (fo->kind == SW_FORCE_DRAG) {
-            f[2 * i] -= fo->k * v[2 * i];
-            f[2 * i + 1] -= fo->k * v[2 * i + 1];
-        } else { /* central: -μ m d/|d|³ */
-            double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy;
-            double r2 = dx * dx + dy * dy;
-            double s = -fo->mu * m / (r2 * sqrt(r2));
-            f[2 * i] += s * dx;
-            f[2 * i + 1] += s * dy;
-        }
-    }
-}
-
 /* Where the last pass finds the forces so far. */
 enum { FROM_NONE, FROM_SPRINGS, FROM_F };
 
@@ -486,15 +481,17 @@ SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
     int springs = m->npair + m->nanchor > 0, from = springs ? FROM_SPRINGS : FROM_NONE;
     if (springs)
         spring_forces(m, x, v);
-    if (m->nextra > 0) { /* rare (central fields): the forces so far into f, then a pass per extra */
+    if (m->nextra > 0) { /* central fields, mutual gravity: the forces so far into f, then a pass each */
         for (int i = 0; i < p->n; i++) {
             v2d fi = { 0.0, 0.0 };
             if (springs)
                 fi = spring_sum(m->first, m->spring, m->sign, m->force, i);
             store2(f + 2 * i, fi);
         }
-        for (int e = 0; e < m->nextra; e++)
-            extra_pass(p, &p->forces[m->extra[e]], x, v, f);
+        for (int e = 0; e < m->nextra; e++) {
+            const sw_force *fo = &p->forces[m->extra[e]];
+            swp_force_type_of(fo->kind)->add(p, fo, x, v, f);
+        }
         from = FROM_F;
     }
     switch (from | m->gravity << 2 | m->drag << 3) {

@@ -1,5 +1,5 @@
 /* Read-only questions about a particle system's forces: its springs
- * (numbered across spring forces), its central body, its summed drag. The
+ * (numbered across spring forces) and its central body. The
  * implicit solve, the truth and the views ask them; this file calls
  * nothing else of the engine, so particles.c may call the solve. */
 #include "stepwise/particles.h"
@@ -34,13 +34,4 @@ int sw_particles_central(const sw_particles *p, double *cx, double *cy, double *
             return 1;
         }
     return 0;
-}
-
-double sw_particles_drag(const sw_particles *p)
-{
-    double k = 0;
-    for (int i = 0; i < p->nforces; i++)
-        if (p->forces[i].kind == SW_FORCE_DRAG)
-            k += p->forces[i].k;
-    return k;
 }

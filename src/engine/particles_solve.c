@@ -1,6 +1,8 @@
 /* Implicit solves on particle systems. The force Jacobians are analytic and
- * complete: springs (stiffness and the damping term, including how the
- * damping force turns with the spring), linear drag, central attraction.
+ * complete, each from its force kind's descriptor (engine/forces.h):
+ * springs (stiffness and the damping term, including how the damping
+ * force turns with the spring), linear drag, central attraction, mutual
+ * gravity.
  * (I - c·J) z = r reduces to the velocity system
  *     (M - c·Fv - c²·Fx) z_v = M·r_v + c·Fx·r_x,   z_x = r_x + c·z_v,
  * which is banded when particles are numbered along their springs (a chain
@@ -17,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/forces.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
@@ -25,8 +28,9 @@
 
 struct sw_particles_solver {
     double *diag;          /* 8 per particle: Fx (2x2) and Fv (2x2) of per-particle forces */
-    double *sblock;        /* 8 per spring: ∂f_a/∂d and ∂f_a/∂(dv), d = x_a - x_b */
-    int nsprings;          /* springs the blocks have room for */
+    int *pa, *pb;          /* the pairs the forces join (engine/forces.h's swp_blocks) */
+    double *pblock;        /* 8 per pair: ∂g/∂d and ∂g/∂(dv), d = x_a - x_b */
+    long npairs, cap;      /* pairs written by the last assembly; room for */
     double *rhs;           /* 2n: the velocity system's right-hand side */
     double *band;          /* the velocity system's band, or NULL before prepare */
     int *piv;
@@ -43,13 +47,40 @@ int sw_particles_solver_init(sw_particles *p)
     return p->solver->diag && p->solver->rhs ? SW_OK : SW_ENOMEM;
 }
 
-int sw_particles_solver_springs(sw_particles *p, int nsprings)
+/* The pairs the forces join, and the widest distance among them. */
+static long count_pairs(const sw_particles *p, int *far)
 {
-    double *blocks = realloc(p->solver->sblock, (size_t)nsprings * 8 * sizeof *blocks);
-    if (!blocks)
+    long total = 0;
+    *far = 0;
+    for (int k = 0; k < p->nforces; k++) {
+        int reach;
+        total += swp_force_type_of(p->forces[k].kind)->pairs(p, &p->forces[k], &reach);
+        *far = reach > *far ? reach : *far;
+    }
+    return total;
+}
+
+/* Room for every pair's blocks: allocates only when the forces grew since
+ * the last call (sw_particles_solver_prepare makes the first, before any
+ * step). 0 or SW_ENOMEM. */
+static int reserve_pairs(sw_particles *p)
+{
+    struct sw_particles_solver *s = p->solver;
+    int far;
+    long need = count_pairs(p, &far);
+    if (need <= s->cap)
+        return SW_OK;
+    int *pa = realloc(s->pa, (size_t)need * sizeof *pa);
+    if (pa)
+        s->pa = pa;
+    int *pb = pa ? realloc(s->pb, (size_t)need * sizeof *pb) : NULL;
+    if (pb)
+        s->pb = pb;
+    double *blk = pb ? realloc(s->pblock, (size_t)need * 8 * sizeof *blk) : NULL;
+    if (!blk)
         return SW_ENOMEM;
-    p->solver->sblock = blocks;
-    p->solver->nsprings = nsprings;
+    s->pblock = blk;
+    s->cap = need;
     return SW_OK;
 }
 
@@ -57,7 +88,9 @@ void sw_particles_solver_free(sw_particles *p)
 {
     if (p->solver) {
         free(p->solver->diag);
-        free(p->solver->sblock);
+        free(p->solver->pa);
+        free(p->solver->pb);
+        free(p->solver->pblock);
         free(p->solver->rhs);
         free(p->solver->band);
         free(p->solver->piv);
@@ -70,17 +103,16 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
 {
     sw_particles *p = ctx;
     struct sw_particles_solver *s = p->solver;
-    int far = 0, count = sw_particles_spring_count(p);
-    for (int j = 0; j < count; j++) {
-        sw_spring sp;
-        sw_particles_spring(p, j, &sp);
-        if (sp.b >= 0 && abs(sp.a - sp.b) > far)
-            far = abs(sp.a - sp.b);
+    int far;
+    count_pairs(p, &far);
+    if (reserve_pairs(p) != SW_OK) {
+        snprintf(err, errlen, "out of memory for the implicit solve's force blocks");
+        return SW_ENOMEM;
     }
     int kb = 2 * far + 1, n2 = 2 * p->n;
     size_t len = sw_band_doubles(n2, kb, kb);
     if (len > BAND_MAX) {
-        snprintf(err, errlen, "the implicit solve needs the springs to join particles with nearby "
+        snprintf(err, errlen, "the implicit solve needs the forces to join particles with nearby "
                  "numbers; here they span %d particles, a band of %zu MiB", far,
                  len * sizeof(double) >> 20);
         return SW_EINVAL;
@@ -102,70 +134,19 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
 
 /* 2x2 blocks are row-major (xx, xy, yx, yy). */
 
-/* ∂f_a/∂d and ∂f_a/∂(dv) of one damped spring, d = x_a - x_b, r = |d|,
- * u = d/r, P = I - u uᵀ, dv = v_a - v_b:
- *   Kx = -k u uᵀ - k (1 - rest/r) P - (c/r) [u (P dv)ᵀ + (dv·u) P],
- *   Kv = -c u uᵀ.
- * At r = 0 the force is defined as zero (its direction is undefined); the
- * blocks are then those of a zero-length spring, -k I and 0. */
-static void spring_blocks(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
-{
-    double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
-    double dx = x[2 * sp->a] - bx, dy = x[2 * sp->a + 1] - by;
-    double r2 = dx * dx + dy * dy, r = r2 >= 1e-290 ? sqrt(r2) : hypot(dx, dy);
-    if (!(r > 0)) {
-        kx[0] = kx[3] = -sp->k;
-        kx[1] = kx[2] = 0;
-        kv[0] = kv[1] = kv[2] = kv[3] = 0;
-        return;
-    }
-    double u[2] = { dx / r, dy / r };
-    double dv[2] = { v[2 * sp->a] - (sp->b >= 0 ? v[2 * sp->b] : 0.0),
-                     v[2 * sp->a + 1] - (sp->b >= 0 ? v[2 * sp->b + 1] : 0.0) };
-    double along = dv[0] * u[0] + dv[1] * u[1];
-    double pdv[2] = { dv[0] - along * u[0], dv[1] - along * u[1] };
-    double s = 1.0 - sp->rest / r, cr = sp->c / r;
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++) {
-            double uu = u[i] * u[j], proj = (i == j) - uu;
-            kx[2 * i + j] = -sp->k * (uu + s * proj) - cr * (u[i] * pdv[j] + along * proj);
-            kv[2 * i + j] = -sp->c * uu;
-        }
-}
-
-/* ∂f/∂x of central attraction on particle i: -μm (I/r³ - 3 d dᵀ/r⁵). */
-static void central_block(double mu_m, double dx, double dy, double kx[4])
-{
-    double r2 = dx * dx + dy * dy, r = sqrt(r2), r3 = r2 * r, r5 = r3 * r2;
-    if (!(r > 0)) {
-        kx[0] = kx[1] = kx[2] = kx[3] = 0;
-        return;
-    }
-    kx[0] = -mu_m * (1 / r3 - 3 * dx * dx / r5);
-    kx[1] = kx[2] = -mu_m * (-3 * dx * dy / r5);
-    kx[3] = -mu_m * (1 / r3 - 3 * dy * dy / r5);
-}
-
-/* Fill the per-particle and per-spring blocks at state y. */
-static void assemble(sw_particles *p, const double *y)
+/* Fill the per-particle and pair blocks at state y, force by force.
+ * 0, or SW_ENOMEM when the forces grew and there is no room for them. */
+static int assemble(sw_particles *p, const double *y)
 {
     struct sw_particles_solver *s = p->solver;
-    const double *x = y, *v = y + 2 * p->n;
-    double drag = sw_particles_drag(p), cx, cy, mu;
-    int central = sw_particles_central(p, &cx, &cy, &mu);
-    for (int i = 0; i < p->n; i++) {
-        double *d = s->diag + 8 * i;
-        memset(d, 0, 8 * sizeof *d);
-        if (central)
-            central_block(mu * p->mass[i], x[2 * i] - cx, x[2 * i + 1] - cy, d);
-        d[4] = d[7] = -drag;
-    }
-    int count = sw_particles_spring_count(p);
-    for (int j = 0; j < count; j++) {
-        sw_spring sp;
-        sw_particles_spring(p, j, &sp);
-        spring_blocks(&sp, x, v, s->sblock + 8 * j, s->sblock + 8 * j + 4);
-    }
+    if (reserve_pairs(p) != SW_OK)
+        return SW_ENOMEM;
+    memset(s->diag, 0, (size_t)8 * p->n * sizeof *s->diag);
+    swp_blocks out = { s->diag, s->pa, s->pb, s->pblock, 0 };
+    for (int k = 0; k < p->nforces; k++)
+        swp_force_type_of(p->forces[k].kind)->blocks(p, &p->forces[k], y, y + 2 * p->n, &out);
+    s->npairs = out.n;
+    return SW_OK;
 }
 
 /* Scatter the blocks as a·Fx + b·Fv into the sink: one call per 2x2 block
@@ -179,13 +160,10 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
         sink(ctx, i, i, a, s->diag + 8 * i);
         sink(ctx, i, i, b, s->diag + 8 * i + 4);
     }
-    int count = sw_particles_spring_count(p);
-    for (int j = 0; j < count; j++) {
-        sw_spring sp;
-        sw_particles_spring(p, j, &sp);
-        const double *kx = s->sblock + 8 * j, *kv = kx + 4;
+    for (long j = 0; j < s->npairs; j++) {
+        const double *kx = s->pblock + 8 * j, *kv = kx + 4;
         /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b). */
-        int ends[2] = { sp.a, sp.b };
+        int ends[2] = { s->pa[j], s->pb[j] };
         for (int r = 0; r < 2; r++)
             for (int c = 0; c < 2; c++) {
                 if (ends[r] < 0 || ends[c] < 0)
@@ -227,7 +205,8 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
     if (!s->band)
         return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
-    assemble(p, y);
+    if (assemble(p, y) != SW_OK)
+        return SW_ENOMEM;
     /* rhs = M r_v + c Fx r_x */
     apply_ctx ac = { r, s->rhs };
     for (int i = 0; i < p->n; i++) {
@@ -266,23 +245,37 @@ static void dense_sink(void *ctx, int pi, int pj, double s, const double *blk)
             dc->m[(size_t)(2 * pi + r) * dc->n2 + 2 * pj + c] += s * blk[2 * r + c];
 }
 
-void sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double *fv)
+int sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double *fv)
 {
     int n2 = 2 * p->n;
-    assemble(p, y);
+    if (assemble(p, y) != SW_OK)
+        return SW_ENOMEM;
     memset(fx, 0, (size_t)n2 * n2 * sizeof *fx);
     memset(fv, 0, (size_t)n2 * n2 * sizeof *fv);
     dense_ctx cx = { fx, n2 }, cv = { fv, n2 };
     scatter(p, 1.0, 0.0, dense_sink, &cx);
     scatter(p, 0.0, 1.0, dense_sink, &cv);
+    return SW_OK;
 }
 
-void sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,
-                                 double *out, int assemble_first)
+int sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,
+                                double *out, int assemble_first)
 {
-    if (assemble_first)
-        assemble(p, y);
+    if (assemble_first && assemble(p, y) != SW_OK)
+        return SW_ENOMEM;
     memset(out, 0, (size_t)2 * p->n * sizeof *out);
     apply_ctx ac = { w, out };
     scatter(p, a, b, apply_sink, &ac);
+    return SW_OK;
+}
+
+const double *sw_particles_own_blocks(sw_particles *p, const double *y)
+{
+    return assemble(p, y) == SW_OK ? p->solver->diag : NULL;
+}
+
+int sw_particles_coupled(const sw_particles *p)
+{
+    int far;
+    return count_pairs(p, &far) > 0;
 }

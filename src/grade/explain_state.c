@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/forces.h"
 #include "grade/assignment.h"
 #include "stepwise/stepwise.h"
 
@@ -114,16 +115,29 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
 /* ---- the energy formula --------------------------------------------------- */
 
 /* The terms of docs/scenes.md's energy, in the order messages name them. */
-enum { KINETIC, GRAVITY, SPRING, CENTRAL, NTERMS };
+enum { KINETIC, GRAVITY, SPRING, CENTRAL, MUTUAL, NTERMS };
 
 static const char *const term_name[NTERMS] = { "kinetic energy", "gravity potential", "spring potential",
-                                               "central potential" };
+                                               "central potential", "mutual gravity potential" };
 static const char *const term_formula[NTERMS] = { "½ m|v|²", "m g y", "½ k (|d| - rest)²",
-                                                  "- μ m/|x|" };
+                                                  "- μ m/|x|", "- G m_i m_j/√(r² + ε²)" };
 /* Coefficients a slip gives: a term kept, left out, with its sign flipped,
  * or (a ½ forgotten) doubled. */
 static const double slips[] = { 1, 0, -1, 2 };
-static const int has_half[NTERMS] = { 1, 0, 1, 0 };
+static const int has_half[NTERMS] = { 1, 0, 1, 0, 0 };
+
+/* The term a force kind's potential is (-1: it stores none). */
+static int term_of(sw_force_kind kind)
+{
+    switch (kind) { /* every kind: -Wswitch names this place for a new one */
+    case SW_FORCE_GRAVITY: return GRAVITY;
+    case SW_FORCE_SPRINGS: return SPRING;
+    case SW_FORCE_CENTRAL: return CENTRAL;
+    case SW_FORCE_MUTUAL: return MUTUAL;
+    case SW_FORCE_DRAG: return -1;
+    }
+    return -1;
+}
 
 /* Each term of sw_particles_energy at y into e. */
 static void energy_terms(const sw_particles *p, const double *y, double e[NTERMS])
@@ -133,28 +147,11 @@ static void energy_terms(const sw_particles *p, const double *y, double e[NTERMS
     memset(e, 0, NTERMS * sizeof *e);
     for (int i = 0; i < p->n; i++)
         e[KINETIC] += 0.5 * p->mass[i] * (v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1]);
-    for (int k = 0; k < p->nforces; k++) {
+    for (int k = 0; k < p->nforces; k++) { /* each term as the engine sums it */
         const sw_force *fo = &p->forces[k];
-        switch (fo->kind) {
-        case SW_FORCE_GRAVITY:
-            for (int i = 0; i < p->n; i++)
-                e[GRAVITY] -= p->mass[i] * (fo->gx * x[2 * i] + fo->gy * x[2 * i + 1]);
-            break;
-        case SW_FORCE_CENTRAL:
-            for (int i = 0; i < p->n; i++)
-                e[CENTRAL] -= fo->mu * p->mass[i] / hypot(x[2 * i] - fo->cx, x[2 * i + 1] - fo->cy);
-            break;
-        case SW_FORCE_SPRINGS:
-            for (int j = 0; j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
-                double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
-                double stretch = hypot(x[2 * sp->a] - bx, x[2 * sp->a + 1] - by) - sp->rest;
-                e[SPRING] += 0.5 * sp->k * stretch * stretch;
-            }
-            break;
-        case SW_FORCE_DRAG:
-            break;
-        }
+        const swp_force_type *type = swp_force_type_of(fo->kind);
+        if (type->potential && term_of(fo->kind) >= 0)
+            type->potential(p, fo, x, &e[term_of(fo->kind)]);
     }
 }
 
@@ -226,7 +223,7 @@ int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
     char err[SW_ERRLEN];
     if (sw_system_build(&sys, d->scene, d->p, err, sizeof err) != SW_OK)
         return 0;
-    int found = 0, present[NTERMS] = { 1, 0, 0, 0 }, first_bad = -1;
+    int found = 0, present[NTERMS] = { 1 }, first_bad = -1;
     double *terms = malloc((size_t)tr->n * NTERMS * sizeof *terms);
     double *y = malloc((size_t)sys.ode->dim * sizeof *y);
     if (sys.kind != SW_SYS_PARTICLES || !terms || !y)

@@ -1,7 +1,7 @@
 /* Spectra of the linearisation ∂f/∂y, split into modes: a complex pair, or
  * for a particle system a real eigenvalue with its partner (the other root
  * of the mode's own equation). Flows point by point; particle systems up
- * to DENSE_PARTICLES in full (dense QR), without springs particle by
+ * to DENSE_PARTICLES in full (dense QR), uncoupled ones particle by
  * particle, larger coupled ones by their stiffest mode. Modes that grow
  * physically, and modes an exact symmetry keeps at rest, are left out.
  * Invariant: with a workspace, nothing allocates once it is large enough. */
@@ -195,7 +195,8 @@ static int dense_particles(sw_truth_work *w, sw_system *sys, const double *y, sw
     if (!A)
         return -1;
     double *B = A + nn, *scratch = B + nn, *dydt = scratch + 5 * nn + 5 * (size_t)n2, *f = dydt + n2;
-    sw_particles_jacobian(p, y, A, B);
+    if (sw_particles_jacobian(p, y, A, B) != 0)
+        return -1;
     double big = 0;
     for (size_t i = 0; i < nn; i++) {
         A[i] *= p->inv_mass[(i / (size_t)n2) / 2]; /* A = M⁻¹Fx, B = M⁻¹Fv */
@@ -233,24 +234,24 @@ static int dense_particles(sw_truth_work *w, sw_system *sys, const double *y, sw
     return second_order_modes(m, A, B, scratch, sp);
 }
 
-/* Particles without springs move independently: each one's 2x2 blocks of
- * ∂f/∂x (central attraction) and ∂f/∂v (drag). With uniform forces every
- * particle has the same modes, so the first tells all. */
+/* Particles no force joins move independently: each one's own 2x2 blocks
+ * of ∂f/∂x and ∂f/∂v, from the engine. With the same fields on every
+ * particle, all have the same modes unless a field depends on position
+ * (central attraction): then each particle is asked. */
 static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_spectrum *sp)
 {
     sw_particles *p = &sys->particles;
-    int n = p->n;
-    double drag = sw_particles_drag(p), cx, cy, mu, scratch[5 * 2 * 2 + 5 * 2];
+    double scratch[5 * 2 * 2 + 5 * 2], cx, cy, mu;
     int central = sw_particles_central(p, &cx, &cy, &mu);
+    const double *own = sw_particles_own_blocks(p, y);
     (void)w;
-    for (int i = 0; i < n; i++) {
-        double dx = y[2 * i] - cx, dy = y[2 * i + 1] - cy, r2 = dx * dx + dy * dy, r = sqrt(r2);
-        double A[4] = { 0, 0, 0, 0 }, B[4] = { -drag / p->mass[i], 0, 0, -drag / p->mass[i] };
-        if (central && r > 0) { /* -μ (I/r³ - 3 d dᵀ/r⁵), per unit mass */
-            double r3 = r2 * r, r5 = r3 * r2;
-            A[0] = -mu * (1 / r3 - 3 * dx * dx / r5);
-            A[1] = A[2] = 3 * mu * dx * dy / r5;
-            A[3] = -mu * (1 / r3 - 3 * dy * dy / r5);
+    if (!own)
+        return -1;
+    for (int i = 0; i < p->n; i++) {
+        double A[4], B[4];
+        for (int k = 0; k < 4; k++) { /* per unit mass */
+            A[k] = own[8 * i + k] * p->inv_mass[i];
+            B[k] = own[8 * i + 4 + k] * p->inv_mass[i];
         }
         int rc = second_order_modes(2, A, B, scratch, sp);
         if (rc != 0 || !central || sp->n == SW_TRUTH_MODES)
@@ -278,7 +279,8 @@ static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y
         v[i] = ((i / 2) % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * sin(1.3 * i));
     double lam = 0;
     for (int it = 0; it < 100; it++) {
-        sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, it == 0);
+        if (sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, it == 0) != 0)
+            return -1;
         double num = 0, den = 0;
         for (int i = 0; i < n2; i++) {
             w[i] *= p->inv_mass[i / 2];
@@ -295,7 +297,7 @@ static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y
         lam = next;
     }
     /* lam: the eigenvalue of M⁻¹Fx largest in size (stiffest when < 0) */
-    sw_particles_jacobian_apply(p, y, 0.0, 1.0, v, e, 0);
+    (void)sw_particles_jacobian_apply(p, y, 0.0, 1.0, v, e, 0); /* (the blocks are there) */
     double num = 0, den = 0;
     for (int i = 0; i < n2; i++) {
         num += v[i] * e[i] * p->inv_mass[i / 2];
@@ -321,7 +323,7 @@ int sw_truth_spectrum_with(sw_truth_work *w, sw_system *sys, double t, const dou
         rc = flow_spectrum(w, sys, t, y, out);
     } else {
         out->order = 2;
-        if (sw_particles_spring_count(&sys->particles) == 0)
+        if (!sw_particles_coupled(&sys->particles))
             rc = free_particles(w, sys, y, out);
         else if (sys->n <= DENSE_PARTICLES)
             rc = dense_particles(w, sys, y, out);

@@ -1,0 +1,89 @@
+/* The force kinds that act on each particle alone: uniform gravity f = m·g,
+ * linear drag f = -k·v, and central attraction f = -μ·m·d/|d|³ toward a
+ * fixed point (d = x - c). */
+#include "engine/forces.h"
+
+#include <math.h>
+
+static long no_pairs(const sw_particles *p, const sw_force *fo, int *reach)
+{
+    (void)p, (void)fo;
+    *reach = 0;
+    return 0;
+}
+
+static void gravity_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    (void)x, (void)v;
+    for (int i = 0; i < p->n; i++) {
+        f[2 * i] += p->mass[i] * fo->gx;
+        f[2 * i + 1] += p->mass[i] * fo->gy;
+    }
+}
+
+static void gravity_potential(const sw_particles *p, const sw_force *fo, const double *x, double *e)
+{
+    for (int i = 0; i < p->n; i++)
+        *e -= p->mass[i] * (fo->gx * x[2 * i] + fo->gy * x[2 * i + 1]);
+}
+
+static void gravity_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                           swp_blocks *out)
+{
+    (void)p, (void)fo, (void)x, (void)v, (void)out; /* constant: no derivative */
+}
+
+const swp_force_type swp_gravity = { "gravity", gravity_add, gravity_potential, no_pairs, gravity_blocks };
+
+static void drag_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    (void)x;
+    for (int i = 0; i < p->n; i++) {
+        f[2 * i] -= fo->k * v[2 * i];
+        f[2 * i + 1] -= fo->k * v[2 * i + 1];
+    }
+}
+
+static void drag_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                        swp_blocks *out)
+{
+    (void)x, (void)v;
+    for (int i = 0; i < p->n; i++) {
+        out->diag[8 * i + 4] -= fo->k;
+        out->diag[8 * i + 7] -= fo->k;
+    }
+}
+
+const swp_force_type swp_drag = { "drag", drag_add, NULL, no_pairs, drag_blocks };
+
+static void central_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    (void)v;
+    for (int i = 0; i < p->n; i++) {
+        double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy;
+        double r2 = dx * dx + dy * dy;
+        double s = -fo->mu * p->mass[i] / (r2 * sqrt(r2));
+        f[2 * i] += s * dx;
+        f[2 * i + 1] += s * dy;
+    }
+}
+
+static void central_potential(const sw_particles *p, const sw_force *fo, const double *x, double *e)
+{
+    for (int i = 0; i < p->n; i++)
+        *e -= fo->mu * p->mass[i] / hypot(x[2 * i] - fo->cx, x[2 * i + 1] - fo->cy);
+}
+
+static void central_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                           swp_blocks *out)
+{
+    (void)v;
+    for (int i = 0; i < p->n; i++) {
+        double blk[4], *d = out->diag + 8 * i;
+        swp_inverse_square_block(fo->mu * p->mass[i], x[2 * i] - fo->cx, x[2 * i + 1] - fo->cy, 0.0, blk);
+        for (int k = 0; k < 4; k++)
+            d[k] += blk[k];
+    }
+}
+
+const swp_force_type swp_central = { "central", central_add, central_potential, no_pairs, central_blocks };

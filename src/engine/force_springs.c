@@ -1,0 +1,110 @@
+/* Damped springs between particles or to fixed anchors:
+ *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  f_b = -f_a,  d = x_a - x_b,
+ * no force where |d| = 0 (the direction is undefined). The derivative runs
+ * them through particles_deriv.c's compiled loops; `add` is the lecture's
+ * loop, the same numbers. */
+#include "engine/forces.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* d = x_a - x_b (or the anchor) and dv = v_a - v_b of spring sp. */
+static void differences(const sw_spring *sp, const double *x, const double *v, double d[2], double dv[2])
+{
+    double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
+    d[0] = x[2 * sp->a] - bx;
+    d[1] = x[2 * sp->a + 1] - by;
+    dv[0] = v[2 * sp->a] - (sp->b >= 0 ? v[2 * sp->b] : 0.0);
+    dv[1] = v[2 * sp->a + 1] - (sp->b >= 0 ? v[2 * sp->b + 1] : 0.0);
+}
+
+/* |d|, with hypot where the squares lose their digits. */
+static double length(const double d[2])
+{
+    double r2 = d[0] * d[0] + d[1] * d[1];
+    return r2 >= 1e-290 ? sqrt(r2) : hypot(d[0], d[1]);
+}
+
+static void springs_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    (void)p;
+    for (int j = 0; j < fo->nsprings; j++) {
+        const sw_spring *sp = &fo->springs[j];
+        double d[2], dv[2];
+        differences(sp, x, v, d, dv);
+        double l = length(d);
+        if (!(l > 0))
+            continue;
+        double ux = d[0] / l, uy = d[1] / l;
+        double mag = sp->k * (l - sp->rest) + sp->c * (dv[0] * ux + dv[1] * uy);
+        f[2 * sp->a] -= mag * ux;
+        f[2 * sp->a + 1] -= mag * uy;
+        if (sp->b >= 0) {
+            f[2 * sp->b] += mag * ux;
+            f[2 * sp->b + 1] += mag * uy;
+        }
+    }
+}
+
+static void springs_potential(const sw_particles *p, const sw_force *fo, const double *x, double *e)
+{
+    (void)p;
+    for (int j = 0; j < fo->nsprings; j++) {
+        const sw_spring *sp = &fo->springs[j];
+        double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
+        double stretch = hypot(x[2 * sp->a] - bx, x[2 * sp->a + 1] - by) - sp->rest;
+        *e += 0.5 * sp->k * stretch * stretch;
+    }
+}
+
+static long springs_pairs(const sw_particles *p, const sw_force *fo, int *reach)
+{
+    (void)p;
+    *reach = 0;
+    for (int j = 0; j < fo->nsprings; j++)
+        if (fo->springs[j].b >= 0 && abs(fo->springs[j].a - fo->springs[j].b) > *reach)
+            *reach = abs(fo->springs[j].a - fo->springs[j].b);
+    return fo->nsprings;
+}
+
+/* ∂g/∂d and ∂g/∂(dv) of one damped spring, r = |d|, u = d/r, P = I - u uᵀ:
+ *   Kx = -k u uᵀ - k (1 - rest/r) P - (c/r) [u (P dv)ᵀ + (dv·u) P],
+ *   Kv = -c u uᵀ.
+ * At r = 0 the force is defined as zero (its direction is undefined); the
+ * blocks are then those of a zero-length spring, -k I and 0. */
+static void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
+{
+    double d[2], dv[2];
+    differences(sp, x, v, d, dv);
+    double r = length(d);
+    if (!(r > 0)) {
+        kx[0] = kx[3] = -sp->k;
+        kx[1] = kx[2] = 0;
+        kv[0] = kv[1] = kv[2] = kv[3] = 0;
+        return;
+    }
+    double u[2] = { d[0] / r, d[1] / r };
+    double along = dv[0] * u[0] + dv[1] * u[1];
+    double pdv[2] = { dv[0] - along * u[0], dv[1] - along * u[1] };
+    double s = 1.0 - sp->rest / r, cr = sp->c / r;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            double uu = u[i] * u[j], proj = (i == j) - uu;
+            kx[2 * i + j] = -sp->k * (uu + s * proj) - cr * (u[i] * pdv[j] + along * proj);
+            kv[2 * i + j] = -sp->c * uu;
+        }
+}
+
+static void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                           swp_blocks *out)
+{
+    (void)p;
+    for (int j = 0; j < fo->nsprings; j++, out->n++) {
+        const sw_spring *sp = &fo->springs[j];
+        out->a[out->n] = sp->a;
+        out->b[out->n] = sp->b;
+        spring_block(sp, x, v, out->pair + 8 * out->n, out->pair + 8 * out->n + 4);
+    }
+}
+
+const swp_force_type swp_springs = { "springs", springs_add, springs_potential, springs_pairs, springs_blocks };

@@ -1,0 +1,51 @@
+/* Private to the engine and the layers above it: what the engine knows of
+ * each force kind, one descriptor per kind in its own file (force_*.c) and
+ * one table (forces.c). The derivative, the energy, the implicit solve and
+ * the stability theory ask the descriptor; none of them re-derives a force.
+ * Adding a kind: its descriptor file, its line in forces.c, its enum value
+ * (and parameters) in include/stepwise/particles.h — docs/architecture.md. */
+#ifndef SW_ENGINE_FORCES_H
+#define SW_ENGINE_FORCES_H
+
+#include "stepwise/particles.h"
+
+/* The Jacobian of the forces as 2x2 blocks (row-major: xx, xy, yx, yy).
+ * diag: 8 per particle, ∂f_i/∂x_i then ∂f_i/∂v_i, added to. pairs: a force
+ * that joins particles a and b as f_a = g(x_a - x_b, v_a - v_b), f_b = -g
+ * (b < 0: a fixed point, no f_b) writes pair j = n++ as a[j], b[j] and 8
+ * doubles at pair + 8j: ∂g/∂d, then ∂g/∂(dv). The caller makes room for
+ * every pair the forces count (pairs below). */
+typedef struct swp_blocks {
+    double *diag;
+    int *a, *b;
+    double *pair;
+    long n;
+} swp_blocks;
+
+typedef struct swp_force_type {
+    const char *name;
+    /* f (2n) += the force on every particle at positions x, velocities v.
+     * (Springs, gravity and drag are also compiled into particles_deriv.c's
+     * fused loops, which must give these numbers: tests/check_derivative.c.) */
+    void (*add)(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f);
+    /* *e += its potential energy at x, term by term in particle or
+     * spring order; NULL: it stores none (drag). */
+    void (*potential)(const sw_particles *p, const sw_force *fo, const double *x, double *e);
+    /* The pairs it writes into swp_blocks (0: it acts on each particle
+     * alone) and, in *reach, the largest |a - b| among them. */
+    long (*pairs)(const sw_particles *p, const sw_force *fo, int *reach);
+    /* Its Jacobian at (x, v) into out. */
+    void (*blocks)(const sw_particles *p, const sw_force *fo, const double *x, const double *v, swp_blocks *out);
+} swp_force_type;
+
+extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp_mutual;
+
+/* The descriptor of a kind; NULL for a value that is not a kind. */
+const swp_force_type *swp_force_type_of(sw_force_kind kind);
+
+/* The 2x2 block -s·(I/q³ - 3 d dᵀ/q⁵), q² = dx² + dy² + soft²: the
+ * Jacobian of f = -s·d/q³ (central attraction, softened gravity); zero
+ * where q = 0. */
+void swp_inverse_square_block(double s, double dx, double dy, double soft2, double blk[4]);
+
+#endif

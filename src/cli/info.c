@@ -1,6 +1,7 @@
 /* `list` and `describe`: what the catalog holds, in plain text. */
 #include "cli/cli.h"
 
+#include "engine/forces.h"
 #include "sim/truth.h"
 
 #include <dirent.h>
@@ -149,7 +150,15 @@ int sw_cmd_describe(int argc, char **argv)
     sw_spectrum sp;
     if (sw_truth_spectrum(&sys, 0.0, sys.y, &sp) == 0 && sp.largest > 0)
         printf(" stiffest mode |L| = %g rad/s at the start;", sp.largest);
-    printf("\n\ninitial state%s:\n", full ? " (every particle, %.17g)" : "");
+    printf("\n");
+    for (int k = 0; sys.kind == SW_SYS_PARTICLES && k < sys.particles.nforces; k++) {
+        const sw_force *fo = &sys.particles.forces[k];
+        const swp_force_type *type = swp_force_type_of(fo->kind);
+        char values[128];
+        type->values(fo, values, sizeof values);
+        printf("%s %s: %s (%s)\n", k ? "      " : "forces:", type->name, type->formula, values);
+    }
+    printf("\ninitial state%s:\n", full ? " (every particle, %.17g)" : "");
     int shown = full ? sys.n : sys.n < 5 ? sys.n : 5;
     for (int i = 0; i < shown; i++) {
         if (full) {

@@ -79,7 +79,8 @@ static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded,
 }
 
 /* Refuse a report above the work budget before any run starts. */
-static int within_budget(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
+/* What the report on sc would cost, in state evaluations. */
+static double report_cost(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
 {
     sw_stability_config cfg;
     sw_stability_config_default(&cfg);
@@ -87,6 +88,12 @@ static int within_budget(const sw_scene *sc, const double *p, const sw_integrato
     for (int i = 0; i < nmethods; i++)
         if (!(methods[i]->flags & SW_ADAPTIVE))
             cost += sw_stability_cost(sc, p, methods[i], &cfg);
+    return cost;
+}
+
+static int within_budget(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
+{
+    double cost = report_cost(sc, p, methods, nmethods);
     if (cost <= SW_WORK_REPORT)
         return 1;
     sw_cli_error("stability on %s would cost about %.2g state evaluations (%d method%s), over the budget of "
@@ -257,8 +264,21 @@ int sw_cmd_stability(int argc, char **argv)
     } else {
         for (int s = 0; s < sw_scene_count(); s++) {
             const sw_scene *sc = sw_scene_at(s);
-            double p[SW_MAX_PARAMS];
+            double p[SW_MAX_PARAMS], cost;
+            char why[SW_ERRLEN];
             sw_scene_fill(sc, NULL, p);
+            /* (theory only is cheap: no probe runs) */
+            if (sw_stability_measurable(sc, p, why, sizeof why) &&
+                (cost = report_cost(sc, p, methods, nmethods)) > SW_WORK_REPORT) {
+                int has_n = sw_scene_param_index(sc, "n") >= 0;
+                printf(markdown ? "\n### %s\n\nNot measured: it would cost about %.2g state evaluations, "
+                                  "over the budget of %.0e%s%s%s.\n"
+                                : "stability on %s: not measured: it would cost about %.2g state evaluations, "
+                                  "over the budget of %.0e%s%s%s\n",
+                       sc->name, cost, SW_WORK_REPORT, has_n ? " (fewer particles measure: stepwise stability " : "",
+                       has_n ? sc->name : "", has_n ? " --set n=10)" : "");
+                continue;
+            }
             if (report(sc, p, methods, nmethods, markdown))
                 status = SW_EXIT_FAIL;
         }

@@ -4,6 +4,7 @@
 #include "engine/forces.h"
 
 #include <math.h>
+#include <stdio.h>
 
 static long no_pairs(const sw_particles *p, const sw_force *fo, int *reach)
 {
@@ -33,7 +34,13 @@ static void gravity_blocks(const sw_particles *p, const sw_force *fo, const doub
     (void)p, (void)fo, (void)x, (void)v, (void)out; /* constant: no derivative */
 }
 
-const swp_force_type swp_gravity = { "gravity", gravity_add, gravity_potential, no_pairs, gravity_blocks };
+static void gravity_values(const sw_force *fo, char *buf, size_t len)
+{
+    snprintf(buf, len, "g = (%g, %g)", fo->gx, fo->gy);
+}
+
+const swp_force_type swp_gravity = { "gravity", "f = m g", gravity_values, gravity_add, gravity_potential,
+                                     no_pairs, gravity_blocks };
 
 static void drag_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -54,7 +61,12 @@ static void drag_blocks(const sw_particles *p, const sw_force *fo, const double 
     }
 }
 
-const swp_force_type swp_drag = { "drag", drag_add, NULL, no_pairs, drag_blocks };
+static void drag_values(const sw_force *fo, char *buf, size_t len)
+{
+    snprintf(buf, len, "k = %g", fo->k);
+}
+
+const swp_force_type swp_drag = { "drag", "f = -k v", drag_values, drag_add, NULL, no_pairs, drag_blocks };
 
 static void central_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -86,4 +98,10 @@ static void central_blocks(const sw_particles *p, const sw_force *fo, const doub
     }
 }
 
-const swp_force_type swp_central = { "central", central_add, central_potential, no_pairs, central_blocks };
+static void central_values(const sw_force *fo, char *buf, size_t len)
+{
+    snprintf(buf, len, "mu = %g, centre (%g, %g)", fo->mu, fo->cx, fo->cy);
+}
+
+const swp_force_type swp_central = { "central body", "f = -mu m d/|d|^3, d = x - centre", central_values,
+                                     central_add, central_potential, no_pairs, central_blocks };

@@ -6,6 +6,7 @@
 #include "engine/forces.h"
 
 #include <math.h>
+#include <stdio.h>
 
 static void mutual_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -59,4 +60,10 @@ static void mutual_blocks(const sw_particles *p, const sw_force *fo, const doubl
         }
 }
 
-const swp_force_type swp_mutual = { "mutual gravity", mutual_add, mutual_potential, mutual_pairs, mutual_blocks };
+static void mutual_values(const sw_force *fo, char *buf, size_t len)
+{
+    snprintf(buf, len, "G = %g, soft = %g", fo->mu, fo->soft);
+}
+
+const swp_force_type swp_mutual = { "mutual gravity", "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j",
+                                    mutual_values, mutual_add, mutual_potential, mutual_pairs, mutual_blocks };

@@ -6,6 +6,7 @@
 #include "engine/forces.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* d = x_a - x_b (or the anchor) and dv = v_a - v_b of spring sp. */
@@ -107,4 +108,14 @@ static void springs_blocks(const sw_particles *p, const sw_force *fo, const doub
     }
 }
 
-const swp_force_type swp_springs = { "springs", springs_add, springs_potential, springs_pairs, springs_blocks };
+static void springs_values(const sw_force *fo, char *buf, size_t len)
+{
+    const sw_spring *sp = fo->springs;
+    snprintf(buf, len, "%d spring%s%s k = %g, c = %g, rest = %g", fo->nsprings, fo->nsprings == 1 ? "" : "s",
+             fo->nsprings == 1 ? ":" : ", the first:", sp ? sp->k : 0, sp ? sp->c : 0, sp ? sp->rest : 0);
+}
+
+const swp_force_type swp_springs = { "damped springs",
+                                     "on a: f = -[k (|d| - rest) + c (v_a - v_b).d/|d|] d/|d|, d = x_a - x_b; b gets -f",
+                                     springs_values, springs_add, springs_potential, springs_pairs,
+                                     springs_blocks };

@@ -24,6 +24,9 @@ typedef struct swp_blocks {
 
 typedef struct swp_force_type {
     const char *name;
+    const char *formula;  /* the force on particle i, as docs/scenes.md writes it */
+    /* Its parameters' values, "G = 1, soft = 0.1", into buf. */
+    void (*values)(const sw_force *fo, char *buf, size_t len);
     /* f (2n) += the force on every particle at positions x, velocities v.
      * (Springs, gravity and drag are also compiled into particles_deriv.c's
      * fused loops, which must give these numbers: tests/check_derivative.c.) */

@@ -274,6 +274,14 @@ const double *sw_particles_own_blocks(sw_particles *p, const double *y)
     return assemble(p, y) == SW_OK ? p->solver->diag : NULL;
 }
 
+double sw_particles_work(const sw_particles *p, double *solve)
+{
+    int far;
+    double dim = 4.0 * p->n, per = (double)count_pairs(p, &far) / p->n, width = (2.0 * far + 1) / 3.0;
+    *solve = dim * (width > 1 ? width * width : 1.0);
+    return dim * (per > 1 ? per : 1.0);
+}
+
 int sw_particles_coupled(const sw_particles *p)
 {
     int far;

@@ -33,6 +33,13 @@ const double *sw_particles_own_blocks(sw_particles *p, const double *y);
 /* 1 when a force joins particles (springs, mutual gravity), so they do not
  * move independently; 0 when each particle feels only fields. */
 int sw_particles_coupled(const sw_particles *p);
+/* What one derivative evaluation costs, in state components (the budgets'
+ * unit: dim when each particle feels a few forces, as with fields, a chain
+ * or a cloth; dim times the pairs per particle when a force joins many,
+ * as mutual gravity does), and in *solve what one implicit solve costs in
+ * the same unit (the band's factorisation: dim when particles join only
+ * their neighbours, growing with the square of the band's width). */
+double sw_particles_work(const sw_particles *p, double *solve);
 /* The jacobian functions return 0, or SW_ENOMEM when forces added since
  * the last call need room their blocks cannot get. */
 

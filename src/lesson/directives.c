@@ -355,24 +355,14 @@ static int d_correct(sw_lp_parser *ps, size_t pos)
 
 /* ---- lines ------------------------------------------------------------------------------------------ */
 
-static int d_ghost(sw_lp_parser *ps, size_t pos)
-{
-    if (sw_lp_once(ps, &ps->at_ghost, "@ghost") != SW_OK)
-        return ps->status;
-    return sw_lp_on_off(ps, pos, "@ghost", &sw_lp_page(ps)->ghost);
-}
+static int d_ghost(sw_lp_parser *ps, size_t pos) { return sw_lp_on_off(ps, pos, "@ghost", &sw_lp_page(ps)->ghost); }
+static void i_ghost(sw_lesson_page *pg) { pg->ghost = -1; }
 
-static int d_pause(sw_lp_parser *ps, size_t pos)
-{
-    if (sw_lp_once(ps, &ps->at_pause, "@pause") != SW_OK)
-        return ps->status;
-    return sw_lp_on_off(ps, pos, "@pause", &sw_lp_page(ps)->paused);
-}
+static int d_pause(sw_lp_parser *ps, size_t pos) { return sw_lp_on_off(ps, pos, "@pause", &sw_lp_page(ps)->paused); }
+static void i_pause(sw_lesson_page *pg) { pg->paused = -1; }
 
 static int d_reset(sw_lp_parser *ps, size_t pos)
 {
-    if (sw_lp_once(ps, &ps->at_reset, "@reset") != SW_OK)
-        return ps->status;
     size_t start, len;
     if (sw_lp_next_field(ps, &pos, &start, &len))
         return FAIL(ps, start, "@reset takes nothing after it");
@@ -383,8 +373,6 @@ static int d_reset(sw_lp_parser *ps, size_t pos)
 /* @speed X: simulated seconds per wall second on entering the page. */
 static int d_speed(sw_lp_parser *ps, size_t pos)
 {
-    if (sw_lp_once(ps, &ps->at_speed, "@speed") != SW_OK)
-        return ps->status;
     if (one_number(ps, pos, "@speed", "simulated seconds per wall second", SW_LESSON_SPEED_MIN,
                    SW_LESSON_SPEED_MAX, &sw_lp_page(ps)->speed) != SW_OK)
         return ps->status;
@@ -397,8 +385,6 @@ static int d_speed(sw_lp_parser *ps, size_t pos)
 static int d_view(sw_lp_parser *ps, size_t pos)
 {
     sw_lesson_page *pg = sw_lp_page(ps);
-    if (sw_lp_once(ps, &ps->at_view, "@view") != SW_OK)
-        return ps->status;
     size_t start, len;
     int n = 0;
     while (sw_lp_next_field(ps, &pos, &start, &len)) {
@@ -432,18 +418,37 @@ static int d_view(sw_lp_parser *ps, size_t pos)
 static int d_lock_on(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 1); }
 static int d_lock_off(sw_lp_parser *ps, size_t pos) { return d_lock(ps, pos, 0); }
 
+static void i_view(sw_lesson_page *pg) { pg->view = pg->follow = pg->lanes = pg->graph = -1; }
+static void i_compare(sw_lesson_page *pg) { pg->compare = -1; }
+
+/* The directives: one line each. once: at most one per page (the
+ * dispatcher checks); init: the page's "leave as is" values before any
+ * directive (NULL: zero). A new directive is its function(s) here, a line
+ * below, its page field in lesson.h and what the runner does with it
+ * (docs/architecture.md). */
 static const struct directive {
     const char *name;
     int (*run)(sw_lp_parser *ps, size_t pos);
+    int once;
+    void (*init)(sw_lesson_page *pg);
 } directives[] = {
-    { "scene", d_scene }, { "set", d_set }, { "integrator", d_integrator }, { "dt", d_dt },
-    { "compare", d_compare }, { "ghost", d_ghost }, { "pause", d_pause }, { "reset", d_reset },
-    { "speed", d_speed }, { "view", d_view },
-    { "lock", d_lock_on }, { "unlock", d_lock_off }, { "goal", sw_lp_goal }, { "hint", d_hint },
-    { "question", d_question }, { "answer", d_answer }, { "correct", d_correct },
+    { "scene", d_scene, 0, NULL }, { "set", d_set, 0, NULL }, { "integrator", d_integrator, 0, NULL },
+    { "dt", d_dt, 0, NULL }, { "compare", d_compare, 0, i_compare }, { "ghost", d_ghost, 1, i_ghost },
+    { "pause", d_pause, 1, i_pause }, { "reset", d_reset, 1, NULL }, { "speed", d_speed, 1, NULL },
+    { "view", d_view, 1, i_view }, { "lock", d_lock_on, 0, NULL }, { "unlock", d_lock_off, 0, NULL },
+    { "goal", sw_lp_goal, 0, NULL }, { "hint", d_hint, 0, NULL }, { "question", d_question, 0, NULL },
+    { "answer", d_answer, 0, NULL }, { "correct", d_correct, 0, NULL },
 };
 
 #define NDIRECTIVES ((int)(sizeof directives / sizeof directives[0]))
+_Static_assert(NDIRECTIVES <= SW_LP_DIRECTIVES_MAX, "parse.h's SW_LP_DIRECTIVES_MAX: room for every directive");
+
+void sw_lp_page_defaults(sw_lesson_page *pg)
+{
+    for (int k = 0; k < NDIRECTIVES; k++)
+        if (directives[k].init)
+            directives[k].init(pg);
+}
 
 static const char *directive_name_at(const void *ctx, int i)
 {
@@ -472,8 +477,13 @@ int sw_lp_directive(sw_lp_parser *ps, size_t at)
     if (ps->hint_to == HINT_GOAL && strcmp(name, "hint") != 0)
         ps->hint_to = HINT_NONE;
     for (int k = 0; k < NDIRECTIVES; k++)
-        if (strcmp(name, directives[k].name) == 0)
+        if (strcmp(name, directives[k].name) == 0) {
+            char what[SW_LESSON_NAME_MAX + 1];
+            snprintf(what, sizeof what, "@%s", name);
+            if (directives[k].once && sw_lp_once(ps, &ps->seen[k], what) != SW_OK)
+                return ps->status;
             return directives[k].run(ps, i);
+        }
     char near[80], known[16 * NDIRECTIVES] = "";
     for (int k = 0, used = 0; k < NDIRECTIVES && used < (int)sizeof known; k++) /* from the table */
         used += snprintf(known + used, sizeof known - (size_t)used, "%s@%s", k ? " " : "", directives[k].name);

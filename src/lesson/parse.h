@@ -9,6 +9,9 @@
 #include "util/names.h"
 #include "util/utf8.h"
 
+/* Room for the directive table (directives.c checks it fits). */
+#define SW_LP_DIRECTIVES_MAX 32
+
 typedef struct sw_lp_where { int line, col; } sw_lp_where;
 
 enum hint_target { HINT_NONE, HINT_GOAL, HINT_QUESTION };
@@ -35,9 +38,9 @@ typedef struct sw_lp_parser {
     int have_sys;
 
     /* The page being read (out->pages[out->npages - 1]). */
-    sw_lp_where at_scene, at_set, at_integrator, at_dt, at_compare, at_ghost, at_pause, at_reset;
-    sw_lp_where at_speed, at_view;
+    sw_lp_where at_scene, at_set, at_integrator, at_dt, at_compare;
     sw_lp_where at_question, at_correct;
+    sw_lp_where seen[SW_LP_DIRECTIVES_MAX]; /* a once-per-page directive's line, by table index */
     sw_lp_where at_goal[SW_LESSON_MAX_GOALS];
     int set_line[SW_MAX_PARAMS];
     int rebuild;              /* scene or parameters changed on this page */
@@ -93,6 +96,8 @@ int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim);
 
 /* ---- directives.c ---- */
 int sw_lp_directive(sw_lp_parser *ps, size_t at);
+/* A new page's "leave as is" settings, from every directive that has one. */
+void sw_lp_page_defaults(sw_lesson_page *pg);
 
 /* ---- goal_parse.c ---- */
 int sw_lp_goal(sw_lp_parser *ps, size_t pos);

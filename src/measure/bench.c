@@ -181,7 +181,8 @@ static int cmp_double(const void *a, const void *b)
 
 /* Run method m at (dt, rtol) `repeats` times; the first run gives the error
  * and counters (every run is identical: the sim is deterministic), the median
- * of all runs the time. *work gets (evals + solver iterations) × dim. */
+ * of all runs the time. *work gets evals × an evaluation's work plus
+ * solver iterations × a solve's (sw_truth_eval_work). */
 static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt, double rtol,
                      const sw_bench_config *c, sw_bench_point *pt, double *work, double *scratch,
                      char *err, size_t errlen)
@@ -209,7 +210,8 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
             pt->steps = s.steps;
             pt->blown = s.blown;
             pt->blow_time = s.blow_time;
-            *work = ((double)pt->evals + (double)s.sys.ode->solver_iters) * r->dim;
+            double solve, eval = sw_truth_eval_work(&s.sys, &solve);
+            *work = (double)pt->evals * eval + (double)s.sys.ode->solver_iters * solve;
             if (s.blown)
                 pt->error = NAN;
             else if (r->source == SW_BENCH_EXACT)

@@ -240,7 +240,10 @@ double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrato
     if (sw_truth_init(&tr, sc, p, err, sizeof err) == SW_OK) {
         cost += sw_truth_reference_cost(&tr, duration);
         sw_system *sys = &tr.sys;
-        double dim = sys->ode->dim, evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
+        double solve, dim = sw_truth_eval_work(sys, &solve);
+        double evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
+        if (m->flags & SW_IMPLICIT) /* a solve beyond what an evaluation costs (a wide band) */
+            evals += 3 * fmax(0, solve - dim) / dim;
         double lo = w > 0 && isfinite(w) ? c->low / w : c->low * sc->dt;
         double near = w > 0 && isfinite(w) ? 1.0 / w : sc->dt;
         double steps_lo = fmin((double)c->max_steps, duration / fmax(lo, SW_DT_MIN));

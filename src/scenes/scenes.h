@@ -10,7 +10,7 @@
 extern const sw_scene sw_scene_vortex, sw_scene_river, sw_scene_gyre;
 extern const sw_scene sw_scene_projectile, sw_scene_bounce, sw_scene_fireworks;
 extern const sw_scene sw_scene_spring, sw_scene_stiff_spring, sw_scene_chain;
-extern const sw_scene sw_scene_orbit;
+extern const sw_scene sw_scene_orbit, sw_scene_galaxy;
 
 /* Set sys up as a flow of n points under a field written per point
  * (engine/pointwise.h; jac may be NULL). */

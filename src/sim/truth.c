@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/particles_solve.h"
 #include "stepwise/stepwise.h"
 
 const sw_integrator *sw_truth_reference_method(void)
@@ -83,6 +84,13 @@ static int start_reference(sw_truth *tr)
     return 0;
 }
 
+double sw_truth_eval_work(const sw_system *sys, double *solve)
+{
+    if (sys->kind == SW_SYS_PARTICLES)
+        return sw_particles_work(&sys->particles, solve);
+    return *solve = sys->ode->dim;
+}
+
 double sw_truth_reference_cost(sw_truth *tr, double t_end)
 {
     if (tr->source != SW_TRUTH_REFERENCE)
@@ -100,7 +108,8 @@ double sw_truth_reference_cost(sw_truth *tr, double t_end)
     double cost = INFINITY;
     if (!pilot.blown && pilot.t > 0) {
         double per_time = (double)sw_sim_evals(&pilot) / pilot.t;
-        cost = per_time * t_end * (double)pilot.sys.ode->dim;
+        double solve;
+        cost = per_time * t_end * sw_truth_eval_work(&pilot.sys, &solve);
     }
     sw_sim_free(&pilot);
     return cost;

@@ -59,8 +59,12 @@ typedef struct sw_truth {
  * 0, or a status with err filled (the scene does not build, no memory). */
 int sw_truth_init(sw_truth *tr, const sw_scene *sc, const double *p, char *err, size_t errlen);
 void sw_truth_free(sw_truth *tr);
+/* What one derivative evaluation of sys costs in the budgets' unit, state
+ * components (dim, or more where a force joins every pair of particles),
+ * and in *solve what one implicit solve costs (engine/particles_solve.h). */
+double sw_truth_eval_work(const sw_system *sys, double *solve);
 /* What a reference run to t_end would cost, in state components times
- * derivative evaluations (dim × evaluations): measured on a pilot of up to
+ * derivative evaluations (sw_truth_eval_work × evaluations): measured on a pilot of up to
  * 20 accepted steps and extrapolated by their mean step. 0 for a closed
  * form, INFINITY when the pilot fails. Callers refuse work above a budget
  * with this number in the message. */

@@ -265,25 +265,25 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
  * eigenvalues, but only of the size of its tension over length, far below
  * its stiffness) — and that mode's damping from the Rayleigh quotient of
  * M⁻¹Fv on its vector. Exact for proportional damping, as a chain has. */
-static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y, sw_spectrum *sp)
+/* Power iteration on M⁻¹Fx - shift·I from a fixed start (neighbours moving
+ * against each other: the stiffest modes of springs between neighbours are
+ * close to that, so few passes do): *lam gets its eigenvalue largest in
+ * size, v its vector. assemble_first 0 reuses the blocks at y. */
+static int power_step(sw_particles *p, const double *y, double shift, double *v, double *w, int assemble_first,
+                      double *lam)
 {
-    sw_particles *p = &sys->particles;
     int n2 = 2 * p->n;
-    double *w = sw_truth_scratch(ws, (size_t)3 * n2);
-    if (!w)
-        return -1;
-    double *v = w + n2, *e = v + n2;
-    /* start from neighbours moving against each other: the stiffest modes
-     * of springs between neighbours are close to that, so few passes do */
     for (int i = 0; i < n2; i++)
         v[i] = ((i / 2) % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * sin(1.3 * i));
-    double lam = 0;
+    *lam = 0;
     for (int it = 0; it < 100; it++) {
-        if (sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, it == 0) != 0)
+        if (sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, assemble_first && it == 0) != 0)
             return -1;
         double num = 0, den = 0;
         for (int i = 0; i < n2; i++) {
             w[i] *= p->inv_mass[i / 2];
+            if (shift != 0)
+                w[i] -= shift * v[i];
             num += v[i] * w[i];
             den += v[i] * v[i];
         }
@@ -292,9 +292,32 @@ static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y
             break;
         for (int i = 0; i < n2; i++)
             v[i] = w[i] / norm;
-        if (it > 5 && fabs(next - lam) <= 1e-9 * fabs(next))
+        if (it > 5 && fabs(next - *lam) <= 1e-9 * fabs(next))
             break;
-        lam = next;
+        *lam = next;
+    }
+    return 0;
+}
+
+static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y, sw_spectrum *sp)
+{
+    sw_particles *p = &sys->particles;
+    int n2 = 2 * p->n;
+    double *w = sw_truth_scratch(ws, (size_t)3 * n2);
+    if (!w)
+        return -1;
+    double *v = w + n2, *e = v + n2, lam;
+    if (power_step(p, y, 0.0, v, w, 1, &lam) != 0)
+        return -1;
+    if (lam > 0) { /* a mode that grows physically (a tidal stretch) is the largest: the
+                      stiffest oscillation is the most negative, the largest of M⁻¹Fx - lam I */
+        double below;
+        if (power_step(p, y, lam, v, w, 0, &below) != 0)
+            return -1;
+        if (below + lam < 0) {
+            sp->growing++;
+            lam = below + lam;
+        }
     }
     /* lam: the eigenvalue of M⁻¹Fx largest in size (stiffest when < 0) */
     (void)sw_particles_jacobian_apply(p, y, 0.0, 1.0, v, e, 0); /* (the blocks are there) */

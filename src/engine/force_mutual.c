@@ -12,19 +12,15 @@ static void mutual_add(const sw_particles *p, const sw_force *fo, const double *
 {
     (void)v;
     double e2 = fo->soft * fo->soft;
-    for (int i = 0; i < p->n; i++) {
-        double xi = x[2 * i], yi = x[2 * i + 1], gm = fo->mu * p->mass[i], fx = 0, fy = 0;
+    for (int i = 0; i < p->n; i++) /* each pair once, both ends at once: the lecture's loop */
         for (int j = i + 1; j < p->n; j++) {
-            double dx = xi - x[2 * j], dy = yi - x[2 * j + 1], q2 = dx * dx + dy * dy + e2;
-            double s = gm * p->mass[j] / (q2 * sqrt(q2));
-            fx -= s * dx;
-            fy -= s * dy;
+            double dx = x[2 * i] - x[2 * j], dy = x[2 * i + 1] - x[2 * j + 1], q2 = dx * dx + dy * dy + e2;
+            double s = fo->mu * p->mass[i] * p->mass[j] / (q2 * sqrt(q2));
+            f[2 * i] -= s * dx;
+            f[2 * i + 1] -= s * dy;
             f[2 * j] += s * dx;
             f[2 * j + 1] += s * dy;
         }
-        f[2 * i] += fx;
-        f[2 * i + 1] += fy;
-    }
 }
 
 static void mutual_potential(const sw_particles *p, const sw_force *fo, const double *x, double *e)

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "bench_common.h"
+#include "engine/ode_fast.h"
 #include "stepwise/sim.h"
 
 #ifdef SW_HAVE_GSL
@@ -268,8 +269,8 @@ static double deriv_seconds(problem *pb)
 static int fused(const problem *pb, const candidate *c)
 {
     const sw_ode *ode = pb->sys.ode;
-    return c->m && ((strcmp(c->name, "rk4") == 0 && ode->fused_rk4) ||
-                    (strcmp(c->name, "euler") == 0 && ode->fused_euler));
+    return c->m && ((strcmp(c->name, "rk4") == 0 && sw_ode_fused_rk4(ode)) ||
+                    (strcmp(c->name, "euler") == 0 && sw_ode_fused_euler(ode)));
 }
 
 /* Paired, interleaved timing of the two cheapest runs: medians and spreads;

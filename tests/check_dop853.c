@@ -199,7 +199,7 @@ START_TEST(slices_same_bits)
             char err[SW_ERRLEN];
             ck_assert_int_eq(sw_flow_init(&f, 700, swirl, NULL, NULL, err, sizeof err), SW_OK);
             if (!sliced)
-                f.ode.deriv_part = NULL;
+                f.ode.fast = NULL;
             for (int i = 0; i < 700; i++)
                 f.y[2 * i] = 0.3 + 0.001 * i, f.y[2 * i + 1] = -0.2 + 0.0005 * i;
             ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(methods[m]), &f.ode, err, sizeof err), SW_OK);

@@ -57,7 +57,7 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
 /* Student plugins: a shared object exports
  *     const sw_plugin *sw_plugin_info(void);
  * returning a description of its integrator (see examples/euler_plugin.c). */
-#define SW_PLUGIN_ABI 1
+#define SW_PLUGIN_ABI 2
 typedef int sw_plugin_step_fn(sw_ode *ode, double t, double *y, double h, double *work);
 typedef struct sw_plugin {
     int abi;                  /* must be SW_PLUGIN_ABI */

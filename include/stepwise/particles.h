@@ -15,6 +15,7 @@ typedef enum sw_force_kind {
     SW_FORCE_CENTRAL,  /* f = -μ·m·d/|d|³ toward a fixed point */
     SW_FORCE_MUTUAL    /* f_i = -Σ_j μ·m_i·m_j·d_ij/(|d_ij|² + soft²)^(3/2): softened gravity */
 } sw_force_kind;
+#define SW_FORCE_KINDS (SW_FORCE_MUTUAL + 1) /* the last kind + 1 */
 
 /* A damped spring: f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂, d = x_a - x_b;
  * b < 0 ties a to the fixed anchor (ax, ay). */

@@ -46,7 +46,7 @@ static void run_trial(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double t
                       unsigned elim, sw_trial_sums *sums)
 {
     memset(sums, 0, sizeof *sums);
-    if (ode->deriv_part)
+    if (sw_ode_deriv_part(ode))
         for (int lo = 0; lo < ode->dim; lo += m->slice)
             m->trial(s, ode, t, y, h, lo, lo + m->slice < ode->dim ? lo + m->slice : ode->dim, elim, sums);
     else

@@ -26,7 +26,7 @@ static int run_ranges(range_step *f, sw_fused_step_fn *fused, int stages, sw_ste
     unsigned elim = s->limit_exp ? s->limit_exp : 0x800, beyond = 0; /* 0x800: never */
     if (fused)
         beyond = fused(ode->ctx, *t, y, h, elim);
-    else if (ode->deriv_part)
+    else if (sw_ode_deriv_part(ode))
         for (int lo = 0; lo < ode->dim; lo += SW_SLICE)
             beyond |= f(s, ode, *t, y + lo, h, (lo + SW_SLICE < ode->dim ? lo + SW_SLICE : ode->dim) - lo, elim);
     else
@@ -53,7 +53,7 @@ SW_CLONES static unsigned euler_range(sw_stepper *s, sw_ode *ode, double t, doub
 
 int sw_step_euler(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return run_ranges(euler_range, ode->fused_euler, 1, s, ode, t, y, h);
+    return run_ranges(euler_range, sw_ode_fused_euler(ode), 1, s, ode, t, y, h);
 }
 
 /* Semi-implicit Euler: v1 = v0 + h·a(x0, v0), then x1 = x0 + h·v1. */
@@ -135,7 +135,7 @@ SW_CLONES static unsigned rk4_range(sw_stepper *s, sw_ode *ode, double t, double
 
 int sw_step_rk4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return run_ranges(rk4_range, ode->fused_rk4, 4, s, ode, t, y, h);
+    return run_ranges(rk4_range, sw_ode_fused_rk4(ode), 4, s, ode, t, y, h);
 }
 
 /* Velocity Verlet (kick-drift-kick), one evaluation per step by reusing the

@@ -2,6 +2,7 @@
  * moves independently, so ∂f/∂y is block diagonal with one 2x2 block per
  * point and implicit solves are per point. Invariant: no allocation after init. */
 #include "engine/flow_jacobian.h"
+#include "engine/ode_fast.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -69,6 +70,27 @@ static int flow_solve(void *ctx, double t, const double *y, double c, const doub
     return SW_OK;
 }
 
+static unsigned flow_euler(void *ctx, double t, double *y, double h, unsigned elim)
+{
+    const sw_flow *f = ctx;
+    return f->point->euler(f->params, t, f->n, y, h, elim);
+}
+
+static unsigned flow_rk4(void *ctx, double t, double *y, double h, unsigned elim)
+{
+    const sw_flow *f = ctx;
+    return f->point->rk4(f->params, t, f->n, y, h, elim);
+}
+
+/* The fast paths: slices always; the fused steps the field offers
+ * (index: 1 Euler's, 2 RK4's). */
+static const struct sw_ode_fast fast_paths[4] = {
+    { flow_deriv_part, NULL, NULL },
+    { flow_deriv_part, flow_euler, NULL },
+    { flow_deriv_part, NULL, flow_rk4 },
+    { flow_deriv_part, flow_euler, flow_rk4 },
+};
+
 int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, const void *params,
                  char *err, size_t errlen)
 {
@@ -92,29 +114,16 @@ int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, co
     f->ode.order = 1;
     f->ode.deriv = flow_deriv;
     f->ode.solve = flow_solve;
-    f->ode.deriv_part = flow_deriv_part;
+    f->ode.fast = &fast_paths[0];
     f->ode.ctx = f;
     return SW_OK;
-}
-
-static unsigned flow_euler(void *ctx, double t, double *y, double h, unsigned elim)
-{
-    const sw_flow *f = ctx;
-    return f->point->euler(f->params, t, f->n, y, h, elim);
-}
-
-static unsigned flow_rk4(void *ctx, double t, double *y, double h, unsigned elim)
-{
-    const sw_flow *f = ctx;
-    return f->point->rk4(f->params, t, f->n, y, h, elim);
 }
 
 void sw_flow_fuse(sw_flow *f, const sw_point_field *pf)
 {
     f->point = pf;
     f->field = pf->field;
-    f->ode.fused_euler = pf->euler ? flow_euler : NULL;
-    f->ode.fused_rk4 = pf->rk4 ? flow_rk4 : NULL;
+    f->ode.fast = &fast_paths[(pf->euler ? 1 : 0) | (pf->rk4 ? 2 : 0)];
 }
 
 void sw_flow_free(sw_flow *f)

@@ -34,6 +34,10 @@ typedef struct swp_force_type {
     /* *e += its potential energy at x, term by term in particle or
      * spring order; NULL: it stores none (drag). */
     void (*potential)(const sw_particles *p, const sw_force *fo, const double *x, double *e);
+    /* The potential as the explainer names it: "spring potential", its
+     * formula, and whether the formula has a ½ (a slip forgets it). */
+    const char *term, *term_formula;
+    int term_half;
     /* The pairs it writes into swp_blocks (0: it acts on each particle
      * alone) and, in *reach, the largest |a - b| among them. */
     long (*pairs)(const sw_particles *p, const sw_force *fo, int *reach);

@@ -233,30 +233,20 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
             m->degree = 0;
     for (int f = 0; f < p->nforces; f++) {
         const sw_force *fo = &p->forces[f];
-        switch (fo->kind) { /* every kind: -Wswitch names this place for a new one */
-        case SW_FORCE_SPRINGS: /* compiled above */
-            break;
-        case SW_FORCE_GRAVITY:
-            if (!m->gravity && !m->drag) { /* the first, before any drag: fused */
-                m->gravity = 1;
-                m->gx = fo->gx;
-                m->gy = fo->gy;
-                break;
-            }
+        /* springs are compiled above; the first gravity (before any drag)
+         * and the first drag are fused into the last pass; every other
+         * force, of any kind, is a pass of its own through its descriptor */
+        if (fo->kind == SW_FORCE_SPRINGS)
+            continue;
+        if (fo->kind == SW_FORCE_GRAVITY && !m->gravity && !m->drag) {
+            m->gravity = 1;
+            m->gx = fo->gx;
+            m->gy = fo->gy;
+        } else if (fo->kind == SW_FORCE_DRAG && !m->drag) {
+            m->drag = 1;
+            m->kdrag = fo->k;
+        } else {
             m->extra[m->nextra++] = f;
-            break;
-        case SW_FORCE_DRAG:
-            if (!m->drag) { /* the first: fused */
-                m->drag = 1;
-                m->kdrag = fo->k;
-                break;
-            }
-            m->extra[m->nextra++] = f;
-            break;
-        case SW_FORCE_CENTRAL:
-        case SW_FORCE_MUTUAL:
-            m->extra[m->nextra++] = f; /* a pass of its own: its descriptor's add */
-            break;
         }
     }
     find_regular(p->n, m);

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "engine/clones.h"
+#include "engine/ode_fast.h"
 #include "stepwise/integrator.h"
 
 struct sw_stepper {
@@ -72,8 +73,8 @@ sw_step_fn sw_step_dop853;                             /* dop853.c */
  * counted: callers count per stage. */
 static inline void sw_eval_slice(sw_ode *ode, double t, int len, const double *y, double *dydt)
 {
-    if (ode->deriv_part)
-        ode->deriv_part(ode->ctx, t, len, y, dydt);
+    if (sw_ode_deriv_part(ode))
+        ode->fast->deriv_part(ode->ctx, t, len, y, dydt);
     else
         ode->deriv(ode->ctx, t, y, dydt);
 }

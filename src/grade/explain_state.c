@@ -114,30 +114,29 @@ int xpl_initial_state(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc
 
 /* ---- the energy formula --------------------------------------------------- */
 
-/* The terms of docs/scenes.md's energy, in the order messages name them. */
-enum { KINETIC, GRAVITY, SPRING, CENTRAL, MUTUAL, NTERMS };
+/* The terms of docs/scenes.md's energy, in the order messages name them:
+ * the kinetic energy, then each force kind's potential (term 1 + kind;
+ * a kind that stores none, drag, has no name and is never present). */
+enum { KINETIC, NTERMS = 1 + SW_FORCE_KINDS };
 
-static const char *const term_name[NTERMS] = { "kinetic energy", "gravity potential", "spring potential",
-                                               "central potential", "mutual gravity potential" };
-static const char *const term_formula[NTERMS] = { "½ m|v|²", "m g y", "½ k (|d| - rest)²",
-                                                  "- μ m/|x|", "- G m_i m_j/√(r² + ε²)" };
+static const char *term_name(int k)
+{
+    return k == KINETIC ? "kinetic energy" : swp_force_type_of((sw_force_kind)(k - 1))->term;
+}
+
+static const char *term_formula(int k)
+{
+    return k == KINETIC ? "½ m|v|²" : swp_force_type_of((sw_force_kind)(k - 1))->term_formula;
+}
+
+static int has_half(int k)
+{
+    return k == KINETIC || swp_force_type_of((sw_force_kind)(k - 1))->term_half;
+}
+
 /* Coefficients a slip gives: a term kept, left out, with its sign flipped,
  * or (a ½ forgotten) doubled. */
 static const double slips[] = { 1, 0, -1, 2 };
-static const int has_half[NTERMS] = { 1, 0, 1, 0, 0 };
-
-/* The term a force kind's potential is (-1: it stores none). */
-static int term_of(sw_force_kind kind)
-{
-    switch (kind) { /* every kind: -Wswitch names this place for a new one */
-    case SW_FORCE_GRAVITY: return GRAVITY;
-    case SW_FORCE_SPRINGS: return SPRING;
-    case SW_FORCE_CENTRAL: return CENTRAL;
-    case SW_FORCE_MUTUAL: return MUTUAL;
-    case SW_FORCE_DRAG: return -1;
-    }
-    return -1;
-}
 
 /* Each term of sw_particles_energy at y into e. */
 static void energy_terms(const sw_particles *p, const double *y, double e[NTERMS])
@@ -150,8 +149,8 @@ static void energy_terms(const sw_particles *p, const double *y, double e[NTERMS
     for (int k = 0; k < p->nforces; k++) { /* each term as the engine sums it */
         const sw_force *fo = &p->forces[k];
         const swp_force_type *type = swp_force_type_of(fo->kind);
-        if (type->potential && term_of(fo->kind) >= 0)
-            type->potential(p, fo, x, &e[term_of(fo->kind)]);
+        if (type->potential)
+            type->potential(p, fo, x, &e[1 + fo->kind]);
     }
 }
 
@@ -182,7 +181,7 @@ static void say_formula(const double *coef, const int *present, char *buf, size_
             continue;
         const char *join = coef[k] < 0 ? (used ? " minus " : "minus ") : used ? " plus " : "";
         used += (size_t)snprintf(buf + used, len - used, "%s%s%s", join,
-                                 fabs(coef[k]) == 2 ? "twice the " : "", term_name[k]);
+                                 fabs(coef[k]) == 2 ? "twice the " : "", term_name(k));
     }
 }
 
@@ -197,7 +196,7 @@ static void say_slips(const double *coef, const int *present, char *buf, size_t 
         const char *what = coef[k] == 0 ? "is missing" : coef[k] < 0 ? "has the wrong sign"
                                                                      : "lacks its ½";
         used += (size_t)snprintf(buf + used, len - used, "%sthe %s %s", used ? "; " : "",
-                                 term_name[k], what);
+                                 term_name(k), what);
     }
 }
 
@@ -207,8 +206,8 @@ static void say_energy(const int *present, char *buf, size_t len)
     for (int k = 0; k < NTERMS && used < len; k++)
         if (present[k])
             used += (size_t)snprintf(buf + used, len - used, "%s %s",
-                                     used > 8 && term_formula[k][0] != '-' ? " +" : "",
-                                     term_formula[k]);
+                                     used > 8 && term_formula(k)[0] != '-' ? " +" : "",
+                                     term_formula(k));
 }
 
 int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
@@ -258,7 +257,7 @@ int xpl_energy(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
                 coef[k] = present[k] ? slips[s] : 0;
                 changed += present[k] && s != 0;
                 kept += coef[k] != 0;
-                ok &= !(coef[k] == 2 && !has_half[k]);
+                ok &= !(coef[k] == 2 && !has_half(k));
             }
             if (changed != want || !kept || !ok ||
                 !formula_matches(terms, tr, ecol, coef, tol, &worst))

@@ -232,9 +232,10 @@ static int check_reply(const probe_reply *r, const char *shown, char *err, size_
         snprintf(err, errlen, "--plugin '%s': its loader sent a reply it could not have sent", shown);
         return SW_EINVAL;
     }
-    if (r->abi != SW_PLUGIN_ABI) {
+    if (r->abi != SW_PLUGIN_ABI) { /* (1: sw_ode had the engine's fast-path fields; they moved) */
         snprintf(err, errlen, "--plugin '%s' was built for plugin interface %d; this stepwise needs "
-                 "%d (rebuild it against this stepwise's integrator.h)", shown, r->abi, SW_PLUGIN_ABI);
+                 "%d: rebuild it from its .c (give stepwise the .c file, or see docs/plugins.md for "
+                 "the cc line)", shown, r->abi, SW_PLUGIN_ABI);
         return SW_EINVAL;
     }
     if (!r->name[0] || !r->has_step || r->work_vectors < 0 || r->work_vectors > 64) {

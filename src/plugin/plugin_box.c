@@ -67,8 +67,7 @@ typedef struct step_box {
     int have_fault;
 } step_box;
 
-static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "deriv_part", "ctx", "fused_euler",
-                                          "fused_rk4" };
+static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "ctx", "prepare", "fast" };
 enum { ODE_FIELDS = sizeof ode_fields / sizeof ode_fields[0] };
 
 /* ---- the child -------------------------------------------------------------- */
@@ -89,8 +88,8 @@ static sw_ode child_ode_copy;
 static void ode_values(const sw_ode *o, int64_t v[ODE_FIELDS])
 {
     int64_t f[ODE_FIELDS] = { o->dim, o->order, (int64_t)(uintptr_t)o->deriv, (int64_t)(uintptr_t)o->solve,
-                              (int64_t)(uintptr_t)o->deriv_part, (int64_t)(uintptr_t)o->ctx,
-                              (int64_t)(uintptr_t)o->fused_euler, (int64_t)(uintptr_t)o->fused_rk4 };
+                              (int64_t)(uintptr_t)o->ctx, (int64_t)(uintptr_t)o->prepare,
+                              (int64_t)(uintptr_t)o->fast };
     memcpy(v, f, sizeof f);
 }
 

@@ -51,6 +51,7 @@ static const sw_plugin info = { .abi = SW_PLUGIN_ABI + 1, .name = "future", .ste
 const sw_plugin *sw_plugin_info(void);
 const sw_plugin *sw_plugin_info(void) { return &info; }
 EOF
+sed 's/SW_PLUGIN_ABI + 1/1/' badabi.c > oldabi.c
 cat > nan.c <<'EOF'
 /* Writes NaN from the fourth step on. */
 #include <stepwise/integrator.h>
@@ -76,6 +77,7 @@ const sw_plugin *sw_plugin_info(void) { return &info; }
 EOF
 build nosym.so nosym.c
 build badabi.so badabi.c
+build oldabi.so oldabi.c
 build nan.so nan.c
 build refuse.so refuse.c
 printf 'not a shared object\n' > text.so
@@ -89,7 +91,10 @@ one_line_2 "missing symbol"; grep -q 'no sw_plugin_info symbol' err || fail "mis
 run "$SW" check --plugin ./nosym.so --reference euler --scene spring
 one_line_2 "missing symbol (check)"
 run "$SW" record spring --plugin ./badabi.so
-one_line_2 "wrong interface"; grep -q 'plugin interface 2; this stepwise needs 1' err || fail "abi: $(cat err)"
+one_line_2 "wrong interface"; grep -q 'plugin interface 3; this stepwise needs 2' err || fail "abi: $(cat err)"
+run "$SW" record spring --plugin ./oldabi.so # built before sw_ode lost its fast-path fields
+one_line_2 "old interface"; grep -q 'plugin interface 1; this stepwise needs 2: rebuild it from its .c' err ||
+    fail "old abi: $(cat err)"
 run "$SW" record spring --plugin ./text.so
 one_line_2 "not a shared object"; grep -q 'could not be loaded' err || fail "text.so: $(cat err)"
 run "$SW" record spring --plugin ./missing.so

@@ -1,0 +1,45 @@
+/* Private to the engine and the layers above it: what a system can offer
+ * the built-in explicit methods beyond the lecture's solver view (sw_ode),
+ * for speed only. Every fast path gives the generic method's numbers bit for
+ * bit; a system without them (particles, a plugin's view) runs the generic
+ * loops. */
+#ifndef SW_ENGINE_ODE_FAST_H
+#define SW_ENGINE_ODE_FAST_H
+
+#include "stepwise/ode.h"
+
+/* For pointwise systems, where each point's derivative depends only on that
+ * point (flow fields): dydt[0..len) from the slice y[0..len) alone. Lets
+ * explicit methods step the state block by block in cache. */
+typedef void sw_deriv_part_fn(void *ctx, double t, int len, const double *y, double *dydt);
+
+/* A step of a fixed explicit method that a system takes itself, point by
+ * point with each point's stages in registers, with exactly the arithmetic
+ * of the generic method (so the same bits): y advanced from t by h in
+ * place. Returns non-zero when a new component's exponent field is at or
+ * beyond elim (the runaway test, 0x800: never). Flow fields written per
+ * point offer Euler's and RK4's (engine/pointwise.h). */
+typedef unsigned sw_fused_step_fn(void *ctx, double t, double *y, double h, unsigned elim);
+
+struct sw_ode_fast {
+    sw_deriv_part_fn *deriv_part;           /* NULL: coupled; else slices of 2 */
+    sw_fused_step_fn *fused_euler, *fused_rk4; /* NULL: the generic step */
+};
+
+/* The fast path of ode, or NULL. */
+static inline sw_deriv_part_fn *sw_ode_deriv_part(const sw_ode *ode)
+{
+    return ode->fast ? ode->fast->deriv_part : NULL;
+}
+
+static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)
+{
+    return ode->fast ? ode->fast->fused_euler : NULL;
+}
+
+static inline sw_fused_step_fn *sw_ode_fused_rk4(const sw_ode *ode)
+{
+    return ode->fast ? ode->fast->fused_rk4 : NULL;
+}
+
+#endif

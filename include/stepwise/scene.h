@@ -44,6 +44,12 @@ typedef struct sw_scene_events {
     /* Apply event k's jump to y (reached at the crossing, g_k just past zero);
      * NULL: nothing jumps in the state, the step must only end there. */
     void (*jump)(struct sw_system *sys, int k, double t, double *y);
+    /* NULL, or: set the scene's discrete state for location from y (locate
+     * 1: each side's force extended smoothly until an event's jump switches
+     * it, so a step's stages never straddle a jump in f; 0: off, the plain
+     * right-hand side). The sim calls it when the mode is set, on reset and
+     * when the state is replaced. */
+    void (*arm)(struct sw_system *sys, const double *y, int locate);
     /* What stepping over the events does to a method's order, one sentence
      * ending "see --events" (bench prints it); NULL: these parameters meet none. */
     const char *(*breaks)(const struct sw_system *sys);

@@ -56,6 +56,13 @@ void sw_sim_events_free(sw_sim *s)
     s->ev = NULL;
 }
 
+void sw_sim_events_arm(sw_sim *s)
+{
+    const sw_scene_events *se = s->sys.scene->events;
+    if (se && se->arm)
+        se->arm(&s->sys, s->sys.y, s->events == SW_EVENTS_LOCATE && s->ev);
+}
+
 int sw_sim_set_events(sw_sim *s, sw_events_mode mode, char *err, size_t errlen)
 {
     int count = sw_system_event_count(&s->sys), dim = s->sys.ode->dim;
@@ -79,6 +86,8 @@ int sw_sim_set_events(sw_sim *s, sw_events_mode mode, char *err, size_t errlen)
         s->ev = ev;
     }
     s->events = mode;
+    sw_sim_events_arm(s);
+    sw_stepper_touch(s->stepper);
     return SW_OK;
 }
 

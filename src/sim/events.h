@@ -19,6 +19,8 @@ int sw_sim_locate_step(sw_sim *s, double h);
 /* 1 when the last step was cut at an event (its state changed from outside
  * the method: the whole state is checked again). */
 int sw_sim_events_cut(const sw_sim *s);
+/* Set the scene's discrete state for the sim's mode from its state. */
+void sw_sim_events_arm(sw_sim *s);
 /* Back to none located (the sim was reset). */
 void sw_sim_events_reset(sw_sim *s);
 /* Release the location workspace. */

@@ -150,6 +150,7 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
 void sw_sim_set_state(sw_sim *s, const double *y)
 {
     memcpy(s->sys.y, y, (size_t)s->sys.ode->dim * sizeof *y);
+    sw_sim_events_arm(s);
     sw_stepper_touch(s->stepper);
     s->energy0 = sw_sim_energy(s);
 }
@@ -170,6 +171,7 @@ int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
     s->blow_time = 0;
     s->blow_reason[0] = '\0';
     sw_sim_events_reset(s);
+    sw_sim_events_arm(s);
     set_limits(s);
     return SW_OK;
 }

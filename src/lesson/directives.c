@@ -362,6 +362,24 @@ static int d_ghost(sw_lp_parser *ps, size_t pos)
     return sw_lp_on_off(ps, pos, "@ghost", &sw_lp_page(ps)->ghost);
 }
 
+/* @events locate|step: how the page's sims meet contacts and crossings. */
+static int d_events(sw_lp_parser *ps, size_t pos)
+{
+    if (sw_lp_once(ps, &ps->at_events, "@events") != SW_OK)
+        return ps->status;
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@events", "locate or step", word, &at) != SW_OK)
+        return ps->status;
+    if (strcmp(word, "locate") == 0)
+        sw_lp_page(ps)->events = 1;
+    else if (strcmp(word, "step") == 0)
+        sw_lp_page(ps)->events = 0;
+    else
+        return FAIL(ps, at, "@events takes locate or step, not '%s'", word);
+    return SW_OK;
+}
+
 static int d_pause(sw_lp_parser *ps, size_t pos)
 {
     if (sw_lp_once(ps, &ps->at_pause, "@pause") != SW_OK)
@@ -438,7 +456,7 @@ static const struct directive {
 } directives[] = {
     { "scene", d_scene }, { "set", d_set }, { "integrator", d_integrator }, { "dt", d_dt },
     { "compare", d_compare }, { "ghost", d_ghost }, { "pause", d_pause }, { "reset", d_reset },
-    { "speed", d_speed }, { "view", d_view },
+    { "speed", d_speed }, { "view", d_view }, { "events", d_events },
     { "lock", d_lock_on }, { "unlock", d_lock_off }, { "goal", sw_lp_goal }, { "hint", d_hint },
     { "question", d_question }, { "answer", d_answer }, { "correct", d_correct },
 };

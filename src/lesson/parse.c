@@ -54,13 +54,13 @@ static int begin_page(sw_lp_parser *ps, size_t title_at)
     if (!pg->title)
         return sw_lp_oom(ps);
     pg->line = ps->line;
-    pg->compare = pg->ghost = pg->paused = -1;
+    pg->compare = pg->ghost = pg->paused = pg->events = -1;
     pg->view = pg->follow = pg->lanes = pg->graph = -1;
     pg->locked = ps->locked;
     sw_lp_where none = { 0, 0 };
     ps->at_scene = ps->at_set = ps->at_integrator = ps->at_dt = ps->at_compare = none;
     ps->at_ghost = ps->at_pause = ps->at_reset = ps->at_question = ps->at_correct = none;
-    ps->at_speed = ps->at_view = none;
+    ps->at_speed = ps->at_view = ps->at_events = none;
     memset(ps->set_line, 0, sizeof ps->set_line);
     ps->correct = -1;
     ps->hint_to = HINT_NONE;

@@ -36,7 +36,7 @@ typedef struct sw_lp_parser {
 
     /* The page being read (out->pages[out->npages - 1]). */
     sw_lp_where at_scene, at_set, at_integrator, at_dt, at_compare, at_ghost, at_pause, at_reset;
-    sw_lp_where at_speed, at_view;
+    sw_lp_where at_speed, at_view, at_events;
     sw_lp_where at_question, at_correct;
     sw_lp_where at_goal[SW_LESSON_MAX_GOALS];
     int set_line[SW_MAX_PARAMS];

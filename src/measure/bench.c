@@ -90,6 +90,11 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
     if (rc != SW_OK)
         return rc;
     sw_sim_set_tolerances(&s, rtol, atol);
+    /* events located: only then do tight runs converge through them */
+    if ((rc = sw_sim_set_events(&s, SW_EVENTS_LOCATE, err, errlen)) != SW_OK) {
+        sw_sim_free(&s);
+        return rc;
+    }
     if (sw_sim_run_until(&s, r->t_report)) {
         snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
                  r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
@@ -199,6 +204,11 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
             return rc;
         if (rtol > 0) {
             sw_sim_set_tolerances(&s, rtol, 1e-3 * rtol);
+        }
+        rc = sw_sim_set_events(&s, r->events, err, errlen);
+        if (rc != SW_OK) {
+            sw_sim_free(&s);
+            return rc;
         }
         double t0 = sw_clock_now();
         sw_sim_run_until(&s, r->t_report);

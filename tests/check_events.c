@@ -14,6 +14,7 @@
 #include "util/num.h"
 
 #include "events_truth.h"
+#include "lesson/lesson.h"
 
 static const struct {
     const char *method;
@@ -210,6 +211,24 @@ START_TEST(modes_deterministic)
 }
 END_TEST
 
+/* A lesson page says @events locate or step; anything else is an error at
+ * its line and column naming both. */
+START_TEST(lesson_directive)
+{
+    static const char good[] = "title: t\n--- p\n@scene bounce\n@events locate\nText.\n--- q\n@events step\nMore.\n";
+    static const char bad[] = "title: t\n--- p\n@scene bounce\n@events sometimes\nText.\n";
+    sw_lesson l;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_lesson_parse("good", good, sizeof good - 1, &l, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(l.pages[0].events, 1);
+    ck_assert_int_eq(l.pages[1].events, 0);
+    sw_lesson_free(&l);
+    ck_assert_int_eq(sw_lesson_parse("bad", bad, sizeof bad - 1, &l, err, sizeof err), SW_EINVAL);
+    ck_assert_msg(strstr(err, "bad:4:") && strstr(err, "locate or step"), "%s", err);
+    sw_lesson_free(&l);
+}
+END_TEST
+
 Suite *make_events_suite(void);
 Suite *make_events_suite(void)
 {
@@ -220,6 +239,7 @@ Suite *make_events_suite(void)
     tcase_add_loop_test(tc, contact_times, 0, 2);
     tcase_add_test(tc, crossing_times);
     tcase_add_test(tc, modes_deterministic);
+    tcase_add_test(tc, lesson_directive);
     tcase_set_timeout(tc, 60);
     suite_add_tcase(s, tc);
     return s;

@@ -68,7 +68,7 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
     double *y = malloc((size_t)sys.ode->dim * sizeof *y);
     if (y && sc->exact && sc->exact(&sys, sc->duration, y) == 0)
         ok = 1;
-    else if (sc->reference)
+    else if (sc->reference || sw_system_event_count(&sys) > 0) /* events: located in the reference */
         ok = 1;
     else
         snprintf(why, whylen, "%s has no exact solution%s and no trustworthy reference (events at "
@@ -134,7 +134,7 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
     }
     if (sc->exact && sc->exact(&sys, r->t_report, r->truth) == 0) {
         r->source = SW_BENCH_EXACT;
-    } else if (sc->reference) {
+    } else if (sc->reference || sw_system_event_count(&sys) > 0) {
         /* The reference, and a 10x looser run whose distance from it bounds
          * the reference's own error from above (an embedded
          * method's global error scales roughly with the tolerance); both within the budget. */

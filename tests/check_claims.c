@@ -18,14 +18,17 @@
  * computing the rows that bisect for a stability limit. */
 #include "claims.h"
 
-/* The three tables as one. */
-static size_t claim_count(void) { return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n; }
+/* The four tables as one. */
+static size_t claim_count(void) { return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n; }
 static const claim *claim_at(size_t i)
 {
     if (i < sw_claims_a_n)
         return &sw_claims_a[i];
     i -= sw_claims_a_n;
-    return i < sw_claims_b_n ? &sw_claims_b[i] : &sw_claims_d[i - sw_claims_b_n];
+    if (i < sw_claims_b_n)
+        return &sw_claims_b[i];
+    i -= sw_claims_b_n;
+    return i < sw_claims_d_n ? &sw_claims_d[i] : &sw_claims_e[i - sw_claims_d_n];
 }
 
 /* ---- reading the texts ------------------------------------------------- */

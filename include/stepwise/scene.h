@@ -25,6 +25,35 @@ typedef enum sw_system_kind { SW_SYS_FLOW = 1, SW_SYS_PARTICLES = 2 } sw_system_
 typedef struct sw_view { double xmin, xmax, ymin, ymax; } sw_view;
 
 struct sw_scene;
+struct sw_system;
+
+/* Where a scene's right-hand side is not smooth (docs/events.md): event
+ * functions g_k(t, y), 0 <= k < count, each meeting its event where it
+ * crosses zero in the declared direction, and the jump the state takes
+ * there. With events located (sw_sim_set_events) a step that crosses one is
+ * cut at the crossing, the jump applied and the step completed, so every
+ * method keeps its order; stepped over, the scene's post_step meets it at
+ * the step's end instead (first order). */
+typedef struct sw_scene_events {
+    /* How many event functions the built system has; 0: none for these parameters. */
+    int (*count)(const struct sw_system *sys);
+    /* g_k at (t, y): the event is where it crosses zero. */
+    double (*g)(const struct sw_system *sys, int k, double t, const double *y);
+    /* -1: only where g falls through zero, +1: only where it rises, 0: either. */
+    int direction;
+    /* Apply event k's jump to y (reached at the crossing, g_k just past zero);
+     * NULL: nothing jumps in the state, the step must only end there. */
+    void (*jump)(struct sw_system *sys, int k, double t, double *y);
+    /* NULL, or: set the scene's discrete state for location from y (locate
+     * 1: each side's force extended smoothly until an event's jump switches
+     * it, so a step's stages never straddle a jump in f; 0: off, the plain
+     * right-hand side). The sim calls it when the mode is set, on reset and
+     * when the state is replaced. */
+    void (*arm)(struct sw_system *sys, const double *y, int locate);
+    /* What stepping over the events does to a method's order, one sentence
+     * ending "see --events" (bench prints it); NULL: these parameters meet none. */
+    const char *(*breaks)(const struct sw_system *sys);
+} sw_scene_events;
 
 /* A built scene: the system the solver steps plus the parameter values. */
 typedef struct sw_system {
@@ -79,6 +108,8 @@ typedef struct sw_scene {
     int (*post_step)(sw_system *sys, double t, double *y);
     /* Whether particle i exists at time t (fireworks); NULL: always. */
     int (*alive)(const sw_system *sys, double t, const double *y, int i);
+    /* Where the right-hand side is not smooth; NULL: nowhere. */
+    const sw_scene_events *events;
 } sw_scene;
 
 int sw_scene_count(void);
@@ -102,6 +133,12 @@ void sw_scene_fill(const sw_scene *sc, const double *p, double *out);
 int sw_scene_set(const sw_scene *sc, double *p, const char *assignment, char *err, size_t errlen);
 /* Check one value against a parameter's declared range. */
 int sw_scene_check_value(const sw_scene *sc, int index, double value, char *err, size_t errlen);
+
+/* Event functions of the built system (0 when the scene declares none). */
+int sw_system_event_count(const sw_system *sys);
+/* The sentence saying what stepping over its events does to the order, or
+ * NULL when the built system meets none. */
+const char *sw_system_events_break(const sw_system *sys);
 
 /* Build sc with parameter values p (NULL: defaults); 0 or a status. */
 int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *err, size_t errlen);

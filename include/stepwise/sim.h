@@ -10,6 +10,11 @@
 #include "stepwise/integrator.h"
 #include "stepwise/scene.h"
 
+/* How a sim meets its scene's events (stepwise/scene.h): at the end of the
+ * step that crossed them (today's handling, first order), or located inside
+ * the step, which is cut there, jumped and completed (the method's order). */
+typedef enum sw_events_mode { SW_EVENTS_STEP = 0, SW_EVENTS_LOCATE = 1 } sw_events_mode;
+
 typedef struct sw_sim {
     sw_system sys;
     sw_stepper *stepper;   /* the method's running state, owned (opaque) */
@@ -25,6 +30,8 @@ typedef struct sw_sim {
     long blow_step;
     double blow_time;
     char blow_reason[SW_ERRLEN];
+    sw_events_mode events; /* SW_EVENTS_STEP unless sw_sim_set_events says otherwise */
+    struct sw_sim_events *ev; /* location workspace (private), NULL in step mode */
 } sw_sim;
 
 /* Limits on the step that every front end accepts. */
@@ -37,6 +44,18 @@ int sw_sim_init(sw_sim *s, const sw_scene *sc, const double *p, const sw_integra
 void sw_sim_free(sw_sim *s);
 /* Change the method and keep the state and time; 0 or SW_EINVAL. */
 int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errlen);
+/* Meet events by mode from now on (kept across method changes and resets);
+ * 0, or SW_ENOMEM with err filled (the location workspace). */
+int sw_sim_set_events(sw_sim *s, sw_events_mode mode, char *err, size_t errlen);
+/* Events located so far (0 in step mode), and the time of the last one
+ * (NaN when none). */
+long sw_sim_events_located(const sw_sim *s);
+double sw_sim_events_last_time(const sw_sim *s);
+/* "step" or "locate". */
+const char *sw_events_mode_name(sw_events_mode mode);
+/* Parse "step" or "locate"; 0, or SW_EINVAL with err naming what is allowed. */
+int sw_events_mode_parse(const char *text, sw_events_mode *out, char *err, size_t errlen);
+
 /* Set the tolerances (kept across method changes and resets). */
 void sw_sim_set_tolerances(sw_sim *s, double rtol, double atol);
 /* Accepted and rejected steps of an adaptive method so far (0 for the others). */

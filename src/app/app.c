@@ -77,7 +77,10 @@ static void free_sims(sw_app *a)
 
 static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, size_t errlen)
 {
-    return sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
+    int rc = sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
+    if (rc == SW_OK && (rc = sw_sim_set_events(s, a->events, err, errlen)) != SW_OK)
+        sw_sim_free(s);
+    return rc;
 }
 
 static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
@@ -242,6 +245,15 @@ int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n)
 
 void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
 
+void sw_app_set_events(sw_app *a, sw_events_mode mode)
+{
+    char err[SW_ERRLEN];
+    a->events = mode;
+    for (int i = 0; i < a->nsims; i++)
+        if (sw_sim_set_events(&a->sims[i], mode, err, sizeof err) != SW_OK)
+            snprintf(a->message, sizeof a->message, "%s", err);
+}
+
 /* A sim whose plugin failed goes on under the scene's method from t = 0;
  * the message says so (set after the reset, which may report a recording). */
 static void guard_plugins(sw_app *a)
@@ -402,6 +414,19 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
             snprintf(a->message, sizeof a->message, "ghost on: the exact solution");
         else
             snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
+        return 1;
+    }
+    case SW_ACT_EVENTS: {
+        sw_app_set_events(a, a->events == SW_EVENTS_LOCATE ? SW_EVENTS_STEP : SW_EVENTS_LOCATE);
+        if (sw_system_event_count(&a->sims[0].sys) == 0)
+            snprintf(a->message, sizeof a->message, "events %s (this scene has none: its forces are smooth)",
+                     a->events == SW_EVENTS_LOCATE ? "located" : "stepped over");
+        else if (a->events == SW_EVENTS_LOCATE)
+            snprintf(a->message, sizeof a->message,
+                     "events located: a step that crosses one is cut there (order kept)");
+        else
+            snprintf(a->message, sizeof a->message,
+                     "events stepped over: met at step ends (first order)");
         return 1;
     }
     case SW_ACT_TRAILS:

@@ -74,6 +74,7 @@ typedef struct sw_app {
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
     int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
     int compare, ghost, trails, graph, braille, panel, help, paused;
+    sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
     void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
     int param_sel;
@@ -139,6 +140,8 @@ int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_inte
  * lesson's @compare NAME [NAME]). */
 int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n);
 void sw_app_set_ghost(sw_app *a, int on);
+/* Meet events by mode in every sim from now on (state and time kept). */
+void sw_app_set_events(sw_app *a, sw_events_mode mode);
 /* Apply an action (arg: which of its keys, 1-based: the pick keys' place
  * is the integrator's); sets a->message. Returns 1 when it changed anything. */
 int sw_app_apply(sw_app *a, sw_action act, int arg);

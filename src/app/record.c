@@ -23,6 +23,10 @@ static int replay(sw_app *a, long steps, char *err, size_t errlen)
     if (sw_sim_init(&s, a->scene, a->p, live->method, live->dt, err, errlen) != SW_OK)
         return SW_EINVAL;
     sw_sim_set_tolerances(&s, live->rtol, live->atol);
+    if (sw_sim_set_events(&s, live->events, err, errlen) != SW_OK) {
+        sw_sim_free(&s);
+        return SW_ENOMEM;
+    }
     int rc = sw_trace_open(&w, a->record_path, err, errlen);
     if (rc == SW_OK)
         rc = sw_trace_begin(&w, &s, &spec, err, errlen);

@@ -63,6 +63,8 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_compare(a, pg->compare, NULL, NULL);
     if (pg->ghost >= 0)
         sw_app_set_ghost(a, pg->ghost);
+    if (pg->events >= 0)
+        sw_app_set_events(a, pg->events ? SW_EVENTS_LOCATE : SW_EVENTS_STEP);
     if (pg->paused >= 0)
         a->paused = pg->paused;
     if (pg->speed > 0)

@@ -59,6 +59,10 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "accepted %ld rejected %ld", acc, rej);
         snprintf(x->brief, sizeof x->brief, "acc %ld rej %ld", acc, rej);
     }
+    if (i == 0 && sw_system_event_count(&s->sys) > 0 && (x = add(f, &n, max, 4))) {
+        snprintf(x->full, sizeof x->full, "events %s", sw_events_mode_name(s->events));
+        snprintf(x->brief, sizeof x->brief, "ev %s", s->events == SW_EVENTS_LOCATE ? "loc" : "step");
+    }
     if (s->blown && (x = add(f, &n, max, 10))) {
         snprintf(x->full, sizeof x->full, "BLOWN UP at step %ld", s->blow_step);
         snprintf(x->brief, sizeof x->brief, "BLOWN UP");

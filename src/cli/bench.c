@@ -17,6 +17,7 @@
 static const char usage_text[] =
     "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
     "                      [--set NAME=VALUE] [--quick] [--repeats N] [--plugin FILE]\n"
+    "                      [--events locate|step]\n"
     "\n"
     "Work-precision report: for each scene with an exact solution or a tight reference\n"
     "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
@@ -37,6 +38,8 @@ static const char usage_text[] =
     "  --quick             the small sweep the UI uses (6-8 step sizes, one run each)\n"
     "  --repeats N         timing repeats per point, 1..15 (default 3)\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
+    "  --events MODE       locate: cut steps at contacts and crossings (every method keeps\n"
+    "                      its order); step: meet them at step ends (default, first order)\n"
     "(The engine benchmark, ns per particle-step against hand-written loops, is\n"
     "`make bench` in the source tree.)\n";
 
@@ -127,6 +130,42 @@ static const char *stop_note(int stop)
     }
 }
 
+/* Under the orders: what the scene's events do to them (its own sentence)
+ * when the runs stepped over them, or that they were located. */
+static void print_events(const sw_bench_report *r)
+{
+    sw_system sys;
+    char err[SW_ERRLEN];
+    if (sw_system_build(&sys, r->scene, r->p, err, sizeof err) != SW_OK)
+        return;
+    const char *breaks = sw_system_events_break(&sys);
+    if (breaks && r->events == SW_EVENTS_STEP) {
+        /* the sentence in lines of at most 78 columns */
+        const char *lead = "   not smooth: ";
+        size_t col = 0;
+        fputs(lead, stdout);
+        col = strlen(lead);
+        for (const char *w = breaks; *w;) {
+            size_t len = strcspn(w, " ");
+            if (col > strlen(lead) && col + 1 + len > 78) {
+                printf("\n%*s", (int)strlen(lead), "");
+                col = strlen(lead);
+            } else if (col > strlen(lead)) {
+                putchar(' ');
+                col++;
+            }
+            printf("%.*s", (int)len, w);
+            col += len;
+            w += len;
+            w += strspn(w, " ");
+        }
+        putchar('\n');
+    }
+    else if (sw_system_event_count(&sys) > 0 && r->events == SW_EVENTS_LOCATE)
+        printf("   events located: steps end at each contact or crossing (--events locate)\n");
+    sw_system_free(&sys);
+}
+
 static void print_report(const sw_bench_report *r, const char *skipped)
 {
     const sw_scene *sc = r->scene;
@@ -178,6 +217,7 @@ static void print_report(const sw_bench_report *r, const char *skipped)
             printf("   %-18s   n/a  (fewer than 2 points between round-off and 1e-2 of the state%s)\n",
                    s->method->name, stop_note(s->stop));
     }
+    print_events(r);
     printf("\n   cheapest measured run to reach each error level:\n");
     static const double levels[] = { 1e-2, 1e-4, 1e-6, 1e-8 };
     for (int k = 0; k < 4; k++) {
@@ -250,7 +290,8 @@ int sw_cmd_bench(int argc, char **argv)
         const char *a = argv[i];
         int takes = strcmp(a, "--integrators") == 0 || strcmp(a, "--csv") == 0 ||
                     strcmp(a, "--svg") == 0 || strcmp(a, "--set") == 0 ||
-                    strcmp(a, "--repeats") == 0 || strcmp(a, "--plugin") == 0;
+                    strcmp(a, "--repeats") == 0 || strcmp(a, "--plugin") == 0 ||
+                    strcmp(a, "--events") == 0;
         if (takes && i + 1 >= argc)
             return sw_cli_error("%s needs a value; see 'stepwise bench --help'", a);
         if (strcmp(a, "--integrators") == 0)
@@ -269,11 +310,14 @@ int sw_cmd_bench(int argc, char **argv)
             if (nplugins == 8)
                 return sw_cli_error("at most 8 --plugin options");
             plugins[nplugins++] = argv[++i];
+        } else if (strcmp(a, "--events") == 0) {
+            if (sw_cli_events(argv[++i], &opts.events) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
         } else if (strcmp(a, "--quick") == 0)
             quick = 1;
         else if (a[0] == '-')
             return sw_cli_error("bench: unknown option '%.40s'; options: --integrators, --csv, --svg, "
-                                "--set, --quick, --repeats, --plugin, --help", a);
+                                "--set, --quick, --repeats, --plugin, --events, --help", a);
         else {
             const sw_scene *sc;
             if (sw_cli_scene(a, &sc) != SW_EXIT_OK)
@@ -344,7 +388,9 @@ int sw_cmd_bench(int argc, char **argv)
     for (int i = 0; i < n; i++) {
         char err[SW_ERRLEN], skipped[512];
         sw_bench_report *r = &reports[i];
-        if (sw_bench_init(r, scenes[i], params[i], err, sizeof err) != SW_OK ||
+        int rc = sw_bench_init(r, scenes[i], params[i], err, sizeof err);
+        r->events = opts.events;
+        if (rc != SW_OK ||
             sw_bench_sweep_all(r, nmethods ? methods : NULL, nmethods, &cfg, err, sizeof err) != SW_OK) {
             sw_cli_note("%s", err);
             sw_bench_free(r);

@@ -36,6 +36,7 @@ typedef struct sw_run_opts {
     const sw_integrator *method;  /* NULL: the scene's default */
     double dt;                    /* 0: the scene's default */
     double rtol, atol;            /* rk45 tolerances */
+    sw_events_mode events;        /* --events (default step) */
     const char *sets[64];         /* --set assignments, applied once the scene is known */
     int nsets;
 } sw_run_opts;
@@ -54,6 +55,12 @@ int sw_cli_range(const char *flag, const char *text, double min, double max, con
                  double *out);
 /* Parse a run tolerance (rtol, atol) in [SW_TRACE_TOL_MIN, 1] for flag `flag`. */
 int sw_cli_tolerance(const char *flag, const char *text, double *out);
+/* Parse --events: "locate" or "step"; else print what is allowed and return SW_EXIT_USAGE. */
+int sw_cli_events(const char *text, sw_events_mode *out);
+/* The help line every command with --events shows. */
+#define SW_CLI_EVENTS_HELP \
+    "      --events MODE      locate: cut steps at contacts and crossings (every method keeps\n" \
+    "                         its order); step: meet them at step ends (default, first order)\n"
 /* Parse a whole number in [min, max] for flag `flag`. */
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */

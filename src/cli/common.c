@@ -129,6 +129,14 @@ int sw_cli_add_set(sw_run_opts *o, const char *assignment)
     return SW_EXIT_OK;
 }
 
+int sw_cli_events(const char *text, sw_events_mode *out)
+{
+    char err[SW_ERRLEN];
+    if (sw_events_mode_parse(text, out, err, sizeof err) != SW_OK)
+        return sw_cli_error("--events: %s", err);
+    return SW_EXIT_OK;
+}
+
 int sw_cli_finish_opts(sw_run_opts *o)
 {
     char err[SW_ERRLEN];
@@ -153,6 +161,10 @@ int sw_cli_sim(sw_sim *s, const sw_run_opts *o)
     if (sw_sim_init(s, o->scene, o->p, o->method, o->dt, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
     sw_sim_set_tolerances(s, o->rtol, o->atol);
+    if (sw_sim_set_events(s, o->events, err, sizeof err) != SW_OK) {
+        sw_sim_free(s);
+        return sw_cli_error("%s", err);
+    }
     return SW_EXIT_OK;
 }
 

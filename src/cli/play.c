@@ -36,6 +36,8 @@ static const char play_help[] =
     "      --view VIEW         start with this view: scene, phase or region\n"
     "      --lanes             compare side by side;  --follow  the camera follows the particles\n"
     "      --zoom X            the view's size times X (2: zoomed out)\n"
+    "      --events MODE       locate: cut steps at contacts and crossings (every method\n"
+    "                          keeps its order); step: meet them at step ends (default)\n"
     "  -h, --help              this help\n";
 
 int sw_cli_play(sw_app *a, const sw_play_hooks *hooks)
@@ -89,6 +91,7 @@ int sw_cmd_play(int argc, char **argv)
         { "ghost", no_argument, NULL, 'g' },            { "help", no_argument, NULL, 'h' },
         { "view", required_argument, NULL, 'V' },       { "lanes", no_argument, NULL, 'L' },
         { "follow", no_argument, NULL, 'F' },           { "zoom", required_argument, NULL, 'Z' },
+        { "events", required_argument, NULL, 'E' },
         { NULL, 0, NULL, 0 },
     };
     sw_run_opts o;
@@ -129,6 +132,7 @@ int sw_cmd_play(int argc, char **argv)
             else return sw_cli_error("--view '%.40s' is not a view: give scene, phase or region", optarg);
             break;
         case 'L': lanes = 1; break;
+        case 'E': if (sw_cli_events(optarg, &o.events)) return SW_EXIT_USAGE; break;
         case 'F': follow = 1; break;
         case 'Z':
             if (sw_cli_positive("--zoom", optarg, &zoom)) return SW_EXIT_USAGE;
@@ -159,6 +163,7 @@ int sw_cmd_play(int argc, char **argv)
     if (sw_app_init(&a, o.scene, o.p, o.method, o.dt, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
     a.speed = speed;
+    sw_app_set_events(&a, o.events);
     if (compare)
         sw_app_set_compare(&a, 1, NULL, NULL);
     if (ghost)

@@ -14,7 +14,7 @@
 static const char record_help[] =
     "usage: stepwise record SCENE [--integrator NAME] [--dt H] [--steps N | --until T]\n"
     "                       [--set PARAM=VALUE]... [--every K] [--rtol R --atol A]\n"
-    "                       [--plugin PATH.so]... [-o FILE]\n"
+    "                       [--events locate|step] [--plugin PATH.so]... [-o FILE]\n"
     "\n"
     "Runs SCENE headless and writes a step trace: CSV with metadata that regenerates\n"
     "the run (see docs/trace-format.md). A blow-up is a result, not an error: the\n"
@@ -31,6 +31,7 @@ static const char record_help[] =
     "  -k, --every K          record step 0, every K-th step and the last (default 1)\n"
     "      --rtol R           rk45 and dop853 relative tolerance (default 1e-06)\n"
     "      --atol A           rk45 and dop853 absolute tolerance (default 1e-09)\n"
+    SW_CLI_EVENTS_HELP
     "      --plugin PATH.so   load a student integrator (docs/plugins.md); repeatable;\n"
     "                         without --integrator the last one loaded is used\n"
     "  -o, --output FILE      write to FILE instead of standard output; FILE appears only\n"
@@ -61,6 +62,7 @@ int sw_cmd_record(int argc, char **argv)
         { "rtol", required_argument, NULL, 'r' },
         { "atol", required_argument, NULL, 'a' },
         { "plugin", required_argument, NULL, 'p' },
+        { "events", required_argument, NULL, 'e' },
         { "output", required_argument, NULL, 'o' },
         { "help", no_argument, NULL, 'h' },
         { NULL, 0, NULL, 0 },
@@ -84,6 +86,7 @@ int sw_cmd_record(int argc, char **argv)
         case 'r': rc = sw_cli_tolerance("--rtol", optarg, &o.rtol); break;
         case 'a': rc = sw_cli_tolerance("--atol", optarg, &o.atol); break;
         case 'o': output = optarg; break;
+        case 'e': rc = sw_cli_events(optarg, &o.events); break;
         case 'p':
             if (nplugins == 8)
                 return sw_cli_error("record: at most 8 --plugin options");

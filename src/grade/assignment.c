@@ -217,7 +217,12 @@ int sw_assignment_sim(const sw_assignment *a, const sw_integrator *mth, sw_sim *
         return rc;
     }
     sw_sim_set_tolerances(s, a->meta.rtol, a->meta.atol);
-    return SW_OK;
+    rc = sw_sim_set_events(s, a->meta.events, msg, sizeof msg);
+    if (rc != SW_OK) {
+        sw_sim_free(s);
+        snprintf(err, errlen, "%s", msg);
+    }
+    return rc;
 }
 
 static void add_diff(sw_header_diff *out, int max, int *n, const char *what, const char *got,
@@ -316,6 +321,9 @@ int sw_assignment_diff(const sw_assignment *a, const sw_trace_meta *m, const sw_
         if (m->atol != w->atol)
             add_num(out, max, &n, "atol", m->atol, w->atol, m->atol_line);
     }
+    if (m->events != w->events)
+        add_diff(out, max, &n, "events", sw_events_mode_name(m->events), sw_events_mode_name(w->events),
+                 m->events_line);
     /* The numbers compare only when the columns are the same ones. */
     sw_system want_sys;
     char err[SW_ERRLEN];

@@ -326,6 +326,13 @@ static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
                      gm->scene->name, got.ncols, req->against, ref.meta.scene->name, ref.ncols);
             rc = SW_EINVAL;
         }
+        if (rc == SW_OK && ref.meta.events != gm->events) {
+            snprintf(msg, sizeof msg, "%s was recorded with events %s and %s with events %s: runs "
+                     "that meet events differently cannot be compared (record with --events %s)",
+                     req->trace, sw_events_mode_name(gm->events), req->against,
+                     sw_events_mode_name(ref.meta.events), sw_events_mode_name(ref.meta.events));
+            rc = SW_EINVAL;
+        }
         if (rc == SW_OK)
             rc = sw_trace_read_header(&ref, msg, sizeof msg);
         src_e.reader = &ref;

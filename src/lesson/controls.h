@@ -34,7 +34,8 @@ enum {
     G(PARAMS,     "params")     \
     G(RECORD,     "record")     \
     G(PLOT,       "plot")       \
-    G(VIEW,       "view")
+    G(VIEW,       "view")       \
+    G(EVENTS,     "events")
 
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
 
@@ -95,6 +96,8 @@ enum {
     X(PHASE_PREV, VIEW, PLAY, "previous particle", SW_KEYS('<'), NULL, NULL) \
     X(PHASE_NEXT, VIEW, PLAY, "next particle", SW_KEYS('>'), NULL, NULL) \
     X(REGION, VIEW, PLAY, "stability region", SW_KEYS('s'), "s", "stability region of the method, dt x eigenvalues") \
+    X(EVENTS, EVENTS, PLAY, "events", SW_KEYS('x'), \
+      "x", "events: locate contacts and crossings / step over them") \
     X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help (again: next page)") \
     X(QUIT, NONE, PLAY, "quit", SW_KEYS('q'), "q", "quit") \
     X(PAGE_NEXT, NONE, LESSON, "next page", SW_KEYS('n', SW_KEY_PGDN), \

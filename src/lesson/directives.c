@@ -361,6 +361,23 @@ static void i_ghost(sw_lesson_page *pg) { pg->ghost = -1; }
 static int d_pause(sw_lp_parser *ps, size_t pos) { return sw_lp_on_off(ps, pos, "@pause", &sw_lp_page(ps)->paused); }
 static void i_pause(sw_lesson_page *pg) { pg->paused = -1; }
 
+/* @events locate|step: how the page's sims meet contacts and crossings. */
+static int d_events(sw_lp_parser *ps, size_t pos)
+{
+    char word[SW_LESSON_NAME_MAX];
+    size_t at;
+    if (sw_lp_one_word(ps, pos, "@events", "locate or step", word, &at) != SW_OK)
+        return ps->status;
+    if (strcmp(word, "locate") == 0)
+        sw_lp_page(ps)->events = 1;
+    else if (strcmp(word, "step") == 0)
+        sw_lp_page(ps)->events = 0;
+    else
+        return FAIL(ps, at, "@events takes locate or step, not '%s'", word);
+    return SW_OK;
+}
+static void i_events(sw_lesson_page *pg) { pg->events = -1; }
+
 static int d_reset(sw_lp_parser *ps, size_t pos)
 {
     size_t start, len;
@@ -435,7 +452,8 @@ static const struct directive {
     { "scene", d_scene, 0, NULL }, { "set", d_set, 0, NULL }, { "integrator", d_integrator, 0, NULL },
     { "dt", d_dt, 0, NULL }, { "compare", d_compare, 0, i_compare }, { "ghost", d_ghost, 1, i_ghost },
     { "pause", d_pause, 1, i_pause }, { "reset", d_reset, 1, NULL }, { "speed", d_speed, 1, NULL },
-    { "view", d_view, 1, i_view }, { "lock", d_lock_on, 0, NULL }, { "unlock", d_lock_off, 0, NULL },
+    { "view", d_view, 1, i_view }, { "events", d_events, 1, i_events }, { "lock", d_lock_on, 0, NULL },
+    { "unlock", d_lock_off, 0, NULL },
     { "goal", sw_lp_goal, 0, NULL }, { "hint", d_hint, 0, NULL }, { "question", d_question, 0, NULL },
     { "answer", d_answer, 0, NULL }, { "correct", d_correct, 0, NULL },
 };

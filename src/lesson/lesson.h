@@ -164,6 +164,7 @@ typedef struct sw_lesson_page {
     const sw_integrator *compare_with[SW_LESSON_MAX_COMPARE]; /* methods run beside */
     int ncompare_with;        /* 0: the app's own choice */
     int ghost;                /* -1 / 0 / 1 as compare */
+    int events;               /* -1: leave as is; SW_EVENTS_STEP or SW_EVENTS_LOCATE (@events) */
     int paused;               /* -1 / 0 / 1: start paused or running */
     double speed;             /* simulated seconds per wall second; 0: leave as is */
     int view;                 /* SW_LESSON_VIEW_*; -1: leave as is */

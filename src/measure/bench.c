@@ -68,7 +68,7 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
     double *y = malloc((size_t)sys.ode->dim * sizeof *y);
     if (y && sc->exact && sc->exact(&sys, sc->duration, y) == 0)
         ok = 1;
-    else if (sc->reference)
+    else if (sc->reference || sw_system_event_count(&sys) > 0) /* events: located in the reference */
         ok = 1;
     else
         snprintf(why, whylen, "%s has no exact solution%s and no trustworthy reference (events at "
@@ -90,6 +90,11 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
     if (rc != SW_OK)
         return rc;
     sw_sim_set_tolerances(&s, rtol, atol);
+    /* events located: only then do tight runs converge through them */
+    if ((rc = sw_sim_set_events(&s, SW_EVENTS_LOCATE, err, errlen)) != SW_OK) {
+        sw_sim_free(&s);
+        return rc;
+    }
     if (sw_sim_run_until(&s, r->t_report)) {
         snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
                  r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
@@ -129,7 +134,7 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
     }
     if (sc->exact && sc->exact(&sys, r->t_report, r->truth) == 0) {
         r->source = SW_BENCH_EXACT;
-    } else if (sc->reference) {
+    } else if (sc->reference || sw_system_event_count(&sys) > 0) {
         /* The reference, and a 10x looser run whose distance from it bounds
          * the reference's own error from above (an embedded
          * method's global error scales roughly with the tolerance); both within the budget. */
@@ -200,6 +205,11 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
             return rc;
         if (rtol > 0) {
             sw_sim_set_tolerances(&s, rtol, 1e-3 * rtol);
+        }
+        rc = sw_sim_set_events(&s, r->events, err, errlen);
+        if (rc != SW_OK) {
+            sw_sim_free(&s);
+            return rc;
         }
         double t0 = sw_clock_now();
         sw_sim_run_until(&s, r->t_report);

@@ -78,6 +78,7 @@ typedef struct sw_bench_report {
     sw_spectrum spectrum; /* the linearisation's modes at the start (n = 0: none) */
     int nseries;
     sw_bench_series series[SW_BENCH_MAX_METHODS];
+    sw_events_mode events; /* how the sweep's runs meet events (set after init; default step) */
 } sw_bench_report;
 
 /* The `stepwise bench` sweep: 8 to 16 step sizes, 3 repeats (default run < 30 s). */

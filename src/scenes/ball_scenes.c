@@ -257,6 +257,55 @@ static sw_view bounce_view(const sw_system *sys)
     return (sw_view){ -0.3, BOX_W + 0.3, -0.3, BOX_H };
 }
 
+/* Events: ball i meets the floor (k = 3i), the left wall (3i + 1) and the
+ * right wall (3i + 2) where its distance to it falls through zero. */
+static int bounce_event_count(const sw_system *sys) { return 3 * sys->n; }
+
+static double bounce_event_g(const sw_system *sys, int k, double t, const double *y)
+{
+    (void)t;
+    const sw_walls *w = &sys->particles.walls;
+    const double *x = y + 2 * (k / 3);
+    switch (k % 3) {
+    case 0: return x[1] - w->ymin;
+    case 1: return x[0] - w->xmin;
+    default: return w->xmax - x[0];
+    }
+}
+
+/* At the contact (the ball a rounding error past the wall): the normal
+ * velocity reversed and scaled by e, the overshoot reflected as the
+ * step-boundary contact does, so the ball resumes inside. */
+static void bounce_event_jump(sw_system *sys, int k, double t, double *y)
+{
+    (void)t;
+    const sw_walls *w = &sys->particles.walls;
+    int n = sys->n, i = k / 3, axis = k % 3 == 0;
+    double wall = k % 3 == 0 ? w->ymin : k % 3 == 1 ? w->xmin : w->xmax;
+    double sign = k % 3 == 2 ? 1.0 : -1.0; /* outward normal along the axis */
+    double *x = &y[2 * i + axis], *v = &y[2 * n + 2 * i + axis];
+    double over = sign * (*x - wall);
+    if (over > 0)
+        *x = wall - sign * w->e * over;
+    if (sign * *v > 0)
+        *v = -w->e * *v;
+}
+
+static const char *bounce_event_breaks(const sw_system *sys)
+{
+    (void)sys;
+    return "the velocity jumps where a ball meets a wall or the floor: every method is limited "
+           "to first order unless steps end at the contact - see --events";
+}
+
+static const sw_scene_events bounce_events = {
+    .count = bounce_event_count,
+    .g = bounce_event_g,
+    .direction = -1,
+    .jump = bounce_event_jump,
+    .breaks = bounce_event_breaks,
+};
+
 const sw_scene sw_scene_bounce = {
     .name = "bounce",
     .kind = SW_SYS_PARTICLES,
@@ -274,6 +323,7 @@ const sw_scene sw_scene_bounce = {
     .energy_floor = bounce_floor,
     .view = bounce_view,
     .post_step = bounce_post,
+    .events = &bounce_events,
 };
 
 /* ---- fireworks: bursts of particles with lifetimes ----------------------- */

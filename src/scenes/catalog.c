@@ -179,3 +179,15 @@ int sw_system_reset(sw_system *sys, char *err, size_t errlen)
     sw_system_free(sys);
     return sw_system_build(sys, sc, p, err, errlen);
 }
+
+int sw_system_event_count(const sw_system *sys)
+{
+    const sw_scene_events *ev = sys->scene->events;
+    return ev ? ev->count(sys) : 0;
+}
+
+const char *sw_system_events_break(const sw_system *sys)
+{
+    const sw_scene_events *ev = sys->scene->events;
+    return ev && ev->breaks && ev->count(sys) > 0 ? ev->breaks(sys) : NULL;
+}

@@ -3,7 +3,9 @@
  * and a chain of masses between two anchors. Only springs, gravity when
  * asked for, and nothing else. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "stepwise/base.h"
@@ -22,6 +24,24 @@ static const sw_param spring_params[] = {
     { "stretch", 0.5, -100.0, 100.0, 0, "m", "initial stretch beyond the rest length" },
     { "g", 0.0, -100.0, 100.0, 0, "m/s^2", "gravity, pointing down (0: none)" },
 };
+
+/* The particle derivative the spring scene wraps (the same function for
+ * every particle system). */
+static sw_deriv_fn *particle_deriv;
+
+/* The particle derivative, with the side the mass is on when events are
+ * located (sys->extra[0]: +1, -1; 0 when not) extended smoothly past the
+ * anchor: there the engine's -k(|x| - rest)·sign(x) is corrected to
+ * -k(x - rest·side), until the crossing's jump switches the side. */
+static void spring_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    sw_system *sys = (sw_system *)(void *)((char *)ctx - offsetof(sw_system, particles));
+    particle_deriv(ctx, t, y, dydt);
+    double side = sys->extra[0];
+    double now = y[0] > 0 ? 1.0 : y[0] < 0 ? -1.0 : 0.0;
+    if (side != 0 && now != side)
+        dydt[2] += sys->p[SP_K] * sys->p[SP_REST] * (side - now) * sys->particles.inv_mass[0];
+}
 
 static int spring_build(sw_system *sys, char *err, size_t errlen)
 {
@@ -43,6 +63,14 @@ static int spring_build(sw_system *sys, char *err, size_t errlen)
     if (p[SP_G] != 0)
         sw_particles_add_gravity(&sys->particles, 0.0, -p[SP_G]);
     sys->y[0] = p[SP_REST] + p[SP_STRETCH];
+    sys->extra = calloc(1, sizeof *sys->extra); /* the side when events are located */
+    if (!sys->extra) {
+        snprintf(err, errlen, "out of memory for a spring");
+        return SW_ENOMEM;
+    }
+    sys->nextra = 1;
+    particle_deriv = sys->particles.ode.deriv;
+    sys->particles.ode.deriv = spring_deriv;
     return SW_OK;
 }
 
@@ -118,6 +146,51 @@ static int spring_exact(const sw_system *sys, double t, double *y)
     return 0;
 }
 
+/* Event: without gravity the mass moves on the line through its anchor
+ * (the origin), and where it passes the anchor the spring force -k(|x| -
+ * rest)·sign(x) jumps by 2·k·rest. Nothing jumps in the state; the step
+ * must end at the crossing so the next one starts on the smooth side, and
+ * the "jump" switches which side's force the derivative extends. */
+static int spring_event_count(const sw_system *sys)
+{
+    return sys->p[SP_G] == 0 && sys->p[SP_REST] > 0;
+}
+
+static double spring_event_g(const sw_system *sys, int k, double t, const double *y)
+{
+    (void)sys, (void)k, (void)t;
+    return y[0];
+}
+
+static void spring_event_arm(sw_system *sys, const double *y, int locate)
+{
+    sys->extra[0] = locate && spring_event_count(sys) ? (y[0] >= 0 ? 1.0 : -1.0) : 0.0;
+}
+
+/* The mass is just past the anchor: from now on its force is the far side's. */
+static void spring_event_jump(sw_system *sys, int k, double t, double *y)
+{
+    (void)k, (void)t;
+    sys->extra[0] = y[0] > 0 ? 1.0 : -1.0;
+}
+
+static const char *spring_event_breaks(const sw_system *sys)
+{
+    if (!spring_exact_fails(sys))
+        return NULL; /* the mass stays on its side */
+    return "the force jumps where the mass passes its anchor: every method is limited to first "
+           "order unless steps end at the crossing - see --events";
+}
+
+static const sw_scene_events spring_events = {
+    .count = spring_event_count,
+    .g = spring_event_g,
+    .direction = 0,
+    .jump = spring_event_jump,
+    .arm = spring_event_arm,
+    .breaks = spring_event_breaks,
+};
+
 static sw_view spring_view(const sw_system *sys)
 {
     const double *p = sys->p;
@@ -144,6 +217,7 @@ const sw_scene sw_scene_spring = {
     .energy_floor = spring_floor,
     .reference = 1,
     .view = spring_view,
+    .events = &spring_events,
 };
 
 /* ---- stiff-spring: a pendulum on a very stiff spring ------------------- */

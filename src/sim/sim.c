@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "engine/stepper.h"
+#include "sim/events.h"
 #include "stepwise/stepwise.h"
 
 /* Worked out on first use, behind a pointer so that const readers can. */
@@ -101,6 +102,7 @@ static void free_stepper(sw_sim *s)
 void sw_sim_free(sw_sim *s)
 {
     free_stepper(s);
+    sw_sim_events_free(s);
     free(s->derived);
     s->derived = NULL;
     sw_system_free(&s->sys);
@@ -148,6 +150,7 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
 void sw_sim_set_state(sw_sim *s, const double *y)
 {
     memcpy(s->sys.y, y, (size_t)s->sys.ode->dim * sizeof *y);
+    sw_sim_events_arm(s);
     sw_stepper_touch(s->stepper);
     s->energy0 = sw_sim_energy(s);
 }
@@ -167,6 +170,8 @@ int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
     s->blow_step = 0;
     s->blow_time = 0;
     s->blow_reason[0] = '\0';
+    sw_sim_events_reset(s);
+    sw_sim_events_arm(s);
     set_limits(s);
     return SW_OK;
 }
@@ -186,8 +191,9 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     double h = s->dt;
     if (t_stop > s->t && s->t + h > t_stop)
         h = t_stop - s->t;
-    double *y = s->sys.y;
-    int rc = sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
+    double *y = s->sys.y, t_start = s->t;
+    int locate = s->events == SW_EVENTS_LOCATE && s->ev;
+    int rc = locate ? sw_sim_locate_step(s, h) : sw_stepper_step(s->stepper, s->sys.ode, &s->t, y, h);
     if (rc != SW_OK) {
         /* The step did not run (a failed solve, a failed plugin): it is not
          * counted, so no trace has a row for it; the blow-up names it, at
@@ -197,7 +203,7 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
                    : (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
                                                       : "the implicit solve failed");
         s->blow_step = s->steps + 1;
-        s->blow_time = s->t + h;
+        s->blow_time = t_start + h;
         return 1;
     }
     s->steps++;
@@ -206,7 +212,10 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
     if (touched)
         sw_stepper_touch(s->stepper);
     int n = s->sys.ode->dim;
-    int beyond = (touched || !s->stepper->checked) ? sw_state_beyond(y, 0, n, s->stepper->limit_exp)
+    /* A step cut at an event changed the state between the method's steps:
+     * the last sub-step's check does not cover it all. */
+    int rescan = touched || (locate && sw_sim_events_cut(s));
+    int beyond = (rescan || !s->stepper->checked) ? sw_state_beyond(y, 0, n, s->stepper->limit_exp)
                                                    : s->stepper->beyond;
     if (!beyond)
         return 0;

@@ -388,5 +388,10 @@ int sw_trace_meta_sim(const sw_trace_reader *r, sw_sim *s, const sw_integrator *
         return rc;
     }
     sw_sim_set_tolerances(s, meta->rtol, meta->atol);
-    return SW_OK;
+    rc = sw_sim_set_events(s, meta->events, msg, sizeof msg);
+    if (rc != SW_OK) {
+        sw_sim_free(s);
+        snprintf(err, errlen, "%s", msg);
+    }
+    return rc;
 }

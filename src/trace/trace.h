@@ -125,6 +125,8 @@ typedef struct sw_trace_meta {
     long scene_line;
     double dt, rtol, atol;
     long dt_line, steps_line, every_line, rtol_line, atol_line; /* steps_line: steps or until */
+    sw_events_mode events;            /* "# events: locate"; step when absent */
+    long events_line;
     sw_trace_spec spec;
     char version[32];
     int diverged;                     /* a "# diverged:" line was seen */

@@ -16,13 +16,13 @@
 
 /* Keys a trace may carry, in the order record writes them. */
 static const char *const known_keys =
-    "version, scene, param NAME, integrator, dt, steps, until, every, rtol, atol, diverged, "
-    "student, note";
+    "version, scene, param NAME, integrator, dt, steps, until, every, rtol, atol, events, "
+    "diverged, student, note";
 static const char *const assignment_keys = "tolerance, tolerance COL, ignore, title, points WHAT";
 
 static const char *const key_names[K_COUNT] = { "version", "scene", "integrator", "dt", "steps",
                                                 "until", "every", "rtol", "atol", "diverged",
-                                                "student", "note" };
+                                                "student", "note", "events" };
 
 static int parse_positive(const sw_trace_reader *r, const char *key, const char *v, double *out,
                           char *err, size_t errlen)
@@ -184,6 +184,14 @@ int tr_meta_line(sw_trace_reader *r, meta_state *ms, char *err, size_t errlen)
     case K_DIVERGED:
         m->diverged = 1;
         break;
+    case K_EVENTS: {
+        char msg[SW_ERRLEN];
+        m->events_line = r->line;
+        if (sw_events_mode_parse(value, &m->events, msg, sizeof msg) != SW_OK)
+            return tr_fail(r, err, errlen, "'events' wants locate or step, not '%s'",
+                           tr_shown(value, strlen(value), show));
+        break;
+    }
     }
     return SW_OK;
 }

@@ -7,7 +7,7 @@
 
 /* Metadata keys, in the order record writes them. */
 enum { K_VERSION, K_SCENE, K_INTEGRATOR, K_DT, K_STEPS, K_UNTIL, K_EVERY, K_RTOL, K_ATOL,
-       K_DIVERGED, K_STUDENT, K_NOTE, K_COUNT };
+       K_DIVERGED, K_STUDENT, K_NOTE, K_EVENTS, K_COUNT };
 #define MAX_PARAM_LINES 32
 
 typedef struct pending_param {

@@ -95,6 +95,8 @@ int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spe
     fprintf(f, "# rtol: %s\n", num);
     fmt_exact(num, sizeof num, s->atol);
     fprintf(f, "# atol: %s\n", num);
+    if (s->events == SW_EVENTS_LOCATE) /* only then: step-mode traces keep their bytes */
+        fprintf(f, "# events: %s\n", sw_events_mode_name(s->events));
     for (int c = 0; c < ncols; c++) {
         sw_trace_colname(sys, c, num, sizeof num);
         fprintf(f, "%s%s", c ? "," : "", num);

@@ -3,7 +3,8 @@
  * lessons 1-5; claims_lessons_b.c: lessons 6-10; claims_docs.c: the README,
  * the man page, docs/stability.md, the guide, the scenes' strings); runs,
  * pages and measurements more than one part uses are in claims_runs.c and
- * claims_shared.c. */
+ * claims_shared.c; claims_events.c: event location's figures in
+ * docs/performance.md and lesson 4. */
 #ifndef SW_TEST_CLAIMS_H
 #define SW_TEST_CLAIMS_H
 
@@ -72,9 +73,9 @@ typedef struct claim {
 #define R_RATIO "the page's goal accepts this much around the figure"
 #define R_MATH "arithmetic the text does: to its last digit"
 
-/* The rows, in three tables. */
-extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[];
-extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n;
+/* The rows, in four tables. */
+extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[];
+extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

@@ -70,6 +70,7 @@ void sw_watch_init(sw_watch *w, double window, double raised)
     w->cur_min = INFINITY;
     w->first_max = -INFINITY;
     w->first_min = INFINITY;
+    w->first_mean = NAN;
     w->last = NAN;
 }
 
@@ -86,6 +87,8 @@ void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
     sw_watch_init(w, window, sw_watch_raised_level(s));
     if (bound_state(s))
         w->rebound = 0;
+    else
+        w->relative = (s->method->flags & SW_SYMPLECTIC) != 0;
 }
 
 static void close_window(sw_watch *w)
@@ -93,6 +96,7 @@ static void close_window(sw_watch *w)
     if (w->windows == 0) {
         w->first_max = w->cur_max;
         w->first_min = w->cur_min;
+        w->first_mean = w->cur_sum / (double)w->cur_n;
     }
     if (w->kept == SW_WATCH_WINDOWS) {
         memmove(w->peak, w->peak + 1, (SW_WATCH_WINDOWS - 1) * sizeof w->peak[0]);
@@ -115,8 +119,11 @@ static sw_watch_verdict judge(const sw_watch *w)
     if (k == 0 || w->windows < 2)
         return SW_WATCH_STEADY;
     /* energy raised and kept: the latest window averages past the raised
-     * level (nothing in these scenes adds energy) */
-    if (w->mean[k - 1] > w->raised)
+     * level (nothing in these scenes adds energy); for a symplectic method,
+     * past that many times what its first window averaged, its bounded
+     * swing included (sw_watch_raised_level) */
+    double level = w->relative && w->first_mean > 1 ? w->raised * w->first_mean : w->raised;
+    if (w->mean[k - 1] > level)
         return SW_WATCH_RAISED;
     /* energy that sank and came back: the latest window's mean a rebound
      * factor above the lowest before it */

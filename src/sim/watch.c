@@ -85,9 +85,10 @@ double sw_watch_sampling_floor(const sw_watch *w)
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
 {
     sw_watch_init(w, window, sw_watch_raised_level(s));
-    if (bound_state(s))
+    if (bound_state(s)) {
         w->rebound = 0;
-    else
+        w->escape = 2.0;
+    } else
         w->relative = (s->method->flags & SW_SYMPLECTIC) != 0;
 }
 
@@ -151,6 +152,12 @@ sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
         return w->verdict;
     if (!(m <= 1e3)) { /* NaN too */
         w->verdict = SW_WATCH_BOUND;
+        return w->verdict;
+    }
+    /* a bound orbit at E >= 0 is unbound at that step: a state the planet
+     * would leave from, however the next step brings it back */
+    if (w->escape > 0 && m >= w->escape) {
+        w->verdict = SW_WATCH_RAISED;
         return w->verdict;
     }
     w->max_seen = fmax(w->max_seen, m);

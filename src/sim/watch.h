@@ -16,7 +16,7 @@ typedef enum sw_watch_verdict {
     SW_WATCH_BOUND = 1,   /* M rose past 1000: the motion gained a thousandfold energy */
     SW_WATCH_RAISED = 2,  /* M averaged above the raised level over a whole window, or above
                              that many times its lowest window: growth a nonlinearity capped
-                             (see sw_watch_raised_level) */
+                             (see sw_watch_raised_level); a bound orbit: E >= 0 at any sample */
     SW_WATCH_TREND = 3    /* M's window peaks climbed window after window by more than
                              sampling an oscillation can make them (see sw_watch_sampling_floor),
                              or the latest peak stands above the first by more than the first
@@ -32,6 +32,7 @@ typedef struct sw_watch {
     int windows;          /* complete windows so far */
     double first_max, first_min;   /* over the first window */
     double first_mean;    /* ... and its mean (NaN before it closes) */
+    double escape;        /* a bound orbit: M at or above this at any sample is raised (M = 2: E = 0) */
     int relative;         /* 1: the raised level is `raised` times the first window's mean
                              when that is above 1 (a symplectic method's bounded swing) */
     double peak[SW_WATCH_WINDOWS]; /* peaks of the last complete windows, oldest first */
@@ -76,8 +77,11 @@ double sw_watch_raised_level(const sw_sim *s);
  * is energy the method put in: no scene adds energy to its motion. */
 void sw_watch_init(sw_watch *w, double window, double raised);
 /* The same for sim s: its raised level (relative to the first window for a
- * symplectic method), and no rebound test for a bound state without a
- * resting state (an orbit, where M is not a fraction of the start's energy). */
+ * symplectic method); for a bound state without a resting state (an orbit,
+ * where M is not a fraction of the start's energy) no rebound test, and
+ * escape at any sample with M >= 2 (E >= 0: verlet's energy at a coarse
+ * perihelion pass can spike above 0 for a step and come back, a state
+ * from which the exact motion would leave). */
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s);
 /* Feed a sample M at time t (t increasing); returns the verdict so far. */
 sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m);

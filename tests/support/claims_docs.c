@@ -431,6 +431,8 @@ const claim sw_claims_d[] = {
     { STAB, "the step\nis probed again over {4} and then", stab_longer, EXACT, 0, "SW_STABILITY_LONGER; test_long_probes checks the horizon a result states", NULL },
     { STAB, "probed again over 4 and then {16} times the horizon", stab_longest, EXACT, 0, "two rounds of SW_STABILITY_LONGER", NULL },
     { STAB, "They agree within {2} % wherever", stab_agree, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "On linear scenes the two agree within {2} % for every method", stab_agree, REL, 1e-12,
+      "SW_STABILITY_AGREE, what tests/check_stability_linear.c holds every method to", NULL },
     { STAB, "gains energy on the nonlinear stiff pendulum above Δt ≈ {0.19}", cl_l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
     /* scenes: what `stepwise list` and `describe` print */
     { "src/scenes/flow_scenes.c", "every step multiplies the radius by sqrt(1 + (w dt)^2)", vortex_growth, REL, 1e-12, "ρ of Euler's map at Δt = 0.3", vortex_formula },

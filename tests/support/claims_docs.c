@@ -280,6 +280,7 @@ static double bench_quick_runs(void)
     return c.repeats;
 }
 
+static double truth_samples(void) { return SW_TRUTH_SAMPLES; }
 static double stab_agree(void) { return 100 * SW_STABILITY_AGREE; }
 static double stab_shrink(void) { return 1 / SW_STABILITY_SHRINK; }
 static double stab_longer(void) { return SW_STABILITY_LONGER; }
@@ -401,6 +402,8 @@ const claim sw_claims_d[] = {
     { INTEGRATORS, "\"Dormand-Prince 5(4), adaptive\", 5, {6},", cl_l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     /* man page */
     { MAN, "Step size, in [{1e\\-9}, 1000]", dt_min, EXACT, 0, R_COUNT, NULL },
+    { MAN, "state error at {16} times spread to the report time", truth_samples, EXACT, 0,
+      "the truth module's sample times (SW_TRUTH_SAMPLES)", NULL },
     { MAN, "Step size, in [1e\\-9, {1000}]", dt_max, EXACT, 0, R_COUNT, NULL },
     { MAN, "(defaults {1e\\-6} and 1e\\-9). The implicit", rtol_default, EXACT, 0, R_COUNT, NULL },
     { MAN, "(defaults 1e\\-6 and {1e\\-9}). The implicit", atol_default, EXACT, 0, R_COUNT, NULL },

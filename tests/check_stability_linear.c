@@ -161,8 +161,8 @@ static void assert_agrees(const char *what, const sw_stability_result *r, double
 START_TEST(test_springs_every_method)
 {
     static const struct { double k, c, rest, stretch; } cases[] = {
-        { 1e2, 0, 1, 0.01 },   { 1e3, 0, 2, 0.001 },  { 1e4, 0, 0.5, 0.001 }, { 1e3, 0, 50, 0.5 },
-        { 1e2, 1, 2, 0.01 },   { 1e4, 20, 1, 0.005 }, { 1e3, 3, 10, 0.1 },
+        { 1e2, 0, 1, 0.01 }, { 1e4, 0, 0.5, 0.001 }, { 1e3, 0, 50, 0.5 },
+        { 1e2, 1, 2, 0.01 }, { 1e4, 20, 1, 0.005 }, { 1e3, 3, 10, 0.1 },
     };
     if (getenv("SW_TEST_QUICK"))
         return;
@@ -196,7 +196,7 @@ END_TEST
  * must grow, beyond anything rounding can do (ε·steps·|E|). */
 START_TEST(test_chain_every_method)
 {
-    static const int sizes[] = { 3, 4, 6, 10, 17, 30 };
+    static const int sizes[] = { 3, 5, 10, 30 };
     if (getenv("SW_TEST_QUICK"))
         return;
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
@@ -211,8 +211,8 @@ START_TEST(test_chain_every_method)
             if (m->flags & (SW_ADAPTIVE | SW_PLUGIN))
                 continue;
             int midpoint_rule = strcmp(m->name, "implicit-midpoint") == 0;
-            if (midpoint_rule && n > 6)
-                continue; /* its Newton solves on the longer chains take seconds; n <= 6 shows the point */
+            if (midpoint_rule && n > 5)
+                continue; /* its Newton solves on the longer chains take seconds; n <= 5 shows the point */
             sw_stability_result r = find(sc, p, m);
             ck_assert_msg(fabs(r.stiff / o.omega0 - 1) < 1e-3, "n=%d: stiffest |L| %.9g, closed form %.9g", n,
                           r.stiff, o.omega0);
@@ -297,7 +297,7 @@ Suite *make_stability_linear_suite(void)
     Suite *s = suite_create("stability_linear");
     TCase *tc = tcase_create("linear");
     /* each search is ~25 probes of 100 periods (a second or less); the
-     * spring cases ~10 s, the chains ~15 s, the orbits ~10 s */
+     * spring cases ~8 s, the chains ~8 s, the orbits ~6 s */
     tcase_set_timeout(tc, 240);
     tcase_add_test(tc, test_springs_every_method);
     tcase_add_test(tc, test_chain_every_method);

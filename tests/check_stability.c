@@ -362,10 +362,11 @@ END_TEST
  * rounding (the window peaks of an oscillation sampled near a rational
  * phase creep up by 1e-9 a window) or a Newton tolerance larger than a
  * shrunk motion (1e-12 of |x| = 2 against a 1e-7 stretch). Left out:
- * symplectic Euler from a large stretch, whose energy, started at rest,
- * peaks at 1/(1 - ω·dt/2) of its start (its modified energy's ellipse):
- * past the watch's raised level of 30 from ω·dt = 1.933, 3.3% below the
- * limit, so the measurement there says "raised", not the linear limit. */
+ * symplectic Euler from a large stretch: its amplitude, started at rest,
+ * grows to 1/√(1 - ω·dt/2) of the stretch near its limit (its modified
+ * energy's ellipse), and a stretch of 0.3 against a rest length of 0.5
+ * then swings through the anchor, where the spring is not linear
+ * (tests/check_stability_linear.c keeps the stretch at rest/100). */
 START_TEST(test_linear_spring_far_from_anchor)
 {
     static const struct { double k, stretch, rest; } cases[] = {
@@ -404,7 +405,7 @@ START_TEST(test_linear_spring_far_from_anchor)
 END_TEST
 
 /* Issue 24: the limit reported is a step that holds, as reported. On
- * eccentric orbits (e = 0.7 to 0.95, the scene's largest, started at perihelion, where one
+ * eccentric orbits (e = 0.7 to 0.95, started at perihelion, where one
  * step too many flings the planet out), the reported dt — rounded down to
  * the digits shown — run from the scene's own start over the probe's
  * horizon keeps the planet bound: no blow-up, and its energy at the end

@@ -334,12 +334,15 @@ START_TEST(no_order_from_growth)
     sw_app_apply(&a, SW_ACT_DT_HALVE, 0);
     ck_assert_msg(fabs(a.error_ratio / 16 - 1) < 0.1 && strstr(a.message, "order ~"), "%s", a.message);
     sw_app_free(&a);
-    /* Euler from 0.02: stable, small errors, but the ratio still changes
-     * (2.64, then 2.28: the amplitude error e^(ω²ΔtT/2) - 1 has exponent 1
-     * there); five halvings on it settles and reads as order 1 (±0.1). */
+    /* Euler from 0.02: stable, small errors; the largest error over the
+     * run (the status line's, as bench's) halves 2.24, then 2.11 times:
+     * settled within the app's 0.15 in log2, an order ~1.16 (at the report
+     * time alone the amplitude error e^(ω²ΔtT/2) - 1, exponent 1 there,
+     * gave 2.64 and 2.28, "still changing"); five halvings on it reads as
+     * order 1 (±0.1). */
     ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("euler"), 0.02, err, sizeof err), SW_OK);
     sw_app_apply(&a, SW_ACT_DT_HALVE, 0);
-    ck_assert_msg(isnan(a.error_ratio) && strstr(a.message, "still changing"), "%s", a.message);
+    ck_assert_msg(fabs(log2(a.error_ratio) - 1) < 0.2 && strstr(a.message, "order ~"), "%s", a.message);
     for (int i = 0; i < 4; i++)
         sw_app_apply(&a, SW_ACT_DT_HALVE, 0);
     ck_assert_msg(fabs(log2(a.error_ratio) - 1) < 0.1, "%s", a.message);

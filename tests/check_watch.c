@@ -55,6 +55,48 @@ START_TEST(test_verdicts)
 }
 END_TEST
 
+/* like symplectic Euler from rest at 99.8% of its limit (a = 0.998: M up to
+ * 1/(1 - a) = 500, averaging 1/(1 - a²) ≈ 250), the same in every window */
+static double symplectic_swing(double t) { return 250 + 240 * sin(40 * t); }
+
+/* an orbit's M with a coarse perihelion pass once a second: 1, and at each
+ * pass a spike past 2 (E > 0 for a step), back to 1 */
+static double perihelion_spike(double t)
+{
+    double phase = t - floor(t);
+    return fabs(phase - 0.5) < 0.005 ? 2.1 : 1.0;
+}
+
+/* A symplectic method's level is relative to its first window: its bounded
+ * swing averages far above 30 near its limit and is no growth; a fixed level
+ * called it raised. A bound orbit escapes at any sample with M >= 2. */
+START_TEST(test_relative_and_escape)
+{
+    sw_watch w;
+    sw_watch_verdict v = SW_WATCH_STEADY;
+    for (int relative = 0; relative < 2; relative++) {
+        sw_watch_init(&w, 1.0, 30);
+        w.relative = relative;
+        v = SW_WATCH_STEADY;
+        for (long k = 0; k * 0.001 < 20 && v == SW_WATCH_STEADY; k++)
+            v = sw_watch_add(&w, k * 0.001, symplectic_swing(k * 0.001));
+        if (v == SW_WATCH_STEADY)
+            v = sw_watch_finish(&w);
+        ck_assert_int_eq(v, relative ? SW_WATCH_STEADY : SW_WATCH_RAISED);
+    }
+    double when;
+    /* as every window shows the same spike, only the escape rule sees it */
+    ck_assert_int_eq(feed(2, 20, perihelion_spike, &when), SW_WATCH_STEADY);
+    sw_watch_init(&w, 1.0, 2);
+    w.rebound = 0;
+    w.escape = 2;
+    v = SW_WATCH_STEADY;
+    for (long k = 0; k * 0.01 < 20 && v == SW_WATCH_STEADY; k++)
+        v = sw_watch_add(&w, k * 0.01, perihelion_spike(k * 0.01));
+    ck_assert_int_eq(v, SW_WATCH_RAISED);
+}
+END_TEST
+
 /* A bound orbit's M is 1 + (E - E0)/|E0|, not a fraction of the start: it
  * gets the escape level (M = 2 is E = 0) and no rebound test; a spring's M
  * is a fraction of its swing energy and gets both. */
@@ -68,12 +110,16 @@ START_TEST(test_start)
     sw_watch_start(&w, 1.0, &s);
     ck_assert_double_eq(w.raised, 2.0);
     ck_assert_double_eq(w.rebound, 0.0);
+    ck_assert_double_eq(w.escape, 2.0);
+    ck_assert_int_eq(w.relative, 0);
     sw_sim_free(&s);
     ck_assert_int_eq(sw_sim_init(&s, sw_scene_find("spring"), NULL, sw_integrator_find("verlet"), 0.01, err,
                                  sizeof err), SW_OK);
     sw_watch_start(&w, 1.0, &s);
     ck_assert_double_eq(w.raised, 30.0);
     ck_assert_double_eq(w.rebound, 30.0);
+    ck_assert_int_eq(w.relative, 1); /* verlet is symplectic */
+    ck_assert_double_eq(w.escape, 0.0);
     sw_sim_free(&s);
 }
 END_TEST
@@ -109,6 +155,7 @@ Suite *make_watch_suite(void)
     TCase *tc = tcase_create("verdicts");
     tcase_add_test(tc, test_verdicts);
     tcase_add_test(tc, test_start);
+    tcase_add_test(tc, test_relative_and_escape);
     tcase_add_test(tc, test_judges);
     suite_add_tcase(s, tc);
     return s;

@@ -87,7 +87,8 @@ typedef struct sw_app {
     int have_truth;
     int truth_live;             /* the truth can follow the run live (a reference within budget) */
     double truth_cost;          /* a reference run's cost per report time (0: closed form) */
-    double *truth_report;       /* the true state at the report time, once asked for */
+    double *truth_report;       /* the true state at the sample times to the report time
+                                   (SW_TRUTH_SAMPLES × dim, sw_truth_sample_time), once asked for */
     int have_truth_report;
     /* live error measurement at the scene's report time */
     double meas_dt[2], meas_err[2];

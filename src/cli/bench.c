@@ -24,10 +24,14 @@ static const char usage_text[] =
     "runs the scene to its report time over a geometric sweep of step sizes (from 8x the\n"
     "scene's dt, or twice the method's stability limit when the scene knows w, halving;\n"
     "rk45 and dop853 sweep the tolerance 1e-2, 1e-3, ...) and records the largest absolute\n"
-    "state error, the derivative evaluations, the wall time (median of repeats) and blow-ups.\n"
+    "state error at 16 times spread to the report time (one time can be special: a whole\n"
+    "number of periods), the derivative evaluations, the wall time (median of repeats)\n"
+    "and blow-ups. A sweep goes on until 4 points agree and the error is below 1e-6 of\n"
+    "the state, or 6 points agree.\n"
     "The observed order is the least-squares slope of log error against log dt over the\n"
     "points marked *: not blown up, above round-off (and the reference's own error), below\n"
-    "1e-2 of the state's size, contiguous down to the finest such point.\n"
+    "1e-2 of the state's size, contiguous down to the finest such point; at least 3 of\n"
+    "them and a slope of 0.1 or more, else 'no order' and why.\n"
     "With no SCENE, every scene that has a reference and every method that applies.\n"
     "docs/performance.md has the details and the figures.\n"
     "\n"
@@ -171,11 +175,12 @@ static void print_report(const sw_bench_report *r, const char *skipped)
     const sw_scene *sc = r->scene;
     printf("== %s: ", sc->name);
     if (r->source == SW_BENCH_EXACT)
-        printf("error against the exact solution at t = %g\n", r->t_report);
+        printf("largest error at %d times to t = %g, against the exact solution\n", SW_BENCH_SAMPLES,
+               r->t_report);
     else
-        printf("error against a %s reference at t = %g (rtol %g, atol %g, %ld evaluations;"
-               " its own error <= %.1e)\n", sw_truth_reference_method()->name, r->t_report, SW_TRUTH_RTOL,
-               SW_TRUTH_ATOL, r->ref_evals, r->ref_error);
+        printf("largest error at %d times to t = %g, against a %s reference (rtol %g, atol %g, %ld "
+               "evaluations; its own error <= %.1e)\n", SW_BENCH_SAMPLES, r->t_report,
+               sw_truth_reference_method()->name, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->ref_evals, r->ref_error);
     printf("   parameters:");
     for (int i = 0; i < sc->nparams; i++)
         printf(" %s=%g", sc->params[i].name, r->p[i]);
@@ -208,14 +213,14 @@ static void print_report(const sw_bench_report *r, const char *skipped)
     printf("\n   observed order (slope of log error against log dt over the * points):\n");
     for (int i = 0; i < r->nseries; i++) {
         const sw_bench_series *s = &r->series[i];
-        if (s->nfit >= 2)
+        if (isfinite(s->order))
             printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)%s\n",
                    s->method->name, s->order, s->nfit, s->slope_min, s->slope_max, s->method->order,
                    stop_note(s->stop), s->asymptotic ? "" : "\n                        the local "
                    "slopes disagree: these steps are not yet in the asymptotic range");
         else
-            printf("   %-18s   n/a  (fewer than 2 points between round-off and 1e-2 of the state%s)\n",
-                   s->method->name, stop_note(s->stop));
+            printf("   %-18s   no order: %s%s\n", s->method->name, sw_bench_no_order_text(s),
+                   stop_note(s->stop));
     }
     print_events(r);
     printf("\n   cheapest measured run to reach each error level:\n");

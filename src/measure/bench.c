@@ -20,7 +20,8 @@
 
 void sw_bench_config_default(sw_bench_config *c)
 {
-    *c = (sw_bench_config){ .min_points = 8, .max_points = 16, .fit_points = 4, .repeats = 3,
+    *c = (sw_bench_config){ .min_points = 8, .max_points = 16, .fit_points = 4, .fine = 1e-6, .settled = 6,
+                            .repeats = 3,
                             .repeat_below = 0.05, .max_work = 1e8 };
 }
 
@@ -79,7 +80,10 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
     return ok;
 }
 
-/* One reference run to the report time at the given tolerances, state into out. */
+static double sample_time(const sw_bench_report *r, int j) { return sw_truth_sample_time(r->t_report, j); }
+
+/* One reference run to the report time at the given tolerances, the state
+ * at every sample time into out (SW_BENCH_SAMPLES × dim). */
 static int reference_run(sw_bench_report *r, double rtol, double atol, double *out, double *deriv,
                          char *err, size_t errlen)
 {
@@ -95,14 +99,18 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
         sw_sim_free(&s);
         return rc;
     }
-    if (sw_sim_run_until(&s, r->t_report)) {
-        snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
-                 r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
-        rc = SW_EDIVERGED;
-    } else {
-        r->ref_evals += sw_sim_evals(&s);
-        state_at(&s, r->t_report, out, deriv);
+    for (int j = 1; j <= SW_BENCH_SAMPLES && rc == SW_OK; j++) {
+        double t = sample_time(r, j);
+        if (sw_sim_run_until(&s, t)) {
+            snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
+                     r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
+            rc = SW_EDIVERGED;
+        } else {
+            state_at(&s, t, out + (size_t)(j - 1) * (size_t)r->dim, deriv);
+        }
     }
+    if (rc == SW_OK)
+        r->ref_evals += sw_sim_evals(&s);
     sw_sim_free(&s);
     return rc;
 }
@@ -123,16 +131,20 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
         r->omega = r->spectrum.largest;
     else
         r->spectrum.n = 0;
-    r->truth = malloc((size_t)r->dim * sizeof *r->truth);
-    double *work = malloc((size_t)2 * r->dim * sizeof *work);
-    if (!r->truth || !work) {
+    size_t all = (size_t)SW_BENCH_SAMPLES * (size_t)r->dim;
+    r->samples = malloc(all * sizeof *r->samples);
+    double *work = malloc((all + (size_t)r->dim) * sizeof *work);
+    if (!r->samples || !work) {
         sw_system_free(&sys);
         free(work);
         sw_bench_free(r);
         snprintf(err, errlen, "out of memory for a %d-long reference state", r->dim);
         return SW_ENOMEM;
     }
-    if (sc->exact && sc->exact(&sys, r->t_report, r->truth) == 0) {
+    int exact = sc->exact != NULL;
+    for (int j = 1; j <= SW_BENCH_SAMPLES && exact; j++)
+        exact = sc->exact(&sys, sample_time(r, j), r->samples + (size_t)(j - 1) * (size_t)r->dim) == 0;
+    if (exact) {
         r->source = SW_BENCH_EXACT;
     } else if (sc->reference || sw_system_event_count(&sys) > 0) {
         /* The reference, and a 10x looser run whose distance from it bounds
@@ -150,12 +162,12 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
                      "the budget of %.0e; use fewer particles", sc->name, r->t_report, cost, SW_WORK_REPORT);
             rc = SW_EINVAL;
         } else {
-            rc = reference_run(r, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->truth, work, err, errlen);
+            rc = reference_run(r, SW_TRUTH_RTOL, SW_TRUTH_ATOL, r->samples, work, err, errlen);
         }
         if (rc == SW_OK)
             rc = reference_run(r, 10 * SW_TRUTH_RTOL, 10 * SW_TRUTH_ATOL, work + r->dim, work, err, errlen);
         if (rc == SW_OK)
-            r->ref_error = max_abs_diff(r->dim, r->truth, work + r->dim);
+            r->ref_error = max_abs_diff((int)all, r->samples, work + r->dim);
     } else {
         sw_bench_measurable(sc, r->p, err, errlen);
         rc = SW_EINVAL;
@@ -166,15 +178,17 @@ int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char 
         sw_bench_free(r);
         return rc;
     }
+    r->truth = r->samples + (all - (size_t)r->dim);
     r->scale = 1.0;
-    for (int i = 0; i < r->dim; i++)
-        r->scale = fmax(r->scale, fabs(r->truth[i]));
+    for (size_t i = 0; i < all; i++)
+        r->scale = fmax(r->scale, fabs(r->samples[i]));
     return SW_OK;
 }
 
 void sw_bench_free(sw_bench_report *r)
 {
-    free(r->truth);
+    free(r->samples);
+    r->samples = NULL;
     r->truth = NULL;
 }
 
@@ -211,25 +225,40 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
             sw_sim_free(&s);
             return rc;
         }
-        double t0 = sw_clock_now();
-        sw_sim_run_until(&s, r->t_report);
-        times[nrep++] = sw_clock_now() - t0;
+        /* to each sample time in turn (the step before it shortened to
+         * meet it), the error there; the clock runs only while stepping. A
+         * fixed step coarser than half the samples' spacing is measured at
+         * the report time alone (sw_truth_first_sample). */
+        int first = rtol > 0 ? 1 : sw_truth_first_sample(r->t_report, dt);
+        double seconds = 0, error = 0;
+        long evals = 0;
+        for (int j = first; j <= SW_BENCH_SAMPLES && !s.blown; j++) {
+            double t = sample_time(r, j), t0 = sw_clock_now();
+            sw_sim_run_until(&s, t);
+            seconds += sw_clock_now() - t0;
+            if (rep > 0 || s.blown)
+                continue;
+            evals = sw_sim_evals(&s);
+            double e;
+            if (r->source == SW_BENCH_EXACT) {
+                e = sw_sim_exact_error(&s, scratch);
+            } else {
+                state_at(&s, t, scratch, scratch + r->dim);
+                e = max_abs_diff(r->dim, scratch, r->samples + (size_t)(j - 1) * (size_t)r->dim);
+            }
+            if (!(e <= error)) /* NaN wins */
+                error = e;
+        }
+        times[nrep++] = seconds;
         if (rep == 0) {
-            pt->evals = sw_sim_evals(&s);
+            pt->evals = s.blown ? sw_sim_evals(&s) : evals; /* state_at's evaluation not counted */
             pt->solves = s.sys.ode->solves;
             pt->steps = s.steps;
             pt->blown = s.blown;
             pt->blow_time = s.blow_time;
             double solve, eval = sw_truth_eval_work(&s.sys, &solve);
             *work = (double)pt->evals * eval + (double)s.sys.ode->solver_iters * solve;
-            if (s.blown)
-                pt->error = NAN;
-            else if (r->source == SW_BENCH_EXACT)
-                pt->error = sw_sim_exact_error(&s, scratch);
-            else {
-                state_at(&s, r->t_report, scratch, scratch + r->dim);
-                pt->error = max_abs_diff(r->dim, scratch, r->truth);
-            }
+            pt->error = s.blown ? NAN : error;
         }
         sw_sim_free(&s);
         if (times[0] >= c->repeat_below)
@@ -307,8 +336,10 @@ double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
     first = last;
     while (first > 0 && candidate(r, &pts[first - 1]))
         first--;
-    /* Drop coarse points that are not yet in the asymptotic range. */
-    while (last >= 0 && last - first >= 2) {
+    s->ncandidates = last < 0 ? 0 : last - first + 1;
+    /* Drop coarse points that are not yet in the asymptotic range, while
+     * enough are left to fit. */
+    while (last >= 0 && last - first >= SW_BENCH_MIN_FIT) {
         double rest = ls_slope(pts, first + 1, last);
         if (fabs(local_slope(&pts[first], &pts[first + 1]) - rest) <= 0.2 + 0.1 * fabs(rest))
             break;
@@ -317,20 +348,24 @@ double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s)
     s->nfit = last < 0 ? 0 : last - first + 1;
     s->order = s->slope_min = s->slope_max = NAN;
     s->asymptotic = 0;
-    if (s->nfit < 2) {
+    s->no_order = SW_BENCH_ORDER_OK;
+    if (s->nfit < SW_BENCH_MIN_FIT) {
         s->nfit = 0;
+        s->no_order = SW_BENCH_ORDER_FEW;
         return s->order;
     }
     for (int i = first; i <= last; i++)
         s->points[i].in_fit = 1;
     s->order = ls_slope(pts, first, last);
-    if (!isfinite(s->order) || !(s->order > 0)) {
+    if (!isfinite(s->order) || !(s->order >= SW_BENCH_MIN_ORDER)) {
         /* every h equal (an adaptive method stuck at its largest step), or
-         * errors that do not fall with the step: no order to report */
+         * errors that do not fall with the step (a slope that would print
+         * as 0.0x or below): no order to report */
         for (int i = first; i <= last; i++)
             s->points[i].in_fit = 0;
         s->nfit = 0;
         s->order = NAN;
+        s->no_order = SW_BENCH_ORDER_FLAT;
         return s->order;
     }
     s->slope_min = INFINITY;
@@ -386,7 +421,7 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
             break;
         }
         sw_bench_point *pt = &se->points[k];
-        double work;
+        double work = 0;
         rc = run_point(r, m, dt, rtol, c, pt, &work, scratch, err, errlen);
         if (rc != SW_OK)
             break;
@@ -403,7 +438,8 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
         }
         if (k + 1 >= c->min_points) {
             sw_bench_fit(r, se);
-            if (se->nfit >= c->fit_points && se->asymptotic) {
+            int small = pt->error <= c->fine * r->scale || (c->settled > 0 && se->nfit >= c->settled);
+            if (se->nfit >= c->fit_points && se->asymptotic && small) {
                 se->stop = SW_BENCH_STOP_ENOUGH;
                 break;
             }
@@ -480,6 +516,18 @@ int sw_bench_cheapest(const sw_bench_report *r, double level, int by_evals, int 
             }
         }
     return best;
+}
+
+const char *sw_bench_no_order_text(const sw_bench_series *s)
+{
+    switch (s->no_order) {
+    case SW_BENCH_ORDER_FEW:
+        return s->ncandidates == 0 ? "no point between round-off and 1e-2 of the state"
+               : s->ncandidates == 1 ? "only 1 point between round-off and 1e-2 of the state (3 needed)"
+                                     : "only 2 points between round-off and 1e-2 of the state (3 needed)";
+    case SW_BENCH_ORDER_FLAT: return "the error does not fall as the step does";
+    default: return "";
+    }
 }
 
 char sw_bench_marker(const sw_integrator *m)

@@ -14,9 +14,25 @@
 
 #define SW_BENCH_MAX_POINTS 16
 #define SW_BENCH_MAX_METHODS 24
+/* An order is fitted from at least this many points above the floor: two
+ * points give a slope whatever the error does between them. */
+#define SW_BENCH_MIN_FIT 3
+/* ... and a slope below this is no order: the error does not fall with the step. */
+#define SW_BENCH_MIN_ORDER 0.1
+
+/* A run's error is the largest over the truth module's sample times
+ * (sw_truth_sample_time): one report time may be special, the run is not. */
+#define SW_BENCH_SAMPLES SW_TRUTH_SAMPLES
 
 /* Where the true state at the report time comes from. */
 enum { SW_BENCH_EXACT = 1, SW_BENCH_REFERENCE = 2 };
+
+/* Why a series has no order (sw_bench_series.no_order). */
+enum {
+    SW_BENCH_ORDER_OK = 0,     /* an order was fitted */
+    SW_BENCH_ORDER_FEW = 1,    /* fewer than SW_BENCH_MIN_FIT points between the floor and 1e-2 of the state */
+    SW_BENCH_ORDER_FLAT = 2    /* the error does not fall with the step over those points (slope < SW_BENCH_MIN_ORDER) */
+};
 
 /* Why a series' sweep ended. */
 enum {
@@ -31,7 +47,7 @@ typedef struct sw_bench_point {
     double dt;        /* the sim's step (adaptive methods: the largest step allowed) */
     double rtol;      /* adaptive methods: the tolerance (atol = rtol·1e-3); 0 otherwise */
     double h;         /* step used for the fit: dt, or report time / accepted steps */
-    double error;     /* largest |y - y_true| over all components at the report time; NaN if blown */
+    double error;     /* largest |y - y_true| over all components and the sample times; NaN if blown */
     double floor;     /* below this the error is round-off or reference noise */
     long evals;       /* derivative evaluations (sw_sim_evals) */
     long solves;      /* linear solves (implicit methods) */
@@ -47,8 +63,10 @@ typedef struct sw_bench_series {
     const sw_integrator *method;
     int npoints;
     sw_bench_point points[SW_BENCH_MAX_POINTS];
-    double order;     /* least-squares slope of ln error against ln h; NaN when < 2 points fit */
-    int nfit;
+    double order;     /* least-squares slope of ln error against ln h, > 0; NaN when none (no_order says why) */
+    int nfit;         /* points in the fit: 0, or SW_BENCH_MIN_FIT and more */
+    int no_order;     /* SW_BENCH_ORDER_*: why order is NaN */
+    int ncandidates;  /* points between the floor and 1e-2 of the state, contiguous to the finest */
     double slope_min, slope_max; /* local slopes between neighbouring fit points */
     int asymptotic;   /* 1 when the local slopes agree (spread <= 0.25 + 0.1·|order|) */
     int stop;         /* SW_BENCH_STOP_* */
@@ -58,6 +76,12 @@ typedef struct sw_bench_config {
     int min_points;    /* sweep at least this many step sizes (unless stopped by floor or budget) */
     int max_points;    /* and at most this many (<= SW_BENCH_MAX_POINTS) */
     int fit_points;    /* after min_points, stop once this many points are in the fit range */
+    double fine;       /* ... and the finest error is below fine·scale (0: any), or settled
+                          points agree: an order read where the error is still large can be a
+                          lower-order term's cancellation (symplectic Euler's first-order term,
+                          small on a chain started at rest, is overtaken by its second-order one
+                          above dt ≈ 1.6e-3, over three halvings) */
+    int settled;       /* ... or this many points fit, asymptotic (0: fine alone decides) */
     int repeats;       /* timing repeats per point; the median is kept */
     double repeat_below; /* repeat only runs faster than this many seconds */
     double max_work;   /* skip runs above this many (evaluations + solver iterations) × dimension */
@@ -70,10 +94,11 @@ typedef struct sw_bench_report {
     double t_report;
     int dim;
     int source;        /* SW_BENCH_EXACT or SW_BENCH_REFERENCE */
-    double *truth;     /* state at t_report (dim doubles), owned */
-    double ref_error;  /* reference: |rtol 1e-12 run - rtol 1e-11 run|, an upper estimate of its error */
+    double *samples;   /* the true state at the sample times (SW_BENCH_SAMPLES × dim doubles), owned */
+    const double *truth; /* ... the last of them: the state at t_report */
+    double ref_error;  /* reference: |rtol 1e-12 run - rtol 1e-11 run| over the samples, an upper estimate of its error */
     long ref_evals;    /* evaluations the reference runs took */
-    double scale;      /* max(1, max |truth|): errors are judged against this */
+    double scale;      /* max(1, max |truth| over the samples): errors are judged against this */
     double omega;      /* largest |λ| of the linearisation at the start, NaN when unknown */
     sw_spectrum spectrum; /* the linearisation's modes at the start (n = 0: none) */
     int nseries;
@@ -112,12 +137,14 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
 int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p,
                          char *err, size_t errlen);
 
-/* Refit a series (marks in_fit, sets order, nfit, the local slopes and
- * asymptotic): the points that did not blow up and whose error lies between
- * the point's floor and 1e-2·scale, in the contiguous run that ends at the
- * finest such point, less coarse points whose local slope disagrees with the
- * rest (by more than 0.2 + 0.1·|slope of the rest|); then the least-squares
- * slope of ln error against ln h. Returns the order (NaN below 2 points). */
+/* Refit a series (marks in_fit, sets order, nfit, no_order, the local
+ * slopes and asymptotic): the points that did not blow up and whose error
+ * lies between the point's floor and 1e-2·scale, in the contiguous run that
+ * ends at the finest such point, less coarse points whose local slope
+ * disagrees with the rest (by more than 0.2 + 0.1·|slope of the rest|)
+ * while SW_BENCH_MIN_FIT are left; then the least-squares slope of ln error
+ * against ln h. Returns the order: NaN below SW_BENCH_MIN_FIT points or
+ * where the slope is below SW_BENCH_MIN_ORDER (no_order says which), never <= 0. */
 double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s);
 
 /* The cheapest measured point with error <= level: by wall time, or by
@@ -129,6 +156,9 @@ int sw_bench_cheapest(const sw_bench_report *r, double level, int by_evals, int 
 char sw_bench_marker(const sw_integrator *m);
 
 enum { SW_BENCH_X_TIME = 0, SW_BENCH_X_EVALS = 1 };
+
+/* Why series s has no order, in a few words for "no order: ..." ("" when it has one). */
+const char *sw_bench_no_order_text(const sw_bench_series *s);
 
 /* Render error against wall time (SW_BENCH_X_TIME) or evaluations on log–log
  * axes: `height` rows of exactly `width` characters, each ended by '\n', then

@@ -11,7 +11,7 @@
 
 enum { OR_E, OR_MU };
 static const sw_param orbit_params[] = {
-    { "e", 0.5, 0.0, 0.95, 0, "", "eccentricity of the orbit" },
+    { "e", 0.5, 0.0, 0.97, 0, "", "eccentricity of the orbit" },
     { "mu", 1.0, 0.01, 100.0, 0, "m^3/s^2", "gravitational parameter of the sun" },
 };
 

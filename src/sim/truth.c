@@ -164,6 +164,16 @@ int sw_truth_state(const sw_scene *sc, const double *p, double t, double *out)
     return y ? 0 : -1;
 }
 
+double sw_truth_sample_time(double T, int j)
+{
+    return j >= SW_TRUTH_SAMPLES ? T : T * j / SW_TRUTH_SAMPLES;
+}
+
+int sw_truth_first_sample(double T, double dt)
+{
+    return dt <= 0.5 * T / SW_TRUTH_SAMPLES ? 1 : SW_TRUTH_SAMPLES;
+}
+
 double sw_truth_error(int dim, const double *y, const double *truth)
 {
     double m = 0;

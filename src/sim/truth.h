@@ -78,6 +78,19 @@ const double *sw_truth_at(sw_truth *tr, double t);
  * run); 0, or -1 when there is none. */
 int sw_truth_state(const sw_scene *sc, const double *p, double t, double *out);
 
+/* A run's error, as `bench` and the dt-change message measure it: the
+ * largest over SW_TRUTH_SAMPLES times evenly spread to the report time T,
+ * T·j/SW_TRUTH_SAMPLES for j = 1..SW_TRUTH_SAMPLES. One report time can be
+ * special (a whole number of periods, where symplectic Euler's first-order
+ * error cancels and it reads as second order); the run as a whole is not. */
+#define SW_TRUTH_SAMPLES 16
+/* The j-th sample time of a run to T (j = SW_TRUTH_SAMPLES: T itself). */
+double sw_truth_sample_time(double T, int j);
+/* The first sample a run at fixed step dt stops at: 1, or SW_TRUTH_SAMPLES
+ * (T alone) when dt is above half the samples' spacing, where stopping at
+ * every sample would shorten the step asked for. Adaptive runs: pass 0. */
+int sw_truth_first_sample(double T, double dt);
+
 /* The error norm: max over every state component (positions, and for
  * particles velocities) of |y_i - truth_i|. NaN when any is NaN. */
 double sw_truth_error(int dim, const double *y, const double *truth);

@@ -70,6 +70,7 @@ void sw_watch_init(sw_watch *w, double window, double raised)
     w->cur_min = INFINITY;
     w->first_max = -INFINITY;
     w->first_min = INFINITY;
+    w->first_mean = NAN;
     w->last = NAN;
 }
 
@@ -84,8 +85,11 @@ double sw_watch_sampling_floor(const sw_watch *w)
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
 {
     sw_watch_init(w, window, sw_watch_raised_level(s));
-    if (bound_state(s))
+    if (bound_state(s)) {
         w->rebound = 0;
+        w->escape = 2.0;
+    } else
+        w->relative = (s->method->flags & SW_SYMPLECTIC) != 0;
 }
 
 static void close_window(sw_watch *w)
@@ -93,6 +97,7 @@ static void close_window(sw_watch *w)
     if (w->windows == 0) {
         w->first_max = w->cur_max;
         w->first_min = w->cur_min;
+        w->first_mean = w->cur_sum / (double)w->cur_n;
     }
     if (w->kept == SW_WATCH_WINDOWS) {
         memmove(w->peak, w->peak + 1, (SW_WATCH_WINDOWS - 1) * sizeof w->peak[0]);
@@ -115,8 +120,11 @@ static sw_watch_verdict judge(const sw_watch *w)
     if (k == 0 || w->windows < 2)
         return SW_WATCH_STEADY;
     /* energy raised and kept: the latest window averages past the raised
-     * level (nothing in these scenes adds energy) */
-    if (w->mean[k - 1] > w->raised)
+     * level (nothing in these scenes adds energy); for a symplectic method,
+     * past that many times what its first window averaged, its bounded
+     * swing included (sw_watch_raised_level) */
+    double level = w->relative && w->first_mean > 1 ? w->raised * w->first_mean : w->raised;
+    if (w->mean[k - 1] > level)
         return SW_WATCH_RAISED;
     /* energy that sank and came back: the latest window's mean a rebound
      * factor above the lowest before it */
@@ -144,6 +152,12 @@ sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
         return w->verdict;
     if (!(m <= 1e3)) { /* NaN too */
         w->verdict = SW_WATCH_BOUND;
+        return w->verdict;
+    }
+    /* a bound orbit at E >= 0 is unbound at that step: a state the planet
+     * would leave from, however the next step brings it back */
+    if (w->escape > 0 && m >= w->escape) {
+        w->verdict = SW_WATCH_RAISED;
         return w->verdict;
     }
     w->max_seen = fmax(w->max_seen, m);

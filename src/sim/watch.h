@@ -16,7 +16,7 @@ typedef enum sw_watch_verdict {
     SW_WATCH_BOUND = 1,   /* M rose past 1000: the motion gained a thousandfold energy */
     SW_WATCH_RAISED = 2,  /* M averaged above the raised level over a whole window, or above
                              that many times its lowest window: growth a nonlinearity capped
-                             (see sw_watch_raised_level) */
+                             (see sw_watch_raised_level); a bound orbit: E >= 0 at any sample */
     SW_WATCH_TREND = 3    /* M's window peaks climbed window after window by more than
                              sampling an oscillation can make them (see sw_watch_sampling_floor),
                              or the latest peak stands above the first by more than the first
@@ -31,6 +31,10 @@ typedef struct sw_watch {
     double t0;            /* start of the current window */
     int windows;          /* complete windows so far */
     double first_max, first_min;   /* over the first window */
+    double first_mean;    /* ... and its mean (NaN before it closes) */
+    double escape;        /* a bound orbit: M at or above this at any sample is raised (M = 2: E = 0) */
+    int relative;         /* 1: the raised level is `raised` times the first window's mean
+                             when that is above 1 (a symplectic method's bounded swing) */
     double peak[SW_WATCH_WINDOWS]; /* peaks of the last complete windows, oldest first */
     double mean[SW_WATCH_WINDOWS]; /* and their means */
     int kept;             /* entries in peak/low */
@@ -57,9 +61,13 @@ double sw_watch_measure(const sw_sim *s, const double *y0);
 /* The level a window's mean M must pass to count as raised: 2 for a bound
  * state without a resting state (an orbit: M = 2 is E = 0, the planet
  * escaping); else 3 for a method that is not symplectic (a stable one only
- * loses energy, or gains a little of it), 30 for a symplectic one (its
- * energy, started from rest, averages up to 1/(1 - (|L|dt/2)²): 25 at 98%
- * of its limit, bounded all the same). */
+ * loses energy, or gains a little of it), 30 for a symplectic one, and for
+ * it 30 times the first window's mean where that is above 1 (its energy
+ * swings about its start by a factor ω·dt sets, bounded all the same:
+ * symplectic Euler's, started from rest, peaks at 1/(1 - |L|dt/2) and
+ * averages 1/(1 - (|L|dt/2)²): 25 at 98% of its limit, 500 at 99.9%;
+ * the first window, five periods of the stiffest mode at least, shows that
+ * swing in full, and a bounded run's later windows average what it did). */
 double sw_watch_raised_level(const sw_sim *s);
 
 /* Start watching; window: simulated time per window (> 0); raised: see
@@ -68,9 +76,12 @@ double sw_watch_raised_level(const sw_sim *s);
  * is raised too. Energy that sank (damping, or the truth) and comes back
  * is energy the method put in: no scene adds energy to its motion. */
 void sw_watch_init(sw_watch *w, double window, double raised);
-/* The same for sim s: its raised level, and no rebound test for a bound
- * state without a resting state (an orbit, where M is not a fraction of
- * the start's energy). */
+/* The same for sim s: its raised level (relative to the first window for a
+ * symplectic method); for a bound state without a resting state (an orbit,
+ * where M is not a fraction of the start's energy) no rebound test, and
+ * escape at any sample with M >= 2 (E >= 0: verlet's energy at a coarse
+ * perihelion pass can spike above 0 for a step and come back, a state
+ * from which the exact motion would leave). */
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s);
 /* Feed a sample M at time t (t increasing); returns the verdict so far. */
 sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m);

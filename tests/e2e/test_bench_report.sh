@@ -12,7 +12,7 @@
     || fail "bench exited $?: $(cat "$dir/err")"
 [ -s "$dir/err" ] && fail "unexpected stderr: $(cat "$dir/err")"
 out="$dir/out"
-grep -q '^== spring: error against the exact solution at t = 10' "$out" || fail "no scene header"
+grep -q '^== spring: largest error at 16 times to t = 10, against the exact solution' "$out" || fail "no scene header"
 for m in euler midpoint rk4; do
     grep -q "^   $m " "$out" || fail "no rows for $m"
 done

@@ -280,6 +280,7 @@ static double bench_quick_runs(void)
     return c.repeats;
 }
 
+static double truth_samples(void) { return SW_TRUTH_SAMPLES; }
 static double stab_agree(void) { return 100 * SW_STABILITY_AGREE; }
 static double stab_shrink(void) { return 1 / SW_STABILITY_SHRINK; }
 static double stab_longer(void) { return SW_STABILITY_LONGER; }
@@ -401,6 +402,8 @@ const claim sw_claims_d[] = {
     { INTEGRATORS, "\"Dormand-Prince 5(4), adaptive\", 5, {6},", cl_l9_rk45_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     /* man page */
     { MAN, "Step size, in [{1e\\-9}, 1000]", dt_min, EXACT, 0, R_COUNT, NULL },
+    { MAN, "state error at {16} times spread to the report time", truth_samples, EXACT, 0,
+      "the truth module's sample times (SW_TRUTH_SAMPLES)", NULL },
     { MAN, "Step size, in [1e\\-9, {1000}]", dt_max, EXACT, 0, R_COUNT, NULL },
     { MAN, "(defaults {1e\\-6} and 1e\\-9). The implicit", rtol_default, EXACT, 0, R_COUNT, NULL },
     { MAN, "(defaults 1e\\-6 and {1e\\-9}). The implicit", atol_default, EXACT, 0, R_COUNT, NULL },
@@ -431,6 +434,8 @@ const claim sw_claims_d[] = {
     { STAB, "the step\nis probed again over {4} and then", stab_longer, EXACT, 0, "SW_STABILITY_LONGER; test_long_probes checks the horizon a result states", NULL },
     { STAB, "probed again over 4 and then {16} times the horizon", stab_longest, EXACT, 0, "two rounds of SW_STABILITY_LONGER", NULL },
     { STAB, "They agree within {2} % wherever", stab_agree, REL, 1e-12, R_COUNT, NULL },
+    { STAB, "On linear scenes the two agree within {2} % for every method", stab_agree, REL, 1e-12,
+      "SW_STABILITY_AGREE, what tests/check_stability_linear.c holds every method to", NULL },
     { STAB, "gains energy on the nonlinear stiff pendulum above Δt ≈ {0.19}", cl_l7_im_limit, ROUNDED, 0, "the limit the stability lab measures", NULL },
     /* scenes: what `stepwise list` and `describe` print */
     { "src/scenes/flow_scenes.c", "every step multiplies the radius by sqrt(1 + (w dt)^2)", vortex_growth, REL, 1e-12, "ρ of Euler's map at Δt = 0.3", vortex_formula },

@@ -158,6 +158,8 @@ static const struct bad_case {
     { "unknown-integrator.lesson", 6, 13, "unknown integrator 'rk5'" },
     { "unknown-param.lesson", 5, 10, "no parameter 'omega'" },
     { "unknown-scene.lesson", 4, 8, "did you mean 'vortex'" },
+    { "until-empty.lesson", 5, 7, "@until needs a value; expected a stop time in seconds" },
+    { "until-range.lesson", 5, 8, "@until '0' is not allowed; expected a number in [1e-09, 1e+06]" },
     { "utf8-column.lesson", 6, 12, "expected a number" },
 };
 

@@ -11,36 +11,6 @@
 #include "measure/bench.h"
 #include "stepwise/stepwise.h"
 
-
-static void series_clear(sw_series *s)
-{
-    s->len = 0;
-    s->stride = 1;
-    s->skip = 0;
-}
-
-/* Keep at most SW_APP_GRAPH samples: when full, drop every other one and
- * keep only every stride-th new sample from then on. */
-static void series_push(sw_series *s, double t, double v)
-{
-    if (s->skip > 0) {
-        s->skip--;
-        return;
-    }
-    if (s->len == SW_APP_GRAPH) {
-        for (int i = 0; i < SW_APP_GRAPH / 2; i++) {
-            s->t[i] = s->t[2 * i];
-            s->v[i] = s->v[2 * i];
-        }
-        s->len = SW_APP_GRAPH / 2;
-        s->stride *= 2;
-    }
-    s->t[s->len] = t;
-    s->v[s->len] = v;
-    s->len++;
-    s->skip = s->stride - 1;
-}
-
 /* A compare pair that differs from the main method and suits the system:
  * the lecture's contrast (Euler against RK4) plus a symplectic method. */
 static void default_compare(sw_app *a, const sw_integrator **m1, const sw_integrator **m2)
@@ -70,8 +40,10 @@ static void free_bench(sw_app *a)
 
 static void free_sims(sw_app *a)
 {
-    for (int i = 0; i < a->nsims; i++)
+    for (int i = 0; i < a->nsims; i++) {
+        sw_app_history_detach(a, i);
         sw_sim_free(&a->sims[i]);
+    }
     a->nsims = 0;
 }
 
@@ -80,6 +52,8 @@ static int init_sim(sw_app *a, sw_sim *s, const sw_integrator *m, char *err, siz
     int rc = sw_sim_init(s, a->scene, a->p, m, a->dt, err, errlen);
     if (rc == SW_OK && (rc = sw_sim_set_events(s, a->events, err, errlen)) != SW_OK)
         sw_sim_free(s);
+    if (rc == SW_OK)
+        sw_app_history_attach(a, (int)(s - a->sims));
     return rc;
 }
 
@@ -107,7 +81,7 @@ static int build(sw_app *a, const sw_integrator *m, char *err, size_t errlen)
     a->nmeas = 0;
     a->error_ratio = NAN;
     for (int i = 0; i < SW_APP_SIMS; i++)
-        series_clear(&a->series[i]);
+        sw_series_clear(&a->series[i]);
     if (!sw_phase_available(&a->sims[0].sys, a->phase_particle, a->phase_coord))
         sw_phase_default(&a->sims[0].sys, &a->phase_particle, &a->phase_coord);
     sw_app_phase_clear(a);
@@ -183,7 +157,9 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m)
                 default_compare(a, &m1, &m2);
                 sw_sim_set_method(&a->sims[i], i == 1 ? m1 : m2, err, sizeof err);
                 a->compare_methods[i - 1] = a->sims[i].method;
+                sw_app_history_restart(a, i);
             }
+    sw_app_history_restart(a, 0); /* the past was stepped by another method */
     snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, m->label);
     sw_app_watch_restart(a);
     return SW_OK;
@@ -198,14 +174,18 @@ int sw_app_set_dt(sw_app *a, double dt)
             return SW_EINVAL;
         }
     a->dt = dt;
+    for (int i = 0; i < a->nsims; i++)
+        sw_app_history_restart(a, i);
     sw_app_watch_restart(a);
     return SW_OK;
 }
 
 int sw_app_set_compare(sw_app *a, int on, const sw_integrator *m1, const sw_integrator *m2)
 {
-    for (int i = 1; i < a->nsims; i++)
+    for (int i = 1; i < a->nsims; i++) {
+        sw_app_history_detach(a, i);
         sw_sim_free(&a->sims[i]);
+    }
     a->nsims = 1;
     a->compare = on;
     a->compare_one = 0;
@@ -237,6 +217,7 @@ int sw_app_compare_with(sw_app *a, const sw_integrator *const *m, int n)
     int rc = sw_app_set_compare(a, 1, m[0], n > 1 ? m[1] : NULL);
     a->compare_one = n == 1;
     if (a->compare_one && a->nsims == 3) { /* one method asked for: not the app's second choice */
+        sw_app_history_detach(a, 2);
         sw_sim_free(&a->sims[2]);
         a->nsims = 2;
     }
@@ -249,9 +230,11 @@ void sw_app_set_events(sw_app *a, sw_events_mode mode)
 {
     char err[SW_ERRLEN];
     a->events = mode;
-    for (int i = 0; i < a->nsims; i++)
+    for (int i = 0; i < a->nsims; i++) {
         if (sw_sim_set_events(&a->sims[i], mode, err, sizeof err) != SW_OK)
             snprintf(a->message, sizeof a->message, "%s", err);
+        sw_app_history_restart(a, i);
+    }
 }
 
 /* A sim whose plugin failed goes on under the scene's method from t = 0;
@@ -270,12 +253,14 @@ void sw_app_reset(sw_app *a)
     char err[SW_ERRLEN];
     if (a->record_path[0] && a->sims[0].t > 0)
         sw_app_record_stop(a);
-    for (int i = 0; i < a->nsims; i++)
+    for (int i = 0; i < a->nsims; i++) {
         sw_sim_reset(&a->sims[i], err, sizeof err);
+        sw_app_history_restart(a, i);
+    }
     a->t_goal = 0;
     a->slowmo = 1.0;
     for (int i = 0; i < SW_APP_SIMS; i++)
-        series_clear(&a->series[i]);
+        sw_series_clear(&a->series[i]);
     sw_app_phase_clear(a);
     sw_app_watch_restart(a);
 }
@@ -374,15 +359,22 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         a->paused = !a->paused;
         snprintf(a->message, sizeof a->message, "%s", a->paused ? "paused" : "running");
         return 1;
-    case SW_ACT_STEP:
+    case SW_ACT_STEP: {
+        double stop = sw_app_stop_ahead(a); /* the main run's, before it steps */
         a->paused = 1;
         for (int i = 0; i < a->nsims; i++)
-            sw_sim_step(&a->sims[i]);
+            sw_app_step_sim(a, i, stop);
         a->t_goal = a->sims[0].t;
         sw_app_watch_feed(a);
         guard_plugins(a);
         sw_app_phase_push(a);
         return 1;
+    }
+    case SW_ACT_UNTIL:
+        return sw_app_run_to_stop(a);
+    case SW_ACT_BACK:
+    case SW_ACT_BACK_MANY:
+        return sw_app_step_back(a, act == SW_ACT_BACK ? 1 : SW_APP_BACK_MANY);
     case SW_ACT_RESET:
         sw_app_reset(a);
         snprintf(a->message, sizeof a->message, "reset to t = 0");
@@ -510,27 +502,26 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
     return changed;
 }
 
-static double graph_value(sw_app *a, int i)
-{
-    double e = sw_sim_energy_drift(&a->sims[i]);
-    return isfinite(e) ? e : sw_app_error(a, i);
-}
-
 void sw_app_advance(sw_app *a, double wall, long max_steps)
 {
     if (a->paused || !(wall > 0))
         return;
     double want = wall * a->speed;
     a->t_goal += want;
+    /* a stop time ahead caps the goal, and every run lands on it exactly */
+    double stop = sw_app_stop_ahead(a);
+    int to_stop = stop > 0 && a->t_goal >= stop;
+    if (to_stop)
+        a->t_goal = stop;
     int behind = 0;
     for (int i = 0; i < a->nsims; i++) {
         sw_sim *s = &a->sims[i];
         long n = 0;
         /* Fixed steps land within half a step of the goal (rounding in t
          * never buys an extra step); adaptive steps go just past it. */
-        double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : 0.5 * s->dt;
+        double slack = (s->method->flags & SW_ADAPTIVE) ? 0.0 : to_stop ? 1e-9 * s->dt : 0.5 * s->dt;
         while (!s->blown && s->t + slack < a->t_goal && n < max_steps) {
-            sw_sim_step(s);
+            sw_app_step_sim(a, i, stop);
             if (i == 0)
                 sw_app_watch_feed(a); /* every step: the energy's peaks are per step */
             n++;
@@ -551,8 +542,9 @@ void sw_app_advance(sw_app *a, double wall, long max_steps)
     } else {
         a->slowmo = 1.0;
     }
-    for (int i = 0; i < a->nsims; i++)
-        series_push(&a->series[i], a->sims[i].t, a->graph ? graph_value(a, i) : sw_sim_energy_drift(&a->sims[i]));
+    sw_app_sample(a);
     guard_plugins(a);
-    sw_app_phase_push(a);
+    if (stop > 0) /* reached on the way, or by capping the goal */
+        sw_app_stop_reached(a, stop);
 }
+

@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 
+#include "sim/history.h"
 #include "sim/truth.h"
 #include "sim/watch.h"
 #include "lesson/controls.h"
@@ -14,6 +15,8 @@
 
 #define SW_APP_SIMS 3          /* main + two compare runs */
 #define SW_APP_GRAPH 600       /* graph samples kept per sim (bounded) */
+#define SW_APP_BACK_MANY 50    /* steps the rewind key goes back */
+#define SW_APP_UNTIL_MAX 1e6   /* the latest stop time, in seconds */
 #define SW_APP_SPEED_MIN (1.0 / 64)
 #define SW_APP_SPEED_MAX 1024.0
 
@@ -121,6 +124,9 @@ typedef struct sw_app {
     int phase_particle;         /* the phase view's particle and coordinate */
     sw_phase_coord phase_coord;
     sw_phase_hist phase[SW_APP_SIMS + 1]; /* the sims' paths, then the truth's (reference runs) */
+    /* time under the student's control (app/timeline.c) */
+    double until;               /* the stop time (play --until, a page's @until): 0 none */
+    sw_history hist[SW_APP_SIMS]; /* each sim's recent states, for stepping back */
 } sw_app;
 
 
@@ -183,6 +189,35 @@ void sw_phase_default(const sw_system *sys, int *i, sw_phase_coord *c);
 void sw_phase_names(sw_phase_coord c, const char **q, const char **q_unit, const char **v, const char **v_unit);
 /* (phase.c) The next available coordinate (dir +1) or particle (dir +-2: next/previous). */
 void sw_phase_cycle(const sw_system *sys, int *i, sw_phase_coord *c, int dir);
+
+/* (timeline.c) One step of sim i, never past t_stop when t_stop > its t
+ * (sw_sim_step_until), kept in its history; 0, or 1 when it has blown up. */
+int sw_app_step_sim(sw_app *a, int i, double t_stop);
+/* (timeline.c) Sim i's history: made when the sim is (allocated once, its
+ * first state kept), freed with it, started again from the state now when
+ * the run's rules change (reset, method, dt, events). */
+void sw_app_history_attach(sw_app *a, int i);
+void sw_app_history_detach(sw_app *a, int i);
+void sw_app_history_restart(sw_app *a, int i);
+/* (timeline.c) The stop time the clock halts at (T <= 0: none). */
+void sw_app_set_until(sw_app *a, double T);
+/* (timeline.c) The stop time still ahead of the main run, else 0. */
+double sw_app_stop_ahead(const sw_app *a);
+/* (timeline.c) After advancing towards stop: when every run still going
+ * has reached it, land each exactly on it, pause and say so; 1 then. */
+int sw_app_stop_reached(sw_app *a, double stop);
+/* (timeline.c) The run-to-stop key: every sim stepped to the stop time now
+ * (the graph and phase paths sampled on the way), then paused. */
+int sw_app_run_to_stop(sw_app *a);
+/* (timeline.c) Back n steps of the main run (every sim to that time, the
+ * graph and paths cut there), paused; 1 when anything moved. */
+int sw_app_step_back(sw_app *a, int n);
+/* (series.c) One graph sample and one phase point for every sim, now (what
+ * a frame of the clock adds). */
+void sw_app_sample(sw_app *a);
+/* (series.c) Empty a graph series; keep only its samples up to time t. */
+void sw_series_clear(sw_series *s);
+void sw_series_cut(sw_series *s, double t);
 
 /* (measure.c) Start watching the main run again from now. */
 void sw_app_watch_restart(sw_app *a);

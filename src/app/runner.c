@@ -81,6 +81,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->graph = pg->graph;
     if (pg->zoom > 0)
         a->zoom = pg->zoom;
+    sw_app_set_until(a, pg->until); /* a page's own stop time, or none */
     a->locked = pg->locked;
     a->panel = a->help = 0;
     r->page = page;

@@ -35,6 +35,10 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "t=%.3f", s->t);
         snprintf(x->brief, sizeof x->brief, "t=%.4g", s->t);
     }
+    if (i == 0 && a->until > 0 && (x = add(f, &n, max, 7))) {
+        snprintf(x->full, sizeof x->full, "stops at t=%g (u)", a->until);
+        snprintf(x->brief, sizeof x->brief, "stop t=%g", a->until);
+    }
     if ((x = add(f, &n, max, 3))) {
         snprintf(x->full, sizeof x->full, "steps %ld", s->steps);
     }

@@ -14,6 +14,7 @@
 #include "app/app.h"
 #include "render/screen.h"
 #include "tui/loop.h"
+#include "util/num.h"
 #include "util/signals.h"
 #include "util/utf8.h"
 
@@ -33,6 +34,7 @@ static const char play_help[] =
     "      --braille           draw with Braille dots\n"
     "      --size COLSxROWS    frame size for --ascii (default 80x24)\n"
     "      --speed X           simulated seconds per wall second (default 1)\n"
+    "      --until T           stop the run at t = T seconds exactly (u runs there at once)\n"
     "      --view VIEW         start with this view: scene, phase or region\n"
     "      --lanes             compare side by side;  --follow  the camera follows the particles\n"
     "      --zoom X            the view's size times X (2: zoomed out)\n"
@@ -91,7 +93,7 @@ int sw_cmd_play(int argc, char **argv)
         { "ghost", no_argument, NULL, 'g' },            { "help", no_argument, NULL, 'h' },
         { "view", required_argument, NULL, 'V' },       { "lanes", no_argument, NULL, 'L' },
         { "follow", no_argument, NULL, 'F' },           { "zoom", required_argument, NULL, 'Z' },
-        { "events", required_argument, NULL, 'E' },
+        { "events", required_argument, NULL, 'E' },     { "until", required_argument, NULL, 'U' },
         { NULL, 0, NULL, 0 },
     };
     sw_run_opts o;
@@ -99,7 +101,7 @@ int sw_cmd_play(int argc, char **argv)
     const char *method_name = NULL;
     long frames = 0;
     int ascii = 0, braille = 0, compare = 0, ghost = 0, cols = 80, rows = 24;
-    double speed = 1, zoom = 1;
+    double speed = 1, zoom = 1, until = 0;
     int view = SW_VIEW_SCENE, lanes = 0, follow = 0;
     optind = 1;
     opterr = 0;
@@ -132,6 +134,11 @@ int sw_cmd_play(int argc, char **argv)
             else return sw_cli_error("--view '%.40s' is not a view: give scene, phase or region", optarg);
             break;
         case 'L': lanes = 1; break;
+        case 'U':
+            if (sw_parse_double(optarg, &until) != SW_OK || !(until > 0 && until <= SW_APP_UNTIL_MAX))
+                return sw_cli_error("--until '%.40s' is not allowed: give a time in seconds, a number greater "
+                                    "than 0 and at most %g", optarg, SW_APP_UNTIL_MAX);
+            break;
         case 'E': if (sw_cli_events(optarg, &o.events)) return SW_EXIT_USAGE; break;
         case 'F': follow = 1; break;
         case 'Z':
@@ -182,6 +189,7 @@ int sw_cmd_play(int argc, char **argv)
     a.lanes = lanes;
     a.follow = follow;
     a.zoom = zoom;
+    sw_app_set_until(&a, until);
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;

@@ -396,6 +396,14 @@ static int d_speed(sw_lp_parser *ps, size_t pos)
     return SW_OK;
 }
 
+/* @until T: the run stops at t = T (its last step cut to land there) and
+ * pauses; u runs there at once. */
+static int d_until(sw_lp_parser *ps, size_t pos)
+{
+    return one_number(ps, pos, "@until", "a stop time in seconds", SW_DT_MIN, SW_LESSON_UNTIL_MAX,
+                      &sw_lp_page(ps)->until);
+}
+
 /* @view WORD...: scene, phase or region (what the picture shows); fixed or
  * follow (the camera); overlay or lanes (compare's layout); graph or
  * nograph (the energy/error graph); zoom=X. */
@@ -451,7 +459,7 @@ static const struct directive {
 } directives[] = {
     { "scene", d_scene, 0, NULL }, { "set", d_set, 0, NULL }, { "integrator", d_integrator, 0, NULL },
     { "dt", d_dt, 0, NULL }, { "compare", d_compare, 0, i_compare }, { "ghost", d_ghost, 1, i_ghost },
-    { "pause", d_pause, 1, i_pause }, { "reset", d_reset, 1, NULL }, { "speed", d_speed, 1, NULL },
+    { "pause", d_pause, 1, i_pause }, { "reset", d_reset, 1, NULL }, { "speed", d_speed, 1, NULL }, { "until", d_until, 1, NULL },
     { "view", d_view, 1, i_view }, { "events", d_events, 1, i_events }, { "lock", d_lock_on, 0, NULL },
     { "unlock", d_lock_off, 0, NULL },
     { "goal", sw_lp_goal, 0, NULL }, { "hint", d_hint, 0, NULL }, { "question", d_question, 0, NULL },

@@ -120,6 +120,8 @@ enum { SW_LESSON_VIEW_SCENE = 0, SW_LESSON_VIEW_PHASE = 1, SW_LESSON_VIEW_REGION
 /* @speed's range (the app's). */
 #define SW_LESSON_SPEED_MIN (1.0 / 64)
 #define SW_LESSON_SPEED_MAX 1024.0
+/* @until's latest stop time, in seconds (the app's). */
+#define SW_LESSON_UNTIL_MAX 1e6
 
 typedef struct sw_lesson_block {
     int verbatim;             /* 1: lines shown as written ('\n' between them);
@@ -172,6 +174,7 @@ typedef struct sw_lesson_page {
     int lanes;                /* -1 / 0 / 1: compare overlaid or side by side */
     int graph;                /* -1 / 0 / 1: the energy/error graph off or on */
     double zoom;              /* the view's size times this; 0: leave as is */
+    double until;             /* @until: the run stops at this time (seconds); 0: no stop time */
     sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 
     sw_lesson_goal goals[SW_LESSON_MAX_GOALS];

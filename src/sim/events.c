@@ -100,6 +100,15 @@ void sw_sim_events_reset(sw_sim *s)
     }
 }
 
+void sw_sim_events_restore(sw_sim *s, long located, double last_time)
+{
+    if (s->ev) {
+        s->ev->located = located;
+        s->ev->last_time = last_time;
+        s->ev->cut = 0;
+    }
+}
+
 long sw_sim_events_located(const sw_sim *s) { return s->ev ? s->ev->located : 0; }
 
 double sw_sim_events_last_time(const sw_sim *s) { return s->ev ? s->ev->last_time : NAN; }

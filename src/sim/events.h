@@ -23,6 +23,9 @@ int sw_sim_events_cut(const sw_sim *s);
 void sw_sim_events_arm(sw_sim *s);
 /* Back to none located (the sim was reset). */
 void sw_sim_events_reset(sw_sim *s);
+/* Put back the count of events located and the last one's time (a sim
+ * restored from its history); nothing in step mode. */
+void sw_sim_events_restore(sw_sim *s, long located, double last_time);
 /* Release the location workspace. */
 void sw_sim_events_free(sw_sim *s);
 

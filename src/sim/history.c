@@ -1,0 +1,137 @@
+/* A sim's recent past: a ring of snapshots taken after each step, allocated
+ * once when the sim is put on screen. Invariant: restoring the newest
+ * snapshot and stepping gives the states the forward run gave, bit for bit
+ * (the method's carried memory is restored with the state, not rebuilt). */
+#include "sim/history.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/stepper.h"
+#include "sim/events.h"
+
+struct sw_history_meta {
+    double t;
+    long steps, evals;
+    double h_next, h_last;    /* the adaptive controller's proposal, the last step */
+    long accepted, rejected, newton_iters;
+    int have_cache, fsal;     /* the FSAL derivative (kept in the vector's second half) */
+    long located;             /* events located so far, and the last one's time */
+    double last_event;
+};
+
+static size_t stride(const sw_history *h) { return 2 * (size_t)h->dim + (size_t)h->nextra; }
+
+void sw_history_init(sw_history *h, const sw_sim *s)
+{
+    memset(h, 0, sizeof *h);
+    h->dim = s->sys.ode->dim;
+    h->nextra = s->sys.nextra;
+    size_t one = stride(h) * sizeof(double) + sizeof(struct sw_history_meta);
+    size_t fit = SW_HISTORY_BYTES / one;
+    int cap = fit < SW_HISTORY_STATES ? (int)fit : SW_HISTORY_STATES;
+    if (cap < SW_HISTORY_MIN)
+        return;
+    h->vec = malloc((size_t)cap * stride(h) * sizeof(double));
+    h->meta = malloc((size_t)cap * sizeof *h->meta);
+    if (!h->vec || !h->meta) {
+        sw_history_free(h);
+        return;
+    }
+    h->cap = cap;
+}
+
+void sw_history_free(sw_history *h)
+{
+    free(h->vec);
+    free(h->meta);
+    h->vec = NULL;
+    h->meta = NULL;
+    h->cap = h->head = h->count = 0;
+}
+
+void sw_history_clear(sw_history *h) { h->head = h->count = 0; }
+
+void sw_history_push(sw_history *h, const sw_sim *s)
+{
+    if (!h->cap || s->blown)
+        return;
+    const sw_stepper *st = s->stepper;
+    double *v = h->vec + (size_t)h->head * stride(h);
+    size_t dim = (size_t)h->dim;
+    memcpy(v, s->sys.y, dim * sizeof *v);
+    if (st->have_cache)
+        memcpy(v + dim, SW_WORK(st, st->fsal), dim * sizeof *v);
+    if (h->nextra)
+        memcpy(v + 2 * dim, s->sys.extra, (size_t)h->nextra * sizeof *v);
+    h->meta[h->head] = (struct sw_history_meta){
+        .t = s->t, .steps = s->steps, .evals = s->sys.ode->evals,
+        .h_next = st->h_next, .h_last = st->h_last,
+        .accepted = st->accepted, .rejected = st->rejected, .newton_iters = st->newton_iters,
+        .have_cache = st->have_cache, .fsal = st->fsal,
+        .located = sw_sim_events_located(s), .last_event = sw_sim_events_last_time(s),
+    };
+    h->head = (h->head + 1) % h->cap;
+    if (h->count < h->cap)
+        h->count++;
+}
+
+/* The k-th newest snapshot's index (k = 0: the newest). */
+static int at(const sw_history *h, int k) { return ((h->head - 1 - k) % h->cap + h->cap) % h->cap; }
+
+double sw_history_time(const sw_history *h, int k)
+{
+    return k >= 0 && k < h->count ? h->meta[at(h, k)].t : NAN;
+}
+
+void sw_history_retime(sw_history *h, double t)
+{
+    if (h->count > 0)
+        h->meta[at(h, 0)].t = t;
+}
+
+static void restore(const sw_history *h, int i, sw_sim *s)
+{
+    const struct sw_history_meta *m = &h->meta[i];
+    const double *v = h->vec + (size_t)i * stride(h);
+    size_t dim = (size_t)h->dim;
+    sw_stepper *st = s->stepper;
+    memcpy(s->sys.y, v, dim * sizeof *v);
+    if (m->have_cache)
+        memcpy(SW_WORK(st, m->fsal), v + dim, dim * sizeof *v);
+    if (h->nextra)
+        memcpy(s->sys.extra, v + 2 * dim, (size_t)h->nextra * sizeof *v);
+    s->t = m->t;
+    s->steps = m->steps;
+    s->sys.ode->evals = m->evals;
+    st->h_next = m->h_next;
+    st->h_last = m->h_last;
+    st->accepted = m->accepted;
+    st->rejected = m->rejected;
+    st->newton_iters = m->newton_iters;
+    st->have_cache = m->have_cache;
+    st->fsal = m->fsal;
+    st->why = NULL;
+    sw_sim_events_restore(s, m->located, m->last_event);
+    s->blown = 0; /* only states before a blow-up are kept */
+    s->blow_step = 0;
+    s->blow_time = 0;
+    s->blow_reason[0] = '\0';
+}
+
+int sw_history_back_to(sw_history *h, sw_sim *s, double t)
+{
+    if (h->count < 1)
+        return 0;
+    int dropped = 0;
+    while (h->count > 1 && h->meta[at(h, 0)].t > t) {
+        h->head = at(h, 0);
+        h->count--;
+        dropped = 1;
+    }
+    int moved = dropped || s->blown || s->t != h->meta[at(h, 0)].t;
+    if (moved)
+        restore(h, at(h, 0), s);
+    return moved;
+}

@@ -1,0 +1,240 @@
+/* Time under the student's control (app/timeline.c, sim/history.c): a stop
+ * time the run lands on exactly, and stepping back through the history so
+ * that stepping on again repeats the forward run bit for bit. */
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "app/app.h"
+#include "app/runner.h"
+
+#define LESSONS_DIR "lessons"
+
+static void app_on(sw_app *a, const char *scene, const char *method, double dt)
+{
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_app_init(a, sw_scene_find(scene), NULL, method ? sw_integrator_find(method) : NULL, dt,
+                              err, sizeof err) == SW_OK, "%s", err);
+}
+
+/* Frames of 1/60 s until the clock pauses (or 20 simulated seconds). */
+static void run_frames(sw_app *a)
+{
+    for (int k = 0; k < 1200 && !a->paused; k++)
+        sw_app_advance(a, 1.0 / 60, 1000000);
+}
+
+/* The run pauses at t = 2.5 exactly: with dt = 0.01 (250 steps whose sum
+ * rounds below 2.5) and with dt = 0.03 (the 84th step cut to 0.01), for an
+ * adaptive method, and for every run of compare. */
+START_TEST(until_lands_exactly)
+{
+    static const struct { const char *method; double dt; long steps; } cases[] = {
+        { "euler", 0.01, 250 }, { "euler", 0.03, 84 }, { "verlet", 0.02, 125 }, { "rk45", 0.05, -1 },
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        sw_app a;
+        app_on(&a, "spring", cases[c].method, cases[c].dt);
+        sw_app_set_until(&a, 2.5);
+        run_frames(&a);
+        ck_assert_msg(a.paused, "%s dt=%g: paused at the stop time", cases[c].method, cases[c].dt);
+        ck_assert_msg(a.sims[0].t == 2.5, "%s dt=%g: t = %.17g", cases[c].method, cases[c].dt, a.sims[0].t);
+        if (cases[c].steps > 0)
+            ck_assert_int_eq(a.sims[0].steps, cases[c].steps);
+        ck_assert_ptr_nonnull(strstr(a.message, "t = 2.5"));
+        /* space runs on past it; the stop time no longer holds the run */
+        sw_app_key(&a, ' ', 0);
+        sw_app_advance(&a, 0.1, 1000000);
+        ck_assert(a.sims[0].t > 2.5);
+        sw_app_free(&a);
+    }
+    sw_app a;
+    app_on(&a, "spring", "euler", 0.03);
+    sw_app_set_compare(&a, 1, NULL, NULL);
+    sw_app_set_until(&a, 2.5);
+    run_frames(&a);
+    ck_assert_int_eq(a.nsims, 3);
+    for (int i = 0; i < a.nsims; i++)
+        ck_assert_msg(a.sims[i].t == 2.5, "sim %d: t = %.17g", i, a.sims[i].t);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* u runs every sim to the stop time at once and pauses; the same states
+ * as the clock reaching it frame by frame. */
+START_TEST(until_key_runs_there)
+{
+    sw_app a, b;
+    app_on(&a, "spring", "rk4", 0.03);
+    app_on(&b, "spring", "rk4", 0.03);
+    sw_app_key(&a, 'u', 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "no stop time"));
+    ck_assert_double_eq(a.sims[0].t, 0);
+    sw_app_set_until(&a, 2.5);
+    sw_app_set_until(&b, 2.5);
+    sw_app_key(&a, 'u', 0);
+    run_frames(&b);
+    ck_assert(a.paused);
+    ck_assert(a.sims[0].t == 2.5);
+    ck_assert_int_eq(a.sims[0].steps, b.sims[0].steps);
+    ck_assert_int_eq(memcmp(a.sims[0].sys.y, b.sims[0].sys.y, 4 * sizeof(double)), 0);
+    ck_assert_int_gt(a.series[0].len, 10); /* the graph was sampled on the way */
+    sw_app_key(&a, 'u', 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "already"));
+    sw_app_free(&a);
+    sw_app_free(&b);
+}
+END_TEST
+
+/* What a state is, for comparing bit for bit: y, t, steps, evaluations. */
+typedef struct kept {
+    double *y;
+    double t;
+    long steps, evals;
+} kept;
+
+static void keep(kept *k, const sw_sim *s)
+{
+    size_t n = (size_t)s->sys.ode->dim * sizeof(double);
+    k->y = malloc(n);
+    ck_assert_ptr_nonnull(k->y);
+    memcpy(k->y, s->sys.y, n);
+    k->t = s->t;
+    k->steps = s->steps;
+    k->evals = sw_sim_evals(s);
+}
+
+static void same(const kept *k, const sw_sim *s, const char *what, int at)
+{
+    ck_assert_msg(memcmp(k->y, s->sys.y, (size_t)s->sys.ode->dim * sizeof(double)) == 0,
+                  "%s: the state at step %d differs", what, at);
+    ck_assert_msg(k->t == s->t && k->steps == s->steps && k->evals == sw_sim_evals(s),
+                  "%s at step %d: t %.17g/%.17g steps %ld/%ld evals %ld/%ld", what, at, k->t, s->t, k->steps,
+                  s->steps, k->evals, sw_sim_evals(s));
+}
+
+/* Forward 300 steps with '.', back 120 with ',' and ';' (every state on
+ * the way equal to the forward run's, bit for bit), then forward again:
+ * the same states as the first time, bit for bit, for methods that carry
+ * memory between steps (Verlet's and rk45's FSAL derivative, rk45's and
+ * dop853's step proposal), implicit ones, a scene with events located
+ * (bounce), one with scene data (fireworks' sparks), and compare's runs. */
+START_TEST(rewind_bit_for_bit)
+{
+    static const struct { const char *scene, *method; double dt; int compare, locate; } cases[] = {
+        { "spring", "verlet", 0, 0, 0 }, { "spring", "rk45", 0.5, 0, 0 }, { "orbit", "dop853", 1, 0, 0 },
+        { "stiff-spring", "implicit-euler", 0, 0, 0 }, { "bounce", "rk4", 0, 0, 1 },
+        { "fireworks", "heun", 0, 0, 0 }, { "spring", "euler", 0, 1, 0 },
+    };
+    enum { N = 300, BACK = 120 };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        sw_app a;
+        char what[80];
+        snprintf(what, sizeof what, "%s %s", cases[c].scene, cases[c].method);
+        app_on(&a, cases[c].scene, cases[c].method, cases[c].dt); /* rk45, dop853: steps below dt */
+        if (cases[c].locate)
+            sw_app_set_events(&a, SW_EVENTS_LOCATE);
+        if (cases[c].compare)
+            sw_app_set_compare(&a, 1, NULL, NULL);
+        kept (*fwd)[SW_APP_SIMS] = calloc(N + 1, sizeof *fwd);
+        ck_assert_ptr_nonnull(fwd);
+        for (int i = 0; i < a.nsims; i++)
+            keep(&fwd[0][i], &a.sims[i]);
+        for (int k = 1; k <= N; k++) {
+            sw_app_key(&a, '.', 0);
+            for (int i = 0; i < a.nsims; i++)
+                keep(&fwd[k][i], &a.sims[i]);
+        }
+        ck_assert_msg(!a.sims[0].blown, "%s blew up", what);
+        for (int k = N - 1; k >= N - 20; k--) { /* one step back at a time */
+            sw_app_key(&a, ',', 0);
+            for (int i = 0; i < a.nsims; i++)
+                same(&fwd[k][i], &a.sims[i], what, k);
+        }
+        for (int k = N - 20 - SW_APP_BACK_MANY; k >= N - BACK; k -= SW_APP_BACK_MANY) { /* ; goes 50 back */
+            sw_app_key(&a, ';', 0);
+            for (int i = 0; i < a.nsims; i++)
+                same(&fwd[k][i], &a.sims[i], what, k);
+        }
+        ck_assert(a.paused);
+        for (int k = N - BACK + 1; k <= N; k++) {
+            sw_app_key(&a, '.', 0);
+            for (int i = 0; i < a.nsims; i++)
+                same(&fwd[k][i], &a.sims[i], what, k);
+        }
+        for (int k = 0; k <= N; k++)
+            for (int i = 0; i < a.nsims; i++)
+                free(fwd[k][i].y);
+        free(fwd);
+        sw_app_free(&a);
+    }
+}
+END_TEST
+
+/* Stepping back through frames of the clock: the graph and the phase path
+ * are cut back to the time stepped to; the history starts again at a reset
+ * and at a change of dt, and says so. */
+START_TEST(rewind_follows_and_bounds)
+{
+    sw_app a;
+    app_on(&a, "spring", "euler", 0.01);
+    for (int k = 0; k < 60; k++)
+        sw_app_advance(&a, 1.0 / 60, 1000000);
+    double t = a.sims[0].t;
+    int len = a.series[0].len;
+    sw_app_key(&a, ';', 0);
+    ck_assert(a.sims[0].t < t);
+    ck_assert_int_eq(a.sims[0].steps, 50);
+    ck_assert_int_lt(a.series[0].len, len);
+    ck_assert(a.series[0].t[a.series[0].len - 1] <= a.sims[0].t);
+    ck_assert_ptr_nonnull(strstr(a.message, "back to t = 0.5"));
+    sw_app_key(&a, '-', 0); /* halve dt: the past was stepped with another dt */
+    sw_app_key(&a, ',', 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "nothing earlier"));
+    ck_assert_int_eq(a.sims[0].steps, 50);
+    /* the history is bounded: 5000 steps keep the last SW_HISTORY_STATES */
+    for (int k = 0; k < 5000; k++)
+        sw_app_key(&a, '.', 0);
+    for (int k = 0; k < 100; k++)
+        sw_app_key(&a, ';', 0);
+    ck_assert_int_eq(a.sims[0].steps, 5050 - (SW_HISTORY_STATES - 1));
+    sw_app_free(&a);
+}
+END_TEST
+
+/* A page's @until is its stop time (lesson 7 page 5 stops at 2.5); a page
+ * without one has none. */
+START_TEST(lesson_page_until)
+{
+    sw_runner r;
+    sw_app a;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_runner_start(&r, &a, LESSONS_DIR "/07-implicit.lesson", 4, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert(r.lesson.pages[4].until == 2.5);
+    ck_assert(a.until == 2.5);
+    run_frames(&a);
+    ck_assert(a.sims[0].t == 2.5);
+    sw_runner_enter(&r, &a, 3);
+    ck_assert(a.until == 0);
+    sw_runner_free(&r);
+    sw_app_free(&a);
+}
+END_TEST
+
+Suite *make_timeline_suite(void);
+Suite *make_timeline_suite(void)
+{
+    Suite *s = suite_create("timeline");
+    TCase *tc = tcase_create("timeline");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, until_lands_exactly);
+    tcase_add_test(tc, until_key_runs_there);
+    tcase_add_test(tc, rewind_bit_for_bit);
+    tcase_add_test(tc, rewind_follows_and_bounds);
+    tcase_add_test(tc, lesson_page_until);
+    suite_add_tcase(s, tc);
+    return s;
+}

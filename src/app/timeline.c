@@ -62,8 +62,8 @@ int sw_app_stop_reached(sw_app *a, double stop)
         }
     a->t_goal = stop;
     a->paused = 1;
-    snprintf(a->message, sizeof a->message, "stopped at the stop time t = %g (space runs on past it, "
-             ", steps back)", stop);
+    snprintf(a->message, sizeof a->message, "stopped at the stop time t = %g (space: run on past it; "
+             "',': step back)", stop);
     return 1;
 }
 

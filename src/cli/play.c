@@ -190,6 +190,8 @@ int sw_cmd_play(int argc, char **argv)
     a.follow = follow;
     a.zoom = zoom;
     sw_app_set_until(&a, until);
+    if (until > 0)
+        snprintf(a.message, sizeof a.message, "the run stops at t = %g (--until); u runs straight there", until);
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;

@@ -47,13 +47,13 @@ fail() {
     exit 1
 }
 
-# A 120x40 tmux session running a plain sh with the prompt "PROMPT$ ", in
+# A 120x40 tmux session (tmux_start COLS ROWS: another size) running a plain sh with the prompt "PROMPT$ ", in
 # the C.UTF-8 locale (built into glibc, so present on a fresh Debian too):
 # the UI's ✓, ✗ and Braille need a UTF-8 terminal, whatever the caller's locale.
 tmux_start() {
     tmux_next
     TMUX_STARTED=1
-    LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$SESSION" -x 120 -y 40 -c "$WORK" \
+    LANG=C.UTF-8 LC_ALL=C.UTF-8 tmux -u new-session -d -s "$SESSION" -x "${1:-120}" -y "${2:-40}" -c "$WORK" \
         "env LANG=C.UTF-8 LC_ALL=C.UTF-8 PS1='PROMPT\$ ' TERM=xterm-256color sh" || fail "cannot start tmux"
     wait_for 'PROMPT\$' || fail "no shell prompt"
 }

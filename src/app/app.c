@@ -403,9 +403,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         else if (!a->ghost)
             snprintf(a->message, sizeof a->message, "ghost off");
         else if (a->truth.source == SW_TRUTH_EXACT)
-            snprintf(a->message, sizeof a->message, "ghost on: the exact solution");
+            snprintf(a->message, sizeof a->message, "ghost on: the exact solution, drawn ' (&: ghost and run in one cell)");
         else
-            snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s)", a->truth.why);
+            snprintf(a->message, sizeof a->message, "ghost on: a tight reference run (%s), drawn '", a->truth.why);
         return 1;
     }
     case SW_ACT_EVENTS: {

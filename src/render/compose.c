@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "render/decor.h"
+#include "render/gap.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 
@@ -102,6 +103,11 @@ static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, 
         sw_canvas_draw_system(c, &main->sys, g, main->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     for (int i = last; i >= first; i--)
         sw_canvas_draw_system(c, &a->sims[i].sys, a->sims[i].sys.y, a->sims[i].t, sim_glyph[i], sim_style[i]);
+    /* where runs share a cell with the main one (or the main with its ghost): '&' */
+    for (int i = first + 1; i <= last && first == 0; i++)
+        sw_canvas_draw_gap(c, &main->sys, main->sys.y, a->sims[i].sys.y, main->t, NULL, SW_STYLE_MAIN);
+    if (g && !main->blown)
+        sw_canvas_draw_gap(c, &main->sys, main->sys.y, g, main->t, "ghost", SW_STYLE_GHOST);
     /* particles that left the view: an arrow at the edge (the main run's with its distance) */
     for (int i = last; i >= first; i--) {
         const sw_sim *s = &a->sims[i];

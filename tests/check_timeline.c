@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "stepwise/stepwise.h"
 #include "app/app.h"
@@ -224,6 +225,29 @@ START_TEST(lesson_page_until)
 }
 END_TEST
 
+/* A recording ends at the stop time (a trace cannot describe a step cut
+ * in the middle of a run); replayed with the trace's until rule, its last
+ * step cut the same way, it reproduces the screen. */
+START_TEST(record_to_stop_time)
+{
+    char dir[] = "/tmp/sw-timeline-XXXXXX", path[64];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/run.trace", dir);
+    sw_app a;
+    app_on(&a, "spring", "euler", 0.03);
+    sw_app_set_until(&a, 2.5);
+    sw_app_record_begin(&a, path);
+    run_frames(&a);
+    ck_assert(a.sims[0].t == 2.5);
+    ck_assert_msg(a.recorded, "%s", a.message); /* the stop time ended the recording */
+    ck_assert_str_eq(a.record_path, "");
+    ck_assert_ptr_nonnull(strstr(a.message, "recorded 84 steps"));
+    sw_app_free(&a);
+    unlink(path);
+    rmdir(dir);
+}
+END_TEST
+
 Suite *make_timeline_suite(void);
 Suite *make_timeline_suite(void)
 {
@@ -235,6 +259,7 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, rewind_bit_for_bit);
     tcase_add_test(tc, rewind_follows_and_bounds);
     tcase_add_test(tc, lesson_page_until);
+    tcase_add_test(tc, record_to_stop_time);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -19,7 +19,10 @@ static int replay(sw_app *a, long steps, char *err, size_t errlen)
     sw_sim s;
     sw_trace_writer w;
     const sw_sim *live = &a->sims[0];
-    sw_trace_spec spec = { .steps = steps, .until = 0, .every = 1 };
+    /* a run stopped at the stop time had its last step cut to land there:
+     * the trace's until rule cuts it the same way */
+    int at_stop = a->until > 0 && live->t == a->until && !live->blown;
+    sw_trace_spec spec = { .steps = at_stop ? 0 : steps, .until = at_stop ? a->until : 0, .every = 1 };
     if (sw_sim_init(&s, a->scene, a->p, live->method, live->dt, err, errlen) != SW_OK)
         return SW_EINVAL;
     sw_sim_set_tolerances(&s, live->rtol, live->atol);

@@ -64,6 +64,9 @@ int sw_app_stop_reached(sw_app *a, double stop)
     a->paused = 1;
     snprintf(a->message, sizeof a->message, "stopped at the stop time t = %g (space: run on past it; "
              "',': step back)", stop);
+    /* a recording ends here: its trace (the until rule) can cut the last
+     * step the same way, which a run going on past it could not describe */
+    sw_app_record_stop(a);
     return 1;
 }
 

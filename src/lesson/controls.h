@@ -70,12 +70,11 @@ enum {
     X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  =", "double dt") \
     X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), "-", "halve dt") \
     X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "pause / run") \
-    X(STEP, RUN, PLAY, "single step", SW_KEYS('.'), ".", "one step (pauses)") \
-    X(BACK, RUN, PLAY, "step back", SW_KEYS(','), ",  ;", \
-      "one step back / 50 back (rewind; . steps forward again)") \
+    X(STEP, RUN, PLAY, "single step", SW_KEYS('.'), ".  ,  ;  u", \
+      "one step on / back, 50 back (pauses); u: run to the stop time (--until, @until)") \
+    X(BACK, RUN, PLAY, "step back", SW_KEYS(','), NULL, NULL) \
     X(BACK_MANY, RUN, PLAY, "rewind", SW_KEYS(';'), NULL, NULL) \
-    X(UNTIL, RUN, PLAY, "run to the stop time", SW_KEYS('u'), \
-      "u", "run to the stop time (play --until T, a page's @until) and pause") \
+    X(UNTIL, RUN, PLAY, "run to the stop time", SW_KEYS('u'), NULL, NULL) \
     X(RESET, RESET, PLAY, "reset", SW_KEYS('r'), "r", "reset to t = 0") \
     X(SLOWER, SPEED, PLAY, "slower", SW_KEYS('['), "[  ]", "slower / faster simulated time") \
     X(FASTER, SPEED, PLAY, "faster", SW_KEYS(']'), NULL, NULL) \

@@ -14,7 +14,7 @@
 /* Snapshots kept per sim, and the memory they may take (a large system
  * keeps fewer; below SW_HISTORY_MIN it keeps none: rewind is off). */
 #define SW_HISTORY_STATES 4096
-#define SW_HISTORY_BYTES ((size_t)32 << 20)
+#define SW_HISTORY_BYTES ((size_t)16 << 20)
 #define SW_HISTORY_MIN 16
 
 struct sw_history_meta;

@@ -75,7 +75,7 @@ double sw_canvas_draw_gap(sw_canvas *c, const sw_system *sys, const double *y, c
             wrow = r0;
         }
     }
-    if (!label || worst < 0 || n > SW_GAP_LABEL_MAX)
+    if (!label || worst < 0 || n > SW_GAP_LABEL_MAX || !(gap > 0)) /* no gap: nothing to say */
         return NAN;
     char num[32], text[3][64];
     number(num, sizeof num, gap);

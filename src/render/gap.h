@@ -20,7 +20,8 @@
  * particle furthest from its counterpart gets the distance with its unit
  * beside its marker ("ghost 0.44 m"), on blank cells right, left, above or
  * below it, in the longest form that fits ("gap to ghost 0.44 m", "ghost
- * 0.44 m", "0.44 m"). Returns the distance labelled (NaN: none). */
+ * 0.44 m", "0.44 m"), unless they are exactly together (t = 0). Returns
+ * the distance labelled (NaN: none). */
 double sw_canvas_draw_gap(sw_canvas *c, const sw_system *sys, const double *y, const double *other, double t,
                           const char *label, int style);
 

@@ -248,6 +248,51 @@ START_TEST(record_to_stop_time)
 }
 END_TEST
 
+/* A run that blew up steps back to its last finite state, and on from
+ * there blows up at the same step again. */
+START_TEST(rewind_from_blow_up)
+{
+    sw_app a;
+    app_on(&a, "spring", "euler", 0.5);
+    for (int k = 0; k < 100000 && !a.sims[0].blown; k++)
+        sw_app_key(&a, '.', 0);
+    ck_assert(a.sims[0].blown);
+    long blow_step = a.sims[0].blow_step;
+    sw_app_key(&a, ',', 0);
+    ck_assert(!a.sims[0].blown);
+    ck_assert_int_eq(a.sims[0].steps, blow_step - 1);
+    sw_app_key(&a, '.', 0);
+    ck_assert(a.sims[0].blown);
+    ck_assert_int_eq(a.sims[0].blow_step, blow_step);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* A huge system keeps as many states as fit in SW_HISTORY_BYTES; below
+ * SW_HISTORY_MIN none, and the key says why. */
+START_TEST(rewind_bounded_by_memory)
+{
+    sw_app a;
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("vortex");
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(sc, p);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=200000", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, NULL, 0, err, sizeof err), SW_OK);
+    ck_assert_int_eq(a.hist[0].cap, 0);
+    sw_app_key(&a, '.', 0);
+    sw_app_key(&a, ',', 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "no rewind here: 200000 particles"));
+    ck_assert_int_eq(a.sims[0].steps, 1);
+    sw_app_free(&a);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=20000", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_app_init(&a, sc, p, NULL, 0, err, sizeof err), SW_OK);
+    ck_assert_int_ge(a.hist[0].cap, SW_HISTORY_MIN);
+    ck_assert_int_lt(a.hist[0].cap, SW_HISTORY_STATES);
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_timeline_suite(void);
 Suite *make_timeline_suite(void)
 {
@@ -260,6 +305,8 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, rewind_follows_and_bounds);
     tcase_add_test(tc, lesson_page_until);
     tcase_add_test(tc, record_to_stop_time);
+    tcase_add_test(tc, rewind_from_blow_up);
+    tcase_add_test(tc, rewind_bounded_by_memory);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -125,8 +125,8 @@ int sw_app_step_back(sw_app *a, int n)
     const sw_sim *s = &a->sims[0];
     a->paused = 1;
     if (!h->cap) {
-        snprintf(a->message, sizeof a->message, "no rewind for this scene: its %d numbers per state are too many to "
-                 "keep %d states", s->sys.ode->dim, SW_HISTORY_MIN);
+        snprintf(a->message, sizeof a->message, "no rewind here: %d particles are too many states to keep "
+                 "(fewer keep up to %d states)", s->sys.n, SW_HISTORY_STATES);
         return 0;
     }
     /* A blown-up run's newest snapshot is its last finite state: one back. */

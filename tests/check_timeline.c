@@ -206,8 +206,8 @@ START_TEST(rewind_follows_and_bounds)
 }
 END_TEST
 
-/* A page's @until is its stop time (lesson 7 page 5 stops at 2.5); a page
- * without one has none. */
+/* A page's @until is its stop time (lesson 7 pages 4 and 5 stop at 2.5);
+ * a page without one has none. */
 START_TEST(lesson_page_until)
 {
     sw_runner r;
@@ -218,7 +218,7 @@ START_TEST(lesson_page_until)
     ck_assert(a.until == 2.5);
     run_frames(&a);
     ck_assert(a.sims[0].t == 2.5);
-    sw_runner_enter(&r, &a, 3);
+    sw_runner_enter(&r, &a, 2); /* the stability region: no stop time */
     ck_assert(a.until == 0);
     sw_runner_free(&r);
     sw_app_free(&a);

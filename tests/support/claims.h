@@ -84,6 +84,8 @@ const sw_integrator *cl_method(const char *name);
 void cl_sim_init(sw_sim *s, const char *scene, const char *sets, const char *m, double dt);
 void cl_steps_to(sw_sim *s, double T);
 double cl_drift_at(const char *scene, const char *sets, const char *m, double dt, double T);
+/* The drift at exactly t = T (the last step cut to land there: a page's @until T). */
+double cl_drift_until(const char *scene, const char *sets, const char *m, double dt, double T);
 double cl_time_drift_passes(const char *scene, const char *sets, const char *m, double dt, double level,
                                 double T);
 double cl_max_abs_drift(const char *scene, const char *sets, const char *m, double dt, double T);

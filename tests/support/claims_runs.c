@@ -59,6 +59,19 @@ double cl_drift_at(const char *scene, const char *sets, const char *m, double dt
     return d;
 }
 
+/* The same at exactly t = T (the last step cut to land there), as a page
+ * with `@until T` shows it when it stops. */
+double cl_drift_until(const char *scene, const char *sets, const char *m, double dt, double T)
+{
+    sw_sim s;
+    cl_sim_init(&s, scene, sets, m, dt);
+    sw_sim_run_until(&s, T);
+    ck_assert_msg(!s.blown, "%s on %s at dt %g blew up at t = %g", m, scene, dt, s.blow_time);
+    double d = sw_sim_energy_drift(&s);
+    sw_sim_free(&s);
+    return d;
+}
+
 /* The first time the drift passes `level` percent (level > 0: rises above,
  * level < 0: falls below), stepping up to T; NaN if it never does. */
 double cl_time_drift_passes(const char *scene, const char *sets, const char *m, double dt, double level,

@@ -117,7 +117,7 @@ static const struct { const char *word; double value; } words[] = {
     { "half", 0.5 }, { "twothirds", 2.0 / 3.0 }, { "tripled", 3 }, { "five", 5 }, { "ten", 10 },
     { "adozen", 12 }, { "nineteen", 19 }, { "seven", 7 }, { "six", 6 }, { "four", 4 },
     { "eight", 8 }, { "ten-thousandfold", 1e4 }, { "halves", 2 }, { "rounding", 1e-12 },
-    { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 },
+    { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 }, { "three", 3 },
 };
 
 static const char *const superscripts[] = { "⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹" };

@@ -54,4 +54,8 @@ typedef struct bench_peer_opts {
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);
 
+/* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
+ * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
+void bench_tree(int repeats, int quick);
+
 #endif

@@ -485,7 +485,7 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -500,8 +500,11 @@ static int bench_engine_main(int argc, char **argv)
             o.vortex_n = 10000;
             o.target = 0.003;
             peer = (bench_peer_opts){ .repeats = 3, .chain_n = 20, .vortex_n = 100, .quick = 1 };
+            quick = 1;
         } else if (strcmp(argv[i], "--peer") == 0) {
             sections = 8;
+        } else if (strcmp(argv[i], "--tree") == 0) {
+            sections = 16;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -526,7 +529,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N\n", argv[i]);
             return 2;
         }
     }
@@ -537,6 +540,8 @@ static int bench_engine_main(int argc, char **argv)
         frame_cost(&o);
     if (sections & 4)
         memory(&o);
+    if (sections & 16)
+        bench_tree(o.repeats, quick);
     if (sections & 8)
         bench_peer(&peer);
     return 0;

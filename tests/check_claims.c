@@ -18,8 +18,11 @@
  * computing the rows that bisect for a stability limit. */
 #include "claims.h"
 
-/* The four tables as one. */
-static size_t claim_count(void) { return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n; }
+/* The five tables as one. */
+static size_t claim_count(void)
+{
+    return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n + sw_claims_m_n;
+}
 static const claim *claim_at(size_t i)
 {
     if (i < sw_claims_a_n)
@@ -28,7 +31,10 @@ static const claim *claim_at(size_t i)
     if (i < sw_claims_b_n)
         return &sw_claims_b[i];
     i -= sw_claims_b_n;
-    return i < sw_claims_d_n ? &sw_claims_d[i] : &sw_claims_e[i - sw_claims_d_n];
+    if (i < sw_claims_d_n)
+        return &sw_claims_d[i];
+    i -= sw_claims_d_n;
+    return i < sw_claims_e_n ? &sw_claims_e[i] : &sw_claims_m[i - sw_claims_e_n];
 }
 
 /* ---- reading the texts ------------------------------------------------- */
@@ -117,7 +123,7 @@ static const struct { const char *word; double value; } words[] = {
     { "half", 0.5 }, { "twothirds", 2.0 / 3.0 }, { "tripled", 3 }, { "five", 5 }, { "ten", 10 },
     { "adozen", 12 }, { "nineteen", 19 }, { "seven", 7 }, { "six", 6 }, { "four", 4 },
     { "eight", 8 }, { "ten-thousandfold", 1e4 }, { "halves", 2 }, { "rounding", 1e-12 },
-    { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 },
+    { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 }, { "three", 3 },
 };
 
 static const char *const superscripts[] = { "⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹" };

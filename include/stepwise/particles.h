@@ -13,9 +13,10 @@ typedef enum sw_force_kind {
     SW_FORCE_DRAG,     /* f = -k·v */
     SW_FORCE_SPRINGS,  /* damped springs between particles or to anchors */
     SW_FORCE_CENTRAL,  /* f = -μ·m·d/|d|³ toward a fixed point */
-    SW_FORCE_MUTUAL    /* f_i = -Σ_j μ·m_i·m_j·d_ij/(|d_ij|² + soft²)^(3/2): softened gravity */
+    SW_FORCE_MUTUAL,   /* f_i = -Σ_j μ·m_i·m_j·d_ij/(|d_ij|² + soft²)^(3/2): softened gravity */
+    SW_FORCE_TREE      /* the same, Barnes-Hut: far groups as their centre of mass, opening angle theta */
 } sw_force_kind;
-#define SW_FORCE_KINDS (SW_FORCE_MUTUAL + 1) /* the last kind + 1 */
+#define SW_FORCE_KINDS (SW_FORCE_TREE + 1) /* the last kind + 1 */
 
 /* A damped spring: f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂, d = x_a - x_b;
  * b < 0 ties a to the fixed anchor (ax, ay). */
@@ -31,8 +32,10 @@ typedef struct sw_force {
     double k;            /* drag coefficient */
     double cx, cy, mu;   /* central attraction; mu = G for mutual gravity */
     double soft;         /* mutual gravity's softening length */
+    double theta;        /* Barnes-Hut opening angle: a cell of side s at distance d is one body when s < theta·d */
     sw_spring *springs;  /* owned by the particle system */
     int nsprings;
+    void *work;          /* what the kind sizes when added (the tree's node pool); owned by the system */
 } sw_force;
 
 /* Axis-aligned walls, applied after each step: a particle that crossed a wall
@@ -70,8 +73,9 @@ int sw_particles_add_gravity(sw_particles *p, double gx, double gy);
 int sw_particles_add_drag(sw_particles *p, double k);
 int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
 /* Any force given whole (fo->kind and its parameters; not springs, which
- * sw_particles_add_springs adds): 0, or SW_EINVAL when the table is full
- * or the kind is not one. */
+ * sw_particles_add_springs adds): 0, SW_EINVAL when the table is full or
+ * the kind is not one, or SW_ENOMEM when its workspace (a tree's node pool,
+ * sized for the system's n) cannot be had. */
 int sw_particles_add_force(sw_particles *p, const sw_force *fo);
 /* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
 sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);

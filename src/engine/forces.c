@@ -2,6 +2,8 @@
  * names this place when a kind is added to sw_force_kind. */
 #include "engine/forces.h"
 
+#include "stepwise/base.h"
+
 const swp_force_type *swp_force_type_of(sw_force_kind kind)
 {
     switch (kind) {
@@ -10,6 +12,24 @@ const swp_force_type *swp_force_type_of(sw_force_kind kind)
     case SW_FORCE_SPRINGS: return &swp_springs;
     case SW_FORCE_CENTRAL: return &swp_central;
     case SW_FORCE_MUTUAL: return &swp_mutual;
+    case SW_FORCE_TREE: return &swp_tree;
     }
     return NULL;
+}
+
+int swp_force_prepare(const sw_particles *p, sw_force *fo)
+{
+    fo->work = NULL;
+    switch (fo->kind) {
+    case SW_FORCE_TREE:
+        fo->work = swp_tree_work_new(p->n);
+        return fo->work ? SW_OK : SW_ENOMEM;
+    case SW_FORCE_GRAVITY:
+    case SW_FORCE_DRAG:
+    case SW_FORCE_SPRINGS:
+    case SW_FORCE_CENTRAL:
+    case SW_FORCE_MUTUAL:
+        return SW_OK;
+    }
+    return SW_OK;
 }

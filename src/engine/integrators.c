@@ -36,6 +36,15 @@ static const sw_integrator builtins[] = {
       "adaptive: error estimate from an embedded 4th-order solution" },
     { "dop853", "Dormand-Prince 8(5,3), adaptive (Hairer)", 8, 12, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 12,
       sw_step_dop853, "adaptive: error estimate from embedded 5th- and 3rd-order solutions" },
+    /* Last, so that the keys of the methods before it (lessons name them)
+     * keep their places. Stability: the first ω·h where the trace of the
+     * one-step map on x'' = -ω²x, M = V(w1 z) V(w0 z) V(w1 z) with V(τ) =
+     * [[1 - τ²/2, τ], [-τ(1 - τ²/4), 1 - τ²/2]], climbs back to +2: found by
+     * bisection on the product at 30 digits (no root of |tr M| = 2 beyond it
+     * up to ω·h = 4); tests/check_yoshida.c recomputes it. */
+    { "yoshida4", "Yoshida 4th-order symplectic (triple-jump Verlet)", 4, 3,
+      SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, 1.5734019474345401, 2, sw_step_yoshida4,
+      "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))

@@ -52,8 +52,10 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
 
 void sw_particles_free(sw_particles *p)
 {
-    for (int k = 0; k < p->nforces; k++)
+    for (int k = 0; k < p->nforces; k++) {
         free(p->forces[k].springs);
+        free(p->forces[k].work);
+    }
     free(p->y);
     free(p->mass);
     free(p->inv_mass);
@@ -102,6 +104,10 @@ int sw_particles_add_force(sw_particles *p, const sw_force *given)
     *fo = *given;
     fo->springs = NULL;
     fo->nsprings = 0;
+    if (swp_force_prepare(p, fo) != SW_OK) {
+        p->nforces--;
+        return SW_ENOMEM;
+    }
     return SW_OK;
 }
 

@@ -53,7 +53,7 @@ int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c
 
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,
-    sw_step_rk4, sw_step_verlet;                       /* explicit.c */
+    sw_step_rk4, sw_step_verlet, sw_step_yoshida4;     /* explicit.c */
 sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
     sw_step_implicit_midpoint;                        /* implicit.c */
 sw_step_fn sw_step_rk45;                               /* rk45.c */

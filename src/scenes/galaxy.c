@@ -2,7 +2,8 @@
  * other (softened mutual gravity, G = 1) — the lecture's last example. With
  * discs = 2 a second galaxy falls past the first. No closed form; energy,
  * momentum and angular momentum are conserved exactly, so their drift is
- * the integrator's. Modelled: mutual gravity only (no gas, no dark halo). */
+ * the integrator's. Modelled: mutual gravity only (no gas, no dark halo),
+ * by direct sum or, with theta > 0, a Barnes-Hut tree. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -10,12 +11,13 @@
 #include "scenes/scenes.h"
 #include "util/num.h"
 
-enum { GX_N, GX_DISC, GX_SOFT, GX_DISCS };
+enum { GX_N, GX_DISC, GX_SOFT, GX_DISCS, GX_THETA };
 static const sw_param galaxy_params[] = {
     { "n", 100, 2, 2000, 1, "", "stars per disc" },
     { "disc", 0.05, 0.0, 1.0, 0, "", "a disc's mass over its core's (core mass 1)" },
     { "soft", 0.1, 0.001, 0.5, 0, "", "softening length: gravity at distance r is G m m'/(r^2 + soft^2)" },
     { "discs", 1, 1, 2, 1, "", "galaxies: 1, or 2 (the second falls past the first)" },
+    { "theta", 0, 0, 1, 0, "", "Barnes-Hut opening angle: 0 sums every pair; > 0 takes a far cell as one body" },
 };
 
 /* The disc's radii: stars from R_IN to R_OUT around their core. */
@@ -68,7 +70,9 @@ static int galaxy_build(sw_system *sys, char *err, size_t errlen)
     int n = (int)sys->p[GX_N], discs = (int)sys->p[GX_DISCS], rc;
     if ((rc = sw_scene_particles(sys, discs * (n + 1), 1.0, err, errlen)) != SW_OK)
         return rc;
-    sw_force g = { .kind = SW_FORCE_MUTUAL, .mu = 1.0, .soft = sys->p[GX_SOFT] };
+    double theta = sys->p[GX_THETA];
+    sw_force g = { .kind = theta > 0 ? SW_FORCE_TREE : SW_FORCE_MUTUAL, .mu = 1.0, .soft = sys->p[GX_SOFT],
+                   .theta = theta };
     if ((rc = sw_particles_add_force(&sys->particles, &g)) != SW_OK)
         return rc;
     if (discs == 1)

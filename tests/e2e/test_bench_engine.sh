@@ -1,7 +1,8 @@
 #!/bin/sh
-# The engine benchmark (`make bench`) with --quick: its three tables run
-# to the end (small sizes); every hand-written baseline reproduces the
-# generic step bit for bit; every default scene gets a frame-cost row.
+# The engine benchmark (`make bench`) with --quick: its tables run to the
+# end (small sizes; Barnes-Hut at n = 1e3, 1e4, allocating nothing); every
+# hand-written baseline reproduces the generic step bit for bit; every
+# default scene gets a frame-cost row.
 # Timings are printed, never checked: they vary from machine to machine.
 . "$(dirname "$0")/lib.sh"
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
@@ -17,6 +18,8 @@ done
 echo "$out" | grep -q '^peak memory: vortex n = 10000' || fail "no memory table"
 echo "$out" | grep -Eq '^  rk4 +[0-9.]+ +[0-9.-]+ +5$' || fail "no memory row for rk4"
 echo "$out" | grep -q 'failed' && fail "a memory probe failed: $out"
+echo "$out" | grep -q '^Barnes-Hut against the direct sum' || fail "no Barnes-Hut table"
+echo "$out" | grep -q '^  allocations during the timed evaluations: 0$' || fail "the tree allocated: $out"
 # the count probe bench/instructions.sh runs under callgrind
 for kind in generic base; do
     "$BENCH" --count-probe chain 20 rk4 3 $kind || fail "count probe ($kind) exited $?"

@@ -4,7 +4,8 @@
  * the man page, docs/stability.md, the guide, the scenes' strings); runs,
  * pages and measurements more than one part uses are in claims_runs.c and
  * claims_shared.c; claims_events.c: event location's figures in
- * docs/performance.md and lesson 4. */
+ * docs/performance.md and lesson 4; claims_methods.c: yoshida4's and the
+ * Barnes-Hut tree's figures in docs/performance.md and docs/scenes.md. */
 #ifndef SW_TEST_CLAIMS_H
 #define SW_TEST_CLAIMS_H
 
@@ -73,9 +74,9 @@ typedef struct claim {
 #define R_RATIO "the page's goal accepts this much around the figure"
 #define R_MATH "arithmetic the text does: to its last digit"
 
-/* The rows, in four tables. */
-extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[];
-extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n;
+/* The rows, in five tables. */
+extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[], sw_claims_m[];
+extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n, sw_claims_m_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

@@ -43,6 +43,9 @@ static double ord_verlet(void) { return order_on_spring("verlet"); }
 static double ord_be(void) { return order1_on_spring("implicit-euler"); }
 static double ord_lbe(void) { return order1_on_spring("linear-implicit-euler"); }
 static double ord_im(void) { return order_on_spring("implicit-midpoint"); }
+/* yoshida4 is 4th order where the forces do not depend on v: the undamped spring. */
+static double ord_yoshida(void) { return cl_order_by_halving("spring", "c=0", "yoshida4", 0.04); }
+static double yoshida_wdt(void) { return cl_limit0("spring", "k=1 c=0", "yoshida4"); }
 static double table_order(const char *m) { return cl_method(m)->order; }
 static double ord_rk45(void) { return table_order("rk45"); }
 
@@ -57,6 +60,16 @@ static double ev_verlet(void) { return ev("verlet"); }
 static double ev_be(void) { return ev("implicit-euler"); }
 static double ev_lbe(void) { return ev("linear-implicit-euler"); }
 static double ev_im(void) { return ev("implicit-midpoint"); }
+static double ev_yoshida(void) { return ev("yoshida4"); }
+
+/* 1 when the key '@' picks yoshida4 (the twelfth place), from the controls' table. */
+static double key_at_yoshida(void)
+{
+    const sw_control *control;
+    int arg;
+    return sw_key_lookup('@', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
+           arg == 12 && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "yoshida4") == 0;
+}
 
 /* Euler's energy on the undamped ω = 1 spring after N = 50 steps of h = 0.1,
  * against (1 + h²)^N. */
@@ -363,7 +376,10 @@ const claim sw_claims_d[] = {
     { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "rk45's error after two orbits is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
-    { README, "`1`–`9`, `{0}` and `!` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
+    { README, "`1`–`9`, `{0}`, `!` and `@` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
+    { README, "`1`–`9`, `0`, `!` and `@` pick one", key_at_yoshida, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
+    { README, "Verlet substeps of w1·h, w0·h, w1·h | {4} | 3", ord_yoshida, ABS, 0.1, "the order measured halving Δt from 0.04 on the undamped spring (the damped one gives 2: Verlet's velocity predictor)", NULL },
+    { README, "Verlet substeps of w1·h, w0·h, w1·h | 4 | {3} (reuses the last acceleration) |", ev_yoshida, EXACT, 0, "after the first step", NULL },
     { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
     { README, "(ωh = {2} for symplectic Euler and Verlet", symplectic_wdt, ABS, 1e-6, "symplectic Euler's limit in theory (bisected to 1e-9)", NULL },
@@ -393,6 +409,9 @@ const claim sw_claims_d[] = {
     { INTEGRATORS, "\"classical Runge-Kutta\", 4, {4},", ev_rk4, EXACT, 0, "as above", NULL },
     { INTEGRATORS, "\"velocity Verlet (leapfrog)\", {2}, 1,", ord_verlet, ABS, 0.1, "as above", NULL },
     { INTEGRATORS, "\"velocity Verlet (leapfrog)\", 2, {1},", ev_verlet, EXACT, 0, "after the first step", NULL },
+    { INTEGRATORS, "\"Yoshida 4th-order symplectic (triple-jump Verlet)\", {4}, 3,", ord_yoshida, ABS, 0.1, "as the README's row", NULL },
+    { INTEGRATORS, "\"Yoshida 4th-order symplectic (triple-jump Verlet)\", 4, {3},", ev_yoshida, EXACT, 0, "after the first step", NULL },
+    { INTEGRATORS, "SW_NEEDS_SECOND_ORDER, {1.5734019474345401},", yoshida_wdt, ABS, 1e-6, "the truth module's limit from the method's own one-step map (bisected to 1e-9)", NULL },
     { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", {1}, 1,", ord_be, ABS, 0.1, "as above", NULL },
     { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", 1, {1},", ev_be, ATLEAST, 0, "\"1+solve\": Newton iterates, at least one evaluation", NULL },
     { INTEGRATORS, "\"linearly implicit Euler (one Newton step)\", {1}, 1,", ord_lbe, ABS, 0.1, "as above", NULL },
@@ -451,6 +470,7 @@ const claim sw_claims_d[] = {
     { GUIDE, "`>=` forgive a relative difference of {1e-9}", goal_slack, REL, 1e-6, "the slack of a >= goal, bisected", NULL },
     { GUIDE, "(E - E0)/(E0 - E_rest) in percent", drift_definition, ATMOST, 0, "the drift the goals see against the definition worked out here (1e-12)", cl_rounding },
     { GUIDE, "`0` the tenth, rk45;", cl_key_rk45, EXACT, 0, "the key that picks rk45", cl_zero },
+    { GUIDE, "`@` the twelfth, yoshida4", key_at_yoshida, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
     { GUIDE, "| file size | {262144} bytes (256 KiB) |", max_bytes, EXACT, 0, R_COUNT, NULL },
     { GUIDE, "| line length | {1000} bytes |", max_line, EXACT, 0, R_COUNT, NULL },
     { GUIDE, "| lesson and page titles | {80} characters |", max_title, EXACT, 0, R_COUNT, NULL },

@@ -349,6 +349,23 @@ static double l7_dt_plus1(void) { return cl_page_dt_after(L7, "Backward Euler's 
 static double l8_verlet_bound(void) { return cl_max_abs_drift("orbit", NULL, "verlet", 0.2, 1000); }
 static double l8_rk4_100(void) { return -cl_drift_at("orbit", NULL, "rk4", 0.2, 100); }
 static double l7_dt_plus3(void) { return cl_page_dt_after(L7, "Stiff: a slow swing and a fast stretch", SW_ACT_DT_DOUBLE, 3); }
+/* Lesson 8's yoshida4 page: the run, the weights (the text's arithmetic),
+ * the method's limit in theory and its evaluations per step. */
+static double l8_yoshida(void) { return cl_max_abs_drift("orbit", NULL, "yoshida4", 0.05, 200); }
+static double l8_yoshida_dt(void) { return cl_page_dt_after(L8, "Fourth order, still symplectic", SW_ACT_DT_HALVE, 0); }
+static double l8_w1(void) { return 1 / (2 - cbrt(2.0)); }
+static double l8_minus_w0(void) { return cbrt(2.0) * l8_w1(); }
+static double l8_w_sum(void) { return 2 * l8_w1() - l8_minus_w0(); }
+static double l8_w_cubes(void) { return 2 * pow(l8_w1(), 3) - pow(l8_minus_w0(), 3); }
+static double l8_yoshida_wdt(void) { return cl_limit0("spring", "k=1 c=0", "yoshida4"); }
+static double l8_yoshida_evals(void) { return cl_evals_per_step("orbit", NULL, "yoshida4", 0.05, 20); }
+static double key_at_twelve(void)
+{
+    const sw_control *control;
+    int arg;
+    return sw_key_lookup('@', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
+           sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "yoshida4") == 0;
+}
 static double l8_dt_minus2(void) { return cl_page_dt_after(L8, "RK4 leaks energy", SW_ACT_DT_HALVE, 2); }
 static double l9_dt_plus3(void) { return cl_page_dt_after(L9, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3); }
 
@@ -476,6 +493,18 @@ const claim sw_claims_b[] = {
     { L8, "by t = 100 its energy is down {15.5} %", l8_rk4_100, ROUNDED, 0, R_ROUND, NULL },
     { L8, "@hint Press {6}, or i until the status line says verlet.", key_verlet, EXACT, 0, "the key that picks the method", NULL },
     { L8, "@hint Press {1}, or I until the status line says euler.", key_euler, EXACT, 0, "the key that picks the method", NULL },
+    { L8, "fourth order) at Δt {0.05} keeps the energy", l8_yoshida_dt, EXACT, 0, "the page's Δt", NULL },
+    { L8, "keeps the energy within {0.013} % over 200 s", l8_yoshida, ATMOST, 0.05, "a bound the run comes within 5 % of", NULL },
+    { L8, "w1 = 1/(2 - 2^(1/3)) ≈ {1.351}", l8_w1, ROUNDED, 0, R_MATH, NULL },
+    { L8, "w0 = -2^(1/3)·w1 ≈ -{1.702}", l8_minus_w0, ROUNDED, 0, R_MATH, NULL },
+    { L8, "(2·w1 + w0 = 1,", l8_w_sum, REL, 1e-15, "the weights sum to one step (to rounding)", cl_one },
+    { L8, "2·w1³ + w0³ = 0)", l8_w_cubes, ABS, 1e-14, "the h³ terms cancel (to rounding)", cl_zero },
+    { L8, "next one's first: {three} evaluations a step", l8_yoshida_evals, EXACT, 0, R_COUNT, NULL },
+    { L8, "its energy stays within {0.013} % for 200 s", l8_yoshida, ATMOST, 0.05, "a bound the run comes within 5 % of", NULL },
+    { L8, "Verlet's wandered {0.7} %", l8_verlet, ATMOST, 0.15, "a bound the run comes within 15 % of", NULL },
+    { L8, "ω·Δt below {1.57}, against", l8_yoshida_wdt, ROUNDED, 0, "yoshida4's limit in theory, to the text's digits", NULL },
+    { L8, "against Verlet's {2}.", cl_verlet_wdt, ABS, 1e-6, "Verlet's limit in theory", NULL },
+    { L8, "Press @, or i until the status line says yoshida4.", key_at_twelve, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
     /* lesson 9 */
     { L9, "whips past it {nineteen} times closer", l9_dist_ratio, REL, 1e-9, "apoapsis over periapsis of the true orbit", NULL },
     { L9, "nineteen times closer and {nineteen} times faster", l9_speed_ratio, REL, 1e-9, "the speeds at periapsis and apoapsis of the true orbit", NULL },

@@ -199,7 +199,7 @@ static void tree_add(const sw_particles *p, const sw_force *fo, const double *x,
     int finite = 1;
     for (int i = 0; i < 2 * n && finite; i++)
         finite = isfinite(x[i]);
-    if (!finite || !w || w->n != n) { /* a blown-up state: the direct sum gives its NaNs */
+    if (!finite || !isfinite(side) || !w || w->n != n) { /* a blown-up state: the direct sum gives its NaNs */
         swp_mutual.add(p, fo, x, v, f);
         return;
     }

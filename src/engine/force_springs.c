@@ -118,4 +118,4 @@ static void springs_values(const sw_force *fo, char *buf, size_t len)
 const swp_force_type swp_springs = { "damped springs",
                                      "on a: f = -[k (|d| - rest) + c (v_a - v_b).d/|d|] d/|d|, d = x_a - x_b; b gets -f",
                                      springs_values, springs_add, springs_potential, "spring potential",
-                                     "½ k (|d| - rest)²", 1, springs_pairs, springs_blocks };
+                                     "½ k (|d| - rest)²", 1, springs_pairs, springs_blocks, NULL };

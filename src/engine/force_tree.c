@@ -8,7 +8,7 @@
  * children or more, so at most 2n - 1 nodes); a range of at most LEAF_MAX
  * bodies, or bodies sharing a cell 2^-16 of the box wide, is a leaf.
  * Invariant: an evaluation allocates nothing — the node pool and the sort
- * buffers are sized when the force is added (swp_tree_work_new) — and is
+ * buffers are sized when the force is added (tree_work_new) — and is
  * deterministic (a stable radix sort; bodies and cells walked in a fixed
  * order). Only the force is approximated: the potential, the pairs and the
  * Jacobian blocks are the direct sum's (force_mutual.c), so energies and
@@ -42,7 +42,7 @@ typedef struct tree_work {
 
 static size_t round_up(size_t b) { return (b + 63) & ~(size_t)63; }
 
-void *swp_tree_work_new(int n)
+static void *tree_work_new(int n)
 {
     size_t nodes = 2 * (size_t)n, head = round_up(sizeof(tree_work)), node_b = round_up(nodes * sizeof(tree_node)),
            dbl_b = round_up((size_t)n * sizeof(double)), key_b = round_up((size_t)n * sizeof(uint32_t)),
@@ -255,4 +255,5 @@ const swp_force_type swp_tree = { "mutual gravity (Barnes-Hut tree)",
                                   "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j; a cell of side s "
                                   "at distance d from x_i counts as its mass at its centre of mass when s < theta d",
                                   tree_values, tree_add, tree_potential, "mutual gravity potential",
-                                  "- G m_i m_j/√(r² + ε²)", 0, tree_pairs, tree_blocks };
+                                  "- G m_i m_j/√(r² + ε²)", 0, tree_pairs, tree_blocks,
+                                  tree_work_new };

@@ -19,17 +19,7 @@ const swp_force_type *swp_force_type_of(sw_force_kind kind)
 
 int swp_force_prepare(const sw_particles *p, sw_force *fo)
 {
-    fo->work = NULL;
-    switch (fo->kind) {
-    case SW_FORCE_TREE:
-        fo->work = swp_tree_work_new(p->n);
-        return fo->work ? SW_OK : SW_ENOMEM;
-    case SW_FORCE_GRAVITY:
-    case SW_FORCE_DRAG:
-    case SW_FORCE_SPRINGS:
-    case SW_FORCE_CENTRAL:
-    case SW_FORCE_MUTUAL:
-        return SW_OK;
-    }
-    return SW_OK;
+    const swp_force_type *type = swp_force_type_of(fo->kind);
+    fo->work = type && type->work_new ? type->work_new(p->n) : NULL;
+    return !type || !type->work_new || fo->work ? SW_OK : SW_ENOMEM;
 }

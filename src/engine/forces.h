@@ -3,8 +3,7 @@
  * one table (forces.c). The derivative, the energy, the implicit solve and
  * the stability theory ask the descriptor; none of them re-derives a force.
  * Adding a kind: its descriptor file, its line in forces.c, its enum value
- * (and parameters) in include/stepwise/particles.h — docs/architecture.md;
- * a kind that keeps workspace also gets its line in swp_force_prepare. */
+ * (and parameters) in include/stepwise/particles.h — docs/architecture.md. */
 #ifndef SW_ENGINE_FORCES_H
 #define SW_ENGINE_FORCES_H
 
@@ -44,6 +43,10 @@ typedef struct swp_force_type {
     long (*pairs)(const sw_particles *p, const sw_force *fo, int *reach);
     /* Its Jacobian at (x, v) into out. */
     void (*blocks)(const sw_particles *p, const sw_force *fo, const double *x, const double *v, swp_blocks *out);
+    /* Its workspace for n particles, kept between evaluations (fo->work,
+     * freed by the system), or NULL when out of memory; NULL hook: it keeps
+     * none. */
+    void *(*work_new)(int n);
 } swp_force_type;
 
 extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp_mutual, swp_tree;
@@ -51,12 +54,10 @@ extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp
 /* The descriptor of a kind; NULL for a value that is not a kind. */
 const swp_force_type *swp_force_type_of(sw_force_kind kind);
 
-/* Size fo->work for p's n particles when the force is added (the kinds
- * that keep workspace between evaluations; the others need none): 0 or
- * SW_ENOMEM. The system frees fo->work. Evaluations then allocate nothing. */
+/* Size fo->work for p's n particles when the force is added, through its
+ * descriptor's work_new: 0 or SW_ENOMEM. The system frees fo->work.
+ * Evaluations then allocate nothing. */
 int swp_force_prepare(const sw_particles *p, sw_force *fo);
-/* The tree force's workspace for n bodies (force_tree.c); NULL when out of memory. */
-void *swp_tree_work_new(int n);
 
 /* The 2x2 block -s·(I/q³ - 3 d dᵀ/q⁵), q² = dx² + dy² + soft²: the
  * Jacobian of f = -s·d/q³ (central attraction, softened gravity); zero

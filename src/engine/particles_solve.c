@@ -31,6 +31,7 @@ struct sw_particles_solver {
     int *pa, *pb;          /* the pairs the forces join (engine/forces.h's swp_blocks) */
     double *pblock;        /* 8 per pair: ∂g/∂d and ∂g/∂(dv), d = x_a - x_b */
     long npairs, cap;      /* pairs written by the last assembly; room for */
+    int counted;           /* 1 + the forces there were when cap was last checked; 0: never */
     double *rhs;           /* 2n: the velocity system's right-hand side */
     double *band;          /* the velocity system's band, or NULL before prepare */
     int *piv;
@@ -60,16 +61,21 @@ static long count_pairs(const sw_particles *p, int *far)
     return total;
 }
 
-/* Room for every pair's blocks: allocates only when the forces grew since
- * the last call (sw_particles_solver_prepare makes the first, before any
- * step). 0 or SW_ENOMEM. */
+/* Room for every pair's blocks: counts them only when forces were added
+ * since the last call (a force's pairs are fixed once it is added), and
+ * allocates only when they grew (sw_particles_solver_prepare makes the
+ * first, before any step). 0 or SW_ENOMEM. */
 static int reserve_pairs(sw_particles *p)
 {
     struct sw_particles_solver *s = p->solver;
+    if (s->counted == p->nforces + 1)
+        return SW_OK;
     int far;
     long need = count_pairs(p, &far);
-    if (need <= s->cap)
+    if (need <= s->cap) {
+        s->counted = p->nforces + 1;
         return SW_OK;
+    }
     int *pa = realloc(s->pa, (size_t)need * sizeof *pa);
     if (pa)
         s->pa = pa;
@@ -81,6 +87,7 @@ static int reserve_pairs(sw_particles *p)
         return SW_ENOMEM;
     s->pblock = blk;
     s->cap = need;
+    s->counted = p->nforces + 1;
     return SW_OK;
 }
 

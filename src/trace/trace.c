@@ -322,6 +322,17 @@ int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
     return rc;
 }
 
+/* A printable copy of the cell at s: up to its comma, without trailing blanks. */
+static const char *cell_shown(const char *s, char out[48])
+{
+    size_t n = 0;
+    while (s[n] && s[n] != ',')
+        n++;
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t'))
+        n--;
+    return tr_shown(s, n, out);
+}
+
 int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
 {
     char show[48], name[32];
@@ -370,34 +381,45 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
                         sp->steps ? (double)sp->steps : sp->until, sp->every,
                         r->max_rows - SW_TRACE_ROW_SLACK, SW_TRACE_ROW_SLACK);
         }
-        char *cursor = r->buf, *cell;
+        /* Each cell is read where it lies: blanks, a number, blanks, then a
+         * comma or the end; its text is cut out only for a message. */
+        char *p = r->buf;
         int c = 0;
-        while ((cell = next_cell(&cursor))) {
+        for (;;) {
+            while (*p == ' ' || *p == '\t')
+                p++;
+            char *cell = p;
             if (c == r->nhead)
                 return tr_fail(r, err, errlen, "the row has more than the header's %d cells "
-                            "(extra '%s')", r->nhead, tr_shown(cell, strlen(cell), show));
+                            "(extra '%s')", r->nhead, cell_shown(cell, show));
             int col = r->col_of[c];
             if (col < 0) { /* an extra column: not read */
-                c++;
-                continue;
+                while (*p && *p != ',')
+                    p++;
+            } else {
+                if (*p == ',' || !*p) {
+                    sw_trace_colname(&r->sys, col, name, sizeof name);
+                    return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
+                }
+                char *end;
+                double v = sw_decimal_parse(cell, &end);
+                for (p = end; *p == ' ' || *p == '\t'; p++)
+                    ;
+                if ((*p && *p != ',') || end == cell) {
+                    sw_trace_colname(&r->sys, col, name, sizeof name);
+                    return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
+                                "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
+                                cell_shown(cell, show));
+                }
+                if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
+                    return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole "
+                                "number from 0", cell_shown(cell, show));
+                row[col] = v;
             }
-            if (!*cell) {
-                sw_trace_colname(&r->sys, col, name, sizeof name);
-                return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
-            }
-            char *end;
-            double v = sw_decimal_parse(cell, &end);
-            if (*end != '\0') {
-                sw_trace_colname(&r->sys, col, name, sizeof name);
-                return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
-                            "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
-                            tr_shown(cell, strlen(cell), show));
-            }
-            if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
-                return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole number "
-                            "from 0", tr_shown(cell, strlen(cell), show));
-            row[col] = v;
             c++;
+            if (!*p)
+                break;
+            p++; /* the comma */
         }
         if (c < r->nhead) {
             int at = c;

@@ -160,6 +160,8 @@ bench:
 	@$(MAKE) --no-print-directory $(BIN)
 	@echo; echo "grading a class of 120, jailed and not (bench/grade_class.sh):"
 	@sh bench/grade_class.sh ./$(BIN) 120 3
+	@echo; echo "grading 100 passing traces, CPU time (bench/grade_traces.sh):"
+	@sh bench/grade_traces.sh ./$(BIN) 100 5
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

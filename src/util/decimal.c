@@ -101,19 +101,31 @@ static void make_table(void)
 
 static void mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 {
+#ifdef __SIZEOF_INT128__
+    __extension__ typedef unsigned __int128 u128;
+    u128 p = (u128)a * b;
+    *hi = (uint64_t)(p >> 64);
+    *lo = (uint64_t)p;
+#else
     uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
     uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
     uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
     *lo = mid << 32 | (uint32_t)p00;
     *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+#endif
 }
 
+/* x > 0 */
 static int leading_zeros(uint64_t x)
 {
+#if defined(__GNUC__)
+    return __builtin_clzll(x);
+#else
     int n = 0;
     for (uint64_t bit = (uint64_t)1 << 63; !(x & bit); bit >>= 1)
         n++;
     return n;
+#endif
 }
 
 /* floor(x / 65536) for a negative x too. */
@@ -167,7 +179,7 @@ static int eisel_lemire(uint64_t w, int q, int neg, double *out)
 
 static int is_digit(char c)
 {
-    return c >= '0' && c <= '9';
+    return (unsigned char)(c - '0') < 10;
 }
 
 double sw_decimal_parse(const char *s, char **end)
@@ -185,21 +197,26 @@ double sw_decimal_parse(const char *s, char **end)
         goto slow; /* hexadecimal */
     for (; *p == '0'; p++)
         any = 1;
-    for (; is_digit(*p); p++, nd++, any = 1) {
-        if (nd == 19)
-            goto slow;
+    const char *d0 = p, *stop = p + 19;
+    for (; p < stop && is_digit(*p); p++)
         w = w * 10 + (uint64_t)(*p - '0');
-    }
+    nd = (int)(p - d0);
+    if (is_digit(*p))
+        goto slow; /* more than 19 significant digits */
+    any |= nd > 0;
     if (*p == '.') {
         p++;
         if (nd == 0)
             for (; *p == '0'; p++, q--)
                 any = 1;
-        for (; is_digit(*p); p++, nd++, q--, any = 1) {
-            if (nd == 19)
-                goto slow;
+        d0 = p;
+        stop = p + (19 - nd);
+        for (; p < stop && is_digit(*p); p++)
             w = w * 10 + (uint64_t)(*p - '0');
-        }
+        if (is_digit(*p))
+            goto slow;
+        q -= p - d0;
+        any |= p > d0;
     }
     if (!any)
         goto slow; /* no digits: inf, nan, hexadecimal, blanks, or no number */

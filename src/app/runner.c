@@ -42,6 +42,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     const sw_lesson_page *pg = &r->lesson.pages[page];
     char err[SW_ERRLEN];
     a->locked = 0;
+    a->view_gen++; /* a page's pictures are scaled for it (the region view's fixed scale) */
     if (pg->scene != a->scene) {
         /* a new scene starts in its own picture: the scene view, its natural size */
         sw_app_set_view(a, SW_VIEW_SCENE);

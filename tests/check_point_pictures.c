@@ -277,6 +277,167 @@ START_TEST(projectile_says_launch_and_energy)
 }
 END_TEST
 
+/* @view box=X0,Y0,X1,Y1: parsed, checked, and the camera shows that
+ * rectangle (the scene's own view is far larger). */
+START_TEST(view_box_directive)
+{
+    const char *text = "title: T\n--- P\n@scene projectile\n@view box=5,-1.5,11,3\nx\n";
+    sw_lesson l;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_msg(sw_lesson_parse("t", text, strlen(text), &l, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(l.pages[0].has_box, 1);
+    ck_assert_double_eq(l.pages[0].box[0], 5);
+    ck_assert_double_eq(l.pages[0].box[1], -1.5);
+    ck_assert_double_eq(l.pages[0].box[2], 11);
+    ck_assert_double_eq(l.pages[0].box[3], 3);
+    sw_lesson_free(&l);
+    const char *bad[] = { "box=1,2,3", "box=1,2,3,4,5", "box=1,,2,3", "box=3,0,1,1", "box=0,3,1,1", "box=a,b,c,d",
+                          "box=1,2,3,4,", "box=1e7,0,2e7,1", "box=", "box=nan,0,1,1" };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char t[256];
+        snprintf(t, sizeof t, "title: T\n--- P\n@scene projectile\n@view %s\nx\n", bad[i]);
+        ck_assert_msg(sw_lesson_parse("t", t, strlen(t), &l, err, sizeof err) == SW_EINVAL, "'%s' was accepted",
+                      bad[i]);
+        ck_assert_msg(strstr(err, "box=") != NULL, "'%s': the message does not say what is expected: %s", bad[i], err);
+        sw_lesson_free(&l);
+    }
+    /* the runner: the camera shows the box, and a page on another scene drops it */
+    char dir[] = "/tmp/sw-viewbox-XXXXXX", path[128];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/box.lesson", dir);
+    FILE *fp = fopen(path, "w");
+    ck_assert_ptr_nonnull(fp);
+    fputs("title: T\n--- P\n@scene projectile\n@view box=5,-1.5,11,3\nx\n--- Q\n@scene spring\ny\n", fp);
+    fclose(fp);
+    setenv("XDG_STATE_HOME", dir, 1);
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ck_assert_msg(sw_runner_start(r, &a, path, 0, err, sizeof err) == SW_OK, "%s", err);
+    sw_frame f;
+    char ferr[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+    int clipped;
+    free(ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped));
+    sw_view vis = sw_canvas_visible(&f.canvas), nat = a.scene->view(&a.sims[0].sys);
+    ck_assert_msg(vis.xmin <= 5 && vis.xmax >= 11 && vis.ymin <= -1.5 && vis.ymax >= 3,
+                  "the camera shows x %g..%g, y %g..%g", vis.xmin, vis.xmax, vis.ymin, vis.ymax);
+    /* fitted: one axis spans the box to a cell's rounding */
+    ck_assert_msg(vis.xmax - vis.xmin < 6 * 1.05 || vis.ymax - vis.ymin < 4.5 * 1.05, "the box is not fitted");
+    ck_assert_double_lt(vis.xmax - vis.xmin, nat.xmax - nat.xmin);
+    sw_runner_enter(r, &a, 1);
+    ck_assert_int_eq(a.have_box, 0);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+/* A page "names a difference" between a run and its ghost when its prose
+ * mentions the ghost and quotes a length in metres or a growth ("grows
+ * by"). Every such page must be listed below with the time its point is
+ * made at, and there, at 80x24, the difference is visible (a particle and
+ * its ghost in different cells) or stated ("ghost 0.44 m" beside it). */
+static const struct diff_page {
+    const char *file, *title;
+    double t;
+} diff_pages[] = {
+    { "lessons/02-euler.lesson", "The spiral", 6.3 },
+    { "lessons/03-particles-with-mass.lesson", "Euler in phase space", 2.0 },
+};
+
+static int names_difference(const sw_lesson_page *pg)
+{
+    int ghost = 0, figure = 0;
+    for (int b = 0; b < pg->nblocks; b++) {
+        const char *t = pg->blocks[b].text;
+        ghost |= strstr(t, "ghost") != NULL;
+        figure |= strstr(t, "grows by") != NULL;
+        for (const char *q = t; (q = strstr(q, " m")) != NULL; q += 2)
+            if (q > t && q[-1] >= '0' && q[-1] <= '9' && !((q[2] >= 'a' && q[2] <= 'z') || (q[2] >= 'A' && q[2] <= 'Z')))
+                figure = 1;
+    }
+    return ghost && figure;
+}
+
+/* "ghost 0.44 m" (a number and its unit after the word) on the screen. */
+static int gap_stated(const char *text)
+{
+    for (const char *q = text; (q = strstr(q, "ghost ")) != NULL; q += 6) {
+        const char *d = q + 6;
+        if (!(*d >= '0' && *d <= '9'))
+            continue;
+        while ((*d >= '0' && *d <= '9') || *d == '.')
+            d++;
+        if (strncmp(d, " m", 2) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+START_TEST(every_named_difference_is_shown)
+{
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    int checked = 0;
+    for (int i = 0; i < n; i++) {
+        sw_lesson l;
+        ck_assert_msg(sw_lesson_load(e[i].path, &l, err, sizeof err) == SW_OK, "%s", err);
+        for (int p = 0; p < l.npages; p++) {
+            if (!names_difference(&l.pages[p]))
+                continue;
+            size_t k = 0;
+            while (k < sizeof diff_pages / sizeof diff_pages[0] &&
+                   !(strstr(e[i].path, diff_pages[k].file + strlen("lessons/")) &&
+                     strcmp(l.pages[p].title, diff_pages[k].title) == 0))
+                k++;
+            ck_assert_msg(k < sizeof diff_pages / sizeof diff_pages[0],
+                          "%s page %d (%s) names a difference: list it in diff_pages with its time", e[i].file, p + 1,
+                          l.pages[p].title);
+            sw_runner *r = malloc(sizeof *r);
+            sw_app a;
+            open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
+            sw_app_set_ghost(&a, 1);
+            sw_app_set_until(&a, diff_pages[k].t);
+            a.paused = 0;
+            for (int it = 0; it < 100000 && a.sims[0].t < diff_pages[k].t; it++)
+                sw_app_advance(&a, 1.0, 100000);
+            ck_assert_double_eq_tol(a.sims[0].t, diff_pages[k].t, 1e-9);
+            sw_frame f;
+            char ferr[SW_ERRLEN];
+            ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+            int clipped;
+            char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+            const double *g = sw_app_ghost(&a), *y = a.sims[0].sys.y;
+            ck_assert_ptr_nonnull(g);
+            int apart = 0;
+            for (int j = 0; j < a.sims[0].sys.n; j++) {
+                int c0, r0, c1, r1;
+                if (sw_canvas_world_to_cell(&f.canvas, y[2 * j], y[2 * j + 1], &c0, &r0) &&
+                    sw_canvas_world_to_cell(&f.canvas, g[2 * j], g[2 * j + 1], &c1, &r1) && (c0 != c1 || r0 != r1))
+                    apart = 1;
+            }
+            ck_assert_msg(apart || gap_stated(text), "%s, %s at t = %g: the run and its ghost share every cell and "
+                          "no gap is written:\n%s", diff_pages[k].file, diff_pages[k].title, diff_pages[k].t, text);
+            checked++;
+            free(text);
+            sw_frame_free(&f);
+            sw_app_free(&a);
+            sw_runner_free(r);
+            free(r);
+        }
+        sw_lesson_free(&l);
+    }
+    sw_lesson_list_free(e, n);
+    ck_assert_int_eq(checked, (int)(sizeof diff_pages / sizeof diff_pages[0]));
+}
+END_TEST
+
 Suite *make_point_pictures_suite(void);
 Suite *make_point_pictures_suite(void)
 {
@@ -289,6 +450,8 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);
+    tcase_add_test(tc, view_box_directive);
+    tcase_add_test(tc, every_named_difference_is_shown);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -48,6 +48,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_view(a, SW_VIEW_SCENE);
         a->zoom = 1;
         a->follow = 0;
+        a->have_box = 0;
     }
     if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
         if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
@@ -82,6 +83,10 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->graph = pg->graph;
     if (pg->zoom > 0)
         a->zoom = pg->zoom;
+    if (pg->has_box) {
+        a->box = (sw_view){ pg->box[0], pg->box[2], pg->box[1], pg->box[3] };
+        a->have_box = 1;
+    }
     sw_app_set_until(a, pg->until); /* a page's own stop time, or none */
     a->locked = pg->locked;
     a->panel = a->help = 0;

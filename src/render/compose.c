@@ -49,12 +49,12 @@ static sw_field *field(sw_field *f, int *n, int prio, const char *full, const ch
 
 /* ---- the camera and the scene ------------------------------------------------- */
 
-/* The scene's natural view times the zoom; when following, grown (never
- * shrunk) to hold the main run's particles. */
+/* The scene's natural view (or a page's @view box) times the zoom; when
+ * following, grown (never shrunk) to hold the main run's particles. */
 static void camera(sw_frame *f, sw_app *a)
 {
     const sw_sim *main = &a->sims[0];
-    sw_view base = sw_view_zoom(a->scene->view(&main->sys), a->zoom);
+    sw_view base = sw_view_zoom(a->have_box ? a->box : a->scene->view(&main->sys), a->zoom);
     if (f->view_scene != a->scene || memcmp(f->view_p, a->p, sizeof f->view_p) != 0 || f->view_zoom != a->zoom ||
         f->view_follow != a->follow || !a->follow || main->t == 0) {
         f->view = base;

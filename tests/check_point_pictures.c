@@ -43,6 +43,7 @@ START_TEST(region_scale_choice)
     ck_assert_double_eq(sw_region_scale(3, 0), 3);
     ck_assert_double_eq(sw_region_scale(3, NAN), 3);
     ck_assert_double_eq(sw_region_scale(3, 2), 3);     /* 2.5 >= 1.5: the whole region */
+    ck_assert_double_eq(sw_region_scale(3, 4), 5);     /* and the marks beyond it */
     ck_assert_double_eq(sw_region_scale(3, 1.2), 3);   /* 1.5 >= 1.5: the edge of the whole-region rule */
     ck_assert_double_eq_tol(sw_region_scale(3, 0.5), 0.625, 1e-15);
     ck_assert_double_eq_tol(sw_region_scale(3, 1e-9), 3e-3, 1e-15);
@@ -113,6 +114,38 @@ START_TEST(region_marks_move_on_lesson5)
         prev = m;
         free(text);
         sw_app_key(&a, '-', 1);
+    }
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
+/* Lesson 6, "RK4's region": doubling Δt (0.005 -> 0.04) takes the marks
+ * past the view chosen for them; the view widens to hold them and the
+ * region, so every mark stays drawn and the last ones, outside RK4's
+ * region (ωΔt = 4 > 2.83), are drawn X. */
+START_TEST(region_widens_when_marks_leave)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
+    sw_app_key(&a, 's', 1);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    for (int k = 0; k < 4; k++) {
+        int clipped;
+        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+        marks m = find_marks(&f.canvas);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
+        if (k == 3)
+            for (int j = 0; j < 2; j++)
+                ck_assert_msg(sw_canvas_codepoint(&f.canvas, m.col[j], m.row[j]) == 'X', "dt %g: a mark outside "
+                              "RK4's region is not X:\n%s", a.dt, text);
+        free(text);
+        sw_app_key(&a, '+', 1);
     }
     sw_frame_free(&f);
     sw_app_free(&a);
@@ -446,6 +479,7 @@ Suite *make_point_pictures_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, region_scale_choice);
     tcase_add_test(tc, region_marks_move_on_lesson5);
+    tcase_add_test(tc, region_widens_when_marks_leave);
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);

@@ -226,8 +226,10 @@ static void axes_scaled(sw_canvas *c, taken *t, double half, double reach)
 
 double sw_region_scale(double reach, double largest)
 {
-    if (!(largest > 0) || !isfinite(largest) || 1.25 * largest >= reach / 2)
+    if (!(largest > 0) || !isfinite(largest))
         return reach;
+    if (1.25 * largest >= reach / 2)
+        return fmax(reach, 1.25 * largest);
     return fmax(1.25 * largest, reach / 1000);
 }
 
@@ -270,12 +272,16 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->extent_order = order;
     }
     double reach = r->extent > 0 ? fmax(3.0, 1.15 * r->extent) : 3.0;
+    double largest = largest_mark(a);
+    /* a mark beyond the view at zoom 1 (Δt doubled past it): the view
+     * widens once, to the whole region and the marks, and stays there */
+    int beyond = r->fit_valid && largest > fmin(r->fit * c->cols / 2, r->fit * c->rows);
     if (!r->fit_valid || r->fit_gen != a->view_gen || r->fit_method != m || r->fit_order != order ||
-        r->fit_cols != c->cols) {
+        r->fit_cols != c->cols || beyond) {
         /* world units per column, as the canvas fits a square ±half: kept
          * while the page is open, so that a row more or less for the text
          * below moves no axis */
-        double fit_half = sw_region_scale(reach, largest_mark(a));
+        double fit_half = beyond ? fmax(reach, 1.25 * largest) : sw_region_scale(reach, largest);
         r->fit = fmax(2 * fit_half / c->cols, fit_half / c->rows);
         r->fit_gen = a->view_gen;
         r->fit_method = m;

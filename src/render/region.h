@@ -40,9 +40,12 @@ typedef struct sw_region {
 
 /* The half span the view shows (zoom 1) for a region reaching reach (its
  * default half span) with marks as far as largest = max |Δt·λ| from the
- * origin: the whole region when the marks are as large as half of it,
- * else 1.25 × largest, so that the marks fill the view and each halving of
- * Δt moves them visibly (at least reach / 1000; reach when no mark). */
+ * origin: the whole region and the marks when the marks are as large as
+ * half of it (max(reach, 1.25 × largest)), else 1.25 × largest, so that
+ * the marks fill the view and each halving of Δt moves them visibly (at
+ * least reach / 1000; reach when no mark). The view chosen stays while Δt
+ * changes, until a mark would leave it: then it widens once to
+ * max(reach, 1.25 × largest). */
 double sw_region_scale(double reach, double largest);
 
 /* Seconds a draw may spend shading a plugin's region (each new mode is a

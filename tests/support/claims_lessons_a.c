@@ -312,6 +312,7 @@ const claim sw_claims_a[] = {
     { L4, "For a smooth motion RK4 would give {16}", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
     { L4, "a percentage of the kinetic energy at launch, {62.5} J", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
     { L4, "with drag = 1 the change reads {-204} % by t = 3", l4_drag_drift, ROUNDED, 0, R_ROUND, NULL },
+    { "docs/scenes.md", "kinetic energy ½ m |v0|² ({62.5} J with the defaults)", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
     { L4, "stepwise measures the error at t = {3} for both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
     /* lesson 5 */

@@ -219,7 +219,7 @@ static void axes_scaled(sw_canvas *c, taken *t, double half, double reach)
     axes(c, t);
     if (half < reach) {
         char lab[64];
-        snprintf(lab, sizeof lab, "fixed scale +-%.2g, z: out", half);
+        snprintf(lab, sizeof lab, "fixed scale +-%.2g (z zooms out)", half);
         label(c, t, 0, 0, lab);
     }
 }

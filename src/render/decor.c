@@ -93,7 +93,7 @@ static void projectile_labels(sw_canvas *c, const sw_system *sys)
     if (c->rows >= 4 && ke > 0) {
         char full[96], mid[64], brief[48];
         snprintf(full, sizeof full, "energy %% = change of the launch kinetic energy, %.3g J", ke);
-        snprintf(mid, sizeof mid, "energy %% of the launch KE, %.3g J", ke);
+        snprintf(mid, sizeof mid, "E%%: of launch kinetic energy, %.3g J", ke);
         snprintf(brief, sizeof brief, "E%% of launch KE %.3g J", ke);
         const char *const texts[] = { full, mid, brief };
         text_fitted(c, 1, 0, texts, 3, SW_STYLE_TRAIL);

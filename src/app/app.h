@@ -118,8 +118,11 @@ typedef struct sw_app {
     double watch_m0;
     /* the picture (app/view.c): which view, the camera, compare's layout */
     sw_app_view view;
+    unsigned view_gen;          /* changes when a view is chosen or a page entered: the region view fits its scale anew */
     int follow;                 /* 1: the camera follows the particles; 0: fixed on the scene's view */
     double zoom;                /* the view's spans times this (1: the scene's natural view) */
+    int have_box;               /* 1: the camera shows box (a page's @view box=), not the scene's view */
+    sw_view box;
     int lanes;                  /* compare: each method in its own lane */
     int phase_particle;         /* the phase view's particle and coordinate */
     sw_phase_coord phase_coord;

@@ -89,7 +89,7 @@ static int step_view(const arrow *ar, int n, sw_view *v)
     double span = fmax(xmax - xmin, ymax - ymin);
     if (!(span > 0) || !isfinite(span))
         return 0;
-    double m = 0.3 * span; /* room for the labels */
+    double m = 0.2 * span; /* room for the labels */
     *v = (sw_view){ xmin - m, xmax + m, ymin - m, ymax + m };
     return 1;
 }
@@ -195,14 +195,9 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     /* the formula beside the picture when there is room, else below it */
     int fw = formula_width(sc) + 1, side = cols - fw >= 40;
     int ccols = side ? cols - fw - 1 : cols, frows = side ? 0 : formula_rows(sc, cols);
-    char cap[3][SW_TEXT_LINE];
-    int caprows = sw_text_wrap(cur->caption, side ? cols - fw - 1 : cols, cap, 3);
-    caprows = caprows > 2 ? 2 : caprows;
-    int crows = rows - 1 - frows - caprows;
-    if (crows < 4) { /* too short for a picture: the formula and the caption only */
-        crows = 0;
-        caprows = caprows > rows - 1 - frows ? (rows - 1 - frows > 0 ? rows - 1 - frows : 0) : caprows;
-    }
+    int crows = rows - 1 - frows; /* the caption is on the message line (app/stages.c) */
+    if (crows < 4)
+        crows = 0; /* too short for a picture: the formula only */
 
     /* the arrows of every view (the zoom holds the whole step), drawn up to the one shown */
     arrow ar[2 * SW_STAGE_VIEWS];
@@ -239,15 +234,15 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         }
         for (int i = upto[shown - 1]; i < upto[shown]; i++)
             draw_arrow(c, &ar[i], f->unicode);
+        for (int i = 0; i < upto[shown]; i++) /* every stage point on top, numbered */
+            if (ar[i].mark >= '1' && ar[i].mark <= '9')
+                sw_canvas_mark(c, ar[i].x0, ar[i].y0, ar[i].mark, i >= upto[shown - 1] ? SW_STYLE_WARN : SW_STYLE_COMPARE1);
         drawn = upto[shown];
         sw_screen_blit(scr, c, row0 + 1, col0);
     }
-    int below = row0 + 1 + crows;
     if (side)
         draw_formula(scr, sc, cur->line, cur->line, row0 + 1, col0 + ccols + 2, fw - 1, rows - 1);
     else
-        below += draw_formula(scr, sc, cur->line, cur->line, below, col0, cols, frows);
-    for (int i = 0; i < caprows; i++)
-        sw_screen_text(scr, below + i, col0, side ? ccols : cols, SW_STYLE_TEXT, cap[i]);
+        draw_formula(scr, sc, cur->line, cur->line, row0 + 1 + crows, col0, cols, frows);
     return drawn;
 }

@@ -103,6 +103,34 @@ START_TEST(stage_view_in_play)
 }
 END_TEST
 
+/* While the view is open: halving Δt re-records the step at the new h
+ * (the run stays paused, the stage shown stays), a single step moves the
+ * view on to the next step, and space closes it and runs on. */
+START_TEST(stage_view_follows_the_run)
+{
+    sw_app a;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_app_init(&a, sw_scene_find("spring"), NULL, sw_integrator_find("rk4"), 0.04, err, sizeof err) ==
+                      SW_OK, "%s", err);
+    sw_app_apply(&a, SW_ACT_REGION, 1);
+    sw_app_apply(&a, SW_ACT_STAGES, 1);
+    sw_app_apply(&a, SW_ACT_STAGES, 1);
+    ck_assert(a.stages_open && a.stage_shown == 2 && a.paused && a.view == SW_VIEW_SCENE);
+    ck_assert(sw_app_stages(&a)->h == 0.04);
+    sw_app_apply(&a, SW_ACT_DT_HALVE, 1);
+    const sw_stages *r = sw_app_stages(&a);
+    ck_assert(a.stages_open && a.stage_shown == 2 && a.paused);
+    ck_assert(r->h == 0.02 && r->n == 4 && r->t0 == 0);
+    sw_app_apply(&a, SW_ACT_STEP, 1);
+    r = sw_app_stages(&a);
+    ck_assert(a.stages_open && r->t0 == a.sims[0].t && r->t0 == 0.02);
+    ck_assert(memcmp(r->y0, a.sims[0].sys.y, (size_t)r->dim * sizeof *r->y0) == 0);
+    sw_app_apply(&a, SW_ACT_PAUSE, 1);
+    ck_assert(!a.stages_open && !a.paused);
+    sw_app_free(&a);
+}
+END_TEST
+
 START_TEST(stage_view_on_the_lesson_page)
 {
     sw_runner r;
@@ -131,6 +159,7 @@ Suite *make_stage_screens_suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, stage_view_in_play);
+    tcase_add_test(tc, stage_view_follows_the_run);
     tcase_add_test(tc, stage_view_on_the_lesson_page);
     suite_add_tcase(s, tc);
     return s;

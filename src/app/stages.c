@@ -86,6 +86,7 @@ int sw_app_stages_apply(sw_app *a, sw_action act)
         a->stages_open = 1;
         a->stage_shown = 1;
         a->paused = 1;
+        sw_app_set_view(a, SW_VIEW_SCENE); /* the stages are drawn on the scene */
     } else if (!sc || a->stage_shown >= sc->nviews) {
         sw_app_stages_close(a);
         snprintf(a->message, sizeof a->message, "stage view closed (k opens it on the next step)");

@@ -178,7 +178,7 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     int p = moved_most(r, &main->sys);
 
     /* the title: method, which stage, the keys */
-    sw_field fl[4];
+    sw_field fl[5];
     int n = 0;
     snprintf(fl[n].full, sizeof fl[n].full, "one %s step, h = %g", r->method->name, r->h);
     snprintf(fl[n].brief, sizeof fl[n].brief, "%s", r->method->name);
@@ -186,6 +186,9 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     snprintf(fl[n].full, sizeof fl[n].full, "stage %d of %d: %s", shown, sc->nviews, cur->label);
     snprintf(fl[n].brief, sizeof fl[n].brief, "%d/%d %s", shown, sc->nviews, cur->label);
     fl[n++].prio = 9;
+    snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
+    fl[n].brief[0] = '\0';
+    fl[n++].prio = 3;
     snprintf(fl[n].full, sizeof fl[n].full, "k next  Esc close");
     snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
     fl[n++].prio = 5;
@@ -228,8 +231,9 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         for (int i = 0; i < upto[shown - 1]; i++) {
             arrow e = ar[i];
             e.style = SW_STYLE_TRAIL;
+            e.label = ""; /* only the current stage is named */
             if (e.mark >= '1' && e.mark <= '9')
-                e.x1 = e.x0, e.y1 = e.y0, e.label = "";
+                e.x1 = e.x0, e.y1 = e.y0;
             draw_arrow(c, &e, f->unicode);
         }
         for (int i = upto[shown - 1]; i < upto[shown]; i++)

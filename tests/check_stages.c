@@ -138,6 +138,32 @@ START_TEST(stages_are_where_the_method_looks)
 }
 END_TEST
 
+/* The true path over the step: on the vortex (ω = 1) from (1, 0) at t = 0
+ * the exact motion is the unit circle, (cos t, sin t). The reference run
+ * is held to rtol 1e-12, so 1e-9 leaves room for its accumulated error
+ * over one step while catching any wrong time or particle. */
+START_TEST(stages_true_path_is_the_exact_motion)
+{
+    sw_sim s;
+    sw_stages r = { 0 };
+    char why[SW_ERRLEN];
+    sim_on(&s, "vortex", "n=1", "euler", 1.0);
+    ck_assert(s.sys.y[0] == 1 && s.sys.y[1] == 0);
+    ck_assert(sw_stages_record(&r, &s, why, sizeof why) == SW_OK);
+    ck_assert_int_eq(sw_stages_true_path(&r, &s), SW_OK);
+    ck_assert_int_eq(r.path_n, SW_STAGES_PATH + 1);
+    for (int j = 0; j < r.path_n; j++) {
+        double t = 1.0 * j / SW_STAGES_PATH;
+        ck_assert_double_eq_tol(r.path[2 * j], cos(t), 1e-9);
+        ck_assert_double_eq_tol(r.path[2 * j + 1], sin(t), 1e-9);
+    }
+    /* and Euler's step leaves it: |y1| = sqrt(1 + h²) */
+    ck_assert_double_eq_tol(hypot(r.y1[0], r.y1[1]), sqrt(2.0), 1e-15);
+    sw_stages_free(&r);
+    sw_sim_free(&s);
+}
+END_TEST
+
 /* Methods without a stage breakdown say so in one line, and why. */
 START_TEST(stages_not_drawn_say_why)
 {
@@ -166,6 +192,7 @@ Suite *make_stages_suite(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, stages_combine_to_the_step);
     tcase_add_test(tc, stages_are_where_the_method_looks);
+    tcase_add_test(tc, stages_true_path_is_the_exact_motion);
     tcase_add_test(tc, stages_not_drawn_say_why);
     suite_add_tcase(s, tc);
     return s;

@@ -108,6 +108,8 @@ const sw_stages *sw_app_stages(sw_app *a)
     if (sw_stages_record(r, s, a->stages_why, sizeof a->stages_why) != SW_OK)
         return NULL;
     a->stages_why[0] = '\0';
+    if (a->have_truth) /* where the step should land: the true path over it */
+        sw_stages_true_path(r, s);
     if (a->stage_shown > 0) { /* the script may be shorter under a new method */
         const sw_stage_script *sc = sw_stage_script_of(s->method);
         if (sc && a->stage_shown > sc->nviews)

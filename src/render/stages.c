@@ -21,21 +21,6 @@ typedef struct arrow {
     int style;
 } arrow;
 
-/* The particle the view follows: the one the step moves furthest. */
-static int moved_most(const sw_stages *r, const sw_system *sys)
-{
-    int best = 0;
-    double far = -1;
-    for (int i = 0; i < sys->n; i++) {
-        double d = hypot(r->y1[2 * i] - r->y0[2 * i], r->y1[2 * i + 1] - r->y0[2 * i + 1]);
-        if (d > far) {
-            far = d;
-            best = i;
-        }
-    }
-    return best;
-}
-
 /* Velocity of particle p in y (a flow: its slope, dx/dt, from the recorded k). */
 static void velocity(const sw_system *sys, const double *y, int p, double *vx, double *vy)
 {
@@ -77,9 +62,15 @@ static int arrows_of(const sw_stages *r, const sw_system *sys, int p, const sw_s
 
 /* A view that holds every point of the whole step (so it does not jump
  * between presses), with a margin; 0 when the step does not move. */
-static int step_view(const arrow *ar, int n, sw_view *v)
+static int step_view(const arrow *ar, int n, const sw_stages *r, sw_view *v)
 {
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    for (int j = 0; j < r->path_n; j++) {
+        xmin = fmin(xmin, r->path[2 * j]);
+        xmax = fmax(xmax, r->path[2 * j]);
+        ymin = fmin(ymin, r->path[2 * j + 1]);
+        ymax = fmax(ymax, r->path[2 * j + 1]);
+    }
     for (int i = 0; i < n; i++) {
         xmin = fmin(xmin, fmin(ar[i].x0, ar[i].x1));
         xmax = fmax(xmax, fmax(ar[i].x0, ar[i].x1));
@@ -175,7 +166,7 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     const sw_sim *main = &a->sims[0];
     int shown = a->stage_shown < 1 ? 1 : a->stage_shown > sc->nviews ? sc->nviews : a->stage_shown;
     const sw_stage_view *cur = &sc->views[shown - 1];
-    int p = moved_most(r, &main->sys);
+    int p = r->particle;
 
     /* the title: method, which stage, the keys */
     sw_field fl[5];
@@ -189,7 +180,7 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
     fl[n].brief[0] = '\0';
     fl[n++].prio = 3;
-    snprintf(fl[n].full, sizeof fl[n].full, "k next  Esc close");
+    snprintf(fl[n].full, sizeof fl[n].full, "k %s  Esc close", shown < sc->nviews ? "next" : "closes");
     snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
     fl[n++].prio = 5;
     if (sw_text_fit(buf, sizeof buf, cols, fl, n, "  ") > 0)
@@ -216,11 +207,20 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         if (c->cols != ccols || c->rows != crows)
             sw_canvas_resize(c, ccols, crows, err, sizeof err);
         sw_canvas_set_mode(c, SW_CANVAS_ASCII); /* arrows and labels read best as glyphs */
-        if (!step_view(ar, na, &v))
+        if (!step_view(ar, na, r, &v))
             v = sw_view_zoom(a->scene->view(&main->sys), a->zoom);
         sw_canvas_set_view(c, &v, err, sizeof err);
         sw_canvas_clear(c);
         sw_canvas_draw_system(c, &main->sys, r->y0, r->t0, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+        /* the true path over the step, below everything; named where the step lands */
+        for (int j = 1; j < r->path_n; j++)
+            sw_canvas_line(c, r->path[2 * j - 2], r->path[2 * j - 1], r->path[2 * j], r->path[2 * j + 1],
+                           SW_GLYPH_GHOST, SW_STYLE_GHOST);
+        if (r->path_n && cur->shape != SW_STAGE_SLOPE) {
+            const double *end = &r->path[2 * (r->path_n - 1)];
+            arrow t = { end[0], end[1], end[0], end[1], SW_GLYPH_GHOST, "true", SW_STYLE_GHOST };
+            draw_arrow(c, &t, f->unicode);
+        }
         /* earlier stages: their points only (a kick: dim), so the current
          * arrow stands alone; then where the current stage is taken from
          * (a dotted line from the step's start), then the current stage */

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "engine/stepper.h"
+#include "sim/truth.h"
 #include "stepwise/stepwise.h"
 
 /* The solver view the step sees: the run's system, every evaluation noted. */
@@ -126,7 +127,42 @@ int sw_stages_record(sw_stages *r, const sw_sim *s, char *why, size_t len)
     r->method = m;
     r->t0 = s->t;
     r->h = s->dt;
+    r->path_n = 0;
+    r->particle = 0;
+    double far = -1;
+    for (int i = 0; i < s->sys.n && 2 * i + 1 < r->dim; i++) {
+        double dx = r->y1[2 * i] - r->y0[2 * i], dy = r->y1[2 * i + 1] - r->y0[2 * i + 1], d = dx * dx + dy * dy;
+        if (d > far) {
+            far = d;
+            r->particle = i;
+        }
+    }
     return SW_OK;
+}
+
+int sw_stages_true_path(sw_stages *r, const sw_sim *s)
+{
+    sw_sim ref;
+    char err[SW_ERRLEN];
+    r->path_n = 0;
+    if (!r->method ||
+        sw_sim_init(&ref, s->sys.scene, s->sys.p, sw_truth_reference_method(), r->h / SW_STAGES_PATH, err, sizeof err) != SW_OK)
+        return SW_EINVAL;
+    sw_sim_set_tolerances(&ref, SW_TRUTH_RTOL, SW_TRUTH_ATOL);
+    int ok = ref.sys.ode->dim == r->dim;
+    if (ok) {
+        sw_sim_set_state(&ref, r->y0);
+        ref.t = r->t0; /* the same clock: a time-dependent field (the gyre) */
+    }
+    for (int j = 0; ok && j <= SW_STAGES_PATH; j++) {
+        if (j > 0)
+            ok = sw_sim_run_until(&ref, r->t0 + r->h * j / SW_STAGES_PATH) == 0;
+        r->path[2 * j] = ref.sys.y[2 * r->particle];
+        r->path[2 * j + 1] = ref.sys.y[2 * r->particle + 1];
+    }
+    sw_sim_free(&ref);
+    r->path_n = ok ? SW_STAGES_PATH + 1 : 0;
+    return ok ? SW_OK : SW_EINVAL;
 }
 
 void sw_stages_free(sw_stages *r)

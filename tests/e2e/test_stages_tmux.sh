@@ -7,14 +7,14 @@
 tmux_start 80 24
 
 # The stage points on the picture: lone digits (between blanks, line
-# glyphs or the dotted line) in the first $1 columns of the rows between
+# glyphs, the dotted line or the true path ') in the first $1 columns of the rows between
 # the title and the status block (which starts with "o vortex").
 points() {
     screen | awk -v w="$1" 'NR == 1 { next } /^o vortex  / { exit } {
         s = " " substr($0, 1, w) " "
         for (i = 2; i < length(s); i++) {
             c = substr(s, i, 1)
-            if (c ~ /[1-9]/ && index(" -.\\/|", substr(s, i - 1, 1)) && index(" -.\\/|", substr(s, i + 1, 1))) seen[c] = 1
+            if (c ~ /[1-9]/ && index(" -.\\/|\047", substr(s, i - 1, 1)) && index(" -.\\/|\047", substr(s, i + 1, 1))) seen[c] = 1
         }
     } END { n = 0; for (c in seen) n++; print n }'
 }

@@ -24,10 +24,12 @@ static double page_stages(const char *method)
 static double rk4_stages(void) { return page_stages(NULL); }
 static double mid_stages(void) { return page_stages("midpoint"); }
 static double key_mid(void) { return cl_key_of("midpoint"); }
+static double key_euler(void) { return cl_key_of("euler"); }
 
 const claim sw_claims_s[] = {
     { L6, "One RK4 step takes {four} slopes.", rk4_stages, EXACT, 0, R_COUNT, NULL },
     { L6, "and k again: it takes {two}.", mid_stages, EXACT, 0, R_COUNT, NULL },
     { L6, "Press {3} for midpoint and k again", key_mid, EXACT, 0, "the key that picks the method", NULL },
+    { L6, "Euler (press {1}) does not.", key_euler, EXACT, 0, "the key that picks the method", NULL },
 };
 const size_t sw_claims_s_n = sizeof sw_claims_s / sizeof sw_claims_s[0];

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "sim/history.h"
+#include "sim/stages.h"
 #include "sim/truth.h"
 #include "sim/watch.h"
 #include "lesson/controls.h"
@@ -130,6 +131,11 @@ typedef struct sw_app {
     /* time under the student's control (app/timeline.c) */
     double until;               /* the stop time (play --until, a page's @until): 0 none */
     sw_history hist[SW_APP_SIMS]; /* each sim's recent states, for stepping back */
+    /* the stage view (app/stages.c): one step of the main run, stage by stage */
+    int stages_open;            /* 1 while shown (the run is paused) */
+    int stage_shown;            /* 1..: how far through the step's script */
+    sw_stages stages;           /* the step recorded (re-recorded when the run moved) */
+    char stages_why[160];       /* why the method's stages are not drawn, or "" */
 } sw_app;
 
 

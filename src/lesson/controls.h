@@ -100,6 +100,9 @@ enum {
     X(PHASE_PREV, VIEW, PLAY, "previous particle", SW_KEYS('<'), NULL, NULL) \
     X(PHASE_NEXT, VIEW, PLAY, "next particle", SW_KEYS('>'), NULL, NULL) \
     X(REGION, VIEW, PLAY, "stability region", SW_KEYS('s'), "s", "stability region of the method, dt x eigenvalues") \
+    X(STAGES, VIEW, PLAY, "stages of a step", SW_KEYS('k'), "k  Esc", \
+      "stages of one step drawn: k1, k2, ... one per press (pauses); Esc closes") \
+    X(STAGES_CLOSE, NONE, PLAY, "close the stages", SW_KEYS(SW_KEY_ESC), NULL, NULL) \
     X(EVENTS, EVENTS, PLAY, "events", SW_KEYS('x'), \
       "x", "events: locate contacts and crossings / step over them") \
     X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help (again: next page)") \

@@ -14,6 +14,7 @@
 
 #include "render/decor.h"
 #include "render/gap.h"
+#include "render/stages.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 
@@ -528,7 +529,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     int view_rows = pic_rows - graph_h;
     camera(f, a);
-    if (a->view == SW_VIEW_PHASE)
+    if (a->stages_open && a->view == SW_VIEW_SCENE)
+        sw_draw_stages(f, a, scr, 0, 0, view_rows, pic_cols);
+    else if (a->view == SW_VIEW_PHASE)
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
     else if (a->view == SW_VIEW_REGION)
         draw_region(f, a, scr, 0, 0, view_rows, pic_cols);

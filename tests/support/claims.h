@@ -77,6 +77,9 @@ typedef struct claim {
 /* The rows, in five tables. */
 extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[], sw_claims_m[];
 extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n, sw_claims_m_n;
+/* claims_stages.c: the stage view's page in lesson 6 */
+extern const claim sw_claims_s[];
+extern const size_t sw_claims_s_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

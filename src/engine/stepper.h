@@ -58,6 +58,7 @@ sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
     sw_step_implicit_midpoint;                        /* implicit.c */
 sw_step_fn sw_step_rk45;                               /* rk45.c */
 sw_step_fn sw_step_dop853;                             /* dop853.c */
+sw_step_fn sw_step_rkn;                                /* rkn.c */
 
 /* Explicit Runge-Kutta steps run over the whole state for coupled systems,
  * or slice by slice (L1-sized) for pointwise ones (flow fields), where

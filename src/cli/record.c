@@ -24,7 +24,7 @@ static const char record_help[] =
     "options:\n"
     "  -i, --integrator NAME  method (default: the scene's; 'stepwise list integrators')\n"
     "      --dt H             step size, in [1e-09, 1000] (default: the scene's)\n"
-    "  -n, --steps N          run N steps, 1 to 10000000 (rk45: accepted steps)\n"
+    "  -n, --steps N          run N steps, 1 to 10000000 (adaptive: accepted steps)\n"
     "  -u, --until T          run until time T, at most 10000000 steps of dt\n"
     "                         (default: the scene's report time, 'stepwise describe SCENE')\n"
     "  -s, --set PARAM=VALUE  set a scene parameter; repeatable\n"

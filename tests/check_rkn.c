@@ -119,8 +119,11 @@ static long double residual(const long double *w, int velocity, int lo, int hi)
     return worst;
 }
 
-/* The counts of trees by size are those of the literature for special
- * Nyström trees (Hairer, Nørsett & Wanner I, II.14: 1, 1, 2, 3, 6, 10, 20).
+/* The counts of trees by size, 1, 1, 2, 3, 6, 10, 20, are counted by hand
+ * from the definition (size 7: the six nodes beside the root as leaves and
+ * branches, a branch of k + 1 nodes holding one of the 1, 1, 2, 3, 6 trees
+ * of size k = 1 .. 5: 20 multisets), so the generator misses none and
+ * repeats none.
  * Tolerance: the coefficients are long double fractions (rounding 1e-19)
  * below 1.1 in size, and a condition sums at most a few dozen products of
  * them: 1e-16 is 1000 times that. A miss is anything above 1e-8 (the

@@ -58,4 +58,9 @@ void bench_peer(const bench_peer_opts *o);
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
 
+/* Methods for x'' = f(x) at equal error: rkn, yoshida4 against dop853,
+ * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)
+ * (bench_rkn.c). */
+void bench_rkn(int repeats, int quick);
+
 #endif

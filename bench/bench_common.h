@@ -48,6 +48,7 @@ typedef struct bench_peer_opts {
     int repeats;        /* paired timed runs (at least 5 for the table) */
     int chain_n, vortex_n;
     int quick;          /* error 1e-6 only, fewer searches */
+    const char *only;   /* NULL, or the one scene to compare (orbit, chain, vortex) */
 } bench_peer_opts;
 
 /* The peer comparison (bench_peer.c): stepwise's cheapest method against

@@ -517,6 +517,8 @@ static int bench_engine_main(int argc, char **argv)
             }
             *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
             i++;
+        } else if (strcmp(argv[i], "--peer-only") == 0 && i + 1 < argc) {
+            peer.only = argv[++i];
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -529,7 +531,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N, --peer-only SCENE\n", argv[i]);
             return 2;
         }
     }

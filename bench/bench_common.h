@@ -55,6 +55,13 @@ typedef struct bench_peer_opts {
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);
 
+/* For counting instructions (bench/instructions.sh): build SCENE at SET
+ * ("e=0.9") and call its derivative `calls` times at the start, as the
+ * methods call it (the small path where it applies) or through the
+ * generic passes; 0, or 1 when the scene or setting is not a particle
+ * system's. */
+int bench_deriv_probe(const char *scene, const char *set, long calls, int generic);
+
 /* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);

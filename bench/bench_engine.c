@@ -494,6 +494,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
+            return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;

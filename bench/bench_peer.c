@@ -11,6 +11,7 @@
 
 #include "bench_common.h"
 #include "engine/ode_fast.h"
+#include "engine/particles_deriv.h"
 #include "stepwise/sim.h"
 
 #ifdef SW_HAVE_GSL
@@ -249,6 +250,33 @@ static int problem_init(problem *pb, const char *scene, const char *set, double 
     printf("  %s, T = %g, state %d: reference %s; dop853 at 1e-13 differs from it by %.1e\n", pb->label,
            pb->T, pb->dim, source, check_err);
     return 0;
+}
+
+/* ---- instructions per call ------------------------------------------------ */
+
+int bench_deriv_probe(const char *scene, const char *set, long calls, int generic)
+{
+    const sw_scene *sc = sw_scene_find(scene);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_system sys;
+    if (!sc)
+        return 1;
+    sw_scene_defaults(sc, p);
+    if (sw_scene_set(sc, p, set, err, sizeof err) != SW_OK || sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK ||
+        sys.kind != SW_SYS_PARTICLES)
+        return 1;
+    double *dydt = malloc((size_t)sys.ode->dim * sizeof *dydt);
+    for (long i = 0; dydt && i < calls; i++) {
+        if (generic)
+            swp_deriv_generic(sys.ode->ctx, 0.0, sys.y, dydt);
+        else
+            sys.ode->deriv(sys.ode->ctx, 0.0, sys.y, dydt);
+    }
+    int ok = dydt != NULL;
+    free(dydt);
+    sw_system_free(&sys);
+    return ok ? 0 : 1;
 }
 
 /* ---- the comparison ------------------------------------------------------ */

@@ -77,6 +77,7 @@ int swp_model_springs(sw_particles *p, int nsprings)
     }
     m->cap = nsprings;
     m->compiled = 0;
+    m->small = NULL;
     return SW_OK;
 }
 
@@ -93,8 +94,10 @@ void swp_model_free(sw_particles *p)
 
 void swp_model_touch(sw_particles *p)
 {
-    if (p->model)
+    if (p->model) {
         p->model->compiled = 0;
+        p->model->small = NULL;
+    }
 }
 
 /* Copy spring sp into slot j of the flat arrays. */
@@ -461,12 +464,13 @@ SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
     }
 }
 
+/* Two tail calls: the small path is set only while the compiled form is
+ * current (swp_model_touch clears it), and the generic one compiles first
+ * when it is not. */
 void swp_deriv(void *ctx, double t, const double *y, double *dydt)
 {
-    sw_particles *p = ctx;
+    const sw_particles *p = ctx;
     (void)t;
-    if (!p->model->compiled)
-        swp_model_compile(p, NULL, 0);
     if (p->model->small)
         p->model->small(p, y, dydt);
     else

@@ -332,7 +332,7 @@ static void side_by_side(problem *pb, const candidate *a, const candidate *b, do
         snprintf(floor, sizeof floor, "%.2f", (double)a->evals * deriv_seconds(pb) / bm);
     snprintf(label, sizeof label, "%s, error %.0e", pb->label, target);
     snprintf(line, len,
-             "  | %-27s | %-6s %.3g (%.3g-%.3g) | %-7s %.3g (%.3g-%.3g) | %.2f (%.2f-%.2f) | %.2f | %s | <= %.2f %s |\n",
+             "  | %-25s | %-6s %.3g (%.3g-%.3g) | %-7s %.3g (%.3g-%.3g) | %.2f (%.2f-%.2f) | %.2f | %s | <= %.2f %s |\n",
              label, a->name, am * 1e3, amin * 1e3, amax * 1e3, b->name, bm * 1e3, bmin * 1e3, bmax * 1e3, rm, rmin,
              rmax, (double)a->evals / (double)b->evals, floor, pb->goal,
              rm <= pb->goal ? "met" : "missed");

@@ -33,6 +33,8 @@ typedef struct problem {
     double *y0, *ref, *y;
     sw_system sys;      /* the system whose derivative GSL calls */
     long gsl_evals;
+    double mu;          /* the orbit's sun (its hand-written derivative) */
+    int orbit;          /* the orbit: GSL also runs with that derivative */
 } problem;
 
 /* A method and the setting found for one error target; seconds is the
@@ -41,6 +43,7 @@ typedef struct candidate {
     const char *lib, *name;
     const sw_integrator *m;      /* stepwise, or NULL */
     const void *gsl_type;        /* gsl_odeiv2_step_type, or NULL */
+    int hand;                    /* GSL calling the 4-line derivative its user writes (orbit) */
     int fixed;                   /* fixed steps: setting = steps; else setting = rtol = atol */
     double setting, error, seconds;
     long evals;
@@ -90,12 +93,29 @@ static int gsl_deriv(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
+/* The orbit's derivative as a GSL user writes it: one body of mass 1
+ * around a sun of parameter mu at the origin, the same arithmetic as the
+ * central field (force_fields.c: -mu·m/(r²·r)·d, then times 1/m = 1), so
+ * the same numbers but for the sign of a zero. */
+static int gsl_deriv_orbit(double t, const double y[], double dydt[], void *params)
+{
+    problem *pb = params;
+    double r2 = y[0] * y[0] + y[1] * y[1], s = -pb->mu / (r2 * sqrt(r2));
+    (void)t;
+    pb->gsl_evals++;
+    dydt[0] = y[2];
+    dydt[1] = y[3];
+    dydt[2] = s * y[0];
+    dydt[3] = s * y[1];
+    return GSL_SUCCESS;
+}
+
 /* One run of GSL stepper `type` through its driver to T: adaptive at
  * epsabs = epsrel = setting (first step T/1000), or `setting` fixed steps. */
-static int gsl_run(problem *pb, const gsl_odeiv2_step_type *type, int fixed, double setting, double *seconds,
-                   long *evals)
+static int gsl_run(problem *pb, const gsl_odeiv2_step_type *type, int fixed, int hand, double setting,
+                   double *seconds, long *evals)
 {
-    gsl_odeiv2_system sys = { gsl_deriv, NULL, (size_t)pb->dim, pb };
+    gsl_odeiv2_system sys = { hand ? gsl_deriv_orbit : gsl_deriv, NULL, (size_t)pb->dim, pb };
     double h = fixed ? pb->T / setting : 1e-3 * pb->T, t = 0;
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, type, h, fixed ? 1.0 : setting, fixed ? 1.0 : setting);
     if (!d)
@@ -120,7 +140,7 @@ static int run(problem *pb, const candidate *c, double setting, double *error, d
         rc = sw_run(pb, c->m, c->fixed, setting, seconds, evals);
 #ifdef SW_HAVE_GSL
     else
-        rc = gsl_run(pb, c->gsl_type, c->fixed, setting, seconds, evals);
+        rc = gsl_run(pb, c->gsl_type, c->fixed, c->hand, setting, seconds, evals);
 #endif
     *error = rc == 0 ? max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
     return rc;
@@ -216,6 +236,10 @@ static int problem_init(problem *pb, const char *scene, const char *set, double 
         return -1;
     }
     pb->T = pb->sc->duration;
+    double cx, cy;
+    pb->orbit = strcmp(scene, "orbit") == 0 && pb->sys.kind == SW_SYS_PARTICLES && pb->sys.particles.n == 1 &&
+                pb->sys.particles.mass[0] == 1.0 && sw_particles_central(&pb->sys.particles, &cx, &cy, &pb->mu) &&
+                cx == 0 && cy == 0;
     pb->dim = pb->sys.ode->dim;
     size_t bytes = (size_t)pb->dim * sizeof(double);
     pb->y0 = malloc(bytes), pb->ref = malloc(bytes), pb->y = malloc(bytes);
@@ -233,7 +257,7 @@ static int problem_init(problem *pb, const char *scene, const char *set, double 
     } else {
 #ifdef SW_HAVE_GSL
         source = "GSL rk8pd at rtol = atol = 1e-13";
-        if (gsl_run(pb, gsl_odeiv2_step_rk8pd, 0, 1e-13, &sec, &ev) != 0) {
+        if (gsl_run(pb, gsl_odeiv2_step_rk8pd, 0, 0, 1e-13, &sec, &ev) != 0) {
             snprintf(why, whylen, "the reference run failed");
             return -1;
         }
@@ -348,9 +372,9 @@ static const candidate *cheapest(const candidate *c, int n, const char *lib)
     return best;
 }
 
-enum { MAX_CANDIDATES = 12 };
+enum { MAX_CANDIDATES = 14 };
 
-static int candidates(candidate *c)
+static int candidates(const problem *pb, candidate *c)
 {
     int k = 0;
     const char *mine[] = { "rk4", "rk45", "dop853" };
@@ -366,6 +390,12 @@ static int candidates(candidate *c)
     c[k++] = (candidate){ .lib = "GSL", .name = "rk4", .gsl_type = gsl_odeiv2_step_rk4 };
     c[k++] = (candidate){ .lib = "GSL", .name = "rk4-fixed", .gsl_type = gsl_odeiv2_step_rk4, .fixed = 1 };
     c[k++] = (candidate){ .lib = "GSL", .name = "msadams", .gsl_type = gsl_odeiv2_step_msadams };
+    if (pb->orbit) {
+        c[k++] = (candidate){ .lib = "GSL", .name = "rk8pd-f", .gsl_type = gsl_odeiv2_step_rk8pd, .hand = 1 };
+        c[k++] = (candidate){ .lib = "GSL", .name = "rkck-f", .gsl_type = gsl_odeiv2_step_rkck, .hand = 1 };
+    }
+#else
+    (void)pb;
 #endif
     return k;
 }
@@ -412,7 +442,7 @@ void bench_peer(const bench_peer_opts *o)
         }
         for (int e = 0; e < ntargets; e++) {
             candidate c[MAX_CANDIDATES];
-            int nc = candidates(c);
+            int nc = candidates(&pb, c);
             printf("\n  %s, error <= %.0e:\n  %-9s %-10s %12s %11s %10s %10s\n", pb.label, target[e],
                    "library", "method", "setting", "error", "evals", "time ms");
             for (int i = 0; i < nc; i++) {

@@ -494,6 +494,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
+            return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;
@@ -519,6 +521,8 @@ static int bench_engine_main(int argc, char **argv)
             }
             *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
             i++;
+        } else if (strcmp(argv[i], "--peer-only") == 0 && i + 1 < argc) {
+            peer.only = argv[++i];
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -531,7 +535,8 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --rkn, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --rkn, --peer-chain N, --peer-vortex N, "
+                    "--peer-only SCENE\n", argv[i]);
             return 2;
         }
     }

@@ -58,4 +58,8 @@ void bench_peer(const bench_peer_opts *o);
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
 
+/* rodas4 against CVODE's BDF on stiff problems at equal error, or rodas4
+ * alone when CVODE is absent (bench_stiff.c). */
+void bench_stiff(int repeats, int quick);
+
 #endif

@@ -485,7 +485,7 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 stiff */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -505,6 +505,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 8;
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
+        } else if (strcmp(argv[i], "--stiff") == 0) {
+            sections = 32;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -529,7 +531,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --stiff, --peer-chain N, --peer-vortex N\n", argv[i]);
             return 2;
         }
     }
@@ -544,6 +546,8 @@ static int bench_engine_main(int argc, char **argv)
         bench_tree(o.repeats, quick);
     if (sections & 8)
         bench_peer(&peer);
+    if (sections & 32)
+        bench_stiff(o.repeats, quick);
     return 0;
 }
 

@@ -18,10 +18,10 @@
  * computing the rows that bisect for a stability limit. */
 #include "claims.h"
 
-/* The five tables as one. */
+/* The six tables as one. */
 static size_t claim_count(void)
 {
-    return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n + sw_claims_m_n;
+    return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n + sw_claims_m_n + sw_claims_s_n;
 }
 static const claim *claim_at(size_t i)
 {
@@ -34,7 +34,10 @@ static const claim *claim_at(size_t i)
     if (i < sw_claims_d_n)
         return &sw_claims_d[i];
     i -= sw_claims_d_n;
-    return i < sw_claims_e_n ? &sw_claims_e[i] : &sw_claims_m[i - sw_claims_e_n];
+    if (i < sw_claims_e_n)
+        return &sw_claims_e[i];
+    i -= sw_claims_e_n;
+    return i < sw_claims_m_n ? &sw_claims_m[i] : &sw_claims_s[i - sw_claims_m_n];
 }
 
 /* ---- reading the texts ------------------------------------------------- */

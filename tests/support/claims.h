@@ -5,7 +5,8 @@
  * pages and measurements more than one part uses are in claims_runs.c and
  * claims_shared.c; claims_events.c: event location's figures in
  * docs/performance.md and lesson 4; claims_methods.c: yoshida4's and the
- * Barnes-Hut tree's figures in docs/performance.md and docs/scenes.md. */
+ * Barnes-Hut tree's figures in docs/performance.md and docs/scenes.md;
+ * claims_stiff.c: rodas4's. */
 #ifndef SW_TEST_CLAIMS_H
 #define SW_TEST_CLAIMS_H
 
@@ -75,8 +76,8 @@ typedef struct claim {
 #define R_MATH "arithmetic the text does: to its last digit"
 
 /* The rows, in five tables. */
-extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[], sw_claims_m[];
-extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n, sw_claims_m_n;
+extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[], sw_claims_m[], sw_claims_s[];
+extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n, sw_claims_m_n, sw_claims_s_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

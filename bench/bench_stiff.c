@@ -219,7 +219,7 @@ static int problem_init(stiff_problem *pb, const char *label, const char *scene,
 #ifdef SW_HAVE_CVODE
     run(pb, 1, 1e-12, &check, &sec, &ev);
 #endif
-    printf("  %s, T = %g, state %d: reference dop853 at 1e-13; CVODE at 1e-12 differs by %.1e\n", label, T, pb->dim,
+    printf("  %s, T = %g, state %d: reference dop853 at 1e-13; CVODE at 1e-12 lies %.1e from it\n", label, T, pb->dim,
            check);
     return 0;
 }

@@ -40,11 +40,12 @@ enum {
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
 
 /* The keys that pick an integrator by its place in the table ('stepwise list
- * integrators'): 1-9, 0 for the 10th, then the shifted digits, so every
- * built-in and every plugin (at most SW_PICK_KEY_COUNT in all) has one. */
+ * integrators'): 1-9, 0 for the 10th, then the shifted digits and four
+ * unbound symbols, so every built-in and every plugin (at most
+ * SW_PICK_KEY_COUNT in all) has one. */
 #define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
-                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')'
-#define SW_PICK_KEY_COUNT 20
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '{', '}', '|', '~'
+#define SW_PICK_KEY_COUNT 24
 
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'

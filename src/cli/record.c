@@ -29,8 +29,8 @@ static const char record_help[] =
     "                         (default: the scene's report time, 'stepwise describe SCENE')\n"
     "  -s, --set PARAM=VALUE  set a scene parameter; repeatable\n"
     "  -k, --every K          record step 0, every K-th step and the last (default 1)\n"
-    "      --rtol R           rk45 and dop853 relative tolerance (default 1e-06)\n"
-    "      --atol A           rk45 and dop853 absolute tolerance (default 1e-09)\n"
+    "      --rtol R           adaptive methods' relative tolerance (default 1e-06)\n"
+    "      --atol A           adaptive methods' absolute tolerance (default 1e-09)\n"
     SW_CLI_EVENTS_HELP
     "      --plugin PATH.so   load a student integrator (docs/plugins.md); repeatable;\n"
     "                         without --integrator the last one loaded is used\n"

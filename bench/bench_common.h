@@ -70,5 +70,8 @@ void bench_tree(int repeats, int quick);
  * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)
  * (bench_rkn.c). */
 void bench_rkn(int repeats, int quick);
+/* rodas4 against CVODE's BDF on stiff problems at equal error, or rodas4
+ * alone when CVODE is absent (bench_stiff.c). */
+void bench_stiff(int repeats, int quick);
 
 #endif

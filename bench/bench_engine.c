@@ -485,7 +485,7 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 rkn */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 rkn, 64 stiff */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -509,6 +509,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 16;
         } else if (strcmp(argv[i], "--rkn") == 0) {
             sections = 32;
+        } else if (strcmp(argv[i], "--stiff") == 0) {
+            sections = 64;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -535,7 +537,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --rkn, --peer-chain N, --peer-vortex N, "
+                    "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --peer-chain N, --peer-vortex N, "
                     "--peer-only SCENE\n", argv[i]);
             return 2;
         }
@@ -553,6 +555,8 @@ static int bench_engine_main(int argc, char **argv)
         bench_peer(&peer);
     if (sections & 32)
         bench_rkn(o.repeats, quick);
+    if (sections & 64)
+        bench_stiff(o.repeats, quick);
     return 0;
 }
 

@@ -1,6 +1,6 @@
 /* The integrator table and registry, and the stepper that runs one method
  * on one system. The methods themselves live one family per file
- * (explicit.c, implicit.c, rk45.c, dop853.c) and know nothing of particles: they see
+ * (explicit.c, implicit.c, rk45.c, dop853.c, rosenbrock.c) and know nothing of particles: they see
  * an sw_ode. Invariant: a step allocates nothing — every vector it touches
  * was handed out by sw_stepper_init. */
 #include "engine/stepper.h"
@@ -49,6 +49,11 @@ static const sw_integrator builtins[] = {
     { "rkn", "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)", 6, 5,
       SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER, 0.0, 8, sw_step_rkn,
       "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution" },
+    /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
+     * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
+     * six solves with one matrix (I - γh J). */
+    { "rodas4", "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", 4, 7, SW_IMPLICIT | SW_ADAPTIVE,
+      INFINITY, 12, sw_step_rodas4, "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))

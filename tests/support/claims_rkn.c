@@ -160,7 +160,7 @@ static double l9_rkn_error(void)
 #define R_HUNDRED "\"about\": to the nearest hundred"
 
 const claim sw_claims_r[] = {
-    { README, "`1`–`9`, `0`, `!`, `@` and `#` pick one", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
+    { README, "`1`–`9`, `0`, `!`, `@`, `#` and `$` pick one", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
     { README, "refused where a force reads velocities | {6} | 5", rkn_order, ABS, 0.3, "fixed steps on the e = 0.5 orbit, 200 to 400 a period: 5.9", NULL },
     { README, "refused where a force reads velocities | 6 | {5} (reuses the last stage) |", rkn_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)\", {6}, 5,", rkn_order, ABS, 0.3, "as the README's row", NULL },

@@ -141,7 +141,7 @@ fuzz:
 # stamp rebuilds the benchmark when GSL appears or goes.
 GSL_FLAGS = $(shell pkg-config --exists gsl 2>/dev/null && echo -DSW_HAVE_GSL $$(pkg-config --cflags gsl))
 GSL_LIBS  = $(shell pkg-config --exists gsl 2>/dev/null && pkg-config --libs gsl)
-BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c
+BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c bench/bench_frame.c
 
 $(BUILD)/gsl.stamp: FORCE
 	@mkdir -p $(dir $@)

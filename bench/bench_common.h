@@ -58,4 +58,12 @@ void bench_peer(const bench_peer_opts *o);
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
 
+/* Frame cost (bench_frame.c): the plain rasteriser per scene (vortex at
+ * vortex_n first), and the heavy views through the app layer (quick: at
+ * n = 1e4 instead of 1e5). */
+void bench_frame_cost(int vortex_n, double target);
+void bench_heavy_views(int quick);
+/* One heavy view alone, for a profiler (bench_frame.c). */
+void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds);
+
 #endif

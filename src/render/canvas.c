@@ -388,6 +388,21 @@ static uint32_t ramp_glyph(uint32_t count)
     return (unsigned char)SW_DENSITY_RAMP[level];
 }
 
+void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep, const void *ctx,
+                     int dots, uint32_t glyph, int style)
+{
+    grid g = grid_of(c, dots);
+    if (!glyph)
+        glyph = SW_GLYPH_MAIN;
+    for (int i = 0; i < n; i++) {
+        int gc, gr;
+        if (keep && !keep(ctx, i))
+            continue;
+        if (to_grid(&g, c, xy[2 * i], xy[2 * i + 1], &gc, &gr))
+            plot(c, &g, gc, gr, glyph, style, 0);
+    }
+}
+
 /* Count the points that keep accepts, then write the ramp. */
 void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
                              const void *ctx, int style)

@@ -37,6 +37,8 @@ typedef struct bench_chain {
     double *f;
 } bench_chain;
 
+/* The vortex's seeds, as the scene places them (2n doubles). */
+void base_vortex_seed(double *y, int n);
 /* Hand-fused steps: `steps` steps of h on y in place (bench_base.c). */
 void base_vortex_euler(double *y, int n, double w, double h, long steps);
 void base_vortex_rk4(double *y, int n, double w, double h, long steps);

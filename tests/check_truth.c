@@ -461,6 +461,7 @@ START_TEST(meter_on_a_large_chain_in_slices)
     sw_app_meter m;
     ck_assert_int_eq(sw_app_stability(&a, &m), 0);
     ck_assert_int_eq(sw_app_meter_pending(&a), 1);
+    ck_assert_int_eq(sw_app_meter_settle(&a, 1), 0); /* one slice is not all of it */
     ck_assert_int_eq(sw_app_meter_settle(&a, 1000), 1);
     ck_assert_int_eq(sw_app_stability(&a, &m), 1);
     sw_spectrum sync;

@@ -235,8 +235,8 @@ int sw_app_stability(sw_app *a, sw_app_meter *m);
 void sw_app_meter_refresh(sw_app *a);
 /* (meter.c) 1 while a spectrum job is under way. */
 int sw_app_meter_pending(const sw_app *a);
-/* (meter.c) Read the meter up to `calls` times until no job is under way;
- * 1 when none is. */
+/* (meter.c) Run the spectrum job on, up to `calls` slices, until it is
+ * done; 1 when no job is under way. */
 int sw_app_meter_settle(sw_app *a, long calls);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */

@@ -62,11 +62,7 @@ void sw_app_meter_refresh(sw_app *a)
 
 int sw_app_meter_settle(sw_app *a, long calls)
 {
-    sw_app_meter m;
-    for (long k = 0; k < calls; k++) {
-        sw_app_stability(a, &m);
-        if (!a->spec_job.active)
-            return 1;
-    }
+    for (long k = 0; k < calls && a->spec_job.active; k++)
+        sw_app_meter_refresh(a);
     return !a->spec_job.active;
 }

@@ -98,6 +98,7 @@ typedef struct sw_canvas {
     sw_canvas_mode mode;
     sw_view view;          /* as last set; default (-1, 1, -1, 1) */
     double scale;          /* s: world units per column */
+    double inv_scale;      /* 1/s, worked out once per view (not per point) */
     double cx, cy;         /* the view's centre */
     uint32_t *glyph;       /* cols·rows code points, 0 = none; row-major from the top */
     uint32_t *count;       /* density counts, scratch for one density pass */

@@ -404,6 +404,15 @@ void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *k
     grid g = grid_of(c, dots);
     if (!glyph)
         glyph = SW_GLYPH_MAIN;
+    if (!keep && !dots) { /* the common case, with nothing but the mapping and the store in the loop */
+        double hc = g.hc, hr = g.hr, kx = g.kx, ky = g.ky, cx = c->cx, cy = c->cy, w = g.w, h = g.h;
+        for (int i = 0; i < n; i++) {
+            double u = hc + (xy[2 * i] - cx) * kx, v = hr - (xy[2 * i + 1] - cy) * ky;
+            if (u >= 0.0 && u < w && v >= 0.0 && v < h)
+                put_glyph(c, (int)u, (int)v, glyph, style, 0);
+        }
+        return;
+    }
     for (int i = 0; i < n; i++) {
         int gc, gr;
         if (keep && !keep(ctx, i))

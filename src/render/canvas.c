@@ -399,7 +399,7 @@ static uint32_t ramp_glyph(uint32_t count)
 }
 
 void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep, const void *ctx,
-                     int dots, uint32_t glyph, int style)
+                     int dots, uint32_t glyph, int style, int fade)
 {
     grid g = grid_of(c, dots);
     if (!glyph)
@@ -409,7 +409,7 @@ void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *k
         for (int i = 0; i < n; i++) {
             double u = hc + (xy[2 * i] - cx) * kx, v = hr - (xy[2 * i + 1] - cy) * ky;
             if (u >= 0.0 && u < w && v >= 0.0 && v < h)
-                put_glyph(c, (int)u, (int)v, glyph, style, 0);
+                put_glyph(c, (int)u, (int)v, glyph, style, fade);
         }
         return;
     }
@@ -418,7 +418,7 @@ void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *k
         if (keep && !keep(ctx, i))
             continue;
         if (to_grid(&g, c, xy[2 * i], xy[2 * i + 1], &gc, &gr))
-            plot(c, &g, gc, gr, glyph, style, 0);
+            plot(c, &g, gc, gr, glyph, style, fade);
     }
 }
 

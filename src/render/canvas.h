@@ -154,11 +154,12 @@ typedef int sw_canvas_keep_fn(const void *ctx, int i);
 void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
                              const void *ctx, int style);
 /* A layer of n points xy[2i], xy[2i+1] that keep accepts (NULL: all),
- * each drawn as sw_canvas_point (dots = 1: its Braille dot) or
- * sw_canvas_mark (dots = 0: glyph in its cell) would draw it, in order, with
- * the mapping worked out once: a point's cost, not a call's. */
+ * each drawn as sw_canvas_point_faded (dots = 1: its Braille dot) or
+ * sw_canvas_mark (dots = 0: glyph in its cell) would draw it with that
+ * fade, in order, with the mapping worked out once: a point's cost, not a
+ * call's. */
 void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep, const void *ctx,
-                     int dots, uint32_t glyph, int style);
+                     int dots, uint32_t glyph, int style, int fade);
 
 /* Cell-level drawing (axes, labels, the region's shading): a glyph into
  * cell (col, row); a Braille dot (dc, dr) of the 2·cols × 4·rows dot grid;

@@ -471,6 +471,39 @@ START_TEST(meter_on_a_large_chain_in_slices)
 }
 END_TEST
 
+/* The error norm, as a plain loop computes it: the largest |y_i - truth_i|,
+ * NaN when any difference is NaN (wherever it is: each of the four running
+ * maxima, and the tail past the last multiple of four), an infinite
+ * difference infinite. Exact: a maximum is the same in any order. */
+START_TEST(error_norm_matches_plain_loop)
+{
+    enum { DIM = 23 };
+    double y[DIM], t[DIM];
+    for (int i = 0; i < DIM; i++) {
+        y[i] = sin(1.7 * i) * (i + 1);
+        t[i] = cos(0.3 * i);
+    }
+    double want = 0;
+    for (int i = 0; i < DIM; i++)
+        want = fmax(want, fabs(y[i] - t[i]));
+    for (int len = 0; len <= DIM; len++) {
+        double w = 0;
+        for (int i = 0; i < len; i++)
+            w = fmax(w, fabs(y[i] - t[i]));
+        ck_assert_double_eq(sw_truth_error(len, y, t), w);
+    }
+    ck_assert_double_eq(sw_truth_error(DIM, y, t), want);
+    for (int at = 0; at < DIM; at++) {
+        double keep = y[at];
+        y[at] = NAN;
+        ck_assert_msg(isnan(sw_truth_error(DIM, y, t)), "NaN at %d not seen", at);
+        y[at] = INFINITY;
+        ck_assert_msg(isinf(sw_truth_error(DIM, y, t)), "infinity at %d not seen", at);
+        y[at] = keep;
+    }
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -488,6 +521,7 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, free_modes_left_out);
     tcase_add_test(tc, spectrum_job_matches_synchronous);
     tcase_add_test(tc, meter_on_a_large_chain_in_slices);
+    tcase_add_test(tc, error_norm_matches_plain_loop);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -84,20 +84,20 @@ static const unsigned char *alive(sw_frame *f, const sw_sim *s)
     return f->keep;
 }
 
-/* Whether sw_canvas_offscreen would draw any arrow for these points: one
- * pass with no branch per point (kept, finite, outside the visible
- * rectangle, by its tests), since most frames have none to draw. */
+/* Whether sw_canvas_offscreen would draw any arrow for these points
+ * (kept, finite, outside the visible rectangle, by its tests): most frames
+ * have none, so the test for "inside" comes first and alone. */
 static int any_outside(const sw_canvas *c, const double *xy, int n, const unsigned char *keep)
 {
     sw_view vis = sw_canvas_visible(c);
-    int out = 0;
     for (int i = 0; i < n; i++) {
         double x = xy[2 * i], y = xy[2 * i + 1];
-        int inside = (x >= vis.xmin) & (x < vis.xmax) & (y > vis.ymin) & (y <= vis.ymax);
-        int finite = (x - x == 0) & (y - y == 0);
-        out |= (inside ^ 1) & finite & (!keep || keep[i]);
+        if (x >= vis.xmin && x < vis.xmax && y > vis.ymin && y <= vis.ymax)
+            continue;
+        if ((!keep || keep[i]) && isfinite(x) && isfinite(y))
+            return 1;
     }
-    return out;
+    return 0;
 }
 
 /* Sims first..last (overlaid) on canvas c, sized cols × rows. */

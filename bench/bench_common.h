@@ -37,6 +37,8 @@ typedef struct bench_chain {
     double *f;
 } bench_chain;
 
+/* The vortex's seeds, as the scene places them (2n doubles). */
+void base_vortex_seed(double *y, int n);
 /* Hand-fused steps: `steps` steps of h on y in place (bench_base.c). */
 void base_vortex_euler(double *y, int n, double w, double h, long steps);
 void base_vortex_rk4(double *y, int n, double w, double h, long steps);
@@ -73,5 +75,12 @@ void bench_rkn(int repeats, int quick);
 /* rodas4 against CVODE's BDF on stiff problems at equal error, or rodas4
  * alone when CVODE is absent (bench_stiff.c). */
 void bench_stiff(int repeats, int quick);
+/* Frame cost (bench_frame.c): the plain rasteriser per scene (vortex at
+ * vortex_n first), and the heavy views through the app layer (quick: at
+ * n = 1e4 instead of 1e5). */
+void bench_frame_cost(int vortex_n, double target);
+void bench_heavy_views(int quick);
+/* One heavy view alone, for a profiler (bench_frame.c). */
+void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds);
 
 #endif

@@ -113,6 +113,7 @@ typedef struct sw_app {
     double spec_t;              /* time spec was taken at */
     sw_app_meter meter;         /* the last reading */
     sw_truth_work *meter_work;  /* the meter's reusable workspace (allocates nothing per frame) */
+    sw_spectrum_job spec_job;   /* a large system's spectrum, a slice per call (meter.c) */
     /* the main run watched for growth of its motion's energy, since the
      * last reset or change of method or dt (relative to its value then) */
     sw_watch watch;
@@ -237,6 +238,15 @@ void sw_app_watch_feed(sw_app *a);
  * the spectrum is refreshed as the state moves, twenty times per report
  * time). Returns m->ok. */
 int sw_app_stability(sw_app *a, sw_app_meter *m);
+/* (meter.c) Take the spectrum again when due, or run its job on by one
+ * slice (a fixed number of passes for the system's size); the meter keeps
+ * the last spectrum until the job is done. */
+void sw_app_meter_refresh(sw_app *a);
+/* (meter.c) 1 while a spectrum job is under way. */
+int sw_app_meter_pending(const sw_app *a);
+/* (meter.c) Run the spectrum job on, up to `calls` slices, until it is
+ * done; 1 when no job is under way. */
+int sw_app_meter_settle(sw_app *a, long calls);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */
 const double *sw_app_ghost(sw_app *a);

@@ -29,6 +29,7 @@ void sw_app_truth_reset(sw_app *a)
     a->truth_report = NULL;
     char err[SW_ERRLEN];
     a->truth_live = 0;
+    sw_spectrum_job_free(&a->spec_job); /* its blocks were in the old truth's system */
     if (!a->scene) { /* the app is being freed */
         sw_truth_work_free(a->meter_work);
         a->meter_work = NULL;
@@ -145,7 +146,10 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
 static const sw_spectrum *spectrum0(sw_app *a)
 {
     if (!a->have_spec0 && a->have_truth && a->meter_work)
+    {
         a->have_spec0 = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
+        a->spec_job.active = 0; /* that assembled the truth's Jacobian at the start: the job starts again */
+    }
     return a->have_spec0 ? &a->spec0 : NULL;
 }
 
@@ -219,19 +223,6 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     }
 }
 
-/* Refresh the spectrum as the state moves: twenty times per report time,
- * or on a reset (time went back). */
-static void refresh_spectrum(sw_app *a)
-{
-    const sw_sim *s = &a->sims[0];
-    double every = a->scene->duration / 20;
-    if (a->have_spec && s->t >= a->spec_t && s->t - a->spec_t < every)
-        return;
-    a->have_spec = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
-    a->spec_t = s->t;
-    a->meter.method = NULL; /* read again */
-}
-
 int sw_app_stability(sw_app *a, sw_app_meter *out)
 {
     const sw_sim *s = &a->sims[0];
@@ -241,7 +232,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
         *out = *m;
         return 0;
     }
-    refresh_spectrum(a);
+    sw_app_meter_refresh(a);
     if (m->method != s->method || m->dt != a->dt) {
         memset(m, 0, sizeof *m);
         m->method = s->method;

@@ -85,6 +85,22 @@ static const unsigned char *alive(sw_frame *f, const sw_sim *s)
     return f->keep;
 }
 
+/* Whether sw_canvas_offscreen would draw any arrow for these points
+ * (kept, finite, outside the visible rectangle, by its tests): most frames
+ * have none, so the test for "inside" comes first and alone. */
+static int any_outside(const sw_canvas *c, const double *xy, int n, const unsigned char *keep)
+{
+    sw_view vis = sw_canvas_visible(c);
+    for (int i = 0; i < n; i++) {
+        double x = xy[2 * i], y = xy[2 * i + 1];
+        if (x >= vis.xmin && x < vis.xmax && y > vis.ymin && y <= vis.ymax)
+            continue;
+        if ((!keep || keep[i]) && isfinite(x) && isfinite(y))
+            return 1;
+    }
+    return 0;
+}
+
 /* Sims first..last (overlaid) on canvas c, sized cols × rows. */
 static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, int first, int last)
 {
@@ -112,7 +128,9 @@ static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, 
     /* particles that left the view: an arrow at the edge (the main run's with its distance) */
     for (int i = last; i >= first; i--) {
         const sw_sim *s = &a->sims[i];
-        sw_canvas_offscreen(c, s->sys.y, s->sys.n, alive(f, s), sim_style[i], i == first);
+        const unsigned char *keep = alive(f, s);
+        if (any_outside(c, s->sys.y, s->sys.n, keep))
+            sw_canvas_offscreen(c, s->sys.y, s->sys.n, keep, sim_style[i], i == first);
     }
 }
 
@@ -324,7 +342,8 @@ static int meter_fields(sw_app *a, sw_field *f, int *style)
         if (a->sims[0].method->flags & SW_ADAPTIVE) {
             snprintf(buf, sizeof buf, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
             field(f, &n, 8, buf, "adaptive steps");
-        }
+        } else if (sw_app_meter_pending(a))
+            field(f, &n, 8, "stability: finding the stiffest mode", "finding the stiffest mode");
         return n;
     }
     snprintf(buf, sizeof buf, "|L|dt=%.3g", m.stiff * a->dt);

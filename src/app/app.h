@@ -33,6 +33,8 @@ typedef struct sw_app_meter {
     double dt, t;               /* what it was read for */
     double stiff;               /* largest |λ| of the linearisation now */
     double limit;               /* largest stable dt in theory here: 0 none */
+    double limit_undamped;      /* the same with every oscillating mode's damping taken away
+                                   (what a lesson's closed form gives): 0 when no mode is damped */
     int unbounded;              /* ... no limit up to SW_DT_MAX */
     double growth;              /* ρ: growth per step of the worst mode at dt */
     int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
@@ -243,6 +245,14 @@ typedef struct sw_field {
 #define SW_STATUS_FIELDS 12
 /* (status.c) The fields of sim i's status line; returns how many. */
 int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
+/* (status.c) The meter's line as fields (stiffness·dt against its limit,
+ * the growth per step and its one word); *warn set when it should stand out. */
+int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
+/* (status.c) The growth per step rho as text "×1.000000" into num, with as
+ * many digits as it takes for the printed number to agree with the word
+ * returned ("grows", "grows, too slowly to see", "decays", "neutral"):
+ * grows is the meter's visible growth, slow its invisible growth. */
+const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);

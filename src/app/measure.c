@@ -232,6 +232,36 @@ static void refresh_spectrum(sw_app *a)
     a->meter.method = NULL; /* read again */
 }
 
+/* The limit with the damping of every oscillating mode taken away (λ, μ =
+ * ±i|λ|): what a lesson's closed form for the undamped oscillator gives
+ * (RK4's 2√2). 0 when no mode is damped or it rounds to the same 3 digits
+ * as the limit shown. */
+static double undamped_limit(sw_app *a, const sw_integrator *m, double limit)
+{
+    static sw_spectrum sp; /* large: kept off the stack; the app is single-threaded */
+    sp = a->spec;
+    int damped = 0;
+    for (int k = 0; k < sp.n; k++) {
+        sw_mode *md = &sp.mode[k];
+        if (md->im == 0 || md->re == 0)
+            continue;
+        double w = hypot(md->re, md->im); /* |λ| kept: the same stiffness, no damping */
+        md->pre = 0; /* μ is λ's conjugate */
+        md->pim = md->im > 0 ? -w : w;
+        md->re = 0;
+        md->im = md->im > 0 ? w : -w;
+        damped = 1;
+    }
+    if (!damped || !(limit > 0))
+        return 0;
+    int unbounded;
+    double u = sw_truth_limit_with(a->meter_work, m, &sp, SW_DT_MAX, &unbounded);
+    char shown[32], und[32];
+    snprintf(shown, sizeof shown, "%.3g", a->spec.largest * limit);
+    snprintf(und, sizeof und, "%.3g", sp.largest * u);
+    return unbounded || !(u > 0) || strcmp(shown, und) == 0 ? 0 : u;
+}
+
 int sw_app_stability(sw_app *a, sw_app_meter *out)
 {
     const sw_sim *s = &a->sims[0];
@@ -256,6 +286,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
             m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
             m->limit = sw_truth_limit_with(a->meter_work, s->method, &a->spec, SW_DT_MAX, &m->unbounded);
+            m->limit_undamped = undamped_limit(a, s->method, m->limit);
             m->ok = isfinite(m->growth);
         }
     }

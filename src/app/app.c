@@ -265,6 +265,18 @@ void sw_app_reset(sw_app *a)
     sw_app_watch_restart(a);
 }
 
+/* A key changed dt or the method mid-run: the run starts again at t = 0,
+ * so what is on screen (err, energy, the picture) is this dt's and this
+ * method's alone, never an error carried over from the steps before. */
+static void restart_run(sw_app *a)
+{
+    if (!(a->sims[0].t > 0))
+        return;
+    sw_app_reset(a);
+    size_t used = strlen(a->message);
+    snprintf(a->message + used, sizeof a->message - used, "%s(restarted at t = 0)", used ? " " : "");
+}
+
 static int method_index(const sw_integrator *m)
 {
     for (int i = 0; i < sw_integrator_count(); i++)
@@ -332,6 +344,8 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_PREV_METHOD: {
         const sw_integrator *before = a->sims[0].method;
         cycle_method(a, act == SW_ACT_NEXT_METHOD ? 1 : -1);
+        if (a->sims[0].method != before)
+            restart_run(a);
         return a->sims[0].method != before;
     }
     case SW_ACT_PICK_METHOD: {
@@ -341,7 +355,10 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
                      sw_integrator_count());
             return 0;
         }
-        return sw_app_set_method(a, m) == SW_OK;
+        if (sw_app_set_method(a, m) != SW_OK)
+            return 0;
+        restart_run(a);
+        return 1;
     }
     case SW_ACT_DT_DOUBLE:
     case SW_ACT_DT_HALVE: {
@@ -353,8 +370,15 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         if (sw_app_set_dt(a, dt) != SW_OK)
             return 0;
         sw_app_measure_dt_change(a, old);
+        restart_run(a);
         return 1;
     }
+    case SW_ACT_ERROR_KIND:
+        a->err_velocity = !a->err_velocity;
+        snprintf(a->message, sizeof a->message, "err is now the largest %s",
+                 a->err_velocity ? "velocity error, in m/s (m: positions again)"
+                                 : "position error, in metres (m: velocities)");
+        return 1;
     case SW_ACT_PAUSE:
         a->paused = !a->paused;
         snprintf(a->message, sizeof a->message, "%s", a->paused ? "paused" : "running");

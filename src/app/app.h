@@ -78,6 +78,7 @@ typedef struct sw_app {
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
     int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
+    int err_velocity;           /* the status line's error: 0 positions (m), 1 velocities (m/s) */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
@@ -233,8 +234,14 @@ int sw_app_stability(sw_app *a, sw_app_meter *m);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */
 const double *sw_app_ghost(sw_app *a);
-/* The error of sim i now: against the exact solution or the reference. */
+/* The error of sim i now against the exact solution or the reference, in
+ * metres: the largest distance of a position coordinate from the truth's
+ * (with err_velocity set: of a velocity, in m/s; NaN for a flow). NaN when
+ * there is no truth or the run blew up. */
 double sw_app_error(sw_app *a, int i);
+/* (measure.c) The error of state y against truth for system sys: positions
+ * (velocity 0) or velocities (1; NaN for a flow, which has none). */
+double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity);
 /* A field of a status line: its full and brief forms and how much it
  * matters (higher is kept longer when the line must shrink). */
 typedef struct sw_field {

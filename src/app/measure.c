@@ -65,11 +65,20 @@ const double *sw_app_ghost(sw_app *a)
     return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
+double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
+{
+    const sw_ode *ode = sys->ode;
+    if (ode->order != 2) /* a flow's state is positions alone */
+        return velocity ? NAN : sw_truth_error(ode->dim, y, truth);
+    int half = ode->dim / 2; /* y = [x | v] */
+    return velocity ? sw_truth_error(half, y + half, truth + half) : sw_truth_error(half, y, truth);
+}
+
 double sw_app_error(sw_app *a, int i)
 {
     const sw_sim *s = &a->sims[i];
     const double *g = s->blown || !a->have_truth || !a->truth_live ? NULL : sw_truth_at(&a->truth, s->t);
-    return g ? sw_truth_error(s->sys.ode->dim, s->sys.y, g) : NAN;
+    return g ? sw_app_state_error(&s->sys, s->sys.y, g, a->err_velocity) : NAN;
 }
 
 /* The true state at the sample times to the report time (one reference
@@ -102,9 +111,11 @@ static double report_scale(sw_app *a)
 {
     const double *want = truth_report(a);
     size_t dim = (size_t)a->sims[0].sys.ode->dim;
+    size_t npos = a->sims[0].sys.ode->order == 2 ? dim / 2 : dim; /* positions: y = [x | v] */
     double scale = 1e-300;
-    for (size_t k = 0; want && k < SW_TRUTH_SAMPLES * dim; k++)
-        scale = fmax(scale, fabs(want[k]));
+    for (size_t j = 0; want && j < SW_TRUTH_SAMPLES; j++)
+        for (size_t k = 0; k < npos; k++)
+            scale = fmax(scale, fabs(want[j * dim + k]));
     return scale;
 }
 
@@ -132,7 +143,7 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
                 e = NAN;
                 break;
             }
-            double ej = sw_truth_error(dim, s.sys.y, want + (size_t)(j - 1) * (size_t)dim);
+            double ej = sw_app_state_error(&s.sys, s.sys.y, want + (size_t)(j - 1) * (size_t)dim, 0);
             if (!(ej <= e))
                 e = ej;
         }
@@ -173,7 +184,7 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     double ratio = big / small, T = a->scene->duration;
     a->error_ratio = NAN;
     if (!isfinite(ratio) || !(small > 0)) {
-        char why[SW_ERRLEN];
+        char why[SW_ERRLEN], truth_why[SW_ERRLEN];
         double dim = a->sims[0].sys.ode->dim, cost = dim * (T / fmin(old_dt, a->dt)) * (m->evals > 0 ? m->evals : 1);
         if (a->have_truth && a->truth_cost > SW_WORK_KEY)
             snprintf(why, sizeof why, "no error measured: the reference to t=%.3g would cost %.2g state "
@@ -183,7 +194,7 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
                      "over the %.0e a key press may spend", T, cost, MEASURE_BUDGET);
         else if (isnan(e_new) || isnan(e_old))
             snprintf(why, sizeof why, "no error to compare (%s)",
-                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, why, sizeof why));
+                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, truth_why, sizeof truth_why));
         else
             snprintf(why, sizeof why, "the error is zero at one step: no ratio");
         snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt, why);
@@ -198,20 +209,23 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     double rho, grow = run_growth(a, m, big_dt, &rho);
     double scale = report_scale(a);
     char head[160];
-    snprintf(head, sizeof head, "dt=%g: error %.3g to t=%.3g (was %.3g at dt=%g), ratio %.3g", a->dt, e_new, T,
-             e_old, old_dt, ratio);
+    snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (was %.3g m at dt=%g), ratio %.3g",
+             a->dt, e_new, T, e_old, old_dt, ratio);
     if (grow > 2) {
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
                  "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
     } else if (big > 0.5 * scale) {
-        snprintf(a->message, sizeof a->message, "%s: not an order yet - the error is %.0f%% of the motion; "
-                 "halve dt again", head, 100 * big / scale);
+        /* an order shows only where the error is small: say which way that is */
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s",
+                 head, big_dt, 100 * big / scale,
+                 a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)");
     } else {
         double small_dt = fmin(old_dt, a->dt), e_next = sw_app_measure(a, m, 0.5 * small_dt);
         double next = small / e_next;
         if (isfinite(next) && e_next > 0 && fabs(log2(ratio) - log2(next)) > 0.15) {
             snprintf(a->message, sizeof a->message, "%s: not an order yet - at dt=%g the ratio is %.3g, still "
-                     "changing; halve dt again", head, 0.5 * small_dt, next);
+                     "changing%s", head, 0.5 * small_dt, next,
+                     a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)");
         } else {
             a->error_ratio = ratio;
             snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));

@@ -55,8 +55,12 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
     }
     double err = sw_app_error(a, i);
     if (isfinite(err) && (x = add(f, &n, max, 6))) {
-        snprintf(x->full, sizeof x->full, "error %.2e", err);
-        snprintf(x->brief, sizeof x->brief, "err %.1e", err);
+        /* against the truth at this time; the run restarts when dt or the
+         * method changes, so it is this run's error alone */
+        const char *what = a->err_velocity ? "velocity error" : "position error";
+        const char *unit = a->err_velocity ? "m/s" : "m";
+        snprintf(x->full, sizeof x->full, "%s %.3g %s", what, err, unit);
+        snprintf(x->brief, sizeof x->brief, "%s %.2g %s", a->err_velocity ? "v err" : "err", err, unit);
     }
     if ((s->method->flags & SW_ADAPTIVE) && (x = add(f, &n, max, 4))) {
         long acc, rej;

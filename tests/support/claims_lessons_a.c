@@ -219,6 +219,12 @@ static double l5_growth_formula(void) { return hypot(1 + l5_mark_re(), l5_mark_i
 static double l2_dt_plus2(void) { return cl_page_dt_after(L2, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
 static double l5_dt_minus3(void) { return cl_page_dt_after(L5, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
 
+/* The bounce page's ratios as the dt-change message prints them, and
+ * whether it read the first as an order (it must not: the next differs). */
+static double l4_bounce_shown1(void) { return cl_page_shown_ratio(L4, "A bounce breaks the order", NULL, 1); }
+static double l4_bounce_shown2(void) { return cl_page_shown_ratio(L4, "A bounce breaks the order", NULL, 2); }
+static double l4_bounce_not_order(void) { return isnan(cl_l4_ratio()) ? 0 : 1; }
+
 /* RK4 on the parabola (no drag): the status line's error at t = 2. */
 static double l4_parabola_error(void)
 {
@@ -293,9 +299,11 @@ const claim sw_claims_a[] = {
     { L4, "@answer b) {2.56} m | Yes", l4_bounce_height, ABS, 0.005, "the first hop of a ball dropped from 4 m in the scene, at Δt = 1e-4 (contact is found at step ends: an error of order Δt·v ≈ 1e-3)", NULL },
     { L4, "the height by 0.8² = {0.64}", l4_e_squared, EXACT, 0, R_MATH, NULL },
     { L4, "@answer a) {3.2} m | That multiplies the height by e", l4_e_height, ABS, 1e-12, R_MATH, NULL },
-    { L4, "here it gives about {2}. Any method", cl_l4_ratio, ABS, 0.5, R_RATIO, NULL },
-    { L4, "For a smooth motion RK4 would give {16}", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
-    { L4, "stepwise measures the error at t = {3} for both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
+    { L4, "here it falls by {1.86}, and at the", l4_bounce_shown1, ROUNDED, 0, "the ratio the message shows at the first halving", NULL },
+    { L4, "next halving by only {1.52}", l4_bounce_shown2, ROUNDED, 0, "the ratio the message shows at the next halving", NULL },
+    { L4, "next halving by only 1.52 (\"not an order yet\")", l4_bounce_not_order, ATMOST, 0, "the ratio is NaN (not read as an order) after the first halving", cl_zero },
+    { L4, "RK4's position error would fall {16}-fold", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
+    { L4, "stepwise measures the error to t = {3} at both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
     /* lesson 5 */
     { L5, "Here k = {10} N/m, damping c = 0.5, mass 1 kg", cl_l5_k, EXACT, 0, R_COUNT, NULL },

@@ -544,8 +544,8 @@ const claim sw_claims_b[] = {
     /* lesson 10 */
     { L10, "A correct midpoint gives a ratio near {4}, RK4 near 16", l10_ratio_mid, ABS, 0.5, "the lessons' tolerance for 4", NULL },
     { L10, "A correct midpoint gives a ratio near 4, RK4 near {16}", l10_ratio_rk4, ABS, 2, "the lessons' tolerance for 16", NULL },
-    { L10, "A first-order method shows {2.2}, then 2.1", l10_ratio_euler1, ROUNDED, 0, "the ratio the status line shows for euler, to the text's digits", NULL },
-    { L10, "A first-order method shows 2.2, then {2.1}", l10_ratio_euler2, ROUNDED, 0, "as above, halving again", NULL },
+    { L10, "A first-order method shows {2.3}, then 2.1", l10_ratio_euler1, ROUNDED, 0, "the ratio the status line shows for euler, to the text's digits", NULL },
+    { L10, "A first-order method shows 2.3, then {2.1}", l10_ratio_euler2, ROUNDED, 0, "as above, halving again", NULL },
     { L10, "until the ratio settles near {2}: over the", l10_ratio_euler5, ABS, 0.1, "the fifth halving, from Δt = 0.00125", NULL },
     { L10, "Euler's amplitude error grows like e^(ω²ΔtT/2) - 1", l10_ratio_at_end, REL, 0.01, "the ratio (e^x - 1)/(e^(x/2) - 1) at x = ω²ΔtT/2 = 1 against Euler's error at T, Δt 0.02 over 0.01", l10_ratio_formula },
     { L10, "(it is {1} at Δt = 0.02)", l10_exponent, ABS, 1e-9, "ω²ΔtT/2 = 10·0.02·10/2, to rounding", NULL },

@@ -94,6 +94,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     memset(a, 0, sizeof *a);
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
+    a->epoch++; /* a new picture */
     a->dt = dt > 0 ? dt : sc->dt;
     a->speed = 1.0;
     a->slowmo = 1.0;
@@ -127,6 +128,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
     free_sims(a);
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
+    a->epoch++; /* a new picture */
     if (sc != old_scene)
         a->dt = sc->dt;
     int rc = build(a, m, err, errlen);
@@ -259,6 +261,7 @@ void sw_app_reset(sw_app *a)
     }
     a->t_goal = 0;
     a->slowmo = 1.0;
+    a->epoch++;
     for (int i = 0; i < SW_APP_SIMS; i++)
         sw_series_clear(&a->series[i]);
     sw_app_phase_clear(a);

@@ -78,6 +78,8 @@ typedef struct sw_app {
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
     int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
+    unsigned epoch;             /* counts fresh starts (reset, new scene, a lesson page): the picture
+                                   forgets its trails when it changes */
     int err_velocity;           /* the status line's error: 0 positions (m), 1 velocities (m/s) */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */

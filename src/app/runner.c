@@ -57,6 +57,15 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
+    /* A page starts clean unless it says otherwise: no run left blown up by
+     * the page before, no view or plot of its (the region view, the
+     * work-precision plot cover the scene), no trails (the epoch). */
+    if (a->sims[0].blown || (a->nsims > 1 && (a->sims[1].blown || (a->nsims > 2 && a->sims[2].blown))))
+        sw_app_reset(a);
+    if (pg->view < 0 && a->view != SW_VIEW_SCENE)
+        sw_app_set_view(a, SW_VIEW_SCENE);
+    a->workprec = 0;
+    a->epoch++;
     if (pg->compare >= 0 && pg->ncompare_with > 0)
         sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);
     else if (pg->compare >= 0)
@@ -188,6 +197,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         return 1;
     case SW_ACT_HINT:
         r->hint = !r->hint;
+        r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
@@ -339,6 +349,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->hint) {
         const char *h = unmet ? unmet->hint : (q->text && !r->answered[r->page]) ? q->hint : NULL;
         add_line(r, SW_SIDE_TEXT, "");
+        if (r->hint_scroll)
+            r->scroll = r->side.nlines; /* the composer clamps it to the pane's end */
+        r->hint_scroll = 0;
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
         add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }

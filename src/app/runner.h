@@ -22,6 +22,7 @@ typedef struct sw_runner {
     const char *feedback;      /* last answer's feedback */
     int feedback_ok;
     int hint;                  /* 1: show the hint of the first goal not met */
+    int hint_scroll;           /* 1: the hint was just asked for: scroll the pane to it */
     int finished;              /* the last page is complete */
     int scroll;                /* first line of the text pane shown */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];

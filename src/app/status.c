@@ -62,6 +62,12 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "%s %.3g %s", what, err, unit);
         snprintf(x->brief, sizeof x->brief, "%s %.2g %s", a->err_velocity ? "v err" : "err", err, unit);
     }
+    double inv = s->blown ? NAN : sw_sim_drift(s);
+    if (isfinite(inv) && a->scene->drift_name && (x = add(f, &n, max, 6))) {
+        /* what a page's `drift` goal reads: the scene names it */
+        snprintf(x->full, sizeof x->full, "%s %.2g", a->scene->drift_name, inv);
+        snprintf(x->brief, sizeof x->brief, "drift %.1g", inv);
+    }
     if ((s->method->flags & SW_ADAPTIVE) && (x = add(f, &n, max, 4))) {
         long acc, rej;
         sw_sim_step_counts(s, &acc, &rej);
@@ -127,7 +133,6 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
     if ((x = add(f, &n, max, 7))) {
         if (bounded) {
             snprintf(x->full, sizeof x->full, "stiffness·dt %.3g of limit %.3g", m.stiff * a->dt, m.stiff * m.limit);
-            snprintf(x->brief, sizeof x->brief, "stiffness·dt %.3g/%.3g", m.stiff * a->dt, m.stiff * m.limit);
         } else
             snprintf(x->full, sizeof x->full, "stiffness·dt %.3g, %s", m.stiff * a->dt,
                      m.unbounded ? "stable at any dt" : "no stable dt");
@@ -148,7 +153,7 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
         char num[40];
         const char *word = sw_app_growth_text(m.growth, m.grows, m.slow, num, sizeof num);
         snprintf(x->full, sizeof x->full, "growth %s per step: %s", num, m.grows ? "GROWS" : word);
-        snprintf(x->brief, sizeof x->brief, "%s/step %s", num, m.grows ? "GROWS" : m.slow ? "grows slowly" : word);
+        snprintf(x->brief, sizeof x->brief, "growth %s/step %s", num, m.grows ? "GROWS" : m.slow ? "grows slowly" : word);
     }
     int run_grows = a->watch.verdict != SW_WATCH_STEADY;
     if (run_grows && !m.grows && (x = add(f, &n, max, 6))) {

@@ -225,6 +225,46 @@ static double l4_bounce_shown1(void) { return cl_page_shown_ratio(L4, "A bounce 
 static double l4_bounce_shown2(void) { return cl_page_shown_ratio(L4, "A bounce breaks the order", NULL, 2); }
 static double l4_bounce_not_order(void) { return isnan(cl_l4_ratio()) ? 0 : 1; }
 
+/* Lesson 3's undamped spring (c = 0) under Euler at Δt = 0.02: the
+ * energy the linear factor 1 + (ωΔt)² per step predicts at t = 10, and
+ * when the mass first passes its anchor (from there the force is not
+ * linear in the stretch). */
+static double l3_linear_prediction(void)
+{
+    double k = cl_param("spring", "k"), m = cl_param("spring", "m"), dt = 0.02;
+    return 100 * (pow(1 + k / m * dt * dt, round(10 / dt)) - 1);
+}
+static double l3_steps_to_10(void) { return (double)cl_steps_for("spring", "c=0", "euler", 0.02, 10.0); }
+static double l3_rest(void) { return cl_param("spring", "rest"); }
+static double l3_crosses_anchor(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "spring", "c=0", "euler", 0.02);
+    while (s.t < 10 && s.sys.y[0] > 0) /* the anchor at the origin, the mass on +x */
+        sw_sim_step(&s);
+    double t = s.sys.y[0] <= 0 ? s.t : NAN;
+    sw_sim_free(&s);
+    return t;
+}
+
+/* Lesson 1's page on the status lines: what its meter reads. */
+static sw_app_meter l1_meter(double *dt)
+{
+    sw_runner r;
+    sw_app a;
+    sw_app_meter m;
+    cl_lesson_page(&r, &a, L1, "The two lines under the picture");
+    ck_assert(sw_app_stability(&a, &m));
+    *dt = a.dt;
+    cl_page_free(&r, &a);
+    return m;
+}
+static double l1_lines_dt(void) { double dt; l1_meter(&dt); return dt; }
+static double l1_lines_stiff(void) { double dt; return l1_meter(&dt).stiff; }
+static double l1_lines_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); return m.stiff * m.limit; }
+static double l1_lines_limit_dt(void) { double dt; return l1_meter(&dt).limit; }
+static double l1_lines_dt_over_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); return dt / (m.stiff * m.limit); }
+
 /* RK4 on the parabola (no drag): the status line's error at t = 2. */
 static double l4_parabola_error(void)
 {
@@ -244,6 +284,14 @@ static double l5_falls(void) { return cl_drift_at("spring", STIFF, "euler", 0.00
 const claim sw_claims_a[] = {
     /* lesson 1 */
     { L1, "g(x) = ω(-y, x) with ω = {1} rad/s", l1_omega, EXACT, 0, R_COUNT, NULL },
+    { L1, "dt={0.05}   the time step Δt", l1_lines_dt, EXACT, 0, "the page's Δt, as the status line prints it", NULL },
+    { L1, "stiffness·dt … of limit {2.83}", l1_lines_limit, ROUNDED, 0, "the meter's limit on this page (RK4's 2√2 on the vortex's ±i)", NULL },
+    { L1, "Here |λ| = {1} per second", l1_lines_stiff, ROUNDED, 0, "the meter's |λ| on this page", NULL },
+    { L1, "stiffness·dt = {1} × Δt may grow", l1_lines_stiff, ROUNDED, 0, R_ROUND, NULL },
+    { L1, "Δt = {0.05} s and the limit reads", l1_lines_dt, EXACT, 0, R_COUNT, NULL },
+    { L1, "and the limit reads {2.83}. Up to", l1_lines_limit, ROUNDED, 0, R_ROUND, NULL },
+    { L1, "@answer b) {2.83} s | Yes", l1_lines_limit_dt, ROUNDED, 0, "the largest stable Δt: the limit over |λ|", NULL },
+    { L1, "@answer c) {0.0177} s", l1_lines_dt_over_limit, ROUNDED, 0, "Δt over the limit, the wrong answer's figure", NULL },
     { L1, "one full turn takes 2π/ω ≈ {6.3} seconds", l1_turn, ROUNDED, 0, R_ROUND, NULL },
     { L1, "swings back and forth every {10} seconds", l1_gyre_swing, ABS, 1e-5, "the default ω = 0.628319 is 2π/10 to 6 digits", NULL },
     /* lesson 2 */
@@ -289,6 +337,10 @@ const claim sw_claims_a[] = {
     { L3, "@answer b) {4}: position (x, y) and velocity (vx, vy)", l3_particle_dim, EXACT, 0, R_COUNT, NULL },
     { L3, "In 3-D, as in the lecture, it is {6}.", l3_3d, EXACT, 0, R_MATH, NULL },
     { L3, "By t = 10 Euler's energy is up {557} %", l3_phase_euler, ROUNDED, 0, R_ROUND, NULL },
+    { L3, "The factor 1.004 per step predicts +{636} % for Euler's 500 steps", l3_linear_prediction, ROUNDED, 0, "(1 + (ωΔt)²)^(T/Δt) - 1 with the page's k, m, Δt and T = 10", NULL },
+    { L3, "predicts +636 % for Euler's {500} steps", l3_steps_to_10, EXACT, 0, R_COUNT, NULL },
+    { L3, "It gains less because at t = {6.96} its swing", l3_crosses_anchor, ROUNDED, 0, "the first step Euler's mass is past its anchor (x < 0), at Δt = 0.02", NULL },
+    { L3, "grown wider than the {1} m rest", l3_rest, EXACT, 0, R_COUNT, NULL },
     { L3, "backward Euler's down {86} %", l3_phase_be, ROUNDED, 0, R_ROUND, NULL },
     { L3, "only wobbles, within {3.3} %", l3_phase_se, ATMOST, 0.1, "a bound the run comes within 10 % of", NULL },
     /* lesson 4 */

@@ -514,6 +514,7 @@ const claim sw_claims_b[] = {
     { L9, "(energy {-122} % by t = 1.5)", l9_rk4_first, ROUNDED, 0, R_ROUND, NULL },
     { L9, "the second, at t ≈ {2.9}, flings it away", l9_rk4_second_pass, ROUNDED, 0, "the time of the nearest approach after t = 1, to the text's digits", NULL },
     { L9, "at its second close pass (t ≈ {2.9}) RK4", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
+    { L9, "close pass, at t ≈ {2.9}, lasts long", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
     { L9, "+1250 %, then {constant}: the planet has escaped", l9_constant, ABS, 0.001, "the drift moves less than 0.1 % of itself from t = 4 to two orbits", NULL },
     { L9, "@hint Press + three times: 0.1, 0.2, {0.4}.", l9_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L9, "about {120} accepted, 50 rejected", l9_acc04, ABS, 10, "\"about 120\": within ten", NULL },

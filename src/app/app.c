@@ -276,8 +276,17 @@ static void restart_run(sw_app *a)
     if (!(a->sims[0].t > 0))
         return;
     sw_app_reset(a);
-    size_t used = strlen(a->message);
-    snprintf(a->message + used, sizeof a->message - used, "%s(restarted at t = 0)", used ? " " : "");
+    /* first, so that a long message cut at the screen's third line keeps it */
+    static const char lead[] = "restarted at t = 0; ";
+    char said[sizeof a->message];
+    size_t keep = strlen(a->message), room = sizeof a->message - sizeof lead;
+    keep = keep < room ? keep : room;
+    memcpy(said, a->message, keep);
+    memcpy(a->message, lead, sizeof lead - 1);
+    memcpy(a->message + sizeof lead - 1, said, keep);
+    a->message[sizeof lead - 1 + keep] = '\0';
+    if (!keep)
+        a->message[sizeof lead - 3] = '\0'; /* nothing after it: no "; " */
 }
 
 static int method_index(const sw_integrator *m)

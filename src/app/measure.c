@@ -169,6 +169,11 @@ static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *r
     return pow(*rho, a->scene->duration / dt);
 }
 
+/* A symplectic method's large position error is mostly phase: it keeps
+ * the energy and the path's shape, and runs ahead of or behind the truth
+ * along it (lesson 8). */
+#define PHASE_NOTE ". Symplectic: energy and path kept, the error is phase"
+
 void sw_app_measure_dt_change(sw_app *a, double old_dt)
 {
     const sw_integrator *m = a->sims[0].method;
@@ -209,23 +214,25 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     double rho, grow = run_growth(a, m, big_dt, &rho);
     double scale = report_scale(a);
     char head[160];
-    snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (was %.3g m at dt=%g), ratio %.3g",
+    snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (%.3g m at dt=%g), ratio %.3g",
              a->dt, e_new, T, e_old, old_dt, ratio);
     if (grow > 2) {
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
                  "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
     } else if (big > 0.5 * scale) {
         /* an order shows only where the error is small: say which way that is */
-        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s",
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s%s",
                  head, big_dt, 100 * big / scale,
-                 a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)");
+                 a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
+                 (m->flags & SW_SYMPLECTIC) ? PHASE_NOTE : "");
     } else {
         double small_dt = fmin(old_dt, a->dt), e_next = sw_app_measure(a, m, 0.5 * small_dt);
         double next = small / e_next;
         if (isfinite(next) && e_next > 0 && fabs(log2(ratio) - log2(next)) > 0.15) {
             snprintf(a->message, sizeof a->message, "%s: not an order yet - at dt=%g the ratio is %.3g, still "
-                     "changing%s", head, 0.5 * small_dt, next,
-                     a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)");
+                     "changing%s%s", head, 0.5 * small_dt, next,
+                     a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
+                     (m->flags & SW_SYMPLECTIC) && big > 0.05 * scale ? PHASE_NOTE : "");
         } else {
             a->error_ratio = ratio;
             snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));

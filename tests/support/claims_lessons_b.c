@@ -478,7 +478,7 @@ const claim sw_claims_b[] = {
     { L8, "after about {five} orbits more than 5 % of the energy is gone", l8_rk4_5_orbits, ABS, 0.5, R_ABOUT, NULL },
     { L8, "and {35} % by t = 200", l8_rk4_200, ROUNDED, 0, R_ROUND, NULL },
     { L8, "stays within {0.7} % for 200 s", l8_verlet, ATMOST, 0.15, "a bound the run comes within 15 % of", NULL },
-    { L8, "the angular momentum, stays near {1e-15}", l8_invariant, MAGNITUDE, 1, "\"near\": within a factor ten", NULL },
+    { L8, "when the line is short, stays near {1e-15}", l8_invariant, MAGNITUDE, 1, "\"near\": within a factor ten", NULL },
     { L8, "Euler at Δt 0.05 gains {60} % in its first close pass", l8_euler_1, ROUNDED, 0, "the drift at t = 1, after the pass, to the text's digits", NULL },
     { L8, "gains 60 % in its first close pass (within {one} second)", l8_euler_half, ATMOST, 0, "the drift passes 50 % before t = 1", NULL },
     { L8, "and {99} % by the second (t = 27)", l8_euler_27, ROUNDED, 0, R_ROUND, NULL },

@@ -397,8 +397,15 @@ static double l9_constant(void)
     return fabs(late - cl_drift_at("orbit", ECC, "rk4", 0.05, 4.0)) / late;
 }
 
+static double l6_region_growth(void) { return cl_growth0("spring", "k=10000 c=0", "rk4", 0.005); }
+static double l6_region_drop(void) { return -cl_drift_at("spring", "k=10000 c=0", "rk4", 0.005, 4.0); }
+static double cl_four(void) { return 4; }
+
 const claim sw_claims_b[] = {
     /* lesson 6 */
+    { L6, "multiplies the swing by ×{0.999895}", l6_region_growth, ROUNDED, 0, "the meter's growth per step: RK4 at ωΔt = 0.5 on the undamped spring", NULL },
+    { L6, "so by t = {4} the energy is down", cl_four, EXACT, 0, R_COUNT, NULL },
+    { L6, "the energy is down {15.5} %", l6_region_drop, ROUNDED, 0, "minus the energy drift at t = 4, RK4 at Δt = 0.005 on k = 10000, c = 0", NULL },
     { L6, "divide the error by 2² = {4}. Measure it:", l6_ratio_mid, ABS, 0.5, R_RATIO, NULL },
     { L6, "divide the error by 2⁴ = {16}. Switch", l6_ratio_rk4, ABS, 2, R_RATIO, NULL },
     { L6, "  euler      0.0125   {503}    0.04", l6_steps_euler, EXACT, 0, R_COUNT, NULL },

@@ -217,7 +217,7 @@ START_TEST(gating_and_answers)
     /* resuming opens the first page not yet done */
     ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
     ck_assert_int_eq(r.page, 1);
-    ck_assert(r.complete[0]);
+    ck_assert(r.before[0] && !r.complete[0]); /* done before: not ticked again */
     press(&r, &a, 'A');
     ck_assert(!r.answered[1]);
     ck_assert_ptr_nonnull(strstr(r.feedback, "No: one evaluation"));
@@ -226,6 +226,22 @@ START_TEST(gating_and_answers)
     ck_assert_int_eq(sw_progress_get("gate.lesson"), 2);
     press(&r, &a, 'N');
     ck_assert_int_eq(r.page, 0);
+    /* a page done in an earlier session shows its goal fresh, says so, and n skips it */
+    side = sw_runner_side(&r, &a, 120);
+    int fresh = 0, said = 0;
+    for (int i = 0; i < side->nlines; i++) {
+        fresh |= strstr(side->lines[i], "\xe2\x9c\x97") != NULL; /* the goal's ✗ */
+        said |= strstr(side->lines[i], "earlier session") != NULL;
+    }
+    ck_assert(fresh && said);
+    press(&r, &a, 'n');
+    ck_assert_int_eq(r.page, 1);
+    sw_app_free(&a);
+    sw_runner_free(&r);
+    /* a finished lesson reopens at its first page, every goal fresh */
+    ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
+    ck_assert_int_eq(r.page, 0);
+    ck_assert(r.before[0] && r.before[1] && !r.complete[0] && !r.answered[1]);
     sw_app_free(&a);
     sw_runner_free(&r);
     char cmd[64];

@@ -117,7 +117,7 @@ int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *e
     if (r->done > r->lesson.npages)
         r->done = r->lesson.npages;
     for (int i = 0; i < r->done; i++)
-        r->complete[i] = 1;
+        r->before[i] = 1; /* goals fresh (not ticked from last time); n skips the page */
     if (page < 0)
         page = r->done < r->lesson.npages ? r->done : 0;
     const sw_lesson_page *first = &r->lesson.pages[page < r->lesson.npages ? page : 0];
@@ -183,7 +183,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
-        if (!r->complete[r->page]) {
+        if (!r->complete[r->page] && !r->before[r->page]) {
             snprintf(a->message, sizeof a->message, "this page's goals are not met yet (h shows a hint)");
         } else if (r->page + 1 < r->lesson.npages) {
             sw_runner_enter(r, a, r->page + 1);
@@ -290,7 +290,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.width = width;
     r->side.scroll = &r->scroll;
     r->side.question_open = pg->question.text && !r->answered[r->page];
-    r->side.notice = !r->complete[r->page] ? NULL
+    r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     /* the lesson's title and the page: "(page 2/6)" when the line has room,
      * else "(2/6)", which has no space to be broken at */
@@ -359,6 +359,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->complete[r->page])
         add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
+    else if (r->before[r->page])
+        add_wrapped(r, SW_SIDE_DIM, "Done in an earlier session: the goals start fresh; n skips ahead.",
+                    width - 1);
     else
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;

@@ -19,6 +19,8 @@ typedef struct sw_runner {
     int done;                  /* pages completed so far (saved) */
     unsigned char complete[SW_LESSON_MAX_PAGES];
     unsigned char answered[SW_LESSON_MAX_PAGES];
+    unsigned char before[SW_LESSON_MAX_PAGES]; /* completed in an earlier session: its goals
+                                                  start fresh, but n may skip it */
     const char *feedback;      /* last answer's feedback */
     int feedback_ok;
     int hint;                  /* 1: show the hint of the first goal not met */

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "app/progress.h"
 #include "app/runner.h"
 #include "stepwise/stepwise.h"
 
@@ -250,6 +251,35 @@ START_TEST(gating_and_answers)
 }
 END_TEST
 
+
+/* The menu's next lesson: the first not finished from a place on, wrapping
+ * round; an unreadable lesson skipped; -1 when all are done. */
+START_TEST(menu_next_unfinished)
+{
+    char state[] = "/tmp/sw-next-XXXXXX";
+    ck_assert_ptr_nonnull(mkdtemp(state));
+    setenv("XDG_STATE_HOME", state, 1);
+    char f0[] = "a.lesson", f1[] = "b.lesson", f2[] = "c.lesson", title[] = "T";
+    sw_lesson_entry e[3] = {
+        { .file = f0, .title = title, .npages = 2 },
+        { .file = f1, .title = NULL, .npages = 0 },   /* does not load */
+        { .file = f2, .title = title, .npages = 3 },
+    };
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 0);
+    ck_assert_int_eq(sw_progress_set("a.lesson", 2, err, sizeof err), SW_OK); /* a finished */
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 2);
+    ck_assert_int_eq(sw_progress_next(e, 3, 1), 2);
+    ck_assert_int_eq(sw_progress_set("c.lesson", 1, err, sizeof err), SW_OK); /* c begun, not done */
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 2);
+    ck_assert_int_eq(sw_progress_set("c.lesson", 3, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), -1);
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
 Suite *make_lesson_drive_suite(void);
 Suite *make_lesson_drive_suite(void)
 {
@@ -257,6 +287,7 @@ Suite *make_lesson_drive_suite(void)
     TCase *tc = tcase_create("drive");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, gating_and_answers);
+    tcase_add_test(tc, menu_next_unfinished);
     tcase_add_test(tc, drive_every_lesson);
     suite_add_tcase(s, tc);
     return s;

@@ -265,6 +265,21 @@ static double l1_lines_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); 
 static double l1_lines_limit_dt(void) { double dt; return l1_meter(&dt).limit; }
 static double l1_lines_dt_over_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); return dt / (m.stiff * m.limit); }
 
+/* Lesson 5's last page: the meter's limit and its undamped one. */
+static sw_app_meter l5_meter(void)
+{
+    sw_runner r;
+    sw_app a;
+    sw_app_meter m;
+    cl_lesson_page(&r, &a, L5, "Remedy 3: better integration");
+    sw_app_set_method(&a, sw_integrator_find("rk4"));
+    ck_assert(sw_app_stability(&a, &m));
+    cl_page_free(&r, &a);
+    return m;
+}
+static double l5_meter_limit(void) { sw_app_meter m = l5_meter(); return m.stiff * m.limit; }
+static double l5_meter_undamped(void) { sw_app_meter m = l5_meter(); return m.stiff * m.limit_undamped; }
+
 /* RK4 on the parabola (no drag): the status line's error at t = 2. */
 static double l4_parabola_error(void)
 {
@@ -358,6 +373,8 @@ const claim sw_claims_a[] = {
     { L4, "stepwise measures the error to t = {3} at both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
     /* lesson 5 */
+    { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },
+    { L5, "and it shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },
     { L5, "Here k = {10} N/m, damping c = 0.5, mass 1 kg", cl_l5_k, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = {0.5}, mass 1 kg", cl_l5_c, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = 0.5, mass {1} kg", cl_l5_m, EXACT, 0, R_COUNT, NULL },

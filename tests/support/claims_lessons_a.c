@@ -247,13 +247,13 @@ static double l3_crosses_anchor(void)
     return t;
 }
 
-/* Lesson 1's page on the status lines: what its meter reads. */
+/* Lesson 1's page on the meter: what its meter reads. */
 static sw_app_meter l1_meter(double *dt)
 {
     sw_runner r;
     sw_app a;
     sw_app_meter m;
-    cl_lesson_page(&r, &a, L1, "The two lines under the picture");
+    cl_lesson_page(&r, &a, L1, "The stability meter");
     ck_assert(sw_app_stability(&a, &m));
     *dt = a.dt;
     cl_page_free(&r, &a);
@@ -299,7 +299,7 @@ static double l5_falls(void) { return cl_drift_at("spring", STIFF, "euler", 0.00
 const claim sw_claims_a[] = {
     /* lesson 1 */
     { L1, "g(x) = ω(-y, x) with ω = {1} rad/s", l1_omega, EXACT, 0, R_COUNT, NULL },
-    { L1, "dt={0.05}   the time step Δt", l1_lines_dt, EXACT, 0, "the page's Δt, as the status line prints it", NULL },
+    { L1, "dt={0.05}   the time step Δt", l1_lines_dt, EXACT, 0, "the page's Δt, as the status line prints it (the next page's too)", NULL },
     { L1, "stiffness·dt … of limit {2.83}", l1_lines_limit, ROUNDED, 0, "the meter's limit on this page (RK4's 2√2 on the vortex's ±i)", NULL },
     { L1, "Here |λ| = {1} per second", l1_lines_stiff, ROUNDED, 0, "the meter's |λ| on this page", NULL },
     { L1, "stiffness·dt = {1} × Δt may grow", l1_lines_stiff, ROUNDED, 0, R_ROUND, NULL },

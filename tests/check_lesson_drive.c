@@ -280,6 +280,39 @@ START_TEST(menu_next_unfinished)
 }
 END_TEST
 
+
+/* A page that asks the student to watch starts paused (its text says how
+ * to run it), so nothing happens before the page has been read; and a
+ * page with a time goal cannot meet it on arrival (drive() checks that). */
+START_TEST(watch_pages_start_paused)
+{
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    ck_assert_int_ge(n, 10);
+    int checked = 0;
+    for (int i = 0; i < n; i++) {
+        sw_lesson les;
+        ck_assert_msg(sw_lesson_load(e[i].path, &les, err, sizeof err) == SW_OK, "%s", err);
+        for (int p = 0; p < les.npages; p++) {
+            const sw_lesson_page *pg = &les.pages[p];
+            int watch = 0;
+            for (int b = 0; b < pg->nblocks; b++)
+                watch |= strcasestr(pg->blocks[b].text, "watch") != NULL;
+            if (!watch)
+                continue;
+            checked++;
+            ck_assert_msg(pg->paused == 1, "%s page %d '%s' says watch but does not start paused (@pause on)",
+                          e[i].file, p + 1, pg->title);
+        }
+        sw_lesson_free(&les);
+    }
+    ck_assert_int_ge(checked, 10);
+    sw_lesson_list_free(e, n);
+}
+END_TEST
+
 Suite *make_lesson_drive_suite(void);
 Suite *make_lesson_drive_suite(void)
 {
@@ -288,6 +321,7 @@ Suite *make_lesson_drive_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, gating_and_answers);
     tcase_add_test(tc, menu_next_unfinished);
+    tcase_add_test(tc, watch_pages_start_paused);
     tcase_add_test(tc, drive_every_lesson);
     suite_add_tcase(s, tc);
     return s;

@@ -94,6 +94,20 @@ keys N
 keys q
 check_terminal_sane lesson9
 
+# Lesson 7: the region view of page 3 does not carry over to page 4.
+printf '07-implicit.lesson 2\n' > "$WORK/state/stepwise/progress"
+type_cmd "$STEPWISE lesson 7"
+wait_for "Backward Euler's region" || fail "lesson 7 did not open on page 3"
+keys s
+wait_for 'stability region of implicit-euler' || fail "s did not show the region"
+keys +
+wait_for '✓ dt >= 0\.08' || fail "+ did not meet the goal"
+keys n
+wait_for 'What it costs, what it does' || fail "n did not open page 4"
+screen | grep -q 'stability region of' && fail "page 4 still shows page 3's region view"
+keys q
+check_terminal_sane clean-page
+
 # A finished lesson reopens fresh: its pages are marked done before.
 printf '02-euler.lesson 6\n' > "$WORK/state/stepwise/progress"
 type_cmd "$STEPWISE lesson 2"

@@ -398,6 +398,12 @@ START_TEST(err_is_position_in_metres_and_restarts)
     ck_assert_ptr_nonnull(strstr(a.message, "position error"));
     ck_assert_ptr_nonnull(strstr(a.message, "restarted at t = 0"));
     sw_app_free(&a);
+    /* an adaptive method's dt only caps its steps: no order is read from it */
+    app_with(&a, "spring", "rk45", 0.1, NULL);
+    ck_assert_int_eq(sw_app_key(&a, '+', 0), 1);
+    ck_assert_msg(strstr(a.message, "the tolerances set the error, not dt"), "%s", a.message);
+    ck_assert(isnan(a.error_ratio));
+    sw_app_free(&a);
 }
 END_TEST
 

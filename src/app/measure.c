@@ -211,6 +211,13 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
      * once more gives the same ratio (within 0.15 in its base-2 logarithm;
      * Euler's amplitude error on an oscillator, e^(ω²ΔtT/2) - 1, is not yet
      * proportional to Δt while the exponent is near 1). */
+    if (m->flags & SW_ADAPTIVE) {
+        /* dt only caps the steps: the error follows rtol and atol */
+        snprintf(a->message, sizeof a->message, "dt=%g, the largest step %s may take: position error %.3g m to "
+                 "t=%.3g (%.3g m at dt=%g); the tolerances set the error, not dt, so no order", a->dt, m->name,
+                 e_new, T, e_old, old_dt);
+        return;
+    }
     double rho, grow = run_growth(a, m, big_dt, &rho);
     double scale = report_scale(a);
     char head[160];

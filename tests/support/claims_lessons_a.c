@@ -341,7 +341,7 @@ const claim sw_claims_a[] = {
     { L3, "so ω = {3.16} rad/s", l3_omega, ROUNDED, 0, R_ROUND, NULL },
     { L3, "ωΔt = {0.063}: a factor", l3_omega_dt, ROUNDED, 0, R_ROUND, NULL },
     { L3, "a factor {1.004} per step", l3_energy_factor, ROUNDED, 0, "ρ² from the one-step map, to the text's digits", NULL },
-    { L3, "shows x{1.002} per step", l3_meter_factor, ROUNDED, 0, "what the meter shows on this page, to the text's digits", NULL },
+    { L3, "shows growth ×{1.002} per step", l3_meter_factor, ROUNDED, 0, "what the meter shows on this page, to the text's digits", NULL },
     { L3, "multiplies the energy of this oscillation by 1 + (ωΔt)² every step", l3_energy_factor, REL, 1e-12, "ρ² of Euler's one-step map is 1 + (ωΔt)² to rounding", l3_formula },
     { L3, "per step, {50} steps per second", l3_steps_per_second, EXACT, 0, R_COUNT, NULL },
     { L3, "let it run about {two} seconds; the energy drift climbs past 50 %", l3_time_to_50, ABS, 0.25, "\"about two seconds\": within a quarter of a second", NULL },

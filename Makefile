@@ -141,7 +141,7 @@ fuzz:
 # stamp rebuilds the benchmark when GSL appears or goes.
 GSL_FLAGS = $(shell pkg-config --exists gsl 2>/dev/null && echo -DSW_HAVE_GSL $$(pkg-config --cflags gsl))
 GSL_LIBS  = $(shell pkg-config --exists gsl 2>/dev/null && pkg-config --libs gsl)
-BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c
+BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c bench/bench_rkn.c
 
 $(BUILD)/gsl.stamp: FORCE
 	@mkdir -p $(dir $@)
@@ -160,6 +160,8 @@ bench:
 	@$(MAKE) --no-print-directory $(BIN)
 	@echo; echo "grading a class of 120, jailed and not (bench/grade_class.sh):"
 	@sh bench/grade_class.sh ./$(BIN) 120 3
+	@echo; echo "grading 100 passing traces, CPU time (bench/grade_traces.sh):"
+	@sh bench/grade_traces.sh ./$(BIN) 100 5
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

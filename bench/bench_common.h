@@ -48,14 +48,27 @@ typedef struct bench_peer_opts {
     int repeats;        /* paired timed runs (at least 5 for the table) */
     int chain_n, vortex_n;
     int quick;          /* error 1e-6 only, fewer searches */
+    const char *only;   /* NULL, or the one scene to compare (orbit, chain, vortex) */
 } bench_peer_opts;
 
 /* The peer comparison (bench_peer.c): stepwise's cheapest method against
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);
 
+/* For counting instructions (bench/instructions.sh): build SCENE at SET
+ * ("e=0.9") and call its derivative `calls` times at the start, as the
+ * methods call it (the small path where it applies) or through the
+ * generic passes; 0, or 1 when the scene or setting is not a particle
+ * system's. */
+int bench_deriv_probe(const char *scene, const char *set, long calls, int generic);
+
 /* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
+
+/* Methods for x'' = f(x) at equal error: rkn, yoshida4 against dop853,
+ * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)
+ * (bench_rkn.c). */
+void bench_rkn(int repeats, int quick);
 
 #endif

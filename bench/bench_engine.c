@@ -485,7 +485,7 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 rkn */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -494,6 +494,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
+            return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;
@@ -505,6 +507,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 8;
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
+        } else if (strcmp(argv[i], "--rkn") == 0) {
+            sections = 32;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -517,6 +521,8 @@ static int bench_engine_main(int argc, char **argv)
             }
             *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
             i++;
+        } else if (strcmp(argv[i], "--peer-only") == 0 && i + 1 < argc) {
+            peer.only = argv[++i];
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -529,7 +535,8 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --rkn, --peer-chain N, --peer-vortex N, "
+                    "--peer-only SCENE\n", argv[i]);
             return 2;
         }
     }
@@ -544,6 +551,8 @@ static int bench_engine_main(int argc, char **argv)
         bench_tree(o.repeats, quick);
     if (sections & 8)
         bench_peer(&peer);
+    if (sections & 32)
+        bench_rkn(o.repeats, quick);
     return 0;
 }
 

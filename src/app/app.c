@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/stages.h"
 #include "measure/bench.h"
 #include "stepwise/stepwise.h"
 
@@ -113,6 +114,7 @@ void sw_app_free(sw_app *a)
     sw_app_record_stop(a);
     free_bench(a);
     free_sims(a);
+    sw_stages_free(&a->stages);
     a->scene = NULL;
     sw_app_truth_reset(a); /* frees it */
 }
@@ -121,6 +123,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
 {
     sw_app_record_stop(a); /* a trace describes one run */
     free_bench(a);         /* the sweep was for the old parameters */
+    sw_app_stages_close(a);
     const sw_integrator *m = a->sims[0].method;
     const sw_scene *old_scene = a->scene;
     double old_p[SW_MAX_PARAMS], old_dt = a->dt;
@@ -393,6 +396,8 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     case SW_ACT_PAUSE:
         a->paused = !a->paused;
+        if (!a->paused)
+            sw_app_stages_close(a); /* the stage view shows a paused run */
         snprintf(a->message, sizeof a->message, "%s", a->paused ? "paused" : "running");
         return 1;
     case SW_ACT_STEP: {
@@ -513,6 +518,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
                  : a->workprec == 2 ? "work-precision: error against wall time (w closes)" : "work-precision plot closed");
         return 1;
     }
+    case SW_ACT_STAGES:
+    case SW_ACT_STAGES_CLOSE:
+        return sw_app_stages_apply(a, act);
     case SW_ACT_HELP:
         a->help++; /* the next page; the composer closes it after the last */
         return 1;

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "sim/history.h"
+#include "sim/stages.h"
 #include "sim/truth.h"
 #include "sim/watch.h"
 #include "lesson/controls.h"
@@ -123,8 +124,11 @@ typedef struct sw_app {
     double watch_m0;
     /* the picture (app/view.c): which view, the camera, compare's layout */
     sw_app_view view;
+    unsigned view_gen;          /* changes when a view is chosen or a page entered: the region view fits its scale anew */
     int follow;                 /* 1: the camera follows the particles; 0: fixed on the scene's view */
     double zoom;                /* the view's spans times this (1: the scene's natural view) */
+    int have_box;               /* 1: the camera shows box (a page's @view box=), not the scene's view */
+    sw_view box;
     int lanes;                  /* compare: each method in its own lane */
     int phase_particle;         /* the phase view's particle and coordinate */
     sw_phase_coord phase_coord;
@@ -132,6 +136,11 @@ typedef struct sw_app {
     /* time under the student's control (app/timeline.c) */
     double until;               /* the stop time (play --until, a page's @until): 0 none */
     sw_history hist[SW_APP_SIMS]; /* each sim's recent states, for stepping back */
+    /* the stage view (app/stages.c): one step of the main run, stage by stage */
+    int stages_open;            /* 1 while shown (the run is paused) */
+    int stage_shown;            /* 1..: how far through the step's script */
+    sw_stages stages;           /* the step recorded (re-recorded when the run moved) */
+    char stages_why[160];       /* why the method's stages are not drawn, or "" */
 } sw_app;
 
 

@@ -42,11 +42,13 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     const sw_lesson_page *pg = &r->lesson.pages[page];
     char err[SW_ERRLEN];
     a->locked = 0;
+    a->view_gen++; /* a page's pictures are scaled for it (the region view's fixed scale) */
     if (pg->scene != a->scene) {
         /* a new scene starts in its own picture: the scene view, its natural size */
         sw_app_set_view(a, SW_VIEW_SCENE);
         a->zoom = 1;
         a->follow = 0;
+        a->have_box = 0;
     }
     if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
         if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
@@ -90,6 +92,10 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->graph = pg->graph;
     if (pg->zoom > 0)
         a->zoom = pg->zoom;
+    if (pg->has_box) {
+        a->box = (sw_view){ pg->box[0], pg->box[2], pg->box[1], pg->box[3] };
+        a->have_box = 1;
+    }
     sw_app_set_until(a, pg->until); /* a page's own stop time, or none */
     a->locked = pg->locked;
     a->panel = a->help = 0;

@@ -1,5 +1,5 @@
 /* The step-size controller of the embedded explicit Runge-Kutta pairs
- * (rk45, dop853): trial, error norm, accept or reject, next step. It copies
+ * (rk45, dop853, and the Nystrom pair rkn): trial, error norm, accept or reject, next step. It copies
  * nothing on an accepted step and allocates nothing. */
 #include "engine/adaptive.h"
 

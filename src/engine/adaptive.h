@@ -1,5 +1,5 @@
 /* Private to the engine: the step-size controller shared by the embedded
- * explicit Runge-Kutta pairs (rk45.c, dop853.c). A method supplies a trial
+ * explicit Runge-Kutta pairs (rk45.c, dop853.c, rkn.c). A method supplies a trial
  * step over a range of the state; the controller runs it over the whole
  * state or slice by slice, accepts or rejects it, and proposes the next step.
  * Invariant: nothing is copied on an accepted step — the new state is

@@ -45,6 +45,10 @@ static const sw_integrator builtins[] = {
     { "yoshida4", "Yoshida 4th-order symplectic (triple-jump Verlet)", 4, 3,
       SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, 1.5734019474345401, 2, sw_step_yoshida4,
       "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1" },
+    /* x'' = f(x) only: refused where a force reads velocities (below). */
+    { "rkn", "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)", 6, 5,
+      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER, 0.0, 8, sw_step_rkn,
+      "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -135,6 +139,11 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
                  "masses; this is a first-order flow field (use %s)", m->name, fit);
+        return SW_EINVAL;
+    }
+    if (m->step == sw_step_rkn && !sw_ode_position_only(ode)) {
+        snprintf(err, errlen, "'%s' solves x'' = f(x) and needs forces that ignore velocities; this system "
+                 "has drag or damped springs (set them to 0, or use dop853 or rk45)", m->name);
         return SW_EINVAL;
     }
     if ((m->flags & SW_IMPLICIT) && !ode->solve && ode->dim > SW_DENSE_MAX) {

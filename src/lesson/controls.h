@@ -40,11 +40,12 @@ enum {
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
 
 /* The keys that pick an integrator by its place in the table ('stepwise list
- * integrators'): 1-9, 0 for the 10th, then the shifted digits, so every
- * built-in and every plugin (at most SW_PICK_KEY_COUNT in all) has one. */
+ * integrators'): 1-9, 0 for the 10th, then the shifted digits and the
+ * shifted keys beside them, so every built-in and every plugin (at most
+ * SW_PICK_KEY_COUNT in all) has one. */
 #define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
-                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')'
-#define SW_PICK_KEY_COUNT 20
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|'
+#define SW_PICK_KEY_COUNT 24
 
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'
@@ -103,6 +104,9 @@ enum {
     X(PHASE_PREV, VIEW, PLAY, "previous particle", SW_KEYS('<'), NULL, NULL) \
     X(PHASE_NEXT, VIEW, PLAY, "next particle", SW_KEYS('>'), NULL, NULL) \
     X(REGION, VIEW, PLAY, "stability region", SW_KEYS('s'), "s", "stability region of the method, dt x eigenvalues") \
+    X(STAGES, VIEW, PLAY, "stages of a step", SW_KEYS('k'), "k  Esc", \
+      "stages of one step drawn: k1, k2, ... one per press (pauses); Esc closes") \
+    X(STAGES_CLOSE, NONE, PLAY, "close the stages", SW_KEYS(SW_KEY_ESC), NULL, NULL) \
     X(EVENTS, EVENTS, PLAY, "events", SW_KEYS('x'), \
       "x", "events: locate contacts and crossings / step over them") \
     X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help (again: next page)") \

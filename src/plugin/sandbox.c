@@ -26,6 +26,7 @@
 #include <unistd.h>
 
 #include "stepwise/stepwise.h"
+#include "util/fds.h"
 #include "util/signals.h"
 
 /* How long a read waits awake before it sleeps in poll. */
@@ -52,38 +53,6 @@ static void set_limit(int resource, rlim_t value)
     if (resource == RLIMIT_CPU)
         rl.rlim_max = rl.rlim_max == RLIM_INFINITY || value + 1 <= rl.rlim_max ? value + 1 : rl.rlim_max;
     setrlimit(resource, &rl);
-}
-
-/* Close every descriptor from `from` up (close_range, else one by one). */
-static void close_from(int from)
-{
-    if (syscall(SYS_close_range, (unsigned)from, ~0u, 0) == 0)
-        return;
-    struct rlimit nofile;
-    long maxfd = getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur != RLIM_INFINITY &&
-                         nofile.rlim_cur < 65536 ? (long)nofile.rlim_cur : 65536;
-    for (long fd = from; fd < maxfd; fd++)
-        close((int)fd);
-}
-
-/* Close every descriptor above 2 but keep[0..n) (n <= 3). */
-static void close_all_but(int *keep, int n)
-{
-    for (int i = 0; i < n; i++) /* sort, smallest first */
-        for (int j = i + 1; j < n; j++)
-            if (keep[j] < keep[i]) {
-                int t = keep[i];
-                keep[i] = keep[j];
-                keep[j] = t;
-            }
-    int from = 3;
-    for (int i = 0; i < n; i++) {
-        if (keep[i] > from)
-            syscall(SYS_close_range, (unsigned)from, (unsigned)keep[i] - 1, 0);
-        if (keep[i] >= from)
-            from = keep[i] + 1;
-    }
-    close_from(from);
 }
 
 /* Everything the child does before running fn: it may only use what it was
@@ -115,7 +84,7 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
         close(sock);
     }
     fcntl(3, F_SETFD, 0);
-    close_from(keep + 1);
+    sw_close_fds(keep + 1, NULL, 0);
     if (lim && lim->cpu_seconds > 0)
         set_limit(RLIMIT_CPU, (rlim_t)(lim->cpu_seconds + 0.999));
 #if !defined(__SANITIZE_ADDRESS__) /* ASan reserves terabytes of address space */
@@ -294,7 +263,7 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     /* Nothing of the caller's stays open in the jail (its files, a
      * temporary directory's keep-alive pipe): only the three channels. */
     int keep[3] = { sock, sync, status };
-    close_all_but(keep, 3);
+    sw_close_fds(3, keep, 3);
     pid_t init = fork();
     if (init < 0) {
         send_failure(sync, errno, "fork of the jail's init");

@@ -14,6 +14,7 @@
 
 #include "render/decor.h"
 #include "render/gap.h"
+#include "render/stages.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 
@@ -49,12 +50,12 @@ static sw_field *field(sw_field *f, int *n, int prio, const char *full, const ch
 
 /* ---- the camera and the scene ------------------------------------------------- */
 
-/* The scene's natural view times the zoom; when following, grown (never
- * shrunk) to hold the main run's particles. */
+/* The scene's natural view (or a page's @view box) times the zoom; when
+ * following, grown (never shrunk) to hold the main run's particles. */
 static void camera(sw_frame *f, sw_app *a)
 {
     const sw_sim *main = &a->sims[0];
-    sw_view base = sw_view_zoom(a->scene->view(&main->sys), a->zoom);
+    sw_view base = sw_view_zoom(a->have_box ? a->box : a->scene->view(&main->sys), a->zoom);
     if (f->view_scene != a->scene || memcmp(f->view_p, a->p, sizeof f->view_p) != 0 || f->view_zoom != a->zoom ||
         f->view_follow != a->follow || !a->follow || main->t == 0) {
         f->view = base;
@@ -495,7 +496,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     int view_rows = pic_rows - graph_h;
     camera(f, a);
-    if (a->view == SW_VIEW_PHASE)
+    if (a->stages_open && a->view == SW_VIEW_SCENE)
+        sw_draw_stages(f, a, scr, 0, 0, view_rows, pic_cols);
+    else if (a->view == SW_VIEW_PHASE)
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
     else if (a->view == SW_VIEW_REGION)
         draw_region(f, a, scr, 0, 0, view_rows, pic_cols);
@@ -521,7 +524,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     int over_cols = side_w > 0 && side->question_open ? pic_cols : scr->cols;
     if (a->help && a->help > sw_help_pages(pic_rows, over_cols, side != NULL))
         a->help = 0; /* past the last page: closed */
-    int overlay = (a->workprec && a->bench) || a->panel || a->help;
+    /* the work-precision plot stays in the picture's place beside a lesson:
+     * the page's text (its table) is what the plot is read against */
+    int overlay = (a->workprec && a->bench && side_w == 0) || a->panel || a->help;
     /* The pane starts two columns right of the picture (a single blank
      * column reads as a space between words); its text is wrapped to one
      * column less than its width. An overlay that reaches over the pane
@@ -530,7 +535,7 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         draw_side(side, scr, 0, pic_cols + 2, pic_rows, side_w - 1);
     status_block(a, side, scr, 0);
     if (a->workprec && a->bench)
-        sw_draw_workprec(a, scr, 0, 0, pic_rows, over_cols);
+        sw_draw_workprec(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : scr->cols);
     if (a->panel)
         sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
     if (a->help)

@@ -139,6 +139,21 @@ static double l4_dead(void) { return bounce_height("n=1 e=0"); }
 static double l4_e_height(void) { return 4 * l4_e(); }
 static double l4_e_squared(void) { return l4_e() * l4_e(); }
 static double l4_smooth_ratio(void) { return pow(2, cl_order_by_halving("projectile", NULL, "rk4", 0.05)); }
+/* The energy change's reference on the projectile: the status line's
+ * scale (sw_sim_energy_scale) is the kinetic energy at launch, ½m|v0|²,
+ * computed here from the parameters and checked against the scale. */
+static double l4_launch_ke(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "projectile", "drag=1", "rk4", 0.05);
+    double vx = cl_param("projectile", "vx"), vy = cl_param("projectile", "vy"), m = cl_param("projectile", "m");
+    double ke = 0.5 * m * (vx * vx + vy * vy);
+    ck_assert_double_eq_tol(sw_sim_energy_scale(&s), ke, 1e-12 * ke);
+    sw_sim_free(&s);
+    return ke;
+}
+static double l4_drag_drift(void) { return cl_drift_until("projectile", "drag=1", "rk4", 0.05, 3); }
+
 static double l4_report_time(void) { return sw_scene_find("bounce")->duration; }
 
 /* Swings in ten seconds: ten over the damped period 2π/ω_d (the
@@ -371,6 +386,9 @@ const claim sw_claims_a[] = {
     { L4, "next halving by only 1.52 (\"not an order yet\")", l4_bounce_not_order, ATMOST, 0, "the ratio is NaN (not read as an order) after the first halving", cl_zero },
     { L4, "RK4's position error would fall {16}-fold", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
     { L4, "stepwise measures the error to t = {3} at both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
+    { L4, "a percentage of the kinetic energy at launch, {62.5} J", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
+    { L4, "with drag = 1 the change reads {-204} % by t = 3", l4_drag_drift, ROUNDED, 0, R_ROUND, NULL },
+    { "docs/scenes.md", "kinetic energy ½ m |v0|² ({62.5} J with the defaults)", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
     /* lesson 5 */
     { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },

@@ -280,11 +280,8 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         sw_screen_wrapped(scr, row0 + rows - 2, col0, cols, 2, SW_STYLE_DIM, why);
         return;
     }
-    if (a->spec.n == 0) /* only free modes (λ = 0: a ball between bounces): nothing to mark */
-        snprintf(buf, sizeof buf, "%s has no mode to mark: its motion is free (λ = 0)", a->scene->name);
-    else
-        snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
-                 a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
+    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
+             a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
     field(fl, &n, 9, buf, "* dt x eigenvalue");
     snprintf(buf, sizeof buf, "dt=%g", a->dt);
     field(fl, &n, 8, buf, NULL);
@@ -304,8 +301,7 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         field(fl, &n, 10, buf, "X grows");
     } else
         field(fl, &n, 10, "all inside: no mode grows", "all inside");
-    /* free modes map by exactly 1 under every consistent method: the meter's ×1 */
-    snprintf(buf, sizeof buf, "worst x%.6f/step", a->spec.n == 0 ? 1.0 : worst);
+    snprintf(buf, sizeof buf, "worst x%.6f/step", worst);
     field(fl, &n, 9, buf, NULL);
     field(fl, &n, 4, "+/- move the marks", "+/- dt");
     fit_line(scr, row0 + rows - 1, col0, cols, outside ? SW_STYLE_WARN : SW_STYLE_STATUS, fl, n);

@@ -94,6 +94,17 @@ keys N
 keys q
 check_terminal_sane lesson9
 
+# Lesson 8 page 2: the message speaks of what Verlet keeps, as the page does.
+printf '08-energy-orbits.lesson 1\n' > "$WORK/state/stepwise/progress"
+type_cmd "$STEPWISE lesson 8"
+wait_for 'Verlet keeps the orbit' || fail "lesson 8 did not open on page 2"
+keys 6
+wait_for 'orbit +verlet' || fail "6 did not pick verlet"
+keys -
+wait_for 'path kept, the error is phase' || fail "the message does not say the error is phase"
+keys q
+check_terminal_sane lesson8
+
 # Lesson 7: the region view of page 3 does not carry over to page 4.
 printf '07-implicit.lesson 2\n' > "$WORK/state/stepwise/progress"
 type_cmd "$STEPWISE lesson 7"

@@ -34,6 +34,8 @@ typedef struct sw_app_meter {
     double dt, t;               /* what it was read for */
     double stiff;               /* largest |λ| of the linearisation now */
     double limit;               /* largest stable dt in theory here: 0 none */
+    double limit_undamped;      /* the same with every oscillating mode's damping taken away
+                                   (what a lesson's closed form gives): 0 when no mode is damped */
     int unbounded;              /* ... no limit up to SW_DT_MAX */
     double growth;              /* ρ: growth per step of the worst mode at dt */
     int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
@@ -77,6 +79,9 @@ typedef struct sw_app {
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
     int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
+    unsigned epoch;             /* counts fresh starts (reset, new scene, a lesson page): the picture
+                                   forgets its trails when it changes */
+    int err_velocity;           /* the status line's error: 0 positions (m), 1 velocities (m/s) */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
@@ -250,8 +255,14 @@ int sw_app_meter_settle(sw_app *a, long calls);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */
 const double *sw_app_ghost(sw_app *a);
-/* The error of sim i now: against the exact solution or the reference. */
+/* The error of sim i now against the exact solution or the reference, in
+ * metres: the largest distance of a position coordinate from the truth's
+ * (with err_velocity set: of a velocity, in m/s; NaN for a flow). NaN when
+ * there is no truth or the run blew up. */
 double sw_app_error(sw_app *a, int i);
+/* (measure.c) The error of state y against truth for system sys: positions
+ * (velocity 0) or velocities (1; NaN for a flow, which has none). */
+double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity);
 /* A field of a status line: its full and brief forms and how much it
  * matters (higher is kept longer when the line must shrink). */
 typedef struct sw_field {
@@ -262,6 +273,14 @@ typedef struct sw_field {
 #define SW_STATUS_FIELDS 12
 /* (status.c) The fields of sim i's status line; returns how many. */
 int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
+/* (status.c) The meter's line as fields (stiffness·dt against its limit,
+ * the growth per step and its one word); *warn set when it should stand out. */
+int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
+/* (status.c) The growth per step rho as text "×1.000000" into num, with as
+ * many digits as it takes for the printed number to agree with the word
+ * returned ("grows", "grows, too slowly to see", "decays", "neutral"):
+ * grows is the meter's visible growth, slow its invisible growth. */
+const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);

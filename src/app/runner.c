@@ -59,6 +59,15 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
+    /* A page starts clean unless it says otherwise: no run left blown up by
+     * the page before, no view or plot of its (the region view, the
+     * work-precision plot cover the scene), no trails (the epoch). */
+    if (a->sims[0].blown || (a->nsims > 1 && (a->sims[1].blown || (a->nsims > 2 && a->sims[2].blown))))
+        sw_app_reset(a);
+    if (pg->view < 0 && a->view != SW_VIEW_SCENE)
+        sw_app_set_view(a, SW_VIEW_SCENE);
+    a->workprec = 0;
+    a->epoch++;
     if (pg->compare >= 0 && pg->ncompare_with > 0)
         sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);
     else if (pg->compare >= 0)
@@ -114,7 +123,7 @@ int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *e
     if (r->done > r->lesson.npages)
         r->done = r->lesson.npages;
     for (int i = 0; i < r->done; i++)
-        r->complete[i] = 1;
+        r->before[i] = 1; /* goals fresh (not ticked from last time); n skips the page */
     if (page < 0)
         page = r->done < r->lesson.npages ? r->done : 0;
     const sw_lesson_page *first = &r->lesson.pages[page < r->lesson.npages ? page : 0];
@@ -180,7 +189,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
-        if (!r->complete[r->page]) {
+        if (!r->complete[r->page] && !r->before[r->page]) {
             snprintf(a->message, sizeof a->message, "this page's goals are not met yet (h shows a hint)");
         } else if (r->page + 1 < r->lesson.npages) {
             sw_runner_enter(r, a, r->page + 1);
@@ -194,6 +203,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         return 1;
     case SW_ACT_HINT:
         r->hint = !r->hint;
+        r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
@@ -286,7 +296,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.width = width;
     r->side.scroll = &r->scroll;
     r->side.question_open = pg->question.text && !r->answered[r->page];
-    r->side.notice = !r->complete[r->page] ? NULL
+    r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     /* the lesson's title and the page: "(page 2/6)" when the line has room,
      * else "(2/6)", which has no space to be broken at */
@@ -345,6 +355,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->hint) {
         const char *h = unmet ? unmet->hint : (q->text && !r->answered[r->page]) ? q->hint : NULL;
         add_line(r, SW_SIDE_TEXT, "");
+        if (r->hint_scroll)
+            r->scroll = r->side.nlines; /* the composer clamps it to the pane's end */
+        r->hint_scroll = 0;
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
         add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }
@@ -352,6 +365,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->complete[r->page])
         add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
+    else if (r->before[r->page])
+        add_wrapped(r, SW_SIDE_DIM, "Done in an earlier session: the goals start fresh; n skips ahead.",
+                    width - 1);
     else
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;

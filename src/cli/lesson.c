@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "app/progress.h"
 #include "app/runner.h"
 #include "cli/lesson_check.h"
 #include "tui/loop.h"
@@ -33,10 +34,11 @@ static const sw_side *lesson_side(void *ctx, sw_app *a, int cols)
     return sw_runner_side(ctx, a, cols);
 }
 
-/* Run the lesson at path. When it cannot start: with why NULL the error is
- * printed (exit 2); else it goes into why (the menu shows it) and the
- * status is SW_EXIT_USAGE with nothing printed. */
-static int run_lesson(const char *path, int page, char *why, size_t whylen)
+/* Run the lesson at path (*done: its pages completed when it ends). When it
+ * cannot start: with why NULL the error is printed (exit 2); else it goes
+ * into why (the menu shows it) and the status is SW_EXIT_USAGE with
+ * nothing printed. */
+static int run_lesson(const char *path, int page, char *why, size_t whylen, int *done)
 {
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
@@ -52,12 +54,40 @@ static int run_lesson(const char *path, int page, char *why, size_t whylen)
     }
     sw_play_hooks hooks = { .ctx = r, .key = lesson_key, .side = lesson_side };
     int rc = sw_cli_play(&a, &hooks);
+    if (done)
+        *done = r->done;
     sw_app_free(&a);
     if (rc == SW_EXIT_OK && r->save_error[0])
         rc = sw_cli_error("%s", r->save_error);
     sw_runner_free(r);
     free(r);
     return rc;
+}
+
+/* The command as the student typed it: "./stepwise" after `make run`,
+ * "stepwise" once installed, so the line printed on leaving works as written. */
+static const char *program(void)
+{
+    extern char *program_invocation_name; /* glibc: argv[0] */
+    const char *p = program_invocation_name;
+    return p && strchr(p, '/') && strlen(p) < 200 ? p : "stepwise";
+}
+
+/* One line on leaving: how to continue where the student stopped. */
+static void say_how_to_continue(const sw_lesson_entry *e, int n, int k)
+{
+    int done = k >= 0 ? sw_progress_get(e[k].file) : 0;
+    if (k >= 0 && done < e[k].npages) {
+        printf("lesson %d continues at page %d of %d: %s lesson %d\n", k + 1, done + 1, e[k].npages, program(),
+               k + 1);
+        return;
+    }
+    int next = sw_progress_next(e, n, k >= 0 ? k + 1 : 0);
+    if (next >= 0)
+        printf("%snext: %s lesson %d (%s, page %d)\n", k >= 0 ? "lesson done; " : "", program(), next + 1,
+               e[next].title, sw_progress_get(e[next].file) + 1);
+    else
+        printf("every lesson is done; %s lesson N opens one again\n", program());
 }
 
 /* Find a lesson by its number in the menu (1-based) or its name. */
@@ -96,11 +126,8 @@ static int menu(sw_lesson_entry *e, int n)
         free(lines);
         return sw_cli_error("out of memory");
     }
-    for (int i = 0; i < n; i++)
-        if (sw_progress_get(e[i].file) < e[i].npages) {
-            sel = i; /* start on the first lesson not finished */
-            break;
-        }
+    int first = sw_progress_next(e, n, 0), last = -1;
+    sel = first >= 0 ? first : 0; /* start on the first lesson not finished */
     for (;;) {
         for (int i = 0; i < n; i++) {
             int done = sw_progress_get(e[i].file);
@@ -129,14 +156,22 @@ static int menu(sw_lesson_entry *e, int n)
             rc = sw_signals_status();
             break;
         }
-        if (chosen == -1)
+        if (chosen == -1) {
+            say_how_to_continue(e, n, last >= 0 && sw_progress_get(e[last].file) < e[last].npages ? last : -1);
             break;
+        }
         if (!e[chosen].title) {
             snprintf(note, sizeof note, "cannot open this lesson: %s", e[chosen].error);
             continue;
         }
         char why[SW_LESSON_ERRLEN] = "";
-        rc = run_lesson(e[chosen].path, -1, why, sizeof why);
+        int done = 0;
+        rc = run_lesson(e[chosen].path, -1, why, sizeof why, &done);
+        last = chosen;
+        if (done >= e[chosen].npages) { /* finished: the cursor moves on to the next one not done */
+            int next = sw_progress_next(e, n, chosen + 1);
+            sel = next >= 0 ? next : chosen;
+        }
         if (why[0]) {
             snprintf(note, sizeof note, "cannot open this lesson: %s", why);
             rc = SW_EXIT_OK;
@@ -202,7 +237,12 @@ int sw_cmd_lesson(int argc, char **argv)
             rc = sw_cli_error("lessons need a terminal; to lint lesson files use 'stepwise lesson "
                               "--check FILE...'");
         else
-            rc = k >= 0 ? run_lesson(e[k].path, -1, NULL, 0) : menu(e, n);
+        if (k >= 0) {
+            rc = run_lesson(e[k].path, -1, NULL, 0, NULL);
+            if (rc == SW_EXIT_OK)
+                say_how_to_continue(e, n, k);
+        } else
+            rc = menu(e, n);
     }
     sw_lesson_list_free(e, n);
     return rc;

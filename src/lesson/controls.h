@@ -63,13 +63,14 @@ enum {
  * Help shows PLAY controls, and LESSON ones in a lesson, in this order. */
 #define SW_CONTROLS(X) \
     X(NEXT_METHOD, INTEGRATOR, PLAY, "next integrator", SW_KEYS('i', SW_KEY_TAB), \
-      "i  Tab", "next integrator (keeps the state and time)") \
+      "i  Tab", "next integrator (the run starts again at t = 0)") \
     X(PREV_METHOD, INTEGRATOR, PLAY, "previous integrator", SW_KEYS('I', SW_KEY_BTAB), \
       "I  Shift-Tab", "previous integrator") \
     X(PICK_METHOD, INTEGRATOR, PLAY, "pick integrator", SW_KEYS(SW_PICK_KEYS), \
       "1-9  0", "pick an integrator by its place in 'stepwise list integrators'") \
-    X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  =", "double dt") \
-    X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), "-", "halve dt") \
+    X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  -", \
+      "double / halve dt (the run starts again at t = 0)") \
+    X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), NULL, NULL) \
     X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "pause / run") \
     X(STEP, RUN, PLAY, "single step", SW_KEYS('.'), ".  ,  ;  u", \
       "one step on / back, 50 back (pauses); u: run to the stop time (--until, @until)") \
@@ -85,6 +86,8 @@ enum {
       "g", "ghost: the exact solution (or a reference run) beside yours") \
     X(TRAILS, TRAILS, PLAY, "trails", SW_KEYS('t'), "t", "trails") \
     X(GRAPH, GRAPH, PLAY, "graph", SW_KEYS('e'), "e", "graph of energy drift (or error) against time") \
+    X(ERROR_KIND, NONE, PLAY, "error kind", SW_KEYS('m'), "m", \
+      "err: position error (m) / velocity error (m/s)") \
     X(BRAILLE, BRAILLE, PLAY, "Braille", SW_KEYS('b'), "b", "Braille dots (finer picture)") \
     X(PANEL, PARAMS, PLAY, "parameter panel", SW_KEYS('p'), \
       "p", "parameter panel: Up/Down choose, Left/Right change") \

@@ -327,50 +327,12 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
 
 /* ---- the status block ------------------------------------------------------------- */
 
-/* The stability meter: the stiffest mode's |λ|·Δt against the method's
- * limit on the current linearisation (a bar), and the growth per step ρ of
- * the worst mode under this method at this Δt, with enough digits that a
- * neutral ρ = 1 reads as one. When the run's energy grows although every
- * mode is stable, the line says so: that growth is nonlinear. */
+/* The stability meter's line (app/status.c words it, so the labels and
+ * the word beside the growth are unit-tested there). */
 static int meter_fields(sw_app *a, sw_field *f, int *style)
 {
-    sw_app_meter m;
-    char buf[SW_TEXT_LINE];
-    int n = 0;
-    *style = SW_STYLE_STATUS;
-    if (!sw_app_stability(a, &m)) {
-        if (a->sims[0].method->flags & SW_ADAPTIVE) {
-            snprintf(buf, sizeof buf, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
-            field(f, &n, 8, buf, "adaptive steps");
-        } else if (sw_app_meter_pending(a))
-            field(f, &n, 8, "stability: finding the stiffest mode", "finding the stiffest mode");
-        return n;
-    }
-    snprintf(buf, sizeof buf, "|L|dt=%.3g", m.stiff * a->dt);
-    field(f, &n, 7, buf, NULL);
-    if (!m.unbounded && m.limit > 0) {
-        char bar[16];
-        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
-        bar[0] = '[';
-        for (int i = 0; i < 10; i++)
-            bar[i + 1] = i < fill ? '#' : '.';
-        bar[11] = ']';
-        bar[12] = '\0';
-        field(f, &n, 2, bar, NULL);
-        snprintf(buf, sizeof buf, "limit %.3g", m.stiff * m.limit);
-        field(f, &n, 5, buf, NULL);
-    } else
-        field(f, &n, 5, m.unbounded ? "stable at any dt" : "no stable dt", NULL);
-    snprintf(buf, sizeof buf, "x%.6f/step", m.growth);
-    field(f, &n, 8, buf, NULL);
-    field(f, &n, 9,
-          m.grows ? "GROWS" : m.slow ? "grows, too slowly to see" : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral",
-          m.slow ? "grows slowly" : NULL);
-    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
-    if (run_grows && !m.grows)
-        field(f, &n, 6, "but the run's energy grows: nonlinear", "but the run grows");
-    if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
-        *style = SW_STYLE_WARN;
+    int warn, n = sw_app_meter_fields(a, f, 8, &warn);
+    *style = warn ? SW_STYLE_WARN : SW_STYLE_STATUS;
     return n;
 }
 

@@ -44,7 +44,7 @@ check_terminal_sane region
 # 2. Lesson 6 page 4: the plot in the picture's place, the page's text beside it.
 printf '06-runge-kutta.lesson 3\n' > "$WORK/state/stepwise/progress"
 type_cmd "XDG_STATE_HOME=$WORK/state $STEPWISE lesson 6"
-wait_for 'Runge-Kutta: midpoint and RK4 +\(4/6\)' || fail "lesson 6 did not open on page 4"
+wait_for 'Runge-Kutta: midpoint and RK4 +\(4/[0-9]+\)' || fail "lesson 6 did not open on page 4"
 keys w
 wait_for 'error vs evaluations' 60 || fail "w did not show the work-precision plot"
 wait_for 'for one turn of the' || fail "the plot hides the page's text"

@@ -16,7 +16,7 @@ keys 5
 wait_for 'spring +rk4 +dt=0\.02 ' || fail "5 did not pick rk4"
 keys '?'
 wait_for '\? (closes|next page) \(1/[0-9]+\)' || fail "? did not open the help"
-for k in 'i  Tab' 'I  Shift-Tab' '1-9' '\+  =' 'halve dt' 'space' 'one step' 'reset to t = 0' \
+for k in 'i  Tab' 'I  Shift-Tab' '1-9' '\+  -' 'halve dt' 'space' 'one step' 'reset to t = 0' \
          '\[  \]' 'compare' 'ghost' 'trails' 'graph of energy' 'Braille' 'parameter panel' \
          'recording a trace' 'work-precision' 'this help' 'quit'; do
     screen | grep -Eq -- "$k" || fail "help does not list '$k'"

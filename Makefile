@@ -88,7 +88,7 @@ $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 run: $(BIN)
-	./$(BIN) lesson
+	./$(BIN) lesson --next
 
 unit: $(TESTBIN)
 	$(TESTBIN)

@@ -18,10 +18,12 @@
 
 static const char lesson_help[] =
     "usage: stepwise lesson [NAME|N]\n"
+    "       stepwise lesson --next\n"
     "       stepwise lesson --check FILE...\n\n"
     "With no argument, opens the menu of lessons with your progress; NAME (a file\n"
     "name without .lesson, e.g. 02-euler) or N (its place in the menu) opens one,\n"
-    "resuming where you left off. --check lints lesson files without a terminal:\n"
+    "resuming where you left off. --next opens the first lesson not yet finished\n"
+    "(lesson 1 on a first run; the menu once all are done). --check lints lesson files without a terminal:\n"
     "exit 0 when all are valid, 2 with FILE:LINE:COL: messages otherwise.\n"
     "Lessons are read from $STEPWISE_LESSONS, else the installed lessons directory.\n"
     "Progress is kept in $XDG_STATE_HOME/stepwise/progress (~/.local/state/...).\n";
@@ -188,14 +190,17 @@ static int menu(sw_lesson_entry *e, int n)
 int sw_cmd_lesson(int argc, char **argv)
 {
     static const struct option opts[] = {
-        { "check", no_argument, NULL, 'c' }, { "help", no_argument, NULL, 'h' }, { NULL, 0, NULL, 0 },
+        { "check", no_argument, NULL, 'c' }, { "next", no_argument, NULL, 'n' },
+        { "help", no_argument, NULL, 'h' }, { NULL, 0, NULL, 0 },
     };
-    int check = 0;
+    int check = 0, next = 0;
     optind = 1;
     opterr = 0;
     for (int c; (c = getopt_long(argc, argv, "h", opts, NULL)) != -1;) {
         if (c == 'c')
             check = 1;
+        else if (c == 'n')
+            next = 1;
         else if (c == 'h') {
             fputs(lesson_help, stdout);
             return SW_EXIT_OK;
@@ -209,6 +214,8 @@ int sw_cmd_lesson(int argc, char **argv)
     }
     if (argc - optind > 1)
         return sw_cli_error("lesson takes one lesson name or number; see 'stepwise list lessons'");
+    if (next && optind < argc)
+        return sw_cli_error("lesson --next takes no lesson name or number: it picks the next unfinished one");
     const char *dir = sw_cli_lessons_dir();
     sw_lesson_entry *e;
     int n;
@@ -229,6 +236,8 @@ int sw_cmd_lesson(int argc, char **argv)
     else if (sw_progress_check(why, sizeof why) != SW_OK)
         rc = sw_cli_error("%s; progress could not be saved (set XDG_STATE_HOME to a writable directory)", why);
     else {
+        if (next) /* the first unfinished lesson; every one finished: the menu */
+            k = sw_progress_next(e, n, 0);
         char unreadable[SW_ERRLEN + 400];
         if (sw_progress_readable(unreadable, sizeof unreadable) != SW_OK)
             sw_cli_note("warning: %s; lessons start from their first page and progress is not "

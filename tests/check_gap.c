@@ -1,6 +1,7 @@
 /* The ghost's gap made visible (render/gap.c): a run and its ghost in one
  * cell drawn as '&', and the gap written beside the run with its unit, in
- * a canvas and in a whole 80x24 frame (lesson 3 page 3's 0.44 m at t = 2). */
+ * a canvas and in a whole 80x24 frame (lesson 3 page 3's 0.44 m at t = 2),
+ * and a cloud of dots on its ghost. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -48,6 +49,42 @@ START_TEST(shared_cell_and_label)
 }
 END_TEST
 
+/* Lesson 1's cloud (the vortex's 200 points) under rk4 with the ghost on:
+ * the page says the computed dots sit on the ghost, so every cell a dot and
+ * its ghost share shows '&' (the newcomer saw nothing of the ghost when a
+ * cloud got no marks). */
+START_TEST(cloud_on_its_ghost)
+{
+    sw_app a;
+    char err[SW_ERRLEN];
+    ck_assert_msg(sw_app_init(&a, sw_scene_find("vortex"), NULL, sw_integrator_find("rk4"), 0.05, err,
+                              sizeof err) == SW_OK, "%s", err);
+    const sw_sim *s = &a.sims[0];
+    ck_assert_int_ge(s->sys.n, 200);
+    ck_assert_int_le(s->sys.n, SW_GAP_MARK_MAX);
+    sw_canvas c;
+    ck_assert_int_eq(sw_canvas_init(&c, 40, 20, err, sizeof err), SW_OK);
+    sw_view v = s->sys.scene->view(&s->sys);
+    ck_assert_int_eq(sw_canvas_set_view(&c, &v, err, sizeof err), SW_OK);
+    sw_canvas_draw_system(&c, &s->sys, s->sys.y, s->t, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    sw_canvas_draw_system(&c, &s->sys, s->sys.y, s->t, SW_GLYPH_MAIN, SW_STYLE_MAIN);
+    sw_canvas_draw_gap(&c, &s->sys, s->sys.y, s->sys.y, s->t, "ghost", SW_STYLE_GHOST);
+    int shared = 0, other = 0;
+    for (int i = 0; i < s->sys.n; i++) {
+        int col, row;
+        if (!sw_canvas_world_to_cell(&c, s->sys.y[2 * i], s->sys.y[2 * i + 1], &col, &row))
+            continue;
+        if (sw_canvas_codepoint(&c, col, row) == SW_GLYPH_BOTH)
+            shared++;
+        else
+            other++;
+    }
+    ck_assert_msg(shared > 0 && other == 0, "%d dots on their ghost drawn '&', %d not", shared, other);
+    sw_canvas_free(&c);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* The projectile under Euler at dt = 0.05, stopped at t = 2 with the ghost
  * on: an 80x24 frame writes the gap, 0.44 m (lesson 3 page 3's figure). */
 START_TEST(frame_shows_gap_at_80x24)
@@ -81,6 +118,7 @@ Suite *make_gap_suite(void)
     TCase *tc = tcase_create("gap");
     tcase_add_test(tc, shared_cell_and_label);
     tcase_add_test(tc, frame_shows_gap_at_80x24);
+    tcase_add_test(tc, cloud_on_its_ghost);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -9,9 +9,10 @@
 /* The glyph of a cell where two runs (or a run and the ghost) are both. */
 #define SW_GLYPH_BOTH '&'
 /* Systems with more particles than this get no cell-sharing marks (a
- * cloud of points, where a shared cell says nothing), and more than
- * SW_GAP_LABEL_MAX no gap label. */
-#define SW_GAP_MARK_MAX 64
+ * dense cloud, where every cell is shared), and more than SW_GAP_LABEL_MAX
+ * no gap label. The lessons' clouds (200 points) get them: "the computed
+ * dots sit on the ghost" must be seen, not read. */
+#define SW_GAP_MARK_MAX 1000
 #define SW_GAP_LABEL_MAX 16
 
 /* After both were drawn: each particle of sys whose positions in y (the

@@ -115,6 +115,26 @@ START_TEST(halving_dt_measures_order)
 }
 END_TEST
 
+/* The dt message measures with the run's own event mode (lesson 4 page 5):
+ * the drag-free bounce under rk4 is first order with its contacts stepped
+ * over (the error falls about 2-fold per halving, as for any first-order
+ * error) and exact to rounding with them located, which the message says
+ * instead of fitting an order to rounding. */
+START_TEST(dt_message_uses_event_mode)
+{
+    sw_app a;
+    app_with(&a, "bounce", "rk4", 0.01, NULL);
+    sw_app_set_events(&a, SW_EVENTS_STEP);
+    double stepped = sw_app_measure(&a, a.sims[0].method, 0.01);
+    sw_app_set_events(&a, SW_EVENTS_LOCATE);
+    double located = sw_app_measure(&a, a.sims[0].method, 0.01);
+    ck_assert_msg(stepped > 1e-4 && located < 1e-12, "stepped over %g, located %g", stepped, located);
+    ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+    ck_assert_msg(strstr(a.message, "at rounding level") && !strstr(a.message, "order ~"), "%s", a.message);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* The meter's growth per step against theory: for Runge-Kutta methods the
  * stiffest mode λ = -γ + iω_d is multiplied by |R(hλ)| each step, R the
  * method's stability polynomial (1 + z; 1 + z + z²/2; Taylor to z⁴). */
@@ -419,6 +439,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, meter_words_at_the_limit);
     tcase_add_test(tc, err_is_position_in_metres_and_restarts);
     tcase_add_test(tc, halving_dt_measures_order);
+    tcase_add_test(tc, dt_message_uses_event_mode);
     tcase_add_test(tc, meter_growth_matches_theory);
     tcase_add_test(tc, watch_only_where_judged);
     tcase_add_test(tc, clock_and_slow_motion);

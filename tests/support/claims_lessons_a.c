@@ -306,6 +306,19 @@ static double l4_parabola_error(void)
     return e;
 }
 
+/* Lesson 4's located page: the error the dt message measures (its own
+ * runs, the page's events mode) at the page's dt and half of it. */
+static double l4_located_error(void)
+{
+    sw_runner r;
+    sw_app a;
+    cl_lesson_page(&r, &a, L4, "Find the moment of impact");
+    const sw_integrator *m = a.sims[0].method;
+    double e = fmax(sw_app_measure(&a, m, a.dt), sw_app_measure(&a, m, 0.5 * a.dt));
+    cl_page_free(&r, &a);
+    return e;
+}
+
 /* Energy at t = 1 over its start, Euler at Δt = 0.00125 on the c = 10 spring. */
 static double l5_grows_fourfold(void) { return 1 + cl_drift_at("spring", STIFF, "euler", 0.00125, 1.0) / 100; }
 static double l5_falls(void) { return cl_drift_at("spring", STIFF, "euler", 0.000625, 1.0); }
@@ -388,6 +401,7 @@ const claim sw_claims_a[] = {
     { L4, "with drag = 1 the change reads {-204} % by t = 3", l4_drag_drift, ROUNDED, 0, R_ROUND, NULL },
     { "docs/scenes.md", "kinetic energy ½ m |v0|² ({62.5} J with the defaults)", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
+    { L4, "the message reports {rounding}-level errors", l4_located_error, ATMOST, 0, "the dt message's own runs with events located, at the page's dt and half: below 1e-12", NULL },
     /* lesson 5 */
     { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },
     { L5, "and it shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },

@@ -347,6 +347,16 @@ START_TEST(every_lesson_page)
                         free(text);
                     }
                     a.help = a.panel = 0;
+                    /* the key line names the question's own letters (A-C for three) */
+                    char *text, keys[16];
+                    check_screen_text(&f, &a, side, cols, rows, what, &text);
+                    snprintf(keys, sizeof keys, "A-%c answer", SW_ANSWER_FIRST + q->nanswers - 1);
+                    const char *k = strstr(text, "A-");
+                    while (k && strncmp(k + 3, " answer", 7) != 0)
+                        k = strstr(k + 1, "A-");
+                    ck_assert_msg(k && strncmp(k, keys, strlen(keys)) == 0, "%s at %dx%d: the key line does not say "
+                                  "'%s':\n%s", what, cols, rows, keys, text);
+                    free(text);
                 }
                 for (int page = 1; page < 20; page++) {
                     a.help = page;

@@ -295,7 +295,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.kinds = r->kinds;
     r->side.width = width;
     r->side.scroll = &r->scroll;
-    r->side.question_open = pg->question.text && !r->answered[r->page];
+    r->side.question_open = pg->question.text && !r->answered[r->page] ? pg->question.nanswers : 0;
     r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     /* the lesson's title and the page: "(page 2/6)" when the line has room,

@@ -21,7 +21,7 @@ typedef struct sw_side {
     int nlines;
     int width;                  /* wanted columns beside the scene (0: below) */
     int *scroll;                /* first line shown; the composer clamps it */
-    int question_open;          /* the page's question waits for an answer (A-F) */
+    int question_open;          /* answers of the page's open question (A..F: 2-6); 0: none open */
     int pinned;                 /* the last `pinned` lines (goals, question) stay in sight at the
                                  * pane's foot while the text above them scrolls; 0: none */
     const char *notice;         /* what the lesson says on the key line ("page done: n next page"), or NULL */

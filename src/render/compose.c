@@ -341,8 +341,11 @@ static void key_fields(const sw_app *a, const sw_side *side, sw_field *f, int *n
     if (side) {
         if (side->notice)
             field(f, n, 12, side->notice, NULL);
-        if (side->question_open)
-            field(f, n, 11, "A-F answer", NULL);
+        if (side->question_open) {
+            char keys[16]; /* the question's own letters: A-C for three answers */
+            snprintf(keys, sizeof keys, "A-%c answer", 'A' + (side->question_open > 1 ? side->question_open - 1 : 1));
+            field(f, n, 11, keys, NULL);
+        }
         if (!side->notice)
             field(f, n, 9, "n next page", "n next");
         field(f, n, 8, "h hint", NULL);

@@ -21,20 +21,43 @@ static double norm2(int n, const double *v)
     return m * sqrt(s);
 }
 
+/* Largest |y_i + d_i|: what Newton's tolerance scales with. NaN is
+ * skipped, as fmax skips it. */
+static double size_of(int n, const double *y, const double *d)
+{
+    double size = 0;
+    for (int i = 0; i < n; i++) {
+        double a = fabs(y[i] + d[i]);
+        if (a > size)
+            size = a;
+    }
+    return size;
+}
+
 /* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
  * equation of backward Euler (θ = 1, y1 = y0 + Δ) and of the implicit
  * midpoint rule (θ = ½) over the step σh. Each iteration solves
- * (I - θσh·J)·δ = -G with the Jacobian at the current iterate, so it
- * converges quadratically once close; farther away a backtracking line
- * search on |G|₂ keeps every step a descent step (the Newton direction is
- * one for the Euclidean norm of the residual). Converged when the
- * correction is at rounding level, |δ| <= 1e-12·|y0 + Δ|, or when no
- * descent is left and |δ| <= 1e-9·|y0 + Δ| (rounding in G decides it).
- * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3. */
+ * (I - θσh·J)·δ = -G; farther away a backtracking line search on |G|₂
+ * keeps every step a descent step (the Newton direction is one for the
+ * Euclidean norm of the residual). Converged when the correction is at
+ * rounding level, |δ| <= 1e-12·|y0 + Δ|, or when no descent is left and
+ * |δ| <= 1e-9·|y0 + Δ| (rounding in G decides it).
+ * With yj (a vector to keep it in), simplified Newton: J is taken at the
+ * first iterate and its factorisation kept (the solve reuses it for the
+ * same state and c) while the iteration contracts |G| by SIMPLIFIED_RATE
+ * or better; a slower or stalled iteration takes J afresh at the current
+ * iterate, and only a stall with a fresh J fails. The iterates are
+ * Newton's own where J does not change (linear systems: the same bits).
+ * Without yj, J afresh at every iterate (quadratic convergence: the
+ * continuation below, where the start is far from the solution).
+ * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3
+ * (and yj). */
+#define SIMPLIFIED_RATE 0.125
+
 static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                  double *d, int max_iter)
+                  double *d, int max_iter, double *yj)
 {
-    int n = ode->dim;
+    int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
     double te = t + theta * h, c = theta * h, lambda = 1.0;
     for (int i = 0; i < n; i++)
@@ -50,7 +73,12 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         }
         if (gnorm == 0)
             return 0; /* Δ solves G = 0 exactly */
-        if (sw_ode_solve(s, ode, te, ym, c, g, delta) != 0) {
+        const double *at = ym; /* where J is taken */
+        if (yj && fresh)
+            memcpy(yj, ym, (size_t)n * sizeof *yj);
+        if (yj)
+            at = yj;
+        if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
         }
@@ -71,19 +99,24 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
                 break;
             lambda *= 0.5;
         }
-        double step = lambda * sw_norm_inf(n, delta), size = 0;
+        double step = lambda * sw_norm_inf(n, delta);
         sw_axpy(n, d, d, lambda, delta);
-        for (int i = 0; i < n; i++)
-            size = fmax(size, fabs(y[i] + d[i]));
-        if (step <= 1e-12 * size || gnew == 0)
+        double size = size_of(n, y, d);
+        /* with a kept J the error left is about the rate times the last
+         * correction, not its square: converge a little further */
+        double tol = yj && !fresh ? 1e-12 * SIMPLIFIED_RATE : 1e-12;
+        if (step <= tol * size || gnew == 0)
             return 0;
-        if (!(gnew < gnorm) || lambda < 1.0 / 1024) {
+        int stalled = !(gnew < gnorm) || lambda < 1.0 / 1024;
+        if (stalled && !(yj && !fresh)) {
             if (step <= 1e-9 * size)
                 return 0;
             s->why = "Newton's method stalled: no solution of the implicit equation was found "
                      "near the last state (a smaller dt helps)";
             return -1;
         }
+        /* a kept J that no longer contracts fast: take it afresh */
+        fresh = yj && (stalled || lambda < 1.0 || gnew > SIMPLIFIED_RATE * gnorm);
         gnorm = gnew;
     }
     s->why = "Newton's method did not converge (a smaller dt helps)";
@@ -104,7 +137,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
     int n = ode->dim;
     double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
     memset(d, 0, (size_t)n * sizeof *d);
-    if (newton(s, ode, *t, y, h, theta, d, 40) != 0) {
+    if (newton(s, ode, *t, y, h, theta, d, 40, SW_WORK(s, 4)) != 0) {
         const char *why = s->why;
         double sigma = 0, sigma_prev = 0, dsigma = 0.125;
         memset(done, 0, (size_t)n * sizeof *done);
@@ -119,7 +152,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
             double w = sigma > sigma_prev ? (next - sigma) / (sigma - sigma_prev) : 0.0;
             for (int i = 0; i < n; i++)
                 d[i] = done[i] + w * (done[i] - prev[i]);
-            if (newton(s, ode, *t, y, next * h, theta, d, 12) == 0) {
+            if (newton(s, ode, *t, y, next * h, theta, d, 12, NULL) == 0) {
                 sigma_prev = sigma;
                 sigma = next;
                 memcpy(prev, done, (size_t)n * sizeof *d);
@@ -171,24 +204,49 @@ int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double 
 }
 
 /* Dense fallback: J by forward differences, one column per evaluation, then
- * (I - c·J) z = r by Gaussian elimination with partial pivoting. */
+ * (I - c·J) z = r by Gaussian elimination with partial pivoting, the
+ * factors kept: a second solve at the same t, y (contents) and c reuses
+ * them. s->dense holds the factors (n²), then three n-vectors that serve as
+ * f(y), y + ε and f(y + ε) while J is formed and afterwards as the key:
+ * c and t, y, and the row interchanges + 1 (0: no factors kept). A system
+ * of one component keeps none (no room for the key). A stepper serves one
+ * system, so the key need not name it. */
 static int dense_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                        const double *r, double *z)
 {
-    int n = ode->dim;
+    int n = ode->dim, perm[SW_DENSE_MAX];
     double *a = s->dense, *f0 = a + (size_t)n * n, *yp = f0 + n, *f1 = yp + n;
-    sw_ode_eval(ode, t, y, f0);
-    memcpy(yp, y, (size_t)n * sizeof *yp);
-    for (int j = 0; j < n; j++) {
-        double eps = 1e-7 * fmax(1.0, fabs(y[j]));
-        yp[j] = y[j] + eps;
-        sw_ode_eval(ode, t, yp, f1);
-        yp[j] = y[j];
+    int kept = n >= 2 && f1[0] >= 1 && f0[0] == c && f0[1] == t &&
+               memcmp(yp, y, (size_t)n * sizeof *y) == 0;
+    if (kept) {
         for (int i = 0; i < n; i++)
-            a[i * n + j] = (i == j) - c * (f1[i] - f0[i]) / eps;
+            perm[i] = (int)f1[i] - 1;
+    } else {
+        f1[0] = 0;
+        sw_ode_eval(ode, t, y, f0);
+        memcpy(yp, y, (size_t)n * sizeof *yp);
+        for (int j = 0; j < n; j++) {
+            double eps = 1e-7 * fmax(1.0, fabs(y[j]));
+            yp[j] = y[j] + eps;
+            sw_ode_eval(ode, t, yp, f1);
+            yp[j] = y[j];
+            for (int i = 0; i < n; i++)
+                a[i * n + j] = (i == j) - c * (f1[i] - f0[i]) / eps;
+        }
+        if (sw_dense_factor(n, a, perm) != 0) {
+            f1[0] = 0;
+            return SW_EDIVERGED;
+        }
+        if (n >= 2) {
+            f0[0] = c;
+            f0[1] = t;
+            for (int i = 0; i < n; i++)
+                f1[i] = perm[i] + 1;
+        }
     }
     memcpy(z, r, (size_t)n * sizeof *z);
-    return sw_dense_solve(n, a, z) == 0 ? SW_OK : SW_EDIVERGED;
+    sw_dense_lu_solve(n, a, perm, z);
+    return SW_OK;
 }
 
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,

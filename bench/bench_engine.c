@@ -233,6 +233,59 @@ static void throughput(const bench_opts *o)
     printf("\n");
 }
 
+/* ---- implicit steps against rk4 (issue 26) ------------------------------------ */
+
+/* ns per particle-step of the implicit methods and rk4 on the chain, timed
+ * in turn within each repeat so load falls on all alike; the ratio to rk4
+ * is taken per repeat (paired) and its median and range printed. */
+static void implicit_cost(const bench_opts *o)
+{
+    enum { NM = 4 };
+    const char *names[NM] = { "rk4", "implicit-euler", "implicit-midpoint", "linear-implicit-euler" };
+    const sw_scene *sc = sw_scene_find("chain");
+    double p[SW_MAX_PARAMS], dt[NM], ns[NM][MAX_REPEATS], ratio[NM][MAX_REPEATS], t[NM] = { 0 };
+    long k[NM], solves0[NM], iters0[NM];
+    sw_sim s[NM];
+    char err[SW_ERRLEN];
+    if (build_params(sc, o->chain_n, p) != SW_OK)
+        return;
+    for (int i = 0; i < NM; i++) {
+        dt[i] = sc->dt;
+        if (sw_sim_init(&s[i], sc, p, sw_integrator_find(names[i]), dt[i], err, sizeof err) != SW_OK) {
+            printf("implicit steps: %s\n", err);
+            while (i-- > 0)
+                sw_sim_free(&s[i]);
+            return;
+        }
+        k[i] = stable_steps(&s[i], &dt[i], o->target, o->repeats);
+        solves0[i] = s[i].sys.ode->solves;
+        iters0[i] = s[i].stepper->newton_iters;
+    }
+    for (int r = 0; r < o->repeats; r++)
+        for (int i = 0; i < NM; i++) {
+            double t0 = now_seconds();
+            for (long j = 0; j < k[i]; j++)
+                sw_stepper_step(s[i].stepper, s[i].sys.ode, &t[i], s[i].sys.y, dt[i]);
+            ns[i][r] = (now_seconds() - t0) / ((double)k[i] * o->chain_n) * 1e9;
+            ratio[i][r] = ns[i][r] / ns[0][r];
+        }
+    printf("implicit steps: chain n = %d, ns per particle-step (sw_stepper_step), median of %d\n"
+           "  repeats; x rk4 = the paired ratio to rk4 timed in the same repeat, median [min, max]\n"
+           "  (target <= 10); solves and Newton iterations per step\n\n", o->chain_n, o->repeats);
+    printf("  %-22s %8s %9s %8s %17s %7s %7s\n", "method", "dt", "ns", "x rk4", "range", "solves", "newton");
+    for (int i = 0; i < NM; i++) {
+        double lo = ratio[i][0], hi = ratio[i][0], steps = (double)k[i] * o->repeats;
+        for (int r = 1; r < o->repeats; r++)
+            lo = fmin(lo, ratio[i][r]), hi = fmax(hi, ratio[i][r]);
+        printf("  %-22s %8.3g %9.3g %8.2f     [%5.2f, %5.2f] %7.2f %7.2f\n", names[i], dt[i],
+               median(ns[i], o->repeats), median(ratio[i], o->repeats), lo, hi,
+               (double)(s[i].sys.ode->solves - solves0[i]) / steps,
+               (double)(s[i].stepper->newton_iters - iters0[i]) / steps);
+        sw_sim_free(&s[i]);
+    }
+    printf("\n");
+}
+
 /* ---- frame cost ---------------------------------------------------------- */
 
 static void frame_row(const sw_scene *sc, const double *p, int cols, int rows, const bench_opts *o)
@@ -485,7 +538,7 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 implicit */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -505,6 +558,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 8;
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
+        } else if (strcmp(argv[i], "--implicit") == 0) {
+            sections = 32;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -529,13 +584,15 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --implicit, --peer-chain N, --peer-vortex N\n", argv[i]);
             return 2;
         }
     }
     machine();
     if (sections & 1)
         throughput(&o);
+    if (sections & 32)
+        implicit_cost(&o);
     if (sections & 2)
         frame_cost(&o);
     if (sections & 4)

@@ -46,8 +46,10 @@ static double size_of(int n, const double *y, const double *d)
  * first iterate and its factorisation kept (the solve reuses it for the
  * same state and c) while the iteration contracts |G| by SIMPLIFIED_RATE
  * or better; a slower or stalled iteration takes J afresh at the current
- * iterate, and only a stall with a fresh J fails. The iterates are
- * Newton's own where J does not change (linear systems: the same bits).
+ * iterate, and only a stall with a fresh J fails. With a kept J the
+ * tolerance is an eighth of the above, on the correction or on the error
+ * the rate of convergence predicts is left. The iterates are Newton's own
+ * where J does not change (linear systems: the same bits).
  * Without yj, J afresh at every iterate (quadratic convergence: the
  * continuation below, where the start is far from the solution).
  * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3
@@ -59,7 +61,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
 {
     int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
-    double te = t + theta * h, c = theta * h, lambda = 1.0;
+    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
     for (int i = 0; i < n; i++)
         ym[i] = y[i] + theta * d[i];
     sw_ode_eval(ode, te, ym, g);
@@ -102,13 +104,20 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         double step = lambda * sw_norm_inf(n, delta);
         sw_axpy(n, d, d, lambda, delta);
         double size = size_of(n, y, d);
-        /* with a kept J the error left is about the rate times the last
-         * correction, not its square: converge a little further */
-        double tol = yj && !fresh ? 1e-12 * SIMPLIFIED_RATE : 1e-12;
+        int kept = yj && !fresh;
+        /* With a kept J the iteration converges linearly, at the rate θ of
+         * successive corrections, and the error left after a correction is
+         * about θ/(1 - θ) times it, not its square: that estimate (Hairer
+         * and Wanner's stopping rule) must be at 1/8 of the tolerance. */
+        double tol = kept ? 1e-12 * SIMPLIFIED_RATE : 1e-12;
         if (step <= tol * size || gnew == 0)
             return 0;
+        double rate = step / last_step;
+        last_step = step;
+        if (kept && lambda == 1.0 && rate < SIMPLIFIED_RATE && rate / (1 - rate) * step <= tol * size)
+            return 0;
         int stalled = !(gnew < gnorm) || lambda < 1.0 / 1024;
-        if (stalled && !(yj && !fresh)) {
+        if (stalled && !kept) {
             if (step <= 1e-9 * size)
                 return 0;
             s->why = "Newton's method stalled: no solution of the implicit equation was found "

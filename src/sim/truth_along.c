@@ -34,8 +34,10 @@ static along_memo memo;
 
 static int memo_matches(const sw_scene *sc, const double *p, double t_end, int samples)
 {
+    double key[SW_MAX_PARAMS];
+    sw_scene_fill(sc, p, key); /* NULL: the defaults */
     return memo.sc == sc && memo.t_end == t_end && memo.samples == samples &&
-           memcmp(memo.p, p, (size_t)sc->nparams * sizeof *p) == 0;
+           memcmp(memo.p, key, sizeof key) == 0;
 }
 
 /* Fill the memo for this run: the truth at each sample time (the start alone
@@ -84,7 +86,7 @@ static int memo_fill(const sw_scene *sc, const double *p, double t_end, int samp
     }
     sw_truth_free(&tr);
     memo.sc = sc;
-    memcpy(memo.p, p, (size_t)sc->nparams * sizeof *p);
+    sw_scene_fill(sc, p, memo.p);
     memo.t_end = t_end;
     memo.samples = samples;
     return SW_OK;

@@ -10,9 +10,16 @@
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
-/* Euclidean norm, scaled against overflow. */
+/* Euclidean norm: the plain sum of squares where it neither overflows nor
+ * loses digits to underflow (one pass, no division), else scaled by the
+ * largest component. */
 static double norm2(int n, const double *v)
 {
+    double sq = 0;
+    for (int i = 0; i < n; i++)
+        sq += v[i] * v[i];
+    if (sq > 1e-280 && sq < 1e280)
+        return sqrt(sq);
     double m = sw_norm_inf(n, v), s = 0;
     if (!(m > 0) || !isfinite(m))
         return m;

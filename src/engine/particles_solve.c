@@ -36,10 +36,11 @@ struct sw_particles_solver {
     double *band;          /* the velocity system's band, or NULL before prepare */
     int *piv;
     int half_band;         /* in dof: 2·(largest particle distance along a spring) + 1 */
-    /* The factorisation in band is of M - c·Fv - c²·Fx at y_at (4n) and c_at
+    /* The factorisation in band is of M - c·Fv - c²·Fx at y_at and c_at
      * with the blocks above, while `factored`: a solve at the same y and c
      * reuses it (simplified Newton, Rosenbrock stages). Anything that writes
-     * the blocks or the band clears it. */
+     * the blocks or the band clears it. y_at (4n) comes with the band, from
+     * prepare: systems stepped explicitly carry none of it. */
     double *y_at, c_at;
     int factored;
     sw_band lu;            /* the band's shape and factors, while factored */
@@ -52,8 +53,7 @@ int sw_particles_solver_init(sw_particles *p)
         return SW_ENOMEM;
     p->solver->diag = calloc((size_t)8 * p->n, sizeof *p->solver->diag);
     p->solver->rhs = calloc((size_t)2 * p->n, sizeof *p->solver->rhs);
-    p->solver->y_at = calloc((size_t)4 * p->n, sizeof *p->solver->y_at);
-    return p->solver->diag && p->solver->rhs && p->solver->y_at ? SW_OK : SW_ENOMEM;
+    return p->solver->diag && p->solver->rhs ? SW_OK : SW_ENOMEM;
 }
 
 /* The pairs the forces join, and the widest distance among them. */
@@ -133,6 +133,10 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
                  "numbers; here they span %d particles, a band of %zu MiB", far,
                  len * sizeof(double) >> 20);
         return SW_EINVAL;
+    }
+    if (!s->y_at && !(s->y_at = malloc((size_t)4 * p->n * sizeof *s->y_at))) {
+        snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
+        return SW_ENOMEM;
     }
     if (s->band && s->half_band == kb)
         return SW_OK;

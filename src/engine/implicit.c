@@ -28,19 +28,6 @@ static double norm2(int n, const double *v)
     return m * sqrt(s);
 }
 
-/* Largest |y_i + d_i|: what Newton's tolerance scales with. NaN is
- * skipped, as fmax skips it. */
-static double size_of(int n, const double *y, const double *d)
-{
-    double size = 0;
-    for (int i = 0; i < n; i++) {
-        double a = fabs(y[i] + d[i]);
-        if (a > size)
-            size = a;
-    }
-    return size;
-}
-
 /* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
  * equation of backward Euler (θ = 1, y1 = y0 + Δ) and of the implicit
  * midpoint rule (θ = ½) over the step σh. Each iteration solves
@@ -108,9 +95,18 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
                 break;
             lambda *= 0.5;
         }
-        double step = lambda * sw_norm_inf(n, delta);
-        sw_axpy(n, d, d, lambda, delta);
-        double size = size_of(n, y, d);
+        /* step = λ·|δ|∞, d += λδ and size = |y + d|∞, in one pass */
+        double dmax = 0, size = 0;
+        for (int i = 0; i < n; i++) {
+            double a = fabs(delta[i]);
+            if (a > dmax || a != a)
+                dmax = a; /* NaN stays, as in sw_norm_inf */
+            d[i] = d[i] + lambda * delta[i];
+            double b = fabs(y[i] + d[i]);
+            if (b > size)
+                size = b; /* NaN skipped, as fmax skips it */
+        }
+        double step = lambda * dmax;
         int kept = yj && !fresh;
         /* With a kept J the iteration converges linearly, at the rate θ of
          * successive corrections, and the error left after a correction is

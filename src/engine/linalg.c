@@ -182,8 +182,14 @@ void sw_band_solve(const sw_band *b, double *x)
             x[j] = tmp;
         }
         double xj = x[j];
-        for (int t = 1; t <= lm; t++)
-            x[j + t] -= col[t] * xj;
+        if (lm == 3) { /* a chain's band (kl = 3) written out: the loop's overhead is its cost */
+            x[j + 1] -= col[1] * xj;
+            x[j + 2] -= col[2] * xj;
+            x[j + 3] -= col[3] * xj;
+        } else {
+            for (int t = 1; t <= lm; t++)
+                x[j + t] -= col[t] * xj;
+        }
     }
     /* Above row j - fill, column j of U is zero: there the updates are
      * x_i -= 0·x_j, which change nothing while x_j is finite. */
@@ -192,8 +198,15 @@ void sw_band_solve(const sw_band *b, double *x)
         const double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[-k]: entry (j - k, j) */
         x[j] /= col[0];
         double xj = x[j];
-        for (int i = imax(0, j - (isfinite(xj) ? fill : kv)); i < j; i++)
-            x[i] -= col[i - j] * xj;
+        int from = imax(0, j - (isfinite(xj) ? fill : kv));
+        if (from == j - 3) {
+            x[j - 3] -= col[-3] * xj;
+            x[j - 2] -= col[-2] * xj;
+            x[j - 1] -= col[-1] * xj;
+        } else {
+            for (int i = from; i < j; i++)
+                x[i] -= col[i - j] * xj;
+        }
     }
 }
 

@@ -88,7 +88,7 @@ $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 run: $(BIN)
-	./$(BIN) lesson 1
+	./$(BIN) lesson --next
 
 unit: $(TESTBIN)
 	$(TESTBIN)
@@ -141,15 +141,21 @@ fuzz:
 # stamp rebuilds the benchmark when GSL appears or goes.
 GSL_FLAGS = $(shell pkg-config --exists gsl 2>/dev/null && echo -DSW_HAVE_GSL $$(pkg-config --cflags gsl))
 GSL_LIBS  = $(shell pkg-config --exists gsl 2>/dev/null && pkg-config --libs gsl)
-BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c
+# The stiff comparison runs CVODE's BDF beside rodas4 when SUNDIALS's
+# development files are present (libsundials-dev, also from bench/deps.sh).
+CVODE_FLAGS = $(shell test -f /usr/include/cvode/cvode.h && echo -DSW_HAVE_CVODE)
+CVODE_LIBS  = $(if $(CVODE_FLAGS),-lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsolband \
+              -lsundials_sunlinsoldense -lsundials_sunmatrixband -lsundials_sunmatrixdense)
+BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c bench/bench_rkn.c bench/bench_stiff.c bench/bench_frame.c bench/bench_implicit.c
 
 $(BUILD)/gsl.stamp: FORCE
 	@mkdir -p $(dir $@)
-	@echo '$(GSL_FLAGS)' | cmp -s - $@ || echo '$(GSL_FLAGS)' > $@
+	@echo '$(GSL_FLAGS) $(CVODE_FLAGS)' | cmp -s - $@ || echo '$(GSL_FLAGS) $(CVODE_FLAGS)' > $@
 
 $(BENCHBIN): $(BENCH_SRC) bench/bench_common.h tests/support/alloc_count.c $(LIB) $(BUILD)/gsl.stamp
-	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) $(GSL_FLAGS) \
-	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) $(SECCOMP_LIBS) -lm -o $@
+	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) $(GSL_FLAGS) $(CVODE_FLAGS) \
+	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) $(CVODE_LIBS) $(SECCOMP_LIBS) \
+	    -lm -o $@
 
 bench:
 	@sh bench/deps.sh
@@ -160,6 +166,8 @@ bench:
 	@$(MAKE) --no-print-directory $(BIN)
 	@echo; echo "grading a class of 120, jailed and not (bench/grade_class.sh):"
 	@sh bench/grade_class.sh ./$(BIN) 120 3
+	@echo; echo "grading 100 passing traces, CPU time (bench/grade_traces.sh):"
+	@sh bench/grade_traces.sh ./$(BIN) 100 5
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

@@ -11,7 +11,25 @@
 #include <string.h>
 
 #include "bench_common.h"
+#include "util/num.h"
 #include "engine/clones.h"
+
+/* The vortex's start as the scene seeds it (flow_scenes.c), written out
+ * here so the baseline's memory holds its state alone: point i on ring
+ * i mod rings, at angle 2π·j/per + 0.3·ring. */
+void base_vortex_seed(double *y, int n)
+{
+    int rings = n < 8 ? n : (int)ceil(sqrt(n / 8.0));
+    if (rings > 24)
+        rings = 24;
+    int per = (n + rings - 1) / rings;
+    for (int i = 0; i < n; i++) {
+        int k = i % rings, j = i / rings;
+        double r = (k + 1.0) / rings, a = 2.0 * SW_PI * j / per + 0.3 * k;
+        y[2 * i] = r * cos(a);
+        y[2 * i + 1] = r * sin(a);
+    }
+}
 
 /* vortex, x' = ω(-y, x), euler: one fused pass. */
 SW_CLONES void base_vortex_euler(double *y, int n, double w, double h, long steps)

@@ -37,6 +37,8 @@ typedef struct bench_chain {
     double *f;
 } bench_chain;
 
+/* The vortex's seeds, as the scene places them (2n doubles). */
+void base_vortex_seed(double *y, int n);
 /* Hand-fused steps: `steps` steps of h on y in place (bench_base.c). */
 void base_vortex_euler(double *y, int n, double w, double h, long steps);
 void base_vortex_rk4(double *y, int n, double w, double h, long steps);
@@ -48,14 +50,41 @@ typedef struct bench_peer_opts {
     int repeats;        /* paired timed runs (at least 5 for the table) */
     int chain_n, vortex_n;
     int quick;          /* error 1e-6 only, fewer searches */
+    const char *only;   /* NULL, or the one scene to compare (orbit, chain, vortex) */
 } bench_peer_opts;
 
 /* The peer comparison (bench_peer.c): stepwise's cheapest method against
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);
 
+/* For counting instructions (bench/instructions.sh): build SCENE at SET
+ * ("e=0.9") and call its derivative `calls` times at the start, as the
+ * methods call it (the small path where it applies) or through the
+ * generic passes; 0, or 1 when the scene or setting is not a particle
+ * system's. */
+int bench_deriv_probe(const char *scene, const char *set, long calls, int generic);
+
 /* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
+
+/* Methods for x'' = f(x) at equal error: rkn, yoshida4 against dop853,
+ * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)
+ * (bench_rkn.c). */
+void bench_rkn(int repeats, int quick);
+/* The implicit methods against rk4 on the chain of chain_n beads: ns per
+ * particle-step and the paired ratio to rk4, about `target` seconds a
+ * timed repeat (bench_implicit.c). */
+void bench_implicit(int repeats, int chain_n, double target);
+/* rodas4 against CVODE's BDF on stiff problems at equal error, or rodas4
+ * alone when CVODE is absent (bench_stiff.c). */
+void bench_stiff(int repeats, int quick);
+/* Frame cost (bench_frame.c): the plain rasteriser per scene (vortex at
+ * vortex_n first), and the heavy views through the app layer (quick: at
+ * n = 1e4 instead of 1e5). */
+void bench_frame_cost(int vortex_n, double target);
+void bench_heavy_views(int quick);
+/* One heavy view alone, for a profiler (bench_frame.c). */
+void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds);
 
 #endif

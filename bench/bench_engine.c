@@ -17,9 +17,6 @@
 
 #include "engine/stepper.h"
 #include "stepwise/sim.h"
-#include "render/camera.h"
-#include "render/canvas.h"
-#include "render/draw.h"
 
 /* ---- allocation counting ------------------------------------------------- */
 
@@ -233,133 +230,6 @@ static void throughput(const bench_opts *o)
     printf("\n");
 }
 
-/* ---- implicit steps against rk4 (issue 26) ------------------------------------ */
-
-/* ns per particle-step of the implicit methods and rk4 on the chain, timed
- * in turn within each repeat so load falls on all alike; the ratio to rk4
- * is taken per repeat (paired) and its median and range printed. */
-static void implicit_cost(const bench_opts *o)
-{
-    enum { NM = 4 };
-    const char *names[NM] = { "rk4", "implicit-euler", "implicit-midpoint", "linear-implicit-euler" };
-    const sw_scene *sc = sw_scene_find("chain");
-    double p[SW_MAX_PARAMS], dt[NM], ns[NM][MAX_REPEATS], ratio[NM][MAX_REPEATS], t[NM] = { 0 };
-    long k[NM], solves0[NM], iters0[NM];
-    sw_sim s[NM];
-    char err[SW_ERRLEN];
-    if (build_params(sc, o->chain_n, p) != SW_OK)
-        return;
-    for (int i = 0; i < NM; i++) {
-        dt[i] = sc->dt;
-        if (sw_sim_init(&s[i], sc, p, sw_integrator_find(names[i]), dt[i], err, sizeof err) != SW_OK) {
-            printf("implicit steps: %s\n", err);
-            while (i-- > 0)
-                sw_sim_free(&s[i]);
-            return;
-        }
-        k[i] = stable_steps(&s[i], &dt[i], o->target, o->repeats);
-        solves0[i] = s[i].sys.ode->solves;
-        iters0[i] = s[i].stepper->newton_iters;
-    }
-    for (int r = 0; r < o->repeats; r++)
-        for (int i = 0; i < NM; i++) {
-            double t0 = now_seconds();
-            for (long j = 0; j < k[i]; j++)
-                sw_stepper_step(s[i].stepper, s[i].sys.ode, &t[i], s[i].sys.y, dt[i]);
-            ns[i][r] = (now_seconds() - t0) / ((double)k[i] * o->chain_n) * 1e9;
-            ratio[i][r] = ns[i][r] / ns[0][r];
-        }
-    printf("implicit steps: chain n = %d, ns per particle-step (sw_stepper_step), median of %d\n"
-           "  repeats; x rk4 = the paired ratio to rk4 timed in the same repeat, median [min, max]\n"
-           "  (target <= 10); solves and Newton iterations per step\n\n", o->chain_n, o->repeats);
-    printf("  %-22s %8s %9s %8s %17s %7s %7s\n", "method", "dt", "ns", "x rk4", "range", "solves", "newton");
-    for (int i = 0; i < NM; i++) {
-        double lo = ratio[i][0], hi = ratio[i][0], steps = (double)k[i] * o->repeats;
-        for (int r = 1; r < o->repeats; r++)
-            lo = fmin(lo, ratio[i][r]), hi = fmax(hi, ratio[i][r]);
-        printf("  %-22s %8.3g %9.3g %8.2f     [%5.2f, %5.2f] %7.2f %7.2f\n", names[i], dt[i],
-               median(ns[i], o->repeats), median(ratio[i], o->repeats), lo, hi,
-               (double)(s[i].sys.ode->solves - solves0[i]) / steps,
-               (double)(s[i].stepper->newton_iters - iters0[i]) / steps);
-        sw_sim_free(&s[i]);
-    }
-    printf("\n");
-}
-
-/* ---- frame cost ---------------------------------------------------------- */
-
-static void frame_row(const sw_scene *sc, const double *p, int cols, int rows, const bench_opts *o)
-{
-    char err[SW_ERRLEN];
-    const sw_integrator *m = sw_integrator_find(sc->integrator);
-    sw_sim s;
-    sw_canvas c;
-    if (sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK) {
-        printf("  %-13s %s\n", sc->name, err);
-        return;
-    }
-    if (sw_canvas_init(&c, cols, rows, err, sizeof err) != SW_OK) {
-        printf("  %-13s %s\n", sc->name, err);
-        sw_sim_free(&s);
-        return;
-    }
-    /* A frame at speed 1 and 60 fps advances 1/60 s: ceil(1/60/dt) steps. */
-    double want = ceil(1.0 / 60.0 / sc->dt);
-    long per_frame = want > 1e7 ? 10000000L : (long)want;
-    sw_view view = sc->view(&s.sys);
-    int frames = 0;
-    enum { MAX_FRAMES = 600 };
-    static double sim_ms[MAX_FRAMES], ras_ms[MAX_FRAMES];
-    long allocs = 0;
-    double start = now_seconds();
-    /* At least 60 frames (one second of animation), up to 600 or ~1 s of work. */
-    while (frames < MAX_FRAMES && (frames < 60 || now_seconds() - start < o->target * 20)) {
-        long a0 = alloc_count();
-        double t0 = now_seconds();
-        for (long j = 0; j < per_frame && !s.blown; j++)
-            sw_sim_step(&s);
-        double t1 = now_seconds();
-        sw_view_follow(&view, s.sys.y, s.sys.n, 0.25);
-        sw_canvas_set_view(&c, &view, err, sizeof err);
-        sw_canvas_clear(&c);
-        sw_canvas_draw_system(&c, &s.sys, s.sys.y, s.t, SW_GLYPH_MAIN, SW_STYLE_MAIN);
-        double t2 = now_seconds();
-        allocs += alloc_count() - a0;
-        sim_ms[frames] = (t1 - t0) * 1e3;
-        ras_ms[frames] = (t2 - t1) * 1e3;
-        frames++;
-    }
-    double sim = median(sim_ms, frames), ras = median(ras_ms, frames);
-    char allocs_s[16] = "n/a";
-    if (alloc_count() >= 0)
-        snprintf(allocs_s, sizeof allocs_s, "%ld", allocs);
-    printf("  %-13s %7d %-17s %8g %6ld %9.3f %9.3f %9.3f  %-4s %6s%s\n", sc->name, s.sys.n, m->name,
-           sc->dt, per_frame, sim, ras, sim + ras, sim + ras < 8.0 ? "yes" : "NO", allocs_s,
-           s.blown ? "  (blew up)" : "");
-    fflush(stdout);
-    sw_canvas_free(&c);
-    sw_sim_free(&s);
-}
-
-static void frame_cost(const bench_opts *o)
-{
-    printf("frame cost: one frame at 60 fps and speed 1 = ceil(1/60/dt) sim steps, then view\n"
-           "follow + clear + draw the system on a 200x60 ASCII canvas (the UI's defaults: no\n"
-           "ghost, no trails); median over at least 60 frames\n\n");
-    printf("  %-13s %7s %-17s %8s %6s %9s %9s %9s  %-4s %6s\n", "scene", "n", "method", "dt",
-           "steps", "sim ms", "draw ms", "frame ms", "<8ms", "allocs");
-    double p[SW_MAX_PARAMS];
-    const sw_scene *vortex = sw_scene_find("vortex");
-    if (build_params(vortex, o->vortex_n, p) == SW_OK)
-        frame_row(vortex, p, 200, 60, o);
-    for (int i = 0; i < sw_scene_count(); i++) {
-        const sw_scene *sc = sw_scene_at(i);
-        sw_scene_defaults(sc, p);
-        frame_row(sc, p, 200, 60, o);
-    }
-    printf("\n");
-}
-
 /* ---- memory ------------------------------------------------------------- */
 
 /* Peak resident set of this process so far, in KiB (VmHWM), or -1. */
@@ -408,42 +278,93 @@ static int count_probe(const char *scene, int n, const char *method, long steps,
     return ok ? 0 : 1;
 }
 
-/* In a fresh process: build vortex with n points under `method` ("none":
- * build nothing), take ten steps, and print the peak RSS on stdout. */
-static int memory_probe(const char *method, int n)
+/* The hand-fused rk4 of bench_base.c on scene (chain or vortex) with n
+ * particles, from the scene's start written out by hand (the chain's beads
+ * at (i + 1)·rest, the middle one plucked; the vortex seeded by the scene,
+ * then copied): only what that loop needs is allocated. Takes `steps`
+ * steps; *ns gets the median ns per particle-step of the last five. The
+ * benchmark checks the seeds against the scene's (vortex, n = 1000). */
+static int base_probe(const char *scene, int n, long steps, double *ns)
+{
+    const sw_scene *sc = sw_scene_find(scene);
+    double p[SW_MAX_PARAMS], h = sc ? sc->dt : 0, times[5];
+    if (!sc || build_params(sc, n, p) != SW_OK)
+        return 1;
+    int chain = strcmp(scene, "chain") == 0, dim = chain ? 4 * n : 2 * n;
+    double *y = calloc((size_t)dim, sizeof *y), *work = chain ? malloc((size_t)8 * n * sizeof *work) : NULL;
+    bench_chain ch = chain_baseline(chain ? n : 1, p);
+    if (!y || (chain && (!work || !ch.f))) {
+        free(y), free(work), free(ch.f);
+        return 1;
+    }
+    if (chain) {
+        for (int i = 0; i < n; i++)
+            y[2 * i] = (i + 1) * p[4];
+        y[2 * (n / 2) + 1] = p[6];
+    } else {
+        base_vortex_seed(y, n);
+    }
+    for (long j = 0; j < steps; j++) {
+        double t0 = now_seconds();
+        if (chain)
+            base_chain_rk4(&ch, y, work, h, 1);
+        else
+            base_vortex_rk4(y, n, p[0], h, 1);
+        times[j % 5] = (now_seconds() - t0) * 1e9 / n;
+    }
+    *ns = median(times, steps < 5 ? (int)steps : 5);
+    free(y), free(work), free(ch.f);
+    return 0;
+}
+
+/* In a fresh process: build scene with n particles under `method` ("none":
+ * build nothing; "base": the hand-fused rk4 instead), take ten steps, and
+ * print the peak RSS in KiB and the median ns per particle-step of the
+ * last five on stdout. */
+static int memory_probe(const char *scene, const char *method, int n)
 {
     sw_sim s;
     int built = 0;
-    if (strcmp(method, "none") != 0) {
-        const sw_scene *sc = sw_scene_find("vortex");
+    double ns = 0, times[5];
+    if (strcmp(method, "base") == 0) {
+        if (base_probe(scene, n, 10, &ns) != 0)
+            return 1;
+    } else if (strcmp(method, "none") != 0) {
+        const sw_scene *sc = sw_scene_find(scene);
         const sw_integrator *m = sw_integrator_find(method);
         double p[SW_MAX_PARAMS];
         char err[SW_ERRLEN];
-        if (!m || build_params(sc, n, p) != SW_OK || sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
+        if (!sc || !m || build_params(sc, n, p) != SW_OK || sw_sim_init(&s, sc, p, m, sc->dt, err, sizeof err) != SW_OK)
             return 1;
-        for (int j = 0; j < 10; j++)
+        for (int j = 0; j < 10; j++) {
+            double t0 = now_seconds();
             sw_sim_step(&s);
+            times[j % 5] = (now_seconds() - t0) * 1e9 / n;
+        }
+        ns = median(times, 5);
         built = 1;
     }
-    printf("%ld\n", peak_rss_kib());
+    printf("%ld %.3f\n", peak_rss_kib(), ns);
     if (built)
         sw_sim_free(&s);
     return 0;
 }
 
-/* Peak RSS in KiB of a fresh copy of this program run as a memory probe: the
- * child reads its own VmHWM after exec, so the parent's memory, which a
- * forked child shares until exec, does not count. */
-static long probe_rss(const char *method, int n)
+/* Peak RSS in KiB of a fresh copy of this program run as a memory probe
+ * (and in *ns, when not NULL, its ns per particle-step): the child reads
+ * its own VmHWM after exec, so the parent's memory, which a forked child
+ * shares until exec, does not count. */
+static long probe_rss(const char *scene, const char *method, int n, double *ns)
 {
     char count[32];
     snprintf(count, sizeof count, "%d", n);
-    const char *args[NPREFIX + 6];
+    const char *args[NPREFIX + 7];
     int k = 0;
     args[k++] = "/proc/self/exe";
     for (int i = 0; i < NPREFIX; i++)
         args[k++] = probe_prefix[i];
     args[k++] = "--memory-probe";
+    args[k++] = scene;
     args[k++] = method;
     args[k++] = count;
     args[k] = NULL;
@@ -465,20 +386,24 @@ static long probe_rss(const char *method, int n)
         _exit(127);
     }
     close(fds[1]);
-    char buf[64] = "";
+    char buf[128] = "";
     ssize_t got = read(fds[0], buf, sizeof buf - 1);
     close(fds[0]);
     int status;
     if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || got <= 0)
         return -1;
     buf[got] = '\0';
-    return strtol(buf, NULL, 10);
+    char *end;
+    long kib = strtol(buf, &end, 10);
+    if (ns)
+        *ns = strtod(end, NULL);
+    return kib;
 }
 
 static void memory(const bench_opts *o)
 {
     int n = o->vortex_n;
-    long base = probe_rss("none", n);
+    long base = probe_rss("vortex", "none", n, NULL);
     printf("peak memory: vortex n = %d, each method in a fresh process (build, 10 steps);\n"
            "the process alone peaks at %.1f MiB; the state is %.2f MiB (2n doubles)\n\n",
            n, base / 1024.0, 2.0 * n * sizeof(double) / 1048576.0);
@@ -487,13 +412,53 @@ static void memory(const bench_opts *o)
         const sw_integrator *m = sw_integrator_at(i);
         if (m->flags & SW_NEEDS_SECOND_ORDER)
             continue;
-        long kib = probe_rss(m->name, n);
+        long kib = probe_rss("vortex", m->name, n, NULL);
         if (kib < 0) {
             printf("  %-18s %12s\n", m->name, "failed");
             continue;
         }
         printf("  %-18s %12.1f %12.1f %14d\n", m->name, kib / 1024.0, (kib - base) / 1024.0,
                m->work_vectors);
+    }
+    printf("\n");
+}
+
+/* A million particles: chain and vortex at n (1e6; --quick 1e5) under rk4,
+ * each in a fresh process, against the hand-fused rk4 of bench_base.c in
+ * its own: ns per particle-step (median of five steps) and peak RSS above
+ * the bare process, and their ratio. */
+static void million(int n)
+{
+    printf("a million particles: n = %d, rk4, 10 steps in a fresh process each; ns per\n"
+           "particle-step (median of the last 5) and peak RSS above the bare process, stepwise\n"
+           "(sw_sim_step) against the hand-fused loop (bench_base.c); target RSS ratio <= 2\n\n", n);
+    printf("  %-7s %8s %10s %10s %10s %12s %12s %10s %8s\n", "scene", "n", "state MiB", "sim ns", "base ns",
+           "sim MiB", "base MiB", "RSS ratio", "<=2x");
+    /* the baseline's vortex starts where the scene's does, bit for bit */
+    const sw_scene *vx = sw_scene_find("vortex");
+    double p[SW_MAX_PARAMS], seeds[2000];
+    char err[SW_ERRLEN];
+    sw_sim s;
+    if (build_params(vx, 1000, p) == SW_OK && sw_sim_init(&s, vx, p, sw_integrator_find("rk4"), vx->dt, err,
+                                                          sizeof err) == SW_OK) {
+        base_vortex_seed(seeds, 1000);
+        int same = memcmp(seeds, s.sys.y, sizeof seeds) == 0;
+        printf("  (the baseline's vortex seeds %s the scene's)\n", same ? "equal" : "DIFFER FROM");
+        sw_sim_free(&s);
+    }
+    const char *scenes[2] = { "chain", "vortex" };
+    for (int k = 0; k < 2; k++) {
+        double ns_sim = 0, ns_base = 0;
+        long bare = probe_rss(scenes[k], "none", n, NULL);
+        long sim = probe_rss(scenes[k], "rk4", n, &ns_sim), fused = probe_rss(scenes[k], "base", n, &ns_base);
+        double state = (k == 0 ? 4.0 : 2.0) * n * sizeof(double) / 1048576.0;
+        if (bare < 0 || sim < 0 || fused < 0) {
+            printf("  %-7s %8d  failed (out of memory, or n above the scene's limit)\n", scenes[k], n);
+            continue;
+        }
+        double above = (sim - bare) / 1024.0, above_base = (fused - bare) / 1024.0;
+        printf("  %-7s %8d %10.1f %10.2f %10.2f %12.1f %12.1f %10.2f %8s\n", scenes[k], n, state, ns_sim, ns_base,
+               above, above_base, above / above_base, above <= 2 * above_base ? "yes" : "NO");
     }
     printf("\n");
 }
@@ -538,15 +503,18 @@ static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
-    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree, 32 implicit */
+    int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree,
+                                     32 rkn, 64 stiff, 128 heavy views, 256 implicit */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
-        if (strcmp(argv[i], "--memory-probe") == 0 && i + 2 < argc)
-            return memory_probe(argv[i + 1], atoi(argv[i + 2]));
+        if (strcmp(argv[i], "--memory-probe") == 0 && i + 3 < argc)
+            return memory_probe(argv[i + 1], argv[i + 2], atoi(argv[i + 3]));
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
+            return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;
@@ -559,7 +527,15 @@ static int bench_engine_main(int argc, char **argv)
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
         } else if (strcmp(argv[i], "--implicit") == 0) {
+            sections = 256;
+        } else if (strcmp(argv[i], "--rkn") == 0) {
             sections = 32;
+        } else if (strcmp(argv[i], "--stiff") == 0) {
+            sections = 64;
+        } else if (strcmp(argv[i], "--frames") == 0) {
+            sections = 128;
+        } else if (strcmp(argv[i], "--memory") == 0) {
+            sections = 4;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -572,6 +548,8 @@ static int bench_engine_main(int argc, char **argv)
             }
             *(argv[i][7] == 'c' ? &peer.chain_n : &peer.vortex_n) = (int)n;
             i++;
+        } else if (strcmp(argv[i], "--peer-only") == 0 && i + 1 < argc) {
+            peer.only = argv[++i];
         } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
             char *end;
             long r = strtol(argv[++i], &end, 10);
@@ -584,23 +562,32 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --implicit, --peer-chain N, --peer-vortex N\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
+                    "--peer-chain N, --peer-vortex N, --peer-only SCENE\n", argv[i]);
             return 2;
         }
     }
     machine();
     if (sections & 1)
         throughput(&o);
-    if (sections & 32)
-        implicit_cost(&o);
+    if (sections & 256)
+        bench_implicit(o.repeats, o.chain_n, o.target);
     if (sections & 2)
-        frame_cost(&o);
-    if (sections & 4)
+        bench_frame_cost(o.vortex_n, o.target);
+    if (sections & 128)
+        bench_heavy_views(quick);
+    if (sections & 4) {
         memory(&o);
+        million(quick ? 100000 : 1000000);
+    }
     if (sections & 16)
         bench_tree(o.repeats, quick);
     if (sections & 8)
         bench_peer(&peer);
+    if (sections & 32)
+        bench_rkn(o.repeats, quick);
+    if (sections & 64)
+        bench_stiff(o.repeats, quick);
     return 0;
 }
 

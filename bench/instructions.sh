@@ -23,3 +23,18 @@ for row in "chain 1000 euler 20 120" "chain 1000 rk4 20 120" "vortex 100000 eule
     awk -v s="$1 n = $2" -v m="$3" -v g1="$g1" -v g2="$g2" -v b1="$b1" -v b2="$b2" -v k=$(($5 - $4)) -v n="$2" \
         'BEGIN { g = (g2 - g1) / (k * n); b = (b2 - b1) / (k * n); printf "%-18s %-6s %10.1f %10.1f %7.2f\n", s, m, g, b, g / b }'
 done
+# Instructions per call of the particle derivative, as the methods call it
+# (the small-system path where it applies) and through the generic passes,
+# at the scene's start: the difference between 2000 and 12000 calls.
+dcount() { # scene setting calls small|generic
+    valgrind --tool=callgrind --callgrind-out-file="$out" "$bin" --deriv-probe "$@" >/dev/null 2>&1
+    awk '/^summary:/ { print $2 }' "$out"
+}
+printf '\n%-24s %10s %10s\n' "derivative" "as called" generic
+for row in "orbit e=0.9" "orbit e=0.5" "spring c=0.5" "projectile drag=0.1" "chain n=10" "chain n=100"; do
+    set -- $row
+    s1=$(dcount "$1" "$2" 2000 small); s2=$(dcount "$1" "$2" 12000 small)
+    g1=$(dcount "$1" "$2" 2000 generic); g2=$(dcount "$1" "$2" 12000 generic)
+    awk -v s="$1 $2" -v s1="$s1" -v s2="$s2" -v g1="$g1" -v g2="$g2" \
+        'BEGIN { printf "%-24s %10.1f %10.1f\n", s, (s2 - s1) / 10000, (g2 - g1) / 10000 }'
+done

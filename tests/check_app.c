@@ -4,6 +4,7 @@
 #include <check.h>
 #include <complex.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,8 +18,10 @@ static void app_with(sw_app *a, const char *scene, const char *method, double dt
     double p[SW_MAX_PARAMS];
     char err[SW_ERRLEN];
     sw_scene_defaults(sc, p);
-    if (set)
-        ck_assert_msg(sw_scene_set(sc, p, set, err, sizeof err) == SW_OK, "%s", err);
+    char sets[128];
+    snprintf(sets, sizeof sets, "%s", set ? set : "");
+    for (char *kv = strtok(sets, " "); kv; kv = strtok(NULL, " ")) /* "k=1 c=0": one at a time */
+        ck_assert_msg(sw_scene_set(sc, p, kv, err, sizeof err) == SW_OK, "%s", err);
     ck_assert_msg(sw_app_init(a, sc, p, method ? sw_integrator_find(method) : NULL, dt, err, sizeof err) == SW_OK,
                   "%s", err);
 }
@@ -57,17 +60,21 @@ START_TEST(key_table_drives_lookup)
 }
 END_TEST
 
-/* Switching integrators keeps state and time; locked actions are refused. */
+/* Switching integrators mid-run starts the run again at t = 0 from the
+ * scene's first state (so err is this method's alone) and says so; locked
+ * actions are refused. */
 START_TEST(switch_keeps_state)
 {
     sw_app a;
     app_with(&a, "spring", "euler", 0.01, NULL);
+    double x0 = a.sims[0].sys.y[0];
     sw_app_advance(&a, 0.5, 100000);
-    double t = a.sims[0].t, x = a.sims[0].sys.y[0];
+    ck_assert(a.sims[0].t > 0 && a.sims[0].sys.y[0] != x0);
     ck_assert_int_eq(sw_app_key(&a, 'i', 0), 1);
     ck_assert_str_eq(a.sims[0].method->name, "symplectic-euler");
-    ck_assert_double_eq(a.sims[0].t, t);
-    ck_assert_double_eq(a.sims[0].sys.y[0], x);
+    ck_assert_double_eq(a.sims[0].t, 0);
+    ck_assert_double_eq(a.sims[0].sys.y[0], x0);
+    ck_assert_ptr_nonnull(strstr(a.message, "restarted at t = 0"));
     ck_assert_int_eq(sw_app_key(&a, '5', 0), 1);
     ck_assert_str_eq(a.sims[0].method->name, "rk4");
     sw_app_key(&a, 'I', 0);
@@ -289,6 +296,117 @@ START_TEST(frames_compose)
 }
 END_TEST
 
+
+/* The meter's word never contradicts the number beside it: the word is
+ * decided from rho and the digits follow (values just above and below 1
+ * print with more digits; within SW_TRUTH_NEUTRAL of 1 it reads neutral). */
+START_TEST(meter_word_agrees_with_number)
+{
+    static const struct { double rho; int grows, slow; const char *word; int sign; } cases[] = {
+        { 1 + 4e-7, 1, 0, "grows", 1 },            /* visible over a long horizon, 1.000000 at 6 digits */
+        { 1 + 4e-9, 0, 1, "grows, too slowly to see", 1 },
+        { 1 - 3e-8, 0, 0, "decays", -1 },
+        { 0.996995, 0, 0, "decays", -1 },
+        { 1.0, 0, 0, "neutral", 0 },
+        { 1 + 1e-13, 0, 0, "neutral", 0 },         /* within SW_TRUTH_NEUTRAL */
+        { 1.5, 1, 0, "grows", 1 },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char num[40];
+        const char *w = sw_app_growth_text(cases[i].rho, cases[i].grows, cases[i].slow, num, sizeof num);
+        ck_assert_str_eq(w, cases[i].word);
+        ck_assert_msg(strncmp(num, "×", strlen("×")) == 0, "%s", num);
+        double shown = strtod(num + strlen("×"), NULL);
+        int sign = shown > 1 ? 1 : shown < 1 ? -1 : 0;
+        ck_assert_msg(sign == cases[i].sign, "rho %.17g printed %s beside '%s'", cases[i].rho, num, w);
+        ck_assert_int_ge((int)strlen(num), (int)strlen("×1.000000"));
+    }
+}
+END_TEST
+
+static int fields_have(const sw_field *f, int n, const char *what)
+{
+    for (int i = 0; i < n; i++)
+        if (strstr(f[i].full, what))
+            return 1;
+    return 0;
+}
+
+/* The meter on an undamped spring (ω = 1) under Verlet, whose limit in ω·Δt
+ * is 2 and which is neutral below it (its map has |eigenvalues| = 1 there):
+ * just below the limit it reads neutral, just above it grows; the labels
+ * say stiffness·dt of limit. With damping the limit shown is the damped
+ * one and RK4's undamped 2√2 (its stability interval on the imaginary
+ * axis, Hairer & Wanner IV.2) is said beside it. */
+START_TEST(meter_words_at_the_limit)
+{
+    sw_field f[8];
+    int warn, n;
+    sw_app a;
+    app_with(&a, "spring", "verlet", 1.99, "k=1 c=0");
+    n = sw_app_meter_fields(&a, f, 8, &warn);
+    ck_assert(fields_have(f, n, "stiffness·dt 1.99 of limit 2"));
+    ck_assert_msg(fields_have(f, n, "per step: neutral"), "%s", f[n - 1].full);
+    ck_assert(!fields_have(f, n, "undamped"));
+    sw_app_free(&a);
+    app_with(&a, "spring", "verlet", 2.01, "k=1 c=0");
+    n = sw_app_meter_fields(&a, f, 8, &warn);
+    ck_assert_msg(fields_have(f, n, "per step: GROWS"), "%s", f[n - 1].full);
+    ck_assert(warn);
+    sw_app_free(&a);
+    app_with(&a, "spring", "rk4", 0.4, "k=1 c=0.1");
+    n = sw_app_meter_fields(&a, f, 8, &warn);
+    ck_assert(fields_have(f, n, "per step: decays"));
+    char want[64];
+    snprintf(want, sizeof want, "%.3g undamped", 2 * sqrt(2.0));
+    ck_assert_msg(fields_have(f, n, want), "no '%s' in %s / %s", want, f[0].full, f[1].full);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* err is the largest position error in metres against the truth at this
+ * time (m: velocities, m/s), computed here from sw_truth_state directly;
+ * a dt change mid-run starts the run again, so err starts again from 0. */
+START_TEST(err_is_position_in_metres_and_restarts)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.02, NULL);
+    sw_app_advance(&a, 1.0, 100000);
+    const sw_sim *s = &a.sims[0];
+    double truth[64], pos = 0, vel = 0;
+    int half = s->sys.ode->dim / 2;
+    ck_assert_int_le(s->sys.ode->dim, 64);
+    ck_assert_int_eq(sw_truth_state(a.scene, a.p, s->t, truth), 0);
+    for (int k = 0; k < half; k++) {
+        pos = fmax(pos, fabs(s->sys.y[k] - truth[k]));
+        vel = fmax(vel, fabs(s->sys.y[half + k] - truth[half + k]));
+    }
+    ck_assert(pos > 0 && vel > 0 && pos != vel);
+    /* the truth here is the closed form: the same to rounding */
+    ck_assert_double_eq_tol(sw_app_error(&a, 0), pos, 1e-12 * fmax(1, pos));
+    sw_field f[SW_STATUS_FIELDS];
+    int n = sw_app_status_fields(&a, 0, f, SW_STATUS_FIELDS);
+    ck_assert(fields_have(f, n, "position error") && fields_have(f, n, " m"));
+    ck_assert_int_eq(sw_app_key(&a, 'm', 0), 1);
+    ck_assert_double_eq_tol(sw_app_error(&a, 0), vel, 1e-12 * fmax(1, vel));
+    n = sw_app_status_fields(&a, 0, f, SW_STATUS_FIELDS);
+    ck_assert(fields_have(f, n, "velocity error") && fields_have(f, n, " m/s"));
+    sw_app_key(&a, 'm', 0);
+    ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+    ck_assert_double_eq(a.sims[0].t, 0);
+    ck_assert_double_eq(sw_app_error(&a, 0), 0);
+    ck_assert_ptr_nonnull(strstr(a.message, "position error"));
+    ck_assert_ptr_nonnull(strstr(a.message, "restarted at t = 0"));
+    sw_app_free(&a);
+    /* an adaptive method's dt only caps its steps: no order is read from it */
+    app_with(&a, "spring", "rk45", 0.1, NULL);
+    ck_assert_int_eq(sw_app_key(&a, '+', 0), 1);
+    ck_assert_msg(strstr(a.message, "the tolerances set the error, not dt"), "%s", a.message);
+    ck_assert(isnan(a.error_ratio));
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_app_suite(void);
 Suite *make_app_suite(void)
 {
@@ -297,6 +415,9 @@ Suite *make_app_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, key_table_drives_lookup);
     tcase_add_test(tc, switch_keeps_state);
+    tcase_add_test(tc, meter_word_agrees_with_number);
+    tcase_add_test(tc, meter_words_at_the_limit);
+    tcase_add_test(tc, err_is_position_in_metres_and_restarts);
     tcase_add_test(tc, halving_dt_measures_order);
     tcase_add_test(tc, meter_growth_matches_theory);
     tcase_add_test(tc, watch_only_where_judged);

@@ -18,23 +18,32 @@
  * computing the rows that bisect for a stability limit. */
 #include "claims.h"
 
-/* The five tables as one. */
+/* The tables as one: a new part adds its table here. */
+static const struct {
+    const claim *rows;
+    const size_t *n;
+} tables[] = {
+    { sw_claims_a, &sw_claims_a_n }, { sw_claims_b, &sw_claims_b_n }, { sw_claims_d, &sw_claims_d_n },
+    { sw_claims_e, &sw_claims_e_n }, { sw_claims_m, &sw_claims_m_n }, { sw_claims_s, &sw_claims_s_n },
+    { sw_claims_r, &sw_claims_r_n }, { sw_claims_k, &sw_claims_k_n },
+};
+
 static size_t claim_count(void)
 {
-    return sw_claims_a_n + sw_claims_b_n + sw_claims_d_n + sw_claims_e_n + sw_claims_m_n;
+    size_t n = 0;
+    for (size_t t = 0; t < sizeof tables / sizeof tables[0]; t++)
+        n += *tables[t].n;
+    return n;
 }
 static const claim *claim_at(size_t i)
 {
-    if (i < sw_claims_a_n)
-        return &sw_claims_a[i];
-    i -= sw_claims_a_n;
-    if (i < sw_claims_b_n)
-        return &sw_claims_b[i];
-    i -= sw_claims_b_n;
-    if (i < sw_claims_d_n)
-        return &sw_claims_d[i];
-    i -= sw_claims_d_n;
-    return i < sw_claims_e_n ? &sw_claims_e[i] : &sw_claims_m[i - sw_claims_e_n];
+    for (size_t t = 0; t < sizeof tables / sizeof tables[0]; t++) {
+        if (i < *tables[t].n)
+            return &tables[t].rows[i];
+        i -= *tables[t].n;
+    }
+    return NULL;
+
 }
 
 /* ---- reading the texts ------------------------------------------------- */

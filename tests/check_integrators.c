@@ -415,6 +415,10 @@ START_TEST(steps_do_not_allocate)
         sw_stepper s;
         char err[SW_ERRLEN];
         oscillator(&p, 3.0, 0.1);
+        if (sw_integrator_accepts(method, &p.ode, err, sizeof err) != SW_OK) { /* rkn: no damping */
+            sw_particles_free(&p);
+            oscillator(&p, 3.0, 0.0);
+        }
         ck_assert_int_eq(sw_stepper_init(&s, method, &p.ode, err, sizeof err), SW_OK);
         double t = 0;
         long before = sw_test_allocations();

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "app/progress.h"
 #include "app/runner.h"
 #include "stepwise/stepwise.h"
 
@@ -217,7 +218,7 @@ START_TEST(gating_and_answers)
     /* resuming opens the first page not yet done */
     ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
     ck_assert_int_eq(r.page, 1);
-    ck_assert(r.complete[0]);
+    ck_assert(r.before[0] && !r.complete[0]); /* done before: not ticked again */
     press(&r, &a, 'A');
     ck_assert(!r.answered[1]);
     ck_assert_ptr_nonnull(strstr(r.feedback, "No: one evaluation"));
@@ -226,11 +227,89 @@ START_TEST(gating_and_answers)
     ck_assert_int_eq(sw_progress_get("gate.lesson"), 2);
     press(&r, &a, 'N');
     ck_assert_int_eq(r.page, 0);
+    /* a page done in an earlier session shows its goal fresh, says so, and n skips it */
+    side = sw_runner_side(&r, &a, 120);
+    int fresh = 0, said = 0;
+    for (int i = 0; i < side->nlines; i++) {
+        fresh |= strstr(side->lines[i], "\xe2\x9c\x97") != NULL; /* the goal's ✗ */
+        said |= strstr(side->lines[i], "earlier session") != NULL;
+    }
+    ck_assert(fresh && said);
+    press(&r, &a, 'n');
+    ck_assert_int_eq(r.page, 1);
+    sw_app_free(&a);
+    sw_runner_free(&r);
+    /* a finished lesson reopens at its first page, every goal fresh */
+    ck_assert_int_eq(sw_runner_start(&r, &a, path, -1, err, sizeof err), SW_OK);
+    ck_assert_int_eq(r.page, 0);
+    ck_assert(r.before[0] && r.before[1] && !r.complete[0] && !r.answered[1]);
     sw_app_free(&a);
     sw_runner_free(&r);
     char cmd[64];
     snprintf(cmd, sizeof cmd, "rm -rf %s", state);
     ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+
+/* The menu's next lesson: the first not finished from a place on, wrapping
+ * round; an unreadable lesson skipped; -1 when all are done. */
+START_TEST(menu_next_unfinished)
+{
+    char state[] = "/tmp/sw-next-XXXXXX";
+    ck_assert_ptr_nonnull(mkdtemp(state));
+    setenv("XDG_STATE_HOME", state, 1);
+    char f0[] = "a.lesson", f1[] = "b.lesson", f2[] = "c.lesson", title[] = "T";
+    sw_lesson_entry e[3] = {
+        { .file = f0, .title = title, .npages = 2 },
+        { .file = f1, .title = NULL, .npages = 0 },   /* does not load */
+        { .file = f2, .title = title, .npages = 3 },
+    };
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 0);
+    ck_assert_int_eq(sw_progress_set("a.lesson", 2, err, sizeof err), SW_OK); /* a finished */
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 2);
+    ck_assert_int_eq(sw_progress_next(e, 3, 1), 2);
+    ck_assert_int_eq(sw_progress_set("c.lesson", 1, err, sizeof err), SW_OK); /* c begun, not done */
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), 2);
+    ck_assert_int_eq(sw_progress_set("c.lesson", 3, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_progress_next(e, 3, 0), -1);
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+
+/* A page that asks the student to watch starts paused (its text says how
+ * to run it), so nothing happens before the page has been read; and a
+ * page with a time goal cannot meet it on arrival (drive() checks that). */
+START_TEST(watch_pages_start_paused)
+{
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    ck_assert_int_ge(n, 10);
+    int checked = 0;
+    for (int i = 0; i < n; i++) {
+        sw_lesson les;
+        ck_assert_msg(sw_lesson_load(e[i].path, &les, err, sizeof err) == SW_OK, "%s", err);
+        for (int p = 0; p < les.npages; p++) {
+            const sw_lesson_page *pg = &les.pages[p];
+            int watch = 0;
+            for (int b = 0; b < pg->nblocks; b++)
+                watch |= strcasestr(pg->blocks[b].text, "watch") != NULL;
+            if (!watch)
+                continue;
+            checked++;
+            ck_assert_msg(pg->paused == 1, "%s page %d '%s' says watch but does not start paused (@pause on)",
+                          e[i].file, p + 1, pg->title);
+        }
+        sw_lesson_free(&les);
+    }
+    ck_assert_int_ge(checked, 10);
+    sw_lesson_list_free(e, n);
 }
 END_TEST
 
@@ -241,6 +320,8 @@ Suite *make_lesson_drive_suite(void)
     TCase *tc = tcase_create("drive");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, gating_and_answers);
+    tcase_add_test(tc, menu_next_unfinished);
+    tcase_add_test(tc, watch_pages_start_paused);
     tcase_add_test(tc, drive_every_lesson);
     suite_add_tcase(s, tc);
     return s;

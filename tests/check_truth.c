@@ -6,6 +6,7 @@
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "app/app.h"
@@ -376,6 +377,133 @@ START_TEST(free_modes_left_out)
 }
 END_TEST
 
+/* The meter's spectrum in slices (app/meter.c): on a chain of 2000 beads
+ * the stiffest mode takes a few hundred products with the Jacobian, so the
+ * job runs a fixed number of passes per call. From a cold start it is the
+ * synchronous computation pass for pass: the same bits. Started again
+ * warm, from the last vector, on a moved state, it lands where the
+ * synchronous computation does: power iteration's Rayleigh quotient lies
+ * within the top cluster of the spectrum, whose width over the first ten
+ * modes is (4k/m)(π/(2(n + 1)))²·100 ≈ 2.5e-4 of |λ| (1.25e-4 of
+ * ω = √|λ|, which `largest` is), and the warm start, having run longer,
+ * lies higher in it. The synchronous value is held against theory on the
+ * chain at rest (pluck = 0): its stiffest mode is the x-wave with
+ * λ = -(4k/m) sin²(nπ/(2(n + 1))), to the same width. */
+static int same_spectrum(const sw_spectrum *a, const sw_spectrum *b)
+{
+    return a->n == b->n && a->largest == b->largest && a->growing == b->growing && a->complete == b->complete &&
+           memcmp(a->mode, b->mode, (size_t)a->n * sizeof a->mode[0]) == 0;
+}
+
+START_TEST(spectrum_job_matches_synchronous)
+{
+    sw_truth tr;
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = params("chain", p, (const char *const[]){ "n=2000", NULL });
+    ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_truth_spectrum_sliced(&tr.sys, 131072), 1);
+    ck_assert_int_eq(sw_truth_spectrum_sliced(&tr.sys, 1L << 30), 0);
+    sw_spectrum sync, got;
+    ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, tr.sys.y, &sync), 0);
+    sw_spectrum_job job = { 0 };
+    ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.0), 0);
+    int calls = 0, rc = 0;
+    while (rc == 0 && calls < 1000) {
+        rc = sw_spectrum_job_run(&job, &tr.sys, tr.sys.y, 7, &got);
+        calls++;
+    }
+    ck_assert_int_eq(rc, 1);
+    ck_assert_int_gt(calls, 2); /* it did run in slices */
+    ck_assert_msg(same_spectrum(&got, &sync), "job %.17g, synchronous %.17g", got.largest, sync.largest);
+    /* warm, on a moved state: the beads shifted along the chain */
+    double *y = malloc((size_t)tr.sys.ode->dim * sizeof *y);
+    ck_assert_ptr_nonnull(y);
+    memcpy(y, tr.sys.y, (size_t)tr.sys.ode->dim * sizeof *y);
+    for (int i = 0; i < tr.sys.n; i++)
+        y[2 * i + 1] += 0.01 * sin(0.01 * i);
+    ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, y, &sync), 0);
+    ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.1), 0);
+    int cold_calls = calls;
+    for (rc = 0, calls = 0; rc == 0 && calls < 1000; calls++)
+        rc = sw_spectrum_job_run(&job, &tr.sys, y, 7, &got);
+    ck_assert_int_eq(rc, 1);
+    ck_assert_int_le(calls, cold_calls); /* never more passes than a cold start */
+    ck_assert_msg(fabs(got.largest / sync.largest - 1) < 1.25e-4, "warm %.17g, synchronous %.17g", got.largest,
+                  sync.largest);
+    sw_spectrum_job_free(&job);
+    free(y);
+    sw_truth_free(&tr);
+    /* against theory at rest */
+    const double n = 2000, k = par("chain", p, "k"), m = par("chain", p, "m");
+    sc = params("chain", p, (const char *const[]){ "n=2000", "pluck=0", NULL });
+    ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+    double lam = 4 * k / m * pow(sin(n * M_PI / (2 * (n + 1))), 2);
+    ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, tr.sys.y, &sync), 0);
+    ck_assert_msg(fabs(sync.largest * sync.largest / lam - 1) < 2.5e-4, "|lambda| %.17g, theory %.17g",
+                  sync.largest * sync.largest, lam);
+    sw_truth_free(&tr);
+}
+END_TEST
+
+/* The live meter on a large chain: while the job runs it reads nothing
+ * (and says it is working), a fixed number of calls later it reads the
+ * spectrum the synchronous computation gives at the state the job began
+ * with, and no call was slower for the size: the passes per call are
+ * fixed by n, not by the clock. */
+START_TEST(meter_on_a_large_chain_in_slices)
+{
+    sw_app a;
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = params("chain", p, (const char *const[]){ "n=2000", NULL });
+    ck_assert_int_eq(sw_app_init(&a, sc, p, sw_integrator_find("rk4"), 0.001, err, sizeof err), SW_OK);
+    sw_app_meter m;
+    ck_assert_int_eq(sw_app_stability(&a, &m), 0);
+    ck_assert_int_eq(sw_app_meter_pending(&a), 1);
+    ck_assert_int_eq(sw_app_meter_settle(&a, 1), 0); /* one slice is not all of it */
+    ck_assert_int_eq(sw_app_meter_settle(&a, 1000), 1);
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    sw_spectrum sync;
+    ck_assert_int_eq(sw_truth_spectrum(&a.truth.sys, 0.0, a.truth.sys.y, &sync), 0);
+    ck_assert_msg(m.stiff == sync.largest, "meter %.17g, synchronous %.17g", m.stiff, sync.largest);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* The error norm, as a plain loop computes it: the largest |y_i - truth_i|,
+ * NaN when any difference is NaN (wherever it is: each of the four running
+ * maxima, and the tail past the last multiple of four), an infinite
+ * difference infinite. Exact: a maximum is the same in any order. */
+START_TEST(error_norm_matches_plain_loop)
+{
+    enum { DIM = 23 };
+    double y[DIM], t[DIM];
+    for (int i = 0; i < DIM; i++) {
+        y[i] = sin(1.7 * i) * (i + 1);
+        t[i] = cos(0.3 * i);
+    }
+    double want = 0;
+    for (int i = 0; i < DIM; i++)
+        want = fmax(want, fabs(y[i] - t[i]));
+    for (int len = 0; len <= DIM; len++) {
+        double w = 0;
+        for (int i = 0; i < len; i++)
+            w = fmax(w, fabs(y[i] - t[i]));
+        ck_assert_double_eq(sw_truth_error(len, y, t), w);
+    }
+    ck_assert_double_eq(sw_truth_error(DIM, y, t), want);
+    for (int at = 0; at < DIM; at++) {
+        double keep = y[at];
+        y[at] = NAN;
+        ck_assert_msg(isnan(sw_truth_error(DIM, y, t)), "NaN at %d not seen", at);
+        y[at] = INFINITY;
+        ck_assert_msg(isinf(sw_truth_error(DIM, y, t)), "infinity at %d not seen", at);
+        y[at] = keep;
+    }
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -391,6 +519,9 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, drift_against_the_motion);
     tcase_add_test(tc, no_order_from_growth);
     tcase_add_test(tc, free_modes_left_out);
+    tcase_add_test(tc, spectrum_job_matches_synchronous);
+    tcase_add_test(tc, meter_on_a_large_chain_in_slices);
+    tcase_add_test(tc, error_norm_matches_plain_loop);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -13,6 +13,7 @@
 
 #include "app/progress.h"
 #include "stepwise/base.h"
+#include "util/fds.h"
 #include "util/infile.h"
 #include "util/kv.h"
 #include "util/names.h"
@@ -347,6 +348,41 @@ START_TEST(progress)
 }
 END_TEST
 
+
+/* Each way of closing inherited descriptors, in a child: descriptors
+ * spread from 3 to 900 are open; after the call only 0-2 (below `from`)
+ * and the kept ones are. */
+START_TEST(close_fds)
+{
+    for (int way = 0; way <= 3; way++) {
+        pid_t pid = fork();
+        ck_assert_int_ge(pid, 0);
+        if (pid == 0) {
+            static const int spread[] = { 3, 4, 5, 7, 8, 40, 41, 300, 899, 900 };
+            for (size_t i = 0; i < sizeof spread / sizeof spread[0]; i++)
+                if (dup2(2, spread[i]) != spread[i])
+                    _exit(10);
+            int keep[] = { 41, 5, 900 };
+            if (way == 3)
+                sw_close_fds(4, keep, 3);
+            else if (sw_close_fds_by(way, 4, keep, 3) != 0)
+                _exit(11);
+            for (int fd = 3; fd <= 1000; fd++) { /* 0-2: whatever the runner left */
+                int open_now = fcntl(fd, F_GETFD) != -1;
+                int want = fd == 3 || fd == 5 || fd == 41 || fd == 900;
+                if (open_now != want)
+                    _exit(20 + fd % 200);
+            }
+            _exit(0);
+        }
+        int status;
+        ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+        ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "way %d: status %d", way,
+                      WEXITSTATUS(status));
+    }
+}
+END_TEST
+
 Suite *make_util_suite(void);
 Suite *make_util_suite(void)
 {
@@ -362,6 +398,7 @@ Suite *make_util_suite(void)
     tcase_add_test(tc, outfile_devices);
     tcase_add_test(tc, infile_never_blocks);
     tcase_add_test(tc, progress);
+    tcase_add_test(tc, close_fds);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/stages.h"
 #include "measure/bench.h"
 #include "stepwise/stepwise.h"
 
@@ -94,6 +95,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     memset(a, 0, sizeof *a);
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
+    a->epoch++; /* a new picture */
     a->dt = dt > 0 ? dt : sc->dt;
     a->speed = 1.0;
     a->slowmo = 1.0;
@@ -112,6 +114,7 @@ void sw_app_free(sw_app *a)
     sw_app_record_stop(a);
     free_bench(a);
     free_sims(a);
+    sw_stages_free(&a->stages);
     a->scene = NULL;
     sw_app_truth_reset(a); /* frees it */
 }
@@ -120,6 +123,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
 {
     sw_app_record_stop(a); /* a trace describes one run */
     free_bench(a);         /* the sweep was for the old parameters */
+    sw_app_stages_close(a);
     const sw_integrator *m = a->sims[0].method;
     const sw_scene *old_scene = a->scene;
     double old_p[SW_MAX_PARAMS], old_dt = a->dt;
@@ -127,6 +131,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
     free_sims(a);
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
+    a->epoch++; /* a new picture */
     if (sc != old_scene)
         a->dt = sc->dt;
     int rc = build(a, m, err, errlen);
@@ -259,10 +264,32 @@ void sw_app_reset(sw_app *a)
     }
     a->t_goal = 0;
     a->slowmo = 1.0;
+    a->epoch++;
     for (int i = 0; i < SW_APP_SIMS; i++)
         sw_series_clear(&a->series[i]);
     sw_app_phase_clear(a);
     sw_app_watch_restart(a);
+}
+
+/* A key changed dt or the method mid-run: the run starts again at t = 0,
+ * so what is on screen (err, energy, the picture) is this dt's and this
+ * method's alone, never an error carried over from the steps before. */
+static void restart_run(sw_app *a)
+{
+    if (!(a->sims[0].t > 0))
+        return;
+    sw_app_reset(a);
+    /* first, so that a long message cut at the screen's third line keeps it */
+    static const char lead[] = "restarted at t = 0; ";
+    char said[sizeof a->message];
+    size_t keep = strlen(a->message), room = sizeof a->message - sizeof lead;
+    keep = keep < room ? keep : room;
+    memcpy(said, a->message, keep);
+    memcpy(a->message, lead, sizeof lead - 1);
+    memcpy(a->message + sizeof lead - 1, said, keep);
+    a->message[sizeof lead - 1 + keep] = '\0';
+    if (!keep)
+        a->message[sizeof lead - 3] = '\0'; /* nothing after it: no "; " */
 }
 
 static int method_index(const sw_integrator *m)
@@ -332,6 +359,8 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_PREV_METHOD: {
         const sw_integrator *before = a->sims[0].method;
         cycle_method(a, act == SW_ACT_NEXT_METHOD ? 1 : -1);
+        if (a->sims[0].method != before)
+            restart_run(a);
         return a->sims[0].method != before;
     }
     case SW_ACT_PICK_METHOD: {
@@ -341,7 +370,10 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
                      sw_integrator_count());
             return 0;
         }
-        return sw_app_set_method(a, m) == SW_OK;
+        if (sw_app_set_method(a, m) != SW_OK)
+            return 0;
+        restart_run(a);
+        return 1;
     }
     case SW_ACT_DT_DOUBLE:
     case SW_ACT_DT_HALVE: {
@@ -353,10 +385,19 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         if (sw_app_set_dt(a, dt) != SW_OK)
             return 0;
         sw_app_measure_dt_change(a, old);
+        restart_run(a);
         return 1;
     }
+    case SW_ACT_ERROR_KIND:
+        a->err_velocity = !a->err_velocity;
+        snprintf(a->message, sizeof a->message, "err is now the largest %s",
+                 a->err_velocity ? "velocity error, in m/s (m: positions again)"
+                                 : "position error, in metres (m: velocities)");
+        return 1;
     case SW_ACT_PAUSE:
         a->paused = !a->paused;
+        if (!a->paused)
+            sw_app_stages_close(a); /* the stage view shows a paused run */
         snprintf(a->message, sizeof a->message, "%s", a->paused ? "paused" : "running");
         return 1;
     case SW_ACT_STEP: {
@@ -477,6 +518,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
                  : a->workprec == 2 ? "work-precision: error against wall time (w closes)" : "work-precision plot closed");
         return 1;
     }
+    case SW_ACT_STAGES:
+    case SW_ACT_STAGES_CLOSE:
+        return sw_app_stages_apply(a, act);
     case SW_ACT_HELP:
         a->help++; /* the next page; the composer closes it after the last */
         return 1;

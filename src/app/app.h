@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "sim/history.h"
+#include "sim/stages.h"
 #include "sim/truth.h"
 #include "sim/watch.h"
 #include "lesson/controls.h"
@@ -33,6 +34,8 @@ typedef struct sw_app_meter {
     double dt, t;               /* what it was read for */
     double stiff;               /* largest |λ| of the linearisation now */
     double limit;               /* largest stable dt in theory here: 0 none */
+    double limit_undamped;      /* the same with every oscillating mode's damping taken away
+                                   (what a lesson's closed form gives): 0 when no mode is damped */
     int unbounded;              /* ... no limit up to SW_DT_MAX */
     double growth;              /* ρ: growth per step of the worst mode at dt */
     int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
@@ -76,6 +79,9 @@ typedef struct sw_app {
     int nsims;                  /* 1, or 3 with compare on */
     const sw_integrator *compare_methods[SW_APP_SIMS - 1];
     int compare_one;            /* compare runs compare_methods[0] alone beside the main run */
+    unsigned epoch;             /* counts fresh starts (reset, new scene, a lesson page): the picture
+                                   forgets its trails when it changes */
+    int err_velocity;           /* the status line's error: 0 positions (m), 1 velocities (m/s) */
     int compare, ghost, trails, graph, braille, panel, help, paused;
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
@@ -112,14 +118,18 @@ typedef struct sw_app {
     double spec_t;              /* time spec was taken at */
     sw_app_meter meter;         /* the last reading */
     sw_truth_work *meter_work;  /* the meter's reusable workspace (allocates nothing per frame) */
+    sw_spectrum_job spec_job;   /* a large system's spectrum, a slice per call (meter.c) */
     /* the main run watched for growth of its motion's energy, since the
      * last reset or change of method or dt (relative to its value then) */
     sw_watch watch;
     double watch_m0;
     /* the picture (app/view.c): which view, the camera, compare's layout */
     sw_app_view view;
+    unsigned view_gen;          /* changes when a view is chosen or a page entered: the region view fits its scale anew */
     int follow;                 /* 1: the camera follows the particles; 0: fixed on the scene's view */
     double zoom;                /* the view's spans times this (1: the scene's natural view) */
+    int have_box;               /* 1: the camera shows box (a page's @view box=), not the scene's view */
+    sw_view box;
     int lanes;                  /* compare: each method in its own lane */
     int phase_particle;         /* the phase view's particle and coordinate */
     sw_phase_coord phase_coord;
@@ -127,6 +137,11 @@ typedef struct sw_app {
     /* time under the student's control (app/timeline.c) */
     double until;               /* the stop time (play --until, a page's @until): 0 none */
     sw_history hist[SW_APP_SIMS]; /* each sim's recent states, for stepping back */
+    /* the stage view (app/stages.c): one step of the main run, stage by stage */
+    int stages_open;            /* 1 while shown (the run is paused) */
+    int stage_shown;            /* 1..: how far through the step's script */
+    sw_stages stages;           /* the step recorded (re-recorded when the run moved) */
+    char stages_why[160];       /* why the method's stages are not drawn, or "" */
 } sw_app;
 
 
@@ -228,11 +243,26 @@ void sw_app_watch_feed(sw_app *a);
  * the spectrum is refreshed as the state moves, twenty times per report
  * time). Returns m->ok. */
 int sw_app_stability(sw_app *a, sw_app_meter *m);
+/* (meter.c) Take the spectrum again when due, or run its job on by one
+ * slice (a fixed number of passes for the system's size); the meter keeps
+ * the last spectrum until the job is done. */
+void sw_app_meter_refresh(sw_app *a);
+/* (meter.c) 1 while a spectrum job is under way. */
+int sw_app_meter_pending(const sw_app *a);
+/* (meter.c) Run the spectrum job on, up to `calls` slices, until it is
+ * done; 1 when no job is under way. */
+int sw_app_meter_settle(sw_app *a, long calls);
 /* The state the ghost shows now (exact, or the reference run advanced to
  * the main sim's time), or NULL when there is neither. */
 const double *sw_app_ghost(sw_app *a);
-/* The error of sim i now: against the exact solution or the reference. */
+/* The error of sim i now against the exact solution or the reference, in
+ * metres: the largest distance of a position coordinate from the truth's
+ * (with err_velocity set: of a velocity, in m/s; NaN for a flow). NaN when
+ * there is no truth or the run blew up. */
 double sw_app_error(sw_app *a, int i);
+/* (measure.c) The error of state y against truth for system sys: positions
+ * (velocity 0) or velocities (1; NaN for a flow, which has none). */
+double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity);
 /* A field of a status line: its full and brief forms and how much it
  * matters (higher is kept longer when the line must shrink). */
 typedef struct sw_field {
@@ -243,6 +273,14 @@ typedef struct sw_field {
 #define SW_STATUS_FIELDS 12
 /* (status.c) The fields of sim i's status line; returns how many. */
 int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
+/* (status.c) The meter's line as fields (stiffness·dt against its limit,
+ * the growth per step and its one word); *warn set when it should stand out. */
+int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
+/* (status.c) The growth per step rho as text "×1.000000" into num, with as
+ * many digits as it takes for the printed number to agree with the word
+ * returned ("grows", "grows, too slowly to see", "decays", "neutral"):
+ * grows is the meter's visible growth, slow its invisible growth. */
+const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */
 void sw_app_status(sw_app *a, int i, char *buf, size_t len);

@@ -29,6 +29,7 @@ void sw_app_truth_reset(sw_app *a)
     a->truth_report = NULL;
     char err[SW_ERRLEN];
     a->truth_live = 0;
+    sw_spectrum_job_free(&a->spec_job); /* its blocks were in the old truth's system */
     if (!a->scene) { /* the app is being freed */
         sw_truth_work_free(a->meter_work);
         a->meter_work = NULL;
@@ -65,11 +66,20 @@ const double *sw_app_ghost(sw_app *a)
     return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
+double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
+{
+    const sw_ode *ode = sys->ode;
+    if (ode->order != 2) /* a flow's state is positions alone */
+        return velocity ? NAN : sw_truth_error(ode->dim, y, truth);
+    int half = ode->dim / 2; /* y = [x | v] */
+    return velocity ? sw_truth_error(half, y + half, truth + half) : sw_truth_error(half, y, truth);
+}
+
 double sw_app_error(sw_app *a, int i)
 {
     const sw_sim *s = &a->sims[i];
     const double *g = s->blown || !a->have_truth || !a->truth_live ? NULL : sw_truth_at(&a->truth, s->t);
-    return g ? sw_truth_error(s->sys.ode->dim, s->sys.y, g) : NAN;
+    return g ? sw_app_state_error(&s->sys, s->sys.y, g, a->err_velocity) : NAN;
 }
 
 /* The true state at the sample times to the report time (one reference
@@ -102,9 +112,11 @@ static double report_scale(sw_app *a)
 {
     const double *want = truth_report(a);
     size_t dim = (size_t)a->sims[0].sys.ode->dim;
+    size_t npos = a->sims[0].sys.ode->order == 2 ? dim / 2 : dim; /* positions: y = [x | v] */
     double scale = 1e-300;
-    for (size_t k = 0; want && k < SW_TRUTH_SAMPLES * dim; k++)
-        scale = fmax(scale, fabs(want[k]));
+    for (size_t j = 0; want && j < SW_TRUTH_SAMPLES; j++)
+        for (size_t k = 0; k < npos; k++)
+            scale = fmax(scale, fabs(want[j * dim + k]));
     return scale;
 }
 
@@ -132,7 +144,7 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
                 e = NAN;
                 break;
             }
-            double ej = sw_truth_error(dim, s.sys.y, want + (size_t)(j - 1) * (size_t)dim);
+            double ej = sw_app_state_error(&s.sys, s.sys.y, want + (size_t)(j - 1) * (size_t)dim, 0);
             if (!(ej <= e))
                 e = ej;
         }
@@ -145,7 +157,10 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
 static const sw_spectrum *spectrum0(sw_app *a)
 {
     if (!a->have_spec0 && a->have_truth && a->meter_work)
+    {
         a->have_spec0 = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
+        a->spec_job.active = 0; /* that assembled the truth's Jacobian at the start: the job starts again */
+    }
     return a->have_spec0 ? &a->spec0 : NULL;
 }
 
@@ -157,6 +172,11 @@ static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *r
     *rho = sp ? sw_truth_growth_with(a->meter_work, m, sp, dt, NULL) : NAN;
     return pow(*rho, a->scene->duration / dt);
 }
+
+/* A symplectic method's large position error is mostly phase: it keeps
+ * the energy and the path's shape, and runs ahead of or behind the truth
+ * along it (lesson 8). */
+#define PHASE_NOTE ". Symplectic: energy and path kept, the error is phase"
 
 void sw_app_measure_dt_change(sw_app *a, double old_dt)
 {
@@ -173,7 +193,7 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     double ratio = big / small, T = a->scene->duration;
     a->error_ratio = NAN;
     if (!isfinite(ratio) || !(small > 0)) {
-        char why[SW_ERRLEN];
+        char why[SW_ERRLEN], truth_why[SW_ERRLEN];
         double dim = a->sims[0].sys.ode->dim, cost = dim * (T / fmin(old_dt, a->dt)) * (m->evals > 0 ? m->evals : 1);
         if (a->have_truth && a->truth_cost > SW_WORK_KEY)
             snprintf(why, sizeof why, "no error measured: the reference to t=%.3g would cost %.2g state "
@@ -183,7 +203,7 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
                      "over the %.0e a key press may spend", T, cost, MEASURE_BUDGET);
         else if (isnan(e_new) || isnan(e_old))
             snprintf(why, sizeof why, "no error to compare (%s)",
-                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, why, sizeof why));
+                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, truth_why, sizeof truth_why));
         else
             snprintf(why, sizeof why, "the error is zero at one step: no ratio");
         snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt, why);
@@ -195,23 +215,35 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
      * once more gives the same ratio (within 0.15 in its base-2 logarithm;
      * Euler's amplitude error on an oscillator, e^(ω²ΔtT/2) - 1, is not yet
      * proportional to Δt while the exponent is near 1). */
+    if (m->flags & SW_ADAPTIVE) {
+        /* dt only caps the steps: the error follows rtol and atol */
+        snprintf(a->message, sizeof a->message, "dt=%g, the largest step %s may take: position error %.3g m to "
+                 "t=%.3g (%.3g m at dt=%g); the tolerances set the error, not dt, so no order", a->dt, m->name,
+                 e_new, T, e_old, old_dt);
+        return;
+    }
     double rho, grow = run_growth(a, m, big_dt, &rho);
     double scale = report_scale(a);
     char head[160];
-    snprintf(head, sizeof head, "dt=%g: error %.3g to t=%.3g (was %.3g at dt=%g), ratio %.3g", a->dt, e_new, T,
-             e_old, old_dt, ratio);
+    snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (%.3g m at dt=%g), ratio %.3g",
+             a->dt, e_new, T, e_old, old_dt, ratio);
     if (grow > 2) {
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
                  "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
     } else if (big > 0.5 * scale) {
-        snprintf(a->message, sizeof a->message, "%s: not an order yet - the error is %.0f%% of the motion; "
-                 "halve dt again", head, 100 * big / scale);
+        /* an order shows only where the error is small: say which way that is */
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s%s",
+                 head, big_dt, 100 * big / scale,
+                 a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
+                 (m->flags & SW_SYMPLECTIC) ? PHASE_NOTE : "");
     } else {
         double small_dt = fmin(old_dt, a->dt), e_next = sw_app_measure(a, m, 0.5 * small_dt);
         double next = small / e_next;
         if (isfinite(next) && e_next > 0 && fabs(log2(ratio) - log2(next)) > 0.15) {
             snprintf(a->message, sizeof a->message, "%s: not an order yet - at dt=%g the ratio is %.3g, still "
-                     "changing; halve dt again", head, 0.5 * small_dt, next);
+                     "changing%s%s", head, 0.5 * small_dt, next,
+                     a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
+                     (m->flags & SW_SYMPLECTIC) && big > 0.05 * scale ? PHASE_NOTE : "");
         } else {
             a->error_ratio = ratio;
             snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));
@@ -219,17 +251,34 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     }
 }
 
-/* Refresh the spectrum as the state moves: twenty times per report time,
- * or on a reset (time went back). */
-static void refresh_spectrum(sw_app *a)
+/* The limit with the damping of every oscillating mode taken away (λ, μ =
+ * ±i|λ|): what a lesson's closed form for the undamped oscillator gives
+ * (RK4's 2√2). 0 when no mode is damped or it rounds to the same 3 digits
+ * as the limit shown. */
+static double undamped_limit(sw_app *a, const sw_integrator *m, double limit)
 {
-    const sw_sim *s = &a->sims[0];
-    double every = a->scene->duration / 20;
-    if (a->have_spec && s->t >= a->spec_t && s->t - a->spec_t < every)
-        return;
-    a->have_spec = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, s->t, s->sys.y, &a->spec) == 0;
-    a->spec_t = s->t;
-    a->meter.method = NULL; /* read again */
+    static sw_spectrum sp; /* large: kept off the stack; the app is single-threaded */
+    sp = a->spec;
+    int damped = 0;
+    for (int k = 0; k < sp.n; k++) {
+        sw_mode *md = &sp.mode[k];
+        if (md->im == 0 || md->re == 0)
+            continue;
+        double w = hypot(md->re, md->im); /* |λ| kept: the same stiffness, no damping */
+        md->pre = 0; /* μ is λ's conjugate */
+        md->pim = md->im > 0 ? -w : w;
+        md->re = 0;
+        md->im = md->im > 0 ? w : -w;
+        damped = 1;
+    }
+    if (!damped || !(limit > 0))
+        return 0;
+    int unbounded;
+    double u = sw_truth_limit_with(a->meter_work, m, &sp, SW_DT_MAX, &unbounded);
+    char shown[32], und[32];
+    snprintf(shown, sizeof shown, "%.3g", a->spec.largest * limit);
+    snprintf(und, sizeof und, "%.3g", sp.largest * u);
+    return unbounded || !(u > 0) || strcmp(shown, und) == 0 ? 0 : u;
 }
 
 int sw_app_stability(sw_app *a, sw_app_meter *out)
@@ -241,7 +290,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
         *out = *m;
         return 0;
     }
-    refresh_spectrum(a);
+    sw_app_meter_refresh(a);
     if (m->method != s->method || m->dt != a->dt) {
         memset(m, 0, sizeof *m);
         m->method = s->method;
@@ -256,6 +305,7 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
             m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
             m->limit = sw_truth_limit_with(a->meter_work, s->method, &a->spec, SW_DT_MAX, &m->unbounded);
+            m->limit_undamped = undamped_limit(a, s->method, m->limit);
             m->ok = isfinite(m->growth);
         }
     }

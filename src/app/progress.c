@@ -238,3 +238,13 @@ int sw_progress_set(const char *file, int done, char *err, size_t errlen)
     close(fd); /* releases the lock */
     return rc;
 }
+
+int sw_progress_next(const sw_lesson_entry *e, int n, int from)
+{
+    for (int k = 0; k < n; k++) {
+        int i = ((from % n) + n + k) % n;
+        if (e[i].title && sw_progress_get(e[i].file) < e[i].npages)
+            return i;
+    }
+    return -1;
+}

@@ -24,4 +24,10 @@ int sw_progress_readable(char *err, size_t errlen);
  * made. 0, or SW_EIO with err naming the directory and why. */
 int sw_progress_check(char *err, size_t errlen);
 
+struct sw_lesson_entry;
+/* The first of the n lessons e (the menu's order) not finished, looking from
+ * index from on and wrapping round; -1 when every one is done (a lesson that
+ * cannot be read is skipped). */
+int sw_progress_next(const struct sw_lesson_entry *e, int n, int from);
+
 #endif

@@ -42,11 +42,13 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     const sw_lesson_page *pg = &r->lesson.pages[page];
     char err[SW_ERRLEN];
     a->locked = 0;
+    a->view_gen++; /* a page's pictures are scaled for it (the region view's fixed scale) */
     if (pg->scene != a->scene) {
         /* a new scene starts in its own picture: the scene view, its natural size */
         sw_app_set_view(a, SW_VIEW_SCENE);
         a->zoom = 1;
         a->follow = 0;
+        a->have_box = 0;
     }
     if (pg->restart || pg->scene != a->scene || memcmp(pg->p, a->p, sizeof pg->p) != 0) {
         if (sw_app_set_scene(a, pg->scene, pg->p, err, sizeof err) != SW_OK)
@@ -57,6 +59,15 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
+    /* A page starts clean unless it says otherwise: no run left blown up by
+     * the page before, no view or plot of its (the region view, the
+     * work-precision plot cover the scene), no trails (the epoch). */
+    if (a->sims[0].blown || (a->nsims > 1 && (a->sims[1].blown || (a->nsims > 2 && a->sims[2].blown))))
+        sw_app_reset(a);
+    if (pg->view < 0 && a->view != SW_VIEW_SCENE)
+        sw_app_set_view(a, SW_VIEW_SCENE);
+    a->workprec = 0;
+    a->epoch++;
     if (pg->compare >= 0 && pg->ncompare_with > 0)
         sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);
     else if (pg->compare >= 0)
@@ -81,6 +92,10 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         a->graph = pg->graph;
     if (pg->zoom > 0)
         a->zoom = pg->zoom;
+    if (pg->has_box) {
+        a->box = (sw_view){ pg->box[0], pg->box[2], pg->box[1], pg->box[3] };
+        a->have_box = 1;
+    }
     sw_app_set_until(a, pg->until); /* a page's own stop time, or none */
     a->locked = pg->locked;
     a->panel = a->help = 0;
@@ -108,7 +123,7 @@ int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *e
     if (r->done > r->lesson.npages)
         r->done = r->lesson.npages;
     for (int i = 0; i < r->done; i++)
-        r->complete[i] = 1;
+        r->before[i] = 1; /* goals fresh (not ticked from last time); n skips the page */
     if (page < 0)
         page = r->done < r->lesson.npages ? r->done : 0;
     const sw_lesson_page *first = &r->lesson.pages[page < r->lesson.npages ? page : 0];
@@ -174,7 +189,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
-        if (!r->complete[r->page]) {
+        if (!r->complete[r->page] && !r->before[r->page]) {
             snprintf(a->message, sizeof a->message, "this page's goals are not met yet (h shows a hint)");
         } else if (r->page + 1 < r->lesson.npages) {
             sw_runner_enter(r, a, r->page + 1);
@@ -188,6 +203,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         return 1;
     case SW_ACT_HINT:
         r->hint = !r->hint;
+        r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
@@ -280,7 +296,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     r->side.width = width;
     r->side.scroll = &r->scroll;
     r->side.question_open = pg->question.text && !r->answered[r->page];
-    r->side.notice = !r->complete[r->page] ? NULL
+    r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
     /* the lesson's title and the page: "(page 2/6)" when the line has room,
      * else "(2/6)", which has no space to be broken at */
@@ -339,6 +355,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->hint) {
         const char *h = unmet ? unmet->hint : (q->text && !r->answered[r->page]) ? q->hint : NULL;
         add_line(r, SW_SIDE_TEXT, "");
+        if (r->hint_scroll)
+            r->scroll = r->side.nlines; /* the composer clamps it to the pane's end */
+        r->hint_scroll = 0;
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
         add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }
@@ -346,6 +365,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     if (r->complete[r->page])
         add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
+    else if (r->before[r->page])
+        add_wrapped(r, SW_SIDE_DIM, "Done in an earlier session: the goals start fresh; n skips ahead.",
+                    width - 1);
     else
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;

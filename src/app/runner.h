@@ -19,9 +19,12 @@ typedef struct sw_runner {
     int done;                  /* pages completed so far (saved) */
     unsigned char complete[SW_LESSON_MAX_PAGES];
     unsigned char answered[SW_LESSON_MAX_PAGES];
+    unsigned char before[SW_LESSON_MAX_PAGES]; /* completed in an earlier session: its goals
+                                                  start fresh, but n may skip it */
     const char *feedback;      /* last answer's feedback */
     int feedback_ok;
     int hint;                  /* 1: show the hint of the first goal not met */
+    int hint_scroll;           /* 1: the hint was just asked for: scroll the pane to it */
     int finished;              /* the last page is complete */
     int scroll;                /* first line of the text pane shown */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];

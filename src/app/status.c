@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "stepwise/stepwise.h"
@@ -54,8 +55,18 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
     }
     double err = sw_app_error(a, i);
     if (isfinite(err) && (x = add(f, &n, max, 6))) {
-        snprintf(x->full, sizeof x->full, "error %.2e", err);
-        snprintf(x->brief, sizeof x->brief, "err %.1e", err);
+        /* against the truth at this time; the run restarts when dt or the
+         * method changes, so it is this run's error alone */
+        const char *what = a->err_velocity ? "velocity error" : "position error";
+        const char *unit = a->err_velocity ? "m/s" : "m";
+        snprintf(x->full, sizeof x->full, "%s %.3g %s", what, err, unit);
+        snprintf(x->brief, sizeof x->brief, "%s %.2g %s", a->err_velocity ? "v err" : "err", err, unit);
+    }
+    double inv = s->blown ? NAN : sw_sim_drift(s);
+    if (isfinite(inv) && a->scene->drift_name && (x = add(f, &n, max, 6))) {
+        /* what a page's `drift` goal reads: the scene names it */
+        snprintf(x->full, sizeof x->full, "%s %.2g", a->scene->drift_name, inv);
+        snprintf(x->brief, sizeof x->brief, "drift %.1g", inv);
     }
     if ((s->method->flags & SW_ADAPTIVE) && (x = add(f, &n, max, 4))) {
         long acc, rej;
@@ -85,4 +96,73 @@ void sw_app_status(sw_app *a, int i, char *buf, size_t len)
         used = (size_t)snprintf(buf, len, "  vs");
     for (int k = 0; k < n && used < len; k++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? "  " : "", f[k].full);
+}
+
+const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len)
+{
+    const char *word = grows ? "grows" : slow ? "grows, too slowly to see"
+                     : rho < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
+    int above = grows || slow, below = !above && rho < 1 - SW_TRUTH_NEUTRAL;
+    /* the word is decided from rho; the digits follow it, so the number
+     * printed is never 1.000000 beside "grows" or "decays" */
+    for (int digits = 6; digits <= 15; digits++) {
+        snprintf(num, len, "×%.*f", digits, rho);
+        double shown = strtod(num + strlen("×"), NULL);
+        if ((above && shown > 1) || (below && shown < 1) || (!above && !below && shown == 1) || !isfinite(rho))
+            break;
+    }
+    return word;
+}
+
+int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
+{
+    sw_app_meter m;
+    int n = 0;
+    sw_field *x;
+    *warn = 0;
+    if (!sw_app_stability(a, &m)) {
+        if ((a->sims[0].method->flags & SW_ADAPTIVE) && (x = add(f, &n, max, 8))) {
+            snprintf(x->full, sizeof x->full, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
+            snprintf(x->brief, sizeof x->brief, "adaptive steps");
+        } else if (!(a->sims[0].method->flags & SW_ADAPTIVE) && sw_app_meter_pending(a) && (x = add(f, &n, max, 8))) {
+            snprintf(x->full, sizeof x->full, "stability: finding the stiffest mode");
+            snprintf(x->brief, sizeof x->brief, "finding the stiffest mode");
+        }
+        return n;
+    }
+    /* stiffness·dt is |λ|·Δt, the stiffest mode's rate times the step: a
+     * pure number, never a second time step */
+    int bounded = !m.unbounded && m.limit > 0;
+    if ((x = add(f, &n, max, 7))) {
+        if (bounded) {
+            snprintf(x->full, sizeof x->full, "stiffness·dt %.3g of limit %.3g", m.stiff * a->dt, m.stiff * m.limit);
+        } else
+            snprintf(x->full, sizeof x->full, "stiffness·dt %.3g, %s", m.stiff * a->dt,
+                     m.unbounded ? "stable at any dt" : "no stable dt");
+    }
+    if (bounded && m.limit_undamped > 0 && (x = add(f, &n, max, 3))) {
+        snprintf(x->full, sizeof x->full, "(limit with this damping; %.3g undamped)", m.stiff * m.limit_undamped);
+        snprintf(x->brief, sizeof x->brief, "(%.3g undamped)", m.stiff * m.limit_undamped);
+    }
+    if (bounded && (x = add(f, &n, max, 2))) {
+        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
+        x->full[0] = '[';
+        for (int i = 0; i < 10; i++)
+            x->full[i + 1] = i < fill ? '#' : '.';
+        x->full[11] = ']';
+        x->full[12] = '\0';
+    }
+    if ((x = add(f, &n, max, 9))) {
+        char num[40];
+        const char *word = sw_app_growth_text(m.growth, m.grows, m.slow, num, sizeof num);
+        snprintf(x->full, sizeof x->full, "growth %s per step: %s", num, m.grows ? "GROWS" : word);
+        snprintf(x->brief, sizeof x->brief, "growth %s/step %s", num, m.grows ? "GROWS" : m.slow ? "grows slowly" : word);
+    }
+    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
+    if (run_grows && !m.grows && (x = add(f, &n, max, 6))) {
+        snprintf(x->full, sizeof x->full, "but the run's energy grows: nonlinear");
+        snprintf(x->brief, sizeof x->brief, "but the run grows");
+    }
+    *warn = m.grows || run_grows || (bounded && a->dt > 0.9 * m.limit);
+    return n;
 }

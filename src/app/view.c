@@ -54,6 +54,8 @@ void sw_app_set_view(sw_app *a, sw_app_view v)
 {
     if (v == SW_VIEW_PHASE && a->view != SW_VIEW_PHASE)
         sw_app_phase_clear(a); /* the reference path starts now, with the others */
+    if (v != a->view)
+        a->view_gen++;
     a->view = v;
 }
 

@@ -23,7 +23,7 @@ static const char usage_text[] =
     "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
     "runs the scene to its report time over a geometric sweep of step sizes (from 8x the\n"
     "scene's dt, or twice the method's stability limit when the scene knows w, halving;\n"
-    "rk45 and dop853 sweep the tolerance 1e-2, 1e-3, ...) and records the largest absolute\n"
+    "adaptive methods sweep the tolerance 1e-2, 1e-3, ...) and records the largest absolute\n"
     "state error at 16 times spread to the report time (one time can be special: a whole\n"
     "number of periods), the derivative evaluations, the wall time (median of repeats)\n"
     "and blow-ups. A sweep goes on until 4 points agree and the error is below 1e-6 of\n"
@@ -263,17 +263,20 @@ static void list_inapplicable(const sw_scene *sc, const double *p, const sw_inte
     if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
         return;
     const sw_integrator *refused[SW_BENCH_MAX_METHODS + 64];
-    int nrefused = 0, count = n ? n : sw_integrator_count();
+    int nrefused = 0, count = n ? n : sw_integrator_count(), implicit = 0, explicit = 0;
     for (int i = 0; i < count && nrefused < (int)(sizeof refused / sizeof refused[0]); i++) {
         const sw_integrator *m = n ? wanted[i] : sw_integrator_at(i);
-        if (sw_integrator_accepts(m, sys.ode, err, sizeof err) != SW_OK)
+        if (sw_integrator_accepts(m, sys.ode, err, sizeof err) != SW_OK) {
             refused[nrefused++] = m;
+            *((m->flags & SW_IMPLICIT) ? &implicit : &explicit) = 1;
+        }
     }
     size_t used = sw_names_join(buf, len, method_name_at, refused, nrefused);
     if (used > 0 && used < len)
         snprintf(buf + used, len - used, " (%s)", sys.kind == SW_SYS_FLOW
                  ? "a flow field has no masses, or no Jacobian for implicit methods"
-                 : "no Jacobian at this size");
+                 : implicit && explicit ? "no Jacobian at this size; rkn: a force reads velocities"
+                 : implicit ? "no Jacobian at this size" : "a force reads velocities: x'' = f(x) only");
     sw_system_free(&sys);
 }
 

@@ -10,6 +10,7 @@
 #include "grade/assignment.h"
 #include "grade/points.h"
 #include "grade/roster.h"
+#include "grade/verdict.h"
 #include "plugin/sandbox.h"
 #include "trace/trace.h"
 
@@ -147,5 +148,38 @@ int grade_similar_run(grade_list *l);
  * report per student at the end, each whole. */
 int grade_feedback_check(const grade_list *l, const char *dir);
 int grade_feedback_write(const grade_list *l, const char *dir);
+
+/* What a submission's child sends back: this, then report_len bytes, then
+ * nwrong grade_wrong_row (--similarity). */
+typedef struct grade_record {
+    int status;
+    long failing_step;
+    char student[SW_TRACE_STUDENT_MAX];
+    char notes[SW_TRACE_NOTES_MAX];
+    char kind[24];
+    char message[1200];
+    sw_score score;
+    unsigned report_len;
+    unsigned nwrong;
+} grade_record;
+
+typedef struct grade_job {
+    const char *path;
+    int plugin;
+    const char *build_dir;
+    int index;
+    const sw_check_request *base;
+    size_t report_max;
+    grade_list *list;        /* the class so far: wiped in the worker */
+    int similarity;          /* send a failing trace's wrong rows */
+    const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
+} grade_job;
+
+/* grade_worker.c: a submission's worker, the child that checks it (an
+ * sw_child_fn, ctx a grade_job) and sends back a grade_record. */
+int grade_worker(void *ctx, int in, int out);
+/* Every check of the assignment at 0 points, for a submission that could
+ * not be checked, with why. */
+void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, const char *why);
 
 #endif

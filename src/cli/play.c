@@ -18,6 +18,9 @@
 #include "util/signals.h"
 #include "util/utf8.h"
 
+/* A live scene whose report time is below this many seconds starts paused. */
+#define PLAY_PAUSED_BELOW 3.0
+
 static const char play_help[] =
     "usage: stepwise play SCENE [OPTIONS]\n\n"
     "Runs SCENE live in the terminal; change the integrator and dt while it runs\n"
@@ -192,6 +195,13 @@ int sw_cmd_play(int argc, char **argv)
     sw_app_set_until(&a, until);
     if (until > 0)
         snprintf(a.message, sizeof a.message, "the run stops at t = %g (--until); u runs straight there", until);
+    if (!ascii && o.scene->duration < PLAY_PAUSED_BELOW && until <= 0) {
+        /* the whole motion (a projectile's flight) would be over before the
+         * window is drawn and read: it waits for space */
+        a.paused = 1;
+        snprintf(a.message, sizeof a.message, "paused: the motion lasts about %g s; space runs it, [ slows it, "
+                 ". steps", o.scene->duration);
+    }
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);
     sw_app_free(&a);
     return rc;

@@ -1,5 +1,6 @@
 /* The step-size controller of the embedded explicit Runge-Kutta pairs
- * (rk45, dop853): trial, error norm, accept or reject, next step. It copies
+ * (rk45, dop853, and the Nystrom pair rkn) and the Rosenbrock method (rodas4): trial, error
+ * norm, accept or reject, next step. It copies
  * nothing on an accepted step and allocates nothing. */
 #include "engine/adaptive.h"
 
@@ -46,7 +47,7 @@ static void run_trial(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double t
                       unsigned elim, sw_trial_sums *sums)
 {
     memset(sums, 0, sizeof *sums);
-    if (sw_ode_deriv_part(ode))
+    if (sw_ode_deriv_part(ode) && !m->coupled)
         for (int lo = 0; lo < ode->dim; lo += m->slice)
             m->trial(s, ode, t, y, h, lo, lo + m->slice < ode->dim ? lo + m->slice : ode->dim, elim, sums);
     else

@@ -1,5 +1,6 @@
 /* Private to the engine: the step-size controller shared by the embedded
- * explicit Runge-Kutta pairs (rk45.c, dop853.c). A method supplies a trial
+ * explicit Runge-Kutta pairs (rk45.c, dop853.c, rkn.c) and the Rosenbrock
+ * method (rosenbrock.c). A method supplies a trial
  * step over a range of the state; the controller runs it over the whole
  * state or slice by slice, accepts or rejects it, and proposes the next step.
  * Invariant: nothing is copied on an accepted step — the new state is
@@ -29,6 +30,7 @@ typedef struct sw_adaptive {
     sw_trial_fn *trial;
     int evals;         /* derivative evaluations per trial */
     int slice;         /* slice length on pointwise systems (even) */
+    int coupled;       /* the trial needs the whole state (a linear solve): never sliced */
     int fsal_other;    /* the FSAL derivative alternates between slot 0 and this one */
     int saved;         /* slot of the saved old state */
     double expo;       /* error ∝ h^(1/expo): proposed factor safety·err^(-expo) */

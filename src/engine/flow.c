@@ -85,10 +85,10 @@ static unsigned flow_rk4(void *ctx, double t, double *y, double h, unsigned elim
 /* The fast paths: slices always; the fused steps the field offers
  * (index: 1 Euler's, 2 RK4's). */
 static const struct sw_ode_fast fast_paths[4] = {
-    { flow_deriv_part, NULL, NULL },
-    { flow_deriv_part, flow_euler, NULL },
-    { flow_deriv_part, NULL, flow_rk4 },
-    { flow_deriv_part, flow_euler, flow_rk4 },
+    { flow_deriv_part, NULL, NULL, NULL },
+    { flow_deriv_part, flow_euler, NULL, NULL },
+    { flow_deriv_part, NULL, flow_rk4, NULL },
+    { flow_deriv_part, flow_euler, flow_rk4, NULL }, /* (first order: no position_only) */
 };
 
 int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, const void *params,

@@ -40,7 +40,7 @@ static void gravity_values(const sw_force *fo, char *buf, size_t len)
 }
 
 const swp_force_type swp_gravity = { "gravity", "f = m g", gravity_values, gravity_add, gravity_potential,
-                                     "gravity potential", "m g y", 0, no_pairs, gravity_blocks, NULL };
+                                     "gravity potential", "m g y", 0, no_pairs, gravity_blocks, NULL, NULL };
 
 static void drag_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -66,8 +66,10 @@ static void drag_values(const sw_force *fo, char *buf, size_t len)
     snprintf(buf, len, "k = %g", fo->k);
 }
 
+static int drag_uses_velocity(const sw_force *fo) { return fo->k != 0; }
+
 const swp_force_type swp_drag = { "drag", "f = -k v", drag_values, drag_add, NULL, NULL, NULL, 0, no_pairs,
-                                  drag_blocks, NULL };
+                                  drag_blocks, NULL, drag_uses_velocity };
 
 static void central_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -106,4 +108,4 @@ static void central_values(const sw_force *fo, char *buf, size_t len)
 
 const swp_force_type swp_central = { "central body", "f = -mu m d/|d|^3, d = x - centre", central_values,
                                      central_add, central_potential, "central potential", "- μ m/|x|", 0,
-                                     no_pairs, central_blocks, NULL };
+                                     no_pairs, central_blocks, NULL, NULL };

@@ -63,4 +63,4 @@ static void mutual_values(const sw_force *fo, char *buf, size_t len)
 
 const swp_force_type swp_mutual = { "mutual gravity", "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j",
                                     mutual_values, mutual_add, mutual_potential, "mutual gravity potential",
-                                    "- G m_i m_j/√(r² + ε²)", 0, mutual_pairs, mutual_blocks, NULL };
+                                    "- G m_i m_j/√(r² + ε²)", 0, mutual_pairs, mutual_blocks, NULL, NULL };

@@ -115,7 +115,17 @@ static void springs_values(const sw_force *fo, char *buf, size_t len)
              fo->nsprings == 1 ? ":" : ", the first:", sp ? sp->k : 0, sp ? sp->c : 0, sp ? sp->rest : 0);
 }
 
+/* Only a spring with damping (c != 0) reads the velocities. */
+static int springs_use_velocity(const sw_force *fo)
+{
+    for (int j = 0; j < fo->nsprings; j++)
+        if (fo->springs[j].c != 0)
+            return 1;
+    return 0;
+}
+
 const swp_force_type swp_springs = { "damped springs",
                                      "on a: f = -[k (|d| - rest) + c (v_a - v_b).d/|d|] d/|d|, d = x_a - x_b; b gets -f",
                                      springs_values, springs_add, springs_potential, "spring potential",
-                                     "½ k (|d| - rest)²", 1, springs_pairs, springs_blocks, NULL };
+                                     "½ k (|d| - rest)²", 1, springs_pairs, springs_blocks, NULL,
+                                     springs_use_velocity };

@@ -256,4 +256,4 @@ const swp_force_type swp_tree = { "mutual gravity (Barnes-Hut tree)",
                                   "at distance d from x_i counts as its mass at its centre of mass when s < theta d",
                                   tree_values, tree_add, tree_potential, "mutual gravity potential",
                                   "- G m_i m_j/√(r² + ε²)", 0, tree_pairs, tree_blocks,
-                                  tree_work_new };
+                                  tree_work_new, NULL };

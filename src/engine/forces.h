@@ -47,6 +47,10 @@ typedef struct swp_force_type {
      * freed by the system), or NULL when out of memory; NULL hook: it keeps
      * none. */
     void *(*work_new)(int n);
+    /* 1 when the force, with these parameters, depends on velocities (drag,
+     * a damped spring); NULL hook: it never does. Runge-Kutta-Nyström
+     * methods (rkn) refuse a system where one does. */
+    int (*uses_velocity)(const sw_force *fo);
 } swp_force_type;
 
 extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp_mutual, swp_tree;

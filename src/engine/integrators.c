@@ -1,6 +1,6 @@
 /* The integrator table and registry, and the stepper that runs one method
  * on one system. The methods themselves live one family per file
- * (explicit.c, implicit.c, rk45.c, dop853.c) and know nothing of particles: they see
+ * (explicit.c, implicit.c, rk45.c, dop853.c, rosenbrock.c) and know nothing of particles: they see
  * an sw_ode. Invariant: a step allocates nothing — every vector it touches
  * was handed out by sw_stepper_init. */
 #include "engine/stepper.h"
@@ -45,6 +45,15 @@ static const sw_integrator builtins[] = {
     { "yoshida4", "Yoshida 4th-order symplectic (triple-jump Verlet)", 4, 3,
       SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, 1.5734019474345401, 2, sw_step_yoshida4,
       "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1" },
+    /* x'' = f(x) only: refused where a force reads velocities (below). */
+    { "rkn", "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)", 6, 5,
+      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER, 0.0, 8, sw_step_rkn,
+      "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution" },
+    /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
+     * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
+     * six solves with one matrix (I - γh J). */
+    { "rodas4", "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", 4, 7, SW_IMPLICIT | SW_ADAPTIVE,
+      INFINITY, 12, sw_step_rodas4, "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -135,6 +144,11 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
         snprintf(err, errlen,
                  "'%s' updates velocities and positions separately and needs a system with "
                  "masses; this is a first-order flow field (use %s)", m->name, fit);
+        return SW_EINVAL;
+    }
+    if (m->step == sw_step_rkn && !sw_ode_position_only(ode)) {
+        snprintf(err, errlen, "'%s' solves x'' = f(x) and needs forces that ignore velocities; this system "
+                 "has drag or damped springs (set them to 0, or use dop853 or rk45)", m->name);
         return SW_EINVAL;
     }
     if ((m->flags & SW_IMPLICIT) && !ode->solve && ode->dim > SW_DENSE_MAX) {

@@ -1,6 +1,7 @@
 /* Private to the engine and the layers above it: what a system can offer
  * the built-in explicit methods beyond the lecture's solver view (sw_ode),
- * for speed only. Every fast path gives the generic method's numbers bit for
+ * for speed only (and one fact about it: whether its acceleration ignores
+ * velocities). Every fast path gives the generic method's numbers bit for
  * bit; a system without them (particles, a plugin's view) runs the generic
  * loops. */
 #ifndef SW_ENGINE_ODE_FAST_H
@@ -24,12 +25,23 @@ typedef unsigned sw_fused_step_fn(void *ctx, double t, double *y, double h, unsi
 struct sw_ode_fast {
     sw_deriv_part_fn *deriv_part;           /* NULL: coupled; else slices of 2 */
     sw_fused_step_fn *fused_euler, *fused_rk4; /* NULL: the generic step */
+    /* A second-order system: 1 when its acceleration depends on positions
+     * (and t) alone, as a Runge-Kutta-Nyström method (rkn) needs; 0 when
+     * some force uses velocities (drag, spring damping). NULL: unknown,
+     * taken as 0. */
+    int (*position_only)(const void *ctx);
 };
 
 /* The fast path of ode, or NULL. */
 static inline sw_deriv_part_fn *sw_ode_deriv_part(const sw_ode *ode)
 {
     return ode->fast ? ode->fast->deriv_part : NULL;
+}
+
+/* 1 when ode's acceleration is known to depend on positions alone. */
+static inline int sw_ode_position_only(const sw_ode *ode)
+{
+    return ode->fast && ode->fast->position_only && ode->fast->position_only(ode->ctx);
 }
 
 static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)

@@ -13,9 +13,26 @@
 #include <string.h>
 
 #include "engine/forces.h"
+#include "engine/ode_fast.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_solve.h"
 #include "stepwise/base.h"
+
+/* Whether every force ignores velocities (asked of each kind's descriptor):
+ * what a Runge-Kutta-Nyström method needs. */
+static int position_only(const void *ctx)
+{
+    const sw_particles *p = ctx;
+    for (int k = 0; k < p->nforces; k++) {
+        const swp_force_type *type = swp_force_type_of(p->forces[k].kind);
+        if (type && type->uses_velocity && type->uses_velocity(&p->forces[k]))
+            return 0;
+    }
+    return 1;
+}
+
+/* No slices, no fused steps: only the fact above. */
+static const struct sw_ode_fast particles_fast = { .position_only = position_only };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {
@@ -47,6 +64,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.solve = sw_particles_solve;
     p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
+    p->ode.fast = &particles_fast;
     return SW_OK;
 }
 

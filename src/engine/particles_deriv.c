@@ -17,6 +17,8 @@
 
 #include "engine/clones.h"
 #include "engine/forces.h"
+#include "engine/particles_model.h"
+#include "engine/particles_small.h"
 #include "stepwise/base.h"
 
 /* A particle's (x, y) as one value, so a pair of components moves and
@@ -38,48 +40,6 @@ static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
 typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
 /* (no functions that take or return one: without AVX that changes the ABI) */
 
-/* Springs are evaluated BLOCK at a time: gather the differences, compute the
- * forces in a loop without indices (which the compiler vectorises: square
- * root and divisions two or more at a time), scatter them. */
-#define BLOCK 128
-
-struct sw_particles_model {
-    int compiled;             /* the arrays below match the description */
-    int cap;                  /* room for springs */
-    /* springs: [0, npair) join particles a and b; [npair, npair + nanchor)
-     * tie particle a to the fixed point (ax, ay); a and b hold 2a and 2b,
-     * the offsets of the particles' x in the state */
-    int npair, nanchor;
-    int *a, *b;
-    double *k, *c, *rest, *ax, *ay;
-    int damped;               /* some spring has c != 0 */
-    double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and
-                                 |d|²: 5 BLOCK */
-    double *force;            /* each spring's force on its particle a, (x, y) pairs: 2 cap */
-    /* each particle's springs, in the order above: entries first[i] ..
-     * first[i + 1] - 1 of spring (2j, the offset of spring j's force) and
-     * sign (+1: the particle is a, -1: it is b) */
-    int *first, *spring;
-    double *sign;
-    int degree;               /* every particle has this many springs (entries 2i, 2i + 1 when 2); else 0 */
-    /* Regular layouts, found by swp_model_compile, that let the loops read
-     * neighbours contiguously instead of through the index lists (chains,
-     * ropes, rows of cloth): the paired springs' a and b advance by one
-     * particle a spring (a = a0 + 2j, b = b0 + 2j; stride 0: not so), and
-     * the particles [run_lo, run_hi), all of degree 2, find their springs at
-     * fixed distances with fixed signs (spring[2i + e] = 2i + run_c[e],
-     * sign run_s[e]). Either gives the same numbers as the lists. */
-    int stride, a0, b0;
-    int run_lo, run_hi, run_c[2];
-    double run_s[2];
-    /* one gravity and one drag, fused into the last pass */
-    int gravity, drag;
-    double gx, gy, kdrag;
-    /* every other per-particle force (central fields, a second gravity or
-     * drag): a pass each, in the order added, before the last pass */
-    int nextra;
-    int extra[SW_MAX_FORCES]; /* indices into p->forces */
-};
 
 int swp_model_init(sw_particles *p)
 {
@@ -117,6 +77,7 @@ int swp_model_springs(sw_particles *p, int nsprings)
     }
     m->cap = nsprings;
     m->compiled = 0;
+    m->small = NULL;
     return SW_OK;
 }
 
@@ -133,8 +94,10 @@ void swp_model_free(sw_particles *p)
 
 void swp_model_touch(sw_particles *p)
 {
-    if (p->model)
+    if (p->model) {
         p->model->compiled = 0;
+        p->model->small = NULL;
+    }
 }
 
 /* Copy spring sp into slot j of the flat arrays. */
@@ -250,6 +213,7 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
         }
     }
     find_regular(p->n, m);
+    m->small = swp_small_pick(p);
     m->compiled = 1;
     return rc;
 }
@@ -500,8 +464,28 @@ SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
     }
 }
 
+/* Two tail calls: the small path is set only while the compiled form is
+ * current (swp_model_touch clears it), and the generic one compiles first
+ * when it is not. */
 void swp_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    const sw_particles *p = ctx;
+    (void)t;
+    if (p->model->small)
+        p->model->small(p, y, dydt);
+    else
+        deriv(ctx, y, dydt);
+}
+
+void swp_deriv_generic(void *ctx, double t, const double *y, double *dydt)
 {
     (void)t;
     deriv(ctx, y, dydt);
+}
+
+int swp_deriv_is_small(const sw_particles *p)
+{
+    if (!p->model->compiled)
+        swp_model_compile((sw_particles *)p, NULL, 0);
+    return p->model->small != NULL;
 }

@@ -20,7 +20,12 @@ void swp_model_touch(sw_particles *p);
  * spring names a particle that does not exist (such springs are left out). */
 int swp_model_compile(sw_particles *p, char *err, size_t errlen);
 /* The derivative (sw_deriv_fn) over the compiled form, compiling first when
- * the description changed. */
+ * the description changed: the small-system path (particles_small.c) where
+ * compiling picked one, else the generic passes. */
 void swp_deriv(void *ctx, double t, const double *y, double *dydt);
+/* The generic passes always (for tests: the small path must give their
+ * bits), and whether swp_deriv takes the small path for p. */
+void swp_deriv_generic(void *ctx, double t, const double *y, double *dydt);
+int swp_deriv_is_small(const sw_particles *p);
 
 #endif

@@ -29,10 +29,10 @@ enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };
 /* The stages over len components, every vector a restrict parameter (so the stage
  * loops vectorise without overlap checks). Error norm: RMS of
  * h·e_i / (atol + rtol·max(|y0_i|, |y1_i|)). */
-SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim,
-                       double atol, double rtol, const double *restrict k1, double *restrict k2,
-                       double *restrict k3, double *restrict k4, double *restrict k5, double *restrict k6,
-                       double *restrict k7, double *restrict yt, double *restrict saved, sw_trial_sums *sums)
+SW_INLINE void rk45_body(sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim, double atol,
+                         double rtol, const double *restrict k1, double *restrict k2, double *restrict k3,
+                         double *restrict k4, double *restrict k5, double *restrict k6, double *restrict k7,
+                         double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
     int i;
     for (i = 0; i < len; i++)
@@ -69,12 +69,33 @@ SW_CLONES static void rk45_range(sw_ode *ode, double t, double *restrict y, doub
     sums->beyond |= sw_beyond_any(over);
 }
 
+/* Two entries to the body: any len, and len = 4 (one particle: each loop a
+ * vector or two, no loop control). */
+#define RK45_ARGS                                                                                  \
+    sw_ode *ode, double t, double *restrict y, double h, int len, unsigned elim, double atol, double rtol, \
+        const double *restrict k1, double *restrict k2, double *restrict k3, double *restrict k4,           \
+        double *restrict k5, double *restrict k6, double *restrict k7, double *restrict yt,                 \
+        double *restrict saved, sw_trial_sums *sums
+#define RK45_PASS(len) ode, t, y, h, len, elim, atol, rtol, k1, k2, k3, k4, k5, k6, k7, yt, saved, sums
+
+typedef void rk45_range_fn(RK45_ARGS);
+
+SW_CLONES static void rk45_range(RK45_ARGS) { rk45_body(RK45_PASS(len)); }
+
+/* Not cloned, as dop853_range4 (dop853.c) says why. */
+static void rk45_range4(RK45_ARGS)
+{
+    (void)len;
+    rk45_body(RK45_PASS(4));
+}
+
 /* The FSAL pair and the saved state are state-long (they outlive a slice);
  * the other stage vectors are slice-local. */
 static void rk45_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                        unsigned elim, sw_trial_sums *sums)
 {
-    rk45_range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
+    rk45_range_fn *range = hi - lo == 4 ? rk45_range4 : rk45_range;
+    range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
                SW_WORK(s, S_K3), SW_WORK(s, S_K4), SW_WORK(s, S_K5), SW_WORK(s, S_K6),
                SW_WORK(s, s->fsal ? 0 : S_K7) + lo, SW_WORK(s, S_YT), SW_WORK(s, S_SAVED) + lo, sums);
 }

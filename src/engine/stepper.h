@@ -20,7 +20,7 @@ struct sw_stepper {
     double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
     int have_cache;       /* FSAL derivative is valid (in work[0..dim), or slot fsal) */
     int fsal;             /* adaptive RK: workspace slot of the cached first-stage derivative */
-    double rtol, atol;    /* adaptive error control (rk45, dop853) */
+    double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rodas4) */
     double h_next;        /* adaptive: proposed size of the next step (0: use h) */
     double h_last;        /* size of the last step taken */
     long accepted;        /* adaptive: accepted steps */
@@ -58,6 +58,8 @@ sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
     sw_step_implicit_midpoint;                        /* implicit.c */
 sw_step_fn sw_step_rk45;                               /* rk45.c */
 sw_step_fn sw_step_dop853;                             /* dop853.c */
+sw_step_fn sw_step_rkn;                                /* rkn.c */
+sw_step_fn sw_step_rodas4;                             /* rosenbrock.c */
 
 /* Explicit Runge-Kutta steps run over the whole state for coupled systems,
  * or slice by slice (L1-sized) for pointwise ones (flow fields), where

@@ -40,11 +40,12 @@ enum {
 #define SW_KEYS(...) { __VA_ARGS__, 0 }
 
 /* The keys that pick an integrator by its place in the table ('stepwise list
- * integrators'): 1-9, 0 for the 10th, then the shifted digits, so every
- * built-in and every plugin (at most SW_PICK_KEY_COUNT in all) has one. */
+ * integrators'): 1-9, 0 for the 10th, then the shifted digits and the
+ * shifted keys beside them, so every built-in and every plugin (at most
+ * SW_PICK_KEY_COUNT in all) has one. */
 #define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
-                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')'
-#define SW_PICK_KEY_COUNT 20
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|'
+#define SW_PICK_KEY_COUNT 24
 
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'
@@ -62,13 +63,14 @@ enum {
  * Help shows PLAY controls, and LESSON ones in a lesson, in this order. */
 #define SW_CONTROLS(X) \
     X(NEXT_METHOD, INTEGRATOR, PLAY, "next integrator", SW_KEYS('i', SW_KEY_TAB), \
-      "i  Tab", "next integrator (keeps the state and time)") \
+      "i  Tab", "next integrator (the run starts again at t = 0)") \
     X(PREV_METHOD, INTEGRATOR, PLAY, "previous integrator", SW_KEYS('I', SW_KEY_BTAB), \
       "I  Shift-Tab", "previous integrator") \
     X(PICK_METHOD, INTEGRATOR, PLAY, "pick integrator", SW_KEYS(SW_PICK_KEYS), \
       "1-9  0", "pick an integrator by its place in 'stepwise list integrators'") \
-    X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  =", "double dt") \
-    X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), "-", "halve dt") \
+    X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  -", \
+      "double / halve dt (the run starts again at t = 0)") \
+    X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), NULL, NULL) \
     X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "pause / run") \
     X(STEP, RUN, PLAY, "single step", SW_KEYS('.'), ".  ,  ;  u", \
       "one step on / back, 50 back (pauses); u: run to the stop time (--until, @until)") \
@@ -84,6 +86,8 @@ enum {
       "g", "ghost: the exact solution (or a reference run) beside yours") \
     X(TRAILS, TRAILS, PLAY, "trails", SW_KEYS('t'), "t", "trails") \
     X(GRAPH, GRAPH, PLAY, "graph", SW_KEYS('e'), "e", "graph of energy drift (or error) against time") \
+    X(ERROR_KIND, NONE, PLAY, "error kind", SW_KEYS('m'), "m", \
+      "err: position error (m) / velocity error (m/s)") \
     X(BRAILLE, BRAILLE, PLAY, "Braille", SW_KEYS('b'), "b", "Braille dots (finer picture)") \
     X(PANEL, PARAMS, PLAY, "parameter panel", SW_KEYS('p'), \
       "p", "parameter panel: Up/Down choose, Left/Right change") \
@@ -100,6 +104,9 @@ enum {
     X(PHASE_PREV, VIEW, PLAY, "previous particle", SW_KEYS('<'), NULL, NULL) \
     X(PHASE_NEXT, VIEW, PLAY, "next particle", SW_KEYS('>'), NULL, NULL) \
     X(REGION, VIEW, PLAY, "stability region", SW_KEYS('s'), "s", "stability region of the method, dt x eigenvalues") \
+    X(STAGES, VIEW, PLAY, "stages of a step", SW_KEYS('k'), "k  Esc", \
+      "stages of one step drawn: k1, k2, ... one per press (pauses); Esc closes") \
+    X(STAGES_CLOSE, NONE, PLAY, "close the stages", SW_KEYS(SW_KEY_ESC), NULL, NULL) \
     X(EVENTS, EVENTS, PLAY, "events", SW_KEYS('x'), \
       "x", "events: locate contacts and crossings / step over them") \
     X(HELP, NONE, PLAY, "help", SW_KEYS('?'), "?", "this help (again: next page)") \

@@ -3,6 +3,7 @@
  * @correct) and prose paragraphs, each checked as it is read. */
 #include "lesson/parse.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -404,9 +405,35 @@ static int d_until(sw_lp_parser *ps, size_t pos)
                       &sw_lp_page(ps)->until);
 }
 
+/* box=X0,Y0,X1,Y1: four numbers, X0 < X1 and Y0 < Y1, each within
+ * ±SW_LESSON_BOX_MAX. */
+static int view_box(sw_lp_parser *ps, size_t start, const char *word, double box[4])
+{
+    const char *p = word + 4;
+    int n = 0;
+    for (; n < 4; n++) {
+        const char *end = strchr(p, ',');
+        char field[SW_LESSON_NAME_MAX];
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if ((n < 3) != (end != NULL) || len == 0 || len >= sizeof field)
+            break;
+        memcpy(field, p, len);
+        field[len] = '\0';
+        if (sw_parse_double(field, &box[n]) != SW_OK || !(fabs(box[n]) <= SW_LESSON_BOX_MAX))
+            break;
+        p = end ? end + 1 : p + len;
+    }
+    if (n != 4)
+        return FAIL(ps, start, "@view %s: expected box=X0,Y0,X1,Y1 (four numbers in [-1e6, 1e6], no spaces)", word);
+    if (!(box[0] < box[2] && box[1] < box[3]))
+        return FAIL(ps, start, "@view %s: expected X0 < X1 and Y0 < Y1 (the lower left corner first)", word);
+    return SW_OK;
+}
+
 /* @view WORD...: scene, phase or region (what the picture shows); fixed or
  * follow (the camera); overlay or lanes (compare's layout); graph or
- * nograph (the energy/error graph); zoom=X. */
+ * nograph (the energy/error graph); zoom=X; box=X0,Y0,X1,Y1 (the part of
+ * the world the camera shows: what the page is about). */
 static int d_view(sw_lp_parser *ps, size_t pos)
 {
     sw_lesson_page *pg = sw_lp_page(ps);
@@ -430,9 +457,13 @@ static int d_view(sw_lp_parser *ps, size_t pos)
             if (sw_parse_double(word + 5, &z) != SW_OK || !(z >= 1.0 / 64 && z <= 4096))
                 return FAIL(ps, start, "@view %s: expected zoom=X with X in [1/64, 4096]", word);
             pg->zoom = z;
+        } else if (strncmp(word, "box=", 4) == 0) {
+            if (view_box(ps, start, word, pg->box) != SW_OK)
+                return ps->status;
+            pg->has_box = 1;
         } else
             return FAIL(ps, start, "@view: '%s' is not a view; expected scene, phase, region, fixed, follow, "
-                        "overlay, lanes, graph, nograph or zoom=X", word);
+                        "overlay, lanes, graph, nograph, zoom=X or box=X0,Y0,X1,Y1", word);
         n++;
     }
     if (!n)

@@ -120,6 +120,8 @@ enum { SW_LESSON_VIEW_SCENE = 0, SW_LESSON_VIEW_PHASE = 1, SW_LESSON_VIEW_REGION
 /* @speed's range (the app's). */
 #define SW_LESSON_SPEED_MIN (1.0 / 64)
 #define SW_LESSON_SPEED_MAX 1024.0
+/* @view box='s largest coordinate, in the scene's units. */
+#define SW_LESSON_BOX_MAX 1e6
 /* @until's latest stop time, in seconds (the app's). */
 #define SW_LESSON_UNTIL_MAX 1e6
 
@@ -174,6 +176,9 @@ typedef struct sw_lesson_page {
     int lanes;                /* -1 / 0 / 1: compare overlaid or side by side */
     int graph;                /* -1 / 0 / 1: the energy/error graph off or on */
     double zoom;              /* the view's size times this; 0: leave as is */
+    double box[4];            /* @view box=X0,Y0,X1,Y1: the world rectangle the camera shows
+                               * (metres or the scene's units), when has_box */
+    int has_box;              /* 0: leave the camera's rectangle as is */
     double until;             /* @until: the run stops at this time (seconds); 0: no stop time */
     sw_lock_mask locked;      /* SW_LOCK_* in force on this page (carried from earlier pages) */
 

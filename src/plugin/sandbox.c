@@ -26,20 +26,9 @@
 #include <unistd.h>
 
 #include "stepwise/stepwise.h"
+#include "util/fds.h"
 #include "util/signals.h"
 
-/* How long a read waits awake before it sleeps in poll. */
-#define SPIN_SECONDS 20e-6
-
-/* Every signal util/signals.h catches (record, play, grade all use it). */
-static int sandbox_cancelled(void) { return sw_signal_caught != 0; }
-
-double sw_sandbox_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void set_limit(int resource, rlim_t value)
 {
@@ -52,38 +41,6 @@ static void set_limit(int resource, rlim_t value)
     if (resource == RLIMIT_CPU)
         rl.rlim_max = rl.rlim_max == RLIM_INFINITY || value + 1 <= rl.rlim_max ? value + 1 : rl.rlim_max;
     setrlimit(resource, &rl);
-}
-
-/* Close every descriptor from `from` up (close_range, else one by one). */
-static void close_from(int from)
-{
-    if (syscall(SYS_close_range, (unsigned)from, ~0u, 0) == 0)
-        return;
-    struct rlimit nofile;
-    long maxfd = getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur != RLIM_INFINITY &&
-                         nofile.rlim_cur < 65536 ? (long)nofile.rlim_cur : 65536;
-    for (long fd = from; fd < maxfd; fd++)
-        close((int)fd);
-}
-
-/* Close every descriptor above 2 but keep[0..n) (n <= 3). */
-static void close_all_but(int *keep, int n)
-{
-    for (int i = 0; i < n; i++) /* sort, smallest first */
-        for (int j = i + 1; j < n; j++)
-            if (keep[j] < keep[i]) {
-                int t = keep[i];
-                keep[i] = keep[j];
-                keep[j] = t;
-            }
-    int from = 3;
-    for (int i = 0; i < n; i++) {
-        if (keep[i] > from)
-            syscall(SYS_close_range, (unsigned)from, (unsigned)keep[i] - 1, 0);
-        if (keep[i] >= from)
-            from = keep[i] + 1;
-    }
-    close_from(from);
 }
 
 /* Everything the child does before running fn: it may only use what it was
@@ -115,7 +72,7 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
         close(sock);
     }
     fcntl(3, F_SETFD, 0);
-    close_from(keep + 1);
+    sw_close_fds(keep + 1, NULL, 0);
     if (lim && lim->cpu_seconds > 0)
         set_limit(RLIMIT_CPU, (rlim_t)(lim->cpu_seconds + 0.999));
 #if !defined(__SANITIZE_ADDRESS__) /* ASan reserves terabytes of address space */
@@ -294,7 +251,7 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     /* Nothing of the caller's stays open in the jail (its files, a
      * temporary directory's keep-alive pipe): only the three channels. */
     int keep[3] = { sock, sync, status };
-    close_all_but(keep, 3);
+    sw_close_fds(3, keep, 3);
     pid_t init = fork();
     if (init < 0) {
         send_failure(sync, errno, "fork of the jail's init");
@@ -425,131 +382,6 @@ int sw_sandbox_probe(char *err, size_t errlen)
     return known > 0 ? SW_OK : SW_EIO;
 }
 
-int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t *len)
-{
-    int64_t size;
-    *buf = NULL;
-    *len = 0;
-    if (sw_sandbox_read(fd, &size, sizeof size, seconds) != 1)
-        return -1;
-    if (size == -1)
-        return 0;
-    if (size < 0 || (uint64_t)size > max)
-        return -1;
-    char *b = malloc((size_t)size + 1);
-    if (!b)
-        return -1;
-    if (size > 0 && sw_sandbox_read(fd, b, (size_t)size, seconds) != 1) {
-        free(b);
-        return -1;
-    }
-    b[size] = '\0';
-    *buf = b;
-    *len = (size_t)size;
-    return 1;
-}
-
-/* Wait until fd is readable, for at most `seconds` (< 0: no limit). 1
- * readable (or at end of file), 0 timed out, -1 cancelled (a signal
- * util/signals.h caught). */
-static int sandbox_wait(int fd, double seconds)
-{
-    double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : 0;
-    for (;;) {
-        if (sandbox_cancelled())
-            return -1;
-        int slice = 100;
-        if (seconds >= 0) {
-            double left = deadline - sw_sandbox_now();
-            if (left <= 0)
-                return 0;
-            if (left * 1000 < slice)
-                slice = (int)(left * 1000) + 1;
-        }
-        struct pollfd p = { .fd = fd, .events = POLLIN };
-        int rc = poll(&p, 1, slice);
-        if (rc > 0)
-            return 1;
-        if (rc < 0 && errno != EINTR)
-            return 1; /* let the read report it */
-    }
-}
-
-int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
-{
-    double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
-    char *p = buf;
-    size_t got = 0;
-    int sock = 1;
-    double spin_until = -1;
-    while (got < len) {
-        /* What is there already costs one call, no poll; a reply due in
-         * microseconds (a plugin's step) is waited for awake, briefly,
-         * which saves two context switches a step when both have a core. */
-        ssize_t n = sock ? recv(fd, p + got, len - got, MSG_DONTWAIT) : -1;
-        if (n < 0 && errno == EAGAIN && sock) {
-            double now = sw_sandbox_now();
-            if (spin_until < 0)
-                spin_until = now + SPIN_SECONDS;
-            if (now < spin_until)
-                continue;
-        }
-        if (n < 0 && errno == ENOTSOCK)
-            sock = 0;
-        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR || errno == ENOTSOCK)) {
-            double left = seconds >= 0 ? deadline - sw_sandbox_now() : -1;
-            if (seconds >= 0 && left < 0)
-                left = 0;
-            int w = sandbox_wait(fd, left);
-            if (w < 0)
-                return -1;
-            if (w == 0)
-                return -2;
-            if (sock)
-                continue;
-            n = read(fd, p + got, len - got);
-            if (n < 0 && (errno == EINTR || errno == EAGAIN))
-                continue;
-        }
-        if (n == 0)
-            return 0;
-        if (n < 0)
-            return errno == ECONNRESET ? 0 : -3;
-        got += (size_t)n;
-    }
-    return 1;
-}
-
-int sw_sandbox_write(int fd, const void *buf, size_t len)
-{
-    struct iovec part = { (void *)buf, len };
-    return sw_sandbox_writev(fd, &part, 1);
-}
-
-int sw_sandbox_writev(int fd, struct iovec *parts, int n)
-{
-    struct msghdr msg;
-    memset(&msg, 0, sizeof msg);
-    msg.msg_iov = parts;
-    msg.msg_iovlen = (size_t)n;
-    while (msg.msg_iovlen > 0) {
-        ssize_t sent = sendmsg(fd, &msg, MSG_NOSIGNAL);
-        if (sent < 0 && errno == EINTR)
-            continue;
-        if (sent <= 0)
-            return -1;
-        while (msg.msg_iovlen > 0 && (size_t)sent >= msg.msg_iov->iov_len) {
-            sent -= (ssize_t)msg.msg_iov->iov_len;
-            msg.msg_iov++;
-            msg.msg_iovlen--;
-        }
-        if (msg.msg_iovlen > 0) {
-            msg.msg_iov->iov_base = (char *)msg.msg_iov->iov_base + sent;
-            msg.msg_iov->iov_len -= (size_t)sent;
-        }
-    }
-    return 0;
-}
 
 static void fill_end(int status, sw_child_end *end)
 {
@@ -638,7 +470,7 @@ void sw_sandbox_reap(sw_child *c, double seconds, sw_child_end *end)
         }
         if (rc < 0 && errno != EINTR)
             break;
-        if (sw_sandbox_now() >= deadline || sandbox_cancelled())
+        if (sw_sandbox_now() >= deadline || sw_signal_caught != 0)
             break;
         struct timespec ts = { 0, 2000000 };
         nanosleep(&ts, NULL);

@@ -28,7 +28,7 @@ typedef struct grid {
 
 static grid grid_of(const sw_canvas *c, int dots)
 {
-    double k = 1.0 / c->scale;
+    double k = c->inv_scale;
     grid g;
     g.dots = dots;
     if (dots) {
@@ -137,6 +137,7 @@ static int fit(sw_canvas *c, const sw_view *v)
         return -1;
     c->view = *v;
     c->scale = s;
+    c->inv_scale = 1.0 / s;
     c->cx = cx;
     c->cy = cy;
     return 0;
@@ -340,10 +341,6 @@ void sw_canvas_line(sw_canvas *c, double x0, double y0, double x1, double y1,
      * of two of them overflows. */
     double ax = 0.25 * x0, ay = 0.25 * y0, bx = 0.25 * x1, by = 0.25 * y1;
     double dx = bx - ax, dy = by - ay;
-    sw_view vis = sw_canvas_visible(c);
-    sw_view quarter = { 0.25 * vis.xmin, 0.25 * vis.xmax, 0.25 * vis.ymin, 0.25 * vis.ymax };
-    if (!clip_segment(&ax, &ay, &bx, &by, &quarter))
-        return;
     if (!glyph) {
         /* on-screen direction: the aspect correction makes world angles true */
         if (fabs(dy) <= 0.4 * fabs(dx))
@@ -354,6 +351,19 @@ void sw_canvas_line(sw_canvas *c, double x0, double y0, double x1, double y1,
             glyph = (dx > 0) == (dy > 0) ? '/' : '\\';
     }
     grid g = grid_of(c, c->mode == SW_CANVAS_BRAILLE);
+    /* A segment inside one grid point (a spring of a long chain is shorter
+     * than a cell): that point, as the general path below would plot it. */
+    double u0 = g.hc + (x0 - c->cx) * g.kx, w0 = g.hr - (y0 - c->cy) * g.ky;
+    double u1 = g.hc + (x1 - c->cx) * g.kx, w1 = g.hr - (y1 - c->cy) * g.ky;
+    if (u0 >= 0.0 && u0 < g.w && w0 >= 0.0 && w0 < g.h && (int)u0 == (int)u1 && (int)w0 == (int)w1 &&
+        u1 >= 0.0 && w1 >= 0.0) {
+        plot(c, &g, (int)u0, (int)w0, glyph, style, 0);
+        return;
+    }
+    sw_view vis = sw_canvas_visible(c);
+    sw_view quarter = { 0.25 * vis.xmin, 0.25 * vis.xmax, 0.25 * vis.ymin, 0.25 * vis.ymax };
+    if (!clip_segment(&ax, &ay, &bx, &by, &quarter))
+        return;
     int c0 = clamp_cell(g.hc + (4.0 * ax - c->cx) * g.kx, g.w);
     int r0 = clamp_cell(g.hr - (4.0 * ay - c->cy) * g.ky, g.h);
     int c1 = clamp_cell(g.hc + (4.0 * bx - c->cx) * g.kx, g.w);
@@ -386,6 +396,30 @@ static uint32_t ramp_glyph(uint32_t count)
         level++;
     }
     return (unsigned char)SW_DENSITY_RAMP[level];
+}
+
+void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep, const void *ctx,
+                     int dots, uint32_t glyph, int style, int fade)
+{
+    grid g = grid_of(c, dots);
+    if (!glyph)
+        glyph = SW_GLYPH_MAIN;
+    if (!keep && !dots) { /* the common case, with nothing but the mapping and the store in the loop */
+        double hc = g.hc, hr = g.hr, kx = g.kx, ky = g.ky, cx = c->cx, cy = c->cy, w = g.w, h = g.h;
+        for (int i = 0; i < n; i++) {
+            double u = hc + (xy[2 * i] - cx) * kx, v = hr - (xy[2 * i + 1] - cy) * ky;
+            if (u >= 0.0 && u < w && v >= 0.0 && v < h)
+                put_glyph(c, (int)u, (int)v, glyph, style, fade);
+        }
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        int gc, gr;
+        if (keep && !keep(ctx, i))
+            continue;
+        if (to_grid(&g, c, xy[2 * i], xy[2 * i + 1], &gc, &gr))
+            plot(c, &g, gc, gr, glyph, style, fade);
+    }
 }
 
 /* Count the points that keep accepts, then write the ramp. */

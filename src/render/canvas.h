@@ -98,6 +98,7 @@ typedef struct sw_canvas {
     sw_canvas_mode mode;
     sw_view view;          /* as last set; default (-1, 1, -1, 1) */
     double scale;          /* s: world units per column */
+    double inv_scale;      /* 1/s, worked out once per view (not per point) */
     double cx, cy;         /* the view's centre */
     uint32_t *glyph;       /* cols·rows code points, 0 = none; row-major from the top */
     uint32_t *count;       /* density counts, scratch for one density pass */
@@ -152,6 +153,13 @@ typedef int sw_canvas_keep_fn(const void *ctx, int i);
 /* The same over the points keep accepts (keep NULL: all). */
 void sw_canvas_density_where(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep,
                              const void *ctx, int style);
+/* A layer of n points xy[2i], xy[2i+1] that keep accepts (NULL: all),
+ * each drawn as sw_canvas_point_faded (dots = 1: its Braille dot) or
+ * sw_canvas_mark (dots = 0: glyph in its cell) would draw it with that
+ * fade, in order, with the mapping worked out once: a point's cost, not a
+ * call's. */
+void sw_canvas_layer(sw_canvas *c, const double *xy, int n, sw_canvas_keep_fn *keep, const void *ctx,
+                     int dots, uint32_t glyph, int style, int fade);
 
 /* Cell-level drawing (axes, labels, the region's shading): a glyph into
  * cell (col, row); a Braille dot (dc, dr) of the 2·cols × 4·rows dot grid;

@@ -14,6 +14,7 @@
 
 #include "render/decor.h"
 #include "render/gap.h"
+#include "render/stages.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
 
@@ -49,12 +50,12 @@ static sw_field *field(sw_field *f, int *n, int prio, const char *full, const ch
 
 /* ---- the camera and the scene ------------------------------------------------- */
 
-/* The scene's natural view times the zoom; when following, grown (never
- * shrunk) to hold the main run's particles. */
+/* The scene's natural view (or a page's @view box) times the zoom; when
+ * following, grown (never shrunk) to hold the main run's particles. */
 static void camera(sw_frame *f, sw_app *a)
 {
     const sw_sim *main = &a->sims[0];
-    sw_view base = sw_view_zoom(a->scene->view(&main->sys), a->zoom);
+    sw_view base = sw_view_zoom(a->have_box ? a->box : a->scene->view(&main->sys), a->zoom);
     if (f->view_scene != a->scene || memcmp(f->view_p, a->p, sizeof f->view_p) != 0 || f->view_zoom != a->zoom ||
         f->view_follow != a->follow || !a->follow || main->t == 0) {
         f->view = base;
@@ -84,6 +85,22 @@ static const unsigned char *alive(sw_frame *f, const sw_sim *s)
     return f->keep;
 }
 
+/* Whether sw_canvas_offscreen would draw any arrow for these points
+ * (kept, finite, outside the visible rectangle, by its tests): most frames
+ * have none, so the test for "inside" comes first and alone. */
+static int any_outside(const sw_canvas *c, const double *xy, int n, const unsigned char *keep)
+{
+    sw_view vis = sw_canvas_visible(c);
+    for (int i = 0; i < n; i++) {
+        double x = xy[2 * i], y = xy[2 * i + 1];
+        if (x >= vis.xmin && x < vis.xmax && y > vis.ymin && y <= vis.ymax)
+            continue;
+        if ((!keep || keep[i]) && isfinite(x) && isfinite(y))
+            return 1;
+    }
+    return 0;
+}
+
 /* Sims first..last (overlaid) on canvas c, sized cols × rows. */
 static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, int first, int last)
 {
@@ -111,7 +128,9 @@ static void draw_sims(sw_frame *f, sw_app *a, sw_canvas *c, int cols, int rows, 
     /* particles that left the view: an arrow at the edge (the main run's with its distance) */
     for (int i = last; i >= first; i--) {
         const sw_sim *s = &a->sims[i];
-        sw_canvas_offscreen(c, s->sys.y, s->sys.n, alive(f, s), sim_style[i], i == first);
+        const unsigned char *keep = alive(f, s);
+        if (any_outside(c, s->sys.y, s->sys.n, keep))
+            sw_canvas_offscreen(c, s->sys.y, s->sys.n, keep, sim_style[i], i == first);
     }
 }
 
@@ -308,49 +327,12 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
 
 /* ---- the status block ------------------------------------------------------------- */
 
-/* The stability meter: the stiffest mode's |λ|·Δt against the method's
- * limit on the current linearisation (a bar), and the growth per step ρ of
- * the worst mode under this method at this Δt, with enough digits that a
- * neutral ρ = 1 reads as one. When the run's energy grows although every
- * mode is stable, the line says so: that growth is nonlinear. */
+/* The stability meter's line (app/status.c words it, so the labels and
+ * the word beside the growth are unit-tested there). */
 static int meter_fields(sw_app *a, sw_field *f, int *style)
 {
-    sw_app_meter m;
-    char buf[SW_TEXT_LINE];
-    int n = 0;
-    *style = SW_STYLE_STATUS;
-    if (!sw_app_stability(a, &m)) {
-        if (a->sims[0].method->flags & SW_ADAPTIVE) {
-            snprintf(buf, sizeof buf, "%s chooses its own steps: no fixed-step limit", a->sims[0].method->name);
-            field(f, &n, 8, buf, "adaptive steps");
-        }
-        return n;
-    }
-    snprintf(buf, sizeof buf, "|L|dt=%.3g", m.stiff * a->dt);
-    field(f, &n, 7, buf, NULL);
-    if (!m.unbounded && m.limit > 0) {
-        char bar[16];
-        int fill = (int)fmin(10.0, fmax(0.0, floor(10.0 * a->dt / m.limit + 1e-9)));
-        bar[0] = '[';
-        for (int i = 0; i < 10; i++)
-            bar[i + 1] = i < fill ? '#' : '.';
-        bar[11] = ']';
-        bar[12] = '\0';
-        field(f, &n, 2, bar, NULL);
-        snprintf(buf, sizeof buf, "limit %.3g", m.stiff * m.limit);
-        field(f, &n, 5, buf, NULL);
-    } else
-        field(f, &n, 5, m.unbounded ? "stable at any dt" : "no stable dt", NULL);
-    snprintf(buf, sizeof buf, "x%.6f/step", m.growth);
-    field(f, &n, 8, buf, NULL);
-    field(f, &n, 9,
-          m.grows ? "GROWS" : m.slow ? "grows, too slowly to see" : m.growth < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral",
-          m.slow ? "grows slowly" : NULL);
-    int run_grows = a->watch.verdict != SW_WATCH_STEADY;
-    if (run_grows && !m.grows)
-        field(f, &n, 6, "but the run's energy grows: nonlinear", "but the run grows");
-    if (m.grows || run_grows || (m.limit > 0 && !m.unbounded && a->dt > 0.9 * m.limit))
-        *style = SW_STYLE_WARN;
+    int warn, n = sw_app_meter_fields(a, f, 8, &warn);
+    *style = warn ? SW_STYLE_WARN : SW_STYLE_STATUS;
     return n;
 }
 
@@ -528,7 +510,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     int view_rows = pic_rows - graph_h;
     camera(f, a);
-    if (a->view == SW_VIEW_PHASE)
+    if (a->stages_open && a->view == SW_VIEW_SCENE)
+        sw_draw_stages(f, a, scr, 0, 0, view_rows, pic_cols);
+    else if (a->view == SW_VIEW_PHASE)
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
     else if (a->view == SW_VIEW_REGION)
         draw_region(f, a, scr, 0, 0, view_rows, pic_cols);
@@ -554,7 +538,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     int over_cols = side_w > 0 && side->question_open ? pic_cols : scr->cols;
     if (a->help && a->help > sw_help_pages(pic_rows, over_cols, side != NULL))
         a->help = 0; /* past the last page: closed */
-    int overlay = (a->workprec && a->bench) || a->panel || a->help;
+    /* the work-precision plot stays in the picture's place beside a lesson:
+     * the page's text (its table) is what the plot is read against */
+    int overlay = (a->workprec && a->bench && side_w == 0) || a->panel || a->help;
     /* The pane starts two columns right of the picture (a single blank
      * column reads as a space between words); its text is wrapped to one
      * column less than its width. An overlay that reaches over the pane
@@ -563,7 +549,7 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         draw_side(side, scr, 0, pic_cols + 2, pic_rows, side_w - 1);
     status_block(a, side, scr, 0);
     if (a->workprec && a->bench)
-        sw_draw_workprec(a, scr, 0, 0, pic_rows, over_cols);
+        sw_draw_workprec(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : scr->cols);
     if (a->panel)
         sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
     if (a->help)

@@ -4,6 +4,7 @@
 #include "render/decor.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "util/num.h"
@@ -67,6 +68,38 @@ static void draw_disc(sw_canvas *c, double x0, double y0, double r, uint32_t gly
         }
 }
 
+/* Write the first of the texts that fits the canvas at (col, row). */
+static void text_fitted(sw_canvas *c, int col, int row, const char *const *texts, int n, int style)
+{
+    for (int k = 0; k < n; k++)
+        if (col + (int)strlen(texts[k]) <= c->cols) {
+            sw_canvas_text(c, col, row, texts[k], style);
+            return;
+        }
+}
+
+/* The launch level's name above its line, and what the energy change is
+ * measured against: the launch's kinetic energy, since the potential is
+ * zero at the launch height (sw_sim_energy_scale divides by E0 = that). */
+static void projectile_labels(sw_canvas *c, const sw_system *sys)
+{
+    int col, row;
+    if (sw_canvas_world_to_cell(c, sw_canvas_visible(c).xmin + c->scale, 0, &col, &row) && row >= 1) {
+        static const char *const launch[] = { "launch height (no ground: the ball flies on below)",
+                                              "launch height (no ground)", "launch height" };
+        text_fitted(c, 1, row - 1, launch, 3, SW_STYLE_TRAIL);
+    }
+    double vx = param(sys, "vx", 0), vy = param(sys, "vy", 0), ke = 0.5 * param(sys, "m", 1) * (vx * vx + vy * vy);
+    if (c->rows >= 4 && ke > 0) {
+        char full[96], mid[64], brief[48];
+        snprintf(full, sizeof full, "energy %% = change of the launch kinetic energy, %.3g J", ke);
+        snprintf(mid, sizeof mid, "E%%: of launch kinetic energy, %.3g J", ke);
+        snprintf(brief, sizeof brief, "E%% of launch KE %.3g J", ke);
+        const char *const texts[] = { full, mid, brief };
+        text_fitted(c, 1, 0, texts, 3, SW_STYLE_TRAIL);
+    }
+}
+
 void sw_canvas_draw_decor(sw_canvas *c, const sw_system *sys, double t, int unicode)
 {
     const char *name = sys->scene ? sys->scene->name : "";
@@ -82,5 +115,6 @@ void sw_canvas_draw_decor(sw_canvas *c, const sw_system *sys, double t, int unic
          * on below it (the bounce scene has a floor) */
         sw_view vis = sw_canvas_visible(c);
         sw_canvas_line(c, vis.xmin - c->scale, 0, vis.xmax + c->scale, 0, '-', SW_STYLE_TRAIL);
+        projectile_labels(c, sys);
     }
 }

@@ -80,18 +80,16 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
         draw_springs(c, sys, y, t, style);
     }
     int crowd = (long long)n > (long long)c->cols * c->rows / 4;
+    /* one pass per layer; the alive test only where the scene has one */
+    alive_ctx ctx = { sys, y, t };
+    sw_canvas_keep_fn *keep = sys->scene && sys->scene->alive ? alive_at : NULL;
     if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
-        for (int i = 0; i < n; i++)
-            if (is_alive(sys, y, t, i))
-                sw_canvas_point(c, y[2 * i], y[2 * i + 1], glyph, style);
+        sw_canvas_layer(c, y, n, keep, &ctx, 1, glyph, style, 0);
     } else if (crowd && glyph == SW_GLYPH_MAIN) {
         /* the main run as a density; a ghost or a compared run keeps its
          * own glyph, or it could not be told from the main one without colour */
-        alive_ctx ctx = { sys, y, t };
-        sw_canvas_density_where(c, y, n, alive_at, &ctx, style);
+        sw_canvas_density_where(c, y, n, keep, &ctx, style);
     } else {
-        for (int i = 0; i < n; i++)
-            if (is_alive(sys, y, t, i))
-                sw_canvas_mark(c, y[2 * i], y[2 * i + 1], glyph, style);
+        sw_canvas_layer(c, y, n, keep, &ctx, 0, glyph, style, 0);
     }
 }

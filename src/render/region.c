@@ -212,6 +212,38 @@ static void axes(sw_canvas *c, taken *t)
     }
 }
 
+/* The axes, and the scale said when it is chosen for the marks (it
+ * stays while Δt changes, so the marks' moves are true). */
+static void axes_scaled(sw_canvas *c, taken *t, double half, double reach)
+{
+    axes(c, t);
+    if (half < reach) {
+        char lab[64];
+        snprintf(lab, sizeof lab, "fixed scale +-%.2g (z zooms out)", half);
+        label(c, t, 0, 0, lab);
+    }
+}
+
+double sw_region_scale(double reach, double largest)
+{
+    if (!(largest > 0) || !isfinite(largest))
+        return reach;
+    if (1.25 * largest >= reach / 2)
+        return fmax(reach, 1.25 * largest);
+    return fmax(1.25 * largest, reach / 1000);
+}
+
+/* The largest |Δt·λ| over the modes (0: none). */
+static double largest_mark(const sw_app *a)
+{
+    double largest = 0;
+    for (int k = 0; a->have_spec && k < a->spec.n; k++) {
+        const sw_mode *md = &a->spec.mode[k];
+        largest = fmax(largest, fmax(hypot(md->re, md->im), hypot(md->pre, md->pim)) * a->dt);
+    }
+    return largest;
+}
+
 int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *outside, int *shown, char *why,
                    size_t whylen)
 {
@@ -239,13 +271,34 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->extent_method = m;
         r->extent_order = order;
     }
-    double half = (r->extent > 0 ? fmax(3.0, 1.15 * r->extent) : 3.0) * a->zoom;
-    sw_view v = { -half, half, -half, half };
+    double reach = r->extent > 0 ? fmax(3.0, 1.15 * r->extent) : 3.0;
+    double largest = largest_mark(a);
+    /* a mark beyond the view at zoom 1 (Δt doubled past it): the view
+     * widens once, to the whole region and the marks, and stays there */
+    int beyond = r->fit_valid && largest > fmin(r->fit * c->cols / 2, r->fit * c->rows);
+    if (!r->fit_valid || r->fit_gen != a->view_gen || r->fit_method != m || r->fit_order != order ||
+        r->fit_cols != c->cols || beyond) {
+        /* world units per column, as the canvas fits a square ±half: kept
+         * while the page is open, so that a row more or less for the text
+         * below moves no axis */
+        double fit_half = beyond ? fmax(reach, 1.25 * largest) : sw_region_scale(reach, largest);
+        r->fit = fmax(2 * fit_half / c->cols, fit_half / c->rows);
+        r->fit_gen = a->view_gen;
+        r->fit_method = m;
+        r->fit_order = order;
+        r->fit_cols = c->cols;
+        r->fit_valid = 1;
+    }
+    double s = r->fit * a->zoom, half = fmin(s * c->cols / 2, s * c->rows);
+    /* the origin at a cell's centre (a row is two columns tall): the marks
+     * on either side of an axis land in cells that mirror each other */
+    double sx = c->cols % 2 == 0 ? s / 2 : 0, sy = c->rows % 2 == 0 ? s : 0;
+    sw_view v = { -s * c->cols / 2 + sx, s * c->cols / 2 + sx, -s * c->rows + sy, s * c->rows + sy };
     char err[SW_ERRLEN];
     sw_canvas_set_view(c, &v, err, sizeof err);
     int dots = c->mode == SW_CANVAS_BRAILLE;
     if (r->method != m || r->order != order || r->cols != c->cols || r->rows != c->rows || r->dots != dots ||
-        r->half != half) {
+        r->half != s) {
         size_t need = (size_t)c->cols * (size_t)c->rows * 9;
         if (need > r->cap) {
             unsigned char *st = realloc(r->stable, need);
@@ -263,7 +316,7 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->cols = c->cols;
         r->rows = c->rows;
         r->dots = dots;
-        r->half = half;
+        r->half = s;
     }
     int total = c->cols * c->rows * (dots ? 2 : 1);
     if (r->next < total)
@@ -284,8 +337,20 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     }
     taken t = { 0 };
     if (!a->have_spec) {
-        axes(c, &t);
+        axes_scaled(c, &t, half, reach * a->zoom);
         snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
+        return 0;
+    }
+    if (a->spec.n == 0) {
+        /* the meter's "x1 neutral" and this view say the same thing */
+        axes_scaled(c, &t, half, reach * a->zoom);
+        if (a->spec.growing)
+            snprintf(why, whylen, "nothing to mark: %s's %d mode%s grow%s by the physics (Re λ > 0), not by the "
+                     "method", a->scene->name, a->spec.growing, a->spec.growing == 1 ? "" : "s",
+                     a->spec.growing == 1 ? "s" : "");
+        else
+            snprintf(why, whylen, "no marks: every mode of %s has λ = 0 here, free motion under a constant "
+                     "force, which every method carries at x1 per step: neutral", a->scene->name);
         return 0;
     }
     /* the marks: each mode's λ·Δt and μ·Δt, glyph by the mode's own growth */
@@ -324,7 +389,7 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         if (sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
             take(&t, row, col, col);
     }
-    axes(c, &t);
+    axes_scaled(c, &t, half, reach * a->zoom);
     for (int k = 0; k < nm; k++) {
         int col, row;
         *outside += grows[k];

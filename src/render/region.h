@@ -16,7 +16,7 @@
 typedef struct sw_region {
     const sw_integrator *method;
     int order, cols, rows, dots;
-    double half;               /* half the span shown, in units of Δt·λ */
+    double half;               /* the scale shaded for: units of Δt·λ per column */
     double extent;             /* the region's reach for this method and order (0: unbounded) */
     const sw_integrator *extent_method;
     int extent_order;
@@ -30,7 +30,23 @@ typedef struct sw_region {
     double marks_dt, marks_t;
     int marks_n;
     double marks_rho[SW_TRUTH_MODES];
+    /* the scale, fixed while the view is open on a page: chosen when the
+     * view opens, a page is entered or the method changes, not when Δt does */
+    double fit;                /* units of Δt·λ per column at zoom 1 */
+    unsigned fit_gen;          /* the app's view_gen it was chosen for */
+    const sw_integrator *fit_method;
+    int fit_order, fit_cols, fit_valid;
 } sw_region;
+
+/* The half span the view shows (zoom 1) for a region reaching reach (its
+ * default half span) with marks as far as largest = max |Δt·λ| from the
+ * origin: the whole region and the marks when the marks are as large as
+ * half of it (max(reach, 1.25 × largest)), else 1.25 × largest, so that
+ * the marks fill the view and each halving of Δt moves them visibly (at
+ * least reach / 1000; reach when no mark). The view chosen stays while Δt
+ * changes, until a mark would leave it: then it widens once to
+ * max(reach, 1.25 × largest). */
+double sw_region_scale(double reach, double largest);
 
 /* Seconds a draw may spend shading a plugin's region (each new mode is a
  * fresh sandboxed child, about 10 ms; its grid is two cells wide): it fills

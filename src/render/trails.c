@@ -86,7 +86,6 @@ void sw_canvas_draw_trails(sw_canvas *c, const sw_trails *tr, int style)
         const double *f = tr->xy + (size_t)slot * (size_t)tr->points * 2;
         int fade = 1 + (int)((2LL * age) / tr->capacity);
         uint32_t glyph = fade == 1 ? SW_GLYPH_TRAIL_NEW : SW_GLYPH_TRAIL_OLD;
-        for (int i = 0; i < tr->points; i++)
-            sw_canvas_point_faded(c, f[2 * i], f[2 * i + 1], glyph, style, fade);
+        sw_canvas_layer(c, f, tr->points, NULL, NULL, c->mode == SW_CANVAS_BRAILLE, glyph, style, fade);
     }
 }

@@ -62,12 +62,25 @@ void sw_scene_fill(const sw_scene *sc, const double *p, double *out)
         out[i] = 0;
 }
 
+/* A value for a message: a whole-number parameter's in full (n = 1000001
+ * must not read as 1e+06, its limit), others as %g. */
+static const char *shown(char *buf, size_t len, double v, int integer)
+{
+    if (integer && v == floor(v) && fabs(v) < 1e15)
+        snprintf(buf, len, "%.0f", v);
+    else
+        snprintf(buf, len, "%g", v);
+    return buf;
+}
+
 int sw_scene_check_value(const sw_scene *sc, int index, double value, char *err, size_t errlen)
 {
     const sw_param *pd = &sc->params[index];
     if (!(value >= pd->min && value <= pd->max)) {
-        snprintf(err, errlen, "%s: parameter '%s' = %g is outside its range [%g, %g]%s%s",
-                 sc->name, pd->name, value, pd->min, pd->max, *pd->unit ? " " : "", pd->unit);
+        char v[40], lo[40], hi[40];
+        snprintf(err, errlen, "%s: parameter '%s' = %s is outside its range [%s, %s]%s%s", sc->name, pd->name,
+                 shown(v, sizeof v, value, pd->integer), shown(lo, sizeof lo, pd->min, pd->integer),
+                 shown(hi, sizeof hi, pd->max, pd->integer), *pd->unit ? " " : "", pd->unit);
         return SW_EINVAL;
     }
     if (pd->integer && value != floor(value)) {

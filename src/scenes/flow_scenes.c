@@ -31,7 +31,7 @@ int sw_scene_flow(sw_system *sys, int n, const sw_point_field *pf, sw_field_jac_
 enum { VX_OMEGA, VX_N };
 static const sw_param vortex_params[] = {
     { "omega", 1.0, -20.0, 20.0, 0, "rad/s", "angular speed of the rotation" },
-    { "n", 200, 1, 200000, 1, "", "number of particles, seeded on rings" },
+    { "n", 200, 1, 1000000, 1, "", "number of particles, seeded on rings" },
 };
 
 /* Particle i sits on ring (i mod rings) at radius (k+1)/rings of 1. */
@@ -141,7 +141,7 @@ enum { RV_U, RV_R, RV_N };
 static const sw_param river_params[] = {
     { "U", 1.0, 0.01, 10.0, 0, "m/s", "speed of the river far from the rock" },
     { "R", 0.5, 0.05, 1.5, 0, "m", "radius of the rock at the origin" },
-    { "n", 60, 1, 200000, 1, "", "number of floating particles" },
+    { "n", 60, 1, 1000000, 1, "", "number of floating particles" },
 };
 
 /* Seeds: a block upstream, columns at x in [-3.5, -2.5], rows in y in (-1.6, 1.6). */
@@ -232,7 +232,7 @@ static const sw_param gyre_params[] = {
     { "A", 0.1, 0.0, 2.0, 0, "m/s", "strength of the gyres" },
     { "epsilon", 0.25, 0.0, 1.0, 0, "", "how far the dividing line swings" },
     { "omega", 0.6283185307179586, 0.0, 20.0, 0, "rad/s", "swing frequency (2 pi / 10 by default)" },
-    { "n", 400, 1, 200000, 1, "", "number of particles, seeded on a grid" },
+    { "n", 400, 1, 1000000, 1, "", "number of particles, seeded on a grid" },
 };
 
 static void gyre_seed(int n, int i, double *x, double *y)

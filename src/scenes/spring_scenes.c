@@ -285,7 +285,7 @@ const sw_scene sw_scene_stiff_spring = {
 
 enum { CH_N, CH_K, CH_M, CH_C, CH_REST, CH_G, CH_PLUCK };
 static const sw_param chain_params[] = {
-    { "n", 10, 1, 100000, 1, "", "number of masses" },
+    { "n", 10, 1, 1000000, 1, "", "number of masses" },
     { "k", 100.0, 0.001, 1e7, 0, "N/m", "stiffness of each spring" },
     { "m", 1.0, 0.001, 1000.0, 0, "kg", "mass of each bead" },
     { "c", 0.0, 0.0, 1e4, 0, "N s/m", "damping of each spring" },

@@ -176,13 +176,27 @@ int sw_truth_first_sample(double T, double dt)
 
 double sw_truth_error(int dim, const double *y, const double *truth)
 {
-    double m = 0;
-    for (int i = 0; i < dim; i++) {
-        double d = fabs(y[i] - truth[i]);
-        if (d > m || d != d)
-            m = d; /* NaN stays: nothing compares greater */
+    /* the largest by running maxima, any NaN by a flag: no branch per
+     * component, four independent chains in registers (a frame asks this
+     * of 2e5 components per run shown); a maximum is the same in any order */
+    double m0 = 0, m1 = 0, m2 = 0, m3 = 0;
+    int nan = 0, i = 0;
+    for (; i + 4 <= dim; i += 4) {
+        double d0 = fabs(y[i] - truth[i]), d1 = fabs(y[i + 1] - truth[i + 1]);
+        double d2 = fabs(y[i + 2] - truth[i + 2]), d3 = fabs(y[i + 3] - truth[i + 3]);
+        m0 = d0 > m0 ? d0 : m0;
+        m1 = d1 > m1 ? d1 : m1;
+        m2 = d2 > m2 ? d2 : m2;
+        m3 = d3 > m3 ? d3 : m3;
+        nan |= (d0 != d0) | (d1 != d1) | (d2 != d2) | (d3 != d3);
     }
-    return m;
+    for (; i < dim; i++) {
+        double d = fabs(y[i] - truth[i]);
+        m0 = d > m0 ? d : m0;
+        nan |= d != d;
+    }
+    double a = m0 > m1 ? m0 : m1, b = m2 > m3 ? m2 : m3;
+    return nan ? NAN : a > b ? a : b;
 }
 
 int sw_truth_method_applies(const sw_scene *sc, const sw_integrator *m, char *why, size_t whylen)

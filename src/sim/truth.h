@@ -167,6 +167,40 @@ double sw_truth_growth_with(sw_truth_work *w, const sw_integrator *m, const sw_s
 double sw_truth_limit_with(sw_truth_work *w, const sw_integrator *m, const sw_spectrum *sp, double h_max,
                            int *unbounded);
 
+/* The live meter's spectrum a slice at a time. A large coupled particle
+ * system's stiffest mode is found by power iteration, one product with the
+ * Jacobian per pass, up to a few hundred passes: too slow for one frame at
+ * n = 1e5. A job runs those passes a given number at a time; run whole
+ * from a cold start it gives exactly what sw_truth_spectrum_with gives. A
+ * job started again on the same system starts warm, from the last vector
+ * (the state moved a little: a few passes do). The Jacobian's blocks are
+ * assembled in sys by the first pass: nothing else may assemble them in
+ * that system until the job is done (start it again if something did). */
+typedef struct sw_spectrum_job {
+    int active;           /* started and not yet done */
+    int stage, it, n2;    /* where it is: main or shifted iteration, pass, 2n */
+    int assembled;        /* the blocks in sys are at the job's state */
+    int sliced;           /* assembling the blocks takes a call of its own */
+    int growing;          /* a physically growing mode was the largest */
+    int warm_ok;          /* v holds the last job's vector for this system */
+    double t;             /* time of the state the job started at (the caller's) */
+    double lam, lam_main, shift;
+    double *v, *w;        /* into buf */
+    double *buf;          /* 2 · 2n doubles, owned */
+    size_t cap;
+} sw_spectrum_job;
+
+/* 1 when sys's spectrum is found by power iteration taking more than
+ * `slice` state components × passes (then the meter runs it as a job). */
+int sw_truth_spectrum_sliced(const sw_system *sys, long slice);
+/* Start (or restart) job j on sys, for the state at time t: 0, or -1 out of memory. */
+int sw_spectrum_job_start(sw_spectrum_job *j, const sw_system *sys, double t);
+/* Up to `passes` more passes at state y (the state the job started at; it
+ * is read by the first call only, which assembles the Jacobian's blocks). 1 when done, with out filled; 0 when
+ * there is more to do; -1 when it failed (or was not started). */
+int sw_spectrum_job_run(sw_spectrum_job *j, sw_system *sys, const double *y, long passes, sw_spectrum *out);
+void sw_spectrum_job_free(sw_spectrum_job *j);
+
 /* The same over a run, from spectra taken at `samples` times in [0, t_end]
  * along the true solution (or, with no truth, at the start alone): the
  * smallest limit and the time whose linearisation sets it, the largest |λ|

@@ -264,62 +264,74 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
  * iteration — the stiffest mode, -ω² (a compressed spring adds positive
  * eigenvalues, but only of the size of its tension over length, far below
  * its stiffness) — and that mode's damping from the Rayleigh quotient of
- * M⁻¹Fv on its vector. Exact for proportional damping, as a chain has. */
-/* Power iteration on M⁻¹Fx - shift·I from a fixed start (neighbours moving
- * against each other: the stiffest modes of springs between neighbours are
- * close to that, so few passes do): *lam gets its eigenvalue largest in
- * size, v its vector. assemble_first 0 reuses the blocks at y. */
-static int power_step(sw_particles *p, const double *y, double shift, double *v, double *w, int assemble_first,
-                      double *lam)
+ * M⁻¹Fv on its vector. Exact for proportional damping, as a chain has.
+ * Power iteration on M⁻¹Fx - shift·I runs from a fixed start (neighbours
+ * moving against each other: the stiffest modes of springs between
+ * neighbours are close to that, so few passes do), or from the last
+ * vector (warm), for at most POWER_ITERATIONS passes. It runs as a job a
+ * given number of passes at a time, so the live meter spreads it over
+ * frames; run whole, it is the synchronous computation, pass for pass. */
+#define POWER_ITERATIONS 100
+
+enum { JOB_MAIN, JOB_SHIFTED, JOB_DAMPING };
+
+static void power_start(sw_spectrum_job *j, double shift, int warm)
 {
-    int n2 = 2 * p->n;
-    for (int i = 0; i < n2; i++)
-        v[i] = ((i / 2) % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * sin(1.3 * i));
-    *lam = 0;
-    for (int it = 0; it < 100; it++) {
-        if (sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, assemble_first && it == 0) != 0)
+    if (!warm)
+        for (int i = 0; i < j->n2; i++)
+            j->v[i] = ((i / 2) % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * sin(1.3 * i));
+    j->shift = shift;
+    j->it = 0;
+    j->lam = 0;
+}
+
+/* Up to `passes` passes of power iteration; 1 when it has converged or
+ * used its passes (j->lam: its eigenvalue largest in size, v its vector),
+ * 0 when it has more to do, -1 on failure. */
+static int power_passes(sw_spectrum_job *j, sw_particles *p, const double *y, long *passes)
+{
+    int n2 = j->n2;
+    double *v = j->v, *w = j->w;
+    for (; j->it < POWER_ITERATIONS; j->it++) {
+        if (*passes <= 0)
+            return 0;
+        if (!j->assembled) { /* the blocks at y, first (a slice of its own when sliced) */
+            if (!sw_particles_own_blocks(p, y))
+                return -1;
+            j->assembled = 1;
+            if (j->sliced) {
+                *passes = 0;
+                return 0;
+            }
+        }
+        --*passes;
+        if (sw_particles_jacobian_apply(p, y, 1.0, 0.0, v, w, 0) != 0)
             return -1;
         double num = 0, den = 0;
         for (int i = 0; i < n2; i++) {
             w[i] *= p->inv_mass[i / 2];
-            if (shift != 0)
-                w[i] -= shift * v[i];
+            if (j->shift != 0)
+                w[i] -= j->shift * v[i];
             num += v[i] * w[i];
             den += v[i] * v[i];
         }
         double norm = sw_norm_inf(n2, w), next = den > 0 ? num / den : 0;
         if (!(norm > 0) || !isfinite(norm))
-            break;
+            return 1;
         for (int i = 0; i < n2; i++)
             v[i] = w[i] / norm;
-        if (it > 5 && fabs(next - *lam) <= 1e-9 * fabs(next))
-            break;
-        *lam = next;
+        if (j->it > 5 && fabs(next - j->lam) <= 1e-9 * fabs(next))
+            return 1;
+        j->lam = next;
     }
-    return 0;
+    return 1;
 }
 
-static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y, sw_spectrum *sp)
+/* The stiffest mode from the job's eigenvalue: its damping from M⁻¹Fv on v. */
+static void stiffest_mode(sw_spectrum_job *j, sw_particles *p, const double *y, sw_spectrum *sp)
 {
-    sw_particles *p = &sys->particles;
-    int n2 = 2 * p->n;
-    double *w = sw_truth_scratch(ws, (size_t)3 * n2);
-    if (!w)
-        return -1;
-    double *v = w + n2, *e = v + n2, lam;
-    if (power_step(p, y, 0.0, v, w, 1, &lam) != 0)
-        return -1;
-    if (lam > 0) { /* a mode that grows physically (a tidal stretch) is the largest: the
-                      stiffest oscillation is the most negative, the largest of M⁻¹Fx - lam I */
-        double below;
-        if (power_step(p, y, lam, v, w, 0, &below) != 0)
-            return -1;
-        if (below + lam < 0) {
-            sp->growing++;
-            lam = below + lam;
-        }
-    }
-    /* lam: the eigenvalue of M⁻¹Fx largest in size (stiffest when < 0) */
+    int n2 = j->n2;
+    double *v = j->v, *e = j->w, lam = j->lam_main;
     (void)sw_particles_jacobian_apply(p, y, 0.0, 1.0, v, e, 0); /* (the blocks are there) */
     double num = 0, den = 0;
     for (int i = 0; i < n2; i++) {
@@ -328,12 +340,115 @@ static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y
     }
     double b = den > 0 ? num / den : 0, a = lam, disc = 0.25 * b * b + a;
     double tol = 1e-9 * sqrt(fabs(a)) + 1e-300;
+    sp->growing = j->growing;
     if (disc < 0)
         add_mode(sp, 0.5 * b, sqrt(-disc), 0.5 * b, -sqrt(-disc), tol);
     else
         add_mode(sp, 0.5 * b + sqrt(disc), 0, 0.5 * b - sqrt(disc), 0, tol);
     sp->complete = 0;
+}
+
+/* Run the job on for up to `passes` passes (each one product with the
+ * Jacobian; the first also assembles its blocks at y). 1 with sp filled,
+ * 0 when there is more to do, -1 on failure. */
+static int job_run(sw_spectrum_job *j, sw_particles *p, const double *y, long passes, sw_spectrum *sp)
+{
+    for (;;) {
+        int rc = power_passes(j, p, y, &passes);
+        if (rc <= 0)
+            return rc;
+        if (j->stage == JOB_MAIN) {
+            j->lam_main = j->lam;
+            j->growing = 0;
+            j->stage = JOB_DAMPING;
+            if (j->lam > 0) { /* a mode that grows physically (a tidal stretch) is the largest: the
+                                 stiffest oscillation is the most negative, the largest of M⁻¹Fx - lam I */
+                j->stage = JOB_SHIFTED;
+                power_start(j, j->lam_main, 0);
+                continue;
+            }
+        } else if (j->stage == JOB_SHIFTED) {
+            double below = j->lam;
+            if (below + j->lam_main < 0) {
+                j->growing = 1;
+                j->lam_main = below + j->lam_main;
+            }
+            j->stage = JOB_DAMPING;
+        }
+        memset(sp, 0, sizeof *sp);
+        sp->order = 2;
+        /* lam_main: the eigenvalue of M⁻¹Fx largest in size (stiffest when < 0) */
+        stiffest_mode(j, p, y, sp);
+        finish(sp);
+        /* v is the main iteration's vector unless a shifted one replaced it */
+        j->warm_ok = !j->growing && j->lam_main == j->lam_main && j->shift == 0;
+        j->active = 0;
+        return 1;
+    }
+}
+
+static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y, sw_spectrum *sp)
+{
+    sw_particles *p = &sys->particles;
+    int n2 = 2 * p->n;
+    double *w = sw_truth_scratch(ws, (size_t)2 * n2);
+    if (!w)
+        return -1;
+    sw_spectrum_job j = { .active = 1, .stage = JOB_MAIN, .n2 = n2, .v = w + n2, .w = w };
+    power_start(&j, 0.0, 0);
+    int growing = sp->growing;
+    if (job_run(&j, p, y, (long)3 * POWER_ITERATIONS, sp) != 1)
+        return -1;
+    sp->growing += growing;
     return 0;
+}
+
+int sw_truth_spectrum_sliced(const sw_system *sys, long slice)
+{
+    return sys->kind == SW_SYS_PARTICLES && sys->n > DENSE_PARTICLES &&
+           (double)POWER_ITERATIONS * 2.0 * sys->n > (double)slice &&
+           sw_particles_coupled(&sys->particles);
+}
+
+int sw_spectrum_job_start(sw_spectrum_job *j, const sw_system *sys, double t)
+{
+    int n2 = 2 * sys->n, warm = j->warm_ok && j->n2 == n2 && j->v;
+    if ((size_t)n2 > j->cap) {
+        free(j->buf);
+        j->buf = malloc((size_t)2 * n2 * sizeof *j->buf);
+        j->cap = j->buf ? (size_t)n2 : 0;
+        warm = 0;
+        if (!j->buf)
+            return -1;
+    }
+    j->n2 = n2;
+    j->v = j->buf + n2;
+    j->w = j->buf;
+    j->t = t;
+    j->active = 1;
+    j->assembled = 0;
+    j->sliced = 1;
+    j->stage = JOB_MAIN;
+    j->growing = 0;
+    j->warm_ok = 0;
+    power_start(j, 0.0, warm);
+    return 0;
+}
+
+int sw_spectrum_job_run(sw_spectrum_job *j, sw_system *sys, const double *y, long passes, sw_spectrum *out)
+{
+    if (!j->active)
+        return -1;
+    int rc = job_run(j, &sys->particles, y, passes < 1 ? 1 : passes, out);
+    if (rc < 0)
+        j->active = 0;
+    return rc;
+}
+
+void sw_spectrum_job_free(sw_spectrum_job *j)
+{
+    free(j->buf);
+    memset(j, 0, sizeof *j);
 }
 
 int sw_truth_spectrum_with(sw_truth_work *w, sw_system *sys, double t, const double *y, sw_spectrum *out)

@@ -12,44 +12,100 @@
 #include <unistd.h>
 
 #include "stepwise/base.h"
+#include "util/decimal.h"
 #include "util/infile.h"
+
+/* The file is read in blocks of IN_BLOCK bytes into r->in, and lines are
+ * cut from the block: no call per byte (a trace of 2 MB is read in 32
+ * read() calls). */
+#define IN_BLOCK 65536
+
+/* A byte a text file does not hold: a control character other than tab
+ * and CR, or DEL (1 or 0, branch-free so that the check vectorises). */
+#define IS_BINARY(u) ((unsigned)(((u) < 0x20) & ((u) != '\t') & ((u) != '\r')) | ((u) == 0x7f))
+
+/* Bytes available in r->in after at most one read(): 0 at the end of the
+ * file or on a read error (r->in_errno). */
+static size_t in_fill(sw_trace_reader *r)
+{
+    if (r->in_pos < r->in_len)
+        return r->in_len - r->in_pos;
+    r->in_pos = r->in_len = 0;
+    while (!r->in_eof && !r->in_errno) {
+        ssize_t got = read(r->fd, r->in, IN_BLOCK);
+        if (got > 0) {
+            r->in_len = (size_t)got;
+            break;
+        }
+        if (got == 0)
+            r->in_eof = 1;
+        else if (errno != EINTR)
+            r->in_errno = errno ? errno : EIO;
+    }
+    return r->in_len;
+}
+
+/* The next byte without taking it, or EOF. */
+static int in_peek(sw_trace_reader *r)
+{
+    return in_fill(r) ? (unsigned char)r->in[r->in_pos] : EOF;
+}
+
+static int in_getc(sw_trace_reader *r)
+{
+    return in_fill(r) ? (unsigned char)r->in[r->in_pos++] : EOF;
+}
+
+static int read_error(sw_trace_reader *r, char *err, size_t errlen)
+{
+    tr_fail(r, err, errlen, "read error: %s", strerror(r->in_errno));
+    return SW_EIO;
+}
 
 /* Read one line into r->buf without its newline (and a CR before it).
  * 1 a line, 0 end of file, or an error: too long, binary, or no final
  * newline (a cut-short file). */
 static int read_line(sw_trace_reader *r, char *err, size_t errlen)
 {
-    int c = getc(r->f);
-    if (c == EOF) {
-        if (ferror(r->f)) {
-            tr_fail(r, err, errlen, "read error: %s", strerror(errno));
-            return SW_EIO;
-        }
-        return 0;
-    }
+    if (!in_fill(r))
+        return r->in_errno ? read_error(r, err, errlen) : 0;
     r->line++;
     size_t n = 0;
-    while (c != EOF && c != '\n') {
-        unsigned char u = (unsigned char)c;
-        if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f)
-            return tr_fail(r, err, errlen, "binary data (byte 0x%02x at column %zu): a trace is "
-                        "a text file", u, n + 1);
-        if (n == r->cap)
+    for (;;) {
+        size_t avail = in_fill(r);
+        if (!avail) {
+            if (r->in_errno)
+                return read_error(r, err, errlen);
+            return tr_fail(r, err, errlen, "the last line does not end with a newline: the file is "
+                        "cut short (every line, the last one too, ends with a newline)");
+        }
+        const unsigned char *s = (const unsigned char *)r->in + r->in_pos;
+        const unsigned char *nl = memchr(s, '\n', avail);
+        size_t take = nl ? (size_t)(nl - s) : avail, room = r->cap - n;
+        /* Bytes are checked in order, as far as one past the room left:
+         * binary data is named before a line too long. */
+        size_t scan = take <= room ? take : room + 1;
+        unsigned bad = 0;
+        for (size_t i = 0; i < scan; i++)
+            bad |= IS_BINARY(s[i]);
+        if (bad)
+            for (size_t i = 0; i < scan; i++)
+                if (IS_BINARY(s[i]))
+                    return tr_fail(r, err, errlen, "binary data (byte 0x%02x at column %zu): a "
+                                "trace is a text file", s[i], n + i + 1);
+        if (take > room)
             return r->have_sys
                        ? tr_fail(r, err, errlen, "line longer than %zu bytes, more than %d columns "
                               "can need: far larger than any trace", r->cap, r->ncols)
                        : tr_fail(r, err, errlen, "line longer than %zu bytes: a metadata line is "
                               "shorter, and this is no trace", r->cap);
-        r->buf[n++] = (char)c;
-        c = getc(r->f);
-    }
-    if (c == EOF) {
-        if (ferror(r->f)) {
-            tr_fail(r, err, errlen, "read error: %s", strerror(errno));
-            return SW_EIO;
+        memcpy(r->buf + n, s, take);
+        n += take;
+        r->in_pos += take;
+        if (nl) {
+            r->in_pos++; /* the newline */
+            break;
         }
-        return tr_fail(r, err, errlen, "the last line does not end with a newline: the file is "
-                    "cut short (every line, the last one too, ends with a newline)");
     }
     if (n > 0 && r->buf[n - 1] == '\r')
         n--;
@@ -90,7 +146,7 @@ static int read_magic(sw_trace_reader *r, char *err, size_t errlen)
         return SW_OK;
     /* Not a trace. Random or binary bytes may happen to open with a short
      * clean line: look a little further so such a file is called binary. */
-    for (int i = 0, c; i < 512 && (c = getc(r->f)) != EOF; i++)
+    for (int i = 0, c; i < 512 && (c = in_getc(r)) != EOF; i++)
         if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n') || c == 0x7f)
             return tr_fail(r, err, errlen, "binary data (byte 0x%02x within the first 512 bytes "
                         "after line 1): a trace is a text file", (unsigned)c);
@@ -109,10 +165,9 @@ static int read_meta(sw_trace_reader *r, char *err, size_t errlen)
     meta_state ms;
     memset(&ms, 0, sizeof ms);
     for (;;) {
-        int c = getc(r->f);
+        int c = in_peek(r);
         if (c == EOF)
             break;
-        ungetc(c, r->f);
         if (c != '#')
             break;
         int rc = read_line(r, err, errlen);
@@ -148,11 +203,13 @@ static int open_regular(sw_trace_reader *r, const char *path, char *err, size_t 
                      S_ISFIFO(st.st_mode) ? "a FIFO (a named pipe)" : what);
         return SW_EINVAL;
     }
-    if (!(r->f = fdopen(fd, "r"))) {
-        snprintf(err, errlen, "%.200s:1: cannot open: %s", path, strerror(errno));
+    if (!(r->in = malloc(IN_BLOCK))) {
+        snprintf(err, errlen, "%.200s:1: out of memory for reading", path);
         close(fd);
-        return SW_EIO;
+        return SW_ENOMEM;
     }
+    r->fd = fd;
+    r->have_fd = 1;
     return SW_OK;
 }
 
@@ -187,13 +244,16 @@ static char *next_cell(char **cursor)
     char *s = *cursor;
     if (!s)
         return NULL;
-    char *comma = strchr(s, ',');
-    if (comma) {
-        *comma = '\0';
-        *cursor = comma + 1;
-    } else
-        *cursor = NULL;
-    return tr_trim(s);
+    char *e = s;
+    while (*e && *e != ',')
+        e++;
+    *cursor = *e ? e + 1 : NULL;
+    *e = '\0';
+    while (*s == ' ' || *s == '\t')
+        s++;
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t'))
+        *--e = '\0';
+    return s;
 }
 
 int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
@@ -262,6 +322,17 @@ int sw_trace_read_header(sw_trace_reader *r, char *err, size_t errlen)
     return rc;
 }
 
+/* A printable copy of the cell at s: up to its comma, without trailing blanks. */
+static const char *cell_shown(const char *s, char out[48])
+{
+    size_t n = 0;
+    while (s[n] && s[n] != ',')
+        n++;
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t'))
+        n--;
+    return tr_shown(s, n, out);
+}
+
 int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
 {
     char show[48], name[32];
@@ -310,32 +381,45 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
                         sp->steps ? (double)sp->steps : sp->until, sp->every,
                         r->max_rows - SW_TRACE_ROW_SLACK, SW_TRACE_ROW_SLACK);
         }
-        char *cursor = r->buf, *cell;
+        /* Each cell is read where it lies: blanks, a number, blanks, then a
+         * comma or the end; its text is cut out only for a message. */
+        char *p = r->buf;
         int c = 0;
-        while ((cell = next_cell(&cursor))) {
+        for (;;) {
+            while (*p == ' ' || *p == '\t')
+                p++;
+            char *cell = p;
             if (c == r->nhead)
                 return tr_fail(r, err, errlen, "the row has more than the header's %d cells "
-                            "(extra '%s')", r->nhead, tr_shown(cell, strlen(cell), show));
+                            "(extra '%s')", r->nhead, cell_shown(cell, show));
             int col = r->col_of[c];
             if (col < 0) { /* an extra column: not read */
-                c++;
-                continue;
+                while (*p && *p != ',')
+                    p++;
+            } else {
+                if (*p == ',' || !*p) {
+                    sw_trace_colname(&r->sys, col, name, sizeof name);
+                    return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
+                }
+                char *end;
+                double v = sw_decimal_parse(cell, &end);
+                for (p = end; *p == ' ' || *p == '\t'; p++)
+                    ;
+                if ((*p && *p != ',') || end == cell) {
+                    sw_trace_colname(&r->sys, col, name, sizeof name);
+                    return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
+                                "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
+                                cell_shown(cell, show));
+                }
+                if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
+                    return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole "
+                                "number from 0", cell_shown(cell, show));
+                row[col] = v;
             }
-            sw_trace_colname(&r->sys, col, name, sizeof name);
-            if (!*cell)
-                return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
-            char *end;
-            errno = 0;
-            double v = strtod(cell, &end);
-            if (*end != '\0')
-                return tr_fail(r, err, errlen, "column '%s' holds '%s', which is not a number "
-                            "(numbers as printed by %%.17g; nan, inf and -inf allowed)", name,
-                            tr_shown(cell, strlen(cell), show));
-            if (col == 0 && !(v >= 0 && v <= 1e15 && v == floor(v)))
-                return tr_fail(r, err, errlen, "column 'step' holds '%s'; a step is a whole number "
-                            "from 0", tr_shown(cell, strlen(cell), show));
-            row[col] = v;
             c++;
+            if (!*p)
+                break;
+            p++; /* the comma */
         }
         if (c < r->nhead) {
             int at = c;
@@ -355,9 +439,11 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
 
 void sw_trace_read_close(sw_trace_reader *r)
 {
-    if (r->f)
-        fclose(r->f);
-    r->f = NULL;
+    if (r->have_fd)
+        close(r->fd);
+    r->have_fd = 0;
+    free(r->in);
+    r->in = NULL;
     free(r->buf);
     r->buf = NULL;
     free(r->col_of);

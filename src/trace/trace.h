@@ -138,7 +138,12 @@ typedef struct sw_trace_meta {
 } sw_trace_meta;
 
 typedef struct sw_trace_reader {
-    FILE *f;
+    int fd;                           /* the open file (have_fd) */
+    int have_fd;
+    char *in;                         /* read-ahead block: in[in_pos, in_len) not yet read */
+    size_t in_pos, in_len;
+    int in_eof;                       /* read() said end of file */
+    int in_errno;                     /* read() failed with this; 0: no error */
     char name[SW_TRACE_PATH_MAX];     /* the path, for messages */
     long line;                        /* number of the line in buf */
     char *buf;                        /* the current line, without its newline */

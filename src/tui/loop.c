@@ -33,6 +33,19 @@ static void braille_needs_utf8(sw_app *a)
     }
 }
 
+/* One key to the hooks (the lesson) or the app; the picture's trails and
+ * followed view are forgotten when the run went back or started again
+ * (a reset, a rewind, a page or scene of its own: the app's epoch). */
+static void take_key(sw_app *a, const sw_play_hooks *hooks, sw_frame *f, int key)
+{
+    long steps_before = a->sims[0].steps;
+    unsigned epoch = a->epoch;
+    if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
+        sw_app_key(a, key, hooks != NULL);
+    if (a->sims[0].steps < steps_before || a->sims[0].t == 0 || a->epoch != epoch)
+        sw_frame_forget(f);
+}
+
 int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
 {
     sw_frame f;
@@ -47,7 +60,8 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
     f.unicode = sw_term_utf8();
     int cols = 0, rows = 0;
     double last = sw_clock_now(), rate_t = last, busy = 0, capacity = 0;
-    long rate_steps = 0;
+    long rate_steps = 0, pushed_steps = -1;
+    double pushed_t = -1;
     int status = SW_OK;
     /* Test hook: take the error exit after N frames (docs/robustness.md). */
     const char *force = getenv("STEPWISE_FORCE_ERROR");
@@ -78,11 +92,7 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
                 sw_signals_hangup();
                 break;
             }
-            long steps_before = a->sims[0].steps;
-            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_app_key(a, key, hooks != NULL);
-            if (a->sims[0].steps < steps_before || a->sims[0].t == 0)
-                sw_frame_forget(&f);
+            take_key(a, hooks, &f, key);
             if (a->quit)
                 break;
         }
@@ -103,7 +113,11 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
             rate_t = now;
         }
         braille_needs_utf8(a);
-        sw_frame_push_trails(&f, a);
+        /* trails age by frames: a paused run pushes nothing, so they stay */
+        if (a->sims[0].steps != pushed_steps || a->sims[0].t != pushed_t)
+            sw_frame_push_trails(&f, a);
+        pushed_steps = a->sims[0].steps;
+        pushed_t = a->sims[0].t;
         const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, cols) : NULL;
         sw_frame_compose(&f, a, side, &scr);
         sw_term_paint(&scr);
@@ -112,10 +126,8 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
         int key = sw_term_key(wait);
         if (key == SW_TERM_GONE)
             sw_signals_hangup();
-        if (key >= 0) {
-            if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
-                sw_app_key(a, key, hooks != NULL);
-        }
+        if (key >= 0)
+            take_key(a, hooks, &f, key);
     }
     sw_term_stop(); /* first, so every message below lands on a sane terminal */
     sw_app_record_stop(a); /* a signal, q or an error: the trace is written whole or not at all */

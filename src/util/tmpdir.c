@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "stepwise/base.h"
+#include "util/fds.h"
 
 #define MADE_MAX 8
 /* Directories below this depth are not descended into (nothing of ours nests). */
@@ -104,12 +105,7 @@ static void watch(int fd, const char *dir)
     static const int ignored[] = { SIGINT, SIGQUIT, SIGHUP, SIGTSTP, SIGTTIN, SIGTTOU, SIGPIPE };
     for (size_t i = 0; i < sizeof ignored / sizeof ignored[0]; i++)
         signal(ignored[i], SIG_IGN);
-    struct rlimit nofile;
-    long maxfd = getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur != RLIM_INFINITY &&
-                         nofile.rlim_cur < 65536 ? (long)nofile.rlim_cur : 65536;
-    for (long i = 0; i < maxfd; i++)
-        if (i != fd)
-            close((int)i);
+    sw_close_fds(0, &fd, 1);
     if (chdir("/") != 0)
         _exit(1);
     char c;

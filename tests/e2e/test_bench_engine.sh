@@ -2,7 +2,8 @@
 # The engine benchmark (`make bench`) with --quick: its tables run to the
 # end (small sizes; the implicit methods against rk4; Barnes-Hut at n = 1e3, 1e4, allocating nothing); every
 # hand-written baseline reproduces the generic step bit for bit; every
-# default scene gets a frame-cost row.
+# default scene gets a frame-cost row; the heavy views (through the app) and
+# the large-n memory rows (against the hand-fused loop) are there.
 # Timings are printed, never checked: they vary from machine to machine.
 . "$(dirname "$0")/lib.sh"
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
@@ -13,7 +14,7 @@ echo "$out" | grep -q '^throughput: ns per particle-step' || fail "no throughput
 echo "$out" | grep -q 'differs by' && fail "a baseline differs"
 echo "$out" | grep -q '^implicit steps: chain' || fail "no implicit-steps table"
 for m in rk4 implicit-euler implicit-midpoint linear-implicit-euler; do
-    echo "$out" | grep -Eq "^  $m +[0-9.e+-]+ +[0-9.e+-]+ +[0-9.]+ +\[" || fail "no implicit-steps row for $m"
+    echo "$out" | grep -Eq "^  $m +[0-9.e+-]+ +[0-9.]+ +\\[" || fail "no implicit-steps row for $m"
 done
 echo "$out" | grep -q '^frame cost' || fail "no frame-cost table"
 for s in vortex river gyre projectile bounce fireworks spring stiff-spring chain orbit; do
@@ -22,6 +23,16 @@ done
 echo "$out" | grep -q '^peak memory: vortex n = 10000' || fail "no memory table"
 echo "$out" | grep -Eq '^  rk4 +[0-9.]+ +[0-9.-]+ +5$' || fail "no memory row for rk4"
 echo "$out" | grep -q 'failed' && fail "a memory probe failed: $out"
+echo "$out" | grep -q '^frame cost of the heavy views' || fail "no heavy-view frame table"
+for v in 'plain' 'compare+ghost' 'lanes+ghost'; do
+    echo "$out" | grep -Fq "  vortex    10000 $v " || fail "no heavy-view row for vortex $v"
+done
+echo "$out" | grep -Eq '^  chain +10000 plain +verlet ' || fail "no heavy-view row for the chain"
+echo "$out" | grep -q "^  (the baseline's vortex seeds equal the scene's)" || fail "baseline vortex seeds differ"
+for s in chain vortex; do
+    echo "$out" | grep -Eq "^  $s +100000 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ " \
+        || fail "no million-particle row for $s"
+done
 echo "$out" | grep -q '^Barnes-Hut against the direct sum' || fail "no Barnes-Hut table"
 echo "$out" | grep -q '^  allocations during the timed evaluations: 0$' || fail "the tree allocated: $out"
 # the count probe bench/instructions.sh runs under callgrind

@@ -15,13 +15,15 @@ wait_for 'symplectic-euler +dt=0\.02 ' || fail "- did not halve dt"
 keys 5
 wait_for 'spring +rk4 +dt=0\.02 ' || fail "5 did not pick rk4"
 keys '?'
-wait_for '\? closes \(1/1\)' || fail "? did not open the help"
-for k in 'i  Tab' 'I  Shift-Tab' '1-9' '\+  =' 'halve dt' 'space' 'one step' 'reset to t = 0' \
+wait_for '\? (closes|next page) \(1/[0-9]+\)' || fail "? did not open the help"
+for k in 'i  Tab' 'I  Shift-Tab' '1-9' '\+  -' 'halve dt' 'space' 'one step' 'reset to t = 0' \
          '\[  \]' 'compare' 'ghost' 'trails' 'graph of energy' 'Braille' 'parameter panel' \
          'recording a trace' 'work-precision' 'this help' 'quit'; do
     screen | grep -Eq -- "$k" || fail "help does not list '$k'"
 done
-keys '?'
+# the help's further pages (120x40 holds all but the last lines), then closed
+n=$(screen | sed -n 's/.*? [a-z ]* (1\/\([0-9]*\)).*/\1/p' | head -1)
+while [ "${n:-1}" -gt 0 ]; do keys '?'; n=$((${n:-1} - 1)); done
 wait_for 'i method' || fail "? did not close the help"
 keys q
 wait_for 'PROMPT\$ *$' || fail "q did not return to the shell"

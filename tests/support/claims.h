@@ -5,7 +5,8 @@
  * pages and measurements more than one part uses are in claims_runs.c and
  * claims_shared.c; claims_events.c: event location's figures in
  * docs/performance.md and lesson 4; claims_methods.c: yoshida4's and the
- * Barnes-Hut tree's figures in docs/performance.md and docs/scenes.md. */
+ * Barnes-Hut tree's figures in docs/performance.md and docs/scenes.md;
+ * claims_stiff.c: rodas4's. */
 #ifndef SW_TEST_CLAIMS_H
 #define SW_TEST_CLAIMS_H
 
@@ -74,9 +75,18 @@ typedef struct claim {
 #define R_RATIO "the page's goal accepts this much around the figure"
 #define R_MATH "arithmetic the text does: to its last digit"
 
-/* The rows, in five tables. */
+/* The rows, in tables (one per part). */
 extern const claim sw_claims_a[], sw_claims_b[], sw_claims_d[], sw_claims_e[], sw_claims_m[];
 extern const size_t sw_claims_a_n, sw_claims_b_n, sw_claims_d_n, sw_claims_e_n, sw_claims_m_n;
+/* claims_stages.c: the stage view's page in lesson 6 */
+extern const claim sw_claims_s[];
+extern const size_t sw_claims_s_n;
+/* claims_rkn.c: the Runge-Kutta-Nystrom pair's figures (README, guide, table, lesson 9). */
+extern const claim sw_claims_r[];
+extern const size_t sw_claims_r_n;
+/* claims_stiff.c: the stiff method rodas4's figures (lesson 9, performance, README). */
+extern const claim sw_claims_k[];
+extern const size_t sw_claims_k_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

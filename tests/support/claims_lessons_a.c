@@ -139,6 +139,21 @@ static double l4_dead(void) { return bounce_height("n=1 e=0"); }
 static double l4_e_height(void) { return 4 * l4_e(); }
 static double l4_e_squared(void) { return l4_e() * l4_e(); }
 static double l4_smooth_ratio(void) { return pow(2, cl_order_by_halving("projectile", NULL, "rk4", 0.05)); }
+/* The energy change's reference on the projectile: the status line's
+ * scale (sw_sim_energy_scale) is the kinetic energy at launch, ½m|v0|²,
+ * computed here from the parameters and checked against the scale. */
+static double l4_launch_ke(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "projectile", "drag=1", "rk4", 0.05);
+    double vx = cl_param("projectile", "vx"), vy = cl_param("projectile", "vy"), m = cl_param("projectile", "m");
+    double ke = 0.5 * m * (vx * vx + vy * vy);
+    ck_assert_double_eq_tol(sw_sim_energy_scale(&s), ke, 1e-12 * ke);
+    sw_sim_free(&s);
+    return ke;
+}
+static double l4_drag_drift(void) { return cl_drift_until("projectile", "drag=1", "rk4", 0.05, 3); }
+
 static double l4_report_time(void) { return sw_scene_find("bounce")->duration; }
 
 /* Swings in ten seconds: ten over the damped period 2π/ω_d (the
@@ -219,6 +234,66 @@ static double l5_growth_formula(void) { return hypot(1 + l5_mark_re(), l5_mark_i
 static double l2_dt_plus2(void) { return cl_page_dt_after(L2, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
 static double l5_dt_minus3(void) { return cl_page_dt_after(L5, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
 
+/* The bounce page's ratios as the dt-change message prints them, and
+ * whether it read the first as an order (it must not: the next differs). */
+static double l4_bounce_shown1(void) { return cl_page_shown_ratio(L4, "A bounce breaks the order", NULL, 1); }
+static double l4_bounce_shown2(void) { return cl_page_shown_ratio(L4, "A bounce breaks the order", NULL, 2); }
+static double l4_bounce_not_order(void) { return isnan(cl_l4_ratio()) ? 0 : 1; }
+
+/* Lesson 3's undamped spring (c = 0) under Euler at Δt = 0.02: the
+ * energy the linear factor 1 + (ωΔt)² per step predicts at t = 10, and
+ * when the mass first passes its anchor (from there the force is not
+ * linear in the stretch). */
+static double l3_linear_prediction(void)
+{
+    double k = cl_param("spring", "k"), m = cl_param("spring", "m"), dt = 0.02;
+    return 100 * (pow(1 + k / m * dt * dt, round(10 / dt)) - 1);
+}
+static double l3_steps_to_10(void) { return (double)cl_steps_for("spring", "c=0", "euler", 0.02, 10.0); }
+static double l3_crosses_anchor(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "spring", "c=0", "euler", 0.02);
+    while (s.t < 10 && s.sys.y[0] > 0) /* the anchor at the origin, the mass on +x */
+        sw_sim_step(&s);
+    double t = s.sys.y[0] <= 0 ? s.t : NAN;
+    sw_sim_free(&s);
+    return t;
+}
+
+/* Lesson 1's page on the meter: what its meter reads. */
+static sw_app_meter l1_meter(double *dt)
+{
+    sw_runner r;
+    sw_app a;
+    sw_app_meter m;
+    cl_lesson_page(&r, &a, L1, "The stability meter");
+    ck_assert(sw_app_stability(&a, &m));
+    *dt = a.dt;
+    cl_page_free(&r, &a);
+    return m;
+}
+static double l1_lines_dt(void) { double dt; l1_meter(&dt); return dt; }
+static double l1_lines_stiff(void) { double dt; return l1_meter(&dt).stiff; }
+static double l1_lines_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); return m.stiff * m.limit; }
+static double l1_lines_limit_dt(void) { double dt; return l1_meter(&dt).limit; }
+static double l1_lines_dt_over_limit(void) { double dt; sw_app_meter m = l1_meter(&dt); return dt / (m.stiff * m.limit); }
+
+/* Lesson 5's last page: the meter's limit and its undamped one. */
+static sw_app_meter l5_meter(void)
+{
+    sw_runner r;
+    sw_app a;
+    sw_app_meter m;
+    cl_lesson_page(&r, &a, L5, "Remedy 3: better integration");
+    sw_app_set_method(&a, sw_integrator_find("rk4"));
+    ck_assert(sw_app_stability(&a, &m));
+    cl_page_free(&r, &a);
+    return m;
+}
+static double l5_meter_limit(void) { sw_app_meter m = l5_meter(); return m.stiff * m.limit; }
+static double l5_meter_undamped(void) { sw_app_meter m = l5_meter(); return m.stiff * m.limit_undamped; }
+
 /* RK4 on the parabola (no drag): the status line's error at t = 2. */
 static double l4_parabola_error(void)
 {
@@ -238,6 +313,14 @@ static double l5_falls(void) { return cl_drift_at("spring", STIFF, "euler", 0.00
 const claim sw_claims_a[] = {
     /* lesson 1 */
     { L1, "g(x) = ω(-y, x) with ω = {1} rad/s", l1_omega, EXACT, 0, R_COUNT, NULL },
+    { L1, "dt={0.05}   the time step Δt", l1_lines_dt, EXACT, 0, "the page's Δt, as the status line prints it (the next page's too)", NULL },
+    { L1, "stiffness·dt … of limit {2.83}", l1_lines_limit, ROUNDED, 0, "the meter's limit on this page (RK4's 2√2 on the vortex's ±i)", NULL },
+    { L1, "Here |λ| = {1} per second", l1_lines_stiff, ROUNDED, 0, "the meter's |λ| on this page", NULL },
+    { L1, "stiffness·dt = {1} × Δt may grow", l1_lines_stiff, ROUNDED, 0, R_ROUND, NULL },
+    { L1, "Δt = {0.05} s and the limit reads", l1_lines_dt, EXACT, 0, R_COUNT, NULL },
+    { L1, "and the limit reads {2.83}. Up to", l1_lines_limit, ROUNDED, 0, R_ROUND, NULL },
+    { L1, "@answer b) {2.83} s | Yes", l1_lines_limit_dt, ROUNDED, 0, "the largest stable Δt: the limit over |λ|", NULL },
+    { L1, "@answer c) {0.0177} s", l1_lines_dt_over_limit, ROUNDED, 0, "Δt over the limit, the wrong answer's figure", NULL },
     { L1, "one full turn takes 2π/ω ≈ {6.3} seconds", l1_turn, ROUNDED, 0, R_ROUND, NULL },
     { L1, "swings back and forth every {10} seconds", l1_gyre_swing, ABS, 1e-5, "the default ω = 0.628319 is 2π/10 to 6 digits", NULL },
     /* lesson 2 */
@@ -272,7 +355,7 @@ const claim sw_claims_a[] = {
     { L3, "so ω = {3.16} rad/s", l3_omega, ROUNDED, 0, R_ROUND, NULL },
     { L3, "ωΔt = {0.063}: a factor", l3_omega_dt, ROUNDED, 0, R_ROUND, NULL },
     { L3, "a factor {1.004} per step", l3_energy_factor, ROUNDED, 0, "ρ² from the one-step map, to the text's digits", NULL },
-    { L3, "shows x{1.002} per step", l3_meter_factor, ROUNDED, 0, "what the meter shows on this page, to the text's digits", NULL },
+    { L3, "shows growth ×{1.002} per step", l3_meter_factor, ROUNDED, 0, "what the meter shows on this page, to the text's digits", NULL },
     { L3, "multiplies the energy of this oscillation by 1 + (ωΔt)² every step", l3_energy_factor, REL, 1e-12, "ρ² of Euler's one-step map is 1 + (ωΔt)² to rounding", l3_formula },
     { L3, "per step, {50} steps per second", l3_steps_per_second, EXACT, 0, R_COUNT, NULL },
     { L3, "let it run about {two} seconds; the energy drift climbs past 50 %", l3_time_to_50, ABS, 0.25, "\"about two seconds\": within a quarter of a second", NULL },
@@ -283,6 +366,9 @@ const claim sw_claims_a[] = {
     { L3, "@answer b) {4}: position (x, y) and velocity (vx, vy)", l3_particle_dim, EXACT, 0, R_COUNT, NULL },
     { L3, "In 3-D, as in the lecture, it is {6}.", l3_3d, EXACT, 0, R_MATH, NULL },
     { L3, "By t = 10 Euler's energy is up {557} %", l3_phase_euler, ROUNDED, 0, R_ROUND, NULL },
+    { L3, "The factor 1.004 per step predicts +{636} % for Euler's 500 steps", l3_linear_prediction, ROUNDED, 0, "(1 + (ωΔt)²)^(T/Δt) - 1 with the page's k, m, Δt and T = 10", NULL },
+    { L3, "predicts +636 % for Euler's {500} steps", l3_steps_to_10, EXACT, 0, R_COUNT, NULL },
+    { L3, "It gains less because at t = {6.96} its swing", l3_crosses_anchor, ROUNDED, 0, "the first step Euler's mass is past its anchor (x < 0), at Δt = 0.02", NULL },
     { L3, "backward Euler's down {86} %", l3_phase_be, ROUNDED, 0, R_ROUND, NULL },
     { L3, "only wobbles, within {3.3} %", l3_phase_se, ATMOST, 0.1, "a bound the run comes within 10 % of", NULL },
     /* lesson 4 */
@@ -293,11 +379,18 @@ const claim sw_claims_a[] = {
     { L4, "@answer b) {2.56} m | Yes", l4_bounce_height, ABS, 0.005, "the first hop of a ball dropped from 4 m in the scene, at Δt = 1e-4 (contact is found at step ends: an error of order Δt·v ≈ 1e-3)", NULL },
     { L4, "the height by 0.8² = {0.64}", l4_e_squared, EXACT, 0, R_MATH, NULL },
     { L4, "@answer a) {3.2} m | That multiplies the height by e", l4_e_height, ABS, 1e-12, R_MATH, NULL },
-    { L4, "here it gives about {2}. Any method", cl_l4_ratio, ABS, 0.5, R_RATIO, NULL },
-    { L4, "For a smooth motion RK4 would give {16}", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
-    { L4, "stepwise measures the error at t = {3} for both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
+    { L4, "here it falls by {1.86}, and at the", l4_bounce_shown1, ROUNDED, 0, "the ratio the message shows at the first halving", NULL },
+    { L4, "next halving by only {1.52}", l4_bounce_shown2, ROUNDED, 0, "the ratio the message shows at the next halving", NULL },
+    { L4, "next halving by only 1.52 (\"not an order yet\")", l4_bounce_not_order, ATMOST, 0, "the ratio is NaN (not read as an order) after the first halving", cl_zero },
+    { L4, "RK4's position error would fall {16}-fold", l4_smooth_ratio, ABS, 2, "a ratio measured on the smooth projectile (drag on): the goals' tolerance for 16", NULL },
+    { L4, "stepwise measures the error to t = {3} at both step sizes", l4_report_time, EXACT, 0, R_COUNT, NULL },
+    { L4, "a percentage of the kinetic energy at launch, {62.5} J", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
+    { L4, "with drag = 1 the change reads {-204} % by t = 3", l4_drag_drift, ROUNDED, 0, R_ROUND, NULL },
+    { "docs/scenes.md", "kinetic energy ½ m |v0|² ({62.5} J with the defaults)", l4_launch_ke, EXACT, 0, "½m|v0|² from the scene's parameters, equal to the status line's energy scale", NULL },
     { L4, "RK4 follows it to within {rounding} error", l4_parabola_error, ATMOST, 0, "the status line's error at t = 2 below 1e-12", NULL },
     /* lesson 5 */
+    { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },
+    { L5, "and it shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },
     { L5, "Here k = {10} N/m, damping c = 0.5, mass 1 kg", cl_l5_k, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = {0.5}, mass 1 kg", cl_l5_c, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = 0.5, mass {1} kg", cl_l5_m, EXACT, 0, R_COUNT, NULL },

@@ -1,0 +1,122 @@
+/* The particle derivative for small systems — the orbit's one body under a
+ * central field, a chain of a few beads — as straight loops over the
+ * compiled springs and particles, one function per combination of the
+ * kinds present, picked once when the forces are compiled: no blocks, no
+ * padding, no flags tested per call. Invariant: the same operations in the
+ * same order as particles_deriv.c's passes (spring forces, each particle's
+ * sum over its list, the central field, gravity, drag, 1/m), so the same
+ * bits; tests/check_derivative.c compares the two on every scene. */
+#include "engine/particles_small.h"
+
+#include <math.h>
+
+#include "engine/clones.h"
+
+/* Spring j's force on its particle a from d = x_a - x_b and dv = v_a - v_b,
+ * as block_forces computes it (particles_deriv.c): |d| from the squares,
+ * d = 0 divided by 1 (a force ±0), and where |d|² < 1e-290 or NaN from
+ * hypot, no force where that is not positive. */
+SW_INLINE void spring_force(const struct sw_particles_model *m, int j, double dx, double dy, double dvx,
+                            double dvy, int damped, double *fx, double *fy)
+{
+    double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
+    double ux = dx / q, uy = dy / q;
+    double mag = m->k[j] * (l - m->rest[j]);
+    if (damped)
+        mag += m->c[j] * (dvx * ux + dvy * uy);
+    if (!(l2 >= 1e-290)) {
+        l = hypot(dx, dy);
+        if (!(l > 0)) {
+            *fx = *fy = 0.0;
+            return;
+        }
+        ux = dx / l, uy = dy / l;
+        mag = m->k[j] * (l - m->rest[j]) + (damped ? m->c[j] * (dvx * ux + dvy * uy) : 0.0);
+    }
+    *fx = -mag * ux;
+    *fy = -mag * uy;
+}
+
+/* dydt = (v, f/m) with f = Σ ±(spring forces) + central + m·g - k·v, for
+ * the kinds given (constant arguments: each combination its own loops). */
+SW_INLINE void small_eval(const sw_particles *p, const double *restrict y, double *restrict dydt, int one,
+                          int springs, int damped, int central, int gravity, int drag)
+{
+    const struct sw_particles_model *m = p->model;
+    int n = one ? 1 : p->n;
+    const double *x = y, *v = y + 2 * n;
+    double *force = m->force;
+    if (springs) {
+        for (int j = 0; j < m->npair; j++) {
+            int a = m->a[j], b = m->b[j];
+            spring_force(m, j, x[a] - x[b], x[a + 1] - x[b + 1], damped ? v[a] - v[b] : 0.0,
+                         damped ? v[a + 1] - v[b + 1] : 0.0, damped, &force[2 * j], &force[2 * j + 1]);
+        }
+        for (int j = m->npair; j < m->npair + m->nanchor; j++) {
+            int a = m->a[j];
+            spring_force(m, j, x[a] - m->ax[j], x[a + 1] - m->ay[j], damped ? v[a] : 0.0,
+                         damped ? v[a + 1] : 0.0, damped, &force[2 * j], &force[2 * j + 1]);
+        }
+    }
+    const sw_force *c = &p->forces[central ? m->extra[0] : 0];
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
+    double cx = c->cx, cy = c->cy, mu = c->mu, gx = m->gx, gy = m->gy, kd = m->kdrag;
+    for (int i = 0; i < n; i++) {
+        double fx = 0.0, fy = 0.0;
+        for (int e = springs ? m->first[i] : 0; springs && e < m->first[i + 1]; e++) {
+            fx += m->sign[e] * force[m->spring[e]];
+            fy += m->sign[e] * force[m->spring[e] + 1];
+        }
+        if (central) { /* as the central kind's add (force_fields.c) */
+            double dx = x[2 * i] - cx, dy = x[2 * i + 1] - cy;
+            double r2 = dx * dx + dy * dy;
+            double s = -mu * mass[i] / (r2 * sqrt(r2));
+            fx += s * dx;
+            fy += s * dy;
+        }
+        if (gravity) {
+            fx += mass[i] * gx;
+            fy += mass[i] * gy;
+        }
+        if (drag) {
+            fx -= kd * v[2 * i];
+            fy -= kd * v[2 * i + 1];
+        }
+        dydt[2 * i] = v[2 * i];
+        dydt[2 * i + 1] = v[2 * i + 1];
+        dydt[2 * n + 2 * i] = fx * inv[i];
+        dydt[2 * n + 2 * i + 1] = fy * inv[i];
+    }
+}
+
+/* One function per combination: one particle (O), springs (S), damped (D),
+ * central (C), gravity (G), drag (K); the table below is indexed by those. */
+#define SMALL(O, S, D, C, G, K)                                                                    \
+    static void small_##O##S##D##C##G##K(const sw_particles *p, const double *y, double *dydt)      \
+    {                                                                                              \
+        small_eval(p, y, dydt, O, S, D, C, G, K);                                                  \
+    }
+#define SMALL_GK(O, S, D, C)                                                                       \
+    SMALL(O, S, D, C, 0, 0) SMALL(O, S, D, C, 0, 1) SMALL(O, S, D, C, 1, 0) SMALL(O, S, D, C, 1, 1)
+#define SMALL_ALL(O) SMALL_GK(O, 0, 0, 0) SMALL_GK(O, 0, 0, 1) SMALL_GK(O, 1, 0, 0) SMALL_GK(O, 1, 0, 1) \
+    SMALL_GK(O, 1, 1, 0) SMALL_GK(O, 1, 1, 1)
+SMALL_ALL(0)
+SMALL_ALL(1)
+#define ROW(O, S, D, C) small_##O##S##D##C##00, small_##O##S##D##C##01, small_##O##S##D##C##10, small_##O##S##D##C##11
+#define TABLE(O)                                                                                   \
+    { { { ROW(O, 0, 0, 0) }, { ROW(O, 0, 0, 1) } }, { { ROW(O, 1, 0, 0) }, { ROW(O, 1, 0, 1) } },  \
+      { { ROW(O, 1, 1, 0) }, { ROW(O, 1, 1, 1) } } }
+
+/* [one particle][springs · 2 + damped][central][gravity · 2 + drag] */
+static swp_small_fn *const small_table[2][3][2][4] = { TABLE(0), TABLE(1) };
+
+swp_small_fn *swp_small_pick(const sw_particles *p)
+{
+    const struct sw_particles_model *m = p->model;
+    int total = m->npair + m->nanchor;
+    int central = m->nextra == 1 && p->forces[m->extra[0]].kind == SW_FORCE_CENTRAL;
+    if (p->n > SWP_SMALL_PARTICLES || total > SWP_SMALL_SPRINGS || (m->nextra > 0 && !central))
+        return NULL;
+    int kinds = total > 0 ? 1 + m->damped : 0;
+    return small_table[p->n == 1][kinds][central][m->gravity * 2 + m->drag];
+}

@@ -1,0 +1,106 @@
+/* Runge-Kutta-Nyström 6(4): the adaptive method for x'' = f(t, x), where
+ * the acceleration depends on positions alone (no drag, no damping). It
+ * integrates the second-order equation directly — stages are positions,
+ * each needing one acceleration — so it reaches 6th order with 5 new
+ * evaluations a step where a first-order Runge-Kutta method needs 7 or
+ * more. Error control by the embedded 4th-order solution, through the
+ * controller rk45 and dop853 share (adaptive.c); nothing is copied on an
+ * accepted step. */
+#include "engine/adaptive.h"
+
+#include <math.h>
+
+#include "engine/rkn_tableau.h"
+#include "stepwise/base.h"
+
+#define X(name, p, q) static const double RKN_##name = (double)(p) / (q);
+SW_RKN_TABLEAU(X)
+#undef X
+
+/* Slots: each stage's derivative [v | a] (only a is read), the FSAL one
+ * alternating between 0 and S_K6; the stage state; the saved old state. */
+enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_YT, S_SAVED, RKN_VECTORS };
+
+/* The stage positions X = x0 + c h v0 + h² Σ A a into yt's first half (its
+ * second half holds v0: the derivative reads a whole state, and a
+ * position-only force ignores it), then a_i = f(t + c h, X). */
+#define RKN_STAGE(C, K, EXPR)                                                                            \
+    do {                                                                                                 \
+        for (i = 0; i < d; i++)                                                                          \
+            yt[i] = x0[i] + (C) * h * v0[i] + hh * (EXPR);                                               \
+        sw_eval_slice(ode, t + (C) * h, 2 * d, yt, (K));                                                 \
+    } while (0)
+
+/* One trial over the whole state [x | v] (d = dim/2 each; the method needs
+ * both halves, so it never runs slice by slice: the systems it accepts
+ * offer no slices). Error norm: RMS of e_i / (atol + rtol·max(|y0_i|,
+ * |y1_i|)), e = h² Σ EX a in x and h Σ EV a in v. */
+static void rkn_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                      unsigned elim, sw_trial_sums *sums)
+{
+    (void)lo;
+    const int d = (hi - lo) / 2;
+    const double hh = h * h, atol = s->atol, rtol = s->rtol;
+    double *restrict yt = SW_WORK(s, S_YT), *restrict saved = SW_WORK(s, S_SAVED);
+    double *restrict k6 = SW_WORK(s, s->fsal ? 0 : S_K6);
+    const double *a1 = SW_WORK(s, s->fsal) + d, *a2 = SW_WORK(s, S_K2) + d, *a3 = SW_WORK(s, S_K3) + d,
+                 *a4 = SW_WORK(s, S_K4) + d, *a5 = SW_WORK(s, S_K5) + d, *a6 = k6 + d;
+    double *x = y, *v = y + d;
+    const double *x0 = saved, *v0 = saved + d;
+    int i;
+    for (i = 0; i < 2 * d; i++)
+        saved[i] = y[i];
+    for (i = 0; i < d; i++)
+        yt[d + i] = v0[i];
+    RKN_STAGE(RKN_C2, SW_WORK(s, S_K2), RKN_A21 * a1[i]);
+    RKN_STAGE(RKN_C3, SW_WORK(s, S_K3), RKN_A31 * a1[i] + RKN_A32 * a2[i]);
+    RKN_STAGE(RKN_C4, SW_WORK(s, S_K4), RKN_A41 * a1[i] + RKN_A42 * a2[i] + RKN_A43 * a3[i]);
+    RKN_STAGE(RKN_C5, SW_WORK(s, S_K5), RKN_A51 * a1[i] + RKN_A52 * a2[i] + RKN_A53 * a3[i] + RKN_A54 * a4[i]);
+    /* Stage 6 is x1 (FSAL): written into the state, whose v half is still v0. */
+    unsigned long long over = 0, add = sw_beyond_add(elim);
+    double sum = sums->err;
+    for (i = 0; i < d; i++) {
+        double ba = RKN_BX1 * a1[i] + RKN_BX2 * a2[i] + RKN_BX3 * a3[i] + RKN_BX4 * a4[i] + RKN_BX5 * a5[i];
+        double x1 = x0[i] + h * v0[i] + hh * ba;
+        double e = hh * ((RKN_BX1 - RKN_HX1) * a1[i] + (RKN_BX2 - RKN_HX2) * a2[i] + (RKN_BX3 - RKN_HX3) * a3[i] +
+                         (RKN_BX4 - RKN_HX4) * a4[i] + (RKN_BX5 - RKN_HX5) * a5[i]);
+        double m0 = fabs(x0[i]), m1 = fabs(x1), q = e / (atol + rtol * (m1 > m0 ? m1 : m0));
+        x[i] = x1;
+        over |= sw_beyond_bits(x1, add);
+        sum += q * q;
+    }
+    sw_eval_slice(ode, t + h, 2 * d, y, k6);
+    for (i = 0; i < d; i++) {
+        double v1 = v0[i] + h * (RKN_BV1 * a1[i] + RKN_BV2 * a2[i] + RKN_BV3 * a3[i] + RKN_BV4 * a4[i] +
+                                 RKN_BV5 * a5[i] + RKN_BV6 * a6[i]);
+        double e = h * ((RKN_BV1 - RKN_HV1) * a1[i] + (RKN_BV2 - RKN_HV2) * a2[i] + (RKN_BV3 - RKN_HV3) * a3[i] +
+                        (RKN_BV4 - RKN_HV4) * a4[i] + (RKN_BV5 - RKN_HV5) * a5[i]);
+        double m0 = fabs(v0[i]), m1 = fabs(v1), q = e / (atol + rtol * (m1 > m0 ? m1 : m0));
+        v[i] = v1;
+        k6[i] = v1; /* k6 = f(t + h, [x1 | v1]) exactly: a does not depend on v */
+        over |= sw_beyond_bits(v1, add);
+        sum += q * q;
+    }
+    sums->err = sum;
+    sums->beyond |= sw_beyond_any(over);
+}
+
+static const sw_adaptive rkn = {
+    .trial = rkn_trial,
+    .evals = 5,
+    .slice = 256, /* (never used: see rkn_trial) */
+    .fsal_other = S_K6,
+    .saved = S_SAVED,
+    .expo = 0.2, /* the embedded solution is 4th order: local error ∝ h^5 */
+    .safety = 0.9,
+    .fac_min = 0.2,
+    .fac_max = 5.0,
+};
+
+_Static_assert(RKN_VECTORS == 8, "rkn needs 8 work vectors (integrators.c)");
+
+/* One accepted RKN6(4) step of at most h_max. */
+int sw_step_rkn(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
+{
+    return sw_adaptive_step(&rkn, s, ode, t, y, h_max);
+}

@@ -1,0 +1,491 @@
+/* Pictures that show their point at 80x24 (issue 25): the stability
+ * region's marks move when Δt halves on lesson 5's page and its axes stay
+ * put; the work-precision plot marks shared cells '&' and names the pairs,
+ * reaches the points lesson 6's table quotes, and stays beside the page's
+ * text; the projectile's launch level and energy reference are said. */
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/app.h"
+#include "app/runner.h"
+#include "canvas_help.h"
+#include "lesson/lesson.h"
+#include "measure/bench.h"
+#include "render/region.h"
+#include "render/screen.h"
+#include "render/workprec.h"
+#include "stepwise/stepwise.h"
+
+/* Open lesson FILE on the page titled TITLE (XDG_STATE_HOME in a scratch
+ * directory, so no progress file is touched). */
+static void open_page(sw_runner *r, sw_app *a, const char *file, const char *title)
+{
+    char err[SW_LESSON_ERRLEN];
+    sw_lesson lesson;
+    setenv("XDG_STATE_HOME", "/tmp/sw-point-pictures-no-state", 1);
+    ck_assert_msg(sw_lesson_load(file, &lesson, err, sizeof err) == SW_OK, "%s", err);
+    int page = -1;
+    for (int i = 0; i < lesson.npages; i++)
+        if (strcmp(lesson.pages[i].title, title) == 0)
+            page = i;
+    sw_lesson_free(&lesson);
+    ck_assert_msg(page >= 0, "%s has no page '%s'", file, title);
+    ck_assert_msg(sw_runner_start(r, a, file, page, err, sizeof err) == SW_OK, "%s", err);
+}
+
+/* The scale: the whole region when the marks are large, 1.25 × the largest
+ * mark when it is small (never below reach / 1000), the region with no mark. */
+START_TEST(region_scale_choice)
+{
+    ck_assert_double_eq(sw_region_scale(3, 0), 3);
+    ck_assert_double_eq(sw_region_scale(3, NAN), 3);
+    ck_assert_double_eq(sw_region_scale(3, 2), 3);     /* 2.5 >= 1.5: the whole region */
+    ck_assert_double_eq(sw_region_scale(3, 4), 5);     /* and the marks beyond it */
+    ck_assert_double_eq(sw_region_scale(3, 1.2), 3);   /* 1.5 >= 1.5: the edge of the whole-region rule */
+    ck_assert_double_eq_tol(sw_region_scale(3, 0.5), 0.625, 1e-15);
+    ck_assert_double_eq_tol(sw_region_scale(3, 1e-9), 3e-3, 1e-15);
+}
+END_TEST
+
+typedef struct marks {
+    int n, col[8], row[8];
+    int axis_col, axis_row;
+} marks;
+
+/* The marks ('X' or '*') and the origin ('+' where the axes cross) on the
+ * region canvas. */
+static marks find_marks(const sw_canvas *c)
+{
+    marks m = { 0 };
+    m.axis_col = m.axis_row = -1;
+    for (int row = 0; row < c->rows; row++)
+        for (int col = 0; col < c->cols; col++) {
+            uint32_t g = sw_canvas_codepoint(c, col, row);
+            if ((g == 'X' || g == '*') && m.n < 8) {
+                m.col[m.n] = col;
+                m.row[m.n] = row;
+                m.n++;
+            }
+        }
+    int oc, orow;
+    if (sw_canvas_world_to_cell(c, 0, 0, &oc, &orow)) {
+        m.axis_col = oc;
+        m.axis_row = orow;
+    }
+    return m;
+}
+
+/* Lesson 5, "Why: outside the stability region", at 80x24: each press of
+ * '-' (0.005 -> 0.0025 -> 0.00125 -> 0.000625) moves every mark to another
+ * cell, the axes stay where they were, and the scale is said. */
+START_TEST(region_marks_move_on_lesson5)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    open_page(r, &a, "lessons/05-springs.lesson", "Why: outside the stability region");
+    sw_app_key(&a, 's', 1);
+    ck_assert_int_eq(a.view, SW_VIEW_REGION);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    marks prev = { 0 };
+    for (int k = 0; k < 4; k++) {
+        int clipped;
+        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+        marks m = find_marks(&f.canvas);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", a.dt, m.n, text);
+        ck_assert_msg(strstr(text, "fixed scale") != NULL, "dt %g: the scale is not said:\n%s", a.dt, text);
+        /* the marks mirror each other across the real axis */
+        ck_assert_int_eq(m.row[0] + m.row[1], 2 * m.axis_row);
+        if (k > 0) {
+            ck_assert_msg(m.axis_col == prev.axis_col && m.axis_row == prev.axis_row,
+                          "dt %g: the axes moved from (%d, %d) to (%d, %d)", a.dt, prev.axis_col, prev.axis_row,
+                          m.axis_col, m.axis_row);
+            for (int j = 0; j < 2; j++)
+                ck_assert_msg(m.row[j] != prev.row[j] || m.col[j] != prev.col[j],
+                              "dt %g: mark %d did not move (row %d, column %d):\n%s", a.dt, j, m.row[j], m.col[j],
+                              text);
+            /* towards the origin */
+            ck_assert_int_lt(abs(m.row[0] - m.axis_row), abs(prev.row[0] - prev.axis_row));
+        }
+        prev = m;
+        free(text);
+        sw_app_key(&a, '-', 1);
+    }
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
+/* Lesson 6, "RK4's region": doubling Δt (0.005 -> 0.04) takes the marks
+ * past the view chosen for them; the view widens to hold them and the
+ * region, so every mark stays drawn and the last ones, outside RK4's
+ * region (ωΔt = 4 > 2.83), are drawn X. */
+START_TEST(region_widens_when_marks_leave)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
+    sw_app_key(&a, 's', 1);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    for (int k = 0; k < 4; k++) {
+        int clipped;
+        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+        marks m = find_marks(&f.canvas);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
+        if (k == 3)
+            for (int j = 0; j < 2; j++)
+                ck_assert_msg(sw_canvas_codepoint(&f.canvas, m.col[j], m.row[j]) == 'X', "dt %g: a mark outside "
+                              "RK4's region is not X:\n%s", a.dt, text);
+        free(text);
+        sw_app_key(&a, '+', 1);
+    }
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
+/* bounce has no mode to mark: the view says why, and no "0 modes". */
+START_TEST(region_without_modes_says_why)
+{
+    const sw_scene *sc = sw_scene_find("bounce");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    sw_app a;
+    ck_assert_msg(sw_app_init(&a, sc, p, NULL, sc->dt, err, sizeof err) == SW_OK, "%s", err);
+    sw_app_set_view(&a, SW_VIEW_REGION);
+    sw_frame f;
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, NULL, 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "0 modes") == NULL && strstr(text, "x0.000000") == NULL, "%s", text);
+    ck_assert_msg(strstr(text, "no marks") != NULL && strstr(text, "x1 per step") != NULL, "%s", text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* A report by hand: series 0 and 1 on the same points, series 2 apart. */
+static void fake_report(sw_bench_report *r)
+{
+    memset(r, 0, sizeof *r);
+    ck_assert_int_ge(sw_integrator_count(), 12);
+    r->scene = sw_scene_find("vortex");
+    r->nseries = 3;
+    for (int i = 0; i < 3; i++) {
+        sw_bench_series *s = &r->series[i];
+        s->method = sw_integrator_at(9 + i); /* markers a, b, c: no axis label has them */
+        s->npoints = 4;
+        for (int j = 0; j < 4; j++) {
+            s->points[j].evals = 10L << j;
+            s->points[j].error = i < 2 ? pow(10, -j) : 1e-6 * pow(10, -j);
+        }
+    }
+}
+
+/* Shared cells show '&' and the pair is named once; a series alone keeps
+ * its marker. */
+START_TEST(workprec_overlap_marks)
+{
+    sw_bench_report *r = malloc(sizeof *r);
+    fake_report(r);
+    int rows = 12, cols = 40;
+    char *g = malloc((size_t)(rows + 2) * (size_t)cols);
+    sw_workprec_overlap ov;
+    ck_assert_int_eq(sw_workprec_grid(r, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
+    int amp = 0, third = 0, first = 0;
+    for (int k = 0; k < rows * cols; k++) {
+        amp += g[k] == '&';
+        third += g[k] == sw_bench_marker(r->series[2].method);
+        first += g[k] == sw_bench_marker(r->series[0].method) || g[k] == sw_bench_marker(r->series[1].method);
+    }
+    ck_assert_int_eq(amp, 4);   /* every point of series 0 and 1 together */
+    ck_assert_int_eq(first, 0); /* neither drawn alone where they share */
+    ck_assert_int_eq(third, 4);
+    ck_assert_int_eq(ov.n, 1);
+    ck_assert_int_eq(ov.under[0], 0);
+    ck_assert_int_eq(ov.over[0], 1);
+    /* apart: no '&' and no pair */
+    for (int j = 0; j < 4; j++)
+        r->series[1].points[j].error = 1e3 * pow(10, -j);
+    ck_assert_int_eq(sw_workprec_grid(r, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
+    ck_assert_ptr_null(memchr(g, '&', (size_t)rows * (size_t)cols));
+    ck_assert_int_eq(ov.n, 0);
+    free(g);
+    free(r);
+}
+END_TEST
+
+/* Lesson 6, "Error against cost", at 80x24 with the plot open: each row
+ * of the table (euler 503, midpoint 252 × 2, rk4 126 × 4 evaluations;
+ * errors 0.04, 0.00064, 3e-7) has a point of the live sweep within a
+ * factor 1.2 in cost and 1.5 in error (the sweep's steps are halvings of
+ * its own top step, the table's are round numbers), that point is drawn
+ * (its marker or '&' with it named), and the page's table stays on the
+ * screen before and after the question is answered. */
+START_TEST(workprec_table_points_beside_the_text)
+{
+    static const struct {
+        const char *method;
+        double evals, error;
+    } table[] = { { "euler", 503, 0.04 }, { "midpoint", 504, 0.00064 }, { "rk4", 504, 3e-7 } };
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
+    ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
+    ck_assert_ptr_nonnull(a.bench);
+    const sw_bench_report *b = a.bench;
+    for (size_t t = 0; t < sizeof table / sizeof table[0]; t++) {
+        int found = 0;
+        for (int i = 0; i < b->nseries; i++) {
+            const sw_bench_series *s = &b->series[i];
+            if (strcmp(s->method->name, table[t].method) != 0)
+                continue;
+            for (int j = 0; j < s->npoints; j++) {
+                const sw_bench_point *pt = &s->points[j];
+                if (!pt->blown && fabs(log((double)pt->evals / table[t].evals)) <= log(1.2) &&
+                    fabs(log(pt->error / table[t].error)) <= log(1.5))
+                    found = 1;
+            }
+        }
+        ck_assert_msg(found, "the plot's sweep has no %s point near %g evaluations, error %g", table[t].method,
+                      table[t].evals, table[t].error);
+    }
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    for (int answered = 0; answered < 2; answered++) {
+        if (answered)
+            sw_runner_key(r, &a, 'B');
+        int clipped;
+        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+        ck_assert_msg(strstr(text, "error vs evaluations") != NULL, "the plot is not shown:\n%s", text);
+        ck_assert_msg(strstr(text, "Error against cost") != NULL && strstr(text, "for one turn") != NULL,
+                      "%s: the plot hides the page's text:\n%s", answered ? "answered" : "open", text);
+        ck_assert_msg(strstr(text, "two in a cell") != NULL || strstr(text, "no two series share") != NULL,
+                      "shared cells are not said:\n%s", text);
+        free(text);
+    }
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
+/* The projectile's picture names its launch level and the energy's
+ * reference (½m|v0|² = 62.5 J with the defaults), at 80x24 and 120x40. */
+START_TEST(projectile_says_launch_and_energy)
+{
+    const sw_scene *sc = sw_scene_find("projectile");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    sw_app a;
+    ck_assert_msg(sw_app_init(&a, sc, p, NULL, sc->dt, err, sizeof err) == SW_OK, "%s", err);
+    static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
+    for (int s = 0; s < 2; s++) {
+        sw_frame f;
+        ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+        int clipped;
+        char *text = ct_compose(&f, &a, NULL, sizes[s][0], sizes[s][1], &clipped);
+        ck_assert_msg(strstr(text, "launch height") != NULL, "%s", text);
+        ck_assert_msg(strstr(text, "launch kinetic energy, 62.5 J") != NULL, "%s", text);
+        ck_assert_int_eq(clipped, 0);
+        free(text);
+        sw_frame_free(&f);
+    }
+    sw_app_free(&a);
+}
+END_TEST
+
+/* @view box=X0,Y0,X1,Y1: parsed, checked, and the camera shows that
+ * rectangle (the scene's own view is far larger). */
+START_TEST(view_box_directive)
+{
+    const char *text = "title: T\n--- P\n@scene projectile\n@view box=5,-1.5,11,3\nx\n";
+    sw_lesson l;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_msg(sw_lesson_parse("t", text, strlen(text), &l, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(l.pages[0].has_box, 1);
+    ck_assert_double_eq(l.pages[0].box[0], 5);
+    ck_assert_double_eq(l.pages[0].box[1], -1.5);
+    ck_assert_double_eq(l.pages[0].box[2], 11);
+    ck_assert_double_eq(l.pages[0].box[3], 3);
+    sw_lesson_free(&l);
+    const char *bad[] = { "box=1,2,3", "box=1,2,3,4,5", "box=1,,2,3", "box=3,0,1,1", "box=0,3,1,1", "box=a,b,c,d",
+                          "box=1,2,3,4,", "box=1e7,0,2e7,1", "box=", "box=nan,0,1,1" };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char t[256];
+        snprintf(t, sizeof t, "title: T\n--- P\n@scene projectile\n@view %s\nx\n", bad[i]);
+        ck_assert_msg(sw_lesson_parse("t", t, strlen(t), &l, err, sizeof err) == SW_EINVAL, "'%s' was accepted",
+                      bad[i]);
+        ck_assert_msg(strstr(err, "box=") != NULL, "'%s': the message does not say what is expected: %s", bad[i], err);
+        sw_lesson_free(&l);
+    }
+    /* the runner: the camera shows the box, and a page on another scene drops it */
+    char dir[] = "/tmp/sw-viewbox-XXXXXX", path[128];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/box.lesson", dir);
+    FILE *fp = fopen(path, "w");
+    ck_assert_ptr_nonnull(fp);
+    fputs("title: T\n--- P\n@scene projectile\n@view box=5,-1.5,11,3\nx\n--- Q\n@scene spring\ny\n", fp);
+    fclose(fp);
+    setenv("XDG_STATE_HOME", dir, 1);
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ck_assert_msg(sw_runner_start(r, &a, path, 0, err, sizeof err) == SW_OK, "%s", err);
+    sw_frame f;
+    char ferr[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+    int clipped;
+    free(ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped));
+    sw_view vis = sw_canvas_visible(&f.canvas), nat = a.scene->view(&a.sims[0].sys);
+    ck_assert_msg(vis.xmin <= 5 && vis.xmax >= 11 && vis.ymin <= -1.5 && vis.ymax >= 3,
+                  "the camera shows x %g..%g, y %g..%g", vis.xmin, vis.xmax, vis.ymin, vis.ymax);
+    /* fitted: one axis spans the box to a cell's rounding */
+    ck_assert_msg(vis.xmax - vis.xmin < 6 * 1.05 || vis.ymax - vis.ymin < 4.5 * 1.05, "the box is not fitted");
+    ck_assert_double_lt(vis.xmax - vis.xmin, nat.xmax - nat.xmin);
+    sw_runner_enter(r, &a, 1);
+    ck_assert_int_eq(a.have_box, 0);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+/* A page "names a difference" between a run and its ghost when its prose
+ * mentions the ghost and quotes a length in metres or a growth ("grows
+ * by"). Every such page must be listed below with the time its point is
+ * made at, and there, at 80x24, the difference is visible (a particle and
+ * its ghost in different cells) or stated ("ghost 0.44 m" beside it). */
+static const struct diff_page {
+    const char *file, *title;
+    double t;
+} diff_pages[] = {
+    { "lessons/02-euler.lesson", "The spiral", 6.3 },
+    { "lessons/03-particles-with-mass.lesson", "Euler in phase space", 2.0 },
+};
+
+static int names_difference(const sw_lesson_page *pg)
+{
+    int ghost = 0, figure = 0;
+    for (int b = 0; b < pg->nblocks; b++) {
+        const char *t = pg->blocks[b].text;
+        ghost |= strstr(t, "ghost") != NULL;
+        figure |= strstr(t, "grows by") != NULL;
+        for (const char *q = t; (q = strstr(q, " m")) != NULL; q += 2)
+            if (q > t && q[-1] >= '0' && q[-1] <= '9' && !((q[2] >= 'a' && q[2] <= 'z') || (q[2] >= 'A' && q[2] <= 'Z')))
+                figure = 1;
+    }
+    return ghost && figure;
+}
+
+/* "ghost 0.44 m" (a number and its unit after the word) on the screen. */
+static int gap_stated(const char *text)
+{
+    for (const char *q = text; (q = strstr(q, "ghost ")) != NULL; q += 6) {
+        const char *d = q + 6;
+        if (!(*d >= '0' && *d <= '9'))
+            continue;
+        while ((*d >= '0' && *d <= '9') || *d == '.')
+            d++;
+        if (strncmp(d, " m", 2) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+START_TEST(every_named_difference_is_shown)
+{
+    sw_lesson_entry *e;
+    int n;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
+    int checked = 0;
+    for (int i = 0; i < n; i++) {
+        sw_lesson l;
+        ck_assert_msg(sw_lesson_load(e[i].path, &l, err, sizeof err) == SW_OK, "%s", err);
+        for (int p = 0; p < l.npages; p++) {
+            if (!names_difference(&l.pages[p]))
+                continue;
+            size_t k = 0;
+            while (k < sizeof diff_pages / sizeof diff_pages[0] &&
+                   !(strstr(e[i].path, diff_pages[k].file + strlen("lessons/")) &&
+                     strcmp(l.pages[p].title, diff_pages[k].title) == 0))
+                k++;
+            ck_assert_msg(k < sizeof diff_pages / sizeof diff_pages[0],
+                          "%s page %d (%s) names a difference: list it in diff_pages with its time", e[i].file, p + 1,
+                          l.pages[p].title);
+            sw_runner *r = malloc(sizeof *r);
+            sw_app a;
+            open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
+            sw_app_set_ghost(&a, 1);
+            sw_app_set_until(&a, diff_pages[k].t);
+            a.paused = 0;
+            for (int it = 0; it < 100000 && a.sims[0].t < diff_pages[k].t; it++)
+                sw_app_advance(&a, 1.0, 100000);
+            ck_assert_double_eq_tol(a.sims[0].t, diff_pages[k].t, 1e-9);
+            sw_frame f;
+            char ferr[SW_ERRLEN];
+            ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+            int clipped;
+            char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+            const double *g = sw_app_ghost(&a), *y = a.sims[0].sys.y;
+            ck_assert_ptr_nonnull(g);
+            int apart = 0;
+            for (int j = 0; j < a.sims[0].sys.n; j++) {
+                int c0, r0, c1, r1;
+                if (sw_canvas_world_to_cell(&f.canvas, y[2 * j], y[2 * j + 1], &c0, &r0) &&
+                    sw_canvas_world_to_cell(&f.canvas, g[2 * j], g[2 * j + 1], &c1, &r1) && (c0 != c1 || r0 != r1))
+                    apart = 1;
+            }
+            ck_assert_msg(apart || gap_stated(text), "%s, %s at t = %g: the run and its ghost share every cell and "
+                          "no gap is written:\n%s", diff_pages[k].file, diff_pages[k].title, diff_pages[k].t, text);
+            checked++;
+            free(text);
+            sw_frame_free(&f);
+            sw_app_free(&a);
+            sw_runner_free(r);
+            free(r);
+        }
+        sw_lesson_free(&l);
+    }
+    sw_lesson_list_free(e, n);
+    ck_assert_int_eq(checked, (int)(sizeof diff_pages / sizeof diff_pages[0]));
+}
+END_TEST
+
+Suite *make_point_pictures_suite(void);
+Suite *make_point_pictures_suite(void)
+{
+    Suite *s = suite_create("point_pictures");
+    TCase *tc = tcase_create("point_pictures");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, region_scale_choice);
+    tcase_add_test(tc, region_marks_move_on_lesson5);
+    tcase_add_test(tc, region_widens_when_marks_leave);
+    tcase_add_test(tc, region_without_modes_says_why);
+    tcase_add_test(tc, workprec_overlap_marks);
+    tcase_add_test(tc, workprec_table_points_beside_the_text);
+    tcase_add_test(tc, projectile_says_launch_and_energy);
+    tcase_add_test(tc, view_box_directive);
+    tcase_add_test(tc, every_named_difference_is_shown);
+    suite_add_tcase(s, tc);
+    return s;
+}

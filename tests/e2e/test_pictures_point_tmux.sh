@@ -1,0 +1,98 @@
+#!/bin/sh
+# Pictures that show their point at 80x24 (issue 25), as a student sees
+# them: on lesson 5 page 3 the stability region's marks move at every
+# halving of dt and the axes stay put; on lesson 6 page 4 the
+# work-precision plot shows Euler (its marker, or '&' with the pair named)
+# and RK4's point of the page's table (about 500 evaluations, error 3e-7)
+# beside the page's text, before and after the answer; the projectile's
+# dashed line is labelled as its launch height, not a ground, and the ball
+# flies on below it. Each prints what it measured.
+. "$(dirname "$0")/lib.sh"
+tmux_start 80 24
+mkdir -p "$WORK/state/stepwise"
+
+# The picture's columns (the lesson pane starts at column 41).
+picture() { screen | cut -c1-39; }
+
+# 1. Lesson 5 page 3 in the C locale (ASCII shading, so that columns are
+#    characters): the marks' cells, and the axis row and the origin's column.
+printf '05-springs.lesson 2\n' > "$WORK/state/stepwise/progress"
+type_cmd "LC_ALL=C XDG_STATE_HOME=$WORK/state $STEPWISE lesson 5"
+wait_for 'Springs, damping, stiffness +\(page 3/7\)' || fail "lesson 5 did not open on page 3"
+keys s
+wait_for 'fixed scale' || fail "s did not show the region with its scale said"
+# "ROW:COL" of every mark (X or *) in the region's rows, and the axis
+marks() { picture | awk '/^(\* dt|X |all inside)/ { exit } NR >= 2 { for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
+    if (ch == "X" || ch == "*") printf "%d:%d ", NR, i } }'; }
+axis() { picture | awk '/^-+\+/ { row = NR } END { print row }'; }
+prev_marks=$(marks); prev_axis=$(axis)
+echo "dt=0.005: marks $prev_marks axis row $prev_axis"
+[ -n "$prev_marks" ] || fail "no marks on the region view"
+for dt in 0.0025 0.00125 0.000625; do
+    keys -
+    wait_for "dt x eigenvalue +dt=$dt" || fail "- did not halve dt to $dt"
+    m=$(marks); ax=$(axis)
+    echo "dt=$dt: marks $m axis row $ax"
+    [ -n "$m" ] || fail "no marks at dt=$dt"
+    [ "$m" != "$prev_marks" ] || fail "the marks did not move when dt halved to $dt ($m)"
+    [ "$ax" = "$prev_axis" ] || fail "the axis moved from row $prev_axis to $ax at dt=$dt"
+    prev_marks=$m
+done
+keys q
+check_terminal_sane region
+
+# 2. Lesson 6 page 4: the plot in the picture's place, the page's text beside it.
+printf '06-runge-kutta.lesson 3\n' > "$WORK/state/stepwise/progress"
+type_cmd "XDG_STATE_HOME=$WORK/state $STEPWISE lesson 6"
+wait_for 'Runge-Kutta: midpoint and RK4 +\(4/[0-9]+\)' || fail "lesson 6 did not open on page 4"
+keys w
+wait_for 'error vs evaluations' 60 || fail "w did not show the work-precision plot"
+wait_for 'for one turn of the' || fail "the plot hides the page's text"
+# Euler: its marker 1 in the plot, or '&' and the pair said
+if picture | sed -n '2,12p' | cut -c7- | grep -q 1; then
+    echo "euler: its marker is in the plot"
+else
+    picture | grep -Eq '& two in a cell: .*(1\+|\+1|euler)' || fail "euler is neither drawn nor named in a shared cell"
+    echo "euler: in shared cells, named: $(picture | grep '& two in a cell')"
+fi
+# RK4's table point: ~500 evaluations (log10 2.7 between the 1e2 and 1e3
+# labels), error 3e-7 (between the rows labelled 1e-5 and 1e-8, ±1 row)
+found=$(picture | awk '
+    /^ *1e-?[0-9]+\|/ { lab = $0; sub(/\|.*/, "", lab); gsub(/ /, "", lab); e = substr(lab, 3) + 0; erow[e] = NR }
+    /^ *\+\+?-/ { axisrow = NR }
+    { line[NR] = $0 }
+    END {
+        xl = line[axisrow + 1]
+        c2 = index(xl, "1e2") + 1; c3 = index(xl, "1e3") + 1
+        if (c2 <= 1 || c3 <= 1) { print "nolabels"; exit }
+        x = c2 + 0.7 * (c3 - c2)
+        top = -1; bot = -1
+        for (e in erow) { if (e + 0 >= -6.5 && (top < 0 || erow[e] > top)) top = erow[e]
+                          if (e + 0 <= -6.5 && (bot < 0 || erow[e] < bot)) bot = erow[e] }
+        if (top < 0) top = 2; if (bot < 0) bot = axisrow - 1
+        for (r = top - 1; r <= bot + 1; r++) for (c = int(x) - 1; c <= int(x) + 2; c++) {
+            ch = substr(line[r], c, 1); if (ch == "5" || ch == "&") { print "row " r " col " c " (" ch ")"; exit } }
+        print "none near column " x " rows " top ".." bot }')
+echo "rk4 at ~500 evaluations, error 3e-7: $found"
+case $found in row*) ;; *) fail "RK4's point of the table is not on the plot: $found" ;; esac
+keys B
+wait_for 'Done: press n' || fail "the answer was not taken"
+screen | grep -q 'error vs evaluations' || fail "the plot closed when the question was answered"
+screen | grep -q 'for one turn of the' || fail "after the answer the plot hides the page's text"
+keys q
+check_terminal_sane workprec
+
+# 3. The projectile: the dashed line is the launch height, and the ball,
+#    with no ground, flies on below it (its row under the line, or an
+#    arrow at the bottom edge).
+type_cmd "$STEPWISE play projectile --until 2.5"
+wait_for 'stopped at the stop time t = 2\.5' || fail "play projectile did not stop at t = 2.5"
+screen | grep -q 'launch height (no ground' || fail "the launch line is not labelled as the launch height"
+screen | grep -q 'launch kinetic energy, 62.5 J' || fail "the energy change's reference is not said"
+line=$(screen | awk '/^-----+$/ { print NR; exit }')
+ball=$(screen | awk '/^o projectile/ { exit } /(^| )o( |$)|v[0-9]/ { r = NR } END { print r }')
+echo "projectile at t = 2.5: launch line row $line, ball (or its arrow) row $ball"
+[ -n "$line" ] && [ -n "$ball" ] && [ "$ball" -gt "$line" ] || fail "the ball is not shown below the launch line"
+keys q
+check_terminal_sane projectile
+echo ok

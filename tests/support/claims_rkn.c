@@ -1,0 +1,180 @@
+/* Claims: the Runge-Kutta-Nyström pair rkn (issue 27) in the README, the
+ * guide, the method table and lesson 9, recomputed: its order with fixed
+ * steps on Kepler's orbit, its embedded order, its evaluations per step, the
+ * key that picks it, its refusal of a damped system, and the lesson's
+ * evaluations at equal error on the e = 0.9 orbit. */
+#include "claims.h"
+
+#include "engine/rkn_tableau.h"
+#include "engine/stepper.h"
+
+/* 1 when '#' picks the thirteenth method, rkn, from the controls' table. */
+static double key_hash(void)
+{
+    const sw_control *control;
+    int arg;
+    return sw_key_lookup('#', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
+           arg == 13 && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "rkn") == 0;
+}
+
+/* The largest state error of rkn after one period of the e = 0.5 orbit in
+ * n fixed steps (its tolerances so loose that every trial is accepted and
+ * the proposal is clipped to the step), against Kepler's solution. */
+static double fixed_error(long n)
+{
+    sw_sim s;
+    double p[SW_MAX_PARAMS], truth[4], T = TWO_PI;
+    const sw_scene *sc = cl_scene_p("orbit", "e=0.5", p);
+    cl_sim_init(&s, "orbit", "e=0.5", "rkn", T / n);
+    s.stepper->rtol = s.stepper->atol = 1e300;
+    s.stepper->h_next = T / n;
+    double t = 0;
+    for (long i = 0; i < n; i++)
+        ck_assert_int_eq(sw_stepper_step(s.stepper, s.sys.ode, &t, s.sys.y, T / n), SW_OK);
+    ck_assert_int_eq(sw_truth_state(sc, p, t, truth), 0);
+    double e = sw_truth_error(4, s.sys.y, truth);
+    sw_sim_free(&s);
+    return e;
+}
+
+/* The order from halving: 200 to 400 steps a period (errors 2e-9 and
+ * 4e-11, in the asymptotic range and above round-off). */
+static double rkn_order(void) { return log2(fixed_error(200) / fixed_error(400)); }
+
+/* The embedded solution's order: stepped here from the tableau (the engine
+ * only uses it to estimate the error) on x'' = -x to t = 10, 20 against 40
+ * steps, against cos t. */
+#define FIELD(name, p, q) double name;
+#define VALUE(name, p, q) (double)(p) / (q),
+static const struct { SW_RKN_TABLEAU(FIELD) } E = { SW_RKN_TABLEAU(VALUE) };
+#undef FIELD
+#undef VALUE
+
+static double embedded_error(int n)
+{
+    static const double c[6] = { 0, E.C2, E.C3, E.C4, E.C5, 1 };
+    static const double a[6][5] = { { 0 }, { E.A21 }, { E.A31, E.A32 }, { E.A41, E.A42, E.A43 },
+                                    { E.A51, E.A52, E.A53, E.A54 }, { E.BX1, E.BX2, E.BX3, E.BX4, E.BX5 } };
+    static const double hx[6] = { E.HX1, E.HX2, E.HX3, E.HX4, E.HX5, 0 };
+    static const double hv[6] = { E.HV1, E.HV2, E.HV3, E.HV4, E.HV5, E.BV6 };
+    double x = 1, v = 0, h = 10.0 / n;
+    for (int s = 0; s < n; s++) {
+        double acc[6], sx = 0, sv = 0;
+        for (int i = 0; i < 6; i++) {
+            double sum = 0;
+            for (int j = 0; j < i; j++)
+                sum += a[i][j] * acc[j];
+            acc[i] = -(x + c[i] * h * v + h * h * sum);
+        }
+        for (int i = 0; i < 6; i++)
+            sx += hx[i] * acc[i], sv += hv[i] * acc[i];
+        x += h * v + h * h * sx;
+        v += h * sv;
+    }
+    return fmax(fabs(x - cos(10.0)), fabs(v + sin(10.0)));
+}
+
+static double embedded_order(void) { return log2(embedded_error(20) / embedded_error(40)); }
+
+/* Evaluations per accepted step once under way (no rejection: the circular
+ * orbit at dt 0.01), and on the first step (every stage: 1 + the new ones). */
+static double per_step(int first)
+{
+    sw_sim s;
+    cl_sim_init(&s, "orbit", "e=0", "rkn", 0.01);
+    sw_sim_step(&s);
+    long e1 = sw_sim_evals(&s);
+    for (int i = 0; i < 20; i++)
+        sw_sim_step(&s);
+    long acc, rej;
+    sw_sim_step_counts(&s, &acc, &rej);
+    ck_assert_int_eq(rej, 0);
+    double r = first ? (double)e1 : (double)(sw_sim_evals(&s) - e1) / (double)(acc - 1);
+    sw_sim_free(&s);
+    return r;
+}
+
+static double rkn_per_step(void) { return per_step(0); }
+static double rkn_stages(void) { return per_step(1); }
+
+/* 1 when rkn refuses the default (damped) spring and takes the undamped one. */
+static double refuses_damped(void)
+{
+    sw_sim s;
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = cl_scene_p("spring", NULL, p);
+    if (sw_sim_init(&s, sc, p, cl_method("rkn"), 0.01, err, sizeof err) == SW_OK) {
+        sw_sim_free(&s);
+        return 0;
+    }
+    sc = cl_scene_p("spring", "c=0", p);
+    if (sw_sim_init(&s, sc, p, cl_method("rkn"), 0.01, err, sizeof err) != SW_OK)
+        return 0;
+    sw_sim_free(&s);
+    return 1;
+}
+
+/* Lesson 9's run (the e = 0.9 orbit, two orbits, largest step 0.4) at the
+ * loosest rtol = atol reaching an error of 1e-4: quarter decades from 1e-2
+ * down, then bisection to 1/32 decade (as bench/bench_rkn.c searches). */
+static void at_equal_error(const char *m, double *evals, double *error)
+{
+    double target = 1e-4, ev, e;
+    int k;
+    for (k = 0; k <= 48; k++) {
+        cl_l9_adaptive(m, 1e-2 * pow(10, -0.25 * k), 1e-2 * pow(10, -0.25 * k), &ev, &e);
+        if (e <= target)
+            break;
+    }
+    ck_assert_int_le(k, 48);
+    double hit = 1e-2 * pow(10, -0.25 * k), miss = hit * pow(10, 0.25);
+    for (int b = 0; k > 0 && b < 3; b++) {
+        double mid = sqrt(hit * miss);
+        cl_l9_adaptive(m, mid, mid, &ev, &e);
+        if (e <= target)
+            hit = mid;
+        else
+            miss = mid;
+    }
+    cl_l9_adaptive(m, hit, hit, evals, error);
+}
+
+static double l9_evals(const char *m)
+{
+    double ev, e;
+    at_equal_error(m, &ev, &e);
+    return ev;
+}
+
+static double l9_rkn(void) { return l9_evals("rkn"); }
+static double l9_dop853(void) { return l9_evals("dop853"); }
+static double l9_rk45(void) { return l9_evals("rk45"); }
+static double l9_rkn_error(void)
+{
+    double ev, e;
+    at_equal_error("rkn", &ev, &e);
+    return e;
+}
+
+#define R_HUNDRED "\"about\": to the nearest hundred"
+
+const claim sw_claims_r[] = {
+    { README, "`1`–`9`, `0`, `!`, `@`, `#` and `$` pick one", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
+    { README, "refused where a force reads velocities | {6} | 5", rkn_order, ABS, 0.3, "fixed steps on the e = 0.5 orbit, 200 to 400 a period: 5.9", NULL },
+    { README, "refused where a force reads velocities | 6 | {5} (reuses the last stage) |", rkn_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { INTEGRATORS, "\"Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)\", {6}, 5,", rkn_order, ABS, 0.3, "as the README's row", NULL },
+    { INTEGRATORS, "\"Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)\", 6, {5},", rkn_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { GUIDE, "`#` the thirteenth, rkn", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
+    { L9, "rkn pairs a {6}th-order answer", rkn_order, ABS, 0.3, "as the README's row", NULL },
+    { L9, "with a {4}th-order one from six stages", embedded_order, ABS, 0.3, "the embedded solution stepped from the tableau on x'' = -x: 3.97", NULL },
+    { L9, "with a 4th-order one from {six} stages", rkn_stages, EXACT, 0, "the first step evaluates every stage", NULL },
+    { L9, "{five} of them new (the last, at the new position, starts the next step)", rkn_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { L9, "To end two orbits within {1e-4} of the true orbit", l9_rkn_error, ATMOST, 0, "rkn's error at the setting found", NULL },
+    { L9, "rkn needs about {1100} evaluations", l9_rkn, ABS, 50, R_HUNDRED, NULL },
+    { L9, "dop853 about {1400} and rk45 about 1800", l9_dop853, ABS, 50, R_HUNDRED, NULL },
+    { L9, "dop853 about 1400 and rk45 about {1800}", l9_rk45, ABS, 50, R_HUNDRED, NULL },
+    { L9, "a damped spring) rkn refuses the system and says why", refuses_damped, EXACT, 0, "the damped spring refused, the undamped one taken", cl_one },
+    { L9, "Switch to rkn (press #, or i", key_hash, EXACT, 0, "'#' picks rkn", cl_one },
+};
+const size_t sw_claims_r_n = sizeof sw_claims_r / sizeof sw_claims_r[0];

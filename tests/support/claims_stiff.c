@@ -1,0 +1,115 @@
+/* Claims: rodas4's figures in docs/performance.md, the README, the method
+ * table and the lesson guide (its key), each recomputed here from a run,
+ * the scene's parameters or the controls' table. */
+#include "claims.h"
+#include "util/num.h"
+
+#define PERF "docs/performance.md"
+
+/* The stiff spring at k = 1e6 (other parameters the scene's defaults):
+ * m g (1 - cos θ)/k, the stretch the start leaves ringing, and ω times it. */
+static double ring(void)
+{
+    double m = cl_param("stiff-spring", "m"), g = cl_param("stiff-spring", "g");
+    double theta = cl_param("stiff-spring", "angle") * SW_PI / 180.0;
+    return m * g * (1 - cos(theta)) / 1e6;
+}
+static double ring_speed(void) { return ring() * sqrt(1e6 / cl_param("stiff-spring", "m")); }
+
+/* Accepted steps over the first second at rtol = atol = 1e-2, largest step
+ * 0.5 (the bench's loosest point). */
+static double steps_1s(const char *m)
+{
+    sw_sim s;
+    cl_sim_init(&s, "stiff-spring", "k=1e6", m, 0.5);
+    sw_sim_set_tolerances(&s, 1e-2, 1e-2);
+    ck_assert_int_eq(sw_sim_run_until(&s, 1.0), 0);
+    long acc, rej;
+    sw_sim_step_counts(&s, &acc, &rej);
+    sw_sim_free(&s);
+    return (double)acc;
+}
+static double rodas_steps(void) { return steps_1s("rodas4"); }
+static double rk45_steps(void) { return steps_1s("rk45"); }
+
+/* Evaluations per accepted step once under way, on a 1-point vortex
+ * (claims_shared.c): five stages, the FSAL derivative and ∂f/∂t. */
+static double rodas_per_step(void) { return cl_adaptive_per_step("rodas4"); }
+static double rodas_order(void) { return cl_method("rodas4")->order; }
+
+/* 1 when '$' picks rodas4 (the fourteenth place), from the controls' table. */
+static double key_hash_rodas(void)
+{
+    const sw_control *control;
+    int arg;
+    return sw_key_lookup('$', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
+           arg == 14 && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "rodas4") == 0;
+}
+
+/* Lesson 9's last page: the pendulum at k = 1e6, 0.05 degrees, largest step
+ * 0.1, default tolerances, from t = 0 to 2 under one method. */
+typedef struct page_run { double acc, rej, evals, solves; } page_run;
+static page_run l9_run(const char *m)
+{
+    sw_sim s;
+    cl_sim_init(&s, "stiff-spring", "k=1e6 angle=0.05", m, 0.1);
+    ck_assert_int_eq(sw_sim_run_until(&s, 2.0), 0);
+    long acc, rej;
+    sw_sim_step_counts(&s, &acc, &rej);
+    page_run r = { (double)acc, (double)rej, (double)sw_sim_evals(&s), (double)s.sys.ode->solves };
+    sw_sim_free(&s);
+    return r;
+}
+static double l9_rk45_acc(void) { return l9_run("rk45").acc; }
+static double l9_rk45_rej(void) { return l9_run("rk45").rej; }
+static double l9_rk45_evals(void) { return l9_run("rk45").evals; }
+static double l9_rk45_mean_h(void) { return 2.0 / l9_run("rk45").acc; }
+static double l9_rk45_one_in(void)
+{
+    page_run r = l9_run("rk45");
+    return (r.acc + r.rej) / r.rej;
+}
+static double l9_rodas_acc(void) { return l9_run("rodas4").acc; }
+static double l9_rodas_evals(void) { return l9_run("rodas4").evals; }
+/* Solves per trial step (accepted or rejected): the stages. */
+static double l9_rodas_solves(void)
+{
+    page_run r = l9_run("rodas4");
+    return r.solves / (r.acc + r.rej);
+}
+static double l9_omega(void) { return sqrt(1e6 / cl_param("stiff-spring", "m")); }
+static double l9_rtol(void) { return SW_RTOL_DEFAULT; }
+static double key_place_rodas(void)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (strcmp(sw_integrator_at(i)->name, "rodas4") == 0)
+            return i + 1;
+    return NAN;
+}
+
+const claim sw_claims_k[] = {
+    { L9, "could ring at ω = {1000} rad/s", l9_omega, REL, 1e-12, R_MATH, NULL },
+    { L9, "so its steps average {0.0014} s", l9_rk45_mean_h, ROUNDED, 0, "two seconds over the accepted steps, to the text's digits", NULL },
+    { L9, "rejects a step in {four}", l9_rk45_one_in, ABS, 0.5, "trials per rejection, to the nearest whole number", NULL },
+    { L9, "Two seconds cost it {1481} accepted steps", l9_rk45_acc, EXACT, 0, R_COUNT, NULL },
+    { L9, "1481 accepted steps, {500} rejected and 11887 evaluations", l9_rk45_rej, EXACT, 0, R_COUNT, NULL },
+    { L9, "1481 accepted steps, 500 rejected and {11887} evaluations", l9_rk45_evals, EXACT, 0, R_COUNT, NULL },
+    { L9, "with the Jacobian J {six} times a step", l9_rodas_solves, EXACT, 0, "linear solves per trial step, counted", NULL },
+    { L9, "Press $ (the {14}th method)", key_place_rodas, EXACT, 0, "rodas4's place in the method table", NULL },
+    { L9, "Press $ (the 14th method)", key_hash_rodas, EXACT, 0, "'$' picks rodas4", cl_one },
+    { L9, "run two seconds: {188} steps, 1443 evaluations", l9_rodas_acc, EXACT, 0, R_COUNT, NULL },
+    { L9, "run two seconds: 188 steps, {1443} evaluations", l9_rodas_evals, EXACT, 0, R_COUNT, NULL },
+    { L9, "the stretch rings by {1.3e-6} m", ring, ROUNDED, 0, R_MATH, NULL },
+    { L9, "at rtol = {1e-6} every method", l9_rtol, EXACT, 0, "the tolerance a sim starts with", NULL },
+    { PERF, "amplitude of m g (1 - cos 30°)/k = {1.3e-6} m, 1.3e-3 m/s", ring, ROUNDED, 0, R_MATH, NULL },
+    { PERF, "amplitude of m g (1 - cos 30°)/k = 1.3e-6 m, {1.3e-3} m/s", ring_speed, ROUNDED, 0, R_MATH, NULL },
+    { PERF, "(stiff-spring at rtol 1e-2, {36} steps a second against rk45's 600", rodas_steps, EXACT, 0, R_COUNT, NULL },
+    { PERF, "(stiff-spring at rtol 1e-2, 36 steps a second against rk45's {600}", rk45_steps, ABS, 50, "\"600\": to the hundred", NULL },
+    { PERF, "rodas4 spends {7} evaluations and 6 solves a step", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "one Jacobian a step | {4} | 7 + 6 linear solves", rodas_order, EXACT, 0, "the method's order in the table", NULL },
+    { README, "one Jacobian a step | 4 | {7} + 6 linear solves", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { INTEGRATORS, "adaptive, L-stable (Hairer)\", 4, {7},", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { README, "`!`, `@`, `#` and `$` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
+    { GUIDE, "`$` the fourteenth, rodas4", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
+};
+const size_t sw_claims_k_n = sizeof sw_claims_k / sizeof sw_claims_k[0];

@@ -72,6 +72,10 @@ void bench_tree(int repeats, int quick);
  * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)
  * (bench_rkn.c). */
 void bench_rkn(int repeats, int quick);
+/* The implicit methods against rk4 on the chain of chain_n beads: ns per
+ * particle-step and the paired ratio to rk4, about `target` seconds a
+ * timed repeat (bench_implicit.c). */
+void bench_implicit(int repeats, int chain_n, double target);
 /* rodas4 against CVODE's BDF on stiff problems at equal error, or rodas4
  * alone when CVODE is absent (bench_stiff.c). */
 void bench_stiff(int repeats, int quick);

@@ -504,7 +504,7 @@ static int bench_engine_main(int argc, char **argv)
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
     int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree,
-                                     32 rkn, 64 stiff, 128 heavy views */
+                                     32 rkn, 64 stiff, 128 heavy views, 256 implicit */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -526,6 +526,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 8;
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
+        } else if (strcmp(argv[i], "--implicit") == 0) {
+            sections = 256;
         } else if (strcmp(argv[i], "--rkn") == 0) {
             sections = 32;
         } else if (strcmp(argv[i], "--stiff") == 0) {
@@ -560,14 +562,16 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --peer-chain N, "
-                    "--peer-vortex N, --peer-only SCENE\n", argv[i]);
+                    "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
+                    "--peer-chain N, --peer-vortex N, --peer-only SCENE\n", argv[i]);
             return 2;
         }
     }
     machine();
     if (sections & 1)
         throughput(&o);
+    if (sections & 256)
+        bench_implicit(o.repeats, o.chain_n, o.target);
     if (sections & 2)
         bench_frame_cost(o.vortex_n, o.target);
     if (sections & 128)

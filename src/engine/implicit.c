@@ -10,9 +10,16 @@
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
-/* Euclidean norm, scaled against overflow. */
+/* Euclidean norm: the plain sum of squares where it neither overflows nor
+ * loses digits to underflow (one pass, no division), else scaled by the
+ * largest component. */
 static double norm2(int n, const double *v)
 {
+    double sq = 0;
+    for (int i = 0; i < n; i++)
+        sq += v[i] * v[i];
+    if (sq > 1e-280 && sq < 1e280)
+        return sqrt(sq);
     double m = sw_norm_inf(n, v), s = 0;
     if (!(m > 0) || !isfinite(m))
         return m;
@@ -24,19 +31,31 @@ static double norm2(int n, const double *v)
 /* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
  * equation of backward Euler (θ = 1, y1 = y0 + Δ) and of the implicit
  * midpoint rule (θ = ½) over the step σh. Each iteration solves
- * (I - θσh·J)·δ = -G with the Jacobian at the current iterate, so it
- * converges quadratically once close; farther away a backtracking line
- * search on |G|₂ keeps every step a descent step (the Newton direction is
- * one for the Euclidean norm of the residual). Converged when the
- * correction is at rounding level, |δ| <= 1e-12·|y0 + Δ|, or when no
- * descent is left and |δ| <= 1e-9·|y0 + Δ| (rounding in G decides it).
- * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3. */
+ * (I - θσh·J)·δ = -G; farther away a backtracking line search on |G|₂
+ * keeps every step a descent step (the Newton direction is one for the
+ * Euclidean norm of the residual). Converged when the correction is at
+ * rounding level, |δ| <= 1e-12·|y0 + Δ|, or when no descent is left and
+ * |δ| <= 1e-9·|y0 + Δ| (rounding in G decides it).
+ * With yj (a vector to keep it in), simplified Newton: J is taken at the
+ * first iterate and its factorisation kept (the solve reuses it for the
+ * same state and c) while the iteration contracts |G| by SIMPLIFIED_RATE
+ * or better; a slower or stalled iteration takes J afresh at the current
+ * iterate, and only a stall with a fresh J fails. With a kept J the
+ * tolerance is an eighth of the above, on the correction or on the error
+ * the rate of convergence predicts is left. The iterates are Newton's own
+ * where J does not change (linear systems: the same bits).
+ * Without yj, J afresh at every iterate (quadratic convergence: the
+ * continuation below, where the start is far from the solution).
+ * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3
+ * (and yj). */
+#define SIMPLIFIED_RATE 0.125
+
 static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                  double *d, int max_iter)
+                  double *d, int max_iter, double *yj)
 {
-    int n = ode->dim;
+    int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
-    double te = t + theta * h, c = theta * h, lambda = 1.0;
+    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
     for (int i = 0; i < n; i++)
         ym[i] = y[i] + theta * d[i];
     sw_ode_eval(ode, te, ym, g);
@@ -50,7 +69,12 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         }
         if (gnorm == 0)
             return 0; /* Δ solves G = 0 exactly */
-        if (sw_ode_solve(s, ode, te, ym, c, g, delta) != 0) {
+        const double *at = ym; /* where J is taken */
+        if (yj && fresh)
+            memcpy(yj, ym, (size_t)n * sizeof *yj);
+        if (yj)
+            at = yj;
+        if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
         }
@@ -71,19 +95,40 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
                 break;
             lambda *= 0.5;
         }
-        double step = lambda * sw_norm_inf(n, delta), size = 0;
-        sw_axpy(n, d, d, lambda, delta);
-        for (int i = 0; i < n; i++)
-            size = fmax(size, fabs(y[i] + d[i]));
-        if (step <= 1e-12 * size || gnew == 0)
+        /* step = λ·|δ|∞, d += λδ and size = |y + d|∞, in one pass */
+        double dmax = 0, size = 0;
+        for (int i = 0; i < n; i++) {
+            double a = fabs(delta[i]);
+            if (a > dmax || a != a)
+                dmax = a; /* NaN stays, as in sw_norm_inf */
+            d[i] = d[i] + lambda * delta[i];
+            double b = fabs(y[i] + d[i]);
+            if (b > size)
+                size = b; /* NaN skipped, as fmax skips it */
+        }
+        double step = lambda * dmax;
+        int kept = yj && !fresh;
+        /* With a kept J the iteration converges linearly, at the rate θ of
+         * successive corrections, and the error left after a correction is
+         * about θ/(1 - θ) times it, not its square: that estimate (Hairer
+         * and Wanner's stopping rule) must be at 1/8 of the tolerance. */
+        double tol = kept ? 1e-12 * SIMPLIFIED_RATE : 1e-12;
+        if (step <= tol * size || gnew == 0)
             return 0;
-        if (!(gnew < gnorm) || lambda < 1.0 / 1024) {
+        double rate = step / last_step;
+        last_step = step;
+        if (kept && lambda == 1.0 && rate < SIMPLIFIED_RATE && rate / (1 - rate) * step <= tol * size)
+            return 0;
+        int stalled = !(gnew < gnorm) || lambda < 1.0 / 1024;
+        if (stalled && !kept) {
             if (step <= 1e-9 * size)
                 return 0;
             s->why = "Newton's method stalled: no solution of the implicit equation was found "
                      "near the last state (a smaller dt helps)";
             return -1;
         }
+        /* a kept J that no longer contracts fast: take it afresh */
+        fresh = yj && (stalled || lambda < 1.0 || gnew > SIMPLIFIED_RATE * gnorm);
         gnorm = gnew;
     }
     s->why = "Newton's method did not converge (a smaller dt helps)";
@@ -104,7 +149,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
     int n = ode->dim;
     double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
     memset(d, 0, (size_t)n * sizeof *d);
-    if (newton(s, ode, *t, y, h, theta, d, 40) != 0) {
+    if (newton(s, ode, *t, y, h, theta, d, 40, SW_WORK(s, 4)) != 0) {
         const char *why = s->why;
         double sigma = 0, sigma_prev = 0, dsigma = 0.125;
         memset(done, 0, (size_t)n * sizeof *done);
@@ -119,7 +164,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
             double w = sigma > sigma_prev ? (next - sigma) / (sigma - sigma_prev) : 0.0;
             for (int i = 0; i < n; i++)
                 d[i] = done[i] + w * (done[i] - prev[i]);
-            if (newton(s, ode, *t, y, next * h, theta, d, 12) == 0) {
+            if (newton(s, ode, *t, y, next * h, theta, d, 12, NULL) == 0) {
                 sigma_prev = sigma;
                 sigma = next;
                 memcpy(prev, done, (size_t)n * sizeof *d);
@@ -171,24 +216,49 @@ int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double 
 }
 
 /* Dense fallback: J by forward differences, one column per evaluation, then
- * (I - c·J) z = r by Gaussian elimination with partial pivoting. */
+ * (I - c·J) z = r by Gaussian elimination with partial pivoting, the
+ * factors kept: a second solve at the same t, y (contents) and c reuses
+ * them. s->dense holds the factors (n²), then three n-vectors that serve as
+ * f(y), y + ε and f(y + ε) while J is formed and afterwards as the key:
+ * c and t, y, and the row interchanges + 1 (0: no factors kept). A system
+ * of one component keeps none (no room for the key). A stepper serves one
+ * system, so the key need not name it. */
 static int dense_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                        const double *r, double *z)
 {
-    int n = ode->dim;
+    int n = ode->dim, perm[SW_DENSE_MAX];
     double *a = s->dense, *f0 = a + (size_t)n * n, *yp = f0 + n, *f1 = yp + n;
-    sw_ode_eval(ode, t, y, f0);
-    memcpy(yp, y, (size_t)n * sizeof *yp);
-    for (int j = 0; j < n; j++) {
-        double eps = 1e-7 * fmax(1.0, fabs(y[j]));
-        yp[j] = y[j] + eps;
-        sw_ode_eval(ode, t, yp, f1);
-        yp[j] = y[j];
+    int kept = n >= 2 && f1[0] >= 1 && f0[0] == c && f0[1] == t &&
+               memcmp(yp, y, (size_t)n * sizeof *y) == 0;
+    if (kept) {
         for (int i = 0; i < n; i++)
-            a[i * n + j] = (i == j) - c * (f1[i] - f0[i]) / eps;
+            perm[i] = (int)f1[i] - 1;
+    } else {
+        f1[0] = 0;
+        sw_ode_eval(ode, t, y, f0);
+        memcpy(yp, y, (size_t)n * sizeof *yp);
+        for (int j = 0; j < n; j++) {
+            double eps = 1e-7 * fmax(1.0, fabs(y[j]));
+            yp[j] = y[j] + eps;
+            sw_ode_eval(ode, t, yp, f1);
+            yp[j] = y[j];
+            for (int i = 0; i < n; i++)
+                a[i * n + j] = (i == j) - c * (f1[i] - f0[i]) / eps;
+        }
+        if (sw_dense_factor(n, a, perm) != 0) {
+            f1[0] = 0;
+            return SW_EDIVERGED;
+        }
+        if (n >= 2) {
+            f0[0] = c;
+            f0[1] = t;
+            for (int i = 0; i < n; i++)
+                f1[i] = perm[i] + 1;
+        }
     }
     memcpy(z, r, (size_t)n * sizeof *z);
-    return sw_dense_solve(n, a, z) == 0 ? SW_OK : SW_EDIVERGED;
+    sw_dense_lu_solve(n, a, perm, z);
+    return SW_OK;
 }
 
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,

@@ -9,6 +9,63 @@
 #include <math.h>
 #include <string.h>
 
+int sw_dense_factor(int n, double *a, int *perm)
+{
+    for (int col = 0; col < n; col++) {
+        int piv = col;
+        for (int i = col + 1; i < n; i++)
+            if (fabs(a[i * n + col]) > fabs(a[piv * n + col]))
+                piv = i;
+        double p = a[piv * n + col];
+        perm[col] = piv;
+        if (!(fabs(p) > 0) || !isfinite(p))
+            return -1;
+        /* Swap only from this column on: each multiplier stays where it
+         * was made, beside the row of b it acts on at that column. */
+        if (piv != col)
+            for (int j = col; j < n; j++) {
+                double tmp = a[col * n + j];
+                a[col * n + j] = a[piv * n + j];
+                a[piv * n + j] = tmp;
+            }
+        for (int i = col + 1; i < n; i++) {
+            double f = a[i * n + col] / p;
+            a[i * n + col] = f; /* L below the diagonal; 0 where nothing was eliminated */
+            if (f == 0)
+                continue;
+            for (int j = col + 1; j < n; j++)
+                a[i * n + j] -= f * a[col * n + j];
+        }
+    }
+    return 0;
+}
+
+/* The same operations on b, in the same order, as elimination with b
+ * carried along: each row interchange, then b_i -= l_ic·b_c (skipped where
+ * l_ic = 0), then back substitution. */
+void sw_dense_lu_solve(int n, const double *a, const int *perm, double *b)
+{
+    for (int col = 0; col < n; col++) {
+        int piv = perm[col];
+        if (piv != col) {
+            double tmp = b[col];
+            b[col] = b[piv];
+            b[piv] = tmp;
+        }
+        for (int i = col + 1; i < n; i++) {
+            double f = a[i * n + col];
+            if (f != 0)
+                b[i] -= f * b[col];
+        }
+    }
+    for (int i = n - 1; i >= 0; i--) {
+        double acc = b[i];
+        for (int j = i + 1; j < n; j++)
+            acc -= a[i * n + j] * b[j];
+        b[i] = acc / a[i * n + i];
+    }
+}
+
 int sw_dense_solve(int n, double *a, double *b)
 {
     for (int col = 0; col < n; col++) {
@@ -61,6 +118,7 @@ void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
     b->ld = 2 * kl + ku + 1;
     b->a = a;
     b->piv = piv;
+    b->fill = kl + ku;
     memset(a, 0, sw_band_doubles(n, kl, ku) * sizeof *a);
 }
 
@@ -70,36 +128,43 @@ static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
 
 /* Gaussian elimination with partial pivoting within the band; a row
- * interchange widens U to kl + ku super-diagonals (the fill-in rows). */
+ * interchange widens U to kl + ku super-diagonals (the fill-in rows).
+ * Column c is contiguous in storage, entry (i, c) at a[c·ld + kv + i - c],
+ * so every inner loop runs down one column. */
 int sw_band_factor(sw_band *b)
 {
-    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ju = 0;
+    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0;
+    b->fill = b->ku;
     for (int j = 0; j < n; j++) {
+        double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
         int km = imin(kl, n - 1 - j), jp = 0;
-        double best = fabs(BAND(b, j, j));
+        double best = fabs(col[0]);
         for (int t = 1; t <= km; t++)
-            if (fabs(BAND(b, j + t, j)) > best) {
-                best = fabs(BAND(b, j + t, j));
+            if (fabs(col[t]) > best) {
+                best = fabs(col[t]);
                 jp = t;
             }
         b->piv[j] = j + jp;
         if (!(best > 0) || !isfinite(best))
             return -1;
         ju = imax(ju, imin(j + kv - kl + jp, n - 1)); /* j + ku + jp */
+        b->fill = imax(b->fill, ju - j);
         if (jp != 0)
             for (int c = j; c <= ju; c++) {
-                double tmp = BAND(b, j + jp, c);
-                BAND(b, j + jp, c) = BAND(b, j, c);
-                BAND(b, j, c) = tmp;
+                double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c; /* cc[t]: entry (j + t, c) */
+                double tmp = cc[jp];
+                cc[jp] = cc[0];
+                cc[0] = tmp;
             }
-        double inv = 1.0 / BAND(b, j, j);
+        double inv = 1.0 / col[0];
         for (int t = 1; t <= km; t++)
-            BAND(b, j + t, j) *= inv;
+            col[t] *= inv;
         for (int c = j + 1; c <= ju; c++) {
-            double u = BAND(b, j, c);
+            double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c;
+            double u = cc[0];
             if (u != 0)
                 for (int t = 1; t <= km; t++)
-                    BAND(b, j + t, c) -= BAND(b, j + t, j) * u;
+                    cc[t] -= col[t] * u;
         }
     }
     return 0;
@@ -107,21 +172,41 @@ int sw_band_factor(sw_band *b)
 
 void sw_band_solve(const sw_band *b, double *x)
 {
-    int n = b->n, kl = b->kl, kv = b->kl + b->ku;
+    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld;
     for (int j = 0; j < n - 1; j++) {
+        const double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
         int lm = imin(kl, n - 1 - j), l = b->piv[j];
         if (l != j) {
             double tmp = x[l];
             x[l] = x[j];
             x[j] = tmp;
         }
-        for (int t = 1; t <= lm; t++)
-            x[j + t] -= BAND(b, j + t, j) * x[j];
+        double xj = x[j];
+        if (lm == 3) { /* a chain's band (kl = 3) written out: the loop's overhead is its cost */
+            x[j + 1] -= col[1] * xj;
+            x[j + 2] -= col[2] * xj;
+            x[j + 3] -= col[3] * xj;
+        } else {
+            for (int t = 1; t <= lm; t++)
+                x[j + t] -= col[t] * xj;
+        }
     }
+    /* Above row j - fill, column j of U is zero: there the updates are
+     * x_i -= 0·x_j, which change nothing while x_j is finite. */
+    int fill = imin(b->fill, kv);
     for (int j = n - 1; j >= 0; j--) {
-        x[j] /= BAND(b, j, j);
-        for (int i = imax(0, j - kv); i < j; i++)
-            x[i] -= BAND(b, i, j) * x[j];
+        const double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[-k]: entry (j - k, j) */
+        x[j] /= col[0];
+        double xj = x[j];
+        int from = imax(0, j - (isfinite(xj) ? fill : kv));
+        if (from == j - 3) {
+            x[j - 3] -= col[-3] * xj;
+            x[j - 2] -= col[-2] * xj;
+            x[j - 1] -= col[-1] * xj;
+        } else {
+            for (int i = from; i < j; i++)
+                x[i] -= col[i - j] * xj;
+        }
     }
 }
 

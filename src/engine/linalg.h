@@ -11,6 +11,13 @@
  * Returns 0, or -1 when a is singular to working precision (a pivot is zero
  * or not finite). */
 int sw_dense_solve(int n, double *a, double *b);
+/* The same elimination kept for later right-hand sides: a becomes its LU
+ * factors (L's multipliers below the diagonal), perm[c] the row swapped
+ * with row c at column c. 0, or -1 when singular (as sw_dense_solve). */
+int sw_dense_factor(int n, double *a, int *perm);
+/* Solve with those factors, b becoming x: the same numbers, bit for bit, as
+ * sw_dense_solve on the unfactored matrix. */
+void sw_dense_lu_solve(int n, const double *a, const int *perm, double *b);
 
 /* A band matrix with kl sub- and ku super-diagonals in LAPACK's factored
  * layout: row i, column j (|i - j| within the band) lives at
@@ -20,6 +27,8 @@ typedef struct sw_band {
     int n, kl, ku, ld;
     double *a;       /* ld·n doubles, owned by the caller */
     int *piv;        /* n pivot rows, owned by the caller */
+    int fill;        /* after sw_band_factor: super-diagonals of U that row interchanges
+                        filled, ku to kl + ku (beyond them U is zero) */
 } sw_band;
 
 /* Doubles and ints a band of this shape needs. */

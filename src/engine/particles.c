@@ -162,6 +162,7 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
 
 int sw_particles_finish(sw_particles *p, char *err, size_t errlen)
 {
+    sw_particles_solver_touch(p);
     return swp_model_compile(p, err, errlen);
 }
 

@@ -36,6 +36,14 @@ struct sw_particles_solver {
     double *band;          /* the velocity system's band, or NULL before prepare */
     int *piv;
     int half_band;         /* in dof: 2·(largest particle distance along a spring) + 1 */
+    /* The factorisation in band is of M - c·Fv - c²·Fx at y_at and c_at
+     * with the blocks above, while `factored`: a solve at the same y and c
+     * reuses it (simplified Newton, Rosenbrock stages). Anything that writes
+     * the blocks or the band clears it. y_at (4n) comes with the band, from
+     * prepare: systems stepped explicitly carry none of it. */
+    double *y_at, c_at;
+    int factored;
+    sw_band lu;            /* the band's shape and factors, while factored */
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -99,6 +107,7 @@ void sw_particles_solver_free(sw_particles *p)
         free(p->solver->pb);
         free(p->solver->pblock);
         free(p->solver->rhs);
+        free(p->solver->y_at);
         free(p->solver->band);
         free(p->solver->piv);
         free(p->solver);
@@ -111,6 +120,7 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
     sw_particles *p = ctx;
     struct sw_particles_solver *s = p->solver;
     int far;
+    s->factored = 0;
     count_pairs(p, &far);
     if (reserve_pairs(p) != SW_OK) {
         snprintf(err, errlen, "out of memory for the implicit solve's force blocks");
@@ -123,6 +133,10 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
                  "numbers; here they span %d particles, a band of %zu MiB", far,
                  len * sizeof(double) >> 20);
         return SW_EINVAL;
+    }
+    if (!s->y_at && !(s->y_at = malloc((size_t)4 * p->n * sizeof *s->y_at))) {
+        snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
+        return SW_ENOMEM;
     }
     if (s->band && s->half_band == kb)
         return SW_OK;
@@ -146,6 +160,7 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
 static int assemble(sw_particles *p, const double *y)
 {
     struct sw_particles_solver *s = p->solver;
+    s->factored = 0;
     if (reserve_pairs(p) != SW_OK)
         return SW_ENOMEM;
     memset(s->diag, 0, (size_t)8 * p->n * sizeof *s->diag);
@@ -182,56 +197,128 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
     }
 }
 
-static void band_sink(void *ctx, int pi, int pj, double s, const double *blk)
+/* Entry (i, j) of the band's storage (LAPACK's layout, engine/linalg.h). */
+static double *band_entry(const sw_band *b, int i, int j)
 {
-    if (s == 0)
-        return;
-    for (int r = 0; r < 2; r++)
-        for (int c = 0; c < 2; c++)
-            sw_band_add(ctx, 2 * pi + r, 2 * pj + c, s * blk[2 * r + c]);
+    return b->a + (b->kl + b->ku + i - j) + (size_t)j * (size_t)b->ld;
 }
 
-/* out += s·K·w for one block: the product Fx·r_x without forming Fx. */
-typedef struct apply_ctx { const double *w; double *out; } apply_ctx;
-
-static void apply_sink(void *ctx, int pi, int pj, double s, const double *blk)
+/* The band += a·Kx + b·Kv for the 2x2 blocks Kx, Kv at particle rows pi,
+ * columns pj, written straight into the factorisation's storage; a term
+ * whose factor is 0 is left out (it would add nothing but could turn an
+ * infinite entry into NaN). Each entry gets its terms in the order the
+ * blocks come (a particle's own, then the pairs', Kx before Kv), the order
+ * the solve has always added them in. */
+static inline void band_blocks(const sw_band *b, int pi, int pj, double a, const double *kx, double bv,
+                               const double *kv)
 {
-    apply_ctx *ac = ctx;
-    if (s == 0)
+    double *e = band_entry(b, 2 * pi, 2 * pj); /* (r, c) at e + r - c + c·ld */
+    double *e01 = e + b->ld - 1, *e11 = e + b->ld;
+    if (a != 0) {
+        e[0] += a * kx[0];
+        *e01 += a * kx[1];
+        e[1] += a * kx[2];
+        *e11 += a * kx[3];
+    }
+    if (bv != 0) {
+        e[0] += bv * kv[0];
+        *e01 += bv * kv[1];
+        e[1] += bv * kv[2];
+        *e11 += bv * kv[3];
+    }
+}
+
+/* out += sc·K·w for one block: the product Fx·r_x without forming Fx. */
+static inline void apply_block(double *out, int pi, int pj, double sc, const double *blk, const double *w)
+{
+    double wx = w[2 * pj], wy = w[2 * pj + 1];
+    out[2 * pi] += sc * (blk[0] * wx + blk[1] * wy);
+    out[2 * pi + 1] += sc * (blk[2] * wx + blk[3] * wy);
+}
+
+/* The velocity system's matrix A = M - c·Fv - c²·Fx from the blocks, into
+ * the band, and its factors. 0, or -1 when A is singular. */
+static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
+{
+    struct sw_particles_solver *s = p->solver;
+    double a = -c * c, b = -c;
+    sw_band_init(band, 2 * p->n, s->half_band, s->half_band, s->band, s->piv);
+    for (int i = 0; i < p->n; i++) {
+        *band_entry(band, 2 * i, 2 * i) += p->mass[i];
+        *band_entry(band, 2 * i + 1, 2 * i + 1) += p->mass[i];
+        band_blocks(band, i, i, a, s->diag + 8 * i, b, s->diag + 8 * i + 4);
+    }
+    for (long j = 0; j < s->npairs; j++) {
+        const double *kx = s->pblock + 8 * j, *kv = kx + 4;
+        /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b). */
+        int ea = s->pa[j], eb = s->pb[j];
+        if (ea >= 0)
+            band_blocks(band, ea, ea, a, kx, b, kv);
+        if (ea >= 0 && eb >= 0) {
+            band_blocks(band, ea, eb, -a, kx, -b, kv);
+            band_blocks(band, eb, ea, -a, kx, -b, kv);
+        }
+        if (eb >= 0)
+            band_blocks(band, eb, eb, a, kx, b, kv);
+    }
+    return sw_band_factor(band);
+}
+
+/* rhs = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone). */
+static void velocity_rhs(const sw_particles *p, double c, const double *r)
+{
+    const struct sw_particles_solver *s = p->solver;
+    int n2 = 2 * p->n;
+    for (int i = 0; i < p->n; i++) {
+        s->rhs[2 * i] = p->mass[i] * r[n2 + 2 * i];
+        s->rhs[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
+    }
+    if (c == 0)
         return;
-    double wx = ac->w[2 * pj], wy = ac->w[2 * pj + 1];
-    ac->out[2 * pi] += s * (blk[0] * wx + blk[1] * wy);
-    ac->out[2 * pi + 1] += s * (blk[2] * wx + blk[3] * wy);
+    for (int i = 0; i < p->n; i++)
+        apply_block(s->rhs, i, i, c, s->diag + 8 * i, r);
+    for (long j = 0; j < s->npairs; j++) {
+        const double *kx = s->pblock + 8 * j;
+        int ea = s->pa[j], eb = s->pb[j];
+        if (ea >= 0)
+            apply_block(s->rhs, ea, ea, c, kx, r);
+        if (ea >= 0 && eb >= 0) {
+            apply_block(s->rhs, ea, eb, -c, kx, r);
+            apply_block(s->rhs, eb, ea, -c, kx, r);
+        }
+        if (eb >= 0)
+            apply_block(s->rhs, eb, eb, c, kx, r);
+    }
+}
+
+void sw_particles_solver_touch(sw_particles *p)
+{
+    if (p->solver)
+        p->solver->factored = 0;
 }
 
 int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
 {
-    (void)t;
+    (void)t; /* the forces do not depend on time */
     sw_particles *p = ctx;
     struct sw_particles_solver *s = p->solver;
     if (!s->band)
         return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
-    if (assemble(p, y) != SW_OK)
-        return SW_ENOMEM;
-    /* rhs = M r_v + c Fx r_x */
-    apply_ctx ac = { r, s->rhs };
-    for (int i = 0; i < p->n; i++) {
-        s->rhs[2 * i] = p->mass[i] * r[n2 + 2 * i];
-        s->rhs[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
+    /* The same y (contents, not address) and c as the factorisation's, and
+     * no force added since: the factors and blocks are this system's. */
+    if (!(s->factored && s->c_at == c && s->counted == p->nforces + 1 &&
+          memcmp(s->y_at, y, (size_t)2 * n2 * sizeof *y) == 0)) {
+        if (assemble(p, y) != SW_OK)
+            return SW_ENOMEM;
+        if (factor_velocity_system(p, c, &s->lu) != 0)
+            return SW_EDIVERGED;
+        memcpy(s->y_at, y, (size_t)2 * n2 * sizeof *y);
+        s->c_at = c;
+        s->factored = 1;
     }
-    scatter(p, c, 0.0, apply_sink, &ac);
-    /* A = M - c Fv - c² Fx */
-    sw_band band;
-    sw_band_init(&band, n2, s->half_band, s->half_band, s->band, s->piv);
-    for (int i = 0; i < p->n; i++) {
-        sw_band_add(&band, 2 * i, 2 * i, p->mass[i]);
-        sw_band_add(&band, 2 * i + 1, 2 * i + 1, p->mass[i]);
-    }
-    scatter(p, -c * c, -c, band_sink, &band);
-    if (sw_band_factor(&band) != 0)
-        return SW_EDIVERGED;
-    sw_band_solve(&band, s->rhs);
+    velocity_rhs(p, c, r);
+    sw_band_solve(&s->lu, s->rhs);
     for (int i = 0; i < n2; i++) {
         z[n2 + i] = s->rhs[i];
         z[i] = r[i] + c * s->rhs[i];
@@ -263,6 +350,16 @@ int sw_particles_jacobian(sw_particles *p, const double *y, double *fx, double *
     scatter(p, 1.0, 0.0, dense_sink, &cx);
     scatter(p, 0.0, 1.0, dense_sink, &cv);
     return SW_OK;
+}
+
+/* out += s·K·w for one block, as a sink for scatter. */
+typedef struct apply_ctx { const double *w; double *out; } apply_ctx;
+
+static void apply_sink(void *ctx, int pi, int pj, double s, const double *blk)
+{
+    apply_ctx *ac = ctx;
+    if (s != 0)
+        apply_block(ac->out, pi, pj, s, blk, ac->w);
 }
 
 int sw_particles_jacobian_apply(sw_particles *p, const double *y, double a, double b, const double *w,

@@ -15,8 +15,13 @@ void sw_particles_solver_free(sw_particles *p);
  * after the springs are filled in). 0, SW_ENOMEM, or SW_EINVAL when the
  * pairs' bandwidth makes the band too large. */
 int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen);
-/* (I - c·J) z = r at state y: the sw_solve_fn of a particle system. */
+/* (I - c·J) z = r at state y: the sw_solve_fn of a particle system. A
+ * second solve at the same y (compared by contents) and c reuses the first
+ * one's factorisation. */
 int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z);
+/* Forget the kept factorisation: the forces or masses changed in place
+ * (sw_particles_finish calls it). */
+void sw_particles_solver_touch(sw_particles *p);
 
 /* The force Jacobians at state y as dense 2n×2n row-major matrices:
  * fx = ∂f/∂x and fv = ∂f/∂v, every force included (the damping term's

@@ -1,6 +1,6 @@
 #!/bin/sh
 # The engine benchmark (`make bench`) with --quick: its tables run to the
-# end (small sizes; Barnes-Hut at n = 1e3, 1e4, allocating nothing); every
+# end (small sizes; the implicit methods against rk4; Barnes-Hut at n = 1e3, 1e4, allocating nothing); every
 # hand-written baseline reproduces the generic step bit for bit; every
 # default scene gets a frame-cost row; the heavy views (through the app) and
 # the large-n memory rows (against the hand-fused loop) are there.
@@ -12,6 +12,10 @@ echo "$out" | grep -q '^throughput: ns per particle-step' || fail "no throughput
 [ "$(echo "$out" | grep -c 'bitwise equal after 200 steps')" -eq 4 ] \
     || fail "baselines (euler, rk4 on chain and vortex) do not all match: $(echo "$out" | grep -E ' (euler|rk4) ')"
 echo "$out" | grep -q 'differs by' && fail "a baseline differs"
+echo "$out" | grep -q '^implicit steps: chain' || fail "no implicit-steps table"
+for m in rk4 implicit-euler implicit-midpoint linear-implicit-euler; do
+    echo "$out" | grep -Eq "^  $m +[0-9.e+-]+ +[0-9.]+ +\\[" || fail "no implicit-steps row for $m"
+done
 echo "$out" | grep -q '^frame cost' || fail "no frame-cost table"
 for s in vortex river gyre projectile bounce fireworks spring stiff-spring chain orbit; do
     echo "$out" | grep -Eq "^  $s +[0-9]" || fail "no frame row for $s"

@@ -1,0 +1,315 @@
+/* The implicit solves' kept factorisations and simplified Newton: a solve
+ * that reuses the factors gives the numbers a fresh one gives, bit for bit;
+ * a change of the state (contents) or of c is never served stale; the
+ * dense fallback's kept LU equals Gaussian elimination; and a Newton step
+ * that keeps J lands on the solution of the implicit equation, checked
+ * against the equation itself and against full Newton on dense matrices. */
+#include <check.h>
+#include <math.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+#include "stepwise/particles.h"
+#include "engine/linalg.h"
+#include "engine/particles_solve.h"
+#include "engine/stepper.h"
+
+#define NB 6           /* beads */
+#define DIM (4 * NB)
+
+/* A damped chain of NB beads between two anchors, with gravity, plucked
+ * and moving: nonlinear springs (rest length), damping, a non-symmetric J. */
+static void chain(sw_particles *p)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(p, NB, 1.3, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(p, NB + 1);
+    ck_assert_ptr_nonnull(s);
+    for (int j = 0; j <= NB; j++)
+        s[j] = (sw_spring){ .a = j < NB ? j : NB - 1, .b = j == 0 || j == NB ? -1 : j - 1, .k = 40.0 + j,
+                            .c = 0.3, .rest = 0.8, .ax = j == 0 ? 0.0 : NB + 1.0, .ay = 0.0 };
+    sw_particles_add_gravity(p, 0.0, -9.81);
+    ck_assert_int_eq(sw_particles_finish(p, err, sizeof err), SW_OK);
+    for (int i = 0; i < NB; i++) {
+        p->y[2 * i] = i + 1.0 + 0.1 * sin(i);
+        p->y[2 * i + 1] = 0.4 * cos(1.7 * i);
+        p->y[2 * NB + 2 * i] = 0.3 * sin(2.1 * i);
+        p->y[2 * NB + 2 * i + 1] = -0.2 * i;
+    }
+    ck_assert_int_eq(sw_particles_solver_prepare(p, err, sizeof err), SW_OK);
+}
+
+static void fill(double *r, double scale)
+{
+    for (int i = 0; i < DIM; i++)
+        r[i] = scale * sin(1.0 + 0.37 * i);
+}
+
+/* The solve at (y, c) of r, with the kept factors forgotten first. */
+static void fresh_solve(sw_particles *p, const double *y, double c, const double *r, double *z)
+{
+    sw_particles_solver_touch(p);
+    ck_assert_int_eq(sw_particles_solve(p, 0.0, y, c, r, z), SW_OK);
+}
+
+/* A second right-hand side at the same y and c is served from the kept
+ * factors: bit for bit what a fresh factorisation gives. The answer also
+ * solves (I - c·J) z = r with J from sw_particles_jacobian (dense, formed
+ * independently of the band): residual at rounding, 1e-12 of |r| with
+ * |c·J| of order 1. */
+START_TEST(kept_factors_give_fresh_numbers)
+{
+    sw_particles p;
+    chain(&p);
+    double y[DIM], r1[DIM], r2[DIM], z1[DIM], z2[DIM], zf[DIM];
+    memcpy(y, p.y, sizeof y);
+    fill(r1, 1.0);
+    fill(r2, -0.3);
+    r2[5] += 1.0;
+    double c = 0.05;
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r1, z1), SW_OK);
+    double ycopy[DIM]; /* same contents, another address: still the same state */
+    memcpy(ycopy, y, sizeof y);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, ycopy, c, r2, z2), SW_OK);
+    fresh_solve(&p, y, c, r2, zf);
+    ck_assert_mem_eq(z2, zf, sizeof z2);
+
+    static double fx[DIM / 2 * DIM / 2], fv[DIM / 2 * DIM / 2];
+    int n2 = DIM / 2;
+    ck_assert_int_eq(sw_particles_jacobian(&p, y, fx, fv), SW_OK);
+    /* J = [[0, I], [M⁻¹Fx, M⁻¹Fv]]; residual of (I - cJ) z2 = r2 */
+    double worst = 0;
+    for (int i = 0; i < n2; i++) {
+        double rx = z2[i] - c * z2[n2 + i] - r2[i];
+        double acc = z2[n2 + i];
+        for (int j = 0; j < n2; j++)
+            acc -= c * (fx[i * n2 + j] * z2[j] + fv[i * n2 + j] * z2[n2 + j]) / 1.3;
+        worst = fmax(worst, fmax(fabs(rx), fabs(acc - r2[n2 + i])));
+    }
+    ck_assert_double_le(worst, 1e-12);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* Never stale: after a solve at y, a solve at y with one component nudged
+ * by one ulp, or at another c, or after the forces changed in place
+ * (sw_particles_finish), equals a fresh solve there and not the first
+ * answer. A cache that compared addresses, or forgot c, fails here. */
+START_TEST(changed_state_or_c_refactors)
+{
+    sw_particles p;
+    chain(&p);
+    double y[DIM], r[DIM], z0[DIM], z[DIM], zf[DIM];
+    char err[SW_ERRLEN];
+    memcpy(y, p.y, sizeof y);
+    fill(r, 1.0);
+    double c = 0.05;
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z0), SW_OK);
+    for (int k = 0; k < DIM; k += 5) { /* positions and velocities alike, in place */
+        double keep = y[k];
+        y[k] = nextafter(y[k], INFINITY);
+        ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
+        fresh_solve(&p, y, c, r, zf);
+        ck_assert_mem_eq(z, zf, sizeof z);
+        y[k] = keep;
+        ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
+        ck_assert_mem_eq(z, z0, sizeof z);
+    }
+    /* and the nudged answers are not the first one: a bead moved by 1e-9
+     * moves its springs' blocks, so z moves */
+    y[2] += 1e-9;
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
+    ck_assert(memcmp(z, z0, sizeof z) != 0);
+    y[2] = p.y[2];
+
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z0), SW_OK);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, 2 * c, r, z), SW_OK);
+    fresh_solve(&p, y, 2 * c, r, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert(memcmp(z, z0, sizeof z) != 0);
+
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z0), SW_OK);
+    p.forces[0].springs[2].k *= 3; /* in place, then finish, as the API asks */
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
+    ck_assert(memcmp(z, z0, sizeof z) != 0);
+    fresh_solve(&p, y, c, r, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+
+    /* the Jacobian queries write the blocks the kept factors were made
+     * with: the next solve must not use them as the solve's */
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z0), SW_OK);
+    double w[DIM / 2], out[DIM / 2], y2[DIM];
+    memcpy(y2, y, sizeof y2);
+    y2[0] += 0.5;
+    for (int i = 0; i < DIM / 2; i++)
+        w[i] = 1.0;
+    ck_assert_int_eq(sw_particles_jacobian_apply(&p, y2, 1.0, 0.0, w, out, 1), SW_OK);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, z0, sizeof z);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* sw_dense_factor + sw_dense_lu_solve do the operations of sw_dense_solve in
+ * the same order: equal bit for bit, on matrices that need row interchanges
+ * (a small leading pivot) at several columns. */
+START_TEST(dense_lu_equals_elimination)
+{
+    enum { N = 7 };
+    for (int trial = 0; trial < 4; trial++) {
+        double a[N * N], lu[N * N], b[N], x[N];
+        int perm[N];
+        for (int i = 0; i < N; i++) {
+            for (int j = 0; j < N; j++)
+                a[i * N + j] = sin(1.3 * i + 0.7 * j + trial) + (i == j ? 0.01 * trial : 0.0);
+            b[i] = cos(0.9 * i + trial);
+        }
+        a[0] = 1e-3; /* row 0 must be swapped away */
+        memcpy(lu, a, sizeof a);
+        memcpy(x, b, sizeof b);
+        ck_assert_int_eq(sw_dense_factor(N, lu, perm), 0);
+        sw_dense_lu_solve(N, lu, perm, x);
+        int swaps = 0;
+        for (int i = 0; i < N; i++)
+            swaps += perm[i] != i;
+        ck_assert_int_ge(swaps, 2);
+        ck_assert_int_eq(sw_dense_solve(N, a, b), 0);
+        ck_assert_mem_eq(x, b, sizeof x);
+    }
+}
+END_TEST
+
+/* A first-order system with no solve of its own (the dense fallback) whose
+ * Jacobian depends on t and y: y0' = -y0³ + sin(t)·y1, y1' = y0 - 2 y1. */
+static void cubic_deriv(void *ctx, double t, const double *y, double *dy)
+{
+    (void)ctx;
+    dy[0] = -y[0] * y[0] * y[0] + sin(t) * y[1];
+    dy[1] = y[0] - 2 * y[1];
+}
+
+static sw_ode cubic(void)
+{
+    return (sw_ode){ .dim = 2, .order = 1, .deriv = cubic_deriv };
+}
+
+/* The dense fallback keeps its factors for the same (t, y, c) and takes
+ * them afresh for another t, y or c: each answer equals that of a stepper
+ * that has never solved before. */
+START_TEST(dense_fallback_keeps_and_drops)
+{
+    sw_ode ode = cubic();
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("implicit-euler"), &ode, err, sizeof err), SW_OK);
+    double y[2] = { 0.8, -0.3 }, r1[2] = { 1.0, 2.0 }, r2[2] = { -0.5, 0.25 }, z[2], zf[2];
+    struct { double t, dy0, c; } cases[] = { { 0.3, 0, 0.1 }, { 0.3, 0, 0.1 }, { 0.9, 0, 0.1 },
+                                             { 0.9, 1e-3, 0.1 }, { 0.9, 1e-3, 0.2 } };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        double yk[2] = { y[0] + cases[k].dy0, y[1] };
+        ck_assert_int_eq(sw_ode_solve(&s, &ode, cases[k].t, yk, cases[k].c, k % 2 ? r1 : r2, z), SW_OK);
+        sw_stepper fresh;
+        sw_ode o2 = cubic();
+        ck_assert_int_eq(sw_stepper_init(&fresh, sw_integrator_find("implicit-euler"), &o2, err, sizeof err),
+                         SW_OK);
+        ck_assert_int_eq(sw_ode_solve(&fresh, &o2, cases[k].t, yk, cases[k].c, k % 2 ? r1 : r2, zf), SW_OK);
+        ck_assert_mem_eq(z, zf, sizeof z);
+        sw_stepper_free(&fresh);
+    }
+    /* the repeat of case 0 (case 1) cost no evaluations: the factors were kept */
+    long before = ode.evals;
+    ck_assert_int_eq(sw_ode_solve(&s, &ode, 0.9, (double[]){ 0.8 + 1e-3, -0.3 }, 0.2, r1, z), SW_OK);
+    ck_assert_int_eq(ode.evals, before);
+    sw_stepper_free(&s);
+}
+END_TEST
+
+/* One backward Euler and one implicit-midpoint step of the chain at a large
+ * step (h·|λ| ≈ 3, where J changes along the step and simplified Newton
+ * needs several iterations): the result satisfies its implicit equation to
+ * the tolerance Newton promises (1e-12 of the state's size, with room for
+ * the rounding of h·f: 1e-11 absolute on a state of size ~7), and agrees
+ * with full Newton on the dense Jacobian, iterated independently here to
+ * |δ| < 1e-14, within the same bound. */
+START_TEST(simplified_newton_reaches_the_solution)
+{
+    const char *methods[2] = { "implicit-euler", "implicit-midpoint" };
+    for (int mi = 0; mi < 2; mi++) {
+        double theta = mi == 0 ? 1.0 : 0.5, h = 0.4;
+        sw_particles p, q;
+        sw_stepper s;
+        char err[SW_ERRLEN];
+        chain(&p);
+        chain(&q);
+        ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(methods[mi]), &p.ode, err, sizeof err), SW_OK);
+        double y0[DIM], t = 0;
+        memcpy(y0, p.y, sizeof y0);
+        ck_assert_int_eq(sw_stepper_step(&s, &p.ode, &t, p.y, h), SW_OK);
+
+        /* the implicit equation: y1 = y0 + h f(y0 + θ(y1 - y0)) */
+        double ym[DIM], f[DIM], size = 0, worst = 0;
+        for (int i = 0; i < DIM; i++) {
+            ym[i] = y0[i] + theta * (p.y[i] - y0[i]);
+            size = fmax(size, fabs(p.y[i]));
+        }
+        q.ode.deriv(&q, theta * h, ym, f);
+        for (int i = 0; i < DIM; i++)
+            worst = fmax(worst, fabs(p.y[i] - y0[i] - h * f[i]));
+        ck_assert_double_le(worst, 1e-11);
+
+        /* full Newton on G(Δ) = Δ - h f(y0 + θΔ), dense J from the blocks */
+        static double fx[(DIM / 2) * (DIM / 2)], fv[(DIM / 2) * (DIM / 2)], a[DIM * DIM];
+        double d[DIM] = { 0 }, g[DIM];
+        int n2 = DIM / 2;
+        for (int it = 0; it < 50; it++) {
+            for (int i = 0; i < DIM; i++)
+                ym[i] = y0[i] + theta * d[i];
+            q.ode.deriv(&q, theta * h, ym, f);
+            ck_assert_int_eq(sw_particles_jacobian(&q, ym, fx, fv), SW_OK);
+            memset(a, 0, sizeof a);
+            for (int i = 0; i < DIM; i++) {
+                a[i * DIM + i] = 1.0;
+                g[i] = h * f[i] - d[i];
+            }
+            for (int i = 0; i < n2; i++) {
+                a[i * DIM + n2 + i] -= theta * h;
+                for (int j = 0; j < n2; j++) {
+                    a[(n2 + i) * DIM + j] -= theta * h * fx[i * n2 + j] / 1.3;
+                    a[(n2 + i) * DIM + n2 + j] -= theta * h * fv[i * n2 + j] / 1.3;
+                }
+            }
+            ck_assert_int_eq(sw_dense_solve(DIM, a, g), 0);
+            double step = 0;
+            for (int i = 0; i < DIM; i++) {
+                d[i] += g[i];
+                step = fmax(step, fabs(g[i]));
+            }
+            if (step < 1e-14)
+                break;
+        }
+        double diff = 0;
+        for (int i = 0; i < DIM; i++)
+            diff = fmax(diff, fabs(p.y[i] - (y0[i] + d[i])));
+        ck_assert_double_le(diff, 1e-12 * size);
+        ck_assert_int_gt(s.newton_iters, 2); /* the kept J was used and iterated on */
+        sw_stepper_free(&s);
+        sw_particles_free(&p);
+        sw_particles_free(&q);
+    }
+}
+END_TEST
+
+Suite *make_solve_suite(void);
+Suite *make_solve_suite(void)
+{
+    Suite *s = suite_create("solve");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, kept_factors_give_fresh_numbers);
+    tcase_add_test(tc, changed_state_or_c_refactors);
+    tcase_add_test(tc, dense_lu_equals_elimination);
+    tcase_add_test(tc, dense_fallback_keeps_and_drops);
+    tcase_add_test(tc, simplified_newton_reaches_the_solution);
+    suite_add_tcase(s, tc);
+    return s;
+}

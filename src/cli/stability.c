@@ -5,11 +5,18 @@
  * table; `stepwise stability --all --markdown` is docs/stability.md's. */
 #include "cli/cli.h"
 
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
+#include <stdio.h>
 #include <string.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "measure/stability.h"
 #include "sim/truth.h"
+#include "util/num.h"
 
 static const char usage_text[] =
     "usage: stepwise stability SCENE [--integrators LIST] [--set NAME=VALUE] [--plugin FILE]\n"
@@ -45,6 +52,8 @@ static const char usage_text[] =
     "  --set NAME=VALUE    change a scene parameter, e.g. --set c=0 (undamped spring)\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
     "  --all               every scene where growth can be judged, default parameters\n"
+    "  -j, --jobs N        with --all: scenes measured N at once, 1 to 64 (default: the\n"
+    "                      online cores, at most 8); the report is the same for every N\n"
     "  --markdown          a Markdown table (docs/stability.md is made this way)\n"
     "\n"
     "Each probe runs for a fixed simulated time, so slow growth at small dt has as\n"
@@ -182,6 +191,115 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
     return status;
 }
 
+/* One scene of --all at its defaults: its report, or a line saying it is
+ * over the budget. 1 when report() found a disagreement. */
+static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int nmethods, int markdown)
+{
+    double p[SW_MAX_PARAMS], cost;
+    char why[SW_ERRLEN];
+    sw_scene_fill(sc, NULL, p);
+    /* (theory only is cheap: no probe runs) */
+    if (sw_stability_measurable(sc, p, why, sizeof why) &&
+        (cost = report_cost(sc, p, methods, nmethods)) > SW_WORK_REPORT) {
+        int has_n = sw_scene_param_index(sc, "n") >= 0;
+        printf(markdown ? "\n### %s\n\nNot measured: it would cost about %.2g state evaluations, "
+                          "over the budget of %.0e%s%s%s.\n"
+                        : "stability on %s: not measured: it would cost about %.2g state evaluations, "
+                          "over the budget of %.0e%s%s%s\n",
+               sc->name, cost, SW_WORK_REPORT, has_n ? " (fewer particles measure: stepwise stability " : "",
+               has_n ? sc->name : "", has_n ? " --set n=10)" : "");
+        return 0;
+    }
+    return report(sc, p, methods, nmethods, markdown);
+}
+
+/* --all: the scenes measured `jobs` at once, each in a child process that
+ * writes its report to a temporary file; the reports are printed in the
+ * catalog's order, so the output is the same bytes for every jobs (each
+ * scene's measurement depends on nothing but the scene). 1 when a report
+ * found a disagreement, 2 when a child failed (said on stderr). */
+static int all_scenes(const sw_integrator *const *methods, int nmethods, int markdown, int jobs)
+{
+    int n = sw_scene_count(), status = 0;
+    FILE *out[64];
+    pid_t pid[64];
+    int code[64];
+    if (jobs <= 1 || n > 64) {
+        for (int i = 0; i < n; i++)
+            status |= all_one(sw_scene_at(i), methods, nmethods, markdown);
+        return status;
+    }
+    /* the costliest first (longest-first scheduling): the last to finish
+     * is then a short one */
+    int order[64];
+    double cost[64];
+    for (int i = 0; i < n; i++) {
+        double p[SW_MAX_PARAMS];
+        sw_scene_fill(sw_scene_at(i), NULL, p);
+        cost[i] = report_cost(sw_scene_at(i), p, methods, nmethods);
+        order[i] = i;
+        for (int j = i; j > 0 && cost[order[j]] > cost[order[j - 1]]; j--) {
+            int t = order[j];
+            order[j] = order[j - 1];
+            order[j - 1] = t;
+        }
+    }
+    fflush(stdout);
+    int next = 0, running = 0;
+    for (int i = 0; i < n; i++)
+        out[i] = NULL;
+    while (next < n || running > 0) {
+        if (next < n && running < jobs) {
+            int i = order[next++];
+            pid[i] = -1;
+            code[i] = 2;
+            if (!(out[i] = tmpfile())) {
+                sw_cli_note("stability: no temporary file for %s: %s", sw_scene_at(i)->name, strerror(errno));
+                continue;
+            }
+            pid[i] = fork();
+            if (pid[i] == 0) {
+                prctl(PR_SET_PDEATHSIG, SIGKILL); /* never outlives the report */
+                int rc = dup2(fileno(out[i]), STDOUT_FILENO) < 0 ? 2
+                         : all_one(sw_scene_at(i), methods, nmethods, markdown);
+                _exit(fflush(stdout) == 0 ? rc : 2);
+            }
+            if (pid[i] < 0)
+                sw_cli_note("stability: could not start the measurement of %s: %s", sw_scene_at(i)->name,
+                            strerror(errno));
+            else
+                running++;
+            continue;
+        }
+        int wst;
+        pid_t done = wait(&wst);
+        if (done < 0) {
+            if (errno == EINTR)
+                continue;
+            break;
+        }
+        for (int k = 0; k < next; k++)
+            if (pid[order[k]] == done) {
+                int i = order[k];
+                code[i] = WIFEXITED(wst) ? WEXITSTATUS(wst) : 2;
+                running--;
+            }
+    }
+    for (int i = 0; i < n; i++) {
+        if (out[i] && code[i] != 2) {
+            rewind(out[i]);
+            char buf[4096];
+            for (size_t got; (got = fread(buf, 1, sizeof buf, out[i])) > 0;)
+                fwrite(buf, 1, got, stdout);
+        } else
+            sw_cli_note("stability: the measurement of %s failed", sw_scene_at(i)->name);
+        if (out[i])
+            fclose(out[i]);
+        status |= code[i] == 1 ? 1 : code[i] ? 2 : 0;
+    }
+    return status;
+}
+
 int sw_cmd_stability(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)
@@ -193,11 +311,11 @@ int sw_cmd_stability(int argc, char **argv)
     memset(&opts, 0, sizeof opts);
     const char *plugins[8];
     char *methods_arg = NULL;
-    int nplugins = 0, all = 0, markdown = 0;
+    int nplugins = 0, all = 0, markdown = 0, jobs = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         int takes = strcmp(a, "--integrators") == 0 || strcmp(a, "--set") == 0 ||
-                    strcmp(a, "--plugin") == 0;
+                    strcmp(a, "--plugin") == 0 || strcmp(a, "--jobs") == 0 || strcmp(a, "-j") == 0;
         if (takes && i + 1 >= argc)
             return sw_cli_error("%s needs a value; see 'stepwise stability --help'", a);
         if (strcmp(a, "--integrators") == 0)
@@ -209,18 +327,30 @@ int sw_cmd_stability(int argc, char **argv)
             if (nplugins == 8)
                 return sw_cli_error("at most 8 --plugin options");
             plugins[nplugins++] = argv[++i];
+        } else if (strcmp(a, "--jobs") == 0 || strcmp(a, "-j") == 0) {
+            long j;
+            if (sw_parse_long(argv[++i], 1, 64, &j) != SW_OK)
+                return sw_cli_error("%s '%.40s' is not allowed: it takes a whole number of scenes measured at "
+                                    "once, 1 to 64", a, argv[i]);
+            jobs = (int)j;
         } else if (strcmp(a, "--all") == 0)
             all = 1;
         else if (strcmp(a, "--markdown") == 0)
             markdown = 1;
         else if (a[0] == '-')
             return sw_cli_error("stability: unknown option '%.40s'; options: --integrators, --set, "
-                                "--plugin, --all, --markdown, --help", a);
+                                "--plugin, --all, --jobs, --markdown, --help", a);
         else if (opts.scene)
             return sw_cli_error("stability takes one SCENE (got '%.40s' and '%.40s')",
                                 opts.scene->name, a);
         else if (sw_cli_scene(a, &opts.scene) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
+    }
+    if (jobs && !all)
+        return sw_cli_error("--jobs is for --all: one scene is measured in one process");
+    if (!jobs) {
+        long cores = sysconf(_SC_NPROCESSORS_ONLN);
+        jobs = cores < 1 ? 1 : cores > 8 ? 8 : (int)cores;
     }
     if (all && (opts.scene || opts.nsets))
         return sw_cli_error("stability --all takes no SCENE and no --set: it reports every scene at "
@@ -262,27 +392,7 @@ int sw_cmd_stability(int argc, char **argv)
             return SW_EXIT_USAGE;
         if (report(opts.scene, opts.p, methods, nmethods, markdown))
             status = SW_EXIT_FAIL;
-    } else {
-        for (int s = 0; s < sw_scene_count(); s++) {
-            const sw_scene *sc = sw_scene_at(s);
-            double p[SW_MAX_PARAMS], cost;
-            char why[SW_ERRLEN];
-            sw_scene_fill(sc, NULL, p);
-            /* (theory only is cheap: no probe runs) */
-            if (sw_stability_measurable(sc, p, why, sizeof why) &&
-                (cost = report_cost(sc, p, methods, nmethods)) > SW_WORK_REPORT) {
-                int has_n = sw_scene_param_index(sc, "n") >= 0;
-                printf(markdown ? "\n### %s\n\nNot measured: it would cost about %.2g state evaluations, "
-                                  "over the budget of %.0e%s%s%s.\n"
-                                : "stability on %s: not measured: it would cost about %.2g state evaluations, "
-                                  "over the budget of %.0e%s%s%s\n",
-                       sc->name, cost, SW_WORK_REPORT, has_n ? " (fewer particles measure: stepwise stability " : "",
-                       has_n ? sc->name : "", has_n ? " --set n=10)" : "");
-                continue;
-            }
-            if (report(sc, p, methods, nmethods, markdown))
-                status = SW_EXIT_FAIL;
-        }
-    }
+    } else if (all_scenes(methods, nmethods, markdown, jobs))
+        status = SW_EXIT_FAIL;
     return fflush(stdout) == 0 ? status : sw_cli_error("stability: could not write the report");
 }

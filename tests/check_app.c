@@ -270,6 +270,23 @@ static char *compose_text(sw_app *a, int cols, int rows)
 
 /* Frames: the status names method and dt; a tiny terminal gets a message;
  * a blown-up state (NaN, inf) reaches the picture and the banner safely. */
+/* An adaptive method's status line at 80 columns keeps what lesson 9
+ * compares: its evaluations and its accepted and rejected steps (a
+ * newcomer could not check the pages' evaluation counts when evals was
+ * the first field dropped). */
+START_TEST(adaptive_status_keeps_evals)
+{
+    sw_app a;
+    app_with(&a, "orbit", "rk45", 0.4, NULL);
+    for (int f = 0; f < 20; f++)
+        sw_app_advance(&a, 0.1, 1000);
+    char *t = compose_text(&a, 80, 24);
+    ck_assert_msg(strstr(t, "evals ") && strstr(t, "acc ") && strstr(t, " rej "), "%s", t);
+    free(t);
+    sw_app_free(&a);
+}
+END_TEST
+
 START_TEST(frames_compose)
 {
     sw_app a;
@@ -446,6 +463,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, compare_race);
     tcase_add_test(tc, graph_bounded);
     tcase_add_test(tc, frames_compose);
+    tcase_add_test(tc, adaptive_status_keeps_evals);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -40,12 +40,15 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "stops at t=%g (u)", a->until);
         snprintf(x->brief, sizeof x->brief, "stop t=%g", a->until);
     }
-    if ((x = add(f, &n, max, 3))) {
+    /* an adaptive method's cost is its evaluations (what lesson 9 compares;
+     * its steps are the accepted count beside them): they go before steps */
+    int adaptive = (s->method->flags & SW_ADAPTIVE) != 0;
+    if ((x = add(f, &n, max, adaptive ? 1 : 3))) {
         snprintf(x->full, sizeof x->full, "steps %ld", s->steps);
     }
     if (i == 0 && a->steps_per_sec > 0 && (x = add(f, &n, max, 1)))
         snprintf(x->full, sizeof x->full, "%.0f steps/s", a->steps_per_sec);
-    if ((x = add(f, &n, max, 2))) {
+    if ((x = add(f, &n, max, adaptive ? 5 : 2))) {
         snprintf(x->full, sizeof x->full, "evals %ld", sw_sim_evals(s));
     }
     double drift = sw_sim_energy_drift(s);
@@ -63,12 +66,12 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->brief, sizeof x->brief, "%s %.2g %s", a->err_velocity ? "v err" : "err", err, unit);
     }
     double inv = s->blown ? NAN : sw_sim_drift(s);
-    if (isfinite(inv) && a->scene->drift_name && (x = add(f, &n, max, 6))) {
+    if (isfinite(inv) && a->scene->drift_name && (x = add(f, &n, max, adaptive ? 4 : 6))) {
         /* what a page's `drift` goal reads: the scene names it */
         snprintf(x->full, sizeof x->full, "%s %.2g", a->scene->drift_name, inv);
         snprintf(x->brief, sizeof x->brief, "drift %.1g", inv);
     }
-    if ((s->method->flags & SW_ADAPTIVE) && (x = add(f, &n, max, 4))) {
+    if (adaptive && (x = add(f, &n, max, 6))) {
         long acc, rej;
         sw_sim_step_counts(s, &acc, &rej);
         snprintf(x->full, sizeof x->full, "accepted %ld rejected %ld", acc, rej);

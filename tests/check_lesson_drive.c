@@ -313,6 +313,41 @@ START_TEST(watch_pages_start_paused)
 }
 END_TEST
 
+/* A page starts with the scene's own camera unless it sets one: a zoom,
+ * a camera following the run, a box from the page before are dropped
+ * (lesson 7: the zoom-out page 3 asks for hid page 4's pendulum); a page
+ * that sets them gets them. */
+START_TEST(pages_start_with_the_scene_camera)
+{
+    char state[] = "/tmp/sw-cam-XXXXXX", path[128];
+    ck_assert_ptr_nonnull(mkdtemp(state));
+    setenv("XDG_STATE_HOME", state, 1);
+    snprintf(path, sizeof path, "%s/cam.lesson", state);
+    FILE *f = fopen(path, "w");
+    fputs("title: Camera\n--- First\n@scene spring\nZoom out.\n--- Second\nThe spring.\n"
+          "--- Third\n@view follow zoom=0.5 box=0,0,1,1\nClose up.\n",
+          f);
+    fclose(f);
+    sw_runner r;
+    sw_app a;
+    char err[SW_LESSON_ERRLEN];
+    ck_assert_msg(sw_runner_start(&r, &a, path, 0, err, sizeof err) == SW_OK, "%s", err);
+    a.zoom = 4;
+    a.follow = 1;
+    a.have_box = 1;
+    sw_runner_enter(&r, &a, 1);
+    ck_assert(a.zoom == 1 && a.follow == 0 && a.have_box == 0);
+    sw_runner_enter(&r, &a, 2);
+    ck_assert(a.zoom == 0.5 && a.follow == 1 && a.have_box == 1);
+    sw_app_free(&a);
+    sw_runner_free(&r);
+    char cmd[160];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
+    ck_assert_int_eq(system(cmd), 0);
+    unsetenv("XDG_STATE_HOME");
+}
+END_TEST
+
 Suite *make_lesson_drive_suite(void);
 Suite *make_lesson_drive_suite(void)
 {
@@ -322,6 +357,7 @@ Suite *make_lesson_drive_suite(void)
     tcase_add_test(tc, gating_and_answers);
     tcase_add_test(tc, menu_next_unfinished);
     tcase_add_test(tc, watch_pages_start_paused);
+    tcase_add_test(tc, pages_start_with_the_scene_camera);
     tcase_add_test(tc, drive_every_lesson);
     suite_add_tcase(s, tc);
     return s;

@@ -84,6 +84,14 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_view(a, pg->view == SW_LESSON_VIEW_PHASE    ? SW_VIEW_PHASE
                            : pg->view == SW_LESSON_VIEW_REGION ? SW_VIEW_REGION
                                                                : SW_VIEW_SCENE);
+    /* the camera too: the scene's own view, unless the page sets one (a
+     * zoom-out asked for on one page hid the next page's pendulum) */
+    if (pg->zoom <= 0)
+        a->zoom = 1;
+    if (pg->follow < 0)
+        a->follow = 0;
+    if (!pg->has_box)
+        a->have_box = 0;
     if (pg->follow >= 0)
         a->follow = pg->follow;
     if (pg->lanes >= 0)

@@ -133,6 +133,7 @@ static const struct { const char *word; double value; } words[] = {
     { "adozen", 12 }, { "nineteen", 19 }, { "seven", 7 }, { "six", 6 }, { "four", 4 },
     { "eight", 8 }, { "ten-thousandfold", 1e4 }, { "halves", 2 }, { "rounding", 1e-12 },
     { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 }, { "three", 3 },
+    { "sixteen", 16 },
 };
 
 static const char *const superscripts[] = { "⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹" };

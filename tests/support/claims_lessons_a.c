@@ -319,6 +319,19 @@ static double l4_located_error(void)
     return e;
 }
 
+/* How many times a lesson 5 page slows the run (its @speed). */
+static double l5_slowed(const char *title)
+{
+    sw_runner r;
+    sw_app a;
+    cl_lesson_page(&r, &a, L5, title);
+    double slowed = 1 / a.speed;
+    cl_page_free(&r, &a);
+    return slowed;
+}
+static double l5_blow_slowed(void) { return l5_slowed("The stiff spring explodes"); }
+static double l5_honey_slowed(void) { return l5_slowed("Remedy 1: heavy damping"); }
+
 /* Energy at t = 1 over its start, Euler at Δt = 0.00125 on the c = 10 spring. */
 static double l5_grows_fourfold(void) { return 1 + cl_drift_at("spring", STIFF, "euler", 0.00125, 1.0) / 100; }
 static double l5_falls(void) { return cl_drift_at("spring", STIFF, "euler", 0.000625, 1.0); }
@@ -414,6 +427,8 @@ const claim sw_claims_a[] = {
     { L5, "Per step, Euler multiplies this spring's energy by about 1 - cΔt + kΔt²", l5_euler_energy_factor, REL, 1e-12, "ρ² of Euler's map, exactly the formula for m = 1", l5_arith },
     { L5, "that is 1 - 0.05 + 0.25 = {1.2}", l5_arith, ABS, 1e-12, R_MATH, NULL },
     { L5, "that is 1 - 0.05 + 0.25 = {1.2}: the damping", l5_euler_energy_factor, ROUNDED, 0, "ρ² of Euler's one-step map on the damped spring is exactly 1 - cΔt + kΔt² (m = 1)", NULL },
+    { L5, "watch: it is slowed {four} times", l5_blow_slowed, EXACT, 0, "the page's @speed, 1/4", NULL },
+    { L5, "and watch, slowed {sixteen} times", l5_honey_slowed, EXACT, 0, "the page's @speed, 1/16", NULL },
     { L5, "Press space; within {a} second the spring blows up", l5_blow, ATMOST, 0, "\"within a second\": before t = 1", NULL },
     { L5, "critically damped (c = 2√(km))", l5_critical, EXACT, 0, R_MATH, two_hundred },
     { L5, "both its modes now decay at rate {100} per second", l5_crit_rate, REL, 1e-6, "a double eigenvalue: its computed split is about √ε", NULL },

@@ -229,7 +229,10 @@ static void overlap_line(const sw_bench_report *r, const sw_workprec_overlap *ov
             else
                 snprintf(pair, sizeof pair, "%s %c+%c", k ? "," : "", sw_bench_marker(u), sw_bench_marker(o));
             int rest = ov->n - k - 1;
-            snprintf(more, sizeof more, rest ? " +%d more" : "", rest);
+            if (rest)
+                snprintf(more, sizeof more, " +%d more", rest);
+            else
+                more[0] = '\0';
             if (used + (int)strlen(pair) + (int)strlen(more) > width)
                 break;
             used += snprintf(out + used, len - (size_t)used, "%s", pair);

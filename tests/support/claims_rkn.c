@@ -52,11 +52,11 @@ static const struct { SW_RKN_TABLEAU(FIELD) } E = { SW_RKN_TABLEAU(VALUE) };
 
 static double embedded_error(int n)
 {
-    static const double c[6] = { 0, E.C2, E.C3, E.C4, E.C5, 1 };
-    static const double a[6][5] = { { 0 }, { E.A21 }, { E.A31, E.A32 }, { E.A41, E.A42, E.A43 },
+    const double c[6] = { 0, E.C2, E.C3, E.C4, E.C5, 1 };
+    const double a[6][5] = { { 0 }, { E.A21 }, { E.A31, E.A32 }, { E.A41, E.A42, E.A43 },
                                     { E.A51, E.A52, E.A53, E.A54 }, { E.BX1, E.BX2, E.BX3, E.BX4, E.BX5 } };
-    static const double hx[6] = { E.HX1, E.HX2, E.HX3, E.HX4, E.HX5, 0 };
-    static const double hv[6] = { E.HV1, E.HV2, E.HV3, E.HV4, E.HV5, E.BV6 };
+    const double hx[6] = { E.HX1, E.HX2, E.HX3, E.HX4, E.HX5, 0 };
+    const double hv[6] = { E.HV1, E.HV2, E.HV3, E.HV4, E.HV5, E.BV6 };
     double x = 1, v = 0, h = 10.0 / n;
     for (int s = 0; s < n; s++) {
         double acc[6], sx = 0, sv = 0;

@@ -355,8 +355,9 @@ void sw_canvas_line(sw_canvas *c, double x0, double y0, double x1, double y1,
      * than a cell): that point, as the general path below would plot it. */
     double u0 = g.hc + (x0 - c->cx) * g.kx, w0 = g.hr - (y0 - c->cy) * g.ky;
     double u1 = g.hc + (x1 - c->cx) * g.kx, w1 = g.hr - (y1 - c->cy) * g.ky;
-    if (u0 >= 0.0 && u0 < g.w && w0 >= 0.0 && w0 < g.h && (int)u0 == (int)u1 && (int)w0 == (int)w1 &&
-        u1 >= 0.0 && w1 >= 0.0) {
+    /* (both ends checked in range before either is made an int) */
+    if (u0 >= 0.0 && u0 < g.w && w0 >= 0.0 && w0 < g.h && u1 >= 0.0 && u1 < g.w && w1 >= 0.0 && w1 < g.h &&
+        (int)u0 == (int)u1 && (int)w0 == (int)w1) {
         plot(c, &g, (int)u0, (int)w0, glyph, style, 0);
         return;
     }

@@ -161,3 +161,16 @@ SW_CLONES void base_chain_rk4(bench_chain *ch, double *y, double *work, double h
             y[c] += b * sum[c];
     }
 }
+
+/* The largest |a[i] - b[i]| (a NaN difference always replaces the
+ * maximum). */
+double bench_max_diff(int n, const double *a, const double *b)
+{
+    double m = 0;
+    for (int i = 0; i < n; i++) {
+        double d = fabs(a[i] - b[i]);
+        if (!(d <= m))
+            m = d;
+    }
+    return m;
+}

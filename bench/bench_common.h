@@ -87,4 +87,8 @@ void bench_heavy_views(int quick);
 /* One heavy view alone, for a profiler (bench_frame.c). */
 void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds);
 
+/* The largest |a[i] - b[i]| over n, a NaN difference taken as the largest
+ * (bench_base.c): the error measure of the peer, rkn and stiff tables. */
+double bench_max_diff(int n, const double *a, const double *b);
+
 #endif

@@ -50,17 +50,6 @@ typedef struct candidate {
     int ok;
 } candidate;
 
-static double max_diff(int n, const double *a, const double *b)
-{
-    double m = 0;
-    for (int i = 0; i < n; i++) {
-        double d = fabs(a[i] - b[i]);
-        if (!(d <= m))
-            m = d;
-    }
-    return m;
-}
-
 /* ---- stepwise ------------------------------------------------------------ */
 
 /* One run of m to T (setting: steps, or tolerance), state into pb->y. */
@@ -142,7 +131,7 @@ static int run(problem *pb, const candidate *c, double setting, double *error, d
     else
         rc = gsl_run(pb, c->gsl_type, c->fixed, c->hand, setting, seconds, evals);
 #endif
-    *error = rc == 0 ? max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
+    *error = rc == 0 ? bench_max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
     return rc;
 }
 

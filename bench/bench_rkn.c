@@ -34,17 +34,6 @@ typedef struct rkn_method {
     int ok;
 } rkn_method;
 
-static double max_diff(int n, const double *a, const double *b)
-{
-    double m = 0;
-    for (int i = 0; i < n; i++) {
-        double d = fabs(a[i] - b[i]);
-        if (!(d <= m))
-            m = d;
-    }
-    return m;
-}
-
 /* One run of m to T (setting: steps, or rtol = atol); its error. */
 static int run(rkn_problem *pb, const sw_integrator *m, int fixed, double setting, double *error, double *seconds,
                long *evals)
@@ -64,7 +53,7 @@ static int run(rkn_problem *pb, const sw_integrator *m, int fixed, double settin
     sw_sim_free(&s);
     if (blown)
         return -1;
-    *error = max_diff(pb->dim, pb->y, pb->ref);
+    *error = bench_max_diff(pb->dim, pb->y, pb->ref);
     return 0;
 }
 

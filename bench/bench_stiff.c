@@ -34,17 +34,6 @@ typedef struct stiff_problem {
     sw_system sys;
 } stiff_problem;
 
-static double max_diff(int n, const double *a, const double *b)
-{
-    double m = 0;
-    for (int i = 0; i < n; i++) {
-        double d = fabs(a[i] - b[i]);
-        if (!(d <= m))
-            m = d;
-    }
-    return m;
-}
-
 /* rodas4 (or the reference method) to T at rtol = atol = tol; state into pb->y. */
 static int sw_run(stiff_problem *pb, const char *method, double tol, double *seconds, long *evals)
 {
@@ -151,7 +140,7 @@ static int run(stiff_problem *pb, int lib, double tol, double *error, double *se
     else
         rc = cv_run(pb, pb->dim > 8, tol, seconds, evals);
 #endif
-    *error = rc == 0 ? max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
+    *error = rc == 0 ? bench_max_diff(pb->dim, pb->y, pb->ref) : INFINITY;
     return rc;
 }
 

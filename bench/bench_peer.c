@@ -366,8 +366,8 @@ enum { MAX_CANDIDATES = 14 };
 static int candidates(const problem *pb, candidate *c)
 {
     int k = 0;
-    const char *mine[] = { "rk4", "rk45", "dop853" };
-    for (int i = 0; i < 3; i++) {
+    const char *mine[] = { "rk4", "rk45", "dop853", "rkn" };
+    for (int i = 0; i < (int)(sizeof mine / sizeof *mine); i++) {
         const sw_integrator *m = sw_integrator_find(mine[i]);
         if (m)
             c[k++] = (candidate){ .lib = "stepwise", .name = m->name, .m = m, .fixed = !(m->flags & SW_ADAPTIVE) };

@@ -310,6 +310,44 @@ START_TEST(engine_is_the_tableau)
 }
 END_TEST
 
+/* The two entries of the step are one computation: rkn steps a single
+ * particle (state 4) through a copy of its body with d = 2 fixed, and any
+ * larger state through the general one. Three particles about the same
+ * centre, none acting on another, go through the general entry; each must
+ * end on the very bits (no tolerance) of its own one-particle run, stepped
+ * with the same fixed h (40 steps of 0.05; orbits at e = 0, 0.5, 0.9). */
+START_TEST(one_particle_entry_same_bits)
+{
+    const double e[3] = { 0.0, 0.5, 0.9 }, h = 0.05;
+    sw_particles p;
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(&p, 3, 1.0, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_add_central(&p, 0, 0, 1.0), SW_OK);
+    for (int i = 0; i < 3; i++) {
+        p.y[2 * i] = 1 - e[i];
+        p.y[6 + 2 * i + 1] = sqrt((1 + e[i]) / (1 - e[i]));
+    }
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("rkn"), &p.ode, err, sizeof err), SW_OK);
+    s.rtol = s.atol = 1e300;
+    s.h_next = h;
+    double t = 0;
+    for (int j = 0; j < 40; j++)
+        ck_assert_int_eq(sw_stepper_step(&s, &p.ode, &t, p.y, h), SW_OK);
+    for (int i = 0; i < 3; i++) {
+        double one[4];
+        long evals;
+        rkn_fixed(1, e[i], h, 40, one, &evals);
+        const double many[4] = { p.y[2 * i], p.y[2 * i + 1], p.y[6 + 2 * i], p.y[6 + 2 * i + 1] };
+        ck_assert_msg(memcmp(one, many, sizeof one) == 0, "e = %g: one particle (%.17g, %.17g) but in three (%.17g, %.17g)",
+                      e[i], one[0], one[1], many[0], many[1]);
+    }
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+}
+END_TEST
+
 /* Observed orders against the closed forms, fitted over three step sizes
  * halving, where the errors are far above round-off (1e-14 here) and past
  * the pre-asymptotic range:
@@ -503,6 +541,7 @@ Suite *make_rkn_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, order_conditions);
     tcase_add_test(tc, engine_is_the_tableau);
+    tcase_add_test(tc, one_particle_entry_same_bits);
     tcase_add_test(tc, observed_orders);
     tcase_add_test(tc, tolerance_proportional);
     tcase_add_test(tc, steps_shrink_at_perihelion);

@@ -48,6 +48,7 @@ typedef struct candidate {
     double setting, error, seconds;
     long evals;
     int ok;
+    int refused; /* stepwise: the method cannot step this system (rkn on velocity forces) */
 } candidate;
 
 /* ---- stepwise ------------------------------------------------------------ */
@@ -148,6 +149,14 @@ static void search(problem *pb, candidate *c, double target)
     double e, sec;
     long ev;
     c->ok = 0;
+    if (c->m) {
+        char err[SW_ERRLEN];
+        sw_sim s;
+        c->refused = sw_sim_init(&s, pb->sc, pb->p, c->m, pb->T, err, sizeof err) != SW_OK;
+        if (c->refused)
+            return;
+        sw_sim_free(&s);
+    }
     if (c->fixed) {
         long lo = 0, hi = 8;
         while (hi <= MAX_STEPS && (run(pb, c, (double)hi, &e, &sec, &ev) != 0 || !(e <= target))) {
@@ -437,7 +446,7 @@ void bench_peer(const bench_peer_opts *o)
             for (int i = 0; i < nc; i++) {
                 search(&pb, &c[i], target[e]);
                 if (!c[i].ok) {
-                    printf("  %-9s %-10s %12s\n", c[i].lib, c[i].name, "not reached");
+                    printf("  %-9s %-10s %12s\n", c[i].lib, c[i].name, c[i].refused ? "refused" : "not reached");
                     continue;
                 }
                 char setting[32];

@@ -27,14 +27,26 @@ static uint64_t next(void)
 
 static long checked;
 
-/* Same bits (so -0 and 0 differ) and the same end as strtod. */
+/* Same bits (so -0 and 0 differ) and the same end as strtod, for both
+ * entries; the padded one reads the text from a copy followed, past its
+ * NUL, by seven '9's: bytes there must never change the number. */
 static void same(const char *text)
 {
-    char *e1, *e2;
+    static char padded[600];
+    char *e1, *e2, *e3;
     double a = sw_decimal_parse(text, &e1), b = strtod(text, &e2);
     ck_assert_msg(memcmp(&a, &b, sizeof a) == 0 || (isnan(a) && isnan(b)),
                   "'%s': %.17g, strtod %.17g", text, a, b);
     ck_assert_msg(e1 == e2, "'%s': ends at %td, strtod at %td", text, e1 - text, e2 - text);
+    size_t len = strlen(text);
+    ck_assert_uint_lt(len + 8, sizeof padded);
+    memcpy(padded, text, len + 1);
+    memset(padded + len + 1, '9', 7);
+    double c = sw_decimal_parse_padded(padded, &e3);
+    ck_assert_msg(memcmp(&c, &b, sizeof c) == 0 || (isnan(c) && isnan(b)),
+                  "'%s' (padded): %.17g, strtod %.17g", text, c, b);
+    ck_assert_msg(e3 - padded == e2 - text, "'%s' (padded): ends at %td, strtod at %td", text, e3 - padded,
+                  e2 - text);
     checked++;
 }
 
@@ -151,6 +163,28 @@ START_TEST(edges_and_malformed)
             snprintf(buf, sizeof buf, "%d999999999999999999e%d", m, q);
             same(buf);
         }
+    /* Eight digits at a time meets every boundary: runs of 1-24 digits
+     * with the point at every place (or none), leading zeros or not, and
+     * each way a number can stop (the end, an exponent, a comma, a blank,
+     * a letter, a second point). */
+    static const char *const tails[] = { "", "e5", "E-7", ",", " ", "x", ".", ".5" };
+    for (int len = 1; len <= 24; len++)
+        for (int point = -1; point <= len; point++)
+            for (size_t t = 0; t < sizeof tails / sizeof tails[0]; t++)
+                for (int lead = 0; lead < 2; lead++) {
+                    size_t k = 0;
+                    if (lead)
+                        k += (size_t)snprintf(buf + k, sizeof buf - k, "-000");
+                    for (int i = 0; i < len; i++) {
+                        if (i == point)
+                            buf[k++] = '.';
+                        buf[k++] = (char)('0' + (i == 0 ? 1 + next() % 9 : next() % 10));
+                    }
+                    if (point == len)
+                        buf[k++] = '.';
+                    snprintf(buf + k, sizeof buf - k, "%s", tails[t]);
+                    same(buf);
+                }
     ck_assert(sw_decimal_parse("2.5", NULL) == 2.5); /* end may be NULL, as for strtod */
     ck_assert_int_gt(checked, 10000);
 }

@@ -23,6 +23,7 @@
 #include "plugin/sandbox.h"
 #include "grade/similar.h"
 #include "grade/verdict.h"
+#include "util/decimal.h"
 #include "util/signals.h"
 #include "util/tmpdir.h"
 
@@ -100,6 +101,7 @@ static int grade_start(grade_slot *slot, grade_entry *e)
     slot->start = sw_sandbox_now();
     e->status = SW_VERDICT_ERROR;
     e->failing_step = -1;
+    sw_decimal_init(); /* the trace parser's table, built once here for every worker */
     if (sw_sandbox_spawn(&slot->child, grade_worker, &slot->job, slot->job.lim, -1, err,
                          sizeof err) != SW_OK) {
         snprintf(e->message, sizeof e->message, "%s", err);

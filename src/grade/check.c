@@ -41,6 +41,10 @@ int sw_check_value(double expected, double got, double rtol, double atol,
         return same;
     }
     double diff = fabs(got - expected), tol = atol + rtol * fabs(expected);
+    if (diff == 0) { /* a passing trace's usual cell: no divisions (each quotient below is 0) */
+        *abs_err = *rel_err = *ratio = 0.0;
+        return 0 <= tol;
+    }
     double scale = fmax(fabs(expected), rtol > 0 ? atol / rtol : 0.0);
     *abs_err = diff;
     *rel_err = scale > 0 ? diff / scale : (diff > 0 ? INFINITY : 0.0);

@@ -110,13 +110,14 @@ static int read_line(sw_trace_reader *r, char *err, size_t errlen)
     if (n > 0 && r->buf[n - 1] == '\r')
         n--;
     r->buf[n] = '\0';
+    memset(r->buf + n + 1, 0, 7); /* sw_decimal_parse_padded may read 7 bytes past the end */
     r->len = n;
     return 1;
 }
 
 static int set_cap(sw_trace_reader *r, size_t cap, char *err, size_t errlen)
 {
-    char *b = realloc(r->buf, cap + 1);
+    char *b = realloc(r->buf, cap + 8); /* the line, its NUL, 7 zeros */
     if (!b) {
         snprintf(err, errlen, "%s: out of memory for a line of %zu bytes", r->name, cap);
         return SW_ENOMEM;
@@ -402,7 +403,7 @@ int sw_trace_read_row(sw_trace_reader *r, double *row, char *err, size_t errlen)
                     return tr_fail(r, err, errlen, "empty cell in column '%s'", name);
                 }
                 char *end;
-                double v = sw_decimal_parse(cell, &end);
+                double v = sw_decimal_parse_padded(cell, &end);
                 for (p = end; *p == ' ' || *p == '\t'; p++)
                     ;
                 if ((*p && *p != ',') || end == cell) {

@@ -12,4 +12,14 @@
  * halfway point to decide, is handed to strtod. */
 double sw_decimal_parse(const char *s, char **end);
 
+/* The same, eight digits at a time: s's terminating NUL must be followed
+ * by at least 7 more readable, initialised bytes (the trace reader's line
+ * buffer keeps them zero), because a test of eight bytes may start at any
+ * digit. */
+double sw_decimal_parse_padded(const char *s, char **end);
+
+/* Builds the table of powers of ten now rather than at first use: a parent
+ * about to fork many readers (`stepwise grade`) builds it once for all. */
+void sw_decimal_init(void);
+
 #endif

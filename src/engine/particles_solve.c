@@ -277,17 +277,31 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r)
         return;
     for (int i = 0; i < p->n; i++)
         apply_block(s->rhs, i, i, c, s->diag + 8 * i, r);
+    double *restrict out = s->rhs;
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
         int ea = s->pa[j], eb = s->pb[j];
-        if (ea >= 0)
-            apply_block(s->rhs, ea, ea, c, kx, r);
         if (ea >= 0 && eb >= 0) {
-            apply_block(s->rhs, ea, eb, -c, kx, r);
-            apply_block(s->rhs, eb, ea, -c, kx, r);
+            /* the four blocks of apply_block below, each product K·r_a,
+             * K·r_b made once (the same operations, in the same order) */
+            double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
+            double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
+            double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
+            double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
+            out[2 * ea] += c * kax;
+            out[2 * ea + 1] += c * kay;
+            out[2 * ea] += -c * kbx;
+            out[2 * ea + 1] += -c * kby;
+            out[2 * eb] += -c * kax;
+            out[2 * eb + 1] += -c * kay;
+            out[2 * eb] += c * kbx;
+            out[2 * eb + 1] += c * kby;
+            continue;
         }
+        if (ea >= 0)
+            apply_block(out, ea, ea, c, kx, r);
         if (eb >= 0)
-            apply_block(s->rhs, eb, eb, c, kx, r);
+            apply_block(out, eb, eb, c, kx, r);
     }
 }
 

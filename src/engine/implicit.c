@@ -10,7 +10,7 @@
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
-/* Euclidean norm: the sum of squares in two interleaved partial sums (the
+/* Euclidean norm: the sum of squares in four interleaved partial sums (the
  * serial sum's chain of additions was the cost; the norm only steers
  * Newton's decisions, never its iterates) where it neither overflows nor
  * loses digits to underflow (one pass, no division), else scaled by the
@@ -27,15 +27,17 @@ static double norm2_scaled(int n, const double *v)
 
 static double sum_squares(int n, const double *v)
 {
-    double s0 = 0, s1 = 0;
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
     int i = 0;
-    for (; i + 2 <= n; i += 2) {
+    for (; i + 4 <= n; i += 4) {
         s0 += v[i] * v[i];
         s1 += v[i + 1] * v[i + 1];
+        s2 += v[i + 2] * v[i + 2];
+        s3 += v[i + 3] * v[i + 3];
     }
-    if (i < n)
+    for (; i < n; i++)
         s0 += v[i] * v[i];
-    return s0 + s1;
+    return (s0 + s2) + (s1 + s3);
 }
 
 static double norm2_of(int n, const double *v, double sq)
@@ -45,23 +47,31 @@ static double norm2_of(int n, const double *v, double sq)
 
 static double norm2(int n, const double *v) { return norm2_of(n, v, sum_squares(n, v)); }
 
-/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂, in
- * one pass. */
+/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂ as
+ * norm2 takes it, in one pass. */
 static double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
 {
-    double s0 = 0, s1 = 0;
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
     int i = 0;
-    for (; i + 2 <= n; i += 2) {
-        g[i] = h * g[i] - (d[i] + lambda * delta[i]);
-        g[i + 1] = h * g[i + 1] - (d[i + 1] + lambda * delta[i + 1]);
-        s0 += g[i] * g[i];
-        s1 += g[i + 1] * g[i + 1];
+    for (; i + 4 <= n; i += 4) {
+        double g0 = h * g[i] - (d[i] + lambda * delta[i]);
+        double g1 = h * g[i + 1] - (d[i + 1] + lambda * delta[i + 1]);
+        double g2 = h * g[i + 2] - (d[i + 2] + lambda * delta[i + 2]);
+        double g3 = h * g[i + 3] - (d[i + 3] + lambda * delta[i + 3]);
+        g[i] = g0;
+        g[i + 1] = g1;
+        g[i + 2] = g2;
+        g[i + 3] = g3;
+        s0 += g0 * g0;
+        s1 += g1 * g1;
+        s2 += g2 * g2;
+        s3 += g3 * g3;
     }
-    if (i < n) {
+    for (; i < n; i++) {
         g[i] = h * g[i] - (d[i] + lambda * delta[i]);
         s0 += g[i] * g[i];
     }
-    return norm2_of(n, g, s0 + s1);
+    return norm2_of(n, g, (s0 + s2) + (s1 + s3));
 }
 
 /* d += λ·δ; returns |δ|∞ (NaN when any component is, as sw_norm_inf) and

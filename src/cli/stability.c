@@ -94,11 +94,7 @@ static double report_cost(const sw_scene *sc, const double *p, const sw_integrat
 {
     sw_stability_config cfg;
     sw_stability_config_default(&cfg);
-    double cost = 0;
-    for (int i = 0; i < nmethods; i++)
-        if (!(methods[i]->flags & SW_ADAPTIVE))
-            cost += sw_stability_cost(sc, p, methods[i], &cfg);
-    return cost;
+    return sw_stability_cost_sum(sc, p, methods, nmethods, &cfg);
 }
 
 static int within_budget(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
@@ -192,15 +188,17 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
 }
 
 /* One scene of --all at its defaults: its report, or a line saying it is
- * over the budget. 1 when report() found a disagreement. */
-static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int nmethods, int markdown)
+ * over the budget. cost: report_cost's, when the caller has it, else NAN.
+ * 1 when report() found a disagreement. */
+static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int nmethods, int markdown,
+                   double cost)
 {
-    double p[SW_MAX_PARAMS], cost;
+    double p[SW_MAX_PARAMS];
     char why[SW_ERRLEN];
     sw_scene_fill(sc, NULL, p);
     /* (theory only is cheap: no probe runs) */
     if (sw_stability_measurable(sc, p, why, sizeof why) &&
-        (cost = report_cost(sc, p, methods, nmethods)) > SW_WORK_REPORT) {
+        (cost = isnan(cost) ? report_cost(sc, p, methods, nmethods) : cost) > SW_WORK_REPORT) {
         int has_n = sw_scene_param_index(sc, "n") >= 0;
         printf(markdown ? "\n### %s\n\nNot measured: it would cost about %.2g state evaluations, "
                           "over the budget of %.0e%s%s%s.\n"
@@ -226,7 +224,7 @@ static int all_scenes(const sw_integrator *const *methods, int nmethods, int mar
     int code[64];
     if (jobs <= 1 || n > 64) {
         for (int i = 0; i < n; i++)
-            status |= all_one(sw_scene_at(i), methods, nmethods, markdown);
+            status |= all_one(sw_scene_at(i), methods, nmethods, markdown, NAN);
         return status;
     }
     /* the costliest first (longest-first scheduling): the last to finish
@@ -261,7 +259,7 @@ static int all_scenes(const sw_integrator *const *methods, int nmethods, int mar
             if (pid[i] == 0) {
                 prctl(PR_SET_PDEATHSIG, SIGKILL); /* never outlives the report */
                 int rc = dup2(fileno(out[i]), STDOUT_FILENO) < 0 ? 2
-                         : all_one(sw_scene_at(i), methods, nmethods, markdown);
+                         : all_one(sw_scene_at(i), methods, nmethods, markdown, cost[i]);
                 _exit(fflush(stdout) == 0 ? rc : 2);
             }
             if (pid[i] < 0)

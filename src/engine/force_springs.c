@@ -75,25 +75,34 @@ static long springs_pairs(const sw_particles *p, const sw_force *fo, int *reach)
  * blocks are then those of a zero-length spring, -k I and 0. */
 static void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
 {
-    double d[2], dv[2];
-    differences(sp, x, v, d, dv);
-    double r = length(d);
+    /* differences() and length() written out on scalars: through their
+     * arrays the compiler kept d and dv on the stack (the same operations) */
+    int a = sp->a, b = sp->b;
+    double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
+    double d0 = x[2 * a] - bx, d1 = x[2 * a + 1] - by;
+    double dv0 = v[2 * a] - (b >= 0 ? v[2 * b] : 0.0), dv1 = v[2 * a + 1] - (b >= 0 ? v[2 * b + 1] : 0.0);
+    double r2 = d0 * d0 + d1 * d1;
+    double r = r2 >= 1e-290 ? sqrt(r2) : hypot(d0, d1);
     if (!(r > 0)) {
         kx[0] = kx[3] = -sp->k;
         kx[1] = kx[2] = 0;
         kv[0] = kv[1] = kv[2] = kv[3] = 0;
         return;
     }
-    double u[2] = { d[0] / r, d[1] / r };
-    double along = dv[0] * u[0] + dv[1] * u[1];
-    double pdv[2] = { dv[0] - along * u[0], dv[1] - along * u[1] };
-    double s = 1.0 - sp->rest / r, cr = sp->c / r;
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++) {
-            double uu = u[i] * u[j], proj = (i == j) - uu;
-            kx[2 * i + j] = -sp->k * (uu + s * proj) - cr * (u[i] * pdv[j] + along * proj);
-            kv[2 * i + j] = -sp->c * uu;
-        }
+    double u0 = d0 / r, u1 = d1 / r;
+    double along = dv0 * u0 + dv1 * u1;
+    double p0 = dv0 - along * u0, p1 = dv1 - along * u1;
+    double s = 1.0 - sp->rest / r, cr = sp->c / r, k = sp->k, c = sp->c;
+    double u00 = u0 * u0, u01 = u0 * u1, u10 = u1 * u0, u11 = u1 * u1;
+    double q00 = 1 - u00, q01 = 0 - u01, q10 = 0 - u10, q11 = 1 - u11; /* P = I - u uᵀ */
+    kx[0] = -k * (u00 + s * q00) - cr * (u0 * p0 + along * q00);
+    kx[1] = -k * (u01 + s * q01) - cr * (u0 * p1 + along * q01);
+    kx[2] = -k * (u10 + s * q10) - cr * (u1 * p0 + along * q10);
+    kx[3] = -k * (u11 + s * q11) - cr * (u1 * p1 + along * q11);
+    kv[0] = -c * u00;
+    kv[1] = -c * u01;
+    kv[2] = -c * u10;
+    kv[3] = -c * u11;
 }
 
 static void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,

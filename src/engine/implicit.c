@@ -10,22 +10,99 @@
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
-/* Euclidean norm: the plain sum of squares where it neither overflows nor
+/* Euclidean norm: the sum of squares in four interleaved partial sums (the
+ * serial sum's chain of additions was the cost; the norm only steers
+ * Newton's decisions, never its iterates) where it neither overflows nor
  * loses digits to underflow (one pass, no division), else scaled by the
  * largest component. */
-static double norm2(int n, const double *v)
+static double norm2_scaled(int n, const double *v)
 {
-    double sq = 0;
-    for (int i = 0; i < n; i++)
-        sq += v[i] * v[i];
-    if (sq > 1e-280 && sq < 1e280)
-        return sqrt(sq);
     double m = sw_norm_inf(n, v), s = 0;
     if (!(m > 0) || !isfinite(m))
         return m;
     for (int i = 0; i < n; i++)
         s += (v[i] / m) * (v[i] / m);
     return m * sqrt(s);
+}
+
+static double sum_squares(int n, const double *v)
+{
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        s0 += v[i] * v[i];
+        s1 += v[i + 1] * v[i + 1];
+        s2 += v[i + 2] * v[i + 2];
+        s3 += v[i + 3] * v[i + 3];
+    }
+    for (; i < n; i++)
+        s0 += v[i] * v[i];
+    return (s0 + s2) + (s1 + s3);
+}
+
+static double norm2_of(int n, const double *v, double sq)
+{
+    return sq > 1e-280 && sq < 1e280 ? sqrt(sq) : norm2_scaled(n, v);
+}
+
+static double norm2(int n, const double *v) { return norm2_of(n, v, sum_squares(n, v)); }
+
+/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂ as
+ * norm2 takes it, in one pass. */
+static double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+{
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        double g0 = h * g[i] - (d[i] + lambda * delta[i]);
+        double g1 = h * g[i + 1] - (d[i + 1] + lambda * delta[i + 1]);
+        double g2 = h * g[i + 2] - (d[i + 2] + lambda * delta[i + 2]);
+        double g3 = h * g[i + 3] - (d[i + 3] + lambda * delta[i + 3]);
+        g[i] = g0;
+        g[i + 1] = g1;
+        g[i + 2] = g2;
+        g[i + 3] = g3;
+        s0 += g0 * g0;
+        s1 += g1 * g1;
+        s2 += g2 * g2;
+        s3 += g3 * g3;
+    }
+    for (; i < n; i++) {
+        g[i] = h * g[i] - (d[i] + lambda * delta[i]);
+        s0 += g[i] * g[i];
+    }
+    return norm2_of(n, g, (s0 + s2) + (s1 + s3));
+}
+
+/* d += λ·δ; returns |δ|∞ (NaN when any component is, as sw_norm_inf) and
+ * sets *size = |y + d|∞ (NaN components skipped, as fmax skips them). The
+ * maxima in two interleaved halves, without branches: a maximum is the
+ * same whatever the order it is taken in. */
+static double advance(int n, double *d, double lambda, const double *delta, const double *y, double *size)
+{
+    double m0 = 0, m1 = 0, s0 = 0, s1 = 0;
+    int nan = 0, i = 0;
+    for (; i + 2 <= n; i += 2) {
+        double a0 = fabs(delta[i]), a1 = fabs(delta[i + 1]);
+        nan |= (a0 != a0) | (a1 != a1);
+        m0 = a0 > m0 ? a0 : m0;
+        m1 = a1 > m1 ? a1 : m1;
+        d[i] = d[i] + lambda * delta[i];
+        d[i + 1] = d[i + 1] + lambda * delta[i + 1];
+        double b0 = fabs(y[i] + d[i]), b1 = fabs(y[i + 1] + d[i + 1]);
+        s0 = b0 > s0 ? b0 : s0;
+        s1 = b1 > s1 ? b1 : s1;
+    }
+    for (; i < n; i++) {
+        double a = fabs(delta[i]);
+        nan |= a != a;
+        m0 = a > m0 ? a : m0;
+        d[i] = d[i] + lambda * delta[i];
+        double b = fabs(y[i] + d[i]);
+        s0 = b > s0 ? b : s0;
+    }
+    *size = s0 > s1 ? s0 : s1;
+    return nan ? NAN : m0 > m1 ? m0 : m1;
 }
 
 /* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
@@ -88,24 +165,13 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
             for (int i = 0; i < n; i++)
                 ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
             sw_ode_eval(ode, te, ym, g);
-            for (int i = 0; i < n; i++)
-                g[i] = h * g[i] - (d[i] + lambda * delta[i]);
-            gnew = norm2(n, g);
+            gnew = residual(n, g, h, d, lambda, delta);
             if (gnew <= (1.0 - 1e-4 * lambda) * gnorm || gnew == 0)
                 break;
             lambda *= 0.5;
         }
         /* step = λ·|δ|∞, d += λδ and size = |y + d|∞, in one pass */
-        double dmax = 0, size = 0;
-        for (int i = 0; i < n; i++) {
-            double a = fabs(delta[i]);
-            if (a > dmax || a != a)
-                dmax = a; /* NaN stays, as in sw_norm_inf */
-            d[i] = d[i] + lambda * delta[i];
-            double b = fabs(y[i] + d[i]);
-            if (b > size)
-                size = b; /* NaN skipped, as fmax skips it */
-        }
+        double size, dmax = advance(n, d, lambda, delta, y, &size);
         double step = lambda * dmax;
         int kept = yj && !fresh;
         /* With a kept J the iteration converges linearly, at the rate θ of

@@ -157,6 +157,22 @@ int sw_band_factor(sw_band *b)
                 cc[0] = tmp;
             }
         double inv = 1.0 / col[0];
+        if (km == 3) { /* a chain's band written out, as in sw_band_solve */
+            double l1 = col[1] * inv, l2 = col[2] * inv, l3 = col[3] * inv;
+            col[1] = l1;
+            col[2] = l2;
+            col[3] = l3;
+            for (int c = j + 1; c <= ju; c++) {
+                double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c;
+                double u = cc[0];
+                if (u != 0) {
+                    cc[1] -= l1 * u;
+                    cc[2] -= l2 * u;
+                    cc[3] -= l3 * u;
+                }
+            }
+            continue;
+        }
         for (int t = 1; t <= km; t++)
             col[t] *= inv;
         for (int c = j + 1; c <= ju; c++) {
@@ -170,10 +186,61 @@ int sw_band_factor(sw_band *b)
     return 0;
 }
 
+/* A chain's band (kl = 3) forward, from row 0 while no row was
+ * interchanged: the rows still being updated ride in registers (through
+ * memory, each update waited for the store of the last). Every x_i gets
+ * the same updates in the same order as in sw_band_solve's loop. Returns
+ * the row where that loop takes over (an interchange, or the last rows). */
+static int forward_chain(const sw_band *b, double *x)
+{
+    int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = 0;
+    if (n < 4)
+        return 0;
+    double q0 = x[0], q1 = x[1], q2 = x[2]; /* x_j, x_j+1, x_j+2 as updated so far */
+    for (; j < n - 3 && b->piv[j] == j; j++) {
+        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+        double xj = q0;
+        x[j] = xj;
+        q0 = q1 - col[1] * xj;
+        q1 = q2 - col[2] * xj;
+        q2 = x[j + 3] - col[3] * xj;
+    }
+    x[j] = q0;
+    x[j + 1] = q1;
+    x[j + 2] = q2;
+    return j;
+}
+
+/* The back substitution on a band whose U has three super-diagonals (no
+ * interchange widened it), from the last row down while x_j is finite, the
+ * same way: the same operations in the same order. Returns the row where
+ * sw_band_solve's loop takes over (-1: done). */
+static int back_chain(const sw_band *b, double *x)
+{
+    int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = n - 1;
+    if (n < 4)
+        return j;
+    double p0 = x[j], p1 = x[j - 1], p2 = x[j - 2]; /* x_j, x_j-1, x_j-2 as updated so far */
+    for (; j >= 3; j--) {
+        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+        double xj = p0 / col[0];
+        if (!isfinite(xj))
+            break;
+        x[j] = xj;
+        p0 = p1 - col[-1] * xj;
+        p1 = p2 - col[-2] * xj;
+        p2 = x[j - 3] - col[-3] * xj;
+    }
+    x[j] = p0;
+    x[j - 1] = p1;
+    x[j - 2] = p2;
+    return j;
+}
+
 void sw_band_solve(const sw_band *b, double *x)
 {
     int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld;
-    for (int j = 0; j < n - 1; j++) {
+    for (int j = kl == 3 ? forward_chain(b, x) : 0; j < n - 1; j++) {
         const double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
         int lm = imin(kl, n - 1 - j), l = b->piv[j];
         if (l != j) {
@@ -182,31 +249,19 @@ void sw_band_solve(const sw_band *b, double *x)
             x[j] = tmp;
         }
         double xj = x[j];
-        if (lm == 3) { /* a chain's band (kl = 3) written out: the loop's overhead is its cost */
-            x[j + 1] -= col[1] * xj;
-            x[j + 2] -= col[2] * xj;
-            x[j + 3] -= col[3] * xj;
-        } else {
-            for (int t = 1; t <= lm; t++)
-                x[j + t] -= col[t] * xj;
-        }
+        for (int t = 1; t <= lm; t++)
+            x[j + t] -= col[t] * xj;
     }
     /* Above row j - fill, column j of U is zero: there the updates are
      * x_i -= 0·x_j, which change nothing while x_j is finite. */
     int fill = imin(b->fill, kv);
-    for (int j = n - 1; j >= 0; j--) {
+    for (int j = fill == 3 ? back_chain(b, x) : n - 1; j >= 0; j--) {
         const double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[-k]: entry (j - k, j) */
         x[j] /= col[0];
         double xj = x[j];
         int from = imax(0, j - (isfinite(xj) ? fill : kv));
-        if (from == j - 3) {
-            x[j - 3] -= col[-3] * xj;
-            x[j - 2] -= col[-2] * xj;
-            x[j - 1] -= col[-1] * xj;
-        } else {
-            for (int i = from; i < j; i++)
-                x[i] -= col[i - j] * xj;
-        }
+        for (int i = from; i < j; i++)
+            x[i] -= col[i - j] * xj;
     }
 }
 

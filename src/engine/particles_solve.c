@@ -214,18 +214,25 @@ static inline void band_blocks(const sw_band *b, int pi, int pj, double a, const
 {
     double *e = band_entry(b, 2 * pi, 2 * pj); /* (r, c) at e + r - c + c·ld */
     double *e01 = e + b->ld - 1, *e11 = e + b->ld;
+    /* four distinct entries, loaded once and stored once (through the
+     * pointers, each second update waited for the first one's store) */
+    double v00 = e[0], v01 = *e01, v10 = e[1], v11 = *e11;
     if (a != 0) {
-        e[0] += a * kx[0];
-        *e01 += a * kx[1];
-        e[1] += a * kx[2];
-        *e11 += a * kx[3];
+        v00 += a * kx[0];
+        v01 += a * kx[1];
+        v10 += a * kx[2];
+        v11 += a * kx[3];
     }
     if (bv != 0) {
-        e[0] += bv * kv[0];
-        *e01 += bv * kv[1];
-        e[1] += bv * kv[2];
-        *e11 += bv * kv[3];
+        v00 += bv * kv[0];
+        v01 += bv * kv[1];
+        v10 += bv * kv[2];
+        v11 += bv * kv[3];
     }
+    e[0] = v00;
+    *e01 = v01;
+    e[1] = v10;
+    *e11 = v11;
 }
 
 /* out += sc·K·w for one block: the product Fx·r_x without forming Fx. */
@@ -277,17 +284,29 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r)
         return;
     for (int i = 0; i < p->n; i++)
         apply_block(s->rhs, i, i, c, s->diag + 8 * i, r);
+    double *restrict out = s->rhs;
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
         int ea = s->pa[j], eb = s->pb[j];
-        if (ea >= 0)
-            apply_block(s->rhs, ea, ea, c, kx, r);
         if (ea >= 0 && eb >= 0) {
-            apply_block(s->rhs, ea, eb, -c, kx, r);
-            apply_block(s->rhs, eb, ea, -c, kx, r);
+            /* the four blocks of apply_block below, each product K·r_a,
+             * K·r_b made once (the same operations, in the same order) */
+            double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
+            double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
+            double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
+            double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
+            double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
+            out[2 * ea] = ax + -c * kbx;
+            out[2 * ea + 1] = ay + -c * kby;
+            double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
+            out[2 * eb] = bx + c * kbx;
+            out[2 * eb + 1] = by + c * kby;
+            continue;
         }
+        if (ea >= 0)
+            apply_block(out, ea, ea, c, kx, r);
         if (eb >= 0)
-            apply_block(s->rhs, eb, eb, c, kx, r);
+            apply_block(out, eb, eb, c, kx, r);
     }
 }
 

@@ -227,31 +227,56 @@ const char *sw_stability_verdict_text(int verdict)
     }
 }
 
-double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
-                         const sw_stability_config *c)
+/* One method's share: the reference run's cost `ref` (the same for every
+ * method) plus the probes'. */
+static double method_cost(const sw_scene *sc, sw_truth *tr, const sw_integrator *m, double w, double duration,
+                          double ref, const sw_stability_config *c)
+{
+    double cost = 0;
+    cost += ref;
+    double solve, dim = sw_truth_eval_work(&tr->sys, &solve);
+    double evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
+    if (m->flags & SW_IMPLICIT) /* a solve beyond what an evaluation costs (a wide band) */
+        evals += 3 * fmax(0, solve - dim) / dim;
+    double lo = w > 0 && isfinite(w) ? c->low / w : c->low * sc->dt;
+    double near = w > 0 && isfinite(w) ? 1.0 / w : sc->dt;
+    double steps_lo = fmin((double)c->max_steps, duration / fmax(lo, SW_DT_MIN));
+    double steps_near = fmin((double)c->max_steps, duration / near);
+    cost += 2 * dim * evals * (steps_lo + 25 * steps_near);
+    return cost;
+}
+
+/* skip_adaptive 0: every method counted (sw_stability_cost's one). */
+static double cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
+                       int skip_adaptive, const sw_stability_config *c)
 {
     char err[SW_ERRLEN];
     int rc;
     double w = start_stiffness(sc, p, err, sizeof err, &rc);
     if (rc != SW_OK)
         return 0;
-    double duration = probe_time(sc, w, c), cost = 0;
+    double duration = probe_time(sc, w, c), total = 0;
     sw_truth tr;
-    if (sw_truth_init(&tr, sc, p, err, sizeof err) == SW_OK) {
-        cost += sw_truth_reference_cost(&tr, duration);
-        sw_system *sys = &tr.sys;
-        double solve, dim = sw_truth_eval_work(sys, &solve);
-        double evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
-        if (m->flags & SW_IMPLICIT) /* a solve beyond what an evaluation costs (a wide band) */
-            evals += 3 * fmax(0, solve - dim) / dim;
-        double lo = w > 0 && isfinite(w) ? c->low / w : c->low * sc->dt;
-        double near = w > 0 && isfinite(w) ? 1.0 / w : sc->dt;
-        double steps_lo = fmin((double)c->max_steps, duration / fmax(lo, SW_DT_MIN));
-        double steps_near = fmin((double)c->max_steps, duration / near);
-        cost += 2 * dim * evals * (steps_lo + 25 * steps_near);
-        sw_truth_free(&tr);
-    }
-    return cost;
+    if (sw_truth_init(&tr, sc, p, err, sizeof err) != SW_OK)
+        return 0;
+    double ref = sw_truth_reference_cost(&tr, duration);
+    for (int i = 0; i < n; i++)
+        if (!skip_adaptive || !(methods[i]->flags & SW_ADAPTIVE))
+            total += method_cost(sc, &tr, methods[i], w, duration, ref, c);
+    sw_truth_free(&tr);
+    return total;
+}
+
+double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
+                         const sw_stability_config *c)
+{
+    return cost_sum(sc, p, &m, 1, 0, c);
+}
+
+double sw_stability_cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
+                             const sw_stability_config *c)
+{
+    return cost_sum(sc, p, methods, n, 1, c);
 }
 
 static int stable(int verdict) { return verdict == SW_PROBE_STABLE || verdict == SW_PROBE_DECAYED; }

@@ -106,6 +106,12 @@ int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integra
  * the limit. An estimate, for refusing before starting. */
 double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
                          const sw_stability_config *c);
+/* The sum of sw_stability_cost over methods[0..n) (adaptive ones left out,
+ * as they have no limit to find), the same number, with the parts that
+ * depend only on the scene (its stiffness, the reference run's pilot)
+ * worked out once instead of once per method. */
+double sw_stability_cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
+                             const sw_stability_config *c);
 
 /* Theory and measurement of m's largest stable step on sc (theory alone
  * where growth cannot be measured). 0, or SW_EINVAL (an adaptive method, a

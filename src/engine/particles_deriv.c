@@ -47,8 +47,9 @@ int swp_model_init(sw_particles *p)
     if (!p->model)
         return SW_ENOMEM;
     p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
+    p->model->shared = malloc(3 * BLOCK * sizeof *p->model->shared);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
-    if (!p->model->scratch || !p->model->first)
+    if (!p->model->scratch || !p->model->shared || !p->model->first)
         return SW_ENOMEM;
     for (int i = 0; i < 5 * BLOCK; i++) /* the padding's d = (1, 1): a length, never tiny */
         p->model->scratch[i] = 1.0;
@@ -86,7 +87,7 @@ void swp_model_free(sw_particles *p)
     struct sw_particles_model *m = p->model;
     if (m) {
         free(m->a), free(m->b), free(m->k), free(m->c), free(m->rest), free(m->ax), free(m->ay);
-        free(m->scratch), free(m->force), free(m->first), free(m->spring), free(m->sign);
+        free(m->scratch), free(m->shared), free(m->force), free(m->first), free(m->spring), free(m->sign);
         free(m);
     }
     p->model = NULL;
@@ -288,6 +289,11 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
     int total = m->npair + m->nanchor;
     for (int j = total; (m->full || !m->uniform) && j < ((total + 3) & ~3); j++) /* the padding: no force */
         m->k[j] = m->c[j] = m->rest[j] = 0.0;
+    for (int j = 0; m->uniform && j < BLOCK; j++) {
+        m->shared[j] = m->k0;
+        m->shared[BLOCK + j] = m->c0;
+        m->shared[2 * BLOCK + j] = m->rest0;
+    }
     build_lists(p->n, m);
     m->small = small;
     m->compiled = 1;
@@ -319,25 +325,19 @@ static inline unsigned long long small_or_nan(double l2)
  * found after the loop (their squares were kept in len2) and redone; the
  * loop flags whether there are any with integer operations on l2's bits,
  * which vectorise (see small_or_nan), so the usual block is not scanned. */
-SW_INLINE void block_forces(int len, const struct sw_particles_model *m, int lo, const double *restrict d,
-                            const double *restrict dv, double *restrict force, double *restrict len2, int damped,
-                            int uniform)
+SW_INLINE void block_forces(int len, const double *restrict k, const double *restrict c, const double *restrict rest,
+                            const double *restrict d, const double *restrict dv, double *restrict force,
+                            double *restrict len2, int damped)
 {
-    /* (uniform: every spring's k, c, rest are m's k0, c0, rest0, the same
-     * numbers as the rows would give) */
-    const double *restrict k = uniform ? NULL : m->k + lo, *restrict c = uniform ? NULL : m->c + lo,
-                           *restrict rest = uniform ? NULL : m->rest + lo;
-    double k0 = m->k0, c0 = m->c0, rest0 = m->rest0;
     unsigned long long flag = 0;
     int len4 = (len + 3) & ~3; /* whole vectors: the padding is computed and never read */
     for (int j = 0; j < len4; j++) {
         double dx = d[2 * j], dy = d[2 * j + 1];
         double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
         double ux = dx / q, uy = dy / q;
-        double kj = uniform ? k0 : k[j], cj = uniform ? c0 : c[j], rj = uniform ? rest0 : rest[j];
-        double mag = kj * (l - rj);
+        double mag = k[j] * (l - rest[j]);
         if (damped)
-            mag += cj * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
+            mag += c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
         len2[j] = l2;
         flag |= small_or_nan(l2);
         force[2 * j] = -mag * ux;
@@ -352,8 +352,7 @@ SW_INLINE void block_forces(int len, const struct sw_particles_model *m, int lo,
             continue;
         }
         double ux = dx / l, uy = dy / l;
-        double kj = uniform ? k0 : k[j], cj = uniform ? c0 : c[j], rj = uniform ? rest0 : rest[j];
-        double mag = kj * (l - rj) + (damped ? cj * (dv[2 * j] * ux + dv[2 * j + 1] * uy) : 0.0);
+        double mag = k[j] * (l - rest[j]) + (damped ? c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy) : 0.0);
         force[2 * j] = -mag * ux;
         force[2 * j + 1] = -mag * uy;
     }
@@ -405,13 +404,13 @@ SW_INLINE void spring_forces(const struct sw_particles_model *m, const double *x
     for (int lo = 0; lo < total; lo += BLOCK) {
         int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
         block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
-        double *force = m->force + 2 * lo;
-        switch (m->damped << 1 | m->uniform) { /* (constant arguments: a loop each) */
-        case 0: block_forces(hi - lo, m, lo, d, dv, force, len2, 0, 0); break;
-        case 1: block_forces(hi - lo, m, lo, d, dv, force, len2, 0, 1); break;
-        case 2: block_forces(hi - lo, m, lo, d, dv, force, len2, 1, 0); break;
-        default: block_forces(hi - lo, m, lo, d, dv, force, len2, 1, 1); break;
-        }
+        /* uniform: every block reads the one block of shared rows */
+        const double *k = m->uniform ? m->shared : m->k + lo, *c = m->uniform ? m->shared + BLOCK : m->c + lo,
+                     *rest = m->uniform ? m->shared + 2 * BLOCK : m->rest + lo;
+        if (m->damped) /* (constant arguments: a loop each) */
+            block_forces(hi - lo, k, c, rest, d, dv, m->force + 2 * lo, len2, 1);
+        else
+            block_forces(hi - lo, k, c, rest, d, dv, m->force + 2 * lo, len2, 0);
     }
 }
 

@@ -31,6 +31,8 @@ struct sw_particles_model {
     double *k, *c, *rest, *ax, *ay;
     int uniform;              /* every spring has these k, c, rest (same bits) */
     double k0, c0, rest0;
+    double *shared;           /* uniform: k0, c0, rest0 repeated, BLOCK each, read by every block (a
+                                 loop over rows vectorises better than one over constants) */
     int full;
     int damped;               /* some spring has c != 0 */
     double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and

@@ -24,8 +24,7 @@ struct sw_particles_model {
      * beads' chain keeps its model to the forces and `first`): ax, ay of
      * the anchored springs alone; a, b of the paired ones only when they
      * do not follow the stride below; k, c, rest only when the springs do
-     * not all share them (uniform). `full`: every row of every spring, for
-     * the small path (particles_small.c), which reads them all. */
+     * not all share them (uniform). */
     int npair, nanchor;
     int *a, *b;
     double *k, *c, *rest, *ax, *ay;
@@ -33,7 +32,8 @@ struct sw_particles_model {
     double k0, c0, rest0;
     double *shared;           /* uniform: k0, c0, rest0 repeated, BLOCK each, read by every block (a
                                  loop over rows vectorises better than one over constants) */
-    int full;
+    int full;                 /* a, b, k, c, rest of every spring written too: the small path
+                                 (particles_small.c) reads them */
     int damped;               /* some spring has c != 0 */
     double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and
                                  |d|²: 5 BLOCK */

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "engine/particles_deriv.h"
+#include "engine/particles_model.h"
 #include "stepwise/stepwise.h"
 #include "stepwise/particles.h"
 #include "stepwise/sim.h"
@@ -283,6 +284,88 @@ START_TEST(regular_chain_matches_plain)
 }
 END_TEST
 
+/* A chain of N beads between two anchors, every spring k = 40, c, rest =
+ * 0.1 (uniform unless vary), joining neighbours in order (reverse: a = j - 1,
+ * b = j instead of a = j, b = j - 1) or in a shuffled order (shuffle). */
+static void layout_chain(sw_particles *p, int N, double c, int reverse, int shuffle, int vary)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(p, N, 1.5, err, sizeof err), SW_OK);
+    sw_spring *s = sw_particles_add_springs(p, N + 1);
+    ck_assert_ptr_nonnull(s);
+    for (int j = 0; j <= N; j++) {
+        int jj = shuffle ? (j * 7) % (N + 1) : j; /* 7 and N + 1 coprime: a permutation */
+        s[j] = (sw_spring){ .a = reverse ? jj - 1 : jj, .b = reverse ? jj : jj - 1, .k = 40, .c = c, .rest = 0.1 };
+        if (jj == 0)
+            s[j].a = 0, s[j].b = -1, s[j].ax = -0.1, s[j].ay = 0.05;
+        if (jj == N)
+            s[j].a = N - 1, s[j].b = -1, s[j].ax = 0.1 * N, s[j].ay = -0.05;
+    }
+    if (vary)
+        s[N / 2].rest = 0.125;
+}
+
+/* The compiled form keeps only what its passes read (particles_model.h):
+ * k, c, rest once when the springs share them, the neighbours of a regular
+ * run found from the stride without writing their lists, ax, ay of the
+ * anchored springs alone. Each layout that changes what is kept, at 300
+ * beads (past the small path), against the plain loop: bit for bit where a
+ * bead sums at most two spring forces before gravity (the orders then
+ * agree, particles_deriv.c), and where the middle bead of `mid` has three
+ * within 4ε·scale, as compare_scene (k = 3 parts: (k - 1)ε). */
+START_TEST(compact_layouts_match_plain)
+{
+    enum { N = 300 };
+    /* c, reverse, shuffle, vary, then: 1 central field, 2 gravity and drag, 3 a third spring at bead N/2;
+     * and what the compiled form should keep: k, c, rest once (uniform), the run's lists unwritten */
+    static const int cases[][7] = { { 0, 0, 0, 0, 0, 1, 1 }, { 1, 0, 0, 0, 2, 1, 1 }, { 1, 1, 0, 0, 2, 1, 1 },
+                                    { 0, 1, 0, 0, 1, 1, 0 }, { 1, 0, 1, 0, 2, 1, 0 }, { 1, 0, 0, 1, 2, 0, 1 },
+                                    { 0, 1, 1, 1, 0, 0, 0 }, { 1, 0, 0, 0, 3, 1, 0 } };
+    unsigned long long seed = 2026;
+    for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+        const int *cs = cases[q];
+        sw_particles p;
+        char err[SW_ERRLEN];
+        layout_chain(&p, N, cs[0] ? 0.75 : 0.0, cs[1], cs[2], cs[3]);
+        if (cs[4] == 1)
+            ck_assert_int_eq(sw_particles_add_central(&p, 3.0, -2.0, 5.0), SW_OK);
+        if (cs[4] == 2) {
+            ck_assert_int_eq(sw_particles_add_gravity(&p, 0.0, -9.81), SW_OK);
+            ck_assert_int_eq(sw_particles_add_drag(&p, 0.2), SW_OK);
+        }
+        if (cs[4] == 3) {
+            sw_spring *extra = sw_particles_add_springs(&p, 1);
+            ck_assert_ptr_nonnull(extra);
+            *extra = (sw_spring){ .a = N / 2, .b = -1, .k = 40, .c = 0.75, .rest = 0.1, .ax = 15, .ay = 2 };
+        }
+        ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+        ck_assert(!swp_deriv_is_small(&p));
+        ck_assert_int_eq(p.model->uniform, cs[5]);
+        ck_assert_int_eq(p.model->skip_run, cs[6]);
+        if (!cs[2] && cs[4] != 3) /* in order: every bead a run but the ends (each has an anchor) */
+            ck_assert_int_eq(p.model->run_hi - p.model->run_lo, N - 2);
+        for (int trial = 0; trial < 4; trial++) {
+            for (int i = 0; i < 4 * N; i++)
+                y[i] = (i < 2 * N ? 0.1 * (i / 2 + 1) * (i % 2 == 0) : 0.0) + 0.03 * scramble(&seed);
+            if (trial == 3)
+                y[2 * 41] = y[2 * 40], y[2 * 41 + 1] = y[2 * 40 + 1]; /* two beads coincide: no force */
+            p.ode.deriv(p.ode.ctx, 0.0, y, got);
+            plain_deriv(&p, y, want, scale);
+            for (int i = 0; i < 4 * N; i++) {
+                int third = cs[4] == 3 && i >= 2 * N && (i - 2 * N) / 2 == N / 2;
+                if (third)
+                    ck_assert_msg(fabs(got[i] - want[i]) <= 4 * DBL_EPSILON * scale[i], "case %zu component %d", q, i);
+                else
+                    ck_assert_msg(memcmp(&got[i], &want[i], sizeof got[i]) == 0,
+                                  "case %zu trial %d component %d: compiled %.17g, plain %.17g", q, trial, i, got[i],
+                                  want[i]);
+            }
+        }
+        sw_particles_free(&p);
+    }
+}
+END_TEST
+
 /* Whether swp_deriv (the small path where compiling picked one) and the
  * generic passes give the same bits at y; counts the systems that took the
  * small path in *small. */
@@ -383,6 +466,7 @@ Suite *make_derivative_suite(void)
     tcase_add_test(tc, finish_names_bad_spring);
     tcase_add_test(tc, later_force_and_zero_length);
     tcase_add_test(tc, regular_chain_matches_plain);
+    tcase_add_test(tc, compact_layouts_match_plain);
     tcase_add_test(tc, small_path_matches_generic);
     suite_add_tcase(s, tc);
     return s;

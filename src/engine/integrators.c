@@ -22,7 +22,7 @@ static const sw_integrator builtins[] = {
       "y1 = y0 + h f(y0 + h/2 f(y0))" },
     { "heun", "Heun / explicit trapezoid (RK2)", 2, 2, SW_EXPLICIT, 0.0, 3, sw_step_heun,
       "y1 = y0 + h/2 (f(y0) + f(y0 + h f(y0)))" },
-    { "rk4", "classical Runge-Kutta", 4, 4, SW_EXPLICIT, 2.0 * 1.4142135623730951, 5, sw_step_rk4,
+    { "rk4", "classical Runge-Kutta", 4, 4, SW_EXPLICIT, 2.0 * 1.4142135623730951, 3, sw_step_rk4,
       "y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)" },
     { "verlet", "velocity Verlet (leapfrog)", 2, 1, SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
       2.0, 2, sw_step_verlet, "v+ = v0 + h/2 a0; x1 = x0 + h v+; v1 = v+ + h/2 a1" },

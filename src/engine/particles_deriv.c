@@ -47,8 +47,9 @@ int swp_model_init(sw_particles *p)
     if (!p->model)
         return SW_ENOMEM;
     p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
+    p->model->shared = malloc(3 * BLOCK * sizeof *p->model->shared);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
-    if (!p->model->scratch || !p->model->first)
+    if (!p->model->scratch || !p->model->shared || !p->model->first)
         return SW_ENOMEM;
     for (int i = 0; i < 5 * BLOCK; i++) /* the padding's d = (1, 1): a length, never tiny */
         p->model->scratch[i] = 1.0;
@@ -86,7 +87,7 @@ void swp_model_free(sw_particles *p)
     struct sw_particles_model *m = p->model;
     if (m) {
         free(m->a), free(m->b), free(m->k), free(m->c), free(m->rest), free(m->ax), free(m->ay);
-        free(m->scratch), free(m->force), free(m->first), free(m->spring), free(m->sign);
+        free(m->scratch), free(m->shared), free(m->force), free(m->first), free(m->spring), free(m->sign);
         free(m);
     }
     p->model = NULL;
@@ -100,29 +101,80 @@ void swp_model_touch(sw_particles *p)
     }
 }
 
-/* Copy spring sp into slot j of the flat arrays. */
-static void put_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
+/* Visit the description's springs in the compiled order: paired ones first,
+ * then anchored ones, each in the order added, as slots 0, 1, ...; springs
+ * that name a particle that does not exist are left out, the first one
+ * reported in err. SW_OK or SW_EINVAL. */
+typedef void spring_visit(struct sw_particles_model *m, int j, const sw_spring *sp);
+
+static int each_spring(const sw_particles *p, spring_visit *visit, char *err, size_t errlen)
 {
-    m->a[j] = 2 * sp->a;
-    m->b[j] = 2 * sp->b;
-    m->k[j] = sp->k;
-    m->c[j] = sp->c;
-    m->rest[j] = sp->rest;
-    m->ax[j] = sp->ax;
-    m->ay[j] = sp->ay;
-    m->damped |= sp->c != 0;
+    int rc = SW_OK, slot = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int f = 0; f < p->nforces; f++) {
+            const sw_force *fo = &p->forces[f];
+            for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
+                const sw_spring *sp = &fo->springs[j];
+                if (sp->a < 0 || sp->a >= p->n || sp->b < -1 || sp->b >= p->n) {
+                    if (rc == SW_OK && err)
+                        snprintf(err, errlen, "spring %d joins particles %d and %d; a system of %d "
+                                 "particles allows 0 to %d (b = -1: a fixed anchor)",
+                                 j, sp->a, sp->b, p->n, p->n - 1);
+                    rc = SW_EINVAL;
+                } else if ((sp->b >= 0) == (pass == 0)) {
+                    visit(p->model, slot++, sp);
+                }
+            }
+        }
+    return rc;
 }
 
-/* The regular layouts (see the struct): the paired springs' stride, and
- * the longest run of degree-2 particles whose springs lie at fixed
- * distances with fixed signs. */
-static void find_regular(int n, struct sw_particles_model *m)
+/* The survey, before any row is written: counts, damping, whether the
+ * springs share k, c and rest, and whether the paired ones advance by one
+ * particle a spring (the stride). */
+static void survey_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
 {
-    m->stride = m->npair > 0;
-    for (int j = 1; j < m->npair && m->stride; j++)
-        m->stride = m->a[j] == m->a[0] + 2 * j && m->b[j] == m->b[0] + 2 * j;
-    m->a0 = m->npair > 0 ? m->a[0] : 0;
-    m->b0 = m->npair > 0 ? m->b[0] : 0;
+    double kcr[3] = { sp->k, sp->c, sp->rest }, kcr0[3] = { m->k0, m->c0, m->rest0 };
+    if (j == 0) {
+        m->k0 = sp->k, m->c0 = sp->c, m->rest0 = sp->rest;
+        m->uniform = 1;
+    } else if (memcmp(kcr, kcr0, sizeof kcr) != 0) {
+        m->uniform = 0;
+    }
+    m->damped |= sp->c != 0;
+    if (sp->b < 0) {
+        m->nanchor++;
+        return;
+    }
+    if (j == 0)
+        m->a0 = 2 * sp->a, m->b0 = 2 * sp->b;
+    m->stride &= 2 * sp->a == m->a0 + 2 * j && 2 * sp->b == m->b0 + 2 * j;
+    m->npair++;
+}
+
+/* Copy spring sp into slot j of the rows the passes read (see the struct). */
+static void put_spring(struct sw_particles_model *m, int j, const sw_spring *sp)
+{
+    int anchored = sp->b < 0;
+    if (m->full || !m->stride || anchored) {
+        m->a[j] = 2 * sp->a;
+        m->b[j] = 2 * sp->b;
+    }
+    if (m->full || !m->uniform) {
+        m->k[j] = sp->k;
+        m->c[j] = sp->c;
+        m->rest[j] = sp->rest;
+    }
+    if (anchored) {
+        m->ax[j] = sp->ax;
+        m->ay[j] = sp->ay;
+    }
+}
+
+/* The longest run of degree-2 particles whose springs lie at fixed
+ * distances with fixed signs, searched in the lists. */
+static void find_run(int n, struct sw_particles_model *m)
+{
     m->run_lo = m->run_hi = 0;
     for (int i = 0; m->degree == 2 && i < n;) {
         int c0 = m->spring[2 * i] - 2 * i, c1 = m->spring[2 * i + 1] - 2 * i, e = i + 1;
@@ -141,6 +193,63 @@ static void find_regular(int n, struct sw_particles_model *m)
     }
 }
 
+/* The run of a stride layout where every particle has two springs, known
+ * before the lists: particle i is end a of paired spring (2i - a0)/2 and
+ * end b of (2i - b0)/2, both paired when i lies in [max(a0, b0)/2,
+ * min(a0, b0)/2 + npair); such a particle has no anchored spring (it would
+ * have three), so its list is those two in spring order. 1 when found. */
+static int stride_run(struct sw_particles_model *m)
+{
+    int lo = (m->a0 > m->b0 ? m->a0 : m->b0) / 2, hi = (m->a0 < m->b0 ? m->a0 : m->b0) / 2 + m->npair;
+    if (!m->stride || m->degree != 2 || m->a0 == m->b0 || hi <= lo)
+        return 0;
+    int a_first = m->a0 > m->b0; /* end a's spring, i - a0/2, comes first */
+    m->run_lo = lo;
+    m->run_hi = hi;
+    m->run_c[0] = a_first ? -m->a0 : -m->b0;
+    m->run_c[1] = a_first ? -m->b0 : -m->a0;
+    m->run_s[0] = a_first ? 1.0 : -1.0;
+    m->run_s[1] = -m->run_s[0];
+    return 1;
+}
+
+/* Each particle's list, in spring order: count, then place (but the run's,
+ * when skip_run). */
+static void build_lists(int n, struct sw_particles_model *m)
+{
+    int total = m->npair + m->nanchor;
+    memset(m->first, 0, (size_t)(n + 1) * sizeof *m->first);
+    for (int j = 0; j < total; j++) {
+        int pair = j < m->npair;
+        m->first[(pair && m->stride && !m->full ? m->a0 + 2 * j : m->a[j]) / 2 + 1]++;
+        if (pair)
+            m->first[(m->stride && !m->full ? m->b0 + 2 * j : m->b[j]) / 2 + 1]++;
+    }
+    for (int i = 0; i < n; i++)
+        m->first[i + 1] += m->first[i];
+    m->degree = total > 0 ? m->first[1] : 0;
+    for (int i = 1; i < n && m->degree; i++)
+        if (m->first[i + 1] - m->first[i] != m->degree)
+            m->degree = 0;
+    m->skip_run = !m->full && m->nextra == 0 && stride_run(m);
+    for (int j = 0; j < total; j++) {
+        int pair = j < m->npair;
+        for (int end = 0; end < (pair ? 2 : 1); end++) {
+            int off = pair && m->stride && !m->full ? (end ? m->b0 : m->a0) + 2 * j : (end ? m->b[j] : m->a[j]);
+            int i = off / 2, e = m->first[i]++;
+            if (m->skip_run && i >= m->run_lo && i < m->run_hi)
+                continue;
+            m->spring[e] = 2 * j;
+            m->sign[e] = end ? -1.0 : 1.0;
+        }
+    }
+    for (int i = n; i > 0; i--) /* placing advanced each first[i] to first[i + 1] */
+        m->first[i] = m->first[i - 1];
+    m->first[0] = 0;
+    if (!m->skip_run)
+        find_run(n, m);
+}
+
 /* The order of summation: springs (paired, then anchored, each in the order
  * added), then the extra per-particle passes, then gravity, then drag. The
  * plain loop sums in the order forces were added; the two agree bit for bit
@@ -150,50 +259,12 @@ static void find_regular(int n, struct sw_particles_model *m)
 int swp_model_compile(sw_particles *p, char *err, size_t errlen)
 {
     struct sw_particles_model *m = p->model;
-    int rc = SW_OK, pass;
     m->npair = m->nanchor = m->damped = m->gravity = m->drag = m->nextra = 0;
-    for (pass = 0; pass < 2; pass++) /* paired springs first, then anchored ones */
-        for (int f = 0; f < p->nforces; f++) {
-            const sw_force *fo = &p->forces[f];
-            for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
-                if (sp->a < 0 || sp->a >= p->n || sp->b < -1 || sp->b >= p->n) {
-                    if (rc == SW_OK && err)
-                        snprintf(err, errlen, "spring %d joins particles %d and %d; a system of %d "
-                                 "particles allows 0 to %d (b = -1: a fixed anchor)",
-                                 j, sp->a, sp->b, p->n, p->n - 1);
-                    rc = SW_EINVAL;
-                } else if ((sp->b >= 0) == (pass == 0)) {
-                    put_spring(m, pass == 0 ? m->npair : m->npair + m->nanchor, sp);
-                    pass == 0 ? m->npair++ : m->nanchor++;
-                }
-            }
-        }
-    /* Each particle's list, in spring order: count, then place. */
-    int total = m->npair + m->nanchor;
-    for (int j = total; j < ((total + 3) & ~3); j++) /* the padding: no force */
-        m->k[j] = m->c[j] = m->rest[j] = 0.0;
-    memset(m->first, 0, (size_t)(p->n + 1) * sizeof *m->first);
-    for (int j = 0; j < total; j++) {
-        m->first[m->a[j] / 2 + 1]++;
-        if (j < m->npair)
-            m->first[m->b[j] / 2 + 1]++;
-    }
-    for (int i = 0; i < p->n; i++)
-        m->first[i + 1] += m->first[i];
-    for (int j = 0; j < total; j++)
-        for (int end = 0; end < (j < m->npair ? 2 : 1); end++) {
-            int i = (end ? m->b[j] : m->a[j]) / 2, e = m->first[i]++;
-            m->spring[e] = 2 * j;
-            m->sign[e] = end ? -1.0 : 1.0;
-        }
-    for (int i = p->n; i > 0; i--) /* placing advanced each first[i] to first[i + 1] */
-        m->first[i] = m->first[i - 1];
-    m->first[0] = 0;
-    m->degree = total > 0 ? m->first[1] : 0;
-    for (int i = 1; i < p->n && m->degree; i++)
-        if (m->first[i + 1] - m->first[i] != m->degree)
-            m->degree = 0;
+    m->uniform = 0;
+    m->stride = 1;
+    m->a0 = m->b0 = 0;
+    int rc = each_spring(p, survey_spring, err, errlen);
+    m->stride &= m->npair > 0;
     for (int f = 0; f < p->nforces; f++) {
         const sw_force *fo = &p->forces[f];
         /* springs are compiled above; the first gravity (before any drag)
@@ -212,8 +283,19 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
             m->extra[m->nextra++] = f;
         }
     }
-    find_regular(p->n, m);
-    m->small = swp_small_pick(p);
+    swp_small_fn *small = swp_small_pick(p); /* (reads the counts and kinds alone) */
+    m->full = small != NULL;
+    each_spring(p, put_spring, NULL, 0);
+    int total = m->npair + m->nanchor;
+    for (int j = total; (m->full || !m->uniform) && j < ((total + 3) & ~3); j++) /* the padding: no force */
+        m->k[j] = m->c[j] = m->rest[j] = 0.0;
+    for (int j = 0; m->uniform && j < BLOCK; j++) {
+        m->shared[j] = m->k0;
+        m->shared[BLOCK + j] = m->c0;
+        m->shared[2 * BLOCK + j] = m->rest0;
+    }
+    build_lists(p->n, m);
+    m->small = small;
     m->compiled = 1;
     return rc;
 }
@@ -322,10 +404,13 @@ SW_INLINE void spring_forces(const struct sw_particles_model *m, const double *x
     for (int lo = 0; lo < total; lo += BLOCK) {
         int hi = lo + BLOCK < total ? lo + BLOCK : total, mid = hi < m->npair ? hi : m->npair;
         block_differences(m, x, v, lo, mid > lo ? mid : lo, hi, d, dv);
+        /* uniform: every block reads the one block of shared rows */
+        const double *k = m->uniform ? m->shared : m->k + lo, *c = m->uniform ? m->shared + BLOCK : m->c + lo,
+                     *rest = m->uniform ? m->shared + 2 * BLOCK : m->rest + lo;
         if (m->damped) /* (constant arguments: a loop each) */
-            block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, 1);
+            block_forces(hi - lo, k, c, rest, d, dv, m->force + 2 * lo, len2, 1);
         else
-            block_forces(hi - lo, m->k + lo, m->c + lo, m->rest + lo, d, dv, m->force + 2 * lo, len2, 0);
+            block_forces(hi - lo, k, c, rest, d, dv, m->force + 2 * lo, len2, 0);
     }
 }
 

@@ -19,10 +19,21 @@ struct sw_particles_model {
     int cap;                  /* room for springs */
     /* springs: [0, npair) join particles a and b; [npair, npair + nanchor)
      * tie particle a to the fixed point (ax, ay); a and b hold 2a and 2b,
-     * the offsets of the particles' x in the state */
+     * the offsets of the particles' x in the state. Only what the passes
+     * read is written (a row never written is never resident: a million
+     * beads' chain keeps its model to the forces and `first`): ax, ay of
+     * the anchored springs alone; a, b of the paired ones only when they
+     * do not follow the stride below; k, c, rest only when the springs do
+     * not all share them (uniform). */
     int npair, nanchor;
     int *a, *b;
     double *k, *c, *rest, *ax, *ay;
+    int uniform;              /* every spring has these k, c, rest (same bits) */
+    double k0, c0, rest0;
+    double *shared;           /* uniform: k0, c0, rest0 repeated, BLOCK each, read by every block (a
+                                 loop over rows vectorises better than one over constants) */
+    int full;                 /* a, b, k, c, rest of every spring written too: the small path
+                                 (particles_small.c) reads them */
     int damped;               /* some spring has c != 0 */
     double *scratch;          /* d and dv = v_a - v_b of a block of springs, (x, y) pairs, and
                                  |d|²: 5 BLOCK */
@@ -33,6 +44,8 @@ struct sw_particles_model {
     int *first, *spring;
     double *sign;
     int degree;               /* every particle has this many springs (entries 2i, 2i + 1 when 2); else 0 */
+    int skip_run;             /* the lists of the run's particles (below) are not written: no pass
+                                 reads them (no extra pass, not small) */
     /* Regular layouts, found by swp_model_compile, that let the loops read
      * neighbours contiguously instead of through the index lists (chains,
      * ropes, rows of cloth): the paired springs' a and b advance by one

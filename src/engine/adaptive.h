@@ -9,6 +9,9 @@
 #ifndef SW_ENGINE_ADAPTIVE_H
 #define SW_ENGINE_ADAPTIVE_H
 
+#include <string.h>
+
+#include "engine/clones.h"
 #include "engine/stepper.h"
 
 /* What a trial adds up over its range. */
@@ -18,6 +21,29 @@ typedef struct sw_trial_sums {
     double part[2][4]; /* dop853: err and err3 by i mod 4 (four independent chains of additions) */
     unsigned beyond; /* some new y_i at or beyond the runaway exponent */
 } sw_trial_sums;
+
+/* part[i mod 4] += q[i] for i in [0, len): four chains of additions side
+ * by side, as the four lanes of one vector (lane-wise IEEE additions, the
+ * bits of four scalar chains whatever the vector width; a sliced trial's
+ * slices start at multiples of 4, so it adds in a whole-state order).
+ * Returns the four sums added pairwise, (p0 + p1) + (p2 + p3): the error
+ * norm's sum of squares in dop853 and rkn. */
+SW_INLINE double sw_add_by4(double part[4], const double *q, int len)
+{
+    typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
+    v4d s;
+    int i;
+    memcpy(&s, part, sizeof s);
+    for (i = 0; i + 4 <= len; i += 4) {
+        v4d a;
+        memcpy(&a, q + i, sizeof a);
+        s += a;
+    }
+    memcpy(part, &s, sizeof s);
+    for (; i < len; i++)
+        part[i & 3] += q[i];
+    return (part[0] + part[1]) + (part[2] + part[3]);
+}
 
 /* A trial step of size h over [lo, hi), k1 = f(t, y) in slot s->fsal: the
  * old y saved to the method's `saved` slot, the new y written into y, the

@@ -17,10 +17,6 @@
  * and slots 0 and 3 swap the roles of k1 and k4 from step to step. */
 enum { S_K2 = 1, S_K3 = 2, S_K4 = 3, S_K5 = 4, S_K6, S_K7, S_K8, S_K9, S_K10, S_YT, S_SAVED, DOP853_VECTORS };
 
-/* Four doubles as one value (a GNU C vector: each operation the lane-wise
- * IEEE operation). */
-typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
-
 /* Component i's 5th- and 3rd-order error estimates, scaled by 1/sk, from
  * b·k, the old state y0 and the new one y1. */
 static inline void dop853_errors(int i, double bk, double y0, double y1, double atol, double rtol,
@@ -107,25 +103,8 @@ SW_INLINE void dop853_body(sw_ode *ode, double t, double *restrict y, double h, 
         k5[i] = e5 * e5;
         k4[i] = e3 * e3;
     }
-    double (*part)[4] = sums->part;
-    v4d s5, s3;
-    memcpy(&s5, part[0], sizeof s5);
-    memcpy(&s3, part[1], sizeof s3);
-    for (i = 0; i + 4 <= len; i += 4) {
-        v4d a5, a3;
-        memcpy(&a5, k5 + i, sizeof a5);
-        memcpy(&a3, k4 + i, sizeof a3);
-        s5 += a5;
-        s3 += a3;
-    }
-    memcpy(part[0], &s5, sizeof s5);
-    memcpy(part[1], &s3, sizeof s3);
-    for (; i < len; i++) {
-        part[0][i & 3] += k5[i];
-        part[1][i & 3] += k4[i];
-    }
-    sums->err = (part[0][0] + part[0][1]) + (part[0][2] + part[0][3]);
-    sums->err3 = (part[1][0] + part[1][1]) + (part[1][2] + part[1][3]);
+    sums->err = sw_add_by4(sums->part[0], k5, len);
+    sums->err3 = sw_add_by4(sums->part[1], k4, len);
     sums->beyond |= sw_beyond_any(over);
     sw_eval_slice(ode, t + h, len, y, k4); /* FSAL: the next step's k1 */
 }

@@ -213,6 +213,15 @@ static int stride_run(struct sw_particles_model *m)
     return 1;
 }
 
+/* The state offset (2·particle) of spring j's end a (end 0) or b (end 1):
+ * from the stride where a and b of paired springs were not written. */
+static int end_offset(const struct sw_particles_model *m, int j, int end)
+{
+    if (j < m->npair && m->stride && !m->full)
+        return (end ? m->b0 : m->a0) + 2 * j;
+    return end ? m->b[j] : m->a[j];
+}
+
 /* Each particle's list, in spring order: count, then place (but the run's,
  * when skip_run). */
 static void build_lists(int n, struct sw_particles_model *m)
@@ -220,10 +229,9 @@ static void build_lists(int n, struct sw_particles_model *m)
     int total = m->npair + m->nanchor;
     memset(m->first, 0, (size_t)(n + 1) * sizeof *m->first);
     for (int j = 0; j < total; j++) {
-        int pair = j < m->npair;
-        m->first[(pair && m->stride && !m->full ? m->a0 + 2 * j : m->a[j]) / 2 + 1]++;
-        if (pair)
-            m->first[(m->stride && !m->full ? m->b0 + 2 * j : m->b[j]) / 2 + 1]++;
+        m->first[end_offset(m, j, 0) / 2 + 1]++;
+        if (j < m->npair)
+            m->first[end_offset(m, j, 1) / 2 + 1]++;
     }
     for (int i = 0; i < n; i++)
         m->first[i + 1] += m->first[i];
@@ -233,10 +241,8 @@ static void build_lists(int n, struct sw_particles_model *m)
             m->degree = 0;
     m->skip_run = !m->full && m->nextra == 0 && stride_run(m);
     for (int j = 0; j < total; j++) {
-        int pair = j < m->npair;
-        for (int end = 0; end < (pair ? 2 : 1); end++) {
-            int off = pair && m->stride && !m->full ? (end ? m->b0 : m->a0) + 2 * j : (end ? m->b[j] : m->a[j]);
-            int i = off / 2, e = m->first[i]++;
+        for (int end = 0; end < (j < m->npair ? 2 : 1); end++) {
+            int i = end_offset(m, j, end) / 2, e = m->first[i]++;
             if (m->skip_run && i >= m->run_lo && i < m->run_hi)
                 continue;
             m->spring[e] = 2 * j;

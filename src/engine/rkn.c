@@ -10,7 +10,6 @@
 #include "engine/clones.h"
 
 #include <math.h>
-#include <string.h>
 
 #include "engine/rkn_tableau.h"
 #include "stepwise/base.h"
@@ -22,8 +21,6 @@ SW_RKN_TABLEAU(X)
 /* Slots: each stage's derivative [v | a] (only a is read), the FSAL one
  * alternating between 0 and S_K6; the stage state; the saved old state. */
 enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_YT, S_SAVED, RKN_VECTORS };
-
-typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
 
 /* The stage positions X = x0 + c h v0 + h² Σ A a into yt's first half (its
  * second half holds v0: the derivative reads a whole state, and a
@@ -88,17 +85,7 @@ SW_INLINE void rkn_body(sw_ode *ode, double t, double *restrict y, double h, int
         q[d + i] = r * r;
         over |= sw_beyond_bits(v1, add);
     }
-    v4d part = { 0, 0, 0, 0 };
-    for (i = 0; i + 4 <= 2 * d; i += 4) {
-        v4d b;
-        memcpy(&b, q + i, sizeof b);
-        part += b;
-    }
-    double p[4];
-    memcpy(p, &part, sizeof p);
-    for (; i < 2 * d; i++)
-        p[i & 3] += q[i];
-    sums->err += (p[0] + p[1]) + (p[2] + p[3]);
+    sums->err = sw_add_by4(sums->part[0], q, 2 * d);
     sums->beyond |= sw_beyond_any(over);
 }
 

@@ -232,8 +232,7 @@ const char *sw_stability_verdict_text(int verdict)
 static double method_cost(const sw_scene *sc, sw_truth *tr, const sw_integrator *m, double w, double duration,
                           double ref, const sw_stability_config *c)
 {
-    double cost = 0;
-    cost += ref;
+    double cost = ref;
     double solve, dim = sw_truth_eval_work(&tr->sys, &solve);
     double evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
     if (m->flags & SW_IMPLICIT) /* a solve beyond what an evaluation costs (a wide band) */

@@ -375,7 +375,7 @@ enum { MAX_CANDIDATES = 14 };
 static int candidates(const problem *pb, candidate *c)
 {
     int k = 0;
-    const char *mine[] = { "rk4", "rk45", "dop853", "rkn" };
+    const char *mine[] = { "rk4", "rk45", "dop853", "rkn", "rkn12" };
     for (int i = 0; i < (int)(sizeof mine / sizeof *mine); i++) {
         const sw_integrator *m = sw_integrator_find(mine[i]);
         if (m)

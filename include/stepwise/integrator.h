@@ -15,7 +15,8 @@ enum {
     SW_ADAPTIVE = 1u << 3,
     SW_NEEDS_SECOND_ORDER = 1u << 4, /* refuses a first-order (flow) system */
     SW_PLUGIN = 1u << 5,             /* loaded from a shared object */
-    SW_NEWTON = 1u << 6              /* implicit, Newton iterated: evals is a lower bound */
+    SW_NEWTON = 1u << 6,             /* implicit, Newton iterated: evals is a lower bound */
+    SW_POSITION_ONLY = 1u << 7       /* x'' = f(x): refuses forces that read velocities */
 };
 
 /* The running state of one method on one system: its workspace and what it

@@ -34,7 +34,7 @@ static void list_integrators(void)
         snprintf(evals, sizeof evals, "%s%d%s%s", (m->flags & SW_NEWTON) ? ">=" : "", m->evals,
                  (m->flags & SW_NEWTON) ? "+solves" : (m->flags & SW_IMPLICIT) ? "+solve" : "",
                  (m->flags & SW_PLUGIN) ? " (claimed)" : "");
-        printf("%-22s order %d  evals/step %-10s %s\n", m->name, m->order, evals, m->label);
+        printf("%-22s order %-2d evals/step %-10s %s\n", m->name, m->order, evals, m->label);
     }
 }
 

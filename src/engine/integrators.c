@@ -47,13 +47,18 @@ static const sw_integrator builtins[] = {
       "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1" },
     /* x'' = f(x) only: refused where a force reads velocities (below). */
     { "rkn", "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)", 6, 5,
-      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER, 0.0, 8, sw_step_rkn,
+      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY, 0.0, 8, sw_step_rkn,
       "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution" },
     /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
      * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
      * six solves with one matrix (I - γh J). */
     { "rodas4", "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", 4, 7, SW_IMPLICIT | SW_ADAPTIVE,
       INFINITY, 12, sw_step_rodas4, "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages" },
+    /* rkn's 12th-order sibling for tight tolerances: 16 stages and the
+     * derivative at the new state (not FSAL), 17 evaluations a step. */
+    { "rkn12", "Runge-Kutta-Nystrom 12(10), adaptive (Dormand, El-Mikkawy, Prince)", 12, 17,
+      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY, 0.0, 21, sw_step_rkn12,
+      "adaptive: x'' = f(x) stepped directly at 12th order, error from an embedded 10th-order solution" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -146,7 +151,7 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
                  "masses; this is a first-order flow field (use %s)", m->name, fit);
         return SW_EINVAL;
     }
-    if (m->step == sw_step_rkn && !sw_ode_position_only(ode)) {
+    if ((m->flags & SW_POSITION_ONLY) && !sw_ode_position_only(ode)) {
         snprintf(err, errlen, "'%s' solves x'' = f(x) and needs forces that ignore velocities; this system "
                  "has drag or damped springs (set them to 0, or use dop853 or rk45)", m->name);
         return SW_EINVAL;

@@ -59,6 +59,7 @@ sw_step_fn sw_step_implicit_euler, sw_step_linear_implicit_euler,
 sw_step_fn sw_step_rk45;                               /* rk45.c */
 sw_step_fn sw_step_dop853;                             /* dop853.c */
 sw_step_fn sw_step_rkn;                                /* rkn.c */
+sw_step_fn sw_step_rkn12;                              /* rkn12.c */
 sw_step_fn sw_step_rodas4;                             /* rosenbrock.c */
 
 /* Explicit Runge-Kutta steps run over the whole state for coupled systems,

@@ -1,0 +1,183 @@
+/* Runge-Kutta-Nyström 12(10): rkn's high-accuracy sibling for x'' = f(t, x)
+ * (accelerations from positions alone). 17 stages reach 12th order, with
+ * an embedded 10th-order solution for the error; not first-same-as-last,
+ * so a trial ends with the derivative at its new state (17 evaluations).
+ * Where rkn (6th order, 5 evaluations) or dop853 (8th, 12) need many small
+ * steps — tolerances of 1e-8 and tighter, a close encounter — its steps
+ * are several times longer. Error control by the controller rk45, dop853
+ * and rkn share (adaptive.c); nothing is copied on an accepted step. */
+#include "engine/adaptive.h"
+#include "engine/clones.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "engine/rkn12_tableau.h"
+#include "stepwise/base.h"
+
+enum { S = 17 };
+
+/* Slots: stage i's derivative [v | a] in slot i - 1 for i ≥ 2 (only a is
+ * read); a_1 in slot 0 or S_NEXT, alternating (the trial writes the new
+ * state's derivative into the other); the stage state; the error norm's
+ * squares; the saved old state. */
+enum { S_NEXT = S, S_YT, S_SQ, S_SAVED, RKN12_VECTORS };
+
+/* A weighted sum of accelerations at component i: the tableau lists a
+ * sum's nonzero terms in stage order, the first as F, the rest as T, so
+ * each sum is one expression added left to right. */
+#define F(j, w) (w) * a##j[i]
+#define T(j, w) +(w) * a##j[i]
+
+/* Stage i: X_i = x0 + c_i h v0 + h² Σ_j A_ij a_j into yt's x half (its v
+ * half holds v0 throughout: the derivative reads a whole state, and a
+ * position-only force ignores it), then a_i = f(t + c_i h, X_i). */
+#define STAGE(st, c, terms)                                                                               \
+    for (i = 0; i < d; i++)                                                                               \
+        yt[i] = x[i] + (c) * h * v[i] + hh * (terms);                                                     \
+    sw_eval_slice(ode, t + (c) * h, 2 * d, yt, k[(st) - 1]);
+
+/* One trial over the whole state [x | v] (d = dim/2 each; the systems it
+ * accepts offer no slices). Then x1 and v1 into the state, the derivative
+ * at the new state, and the error norm's squares as rkn adds them: RMS of
+ * e_i / (atol + rtol·max(|y0_i|, |y1_i|)), e = h² Σ EX a in x and h Σ EV a
+ * in v, the squares added by i mod 4 over [x | v]. Every acceleration is a
+ * restrict pointer, so each stage's loop vectorises; inlined into two
+ * entries: any d, and d = 2 (one particle). */
+SW_INLINE void rkn12_body(sw_ode *ode, double t, double *restrict y, double h, int d, unsigned elim,
+                          double atol, double rtol, double *const k[S + 1], double *restrict yt,
+                          double *restrict q, double *restrict saved, sw_trial_sums *sums)
+{
+    const double hh = h * h;
+    double *restrict x = y, *restrict v = y + d;
+    const double *restrict a1 = k[0] + d, *restrict a2 = k[1] + d, *restrict a3 = k[2] + d,
+                           *restrict a4 = k[3] + d, *restrict a5 = k[4] + d, *restrict a6 = k[5] + d,
+                           *restrict a7 = k[6] + d, *restrict a8 = k[7] + d, *restrict a9 = k[8] + d,
+                           *restrict a10 = k[9] + d, *restrict a11 = k[10] + d, *restrict a12 = k[11] + d,
+                           *restrict a13 = k[12] + d, *restrict a14 = k[13] + d, *restrict a15 = k[14] + d,
+                           *restrict a16 = k[15] + d, *restrict a17 = k[16] + d;
+    int i;
+    for (i = 0; i < d; i++)
+        yt[d + i] = v[i];
+    SW_RKN12_STAGES(STAGE, F, T)
+    unsigned long long over = 0, add = sw_beyond_add(elim);
+    for (i = 0; i < d; i++) {
+        double x0 = x[i], v0 = v[i];
+        double x1 = x0 + h * v0 + hh * (SW_RKN12_BX(F, T)), v1 = v0 + h * (SW_RKN12_BV(F, T));
+        double ex = hh * (SW_RKN12_EX(F, T)), ev = h * (SW_RKN12_EV(F, T));
+        double mx = fabs(x0) > fabs(x1) ? fabs(x0) : fabs(x1), mv = fabs(v0) > fabs(v1) ? fabs(v0) : fabs(v1);
+        double rx = ex / (atol + rtol * mx), rv = ev / (atol + rtol * mv);
+        saved[i] = x0;
+        saved[d + i] = v0;
+        x[i] = x1;
+        v[i] = v1;
+        q[i] = rx * rx;
+        q[d + i] = rv * rv;
+        over |= sw_beyond_bits(x1, add) | sw_beyond_bits(v1, add);
+    }
+    sw_eval_slice(ode, t + h, 2 * d, y, k[S]);
+    sums->err = sw_add_by4(sums->part[0], q, 2 * d);
+    sums->beyond |= sw_beyond_any(over);
+}
+
+#undef STAGE
+#undef T
+#undef F
+
+#define RKN12_ARGS                                                                                          \
+    sw_ode *ode, double t, double *restrict y, double h, int d, unsigned elim, double atol, double rtol,   \
+        double *const k[S + 1], double *restrict yt, double *restrict q, double *restrict saved,          \
+        sw_trial_sums *sums
+#define RKN12_PASS(d) ode, t, y, h, d, elim, atol, rtol, k, yt, q, saved, sums
+
+typedef void rkn12_range_fn(RKN12_ARGS);
+
+SW_CLONES static void rkn12_range(RKN12_ARGS) { rkn12_body(RKN12_PASS(d)); }
+
+/* One particle (d = 2), in 2-lane vectors: each a_j is loaded once, after
+ * its evaluation, and each sum kept in registers (the loops of the general
+ * body are not vectorised at d = 2). Lane-wise IEEE operations, in the
+ * same order as rkn12_body's: the same bits (one_particle_entry_same_bits
+ * in tests/check_rkn12.c). Not cloned, as rkn_range2 is not. */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+#define F(j, w) (v2d){ (w), (w) } * A##j
+#define T(j, w) +(v2d){ (w), (w) } * A##j
+#define STAGE(st, c, terms)                                                                               \
+    const v2d X##st = x + (v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
+    memcpy(yt, &X##st, sizeof X##st);                                                                     \
+    sw_eval_slice(ode, t + (c) * h, 4, yt, k[(st) - 1]);                                                  \
+    const v2d A##st = load2(k[(st) - 1] + 2);
+
+static void rkn12_range2(RKN12_ARGS)
+{
+    (void)d;
+    const v2d hh = { h * h, h * h }, hv = { h, h }, x = load2(y), v = load2(y + 2), A1 = load2(k[0] + 2);
+    memcpy(yt + 2, &v, sizeof v);
+    SW_RKN12_STAGES(STAGE, F, T)
+    const v2d x1 = x + hv * v + hh * (SW_RKN12_BX(F, T)), v1 = v + hv * (SW_RKN12_BV(F, T));
+    const v2d ex = hh * (SW_RKN12_EX(F, T)), ev = hv * (SW_RKN12_EV(F, T));
+    unsigned long long over = 0, add = sw_beyond_add(elim);
+    for (int i = 0; i < 2; i++) {
+        double mx = fabs(x[i]) > fabs(x1[i]) ? fabs(x[i]) : fabs(x1[i]);
+        double mv = fabs(v[i]) > fabs(v1[i]) ? fabs(v[i]) : fabs(v1[i]);
+        double rx = ex[i] / (atol + rtol * mx), rv = ev[i] / (atol + rtol * mv);
+        q[i] = rx * rx;
+        q[2 + i] = rv * rv;
+        over |= sw_beyond_bits(x1[i], add) | sw_beyond_bits(v1[i], add);
+    }
+    memcpy(saved, &x, sizeof x);
+    memcpy(saved + 2, &v, sizeof v);
+    memcpy(y, &x1, sizeof x1);
+    memcpy(y + 2, &v1, sizeof v1);
+    sw_eval_slice(ode, t + h, 4, y, k[S]);
+    sums->err = sw_add_by4(sums->part[0], q, 4);
+    sums->beyond |= sw_beyond_any(over);
+}
+
+#undef STAGE
+#undef T
+#undef F
+
+static void rkn12_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
+                        unsigned elim, sw_trial_sums *sums)
+{
+    const int d = (hi - lo) / 2;
+    double *k[S + 1];
+    k[0] = SW_WORK(s, s->fsal);
+    for (int i = 1; i < S; i++)
+        k[i] = SW_WORK(s, i);
+    k[S] = SW_WORK(s, s->fsal ? 0 : S_NEXT);
+    rkn12_range_fn *range = d == 2 ? rkn12_range2 : rkn12_range;
+    range(ode, t, y, h, d, elim, s->atol, s->rtol, k, SW_WORK(s, S_YT), SW_WORK(s, S_SQ), SW_WORK(s, S_SAVED),
+          sums);
+}
+
+static const sw_adaptive rkn12 = {
+    .trial = rkn12_trial,
+    .evals = S,
+    .coupled = 1, /* never sliced: the systems it accepts offer no slices, and it needs [x | v] whole */
+    .fsal_other = S_NEXT,
+    .saved = S_SAVED,
+    .expo = 1.0 / 11, /* the embedded solution is 10th order: local error ∝ h^11 */
+    .safety = 0.9,
+    .fac_min = 1.0 / 3,
+    .fac_max = 6.0,
+    .hold = 1,
+    .guess_first = 1,
+};
+
+_Static_assert(RKN12_VECTORS == 21, "rkn12 needs 21 work vectors (integrators.c)");
+
+/* One accepted RKN12(10) step of at most h_max. */
+int sw_step_rkn12(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
+{
+    return sw_adaptive_step(&rkn12, s, ode, t, y, h_max);
+}

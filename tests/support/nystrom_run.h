@@ -1,0 +1,48 @@
+/* The engine's Nyström methods (rkn, rkn12) in the tests' hands, for
+ * tests/check_rkn.c and tests/check_rkn12.c. A method is named as
+ * 'stepwise list integrators' names it. */
+#ifndef SW_TESTS_NYSTROM_RUN_H
+#define SW_TESTS_NYSTROM_RUN_H
+
+#include "stepwise/particles.h"
+
+/* Accelerations in long double, for nys_steps (nystrom.h): the oscillator
+ * x'' = -x and Kepler's x'' = -x/|x|³. */
+void nys_oscillator(const long double x[2], long double a[2]);
+void nys_kepler(const long double x[2], long double a[2]);
+
+/* Kepler's ellipse (a = 1, μ = 1, eccentricity e, from perihelion) and the
+ * oscillator x = (cos t, 0) at t: (x, v) into out. */
+void nys_kepler_exact(double e, double t, double out[4]);
+void nys_oscillator_exact(double t, double out[4]);
+
+/* max_i |a_i - b_i| over a state of 4; the least-squares slope of log e
+ * against log h over n points. */
+double nys_max_err(const double *a, const long double *b);
+double nys_slope(const double *h, const double *e, int n);
+
+/* One particle of mass 1: on a zero-rest-length spring k = 1 (c = damping)
+ * to the origin from (1, 0) at rest, or (kepler_orbit) about a central
+ * body μ = 1 from perihelion of the ellipse of eccentricity e. */
+void nys_particle(sw_particles *p, int kepler_orbit, double e, double c);
+
+/* n steps of h exactly (every trial accepted) on that particle, c = 0:
+ * the state into y, the evaluations into *evals. */
+void nys_fixed(const char *method, int kepler_orbit, double e, double h, long n, double y[4], long *evals);
+
+/* The method's one-particle entry and its general one end on the same
+ * bits (ck_assert). */
+void nys_one_particle_same_bits(const char *method);
+
+/* The method under error control at rtol = atol = tol over [0, T]: the
+ * error against the closed form at T, the evaluations, and (steps not
+ * NULL) the smallest and largest accepted step with the radius of each. */
+double nys_controlled(const char *method, int kepler_orbit, double e, double T, double tol, long *evals,
+                      double steps[4]);
+
+/* Damping, drag and a flow field refused with a one-line message naming
+ * why and what to use; undamped springs and k = 0 drag accepted
+ * (ck_assert). */
+void nys_refuses_velocity_forces(const char *method);
+
+#endif

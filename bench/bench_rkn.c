@@ -206,9 +206,9 @@ void bench_rkn(int repeats, int quick)
         { .label = "orbit", .scene = "orbit", .sets = "e=0.5" },
         { .label = "orbit", .scene = "orbit", .sets = "e=0.9" },
     };
-    const char *names[] = { "rkn", "dop853", "rk45", "yoshida4", "verlet" };
+    const char *names[] = { "rkn", "rkn12", "dop853", "rk45", "yoshida4", "verlet" };
     const double targets[] = { 1e-3, 1e-6, 1e-9 };
-    int nt = quick ? 1 : 3, nm = 5;
+    int nt = quick ? 1 : 3, nm = (int)(sizeof names / sizeof names[0]);
     if (repeats < 5)
         repeats = 5;
     printf("x'' = f(x) at equal error (issue 27): error = largest |y - y_ref| over the state at the report\n"
@@ -223,7 +223,7 @@ void bench_rkn(int repeats, int quick)
             continue;
         }
         for (int e = 0; e < nt; e++) {
-            rkn_method c[5];
+            rkn_method c[sizeof names / sizeof names[0]];
             for (int i = 0; i < nm; i++) {
                 const sw_integrator *m = sw_integrator_find(names[i]);
                 c[i] = (rkn_method){ .name = names[i], .m = m, .fixed = m && !(m->flags & SW_ADAPTIVE) };

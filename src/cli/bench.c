@@ -275,7 +275,7 @@ static void list_inapplicable(const sw_scene *sc, const double *p, const sw_inte
     if (used > 0 && used < len)
         snprintf(buf + used, len - used, " (%s)", sys.kind == SW_SYS_FLOW
                  ? "a flow field has no masses, or no Jacobian for implicit methods"
-                 : implicit && explicit ? "no Jacobian at this size; rkn: a force reads velocities"
+                 : implicit && explicit ? "no Jacobian at this size; rkn, rkn12: a force reads velocities"
                  : implicit ? "no Jacobian at this size" : "a force reads velocities: x'' = f(x) only");
     sw_system_free(&sys);
 }

@@ -1,5 +1,5 @@
 /* The step-size controller of the embedded explicit Runge-Kutta pairs
- * (rk45, dop853, and the Nystrom pair rkn) and the Rosenbrock method (rodas4): trial, error
+ * (rk45, dop853, the Nystrom pairs rkn and rkn12) and the Rosenbrock method (rodas4): trial, error
  * norm, accept or reject, next step. It copies
  * nothing on an accepted step and allocates nothing. */
 #include "engine/adaptive.h"

@@ -1,5 +1,5 @@
 /* Private to the engine: the step-size controller shared by the embedded
- * explicit Runge-Kutta pairs (rk45.c, dop853.c, rkn.c) and the Rosenbrock
+ * explicit Runge-Kutta pairs (rk45.c, dop853.c, rkn.c, rkn12.c) and the Rosenbrock
  * method (rosenbrock.c). A method supplies a trial
  * step over a range of the state; the controller runs it over the whole
  * state or slice by slice, accepts or rejects it, and proposes the next step.
@@ -27,7 +27,7 @@ typedef struct sw_trial_sums {
  * bits of four scalar chains whatever the vector width; a sliced trial's
  * slices start at multiples of 4, so it adds in a whole-state order).
  * Returns the four sums added pairwise, (p0 + p1) + (p2 + p3): the error
- * norm's sum of squares in dop853 and rkn. */
+ * norm's sum of squares in dop853, rkn and rkn12. */
 SW_INLINE double sw_add_by4(double part[4], const double *q, int len)
 {
     typedef double v4d __attribute__((vector_size(4 * sizeof(double))));

@@ -20,7 +20,7 @@ struct sw_stepper {
     double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
     int have_cache;       /* FSAL derivative is valid (in work[0..dim), or slot fsal) */
     int fsal;             /* adaptive RK: workspace slot of the cached first-stage derivative */
-    double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rodas4) */
+    double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rkn12, rodas4) */
     double h_next;        /* adaptive: proposed size of the next step (0: use h) */
     double h_last;        /* size of the last step taken */
     long accepted;        /* adaptive: accepted steps */

@@ -113,6 +113,56 @@ void nys_fixed(const char *method, int kepler_orbit, double e, double h, long n,
     sw_particles_free(&p);
 }
 
+static void start(int kepler_orbit, double e, long double y[4])
+{
+    y[0] = kepler_orbit ? 1 - e : 1;
+    y[1] = y[2] = 0;
+    y[3] = kepler_orbit ? sqrtl((1 + (long double)e) / (1 - (long double)e)) : 0;
+}
+
+static double error_of(const double y[4], int kepler_orbit, double e, double T)
+{
+    double want[4], worst = 0;
+    if (kepler_orbit)
+        nys_kepler_exact(e, T, want);
+    else
+        nys_oscillator_exact(T, want);
+    for (int i = 0; i < 4; i++)
+        worst = fmax(worst, fabs(y[i] - want[i]));
+    return worst;
+}
+
+double nys_engine_error(const char *method, int kepler_orbit, double e, double T, long n)
+{
+    double y[4];
+    long evals;
+    nys_fixed(method, kepler_orbit, e, T / n, n, y, &evals);
+    return error_of(y, kepler_orbit, e, T);
+}
+
+double nys_tableau_error(const nys_tableau *tb, const long double *wx, const long double *wv, int kepler_orbit,
+                         double e, double T, long n)
+{
+    long double ly[4];
+    double y[4];
+    start(kepler_orbit, e, ly);
+    nys_steps(tb, kepler_orbit ? nys_kepler : nys_oscillator, wx, wv, (long double)T / n, n, ly);
+    for (int i = 0; i < 4; i++)
+        y[i] = (double)ly[i];
+    return error_of(y, kepler_orbit, e, T);
+}
+
+double nys_engine_vs_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
+                             int kepler_orbit, double h, long n, long *evals)
+{
+    double y[4];
+    long double ly[4];
+    nys_fixed(method, kepler_orbit, 0.5, h, n, y, evals);
+    start(kepler_orbit, 0.5, ly);
+    nys_steps(tb, kepler_orbit ? nys_kepler : nys_oscillator, bx, bv, h, n, ly);
+    return nys_max_err(y, ly);
+}
+
 /* The two entries of the step are one computation: the method steps a single
  * particle (state 4) through a copy of its body with d = 2 fixed, and any
  * larger state through the general one. Three particles about the same

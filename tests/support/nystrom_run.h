@@ -4,6 +4,7 @@
 #ifndef SW_TESTS_NYSTROM_RUN_H
 #define SW_TESTS_NYSTROM_RUN_H
 
+#include "nystrom.h"
 #include "stepwise/particles.h"
 
 /* Accelerations in long double, for nys_steps (nystrom.h): the oscillator
@@ -29,6 +30,21 @@ void nys_particle(sw_particles *p, int kepler_orbit, double e, double c);
 /* n steps of h exactly (every trial accepted) on that particle, c = 0:
  * the state into y, the evaluations into *evals. */
 void nys_fixed(const char *method, int kepler_orbit, double e, double h, long n, double y[4], long *evals);
+
+/* The largest state error at T after n fixed steps from the start above
+ * (oscillator, or orbit at eccentricity e) against the closed form: of the
+ * engine's method, or of the weights wx, wv with the tableau's stages
+ * stepped in long double (an embedded solution the engine only uses for
+ * its error estimate). */
+double nys_engine_error(const char *method, int kepler_orbit, double e, double T, long n);
+double nys_tableau_error(const nys_tableau *tb, const long double *wx, const long double *wv, int kepler_orbit,
+                         double e, double T, long n);
+
+/* The engine's method against its tableau stepped in long double: n fixed
+ * steps of h from the start above (e = 0.5 for the orbit); the largest
+ * difference, the engine's evaluations into *evals. */
+double nys_engine_vs_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
+                             int kepler_orbit, double h, long n, long *evals);
 
 /* The method's one-particle entry and its general one end on the same
  * bits (ck_assert). */

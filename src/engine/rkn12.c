@@ -29,20 +29,40 @@ enum { S_NEXT = S, S_YT, S_SQ, S_SAVED, RKN12_VECTORS };
 #define F(j, w) (w) * a##j[i]
 #define T(j, w) +(w) * a##j[i]
 
+/* The accelerations a_1 .. a_17 as restrict pointers, for a block that
+ * reads them and writes only yt or the state: each loop then vectorises
+ * with no overlap checks. Only inside such a block: a derivative writes
+ * a_i between the blocks, and a restrict pointer promises that nothing
+ * else writes its object where the pointer is used. A block uses some of
+ * them. */
+#define A_RESTRICT(d)                                                                                      \
+    const double *restrict a1 A_USED = k[0] + (d), *restrict a2 A_USED = k[1] + (d),                      \
+                           *restrict a3 A_USED = k[2] + (d), *restrict a4 A_USED = k[3] + (d),            \
+                           *restrict a5 A_USED = k[4] + (d), *restrict a6 A_USED = k[5] + (d),            \
+                           *restrict a7 A_USED = k[6] + (d), *restrict a8 A_USED = k[7] + (d),            \
+                           *restrict a9 A_USED = k[8] + (d), *restrict a10 A_USED = k[9] + (d),           \
+                           *restrict a11 A_USED = k[10] + (d), *restrict a12 A_USED = k[11] + (d),        \
+                           *restrict a13 A_USED = k[12] + (d), *restrict a14 A_USED = k[13] + (d),        \
+                           *restrict a15 A_USED = k[14] + (d), *restrict a16 A_USED = k[15] + (d),        \
+                           *restrict a17 A_USED = k[16] + (d)
+#define A_USED __attribute__((unused))
+
 /* Stage i: X_i = x0 + c_i h v0 + h² Σ_j A_ij a_j into yt's x half (its v
  * half holds v0 throughout: the derivative reads a whole state, and a
  * position-only force ignores it), then a_i = f(t + c_i h, X_i). */
 #define STAGE(st, c, terms)                                                                               \
-    for (i = 0; i < d; i++)                                                                               \
-        yt[i] = x[i] + (c) * h * v[i] + hh * (terms);                                                     \
+    {                                                                                                     \
+        A_RESTRICT(d);                                                                                    \
+        for (i = 0; i < d; i++)                                                                           \
+            yt[i] = x[i] + (c) * h * v[i] + hh * (terms);                                                 \
+    }                                                                                                     \
     sw_eval_slice(ode, t + (c) * h, 2 * d, yt, k[(st) - 1]);
 
 /* One trial over the whole state [x | v] (d = dim/2 each; the systems it
  * accepts offer no slices). Then x1 and v1 into the state, the derivative
  * at the new state, and the error norm's squares as rkn adds them: RMS of
  * e_i / (atol + rtol·max(|y0_i|, |y1_i|)), e = h² Σ EX a in x and h Σ EV a
- * in v, the squares added by i mod 4 over [x | v]. Every acceleration is a
- * restrict pointer, so each stage's loop vectorises; inlined into two
+ * in v, the squares added by i mod 4 over [x | v]. Inlined into two
  * entries: any d, and d = 2 (one particle). */
 SW_INLINE void rkn12_body(sw_ode *ode, double t, double *restrict y, double h, int d, unsigned elim,
                           double atol, double rtol, double *const k[S + 1], double *restrict yt,
@@ -50,17 +70,12 @@ SW_INLINE void rkn12_body(sw_ode *ode, double t, double *restrict y, double h, i
 {
     const double hh = h * h;
     double *restrict x = y, *restrict v = y + d;
-    const double *restrict a1 = k[0] + d, *restrict a2 = k[1] + d, *restrict a3 = k[2] + d,
-                           *restrict a4 = k[3] + d, *restrict a5 = k[4] + d, *restrict a6 = k[5] + d,
-                           *restrict a7 = k[6] + d, *restrict a8 = k[7] + d, *restrict a9 = k[8] + d,
-                           *restrict a10 = k[9] + d, *restrict a11 = k[10] + d, *restrict a12 = k[11] + d,
-                           *restrict a13 = k[12] + d, *restrict a14 = k[13] + d, *restrict a15 = k[14] + d,
-                           *restrict a16 = k[15] + d, *restrict a17 = k[16] + d;
     int i;
     for (i = 0; i < d; i++)
         yt[d + i] = v[i];
     SW_RKN12_STAGES(STAGE, F, T)
     unsigned long long over = 0, add = sw_beyond_add(elim);
+    A_RESTRICT(d);
     for (i = 0; i < d; i++) {
         double x0 = x[i], v0 = v[i];
         double x1 = x0 + h * v0 + hh * (SW_RKN12_BX(F, T)), v1 = v0 + h * (SW_RKN12_BV(F, T));
@@ -81,6 +96,8 @@ SW_INLINE void rkn12_body(sw_ode *ode, double t, double *restrict y, double h, i
 }
 
 #undef STAGE
+#undef A_USED
+#undef A_RESTRICT
 #undef T
 #undef F
 

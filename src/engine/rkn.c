@@ -39,17 +39,19 @@ enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_YT, S_SAVED, RKN_VECTORS };
  * by i mod 4 over [x | v] (four chains of additions side by side, as
  * dop853 adds them), then the four sums pairwise. Every vector is a
  * restrict parameter, so each loop vectorises with no overlap checks; the
- * squares wait in yt, free once the last stage is evaluated. Inlined into
- * two entries: any d, and d = 2 (one particle). */
+ * squares wait in yt, free once the last stage is evaluated. The pointers
+ * into them (a_i, x, v, q) are plain: based on a restrict parameter, they
+ * keep its promise, where restrict pointers of their own would promise
+ * that nothing else touches their objects, and the derivative writes a_i
+ * through k_i. Inlined into two entries: any d, and d = 2 (one particle). */
 SW_INLINE void rkn_body(sw_ode *ode, double t, double *restrict y, double h, int d, unsigned elim, double atol,
                         double rtol, double *restrict k1, double *restrict k2, double *restrict k3,
                         double *restrict k4, double *restrict k5, double *restrict k6, double *restrict yt,
                         double *restrict saved, sw_trial_sums *sums)
 {
     const double hh = h * h;
-    const double *restrict a1 = k1 + d, *restrict a2 = k2 + d, *restrict a3 = k3 + d, *restrict a4 = k4 + d,
-                           *restrict a5 = k5 + d, *restrict a6 = k6 + d;
-    double *restrict x = y, *restrict v = y + d, *restrict q = yt;
+    const double *a1 = k1 + d, *a2 = k2 + d, *a3 = k3 + d, *a4 = k4 + d, *a5 = k5 + d, *a6 = k6 + d;
+    double *x = y, *v = y + d, *q = yt;
     int i;
     for (i = 0; i < d; i++)
         yt[d + i] = v[i];

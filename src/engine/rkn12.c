@@ -69,7 +69,7 @@ SW_INLINE void rkn12_body(sw_ode *ode, double t, double *restrict y, double h, i
                           double *restrict q, double *restrict saved, sw_trial_sums *sums)
 {
     const double hh = h * h;
-    double *restrict x = y, *restrict v = y + d;
+    double *x = y, *v = y + d;
     int i;
     for (i = 0; i < d; i++)
         yt[d + i] = v[i];

@@ -112,6 +112,8 @@ double cl_page_ratio(const char *file, const char *title, const char *integrator
 double cl_page_shown_ratio(const char *file, const char *title, const char *integrator, int k);
 double cl_page_error(const char *file, const char *title, const char *m, double dt);
 double cl_key_of(const char *name);
+/* 1 when key picks the place-th method (1-based), name, in play. */
+double cl_key_picks(int key, int place, const char *name);
 double cl_page_dt_after(const char *file, const char *title, sw_action action, int k);
 double cl_evals_per_step(const char *scene, const char *sets, const char *m, double dt, int n);
 double cl_order_by_halving(const char *scene, const char *sets, const char *m, double dt);

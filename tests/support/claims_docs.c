@@ -63,13 +63,7 @@ static double ev_im(void) { return ev("implicit-midpoint"); }
 static double ev_yoshida(void) { return ev("yoshida4"); }
 
 /* 1 when the key '@' picks yoshida4 (the twelfth place), from the controls' table. */
-static double key_at_yoshida(void)
-{
-    const sw_control *control;
-    int arg;
-    return sw_key_lookup('@', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
-           arg == 12 && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "yoshida4") == 0;
-}
+static double key_at_yoshida(void) { return cl_key_picks('@', 12, "yoshida4"); }
 
 /* Euler's energy on the undamped ω = 1 spring after N = 50 steps of h = 0.1,
  * against (1 + h²)^N. */

@@ -9,17 +9,8 @@
 #include "engine/stepper.h"
 #include "nystrom_run.h"
 
-/* 1 when key picks the place-th method, name, from the controls' table. */
-static double key_picks(int key, int place, const char *name)
-{
-    const sw_control *control;
-    int arg;
-    return sw_key_lookup(key, SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
-           arg == place && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, name) == 0;
-}
-
-static double key_hash(void) { return key_picks('#', 13, "rkn"); }
-static double key_percent(void) { return key_picks('%', 15, "rkn12"); }
+static double key_hash(void) { return cl_key_picks('#', 13, "rkn"); }
+static double key_percent(void) { return cl_key_picks('%', 15, "rkn12"); }
 
 /* The largest state error of rkn after one period of the e = 0.5 orbit in
  * n fixed steps (its tolerances so loose that every trial is accepted and
@@ -154,12 +145,14 @@ static void at_equal_error(const char *m, double target, double *evals, double *
     cl_l9_adaptive(m, hit, hit, evals, error);
 }
 
-static double l9_evals(const char *m)
+static double evals_within(const char *m, double target)
 {
     double ev, e;
-    at_equal_error(m, 1e-4, &ev, &e);
+    at_equal_error(m, target, &ev, &e);
     return ev;
 }
+
+static double l9_evals(const char *m) { return evals_within(m, 1e-4); }
 
 static double l9_rkn(void) { return l9_evals("rkn"); }
 static double l9_dop853(void) { return l9_evals("dop853"); }
@@ -172,15 +165,9 @@ static double l9_rkn_error(void)
 }
 
 /* The same within 1e-8, where rkn12 is for. */
-static double tight_evals(const char *m)
-{
-    double ev, e;
-    at_equal_error(m, 1e-8, &ev, &e);
-    return ev;
-}
-static double tight_rkn12(void) { return tight_evals("rkn12"); }
-static double tight_rkn(void) { return tight_evals("rkn"); }
-static double tight_dop853(void) { return tight_evals("dop853"); }
+static double tight_rkn12(void) { return evals_within("rkn12", 1e-8); }
+static double tight_rkn(void) { return evals_within("rkn", 1e-8); }
+static double tight_dop853(void) { return evals_within("dop853", 1e-8); }
 
 #define R_HUNDRED "\"about\": to the nearest hundred"
 

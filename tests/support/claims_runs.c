@@ -242,16 +242,34 @@ double cl_page_error(const char *file, const char *title, const char *m, double 
 }
 
 /* The digit key that picks a method, from the controls' key table; NaN: none. */
+/* The method key picks in play, from the controls' table, and its place
+ * (1-based); NULL when the key picks none. */
+static const sw_integrator *picked(int key, int *place)
+{
+    const sw_control *control;
+    int arg;
+    if (!sw_key_lookup(key, SW_CTX_PLAY, &control, &arg) || control->action != SW_ACT_PICK_METHOD)
+        return NULL;
+    *place = arg;
+    return sw_integrator_at(arg - 1);
+}
+
 double cl_key_of(const char *name)
 {
     for (int d = 0; d <= 9; d++) {
-        const sw_control *control;
-        int arg;
-        if (sw_key_lookup('0' + d, SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
-            sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, name) == 0)
+        int place;
+        const sw_integrator *m = picked('0' + d, &place);
+        if (m && strcmp(m->name, name) == 0)
             return d;
     }
     return NAN;
+}
+
+double cl_key_picks(int key, int place, const char *name)
+{
+    int at;
+    const sw_integrator *m = picked(key, &at);
+    return m && at == place && strcmp(m->name, name) == 0;
 }
 
 /* Δt after k presses of + (double) or - (halve) from the page's set-up. */

@@ -38,13 +38,7 @@ static double rodas_per_step(void) { return cl_adaptive_per_step("rodas4"); }
 static double rodas_order(void) { return cl_method("rodas4")->order; }
 
 /* 1 when '$' picks rodas4 (the fourteenth place), from the controls' table. */
-static double key_hash_rodas(void)
-{
-    const sw_control *control;
-    int arg;
-    return sw_key_lookup('$', SW_CTX_PLAY, &control, &arg) && control->action == SW_ACT_PICK_METHOD &&
-           arg == 14 && sw_integrator_at(arg - 1) && strcmp(sw_integrator_at(arg - 1)->name, "rodas4") == 0;
-}
+static double key_hash_rodas(void) { return cl_key_picks('$', 14, "rodas4"); }
 
 /* Lesson 9's last page: the pendulum at k = 1e6, 0.05 degrees, largest step
  * 0.1, default tolerances, from t = 0 to 2 under one method. */

@@ -89,12 +89,8 @@ END_TEST
  * start, then 17 a step (16 stages and the new state's derivative). */
 START_TEST(engine_is_the_tableau)
 {
-    for (int k = 0; k < 2; k++) {
-        long evals;
-        double d = nys_engine_vs_tableau("rkn12", &TB, BX, BV, k, k ? 0.1 : 0.5, 40, &evals);
-        ck_assert_int_eq(evals, 1 + 17 * 40);
-        ck_assert_msg(d < 1e-12, "%s: engine and tableau differ by %g", k ? "orbit" : "oscillator", d);
-    }
+    const double h[2] = { 0.5, 0.1 };
+    nys_engine_is_tableau("rkn12", &TB, BX, BV, h, 17, 1e-12);
 }
 END_TEST
 

@@ -152,15 +152,20 @@ double nys_tableau_error(const nys_tableau *tb, const long double *wx, const lon
     return error_of(y, kepler_orbit, e, T);
 }
 
-double nys_engine_vs_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
-                             int kepler_orbit, double h, long n, long *evals)
+void nys_engine_is_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
+                           const double h[2], int per_step, double tol)
 {
-    double y[4];
-    long double ly[4];
-    nys_fixed(method, kepler_orbit, 0.5, h, n, y, evals);
-    start(kepler_orbit, 0.5, ly);
-    nys_steps(tb, kepler_orbit ? nys_kepler : nys_oscillator, bx, bv, h, n, ly);
-    return nys_max_err(y, ly);
+    for (int k = 0; k < 2; k++) {
+        double y[4];
+        long double ly[4];
+        long evals;
+        nys_fixed(method, k, 0.5, h[k], 40, y, &evals);
+        ck_assert_int_eq(evals, 1 + per_step * 40);
+        start(k, 0.5, ly);
+        nys_steps(tb, k ? nys_kepler : nys_oscillator, bx, bv, h[k], 40, ly);
+        ck_assert_msg(nys_max_err(y, ly) < tol, "%s %s: engine and tableau differ by %g", method,
+                      k ? "orbit" : "oscillator", nys_max_err(y, ly));
+    }
 }
 
 /* The two entries of the step are one computation: the method steps a single

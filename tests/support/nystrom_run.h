@@ -40,11 +40,12 @@ double nys_engine_error(const char *method, int kepler_orbit, double e, double T
 double nys_tableau_error(const nys_tableau *tb, const long double *wx, const long double *wv, int kepler_orbit,
                          double e, double T, long n);
 
-/* The engine's method against its tableau stepped in long double: n fixed
- * steps of h from the start above (e = 0.5 for the orbit); the largest
- * difference, the engine's evaluations into *evals. */
-double nys_engine_vs_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
-                             int kepler_orbit, double h, long n, long *evals);
+/* The engine's method is its tableau (ck_assert): 40 fixed steps of h[0]
+ * on the oscillator and of h[1] on the orbit at e = 0.5 end within tol of
+ * the tableau's weights bx, bv stepped in long double, and take
+ * 1 + per_step evaluations a step. */
+void nys_engine_is_tableau(const char *method, const nys_tableau *tb, const long double *bx, const long double *bv,
+                           const double h[2], int per_step, double tol);
 
 /* The method's one-particle entry and its general one end on the same
  * bits (ck_assert). */

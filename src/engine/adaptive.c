@@ -93,7 +93,15 @@ int sw_adaptive_step(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double *t
         if (err <= 1.0) {
             s->fsal = s->fsal ? 0 : m->fsal_other;
             *t += h;
+            if (m->predict && s->err_last > 0) {
+                /* err ≈ C·h^(1/expo) with C extrapolated from the last step:
+                 * equal to grow while C stays the same, smaller while it grows
+                 * (an orbit falling towards its pericentre) */
+                double trend = m->safety * (h / s->h_last) * pow(s->err_last / (err * err), m->expo);
+                grow = fmin(grow, trend);
+            }
             s->h_last = h;
+            s->err_last = m->predict ? fmax(0.01, err) : 0;
             s->h_next = h * fmin(m->fac_max, fmax(m->fac_min, grow));
             if (m->hold && rejected && s->h_next > h)
                 s->h_next = h;

@@ -64,6 +64,9 @@ typedef struct sw_adaptive {
     int hairer_norm;   /* DOP853's norm from err and err3 (else the RMS of err) */
     int hold;          /* after a rejection, the accepted step does not grow (DOP853) */
     int guess_first;   /* choose the first step (Hairer's HINIT) instead of h_max */
+    int predict;       /* Gustafsson's predictive control, as in RADAU5: an accepted
+                        * step's proposal is also at most what the change of the
+                        * error constant over the last two accepted steps predicts */
 } sw_adaptive;
 
 /* One accepted step of at most h_max; 0, or SW_EDIVERGED when the step size

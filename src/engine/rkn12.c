@@ -189,6 +189,7 @@ static const sw_adaptive rkn12 = {
     .fac_max = 6.0,
     .hold = 1,
     .guess_first = 1,
+    .predict = 1, /* fewer rejections where the scale shrinks fast (issue 26) */
 };
 
 _Static_assert(RKN12_VECTORS == 21, "rkn12 needs 21 work vectors (integrators.c)");

@@ -23,6 +23,7 @@ struct sw_stepper {
     double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rkn12, rodas4) */
     double h_next;        /* adaptive: proposed size of the next step (0: use h) */
     double h_last;        /* size of the last step taken */
+    double err_last;      /* adaptive: the last accepted step's error norm, at least 0.01 (0: none) */
     long accepted;        /* adaptive: accepted steps */
     long rejected;        /* adaptive: rejected trial steps */
     long newton_iters;    /* implicit: Newton iterations, summed */

@@ -15,6 +15,7 @@ struct sw_history_meta {
     double t;
     long steps, evals;
     double h_next, h_last;    /* the adaptive controller's proposal, the last step */
+    double err_last;          /* ... and the last accepted step's error norm */
     long accepted, rejected, newton_iters;
     int have_cache, fsal;     /* the FSAL derivative (kept in the vector's second half) */
     long located;             /* events located so far, and the last one's time */
@@ -67,7 +68,7 @@ void sw_history_push(sw_history *h, const sw_sim *s)
         memcpy(v + 2 * dim, s->sys.extra, (size_t)h->nextra * sizeof *v);
     h->meta[h->head] = (struct sw_history_meta){
         .t = s->t, .steps = s->steps, .evals = s->sys.ode->evals,
-        .h_next = st->h_next, .h_last = st->h_last,
+        .h_next = st->h_next, .h_last = st->h_last, .err_last = st->err_last,
         .accepted = st->accepted, .rejected = st->rejected, .newton_iters = st->newton_iters,
         .have_cache = st->have_cache, .fsal = st->fsal,
         .located = sw_sim_events_located(s), .last_event = sw_sim_events_last_time(s),
@@ -107,6 +108,7 @@ static void restore(const sw_history *h, int i, sw_sim *s)
     s->sys.ode->evals = m->evals;
     st->h_next = m->h_next;
     st->h_last = m->h_last;
+    st->err_last = m->err_last;
     st->accepted = m->accepted;
     st->rejected = m->rejected;
     st->newton_iters = m->newton_iters;

@@ -144,6 +144,7 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
     }
     s->dt = dt;
     s->stepper->h_next = 0;
+    s->stepper->err_last = 0;
     return SW_OK;
 }
 

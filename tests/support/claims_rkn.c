@@ -182,7 +182,7 @@ const claim sw_claims_r[] = {
     { L9, "target, rkn12 (press %) spends", key_percent, EXACT, 0, "'%' picks rkn12", cl_one },
     { L9, "spends {17} evaluations a step on 12th order", rkn12_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { L9, "spends 17 evaluations a step on {12}th order", rkn12_order, ABS, 0.5, "as the README's row", NULL },
-    { L9, "within 1e-8 it needs about {1500}, dop853", tight_rkn12, ABS, 50, R_HUNDRED, NULL },
+    { L9, "within 1e-8 it needs about {1100}, dop853", tight_rkn12, ABS, 50, R_HUNDRED, NULL },
     { L9, "dop853 about {3300} and rkn about 4200", tight_dop853, ABS, 50, R_HUNDRED, NULL },
     { L9, "dop853 about 3300 and rkn about {4200}", tight_rkn, ABS, 50, R_HUNDRED, NULL },
     { README, "refused where a force reads velocities | {6} | 5", rkn_order, ABS, 0.3, "fixed steps on the e = 0.5 orbit, 200 to 400 a period: 5.9", NULL },

@@ -12,9 +12,12 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/ode_fast.h"
 #include "engine/rkn12_tableau.h"
+#include "engine/stepper.h"
 #include "nystrom.h"
 #include "nystrom_run.h"
+#include "stepwise/base.h"
 
 /* ---- the tableau, in long double ---------------------------------------------- */
 
@@ -99,6 +102,69 @@ END_TEST
  * 0.05 on orbits at e = 0, 0.5, 0.9, one particle each and three side by
  * side). */
 START_TEST(one_particle_entry_same_bits) { nys_one_particle_same_bits("rkn12"); }
+END_TEST
+
+/* On the orbit (one particle in one central field alone) the one-particle
+ * entry computes the field inline (sw_ode_fast's central1) instead of
+ * calling the derivative: the same bits, steps and rejections as through
+ * the derivative, on a field whose numbers are all distinct from 1 (mass
+ * 2.5, μ = 1.7, centre (0.3, -0.2)), 300 steps under control at 1e-10,
+ * the second run on a copy of the system with central1 taken away. And
+ * only that system offers it: not with a second force, nor two particles. */
+static void inline_field_run(int inline_field, double y[4], long counts[3])
+{
+    sw_particles p;
+    sw_stepper s;
+    sw_central1 c;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(&p, 1, 2.5, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_add_central(&p, 0.3, -0.2, 1.7), SW_OK);
+    p.y[0] = 0.3 + 0.2, p.y[1] = -0.2, p.y[2] = 0.0, p.y[3] = 3.5;
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    struct sw_ode_fast without = *p.ode.fast;
+    without.central1 = NULL;
+    sw_ode ode = p.ode;
+    if (!inline_field)
+        ode.fast = &without;
+    ck_assert_int_eq(sw_ode_central1(&ode, &c), inline_field);
+    if (inline_field)
+        ck_assert(c.cx == 0.3 && c.cy == -0.2 && c.mu == 1.7 && c.mass == 2.5 && c.inv == 1 / 2.5);
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("rkn12"), &ode, err, sizeof err), SW_OK);
+    s.rtol = s.atol = 1e-10;
+    double t = 0;
+    for (int j = 0; j < 300; j++)
+        ck_assert_int_eq(sw_stepper_step(&s, &ode, &t, p.y, 1e9), SW_OK);
+    memcpy(y, p.y, 4 * sizeof *y);
+    counts[0] = s.accepted, counts[1] = s.rejected, counts[2] = ode.evals;
+    sw_stepper_free(&s);
+    sw_particles_free(&p);
+}
+
+START_TEST(orbit_field_inline_same_bits)
+{
+    double a[4], b[4];
+    long ca[3], cb[3];
+    inline_field_run(1, a, ca);
+    inline_field_run(0, b, cb);
+    ck_assert_msg(memcmp(a, b, sizeof a) == 0, "inline (%.17g, %.17g), through the derivative (%.17g, %.17g)", a[0],
+                  a[1], b[0], b[1]);
+    ck_assert(ca[0] == cb[0] && ca[1] == cb[1] && ca[2] == cb[2]);
+    ck_assert_int_gt(ca[1], 0); /* the run did reject trials: a path the two share too */
+    sw_particles p;
+    sw_central1 c;
+    char err[SW_ERRLEN];
+    for (int other = 0; other < 2; other++) {
+        ck_assert_int_eq(sw_particles_init(&p, 1 + other, 1.0, err, sizeof err), SW_OK);
+        ck_assert_int_eq(sw_particles_add_central(&p, 0, 0, 1.0), SW_OK);
+        if (!other)
+            ck_assert_int_eq(sw_particles_add_gravity(&p, 0.0, -1.0), SW_OK);
+        p.y[0] = 1.0;
+        p.y[2] = 2.0;
+        ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+        ck_assert_int_eq(sw_ode_central1(&p.ode, &c), 0);
+        sw_particles_free(&p);
+    }
+}
 END_TEST
 
 /* ---- observed orders --------------------------------------------------------------- */
@@ -214,6 +280,7 @@ Suite *make_rkn12_suite(void)
     tcase_add_test(tc, order_conditions);
     tcase_add_test(tc, engine_is_the_tableau);
     tcase_add_test(tc, one_particle_entry_same_bits);
+    tcase_add_test(tc, orbit_field_inline_same_bits);
     tcase_add_test(tc, observed_orders);
     tcase_add_test(tc, tolerance_proportional);
     tcase_add_test(tc, fewer_evaluations_when_tight);

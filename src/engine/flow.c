@@ -83,12 +83,12 @@ static unsigned flow_rk4(void *ctx, double t, double *y, double h, unsigned elim
 }
 
 /* The fast paths: slices always; the fused steps the field offers
- * (index: 1 Euler's, 2 RK4's). */
+ * (index: 1 Euler's, 2 RK4's). First order: no position_only, no central1. */
 static const struct sw_ode_fast fast_paths[4] = {
-    { flow_deriv_part, NULL, NULL, NULL },
-    { flow_deriv_part, flow_euler, NULL, NULL },
-    { flow_deriv_part, NULL, flow_rk4, NULL },
-    { flow_deriv_part, flow_euler, flow_rk4, NULL }, /* (first order: no position_only) */
+    { .deriv_part = flow_deriv_part },
+    { .deriv_part = flow_deriv_part, .fused_euler = flow_euler },
+    { .deriv_part = flow_deriv_part, .fused_rk4 = flow_rk4 },
+    { .deriv_part = flow_deriv_part, .fused_euler = flow_euler, .fused_rk4 = flow_rk4 },
 };
 
 int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, const void *params,

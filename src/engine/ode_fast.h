@@ -7,6 +7,7 @@
 #ifndef SW_ENGINE_ODE_FAST_H
 #define SW_ENGINE_ODE_FAST_H
 
+#include "engine/central.h"
 #include "stepwise/ode.h"
 
 /* For pointwise systems, where each point's derivative depends only on that
@@ -30,6 +31,11 @@ struct sw_ode_fast {
      * some force uses velocities (drag, spring damping). NULL: unknown,
      * taken as 0. */
     int (*position_only)(const void *ctx);
+    /* One particle in one central field and no other force (the orbit):
+     * 1, and the field and the particle into *c, for a method to compute
+     * the acceleration inline (sw_central1_accel, the same bits as the
+     * derivative's) instead of calling the derivative. NULL or 0: no. */
+    int (*central1)(const void *ctx, sw_central1 *c);
 };
 
 /* The fast path of ode, or NULL. */
@@ -42,6 +48,12 @@ static inline sw_deriv_part_fn *sw_ode_deriv_part(const sw_ode *ode)
 static inline int sw_ode_position_only(const sw_ode *ode)
 {
     return ode->fast && ode->fast->position_only && ode->fast->position_only(ode->ctx);
+}
+
+/* 1 when ode is one particle in one central field alone, with *c set. */
+static inline int sw_ode_central1(const sw_ode *ode, sw_central1 *c)
+{
+    return ode->fast && ode->fast->central1 && ode->fast->central1(ode->ctx, c);
 }
 
 static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)

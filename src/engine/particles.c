@@ -15,6 +15,7 @@
 #include "engine/forces.h"
 #include "engine/ode_fast.h"
 #include "engine/particles_deriv.h"
+#include "engine/particles_small.h"
 #include "engine/particles_solve.h"
 #include "stepwise/base.h"
 
@@ -31,8 +32,15 @@ static int position_only(const void *ctx)
     return 1;
 }
 
-/* No slices, no fused steps: only the fact above. */
-static const struct sw_ode_fast particles_fast = { .position_only = position_only };
+/* The orbit's field and particle, when the small path is that alone. */
+static int central1(const void *ctx, sw_central1 *c)
+{
+    const sw_particles *p = ctx;
+    return swp_deriv_is_small(p) && swp_small_central1(p, c);
+}
+
+/* No slices, no fused steps: the fact above, and the orbit's numbers. */
+static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1 };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {

@@ -67,12 +67,11 @@ SW_INLINE void small_eval(const sw_particles *p, const double *restrict y, doubl
             fx += m->sign[e] * force[m->spring[e]];
             fy += m->sign[e] * force[m->spring[e] + 1];
         }
-        if (central) { /* as the central kind's add (force_fields.c) */
-            double dx = x[2 * i] - cx, dy = x[2 * i + 1] - cy;
-            double r2 = dx * dx + dy * dy;
-            double s = -mu * mass[i] / (r2 * sqrt(r2));
-            fx += s * dx;
-            fy += s * dy;
+        if (central) {
+            double cfx, cfy;
+            sw_central_force(cx, cy, mu, mass[i], x[2 * i], x[2 * i + 1], &cfx, &cfy);
+            fx += cfx;
+            fy += cfy;
         }
         if (gravity) {
             fx += mass[i] * gx;
@@ -109,6 +108,16 @@ SMALL_ALL(1)
 
 /* [one particle][springs · 2 + damped][central][gravity · 2 + drag] */
 static swp_small_fn *const small_table[2][3][2][4] = { TABLE(0), TABLE(1) };
+
+int swp_small_central1(const sw_particles *p, sw_central1 *c)
+{
+    const struct sw_particles_model *m = p->model;
+    if (m->small != small_100100)
+        return 0;
+    const sw_force *f = &p->forces[m->extra[0]];
+    *c = (sw_central1){ .cx = f->cx, .cy = f->cy, .mu = f->mu, .mass = p->mass[0], .inv = p->inv_mass[0] };
+    return 1;
+}
 
 swp_small_fn *swp_small_pick(const sw_particles *p)
 {

@@ -3,6 +3,7 @@
 #ifndef SW_ENGINE_PARTICLES_SMALL_H
 #define SW_ENGINE_PARTICLES_SMALL_H
 
+#include "engine/central.h"
 #include "engine/particles_model.h"
 
 /* Largest system the small path takes: particles, and springs in all. */
@@ -13,5 +14,9 @@
  * limits above or has a force it does not model (anything but springs, one
  * central field, the fused gravity and drag). */
 swp_small_fn *swp_small_pick(const sw_particles *p);
+
+/* 1, and the field and the particle into *c, when p's compiled small path
+ * is one particle in one central field and no other force; else 0. */
+int swp_small_central1(const sw_particles *p, sw_central1 *c);
 
 #endif

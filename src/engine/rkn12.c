@@ -115,7 +115,13 @@ SW_CLONES static void rkn12_range(RKN12_ARGS) { rkn12_body(RKN12_PASS(d)); }
  * its evaluation, and each sum kept in registers (the loops of the general
  * body are not vectorised at d = 2). Lane-wise IEEE operations, in the
  * same order as rkn12_body's: the same bits (one_particle_entry_same_bits
- * in tests/check_rkn12.c). Not cloned, as rkn_range2 is not. */
+ * in tests/check_rkn12.c). Not cloned, as rkn_range2 is not.
+ *
+ * On the orbit (one particle in one central field alone) a stage computes
+ * a_j inline with the derivative's own arithmetic (engine/central.h), so
+ * a stage's state and acceleration stay in registers: no call, no trip
+ * through memory between the stages' sums and the field; the same bits
+ * again (orbit_field_inline_same_bits). */
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 
 static inline v2d load2(const double *p)
@@ -125,15 +131,27 @@ static inline v2d load2(const double *p)
     return v;
 }
 
+/* a at X: inline from the field, or through the derivative into k. */
+SW_INLINE v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, double t, double *yt, v2d X, double *k)
+{
+    if (field) {
+        double ax, ay;
+        sw_central1_accel(field, canon, X[0], X[1], &ax, &ay);
+        return (v2d){ ax, ay };
+    }
+    memcpy(yt, &X, sizeof X);
+    sw_eval_slice(ode, t, 4, yt, k);
+    return load2(k + 2);
+}
+
 #define F(j, w) (v2d){ (w), (w) } * A##j
 #define T(j, w) +(v2d){ (w), (w) } * A##j
 #define STAGE(st, c, terms)                                                                               \
     const v2d X##st = x + (v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
-    memcpy(yt, &X##st, sizeof X##st);                                                                     \
-    sw_eval_slice(ode, t + (c) * h, 4, yt, k[(st) - 1]);                                                  \
-    const v2d A##st = load2(k[(st) - 1] + 2);
+    const v2d A##st = accel2(ode, field, canon, t + (c) * h, yt, X##st, k[(st) - 1]);
 
-static void rkn12_range2(RKN12_ARGS)
+/* field: NULL (call the derivative), or the orbit's, canon a constant. */
+SW_INLINE void rkn12_one(RKN12_ARGS, const sw_central1 *field, int canon)
 {
     (void)d;
     const v2d hh = { h * h, h * h }, hv = { h, h }, x = load2(y), v = load2(y + 2), A1 = load2(k[0] + 2);
@@ -154,9 +172,34 @@ static void rkn12_range2(RKN12_ARGS)
     memcpy(saved + 2, &v, sizeof v);
     memcpy(y, &x1, sizeof x1);
     memcpy(y + 2, &v1, sizeof v1);
-    sw_eval_slice(ode, t + h, 4, y, k[S]);
+    if (field) { /* [v | a] at the new state, as the derivative writes it */
+        memcpy(k[S], &v1, sizeof v1);
+        const v2d a1 = accel2(ode, field, canon, t + h, yt, x1, k[S]);
+        memcpy(k[S] + 2, &a1, sizeof a1);
+    } else {
+        sw_eval_slice(ode, t + h, 4, y, k[S]);
+    }
     sums->err = sw_add_by4(sums->part[0], q, 4);
     sums->beyond |= sw_beyond_any(over);
+}
+
+/* Three entries, not inlined, so that the one a run takes holds only its
+ * own code (each some 7 KB). */
+#define ONE_ENTRY static __attribute__((noinline)) void
+ONE_ENTRY rkn12_called(RKN12_ARGS) { rkn12_one(RKN12_PASS(d), NULL, 0); }
+ONE_ENTRY rkn12_field(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 0); }
+ONE_ENTRY rkn12_canon(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 1); }
+#undef ONE_ENTRY
+
+static void rkn12_range2(RKN12_ARGS)
+{
+    sw_central1 field;
+    if (!sw_ode_central1(ode, &field))
+        rkn12_called(RKN12_PASS(d));
+    else if (sw_central1_canon(&field))
+        rkn12_canon(RKN12_PASS(d), &field);
+    else
+        rkn12_field(RKN12_PASS(d), &field);
 }
 
 #undef STAGE

@@ -319,20 +319,23 @@ static double deriv_seconds(problem *pb)
     return best;
 }
 
-/* Whether stepwise's candidate c takes its steps fused with the field
- * (then its evaluations do not call the derivative). */
+/* Whether stepwise's candidate c takes its steps fused with the field, or
+ * computes the orbit's field inline (rkn12 on one particle in one central
+ * field): then its evaluations do not call the derivative. */
 static int fused(const problem *pb, const candidate *c)
 {
     const sw_ode *ode = pb->sys.ode;
+    sw_central1 field;
     return c->m && ((strcmp(c->name, "rk4") == 0 && sw_ode_fused_rk4(ode)) ||
-                    (strcmp(c->name, "euler") == 0 && sw_ode_fused_euler(ode)));
+                    (strcmp(c->name, "euler") == 0 && sw_ode_fused_euler(ode)) ||
+                    (strcmp(c->name, "rkn12") == 0 && sw_ode_central1(ode, &field)));
 }
 
 /* Paired, interleaved timing of the two cheapest runs: medians and spreads;
  * and the floor no method making a's evaluations through the derivative
  * can go below, whatever its own work: a's evaluations times the
  * derivative's cost, over b's time (both libraries call the same
- * derivative; "-" where a's steps are fused with the field). */
+ * derivative; "-" where a does not call it: see fused). */
 static void side_by_side(problem *pb, const candidate *a, const candidate *b, double target, int repeats,
                          char *line, size_t len)
 {
@@ -465,7 +468,7 @@ void bench_peer(const bench_peer_opts *o)
         printf("\n  side by side: the cheapest of each, %d paired, interleaved runs; medians (min-max);\n"
                "  floor: stepwise's evaluations times the derivative's own cost (least of 5 timed batches),\n"
                "  over GSL's time: the ratio no method calling the derivative that often can go below\n"
-               "  (-: steps fused with the field, which do not call it)\n"
+               "  (-: steps fused with the field, or the orbit's field inline, which do not call it)\n"
                "  | problem | stepwise best, ms | GSL best, ms | time ratio | evaluations ratio | floor | goal |\n"
                "  | --- | --- | --- | --- | --- | --- | --- |\n", repeats);
         for (int i = 0; i < nsummary; i++)

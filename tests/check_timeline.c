@@ -11,6 +11,8 @@
 #include "stepwise/stepwise.h"
 #include "app/app.h"
 #include "app/runner.h"
+#include "engine/stepper.h"
+#include "sim/history.h"
 
 #define LESSONS_DIR "lessons"
 
@@ -121,7 +123,8 @@ static void same(const kept *k, const sw_sim *s, const char *what, int at)
  * the way equal to the forward run's, bit for bit), then forward again:
  * the same states as the first time, bit for bit, for methods that carry
  * memory between steps (Verlet's, yoshida4's, rk45's and rkn's FSAL derivative, the
- * adaptive methods' step proposal), implicit ones, a scene with events located
+ * adaptive methods' step proposal; rkn12 under predictive control),
+ * implicit ones, a scene with events located
  * (bounce), one with scene data (fireworks' sparks), and compare's runs. */
 START_TEST(rewind_bit_for_bit)
 {
@@ -129,14 +132,14 @@ START_TEST(rewind_bit_for_bit)
         { "spring", "verlet", 0, 0, 0 }, { "spring", "rk45", 0.5, 0, 0 }, { "orbit", "dop853", 1, 0, 0 },
         { "stiff-spring", "implicit-euler", 0, 0, 0 }, { "bounce", "rk4", 0, 0, 1 },
         { "fireworks", "heun", 0, 0, 0 }, { "spring", "euler", 0, 1, 0 }, { "orbit", "yoshida4", 0, 0, 0 },
-        { "chain", "rkn", 0.5, 0, 0 },
+        { "chain", "rkn", 0.5, 0, 0 }, { "orbit", "rkn12", 1, 0, 0 },
     };
     enum { N = 300, BACK = 120 };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         sw_app a;
         char what[80];
         snprintf(what, sizeof what, "%s %s", cases[c].scene, cases[c].method);
-        app_on(&a, cases[c].scene, cases[c].method, cases[c].dt); /* rk45, dop853: steps below dt */
+        app_on(&a, cases[c].scene, cases[c].method, cases[c].dt); /* rk45, dop853, rkn12: steps below dt */
         if (cases[c].locate)
             sw_app_set_events(&a, SW_EVENTS_LOCATE);
         if (cases[c].compare)
@@ -173,6 +176,38 @@ START_TEST(rewind_bit_for_bit)
         free(fwd);
         sw_app_free(&a);
     }
+}
+END_TEST
+
+/* A snapshot holds the adaptive controller's memory: the step proposal,
+ * the last step and the last accepted error (rkn12's predictive control
+ * reads it). At a frame's end the last step is mostly cut short, so its
+ * error is floored at 0.01 and a rewind through frames seldom sees the
+ * last error at all: here it is set to a value a step could leave, kept,
+ * changed by stepping on, and must come back. */
+START_TEST(snapshot_keeps_controller_memory)
+{
+    sw_sim s;
+    sw_history h;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_sim_init(&s, sw_scene_find("orbit"), NULL, sw_integrator_find("rkn12"), 1.0, err, sizeof err),
+                     SW_OK);
+    sw_history_init(&h, &s);
+    ck_assert_int_gt(h.cap, 0);
+    ck_assert_int_eq(sw_sim_step_until(&s, 1.0), 0);
+    s.stepper->err_last = 0.37;
+    const double t = s.t, h_next = s.stepper->h_next, h_last = s.stepper->h_last;
+    sw_history_push(&h, &s);
+    for (int k = 2; k <= 5; k++) {
+        ck_assert_int_eq(sw_sim_step_until(&s, (double)k), 0);
+        sw_history_push(&h, &s);
+    }
+    ck_assert(s.stepper->err_last != 0.37);
+    ck_assert_int_eq(sw_history_back_to(&h, &s, t), 1);
+    ck_assert(s.t == t && s.stepper->h_next == h_next && s.stepper->h_last == h_last);
+    ck_assert_double_eq(s.stepper->err_last, 0.37);
+    sw_history_free(&h);
+    sw_sim_free(&s);
 }
 END_TEST
 
@@ -304,6 +339,7 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, until_lands_exactly);
     tcase_add_test(tc, until_key_runs_there);
     tcase_add_test(tc, rewind_bit_for_bit);
+    tcase_add_test(tc, snapshot_keeps_controller_memory);
     tcase_add_test(tc, rewind_follows_and_bounds);
     tcase_add_test(tc, lesson_page_until);
     tcase_add_test(tc, record_to_stop_time);

@@ -1,8 +1,9 @@
 /* Private to the engine: a central field's pull on one particle as one
- * inline function, so that the small particle derivative (particles_small.c)
- * and a method stepping a lone particle in a lone field with no call
- * (rkn12.c, through sw_ode_fast's central1) compute it with the same
- * operations in the same order: the same bits. */
+ * inline function, so that the central kind's add (force_fields.c), the
+ * small particle derivative (particles_small.c) and a method stepping a
+ * lone particle in a lone field with no call (rkn12.c, through
+ * sw_ode_fast's central1) compute it with the same operations in the same
+ * order: the same bits. */
 #ifndef SW_ENGINE_CENTRAL_H
 #define SW_ENGINE_CENTRAL_H
 
@@ -17,7 +18,7 @@ typedef struct sw_central1 {
 } sw_central1;
 
 /* The force -mu·m/r³·d on a particle of mass m at (x, y), d its offset from
- * the centre, as the central kind's add computes it (force_fields.c). */
+ * the centre. */
 SW_INLINE void sw_central_force(double cx, double cy, double mu, double m, double x, double y, double *fx,
                                 double *fy)
 {

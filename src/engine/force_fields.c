@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "engine/central.h"
+
 static long no_pairs(const sw_particles *p, const sw_force *fo, int *reach)
 {
     (void)p, (void)fo;
@@ -75,11 +77,10 @@ static void central_add(const sw_particles *p, const sw_force *fo, const double 
 {
     (void)v;
     for (int i = 0; i < p->n; i++) {
-        double dx = x[2 * i] - fo->cx, dy = x[2 * i + 1] - fo->cy;
-        double r2 = dx * dx + dy * dy;
-        double s = -fo->mu * p->mass[i] / (r2 * sqrt(r2));
-        f[2 * i] += s * dx;
-        f[2 * i + 1] += s * dy;
+        double fx, fy;
+        sw_central_force(fo->cx, fo->cy, fo->mu, p->mass[i], x[2 * i], x[2 * i + 1], &fx, &fy);
+        f[2 * i] += fx;
+        f[2 * i + 1] += fy;
     }
 }
 

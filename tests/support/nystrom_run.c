@@ -284,3 +284,20 @@ void nys_refuses_velocity_forces(const char *method)
     ck_assert_int_eq(sw_sim_init(&sim, sw_scene_find("vortex"), NULL, m, 0.01, err, sizeof err), SW_EINVAL);
     ck_assert_msg(strstr(err, "first-order"), "flow message: %s", err);
 }
+
+void nys_tolerance_proportional(const char *method, double tol0)
+{
+    for (int k = 0; k < 2; k++) {
+        double prev = NAN;
+        for (int j = 0; j < 4; j++) {
+            double tol = tol0 * pow(1e-2, j);
+            long evals;
+            double e = nys_controlled(method, k, 0.5, k ? 2 * M_PI : 30.0, tol, &evals, NULL);
+            ck_assert_msg(e <= 100 * tol, "%s, %s tol %g: error %g", method, k ? "orbit" : "oscillator", tol, e);
+            if (j > 0)
+                ck_assert_msg(e < prev / 20 && e > prev / 1000, "%s, %s tol %g: error %g after %g", method,
+                              k ? "orbit" : "oscillator", tol, e, prev);
+            prev = e;
+        }
+    }
+}

@@ -57,6 +57,12 @@ void nys_one_particle_same_bits(const char *method);
 double nys_controlled(const char *method, int kepler_orbit, double e, double T, double tol, long *evals,
                       double steps[4]);
 
+/* Tolerance proportionality (ck_assert): at tol = tol0, tol0/100, ..., four
+ * tolerances, on the oscillator over t = 30 and the orbit at e = 0.5 over
+ * one period, the error at the end is below 100 × tol and each 100×
+ * tighter tolerance cuts it by 20 .. 1000×. */
+void nys_tolerance_proportional(const char *method, double tol0);
+
 /* Damping, drag and a flow field refused with a one-line message naming
  * why and what to use; undamped springs and k = 0 drag accepted
  * (ck_assert). */

@@ -52,6 +52,7 @@ int sw_truth_init(sw_truth *tr, const sw_scene *sc, const double *p, char *err, 
     if (rc != SW_OK)
         return rc;
     tr->source = sw_truth_source_of(&tr->sys, tr->why, sizeof tr->why);
+    tr->frame = sc->dt;
     tr->y = malloc((size_t)tr->sys.ode->dim * sizeof *tr->y);
     if (!tr->y) {
         sw_system_free(&tr->sys);
@@ -80,7 +81,7 @@ static int start_reference(sw_truth *tr)
         sw_sim_free(&tr->ref);
     tr->have_ref = 0;
     const sw_scene *sc = tr->sys.scene;
-    if (sw_sim_init(&tr->ref, sc, tr->sys.p, sw_truth_reference_method(), sc->dt, err, sizeof err) != SW_OK)
+    if (sw_sim_init(&tr->ref, sc, tr->sys.p, sw_truth_reference_method(), tr->frame, err, sizeof err) != SW_OK)
         return -1;
     sw_sim_set_tolerances(&tr->ref, SW_TRUTH_RTOL, SW_TRUTH_ATOL);
     if (sw_sim_set_events(&tr->ref, SW_EVENTS_LOCATE, err, sizeof err) != SW_OK) {

@@ -50,6 +50,8 @@ typedef struct sw_truth {
     sw_system sys;        /* a private copy of the scene (exact() reads its parameters) */
     sw_sim ref;           /* the reference run (REFERENCE) */
     int have_ref, failed;
+    double frame;         /* the reference run's frame (its largest step): the scene's dt, or
+                           * longer when only far-apart times are asked for; set before the first */
     double *y;            /* the state at time t (sys.ode->dim doubles) */
     double t;             /* NaN: none computed yet */
     char why[SW_ERRLEN];  /* see sw_truth_source_of */

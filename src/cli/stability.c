@@ -9,6 +9,7 @@
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -52,8 +53,9 @@ static const char usage_text[] =
     "  --set NAME=VALUE    change a scene parameter, e.g. --set c=0 (undamped spring)\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
     "  --all               every scene where growth can be judged, default parameters\n"
-    "  -j, --jobs N        with --all: scenes measured N at once, 1 to 64 (default: the\n"
-    "                      online cores, at most 8); the report is the same for every N\n"
+    "  -j, --jobs N        with --all: N measurements at once (a method on a measured\n"
+    "                      scene, or a theory-only scene), 1 to 64 (default: the\n"
+    "                      online cores, at most 8); the same report for every N\n"
     "  --markdown          a Markdown table (docs/stability.md is made this way)\n"
     "\n"
     "Each probe runs for a fixed simulated time, so slow growth at small dt has as\n"
@@ -90,16 +92,17 @@ static void wdt_text(double stiff, double dt, int kind_none, int kind_unbounded,
 
 /* Refuse a report above the work budget before any run starts. */
 /* What the report on sc would cost, in state evaluations. */
-static double report_cost(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
+static double report_cost(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods,
+                          double *each)
 {
     sw_stability_config cfg;
     sw_stability_config_default(&cfg);
-    return sw_stability_cost_sum(sc, p, methods, nmethods, &cfg);
+    return sw_stability_cost_sum(sc, p, methods, nmethods, &cfg, each);
 }
 
 static int within_budget(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods)
 {
-    double cost = report_cost(sc, p, methods, nmethods);
+    double cost = report_cost(sc, p, methods, nmethods, NULL);
     if (cost <= SW_WORK_REPORT)
         return 1;
     sw_cli_error("stability on %s would cost about %.2g state evaluations (%d method%s), over the budget of "
@@ -108,14 +111,11 @@ static int within_budget(const sw_scene *sc, const double *p, const sw_integrato
     return 0;
 }
 
-/* One scene: a row per method. Returns 0, or 1 when a run failed to start. */
-static int report(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods,
-                  int markdown)
+/* One scene's heading: its parameters, what the report can say, the
+ * table's header. */
+static void report_head(const sw_scene *sc, const double *p, int markdown)
 {
-    sw_stability_config cfg;
-    sw_stability_config_default(&cfg);
     char err[SW_ERRLEN];
-    int status = 0;
     if (markdown) {
         printf("\n### %s (", sc->name);
         for (int i = 0; i < sc->nparams; i++)
@@ -146,7 +146,18 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
         printf("  %-22s %-12s %-10s %-34s %-10s\n", "method", "theory dt", "|L|*dt", "measured dt",
                "|L|*dt");
     }
-    for (int i = 0; i < nmethods; i++) {
+}
+
+/* The rows of methods[lo..hi) on one scene. Returns 0, or 1 when a run
+ * failed to start. */
+static int report_rows(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int lo, int hi,
+                       int markdown)
+{
+    sw_stability_config cfg;
+    sw_stability_config_default(&cfg);
+    char err[SW_ERRLEN];
+    int status = 0;
+    for (int i = lo; i < hi; i++) {
         const sw_integrator *m = methods[i];
         sw_stability_result r;
         int rc = sw_stability_find(sc, p, m, &cfg, &r, err, sizeof err);
@@ -187,18 +198,29 @@ static int report(const sw_scene *sc, const double *p, const sw_integrator *cons
     return status;
 }
 
-/* One scene of --all at its defaults: its report, or a line saying it is
- * over the budget. cost: report_cost's, when the caller has it, else NAN.
- * 1 when report() found a disagreement. */
-static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int nmethods, int markdown,
+/* One scene: a row per method. Returns 0, or 1 when a run failed to start. */
+static int report(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int nmethods,
+                  int markdown)
+{
+    report_head(sc, p, markdown);
+    return report_rows(sc, p, methods, 0, nmethods, markdown);
+}
+
+/* Rows lo..hi of one scene of --all at its defaults, the heading with row 0:
+ * its report, or (all its rows at once) a line saying it is over the
+ * budget. cost: report_cost's, when the caller has it, else NAN. 1 when a
+ * run failed to start. */
+static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int lo, int hi, int markdown,
                    double cost)
 {
     double p[SW_MAX_PARAMS];
     char why[SW_ERRLEN];
     sw_scene_fill(sc, NULL, p);
+    if (lo > 0)
+        return report_rows(sc, p, methods, lo, hi, markdown);
     /* (theory only is cheap: no probe runs) */
     if (sw_stability_measurable(sc, p, why, sizeof why) &&
-        (cost = isnan(cost) ? report_cost(sc, p, methods, nmethods) : cost) > SW_WORK_REPORT) {
+        (cost = isnan(cost) ? report_cost(sc, p, methods, hi, NULL) : cost) > SW_WORK_REPORT) {
         int has_n = sw_scene_param_index(sc, "n") >= 0;
         printf(markdown ? "\n### %s\n\nNot measured: it would cost about %.2g state evaluations, "
                           "over the budget of %.0e%s%s%s.\n"
@@ -208,65 +230,156 @@ static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int 
                has_n ? sc->name : "", has_n ? " --set n=10)" : "");
         return 0;
     }
-    return report(sc, p, methods, nmethods, markdown);
+    report_head(sc, p, markdown);
+    return report_rows(sc, p, methods, 0, hi, markdown);
 }
 
-/* --all: the scenes measured `jobs` at once, each in a child process that
- * writes its report to a temporary file; the reports are printed in the
- * catalog's order, so the output is the same bytes for every jobs (each
- * scene's measurement depends on nothing but the scene). 1 when a report
- * found a disagreement, 2 when a child failed (said on stderr). */
+/* A piece of --all: rows lo..hi of one scene, measured in a child process
+ * that writes them to a temporary file, read back when it is done. */
+typedef struct piece {
+    int scene, lo, hi;
+    const char *method; /* its one method's name, or NULL: the whole scene */
+    double cost;       /* this piece's estimate: the order only */
+    double scene_cost; /* the scene's: its budget */
+    int state;         /* 0 waiting, 1 running, 2 done */
+    pid_t pid;
+    int code;          /* the child's exit status; 2 when it failed */
+    FILE *tmp;
+    char *text;        /* what it printed */
+    size_t len;
+} piece;
+
+/* The pieces, in the report's order. A measured scene is a piece per
+ * method (its probes are its cost, so two cores share the chain's ten
+ * methods); a theory-only scene is one piece, since its methods share one
+ * reference run (the gyre's 400 points: most of its time), and so is a
+ * scene over the budget (one line). NULL when out of memory. */
+static piece *plan(const sw_integrator *const *methods, int nmethods, int *count)
+{
+    int n = sw_scene_count(), k = 0;
+    piece *pc = calloc((size_t)n * (size_t)nmethods + 1, sizeof *pc);
+    for (int i = 0; pc && i < n; i++) {
+        const sw_scene *sc = sw_scene_at(i);
+        double p[SW_MAX_PARAMS], each[32];
+        char why[SW_ERRLEN];
+        sw_scene_fill(sc, NULL, p);
+        double cost = report_cost(sc, p, methods, nmethods, each);
+        int split = sw_stability_measurable(sc, p, why, sizeof why) && cost <= SW_WORK_REPORT;
+        for (int j = 0; j < (split ? nmethods : 1); j++)
+            pc[k++] = (piece){ .scene = i, .lo = split ? j : 0, .hi = split ? j + 1 : nmethods,
+                               .method = split ? methods[j]->name : NULL, .cost = split ? each[j] : cost,
+                               .scene_cost = cost, .code = 2 };
+    }
+    *count = k;
+    return pc;
+}
+
+static void start(piece *q, const sw_integrator *const *methods, int markdown)
+{
+    q->state = 2; /* unless it starts */
+    if (!(q->tmp = tmpfile())) {
+        sw_cli_note("stability: no temporary file for %s: %s", sw_scene_at(q->scene)->name, strerror(errno));
+        return;
+    }
+    fflush(stdout); /* nothing of the parent's repeated by the child */
+    q->pid = fork();
+    if (q->pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGKILL); /* never outlives the report */
+        int rc = dup2(fileno(q->tmp), STDOUT_FILENO) < 0
+                     ? 2 : all_one(sw_scene_at(q->scene), methods, q->lo, q->hi, markdown, q->scene_cost);
+        _exit(fflush(stdout) == 0 ? rc : 2);
+    }
+    if (q->pid < 0)
+        sw_cli_note("stability: could not start the measurement of %s: %s", sw_scene_at(q->scene)->name,
+                    strerror(errno));
+    else
+        q->state = 1;
+}
+
+/* A child is done: its exit status, and its report read back. */
+static void collect(piece *q, int wst)
+{
+    q->state = 2;
+    q->code = WIFEXITED(wst) ? WEXITSTATUS(wst) : 2;
+    size_t cap = 0;
+    rewind(q->tmp);
+    for (char buf[4096];;) {
+        size_t got = fread(buf, 1, sizeof buf, q->tmp);
+        if (got == 0)
+            break;
+        if (q->len + got > cap) {
+            char *t = realloc(q->text, cap = 2 * (q->len + got));
+            if (!t) {
+                q->code = 2;
+                break;
+            }
+            q->text = t;
+        }
+        memcpy(q->text + q->len, buf, got);
+        q->len += got;
+    }
+    if (ferror(q->tmp))
+        q->code = 2;
+}
+
+/* Print the pieces from `shown` on that are done, in order; the next not
+ * yet done stops it. Returns the new `shown`. */
+static int show(piece *pc, int count, int shown, int *status)
+{
+    for (; shown < count && pc[shown].state == 2; shown++) {
+        piece *q = &pc[shown];
+        if (q->code != 2)
+            fwrite(q->text, 1, q->len, stdout);
+        else
+            sw_cli_note("stability: the measurement of %s%s%s failed", sw_scene_at(q->scene)->name,
+                        q->method ? " with " : "", q->method ? q->method : "");
+        *status |= q->code == 1 ? 1 : q->code ? 2 : 0;
+        if (q->tmp)
+            fclose(q->tmp);
+        free(q->text);
+        q->tmp = NULL;
+        q->text = NULL;
+    }
+    fflush(stdout);
+    return shown;
+}
+
+/* --all: the scenes measured `jobs` pieces at once, the costliest first
+ * (longest-first scheduling: the last to finish is then a short one); the
+ * report is printed in the catalog's order as its pieces finish, so it is
+ * the same bytes for every jobs (each row depends on nothing but its scene
+ * and method). 1 when a report found a disagreement, 2 when a child failed
+ * (said on stderr). */
 static int all_scenes(const sw_integrator *const *methods, int nmethods, int markdown, int jobs)
 {
-    int n = sw_scene_count(), status = 0;
-    FILE *out[64];
-    pid_t pid[64];
-    int code[64];
-    if (jobs <= 1 || n > 64) {
-        for (int i = 0; i < n; i++)
-            status |= all_one(sw_scene_at(i), methods, nmethods, markdown, NAN);
+    int status = 0, count = 0;
+    if (jobs <= 1) {
+        for (int i = 0; i < sw_scene_count(); i++)
+            status |= all_one(sw_scene_at(i), methods, 0, nmethods, markdown, NAN);
         return status;
     }
-    /* the costliest first (longest-first scheduling): the last to finish
-     * is then a short one */
-    int order[64];
-    double cost[64];
-    for (int i = 0; i < n; i++) {
-        double p[SW_MAX_PARAMS];
-        sw_scene_fill(sw_scene_at(i), NULL, p);
-        cost[i] = report_cost(sw_scene_at(i), p, methods, nmethods);
+    piece *pc = plan(methods, nmethods, &count);
+    int *order = pc ? malloc((size_t)count * sizeof *order + 1) : NULL;
+    if (!order) {
+        free(pc);
+        sw_cli_note("stability: out of memory planning the report");
+        return 2;
+    }
+    for (int i = 0; i < count; i++) {
         order[i] = i;
-        for (int j = i; j > 0 && cost[order[j]] > cost[order[j - 1]]; j--) {
+        for (int j = i; j > 0 && pc[order[j]].cost > pc[order[j - 1]].cost; j--) {
             int t = order[j];
             order[j] = order[j - 1];
             order[j - 1] = t;
         }
     }
-    fflush(stdout);
-    int next = 0, running = 0;
-    for (int i = 0; i < n; i++)
-        out[i] = NULL;
-    while (next < n || running > 0) {
-        if (next < n && running < jobs) {
-            int i = order[next++];
-            pid[i] = -1;
-            code[i] = 2;
-            if (!(out[i] = tmpfile())) {
-                sw_cli_note("stability: no temporary file for %s: %s", sw_scene_at(i)->name, strerror(errno));
-                continue;
-            }
-            pid[i] = fork();
-            if (pid[i] == 0) {
-                prctl(PR_SET_PDEATHSIG, SIGKILL); /* never outlives the report */
-                int rc = dup2(fileno(out[i]), STDOUT_FILENO) < 0 ? 2
-                         : all_one(sw_scene_at(i), methods, nmethods, markdown, cost[i]);
-                _exit(fflush(stdout) == 0 ? rc : 2);
-            }
-            if (pid[i] < 0)
-                sw_cli_note("stability: could not start the measurement of %s: %s", sw_scene_at(i)->name,
-                            strerror(errno));
-            else
-                running++;
+    int next = 0, running = 0, shown = 0;
+    while (next < count || running > 0) {
+        if (next < count && running < jobs) {
+            piece *q = &pc[order[next++]];
+            start(q, methods, markdown);
+            running += q->state == 1;
+            shown = show(pc, count, shown, &status);
             continue;
         }
         int wst;
@@ -276,25 +389,18 @@ static int all_scenes(const sw_integrator *const *methods, int nmethods, int mar
                 continue;
             break;
         }
-        for (int k = 0; k < next; k++)
-            if (pid[order[k]] == done) {
-                int i = order[k];
-                code[i] = WIFEXITED(wst) ? WEXITSTATUS(wst) : 2;
+        for (int k = 0; k < count; k++)
+            if (pc[k].state == 1 && pc[k].pid == done) {
+                collect(&pc[k], wst);
                 running--;
             }
+        shown = show(pc, count, shown, &status);
     }
-    for (int i = 0; i < n; i++) {
-        if (out[i] && code[i] != 2) {
-            rewind(out[i]);
-            char buf[4096];
-            for (size_t got; (got = fread(buf, 1, sizeof buf, out[i])) > 0;)
-                fwrite(buf, 1, got, stdout);
-        } else
-            sw_cli_note("stability: the measurement of %s failed", sw_scene_at(i)->name);
-        if (out[i])
-            fclose(out[i]);
-        status |= code[i] == 1 ? 1 : code[i] ? 2 : 0;
-    }
+    for (int k = shown; k < count; k++)
+        pc[k].state = 2; /* (wait failed: none left to wait for) */
+    show(pc, count, shown, &status);
+    free(order);
+    free(pc);
     return status;
 }
 
@@ -328,7 +434,7 @@ int sw_cmd_stability(int argc, char **argv)
         } else if (strcmp(a, "--jobs") == 0 || strcmp(a, "-j") == 0) {
             long j;
             if (sw_parse_long(argv[++i], 1, 64, &j) != SW_OK)
-                return sw_cli_error("%s '%.40s' is not allowed: it takes a whole number of scenes measured at "
+                return sw_cli_error("%s '%.40s' is not allowed: it takes a whole number of measurements at "
                                     "once, 1 to 64", a, argv[i]);
             jobs = (int)j;
         } else if (strcmp(a, "--all") == 0)

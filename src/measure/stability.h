@@ -109,9 +109,10 @@ double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrato
 /* The sum of sw_stability_cost over methods[0..n) (adaptive ones left out,
  * as they have no limit to find), the same number, with the parts that
  * depend only on the scene (its stiffness, the reference run's pilot)
- * worked out once instead of once per method. */
+ * worked out once instead of once per method; each (NULL: not wanted)
+ * gets the n terms, 0 for a method left out. */
 double sw_stability_cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
-                             const sw_stability_config *c);
+                             const sw_stability_config *c, double *each);
 
 /* Theory and measurement of m's largest stable step on sc (theory alone
  * where growth cannot be measured). 0, or SW_EINVAL (an adaptive method, a

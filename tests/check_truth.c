@@ -504,6 +504,62 @@ START_TEST(error_norm_matches_plain_loop)
 }
 END_TEST
 
+/* The river's stream function ψ = U·y·(1 - R²/r²) is constant along every
+ * path of its potential flow: an invariant the reference must keep, found
+ * independently of any run. */
+static double river_drift(const double *y0, const double *y, int n, double U, double R)
+{
+    double worst = 0;
+    for (int i = 0; i < n; i++) {
+        double x0 = y0[2 * i], yy0 = y0[2 * i + 1], x = y[2 * i], yy = y[2 * i + 1];
+        double psi0 = U * yy0 * (1 - R * R / (x0 * x0 + yy0 * yy0));
+        double psi = U * yy * (1 - R * R / (x * x + yy * yy));
+        worst = fmax(worst, fabs(psi - psi0));
+    }
+    return worst;
+}
+
+/* The reference run's frame (its largest step) decides its cost, not its
+ * answer: the river at T = 200 (every float past the rock, some held at its
+ * stagnation point) in frames of the scene's dt (0.1) and of 25. Both keep
+ * ψ to 1e-10 (measured 8e-13 and 2.2e-12: dop853 at rtol 1e-12 over paths
+ * some 200 m long) and agree to 1e-9 (measured 1.2e-11: the tolerance
+ * applied per step, in 2000 frames against 8); the long frames cost at
+ * most a fifth of the evaluations (measured 2810 against 48110, 0.058).
+ * Taking no notice of the frame fails the last check. */
+START_TEST(reference_frame_changes_cost_not_answer)
+{
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = params("river", p, NULL);
+    sw_truth a, b;
+    ck_assert_msg(sw_truth_init(&a, sc, p, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_truth_init(&b, sc, p, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_int_eq(a.source, SW_TRUTH_REFERENCE);
+    ck_assert_double_eq(a.frame, sc->dt);
+    b.frame = 25;
+    int dim = a.sys.ode->dim, n = dim / 2;
+    double *y0 = malloc((size_t)dim * sizeof *y0);
+    ck_assert_ptr_nonnull(y0);
+    memcpy(y0, a.sys.y, (size_t)dim * sizeof *y0);
+    const double *ya = sw_truth_at(&a, 200), *yb = sw_truth_at(&b, 200);
+    ck_assert_ptr_nonnull(ya);
+    ck_assert_ptr_nonnull(yb);
+    double U = par("river", p, "U"), R = par("river", p, "R");
+    double da = river_drift(y0, ya, n, U, R), db = river_drift(y0, yb, n, U, R);
+    double apart = sw_truth_error(dim, ya, yb);
+    double ea = (double)sw_sim_evals(&a.ref), eb = (double)sw_sim_evals(&b.ref);
+    printf("# reference frame: psi drift %.2g (dt) %.2g (25), apart %.2g, evaluations %.0f vs %.0f (%.3f)\n",
+           da, db, apart, ea, eb, eb / ea);
+    ck_assert_msg(da <= 1e-10 && db <= 1e-10, "psi drifts by %g and %g", da, db);
+    ck_assert_msg(apart <= 1e-9, "the two references lie %g apart", apart);
+    ck_assert_msg(eb <= 0.2 * ea, "long frames cost %g evaluations against %g", eb, ea);
+    free(y0);
+    sw_truth_free(&a);
+    sw_truth_free(&b);
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -522,6 +578,7 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, spectrum_job_matches_synchronous);
     tcase_add_test(tc, meter_on_a_large_chain_in_slices);
     tcase_add_test(tc, error_norm_matches_plain_loop);
+    tcase_add_test(tc, reference_frame_changes_cost_not_answer);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -51,7 +51,8 @@ typedef struct sw_truth {
     sw_sim ref;           /* the reference run (REFERENCE) */
     int have_ref, failed;
     double frame;         /* the reference run's frame (its largest step): the scene's dt, or
-                           * longer when only far-apart times are asked for; set before the first */
+                           * longer when only far-apart times will be asked for (set it
+                           * before the first sw_truth_at) */
     double *y;            /* the state at time t (sys.ode->dim doubles) */
     double t;             /* NaN: none computed yet */
     char why[SW_ERRLEN];  /* see sw_truth_source_of */

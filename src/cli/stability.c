@@ -230,8 +230,7 @@ static int all_one(const sw_scene *sc, const sw_integrator *const *methods, int 
                has_n ? sc->name : "", has_n ? " --set n=10)" : "");
         return 0;
     }
-    report_head(sc, p, markdown);
-    return report_rows(sc, p, methods, 0, hi, markdown);
+    return report(sc, p, methods, hi, markdown);
 }
 
 /* A piece of --all: rows lo..hi of one scene, measured in a child process

@@ -444,6 +444,26 @@ START_TEST(err_is_position_in_metres_and_restarts)
 }
 END_TEST
 
+/* A key press spends at most a->work_key state evaluations: below what the
+ * gyre's reference costs (its particles × DP8's steps to the report time,
+ * about 2.4e6), the work-precision key and the Δt measurement both say so
+ * with the budget and leave nothing half-built. */
+START_TEST(key_press_keeps_to_its_budget)
+{
+    sw_app a;
+    app_with(&a, "gyre", "rk4", 0.05, NULL);
+    a.work_key = 1e6;
+    ck_assert_int_eq(sw_app_key(&a, 'w', 0), 0);
+    ck_assert_int_eq(a.workprec, 0);
+    ck_assert_ptr_null(a.bench);
+    ck_assert_msg(strstr(a.message, "no work-precision plot") && strstr(a.message, "over the 4e+06"), "%s", a.message);
+    ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+    ck_assert_msg(strstr(a.message, "over the 1e+06 a key press may spend"), "%s", a.message);
+    ck_assert(isnan(a.error_ratio));
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_app_suite(void);
 Suite *make_app_suite(void)
 {
@@ -464,6 +484,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, graph_bounded);
     tcase_add_test(tc, frames_compose);
     tcase_add_test(tc, adaptive_status_keeps_evals);
+    tcase_add_test(tc, key_press_keeps_to_its_budget);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -216,12 +216,41 @@ START_TEST(test_quick)
         applies += sw_integrator_accepts(sw_integrator_at(i), sys.ode, err, sizeof err) == SW_OK;
     sw_system_free(&sys);
     sw_bench_report *r = calloc(1, sizeof *r);
-    ck_assert_int_eq(sw_bench_scene_quick(r, sc, NULL, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_bench_scene_quick(r, sc, NULL, 4 * SW_WORK_KEY, err, sizeof err), SW_OK);
     ck_assert_int_eq(r->nseries, applies);
     ck_assert_int_lt(applies, sw_integrator_count()); /* verlet and symplectic-euler need masses */
     for (int i = 0; i < r->nseries; i++)
         ck_assert_int_ge(r->series[i].npoints, 1);
     sw_bench_free(r);
+    free(r);
+}
+END_TEST
+
+/* The quick sweep keeps to the budget it is given: the evaluations (and
+ * solves) × dimension of all its runs within the three quarters it gives
+ * the sweeps; a scene whose reference alone would pass the rest is refused
+ * up front, the budget named. The gyre's reference costs about 5e6 state
+ * evaluations (its particles × the DP8 steps to the report time). */
+START_TEST(test_quick_budget)
+{
+    char err[SW_ERRLEN];
+    const double budget = 4e6;
+    const char *names[] = { "chain", "bounce", "river" };
+    for (int k = 0; k < 3; k++) {
+        sw_bench_report *r = calloc(1, sizeof *r);
+        ck_assert_int_eq(sw_bench_scene_quick(r, sw_scene_find(names[k]), NULL, budget, err, sizeof err), SW_OK);
+        double work = 0;
+        for (int i = 0; i < r->nseries; i++)
+            for (int j = 0; j < r->series[i].npoints; j++)
+                work += (double)(r->series[i].points[j].evals + r->series[i].points[j].solves) * r->dim;
+        ck_assert_msg(work > 0 && work <= 0.75 * budget, "%s: %g of %g", names[k], work, budget);
+        sw_bench_free(r);
+        free(r);
+    }
+    sw_bench_report *r = calloc(1, sizeof *r);
+    ck_assert_int_eq(sw_bench_scene_quick(r, sw_scene_find("gyre"), NULL, budget, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "over the 4e+06 the plot may spend"));
+    ck_assert_ptr_null(r->samples);
     free(r);
 }
 END_TEST
@@ -535,6 +564,7 @@ Suite *make_bench_suite(void)
     tcase_add_test(tc, test_measurable);
     tcase_add_test(tc, test_cheapest);
     tcase_add_test(tc, test_quick);
+    tcase_add_test(tc, test_quick_budget);
     tcase_add_test(tc, test_ascii_plot);
     tcase_add_test(tc, test_xml_checker);
     tcase_add_test(tc, test_svg);

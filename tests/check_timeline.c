@@ -92,6 +92,30 @@ START_TEST(until_key_runs_there)
 }
 END_TEST
 
+/* The u key spends at most 4 × a->work_key state evaluations: on the spring
+ * (4 components, rk4's 4 evaluations a step: 16 a step) at a work_key of
+ * 1e5 that is 25 000 steps, half the way to t = 50 at dt = 0.001; the key
+ * says so, and pressed again goes on to the stop time exactly (a third
+ * press at most: 50 000 steps of 0.001 add up to a hair under 50, and the
+ * step that lands there is one more). */
+START_TEST(until_key_keeps_to_its_budget)
+{
+    sw_app a;
+    app_on(&a, "spring", "rk4", 0.001);
+    a.work_key = 1e5;
+    sw_app_set_until(&a, 50);
+    ck_assert_int_eq(sw_app_key(&a, 'u', 0), 1);
+    ck_assert(a.paused);
+    ck_assert_int_eq(a.sims[0].steps, 25000);
+    ck_assert_msg(strstr(a.message, "stopped after many steps short of the stop time t = 50 (u goes on)"), "%s",
+                  a.message);
+    for (int press = 0; press < 2 && a.sims[0].t != 50; press++)
+        ck_assert_int_eq(sw_app_key(&a, 'u', 0), 1);
+    ck_assert_msg(a.sims[0].t == 50, "t = %.17g", a.sims[0].t);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* What a state is, for comparing bit for bit: y, t, steps, evaluations. */
 typedef struct kept {
     double *y;
@@ -338,6 +362,7 @@ Suite *make_timeline_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, until_lands_exactly);
     tcase_add_test(tc, until_key_runs_there);
+    tcase_add_test(tc, until_key_keeps_to_its_budget);
     tcase_add_test(tc, rewind_bit_for_bit);
     tcase_add_test(tc, snapshot_keeps_controller_memory);
     tcase_add_test(tc, rewind_follows_and_bounds);

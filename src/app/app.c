@@ -101,6 +101,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     a->slowmo = 1.0;
     a->zoom = 1.0;
     a->error_ratio = NAN;
+    a->work_key = SW_WORK_KEY;
     if (!m)
         m = sw_integrator_find(sc->integrator);
     int rc = build(a, m, err, errlen);
@@ -506,7 +507,7 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         if (a->workprec && !a->bench) {
             sw_bench_report *r = malloc(sizeof *r);
             if (!r || !sw_bench_measurable(a->scene, a->p, why, sizeof why) ||
-                sw_bench_scene_quick(r, a->scene, a->p, why, sizeof why) != SW_OK) {
+                sw_bench_scene_quick(r, a->scene, a->p, 4 * a->work_key, why, sizeof why) != SW_OK) {
                 free(r);
                 a->workprec = 0;
                 snprintf(a->message, sizeof a->message, "no work-precision plot: %s", r ? why : "out of memory");

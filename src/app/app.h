@@ -96,6 +96,8 @@ typedef struct sw_app {
     int have_truth;
     int truth_live;             /* the truth can follow the run live (a reference within budget) */
     double truth_cost;          /* a reference run's cost per report time (0: closed form) */
+    double work_key;            /* what one key press may spend, in state evaluations: SW_WORK_KEY
+                                   (a sanitized fuzzer lowers it, so a unit stays short) */
     double *truth_report;       /* the true state at the sample times to the report time
                                    (SW_TRUTH_SAMPLES × dim, sw_truth_sample_time), once asked for */
     int have_truth_report;

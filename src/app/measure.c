@@ -13,10 +13,6 @@
 
 #include "stepwise/stepwise.h"
 
-/* Largest headless measurement run on a key press: state components ×
- * derivative evaluations, as SW_WORK_KEY. */
-#define MEASURE_BUDGET SW_WORK_KEY
-
 void sw_app_truth_reset(sw_app *a)
 {
     if (a->have_truth)
@@ -87,7 +83,7 @@ double sw_app_error(sw_app *a, int i)
  * budget; the last sample is the report time's. */
 static const double *truth_report(sw_app *a)
 {
-    if (!a->have_truth_report && a->have_truth && a->truth_cost <= SW_WORK_KEY) {
+    if (!a->have_truth_report && a->have_truth && a->truth_cost <= a->work_key) {
         size_t dim = (size_t)a->truth.sys.ode->dim;
         sw_truth tr;
         char err[SW_ERRLEN];
@@ -125,7 +121,7 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
     const sw_scene *sc = a->scene;
     double T = sc->duration;
     int dim = a->sims[0].sys.ode->dim;
-    if (!(dt > 0) || (double)dim * (T / dt) * (m->evals > 0 ? m->evals : 1) > MEASURE_BUDGET)
+    if (!(dt > 0) || (T / dt) * sw_truth_step_work(&a->sims[0].sys, m) > a->work_key)
         return NAN;
     const double *want = truth_report(a);
     if (!want)
@@ -203,13 +199,13 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     a->error_ratio = NAN;
     if (!isfinite(ratio) || !(small > 0)) {
         char why[SW_ERRLEN], truth_why[SW_ERRLEN];
-        double dim = a->sims[0].sys.ode->dim, cost = dim * (T / fmin(old_dt, a->dt)) * (m->evals > 0 ? m->evals : 1);
-        if (a->have_truth && a->truth_cost > SW_WORK_KEY)
+        double cost = (T / fmin(old_dt, a->dt)) * sw_truth_step_work(&a->sims[0].sys, m);
+        if (a->have_truth && a->truth_cost > a->work_key)
             snprintf(why, sizeof why, "no error measured: the reference to t=%.3g would cost %.2g state "
-                     "evaluations, over the %.0e a key press may spend", T, a->truth_cost, SW_WORK_KEY);
-        else if (cost > MEASURE_BUDGET)
+                     "evaluations, over the %.0e a key press may spend", T, a->truth_cost, a->work_key);
+        else if (cost > a->work_key)
             snprintf(why, sizeof why, "no error measured: the run to t=%.3g would cost %.2g state evaluations, "
-                     "over the %.0e a key press may spend", T, cost, MEASURE_BUDGET);
+                     "over the %.0e a key press may spend", T, cost, a->work_key);
         else if (isnan(e_new) || isnan(e_old))
             snprintf(why, sizeof why, "no error to compare (%s)",
                      truth_report(a) ? "a run blew up" : sw_app_truth_why(a, truth_why, sizeof truth_why));

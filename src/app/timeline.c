@@ -13,8 +13,16 @@
 #include "stepwise/stepwise.h"
 
 /* Steps the run-to-stop key takes per sim at most (a stop time far ahead of
- * a tiny dt: the key stops there and says so, as the clock would). */
+ * a tiny dt: the key stops there and says so, as the clock would); fewer
+ * where a step costs much: all sims together within 4 × a->work_key
+ * (sw_truth_step_work), as the work-precision key. */
 #define UNTIL_MAX_STEPS 20000000L
+
+static long until_steps(const sw_app *a, const sw_sim *s)
+{
+    double steps = 4 * a->work_key / (a->nsims * sw_truth_step_work(&s->sys, s->method));
+    return steps >= UNTIL_MAX_STEPS ? UNTIL_MAX_STEPS : steps >= 1 ? (long)steps : 1;
+}
 
 int sw_app_step_sim(sw_app *a, int i, double t_stop)
 {
@@ -88,7 +96,8 @@ int sw_app_run_to_stop(sw_app *a)
     double every = a->speed / 60, next = a->sims[0].t + every;
     for (int i = 0; i < a->nsims; i++) {
         sw_sim *s = &a->sims[i];
-        for (long n = 0; !s->blown && short_of(s, stop) && n < UNTIL_MAX_STEPS; n++) {
+        long most = until_steps(a, s);
+        for (long n = 0; !s->blown && short_of(s, stop) && n < most; n++) {
             sw_app_step_sim(a, i, stop);
             if (i == 0)
                 sw_app_watch_feed(a);

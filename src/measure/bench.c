@@ -472,22 +472,26 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
     return rc;
 }
 
-int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, char *err,
-                         size_t errlen)
+int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
+                         char *err, size_t errlen)
 {
     sw_bench_config c;
     sw_bench_config_quick(&c);
     /* Up front: the two reference runs and, per method, a sweep whose runs
-     * double in cost to max_work (under 2·max_work each). */
+     * double in cost to max_work (under 2·max_work each). Three quarters of
+     * the budget go to the sweeps: with the UI's 4·SW_WORK_KEY that is the
+     * quick config's own max_work. */
+    int count = sw_integrator_count();
+    c.max_work = fmin(c.max_work, 0.75 * budget / (2.0 * count));
     sw_truth tr;
     int rc = sw_truth_init(&tr, sc, p, err, errlen);
     if (rc != SW_OK)
         return rc;
-    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sw_integrator_count();
+    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * count;
     sw_truth_free(&tr);
-    if (cost > 4 * SW_WORK_KEY) {
+    if (!(cost <= budget)) {
         snprintf(err, errlen, "the sweep would cost about %.2g state evaluations, over the %.0e the plot may "
-                 "spend (fewer particles, or stepwise bench in a shell)", cost, 4 * SW_WORK_KEY);
+                 "spend (fewer particles, or stepwise bench in a shell)", cost, budget);
         return SW_EINVAL;
     }
     rc = sw_bench_init(r, sc, p, err, errlen);

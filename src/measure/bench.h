@@ -132,9 +132,11 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
 int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, int nmethods,
                        const sw_bench_config *c, char *err, size_t errlen);
 
-/* For the UI: init + sweep_all with the quick config; a few seconds at most
- * for default scenes. r must be freed with sw_bench_free when this returns 0. */
-int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p,
+/* For the UI: init + sweep_all with the quick config, within budget state
+ * evaluations in all (refused with SW_EINVAL, err saying why, when the
+ * reference alone would spend a quarter of it). r must be freed with
+ * sw_bench_free when this returns 0. */
+int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
                          char *err, size_t errlen);
 
 /* Refit a series (marks in_fit, sets order, nfit, no_order, the local

@@ -232,16 +232,12 @@ const char *sw_stability_verdict_text(int verdict)
 static double method_cost(const sw_scene *sc, sw_truth *tr, const sw_integrator *m, double w, double duration,
                           double ref, const sw_stability_config *c)
 {
-    double cost = ref;
-    double solve, dim = sw_truth_eval_work(&tr->sys, &solve);
-    double evals = (m->evals > 0 ? m->evals : 1) * ((m->flags & SW_IMPLICIT) ? 4 : 1);
-    if (m->flags & SW_IMPLICIT) /* a solve beyond what an evaluation costs (a wide band) */
-        evals += 3 * fmax(0, solve - dim) / dim;
+    double cost = ref, step = sw_truth_step_work(&tr->sys, m);
     double lo = w > 0 && isfinite(w) ? c->low / w : c->low * sc->dt;
     double near = w > 0 && isfinite(w) ? 1.0 / w : sc->dt;
     double steps_lo = fmin((double)c->max_steps, duration / fmax(lo, SW_DT_MIN));
     double steps_near = fmin((double)c->max_steps, duration / near);
-    cost += 2 * dim * evals * (steps_lo + 25 * steps_near);
+    cost += 2 * step * (steps_lo + 25 * steps_near);
     return cost;
 }
 

@@ -99,6 +99,15 @@ double sw_truth_eval_work(const sw_system *sys, double *solve)
     return *solve = sys->ode->dim;
 }
 
+double sw_truth_step_work(const sw_system *sys, const sw_integrator *m)
+{
+    double solve, eval = sw_truth_eval_work(sys, &solve);
+    double evals = m->evals > 0 ? m->evals : 1;
+    if (!(m->flags & SW_IMPLICIT))
+        return evals * eval;
+    return 4 * evals * eval + 3 * fmax(0, solve - eval);
+}
+
 double sw_truth_reference_cost(sw_truth *tr, double t_end)
 {
     if (tr->source != SW_TRUTH_REFERENCE)

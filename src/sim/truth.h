@@ -66,6 +66,11 @@ void sw_truth_free(sw_truth *tr);
  * components (dim, or more where a force joins every pair of particles),
  * and in *solve what one implicit solve costs (engine/particles_solve.h). */
 double sw_truth_eval_work(const sw_system *sys, double *solve);
+/* What one step of m on sys costs in the same unit: its nominal evaluations
+ * × an evaluation's work; an implicit method 4 times that (Newton's
+ * iterations) and 3 solves beyond what an evaluation costs. An estimate for
+ * budgets, not a count. */
+double sw_truth_step_work(const sw_system *sys, const sw_integrator *m);
 /* What a reference run to t_end would cost, in state components times
  * derivative evaluations (sw_truth_eval_work × evaluations): measured on a pilot of up to
  * 20 accepted steps and extrapolated by their mean step. 0 for a closed

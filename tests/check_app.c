@@ -464,6 +464,28 @@ START_TEST(key_press_keeps_to_its_budget)
 }
 END_TEST
 
+/* The keys that may work for a key press's budget name what they do, for
+ * the screen to show before it: the work-precision key while no sweep is
+ * kept, the Δt keys, u when there is a stop time; never a quick key. */
+START_TEST(slow_keys_say_so_first)
+{
+    sw_app a;
+    app_with(&a, "spring", "rk4", 0.05, NULL);
+    ck_assert_ptr_nonnull(sw_app_key_notice(&a, 'w', 0));
+    ck_assert_ptr_nonnull(sw_app_key_notice(&a, '-', 0));
+    ck_assert_ptr_nonnull(sw_app_key_notice(&a, '+', 0));
+    ck_assert_ptr_null(sw_app_key_notice(&a, 'u', 0));
+    ck_assert_ptr_null(sw_app_key_notice(&a, 'g', 0));
+    ck_assert_ptr_null(sw_app_key_notice(&a, 'n', 0)); /* a lesson's key, outside a lesson */
+    sw_app_set_until(&a, 2);
+    ck_assert_ptr_nonnull(sw_app_key_notice(&a, 'u', 0));
+    ck_assert_int_eq(sw_app_key(&a, 'w', 0), 1);
+    ck_assert_ptr_nonnull(a.bench);
+    ck_assert_ptr_null(sw_app_key_notice(&a, 'w', 0)); /* the kept sweep: at once */
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_app_suite(void);
 Suite *make_app_suite(void)
 {
@@ -485,6 +507,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, frames_compose);
     tcase_add_test(tc, adaptive_status_keeps_evals);
     tcase_add_test(tc, key_press_keeps_to_its_budget);
+    tcase_add_test(tc, slow_keys_say_so_first);
     suite_add_tcase(s, tc);
     return s;
 }

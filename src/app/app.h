@@ -171,6 +171,10 @@ void sw_app_set_events(sw_app *a, sw_events_mode mode);
 int sw_app_apply(sw_app *a, sw_action act, int arg);
 /* Turn a key into its action (honouring locks and context) and apply it. */
 int sw_app_key(sw_app *a, int key, int in_lesson);
+/* What key would work at for up to a key press's budget before it returns
+ * (the work-precision sweep, the runs a Δt change measures, the run to the
+ * stop time): a line for the screen to show first; NULL for a quick key. */
+const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson);
 /* Advance by wall seconds: simulated time wall·speed in whole steps of dt,
  * stopping early after max_steps steps per sim (then slowmo > 1). */
 void sw_app_advance(sw_app *a, double wall, long max_steps);

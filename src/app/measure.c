@@ -154,6 +154,26 @@ double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
     return e;
 }
 
+const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
+{
+    const sw_control *c;
+    int arg;
+    unsigned contexts = SW_CTX_PLAY | (a->panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
+    if (!sw_key_lookup(key, contexts, &c, &arg))
+        return NULL;
+    switch (c->action) {
+    case SW_ACT_WORKPREC:
+        return !a->workprec && !a->bench ? "measuring every method for the work-precision plot..." : NULL;
+    case SW_ACT_DT_HALVE:
+    case SW_ACT_DT_DOUBLE:
+        return "measuring the error at the old and the new dt...";
+    case SW_ACT_UNTIL:
+        return a->until > 0 ? "running to the stop time..." : NULL;
+    default:
+        return NULL;
+    }
+}
+
 /* The spectrum at the start (for the dt-change check), once per scene. */
 static const sw_spectrum *spectrum0(sw_app *a)
 {

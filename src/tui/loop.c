@@ -33,13 +33,28 @@ static void braille_needs_utf8(sw_app *a)
     }
 }
 
+/* The screen as it stands, painted now. */
+static void paint(sw_app *a, const sw_play_hooks *hooks, sw_frame *f, sw_screen *scr)
+{
+    const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, scr->cols) : NULL;
+    sw_frame_compose(f, a, side, scr);
+    sw_term_paint(scr);
+}
+
 /* One key to the hooks (the lesson) or the app; the picture's trails and
  * followed view are forgotten when the run went back or started again
- * (a reset, a rewind, a page or scene of its own: the app's epoch). */
-static void take_key(sw_app *a, const sw_play_hooks *hooks, sw_frame *f, int key)
+ * (a reset, a rewind, a page or scene of its own: the app's epoch). A key
+ * that may work for a second or two says what it does first, so the
+ * screen does not look frozen. */
+static void take_key(sw_app *a, const sw_play_hooks *hooks, sw_frame *f, sw_screen *scr, int key)
 {
     long steps_before = a->sims[0].steps;
     unsigned epoch = a->epoch;
+    const char *notice = scr->cols > 0 ? sw_app_key_notice(a, key, hooks != NULL) : NULL;
+    if (notice) {
+        snprintf(a->message, sizeof a->message, "%s", notice);
+        paint(a, hooks, f, scr);
+    }
     if (!(hooks && hooks->key && hooks->key(hooks->ctx, a, key)))
         sw_app_key(a, key, hooks != NULL);
     if (a->sims[0].steps < steps_before || a->sims[0].t == 0 || a->epoch != epoch)
@@ -92,7 +107,7 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
                 sw_signals_hangup();
                 break;
             }
-            take_key(a, hooks, &f, key);
+            take_key(a, hooks, &f, &scr, key);
             if (a->quit)
                 break;
         }
@@ -118,16 +133,14 @@ int sw_tui_play(sw_app *a, const sw_play_hooks *hooks, char *err, size_t errlen)
             sw_frame_push_trails(&f, a);
         pushed_steps = a->sims[0].steps;
         pushed_t = a->sims[0].t;
-        const sw_side *side = hooks && hooks->side ? hooks->side(hooks->ctx, a, cols) : NULL;
-        sw_frame_compose(&f, a, side, &scr);
-        sw_term_paint(&scr);
+        paint(a, hooks, &f, &scr);
         /* About 60 frames per second; when paused, wait for a key instead of spinning. */
         int wait = a->paused ? 250 : (int)fmax(1.0, 1000.0 / 60 - 1000.0 * (sw_clock_now() - frame_start));
         int key = sw_term_key(wait);
         if (key == SW_TERM_GONE)
             sw_signals_hangup();
         if (key >= 0)
-            take_key(a, hooks, &f, key);
+            take_key(a, hooks, &f, &scr, key);
     }
     sw_term_stop(); /* first, so every message below lands on a sane terminal */
     sw_app_record_stop(a); /* a signal, q or an error: the trace is written whole or not at all */

@@ -537,8 +537,7 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
 {
     const sw_control *c;
     int arg;
-    unsigned contexts = SW_CTX_PLAY | (a->panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
-    if (!sw_key_lookup(key, contexts, &c, &arg))
+    if (!sw_key_lookup(key, sw_key_contexts(a->panel, in_lesson), &c, &arg))
         return 0;
     a->message[0] = '\0'; /* a message stays until the next key */
     int changed = sw_app_apply(a, c->action, arg);

@@ -158,8 +158,7 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
 {
     const sw_control *c;
     int arg;
-    unsigned contexts = SW_CTX_PLAY | (a->panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
-    if (!sw_key_lookup(key, contexts, &c, &arg))
+    if (!sw_key_lookup(key, sw_key_contexts(a->panel, in_lesson), &c, &arg))
         return NULL;
     switch (c->action) {
     case SW_ACT_WORKPREC:

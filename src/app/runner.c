@@ -185,7 +185,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
     }
     const sw_control *c;
     int arg;
-    if (!sw_key_lookup(key, SW_CTX_PLAY | SW_CTX_LESSON | (a->panel ? SW_CTX_PANEL : 0u), &c, &arg)) {
+    if (!sw_key_lookup(key, sw_key_contexts(a->panel, 1), &c, &arg)) {
         if (pg->question.text && !r->answered[r->page] && key >= 'a' && key < 'a' + pg->question.nanswers) {
             snprintf(a->message, sizeof a->message, "answers take capital letters: %c to %c", SW_ANSWER_FIRST,
                      SW_ANSWER_FIRST + pg->question.nanswers - 1);

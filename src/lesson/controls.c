@@ -65,6 +65,11 @@ static int find_in(int key, sw_control_context context, const sw_control **contr
     return 0;
 }
 
+unsigned sw_key_contexts(int panel, int in_lesson)
+{
+    return SW_CTX_PLAY | (panel ? SW_CTX_PANEL : 0u) | (in_lesson ? SW_CTX_LESSON : 0u);
+}
+
 int sw_key_lookup(int key, unsigned contexts, const sw_control **control, int *arg)
 {
     static const sw_control_context order[] = { SW_CTX_PANEL, SW_CTX_PLAY, SW_CTX_LESSON };

@@ -184,6 +184,9 @@ const char *sw_action_name(sw_action a);
  * tried first): 1 with *control and *arg (the key's 1-based place among the
  * control's keys), or 0 when the key is not bound there. */
 int sw_key_lookup(int key, unsigned contexts, const sw_control **control, int *arg);
+/* The contexts a live key is looked up in: play always, the parameter
+ * panel while it is open, a lesson's keys inside one. */
+unsigned sw_key_contexts(int panel, int in_lesson);
 /* A key by its name as written in drive files and lessons ("space", "tab",
  * "up", "esc", ...; a single character is itself); SW_KEY_NONE when unknown. */
 int sw_key_find(const char *name);

@@ -16,7 +16,8 @@ enum {
     SW_NEEDS_SECOND_ORDER = 1u << 4, /* refuses a first-order (flow) system */
     SW_PLUGIN = 1u << 5,             /* loaded from a shared object */
     SW_NEWTON = 1u << 6,             /* implicit, Newton iterated: evals is a lower bound */
-    SW_POSITION_ONLY = 1u << 7       /* x'' = f(x): refuses forces that read velocities */
+    SW_POSITION_ONLY = 1u << 7,      /* x'' = f(x): refuses forces that read velocities */
+    SW_ONE_BODY = 1u << 8            /* one body alone in one central field (Kepler's problem) */
 };
 
 /* The running state of one method on one system: its workspace and what it

@@ -34,7 +34,7 @@ static const sw_integrator builtins[] = {
       INFINITY, 6, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method" },
     { "rk45", "Dormand-Prince 5(4), adaptive", 5, 6, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 9, sw_step_rk45,
       "adaptive: error estimate from an embedded 4th-order solution" },
-    { "dop853", "Dormand-Prince 8(5,3), adaptive (Hairer)", 8, 12, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 12,
+    { "dop853", "Dormand-Prince 8(5,3), adaptive (Hairer)", 8, 12, SW_EXPLICIT | SW_ADAPTIVE, 0.0, SW_DOP853_VECTORS,
       sw_step_dop853, "adaptive: error estimate from embedded 5th- and 3rd-order solutions" },
     /* Last, so that the keys of the methods before it (lessons name them)
      * keep their places. Stability: the first ω·h where the trace of the
@@ -59,6 +59,11 @@ static const sw_integrator builtins[] = {
     { "rkn12", "Runge-Kutta-Nystrom 12(10), adaptive (Dormand, El-Mikkawy, Prince)", 12, 17,
       SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY, 0.0, 21, sw_step_rkn12,
       "adaptive: x'' = f(x) stepped directly at 12th order, error from an embedded 10th-order solution" },
+    /* One body alone in one central field only (dop853_lc.c): 12 stages
+     * and the derivative at the start, anew each step. */
+    { "dop853-lc", "dop853 in Levi-Civita's variables: the Kepler problem regularised", 8, 13,
+      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_ONE_BODY, 0.0, 1, sw_step_dop853_lc,
+      "adaptive: x = c + u^2, dt = |x - c| ds: the close pass taken in a clock that slows there" },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -156,6 +161,12 @@ int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, 
                  "has drag or damped springs (set them to 0, or use dop853 or rk45)", m->name);
         return SW_EINVAL;
     }
+    sw_central1 field;
+    if ((m->flags & SW_ONE_BODY) && !sw_ode_central1(ode, &field)) {
+        snprintf(err, errlen, "'%s' steps one body alone in one central field (the orbit scene) in "
+                 "regularised variables; this system is not that (use dop853)", m->name);
+        return SW_EINVAL;
+    }
     if ((m->flags & SW_IMPLICIT) && !ode->solve && ode->dim > SW_DENSE_MAX) {
         snprintf(err, errlen, "'%s' needs a Jacobian this system does not provide "
                  "(dimension %d is above the dense fallback's %d)", m->name, ode->dim, SW_DENSE_MAX);
@@ -187,6 +198,13 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode, ch
     if (!s->work) {
         snprintf(err, errlen, "out of memory for %s workspace (%d doubles)", m->name, ode->dim);
         return SW_ENOMEM;
+    }
+    if (m->flags & SW_ONE_BODY) {
+        rc = sw_dop853_lc_prepare(s, ode, err, errlen);
+        if (rc != SW_OK) {
+            sw_stepper_free(s);
+            return rc;
+        }
     }
     if ((m->flags & SW_IMPLICIT) && ode->prepare) {
         rc = ode->prepare(ode->ctx, err, errlen);

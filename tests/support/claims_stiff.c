@@ -103,7 +103,7 @@ const claim sw_claims_k[] = {
     { README, "one Jacobian a step | {4} | 7 + 6 linear solves", rodas_order, EXACT, 0, "the method's order in the table", NULL },
     { README, "one Jacobian a step | 4 | {7} + 6 linear solves", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "adaptive, L-stable (Hairer)\", 4, {7},", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { README, "`!`, `@`, `#`, `$` and `%` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
+    { README, "`!`, `@`, `#`, `$`, `%` and `^` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
     { GUIDE, "`$` the fourteenth, rodas4", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
 };
 const size_t sw_claims_k_n = sizeof sw_claims_k / sizeof sw_claims_k[0];

@@ -288,8 +288,21 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
     free(which);
 }
 
-int sw_cmd_grade(int argc, char **argv)
+/* The command; wargv (argc + 2 long) receives what a plugin's worker is
+ * started with. */
+static int grade_command(int argc, char **argv, char **wargv)
 {
+    /* a plugin's worker, started again as a program (grade.h) */
+    const char *w_build = NULL, *w_path = NULL;
+    int w_index = -1, w_similarity = 0;
+    if (argc > 6 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
+        w_index = atoi(argv[2]);
+        w_build = argv[3];
+        w_path = argv[4];
+        w_similarity = atoi(argv[5]);
+        argc -= 5;
+        argv += 5;
+    }
     const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL, *roster = NULL;
     const char *feedback = NULL;
     int fresh = 0, similarity = 0, jobs = 0;
@@ -303,6 +316,10 @@ int sw_cmd_grade(int argc, char **argv)
     const char **files = calloc((size_t)argc + 1, sizeof *files);
     if (!files)
         return sw_cli_error("grade: out of memory");
+    /* what a plugin's worker is started with: the options that shape a
+     * check, never a file of the class (grade.h) */
+    int wargc = 1;
+    wargv[0] = "grade";
     int nfiles = 0, rc = SW_EXIT_OK;
     for (int i = 1; i < argc && rc == SW_EXIT_OK; i++) {
         const char *a = argv[i];
@@ -327,6 +344,15 @@ int sw_cmd_grade(int argc, char **argv)
             break;
         }
         const char *val = takes ? argv[++i] : NULL;
+        static const char *const for_worker[] = { "--assignment", "--cpu", "--wall", "--memory", "--output",
+                                                  "--no-sandbox", "--plugin-timeout", "--rtol", "--atol",
+                                                  "--tol", "--ignore" };
+        for (size_t k = 0; k < sizeof for_worker / sizeof *for_worker; k++)
+            if (strcmp(a, for_worker[k]) == 0) {
+                wargv[wargc++] = (char *)a;
+                if (val)
+                    wargv[wargc++] = (char *)val;
+            }
         double d;
         if (strcmp(a, "--assignment") == 0)
             assignment = val;
@@ -380,13 +406,22 @@ int sw_cmd_grade(int argc, char **argv)
     if (rc == SW_EXIT_OK && !assignment)
         rc = sw_cli_error("grade needs --assignment A (an assignment file or a reference trace); "
                           "see 'stepwise grade --help'");
-    if (rc == SW_EXIT_OK && nfiles == 0)
+    if (rc == SW_EXIT_OK && nfiles == 0 && !w_path)
         rc = sw_cli_error("grade needs submissions: FILES... or a DIR");
     static sw_assignment asg;
     struct stat asg_st;
     if (rc == SW_EXIT_OK && (sw_assignment_read(&asg, assignment, err, sizeof err) != SW_OK ||
                              stat(assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
+    if (w_path) {
+        free(files);
+        if (rc != SW_EXIT_OK)
+            return rc;
+        base.assignment = &asg;
+        sw_decimal_init();
+        grade_job job = { w_path, 1, w_build, w_index, &base, lim.output_bytes, NULL, w_similarity, &lim, 0, NULL };
+        return grade_worker(&job, 3, 3);
+    }
     grade_list list = { 0 };
     list.fresh = fresh;
     list.similarity = similarity;
@@ -436,7 +471,7 @@ int sw_cmd_grade(int argc, char **argv)
     }
     if (jobs > list.n)
         jobs = list.n > 0 ? list.n : 1;
-    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim };
+    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim, wargc, wargv };
     grade_all(&list, &proto, wall, jobs);
     grade_clean_dir(build_dir, list.n);
     if (!sw_signal_caught)
@@ -456,5 +491,15 @@ int sw_cmd_grade(int argc, char **argv)
             rc = grc;
     }
     grade_list_free(&list);
+    return rc;
+}
+
+int sw_cmd_grade(int argc, char **argv)
+{
+    char **wargv = calloc((size_t)argc + 2, sizeof *wargv);
+    if (!wargv)
+        return sw_cli_error("grade: out of memory");
+    int rc = grade_command(argc, argv, wargv);
+    free(wargv);
     return rc;
 }

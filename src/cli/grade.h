@@ -173,7 +173,16 @@ typedef struct grade_job {
     grade_list *list;        /* the class so far: wiped in the worker */
     int similarity;          /* send a failing trace's wrong rows */
     const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
+    int argc;                /* the command's arguments (argv[0] "grade"), from which a plugin's */
+    char **argv;             /* worker starts again as a new program; NULL: it is that program */
 } grade_job;
+
+/* `stepwise grade --worker INDEX BUILD_DIR PATH SIMILARITY ARGS...`: the
+ * worker of one plugin, as a new program (grade_worker.c starts it): so
+ * that nothing of the class the grader had read (roster, gradebook, the
+ * other submissions, in live or in freed memory) is in the process the
+ * plugin runs from. ARGS are the grade command's own. */
+#define GRADE_WORKER_FLAG "--worker"
 
 /* grade_worker.c: a submission's worker, the child that checks it (an
  * sw_child_fn, ctx a grade_job) and sends back a grade_record. */

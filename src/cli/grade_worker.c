@@ -27,7 +27,7 @@ extern char **environ;
  * is in the memory a plugin's process starts from. */
 static void forget_the_class(const grade_job *job)
 {
-    for (int i = 0; i < job->list->n; i++) {
+    for (int i = 0; job->list && i < job->list->n; i++) {
         grade_entry *e = &job->list->items[i];
         if (e->report) {
             explicit_bzero(e->report, strlen(e->report));
@@ -55,6 +55,37 @@ static void forget_the_class(const grade_job *job)
             setenv(kept[i], keep[i], 1);
             free(keep[i]);
         }
+}
+
+/* A plugin's worker: this program again, as `stepwise grade --worker ...`
+ * with the command's own arguments (grade.h), in the environment just
+ * cleaned, on the channel at descriptor 3. Returns only when it could not
+ * be started, errno set. */
+static void start_clean(const grade_job *job)
+{
+    char index[24], similarity[8];
+    char **args = calloc((size_t)job->argc + 8, sizeof *args);
+    if (!args) {
+        errno = ENOMEM;
+        return;
+    }
+    snprintf(index, sizeof index, "%d", job->index);
+    snprintf(similarity, sizeof similarity, "%d", job->similarity);
+    int n = 0;
+    args[n++] = "stepwise";
+    args[n++] = "grade";
+    args[n++] = GRADE_WORKER_FLAG;
+    args[n++] = index;
+    args[n++] = (char *)job->build_dir;
+    args[n++] = (char *)job->path;
+    args[n++] = similarity;
+    for (int i = 1; i < job->argc; i++)
+        args[n++] = job->argv[i];
+    args[n] = NULL;
+    execve("/proc/self/exe", args, environ);
+    int e = errno;
+    free(args);
+    errno = e;
 }
 
 /* The mistake in a few words: explanation, plugin failure, header, values. */
@@ -128,6 +159,19 @@ int grade_worker(void *ctx, int in, int out)
     (void)in;
     const grade_job *job = ctx;
     forget_the_class(job);
+    if (job->plugin && job->argv) {
+        start_clean(job); /* a plugin never runs from the grader's memory */
+        static grade_record failed;
+        memset(&failed, 0, sizeof failed);
+        failed.status = SW_VERDICT_ERROR;
+        failed.failing_step = -1;
+        snprintf(failed.message, sizeof failed.message,
+                 "the grader could not start a fresh process to run this plugin from (%s); not run",
+                 strerror(errno));
+        grade_zero_score(&failed.score, job->base->assignment, 1, failed.message);
+        sw_sandbox_write(out, &failed, sizeof failed);
+        return 0;
+    }
     sw_plugin_set_limits(job->lim); /* the documented limits hold for the plugin's processes too */
     sw_check_request req = *job->base;
     static sw_verdict v;

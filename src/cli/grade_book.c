@@ -7,11 +7,15 @@
  * too, so the file stays inert in a spreadsheet whatever was in it. */
 #include "cli/grade.h"
 
+#include <limits.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "util/csv.h"
+#include "util/escape.h"
 #include "util/outfile.h"
 
 /* New columns go last, so an older gradebook's header is a prefix of ours. */
@@ -77,11 +81,30 @@ typedef struct book_row {
 /* A row's text: its cells point into e and into the caller's buffers. */
 typedef struct row_text {
     char student[SW_TRACE_STUDENT_MAX], step[24], score[32], max[32];
+    char file[4 * PATH_MAX + 8];
 } row_text;
+
+/* The file cell, the gradebook's key for a row: the path with every
+ * backslash escaped too (\x5c), so two names never give one cell (the
+ * message rule keeps backslashes, and "Jos\xe9" written as is would read
+ * as the Latin-1 "Jos" + é escaped). Cut to fit a cell, it ends in a
+ * digest of the whole path. */
+static void file_cell(const char *path, char *out, size_t outlen)
+{
+    sw_escape(path, strlen(path), out, outlen);
+    size_t n = strlen(out);
+    if (n > 3800) {
+        uint64_t h = 1469598103934665603u; /* FNV-1a 64 of the path as named */
+        for (const unsigned char *c = (const unsigned char *)path; *c; c++)
+            h = (h ^ *c) * 1099511628211u;
+        snprintf(out + 3760, outlen - 3760, "...#%016llx", (unsigned long long)h);
+    }
+}
 
 static void row_cells(const grade_entry *e, const char **cells, row_text *t)
 {
     grade_student_of(e, t->student, sizeof t->student);
+    file_cell(e->path ? e->path : "", t->file, sizeof t->file);
     t->step[0] = t->score[0] = t->max[0] = '\0';
     if (e->failing_step >= 0)
         snprintf(t->step, sizeof t->step, "%ld", e->failing_step);
@@ -89,7 +112,7 @@ static void row_cells(const grade_entry *e, const char **cells, row_text *t)
     grade_points_of(e, &points, &most);
     snprintf(t->score, sizeof t->score, "%g", points);
     snprintf(t->max, sizeof t->max, "%g", most);
-    const char *c[NCOLS] = { t->student, e->path, grade_verdict_word(e->status), t->step, e->message,
+    const char *c[NCOLS] = { t->student, t->file, grade_verdict_word(e->status), t->step, e->message,
                              e->owner_id, e->remarks, e->similar, t->score, t->max };
     memcpy(cells, c, sizeof c);
 }

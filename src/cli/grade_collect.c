@@ -207,6 +207,20 @@ static int take(grade_list *list, const char *path, const char *name, const char
     return rc;
 }
 
+/* Whether the directory path is one submission's folder of a Gradescope
+ * export (named submission_ and digits), whose files are the student's. */
+static int a_submission_folder(const char *path)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    if (strncmp(base, "submission_", 11) != 0 || !base[11])
+        return 0;
+    for (const char *c = base + 11; *c; c++)
+        if (*c < '0' || *c > '9')
+            return 0;
+    return 1;
+}
+
 /* How deep folders are walked with a roster: Moodle's and Gradescope's
  * one level, a student's own folder inside them, and one more. */
 #define WALK_DEPTH 4
@@ -241,9 +255,18 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             continue;
         }
         if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
+            lstat(sub, &st) == 0 && S_ISREG(st.st_mode) && a_submission_folder(path)) {
+            /* in a student's folder: a file of the upload, never who submitted it */
+            rc = refuse(list, sub, "not graded: a submission_metadata.yml inside a submission's folder "
+                        "is the student's upload; only the export's (the folder above) is read");
+            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(subrel)))
+                rc = SW_ENOMEM;
+            continue;
+        }
+        if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
             lstat(sub, &st) == 0 && S_ISREG(st.st_mode)) {
             /* Gradescope's export: who submitted each submission_ID folder
-             * (the export's own, rather than one found above it). */
+             * (the export's own, rather than one found above it) */
             free(list->gs_metadata);
             if (!(list->gs_metadata = strdup(sub)))
                 rc = SW_ENOMEM;
@@ -269,7 +292,9 @@ static void sort_from(grade_entry *items, int first, int n)
 }
 
 /* A regrade names one student's folder or file of a Gradescope export:
- * the metadata is then in the folder above it, or the one above that. */
+ * the metadata is then in the folder above it, or the one above that;
+ * never in a submission's own folder, which holds what the student
+ * uploaded. */
 static int metadata_above(grade_list *list, const char *real)
 {
     char dir[PATH_MAX], meta[PATH_MAX + 32];
@@ -279,6 +304,8 @@ static int metadata_above(grade_list *list, const char *real)
         if (!slash || slash == dir)
             break;
         *slash = '\0';
+        if (a_submission_folder(dir))
+            continue;
         struct stat st;
         snprintf(meta, sizeof meta, "%s/submission_metadata.yml", dir);
         if (lstat(meta, &st) == 0 && S_ISREG(st.st_mode) && !(list->gs_metadata = strdup(meta)))

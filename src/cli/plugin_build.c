@@ -257,6 +257,12 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
             close(src_fd);
         return SW_EINVAL;
     }
+    if ((size_t)st.st_size > SW_JAIL_FILE_MAX) {
+        snprintf(err, errlen, "--plugin '%s': the source is %.0f MiB; a plugin's source may be at most %zu MiB",
+                 shown, (double)st.st_size / 1048576, SW_JAIL_FILE_MAX >> 20);
+        close(src_fd);
+        return SW_EINVAL;
+    }
     if (find_compiler(cc, sizeof cc, msg, sizeof msg) != 0) {
         close(src_fd);
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
@@ -270,6 +276,11 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
                      .disk_bytes = (size_t)64 << 20 };
     sw_limits lim = { .cpu_seconds = BUILD_SECONDS, .memory_bytes = (size_t)2048 << 20,
                       .output_bytes = (size_t)64 << 20 };
+    /* Under a grader's --memory (this process's hard limit), the build's
+     * scratch disk, memory that limit does not count, is at most half of it. */
+    struct rlimit as;
+    if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_max != RLIM_INFINITY && as.rlim_max / 2 < spec.disk_bytes)
+        spec.disk_bytes = (size_t)(as.rlim_max / 2);
     char work[PATH_MAX];
     build_job job = { cc, "/work", "/include" };
     if (!sw_jail_enabled()) {

@@ -141,8 +141,10 @@ static int bind_ro(const char *host, int is_dir)
 static int copy_in(int fd, const char *path)
 {
     struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size > SW_JAIL_FILE_MAX)
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
         return EINVAL;
+    if ((size_t)st.st_size > SW_JAIL_FILE_MAX)
+        return EFBIG;
     int out = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (out < 0)
         return errno;
@@ -235,7 +237,7 @@ int sw_jail_build(const sw_jail *spec, const char **step)
         char path[256];
         snprintf(path, sizeof path, NEWROOT "/work/%s", spec->in[i].name);
         if ((rc = copy_in(spec->in[i].fd, path)) != 0)
-            return fail_at(step, "copying the submission into /work", rc);
+            return fail_at(step, SW_JAIL_STEP_SUBMISSION, rc);
     }
     if (spec->include_fd >= 0) {
         if (mkdir(NEWROOT "/include", 0755) != 0 || mkdir(NEWROOT "/include/stepwise", 0755) != 0 ||

@@ -25,6 +25,9 @@ typedef struct sw_jail_file {
 } sw_jail_file;
 
 #define SW_JAIL_FILE_MAX ((size_t)64 << 20)
+/* The set-up step that copies the submission in: failing there with EFBIG
+ * or ENOSPC, it is the submission that is too large, not the jail broken. */
+#define SW_JAIL_STEP_SUBMISSION "copying the submission into /work"
 #define SW_JAIL_FILES 4
 
 typedef struct sw_jail {

@@ -38,8 +38,17 @@ static void set_limit(int resource, rlim_t value)
     if (rl.rlim_max != RLIM_INFINITY && value > rl.rlim_max)
         value = rl.rlim_max;
     rl.rlim_cur = value;
+    /* CPU time: the hard limit one second above, so SIGXCPU comes before
+     * the kill. Memory: the hard limit too, so that nothing the child
+     * starts (a grader's worker its compiler) can raise it again. The
+     * file size stays soft: the jail's set-up copies the submission and
+     * the headers in, and a build writes its .so, beyond a small --output
+     * (the build's own output is held to it after, and its scratch disk to
+     * half the memory: plugin_build.c). */
     if (resource == RLIMIT_CPU)
         rl.rlim_max = rl.rlim_max == RLIM_INFINITY || value + 1 <= rl.rlim_max ? value + 1 : rl.rlim_max;
+    else if (resource == RLIMIT_AS)
+        rl.rlim_max = value;
     setrlimit(resource, &rl);
 }
 
@@ -292,6 +301,11 @@ static int jail_handshake(pid_t pid, int sync, char *err, size_t errlen)
     jail_failure f;
     if (rc == 1 && tag == 'X' && sw_sandbox_read(sync, &f, sizeof f, limit) == 1) {
         f.step[sizeof f.step - 1] = '\0';
+        if (strcmp(f.step, SW_JAIL_STEP_SUBMISSION) == 0 && (f.err == EFBIG || f.err == ENOSPC)) {
+            snprintf(err, errlen, "the submission is too large to run: a plugin's file (.c or .so) may be at "
+                     "most %zu MiB, and its build must fit its scratch space", SW_JAIL_FILE_MAX >> 20);
+            return SW_EINVAL;
+        }
         snprintf(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
                  "user namespaces and seccomp (docs/sandbox.md), or --no-sandbox inside a disposable "
                  "container", f.step, strerror(f.err));

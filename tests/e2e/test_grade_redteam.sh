@@ -1,0 +1,99 @@
+#!/bin/sh
+# What an outside red team broke in the grader, each checked as it was
+# broken (the hostile zoo, test_hostile.sh, has the other attacks):
+#   1. a plugin read the class out of the memory it started with (the
+#      roster's emails, a classmate's file name, the old gradebook's verdict
+#      cells): tests/hostile/heap-scan.c scans its heap, every writable
+#      segment and its arguments for markers, and must find the
+#      assignment's (its own to know: the scan ran) and nothing else;
+#   2. a submission_metadata.yml in a student's own Gradescope folder
+#      decided, on a regrade, whose submission it was;
+#   3. two file names that escaped to one gradebook cell ("Jos\xe9" as
+#      written, and the Latin-1 é) let a regrade of one overwrite the other;
+#   4. the compiler was not held to --memory;
+#   5. a plugin file too large for the sandbox read as a broken sandbox.
+. "$(dirname "$0")/lib.sh"
+A=assign.txt
+cat > $A <<'EOF'
+# stepwise assignment 1
+# title: ZQASSIGNMENT rk4 on the spring
+# scene: spring
+# integrator: rk4
+# dt: 0.01
+# steps: 100
+EOF
+mkdir class
+"$SW" record spring -i rk4 --dt 0.01 --steps 100 -o class/ZQCLASSMATE_s1001.trace >/dev/null 2>&1 \
+    || fail "record failed"
+cp "$ROOT/tests/hostile/heap-scan.c" class/s1004_mallory.c
+cat > roster.csv <<'EOF'
+Name,ID,Email
+Alice Adams,s1001,alice.ZQROSTER@u.edu
+Mallory Mars,s1004,mallory@u.edu
+EOF
+# a gradebook to read back, with a classmate's verdict cell in it
+"$SW" grade --assignment $A --roster roster.csv --csv book.csv class/ZQCLASSMATE_s1001.trace >/dev/null 2>&1
+printf 'ZQBOOKROW,elsewhere/x.trace,pass,,,,,,2,2\r\n' >> book.csv
+for j in 1 2; do
+    "$SW" grade --assignment $A --roster roster.csv --csv book.csv --feedback fb$j -j $j class >out$j.txt 2>&1
+    [ $? -le 1 ] || fail "1: grade -j $j exited $?: $(cat out$j.txt)"
+    all=$(cat out$j.txt book.csv fb$j/* 2>/dev/null)
+    printf '%s\n' "$all" | grep -q "SCAN-A" || fail "1: -j $j: the scan did not run or did not reach the assignment: $(grep -i mallory out$j.txt)"
+    printf '%s\n' "$all" | grep -q "SCAN[-A]*-[RCB]" && fail "1: -j $j: the plugin read the class: $(printf '%s\n' "$all" | grep -o 'SCAN[-A-Z]*' | head -1)"
+done
+
+# 2: the export's metadata decides; a copy in a student's folder is refused
+mkdir -p gs/submission_111 gs/submission_444
+cp class/ZQCLASSMATE_s1001.trace gs/submission_111/rk4.trace
+"$SW" record spring -i euler --dt 0.01 --steps 100 -o gs/submission_444/rk4.trace >/dev/null 2>&1
+cat > gs/submission_metadata.yml <<'EOF'
+submission_111:
+  :submitters:
+  - :name: Alice Adams
+    :sid: 's1001'
+    :email: alice.ZQROSTER@u.edu
+submission_444:
+  :submitters:
+  - :name: Mallory Mars
+    :sid: 's1004'
+    :email: mallory@u.edu
+EOF
+sed 's/Mallory Mars/Alice Adams/; s/s1004/s1001/; s/mallory@/alice@/' gs/submission_metadata.yml \
+    | sed -n '/submission_444/,$p' > gs/submission_444/submission_metadata.yml
+"$SW" grade --assignment $A --roster roster.csv --csv gs.csv --fresh gs >/dev/null 2>&1
+for again in gs/submission_444 gs/submission_444/rk4.trace; do
+    "$SW" grade --assignment $A --roster roster.csv --csv gs.csv "$again" >out.txt 2>&1
+    grep -q "^Alice Adams,gs/submission_444" gs.csv && fail "2: regrading $again gave Mallory's file to Alice"
+    grep -q "^Mallory Mars,gs/submission_444/rk4.trace,fail" gs.csv || fail "2: regrading $again lost Mallory's row: $(cat gs.csv)"
+done
+grep -q "inside a submission's folder" out.txt || grep -q "inside a submission's folder" gs.csv \
+    || fail "2: the planted metadata is not named as refused"
+
+# 3: names that once escaped alike keep rows of their own
+mkdir esc
+cp class/ZQCLASSMATE_s1001.trace "esc/$(printf 'Jos\351.trace')"
+"$SW" record spring -i euler --dt 0.01 --steps 100 -o 'esc/Jos\xe9.trace' >/dev/null 2>&1
+"$SW" grade --assignment $A --csv esc.csv --fresh esc >/dev/null 2>&1
+"$SW" grade --assignment $A --csv esc.csv "esc/$(printf 'Jos\351.trace')" >/dev/null 2>&1
+[ "$(grep -c ',pass,' esc.csv)" -eq 1 ] && [ "$(grep -c ',fail,' esc.csv)" -eq 1 ] \
+    || fail "3: a regrade of one name changed the other's row: $(cat esc.csv)"
+
+# 4: a compiler that would take 800 MB is held to --memory 64
+mkdir bomb
+{
+    cat "$ROOT/examples/euler_plugin.c"
+    echo '#define X1(x) x,x'
+    i=2
+    while [ $i -le 21 ]; do echo "#define X$i(x) X$((i - 1))(x),X$((i - 1))(x)"; i=$((i + 1)); done
+    echo 'double big[] = { X21(1.0) };'
+} > bomb/bomb.c
+"$SW" grade --assignment $A --memory 64 --cpu 30 --wall 120 bomb >out.txt 2>&1
+grep -q "limit of 64 MiB was reached while building it" out.txt || fail "4: the build was not held to --memory: $(cat out.txt)"
+
+# 5: a plugin file too large is said to be one
+mkdir big
+head -c 70000000 /dev/zero > big/big.so
+"$SW" grade --assignment $A big >out.txt 2>&1
+grep -q "too large" out.txt || fail "5: an oversized .so: $(cat out.txt)"
+grep -q "could not be set up" out.txt && fail "5: an oversized .so read as a broken sandbox"
+echo "red team: the five breaks hold"

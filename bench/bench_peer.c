@@ -319,14 +319,15 @@ static double deriv_seconds(problem *pb)
     return best;
 }
 
-/* Whether stepwise's candidate c takes its steps fused with the field, or
+/* Whether stepwise's candidate c takes its steps fused with the field,
  * computes the orbit's field inline (rkn12 on one particle in one central
- * field): then its evaluations do not call the derivative. */
+ * field) or steps it in regularised variables (dop853-lc): then its
+ * evaluations do not call the derivative. */
 static int fused(const problem *pb, const candidate *c)
 {
     const sw_ode *ode = pb->sys.ode;
     sw_central1 field;
-    return c->m && ((strcmp(c->name, "rk4") == 0 && sw_ode_fused_rk4(ode)) ||
+    return c->m && ((c->m->flags & SW_ONE_BODY) || (strcmp(c->name, "rk4") == 0 && sw_ode_fused_rk4(ode)) ||
                     (strcmp(c->name, "euler") == 0 && sw_ode_fused_euler(ode)) ||
                     (strcmp(c->name, "rkn12") == 0 && sw_ode_central1(ode, &field)));
 }
@@ -373,12 +374,12 @@ static const candidate *cheapest(const candidate *c, int n, const char *lib)
     return best;
 }
 
-enum { MAX_CANDIDATES = 14 };
+enum { MAX_CANDIDATES = 15 };
 
 static int candidates(const problem *pb, candidate *c)
 {
     int k = 0;
-    const char *mine[] = { "rk4", "rk45", "dop853", "rkn", "rkn12" };
+    const char *mine[] = { "rk4", "rk45", "dop853", "rkn", "rkn12", "dop853-lc" };
     for (int i = 0; i < (int)(sizeof mine / sizeof *mine); i++) {
         const sw_integrator *m = sw_integrator_find(mine[i]);
         if (m)

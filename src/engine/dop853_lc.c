@@ -71,11 +71,12 @@ int sw_step_dop853_lc(sw_stepper *s, sw_ode *ode, double *t, double *y, double h
     r->st.rtol = s->rtol;
     r->st.atol = s->atol;
     r->st.h_next = s->h_next;
-    long trials = r->st.accepted + r->st.rejected;
+    long rejected = r->st.rejected;
     int rc = sw_lc_step(&r->lc, &r->st, w, h);
     ode->evals += r->lc.ode.evals; /* the regularised field's: the particle's own is not called */
-    /* every trial not kept (rejected, or a try at the landing) counts as rejected */
-    s->rejected += r->st.accepted + r->st.rejected - trials - (rc == SW_OK);
+    /* the error control's rejections; the tries at a landing on t + h are
+     * in the evaluations, not here (they are not the error control's) */
+    s->rejected += r->st.rejected - rejected;
     if (rc != SW_OK) {
         s->why = "step size underflow in Levi-Civita's variables: the error control gave up";
         return rc;

@@ -472,7 +472,9 @@ static int grade_command(int argc, char **argv, char **wargv)
     if (jobs > list.n)
         jobs = list.n > 0 ? list.n : 1;
     grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim, wargc, wargv };
+    sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
     grade_all(&list, &proto, wall, jobs);
+    sw_sandbox_kill_orphans(); /* before any result is written */
     grade_clean_dir(build_dir, list.n);
     if (!sw_signal_caught)
         rc = grade_similar_run(&list);

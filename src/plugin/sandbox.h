@@ -87,4 +87,13 @@ void sw_sandbox_describe(const sw_child_end *end, char *buf, size_t len);
 /* Seconds on a monotonic clock. */
 double sw_sandbox_now(void);
 
+/* orphans.c. Become the subreaper of everything started from here, so a
+ * process a submission left running (a daemon out of its session, under
+ * --no-sandbox) comes back to this process instead of init. */
+void sw_sandbox_adopt_orphans(void);
+/* Kill every child of this process still there (call when none should
+ * be: every worker reaped), and its children as they come back in turn;
+ * the number killed. */
+int sw_sandbox_kill_orphans(void);
+
 #endif

@@ -11,7 +11,10 @@
 #   3. two file names that escaped to one gradebook cell ("Jos\xe9" as
 #      written, and the Latin-1 é) let a regrade of one overwrite the other;
 #   4. the compiler was not held to --memory;
-#   5. a plugin file too large for the sandbox read as a broken sandbox.
+#   5. a plugin file too large for the sandbox read as a broken sandbox;
+#   6. under --no-sandbox (Gradescope's fallback) a plugin's daemon, out of
+#      its session, outlived grade and rewrote results.json with a score of
+#      its own.
 . "$(dirname "$0")/lib.sh"
 A=assign.txt
 cat > $A <<'EOF'
@@ -96,4 +99,48 @@ head -c 70000000 /dev/zero > big/big.so
 "$SW" grade --assignment $A big >out.txt 2>&1
 grep -q "too large" out.txt || fail "5: an oversized .so: $(cat out.txt)"
 grep -q "could not be set up" out.txt && fail "5: an oversized .so read as a broken sandbox"
-echo "red team: the five breaks hold"
+
+# 6: a daemon of a plugin run without the jail does not outlive grade
+mkdir dmn
+cat > dmn/daemon.c <<EOF
+#define _GNU_SOURCE
+#include <stepwise/integrator.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+static int step(sw_ode *ode, double t, double *y, double h, double *work)
+{ sw_ode_eval(ode, t, y, work); for (int i = 0; i < ode->dim; i++) y[i] += h * work[i]; return 0; }
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "daemon", .order = 1, .evals = 1,
+                                .work_vectors = 1, .step = step };
+static void loop(void)
+{
+    for (int i = 0; i < 1000; i++) { /* 10 s: rewrite a written results.json, beat a heart */
+        char buf[64] = "";
+        FILE *f = fopen("$WORK/gs.json", "r");
+        if (f) { fread(buf, 1, sizeof buf - 1, f); fclose(f); }
+        if (f && !strstr(buf, "FORGED") && strstr(buf, "score")) {
+            FILE *o = fopen("$WORK/gs.json.x", "w");
+            if (o) { fputs("{\"score\": 7, \"output\": \"FORGED\"}\n", o); fclose(o); rename("$WORK/gs.json.x", "$WORK/gs.json"); }
+        }
+        FILE *h = fopen("$WORK/heart", "a");
+        if (h) { fputc('.', h); fclose(h); }
+        usleep(10000);
+    }
+    _exit(0);
+}
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void)
+{
+    static int done;
+    if (!done++ && fork() == 0) { setsid(); if (fork() == 0) loop(); _exit(0); }
+    return &info;
+}
+EOF
+"$SW" grade --assignment $A --gradescope gs.json --no-sandbox dmn >out.txt 2>&1
+[ -s heart ] || fail "6: the daemon never ran (the test proves nothing): $(cat out.txt)"
+beats=$(wc -c < heart)
+sleep 1
+[ "$(wc -c < heart)" -eq "$beats" ] || fail "6: a plugin's daemon outlived grade"
+grep -q FORGED gs.json && fail "6: the daemon rewrote results.json: $(cat gs.json)"
+grep -q '"score": 0' gs.json || fail "6: results.json: $(cat gs.json)"
+echo "red team: the six breaks hold"

@@ -225,10 +225,26 @@ static int a_submission_folder(const char *path)
  * one level, a student's own folder inside them, and one more. */
 #define WALK_DEPTH 4
 
+/* How many entries a folder inside the directory named may bring, its
+ * own folders' included: a student's upload, whose every file would be a
+ * row (and a worker), cannot swell the gradebook past what it reads back. */
+#define FOLDER_ENTRIES 64
+/* And the directory named itself (a class, or one student's folder
+ * regraded): grade a larger one in parts. */
+#define DIR_ENTRIES 5000
+
+/* What is left of a folder's entries, and whether its row saying so is in. */
+typedef struct walk_budget {
+    int left, said;
+    const char *folder, *rel; /* its path, and the path the roster matches */
+} walk_budget;
+
 /* Every entry of the directory path (rel below the directory named,
- * top: that directory resolved), its folders walked with a roster. */
+ * top: that directory resolved), its folders walked with a roster; b:
+ * what is left of the entries of the directory named (depth 0) or of its
+ * folder that path is in. */
 static int collect_dir(grade_list *list, const char *path, const char *rel, const char *top,
-                       const struct stat *assign_st, int depth)
+                       const struct stat *assign_st, int depth, walk_budget *b)
 {
     DIR *d = opendir(path);
     if (!d)
@@ -237,6 +253,15 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
     for (struct dirent *e; rc == SW_OK && (e = readdir(d));) {
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
+        if (b && b->left-- <= 0) {
+            if (!b->said++)
+                rc = refuse(list, b->folder, depth ? "not graded beyond its first 64 entries: a folder of a "
+                            "class holds at most 64 files and folders, its folders' included"
+                            : "not graded beyond its first 5000 entries: grade a directory this large in parts");
+            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(b->rel)))
+                rc = SW_ENOMEM;
+            break;
+        }
         char sub[PATH_MAX], subrel[PATH_MAX];
         int n = snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
         int m = snprintf(subrel, sizeof subrel, "%s%s%s", rel, rel[0] ? "/" : "", e->d_name);
@@ -250,8 +275,9 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             /* A download's folder: walked, never through a link (lstat said
              * a directory), and remembered so no output goes into it. */
             rc = add_place(list, &st, NULL);
+            walk_budget own = { FOLDER_ENTRIES, 0, sub, subrel };
             if (rc == SW_OK)
-                rc = collect_dir(list, sub, subrel, top, assign_st, depth + 1);
+                rc = collect_dir(list, sub, subrel, top, assign_st, depth + 1, depth ? b : &own);
             continue;
         }
         if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
@@ -346,8 +372,9 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
     const char *own = strrchr(real, '/');
     own = own && own[1] ? own + 1 : "";
     int rc = add_place(list, &st, real);
+    walk_budget whole = { DIR_ENTRIES, 0, arg, list->roster ? own : "" };
     if (rc == SW_OK)
-        rc = collect_dir(list, arg, list->roster ? own : "", real, assign_st, 0);
+        rc = collect_dir(list, arg, whole.rel, real, assign_st, 0, &whole);
     if (rc != SW_OK)
         return sw_cli_error("grade: out of memory");
     sort_from(list->items, first, list->n);

@@ -205,15 +205,24 @@ int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const
 
 typedef void grade_writer(FILE *f, const grade_list *l, const char *summary);
 
-/* Through util/outfile.h: whole or not at all, devices and "-" in place. */
+/* Through util/outfile.h: whole or not at all, devices and "-" in place;
+ * max > 0: a file of more bytes is not written (what reads it back would
+ * refuse it). */
 static int write_whole(const char *path, grade_writer *write, const grade_list *l,
-                       const char *summary)
+                       const char *summary, size_t max)
 {
     sw_outfile o;
     char err[SW_ERRLEN + 256];
     if (sw_outfile_open(&o, path, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: %s", err);
     write(o.f, l, summary);
+    off_t size = fflush(o.f) == 0 ? ftello(o.f) : -1;
+    if (max > 0 && size > (off_t)max) {
+        sw_outfile_abort(&o);
+        return sw_cli_error("grade: the gradebook would be %.1f MiB, more than the %zu MiB stepwise reads "
+                            "back: not written (a gradebook there is kept); grade the class in parts",
+                            (double)size / 1048576, max >> 20);
+    }
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: %s", err);
     return SW_EXIT_OK;
@@ -320,13 +329,13 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
     fflush(table());
     int rc = SW_EXIT_OK;
     if (csv)
-        rc = write_whole(csv, write_csv, l, summary);
+        rc = write_whole(csv, write_csv, l, summary, SW_CSV_FILE_MAX);
     if (csv && rc == SW_EXIT_OK && book_said[0])
         fprintf(table(), "gradebook: %s\n", book_said);
     if (rc == SW_EXIT_OK && l->feedback)
         rc = grade_feedback_write(l, l->feedback);
     if (rc == SW_EXIT_OK && results)
-        rc = write_whole(results, write_results, l, summary);
+        rc = write_whole(results, write_results, l, summary, 0);
     if (sw_cli_flush_stdout() != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     if (rc != SW_EXIT_OK)

@@ -14,7 +14,9 @@
 #   5. a plugin file too large for the sandbox read as a broken sandbox;
 #   6. under --no-sandbox (Gradescope's fallback) a plugin's daemon, out of
 #      its session, outlived grade and rewrote results.json with a score of
-#      its own.
+#      its own;
+#   7. one student's folder of 15 000 files made a gradebook too large for
+#      stepwise to read back, and every regrade after failed.
 . "$(dirname "$0")/lib.sh"
 A=assign.txt
 cat > $A <<'EOF'
@@ -143,4 +145,15 @@ sleep 1
 [ "$(wc -c < heart)" -eq "$beats" ] || fail "6: a plugin's daemon outlived grade"
 grep -q FORGED gs.json && fail "6: the daemon rewrote results.json: $(cat gs.json)"
 grep -q '"score": 0' gs.json || fail "6: results.json: $(cat gs.json)"
-echo "red team: the six breaks hold"
+
+# 7: a folder brings at most 64 entries, and a regrade reads the book back
+mkdir -p many/s1001_alice many/s1004_mallory/a/b
+cp class/ZQCLASSMATE_s1001.trace many/s1001_alice/rk4.trace
+i=0
+while [ $i -lt 300 ]; do : > "many/s1004_mallory/a/b/$i.txt"; i=$((i + 1)); done
+"$SW" grade --assignment $A --roster roster.csv --csv many.csv --fresh many >out.txt 2>&1
+[ "$(grep -c "beyond its first 64 entries" many.csv)" -eq 1 ] || fail "7: no row says the folder was cut: $(tail -3 many.csv)"
+[ "$(wc -l < many.csv)" -le 70 ] || fail "7: $(wc -l < many.csv) rows from one folder"
+"$SW" grade --assignment $A --roster roster.csv --csv many.csv many/s1001_alice/rk4.trace >out.txt 2>&1
+[ $? -le 1 ] || fail "7: the regrade could not read the gradebook back: $(cat out.txt)"
+echo "red team: the seven breaks hold"

@@ -34,6 +34,12 @@ START_TEST(escape_controls)
     /* printable UTF-8 stays; C1 controls (U+009B is a CSI) and invalid bytes do not */
     sw_escape("Δt ✓ 日本 \xc2\x9b \xff\xfe \xe2\x9c", 100, out, sizeof out);
     ck_assert_str_eq(out, "Δt ✓ 日本 \\xc2\\x9b \\xff\\xfe \\xe2\\x9c");
+    /* invisible formatting too: a right-to-left override (U+202E), a
+     * zero-width space (U+200B), a line separator (U+2028), a BOM (U+FEFF);
+     * the characters beside them stay (U+2030 per mille, U+200A hair space) */
+    sw_escape("a" "\xe2\x80\xae" "b" "\xe2\x80\x8b" "c" "\xe2\x80\xa8" "d" "\xef\xbb\xbf" "\xe2\x80\xb0" "\xe2\x80\x8a", 100, out,
+              sizeof out);
+    ck_assert_str_eq(out, "a\\xe2\\x80\\xaeb\\xe2\\x80\\x8bc\\xe2\\x80\\xa8d\\xef\\xbb\\xbf" "\xe2\x80\xb0" "\xe2\x80\x8a");
     /* cut by max or by the buffer: marked, never inside a character or an escape */
     sw_escape("abcdef", 3, out, sizeof out);
     ck_assert_str_eq(out, "abc...");

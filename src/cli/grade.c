@@ -463,7 +463,7 @@ static int grade_command(int argc, char **argv, char **wargv)
         return sw_cli_error("grade: %s", err);
     }
     sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
-    grade_print_head(&asg, list.n, list.ignored);
+    grade_print_head(&asg, &list);
     double start = sw_sandbox_now();
     if (jobs == 0) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);

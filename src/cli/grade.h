@@ -97,7 +97,7 @@ int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const
 void grade_list_free(grade_list *l);
 /* The table's heading, then one row per graded submission (on stdout, or
  * stderr when a report goes to stdout; names escaped). */
-void grade_print_head(const sw_assignment *a, int n, int ignored);
+void grade_print_head(const sw_assignment *a, const grade_list *l);
 void grade_print_row(grade_entry *e);
 /* The entries not graded, the totals; the CSV gradebook and results.json
  * when asked (each written whole through a temporary file renamed into

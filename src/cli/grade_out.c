@@ -74,16 +74,23 @@ static void grade_score_text(const grade_entry *e, char *buf, size_t len)
         snprintf(buf, len, "%g/%g", e->score.score, e->score.max);
 }
 
-void grade_print_head(const sw_assignment *a, int n, int ignored)
+void grade_print_head(const sw_assignment *a, const grade_list *l)
 {
+    int n = l->n, ignored = 0, missing = 0;
+    for (int i = 0; i < l->ignored; i++)
+        *(l->refused[i].status == GRADE_MISSING ? &missing : &ignored) += 1;
     char dt[40], path[300];
     sw_fmt_shortest(dt, sizeof dt, a->meta.dt);
     sw_escape(a->path, 200, path, sizeof path);
     fprintf(table(), "grading %d submission%s against %s (%s%s on %s, dt %s)", n, n == 1 ? "" : "s",
             path, a->nmethods > 1 ? "any of " : "", a->methods[0]->name, a->meta.scene->name, dt);
     if (ignored)
-        fprintf(table(), "; %d other entr%s not graded (listed at the end)", ignored,
-                ignored == 1 ? "y" : "ies");
+        fprintf(table(), "; %d other entr%s not graded", ignored, ignored == 1 ? "y" : "ies");
+    if (missing)
+        fprintf(table(), "%s %d student%s on the roster without a submission", ignored ? "," : ";", missing,
+                missing == 1 ? "" : "s");
+    if (ignored || missing)
+        fprintf(table(), " (listed at the end)");
     fprintf(table(), "\n  %-20s %-24s %-7s %7s %6s  %s\n", "student", "file", "verdict", "score",
             "step", "what");
     fflush(table());

@@ -21,7 +21,10 @@ void sw_csv_field(FILE *out, const char *text)
     int neutralise = buf[0] && strchr(formula_starts, buf[0]);
     if (neutralise && strlen(buf) == sizeof buf - 1)
         sw_escape_kept(text, SW_CSV_CELL_MAX, buf, sizeof buf - 1);
-    int quote = strpbrk(buf, ",\"") != NULL;
+    /* quoted where a ',' or a '"' must be, and where a ';' is: a
+     * spreadsheet that splits at ';' (many locales) would start a cell,
+     * perhaps a formula, after it */
+    int quote = strpbrk(buf, ",\";") != NULL;
     if (quote)
         putc('"', out);
     if (neutralise)

@@ -1,5 +1,6 @@
 /* Escaping untrusted text for messages. Invariant: the output holds no
- * byte below 0x20, no DEL, no C1 control and no invalid UTF-8, whatever the
+ * byte below 0x20, no DEL, no C1 control, no bidirectional or other
+ * invisible formatting character and no invalid UTF-8, whatever the
  * input, and is never cut inside a character or an escape. */
 #include "util/escape.h"
 
@@ -8,15 +9,26 @@
 
 #include "util/utf8.h"
 
+/* Unicode's invisible formatting: the bidirectional controls (which can
+ * show "lamrof" as "formal" and move a column), zero-width characters and
+ * the line and paragraph separators. Shown, they would let a name look
+ * like another or break a row: escaped like controls. */
+static int invisible(uint32_t cp)
+{
+    return cp == 0x061c || (cp >= 0x200b && cp <= 0x200f) || (cp >= 0x2028 && cp <= 0x202e) ||
+           (cp >= 0x2060 && cp <= 0x2069) || cp == 0xfeff;
+}
+
 /* Length of the printable character at s (avail bytes readable): 1..4, or
- * 0 when it is a control, DEL, a C1 control or not well-formed UTF-8. */
+ * 0 when it is a control, DEL, a C1 control, invisible formatting or not
+ * well-formed UTF-8. */
 static size_t printable(const unsigned char *s, size_t avail)
 {
     if (s[0] < 0x80)
         return s[0] >= 0x20 && s[0] != 0x7f ? 1 : 0;
     size_t len;
     uint32_t cp;
-    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK || (cp >= 0x80 && cp <= 0x9f))
+    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK || (cp >= 0x80 && cp <= 0x9f) || invisible(cp))
         return 0;
     return len;
 }

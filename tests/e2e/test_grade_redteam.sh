@@ -16,7 +16,10 @@
 #      its session, outlived grade and rewrote results.json with a score of
 #      its own;
 #   7. one student's folder of 15 000 files made a gradebook too large for
-#      stepwise to read back, and every regrade after failed.
+#      stepwise to read back, and every regrade after failed;
+#   8. a name with a ';' (a cell boundary where a spreadsheet splits at ';')
+#      went into the gradebook unquoted, and one with a right-to-left
+#      override (U+202E) into the table as it was.
 . "$(dirname "$0")/lib.sh"
 A=assign.txt
 cat > $A <<'EOF'
@@ -156,4 +159,13 @@ while [ $i -lt 300 ]; do : > "many/s1004_mallory/a/b/$i.txt"; i=$((i + 1)); done
 [ "$(wc -l < many.csv)" -le 70 ] || fail "7: $(wc -l < many.csv) rows from one folder"
 "$SW" grade --assignment $A --roster roster.csv --csv many.csv many/s1001_alice/rk4.trace >out.txt 2>&1
 [ $? -le 1 ] || fail "7: the regrade could not read the gradebook back: $(cat out.txt)"
-echo "red team: the seven breaks hold"
+
+# 8: ';' quoted in the gradebook, bidirectional controls escaped everywhere
+mkdir names
+{ echo '# stepwise trace 1'; echo '# student: Mallory;=cmd|calc'; sed 1d class/ZQCLASSMATE_s1001.trace; } > names/m.trace
+{ echo '# stepwise trace 1'; printf '# student: Eve\342\200\256lamrof\n'; sed 1d class/ZQCLASSMATE_s1001.trace; } > names/e.trace
+"$SW" grade --assignment $A --csv names.csv --fresh names >out.txt 2>&1
+grep -q '^"Mallory;=cmd|calc",' names.csv || fail "8: a ';' left unquoted: $(grep Mallory names.csv)"
+if grep -q "$(printf '\342\200\256')" out.txt names.csv; then fail "8: U+202E shown as it is"; fi
+grep -q 'Eve\\xe2\\x80\\xaelamrof' names.csv || fail "8: U+202E not escaped: $(grep Eve names.csv)"
+echo "red team: the eight breaks hold"

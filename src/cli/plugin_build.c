@@ -343,6 +343,15 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
         snprintf(err, errlen, "--plugin '%s' was not built: %s", shown, msg);
         return SW_EIO;
     }
+    if (!log || !log[0] || strstr(log, "No space left on device")) {
+        /* its scratch disk full: the log, written there, may be lost too */
+        snprintf(err, errlen, "--plugin '%s' was not built: the compiler %s; a build's scratch space is "
+                 "%zu MiB here (half the grader's --memory, at most 64): raise --memory for a large plugin",
+                 shown, log && log[0] ? "ran out of scratch space" : "stopped without a message",
+                 spec.disk_bytes >> 20);
+        free(log);
+        return SW_EIO;
+    }
     first_error(log, msg, sizeof msg);
     free(log);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);

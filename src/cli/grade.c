@@ -295,7 +295,15 @@ static int grade_command(int argc, char **argv, char **wargv)
     /* a plugin's worker, started again as a program (grade.h) */
     const char *w_build = NULL, *w_path = NULL;
     int w_index = -1, w_similarity = 0;
-    if (argc > 6 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
+    if (argc > 1 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
+        /* only as grade starts it: its channel on descriptor 3, the mark
+         * in its environment (a file named "--worker" in a teacher's glob
+         * is neither) */
+        struct stat ch;
+        const char *mark = getenv("STEPWISE_GRADE_WORKER");
+        if (argc <= 6 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
+            return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
+                                "option (to grade a file of that name, give it after --)");
         w_index = atoi(argv[2]);
         w_build = argv[3];
         w_path = argv[4];

@@ -82,6 +82,7 @@ static void start_clean(const grade_job *job)
     for (int i = 1; i < job->argc; i++)
         args[n++] = job->argv[i];
     args[n] = NULL;
+    setenv("STEPWISE_GRADE_WORKER", "1", 1);
     execve("/proc/self/exe", args, environ);
     int e = errno;
     free(args);

@@ -78,7 +78,7 @@ int sw_step_dop853_lc(sw_stepper *s, sw_ode *ode, double *t, double *y, double h
      * in the evaluations, not here (they are not the error control's) */
     s->rejected += r->st.rejected - rejected;
     if (rc != SW_OK) {
-        s->why = "step size underflow in Levi-Civita's variables: the error control gave up";
+        s->why = r->lc.why;
         return rc;
     }
     s->accepted++;

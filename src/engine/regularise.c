@@ -110,8 +110,10 @@ static int finite6(const double *w)
 
 /* Newton's method on the length of the step from saved that ends at t_end,
  * from the step just taken past it (its length len). 1: w at t_end within 4
- * ulps of it; 0: a trial came out shorter than asked (the error control
- * shrank it), and w is that accepted step; -1: a step failed. */
+ * ulps of it (or, where 16 iterations did not get there, as t' -> 0 at a
+ * collision, within 1e-9 of it); 0: a trial came out shorter than asked
+ * (the error control shrank it), and w is that accepted step; -1: a step
+ * failed. */
 static int land(sw_lc *lc, sw_stepper *s, double *w, const double *saved, double len, double t_end)
 {
     double tol = 4 * 0x1p-52 * fabs(t_end);
@@ -131,6 +133,12 @@ static int land(sw_lc *lc, sw_stepper *s, double *w, const double *saved, double
     return fabs(w[5] - t_end) <= 1e-9 * (1 + fabs(t_end)) ? 1 : -1;
 }
 
+static int failed(sw_lc *lc, const char *why)
+{
+    lc->why = why;
+    return SW_EDIVERGED;
+}
+
 int sw_lc_step(sw_lc *lc, sw_stepper *s, double *w, double dt)
 {
     double saved[SW_LC_DIM], sig = 0, t_end = w[5] + dt;
@@ -139,19 +147,24 @@ int sw_lc_step(sw_lc *lc, sw_stepper *s, double *w, double dt)
      * a little more, so that a step the error control lets through passes
      * t_end and is then landed on it */
     double r = w[0] * w[0] + w[1] * w[1], rp = 2 * (w[0] * w[2] + w[1] * w[3]), disc = r * r + 2 * rp * dt;
-    double len = disc > 0 ? 2 * dt / (r + sqrt(disc)) : dt / r, cap = 1.001 * len;
+    double len = disc > 0 ? 2 * dt / (r + sqrt(disc)) : dt / r, cap = isfinite(dt) ? 1.001 * len : INFINITY;
     if (!(cap > 0))
-        return SW_EDIVERGED;
-    if (s->method->step(s, &lc->ode, &sig, w, isfinite(cap) ? cap : 0x1p1000) != SW_OK || !finite6(w))
-        return SW_EDIVERGED;
+        return failed(lc, "in Levi-Civita's variables: no step reaches the time asked (the body at the centre)");
+    if (s->method->step(s, &lc->ode, &sig, w, isfinite(cap) ? cap : 0x1p1000) != SW_OK)
+        return failed(lc, "in Levi-Civita's variables: step size underflow, the error control gave up");
+    if (!finite6(w))
+        return failed(lc, "in Levi-Civita's variables: the state became non-finite");
     if (w[5] > t_end) {
         int rc = land(lc, s, w, saved, sig, t_end);
         if (rc < 0)
-            return SW_EDIVERGED;
+            return failed(lc, "in Levi-Civita's variables: the step could not be landed on the time asked "
+                          "(Newton's method on its length failed; the orbit is lost: tighten rtol and atol)");
         if (rc > 0)
             w[5] = t_end; /* within 4 ulps of it: the clock is set, not the state carried */
     }
-    return w[5] > saved[5] ? SW_OK : SW_EDIVERGED; /* else the clock stopped */
+    if (!(w[5] > saved[5]))
+        return failed(lc, "in Levi-Civita's variables: the clock stopped (t' = r = 0)");
+    return SW_OK;
 }
 
 int sw_lc_run_until(sw_lc *lc, sw_stepper *s, double *w, double t_end, double *y)

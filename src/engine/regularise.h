@@ -35,6 +35,7 @@ typedef struct sw_lc {
     double cx, cy, mu; /* the centre and the field's acceleration parameter */
     int alone;         /* the field is the particle's only force: P = 0 */
     double yb[4], fb[4]; /* scratch: the particle's state and derivative */
+    const char *why;     /* why the last sw_lc_step failed (static text) */
 } sw_lc;
 
 /* The regularised system of base, a one-particle system ([x | v], dim 4,
@@ -57,8 +58,9 @@ void sw_lc_to(const sw_lc *lc, const double *w, double *y);
  * set), from w (its clock at t = w[5]) of at most dt in t: the step the
  * error control takes, or, where that would pass t + dt, the one that
  * ends there, found by Newton's method on its length (t' = r) and the
- * clock set to t + dt within 4 ulps. SW_OK, or SW_EDIVERGED when a step
- * fails or the clock stops advancing. */
+ * clock set to t + dt within 4 ulps (1e-9 where Newton's method stalls,
+ * at a collision). SW_OK, or SW_EDIVERGED when a step fails or the clock
+ * stops advancing, with lc->why saying which. */
 int sw_lc_step(sw_lc *lc, sw_stepper *s, double *w, double dt);
 
 /* Steps of sw_lc_step until the clock reaches t_end; the particle's state

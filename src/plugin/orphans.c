@@ -5,7 +5,6 @@
 #include "plugin/sandbox.h"
 
 #include <dirent.h>
-#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,10 +17,10 @@ void sw_sandbox_adopt_orphans(void) { prctl(PR_SET_CHILD_SUBREAPER, 1); }
 
 /* The parent pid of process pid from /proc/PID/stat ("pid (comm) state
  * ppid ...", comm may hold spaces and parentheses), or -1. */
-static pid_t parent_of(const char *pid)
+static pid_t parent_of(pid_t pid)
 {
     char path[64], buf[512];
-    snprintf(path, sizeof path, "/proc/%s/stat", pid);
+    snprintf(path, sizeof path, "/proc/%ld/stat", (long)pid);
     FILE *f = fopen(path, "re");
     if (!f)
         return -1;
@@ -36,30 +35,77 @@ static pid_t parent_of(const char *pid)
     return (pid_t)ppid;
 }
 
+/* Every process below this one now (a chain of any depth: the parents
+ * read once, the descendants closed over them), stopped and then killed;
+ * how many. Stopped first, so none forks while the others are found. */
+static int kill_descendants(pid_t self)
+{
+    size_t n = 0, cap = 256;
+    pid_t *pid = malloc(cap * sizeof *pid), *ppid = malloc(cap * sizeof *ppid);
+    DIR *d = opendir("/proc");
+    if (!pid || !ppid || !d) {
+        free(pid), free(ppid);
+        if (d)
+            closedir(d);
+        return 0;
+    }
+    for (struct dirent *e; (e = readdir(d));) {
+        if (e->d_name[0] < '1' || e->d_name[0] > '9')
+            continue;
+        if (n == cap) {
+            pid_t *a = realloc(pid, 2 * cap * sizeof *a);
+            if (!a)
+                break;
+            pid = a;
+            pid_t *b = realloc(ppid, 2 * cap * sizeof *b);
+            if (!b)
+                break;
+            ppid = b;
+            cap *= 2;
+        }
+        pid[n] = (pid_t)atol(e->d_name);
+        ppid[n] = parent_of(pid[n]);
+        n++;
+    }
+    closedir(d);
+    unsigned char *below = calloc(n + 1, 1);
+    int found = 0;
+    for (int grew = below != NULL; grew;) {
+        grew = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (below[i] || pid[i] == self || pid[i] <= 1 || ppid[i] <= 0)
+                continue;
+            int under = ppid[i] == self;
+            for (size_t j = 0; !under && j < n; j++)
+                under = below[j] && pid[j] == ppid[i];
+            if (under) {
+                kill(pid[i], SIGSTOP);
+                below[i] = 1;
+                grew = 1;
+                found++;
+            }
+        }
+    }
+    for (size_t i = 0; i < n && below; i++)
+        if (below[i])
+            kill(pid[i], SIGKILL);
+    free(below), free(pid), free(ppid);
+    return found;
+}
+
 int sw_sandbox_kill_orphans(void)
 {
     pid_t self = getpid();
     int killed = 0;
-    for (int round = 0; round < 100; round++) {
-        int found = 0;
-        DIR *d = opendir("/proc");
-        if (!d)
-            break;
-        for (struct dirent *e; (e = readdir(d));) {
-            if (e->d_name[0] < '1' || e->d_name[0] > '9' || parent_of(e->d_name) != self)
-                continue;
-            pid_t pid = (pid_t)atol(e->d_name);
-            if (kill(pid, SIGKILL) == 0) {
-                found++;
-                killed++;
-            }
-        }
-        closedir(d);
+    double until = sw_sandbox_now() + 10.0;
+    for (;;) {
+        int found = kill_descendants(self);
+        killed += found;
         while (waitpid(-1, NULL, WNOHANG) > 0)
             ;
-        if (!found)
+        if (!found || sw_sandbox_now() > until)
             break;
-        usleep(1000); /* a killed parent's own children come to us next */
+        usleep(1000); /* the killed ones' children come to us in turn */
     }
     while (waitpid(-1, NULL, WNOHANG) > 0)
         ;

@@ -13,8 +13,8 @@
 #   4. the compiler was not held to --memory;
 #   5. a plugin file too large for the sandbox read as a broken sandbox;
 #   6. under --no-sandbox (Gradescope's fallback) a plugin's daemon, out of
-#      its session, outlived grade and rewrote results.json with a score of
-#      its own;
+#      its session (and then a chain of them), outlived grade and rewrote
+#      results.json with a score of its own;
 #   7. one student's folder of 15 000 files made a gradebook too large for
 #      stepwise to read back, and every regrade after failed;
 #   8. a name with a ';' (a cell boundary where a spreadsheet splits at ';')
@@ -137,7 +137,9 @@ const sw_plugin *sw_plugin_info(void);
 const sw_plugin *sw_plugin_info(void)
 {
     static int done;
-    if (!done++ && fork() == 0) { setsid(); if (fork() == 0) loop(); _exit(0); }
+    /* out of its session, then a chain of 60, each the child of the one
+     * before and each at work: a killer of children alone sees one a round */
+    if (!done++ && fork() == 0) { setsid(); for (int k = 0; k < 150 && fork() == 0; k++) ; loop(); }
     return &info;
 }
 EOF

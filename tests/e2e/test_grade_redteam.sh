@@ -6,8 +6,8 @@
 #      cells): tests/hostile/heap-scan.c scans its heap, every writable
 #      segment and its arguments for markers, and must find the
 #      assignment's (its own to know: the scan ran) and nothing else;
-#   2. a submission_metadata.yml in a student's own Gradescope folder
-#      decided, on a regrade, whose submission it was;
+#   2. a submission_metadata.yml in a student's own Gradescope folder (or
+#      in a folder of it) decided, on a regrade, whose submission it was;
 #   3. two file names that escaped to one gradebook cell ("Jos\xe9" as
 #      written, and the Latin-1 é) let a regrade of one overwrite the other;
 #   4. the compiler was not held to --memory;
@@ -78,6 +78,14 @@ for again in gs/submission_444 gs/submission_444/rk4.trace; do
 done
 grep -q "inside a submission's folder" out.txt || grep -q "inside a submission's folder" gs.csv \
     || fail "2: the planted metadata is not named as refused"
+# ... and one planted deeper in the upload, beside a file in a folder of it
+mkdir gs/submission_444/sub
+mv gs/submission_444/submission_metadata.yml gs/submission_444/sub/
+cp gs/submission_444/rk4.trace gs/submission_444/sub/rk4.trace
+"$SW" grade --assignment $A --roster roster.csv --csv gs.csv --fresh gs >/dev/null 2>&1
+"$SW" grade --assignment $A --roster roster.csv --csv gs.csv gs/submission_444/sub/rk4.trace >out.txt 2>&1
+grep -q "^Alice Adams,gs/submission_444" gs.csv && fail "2: a deeper planted metadata gave Mallory's file to Alice"
+grep -q "^Mallory Mars,gs/submission_444/sub/rk4.trace,fail" gs.csv || fail "2: the deeper file's row: $(cat gs.csv)"
 
 # 3: names that once escaped alike keep rows of their own
 mkdir esc

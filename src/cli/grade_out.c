@@ -212,6 +212,21 @@ int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const
 
 typedef void grade_writer(FILE *f, const grade_list *l, const char *summary);
 
+/* Lines in the file at path (-1: it cannot be read). */
+static long count_lines(const char *path)
+{
+    FILE *f = path ? fopen(path, "rb") : NULL;
+    if (!f)
+        return -1;
+    long n = 0;
+    char buf[65536];
+    for (size_t got; (got = fread(buf, 1, sizeof buf, f)) > 0;)
+        for (size_t i = 0; i < got; i++)
+            n += buf[i] == '\n';
+    fclose(f);
+    return n;
+}
+
 /* Through util/outfile.h: whole or not at all, devices and "-" in place;
  * max > 0: a file of more bytes is not written (what reads it back would
  * refuse it). */
@@ -224,11 +239,13 @@ static int write_whole(const char *path, grade_writer *write, const grade_list *
         return sw_cli_error("grade: %s", err);
     write(o.f, l, summary);
     off_t size = fflush(o.f) == 0 ? ftello(o.f) : -1;
-    if (max > 0 && size > (off_t)max) {
+    long lines = max > 0 && !o.direct && o.tmp[0] ? count_lines(o.tmp) : 0;
+    if (max > 0 && (size > (off_t)max || lines > SW_CSV_ROWS_MAX)) {
         sw_outfile_abort(&o);
-        return sw_cli_error("grade: the gradebook would be %.1f MiB, more than the %zu MiB stepwise reads "
-                            "back: not written (a gradebook there is kept); grade the class in parts",
-                            (double)size / 1048576, max >> 20);
+        return sw_cli_error("grade: the gradebook would be %.1f MiB in %ld rows, more than the %zu MiB or %d rows "
+                            "stepwise reads back: not written (a gradebook there is kept); grade the class in "
+                            "parts, each with its own --csv", (double)size / 1048576, lines, max >> 20,
+                            SW_CSV_ROWS_MAX);
     }
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: %s", err);

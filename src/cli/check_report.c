@@ -9,6 +9,7 @@
 
 #include "cli/cli.h"
 #include "cli/json.h"
+#include "util/escape.h"
 
 static const char *status_word(sw_verdict_status s)
 {
@@ -238,11 +239,12 @@ static void print_measure(FILE *out, const sw_verdict *v)
 void sw_check_print_plain(FILE *out, const sw_verdict *v)
 {
     const sw_check_result *r = &v->res;
-    char what[400];
+    char what[400], shown[300];
+    sw_escape(v->trace ? v->trace : v->plugin, 200, shown, sizeof shown); /* a file's name, a plugin's */
     if (v->trace)
-        snprintf(what, sizeof what, "%s", v->trace);
+        snprintf(what, sizeof what, "%s", shown);
     else
-        snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);
+        snprintf(what, sizeof what, "plugin %s on %s", shown, v->scene);
     if (v->status == SW_VERDICT_PASS)
         fprintf(out, "PASS: %s matches %s\n  %ld rows, %ld values within |got - expected| <= %g + "
                "%g*|expected|\n", what, v->reference, r->rows_compared, r->values_compared,

@@ -118,6 +118,11 @@ const char *grade_inside_submissions(const grade_list *l, const char *real);
 /* The student a row is about: the roster's name, else "# student:", else
  * the file's name without directory and extension. */
 void grade_student_of(const grade_entry *e, char *buf, size_t len);
+/* text as every report to a student or a teacher shows it: each line
+ * through the message rule (util/escape.h; a file's name, a "# student:"
+ * line or a report may hold controls, escape sequences or bidirectional
+ * overrides), its newlines kept. Caller frees; NULL when out of memory. */
+char *grade_text_shown(const char *text);
 const char *grade_verdict_word(int status);
 /* A row's points and their maximum, as every report counts them: the
  * assignment's checks where it was scored, else 1 for a pass of 1. */

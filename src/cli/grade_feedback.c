@@ -78,9 +78,10 @@ static int same_student(const grade_list *l, int i, int j)
 
 static void write_report(FILE *f, const grade_list *l, int first, const unsigned char *done)
 {
-    char student[SW_TRACE_STUDENT_MAX];
+    char student[SW_TRACE_STUDENT_MAX], heading[4 * SW_TRACE_STUDENT_MAX];
     grade_student_of(row(l, first), student, sizeof student);
-    fprintf(f, "Feedback for %s\n\n", student);
+    sw_escape(student, sizeof student, heading, sizeof heading);
+    fprintf(f, "Feedback for %s\n\n", heading);
     for (int i = first; i < l->n + l->ignored; i++) {
         if (done[i] || !same_student(l, first, i))
             continue;
@@ -90,7 +91,9 @@ static void write_report(FILE *f, const grade_list *l, int first, const unsigned
             continue;
         }
         const char *base = strrchr(e->path, '/');
-        fprintf(f, "== %s: %s ==\n", base ? base + 1 : e->path, grade_verdict_word(e->status));
+        char shown[300];
+        sw_escape(base ? base + 1 : e->path, 200, shown, sizeof shown);
+        fprintf(f, "== %s: %s ==\n", shown, grade_verdict_word(e->status));
         if (e->failing_step >= 0)
             fprintf(f, "first failing step: %ld\n", e->failing_step);
         if (e->message[0])
@@ -113,15 +116,21 @@ int grade_feedback_write(const grade_list *l, const char *dir)
         free(names);
         return sw_cli_error("grade: out of memory");
     }
-    for (int i = 0; i < rows && rc == SW_EXIT_OK; i++) {
-        if (done[i])
+    /* With a roster its students name their files first, and a row no
+     * student matched gets "unmatched-": a file's name reduced alike
+     * ("AliceéAdams") never takes a student's file. */
+    for (int pass = 0; pass < rows * (l->roster ? 2 : 1) && rc == SW_EXIT_OK; pass++) {
+        int i = pass % rows, on_roster = l->roster && row(l, i)->who >= 0;
+        if (done[i] || (l->roster && (pass < rows) != on_roster))
             continue;
         const grade_entry *e = row(l, i);
-        if (e->status == GRADE_SKIPPED && !(l->roster && e->who >= 0))
+        if (e->status == GRADE_SKIPPED && !on_roster)
             continue; /* not a student's: a stray file */
         char student[SW_TRACE_STUDENT_MAX], base[90], path[PATH_MAX];
         grade_student_of(e, student, sizeof student);
-        safe_name(student, base, sizeof base);
+        safe_name(student, base + (l->roster && !on_roster ? 10 : 0), sizeof base - 10);
+        if (l->roster && !on_roster)
+            memcpy(base, "unmatched-", 10);
         /* Two students whose names reduce alike get -2, -3, ... */
         snprintf(names[written], sizeof names[written], "%s", base);
         for (int k = 2, clash = 1; clash; k++) {
@@ -144,7 +153,17 @@ int grade_feedback_write(const grade_list *l, const char *dir)
             rc = sw_cli_error("grade: --feedback: %s", err);
             break;
         }
-        write_report(o.f, l, i, done);
+        char *text = NULL, *shown = NULL;
+        size_t text_len = 0;
+        FILE *m = open_memstream(&text, &text_len);
+        if (m) {
+            write_report(m, l, i, done);
+            fclose(m);
+            shown = text ? grade_text_shown(text) : NULL;
+        }
+        fputs(shown ? shown : "(out of memory)\n", o.f);
+        free(text);
+        free(shown);
         if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
             rc = sw_cli_error("grade: --feedback: %s", err);
         for (int j = i; j < rows; j++)

@@ -16,11 +16,18 @@
 #include "cli/json.h"
 #include "stepwise/stepwise.h"
 #include "util/outfile.h"
+#include "util/escape.h"
 
+/* A file's name as the output shows it: escaped (it may hold a newline
+ * and a forged line after it), in one of four rotating buffers. */
 static const char *base_name(const char *path)
 {
+    static char shown[4][300];
+    static int next;
     const char *slash = strrchr(path, '/');
-    return slash ? slash + 1 : path;
+    char *out = shown[next++ & 3];
+    sw_escape(slash ? slash + 1 : path, 200, out, sizeof shown[0]);
+    return out;
 }
 
 static void test(FILE *f, int *first, const char *name, double score, double max, const char *output)
@@ -93,6 +100,9 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
         else if (best >= 0)
             fprintf(t, "\n%s\n", l->items[best].message);
         fclose(t);
+        char *shown = text ? grade_text_shown(text) : NULL;
+        free(text);
+        text = shown;
     }
     fputs("{\n  \"score\": ", f);
     sw_json_num(f, s->score);

@@ -292,8 +292,10 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
         char student[SW_TRACE_STUDENT_MAX], name[SW_TRACE_STUDENT_MAX + PATH_MAX];
         student_of(e, student, sizeof student);
         snprintf(name, sizeof name, "%s (%s)", student, e->path);
+        char *shown_name = grade_text_shown(name);
         fprintf(f, "%s\n    {\n      \"name\": ", i ? "," : "");
-        sw_json_str(f, name);
+        sw_json_str(f, shown_name ? shown_name : "?");
+        free(shown_name);
         double points, most;
         grade_points_of(e, &points, &most);
         fputs(",\n      \"score\": ", f);
@@ -308,12 +310,15 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
             snprintf(fallback, sizeof fallback, "%s: %s", verdict_word(e->status), e->message);
             text = fallback;
         }
-        sw_json_str(f, text);
+        char *shown = grade_text_shown(text), *notes = grade_text_shown(e->notes);
+        sw_json_str(f, shown ? shown : "(out of memory)");
+        free(shown);
         if (e->notes[0]) {
             fputs(",\n      \"extra_data\": { \"notes\": ", f);
-            sw_json_str(f, e->notes);
+            sw_json_str(f, notes ? notes : "");
             fputs(" }", f);
         }
+        free(notes);
         fputs("\n    }", f);
     }
     fputs(rows ? "\n  ]\n}\n" : "]\n}\n", f);

@@ -4,7 +4,10 @@
 #include "cli/grade.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include "util/escape.h"
 
 const char *grade_verdict_word(int status)
 {
@@ -34,4 +37,23 @@ void grade_points_of(const grade_entry *e, double *score, double *max)
 {
     *score = e->score.n ? e->score.score : e->status == 0;
     *max = e->score.n ? e->score.max : 1;
+}
+
+char *grade_text_shown(const char *text)
+{
+    size_t n = strlen(text), cap = 4 * n + 8, used = 0;
+    char *out = malloc(cap);
+    if (!out)
+        return NULL;
+    for (const char *line = text; *line;) {
+        const char *end = strchr(line, '\n');
+        size_t len = end ? (size_t)(end - line) : strlen(line);
+        sw_escape_kept(line, len, out + used, cap - used);
+        used += strlen(out + used);
+        if (end)
+            out[used++] = '\n';
+        line += len + (end != NULL);
+    }
+    out[used] = '\0';
+    return out;
 }

@@ -21,7 +21,12 @@
 #      in a flat directory left classmates ungraded);
 #   8. a name with a ';' (a cell boundary where a spreadsheet splits at ';')
 #      went into the gradebook unquoted, and one with a right-to-left
-#      override (U+202E) into the table as it was.
+#      override (U+202E) into the table as it was;
+#   9. a file's name with newlines put a forged "7 of 7 points" line into
+#      results.json's output and the feedback, and an escape sequence into
+#      a feedback file;
+#  10. a file no roster student matched, reduced to a student's name
+#      ("AliceéAdams"), took that student's feedback file.
 . "$(dirname "$0")/lib.sh"
 A=assign.txt
 cat > $A <<'EOF'
@@ -188,4 +193,20 @@ mkdir names
 grep -q '^"Mallory;=cmd|calc",' names.csv || fail "8: a ';' left unquoted: $(grep Mallory names.csv)"
 if grep -q "$(printf '\342\200\256')" out.txt names.csv; then fail "8: U+202E shown as it is"; fi
 grep -q 'Eve\\xe2\\x80\\xaelamrof' names.csv || fail "8: U+202E not escaped: $(grep Eve names.csv)"
-echo "red team: the eight breaks hold"
+
+# 9: a name's newlines and escapes reach no report raw
+mkdir nl
+cp names/m.trace "nl/$(printf 'x\n\nstepwise: 7 of 7 points (pass)\n\033[32mPASS.trace')"
+"$SW" grade --assignment $A --gradescope nl.json --feedback nlfb nl >out.txt 2>&1
+grep -q "^stepwise: 7 of 7" nl.json nlfb/* && fail "9: a forged line from a file's name"
+if grep -q "$(printf '\033')" nl.json nlfb/*; then fail "9: an escape sequence reached a report"; fi
+grep -q 'x\\x0a\\x0astepwise' nlfb/* || fail "9: the name is not shown escaped: $(cat nlfb/*)"
+
+# 10: an unmatched file never takes a roster student's feedback file
+mkdir fbn
+cp class/ZQCLASSMATE_s1001.trace fbn/s1001_alice.trace
+"$SW" record spring -i euler --dt 0.01 --steps 100 -o "fbn/$(printf 'Alice\303\251Adams.trace')" >/dev/null 2>&1
+"$SW" grade --assignment $A --roster roster.csv --feedback fbfb fbn >out.txt 2>&1
+head -1 fbfb/Alice_Adams.txt | grep -q "^Feedback for Alice Adams$" || fail "10: Alice's feedback file: $(head -1 fbfb/Alice_Adams.txt)"
+[ -f fbfb/unmatched-Alice_Adams.txt ] || fail "10: the unmatched file's feedback: $(ls fbfb)"
+echo "red team: the ten breaks hold"

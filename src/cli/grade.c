@@ -24,6 +24,7 @@
 #include "grade/similar.h"
 #include "grade/verdict.h"
 #include "util/decimal.h"
+#include "util/escape.h"
 #include "util/signals.h"
 #include "util/tmpdir.h"
 
@@ -342,6 +343,16 @@ static int grade_command(int argc, char **argv, char **wargv)
         if (first_file || a[0] != '-') {
             files[nfiles++] = a;
             continue;
+        }
+        struct stat named;
+        if (strcmp(a, "--") != 0 && lstat(a, &named) == 0) {
+            /* a submission named like an option, from a shell's glob (a file
+             * "--no-sandbox" must not turn the jail off for the class) */
+            char shown[120];
+            sw_escape(a, 60, shown, sizeof shown);
+            rc = sw_cli_error("grade: '%s' is both an option and a file here: give the options before the "
+                              "files, and a file whose name begins with '-' after --", shown);
+            break;
         }
         if (strcmp(a, "--") == 0) {
             first_file = 1;

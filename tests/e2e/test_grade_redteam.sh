@@ -26,7 +26,9 @@
 #      results.json's output and the feedback, and an escape sequence into
 #      a feedback file;
 #  10. a file no roster student matched, reduced to a student's name
-#      ("AliceéAdams"), took that student's feedback file.
+#      ("AliceéAdams"), took that student's feedback file;
+#  11. a file named --no-sandbox, brought in by the teacher's `*`, turned
+#      the jail off for the class.
 . "$(dirname "$0")/lib.sh"
 A=assign.txt
 cat > $A <<'EOF'
@@ -209,4 +211,13 @@ cp class/ZQCLASSMATE_s1001.trace fbn/s1001_alice.trace
 "$SW" grade --assignment $A --roster roster.csv --feedback fbfb fbn >out.txt 2>&1
 head -1 fbfb/Alice_Adams.txt | grep -q "^Feedback for Alice Adams$" || fail "10: Alice's feedback file: $(head -1 fbfb/Alice_Adams.txt)"
 [ -f fbfb/unmatched-Alice_Adams.txt ] || fail "10: the unmatched file's feedback: $(ls fbfb)"
-echo "red team: the ten breaks hold"
+
+# 11: a file named like an option is refused, not obeyed
+mkdir glob
+cp class/ZQCLASSMATE_s1001.trace glob/a.trace
+: > glob/--no-sandbox
+(cd glob && "$SW" grade --assignment ../$A * >../out.txt 2>&1; echo $? > ../rc.txt)
+[ "$(cat rc.txt)" -eq 2 ] && grep -q "both an option and a file" out.txt || fail "11: $(cat out.txt)"
+(cd glob && "$SW" grade --assignment ../$A -- * >../out.txt 2>&1)
+grep -q "a.trace.*pass" out.txt || fail "11: after -- the files are graded: $(cat out.txt)"
+echo "red team: the eleven breaks hold"

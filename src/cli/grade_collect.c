@@ -287,11 +287,12 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
         if (depth > 0 && b->left-- <= 0) {
-            if (!b->said++)
+            if (!b->said++) {
                 rc = refuse(list, b->folder, "not graded beyond its first 64 entries: a folder of a "
                             "class holds at most 64 files and folders, its folders' included");
-            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(b->rel)))
-                rc = SW_ENOMEM;
+                if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(b->rel)))
+                    rc = SW_ENOMEM;
+            }
             break;
         }
         char sub[PATH_MAX], subrel[PATH_MAX];

@@ -51,7 +51,11 @@ EOF
 # a gradebook to read back, with a classmate's verdict cell in it
 "$SW" grade --assignment $A --roster roster.csv --csv book.csv class/ZQCLASSMATE_s1001.trace >/dev/null 2>&1
 printf 'ZQBOOKROW,elsewhere/x.trace,pass,,,,,,2,2\r\n' >> book.csv
-for j in 1 2; do
+# Not in the sanitizer pass (SW_TEST_QUICK): there ASan owns SIGSEGV and its
+# shadow memory, and the scan's probing of unmapped pages ends in a
+# forbidden system call of ASan's own (SIGSYS), which says nothing.
+for j in ${SW_TEST_QUICK:+skip} 1 2; do
+    [ "$j" = skip ] && break
     "$SW" grade --assignment $A --roster roster.csv --csv book.csv --feedback fb$j -j $j class >out$j.txt 2>&1
     [ $? -le 1 ] || fail "1: grade -j $j exited $?: $(cat out$j.txt)"
     all=$(cat out$j.txt book.csv fb$j/* 2>/dev/null)

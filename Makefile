@@ -27,8 +27,9 @@ LDSAN   = -fsanitize=address,undefined
 endif
 
 DATADIR  = $(PREFIX)/share/stepwise
+LIBEXECDIR = $(PREFIX)/libexec/stepwise
 CPPFLAGS = -Iinclude -Isrc -D_DEFAULT_SOURCE -D_XOPEN_SOURCE=600 -D_XOPEN_SOURCE_EXTENDED \
-           -DSW_DATADIR='"$(DATADIR)"'
+           -DSW_DATADIR='"$(DATADIR)"' -DSW_LIBEXECDIR='"$(LIBEXECDIR)"'
 CFLAGS  ?=
 ALL_CFLAGS = -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) -MMD -MP
 
@@ -43,8 +44,9 @@ SECCOMP_LIBS  = $(shell pkg-config --libs libseccomp 2>/dev/null || echo -lsecco
 # util/ included. Only tui/ includes ncurses; cli/ and tui/ are linked into
 # the program only.
 TUI_SRC  = $(wildcard src/tui/*.c)
+HOST_MAIN = $(wildcard src/host/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
-LIB_SRC  = $(filter-out $(TUI_SRC) $(CLI_SRC),$(wildcard src/*/*.c))
+LIB_SRC  = $(filter-out $(TUI_SRC) $(CLI_SRC) $(HOST_MAIN),$(wildcard src/*/*.c))
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/%.o)
 TUI_OBJ  = $(TUI_SRC:%.c=$(BUILD)/%.o) $(CLI_SRC:%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/src/main.o
@@ -55,10 +57,11 @@ LIB      = $(BUILD)/libstepwise.a
 BIN      = stepwise
 TESTBIN  = $(BUILD)/check_stepwise
 BENCHBIN = $(BUILD)/bench_engine
+HOST     = $(BUILD)/stepwise-plugin-host
 
 .PHONY: all deps run test unit e2e layers sanitize bench clean install uninstall plugin-example fuzz
 
-all: $(BIN) $(LIB)
+all: $(BIN) $(LIB) $(HOST)
 
 deps:
 	@sh tests/deps.sh
@@ -87,13 +90,29 @@ $(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
 $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
-run: $(BIN)
+# A student plugin's host (docs/sandbox.md): the plugin interface, the
+# engine's derivatives and the scenes' builders, and nothing of the methods
+# (no method table, no built-in or fused step: the scenes are compiled with
+# -DSW_FIELD_ONLY), so a plugin has no answer in its memory to call. Always
+# built plain (no sanitizer: it defines malloc to see a step allocate), and
+# found beside the program, in build/ beside it, or in LIBEXECDIR.
+HOST_METHODS = adaptive dop853 dop853_lc explicit implicit integrators regularise rk45 rkn rkn12 rosenbrock
+HOST_SRC = $(HOST_MAIN) $(wildcard src/scenes/*.c) src/plugin/jail_filter.c \
+           $(filter-out $(HOST_METHODS:%=src/engine/%.c),$(wildcard src/engine/*.c)) $(wildcard src/util/*.c)
+HOST_OBJ = $(HOST_SRC:%.c=$(BUILD)/host-obj/%.o)
+$(BUILD)/host-obj/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -DSW_FIELD_ONLY -std=c11 -O2 -g $(VECT) $(MATH) $(WARN) $(CFLAGS) -MMD -MP -c $< -o $@
+$(HOST): $(HOST_OBJ)
+	$(CC) -O2 -g -o $@ $(HOST_OBJ) $(SECCOMP_LIBS) -lm -ldl
+
+run: $(BIN) $(HOST)
 	./$(BIN) lesson --next
 
-unit: $(TESTBIN)
+unit: $(TESTBIN) $(HOST)
 	$(TESTBIN)
 
-e2e: $(BIN) $(BENCHBIN)
+e2e: $(BIN) $(BENCHBIN) $(HOST)
 	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
 # Includes point down the layers and no modules use each other in a circle
@@ -103,7 +122,7 @@ layers: $(MAIN_OBJ) $(TUI_OBJ) $(LIB_OBJ)
 	@sh tests/layers.sh --self-test
 	@sh tests/layers.sh --objects $(BUILD)
 
-test: layers $(BIN) $(TESTBIN) $(BENCHBIN)
+test: layers $(BIN) $(TESTBIN) $(BENCHBIN) $(HOST)
 	$(TESTBIN)
 	@STEPWISE_BENCH=$(BENCHBIN) sh tests/e2e/run.sh ./$(BIN)
 
@@ -174,8 +193,8 @@ bench:
 # it rather than installing a binary that looks for its lessons elsewhere.
 $(BUILD)/datadir.stamp: FORCE
 	@mkdir -p $(dir $@)
-	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' > $@
-$(BUILD)/src/cli/common.o $(BUILD)/src/cli/plugin_build.o: $(BUILD)/datadir.stamp
+	@echo '$(DATADIR) $(LIBEXECDIR)' | cmp -s - $@ || echo '$(DATADIR) $(LIBEXECDIR)' > $@
+$(BUILD)/src/cli/common.o $(BUILD)/src/cli/plugin_build.o $(BUILD)/src/plugin/plugin_registry.o: $(BUILD)/datadir.stamp
 FORCE:
 
 LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)
@@ -186,10 +205,11 @@ LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)
 LIBDIR   = $(PREFIX)/lib
 VERSION  = $(shell sed -n 's/^\#define SW_VERSION "\(.*\)"/\1/p' include/stepwise/base.h)
 
-install: $(BIN) $(LIB)
+install: $(BIN) $(LIB) $(HOST)
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(DATADIR)/lessons $(DESTDIR)$(PREFIX)/include/stepwise $(DESTDIR)$(LIBDIR)/pkgconfig
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/stepwise
+	install -m 755 $(HOST) $(DESTDIR)$(LIBEXECDIR)/stepwise-plugin-host
 	install -m 644 docs/stepwise.1 $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1
 	$(if $(LESSON_FILES),install -m 644 $(LESSON_FILES) $(DESTDIR)$(DATADIR)/lessons/)
 	install -m 644 include/stepwise/*.h $(DESTDIR)$(PREFIX)/include/stepwise/
@@ -210,7 +230,7 @@ examples/euler_plugin.so: examples/euler_plugin.c include/stepwise/integrator.h 
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/stepwise $(DESTDIR)$(PREFIX)/share/man/man1/stepwise.1
-	rm -rf $(DESTDIR)$(DATADIR) $(DESTDIR)$(PREFIX)/include/stepwise
+	rm -rf $(DESTDIR)$(DATADIR) $(DESTDIR)$(LIBEXECDIR) $(DESTDIR)$(PREFIX)/include/stepwise
 	rm -f $(DESTDIR)$(LIBDIR)/libstepwise.a $(DESTDIR)$(LIBDIR)/pkgconfig/stepwise.pc
 
 clean:

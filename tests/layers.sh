@@ -24,7 +24,7 @@ rank() {
     case "$1" in
         util) echo 0 ;; engine) echo 1 ;; scenes) echo 2 ;; sim) echo 3 ;;
         plugin|lesson) echo 4 ;; trace|measure) echo 5 ;; grade) echo 6 ;;
-        app) echo 7 ;; render) echo 8 ;; tui) echo 9 ;; cli) echo 10 ;; main) echo 11 ;;
+        app) echo 7 ;; render) echo 8 ;; tui) echo 9 ;; cli|host) echo 10 ;; main) echo 11 ;;
         *) echo "" ;;
     esac
 }

@@ -33,7 +33,15 @@ typedef struct sw_ode {
      * once when an implicit method is chosen); 0 or a status with err. */
     int (*prepare)(void *ctx, char *err, size_t errlen);
     const struct sw_ode_fast *fast; /* NULL: the generic methods only */
+    /* Who made this system, so that a student plugin's host (a process of
+     * its own) can build it again: SW_MAKER_SCENE (maker: the scene's
+     * sw_system), SW_MAKER_LINEAR2 (the truth module's 2x2 test system),
+     * or 0 (a plugin cannot step it). Set by stepwise; 0 in a plugin's view. */
+    int maker_kind;
+    const void *maker;
 } sw_ode;
+
+enum { SW_MAKER_NONE = 0, SW_MAKER_SCENE = 1, SW_MAKER_LINEAR2 = 2 };
 
 /* Evaluate dy/dt and count it: every method goes through this. */
 static inline void sw_ode_eval(sw_ode *ode, double t, const double *y, double *dydt)

@@ -31,6 +31,7 @@ static const char *fault_word(sw_plugin_fault f)
     case SW_PF_DISABLED: return "disabled";
     case SW_PF_FORGED: return "forged";
     case SW_PF_LIMIT: return "limit";
+    case SW_PF_ALLOC: return "allocated";
     default: return "none";
     }
 }

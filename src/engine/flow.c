@@ -70,6 +70,7 @@ static int flow_solve(void *ctx, double t, const double *y, double c, const doub
     return SW_OK;
 }
 
+#ifndef SW_FIELD_ONLY
 static unsigned flow_euler(void *ctx, double t, double *y, double h, unsigned elim)
 {
     const sw_flow *f = ctx;
@@ -90,6 +91,13 @@ static const struct sw_ode_fast fast_paths[4] = {
     { .deriv_part = flow_deriv_part, .fused_rk4 = flow_rk4 },
     { .deriv_part = flow_deriv_part, .fused_euler = flow_euler, .fused_rk4 = flow_rk4 },
 };
+#else
+/* A plugin's host (-DSW_FIELD_ONLY): the field alone, no fused step. */
+static const struct sw_ode_fast fast_paths[4] = {
+    { .deriv_part = flow_deriv_part }, { .deriv_part = flow_deriv_part },
+    { .deriv_part = flow_deriv_part }, { .deriv_part = flow_deriv_part },
+};
+#endif
 
 int sw_flow_init(sw_flow *f, int n, sw_field_fn *field, sw_field_jac_fn *jac, const void *params,
                  char *err, size_t errlen)

@@ -59,13 +59,23 @@ static inline unsigned sw_point_beyond_end(const double top[4], const double *x,
     return sw_beyond_any(over);
 }
 
-#define SW_POINT_FIELD(NAME, COEF, PREP, POINT)                                                       \
+/* The field alone: all a student plugin's host is built with (-DSW_FIELD_ONLY),
+ * so that no built-in method's code, fused or not, is in its memory. */
+#define SW_POINT_FIELD_ONLY(NAME, COEF, PREP, POINT)                                                     \
     SW_CLONES static void NAME##_field(const void *params, double t, int n, const double *x, double *v) \
     {                                                                                                 \
         const COEF c = PREP(params, t);                                                               \
         for (int i = 0; i < n; i++)                                                                   \
             POINT(&c, x[2 * i], x[2 * i + 1], &v[2 * i], &v[2 * i + 1]);                              \
-    }                                                                                                 \
+    }
+
+#ifdef SW_FIELD_ONLY
+#define SW_POINT_FIELD(NAME, COEF, PREP, POINT)                                                       \
+    SW_POINT_FIELD_ONLY(NAME, COEF, PREP, POINT)                                                      \
+    static const sw_point_field NAME##_point = { NAME##_field, NULL, NULL }
+#else
+#define SW_POINT_FIELD(NAME, COEF, PREP, POINT)                                                       \
+    SW_POINT_FIELD_ONLY(NAME, COEF, PREP, POINT)                                                      \
     /* one point's Euler step, and its RK4 step (c1, c2, c4: at t, t + h/2, t + h) */                 \
     SW_INLINE void NAME##_euler1(const COEF *c, double *x, int j, double h)                           \
     {                                                                                                 \
@@ -117,5 +127,6 @@ static inline unsigned sw_point_beyond_end(const double top[4], const double *x,
         return sw_point_beyond_end(top, x + 2 * i, i < n, elim);                                      \
     }                                                                                                 \
     static const sw_point_field NAME##_point = { NAME##_field, NAME##_euler, NAME##_rk4 }
+#endif
 
 #endif

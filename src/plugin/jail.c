@@ -36,7 +36,6 @@ int sw_jail_enabled(void)
 
 void sw_jail_set_enabled(int on) { disabled = !on; }
 
-int sw_jail_seal(void) { return sw_jail_enabled() ? sw_jail_filter_sealed() : 0; }
 
 int sw_jail_unshare(const char **step)
 {
@@ -138,14 +137,14 @@ static int bind_ro(const char *host, int is_dir)
 }
 
 /* Copy what fd holds to path (at most SW_JAIL_FILE_MAX bytes). */
-static int copy_in(int fd, const char *path)
+static int copy_in(int fd, const char *path, mode_t mode)
 {
     struct stat st;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
         return EINVAL;
     if ((size_t)st.st_size > SW_JAIL_FILE_MAX)
         return EFBIG;
-    int out = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    int out = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
     if (out < 0)
         return errno;
     char buf[65536];
@@ -190,7 +189,7 @@ static int copy_headers(int dir_fd, const char *to)
             continue;
         char path[256];
         if ((size_t)snprintf(path, sizeof path, "%s/%s", to, e->d_name) < sizeof path)
-            rc = copy_in(h, path);
+            rc = copy_in(h, path, 0644);
         close(h);
     }
     closedir(d);
@@ -224,7 +223,7 @@ int sw_jail_build(const sw_jail *spec, const char **step)
     for (size_t i = 0; i < sizeof devices / sizeof devices[0]; i++)
         if ((rc = bind_ro(devices[i], 0)) != 0)
             return fail_at(step, "binding /dev/null, /dev/zero and /dev/urandom", rc);
-    if (spec->profile == SW_JAIL_COMPILE && (rc = bind_ro("/etc/ld.so.cache", 0)) != 0)
+    if ((rc = bind_ro("/etc/ld.so.cache", 0)) != 0)
         return fail_at(step, "binding /etc/ld.so.cache", rc);
     size_t disk = spec->disk_bytes ? spec->disk_bytes : (size_t)64 << 20;
     snprintf(opts, sizeof opts, "size=%zu,nr_inodes=4096,mode=0755", disk);
@@ -236,7 +235,7 @@ int sw_jail_build(const sw_jail *spec, const char **step)
     for (int i = 0; i < spec->nin; i++) {
         char path[256];
         snprintf(path, sizeof path, NEWROOT "/work/%s", spec->in[i].name);
-        if ((rc = copy_in(spec->in[i].fd, path)) != 0)
+        if ((rc = copy_in(spec->in[i].fd, path, spec->in[i].executable ? 0755 : 0644)) != 0)
             return fail_at(step, SW_JAIL_STEP_SUBMISSION, rc);
     }
     if (spec->include_fd >= 0) {
@@ -285,9 +284,22 @@ int sw_jail_lockdown(sw_jail_profile profile, const char **step)
     if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0)
         return fail_at(step, "PR_SET_NO_NEW_PRIVS", errno);
     prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+    if (profile == SW_JAIL_COMPUTE)
+        return 0; /* the host installs the last two layers on itself */
     if ((rc = sw_jail_landlock()) != 0)
         return fail_at(step, "Landlock", rc);
     if ((rc = sw_jail_filter(profile)) != 0)
+        return fail_at(step, "the seccomp filter", rc);
+    return 0;
+}
+
+int sw_jail_compute_layers(const char **step)
+{
+    static const char *const root[] = { "/" };
+    int rc = sw_jail_landlock_read(root, 1);
+    if (rc != 0)
+        return fail_at(step, "Landlock", rc);
+    if ((rc = sw_jail_filter(SW_JAIL_COMPUTE)) != 0)
         return fail_at(step, "the seccomp filter", rc);
     return 0;
 }

@@ -10,9 +10,10 @@
 
 #include <stddef.h>
 
-/* What runs inside. COMPUTE: a student's plugin in this program's own image
- * (forked, never exec'd): no files but its own, no processes, no network;
- * sw_jail_seal() narrows it further once the plugin is loaded. COMPILE: a
+/* What runs inside. COMPUTE: a student's plugin in its host (the program
+ * stepwise-plugin-host, copied into /work and exec'd: plugin/host_proto.h),
+ * which installs Landlock and the seccomp filter on itself before the
+ * plugin loads: no files but its own, no processes, no network. COMPILE: a
  * compiler exec'd on the submission: it may read the system and write
  * /work, fork within the jail's PID namespace, and nothing else. */
 typedef enum sw_jail_profile { SW_JAIL_COMPUTE, SW_JAIL_COMPILE } sw_jail_profile;
@@ -22,6 +23,7 @@ typedef enum sw_jail_profile { SW_JAIL_COMPUTE, SW_JAIL_COMPILE } sw_jail_profil
 typedef struct sw_jail_file {
     int fd;
     const char *name;
+    int executable;            /* 1: mode 0755 (a program to exec), else 0644 */
 } sw_jail_file;
 
 #define SW_JAIL_FILE_MAX ((size_t)64 << 20)
@@ -59,13 +61,14 @@ int sw_jail_map_user(int pid, char *why, size_t len);
  * jail's root from spec and pivot into it. 0, or an errno with *step. */
 int sw_jail_build(const sw_jail *spec, const char **step);
 /* In the payload's process, last before the payload: drop every
- * capability, no new privileges, Landlock, the profile's seccomp filter.
- * 0, or an errno with *step. */
+ * capability, no new privileges; for COMPILE also Landlock and the
+ * profile's seccomp filter (a COMPUTE payload execs the plugin's host,
+ * which installs both itself). 0, or an errno with *step. */
 int sw_jail_lockdown(sw_jail_profile profile, const char **step);
-/* In a COMPUTE payload, once the plugin is loaded: allow only what stepping
- * needs from now on (read and write on the descriptors it has, memory,
- * time, its own signals, exit). 0 or an errno. */
-int sw_jail_seal(void);
+/* Whether the last two layers can be had here (the sandbox's probe):
+ * Landlock as the host uses it and the COMPUTE filter, installed on the
+ * calling process for good. 0, or an errno with *step. */
+int sw_jail_compute_layers(const char **step);
 /* In the jail's init process after the payload ended: send each spec->out
  * file over fd as [int64 size, -1 when absent or not a regular file][bytes]. */
 void sw_jail_send_outputs(const sw_jail *spec, int fd);

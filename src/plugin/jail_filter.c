@@ -1,8 +1,9 @@
-/* The jail's seccomp filters and Landlock rules. A COMPUTE payload gets an
- * allow-list: what loading a shared object and stepping need, every other
- * system call ends the process with SIGSYS (the parent says so); sealing
- * adds a second, narrower list once the plugin is loaded. A COMPILE
- * payload gets a deny-list of what could reach outside the jail. */
+/* The jail's seccomp filters and Landlock rules. A COMPUTE payload (a
+ * plugin's host, which installs them on itself before the plugin loads)
+ * gets an allow-list: what loading a shared object and stepping need,
+ * every other system call is refused with SIGSYS, which ends the process
+ * (the parent says so); seccomp() is not on it, so no second filter can ever be added. A
+ * COMPILE payload gets a deny-list of what could reach outside the jail. */
 #define _GNU_SOURCE /* namespaces, setresuid, pipe2, sethostname: Linux-only by design */
 #include "plugin/jail_filter.h"
 
@@ -46,7 +47,11 @@ static int ll_allow(int ruleset, const char *path, uint64_t access)
     return rc;
 }
 
-int sw_jail_landlock(void)
+/* Read (and execute) beneath each of read[], everything beneath full[],
+ * reading and writing /dev/null; nothing else, for this process and all
+ * it starts. 0 (also where the kernel has no Landlock: the other layers
+ * still hold), or an errno. */
+static int landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull)
 {
     long abi = syscall(SYS_landlock_create_ruleset, NULL, 0, LANDLOCK_CREATE_RULESET_VERSION);
     if (abi < 1)
@@ -70,9 +75,11 @@ int sw_jail_landlock(void)
     if (ruleset < 0)
         return errno;
     uint64_t read = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR | LANDLOCK_ACCESS_FS_EXECUTE;
-    int rc = ll_allow(ruleset, "/", read);
-    if (rc == 0)
-        rc = ll_allow(ruleset, "/work", fs);
+    int rc = 0;
+    for (int i = 0; rc == 0 && i < nread; i++)
+        rc = ll_allow(ruleset, read_dirs[i], read);
+    for (int i = 0; rc == 0 && i < nfull; i++)
+        rc = ll_allow(ruleset, full[i], fs);
     if (rc == 0)
         rc = ll_allow(ruleset, "/dev/null", LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_WRITE_FILE |
                                                 (abi >= 3 ? LANDLOCK_ACCESS_FS_TRUNCATE : 0));
@@ -80,6 +87,17 @@ int sw_jail_landlock(void)
         rc = errno;
     close(ruleset);
     return rc;
+}
+
+int sw_jail_landlock(void)
+{
+    static const char *const read_dirs[] = { "/" }, *const full[] = { "/work" };
+    return landlock_rules(read_dirs, 1, full, 1);
+}
+
+int sw_jail_landlock_read(const char *const *read_dirs, int nread)
+{
+    return landlock_rules(read_dirs, nread, NULL, 0);
 }
 
 /* ---- seccomp ------------------------------------------------------------------ */
@@ -102,7 +120,8 @@ static const int load_calls[] = {
     SCMP_SYS(pread64), SCMP_SYS(newfstatat), SCMP_SYS(statx), SCMP_SYS(access), SCMP_SYS(faccessat),
     SCMP_SYS(faccessat2), SCMP_SYS(readlink), SCMP_SYS(readlinkat), SCMP_SYS(getcwd), SCMP_SYS(fcntl),
     SCMP_SYS(uname), SCMP_SYS(getuid), SCMP_SYS(geteuid), SCMP_SYS(getgid), SCMP_SYS(getegid),
-    SCMP_SYS(seccomp), /* the seal's filter: another filter only ever narrows */
+    /* and no seccomp(): the filter a plugin's code first meets is the
+     * last, so nothing it does can add a filter that fakes another */
 };
 
 /* Ways out of the jail a compiler never needs. */
@@ -163,15 +182,17 @@ static int load(scmp_filter_ctx f, int rc)
     return rc;
 }
 
-static int compute_filter(int loading)
+static int compute_filter(void)
 {
-    scmp_filter_ctx f = seccomp_init(SCMP_ACT_KILL_PROCESS);
+    /* A forbidden call raises SIGSYS (the call is not made): the host's
+     * handler sends the steps before it, then the signal ends the host. */
+    scmp_filter_ctx f = seccomp_init(SCMP_ACT_TRAP);
     if (!f)
         return ENOMEM;
     int rc = add_all(f, step_calls, sizeof step_calls / sizeof step_calls[0]);
     if (rc == 0)
         rc = own_signals(f);
-    if (rc == 0 && loading) {
+    if (rc == 0) {
         rc = add_all(f, load_calls, sizeof load_calls / sizeof load_calls[0]);
         /* files: opened for reading only (the loader maps the plugin and its libraries) */
         scmp_datum_t mask = O_ACCMODE | O_CREAT | O_TRUNC | O_APPEND;
@@ -209,11 +230,10 @@ int sw_jail_filter(sw_jail_profile profile)
 {
     switch (profile) {
     case SW_JAIL_COMPUTE:
-        return compute_filter(1);
+        return compute_filter();
     case SW_JAIL_COMPILE:
         return compile_filter();
     }
     return EINVAL;
 }
 
-int sw_jail_filter_sealed(void) { return compute_filter(0); }

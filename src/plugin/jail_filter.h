@@ -1,4 +1,4 @@
-/* Private to plugin/jail.c: the jail's last two layers. */
+/* Private to plugin/jail.c and the plugin host: the jail's last two layers. */
 #ifndef SW_PLUGIN_JAIL_FILTER_H
 #define SW_PLUGIN_JAIL_FILTER_H
 
@@ -8,9 +8,12 @@
  * only /work and /dev/null, no TCP, no signals out of the domain. 0 (also
  * when the kernel has no Landlock: it is defence in depth) or an errno. */
 int sw_jail_landlock(void);
-/* The profile's seccomp filter (libseccomp). 0 or an errno. */
+/* Landlock for a plugin's host: read (and run) only beneath read_dirs,
+ * write only /dev/null. 0 or an errno, as above. */
+int sw_jail_landlock_read(const char *const *read_dirs, int nread);
+/* The profile's seccomp filter (libseccomp): for COMPUTE, what loading a
+ * plugin and stepping need and no seccomp() (the plugin's host installs
+ * it on itself); for COMPILE, a deny-list. 0 or an errno. */
 int sw_jail_filter(sw_jail_profile profile);
-/* The narrower filter of a loaded plugin (sw_jail_seal). 0 or an errno. */
-int sw_jail_filter_sealed(void);
 
 #endif

@@ -1,7 +1,8 @@
-/* Loading student plugins without running their code here: a jailed child
- * dlopens the file and calls sw_plugin_info() under the watchdog, and sends
- * back a copy of what it found; the parent terminates every string itself
- * and checks every field before anything is registered. Invariant: every
+/* Loading student plugins without running their code here: the plugin's
+ * host (host_link.c), jailed, dlopens the file and calls sw_plugin_info()
+ * under the watchdog, and sends back a copy of what it found; the parent
+ * terminates every string itself and checks every field before anything
+ * is registered. The host stays for the plugin's runs. Invariant: every
  * byte a plugin chose reaches a message only through sw_escape
  * (util/escape.h), and no length it sent is used. */
 #include "plugin/plugin.h"
@@ -90,143 +91,24 @@ int sw_plugin_label_ok(const char *label, char *why, size_t whylen)
     return 1;
 }
 
-/* ---- the probe child ------------------------------------------------------ */
-
-enum { STAGE_DLOPEN = 1, STAGE_SYMBOL, STAGE_NULL, STAGE_OK };
-
-/* What the probe sends: numbers and byte strings the parent terminates
- * itself (a string that fills its field is "too long"). */
-typedef struct probe_reply {
-    int stage;
-    int abi, order, evals, work_vectors, has_step, has_label;
-    char name[257], label[257];
-    char dlerr[512];
-} probe_reply;
-
-static void copy_bounded(const char *src, char *dst, size_t size)
-{
-    size_t i = 0;
-    while (i < size && src[i]) {
-        dst[i] = src[i];
-        i++;
-    }
-    if (i < size)
-        dst[i] = '\0';
-}
-
-/* Runs in the child: tag bytes say how far it got ('L' loaded, 'I' calling
- * sw_plugin_info), then 'R' and the reply. */
-static int probe_child(void *ctx, int in, int out)
-{
-    (void)in;
-    const sw_plugin_entry *e = ctx;
-    probe_reply r;
-    memset(&r, 0, sizeof r);
-    void *lib = dlopen(sw_plugin_entry_file(e), RTLD_NOW | RTLD_LOCAL);
-    if (sw_jail_seal() != 0)
-        return 3;
-    if (!lib) {
-        const char *why = dlerror();
-        r.stage = STAGE_DLOPEN;
-        snprintf(r.dlerr, sizeof r.dlerr, "%s", why ? why : "unknown error");
-    } else {
-        sw_sandbox_write(out, "L", 1);
-        const sw_plugin *(*get)(void);
-        *(void **)&get = dlsym(lib, "sw_plugin_info");
-        if (!get)
-            r.stage = STAGE_SYMBOL;
-        else {
-            sw_sandbox_write(out, "I", 1);
-            const sw_plugin *info = get();
-            if (!info)
-                r.stage = STAGE_NULL;
-            else {
-                r.stage = STAGE_OK;
-                r.abi = info->abi;
-                r.order = info->order;
-                r.evals = info->evals;
-                r.work_vectors = info->work_vectors;
-                r.has_step = info->step != NULL;
-                if (info->name)
-                    copy_bounded(info->name, r.name, sizeof r.name);
-                r.has_label = info->label != NULL;
-                if (info->label)
-                    copy_bounded(info->label, r.label, sizeof r.label);
-            }
-        }
-    }
-    sw_sandbox_write(out, "R", 1);
-    sw_sandbox_write(out, &r, sizeof r);
-    return 0;
-}
-
-/* Run the probe; 0 with *r filled, or an error naming how the child failed. */
-static int probe(const sw_plugin_entry *e, const char *shown, probe_reply *r, char *err, size_t errlen)
-{
-    sw_child child;
-    char msg[SW_ERRLEN];
-    sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
-    sw_plugin_entry_jail_in(e, &spec);
-    sw_limits lim;
-    sw_plugin_limits(&lim);
-    if (sw_sandbox_spawn_jailed(&child, probe_child, (void *)e, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
-        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
-        return SW_EIO;
-    }
-    double limit = sw_plugin_timeout();
-    char stage = 0, tag;
-    int rc;
-    int tags = 0;
-    while ((rc = sw_sandbox_read(child.from_child, &tag, 1, limit)) == 1 && tag != 'R' && ++tags < 3)
-        stage = tag == 'I' ? 'I' : 'L';
-    if (rc == 1 && tag != 'R')
-        rc = -3; /* more progress tags than the probe sends */
-    if (rc == 1)
-        rc = sw_sandbox_read(child.from_child, r, sizeof *r, limit);
-    const char *what = stage == 'I' ? "sw_plugin_info()" : "loading it (dlopen and its constructors)";
-    sw_child_end end;
-    if (rc == 1) {
-        sw_sandbox_reap(&child, limit, &end);
-        /* terminated here, whatever was sent: an unterminated field is "too long" */
-        r->name[sizeof r->name - 1] = r->label[sizeof r->label - 1] = r->dlerr[sizeof r->dlerr - 1] = '\0';
-        return SW_OK;
-    }
-    if (rc == -2) {
-        sw_sandbox_kill(&child, &end);
-        snprintf(err, errlen, "--plugin '%s': %s did not return within %g s (an endless loop?)",
-                 shown, what, limit);
-        return SW_EINVAL;
-    }
-    if (rc == -1) {
-        sw_sandbox_kill(&child, &end);
-        snprintf(err, errlen, "--plugin '%s': interrupted while %s ran", shown, what);
-        return SW_EINVAL;
-    }
-    sw_sandbox_reap(&child, limit, &end);
-    sw_sandbox_describe(&end, msg, sizeof msg);
-    snprintf(err, errlen, "--plugin '%s': %s %s%s", shown, what, msg,
-             end.exited ? " (a plugin must not end the process: return from it)" : "");
-    return SW_EINVAL;
-}
-
-/* Every field of the probe's reply checked; 0, or SW_EINVAL with why. */
-static int check_reply(const probe_reply *r, const char *shown, char *err, size_t errlen)
+/* Every field of what loading found checked; 0, or SW_EINVAL with why. */
+static int check_reply(const sw_host_info *r, const char *shown, char *err, size_t errlen)
 {
     char why[SW_ERRLEN], esc[200];
     switch (r->stage) {
-    case STAGE_DLOPEN:
+    case SW_HOST_STAGE_DLOPEN:
         sw_escape(r->dlerr, 160, esc, sizeof esc);
         snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
         return SW_EINVAL;
-    case STAGE_SYMBOL:
+    case SW_HOST_STAGE_SYMBOL:
         snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
                  "const sw_plugin *sw_plugin_info(void)", shown);
         return SW_EINVAL;
-    case STAGE_NULL:
+    case SW_HOST_STAGE_NULL:
         snprintf(err, errlen, "--plugin '%s': sw_plugin_info() returned NULL; it must return the "
                  "address of a static sw_plugin", shown);
         return SW_EINVAL;
-    case STAGE_OK:
+    case SW_HOST_STAGE_OK:
         break;
     default:
         snprintf(err, errlen, "--plugin '%s': its loader sent a reply it could not have sent", shown);
@@ -290,11 +172,14 @@ int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_
             close(e->fd);
         return SW_EINVAL;
     }
-    probe_reply r;
-    int rc = probe(e, shown, &r, err, errlen);
+    /* Loaded in its host, which stays for the runs to come. */
+    snprintf(e->shown, sizeof e->shown, "%s", shown);
+    sw_host_info r;
+    int rc = sw_host_start(e, &r, err, errlen);
     if (rc == SW_OK)
         rc = check_reply(&r, shown, err, errlen);
     if (rc != SW_OK) {
+        sw_host_stop(e);
         close(e->fd);
         return rc;
     }
@@ -305,8 +190,10 @@ int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_
     sw_integrator m = { .name = e->name, .label = e->label, .order = r.order, .evals = r.evals,
                         .flags = SW_PLUGIN | SW_EXPLICIT, .stability = NAN,
                         .work_vectors = r.work_vectors, .step = sw_plugin_step,
-                        .summary = "student plugin (run in a child process)" };
+                        .summary = "student plugin (run in its own sandboxed process)" };
     if (sw_integrator_register(&m, why, sizeof why) != SW_OK) {
+        sw_host_stop(e);
+        close(e->fd);
         snprintf(err, errlen, "--plugin '%s': %s", shown, why);
         return SW_EINVAL;
     }

@@ -38,7 +38,8 @@ typedef enum sw_plugin_fault {
     SW_PF_START,        /* its child process could not be started or load it */
     SW_PF_DISABLED,     /* disabled after an earlier failure (play) */
     SW_PF_FORGED,       /* sent the sandbox a record it could not have sent */
-    SW_PF_LIMIT         /* ran out of a resource limit: its CPU time (SIGXCPU) */
+    SW_PF_LIMIT,        /* ran out of a resource limit: its CPU time (SIGXCPU) */
+    SW_PF_ALLOC         /* allocated memory in its step (a step must not allocate) */
 } sw_plugin_fault;
 
 /* Whether name is an allowed plugin name that shadows no built-in method

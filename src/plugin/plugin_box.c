@@ -1,260 +1,63 @@
-/* The sandboxed plugin step. Each stepper of a plugin method owns a jailed
- * child (plugin/sandbox.h), forked at its first step so that it holds the
- * very system the sim built, that loads the plugin and steps copies of y
- * it is sent over a socket: nothing writable is shared. In the child, y and
- * the work vectors end exactly at a guard page (PROT_NONE), so writing one
- * element past them faults, and the fault handler names the region; the
- * pad before each holds a canary checked after every step, and the ode's
- * fields are compared with a copy. Invariant: the parent reads only
- * fixed-size records and dim doubles, validates every field before using
- * it, and changes its state only from a step the child finished cleanly. */
+/* The sandboxed plugin step. A plugin's steps run in its host (host_link.c,
+ * plugin/host_proto.h), never here: each stepper of a plugin method owns a
+ * slot there, where the host has built the same system again from what its
+ * maker said (a scene and its parameters, or a 2x2 test system). The
+ * stepper asks for a run of steps at once and serves the steps from what
+ * came back, while each call asks for exactly the state, time and step the
+ * host ran ahead from (the runs grow 1, 2, 4, ... up to a bound, and start
+ * again at 1 when the caller goes elsewhere: contact, an event, a reset).
+ * No round trip per step. Invariant: every number read is checked before
+ * it is used; the host's derivative at the start of each run is compared
+ * bit for bit with ours (it is the system we step, or nothing is served);
+ * a fault is reported at the step it happened in, and only when the
+ * caller asks for that step. */
 #include "plugin/plugin_box.h"
 
-#include <dlfcn.h>
-#include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 #include <sys/socket.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
-#include "plugin/sandbox.h"
+#include "engine/linear2.h"
+#include "stepwise/scene.h"
 
-#define GUARD_PAGES 16
-#define CANARY 0xa5
-#define CANARY_BYTES 64
-/* The most derivative evaluations (and solves) one step may report. */
-#define MAX_COUNT_PER_STEP 1000000000LL
+/* The longest run asked for, and the most bytes of states one may bring. */
+#define BATCH_MAX 64
+#define BATCH_BYTES ((size_t)8 << 20)
 
-enum { OP_STEP = 1, OP_QUIT = 2 };
-enum { TAG_READY = 'R', TAG_DONE = 'D', TAG_FAULT = 'F', TAG_START = 'E' };
-enum { START_RELOAD = 1, START_CHANGED = 2 };
-
-/* Parent to child: a command, then dim doubles of y for OP_STEP. */
-typedef struct box_cmd {
-    int32_t op, pad;
-    double t, h;
-} box_cmd;
-
-/* Child to parent: a reply, then dim doubles of y for TAG_DONE. */
-typedef struct box_reply {
-    int32_t tag;
-    int32_t rc;          /* TAG_DONE: the plugin's return value; TAG_START: START_* */
-    int32_t fault;       /* TAG_FAULT: SW_PF_OVERRUN_WORK, _OVERRUN_Y, _UNDERRUN or _ODE */
-    int32_t field;       /* SW_PF_ODE: which field; SW_PF_UNDERRUN: 0 y, 1 work */
-    int64_t index;       /* the element touched, relative to the vector */
-    int64_t was, now;    /* SW_PF_ODE: the field's value before and after */
-    int64_t evals, solves, iters; /* the child's ode counters after the step */
-} box_reply;
+static const char *const ode_fields[] = SW_HOST_ODE_FIELDS;
 
 typedef struct step_box {
     sw_plugin_entry *entry;
-    sw_child child;
-    sw_ode *ode;             /* the parent's; the child has a copy at the same address */
-    int dim, wv;
+    int slot, generation;    /* the slot on the entry's host, open while generation matches */
+    int dim, wv, nextra;
     size_t vec;              /* dim doubles, in bytes */
-    double *buf;             /* the parent's landing place for y (dim doubles) */
-    sw_plugin_fault fault;   /* parent's view: set once, then every step fails */
+    sw_host_cmd opened;      /* the system the slot holds */
+    int batch, batch_cap;    /* the next run's length, and its bound */
+    /* the last run: states as read, each step's counts, how many were served */
+    double *rows, *sent, *extra_sent, *print;
+    sw_host_reply *meta;
+    int have, used, ran;
+    double t_next, h;
+    int ended;               /* the host stopped the run itself (a failed step, a non-finite state) */
+    int pending;             /* the host died after `have` steps: the next step is its fault */
+    int careful;             /* runs reply by reply (after a host died in one) */
+    int exact;               /* the host said every step before its death was sent */
+    sw_child_end pending_end;
+    sw_host_reply pending_fault;
+    int pending_rc;          /* how the read failed: 0 ended, -1 cancelled, -2 timed out, -4 forged */
+    sw_plugin_fault fault;   /* set once, then every step fails */
     char why[SW_ERRLEN];     /* what happened ... */
     char hint[96];           /* ... and, after the step, what to do */
     char message[SW_ERRLEN + 128]; /* both, for the stepper's why (the sim's blow-up reason) */
-    long evals, solves, iters;
-    box_reply last_fault;    /* a TAG_FAULT the child sent before it died */
-    int have_fault;
 } step_box;
 
-static const char *const ode_fields[] = { "dim", "order", "deriv", "solve", "ctx", "prepare", "fast" };
-enum { ODE_FIELDS = sizeof ode_fields / sizeof ode_fields[0] };
-
-/* ---- the child -------------------------------------------------------------- */
-
-/* The child's own memory: y and the work vectors each end at a guard. */
-typedef struct child_mem {
-    unsigned char *y_area, *work_area;
-    size_t y_area_len, work_area_len, guard;
-    double *y, *work;
-    int fd;                  /* the channel */
-} child_mem;
-
-static child_mem mem;
-static sw_ode *child_ode;
-static sw_ode child_ode_copy;
-
-/* The ode's fields in ode_fields' order, as numbers to compare. */
-static void ode_values(const sw_ode *o, int64_t v[ODE_FIELDS])
-{
-    int64_t f[ODE_FIELDS] = { o->dim, o->order, (int64_t)(uintptr_t)o->deriv, (int64_t)(uintptr_t)o->solve,
-                              (int64_t)(uintptr_t)o->ctx, (int64_t)(uintptr_t)o->prepare,
-                              (int64_t)(uintptr_t)o->fast };
-    memcpy(v, f, sizeof f);
-}
-
-/* Which ode field differs from the copy taken before the step; -1 none. */
-static int ode_changed(const sw_ode *o, int64_t *was, int64_t *now)
-{
-    int64_t a[ODE_FIELDS], b[ODE_FIELDS];
-    ode_values(&child_ode_copy, a);
-    ode_values(o, b);
-    for (int i = 0; i < ODE_FIELDS; i++)
-        if (a[i] != b[i]) {
-            *was = a[i];
-            *now = b[i];
-            return i;
-        }
-    return -1;
-}
-
-static void send_reply(const box_reply *r)
-{
-    if (write(mem.fd, r, sizeof *r) != (ssize_t)sizeof *r)
-        return; /* the parent is gone: nothing to tell */
-}
-
-static void on_fault(int sig, siginfo_t *si, void *uctx)
-{
-    (void)sig;
-    (void)uctx;
-    box_reply r;
-    memset(&r, 0, sizeof r);
-    r.tag = TAG_FAULT;
-    uintptr_t a = (uintptr_t)si->si_addr;
-    uintptr_t y0 = (uintptr_t)mem.y, y_end = (uintptr_t)(mem.y_area + mem.y_area_len);
-    uintptr_t w0 = (uintptr_t)mem.work, w_end = (uintptr_t)(mem.work_area + mem.work_area_len);
-    int field = ode_changed(child_ode, &r.was, &r.now);
-    if (field >= 0) {
-        r.field = field;
-        r.fault = SW_PF_ODE;
-    } else if (a >= y_end && a < y_end + mem.guard / 2) {
-        r.fault = SW_PF_OVERRUN_Y;
-        r.index = (int64_t)((a - y0) / sizeof(double));
-    } else if (a >= w_end && a < w_end + mem.guard) {
-        r.fault = SW_PF_OVERRUN_WORK;
-        r.index = (int64_t)((a - w0) / sizeof(double));
-    } else if (a >= y_end && a < (uintptr_t)mem.work_area) {
-        r.fault = SW_PF_UNDERRUN;
-        r.field = 1;
-    } else if (a < (uintptr_t)mem.y_area && a + mem.guard >= (uintptr_t)mem.y_area) {
-        r.fault = SW_PF_UNDERRUN;
-    }
-    if (r.fault)
-        send_reply(&r);
-    /* SA_RESETHAND: returning re-runs the access, which now kills the child
-     * with the signal, as the parent expects. */
-}
-
-static int canary_ok(const double *v)
-{
-    const unsigned char *p = (const unsigned char *)v - CANARY_BYTES;
-    for (int i = 0; i < CANARY_BYTES; i++)
-        if (p[i] != CANARY)
-            return 0;
-    return 1;
-}
-
-static size_t round_up(size_t n, size_t page) { return (n + page - 1) / page * page; }
-
-/* [guard | ...pad y | guard | ...pad work | guard], private to the child. */
-static int child_map(int dim, int wv)
-{
-    size_t page = (size_t)sysconf(_SC_PAGESIZE), vec = (size_t)dim * sizeof(double);
-    mem.guard = GUARD_PAGES * page;
-    mem.y_area_len = round_up(vec + CANARY_BYTES, page);
-    mem.work_area_len = round_up((size_t)wv * vec + CANARY_BYTES, page);
-    size_t len = mem.guard + mem.y_area_len + mem.guard + mem.work_area_len + mem.guard;
-    unsigned char *map = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (map == MAP_FAILED)
-        return -1;
-    mem.y_area = map + mem.guard;
-    mem.work_area = mem.y_area + mem.y_area_len + mem.guard;
-    mprotect(map, mem.guard, PROT_NONE);
-    mprotect(mem.y_area + mem.y_area_len, mem.guard, PROT_NONE);
-    mprotect(mem.work_area + mem.work_area_len, mem.guard, PROT_NONE);
-    memset(mem.y_area, CANARY, mem.y_area_len);
-    memset(mem.work_area, CANARY, mem.work_area_len);
-    mem.y = (double *)(mem.y_area + mem.y_area_len - vec);
-    mem.work = (double *)(mem.work_area + mem.work_area_len - (size_t)wv * vec);
-    memset(mem.work, 0, (size_t)wv * vec);
-    return 0;
-}
-
-static int start_failed(int why)
-{
-    box_reply r;
-    memset(&r, 0, sizeof r);
-    r.tag = TAG_START;
-    r.rc = why;
-    send_reply(&r);
-    return 3;
-}
-
-static int step_child(void *ctx, int in, int out)
-{
-    step_box *b = ctx;
-    (void)in;
-    mem.fd = out;
-    child_ode = b->ode;
-    if (child_map(b->dim, b->wv) != 0)
-        return start_failed(START_RELOAD);
-    void *lib = dlopen(sw_plugin_entry_file(b->entry), RTLD_NOW | RTLD_LOCAL);
-    const sw_plugin *(*get)(void) = NULL;
-    if (lib)
-        *(void **)&get = dlsym(lib, "sw_plugin_info");
-    if (sw_jail_seal() != 0)
-        return start_failed(START_RELOAD);
-    const sw_plugin *info = get ? get() : NULL;
-    if (!info || !info->step || info->work_vectors != b->wv || !info->name ||
-        strncmp(info->name, b->entry->name, sizeof b->entry->name) != 0)
-        return start_failed(lib ? START_CHANGED : START_RELOAD);
-    static char alt[65536];
-    stack_t ss = { .ss_sp = alt, .ss_size = sizeof alt, .ss_flags = 0 };
-    sigaltstack(&ss, NULL);
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_sigaction = on_fault;
-    sa.sa_flags = SA_SIGINFO | SA_ONSTACK | SA_RESETHAND;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGSEGV, &sa, NULL);
-    sigaction(SIGBUS, &sa, NULL);
-    sw_ode *ode = b->ode;
-    box_reply r;
-    memset(&r, 0, sizeof r);
-    r.tag = TAG_READY;
-    send_reply(&r);
-    for (;;) {
-        box_cmd cmd;
-        if (sw_sandbox_read(in, &cmd, sizeof cmd, -1) != 1 || cmd.op != OP_STEP ||
-            sw_sandbox_read(in, mem.y, b->vec, -1) != 1)
-            return 0;
-        child_ode_copy = *ode;
-        memset(&r, 0, sizeof r);
-        r.rc = info->step(ode, cmd.t, mem.y, cmd.h, mem.work);
-        int field = ode_changed(ode, &r.was, &r.now);
-        if (field >= 0) {
-            r.field = field;
-            r.fault = SW_PF_ODE;
-        } else if (!canary_ok(mem.y) || !canary_ok(mem.work)) {
-            r.fault = SW_PF_UNDERRUN;
-            r.field = canary_ok(mem.y);
-        }
-        r.tag = r.fault ? TAG_FAULT : TAG_DONE;
-        r.evals = ode->evals;
-        r.solves = ode->solves;
-        r.iters = ode->solver_iters;
-        if (r.fault) {
-            send_reply(&r);
-            return 0;
-        }
-        struct iovec parts[2] = { { &r, sizeof r }, { mem.y, b->vec } };
-        if (sw_sandbox_writev(out, parts, 2) != 0)
-            return 0;
-    }
-}
-
-/* ---- the parent ------------------------------------------------------------- */
+/* ---- faults ------------------------------------------------------------------ */
 
 static void box_fail(step_box *b, sw_plugin_fault f, const char *why, const char *hint)
 {
@@ -275,49 +78,36 @@ static void box_fail(step_box *b, sw_plugin_fault f, const char *why, const char
     }
 }
 
-static void box_release(sw_stepper *s)
+/* The pending fault, now that the caller asked for the step it is in. */
+static void box_fault_now(step_box *b)
 {
-    step_box *b = s->plugin;
-    if (!b)
-        return;
-    if (b->child.pid > 0) {
-        box_cmd quit = { OP_QUIT, 0, 0, 0 };
-        sw_sandbox_write(b->child.to_child, &quit, sizeof quit);
-        sw_child_end end;
-        sw_sandbox_reap(&b->child, 0.2, &end);
-    }
-    free(b->buf);
-    free(b);
-    s->plugin = NULL;
-}
-
-/* Whether a fault record from the child is one it could have sent. */
-static int fault_valid(const step_box *b, const box_reply *r)
-{
-    switch (r->fault) {
-    case SW_PF_OVERRUN_WORK:
-        return r->index >= 0 && r->index < (int64_t)b->wv * b->dim + (1 << 20);
-    case SW_PF_OVERRUN_Y:
-        return r->index >= 0 && r->index < (int64_t)b->dim + (1 << 20);
-    case SW_PF_UNDERRUN:
-        return r->field == 0 || r->field == 1;
-    case SW_PF_ODE:
-        return r->field >= 0 && r->field < ODE_FIELDS;
-    default:
-        return 0;
-    }
-}
-
-/* Describe how the child ended, from its last fault record and wait status. */
-static void box_dead(step_box *b, const sw_child_end *end)
-{
-    const box_reply *r = b->have_fault ? &b->last_fault : NULL;
     char why[SW_ERRLEN], how[120];
+    const sw_host_reply *r = b->pending_fault.tag == SW_HOST_FAULT ? &b->pending_fault : NULL;
+    const sw_child_end *end = &b->pending_end;
+    if (b->pending_rc == -4) {
+        box_fail(b, SW_PF_FORGED, "sent the sandbox a reply it could not have sent (a record out of range)",
+                 "(a plugin may only compute)");
+        return;
+    }
+    if (b->pending_rc == -1) {
+        box_fail(b, SW_PF_CANCELLED, "was interrupted in its step", NULL);
+        return;
+    }
+    if (b->pending_rc == -2) {
+        snprintf(why, sizeof why, "did not return from its step within %g s", sw_plugin_timeout());
+        box_fail(b, SW_PF_TIMEOUT, why, "(an endless loop?)");
+        return;
+    }
+    if (b->pending_rc == -5) {
+        box_fail(b, SW_PF_FORGED, "sent the sandbox a reply it could not have sent (not a step's result)",
+                 "(a plugin may only compute)");
+        return;
+    }
     sw_sandbox_describe(end, how, sizeof how);
     switch (r ? r->fault : SW_PF_NONE) {
     case SW_PF_OVERRUN_WORK:
-        snprintf(why, sizeof why, "wrote past its %d work vector%s (work[%lld], %d doubles each)",
-                 b->wv, b->wv == 1 ? "" : "s", (long long)r->index, b->dim);
+        snprintf(why, sizeof why, "wrote past its %d work vector%s (work[%lld], %d doubles each)", b->wv,
+                 b->wv == 1 ? "" : "s", (long long)r->index, b->dim);
         box_fail(b, SW_PF_OVERRUN_WORK, why, NULL);
         return;
     case SW_PF_OVERRUN_Y:
@@ -337,6 +127,10 @@ static void box_dead(step_box *b, const sw_child_end *end)
             snprintf(why, sizeof why, "changed ode->%s", ode_fields[r->field]);
         box_fail(b, SW_PF_ODE, why, "(a plugin must not write to the ode)");
         return;
+    case SW_PF_ALLOC:
+        box_fail(b, SW_PF_ALLOC, "allocated memory in its step (malloc, calloc, realloc or a relative)",
+                 "(a step must not allocate: ask for work vectors in sw_plugin_info)");
+        return;
     default:
         break;
     }
@@ -344,205 +138,359 @@ static void box_dead(step_box *b, const sw_child_end *end)
         snprintf(why, sizeof why, "ended its process with exit(%d) in its step", end->code);
         box_fail(b, SW_PF_EXIT, why, "(a step must return, never exit)");
     } else if (end->signal == SIGXCPU) {
-        box_fail(b, SW_PF_LIMIT, how, "(the grader's CPU-time limit: a correct but slow plugin "
-                 "ends here too)");
+        box_fail(b, SW_PF_LIMIT, how, "(the submission's CPU-time limit, --cpu: it counts the plugin's "
+                 "own time only)");
     } else {
         box_fail(b, SW_PF_CRASH, how, NULL);
     }
 }
 
-/* A reply that breaks the protocol: the child is stopped, the plugin fails. */
-static void box_forged(step_box *b, const char *what)
+/* The host is gone or stopped answering (rc as sw_host_reply_read): it is
+ * killed and reaped; the run's next step is the fault. */
+static void box_host_died(step_box *b, int rc)
 {
-    sw_child_end end;
-    sw_sandbox_kill(&b->child, &end);
-    char why[SW_ERRLEN];
-    snprintf(why, sizeof why, "sent the sandbox a reply it could not have sent (%s)", what);
-    box_fail(b, SW_PF_FORGED, why, "(a plugin may only compute)");
-}
-
-/* Read one reply within the watchdog: 1, or how the wait ended (as
- * sw_sandbox_read: 0 gone, -1 cancelled, -2 timed out, -3 error). */
-static int box_reply_read(step_box *b, box_reply *r)
-{
-    int rc = sw_sandbox_read(b->child.from_child, r, sizeof *r, sw_plugin_timeout());
-    if (rc == 1 && r->tag == TAG_FAULT) {
-        if (!fault_valid(b, r)) {
-            box_forged(b, "a fault record out of range");
-            return -4;
-        }
-        b->last_fault = *r;
-        b->have_fault = 1;
-        return 0; /* the child dies next */
+    sw_host_link *h = &b->entry->host;
+    b->pending = 1;
+    b->pending_rc = rc;
+    b->exact = h->dying || h->have_fault;
+    h->dying = 0;
+    memset(&b->pending_fault, 0, sizeof b->pending_fault);
+    if (h->have_fault)
+        b->pending_fault = h->fault;
+    if (rc == 0 || rc == -3) {
+        sw_host_lost(b->entry, &b->pending_end);
+    } else {
+        sw_sandbox_kill(&h->child, &b->pending_end);
+        h->alive = 0;
+        h->slots = 0;
     }
-    return rc;
+    h->have_fault = 0;
 }
 
-/* The child ended or the wait did: say which, as a fault (loading: in
- * dlopen or sw_plugin_info(), else in a step). */
-static void box_lost(step_box *b, int rc, int loading)
+/* ---- the runs ------------------------------------------------------------------ */
+
+/* What the system's maker says it is now: the command that builds it. 0,
+ * or -1 when it is nothing a host can build. */
+static int describe(const sw_ode *ode, sw_host_cmd *c, int wv)
 {
-    sw_child_end end;
-    char why[SW_ERRLEN];
-    if (rc == -4)
-        return; /* forged: said already */
-    if (rc == -2 || rc == -1) {
-        sw_sandbox_kill(&b->child, &end);
-        if (rc == -1) {
-            box_fail(b, SW_PF_CANCELLED, loading ? "was interrupted while loading"
-                                                 : "was interrupted in its step", NULL);
-        } else {
-            snprintf(why, sizeof why, "did not %s within %g s", loading ? "finish loading"
-                     : "return from its step", sw_plugin_timeout());
-            box_fail(b, SW_PF_TIMEOUT, why, loading ? "(an endless loop in sw_plugin_info()?)"
-                                                    : "(an endless loop?)");
-        }
-        return;
+    memset(c, 0, sizeof *c);
+    c->op = SW_HOST_OPEN;
+    c->maker_kind = ode->maker_kind;
+    c->order = ode->order;
+    c->dim = ode->dim;
+    c->work_vectors = wv;
+    if (ode->maker_kind == SW_MAKER_SCENE && ode->maker) {
+        const sw_system *sys = ode->maker;
+        size_t len = strlen(sys->scene->name);
+        if (len >= SW_HOST_SCENE_MAX || sys->ode != ode)
+            return -1;
+        memcpy(c->scene, sys->scene->name, len);
+        memcpy(c->p, sys->p, sizeof c->p);
+        c->nextra = sys->nextra;
+        return 0;
     }
-    sw_sandbox_reap(&b->child, 1.0, &end);
-    box_dead(b, &end);
+    if (ode->maker_kind == SW_MAKER_LINEAR2 && ode->maker && ode->dim == 2) {
+        memcpy(c->p, ((const sw_linear2 *)ode->maker)->j, 4 * sizeof(double));
+        return 0;
+    }
+    return -1;
 }
 
-/* Start the jailed child and wait for it to be ready. */
-static void box_start(step_box *b)
+static const double *live_extra(const sw_ode *ode)
 {
+    return ode->maker_kind == SW_MAKER_SCENE ? ((const sw_system *)ode->maker)->extra : NULL;
+}
+
+static int same_system(const sw_host_cmd *a, const sw_host_cmd *b)
+{
+    return a->maker_kind == b->maker_kind && a->order == b->order && a->dim == b->dim && a->nextra == b->nextra &&
+           memcmp(a->scene, b->scene, sizeof a->scene) == 0 && memcmp(a->p, b->p, sizeof a->p) == 0;
+}
+
+static int box_alloc(step_box *b, int dim, int nextra)
+{
+    b->dim = dim;
+    b->vec = (size_t)dim * sizeof(double);
+    size_t cap = BATCH_BYTES / (b->vec + sizeof(sw_host_reply));
+    b->batch_cap = cap < 1 ? 1 : cap > BATCH_MAX ? BATCH_MAX : (int)cap;
+    b->batch = 1;
+    b->rows = malloc((size_t)b->batch_cap * b->vec);
+    b->meta = malloc((size_t)b->batch_cap * sizeof *b->meta);
+    b->sent = malloc(b->vec);
+    b->print = malloc(b->vec);
+    b->extra_sent = malloc(((size_t)nextra + 1) * sizeof(double));
+    return b->rows && b->meta && b->sent && b->print && b->extra_sent ? 0 : -1;
+}
+
+static void box_free(step_box *b)
+{
+    free(b->rows);
+    free(b->meta);
+    free(b->sent);
+    free(b->print);
+    free(b->extra_sent);
+    free(b);
+}
+
+/* Start the host when it is not running (once per plugin, again only after
+ * it died in a run the caller never asked for). */
+static int box_host(step_box *b)
+{
+    sw_plugin_entry *e = b->entry;
+    if (e->host.alive)
+        return 0;
+    sw_host_info info;
     char err[SW_ERRLEN];
-    sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
-    sw_plugin_entry_jail_in(b->entry, &spec);
-    sw_limits lim;
-    sw_plugin_limits(&lim);
-    if (sw_sandbox_spawn_jailed(&b->child, step_child, b, &lim, -1, &spec, err, sizeof err) != SW_OK) {
-        box_fail(b, SW_PF_START, err, NULL);
-        return;
+    if (sw_host_start(e, &info, err, sizeof err) != SW_OK) {
+        const char *at = strstr(err, "': ");
+        box_fail(b, SW_PF_START, at ? at + 3 : err, NULL);
+        return -1;
     }
-    box_reply r;
-    int rc = box_reply_read(b, &r);
-    if (rc == 1 && r.tag == TAG_READY)
-        return;
-    if (rc == 1 && r.tag == TAG_START && (r.rc == START_RELOAD || r.rc == START_CHANGED)) {
+    if (info.stage != SW_HOST_STAGE_OK || !info.has_step || info.work_vectors != e->work_vectors ||
+        strncmp(info.name, e->name, sizeof e->name) != 0) {
         sw_child_end end;
-        sw_sandbox_reap(&b->child, 1.0, &end);
-        box_fail(b, SW_PF_START, r.rc == START_RELOAD ? "could not be loaded again"
-                 : "changed since it was loaded (rebuilt?): load it again", NULL);
-        return;
+        sw_host_lost(e, &end);
+        box_fail(b, SW_PF_START, info.stage == SW_HOST_STAGE_OK ? "changed since it was loaded: load it again"
+                 : "could not be loaded again", NULL);
+        return -1;
     }
-    if (rc == 1) {
-        box_forged(b, "not the ready signal");
-        return;
-    }
-    box_lost(b, rc, 1);
+    return 0;
 }
 
-/* A step's result: the reply, checked, then y into b->buf. 1, or as
- * box_reply_read (-4: forged, said already). */
-static int box_receive(step_box *b, box_reply *r)
+/* Open the box's slot on the host for the system cmd describes. */
+static int box_open(step_box *b, const sw_host_cmd *cmd)
 {
-    int rc = box_reply_read(b, r);
-    if (rc == 1 && r->tag != TAG_DONE) {
-        box_forged(b, "not a step's result");
-        return -4;
+    sw_host_link *h = &b->entry->host;
+    if (b->generation == h->generation && (h->slots >> b->slot & 1) && same_system(&b->opened, cmd))
+        return 0;
+    if (!(b->generation == h->generation && (h->slots >> b->slot & 1))) {
+        int free_slot = -1;
+        for (int i = 0; i < SW_HOST_SLOTS && free_slot < 0; i++)
+            if (!(h->slots >> i & 1))
+                free_slot = i;
+        if (free_slot < 0) {
+            box_fail(b, SW_PF_START, "could not be given a slot: more than 64 runs of it at once", NULL);
+            return -1;
+        }
+        b->slot = free_slot;
     }
-    if (rc == 1 && (r->evals < b->evals || r->evals - b->evals > MAX_COUNT_PER_STEP ||
-                    r->solves < b->solves || r->solves - b->solves > MAX_COUNT_PER_STEP ||
-                    r->iters < b->iters || r->iters - b->iters > MAX_COUNT_PER_STEP)) {
-        box_forged(b, "evaluation counts that run backwards or beyond a billion a step");
-        return -4;
+    sw_host_cmd c = *cmd;
+    c.slot = b->slot;
+    sw_host_reply r;
+    int rc = sw_sandbox_write(h->child.to_child, &c, sizeof c) == 0 ? sw_host_reply_read(b->entry, &r, sw_plugin_timeout())
+                                                                      : 0;
+    if (rc != 1 || r.tag != SW_HOST_OPENED || r.rc != SW_OK) {
+        if (rc == 1)
+            box_fail(b, SW_PF_START, "could not have this system built in its sandbox (a stepwise bug: please report it)",
+                     NULL);
+        else {
+            box_host_died(b, rc == 1 ? -5 : rc);
+            box_fault_now(b);
+        }
+        return -1;
     }
+    h->slots |= 1ull << b->slot;
+    b->generation = h->generation;
+    b->opened = c;
+    b->have = b->used = b->ran = 0;
+    return 0;
+}
+
+/* Ask for a run of b->batch steps from (t, y) and read it whole. keep: the
+ * steps of the last run that were used (-1: all, or none was run). 1 when
+ * the host died in it (pending set), else 0. */
+static int run_once(step_box *b, sw_ode *ode, double t, const double *y, double h, int keep)
+{
+    sw_plugin_entry *e = b->entry;
+    sw_host_cmd c = b->opened;
+    c.op = SW_HOST_RUN;
+    c.steps = b->batch;
+    c.keep = keep;
+    c.careful = b->careful;
+    c.t = t;
+    c.h = h;
+    const double *extra = live_extra(ode);
+    size_t xbytes = (size_t)b->nextra * sizeof(double);
+    memcpy(b->sent, y, b->vec);
+    if (xbytes)
+        memcpy(b->extra_sent, extra, xbytes);
+    struct iovec parts[3] = { { &c, sizeof c }, { b->sent, b->vec }, { b->extra_sent, xbytes } };
+    b->have = b->used = 0;
+    b->ended = 0;
+    b->t_next = t;
+    b->h = h;
+    sw_host_reply r;
+    double wait = sw_plugin_timeout();
+    int rc = sw_sandbox_writev(e->host.child.to_child, parts, xbytes ? 3 : 2) == 0
+                 ? sw_host_reply_read(e, &r, wait * (1 + (keep > 0 ? keep : 0)))
+                 : 0;
+    if (rc == 1 && r.tag != SW_HOST_PRINT)
+        rc = -5;
     if (rc == 1)
-        rc = sw_sandbox_read(b->child.from_child, b->buf, b->vec, sw_plugin_timeout());
-    return rc;
+        rc = sw_host_read(e, b->print, b->vec, wait);
+    if (rc != 1) {
+        box_host_died(b, rc);
+        return 1;
+    }
+    /* the host's f(t, y) against ours, bit for bit (not counted: no step's) */
+    double *ours = b->rows;
+    ode->deriv(ode->ctx, t, b->sent, ours);
+    if (memcmp(ours, b->print, b->vec) != 0) {
+        sw_host_stop(e);
+        box_fail(b, SW_PF_START, "was given a system in its sandbox that is not the one stepped here "
+                 "(a stepwise bug: please report it)", NULL);
+        return 0;
+    }
+    for (;;) {
+        rc = sw_host_reply_read(e, &r, wait);
+        if (rc == 1 && r.tag == SW_HOST_END && r.rc == b->have)
+            break;
+        if (rc == 1 && (r.tag != SW_HOST_STEP || b->have >= b->batch || b->ended || r.evals < 0 ||
+                        r.evals > SW_HOST_COUNT_MAX || r.solves < 0 || r.solves > SW_HOST_COUNT_MAX ||
+                        r.iters < 0 || r.iters > SW_HOST_COUNT_MAX))
+            rc = -5;
+        if (rc == 1)
+            rc = sw_host_read(e, b->rows + (size_t)b->have * (size_t)b->dim, b->vec, wait);
+        if (rc != 1) {
+            box_host_died(b, rc);
+            return 1;
+        }
+        b->meta[b->have++] = r;
+        if (r.rc != 0)
+            b->ended = 1;
+    }
+    b->ran = b->have;
+    return 0;
 }
 
-sw_plugin_fault sw_plugin_box_replay(const unsigned char *data, size_t len, int dim, int wv, char *why,
-                                     size_t whylen)
+/* A run; when the host dies in it by a death it could not see coming
+ * (_exit(), a forbidden call, SIGKILL), replies it had not sent yet may be
+ * lost with it: a new host runs the same steps again carefully, each reply
+ * sent as it is made, so that the fault is named at its own step. (A step
+ * that never returns has had every step before it sent by the host's tick,
+ * and a crash or exit() by its handlers.) */
+static void box_run(step_box *b, sw_ode *ode, double t, const double *y, double h, int keep)
 {
-    step_box b;
-    memset(&b, 0, sizeof b);
-    b.dim = dim;
-    b.wv = wv;
-    b.vec = (size_t)dim * sizeof(double);
-    b.child.to_child = b.child.from_child = b.child.status_fd = -1;
-    int sv[2];
-    if (dim < 1 || dim > 4096 || wv < 0 || wv > 64 || socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0 ||
-        !(b.buf = malloc(b.vec))) {
-        snprintf(why, whylen, "cannot replay");
-        return SW_PF_START;
+    if (run_once(b, ode, t, y, h, keep) == 0 || b->careful || b->pending_rc != 0 || b->exact)
+        return;
+    b->careful = 1;
+    b->pending = 0;
+    sw_host_cmd cmd;
+    double *start = b->rows; /* what was sent, kept while the host starts */
+    memcpy(start, b->sent, b->vec);
+    if (box_host(b) == 0 && describe(ode, &cmd, b->wv) == 0 && box_open(b, &cmd) == 0)
+        run_once(b, ode, t, start, h, -1);
+}
+
+/* Whether the call asks for the next step of the run read in. */
+static int box_hit(const step_box *b, const sw_ode *ode, double t, const double *y, double h)
+{
+    if (b->generation != b->entry->host.generation && !b->pending)
+        return 0;
+    if (t != b->t_next || h != b->h)
+        return 0;
+    const double *last = b->used == 0 ? b->sent : b->rows + (size_t)(b->used - 1) * (size_t)b->dim;
+    if (memcmp(y, last, b->vec) != 0)
+        return 0;
+    const double *extra = live_extra(ode);
+    if (b->nextra && memcmp(extra, b->extra_sent, (size_t)b->nextra * sizeof(double)) != 0)
+        return 0;
+    sw_host_cmd now;
+    return describe(ode, &now, b->wv) == 0 && same_system(&now, &b->opened);
+}
+
+static void box_release(sw_stepper *s)
+{
+    step_box *b = s->plugin;
+    if (!b)
+        return;
+    sw_host_link *h = b->entry ? &b->entry->host : NULL;
+    if (h && h->alive && b->generation == h->generation && (h->slots >> b->slot & 1)) {
+        sw_host_cmd c;
+        memset(&c, 0, sizeof c);
+        c.op = SW_HOST_CLOSE;
+        c.slot = b->slot;
+        sw_sandbox_write(h->child.to_child, &c, sizeof c);
+        h->slots &= ~(1ull << b->slot);
     }
-    /* the bytes as the child's, then its end of the socket closed */
-    size_t room = len < 65536 ? len : 65536;
-    if (sw_sandbox_write(sv[1], data, room) != 0)
-        room = 0;
-    close(sv[1]);
-    b.child.from_child = b.child.to_child = sv[0];
-    box_reply r;
-    int rc = box_receive(&b, &r);
-    if (rc != 1)
-        box_lost(&b, rc, 0);
-    else
-        sw_sandbox_kill(&b.child, NULL);
-    free(b.buf);
-    snprintf(why, whylen, "%s", b.fault == SW_PF_NONE ? "a step" : b.message);
-    return b.fault;
+    box_free(b);
+    s->plugin = NULL;
+}
+
+/* A new stepper's box, or the failure that keeps it from stepping. */
+static step_box *box_new(sw_stepper *s, const sw_ode *ode)
+{
+    step_box *b = calloc(1, sizeof *b);
+    sw_host_cmd cmd;
+    int can = describe(ode, &cmd, s->method->work_vectors) == 0;
+    if (!b || box_alloc(b, ode->dim, can ? cmd.nextra : 0) != 0) {
+        if (b)
+            box_free(b);
+        return NULL;
+    }
+    b->entry = sw_plugin_entry_for(s->method);
+    b->wv = s->method->work_vectors;
+    b->nextra = can ? cmd.nextra : 0;
+    b->generation = -1;
+    s->plugin = b;
+    s->release = box_release;
+    if (!b->entry) {
+        box_fail(b, SW_PF_START, "is not loaded", NULL);
+    } else if (b->entry->disabled || (b->entry->last_fault != SW_PF_NONE && b->entry->last_fault != SW_PF_CANCELLED &&
+                                      b->entry->last_fault != SW_PF_START)) {
+        /* Broken once, not run again in this process: a looping plugin
+         * costs one watchdog, not one per run (stability, bench). */
+        char why[SW_ERRLEN];
+        snprintf(why, sizeof why, "is not run again: it %.200s in an earlier run", b->entry->last_failure);
+        box_fail(b, SW_PF_DISABLED, why, NULL);
+    } else if (!can) {
+        box_fail(b, SW_PF_START, "can step only systems stepwise builds (a scene, or the truth module's "
+                 "test system): this one cannot be built again in its sandbox", NULL);
+    }
+    return b;
 }
 
 int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     step_box *b = s->plugin;
-    if (!b) {
-        b = calloc(1, sizeof *b);
-        if (!b || !(b->buf = malloc((size_t)ode->dim * sizeof(double) + 1))) {
-            free(b);
-            return SW_ENOMEM;
+    if (!b && !(b = box_new(s, ode)))
+        return SW_ENOMEM;
+    if (b->fault == SW_PF_NONE && (!(b->used < b->have || b->pending) || !box_hit(b, ode, *t, y, h))) {
+        /* a miss, or the run is used up: run again from here */
+        int continues = b->used == b->have && b->have > 0 && !b->ended && !b->pending && box_hit(b, ode, *t, y, h);
+        int keep = b->used < b->ran ? b->used : -1;
+        b->batch = continues ? (b->batch * 2 < b->batch_cap ? b->batch * 2 : b->batch_cap) : 1;
+        if (b->pending) {
+            /* it died ahead of the caller, in a step never asked for: a new host */
+            b->pending = 0;
+            keep = -1;
         }
-        b->entry = sw_plugin_entry_for(s->method);
-        b->ode = ode;
-        b->dim = ode->dim;
-        b->vec = (size_t)ode->dim * sizeof(double);
-        b->wv = s->method->work_vectors;
-        s->plugin = b;
-        s->release = box_release;
-        if (!b->entry)
-            box_fail(b, SW_PF_START, "is not loaded", NULL);
-        else if (b->entry->disabled || (b->entry->last_fault != SW_PF_NONE &&
-                                        b->entry->last_fault != SW_PF_CANCELLED &&
-                                        b->entry->last_fault != SW_PF_START)) {
-            /* Broken once, not run again in this process: a looping plugin
-             * costs one watchdog, not one per run (stability, bench). */
-            char why[SW_ERRLEN];
-            snprintf(why, sizeof why, "is not run again: it %.200s in an earlier run",
-                     b->entry->last_failure);
-            box_fail(b, SW_PF_DISABLED, why, NULL);
-        } else {
-            b->evals = ode->evals; /* the child's counters start from the parent's at fork */
-            b->solves = ode->solves;
-            b->iters = ode->solver_iters;
-            box_start(b);
+        sw_host_cmd cmd;
+        if (box_host(b) == 0 && describe(ode, &cmd, b->wv) == 0) {
+            /* a slot opened anew (another host, another system) has no run to go back into */
+            if (b->generation != b->entry->host.generation || !same_system(&cmd, &b->opened))
+                keep = -1;
+            if (box_open(b, &cmd) == 0)
+                box_run(b, ode, *t, y, h, keep);
         }
     }
+    if (b->fault == SW_PF_NONE && b->used == b->have && b->pending)
+        box_fault_now(b);
     if (b->fault != SW_PF_NONE) {
         s->why = b->message;
         return SW_EDIVERGED;
     }
-    box_cmd cmd = { OP_STEP, 0, *t, h };
-    box_reply r;
-    struct iovec parts[2] = { { &cmd, sizeof cmd }, { y, b->vec } };
-    int rc = sw_sandbox_writev(b->child.to_child, parts, 2) == 0 ? box_receive(b, &r) : 0;
-    if (rc != 1) {
-        box_lost(b, rc, 0);
-        s->why = b->message;
-        return SW_EDIVERGED;
-    }
-    memcpy(y, b->buf, b->vec);
-    ode->evals += (long)(r.evals - b->evals);
-    ode->solves += (long)(r.solves - b->solves);
-    ode->solver_iters += (long)(r.iters - b->iters);
-    b->evals = (long)r.evals;
-    b->solves = (long)r.solves;
-    b->iters = (long)r.iters;
+    const sw_host_reply *r = &b->meta[b->used];
+    memcpy(y, b->rows + (size_t)b->used * (size_t)b->dim, b->vec);
+    b->used++;
+    ode->evals += (long)r->evals;
+    ode->solves += (long)r->solves;
+    ode->solver_iters += (long)r->iters;
     *t += h;
-    if (r.rc != 0)
+    b->t_next = *t;
+    if (r->rc != 0)
         s->why = "the plugin's step function returned an error";
-    return r.rc == 0 ? SW_OK : SW_EDIVERGED;
+    return r->rc == 0 ? SW_OK : SW_EDIVERGED;
 }
 
 sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, size_t len)
@@ -553,7 +501,67 @@ sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, s
     if (b->fault == SW_PF_DISABLED)
         snprintf(buf, len, "the plugin %.230s", b->why);
     else
-        snprintf(buf, len, "the plugin %.160s at step %ld%s%.90s", b->why, step,
-                 b->hint[0] ? " " : "", b->hint);
+        snprintf(buf, len, "the plugin %.160s at step %ld%s%.90s", b->why, step, b->hint[0] ? " " : "", b->hint);
     return b->fault;
+}
+
+/* ---- replaying bytes (the fuzz target) ---------------------------------------- */
+
+static void replay_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    (void)t;
+    (void)y;
+    memset(dydt, 0, (size_t)*(const int *)ctx * sizeof *dydt);
+}
+
+sw_plugin_fault sw_plugin_box_replay(const unsigned char *data, size_t len, int dim, int wv, char *why,
+                                     size_t whylen)
+{
+    int sv[2];
+    if (dim < 1 || dim > 4096 || wv < 0 || wv > 64 || socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0) {
+        snprintf(why, whylen, "cannot replay");
+        return SW_PF_START;
+    }
+    /* the bytes as the host's, then its end of the socket shut for writing
+     * (what the parent sends still goes in); the derivative the host's
+     * must match is all zeros */
+    size_t room = len < 65536 ? len : 65536;
+    if (sw_sandbox_write(sv[1], data, room) != 0)
+        room = 0;
+    shutdown(sv[1], SHUT_WR);
+    sw_plugin_entry e;
+    memset(&e, 0, sizeof e);
+    e.host.child.to_child = e.host.child.from_child = sv[0];
+    e.host.child.status_fd = -1;
+    e.host.alive = 1;
+    e.work_vectors = wv;
+    step_box b;
+    memset(&b, 0, sizeof b);
+    b.entry = &e;
+    b.wv = wv;
+    sw_plugin_fault f = SW_PF_START;
+    if (box_alloc(&b, dim, 0) == 0) {
+        b.batch = 4;
+        b.careful = 1; /* no new host to run it again */
+        double *y = calloc((size_t)dim, sizeof *y);
+        sw_ode ode = { .dim = dim, .order = 1, .deriv = replay_deriv, .ctx = &dim };
+        if (y) {
+            box_run(&b, &ode, 0.0, y, 0.1, -1);
+            if (b.fault == SW_PF_NONE && b.pending)
+                box_fault_now(&b);
+            if (b.fault == SW_PF_NONE && b.have == 0)
+                box_fail(&b, SW_PF_FORGED, "sent no step", NULL);
+            f = b.fault;
+        }
+        free(y);
+    }
+    snprintf(why, whylen, "%s", f == SW_PF_NONE ? "a run" : b.message[0] ? b.message : "cannot replay");
+    sw_sandbox_kill(&e.host.child, NULL);
+    close(sv[1]);
+    free(b.rows);
+    free(b.meta);
+    free(b.sent);
+    free(b.print);
+    free(b.extra_sent);
+    return f;
 }

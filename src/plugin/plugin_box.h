@@ -1,16 +1,35 @@
-/* Private to plugin/: the registry of loaded plugins (plugin_registry.c)
- * and the sandboxed step every plugin method runs through (plugin_box.c). */
+/* Private to plugin/: the registry of loaded plugins (plugin_registry.c),
+ * the parent's end of a plugin's host (host_link.c) and the sandboxed step
+ * every plugin method runs through (plugin_box.c). */
 #ifndef SW_PLUGIN_PLUGIN_BOX_H
 #define SW_PLUGIN_PLUGIN_BOX_H
 
 #include "engine/stepper.h"
+#include "plugin/host_proto.h"
 #include "plugin/jail.h"
 #include "plugin/plugin.h"
+#include "plugin/sandbox.h"
 #include "stepwise/stepwise.h"
+
+/* A plugin's host as the parent sees it: one process for every run of the
+ * plugin (a jail per submission, not per run), each run in a slot. */
+typedef struct sw_host_link {
+    sw_child child;
+    int alive;
+    int generation;                        /* bumped by every start: slots of an older one are gone */
+    unsigned long long slots;              /* the slots in use, one bit each */
+    int busy_slot;                         /* the slot whose run is being read, or -1 */
+    sw_host_reply fault;                   /* a FAULT record the host sent before it died */
+    int have_fault;
+    int dying;                             /* it said DYING: every step before was sent */
+    unsigned char rbuf[1 << 16];           /* what was read from the host and not yet used */
+    size_t rpos, rlen;
+} sw_host_link;
 
 typedef struct sw_plugin_entry {
     char path[4096];                       /* absolute: what the user named */
-    int fd;                                /* the file as loaded: what every child gets */
+    char shown[200];                       /* how messages name it (escaped) */
+    int fd;                                /* the file as loaded: what every host gets */
     char name[SW_PLUGIN_NAME_MAX + 1];
     char label[SW_PLUGIN_LABEL_MAX + 1];
     int work_vectors;
@@ -19,6 +38,7 @@ typedef struct sw_plugin_entry {
     char last_failure[SW_ERRLEN];
     int disabled;
     char disabled_why[SW_ERRLEN];
+    sw_host_link host;
 } sw_plugin_entry;
 
 /* The next free entry (NULL: SW_PLUGIN_MAX are loaded), and taking it
@@ -27,25 +47,44 @@ sw_plugin_entry *sw_plugin_entry_next(void);
 void sw_plugin_entry_commit(void);
 /* The entry behind a plugin method, or NULL. */
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
-/* The file a child of the entry dlopens: its copy in the jail's /work, or
- * (no jail) the path. */
-const char *sw_plugin_entry_file(const sw_plugin_entry *e);
 /* The limits a new plugin process gets (sw_plugin_set_limits). */
-struct sw_limits;
-void sw_plugin_limits(struct sw_limits *lim);
-/* Hand the entry's file to a jail (spec->in). */
-void sw_plugin_entry_jail_in(const sw_plugin_entry *e, sw_jail *spec);
-/* The step of every plugin method: the first call starts the stepper's
- * child; each call copies y in, one round trip, and y back. */
+void sw_plugin_limits(sw_limits *lim);
+/* The plugin host program, opened once (its descriptor, or -1 with err
+ * saying where it was looked for). */
+int sw_plugin_host_fd(char *err, size_t errlen);
+/* ... and its path (once found). */
+const char *sw_plugin_host_path(void);
+
+/* host_link.c. Start the entry's host: load the plugin there and read
+ * what loading found into *info (its strings terminated here). 0; or
+ * SW_EINVAL / SW_EIO with a one-line message naming the plugin as shown
+ * (how loading failed, or why the host could not start). */
+int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errlen);
+/* End the entry's host (QUIT, then reaped). */
+void sw_host_stop(sw_plugin_entry *e);
+/* Read exactly len bytes from the host within `seconds` (the wait for the
+ * next piece, not the whole): 1, or as sw_sandbox_read. */
+int sw_host_read(sw_plugin_entry *e, void *buf, size_t len, double seconds);
+/* Read one reply of the host within `seconds`: 1, or as sw_sandbox_read
+ * (0 the host ended, -1 cancelled, -2 timed out, -3 error); a FAULT
+ * record in range is kept in the link and reads as 0 (the host dies
+ * next); -4 a FAULT out of range (forged). */
+int sw_host_reply_read(sw_plugin_entry *e, sw_host_reply *r, double seconds);
+/* The host ended or stopped answering: kill and reap it, *end how it
+ * ended (killed: 1 when we killed it). */
+void sw_host_lost(sw_plugin_entry *e, sw_child_end *end);
+
+/* The step of every plugin method: runs ahead in batches on the host and
+ * serves each step from what came back. */
 sw_step_fn sw_plugin_step;
-/* The fault of the stepper's child, described as a sentence that names the
+/* The fault of the stepper's runs, described as a sentence that names the
  * step ("the plugin crashed with SIGSEGV (...) at step 4"). */
 sw_plugin_fault sw_plugin_box_fault(const sw_stepper *s, long step, char *buf, size_t len);
 
-/* The parent's side of one step run on bytes a child might have sent
- * (the fuzz target and tests: no child process): a system of dim doubles
- * and wv work vectors. The fault those bytes make (SW_PF_NONE: a valid
- * step), described in why. Never reads past len, never crashes. */
+/* The parent's side of one run on bytes a host might have sent (the fuzz
+ * target and tests: no host): a system of dim doubles, a run of up to 4
+ * steps. The fault those bytes make (SW_PF_NONE: at least one valid step
+ * and a proper end), described in why. Never reads past len, never crashes. */
 sw_plugin_fault sw_plugin_box_replay(const unsigned char *data, size_t len, int dim, int wv, char *why,
                                      size_t whylen);
 

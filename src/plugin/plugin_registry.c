@@ -3,10 +3,13 @@
  * so neither calls the other back. */
 #include "plugin/plugin_box.h"
 
+#include <fcntl.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "plugin/sandbox.h"
 #include "util/num.h"
@@ -29,12 +32,12 @@ void sw_plugin_limits(sw_limits *lim)
 {
     *lim = limits;
     if (limits.cpu_seconds > 0) {
-        /* every plugin process ends in this process's children's account */
-        struct rusage self, kids;
-        getrusage(RUSAGE_SELF, &self);
+        /* The submission's own processes only (its builds and hosts, each
+         * in this process's children's account once reaped): the
+         * grader's work in this process is never charged to it. */
+        struct rusage kids;
         getrusage(RUSAGE_CHILDREN, &kids);
-        double used = seconds_of(self.ru_utime) + seconds_of(self.ru_stime) + seconds_of(kids.ru_utime) +
-                      seconds_of(kids.ru_stime);
+        double used = seconds_of(kids.ru_utime) + seconds_of(kids.ru_stime);
         double left = limits.cpu_seconds - used;
         lim->cpu_seconds = left > 1 ? left : 1;
     }
@@ -67,19 +70,49 @@ sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m)
     return NULL;
 }
 
-#define JAIL_NAME "plugin.so"
+/* The host program: beside this program (a build tree's stepwise, or
+ * build/ under it), in PREFIX/libexec/stepwise, or STEPWISE_PLUGIN_HOST. */
+#define HOST_NAME "stepwise-plugin-host"
+static int host_fd = -1;
+static char host_path[4096];
 
-const char *sw_plugin_entry_file(const sw_plugin_entry *e)
+static int try_host(const char *dir, const char *sub)
 {
-    return sw_jail_enabled() ? "/work/" JAIL_NAME : e->path;
+    if ((size_t)snprintf(host_path, sizeof host_path, "%s%s" HOST_NAME, dir, sub) >= sizeof host_path)
+        return -1;
+    host_fd = open(host_path, O_RDONLY | O_CLOEXEC);
+    return host_fd;
 }
 
-void sw_plugin_entry_jail_in(const sw_plugin_entry *e, sw_jail *spec)
+int sw_plugin_host_fd(char *err, size_t errlen)
 {
-    spec->in[0].fd = e->fd;
-    spec->in[0].name = JAIL_NAME;
-    spec->nin = 1;
+    if (host_fd >= 0)
+        return host_fd;
+    const char *env = getenv("STEPWISE_PLUGIN_HOST");
+    if (env && *env) {
+        snprintf(host_path, sizeof host_path, "%s", env);
+        host_fd = open(host_path, O_RDONLY | O_CLOEXEC);
+    } else {
+        char exe[4096];
+        ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+        if (n > 0) {
+            exe[n] = '\0';
+            char *slash = strrchr(exe, '/');
+            if (slash)
+                slash[1] = '\0';
+            if (try_host(exe, "") < 0 && try_host(exe, "build/") < 0)
+                try_host(exe, "../libexec/stepwise/");
+        }
+        if (host_fd < 0)
+            try_host(SW_LIBEXECDIR "/", "");
+    }
+    if (host_fd < 0)
+        snprintf(err, errlen, "the plugin host (" HOST_NAME ") is missing: build it with make, or install "
+                 "stepwise (make install) to put it in " SW_LIBEXECDIR);
+    return host_fd;
 }
+
+const char *sw_plugin_host_path(void) { return host_path; }
 
 sw_plugin_entry *sw_plugin_entry_next(void)
 {

@@ -368,12 +368,21 @@ int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_li
     return rc;
 }
 
-static int nothing(void *ctx, int in, int out)
+/* The probe's payload: the layers a plugin's host installs, tried here;
+ * exit status 0, or 3 with what failed on the channel. */
+static int layers_work(void *ctx, int in, int out)
 {
     (void)ctx;
     (void)in;
-    (void)out;
-    return 0;
+    const char *step = NULL;
+    int rc = sw_jail_compute_layers(&step);
+    if (rc == 0)
+        return 0;
+    jail_failure f = { rc, "" };
+    snprintf(f.step, sizeof f.step, "%s", step ? step : "");
+    if (write(out, &f, sizeof f) != (ssize_t)sizeof f)
+        return 3;
+    return 3;
 }
 
 int sw_sandbox_probe(char *err, size_t errlen)
@@ -385,10 +394,21 @@ int sw_sandbox_probe(char *err, size_t errlen)
     if (!known) {
         sw_child c;
         sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
-        known = sw_sandbox_spawn_jailed(&c, nothing, NULL, NULL, -1, &spec, why, sizeof why) == SW_OK ? 1 : -1;
+        known = sw_sandbox_spawn_jailed(&c, layers_work, NULL, NULL, -1, &spec, why, sizeof why) == SW_OK ? 1 : -1;
         if (known == 1) {
+            jail_failure f;
+            int got = sw_sandbox_read(c.from_child, &f, sizeof f, 10.0);
             sw_child_end end;
             sw_sandbox_reap(&c, 5.0, &end);
+            if (got == 1) {
+                f.step[sizeof f.step - 1] = '\0';
+                snprintf(why, sizeof why, "the sandbox could not be set up: %.120s failed (%s); it needs "
+                         "Linux seccomp (docs/sandbox.md)", f.step, strerror(f.err));
+                known = -1;
+            } else if (!end.exited || end.code != 0) {
+                snprintf(why, sizeof why, "the sandbox could not be set up: its probe did not finish");
+                known = -1;
+            }
         }
     }
     if (known < 0)

@@ -70,6 +70,9 @@ int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t 
 /* Read exactly len bytes within `seconds`. 1 done, 0 end of file first (the
  * child is gone), -1 cancelled, -2 timed out, -3 a read error. */
 int sw_sandbox_read(int fd, void *buf, size_t len, double seconds);
+/* Read what is there, at least one byte, at most max, within `seconds`:
+ * the count, or 0 end of file, -1 cancelled, -2 timed out, -3 a read error. */
+long sw_sandbox_read_some(int fd, void *buf, size_t max, double seconds);
 /* Write all of buf; 0, or -1 when the child is gone (EPIPE is not a signal). */
 int sw_sandbox_write(int fd, const void *buf, size_t len);
 /* The same for n parts in one message (parts is used up). */

@@ -6,6 +6,7 @@
 #include "plugin/sandbox.h"
 
 #include <errno.h>
+#include <math.h>
 #include <poll.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -124,6 +125,42 @@ int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
         got += (size_t)n;
     }
     return 1;
+}
+
+long sw_sandbox_read_some(int fd, void *buf, size_t max, double seconds)
+{
+    double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
+    double spin_until = -1;
+    for (;;) {
+        ssize_t n = recv(fd, buf, max, MSG_DONTWAIT);
+        if (n > 0)
+            return (long)n;
+        if (n == 0)
+            return 0;
+        if (errno == ENOTSOCK) {
+            int w = sandbox_wait(fd, seconds >= 0 ? fmax(deadline - sw_sandbox_now(), 0) : -1);
+            if (w <= 0)
+                return w < 0 ? -1 : -2;
+            n = read(fd, buf, max);
+            if (n >= 0)
+                return (long)n;
+        }
+        if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
+            return errno == ECONNRESET ? 0 : -3;
+        double now = sw_sandbox_now();
+        if (spin_until < 0)
+            spin_until = now + SPIN_SECONDS;
+        if (now < spin_until)
+            continue;
+        double left = seconds >= 0 ? deadline - now : -1;
+        if (seconds >= 0 && left < 0)
+            left = 0;
+        int w = sandbox_wait(fd, left);
+        if (w < 0)
+            return -1;
+        if (w == 0)
+            return -2;
+    }
 }
 
 int sw_sandbox_write(int fd, const void *buf, size_t len)

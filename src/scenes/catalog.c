@@ -166,8 +166,13 @@ int sw_system_build(sw_system *sys, const sw_scene *sc, const double *p, char *e
     int rc = sc->build(sys, err, errlen);
     if (rc == SW_OK && sys->kind == SW_SYS_PARTICLES)
         rc = sw_particles_finish(&sys->particles, err, errlen);
-    if (rc != SW_OK)
+    if (rc != SW_OK) {
         sw_system_free(sys);
+        return rc;
+    }
+    /* what a plugin's host needs to build it again: this scene, sys->p, sys->extra */
+    sys->ode->maker_kind = SW_MAKER_SCENE;
+    sys->ode->maker = sys;
     return rc;
 }
 

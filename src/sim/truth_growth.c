@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "engine/linalg.h"
+#include "engine/linear2.h"
 #include "stepwise/stepwise.h"
 
 double sw_truth_horizon(const sw_scene *sc, double stiffest)
@@ -29,47 +30,20 @@ int sw_truth_growth_visible(double rho, double dt, double horizon)
 
 /* ---- a mode's test system --------------------------------------------------- */
 
-static void test_deriv(void *ctx, double t, const double *y, double *dydt)
-{
-    (void)t;
-    const sw_test_system *ts = ctx;
-    dydt[0] = ts->j[0] * y[0] + ts->j[1] * y[1];
-    dydt[1] = ts->j[2] * y[0] + ts->j[3] * y[1];
-}
-
-/* (I - c·J) z = r by Cramer's rule. */
-static int test_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
-{
-    (void)t;
-    (void)y;
-    const sw_test_system *ts = ctx;
-    double a = 1 - c * ts->j[0], b = -c * ts->j[1], d = -c * ts->j[2], e = 1 - c * ts->j[3];
-    double det = a * e - b * d;
-    if (!(fabs(det) > 0) || !isfinite(det))
-        return SW_EDIVERGED;
-    z[0] = (e * r[0] - b * r[1]) / det;
-    z[1] = (a * r[1] - d * r[0]) / det;
-    return SW_OK;
-}
-
 static void test_system_init(sw_test_system *ts, int order, const sw_mode *md)
 {
-    memset(ts, 0, sizeof *ts);
+    double j[4] = { 0, 0, 0, 0 };
     if (order == 1) {
-        ts->j[0] = ts->j[3] = md->re;
-        ts->j[1] = -md->im;
-        ts->j[2] = md->im;
+        j[0] = j[3] = md->re;
+        j[1] = -md->im;
+        j[2] = md->im;
     } else {
         /* B = λ + μ, A = -λμ (real: μ is λ's conjugate or both are real) */
-        ts->j[1] = 1;
-        ts->j[2] = -(md->re * md->pre - md->im * md->pim);
-        ts->j[3] = md->re + md->pre;
+        j[1] = 1;
+        j[2] = -(md->re * md->pre - md->im * md->pim);
+        j[3] = md->re + md->pre;
     }
-    ts->ode.dim = 2;
-    ts->ode.order = order;
-    ts->ode.deriv = test_deriv;
-    ts->ode.solve = test_solve;
-    ts->ode.ctx = ts;
+    sw_linear2_init(ts, order, j);
 }
 
 /* Spectral radius of one step of size h from the stepper's method on the

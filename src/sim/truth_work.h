@@ -6,16 +6,14 @@
 
 #include <stddef.h>
 
+#include "engine/linear2.h"
 #include "engine/stepper.h"
 #include "sim/truth.h"
 
-/* y' = J y for the 2x2 matrix J of one mode: a flow (order 1) with
- * J = [[a, -b], [b, a]] (eigenvalues a ± ib), or a second-order system
- * (x, v) with J = [[0, 1], [A, B]] (roots λ, μ: B = λ + μ, A = -λμ). */
-typedef struct sw_test_system {
-    sw_ode ode;
-    double j[4];
-} sw_test_system;
+/* y' = J y for the 2x2 matrix J of one mode (engine/linear2.h): a flow
+ * (order 1) with eigenvalues a ± ib, or a second-order system (x, v) with
+ * J = [[0, 1], [A, B]] (roots λ, μ: B = λ + μ, A = -λμ). */
+typedef sw_linear2 sw_test_system;
 
 struct sw_truth_work {
     double *buf;          /* spectrum scratch, cap doubles */

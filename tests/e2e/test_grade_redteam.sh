@@ -59,8 +59,10 @@ for j in ${SW_TEST_QUICK:+skip} 1 2; do
     "$SW" grade --assignment $A --roster roster.csv --csv book.csv --feedback fb$j -j $j class >out$j.txt 2>&1
     [ $? -le 1 ] || fail "1: grade -j $j exited $?: $(cat out$j.txt)"
     all=$(cat out$j.txt book.csv fb$j/* 2>/dev/null)
-    printf '%s\n' "$all" | grep -q "SCAN-A" || fail "1: -j $j: the scan did not run or did not reach the assignment: $(grep -i mallory out$j.txt)"
-    printf '%s\n' "$all" | grep -q "SCAN[-A]*-[RCB]" && fail "1: -j $j: the plugin read the class: $(printf '%s\n' "$all" | grep -o 'SCAN[-A-Z]*' | head -1)"
+    # The plugin runs in its host, which never held the grader's memory:
+    # not even its own assignment's title is there to find.
+    printf '%s\n' "$all" | grep -q "SCAN" || fail "1: -j $j: the scan did not run: $(grep -i mallory out$j.txt)"
+    printf '%s\n' "$all" | grep -q "SCAN-[ARCB]" && fail "1: -j $j: the plugin read the grader's memory: $(printf '%s\n' "$all" | grep -o 'SCAN[-A-Z]*' | head -1)"
 done
 
 # 2: the export's metadata decides; a copy in a student's folder is refused

@@ -1,0 +1,216 @@
+/* The parent's end of a plugin's host: start the program
+ * stepwise-plugin-host in the jail (the host and the plugin copied into
+ * its /work, the host exec'd there), read what loading found, and read
+ * replies within the watchdog. Invariant: every record is fixed-size and
+ * read whole; every string is terminated here; no field is used unchecked. */
+#include "plugin/plugin_box.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#define JAIL_PLUGIN "plugin.so"
+#define JAIL_HOST "stepwise-plugin-host"
+
+/* What the payload execs: the host, and the plugin it loads. */
+typedef struct host_exec {
+    const char *host;          /* a path, in the jail or not */
+    const char *plugin;
+    int jailed;
+    char who[256];             /* this process's command line: whose host it is, for ps */
+} host_exec;
+
+/* This process's command line, its arguments joined by blanks. */
+static void command_line(char *out, size_t len)
+{
+    out[0] = '\0';
+    int fd = open("/proc/self/cmdline", O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return;
+    ssize_t n = read(fd, out, len - 1);
+    close(fd);
+    if (n <= 0)
+        n = 0;
+    for (ssize_t i = 0; i < n; i++)
+        if (out[i] == '\0')
+            out[i] = ' ';
+    out[n] = '\0';
+}
+
+/* The payload: become the host. Returns only when exec failed. */
+static int exec_host(void *ctx, int in, int out)
+{
+    (void)in;
+    (void)out;
+    const host_exec *x = ctx;
+    char *argv[8];
+    int n = 0;
+    argv[n++] = JAIL_HOST;
+    argv[n++] = (char *)x->plugin;
+    if (x->jailed) {
+        argv[n++] = "--jail";
+        argv[n++] = "--read";
+        argv[n++] = "/";
+    }
+    argv[n++] = "--for";
+    argv[n++] = (char *)x->who;
+    argv[n] = NULL;
+    char *envp[] = { NULL };
+    execve(x->host, argv, envp);
+    return 126;
+}
+
+int sw_host_read(sw_plugin_entry *e, void *buf, size_t len, double seconds)
+{
+    sw_host_link *h = &e->host;
+    unsigned char *out = buf;
+    while (len > 0) {
+        if (h->rpos == h->rlen) {
+            long n = sw_sandbox_read_some(h->child.from_child, h->rbuf, sizeof h->rbuf, seconds);
+            if (n <= 0)
+                return (int)n;
+            h->rpos = 0;
+            h->rlen = (size_t)n;
+        }
+        size_t take = h->rlen - h->rpos < len ? h->rlen - h->rpos : len;
+        memcpy(out, h->rbuf + h->rpos, take);
+        h->rpos += take;
+        out += take;
+        len -= take;
+    }
+    return 1;
+}
+
+int sw_host_reply_read(sw_plugin_entry *e, sw_host_reply *r, double seconds)
+{
+    sw_host_link *h = &e->host;
+    int rc = sw_host_read(e, r, sizeof *r, seconds);
+    if (rc == 1 && r->tag == SW_HOST_DYING) {
+        h->dying = 1;
+        return 0; /* the host dies next */
+    }
+    if (rc == 1 && r->tag == SW_HOST_FAULT) {
+        int ok = 0;
+        switch (r->fault) {
+        case SW_PF_OVERRUN_WORK:
+        case SW_PF_OVERRUN_Y:
+            ok = r->index >= 0 && r->index < ((int64_t)1 << 40);
+            break;
+        case SW_PF_UNDERRUN:
+            ok = r->field == 0 || r->field == 1;
+            break;
+        case SW_PF_ODE:
+            ok = r->field >= 0 && r->field < SW_HOST_ODE_NFIELDS;
+            break;
+        case SW_PF_ALLOC:
+            ok = 1;
+            break;
+        default:
+            break;
+        }
+        if (!ok)
+            return -4;
+        h->fault = *r;
+        h->have_fault = 1;
+        return 0; /* the host dies next */
+    }
+    return rc;
+}
+
+void sw_host_lost(sw_plugin_entry *e, sw_child_end *end)
+{
+    sw_host_link *h = &e->host;
+    memset(end, 0, sizeof *end);
+    if (h->child.pid > 0)
+        sw_sandbox_reap(&h->child, 1.0, end);
+    h->alive = 0;
+    h->slots = 0;
+    h->busy_slot = -1;
+}
+
+void sw_host_stop(sw_plugin_entry *e)
+{
+    sw_host_link *h = &e->host;
+    if (!h->alive)
+        return;
+    sw_host_cmd quit;
+    memset(&quit, 0, sizeof quit);
+    quit.op = SW_HOST_QUIT;
+    sw_sandbox_write(h->child.to_child, &quit, sizeof quit);
+    sw_child_end end;
+    sw_sandbox_reap(&h->child, 0.5, &end);
+    h->alive = 0;
+    h->slots = 0;
+}
+
+int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errlen)
+{
+    sw_host_link *h = &e->host;
+    char msg[SW_ERRLEN];
+    int host_fd = sw_plugin_host_fd(msg, sizeof msg);
+    if (host_fd < 0) {
+        snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);
+        return SW_EIO;
+    }
+    int jailed = sw_jail_enabled();
+    host_exec x = { .host = jailed ? "/work/" JAIL_HOST : sw_plugin_host_path(),
+                    .plugin = jailed ? "/work/" JAIL_PLUGIN : e->path, .jailed = jailed };
+    command_line(x.who, sizeof x.who);
+    sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
+    spec.in[0] = (sw_jail_file){ .fd = e->fd, .name = JAIL_PLUGIN };
+    spec.in[1] = (sw_jail_file){ .fd = host_fd, .name = JAIL_HOST, .executable = 1 };
+    spec.nin = 2;
+    sw_limits lim;
+    sw_plugin_limits(&lim);
+    h->have_fault = h->dying = 0;
+    h->busy_slot = -1;
+    h->rpos = h->rlen = 0;
+    if (sw_sandbox_spawn_jailed(&h->child, exec_host, &x, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
+        snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);
+        return SW_EIO;
+    }
+    h->alive = 1;
+    h->generation++;
+    h->slots = 0;
+    double limit = sw_plugin_timeout();
+    char stage = 0, tag;
+    int rc, tags = 0;
+    while ((rc = sw_host_read(e, &tag, 1, limit)) == 1 && tag != 'R' && ++tags < 3)
+        stage = tag == 'I' ? 'I' : 'L';
+    if (rc == 1 && tag != 'R')
+        rc = -3; /* more progress tags than the host sends */
+    if (rc == 1)
+        rc = sw_host_read(e, info, sizeof *info, limit);
+    const char *what = stage == 'I' ? "sw_plugin_info()" : "loading it (dlopen and its constructors)";
+    sw_child_end end;
+    if (rc == 1) {
+        /* terminated here, whatever was sent: an unterminated field is "too long" */
+        info->name[sizeof info->name - 1] = info->label[sizeof info->label - 1] = '\0';
+        info->dlerr[sizeof info->dlerr - 1] = '\0';
+        if (info->stage != SW_HOST_STAGE_OK)
+            sw_host_lost(e, &end); /* it ends by itself: nothing to step */
+        return SW_OK;
+    }
+    if (rc == -2 || rc == -1) {
+        sw_sandbox_kill(&h->child, &end);
+        h->alive = 0;
+        if (rc == -2)
+            snprintf(err, errlen, "--plugin '%s': %s did not return within %g s (an endless loop?)", e->shown,
+                     what, limit);
+        else
+            snprintf(err, errlen, "--plugin '%s': interrupted while %s ran", e->shown, what);
+        return SW_EINVAL;
+    }
+    sw_host_lost(e, &end);
+    if (end.exited && end.code == 126) {
+        snprintf(err, errlen, "--plugin '%s': the plugin host could not be started (%s)", e->shown,
+                 strerror(ENOEXEC));
+        return SW_EIO;
+    }
+    sw_sandbox_describe(&end, msg, sizeof msg);
+    snprintf(err, errlen, "--plugin '%s': %s %s%s", e->shown, what, msg,
+             end.exited ? " (a plugin must not end the process: return from it)" : "");
+    return SW_EINVAL;
+}

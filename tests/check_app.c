@@ -487,6 +487,30 @@ START_TEST(slow_keys_say_so_first)
 END_TEST
 
 Suite *make_app_suite(void);
+/* A plugin's label is its author's text: the message that names it on
+ * switching shows a right-to-left override, an isolate and a zero-width
+ * space escaped (util/escape.h), never raw, so it cannot show "RK4
+ * password" backwards or hide a word on the student's screen. */
+START_TEST(method_label_escaped)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.01, NULL);
+    sw_integrator odd = *sw_integrator_find("euler");
+    odd.label = "RK4 \u202Edrowssap\u202C \u2066x\u2069 zero\u200Bwidth";
+    ck_assert_int_eq(sw_app_set_method(&a, &odd), SW_OK);
+    ck_assert_msg(strstr(a.message, "(RK4 \\xe2\\x80\\xaedrowssap\\xe2\\x80\\xac \\xe2\\x81\\xa6x"
+                                    "\\xe2\\x81\\xa9 zero\\xe2\\x80\\x8bwidth)"), "%s", a.message);
+    for (const char *p = a.message; *p; p++)
+        ck_assert_msg((unsigned char)*p < 0x80, "a raw byte 0x%02x in '%s'", (unsigned char)*p, a.message);
+    char *t = compose_text(&a, 120, 30);
+    ck_assert_ptr_nonnull(strstr(t, "\\xe2\\x80\\xae"));
+    ck_assert_ptr_null(strstr(t, "\u202E"));
+    free(t);
+    ck_assert_int_eq(sw_app_set_method(&a, sw_integrator_find("euler")), SW_OK);
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_app_suite(void)
 {
     Suite *s = suite_create("app");
@@ -494,6 +518,7 @@ Suite *make_app_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, key_table_drives_lookup);
     tcase_add_test(tc, switch_keeps_state);
+    tcase_add_test(tc, method_label_escaped);
     tcase_add_test(tc, meter_word_agrees_with_number);
     tcase_add_test(tc, meter_words_at_the_limit);
     tcase_add_test(tc, err_is_position_in_metres_and_restarts);

@@ -1,4 +1,5 @@
-/* util/: UTF-8, name lists, NAME=VALUE, output files written the Unix way,
+/* util/: UTF-8, escaping untrusted text (bidirectional controls and other
+ * invisible formatting), name lists, NAME=VALUE, output files written the Unix way,
  * inputs opened without blocking; and lesson progress, the writer with
  * concurrent users (app/progress.c). */
 #include <check.h>
@@ -13,6 +14,7 @@
 
 #include "app/progress.h"
 #include "stepwise/base.h"
+#include "util/escape.h"
 #include "util/fds.h"
 #include "util/infile.h"
 #include "util/kv.h"
@@ -85,6 +87,185 @@ START_TEST(utf8)
     const unsigned char *p = (const unsigned char *)"\xE2\x9C\x93x";
     ck_assert_uint_eq(sw_utf8_next(&p), 0x2713);
     ck_assert_uint_eq(sw_utf8_next(&p), 'x');
+}
+END_TEST
+
+/* ---- escaping invisible formatting -------------------------------------------------------- */
+
+/* text with cp between 'a' and 'b', and what sw_escape must make of it */
+static void around(uint32_t cp, char *text, char *want, int escaped)
+{
+    char bytes[4];
+    int n = sw_utf8_encode(cp, bytes);
+    char *t = text, *w = want;
+    *t++ = 'a';
+    *w++ = 'a';
+    for (int i = 0; i < n; i++) {
+        *t++ = bytes[i];
+        if (escaped)
+            w += sprintf(w, "\\x%02x", (unsigned char)bytes[i]);
+        else
+            *w++ = bytes[i];
+    }
+    *t++ = 'b';
+    *w++ = 'b';
+    *t = *w = '\0';
+}
+
+/* Every family Trojan Source (CVE-2021-42574) and name spoofing use: each
+ * code point escaped as all its bytes, in \xNN, whatever function shows it. */
+START_TEST(escape_invisible_families)
+{
+    static const struct { uint32_t lo, hi; const char *what; } families[] = {
+        { 0x061C, 0x061C, "Arabic letter mark" },
+        { 0x180E, 0x180E, "Mongolian vowel separator" },
+        { 0x200B, 0x200D, "zero-width space, non-joiner, joiner" },
+        { 0x200E, 0x200F, "left-to-right and right-to-left marks" },
+        { 0x2028, 0x2029, "line and paragraph separators" },
+        { 0x202A, 0x202E, "embeddings, pop, overrides (U+202E: RLO)" },
+        { 0x2060, 0x2064, "word joiner, invisible operators" },
+        { 0x2066, 0x2069, "isolates (LRI, RLI, FSI, PDI)" },
+        { 0x206A, 0x206F, "deprecated format characters" },
+        { 0xFEFF, 0xFEFF, "zero-width no-break space (BOM)" },
+        { 0xFFF9, 0xFFFB, "interlinear annotation" },
+        { 0xE0000, 0xE007F, "tag characters (hidden ASCII)" },
+    };
+    char text[16], want[64], out[64], kept[64];
+    for (size_t f = 0; f < sizeof families / sizeof families[0]; f++)
+        for (uint32_t cp = families[f].lo; cp <= families[f].hi; cp++) {
+            ck_assert_msg(sw_utf8_invisible(cp), "U+%04X (%s)", (unsigned)cp, families[f].what);
+            around(cp, text, want, 1);
+            sw_escape(text, 100, out, sizeof out);
+            ck_assert_msg(strcmp(out, want) == 0, "U+%04X (%s): '%s', not '%s'", (unsigned)cp,
+                          families[f].what, out, want);
+            sw_escape_kept(text, 100, kept, sizeof kept);
+            ck_assert_str_eq(kept, want);
+            /* in place, for a whole message */
+            memcpy(kept, text, strlen(text) + 1);
+            sw_escape_message(kept, sizeof kept);
+            ck_assert_str_eq(kept, want);
+            /* and escaping the escaped text again changes nothing */
+            sw_escape_kept(want, 100, kept, sizeof kept);
+            ck_assert_str_eq(kept, want);
+        }
+    /* a label that reads "RK4 password" backwards: nothing of it raw, all of it readable */
+    char label[128];
+    sw_escape("RK4 \u202Edrowssap\u202C \u2066x\u2069 zero\u200Bwidth", 100, label, sizeof label);
+    ck_assert_str_eq(label, "RK4 \\xe2\\x80\\xaedrowssap\\xe2\\x80\\xac \\xe2\\x81\\xa6x\\xe2\\x81\\xa9 "
+                          "zero\\xe2\\x80\\x8bwidth");
+}
+END_TEST
+
+/* The characters beside each family are ordinary text, and ordinary UTF-8
+ * (accents, Greek, CJK, emoji with a skin tone) comes out as it went in. */
+START_TEST(escape_keeps_text)
+{
+    static const uint32_t beside[] = { 0x061B, 0x061D, 0x180D, 0x180F, 0x200A, 0x2010, 0x2027, 0x202F,
+                                       0x205F, 0x2070, 0xFEFC, 0xFFF8, 0xFFFC, 0xDFFFF, 0xE0080,
+                                       0x00E9, 0x03A9, 0x65E5, 0x1F600 };
+    char text[16], want[64], out[64];
+    for (size_t i = 0; i < sizeof beside / sizeof beside[0]; i++) {
+        ck_assert_msg(!sw_utf8_invisible(beside[i]), "U+%04X", (unsigned)beside[i]);
+        around(beside[i], text, want, 0);
+        sw_escape(text, 100, out, sizeof out);
+        ck_assert_msg(strcmp(out, text) == 0, "U+%04X changed to '%s'", (unsigned)beside[i], out);
+    }
+    static const char *const plain[] = {
+        "café crème, naïve façade",
+        "Ελληνικά: Δt, ω·Δt < 2",
+        "日本語の説明、中文说明、한국어",
+        "rk4 😀 🚀 👍🏽 ✓ ✗ ⠿",
+        "Runge–Kutta “classical” (4th) — ok",
+    };
+    char big[256];
+    for (size_t i = 0; i < sizeof plain / sizeof plain[0]; i++) {
+        sw_escape(plain[i], 200, big, sizeof big);
+        ck_assert_str_eq(big, plain[i]);
+        sw_escape_kept(plain[i], 200, big, sizeof big);
+        ck_assert_str_eq(big, plain[i]);
+        memcpy(big, plain[i], strlen(plain[i]) + 1);
+        sw_escape_message(big, sizeof big);
+        ck_assert_str_eq(big, plain[i]);
+    }
+    /* the widths still add up: kept text keeps its cells, escapes are ASCII */
+    sw_escape("日本\u202E", 100, out, sizeof out);
+    ck_assert_str_eq(out, "日本\\xe2\\x80\\xae");
+    ck_assert_uint_eq(sw_utf8_columns(out, strlen(out)), 4 + 12);
+}
+END_TEST
+
+/* A cut (by the output buffer or by max) falls between characters: never
+ * inside the escapes of one invisible character ("\xe2" alone would read
+ * as a broken byte), always marked "...", always NUL-terminated in outlen. */
+START_TEST(escape_invisible_cut)
+{
+    const char *text = "ab\u202Ecd";               /* a b e2 80 ae c d */
+    const char *full = "ab\\xe2\\x80\\xaecd";     /* 16 bytes */
+    char out[64];
+    /* by the buffer: the 12 bytes of the escape go whole or not at all */
+    for (size_t outlen = 1; outlen <= 24; outlen++) {
+        memset(out, 'Z', sizeof out);
+        sw_escape(text, 100, out, outlen);
+        size_t len = strnlen(out, outlen);
+        ck_assert_msg(len < outlen, "outlen %zu: not terminated", outlen);
+        ck_assert_msg(out[outlen] == 'Z', "outlen %zu: wrote past outlen", outlen);
+        const char *want = outlen > 16 ? full : outlen >= 6 ? "ab..." : outlen >= 5 ? "a..." : outlen >= 4 ? "..."
+                         : outlen == 3 ? "ab" : outlen == 2 ? "a" : ""; /* no room for a mark */
+        ck_assert_msg(strcmp(out, want) == 0, "outlen %zu: '%s', not '%s'", outlen, out, want);
+    }
+    /* the same with a four-byte tag character (U+E0041, a hidden 'A') */
+    sw_escape("x\U000E0041y", 100, out, 19);
+    ck_assert_str_eq(out, "x\\xf3\\xa0\\x81\\x81y");
+    sw_escape("x\U000E0041y", 100, out, 18);
+    ck_assert_str_eq(out, "x...");
+    /* a cut after the whole escape keeps it */
+    sw_escape("ab\u202Ecdefgh", 100, out, 18);
+    ck_assert_str_eq(out, "ab\\xe2\\x80\\xae...");
+    /* by max, inside the character: the part read is not shown as bytes */
+    sw_escape(text, 3, out, sizeof out);
+    ck_assert_str_eq(out, "ab...");
+    sw_escape(text, 4, out, sizeof out);
+    ck_assert_str_eq(out, "ab...");
+    sw_escape(text, 5, out, sizeof out);
+    ck_assert_str_eq(out, "ab\\xe2\\x80\\xae...");
+    sw_escape("x\U000E0041y", 3, out, sizeof out);
+    ck_assert_str_eq(out, "x...");
+    sw_escape("aé", 2, out, sizeof out);             /* ordinary text too: no "\xc3" */
+    ck_assert_str_eq(out, "a...");
+    sw_escape("日本語", 4, out, sizeof out);
+    ck_assert_str_eq(out, "日...");
+    /* text that was never whole is still escaped byte by byte */
+    sw_escape("a\xe2\x80", 100, out, sizeof out);
+    ck_assert_str_eq(out, "a\\xe2\\x80");
+    sw_escape("\x80\x80\x80\x80", 2, out, sizeof out);
+    ck_assert_str_eq(out, "\\x80\\x80...");
+    /* a message cut in place: no half escape either, and terminated */
+    char msg[16];
+    snprintf(msg, sizeof msg, "%s", "ab\u202Ecdefgh");
+    sw_escape_message(msg, sizeof msg);
+    ck_assert_str_eq(msg, "ab...");
+    /* whatever the input and the size, no raw byte of such a character */
+    const char *hostile = "\u202E\u2066\u200B\u2069\u202C\uFEFF\u061C";
+    for (size_t outlen = 1; outlen <= 96; outlen++)
+        for (size_t max = 0; max <= strlen(hostile) + 1; max++) {
+            char o[96];
+            sw_escape(hostile, max, o, outlen);
+            ck_assert(strlen(o) < outlen);
+            for (size_t i = 0; o[i]; i++)
+                ck_assert_msg((unsigned char)o[i] >= 0x20 && (unsigned char)o[i] < 0x7f,
+                              "outlen %zu max %zu: byte %zu is 0x%02x", outlen, max, i,
+                              (unsigned char)o[i]);
+            /* escapes come in whole characters: the bytes they stand for decode */
+            unsigned char bytes[32];
+            size_t nb = 0;
+            for (const char *q = o; (q = strstr(q, "\\x")) != NULL && nb < sizeof bytes; q += 4)
+                bytes[nb++] = (unsigned char)strtoul((char[3]){ q[2], q[3], 0 }, NULL, 16);
+            for (size_t i = 0, len; i < nb; i += len) {
+                uint32_t cp;
+                ck_assert_msg(sw_utf8_check(bytes + i, nb - i, &len, &cp) == SW_UTF8_OK &&
+                              sw_utf8_invisible(cp), "outlen %zu max %zu: '%s'", outlen, max, o);
+            }
+        }
 }
 END_TEST
 
@@ -390,6 +571,9 @@ Suite *make_util_suite(void)
     TCase *tc = tcase_create("util");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, utf8);
+    tcase_add_test(tc, escape_invisible_families);
+    tcase_add_test(tc, escape_keeps_text);
+    tcase_add_test(tc, escape_invisible_cut);
     tcase_add_test(tc, names);
     tcase_add_test(tc, kv_pairs);
     tcase_add_test(tc, outfile_regular);

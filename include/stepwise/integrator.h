@@ -30,7 +30,8 @@ typedef int sw_step_fn(sw_stepper *s, sw_ode *ode, double *t, double *y, double 
 
 typedef struct sw_integrator {
     const char *name;     /* fixed command-line name, e.g. "rk4" */
-    const char *label;    /* human name, e.g. "classical Runge-Kutta" */
+    const char *label;    /* human name, e.g. "classical Runge-Kutta"; a plugin's is its
+                           * author's text (SW_PLUGIN): shown only escaped */
     int order;            /* global order of accuracy */
     int evals;            /* derivative evaluations per step (nominal) */
     unsigned flags;       /* SW_EXPLICIT, SW_IMPLICIT, ... */

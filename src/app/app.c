@@ -11,6 +11,7 @@
 #include "app/stages.h"
 #include "measure/bench.h"
 #include "stepwise/stepwise.h"
+#include "util/escape.h"
 
 /* A compare pair that differs from the main method and suits the system:
  * the lecture's contrast (Euler against RK4) plus a symplectic method. */
@@ -166,7 +167,9 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m)
                 sw_app_history_restart(a, i);
             }
     sw_app_history_restart(a, 0); /* the past was stepped by another method */
-    snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, m->label);
+    char label[4 * 100 + 4]; /* a plugin chose it: escaped (bidirectional controls too) */
+    sw_escape(m->label, 100, label, sizeof label);
+    snprintf(a->message, sizeof a->message, "integrator: %s (%s)", m->name, label);
     sw_app_watch_restart(a);
     return SW_OK;
 }

@@ -3,6 +3,7 @@
 
 #include "engine/forces.h"
 #include "sim/truth.h"
+#include "util/escape.h"
 
 #include <dirent.h>
 #include <getopt.h>
@@ -34,7 +35,9 @@ static void list_integrators(void)
         snprintf(evals, sizeof evals, "%s%d%s%s", (m->flags & SW_NEWTON) ? ">=" : "", m->evals,
                  (m->flags & SW_NEWTON) ? "+solves" : (m->flags & SW_IMPLICIT) ? "+solve" : "",
                  (m->flags & SW_PLUGIN) ? " (claimed)" : "");
-        printf("%-22s order %-2d evals/step %-10s %s\n", m->name, m->order, evals, m->label);
+        char label[4 * 100 + 4]; /* a plugin's is its author's text: escaped */
+        sw_escape(m->label, 100, label, sizeof label);
+        printf("%-22s order %-2d evals/step %-10s %s\n", m->name, m->order, evals, label);
     }
 }
 

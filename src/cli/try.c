@@ -20,6 +20,7 @@
 #include "cli/check_report.h"
 #include "measure/measure.h"
 #include "grade/verdict.h"
+#include "util/escape.h"
 #include "util/signals.h"
 
 static const char try_help[] =
@@ -45,6 +46,7 @@ static const char try_help[] =
 
 typedef struct try_args {
     const char *file, *reference, *scene;
+    char file_shown[4 * 200 + 4]; /* file escaped, for the lines that name it */
     sw_run_opts o;
     int watch, play;
 } try_args;
@@ -110,7 +112,9 @@ static int try_once(try_args *a)
     a->o.method = ref;
     if (sw_cli_finish_opts(&a->o) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
-    printf("%s: %s (%s), %d work vector%s\n", a->file, m->name, m->label, m->work_vectors,
+    char label[4 * 100 + 4]; /* the plugin's own text: escaped, as every label shown */
+    sw_escape(m->label, 100, label, sizeof label);
+    printf("%s: %s (%s), %d work vector%s\n", a->file_shown, m->name, label, m->work_vectors,
            m->work_vectors == 1 ? "" : "s");
     fflush(stdout);
     sw_check_request req;
@@ -199,7 +203,7 @@ static int watch(try_args *a)
         }
         status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : SW_EXIT_USAGE;
         if (!changed) {
-            printf("\nwatching %s: save it to try again (Ctrl-C stops)\n", a->file);
+            printf("\nwatching %s: save it to try again (Ctrl-C stops)\n", a->file_shown);
             fflush(stdout);
             struct timespec now, pause = { 0, 300000000 };
             while (!sw_signal_caught && (mtime_of(a->file, &now) != 0 ||
@@ -207,7 +211,7 @@ static int watch(try_args *a)
                 nanosleep(&pause, NULL);
         }
         if (!sw_signal_caught)
-            printf("\n%s changed: trying again\n", a->file);
+            printf("\n%s changed: trying again\n", a->file_shown);
     }
     return status;
 }
@@ -248,5 +252,6 @@ int sw_cmd_try(int argc, char **argv)
     if (!a.file)
         return sw_cli_error("try needs your integrator: stepwise try my_method.c (start from "
                             "examples/euler_plugin.c)");
+    sw_escape(a.file, 200, a.file_shown, sizeof a.file_shown);
     return a.watch ? watch(&a) : try_once(&a);
 }

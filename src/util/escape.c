@@ -9,36 +9,31 @@
 
 #include "util/utf8.h"
 
-/* Unicode's invisible formatting: the bidirectional controls (which can
- * show "lamrof" as "formal" and move a column), zero-width characters and
- * the line and paragraph separators. Shown, they would let a name look
- * like another or break a row: escaped like controls. */
-static int invisible(uint32_t cp)
-{
-    return cp == 0x061c || (cp >= 0x200b && cp <= 0x200f) || (cp >= 0x2028 && cp <= 0x202e) ||
-           (cp >= 0x2060 && cp <= 0x2069) || cp == 0xfeff;
-}
+/* One piece of output: the text at s as it is shown. A printable
+ * character stays as it is (shown == take); anything else becomes \xNN per
+ * byte. An invisible formatting character is one piece of all its bytes,
+ * so that a cut never leaves "\xe2" of a "\xe2\x80\xae" behind; every
+ * other escaped byte (a control, a stray byte of invalid UTF-8) is a piece
+ * of its own. */
+typedef struct piece {
+    size_t take;  /* bytes of text it stands for, 1..4 */
+    size_t shown; /* bytes it takes in out */
+    int escaped;  /* 1: written as \xNN per byte taken */
+} piece;
 
-/* Length of the printable character at s (avail bytes readable): 1..4, or
- * 0 when it is a control, DEL, a C1 control, invisible formatting or not
- * well-formed UTF-8. */
-static size_t printable(const unsigned char *s, size_t avail)
+static piece piece_at(const unsigned char *s, size_t avail, int keep_backslash)
 {
-    if (s[0] < 0x80)
-        return s[0] >= 0x20 && s[0] != 0x7f ? 1 : 0;
+    if (s[0] < 0x80) {
+        int ok = s[0] >= 0x20 && s[0] != 0x7f && (s[0] != '\\' || keep_backslash);
+        return ok ? (piece){ 1, 1, 0 } : (piece){ 1, 4, 1 };
+    }
     size_t len;
     uint32_t cp;
-    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK || (cp >= 0x80 && cp <= 0x9f) || invisible(cp))
-        return 0;
-    return len;
-}
-
-/* Length of the piece text at s becomes: the character itself, or 4 for
- * \xNN; *k gets the bytes of text it stands for. */
-static size_t piece_len(const unsigned char *s, size_t avail, int keep_backslash, size_t *k)
-{
-    *k = s[0] == '\\' && !keep_backslash ? 0 : printable(s, avail);
-    return *k ? *k : 4;
+    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK || (cp >= 0x80 && cp <= 0x9f))
+        return (piece){ 1, 4, 1 }; /* C1 controls (U+009B is a CSI) like C0 ones */
+    if (sw_utf8_invisible(cp))
+        return (piece){ len, 4 * len, 1 };
+    return (piece){ len, len, 0 };
 }
 
 /* Escape text[0..n) into out; returns 1 when all of it fitted. Text whose
@@ -49,25 +44,30 @@ static int escape(const char *text, size_t n, int keep_backslash, char *out, siz
 {
     static const char hex[] = "0123456789abcdef";
     const unsigned char *s = (const unsigned char *)text;
-    size_t k, total = 0;
-    for (size_t i = 0; i < n && total < outlen; i += k ? k : 1)
-        total += piece_len(s + i, n - i, keep_backslash, &k);
+    size_t total = 0;
+    for (size_t i = 0; i < n && total < outlen;) {
+        piece p = piece_at(s + i, n - i, keep_backslash);
+        total += p.shown;
+        i += p.take;
+    }
     size_t room = total < outlen || outlen < 4 ? outlen : outlen - 3; /* "..." when cut */
     size_t used = 0, i = 0;
     while (i < n) {
-        size_t plen = piece_len(s + i, n - i, keep_backslash, &k);
-        if (used + plen + 1 > room)
+        piece p = piece_at(s + i, n - i, keep_backslash);
+        if (used + p.shown + 1 > room)
             break;
-        if (k)
-            memcpy(out + used, s + i, k);
-        else {
-            out[used] = '\\';
-            out[used + 1] = 'x';
-            out[used + 2] = hex[s[i] >> 4];
-            out[used + 3] = hex[s[i] & 15];
-        }
-        used += plen;
-        i += k ? k : 1;
+        if (!p.escaped)
+            memcpy(out + used, s + i, p.take);
+        else
+            for (size_t b = 0; b < p.take; b++) {
+                char *o = out + used + 4 * b;
+                o[0] = '\\';
+                o[1] = 'x';
+                o[2] = hex[s[i + b] >> 4];
+                o[3] = hex[s[i + b] & 15];
+            }
+        used += p.shown;
+        i += p.take;
     }
     int whole = i >= n;
     if (!whole && used + 4 <= outlen) {
@@ -78,6 +78,22 @@ static int escape(const char *text, size_t n, int keep_backslash, char *out, siz
     return whole;
 }
 
+/* n cut back to the start of a character that text[n] (not a NUL) would
+ * complete, so that max cutting a character shows "..." and not the
+ * escaped bytes of its first half. Only a lead byte with the continuation
+ * bytes it wants up to n is cut: invalid text is left to the escapes. */
+static size_t clip_to_char(const unsigned char *s, size_t n)
+{
+    for (size_t back = 1; back <= 3 && back <= n; back++) {
+        unsigned char b = s[n - back];
+        if ((b & 0xc0) == 0x80)
+            continue; /* a continuation byte: its lead is further back */
+        size_t want = b >= 0xf0 ? 4 : b >= 0xe0 ? 3 : b >= 0xc0 ? 2 : 1;
+        return want > back && (s[n] & 0xc0) == 0x80 ? n - back : n;
+    }
+    return n;
+}
+
 void sw_escape(const char *text, size_t max, char *out, size_t outlen)
 {
     if (!out || outlen == 0)
@@ -85,6 +101,8 @@ void sw_escape(const char *text, size_t max, char *out, size_t outlen)
     if (!text)
         text = "";
     size_t n = strnlen(text, max);
+    if (text[n] != '\0')
+        n = clip_to_char((const unsigned char *)text, n);
     if (!escape(text, n, 0, out, outlen) || text[n] == '\0')
         return;
     /* cut by max: mark it */

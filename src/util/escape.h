@@ -6,11 +6,20 @@
 
 #include <stddef.h>
 
-/* Quote text for a message: printable UTF-8 is kept; each control character
- * (C0, DEL, C1), each byte of invalid UTF-8 and each backslash becomes
- * \xNN (so the result reads back unambiguously). At most max bytes of text
- * are read; "..." marks text cut by max or by outlen. out is always
- * NUL-terminated (outlen > 0); text NULL reads as "". */
+/* Quote text for a message: printable UTF-8 is kept (é, Δ, 日本, emoji);
+ * everything else becomes \xNN, one per byte, lower-case hex, so that the
+ * result is printable ASCII there and reads back unambiguously:
+ *   - each control character (C0, DEL; a C1 control, U+0080..U+009F, as
+ *     its two bytes: U+009B is "\xc2\x9b"),
+ *   - each character of invisible formatting (sw_utf8_invisible: the
+ *     bidirectional controls, zero-width characters, U+2028/U+2029, ...),
+ *     as all its bytes: U+202E is "\xe2\x80\xae", U+200B "\xe2\x80\x8b",
+ *   - each byte of invalid UTF-8, and each backslash ("\x5c").
+ * At most max bytes of text are shown (text[max] is read when no NUL comes
+ * before it, to tell whether the text goes on); "..." marks text cut by max
+ * or by outlen, and a cut falls between characters, never inside one or
+ * inside the escapes of one. out is always NUL-terminated within outlen
+ * (outlen > 0); text NULL reads as "". */
 void sw_escape(const char *text, size_t max, char *out, size_t outlen);
 
 /* The same rule for a whole message about to be printed, in place within

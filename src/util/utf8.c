@@ -91,6 +91,17 @@ int sw_utf8_check(const unsigned char *s, size_t avail, size_t *len, uint32_t *c
     return SW_UTF8_OK;
 }
 
+/* Shown raw they let "lamrof" read as "formal", move a column, or hide
+ * words between visible ones (the tag characters spell ASCII no terminal
+ * draws). U+2065 is unassigned but default-ignorable: kept in the range so
+ * that a later Unicode cannot open a gap. */
+int sw_utf8_invisible(uint32_t cp)
+{
+    return cp == 0x061C || cp == 0x180E || (cp >= 0x200B && cp <= 0x200F) ||
+           (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2060 && cp <= 0x206F) || cp == 0xFEFF ||
+           (cp >= 0xFFF9 && cp <= 0xFFFB) || (cp >= 0xE0000 && cp <= 0xE007F);
+}
+
 size_t sw_utf8_count(const char *s, size_t len)
 {
     size_t n = 0;

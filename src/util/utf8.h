@@ -28,6 +28,14 @@ enum {
  * SW_UTF8_OK, *len is its length in bytes (1..4) and *cp its code point. */
 int sw_utf8_check(const unsigned char *s, size_t avail, size_t *len, uint32_t *cp);
 
+/* 1 when cp is invisible formatting that can reorder or hide text on a
+ * terminal: the bidirectional controls (U+061C, U+200E-F, U+202A-E,
+ * U+2066-9), zero-width characters (U+180E, U+200B-D, U+2060-5, U+FEFF),
+ * the line and paragraph separators (U+2028-9), the deprecated format
+ * characters (U+206A-F), the interlinear annotation marks (U+FFF9-B) and
+ * the tag characters (U+E0000-7F); else 0. */
+int sw_utf8_invisible(uint32_t cp);
+
 /* Characters (lead bytes) in s[0..len). */
 size_t sw_utf8_count(const char *s, size_t len);
 

@@ -2,15 +2,17 @@
 # The hostile-submission suite (issue 21, "What it must show"). Submissions
 # come from someone who wants a better grade or a classmate's worse one.
 # tests/hostile/ holds one file per attack family (evil.h says how each
-# makes its success visible). Six classes, each with honest classmates
+# makes its success visible). Seven classes, each with honest classmates
 # (correct traces from `stepwise record`, a correct .c, a correct .so) —
 # A forged results and attacks on processes, B and C one grader-killer each
 # (kill-grader, stop-grader), D a compiler that never ends (inc-fifo), E
 # the CPU, memory, disk, process and descriptor hogs, F attacks on files
 # (reading, writing, the daemon, compile-time includes, crafted traces,
-# directory tricks) — are graded at once, each with
+# directory tricks), G forge-ancestors (stops and kills the grader, forges
+# its gradebook) — are graded at once, each with
 #     stepwise grade --assignment A --cpu 2 --wall 40 --csv G --results R CLASS
-# (D with grade's default wall-clock limit) and STEPWISE_PLUGIN_TIMEOUT=10:
+# (D with grade's default wall-clock limit; A also with --feedback) and
+# STEPWISE_PLUGIN_TIMEOUT=10:
 # on a busy machine a watchdog must not stop an attack before it has run
 # (which would pass for a defence); the limits under test decide.
 # while check --plugin, try and record run hostile plugins; as root and,
@@ -29,10 +31,14 @@
 #       their TMPDIR;
 #   (f) grade's stdout/stderr hold no raw control bytes and no forged rows,
 #       nothing read from a secret reaches them or the gradebook, and no
-#       CSV cell starts with = + - @ TAB or CR;
+#       CSV cell starts with = + - @ TAB or CR; no raw bidirectional or
+#       zero-width character (U+202E, U+2066, U+200B, ...) reaches them,
+#       the gradebook or the feedback files; no forged gradebook stands;
 # and for check --plugin, try and record: a wrong plugin never exits 0 or
-# prints PASS, stepwise never dies of a signal, prints no raw control byte,
-# and nothing a plugin started survives.
+# prints PASS, stepwise never dies of a signal, prints no raw control byte
+# nor bidirectional character, and nothing a plugin started survives.
+# find-builtin is also checked on the chain and (ode->fast only) the
+# vortex flow, as `check --plugin P --reference rk4 --scene S`.
 # Every failure is one line, "FAIL: [as USER] WHAT: PROPERTY"; the suite
 # goes on and exits 1 at the end. A resource hog that could not finish its
 # attack in time on a very busy machine hands in NaN and gets a NOTE line
@@ -61,18 +67,21 @@ now_ms() { echo $(($(date +%s%N) / 1000000)); }
 T0=$(now_ms)
 note() { echo "hostile: ${AS:+[as $AS] }$* ($((($(now_ms) - T0) / 1000)) s)"; }
 
-PLUGINS="ctl-block forge-fds forge-pidfd forge-procfd forge-stdout info-evil label-escape network
-         probe-forge ptrace-parent see-procs signal-probe vm-write"
+PLUGINS="ctl-block ctor-seal find-builtin forge-fds forge-pidfd forge-procfd forge-stdout info-evil
+         label-bidi label-escape network probe-forge ptrace-parent see-procs signal-probe vm-write"
 HOGS="cpu-hog disk-fill fd-exhaust fork-bomb mem-hog"
 FILERS="daemon read-others write-others"
 INCS="inc-classmate inc-parent inc-passwd inc-secret inc-zero"
-FAMILIES="$PLUGINS $HOGS $FILERS ctor-evil $INCS inc-fifo kill-grader stop-grader"
+FAMILIES="$PLUGINS $HOGS $FILERS ctor-evil $INCS inc-fifo kill-grader stop-grader forge-ancestors"
 # check --plugin takes these as .so (grade builds the .c ones); record and
 # try the ones that reach stepwise's own process or output.
-CHECK_PLUGINS="ctl-block ctor-evil forge-fds forge-pidfd forge-procfd forge-stdout network probe-forge
-               ptrace-parent read-others"
-RECORD_PLUGINS="ctl-block forge-pidfd forge-procfd forge-stdout probe-forge"
-TRY_PLUGINS="ctl-block forge-procfd probe-forge" # try always measures: 25 s under ASan
+CHECK_PLUGINS="ctl-block ctor-evil ctor-seal find-builtin forge-ancestors forge-fds forge-pidfd forge-procfd
+               forge-stdout label-bidi network probe-forge ptrace-parent read-others"
+RECORD_PLUGINS="ctl-block forge-pidfd forge-procfd forge-stdout label-bidi probe-forge"
+TRY_PLUGINS="ctl-block forge-procfd label-bidi probe-forge" # try always measures: 25 s under ASan
+# check --plugin P --reference rk4 --scene SCENE, FAMILY:FIND_VIA:SCENE
+# (find-builtin.c: 7 every way; 6 a system's fused rk4 alone, no table)
+SCENE_CHECKS="find-builtin:7:chain find-builtin:6:vortex"
 HONEST="alice.trace bob.c carol.so yves.c zoe.trace"
 
 wanted() {
@@ -98,6 +107,9 @@ pass_means() {
         mem-hog.c) echo "it held 1.25 GiB or more (the limit is 1024 MiB)" ;;
         cpu-hog.c) echo "it used more than --cpu $CPU s of CPU and was not stopped" ;;
         ctor-evil.so) echo "its constructor read others' files or reached the network" ;;
+        ctor-seal.c) echo "its constructor's seccomp filter kept the seal from being installed (a file opened at a step)" ;;
+        find-builtin.c) echo "it found stepwise's built-in rk4 (the integrator table or a fused step) in its memory and stepped with it" ;;
+        forge-ancestors.c) echo "it stopped its ancestors, forged the gradebook and killed them, or lived on" ;;
         info-evil.c) echo "its sw_plugin_info() read the assignment or the teacher's home" ;;
         inc-classmate.c) echo "it was built from a classmate's file (#include \"bob.c\")" ;;
         inc-parent.c) echo "it was built from a file outside the submissions directory" ;;
@@ -116,6 +128,10 @@ controls() {
 # What forged text looks like (evil.h's evil_fake): a row for Mallory, a
 # PASS line ending in SWEVIL:FAMILY.
 FORGED='Mallory\|rk4 SWEVIL:'
+# Raw bidirectional and zero-width characters (label-bidi.c): U+200B..U+200F,
+# U+202A..U+202E, U+2066..U+2069 in UTF-8.
+BIDI=$(printf '\342\200[\213-\217\252-\256]\\|\342\201[\246-\251]')
+bidi() { LC_ALL=C grep -ac "$BIDI" "$1" 2>/dev/null; } # lines holding one
 # A sanitizer build reports a crash this way (and exits 1, not by the signal).
 SANITIZER='AddressSanitizer\|LeakSanitizer\|UndefinedBehaviorSanitizer\|runtime error:'
 # The attacks whose SWEVIL:FAMILY text is in a file, on one line.
@@ -276,12 +292,14 @@ fill() { # TOKEN < SRC
     sed -e "s|@TOKEN@|$1|g" -e "s|@PORT@|$PORT|g" -e "s|@HOME@|$TH|g" -e "s|@CPU@|$CPU|g" \
         -e "s|@PIDNS@|$PIDNS|g"
 }
-gen() { # FAMILY TOKEN
-    awk -v f="$H/evil.h" '/^#include "evil.h"/ { while ((getline l < f) > 0) print l; close(f); next } { print }' \
-        "$H/$1.c" | fill "$2"
+gen() { # FAMILY TOKEN [FIRST-LINE]
+    { [ -n "${3:-}" ] && printf '%s\n' "$3"
+      awk -v f="$H/evil.h" '/^#include "evil.h"/ { while ((getline l < f) > 0) print l; close(f); next } { print }' \
+          "$H/$1.c"; } | fill "$2"
 }
-build_so() { # FAMILY TOKEN OUT.so
-    gen "$1" "$2" > "$BOOK/$1-$2.c" && cc -std=c11 -O2 -shared -fPIC -I"$BIN/include" -o "$3" "$BOOK/$1-$2.c"
+build_so() { # FAMILY TOKEN OUT.so [FIRST-LINE]
+    b=$BOOK/$(basename "$3" .so)-$2.c
+    gen "$1" "$2" "${4:-}" > "$b" && cc -std=c11 -O2 -shared -fPIC -I"$BIN/include" -o "$3" "$b"
 }
 named() { # TRACE STUDENT: the trace with a "# student:" line
     { head -n 1 "$1"; printf '# student: %s\n' "$2"; tail -n +2 "$1"; }
@@ -307,10 +325,11 @@ gb_hash() { # CLASS: the gradebook's state
     done | tr '\n' ' '
 }
 token_of() { # CLASS
-    case $1 in A) echo "$TA" ;; B) echo "$TB" ;; C) echo "$TC" ;; D) echo "$TD" ;; E) echo "$TE" ;; F) echo "$TF" ;; esac
+    case $1 in A) echo "$TA" ;; B) echo "$TB" ;; C) echo "$TC" ;; D) echo "$TD" ;; E) echo "$TE" ;; F) echo "$TF" ;;
+        G) echo "$TG" ;; esac
 }
-limits_of() { # CLASS: grade's limits
-    case $1 in D) echo "--cpu $CPU" ;; *) echo "--cpu $CPU --wall 40" ;; esac
+limits_of() { # CLASS: grade's limits (and A's feedback files)
+    case $1 in D) echo "--cpu $CPU" ;; A) echo "--cpu $CPU --wall 40 --feedback feedback-A" ;; *) echo "--cpu $CPU --wall 40" ;; esac
 }
 
 # "PID TOKEN" for each stepwise process of these tokens that is stopped (state T).
@@ -329,11 +348,18 @@ stopped() { # TOKEN...
 }
 
 # Judge one run of check, try or record on a hostile plugin.
-judge() { # WHAT RC OUT ERR WRONG(1: must not exit 0)
+judge() { # WHAT RC OUT ERR WRONG(1: must not exit 0) [MS: how long it ran]
     case $2 in
         0) [ "$5" = 1 ] && bad "$1: exit 0: a wrong plugin passed" ;;
         1 | 2) ;;
-        124 | 137) bad "$1: did not end within $RUN_LIMIT s" ;;
+        124 | 137)
+            # timeout exits 137 too when stepwise was killed by someone else
+            if [ "$2" = 137 ] && [ "${6:-$((RUN_LIMIT * 1000))}" -lt $((RUN_LIMIT * 1000)) ]; then
+                bad "$1: stepwise was killed (SIGKILL) after $((${6:-0} / 1000)) s, not by the test: by its plugin?"
+            else
+                bad "$1: did not end within $RUN_LIMIT s"
+            fi
+            ;;
         *)
             if [ "$2" -gt 128 ]; then
                 bad "$1: stepwise died of SIG$(kill -l $(($2 - 128)) 2>/dev/null) (exit $2)"
@@ -352,6 +378,8 @@ judge() { # WHAT RC OUT ERR WRONG(1: must not exit 0)
         n=$(controls "$s")
         [ "$n" -eq 0 ] || bad "$1: $n raw control bytes on $w (from: $(evil_texts "$s"))"
         grep -aq "$FORGED" "$s" && bad "$1: forged text on $w (from: $(evil_texts "$s"))"
+        n=$(bidi "$s")
+        [ "$n" -eq 0 ] || bad "$1: $n line(s) on $w hold raw bidirectional or zero-width characters (U+202E, U+2066, U+200B, ...)"
     done
 }
 
@@ -368,32 +396,53 @@ check_part() { # W N
     TK=$(check_token "$1")
     CK=$D/swcheck-$TK
     k=0
+    out=$BOOK/ck-out-$1
+    err=$BOOK/ck-err-$1
+    RUN_TMPDIR=$D/tmp-k$1
     for p in $CHECK_LIST; do
         k=$((k + 1))
         [ $((k % $2)) -eq "$1" ] || continue
-        out=$BOOK/ck-out-$1
-        err=$BOOK/ck-err-$1
-        RUN_TMPDIR=$D/tmp-k$1
         src=$CK/$p.so
         build_so "$p" "$TK" "$src" || { bad "cannot build $src"; continue; }
         [ "$M" = user ] && chown swhostile "$src"
+        t0=$(now_ms)
         ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" check --plugin "$src" --assignment check-assignment.txt \
               --no-measure ) >"$out" 2>"$err"
-        judge "check --plugin $p" $? "$out" "$err" 1
+        judge "check --plugin $p" $? "$out" "$err" 1 $(($(now_ms) - t0))
         case " $RECORD_PLUGINS " in
             *" $p "*)
+                t0=$(now_ms)
                 ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" record spring --plugin "$src" --set g=9.81 \
                       --dt 0.01 --steps 100 -o "$CK/rec-$p.trace" ) >"$out" 2>"$err"
-                judge "record --plugin $p" $? "$out" "$err" 0
+                judge "record --plugin $p" $? "$out" "$err" 0 $(($(now_ms) - t0))
+                n=$(bidi "$CK/rec-$p.trace")
+                [ "${n:-0}" -eq 0 ] ||
+                    bad "record --plugin $p: its trace holds raw bidirectional or zero-width characters ($n line(s))"
                 ;;
         esac
         case " $TRY_PLUGINS " in
             *" $p "*)
+                t0=$(now_ms)
                 ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" try "$src" --reference rk4 --scene spring \
                       --set g=9.81 --no-play ) >"$out" 2>"$err"
-                judge "try $p" $? "$out" "$err" 1
+                judge "try $p" $? "$out" "$err" 1 $(($(now_ms) - t0))
                 ;;
         esac
+    done
+    # a plugin checked on a scene against a built-in method, measured too
+    for c in $SCENE_CHECKS; do
+        p=${c%%:*} v=${c#*:}
+        scene=${v#*:} v=${v%%:*}
+        wanted "$p" || continue
+        k=$((k + 1))
+        [ $((k % $2)) -eq "$1" ] || continue
+        src=$CK/$p-$v-$scene.so
+        build_so "$p" "$TK" "$src" "#define FIND_VIA $v" || { bad "cannot build $src"; continue; }
+        [ "$M" = user ] && chown swhostile "$src"
+        t0=$(now_ms)
+        ( cd "$D" && runas "$M" timeout -k 5 "$RUN_LIMIT" "$SWB" check --plugin "$src" --reference rk4 \
+              --scene "$scene" ) >"$out" 2>"$err"
+        judge "check --plugin $p (FIND_VIA $v) --reference rk4 --scene $scene" $? "$out" "$err" 1 $(($(now_ms) - t0))
     done
 }
 
@@ -402,12 +451,24 @@ judge_class() { # CLASS
     X=$1
     T=$(token_of "$X")
     rc=$(cat "$BOOK/rc-$X" 2>/dev/null || echo "?")
-    case $X in B) who=kill-grader ;; C) who=stop-grader ;; D) who=inc-fifo ;; *) who="class $X" ;; esac
+    case $X in
+        B) who=kill-grader ;; C) who=stop-grader ;; D) who=inc-fifo ;; G) who=forge-ancestors ;;
+        *) who="class $X" ;;
+    esac
     want=0
     grep -qvxF "$(printf '%s\n' $HONEST)" "$BOOK/entries-$X" && want=1
+    eval "gend=\${END_$X:-0}"
+    ran=$((gend - GRADES_START))
     case $rc in
         "$want") ;;
-        124 | 137) bad "$who: grade did not end within $GRADE_LIMIT s (the test killed it)" ;;
+        137) # timeout's status for a grade killed by anyone
+            if [ "$ran" -ge 0 ] && [ "$ran" -lt $((GRADE_LIMIT * 1000)) ]; then
+                bad "$who: grade was killed (SIGKILL) after $((ran / 1000)) s, not by the test: nobody in the class gets a grade from it"
+            else
+                bad "$who: grade did not end within $GRADE_LIMIT s (the test killed it)"
+            fi
+            ;;
+        124) bad "$who: grade did not end within $GRADE_LIMIT s (the test killed it)" ;;
         *)
             if [ "$rc" -gt 128 ] 2>/dev/null; then
                 bad "$who: grade died of SIG$(kill -l $((rc - 128)) 2>/dev/null) (exit $rc)"
@@ -424,6 +485,21 @@ judge_class() { # CLASS
         n=$(controls "$s")
         [ "$n" -eq 0 ] || bad "class $X: grade's $w has $n raw control bytes (from: $(evil_texts "$s"))"
         grep -aq "$FORGED" "$s" && bad "class $X: forged rows on grade's $w (from: $(evil_texts "$s"))"
+        n=$(bidi "$s")
+        [ "$n" -eq 0 ] || bad "class $X: $n line(s) of grade's $w hold raw bidirectional or zero-width characters"
+    done
+    # a gradebook forged by a submission (forge-ancestors.c), as grade left it or now
+    for f in "grades-$X.csv" "results-$X.json"; do
+        if grep -aq 'SWEVIL:forge-ancestors' "$BOOK/$f" 2>/dev/null; then
+            bad "forge-ancestors: the gradebook $f is its forgery (score 1000, Mallory's pass), not grade's"
+        elif grep -aq 'SWEVIL:forge-ancestors' "$D/$f" 2>/dev/null; then
+            bad "forge-ancestors: the gradebook $f was replaced by its forgery after grade exited"
+        fi
+    done
+    for f in "$BOOK/grades-$X.csv" "$BOOK/results-$X.json" "$D/feedback-$X"/*; do
+        [ -f "$f" ] || continue
+        n=$(bidi "$f")
+        [ "$n" -eq 0 ] || bad "class $X: $n line(s) of ${f#"$D"/} hold raw bidirectional or zero-width characters"
     done
     # judged: what grade wrote, copied when it exited (a daemon may change it later)
     csv=$BOOK/grades-$X.csv
@@ -507,7 +583,7 @@ suite() { # MODE LETTER
     D=$WORK/swrun-$RUN-$U
     BOOK=$WORK/book-$U
     TH=$D/home
-    TA=${RUN}a$U TB=${RUN}b$U TC=${RUN}c$U TD=${RUN}d$U TE=${RUN}e$U TF=${RUN}f$U
+    TA=${RUN}a$U TB=${RUN}b$U TC=${RUN}c$U TD=${RUN}d$U TE=${RUN}e$U TF=${RUN}f$U TG=${RUN}g$U
     mkdir -p "$D/home" "$D/outside" "$BOOK" || fail "cannot make $D"
     chmod 700 "$BOOK"
 
@@ -530,14 +606,16 @@ suite() { # MODE LETTER
     chmod 600 "$TH/reference.h"
 
     # The classes: A forgers and process attacks, B and C a grader-killer
-    # each, D a compiler that never ends, E the hogs, F attacks on files.
+    # each, D a compiler that never ends, E the hogs, F attacks on files,
+    # G the forger of the gradebook that kills its ancestors.
     classes=""
-    for X in A B C D E F; do
+    for X in A B C D E F G; do
         case $X in
             B) wanted kill-grader || continue ;;
             C) wanted stop-grader || continue ;;
             D) wanted inc-fifo || continue ;;
             E) for p in $HOGS; do wanted "$p" && break; done || continue ;;
+            G) wanted forge-ancestors || continue ;;
         esac
         mkdir "$D/swclass-$(token_of $X)"
         for f in $HONEST; do cp "$BOOK/$f" "$D/swclass-$(token_of $X)/"; done
@@ -554,6 +632,7 @@ suite() { # MODE LETTER
     for p in $HOGS; do wanted "$p" && gen "$p" "$TE" > "$D/swclass-$TE/$p.c"; done
     wanted kill-grader && gen kill-grader "$TB" > "$D/swclass-$TB/kill-grader.c"
     wanted stop-grader && gen stop-grader "$TC" > "$D/swclass-$TC/stop-grader.c"
+    wanted forge-ancestors && gen forge-ancestors "$TG" > "$D/swclass-$TG/forge-ancestors.c"
     if wanted inc-fifo; then
         fill "$TD" < "$H/inc-fifo.c" > "$D/swclass-$TD/inc-fifo.c"
         mkfifo "$D/swclass-$TD/pipe.h"
@@ -589,6 +668,7 @@ suite() { # MODE LETTER
 
     # ---- grade the classes at once, and run check, try and record beside them ----
     grades=""
+    GRADES_START=$(now_ms)
     for X in $classes; do
         rm -f "$BOOK/rc-$X"
         # shellcheck disable=SC2046
@@ -626,7 +706,7 @@ suite() { # MODE LETTER
             fi
         done
         left=$still
-        stops=$(stopped $TA $TB $TC $TD $TE $TF)
+        stops=$(stopped $TA $TB $TC $TD $TE $TF $TG)
         now=""
         for p in $(echo "$stops" | cut -d' ' -f1); do
             case " $seen " in
@@ -637,6 +717,7 @@ suite() { # MODE LETTER
                         *)
                             who="class with token $t"
                             [ "$t" = "$TC" ] && who=stop-grader
+                            [ "$t" = "$TG" ] && who=forge-ancestors
                             bad "$who: a grading process (pid $p) was stopped (SIGSTOP): the class hangs until someone sends SIGCONT"
                             reported="$reported $t"
                             ;;
@@ -669,7 +750,7 @@ suite() { # MODE LETTER
         sleep 0.25
     done
     # (d) nothing outlives grade
-    report_survivors "grade" $TA $TB $TC $TD $TE $TF
+    report_survivors "grade" $TA $TB $TC $TD $TE $TF $TG
     note "gradebooks watched for 5 s"
     for j in $checks; do wait "$j"; done
     note "check, try and record done"
@@ -683,6 +764,7 @@ suite() { # MODE LETTER
             B) who="kill-grader: grade" ;;
             C) who="stop-grader: grade" ;;
             D) who="inc-fifo: grade" ;;
+            G) who="forge-ancestors: grade" ;;
             *) who="class ${t##*/tmp-}: grade" ;;
         esac
         bad "$who left temporary files behind in its TMPDIR ($left)"

@@ -52,8 +52,8 @@ static const char *include_dir(void)
 
 typedef struct build_job {
     const char *cc;          /* absolute, resolved outside the jail */
-    const char *work;        /* where plugin.c is: /work in the jail */
-    const char *inc;         /* -I flag: /include in the jail */
+    const char *work;        /* where plugin.c is: the jail's work/ */
+    const char *inc;         /* -I flag: ../include in the jail */
 } build_job;
 
 /* The compiler on WORK/plugin.c, its messages in WORK/build.log. */
@@ -73,7 +73,13 @@ static int run_compiler(void *ctx, int in, int out)
     snprintf(inc, sizeof inc, "-I%s", j->inc);
     char *const argv[] = { (char *)j->cc, JAIL_FLAGS, inc, "-o", "plugin.so", "plugin.c", "-lm", NULL };
     /* LC_ALL=C: plain ASCII quotes in the messages we show */
-    char *const envp[] = { "PATH=/usr/bin:/bin", "TMPDIR=/work", "LC_ALL=C", "HOME=/work", NULL };
+    /* its scratch is where it works (/work, or a UID jail's work/) */
+    char cwd[PATH_MAX], tmpdir[PATH_MAX + 8], home[PATH_MAX + 8];
+    if (!getcwd(cwd, sizeof cwd))
+        return 127;
+    snprintf(tmpdir, sizeof tmpdir, "TMPDIR=%s", cwd);
+    snprintf(home, sizeof home, "HOME=%s", cwd);
+    char *const envp[] = { "PATH=/usr/bin:/bin", tmpdir, "LC_ALL=C", home, NULL };
     execve(j->cc, argv, envp);
     fprintf(stderr, "error: cannot run the compiler '%s': %s\n", j->cc, strerror(errno));
     return 127;
@@ -282,7 +288,8 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
     if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_max != RLIM_INFINITY && as.rlim_max / 2 < spec.disk_bytes)
         spec.disk_bytes = (size_t)(as.rlim_max / 2);
     char work[PATH_MAX];
-    build_job job = { cc, "/work", "/include" };
+    /* jailed: work/ is the current directory, the headers beside it */
+    build_job job = { cc, ".", "../include" };
     if (!sw_jail_enabled()) {
         job.work = work;
         job.inc = include_dir();

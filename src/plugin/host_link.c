@@ -45,14 +45,25 @@ static int exec_host(void *ctx, int in, int out)
     (void)in;
     (void)out;
     const host_exec *x = ctx;
-    char *argv[8];
+    char *argv[40];
     int n = 0;
     argv[n++] = JAIL_HOST;
     argv[n++] = (char *)x->plugin;
     if (x->jailed) {
+        /* NS: the jail's root holds nothing but the system and /work; UID:
+         * the system's directories and the jail's own work/ */
         argv[n++] = "--jail";
-        argv[n++] = "--read";
-        argv[n++] = "/";
+        if (sw_jail_kind_now() == SW_JAIL_UID) {
+            for (int i = 0; sw_jail_system_dirs[i] && n < 28; i++) {
+                argv[n++] = "--read";
+                argv[n++] = (char *)sw_jail_system_dirs[i];
+            }
+            argv[n++] = "--read";
+            argv[n++] = ".";
+        } else {
+            argv[n++] = "--read";
+            argv[n++] = "/";
+        }
     }
     argv[n++] = "--for";
     argv[n++] = (char *)x->who;
@@ -155,8 +166,9 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
         return SW_EIO;
     }
     int jailed = sw_jail_enabled();
-    host_exec x = { .host = jailed ? "/work/" JAIL_HOST : sw_plugin_host_path(),
-                    .plugin = jailed ? "/work/" JAIL_PLUGIN : e->path, .jailed = jailed };
+    /* jailed, both are in work/, the payload's current directory */
+    host_exec x = { .host = jailed ? "./" JAIL_HOST : sw_plugin_host_path(),
+                    .plugin = jailed ? "./" JAIL_PLUGIN : e->path, .jailed = jailed };
     command_line(x.who, sizeof x.who);
     sw_jail spec = { .profile = SW_JAIL_COMPUTE, .include_fd = -1 };
     spec.in[0] = (sw_jail_file){ .fd = e->fd, .name = JAIL_PLUGIN };

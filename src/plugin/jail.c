@@ -6,6 +6,9 @@
 #include "plugin/jail.h"
 
 #include <dirent.h>
+#include <grp.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/capability.h>
@@ -22,6 +25,7 @@
 #include <unistd.h>
 
 #include "plugin/jail_filter.h"
+#include "util/tmpdir.h"
 
 static int disabled = -1;
 
@@ -36,6 +40,28 @@ int sw_jail_enabled(void)
 
 void sw_jail_set_enabled(int on) { disabled = !on; }
 
+
+static sw_jail_kind kind;
+
+sw_jail_kind sw_jail_kind_now(void)
+{
+    if (!kind) {
+        const char *env = getenv("STEPWISE_JAIL");
+        kind = env && strcmp(env, "uid") == 0 && geteuid() == 0 ? SW_JAIL_UID : SW_JAIL_NS;
+    }
+    return kind;
+}
+
+void sw_jail_kind_set(sw_jail_kind k) { kind = k; }
+
+int sw_jail_uid_allowed(void)
+{
+    const char *env = getenv("STEPWISE_JAIL");
+    return geteuid() == 0 && !(env && strcmp(env, "ns") == 0);
+}
+
+const char *const sw_jail_system_dirs[] = { "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32",
+                                            "/etc/ld.so.cache", NULL };
 
 int sw_jail_unshare(const char **step)
 {
@@ -256,14 +282,106 @@ int sw_jail_build(const sw_jail *spec, const char **step)
     return 0;
 }
 
+/* ---- the separate user (no namespaces) ------------------------------------ */
+
+/* The jail's user: one of its own per jail, so that no two jails (nor
+ * anything else) share it: an id from a range Debian leaves to be made
+ * on demand, by the first process's pid; nobody where it is not mapped. */
+#define UID_BASE 61000u
+#define UID_RANGE 3000u
+
+static char uid_dir[512]; /* the jail's directory, for Landlock */
+static int drop_bounding(void);
+
+void sw_jail_uid_dir(int pid, char *dir, size_t dirlen)
+{
+    const char *tmp = getenv("TMPDIR");
+    if (!tmp || tmp[0] != '/' || strlen(tmp) > 300)
+        tmp = "/tmp";
+    snprintf(dir, dirlen, "%s/stepwise-jail-%d", tmp, pid);
+}
+
+int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, const char **step)
+{
+    int rc;
+    *uid = UID_BASE + (unsigned)getpid() % UID_RANGE;
+    sw_jail_uid_dir(getpid(), dir, dirlen);
+    if (mkdir(dir, 0700) != 0 && errno == EEXIST) /* a jail of an earlier process of this pid, killed */
+        sw_tmpdir_remove(dir);
+    if (mkdir(dir, 0700) != 0 && errno != EEXIST)
+        return fail_at(step, "making the jail's directory", errno);
+    snprintf(uid_dir, sizeof uid_dir, "%s", dir);
+    char work[600], inc[600];
+    snprintf(work, sizeof work, "%s/work", dir);
+    snprintf(inc, sizeof inc, "%s/include", dir);
+    if (chmod(dir, 0711) != 0 || mkdir(work, 0700) != 0)
+        return fail_at(step, "making the jail's directory", errno);
+    for (int i = 0; i < spec->nin; i++) {
+        char path[700];
+        snprintf(path, sizeof path, "%s/%s", work, spec->in[i].name);
+        if ((rc = copy_in(spec->in[i].fd, path, spec->in[i].executable ? 0755 : 0644)) != 0)
+            return fail_at(step, SW_JAIL_STEP_SUBMISSION, rc);
+    }
+    if (spec->include_fd >= 0) {
+        char stepwise[700];
+        snprintf(stepwise, sizeof stepwise, "%s/stepwise", inc);
+        if (mkdir(inc, 0755) != 0 || mkdir(stepwise, 0755) != 0 ||
+            (rc = copy_headers(spec->include_fd, stepwise)) != 0)
+            return fail_at(step, "copying stepwise's headers", rc ? rc : errno);
+    }
+    if (chown(work, *uid, *uid) != 0)
+        return fail_at(step, "giving the jail's user its directory", errno);
+    if (chdir(work) != 0)
+        return fail_at(step, "entering the jail's directory", errno);
+    return 0;
+}
+
+int sw_jail_become(unsigned uid, const char **step)
+{
+    /* the bounding set while we may still change it; the rest goes with root */
+    int rc = drop_bounding();
+    if (rc != 0)
+        return fail_at(step, "dropping capabilities", rc);
+    if (setgroups(0, NULL) != 0)
+        return fail_at(step, "dropping supplementary groups", errno);
+    if (setresgid(uid, uid, uid) != 0 || setresuid(uid, uid, uid) != 0)
+        return fail_at(step, "becoming the jail's user", errno);
+    return 0;
+}
+
+void sw_jail_kill_user(unsigned uid)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        /* as the user: every process it may signal is one of its own */
+        if (setresgid(uid, uid, uid) == 0 && setresuid(uid, uid, uid) == 0)
+            kill(-1, SIGKILL);
+        _exit(0);
+    }
+    if (pid > 0)
+        while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+            ;
+}
+
 /* ---- the lockdown ----------------------------------------------------------- */
+
+/* Empty the bounding set (what a capability could ever be regained from);
+ * the capabilities held stay until drop_capabilities. */
+static int drop_bounding(void)
+{
+    for (int cap = 0; cap <= 63; cap++)
+        if (prctl(PR_CAPBSET_READ, cap, 0, 0, 0) == 1 && prctl(PR_CAPBSET_DROP, cap, 0, 0, 0) != 0 &&
+            errno != EINVAL)
+            return errno;
+    prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0);
+    return 0;
+}
 
 static int drop_capabilities(void)
 {
-    for (int cap = 0; cap <= 63; cap++)
-        if (prctl(PR_CAPBSET_DROP, cap, 0, 0, 0) != 0 && errno != EINVAL)
-            return errno;
-    prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0);
+    int rc = drop_bounding();
+    if (rc != 0)
+        return rc;
     struct __user_cap_header_struct head = { _LINUX_CAPABILITY_VERSION_3, 0 };
     struct __user_cap_data_struct data[2];
     memset(data, 0, sizeof data);
@@ -286,7 +404,19 @@ int sw_jail_lockdown(sw_jail_profile profile, const char **step)
     prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
     if (profile == SW_JAIL_COMPUTE)
         return 0; /* the host installs the last two layers on itself */
-    if ((rc = sw_jail_landlock()) != 0)
+    if (sw_jail_kind_now() == SW_JAIL_UID) {
+        /* the system to read, the jail's directory to read (its headers) and its work/ to write */
+        const char *read_dirs[16];
+        int n = 0;
+        for (int i = 0; sw_jail_system_dirs[i] && n < 14; i++)
+            read_dirs[n++] = sw_jail_system_dirs[i];
+        read_dirs[n++] = uid_dir;
+        static const char *const full[] = { "." };
+        rc = sw_jail_landlock_rules(read_dirs, n, full, 1);
+    } else {
+        rc = sw_jail_landlock();
+    }
+    if (rc != 0)
         return fail_at(step, "Landlock", rc);
     if ((rc = sw_jail_filter(profile)) != 0)
         return fail_at(step, "the seccomp filter", rc);
@@ -296,7 +426,8 @@ int sw_jail_lockdown(sw_jail_profile profile, const char **step)
 int sw_jail_compute_layers(const char **step)
 {
     static const char *const root[] = { "/" };
-    int rc = sw_jail_landlock_read(root, 1);
+    int rc = sw_jail_kind_now() == SW_JAIL_UID ? sw_jail_landlock_read(sw_jail_system_dirs, 8)
+                                              : sw_jail_landlock_read(root, 1);
     if (rc != 0)
         return fail_at(step, "Landlock", rc);
     if ((rc = sw_jail_filter(SW_JAIL_COMPUTE)) != 0)
@@ -308,7 +439,7 @@ void sw_jail_send_outputs(const sw_jail *spec, int fd)
 {
     for (int i = 0; i < spec->nout; i++) {
         char path[256];
-        snprintf(path, sizeof path, "/work/%s", spec->out[i]);
+        snprintf(path, sizeof path, "%s", spec->out[i]); /* in work/, the current directory */
         int in = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
         struct stat st;
         int64_t size = -1;

@@ -42,6 +42,22 @@ typedef struct sw_jail {
     size_t disk_bytes;         /* the size of /work (0: 64 MiB) */
 } sw_jail;
 
+/* How the jail isolates. NS: the namespaces above (unprivileged user
+ * namespaces). UID: where the kernel refuses them (Docker's default
+ * profile, Gradescope's containers) and we are root: no namespaces, but a
+ * user id of the jail's own (root may change ids without them), no new
+ * privileges, the same limits, the same seccomp filter, and Landlock
+ * narrowed to the system's directories and the jail's own directory under
+ * $TMPDIR. Chosen by the first jail built (NS, then UID when NS is refused
+ * as root); STEPWISE_JAIL=uid forces UID, =ns forbids it (tests). */
+typedef enum sw_jail_kind { SW_JAIL_NS = 1, SW_JAIL_UID = 2 } sw_jail_kind;
+sw_jail_kind sw_jail_kind_now(void);
+void sw_jail_kind_set(sw_jail_kind kind);
+/* Whether UID may be used instead when NS is refused (root, not forbidden). */
+int sw_jail_uid_allowed(void);
+/* The system's directories a UID jail may read (NULL-terminated). */
+extern const char *const sw_jail_system_dirs[];
+
 /* Whether submissions run jailed (the default) or, after
  * sw_jail_set_enabled(0) (--no-sandbox, STEPWISE_SANDBOX=off), only in a
  * child process with limits, for a disposable container that holds one
@@ -60,6 +76,19 @@ int sw_jail_map_user(int pid, char *why, size_t len);
 /* In the first child, once mapped: become the namespace's root, build the
  * jail's root from spec and pivot into it. 0, or an errno with *step. */
 int sw_jail_build(const sw_jail *spec, const char **step);
+/* UID: in the first child, as root: make the jail's directory (0711,
+ * root's) under $TMPDIR with work/ (the jail's user's, its current
+ * directory from now on) and include/; copy spec's files in. The user id
+ * in *uid. 0, or an errno with *step; dir gets the directory's path. */
+int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, const char **step);
+/* UID: the jail's directory of the first process pid ($TMPDIR/stepwise-jail-PID):
+ * the parent removes it when it kills a jail that had no time to. */
+void sw_jail_uid_dir(int pid, char *dir, size_t dirlen);
+/* UID: in the payload's process: become the jail's user. 0 or an errno. */
+int sw_jail_become(unsigned uid, const char **step);
+/* UID: kill every process of the jail's user (after the payload ended). */
+void sw_jail_kill_user(unsigned uid);
+
 /* In the payload's process, last before the payload: drop every
  * capability, no new privileges; for COMPILE also Landlock and the
  * profile's seccomp filter (a COMPUTE payload execs the plugin's host,

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <sys/ioctl.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -41,17 +42,17 @@ static int ll_allow(int ruleset, const char *path, uint64_t access)
     int fd = open(path, O_PATH | O_CLOEXEC);
     if (fd < 0)
         return errno == ENOENT ? 0 : errno;
+    struct stat st;
+    if (fstat(fd, &st) == 0 && !S_ISDIR(st.st_mode)) /* a file takes a file's rights only */
+        access &= LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_READ_FILE |
+                  LANDLOCK_ACCESS_FS_TRUNCATE;
     struct landlock_path_beneath_attr rule = { .allowed_access = access, .parent_fd = fd };
     int rc = syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0) == 0 ? 0 : errno;
     close(fd);
     return rc;
 }
 
-/* Read (and execute) beneath each of read[], everything beneath full[],
- * reading and writing /dev/null; nothing else, for this process and all
- * it starts. 0 (also where the kernel has no Landlock: the other layers
- * still hold), or an errno. */
-static int landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull)
+int sw_jail_landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull)
 {
     long abi = syscall(SYS_landlock_create_ruleset, NULL, 0, LANDLOCK_CREATE_RULESET_VERSION);
     if (abi < 1)
@@ -92,12 +93,12 @@ static int landlock_rules(const char *const *read_dirs, int nread, const char *c
 int sw_jail_landlock(void)
 {
     static const char *const read_dirs[] = { "/" }, *const full[] = { "/work" };
-    return landlock_rules(read_dirs, 1, full, 1);
+    return sw_jail_landlock_rules(read_dirs, 1, full, 1);
 }
 
 int sw_jail_landlock_read(const char *const *read_dirs, int nread)
 {
-    return landlock_rules(read_dirs, nread, NULL, 0);
+    return sw_jail_landlock_rules(read_dirs, nread, NULL, 0);
 }
 
 /* ---- seccomp ------------------------------------------------------------------ */

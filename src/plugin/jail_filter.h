@@ -11,6 +11,9 @@ int sw_jail_landlock(void);
 /* Landlock for a plugin's host: read (and run) only beneath read_dirs,
  * write only /dev/null. 0 or an errno, as above. */
 int sw_jail_landlock_read(const char *const *read_dirs, int nread);
+/* The general form: read (and run) beneath read_dirs, everything beneath
+ * full, and /dev/null. */
+int sw_jail_landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull);
 /* The profile's seccomp filter (libseccomp): for COMPUTE, what loading a
  * plugin and stepping need and no seccomp() (the plugin's host installs
  * it on itself); for COMPILE, a deny-list. 0 or an errno. */

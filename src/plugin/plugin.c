@@ -8,11 +8,11 @@
 #include "plugin/plugin.h"
 
 #include <ctype.h>
-#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,21 +22,22 @@
 
 #include "plugin/plugin_box.h"
 #include "plugin/sandbox.h"
+#include "util/utf8.h"
 
-/* Length of the UTF-8 sequence at s that is a printable character (no C0/C1
- * control, no DEL, well formed); 0 when it is none. */
-static int printable_char(const unsigned char *s)
+/* Length of the UTF-8 sequence at s (avail bytes) that is a printable
+ * character: well formed (no overlong form, surrogate or code point past
+ * U+10FFFF), no C0/C1 control, no DEL; 0 when it is none. Bidirectional
+ * and zero-width characters are printable here and escaped wherever a
+ * label is shown (util/escape.h). */
+static int printable_char(const unsigned char *s, size_t avail)
 {
-    if (s[0] >= 0x20 && s[0] < 0x7f)
-        return 1;
-    int len = s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
-            : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
-    for (int i = 1; i < len; i++)
-        if ((s[i] & 0xc0) != 0x80)
-            return 0;
-    if (len == 2 && s[0] == 0xc2 && s[1] < 0xa0)
-        return 0; /* C1 controls U+0080..U+009F */
-    return len;
+    size_t len;
+    uint32_t cp;
+    if (sw_utf8_check(s, avail, &len, &cp) != SW_UTF8_OK)
+        return 0;
+    if (cp < 0x20 || cp == 0x7f || (cp >= 0x80 && cp < 0xa0))
+        return 0;
+    return (int)len;
 }
 
 int sw_plugin_name_ok(const char *name, char *why, size_t whylen)
@@ -80,7 +81,7 @@ int sw_plugin_label_ok(const char *label, char *why, size_t whylen)
         return 0;
     }
     for (size_t i = 0; i < len;) {
-        int n = printable_char((const unsigned char *)label + i);
+        int n = printable_char((const unsigned char *)label + i, len - i);
         if (n == 0) {
             snprintf(why, whylen, "byte %zu is a control character or not UTF-8 (a label is "
                      "printable text)", i + 1);
@@ -141,8 +142,21 @@ static int check_reply(const sw_host_info *r, const char *shown, char *err, size
     return SW_OK;
 }
 
+/* At exit, every plugin's host ends (and a UID jail's directory with it). */
+static void stop_hosts(void)
+{
+    for (int i = 0; i < SW_PLUGIN_MAX; i++) {
+        sw_plugin_entry *e = sw_plugin_entry_at(i);
+        if (e)
+            sw_host_stop(e);
+    }
+}
+
 int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen)
 {
+    static int registered;
+    if (!registered && atexit(stop_hosts) == 0)
+        registered = 1;
     char shown[200], why[SW_ERRLEN];
     sw_escape(path, 120, shown, sizeof shown);
     struct stat st;

@@ -1,11 +1,12 @@
 /* Student plugins, isolated: a plugin's code never runs in stepwise's own
- * process. Loading probes sw_plugin_info() in a child process under a
- * watchdog; each sim that steps a plugin gets a child that loads it and
- * steps the state in shared memory, one socket round trip per step, with
- * its work vectors and y each followed by an inaccessible guard. A plugin
- * that exits, crashes, loops, overruns its vectors or writes to the ode is
- * reported as such with the step; it can never take stepwise down or pass
- * for a correct method. Pure C, no printing. */
+ * process, nor in a copy of it. It runs in its host (the program
+ * stepwise-plugin-host, plugin/host_proto.h), jailed, one per plugin:
+ * loading calls sw_plugin_info() there under a watchdog, and each sim that
+ * steps the plugin gets a slot there that runs its steps ahead in batches,
+ * with its work vectors and y each followed by an inaccessible guard. A
+ * plugin that exits, crashes, loops, allocates, overruns its vectors or
+ * writes to the ode is reported as such with the step; it can never take
+ * stepwise down or pass for a correct method. Pure C, no printing. */
 #ifndef SW_PLUGIN_PLUGIN_H
 #define SW_PLUGIN_PLUGIN_H
 

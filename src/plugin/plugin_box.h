@@ -45,6 +45,8 @@ typedef struct sw_plugin_entry {
  * once it is filled in. */
 sw_plugin_entry *sw_plugin_entry_next(void);
 void sw_plugin_entry_commit(void);
+/* The i-th loaded entry, or NULL. */
+sw_plugin_entry *sw_plugin_entry_at(int i);
 /* The entry behind a plugin method, or NULL. */
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The limits a new plugin process gets (sw_plugin_set_limits). */

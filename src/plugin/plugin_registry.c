@@ -120,3 +120,5 @@ sw_plugin_entry *sw_plugin_entry_next(void)
 }
 
 void sw_plugin_entry_commit(void) { nentries++; }
+
+sw_plugin_entry *sw_plugin_entry_at(int i) { return i >= 0 && i < nentries ? &entries[i] : NULL; }

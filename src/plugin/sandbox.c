@@ -27,6 +27,7 @@
 
 #include "stepwise/stepwise.h"
 #include "util/fds.h"
+#include "util/tmpdir.h"
 #include "util/signals.h"
 
 
@@ -160,15 +161,19 @@ static void exit_at_once(int status, void *arg)
     _exit(status);
 }
 
-/* The jail's init (PID 1): starts the payload, reaps whatever ends in the
- * jail, and reports how the payload ended; when it exits, the kernel kills
- * every process left in the jail. */
+/* The jail's init: starts the payload, reaps whatever ends in the jail,
+ * and reports how the payload ended. NS (uid 0): PID 1, and when it
+ * exits, the kernel kills every process left in the jail. UID (the jail's
+ * user id): the payload becomes that user, and every process of that user
+ * is killed once the payload ended. */
 static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
-                      const sw_jail *spec, int sock, int sync, int status)
+                      const sw_jail *spec, int sock, int sync, int status, unsigned uid)
 {
     if (die_with(getppid()) != 0)
         _exit(127);
-    sethostname("stepwise", 8);
+    if (!uid)
+        sethostname("stepwise", 8);
+    pid_t me = getpid();
     pid_t payload = fork();
     if (payload < 0) {
         send_failure(sync, errno, "fork of the payload");
@@ -176,7 +181,7 @@ static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int outp
     }
     if (payload == 0) {
         close(status);
-        if (die_with(1) != 0)
+        if (die_with(uid ? me : 1) != 0)
             _exit(127);
         const char *step = NULL;
         /* sync kept at 4 until the lockdown is reported, the channel at 3 */
@@ -186,6 +191,15 @@ static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int outp
         if (sync_hi < 0 || sock_hi < 0 || dup2(sync_hi, 4) != 4)
             _exit(127);
         close(sync_hi);
+        if (uid) {
+            int rc = sw_jail_become(uid, &step);
+            if (rc != 0) {
+                send_failure(4, rc, step);
+                _exit(127);
+            }
+            if (die_with(me) != 0) /* cleared by the change of user */
+                _exit(127);
+        }
         child_setup(sock_hi, output_fd, lim, 4);
         set_limit(RLIMIT_NPROC, SW_CHILD_PROCS);
         int rc = sw_jail_lockdown(spec->profile, &step);
@@ -216,6 +230,8 @@ static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int outp
             _exit(127);
     }
     sw_jail_send_outputs(spec, sock);
+    if (uid)
+        sw_jail_kill_user(uid);
     int32_t report = st;
     if (write(status, &report, sizeof report) != (ssize_t)sizeof report)
         _exit(127);
@@ -223,9 +239,10 @@ static void jail_init(sw_child_fn *fn, void *ctx, const sw_limits *lim, int outp
 }
 
 /* The first child: leave the namespaces, wait to be mapped, build the
- * root, start the init and wait for it. */
+ * root, start the init and wait for it. UID: make the jail's directory
+ * instead, and remove it once the init ended. */
 static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
-                       const sw_jail *spec, int sock, int sync, int status, pid_t parent)
+                       const sw_jail *spec, int sock, int sync, int status, pid_t parent, sw_jail_kind kind)
 {
     if (die_with(parent) != 0)
         _exit(127);
@@ -239,17 +256,26 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         setrlimit(RLIMIT_FSIZE, &fsize);
     }
     const char *step = NULL;
-    int rc = sw_jail_unshare(&step);
-    char tag = 'U';
-    if (rc != 0) {
-        send_failure(sync, rc, step);
-        _exit(127);
+    unsigned uid = 0;
+    char dir[512] = "";
+    int rc;
+    if (kind == SW_JAIL_UID) {
+        rc = sw_jail_build_uid(spec, dir, sizeof dir, &uid, &step);
+    } else {
+        rc = sw_jail_unshare(&step);
+        char tag = 'U';
+        if (rc != 0) {
+            send_failure(sync, rc, step);
+            _exit(127);
+        }
+        if (write(sync, &tag, 1) != 1 || read(sync, &tag, 1) != 1 || tag != 'M')
+            _exit(127);
+        rc = sw_jail_build(spec, &step);
     }
-    if (write(sync, &tag, 1) != 1 || read(sync, &tag, 1) != 1 || tag != 'M')
-        _exit(127);
-    rc = sw_jail_build(spec, &step);
     if (rc != 0) {
         send_failure(sync, rc, step);
+        if (dir[0])
+            sw_tmpdir_remove(dir);
         _exit(127);
     }
     /* A change of credentials (the user namespace's setresuid) clears the
@@ -267,7 +293,7 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         _exit(127);
     }
     if (init == 0)
-        jail_init(fn, ctx, lim, output_fd, spec, sock, sync, status);
+        jail_init(fn, ctx, lim, output_fd, spec, sock, sync, status, uid);
     close(sock);
     close(sync);
     close(status);
@@ -275,13 +301,21 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         int st;
         pid_t w = waitpid(init, &st, 0);
         if (w == init || (w < 0 && errno != EINTR))
-            _exit(0);
+            break;
     }
+    if (uid) {
+        sw_jail_kill_user(uid); /* the init killed before it could */
+        if (chdir("/") == 0)
+            sw_tmpdir_remove(dir); /* the parent does it when this is killed first */
+    }
+    _exit(0);
 }
 
-/* The parent's side of the set-up: map the user, wait for the lockdown. */
-static int jail_handshake(pid_t pid, int sync, char *err, size_t errlen)
+/* The parent's side of the set-up: map the user, wait for the lockdown.
+ * *refused: 1 when the kernel refused the namespaces themselves. */
+static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t errlen)
 {
+    *refused = 0;
     char tag = 0, why[SW_ERRLEN];
     double limit = 10.0;
     int rc = sw_sandbox_read(sync, &tag, 1, limit);
@@ -301,6 +335,7 @@ static int jail_handshake(pid_t pid, int sync, char *err, size_t errlen)
     jail_failure f;
     if (rc == 1 && tag == 'X' && sw_sandbox_read(sync, &f, sizeof f, limit) == 1) {
         f.step[sizeof f.step - 1] = '\0';
+        *refused = strncmp(f.step, "unshare(", 8) == 0;
         if (strcmp(f.step, SW_JAIL_STEP_SUBMISSION) == 0 && (f.err == EFBIG || f.err == ENOSPC)) {
             snprintf(err, errlen, "the submission is too large to run: a plugin's file (.c or .so) may be at "
                      "most %zu MiB, and its build must fit its scratch space", SW_JAIL_FILE_MAX >> 20);
@@ -316,11 +351,9 @@ static int jail_handshake(pid_t pid, int sync, char *err, size_t errlen)
     return SW_EIO;
 }
 
-int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
-                            const sw_jail *spec, char *err, size_t errlen)
+static int spawn_jail(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                      const sw_jail *spec, sw_jail_kind kind, int *refused, char *err, size_t errlen)
 {
-    if (!spec || !sw_jail_enabled())
-        return sw_sandbox_spawn(c, fn, ctx, lim, output_fd, err, errlen);
     memset(c, 0, sizeof *c);
     c->to_child = c->from_child = c->status_fd = -1;
     int sv[2], sync[2], status[2];
@@ -346,7 +379,7 @@ int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_li
         close(sv[0]);
         close(sync[0]);
         close(status[0]);
-        jail_first(fn, ctx, lim, output_fd, spec, sv[1], sync[1], status[1], parent);
+        jail_first(fn, ctx, lim, output_fd, spec, sv[1], sync[1], status[1], parent, kind);
     }
     close(sv[1]);
     close(sync[1]);
@@ -359,11 +392,29 @@ int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_li
     c->pid = pid;
     c->to_child = c->from_child = sv[0];
     c->status_fd = status[0];
-    int rc = jail_handshake(pid, sync[0], err, errlen);
+    c->uid_jail = kind == SW_JAIL_UID;
+    int rc = jail_handshake(pid, sync[0], refused, err, errlen);
     close(sync[0]);
     if (rc != SW_OK) {
         sw_child_end end;
         sw_sandbox_kill(c, &end);
+    }
+    return rc;
+}
+
+int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_limits *lim, int output_fd,
+                            const sw_jail *spec, char *err, size_t errlen)
+{
+    if (!spec || !sw_jail_enabled())
+        return sw_sandbox_spawn(c, fn, ctx, lim, output_fd, err, errlen);
+    int refused = 0;
+    sw_jail_kind kind = sw_jail_kind_now();
+    int rc = spawn_jail(c, fn, ctx, lim, output_fd, spec, kind, &refused, err, errlen);
+    if (rc != SW_OK && kind == SW_JAIL_NS && refused && sw_jail_uid_allowed()) {
+        /* No user namespaces here (a container's profile refuses them): as
+         * root, the jail of a user of its own serves instead, from now on. */
+        sw_jail_kind_set(SW_JAIL_UID);
+        rc = spawn_jail(c, fn, ctx, lim, output_fd, spec, SW_JAIL_UID, &refused, err, errlen);
     }
     return rc;
 }
@@ -442,6 +493,12 @@ static void jail_end(sw_child *c, sw_child_end *end)
 
 static void close_child(sw_child *c)
 {
+    if (c->uid_jail && c->pid > 0) {
+        char dir[512];
+        sw_jail_uid_dir(c->pid, dir, sizeof dir);
+        sw_tmpdir_remove(dir);
+        c->uid_jail = 0;
+    }
     if (c->status_fd >= 0)
         close(c->status_fd);
     c->status_fd = -1;

@@ -30,6 +30,7 @@ typedef struct sw_child {
     int to_child;          /* the child reads its commands from the other end */
     int from_child;        /* the child writes its replies to the other end */
     int status_fd;         /* jailed: the jail's init reports how the payload ended; else -1 */
+    int uid_jail;          /* a UID jail: its directory goes with it (jail.h) */
 } sw_child;
 
 /* How a child ended. */

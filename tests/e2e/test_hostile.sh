@@ -146,7 +146,11 @@ BIN=$WORK/bin
 mkdir -p "$BIN" || fail "cannot make $BIN"
 # A world-readable copy of the binary and the headers: the repository may
 # sit under a directory the unprivileged user cannot enter.
+# The plugin host goes beside it, where stepwise looks first.
 cp "$STEPWISE" "$BIN/stepwise" && cp -R "$ROOT/include" "$BIN/include" || fail "cannot copy stepwise"
+host=$(dirname "$STEPWISE")/stepwise-plugin-host
+[ -x "$host" ] || host=$(dirname "$STEPWISE")/build/stepwise-plugin-host
+cp "$host" "$BIN/stepwise-plugin-host" || fail "cannot copy the plugin host"
 cc -std=c11 -O2 -o "$BIN/netwatch" "$H/netwatch.c" || fail "cannot build tests/hostile/netwatch.c"
 chmod -R a+rX "$BIN" && chmod 755 "$WORK" || fail "cannot open $WORK to other users"
 SWB=$BIN/stepwise

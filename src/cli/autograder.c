@@ -43,8 +43,9 @@ static const char autograder_help[] =
     "      --source DIR       stepwise's source tree (default: the tree this binary was\n"
     "                         built in)\n"
     "      --cpu S, --memory MB, --wall S, --plugin-timeout S   grade's limits, passed on\n"
-    "      --probe            exit 0 when plugins can be jailed here, else 1 saying why\n"
-    "                         (run_autograder uses it to choose --no-sandbox)\n"
+    "      --probe            exit 0 when plugins can be jailed here, saying how\n"
+    "                         (namespaces, or a user of its own where a container\n"
+    "                         refuses them), else 1 saying why\n"
     "  -h, --help             this help\n";
 
 /* ---- the scripts ------------------------------------------------------------- */
@@ -62,7 +63,7 @@ static const char setup_sh[] =
     "apt-get install -y -qq build-essential pkg-config libncurses-dev libseccomp-dev check tmux unzip\n"
     "make -C stepwise -j\"$(nproc)\" stepwise\n"
     "make -C stepwise install PREFIX=/usr/local\n"
-    "stepwise autograder --probe || echo \"setup.sh: plugins will be graded without the jail\"\n";
+    "stepwise autograder --probe || echo \"setup.sh: plugins cannot be jailed here: they will not be run\"\n";
 
 /* The grading options are filled in where @OPTIONS@ stands. */
 static const char run_autograder_head[] =
@@ -70,11 +71,11 @@ static const char run_autograder_head[] =
     "# Gradescope runs this for each submission, in a fresh container (written\n"
     "# by 'stepwise autograder'). It grades the files in $AUTOGRADER_ROOT/submission\n"
     "# (default /autograder) against the bundled assignment into\n"
-    "# $AUTOGRADER_ROOT/results/results.json. Plugins run in stepwise's jail; when\n"
-    "# the container cannot build it (no user namespaces, no seccomp), they run\n"
-    "# with --no-sandbox -- the container, holding this one submission, is the\n"
-    "# sandbox -- and the output says so. Whatever happens, a results.json is\n"
-    "# written: a grader that fails scores 0 and says why.\n"
+    "# $AUTOGRADER_ROOT/results/results.json. Plugins run in stepwise's jail:\n"
+    "# namespaces where the container allows them, else (as root) a user of the\n"
+    "# jail's own, to which this folder is closed; never without a jail. Whatever\n"
+    "# happens, a results.json is written, by the grader: one that fails scores 0\n"
+    "# and says why.\n"
     "root=${AUTOGRADER_ROOT:-/autograder}\n"
     "sw=${STEPWISE:-stepwise}\n"
     "here=$(cd \"$(dirname \"$0\")\" && pwd)\n"
@@ -88,11 +89,13 @@ static const char run_autograder_head[] =
     "for d in \"$root/submission\"/*/; do\n"
     "    [ -d \"$d\" ] && [ ! -L \"${d%/}\" ] && set -- \"$@\" \"${d%/}\"\n"
     "done\n"
-    "jail=\n"
-    "if ! why=$(\"$sw\" autograder --probe 2>&1); then\n"
-    "    jail=--no-sandbox\n"
-    "    echo \"run_autograder: the jail cannot be built in this container ($why);\" \\\n"
-    "         \"grading with --no-sandbox (the container is the sandbox)\"\n"
+    "# The bundle, the submission and the results are root's alone: a plugin,\n"
+    "# run as another user, can read or write none of them.\n"
+    "chmod go-rwx \"$root\" \"$root/source\" \"$root/results\" \"$root/submission\" \"$here\" 2>/dev/null\n"
+    "if why=$(\"$sw\" autograder --probe 2>&1); then\n"
+    "    echo \"run_autograder: $why\"\n"
+    "else\n"
+    "    echo \"run_autograder: plugins cannot be jailed in this container ($why); they are not run\"\n"
     "fi\n";
 
 static const char run_autograder_tail[] =
@@ -389,7 +392,9 @@ int sw_cmd_autograder(int argc, char **argv)
             fprintf(stderr, "%s\n", err);
             return SW_EXIT_FAIL;
         }
-        printf("the jail can be built here: plugins are graded in it\n");
+        printf("the jail can be built here: plugins are graded in it (%s)\n",
+               sw_jail_kind_now() == SW_JAIL_UID ? "a user of its own: this system refuses user namespaces"
+                                                 : "namespaces");
         return SW_EXIT_OK;
     }
     if (!assignment || !output)
@@ -432,7 +437,7 @@ int sw_cmd_autograder(int argc, char **argv)
     }
     char run[sizeof run_autograder_head + sizeof run_autograder_tail + 700];
     snprintf(run, sizeof run, "%s\"$sw\" grade --assignment \"$assignment\" --gradescope "
-             "\"$results\" $jail%s \"$@\"\n%s", run_autograder_head, opts, run_autograder_tail);
+             "\"$results\"%s \"$@\"\n%s", run_autograder_head, opts, run_autograder_tail);
 
     sw_outfile o;
     if (sw_outfile_open(&o, output, err, sizeof err) != SW_OK) {

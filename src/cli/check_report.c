@@ -194,6 +194,11 @@ void sw_check_json(FILE *out, const sw_verdict *v, int in)
             fputs("null", out);
         else
             sw_json_num(out, v->stability);
+        fprintf(out, ", \"claimed_evals\": %d, \"counted_evals\": ", v->claimed_evals);
+        if (isnan(v->counted_evals))
+            fputs("null", out);
+        else
+            sw_json_num(out, v->counted_evals);
         fputs(", \"note\": ", out);
         sw_json_str(out, v->measure_note[0] ? v->measure_note : NULL);
         fputs(" }", out);
@@ -220,6 +225,16 @@ static void print_measure(FILE *out, const sw_verdict *v)
 {
     if (!v->have_measure)
         return;
+    /* counted by the plugin's host, where the step does not write */
+    if (!isnan(v->counted_evals)) {
+        fprintf(out, "  evaluations: claimed %d per step, counted %.3g per step", v->claimed_evals,
+                v->counted_evals);
+        if (v->counted_evals < v->claimed_evals - 1e-9)
+            fprintf(out, " (fewer than claimed: does your step evaluate the derivative at every stage?)");
+        else if (v->counted_evals > v->claimed_evals + 1e-9)
+            fprintf(out, " (more than claimed: set .evals to what a step costs)");
+        fputc('\n', out);
+    }
     if (isnan(v->order)) {
         fprintf(out, "  measured: %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;

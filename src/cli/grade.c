@@ -473,6 +473,9 @@ static int grade_command(int argc, char **argv, char **wargv)
             grade_list_free(&list);
             return sw_cli_error("grade: plugins are run isolated, and %s", err);
         }
+    /* the workers build their jails the way the probe found works here */
+    if (sw_jail_enabled() && sw_jail_kind_now() == SW_JAIL_UID)
+        setenv("STEPWISE_JAIL", "uid", 1);
     base.assignment = &asg;
     if (!(wall > 0))
         wall = 2 * lim.cpu_seconds + 5;

@@ -14,6 +14,7 @@
 
 #include "cli/cli.h"
 #include "cli/json.h"
+#include "plugin/jail.h"
 #include "stepwise/stepwise.h"
 #include "util/outfile.h"
 #include "util/escape.h"
@@ -83,9 +84,10 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
                     base_name(l->items[best].path), verdict_of(l->items[best].status));
         else
             fprintf(t, "0 of %g points: %s", s->max, why);
-        fprintf(t, ".\nPlugins run %s.\n", jailed ? "in stepwise's jail (namespaces, seccomp, limits)"
-                : "without the jail (--no-sandbox: the container, which holds this one "
-                  "submission, is the sandbox; the CPU, memory and time limits still hold)");
+        fprintf(t, ".\nPlugins run %s.\n", !jailed ? "without the jail (--no-sandbox, the teacher's choice: the "
+                                                   "CPU, memory and time limits still hold)"
+                : sw_jail_kind_now() == SW_JAIL_UID ? "in stepwise's jail (a user of its own, seccomp, Landlock, limits)"
+                                                    : "in stepwise's jail (namespaces, seccomp, Landlock, limits)");
         for (int i = 0; i < l->n; i++)
             if (i != best)
                 fprintf(t, "Also graded, not counted: %s, %g of %g points (%s)\n",

@@ -41,7 +41,7 @@ static void forget_the_class(const grade_job *job)
             explicit_bzero(e->path, strlen(e->path));
     }
     static const char *const kept[] = { "PATH", "CC", "TMPDIR", "STEPWISE_INCLUDE", "STEPWISE_PLUGIN_TIMEOUT",
-                                        "STEPWISE_SANDBOX", "LC_ALL", "LANG" };
+                                        "STEPWISE_SANDBOX", "STEPWISE_JAIL", "LC_ALL", "LANG" };
     char *keep[sizeof kept / sizeof kept[0]];
     for (size_t i = 0; i < sizeof kept / sizeof kept[0]; i++) {
         const char *v = getenv(kept[i]);

@@ -493,6 +493,9 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
     if (rc == SW_OK) {
         run_end(&ref_sim, &v->ref_end);
         run_end(&got_sim, &v->got_end);
+        v->claimed_evals = req->plugin->evals;
+        long taken = got_sim.steps;
+        v->counted_evals = taken > 0 ? (double)sw_sim_evals(&got_sim) / (double)taken : NAN;
         words(v, &ref_sim.sys, 0);
         int pass = v->res.pass && v->got_end.fault == SW_PF_NONE;
         v->status = pass ? SW_VERDICT_PASS : SW_VERDICT_FAIL;

@@ -76,6 +76,8 @@ typedef struct sw_verdict {
     sw_explanation explanation;
     int have_measure;                  /* plugin form */
     int claimed_order;
+    int claimed_evals;                 /* plugin form: what its sw_plugin_info said per step */
+    double counted_evals;              /* ... and what its host counted per step in the graded run (NaN: none) */
     double order;                      /* NaN: not measured (measure_note says why) */
     double stability;                  /* ω·dt limit on the undamped spring; NaN: none */
     int stability_kind;

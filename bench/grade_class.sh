@@ -1,8 +1,10 @@
 #!/bin/sh
 # The cost of the sandbox on a class: N submissions, half traces (recorded
-# with stepwise: correct) and half plugins (C sources of an Euler step, each
-# a little different so every one is compiled), graded with and without the
-# jail, RUNS times each, interleaved. Prints each run's wall time and the
+# with stepwise: correct) and half plugins (C sources of an honest RK4 step,
+# each a little different so every one is compiled), against an rk4
+# assignment on the chain that pays for the measured order and stability
+# (so every plugin is also measured), graded with and without the jail,
+# RUNS times each, interleaved. Prints each run's wall time and the
 # medians and their ratio. With COMPARE=jobs, the jailed class is graded
 # with -j 1 and with -j 2 instead (the gradebooks compared byte for byte).
 #
@@ -18,18 +20,21 @@ cd "$dir" || exit 1
 mkdir class
 cat > assignment.txt <<'A'
 # stepwise assignment 1
-# title: explicit Euler on a hanging spring
-# scene: spring
-# integrator: euler
-# dt: 0.01
-# steps: 300
+# title: RK4 on a chain, measured
+# scene: chain
+# param n: 4
+# integrator: rk4
+# dt: 0.005
+# steps: 400
+# points x* y*: 4
+# points order: 1
+# points stability: 1
 A
-"$SW" record spring -i euler --dt 0.01 --steps 300 -o ref.trace >/dev/null || exit 1
+"$SW" record chain --set n=4 -i rk4 --dt 0.005 --steps 400 -o ref.trace >/dev/null || exit 1
 i=0
 while [ $i -lt $((N / 2)) ]; do
     sed "s/^# scene/# student: Trace $i\n# scene/" ref.trace > class/t$i.trace
-    sed -e "s/student-euler/student-$i/" -e "s|explicit Euler (student plugin)|plugin $i|" \
-        "$root/examples/euler_plugin.c" > class/p$i.c
+    sed -e "s/@NAME@/student-$i/" "$root/tests/hostile/honest-rk4.c" > class/p$i.c
     i=$((i + 1))
 done
 export STEPWISE_INCLUDE="$root/include"

@@ -64,12 +64,15 @@ static const char grade_help[] =
     "      --gradescope FILE  write Gradescope's results.json for one submission: one test\n"
     "                         per check of the assignment ('# points'), as run_autograder\n"
     "                         does ('stepwise autograder')\n"
-    "      --cpu S            CPU seconds per submission, 0.1 to 3600 (default 10)\n"
+    "      --cpu S            CPU seconds for a submission's own processes (its build and\n"
+    "                         its plugin), 0.1 to 3600 (default 10); the grader's own\n"
+    "                         work has its own budget (4 x cpu + 30)\n"
     "      --memory MB        address space per submission, 64 to 65536 MiB (default 1024)\n"
     "      --output KB        output per submission, 4 to 1048576 KiB: report kept, files\n"
     "                         written, the compiler's too (default 1024)\n"
     "      --wall S           wall-clock seconds per submission, 0.1 to 86400\n"
-    "                         (default 2 x cpu + 5)\n"
+    "                         (default 4 x cpu + 20): a guard against a submission that\n"
+    "                         blocks, not a measure of its work\n"
     "      --plugin-timeout S seconds a plugin may take per step, 0.01 to 3600 (default 2)\n"
     "      --no-sandbox       run plugins and compilers without the jail (namespaces,\n"
     "                         seccomp): only inside a disposable container that holds\n"
@@ -103,8 +106,13 @@ static int grade_start(grade_slot *slot, grade_entry *e)
     e->status = SW_VERDICT_ERROR;
     e->failing_step = -1;
     sw_decimal_init(); /* the trace parser's table, built once here for every worker */
-    if (sw_sandbox_spawn(&slot->child, grade_worker, &slot->job, slot->job.lim, -1, err,
-                         sizeof err) != SW_OK) {
+    /* The worker's CPU is the grader's own work (regenerating the
+     * reference, comparing, measuring, explaining): its budget is the
+     * grader's, never the submission's, whose --cpu holds for the
+     * processes that run its code (its build and its plugin's host). */
+    sw_limits worker = *slot->job.lim;
+    worker.cpu_seconds = GRADE_WORKER_CPU(worker.cpu_seconds);
+    if (sw_sandbox_spawn(&slot->child, grade_worker, &slot->job, &worker, -1, err, sizeof err) != SW_OK) {
         snprintf(e->message, sizeof e->message, "%s", err);
         e->seconds = sw_sandbox_now() - slot->start;
         return -1;
@@ -189,15 +197,16 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         sw_sandbox_describe(&end, how, sizeof how);
         if (rc == -2)
             snprintf(e->message, sizeof e->message, "grading took longer than the wall-clock "
-                     "limit of %g s and was stopped", wall);
+                     "limit of %g s and was stopped (the grader's guard, --wall; the submission's own "
+                     "work is held to --cpu)", wall);
         else if (rc == -1)
             snprintf(e->message, sizeof e->message, "interrupted");
         else if (rc == -3)
             snprintf(e->message, sizeof e->message, "the grading process sent a record it could not "
                      "have sent");
         else
-            snprintf(e->message, sizeof e->message, "the grading process %s (limits: %g s CPU, "
-                     "%zu MiB)", how, lim->cpu_seconds, lim->memory_bytes >> 20);
+            snprintf(e->message, sizeof e->message, "the grading process %s (the grader's limits: %g s "
+                     "CPU, %zu MiB, --memory)", how, GRADE_WORKER_CPU(lim->cpu_seconds), lim->memory_bytes >> 20);
         snprintf(e->kind, sizeof e->kind, "%s", rc == -2 ? "wall-time" : "limit");
         /* Out of its wall-clock or CPU time: a limit, not a wrong answer. */
         if (rc == -2 || (rc == 0 && !end.exited && end.signal == SIGXCPU))
@@ -478,7 +487,7 @@ static int grade_command(int argc, char **argv, char **wargv)
         setenv("STEPWISE_JAIL", "uid", 1);
     base.assignment = &asg;
     if (!(wall > 0))
-        wall = 2 * lim.cpu_seconds + 5;
+        wall = GRADE_WALL(lim.cpu_seconds);
     char build_dir[PATH_MAX];
     if (sw_tmpdir_make("grade", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
         grade_list_free(&list);

@@ -196,4 +196,10 @@ int grade_worker(void *ctx, int in, int out);
  * not be checked, with why. */
 void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, const char *why);
 
+/* The grader's CPU budget for one submission's worker (its own work:
+ * the reference, the comparison, the measurements, the explainer), from
+ * the submission's --cpu; and the default wall-clock guard. */
+#define GRADE_WORKER_CPU(cpu) (4 * (cpu) + 30)
+#define GRADE_WALL(cpu) (4 * (cpu) + 20)
+
 #endif

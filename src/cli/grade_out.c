@@ -348,8 +348,8 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
     if (others[0])
         snprintf(others + strlen(others), sizeof others - strlen(others), ",");
     snprintf(summary, sizeof summary, "%d submission%s: %d passed, %d failed (%d of them "
-             "unusable, %d out of a limit)%s in %.1f s; the grader's limits per submission: %g s "
-             "CPU, %zu MiB, %zu KiB output, %g s wall, %g s per plugin step", l->n,
+             "unusable, %d out of a limit)%s in %.1f s; the limits per submission: %g s CPU for its "
+             "own processes (--cpu), %zu MiB, %zu KiB output, %g s wall, %g s per plugin step", l->n,
              l->n == 1 ? "" : "s", passed, l->n - passed, errors, limits, others, seconds, lim->cpu_seconds, lim->memory_bytes >> 20,
              lim->output_bytes >> 10, wall, sw_plugin_timeout());
     if (l->similar_table)

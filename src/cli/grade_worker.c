@@ -191,7 +191,7 @@ int grade_worker(void *ctx, int in, int out)
             path = so;
         }
         if (rc == SW_OK)
-            rc = sw_plugin_load(path, &req.plugin, err, sizeof err);
+            rc = sw_plugin_load(path, job->path, &req.plugin, err, sizeof err);
         req.measure = 0;
         for (int i = 0; i < req.assignment->points.n; i++)
             req.measure |= req.assignment->points.items[i].kind == SW_POINTS_ORDER ||

@@ -117,14 +117,20 @@ static int find_compiler(char *out, size_t len, char *err, size_t errlen)
 }
 
 /* The first line of the log that says "error", escaped, for a message. */
-static void first_error(const char *log, char *buf, size_t len)
+static void first_error(const char *log, const char *src, char *buf, size_t len)
 {
     buf[0] = '\0';
+    /* the compiler saw the student's file as plugin.c: the message names it as they did */
+    const char *slash = strrchr(src, '/');
+    const char *base = slash ? slash + 1 : src;
     for (const char *line = log; line && *line && !buf[0];) {
         const char *end = strchr(line, '\n');
         size_t n = end ? (size_t)(end - line) : strlen(line);
         char one[512];
-        snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), line);
+        if (n > 9 && strncmp(line, "plugin.c:", 9) == 0)
+            snprintf(one, sizeof one, "%.100s:%.*s", base, (int)(n - 9 < 400 ? n - 9 : 400), line + 9);
+        else
+            snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), line);
         if (strstr(one, "error"))
             sw_escape(one, 200, buf, len);
         line = end ? end + 1 : NULL;
@@ -359,7 +365,7 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
         free(log);
         return SW_EIO;
     }
-    first_error(log, msg, sizeof msg);
+    first_error(log, src, msg, sizeof msg);
     free(log);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
     return SW_EINVAL;

@@ -152,13 +152,14 @@ static void stop_hosts(void)
     }
 }
 
-int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen)
+int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator **out, char *err,
+                   size_t errlen)
 {
     static int registered;
     if (!registered && atexit(stop_hosts) == 0)
         registered = 1;
     char shown[200], why[SW_ERRLEN];
-    sw_escape(path, 120, shown, sizeof shown);
+    sw_escape(shown_as ? shown_as : path, 120, shown, sizeof shown);
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
         snprintf(err, errlen, "--plugin '%s': no such file (give the path to a .so built from "

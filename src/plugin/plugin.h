@@ -59,12 +59,14 @@ void sw_plugin_set_limits(const struct sw_limits *lim);
 void sw_plugin_set_timeout(double seconds);
 double sw_plugin_timeout(void);
 
-/* Load the plugin at path: in a child process under the watchdog, dlopen
- * it and call sw_plugin_info(); check the interface version, name, label,
- * step function and work vectors; register its integrator (at most
- * SW_PLUGIN_MAX). *out is the registered method. 0, or SW_EINVAL / SW_EIO
- * with a one-line message (names escaped) in err. */
-int sw_plugin_load(const char *path, const sw_integrator **out, char *err, size_t errlen);
+/* Load the plugin at path: in its host under the watchdog, dlopen it and
+ * call sw_plugin_info(); check the interface version, name, label, step
+ * function and work vectors; register its integrator (at most
+ * SW_PLUGIN_MAX). Messages name it as shown_as (the file the user gave,
+ * when path is a build of it; NULL: path). *out is the registered method.
+ * 0, or SW_EINVAL / SW_EIO with a one-line message (names escaped) in err. */
+int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator **out, char *err,
+                   size_t errlen);
 
 /* After a sim stopped: when its plugin failed (not a numerical blow-up),
  * rewrite s->blow_reason to say how ("the plugin crashed with SIGSEGV

@@ -342,8 +342,8 @@ static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t e
             return SW_EINVAL;
         }
         snprintf(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
-                 "user namespaces and seccomp (docs/sandbox.md), or --no-sandbox inside a disposable "
-                 "container", f.step, strerror(f.err));
+                 "user namespaces, or root where they are refused, and seccomp (docs/sandbox.md)",
+                 f.step, strerror(f.err));
         return SW_EIO;
     }
     snprintf(err, errlen, "the sandbox could not be set up (its first process %s)",

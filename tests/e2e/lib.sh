@@ -38,6 +38,17 @@ tmux_cleanup() {
 trap 'tmux_cleanup; rm -rf "$WORK"' EXIT
 cd "$WORK" || exit 1
 
+# needs_jail: a test that runs students' plugins calls this first. Where no
+# jail can be built (user namespaces refused and not root: a container run
+# as an ordinary user), it says in one line that it is skipped and why and
+# exits 77, which run.sh counts as skipped, never as passed.
+needs_jail() {
+    if ! why=$("$SW" autograder --probe 2>&1); then
+        echo "skip: $(basename "$0" .sh): no jail for plugins can be built here: $why"
+        exit 77
+    fi
+}
+
 fail() {
     echo "FAIL: $*"
     if [ "$TMUX_STARTED" = 1 ]; then

@@ -12,6 +12,7 @@
 # a jail: the forger scores 0 and results.json is the grader's. Needs unzip
 # (tests/deps.sh installs it).
 . "$(dirname "$0")/lib.sh"
+needs_jail
 json="$ROOT/tests/e2e/json.awk"
 command -v unzip >/dev/null 2>&1 || fail "unzip is missing: run 'sh tests/deps.sh'"
 

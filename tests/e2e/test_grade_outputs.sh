@@ -10,6 +10,7 @@
 # grade, check --plugin X.c or try leaves no temporary directory; a hostile
 # lesson progress file costs a warning, not a hang.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 json="$ROOT/tests/e2e/json.awk"
 TMPDIR="$WORK/tmp"
 export TMPDIR

@@ -30,6 +30,7 @@
 #  11. a file named --no-sandbox, brought in by the teacher's `*`, turned
 #      the jail off for the class.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 A=assign.txt
 cat > $A <<'EOF'
 # stepwise assignment 1

@@ -10,6 +10,7 @@
 # the table and gradebook -j 1 gives, byte for byte; a regrade of one
 # student updates one row and keeps the others; --fresh starts over.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 mkdir class
 cat > assignment.txt <<'A'
 # stepwise assignment 1

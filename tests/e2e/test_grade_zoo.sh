@@ -6,6 +6,7 @@
 # with a one-line verdict (valid JSON where asked), never a pass, no temp
 # file left; play disables a failing plugin and leaves the terminal sane.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 json="$root/tests/e2e/json.awk"
 SW=$STEPWISE

@@ -48,6 +48,7 @@
 #     HOSTILE_KEEP=1                                    keep the directory (its path is printed)
 # Needs POSIX sh, coreutils, cc, and (as root) useradd and setpriv.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 H=$ROOT/tests/hostile
 JSON=$ROOT/tests/e2e/json.awk
 CPU=2           # the teacher's --cpu: cpu-hog must not get more

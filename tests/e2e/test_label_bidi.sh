@@ -8,6 +8,7 @@
 # a control character. The commands that show only the name (check, record,
 # bench, stability) print none of its bytes either.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 
 # U+202E, U+202C, U+2066, U+2069, U+200B as UTF-8 (printf's octal escapes:
 # POSIX sh has no \u).

@@ -5,6 +5,7 @@
 # built-in euler, at a step where the spring is inside the region and at
 # one where it is outside.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 cc -std=c11 -O2 -Wall -Wextra -Werror -shared -fPIC -I"$ROOT/include" -o plugin.so \
     "$ROOT/examples/euler_plugin.c" 2>cc.err || fail "cannot build the plugin: $(cat cc.err)"
 

@@ -2,6 +2,7 @@
 # Runs every row of docs/robustness.md: exit 2, exactly one line on stderr
 # with the documented text, nothing on stdout, no core dump, no output file.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 doc="$ROOT/docs/robustness.md"
 ulimit -c unlimited 2>/dev/null
 mkdir dir

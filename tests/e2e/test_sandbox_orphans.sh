@@ -7,6 +7,7 @@
 # parent-death signal: the jail's first process once kept a looping
 # plugin alive for good after its caller died.)
 . "$(dirname "$0")/lib.sh"
+needs_jail
 cat > loop.c <<'C'
 #include <stepwise/integrator.h>
 static int step(sw_ode *ode, double t, double *y, double h, double *work)

@@ -47,7 +47,12 @@ done
 # A student plugin builds against the installed headers alone.
 ${CC:-cc} -std=c11 -Wall -Wextra -Wpedantic -Werror -shared -fPIC -I"$prefix/include" \
     -o "$dir/p.so" "$root/examples/euler_plugin.c" || fail "plugin against the installed headers"
-"$bin" check --plugin "$dir/p.so" --reference euler --scene spring >/dev/null || fail "installed plugin check"
+# ... and runs in the installed host (PREFIX/libexec/stepwise), where a jail can be built
+if why=$("$bin" autograder --probe 2>&1); then
+    "$bin" check --plugin "$dir/p.so" --reference euler --scene spring >/dev/null || fail "installed plugin check"
+else
+    echo "skip: the installed plugin check: no jail for plugins can be built here: $why"
+fi
 # An embedder: a program built with `pkg-config --cflags --libs stepwise` and
 # nothing of the tree, which runs a scene under a method through the public API.
 [ -f "$prefix/lib/libstepwise.a" ] || fail "no libstepwise.a in $prefix/lib"

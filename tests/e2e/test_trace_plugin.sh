@@ -5,6 +5,7 @@
 # that lack the symbol, carry the wrong interface version, write NaN, fail
 # their step or are not shared objects get a clear message, never a crash.
 . "$(dirname "$0")/lib.sh"
+needs_jail
 CC=${CC:-cc}
 build() { # name.so source.c
     $CC -std=c11 -O2 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes \

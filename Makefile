@@ -206,7 +206,7 @@ LIBDIR   = $(PREFIX)/lib
 VERSION  = $(shell sed -n 's/^\#define SW_VERSION "\(.*\)"/\1/p' include/stepwise/base.h)
 
 install: $(BIN) $(LIB) $(HOST)
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(LIBEXECDIR) $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(DATADIR)/lessons $(DESTDIR)$(PREFIX)/include/stepwise $(DESTDIR)$(LIBDIR)/pkgconfig
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/stepwise
 	install -m 755 $(HOST) $(DESTDIR)$(LIBEXECDIR)/stepwise-plugin-host

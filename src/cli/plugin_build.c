@@ -283,7 +283,7 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
     char inc[PATH_MAX + 32];
     snprintf(inc, sizeof inc, "%.*s/stepwise", PATH_MAX, include_dir());
     int inc_fd = open(inc, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    sw_jail spec = { .profile = SW_JAIL_COMPILE, .in = { { src_fd, "plugin.c" } }, .nin = 1,
+    sw_jail spec = { .profile = SW_JAIL_COMPILE, .in = { { .fd = src_fd, .name = "plugin.c" } }, .nin = 1,
                      .include_fd = inc_fd, .out = { "plugin.so", "build.log" }, .nout = 2,
                      .disk_bytes = (size_t)64 << 20 };
     sw_limits lim = { .cpu_seconds = BUILD_SECONDS, .memory_bytes = (size_t)2048 << 20,

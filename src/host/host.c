@@ -37,18 +37,7 @@ static void copy_bounded(const char *src, char *dst, size_t size)
         dst[i] = '\0';
 }
 
-static int put(const void *buf, size_t len)
-{
-    const char *p = buf;
-    while (len > 0) {
-        ssize_t n = write(CHANNEL, p, len);
-        if (n <= 0)
-            return -1;
-        p += n;
-        len -= (size_t)n;
-    }
-    return 0;
-}
+static int put(const void *buf, size_t len) { return sw_host_write_all(CHANNEL, buf, len); }
 
 /* Load the plugin and describe it; the step function, or NULL. */
 static sw_plugin_step_fn *load(const char *path, int *work_vectors)
@@ -125,15 +114,8 @@ int main(int argc, char **argv)
         return 0;
     for (;;) {
         sw_host_cmd cmd;
-        char *p = (char *)&cmd;
-        size_t left = sizeof cmd;
-        while (left > 0) {
-            ssize_t n = read(CHANNEL, p, left);
-            if (n <= 0)
-                return 0;
-            p += n;
-            left -= (size_t)n;
-        }
+        if (sw_host_read_all(CHANNEL, &cmd, sizeof cmd) != 0)
+            return 0;
         switch (cmd.op) {
         case SW_HOST_OPEN: {
             sw_host_reply r;

@@ -25,6 +25,9 @@ void sw_host_close(int slot);
  * to fd: PRINT, one STEP per step, END. y and extra follow cmd on fd.
  * 0, or -1 when the channel broke (the host then ends). */
 int sw_host_run(const sw_host_cmd *cmd, sw_plugin_step_fn *step, int fd);
+/* Read exactly len bytes, or write all of buf: 0, or -1 when the channel ended. */
+int sw_host_read_all(int fd, void *buf, size_t len);
+int sw_host_write_all(int fd, const void *buf, size_t len);
 /* Arm the fault handler that names what a step wrote past, and the
  * handlers that send what is buffered before a fatal signal or while a
  * step runs long. */

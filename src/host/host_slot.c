@@ -313,8 +313,7 @@ int sw_host_open(const sw_host_cmd *cmd, int work_vectors)
 
 /* ---- runs -------------------------------------------------------------------- */
 
-/* Read exactly len bytes; 0, or -1 when the channel ended. */
-static int read_all(int fd, void *buf, size_t len)
+int sw_host_read_all(int fd, void *buf, size_t len)
 {
     char *p = buf;
     while (len > 0) {
@@ -333,7 +332,7 @@ static int read_all(int fd, void *buf, size_t len)
 static unsigned char outbuf[1 << 18];
 static int careful;
 
-static int write_all(int fd, const void *buf, size_t len)
+int sw_host_write_all(int fd, const void *buf, size_t len)
 {
     const char *p = buf;
     while (len > 0) {
@@ -350,7 +349,7 @@ static int out_flush(int fd)
 {
     size_t len = outlen;
     outlen = 0;
-    return write_all(fd, outbuf, len);
+    return sw_host_write_all(fd, outbuf, len);
 }
 
 static double ms_since(const struct timespec *a)
@@ -368,7 +367,7 @@ static int out_put(int fd, const sw_host_reply *r, const void *v, size_t len)
     if (outlen == 0)
         clock_gettime(CLOCK_MONOTONIC, &oldest);
     if (sizeof *r + len > sizeof outbuf)
-        return write_all(fd, r, sizeof *r) == 0 && write_all(fd, v, len) == 0 ? 0 : -1;
+        return sw_host_write_all(fd, r, sizeof *r) == 0 && sw_host_write_all(fd, v, len) == 0 ? 0 : -1;
     memcpy(outbuf + outlen, r, sizeof *r);
     if (len)
         memcpy(outbuf + outlen + sizeof *r, v, len);
@@ -422,10 +421,10 @@ int sw_host_run(const sw_host_cmd *cmd, sw_plugin_step_fn *step, int fd)
     if (!s || cmd->steps < 1 || cmd->steps > SW_HOST_BATCH_MAX || cmd->keep > s->ran)
         return -1; /* the parent never sends this: end */
     size_t vec = (size_t)s->dim * sizeof(double);
-    if (read_all(fd, s->scratch, vec) != 0)
+    if (sw_host_read_all(fd, s->scratch, vec) != 0)
         return -1;
     double *extra = s->maker_kind == SW_MAKER_SCENE ? s->sys.extra : NULL;
-    if (s->nextra > 0 && read_all(fd, extra, (size_t)s->nextra * sizeof(double)) != 0)
+    if (s->nextra > 0 && sw_host_read_all(fd, extra, (size_t)s->nextra * sizeof(double)) != 0)
         return -1;
     sw_host_reply r;
     /* Part of the last run was used: the work vectors go back to where that

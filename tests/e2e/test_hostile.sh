@@ -15,9 +15,11 @@
 # STEPWISE_PLUGIN_TIMEOUT=10:
 # on a busy machine a watchdog must not stop an attack before it has run
 # (which would pass for a defence); the limits under test decide.
-# while check --plugin, try and record run hostile plugins; as root and,
-# at the same time, as an unprivileged user (swhostile, made when missing);
-# run as another user the suite runs once, as that user. Then:
+# while check --plugin, try and record run hostile plugins; as root, at the
+# same time as an unprivileged user (swhostile, made when missing), and as
+# root in the jail of a user of its own (the container mode, where user
+# namespaces are refused: STEPWISE_JAIL=uid); run as another user the suite
+# runs once, as that user. Then:
 #   (a) every entry of a class has a row; every hostile one fails (a pass
 #       means its attack worked);
 #   (b) every honest classmate passes and keeps a byte-identical file (so
@@ -44,7 +46,9 @@
 # attack in time on a very busy machine hands in NaN and gets a NOTE line
 # ("inconclusive"), not a pass. Narrow it while working on one layer:
 #     HOSTILE_ONLY="daemon network traces dirtricks"   families to include
-#     HOSTILE_AS=root | HOSTILE_AS=user                 one pass only (as root)
+#     HOSTILE_AS=root | user | container               one pass only (as root;
+#                                                       container: the jail of a
+#                                                       user of its own, STEPWISE_JAIL=uid)
 #     HOSTILE_KEEP=1                                    keep the directory (its path is printed)
 # Needs POSIX sh, coreutils, cc, and (as root) useradd and setpriv.
 . "$(dirname "$0")/lib.sh"
@@ -263,7 +267,7 @@ fi
 trap 'exit 130' INT TERM HUP
 
 if [ "$(id -u)" = 0 ]; then
-    MODES=${HOSTILE_AS:-root user}
+    MODES=${HOSTILE_AS:-root user container}
     case " $MODES " in
         *" user "*)
             command -v setpriv >/dev/null || fail "setpriv (util-linux) is needed to run as another user"
@@ -285,6 +289,9 @@ runas() {
         ${RUN_TMPDIR:+TMPDIR="$RUN_TMPDIR"} \
         ${ASAN_OPTIONS:+ASAN_OPTIONS="$ASAN_OPTIONS"} ${UBSAN_OPTIONS:+UBSAN_OPTIONS="$UBSAN_OPTIONS"} \
         ${CC:+CC="$CC"} "$@"
+    # container: as root, in the jail of a user of its own (what serves where
+    # user namespaces are refused), forced by the tests' switch
+    [ "$m" = container ] && set -- env STEPWISE_JAIL=uid "$@"
     if [ "$m" = user ]; then
         setpriv --reuid=swhostile --regid="$(id -g swhostile)" --clear-groups -- "$@"
     else
@@ -584,7 +591,7 @@ judge_class() { # CLASS
 
 suite() { # MODE LETTER
     M=$1 U=$2
-    case $M in root) AS=root ;; user) AS=swhostile ;; *) AS=$(id -un) ;; esac
+    case $M in root) AS=root ;; user) AS=swhostile ;; container) AS="root, a user's jail" ;; *) AS=$(id -un) ;; esac
     D=$WORK/swrun-$RUN-$U
     BOOK=$WORK/book-$U
     TH=$D/home
@@ -792,7 +799,7 @@ suite() { # MODE LETTER
 # of a pass is waiting on watchdogs and the 5 s window.
 passes=""
 for m in $MODES; do
-    case $m in root) l=r ;; user) l=u ;; *) l=s ;; esac
+    case $m in root) l=r ;; user) l=u ;; container) l=c ;; *) l=s ;; esac
     ( suite "$m" $l ) &
     passes="$passes $!"
 done

@@ -17,6 +17,7 @@ mk() { make -s -C "$root" BUILD="$build" BIN="$build/stepwise" OPT=-O0 "$@" >"$d
 mk -j2 install PREFIX=/opt/sw DESTDIR="$dir/stage"
 stage="$dir/stage/opt/sw"
 [ -x "$stage/bin/stepwise" ] || fail "no binary in $stage/bin"
+[ -x "$stage/libexec/stepwise/stepwise-plugin-host" ] || fail "no plugin host in $stage/libexec/stepwise"
 [ -f "$stage/share/man/man1/stepwise.1" ] || fail "no man page"
 head -5 "$stage/share/man/man1/stepwise.1" | grep -q '^\.TH STEPWISE 1' || fail "man page has no .TH line"
 for h in "$root"/include/stepwise/*.h; do

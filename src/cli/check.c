@@ -266,6 +266,12 @@ int sw_cmd_check(int argc, char **argv)
         if (sw_assignment_read(&assignment, a.assignment, err, sizeof err) != SW_OK)
             return fail_usage(&a, "%s", err);
         a.req.assignment = &assignment;
+        char why[200], msg[300];
+        if (!sw_assignment_kind_ok(&assignment, plugin_run, why, sizeof why)) {
+            snprintf(msg, sizeof msg, "%s: %s", why, plugin_run ? "give the trace you recorded"
+                     : "give --plugin FILE (your .c or .so)");
+            return fail_usage(&a, "check: %s", msg);
+        }
     }
     if (plugin_run) {
         int rc = plugin_form(&a);

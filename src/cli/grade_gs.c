@@ -56,14 +56,18 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
 {
     /* The submission's score is its best graded file's: a student who
      * uploads a draft beside the answer is not marked down for it. */
+    /* Only the kind the homework asks for is ever counted. */
     int best = -1;
+    char other[200];
     for (int i = 0; i < l->n; i++)
-        if (best < 0 || l->items[i].score.score > l->items[best].score.score)
+        if (sw_assignment_kind_ok(a, l->items[i].plugin, other, sizeof other) &&
+            (best < 0 || l->items[i].score.score > l->items[best].score.score))
             best = i;
     sw_score none;
     char why[300];
-    snprintf(why, sizeof why, "no submission to grade: upload a trace (.trace, .csv) or a plugin "
-             "(.c, .so)%s", l->ignored ? "; the files uploaded are listed in the output" : "");
+    snprintf(why, sizeof why, "no submission to grade: upload %s%s", sw_assignment_wanted(a),
+             l->n > 0 ? "; the files uploaded are not what this homework asks for"
+             : l->ignored ? "; the files uploaded are listed in the output" : "");
     sw_score_facts facts = { .is_plugin = 0, .usable = 0, .error = why };
     sw_points_score(&a->points, &facts, &none);
     const sw_score *s = best >= 0 ? &l->items[best].score : &none;
@@ -84,7 +88,12 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
                     base_name(l->items[best].path), verdict_of(l->items[best].status));
         else
             fprintf(t, "0 of %g points: %s", s->max, why);
-        fprintf(t, ".\nPlugins run %s.\n", !jailed ? "without the jail (--no-sandbox, the teacher's choice: the "
+        fprintf(t, ".\n");
+        int ran_plugin = 0;
+        for (int i = 0; i < l->n; i++)
+            ran_plugin |= l->items[i].plugin && sw_assignment_kind_ok(a, 1, other, sizeof other);
+        if (ran_plugin) /* said only where a plugin ran */
+            fprintf(t, "Plugins run %s.\n", !jailed ? "without the jail (--no-sandbox, the teacher's choice: the "
                                                    "CPU, memory and time limits still hold)"
                 : sw_jail_kind_now() == SW_JAIL_UID ? "in stepwise's jail (a user of its own, seccomp, Landlock, limits)"
                                                     : "in stepwise's jail (namespaces, seccomp, Landlock, limits)");

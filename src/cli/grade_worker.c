@@ -160,6 +160,21 @@ int grade_worker(void *ctx, int in, int out)
     (void)in;
     const grade_job *job = ctx;
     forget_the_class(job);
+    char wrong_kind[200];
+    if (!sw_assignment_kind_ok(job->base->assignment, job->plugin, wrong_kind, sizeof wrong_kind)) {
+        /* the other kind of upload: nothing of it is built, run or read */
+        static grade_record other;
+        memset(&other, 0, sizeof other);
+        other.status = SW_VERDICT_FAIL;
+        other.failing_step = -1;
+        snprintf(other.message, sizeof other.message, "%s: not graded", wrong_kind);
+        snprintf(other.kind, sizeof other.kind, "wrong_kind");
+        /* scored out of what the homework pays for its own kind: one max for every row */
+        grade_zero_score(&other.score, job->base->assignment, job->base->assignment->kind == SW_KIND_PLUGIN,
+                         other.message);
+        sw_sandbox_write(out, &other, sizeof other);
+        return 0;
+    }
     if (job->plugin && job->argv) {
         start_clean(job); /* a plugin never runs from the grader's memory */
         static grade_record failed;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "stepwise/stepwise.h"
+#include "util/escape.h"
 #include "util/num.h"
 
 
@@ -140,6 +141,28 @@ static int read_methods(sw_assignment *a, char *err, size_t errlen)
     return SW_OK;
 }
 
+const char *sw_assignment_wanted(const sw_assignment *a)
+{
+    switch (a->kind) {
+    case SW_KIND_TRACE:
+        return "a trace (.trace, .csv)";
+    case SW_KIND_PLUGIN:
+        return "a plugin (.c, .so)";
+    case SW_KIND_ANY:
+        break;
+    }
+    return "a trace (.trace, .csv) or a plugin (.c, .so)";
+}
+
+int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, char *why, size_t whylen)
+{
+    if (a->kind == SW_KIND_ANY || (a->kind == SW_KIND_PLUGIN) == (is_plugin != 0))
+        return 1;
+    snprintf(why, whylen, "this homework asks for %s, not %s", sw_assignment_wanted(a),
+             is_plugin ? "a plugin" : "a trace");
+    return 0;
+}
+
 int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t errlen)
 {
     memset(a, 0, sizeof *a);
@@ -159,6 +182,19 @@ int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t err
         where(a, x->line, at, sizeof at);
         if (strcmp(x->key, "title") == 0)
             snprintf(a->title, sizeof a->title, "%.*s", (int)sizeof a->title - 1, x->value);
+        else if (strcmp(x->key, "kind") == 0) {
+            if (strcmp(x->value, "trace") == 0)
+                a->kind = SW_KIND_TRACE;
+            else if (strcmp(x->value, "plugin") == 0)
+                a->kind = SW_KIND_PLUGIN;
+            else {
+                char shown[64];
+                sw_escape(x->value, 40, shown, sizeof shown);
+                snprintf(err, errlen, "%s: 'kind' is trace or plugin (what students hand in), not '%s'", at,
+                         shown);
+                rc = SW_EINVAL;
+            }
+        }
         else if (strcmp(x->key, "tolerance") == 0) {
             if (parse_rel_abs(x->value, &a->rtol, &a->atol) != SW_OK) {
                 snprintf(err, errlen, "%s: 'tolerance' wants REL[,ABS], e.g. 1e-9 or 1e-9,1e-12, "

@@ -31,6 +31,10 @@ typedef struct sw_coltols {
     int n;
 } sw_coltols;
 
+/* What a homework asks students to hand in ("# kind: trace" or "plugin");
+ * ANY when the assignment does not say. */
+typedef enum sw_assign_kind { SW_KIND_ANY = 0, SW_KIND_TRACE, SW_KIND_PLUGIN } sw_assign_kind;
+
 typedef struct sw_assignment {
     char path[SW_TRACE_PATH_MAX];
     sw_trace_meta meta;                       /* scene, parameters, dt, run, rk45 tolerances */
@@ -40,7 +44,15 @@ typedef struct sw_assignment {
     sw_coltols coltols;
     sw_points_set points;                     /* "# points" lines, or the defaults */
     char title[128];
+    sw_assign_kind kind;
 } sw_assignment;
+
+/* Whether a submission (a plugin, or a trace) is of the kind a asks for;
+ * when not, why says what it asks for, in one clause. */
+int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, char *why, size_t whylen);
+/* What to upload, for a message: "a trace (.trace, .csv)", "a plugin (.c,
+ * .so)" or both. */
+const char *sw_assignment_wanted(const sw_assignment *a);
 
 /* Read an assignment file (or a trace, whose header serves). 0 or an error
  * "FILE:LINE: what". */

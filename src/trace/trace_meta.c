@@ -76,7 +76,8 @@ static int extra_key(sw_trace_reader *r, const char *key, const char *value, cha
 static int is_assignment_key(const char *key)
 {
     return strcmp(key, "tolerance") == 0 || strncmp(key, "tolerance ", 10) == 0 ||
-           strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0 || strncmp(key, "points ", 7) == 0;
+           strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0 || strcmp(key, "kind") == 0 ||
+           strncmp(key, "points ", 7) == 0;
 }
 
 /* One "# key: value" line (r->buf). */

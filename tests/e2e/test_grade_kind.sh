@@ -1,0 +1,62 @@
+#!/bin/sh
+# An assignment's kind (issue 36): "# kind: plugin" grades plugins only and
+# "# kind: trace" traces only. The other kind of upload scores 0 with one
+# line saying what the homework asks for, out of the same max as every
+# row, and is never the file a Gradescope submission counts: a trace made
+# with `stepwise record` beside a plugin that does not compile scores 0,
+# not the trace's points. An empty upload is told the kind asked for only.
+. "$(dirname "$0")/lib.sh"
+needs_jail
+json="$ROOT/tests/e2e/json.awk"
+base='# stepwise assignment 1
+# scene: chain
+# param n: 4
+# integrator: rk4
+# dt: 0.005
+# steps: 400
+# points x* y*: 4
+# points vx* vy*: 1'
+{ echo "$base" | head -1; echo "# kind: plugin"; echo "$base" | tail -n +2; } > plugin-hw.txt
+{ echo "$base" | head -1; echo "# kind: trace"; echo "$base" | tail -n +2; } > trace-hw.txt
+{ echo "$base" | head -1; echo "# kind: spreadsheet"; echo "$base" | tail -n +2; } > bad-hw.txt
+"$SW" record chain --set n=4 -i rk4 --dt 0.005 --steps 400 -o good.trace >/dev/null 2>&1 || fail "record"
+sed "s/@NAME@/honest/" "$ROOT/tests/hostile/honest-rk4.c" > honest.c
+printf '#include <stepwise/integrator.h>\nint broken = ;\n' > broken.c
+
+# an unknown kind is refused with what is allowed
+"$SW" grade --assignment bad-hw.txt good.trace > out 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "'kind' is trace or plugin" out || fail "bad kind: exit $rc: $(cat out)"
+
+# grade: each kind where it belongs
+mkdir class
+cp good.trace honest.c class/
+"$SW" grade --assignment plugin-hw.txt --csv p.csv class > out 2>&1
+grep -q "good.trace,fail,,\"this homework asks for a plugin (.c, .so), not a trace: not graded\"" p.csv ||
+    fail "plugin homework: the trace's row: $(cat p.csv)"
+grep -q "honest.c,pass," p.csv || fail "plugin homework: the plugin's row: $(cat p.csv)"
+maxes=$(awk -F, 'NR > 1 { print $NF }' p.csv | sort -u | tr -d '\r')
+[ "$maxes" = 5 ] || fail "plugin homework: not one max for every row: $maxes"
+"$SW" grade --assignment trace-hw.txt --csv t.csv class > out 2>&1
+grep -q "honest.c,fail,,\"this homework asks for a trace (.trace, .csv), not a plugin: not graded\"" t.csv ||
+    fail "trace homework: the plugin's row: $(cat t.csv)"
+grep -q "good.trace,pass," t.csv || fail "trace homework: the trace's row: $(cat t.csv)"
+
+# check refuses the other kind, saying what to give
+"$SW" check good.trace --assignment plugin-hw.txt > out 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "asks for a plugin (.c, .so), not a trace: give --plugin FILE" out ||
+    fail "check, trace on a plugin homework: exit $rc: $(cat out)"
+
+# Gradescope: a recorded trace beside a plugin that does not compile is 0
+mkdir sub
+cp good.trace broken.c sub/
+"$SW" grade --assignment plugin-hw.txt --gradescope r.json sub > out 2>&1
+awk -f "$json" r.json > flat || fail "results.json does not parse"
+grep -qx "score=0" flat || fail "the trace was counted on a plugin homework: $(grep '^score=\|^output=' flat)"
+grep -q "^output=.*0 of 5 points for broken.c" flat || fail "the counted file is not the plugin: $(grep '^output=' flat)"
+# an empty upload is told the kind asked for, and only that
+mkdir empty
+"$SW" grade --assignment plugin-hw.txt --gradescope e.json empty > out 2>&1
+awk -f "$json" e.json > flat || fail "results.json (empty) does not parse"
+grep -q "^output=.*upload a plugin (.c, .so)" flat || fail "empty upload: $(grep '^output=' flat)"
+grep -q "^output=.*trace" flat && fail "empty upload on a plugin homework is told about traces: $(grep '^output=' flat)"
+echo ok

@@ -4,7 +4,7 @@
  * maker said (a scene and its parameters, or a 2x2 test system). The
  * stepper asks for a run of steps at once and serves the steps from what
  * came back, while each call asks for exactly the state, time and step the
- * host ran ahead from (the runs grow 1, 2, 4, ... up to a bound, and start
+ * host ran ahead from (the runs grow 1, 4, 16, ... up to a bound, and start
  * again at 1 when the caller goes elsewhere: contact, an event, a reset).
  * No round trip per step. Invariant: every number read is checked before
  * it is used; the host's derivative at the start of each run is compared
@@ -26,9 +26,11 @@
 #include "engine/linear2.h"
 #include "stepwise/scene.h"
 
-/* The longest run asked for, and the most bytes of states one may bring. */
-#define BATCH_MAX 64
+/* The longest run asked for, the most bytes of states one may bring, and
+ * how much longer each run is than the last while the caller keeps up. */
+#define BATCH_MAX SW_HOST_BATCH_MAX
 #define BATCH_BYTES ((size_t)8 << 20)
+#define BATCH_GROWTH 4
 
 static const char *const ode_fields[] = SW_HOST_ODE_FIELDS;
 
@@ -459,7 +461,7 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
         /* a miss, or the run is used up: run again from here */
         int continues = b->used == b->have && b->have > 0 && !b->ended && !b->pending && box_hit(b, ode, *t, y, h);
         int keep = b->used < b->ran ? b->used : -1;
-        b->batch = continues ? (b->batch * 2 < b->batch_cap ? b->batch * 2 : b->batch_cap) : 1;
+        b->batch = continues ? (b->batch * BATCH_GROWTH < b->batch_cap ? b->batch * BATCH_GROWTH : b->batch_cap) : 1;
         if (b->pending) {
             /* it died ahead of the caller, in a step never asked for: a new host */
             b->pending = 0;

@@ -179,6 +179,68 @@ START_TEST(score_by_check)
 }
 END_TEST
 
+/* Graded closeness: tiers parsed, refused when they do not widen or are
+ * not for columns, and scored from each column's largest difference as
+ * |got - expected| / (1 + |expected|) (the figures below are set by hand:
+ * 4e-7 is within 1e-6 and misses 1e-9 by a factor of 400). */
+START_TEST(closeness_tiers)
+{
+    sw_points_set set = { 0 };
+    char err[400];
+    ck_assert_int_eq(sw_points_parse(&set, "x* y*", "3 within 1e-9, 2 within 1e-6, 1 within 1e-3", 1, "a:1",
+                                     err, sizeof err), SW_OK);
+    ck_assert_int_eq(set.items[0].ntiers, 3);
+    ck_assert(set.items[0].points == 3 && set.items[0].tier_within[1] == 1e-6);
+    sw_points_set bad = { 0 };
+    ck_assert_int_eq(sw_points_parse(&bad, "x*", "2 within 1e-6, 3 within 1e-3", 2, "a:2", err, sizeof err),
+                     SW_EINVAL); /* points grow */
+    ck_assert_ptr_nonnull(strstr(err, "a:2"));
+    ck_assert_int_eq(sw_points_parse(&bad, "x*", "3 within 1e-3, 2 within 1e-6", 2, "a:2", err, sizeof err),
+                     SW_EINVAL); /* tolerances narrow */
+    ck_assert_int_eq(sw_points_parse(&bad, "x*", "3 within 0", 2, "a:2", err, sizeof err), SW_EINVAL);
+    ck_assert_int_eq(sw_points_parse(&bad, "x*", "3 within 1e-9, 2 within", 2, "a:2", err, sizeof err),
+                     SW_EINVAL);
+    ck_assert_int_eq(sw_points_parse(&bad, "header", "1 within 1e-9", 2, "a:2", err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "tiers ('within') are for columns"));
+    ck_assert_int_eq(bad.n, 0);
+    sw_system sys;
+    const sw_scene *spring = sw_scene_find("spring");
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(spring, p);
+    ck_assert_int_eq(sw_system_build(&sys, spring, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_points_resolve(&set, &sys, "a", err, sizeof err), SW_OK);
+    long failed[7] = { 0, 0, 5, 0, 0, 0, 0 };
+    sw_check_cell first[7];
+    memset(first, 0, sizeof first);
+    double worst[7] = { 0, 0, 4e-7, 1e-12, 0.5, 0, 0 }; /* x0 4e-7, y0 1e-12; vx0 is no part of it */
+    sw_score_facts f = { .usable = 1, .comparable = 1, .sys = &sys, .col_failed = failed, .col_first = first,
+                         .col_worst = worst, .order = NAN, .expected_order = NAN, .stability = NAN,
+                         .expected_stability = NAN };
+    sw_score s;
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[0].score == 2 && s.checks[0].max == 3);
+    ck_assert_ptr_nonnull(strstr(s.checks[0].output, "within 1e-06"));
+    ck_assert_ptr_nonnull(strstr(s.checks[0].output, "missed by a factor of 400"));
+    worst[2] = 0;
+    worst[3] = 0;
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[0].score == 3);
+    ck_assert_ptr_nonnull(strstr(s.checks[0].output, "exactly"));
+    worst[2] = INFINITY; /* a non-finite value where the reference has a number */
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[0].score == 0);
+    ck_assert_ptr_nonnull(strstr(s.checks[0].output, "beyond every tier"));
+    worst[2] = 1e-3; /* on the widest tier's edge: inside */
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[0].score == 1);
+    f.rows_differ = 1; /* rows missing: nothing for the group */
+    f.rows_words = "the trace ends at step 10";
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[0].score == 0);
+    sw_system_free(&sys);
+}
+END_TEST
+
 /* ---- the zip writer ------------------------------------------------------------ */
 
 START_TEST(crc32_check_value)
@@ -241,6 +303,7 @@ Suite *make_points_suite(void)
     tcase_add_test(tc, points_in_assignments);
     tcase_add_test(tc, until_is_steps);
     tcase_add_test(tc, score_by_check);
+    tcase_add_test(tc, closeness_tiers);
     tcase_add_test(tc, crc32_check_value);
     tcase_add_test(tc, zip_layout);
     suite_add_tcase(s, tc);

@@ -84,6 +84,12 @@ static void compare_row(sw_check_result *res, const double *e, const double *g, 
         }
         if (c == 0)
             continue;
+        if (tol->col_worst) {
+            double d = e[c] == g[c] || (isnan(e[c]) && isnan(g[c])) ? 0.0
+                       : isfinite(e[c]) && isfinite(g[c]) ? fabs(g[c] - e[c]) / (1 + fabs(e[c])) : INFINITY;
+            if (!(d <= tol->col_worst[c]))
+                tol->col_worst[c] = d;
+        }
         if (!(cell.abs_err <= res->max_abs))
             res->max_abs = cell.abs_err;
         if (!(cell.rel_err <= res->max_rel))

@@ -63,6 +63,9 @@ typedef struct sw_check_tol {
     const unsigned char *ignore; /* ncols, or NULL */
     long *col_failed;           /* ncols, or NULL: failures per column (zeroed by the caller) */
     sw_check_cell *col_first;   /* ncols, or NULL: each column's first failure */
+    double *col_worst;          /* ncols, or NULL: each column's largest |got - expected| /
+                                 * (1 + |expected|), the least tolerance (rtol = atol) it passes
+                                 * (inf where a non-finite value differs; zeroed by the caller) */
 } sw_check_tol;
 
 typedef struct sw_check_result {

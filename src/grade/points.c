@@ -33,6 +33,31 @@ int sw_points_has_column(const sw_points *p, const char *column)
     return 0;
 }
 
+/* "N1 within T1, N2 within T2, ...": 0 with p's tiers, or -1. */
+static int parse_tiers(sw_points *p, const char *value)
+{
+    char text[256], *save = NULL;
+    if (strlen(value) >= sizeof text)
+        return -1;
+    snprintf(text, sizeof text, "%s", value);
+    for (char *part = strtok_r(text, ",", &save); part; part = strtok_r(NULL, ",", &save)) {
+        char *at = strstr(part, " within ");
+        if (!at || p->ntiers == SW_TIERS_MAX)
+            return -1;
+        *at = '\0';
+        double n, within;
+        if (sw_parse_double(part, &n) != SW_OK || sw_parse_double(at + 8, &within) != SW_OK ||
+            !(n >= 0 && n <= SW_POINTS_LIMIT) || !(within > 0 && within <= 1))
+            return -1;
+        if (p->ntiers > 0 && !(within > p->tier_within[p->ntiers - 1] && n <= p->tier_points[p->ntiers - 1]))
+            return -1;
+        p->tier_points[p->ntiers] = n;
+        p->tier_within[p->ntiers] = within;
+        p->ntiers++;
+    }
+    return p->ntiers > 0 ? 0 : -1;
+}
+
 int sw_points_parse(sw_points_set *set, const char *what, const char *value, long line,
                     const char *where, char *err, size_t errlen)
 {
@@ -45,7 +70,18 @@ int sw_points_parse(sw_points_set *set, const char *what, const char *value, lon
     sw_points *p = &set->items[set->n];
     memset(p, 0, sizeof *p);
     double v;
-    if (sw_parse_double(value, &v) != SW_OK || !(v >= 0 && v <= SW_POINTS_LIMIT)) {
+    if (strstr(value, "within")) {
+        int columns = strcmp(what, "header") != 0 && strcmp(what, "order") != 0 && strcmp(what, "stability") != 0;
+        if (!columns || parse_tiers(p, value) != 0) {
+            snprintf(err, errlen, "%s: 'points %.40s' %s, not '%.60s'", where, what,
+                     columns ? "wants tiers 'N within T, ...': points from 0 to 1000 each, tolerances T in "
+                               "(0, 1] widening and points not growing, e.g. '3 within 1e-9, 2 within 1e-6, "
+                               "1 within 1e-3' (at most 4)"
+                             : "takes a number of points: tiers ('within') are for columns", value);
+            return SW_EINVAL;
+        }
+        v = p->tier_points[0];
+    } else if (sw_parse_double(value, &v) != SW_OK || !(v >= 0 && v <= SW_POINTS_LIMIT)) {
         snprintf(err, errlen, "%s: 'points %.40s' wants a number of points from 0 to %g, not "
                  "'%.40s'", where, what, SW_POINTS_LIMIT, value);
         return SW_EINVAL;
@@ -76,8 +112,8 @@ int sw_points_resolve(sw_points_set *set, const sw_system *sys, const char *path
                       size_t errlen)
 {
     if (set->n == 0) {
-        set->items[0] = (sw_points){ SW_POINTS_HEADER, "header", 1, 0 };
-        set->items[1] = (sw_points){ SW_POINTS_COLUMNS, "*", 1, 0 };
+        set->items[0] = (sw_points){ .kind = SW_POINTS_HEADER, .what = "header", .points = 1 };
+        set->items[1] = (sw_points){ .kind = SW_POINTS_COLUMNS, .what = "*", .points = 1 };
         set->n = 2;
         return SW_OK;
     }
@@ -132,6 +168,48 @@ static void give(sw_score_check *c, int pass, const char *fmt, const char *a, co
     snprintf(c->output, sizeof c->output, fmt, a ? a : "", b ? b : "");
 }
 
+/* Graded closeness: the largest difference over the group's columns, as
+ * |got - expected| / (1 + |expected|), against each tier in turn. */
+static void score_tiers(const sw_points *p, const sw_score_facts *f, sw_score_check *c)
+{
+    int ncols = sw_trace_ncols(f->sys);
+    double worst = 0;
+    char name[32];
+    for (int col = 1; col < ncols; col++) {
+        sw_trace_colname(f->sys, col, name, sizeof name);
+        if (sw_points_has_column(p, name) && !(f->col_worst[col] <= worst))
+            worst = f->col_worst[col]; /* NaN and inf: beyond every tier */
+    }
+    const char *group = strcmp(p->what, "*") == 0 ? "the run" : p->what;
+    char w[40], t[40];
+    snprintf(w, sizeof w, "%.3g", worst);
+    int k = 0;
+    while (k < p->ntiers && !(worst <= p->tier_within[k]))
+        k++;
+    if (k == p->ntiers) {
+        sw_fmt_shortest(t, sizeof t, p->tier_within[k - 1]);
+        snprintf(c->output, sizeof c->output, "%s differs from the reference by up to %s (|got - expected| / "
+                 "(1 + |expected|)): beyond every tier, the widest 'within %s'", group, w, t);
+        c->score = 0;
+        return;
+    }
+    c->score = p->tier_points[k];
+    sw_fmt_shortest(t, sizeof t, p->tier_within[k]);
+    if (worst == 0)
+        snprintf(c->output, sizeof c->output, "every value of %s matches the reference exactly: tier 'within %s', "
+                 "%g of %g points", group, t, c->score, c->max);
+    else
+        snprintf(c->output, sizeof c->output, "%s within %s of the reference (the largest difference %s, as "
+                 "|got - expected| / (1 + |expected|)): %g of %g points", group, t, w, c->score, c->max);
+    if (k > 0) {
+        char next[40];
+        sw_fmt_shortest(next, sizeof next, p->tier_within[k - 1]);
+        size_t used = strlen(c->output);
+        snprintf(c->output + used, sizeof c->output - used, "; 'within %s' (%g points) missed by a factor of %.3g",
+                 next, p->tier_points[k - 1], worst / p->tier_within[k - 1]);
+    }
+}
+
 static void score_columns(const sw_points *p, const sw_score_facts *f, sw_score_check *c)
 {
     int ncols = sw_trace_ncols(f->sys);
@@ -157,6 +235,10 @@ static void score_columns(const sw_points *p, const sw_score_facts *f, sw_score_
     if (!f->comparable) {
         give(c, 0, "not compared: the trace has other columns than the assignment's run%s%s",
              NULL, NULL);
+        return;
+    }
+    if (p->ntiers > 0 && f->col_worst && !f->rows_differ) {
+        score_tiers(p, f, c);
         return;
     }
     if (failed == 0 && !f->rows_differ) {

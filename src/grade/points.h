@@ -1,7 +1,8 @@
 /* Partial credit: the checks an assignment gives points for ("# points
  * header: 1", "# points x* y*: 3", "# points energy: 1", "# points order:
  * 1") and a submission's score on each, with the words that say why. A
- * check scores all its points or none; the score is the sum. */
+ * check scores all its points or none, or for columns the points of the
+ * closest tier it reaches; the score is the sum. */
 #ifndef SW_GRADE_POINTS_H
 #define SW_GRADE_POINTS_H
 
@@ -20,12 +21,20 @@ typedef enum sw_points_kind {
     SW_POINTS_STABILITY           /* a plugin's measured stability limit is the method's */
 } sw_points_kind;
 
-/* One "# points WHAT: N" line. */
+/* Graded closeness: at most this many tiers on a columns line. */
+#define SW_TIERS_MAX 4
+
+/* One "# points WHAT: N" line; a columns line may give tiers instead,
+ * "N1 within T1, N2 within T2, ...": N1 points when every value of the
+ * columns is within T1 (|got - expected| <= T1 + T1·|expected|), else N2
+ * within T2, and so on (tolerances widening, points not growing). */
 typedef struct sw_points {
     sw_points_kind kind;
     char what[48];                /* "header", "x* y*", "energy", "order", "stability" */
-    double points;
+    double points;                /* the most it gives (the first tier's) */
     long line;                    /* the assignment's line; 0 for the defaults */
+    int ntiers;                   /* 0: all or nothing at the assignment's tolerance */
+    double tier_points[SW_TIERS_MAX], tier_within[SW_TIERS_MAX];
 } sw_points;
 
 typedef struct sw_points_set {
@@ -36,7 +45,8 @@ typedef struct sw_points_set {
 /* Parse "# points WHAT: VALUE" (what without the "points " prefix) into
  * set; where ("FILE:LINE") names it in errors. WHAT is header, order,
  * stability, or column names and prefixes ending in '*' separated by
- * spaces; VALUE a number in [0, SW_POINTS_LIMIT]. 0 or SW_EINVAL. */
+ * spaces; VALUE a number in [0, SW_POINTS_LIMIT], or for columns tiers
+ * "N within T, ..." (T in (0, 1]). 0 or SW_EINVAL. */
 int sw_points_parse(sw_points_set *set, const char *what, const char *value, long line,
                     const char *where, char *err, size_t errlen);
 /* Every group's columns exist in sys and no column is in two groups; an
@@ -75,6 +85,7 @@ typedef struct sw_score_facts {
     const sw_system *sys;         /* the columns */
     const long *col_failed;       /* ncols failures per column */
     const sw_check_cell *col_first; /* ncols: the first failure of each column */
+    const double *col_worst;      /* ncols, or NULL: each column's largest |got - expected| / (1 + |expected|) */
     const char *explanation;      /* the explainer's sentence, or NULL */
     double order, expected_order; /* NaN: not measured */
     double stability, expected_stability;

@@ -169,6 +169,7 @@ typedef struct tol_arrays {
     unsigned char *ignore;
     long *col_failed;
     sw_check_cell *col_first;
+    double *col_worst;
     sw_check_tol tol;
 } tol_arrays;
 
@@ -194,12 +195,13 @@ static int make_tol(const sw_check_request *req, const sw_system *sys, sw_verdic
     t->ignore = (unsigned char *)(t->rtol + 2 * n);
     t->col_failed = calloc((size_t)n, sizeof *t->col_failed);
     t->col_first = calloc((size_t)n, sizeof *t->col_first);
-    if (!t->col_failed || !t->col_first) {
+    t->col_worst = calloc((size_t)n, sizeof *t->col_worst);
+    if (!t->col_failed || !t->col_first || !t->col_worst) {
         snprintf(v->error, sizeof v->error, "out of memory for %d columns", n);
         return SW_ENOMEM;
     }
     t->tol = (sw_check_tol){ v->rtol, v->atol, t->rtol, t->atol, t->ignore, t->col_failed,
-                             t->col_first };
+                             t->col_first, t->col_worst };
     return sw_coltol_resolve(&all, sys, v->rtol, v->atol, t->rtol, t->atol, t->ignore, v->error,
                              sizeof v->error);
 }
@@ -209,6 +211,7 @@ static void free_tol(tol_arrays *t)
     free(t->rtol);
     free(t->col_failed);
     free(t->col_first);
+    free(t->col_worst);
 }
 
 /* ---- points ------------------------------------------------------------------ */
@@ -260,6 +263,7 @@ static void score(sw_verdict *v, const sw_check_request *req, const sw_system *s
         .sys = sys,
         .col_failed = t ? t->col_failed : NULL,
         .col_first = t ? t->col_first : NULL,
+        .col_worst = t ? t->col_worst : NULL,
         .explanation = v->have_explanation ? v->explanation.message : NULL,
         .order = v->have_measure ? v->order : NAN,
         .expected_order = ref ? (double)ref->order : NAN,

@@ -306,10 +306,15 @@ int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *u
     int rc;
     *uid = UID_BASE + (unsigned)getpid() % UID_RANGE;
     sw_jail_uid_dir(getpid(), dir, dirlen);
-    if (mkdir(dir, 0700) != 0 && errno == EEXIST) /* a jail of an earlier process of this pid, killed */
+    /* made here or not at all: a path someone else made is never taken
+     * (removed once: a jail of an earlier process of this pid, killed) */
+    if (mkdir(dir, 0700) != 0) {
+        if (errno != EEXIST)
+            return fail_at(step, "making the jail's directory", errno);
         sw_tmpdir_remove(dir);
-    if (mkdir(dir, 0700) != 0 && errno != EEXIST)
-        return fail_at(step, "making the jail's directory", errno);
+        if (mkdir(dir, 0700) != 0)
+            return fail_at(step, "making the jail's directory", errno);
+    }
     snprintf(uid_dir, sizeof uid_dir, "%s", dir);
     char work[600], inc[600];
     snprintf(work, sizeof work, "%s/work", dir);
@@ -329,6 +334,8 @@ int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *u
             (rc = copy_headers(spec->include_fd, stepwise)) != 0)
             return fail_at(step, "copying stepwise's headers", rc ? rc : errno);
     }
+    if (chown(work, *uid, *uid) != 0 && errno == EINVAL) /* not mapped here: nobody */
+        *uid = 65534;
     if (chown(work, *uid, *uid) != 0)
         return fail_at(step, "giving the jail's user its directory", errno);
     if (chdir(work) != 0)

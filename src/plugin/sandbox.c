@@ -27,8 +27,8 @@
 
 #include "stepwise/stepwise.h"
 #include "util/fds.h"
-#include "util/tmpdir.h"
 #include "util/signals.h"
+#include "util/tmpdir.h"
 
 
 static void set_limit(int resource, rlim_t value)

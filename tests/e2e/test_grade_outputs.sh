@@ -107,7 +107,7 @@ awk '{ sub(/^"/, ""); c = substr($0, 1, 1) } c == "=" || c == "+" || c == "-" ||
 LC_ALL=C grep -q "$(printf '\033')" out g.csv r.json && fail "an escape byte reached the table, CSV or JSON"
 grep -q 'x\\x1b\[2Jfake' out || fail "the table does not show the escaped name: $(cat out)"
 grep -q '^grading 3 submissions against ref.trace .*; [0-9]* other entries not graded' out || fail "heading: $(head -1 out)"
-grep -q "other entries not graded, in .*the grader's limits" out || fail "totals: $(tail -1 out)"
+grep -q "other entries not graded, in .*the limits per submission" out || fail "totals: $(tail -1 out)"
 awk -f "$json" r.json > fields || fail "results.json is not JSON"
 # Three traces with two checks each (header, values), the skipped entries one.
 grep -qx "max_score=$((entries + 3))" fields || fail "results.json max_score: $(grep max_score fields)"

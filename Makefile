@@ -182,7 +182,9 @@ bench:
 	./$(BENCHBIN)
 	@if command -v valgrind >/dev/null 2>&1; then echo; echo "instructions per particle-step (callgrind):"; \
 	    sh bench/instructions.sh ./$(BENCHBIN); else echo "instructions per particle-step: skipped (no valgrind)"; fi
-	@$(MAKE) --no-print-directory $(BIN)
+	@$(MAKE) --no-print-directory $(BIN) $(HOST)
+	@echo; echo "one honest plugin, measured, jailed and not (bench/plugin_cost.sh):"
+	@bash bench/plugin_cost.sh ./$(BIN) 5
 	@echo; echo "grading a class of 120, jailed and not (bench/grade_class.sh):"
 	@sh bench/grade_class.sh ./$(BIN) 120 3
 	@echo; echo "grading 100 passing traces, CPU time (bench/grade_traces.sh):"

@@ -117,8 +117,10 @@ check_terminal_sane() {
     wait_for 'PROMPT\$' || fail "no prompt after $1"
     # the marker is computed by the shell, so the typed command line cannot match it
     type_cmd "stty -a | tr ' ;' '\n\n' | grep -E '^-?(icanon|echo|isig)$' | tr '\n' ' '; echo STTY-\$((40+2))"
-    wait_for 'STTY-42$' || fail "stty did not answer after $1"
-    s=$(screen | grep -E 'icanon' | tail -1)
+    # the answer is read from the capture that shows it (a later one may
+    # come after the shell repainted, on a loaded machine)
+    stty_line() { s=$(screen | grep -E 'icanon.*STTY-42$' | tail -1); [ -n "$s" ]; }
+    wait_until 30 stty_line || fail "stty did not answer after $1"
     case "$s" in
         *-icanon*|*-echo\ *|*-isig*) fail "terminal left raw after $1: $s" ;;
     esac

@@ -30,7 +30,7 @@ static const char play_help[] =
     "      --dt H              step size (default: the scene's)\n"
     "  -s, --set PARAM=VALUE   set a scene parameter (repeatable; see stepwise describe)\n"
     "      --plugin FILE       add a student integrator (.so, or .c built for you) built\n"
-    "                          against <stepwise/integrator.h>; it runs in a child process\n"
+    "                          against <stepwise/integrator.h>; it runs jailed, apart\n"
     "      --compare           start with compare on;  --ghost  with the ghost on\n"
     "      --frames N          with --ascii: print N frames (1/60 s each) and exit\n"
     "      --ascii             print frames as plain text instead of opening the terminal UI\n"

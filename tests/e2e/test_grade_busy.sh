@@ -6,7 +6,8 @@
 # gradebooks must give every student the same verdict and score, and no
 # honest plugin may end at a limit: --cpu counts a submission's own
 # processes only, and the wall clock is a guard, not a measure. (No time
-# is asserted: the loaded run only has to give the same answers.)
+# is asserted: the loaded run only has to give the same answers.) -j 1
+# gives the same gradebook, error rows included.
 . "$(dirname "$0")/lib.sh"
 needs_jail
 cat > assignment.txt <<'A'
@@ -33,11 +34,20 @@ done
 sed "s/@NAME@/wrong-1/; s/sw_ode_eval(ode, t + 0.5 \* h, tmp, k3);/sw_ode_eval(ode, t + 0.5 * h, tmp, k3); for (int i = 0; i < n; i++) k3[i] = k2[i];/" \
     "$ROOT/tests/hostile/honest-rk4.c" > class/wrong1.c
 cp "$ROOT/examples/euler_plugin.c" class/euler.c
-grade() {
-    "$SW" grade --assignment assignment.txt -j 2 --csv "$1" class > "$1.out" 2>&1
+# error rows: one that does not compile, one with no sw_plugin_info
+printf '#include <stepwise/integrator.h>\nint broken = ;\n' > class/bad.c
+printf '#include <stepwise/integrator.h>\nint nothing;\n' > class/nosym.c
+grade() { # CSV [JOBS]
+    "$SW" grade --assignment assignment.txt -j "${2:-2}" --csv "$1" class > "$1.out" 2>&1
     [ $? -le 1 ] || fail "grade ($1) did not finish: $(cat "$1.out")"
 }
 grade idle.csv
+# -j 1 gives the same gradebook byte for byte, error rows included: they
+# name the student's file, never the grader's temporary build
+grade one.csv 1
+cmp -s idle.csv one.csv || fail "-j 1 and -j 2 gradebooks differ: $(diff idle.csv one.csv)"
+grep -q "bad.c' does not compile (.*): bad.c:2:" idle.csv || fail "the compile error does not name bad.c: $(grep bad idle.csv)"
+grep -q 'stepwise-grade-\|/tmp/' idle.csv && fail "a row names a temporary path: $(grep 'stepwise-grade-\|/tmp/' idle.csv)"
 busy=""
 trap 'kill $busy 2>/dev/null' EXIT
 for core in 1 2; do

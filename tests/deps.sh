@@ -15,12 +15,12 @@ if [ "$(id -u)" = 0 ]; then
 elif have sudo && sudo -n true 2>/dev/null; then
     sudo="sudo"
 else
-    echo "stepwise: missing build dependencies; install them with:" >&2
-    echo "    sudo apt-get install -y $pkgs" >&2
+    echo "stepwise: missing build dependencies; install them as root (su -c, or sudo) with:" >&2
+    echo "    apt-get install -y $pkgs" >&2
     exit 1
 fi
 echo "stepwise: installing $pkgs" >&2
 $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $pkgs >/dev/null || {
-    echo "stepwise: apt-get install failed; run: sudo apt-get install -y $pkgs" >&2
+    echo "stepwise: apt-get install failed; run as root: apt-get install -y $pkgs" >&2
     exit 1
 }

@@ -65,8 +65,7 @@ const char *const sw_jail_system_dirs[] = { "/usr", "/bin", "/sbin", "/lib", "/l
 
 int sw_jail_unshare(const char **step)
 {
-    *step = "unshare(CLONE_NEWUSER | CLONE_NEWNS | CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWIPC | "
-            "CLONE_NEWUTS)";
+    *step = "unshare(CLONE_NEWUSER and the other namespaces)";
     if (unshare(CLONE_NEWUSER | CLONE_NEWNS | CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWIPC | CLONE_NEWUTS |
                 CLONE_NEWCGROUP) != 0)
         return errno;

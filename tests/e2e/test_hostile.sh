@@ -286,6 +286,17 @@ if [ "$(id -u)" = 0 ]; then
 else
     MODES=self
 fi
+# A pass whose user can build no jail (root can, but unprivileged user
+# namespaces are refused: a chroot, a container) says so and is left out.
+case " $MODES " in
+    *" user "*)
+        if ! why=$(setpriv --reuid=swhostile --regid="$(id -g swhostile)" --clear-groups -- \
+                   env -i PATH="$PATH" "$SWB" autograder --probe 2>&1); then
+            echo "skip: the pass as swhostile: no jail for plugins can be built for an unprivileged user here: $why"
+            MODES=$(echo " $MODES " | sed 's/ user / /')
+        fi
+        ;;
+esac
 
 # runas MODE CMD...: CMD with a clean environment (HOME: the teacher's
 # home; a 10 s plugin watchdog; TMPDIR: $RUN_TMPDIR when set), as root,

@@ -84,7 +84,8 @@ void bench_stiff(int repeats, int quick);
  * n = 1e4 instead of 1e5). */
 void bench_frame_cost(int vortex_n, double target);
 void bench_heavy_views(int quick);
-/* One heavy view alone, for a profiler (bench_frame.c). */
+/* One heavy view alone, for a profiler or paired timings (bench_frame.c;
+ * `bench_engine --frame-view`). */
 void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds);
 
 /* The largest |a[i] - b[i]| over n, a NaN difference taken as the largest

@@ -499,6 +499,42 @@ static void machine(void)
                              : "on (malloc, calloc, realloc wrapped at link time)");
 }
 
+/* One heavy view of bench_frame.c alone, for paired timings and for
+ * callgrind (the difference between two SECONDS counts is the frames'
+ * cost alone): VIEW is "plain" or a '+'-joined list of compare, lanes,
+ * ghost, trails. 0, or 2 when an argument is not allowed. */
+static int frame_view(const char *scene, const char *n_text, const char *view, const char *seconds_text)
+{
+    char *n_end, *end;
+    long n = strtol(n_text, &n_end, 10);
+    double seconds = strtod(seconds_text, &end);
+    if (*n_end || *end || !(seconds > 0 && seconds <= 40) || n < 0 || n > 1000000 || !sw_scene_find(scene)) {
+        fprintf(stderr, "stepwise: --frame-view takes SCENE N VIEW SECONDS: a scene, n in [0, 1000000] "
+                "(0: the default), and seconds in (0, 40]\n");
+        return 2;
+    }
+    int compare = 0, ghost = 0, lanes = 0, trails = 0;
+    char words[64];
+    snprintf(words, sizeof words, "%s", view);
+    for (char *w = strtok(words, "+"); w; w = strtok(NULL, "+")) {
+        if (strcmp(w, "compare") == 0)
+            compare = 1;
+        else if (strcmp(w, "lanes") == 0)
+            compare = lanes = 1;
+        else if (strcmp(w, "ghost") == 0)
+            ghost = 1;
+        else if (strcmp(w, "trails") == 0)
+            trails = 1;
+        else if (strcmp(w, "plain") != 0) {
+            fprintf(stderr, "stepwise: --frame-view: unknown view '%.40s'; allowed: plain, or compare, lanes, "
+                    "ghost, trails joined by '+'\n", w);
+            return 2;
+        }
+    }
+    bench_heavy_one(scene, (int)n, compare, ghost, lanes, trails, seconds);
+    return 0;
+}
+
 static int bench_engine_main(int argc, char **argv)
 {
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
@@ -515,6 +551,8 @@ static int bench_engine_main(int argc, char **argv)
                                strcmp(argv[i + 5], "base") == 0);
         if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
             return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
+        if (strcmp(argv[i], "--frame-view") == 0 && i + 4 < argc)
+            return frame_view(argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 4]);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;
@@ -563,7 +601,8 @@ static int bench_engine_main(int argc, char **argv)
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
                     "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
-                    "--peer-chain N, --peer-vortex N, --peer-only SCENE\n", argv[i]);
+                    "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE N VIEW SECONDS\n",
+                    argv[i]);
             return 2;
         }
     }

@@ -325,6 +325,7 @@ START_TEST(frames_compose)
     ck_assert(a.sims[0].blown);
     a.sims[1].sys.y[0] = NAN; /* non-finite values must reach the canvas harmlessly */
     a.sims[1].sys.y[1] = INFINITY;
+    sw_sim_state_changed(&a.sims[1]);
     a.braille = 1;
     t = compose_text(&a, 120, 40);
     ck_assert_ptr_nonnull(strstr(t, "BLOWN UP at step"));

@@ -1,13 +1,16 @@
 /* The sim: one running simulation, as every front end advances it. Its
  * contract: steps are deterministic (two sims agree bit for bit), a method
  * change keeps state and time, dt stays in its limits, runs land exactly on
- * their end time, counters count, reset really resets, and a blow-up stops
- * the sim with its step and time. */
+ * their end time, counters count, reset really resets, a blow-up stops
+ * the sim with its step and time, and the drift it keeps between steps is
+ * the one a fresh computation gives after every kind of change. */
 #include <check.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "stepwise/stepwise.h"
+#include "sim/history.h"
 
 static void sim_with(sw_sim *s, const char *scene, const char *method, double dt)
 {
@@ -166,6 +169,133 @@ START_TEST(adaptive_counts)
 }
 END_TEST
 
+/* The scene's drift worked out now, past the sim's cache. */
+static double fresh_drift(const sw_sim *s)
+{
+    return s->sys.scene->drift(&s->sys, s->sys.y);
+}
+
+/* Bit for bit, NaN included: the cache must return what was computed. */
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* After a change the sim's drift is the fresh one; when the change moved
+ * the drift (moved = 1) the value read before it (which filled the cache)
+ * must differ from the fresh one, or a missed invalidation would go unseen. */
+static void drift_after(const sw_sim *s, double before, int moved, const char *what)
+{
+    double fresh = fresh_drift(s), got = sw_sim_drift(s);
+    ck_assert_msg(same_bits(got, fresh), "%s on %s: the sim says %.17g, a fresh computation %.17g", what,
+                  s->sys.scene->name, got, fresh);
+    if (moved)
+        ck_assert_msg(!same_bits(before, fresh), "%s on %s did not move the drift (%.17g): the test would "
+                      "not see a stale value", what, s->sys.scene->name, fresh);
+}
+
+/* The drift a sim reports is worked out once per state and kept: after
+ * each kind of change (a step, a run, a new dt, method, tolerances or
+ * events mode, set_state, a rewind, a reset) it is bit for bit the scene's
+ * drift of the state now. Each check reads the drift just before the change,
+ * so the cache is full, and the changes that move the state are chosen so
+ * that the drift moves too: a missed invalidation shows as a mismatch. */
+START_TEST(drift_cache_follows_every_change)
+{
+    static const struct { const char *scene, *method; double dt; } runs[] = {
+        { "vortex", "euler", 0.05 },  /* flow: radius drift from each point's seed */
+        { "river", "euler", 0.05 },   /* flow: stream-function drift */
+        { "orbit", "euler", 0.01 },   /* one body: |L - L0| from the parameters */
+        { "galaxy", "euler", 0.01 },  /* N bodies: |L - L0| from the system's extra data */
+        { "orbit", "rk45", 0.1 },     /* adaptive: a step is one accepted step */
+    };
+    char err[SW_ERRLEN];
+    for (size_t r = 0; r < sizeof runs / sizeof runs[0]; r++) {
+        sw_sim s;
+        sw_history h;
+        sim_with(&s, runs[r].scene, runs[r].method, runs[r].dt);
+        ck_assert(s.sys.scene->drift != NULL);
+        sw_history_init(&h, &s);
+        ck_assert_int_gt(h.cap, 0);
+        sw_history_push(&h, &s);
+        int dim = s.sys.ode->dim;
+        double *y0 = malloc((size_t)dim * sizeof *y0);
+        ck_assert_ptr_nonnull(y0);
+        memcpy(y0, s.sys.y, (size_t)dim * sizeof *y0);
+
+        double before = sw_sim_drift(&s);
+        drift_after(&s, before, 0, "the start");
+        for (int k = 0; k < 5; k++) {
+            before = sw_sim_drift(&s);
+            ck_assert_int_eq(sw_sim_step(&s), 0);
+            sw_history_push(&h, &s);
+            drift_after(&s, before, 1, "a step");
+        }
+        const double t_back = s.t;
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_run_until(&s, s.t + 20 * runs[r].dt), 0);
+        sw_history_push(&h, &s);
+        drift_after(&s, before, 1, "a run");
+
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_set_dt(&s, runs[r].dt / 2, err, sizeof err), SW_OK);
+        drift_after(&s, before, 0, "set_dt");
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_step(&s), 0);
+        sw_history_push(&h, &s);
+        drift_after(&s, before, 1, "a step at the new dt");
+
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_set_method(&s, sw_integrator_find("rk4"), err, sizeof err), SW_OK);
+        drift_after(&s, before, 0, "set_method");
+        before = sw_sim_drift(&s);
+        sw_sim_set_tolerances(&s, 1e-8, 1e-10);
+        drift_after(&s, before, 0, "set_tolerances");
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_set_events(&s, SW_EVENTS_LOCATE, err, sizeof err), SW_OK);
+        drift_after(&s, before, 0, "set_events");
+
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_history_back_to(&h, &s, t_back), 1);
+        ck_assert_double_eq(s.t, t_back);
+        drift_after(&s, before, 1, "a rewind");
+
+        before = sw_sim_drift(&s);
+        sw_sim_set_state(&s, y0);
+        drift_after(&s, before, 1, "set_state");
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_step(&s), 0);
+        drift_after(&s, before, 1, "a step from the set state");
+
+        before = sw_sim_drift(&s);
+        ck_assert_int_eq(sw_sim_reset(&s, err, sizeof err), SW_OK);
+        drift_after(&s, before, 1, "reset");
+
+        free(y0);
+        sw_history_free(&h);
+        sw_sim_free(&s);
+    }
+}
+END_TEST
+
+/* The drift is kept, not recomputed on every read: a state written behind
+ * the sim's back (what a mutator that forgot to invalidate would leave)
+ * still reads the old drift, so drift_cache_follows_every_change above
+ * would catch a missed invalidation; sw_sim_state_changed, the call the
+ * header asks of such writers, brings the fresh value back. */
+START_TEST(drift_cache_is_stale_until_told)
+{
+    sw_sim s;
+    sim_with(&s, "vortex", "euler", 0.05);
+    double start = sw_sim_drift(&s);
+    ck_assert_double_eq(start, 0.0); /* the seeds themselves: on their circles */
+    s.sys.y[0] *= 1.5;               /* one point off its circle, the sim not told */
+    ck_assert_double_gt(fresh_drift(&s), 0.0);
+    ck_assert_msg(same_bits(sw_sim_drift(&s), start), "the drift was recomputed, not kept: %.17g",
+                  sw_sim_drift(&s));
+    sw_sim_state_changed(&s);
+    ck_assert(same_bits(sw_sim_drift(&s), fresh_drift(&s)));
+    sw_sim_free(&s);
+}
+END_TEST
+
 Suite *make_sim_suite(void);
 Suite *make_sim_suite(void)
 {
@@ -179,6 +309,8 @@ Suite *make_sim_suite(void)
     tcase_add_test(tc, energy_drift);
     tcase_add_test(tc, blow_up_stops);
     tcase_add_test(tc, adaptive_counts);
+    tcase_add_test(tc, drift_cache_follows_every_change);
+    tcase_add_test(tc, drift_cache_is_stale_until_told);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -99,8 +99,14 @@ int sw_sim_energy_scale_is_motion(const sw_sim *s);
 double sw_sim_energy_drift(const sw_sim *s);
 /* Largest absolute state error against the exact solution; NaN if none. */
 double sw_sim_exact_error(const sw_sim *s, double *scratch);
-/* The scene's invariant drift now (0 on exact paths); NaN when none. */
+/* The scene's invariant drift now (0 on exact paths); NaN when none. Worked
+ * out once per state and kept until the state changes (bit for bit what a
+ * fresh computation gives). */
 double sw_sim_drift(const sw_sim *s);
+/* Forget what was worked out from the state (the drift). Every sw_sim_
+ * function that changes the state, the time or the system does it; call it
+ * after writing s->sys.y, s->sys.extra or s->t directly. */
+void sw_sim_state_changed(sw_sim *s);
 /* Whether particle i is to be drawn now. */
 int sw_sim_alive(const sw_sim *s, int i);
 

@@ -66,6 +66,7 @@ int sw_app_stop_reached(sw_app *a, double stop)
     for (int i = 0; i < a->nsims; i++)
         if (!a->sims[i].blown && a->sims[i].t != stop) {
             a->sims[i].t = stop;
+            sw_sim_state_changed(&a->sims[i]);
             sw_history_retime(&a->hist[i], stop);
         }
     a->t_goal = stop;

@@ -63,7 +63,7 @@ void sw_sim_events_arm(sw_sim *s)
         se->arm(&s->sys, s->sys.y, s->events == SW_EVENTS_LOCATE && s->ev);
 }
 
-int sw_sim_set_events(sw_sim *s, sw_events_mode mode, char *err, size_t errlen)
+int sw_sim_events_set_mode(sw_sim *s, sw_events_mode mode, char *err, size_t errlen)
 {
     int count = sw_system_event_count(&s->sys), dim = s->sys.ode->dim;
     if (mode == SW_EVENTS_LOCATE && !s->ev && count > 0) {

@@ -19,6 +19,9 @@ int sw_sim_locate_step(sw_sim *s, double h);
 /* 1 when the last step was cut at an event (its state changed from outside
  * the method: the whole state is checked again). */
 int sw_sim_events_cut(const sw_sim *s);
+/* sw_sim_set_events without forgetting what the sim worked out from its
+ * state (sim.c's wrapper does that: arming may change sys->extra). */
+int sw_sim_events_set_mode(sw_sim *s, sw_events_mode mode, char *err, size_t errlen);
 /* Set the scene's discrete state for the sim's mode from its state. */
 void sw_sim_events_arm(sw_sim *s);
 /* Back to none located (the sim was reset). */

@@ -120,6 +120,7 @@ static void restore(const sw_history *h, int i, sw_sim *s)
     s->blow_step = 0;
     s->blow_time = 0;
     s->blow_reason[0] = '\0';
+    sw_sim_state_changed(s);
 }
 
 int sw_history_back_to(sw_history *h, sw_sim *s, double t)

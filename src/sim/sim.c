@@ -17,7 +17,15 @@
 struct sw_sim_derived {
     int have_floor;
     double floor;         /* sw_sim_energy_floor of the system as built */
+    /* The scene's drift of the state now, until the state changes: every
+     * function that changes the state, the time or the system calls
+     * sw_sim_state_changed, so a frame that draws without stepping pays
+     * nothing for it and one that steps pays once, however many read it. */
+    int have_drift;
+    double drift;
 };
+
+void sw_sim_state_changed(sw_sim *s) { s->derived->have_drift = 0; }
 
 static double max_abs(int n, const double *v)
 {
@@ -121,13 +129,22 @@ int sw_sim_set_method(sw_sim *s, const sw_integrator *m, char *err, size_t errle
     free(old);
     s->stepper->limit_exp = limit_exp;
     s->method = m;
+    sw_sim_state_changed(s);
     return SW_OK;
+}
+
+int sw_sim_set_events(sw_sim *s, sw_events_mode mode, char *err, size_t errlen)
+{
+    int rc = sw_sim_events_set_mode(s, mode, err, errlen);
+    sw_sim_state_changed(s); /* arming may set the scene's discrete data */
+    return rc;
 }
 
 void sw_sim_set_tolerances(sw_sim *s, double rtol, double atol)
 {
     s->rtol = s->stepper->rtol = rtol;
     s->atol = s->stepper->atol = atol;
+    sw_sim_state_changed(s);
 }
 
 void sw_sim_step_counts(const sw_sim *s, long *accepted, long *rejected)
@@ -145,6 +162,7 @@ int sw_sim_set_dt(sw_sim *s, double dt, char *err, size_t errlen)
     s->dt = dt;
     s->stepper->h_next = 0;
     s->stepper->err_last = 0;
+    sw_sim_state_changed(s);
     return SW_OK;
 }
 
@@ -154,11 +172,13 @@ void sw_sim_set_state(sw_sim *s, const double *y)
     sw_sim_events_arm(s);
     sw_stepper_touch(s->stepper);
     s->energy0 = sw_sim_energy(s);
+    sw_sim_state_changed(s);
 }
 
 int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
 {
     int rc = sw_system_reset(&s->sys, err, errlen);
+    sw_sim_state_changed(s); /* even a failed reset may have rebuilt part of the system */
     if (rc != SW_OK)
         return rc;
     free_stepper(s);
@@ -189,6 +209,7 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
 {
     if (s->blown)
         return 1;
+    sw_sim_state_changed(s); /* a step that fails may still have moved the state */
     double h = s->dt;
     if (t_stop > s->t && s->t + h > t_stop)
         h = t_stop - s->t;
@@ -345,10 +366,17 @@ double sw_sim_exact_error(const sw_sim *s, double *scratch)
     return m;
 }
 
+/* Worked out once per state: an O(n) pass that the status line and a
+ * page's goals ask for on every frame. */
 double sw_sim_drift(const sw_sim *s)
 {
-    const sw_scene *sc = s->sys.scene;
-    return sc->drift ? sc->drift(&s->sys, s->sys.y) : NAN;
+    struct sw_sim_derived *d = s->derived;
+    if (!d->have_drift) {
+        const sw_scene *sc = s->sys.scene;
+        d->drift = sc->drift ? sc->drift(&s->sys, s->sys.y) : NAN;
+        d->have_drift = 1;
+    }
+    return d->drift;
 }
 
 int sw_sim_alive(const sw_sim *s, int i)

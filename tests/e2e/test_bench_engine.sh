@@ -4,7 +4,8 @@
 # hand-written baseline reproduces the generic step bit for bit; every
 # default scene gets a frame-cost row; the heavy views (through the app) and
 # the large-n memory rows (against the hand-fused loop) are there, within
-# twice the hand-fused loop's resident memory.
+# twice the hand-fused loop's resident memory; --frame-view runs one heavy
+# view alone.
 # Timings are printed, never checked: they vary from machine to machine.
 . "$(dirname "$0")/lib.sh"
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}
@@ -43,4 +44,9 @@ for kind in generic base; do
     "$BENCH" --count-probe chain 20 rk4 3 $kind || fail "count probe ($kind) exited $?"
 done
 "$BENCH" --count-probe nosuch 20 rk4 3 generic && fail "count probe accepted an unknown scene"
+# one heavy view alone (paired timings, callgrind): a row, and bad views refused
+one=$("$BENCH" --frame-view vortex 1000 compare+ghost 1 2>&1) || fail "--frame-view exited $?: $one"
+echo "$one" | grep -Fq "  vortex     1000 compare+ghost " || fail "no --frame-view row: $one"
+"$BENCH" --frame-view vortex 1000 sideways 1 2>/dev/null; [ $? -eq 2 ] || fail "--frame-view took an unknown view"
+"$BENCH" --frame-view nosuch 1000 plain 1 2>/dev/null; [ $? -eq 2 ] || fail "--frame-view took an unknown scene"
 echo "engine benchmark: ok"

@@ -193,6 +193,7 @@ typedef struct run {
     double bump;
     long bump_step;          /* > 0: multiply column 2 of this row by 1 + 1e-7 */
     int swap_a, swap_b;      /* exchange these particles' y at the start */
+    double printed[3];       /* > 0: x and y, vx and vy, t printed times this (other units) */
 } run;
 
 /* Write the run's trace (declared as verlet unless method is given) into
@@ -231,15 +232,16 @@ static void write_trace(const char *name, const run *r, const char *method, char
         fprintf(f, "%s%s", c ? "," : "", col);
     }
     fputc('\n', f);
-    double t = 0;
+    double t = 0, sx = r->printed[0] > 0 ? r->printed[0] : 1,
+           sv = r->printed[1] > 0 ? r->printed[1] : 1, st = r->printed[2] > 0 ? r->printed[2] : 1;
     for (long n = 0; n <= r->steps; n++) {
-        fprintf(f, "%ld,%.17g", n, t);
+        fprintf(f, "%ld,%.17g", n, st * t);
         int per = sys.kind == SW_SYS_FLOW ? 2 : 4, np = sys.n;
         for (int i = 0; i < np; i++) {
             double x = y[2 * i] * (r->bump_step > 0 && n == r->bump_step && i == 0 ? 1 + 1e-7 : 1);
-            fprintf(f, ",%.17g,%.17g", x, y[2 * i + 1]);
+            fprintf(f, ",%.17g,%.17g", sx * x, sx * y[2 * i + 1]);
             if (per == 4)
-                fprintf(f, ",%.17g,%.17g", y[2 * np + 2 * i], y[2 * np + 2 * i + 1]);
+                fprintf(f, ",%.17g,%.17g", sv * y[2 * np + 2 * i], sv * y[2 * np + 2 * i + 1]);
         }
         if (sc->energy) {
             double e = r->energy_slip < 0 ? sc->energy(&sys, y) : energy_with(sc, p, y, r->energy_slip);
@@ -293,9 +295,9 @@ static void expect(const char *name, const run *r, const char *kind, const char 
 
 /* ---- the Verlet variants ----------------------------------------------------- */
 
-static const run damped_chain = { "chain", { "n=6", "c=2", "g=9.81", NULL }, 0.01, 80, NULL, -1, -1, 0, 0, 0, 0 };
-static const run drag_ball = { "projectile", { "drag=0.4", "vy=14", NULL }, 0.02, 60, NULL, -1, -1, 0, 0, 0, 0 };
-static const run orbit_e7 = { "orbit", { "e=0.7", NULL }, 0.005, 120, NULL, -1, -1, 0, 0, 0, 0 };
+static const run damped_chain = { "chain", { "n=6", "c=2", "g=9.81", NULL }, 0.01, 80, NULL, -1, -1, 0, 0, 0, 0, { 0 } };
+static const run drag_ball = { "projectile", { "drag=0.4", "vy=14", NULL }, 0.02, 60, NULL, -1, -1, 0, 0, 0, 0, { 0 } };
+static const run orbit_e7 = { "orbit", { "e=0.7", NULL }, 0.005, 120, NULL, -1, -1, 0, 0, 0, 0, { 0 } };
 
 static run with(run r, update_fn *update)
 {
@@ -355,7 +357,7 @@ START_TEST(wrong_initial_state_is_named)
 {
     make_tmpdir();
     /* Bead 2 of 7 lifted by 0.25: the steps after are right. */
-    run r = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, 2, 0.25, 0, 0, 0 };
+    run r = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, 2, 0.25, 0, 0, 0, { 0 } };
     expect("bead.trace", &r, "initial-state",
            "particle 2 starts with y2 = 0.25 in yours, 0 in the assignment's; docs/scenes.md, "
            "'chain', gives every particle's initial state; from your initial state on, your steps "
@@ -366,7 +368,7 @@ START_TEST(wrong_initial_state_is_named)
     r.bump = -0.3;
     expect("pluck.trace", &r, "initial-state", "particle 3 starts with y3 = 0 in yours, 0.3 in the assignment's");
     /* Bead 2 plucked instead of bead 3: named as an exchange. */
-    run off = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, -1, 0, 0, 2, 3 };
+    run off = { "chain", { "n=7", "c=0.5", "pluck=0.3", NULL }, 0.01, 50, right_verlet, -1, -1, 0, 0, 2, 3, { 0 } };
     expect("offbyone.trace", &off, "initial-state",
            "particle 2 starts with y2 = 0.3 in yours, 0 in the assignment's, and "
            "particle 3 with y3 = 0 in yours: particle 2's and particle 3's values are exchanged "
@@ -376,7 +378,7 @@ START_TEST(wrong_initial_state_is_named)
     expect("pluck2.trace", &r, "parameter", "pluck = 0.6 (the assignment has pluck = 0.3)");
     /* The planet 1e-3 further out, under the wrong method too: the state is
      * named, without the claim about the steps. */
-    run o = { "orbit", { "e=0.2", NULL }, 0.01, 40, position_verlet, -1, 0, 1e-3, 0, 0, 0 };
+    run o = { "orbit", { "e=0.2", NULL }, 0.01, 40, position_verlet, -1, 0, 1e-3, 0, 0, 0, { 0 } };
     char path[128], err[SW_ERRLEN];
     sw_run_desc want;
     sw_explanation ex;
@@ -417,12 +419,55 @@ START_TEST(scene_sections_exist)
 }
 END_TEST
 
+/* ---- units ---------------------------------------------------------------------- */
+
+START_TEST(other_units_are_named)
+{
+    make_tmpdir();
+    /* The spring's positions printed in cm: row 0 differs too, but the
+     * factor is the story, not the initial state. */
+    run r = { "spring", { "g=9.81", "k=25", NULL }, 0.01, 70, right_verlet, -1, -1, 0, 0, 0, 0, { 100 } };
+    expect("spring-cm.trace", &r, "units", "x0 and y0 are 100 times the reference at every step: "
+           "positions in cm instead of m?");
+    /* A chain in mm and mm/s: whole families, named as x* and vx*, the
+     * anchored bead's zeros included (any factor holds at 0). */
+    run c = with(damped_chain, right_verlet);
+    c.printed[0] = c.printed[1] = 1000;
+    expect("chain-mm.trace", &c, "units", "x* and y* are 1000 times the reference at every step: "
+           "positions in mm instead of m?; vx* and vy* are 1000 times the reference at every step: "
+           "velocities in mm/s instead of m/s?");
+    /* Divided, and on the time column alone. */
+    run o = with(orbit_e7, right_verlet);
+    o.printed[0] = 0.001;
+    expect("orbit-km.trace", &o, "units", "x0 and y0 are 1/1000 of the reference at every step: "
+           "positions in km instead of m?");
+    o.printed[0] = 0;
+    o.printed[2] = 1000;
+    expect("orbit-ms.trace", &o, "units", "t is 1000 times the reference at every step: times in ms "
+           "instead of s?");
+    o.printed[2] = 0;
+    o.printed[1] = 10;
+    expect("orbit-v10.trace", &o, "units", "vx0 and vy0 are 10 times the reference at every step: "
+           "velocities in another unit?");
+    /* A factor that holds at every value but one (1e-7 off at step 40) is
+     * no unit: the initial state is named as before. */
+    r.bump_step = 40;
+    expect("spring-cm-bumped.trace", &r, "initial-state", "x0 = 1");
+    /* 100 times, but under the wrong method (the ball starts at 0, so row
+     * 0 is right): no factor holds at 1e-9, and nothing is named. */
+    run w = with(drag_ball, textbook_verlet);
+    w.printed[0] = 100;
+    expect("ball-cm-textbook.trace", &w, NULL, NULL);
+    remove_tmpdir();
+}
+END_TEST
+
 /* ---- the energy formula ----------------------------------------------------------- */
 
 START_TEST(wrong_energy_is_named)
 {
     make_tmpdir();
-    run r = { "spring", { "g=9.81", "k=25", "c=0.2", NULL }, 0.01, 70, right_verlet, ENERGY_SPRING_FLIPPED, -1, 0, 0, 0, 0 };
+    run r = { "spring", { "g=9.81", "k=25", "c=0.2", NULL }, 0.01, 70, right_verlet, ENERGY_SPRING_FLIPPED, -1, 0, 0, 0, 0, { 0 } };
     expect("spring-sign.trace", &r, "energy-formula",
            "your energy column is kinetic energy plus gravity potential minus spring potential");
     r.energy_slip = ENERGY_NO_HALF;
@@ -431,7 +476,7 @@ START_TEST(wrong_energy_is_named)
     expect("spring-nokin.trace", &r, "energy-formula",
            "your energy column is gravity potential plus spring potential (recomputed from your "
            "own x and v");
-    run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0, 0, 0 };
+    run o = { "orbit", { "e=0.6", "mu=2", NULL }, 0.005, 60, right_verlet, ENERGY_CENTRAL_FLIPPED, -1, 0, 0, 0, 0, { 0 } };
     expect("orbit-sign.trace", &o, "energy-formula",
            "is kinetic energy minus central potential (recomputed from your own x and v");
     run b = with(drag_ball, right_verlet);
@@ -461,6 +506,7 @@ Suite *make_explain_suite(void)
     tcase_add_test(tc, right_and_near_verlet_are_not_named);
     tcase_add_test(tc, wrong_initial_state_is_named);
     tcase_add_test(tc, scene_sections_exist);
+    tcase_add_test(tc, other_units_are_named);
     tcase_add_test(tc, wrong_energy_is_named);
     suite_add_tcase(s, tc);
     return s;

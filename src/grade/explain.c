@@ -2,7 +2,7 @@
  * are held in memory and compared, with the grading tolerances, against
  * runs that make one usual mistake each; the first run that matches every
  * value names the mistake. Data mistakes (rows, time column, digits,
- * precision) are tried first, since they need no new run, then the initial
+ * precision, units) are tried first, since they need no new run, then the initial
  * state and the energy column (explain_state.c), then mistaken methods
  * (explain_methods.c), steps and parameters. Invariant: a variant is
  * reported only when it matches every examined value, never because it is
@@ -315,6 +315,10 @@ static int explain_all(const xpl_rows *tr, int max, const sw_run_desc *want,
             goto done;
         if (!found && ref.n >= tr->n)
             found = explain_format(tr, &ref, want, tol, out);
+        /* Before the initial state: positions in cm differ at row 0 too,
+         * and "x0 = 150 in yours, 1.5" would hide the factor. */
+        if (!found && ref.n >= tr->n)
+            found = xpl_units(tr, &ref, want, tol, out);
         sw_explanation start;
         memset(&start, 0, sizeof start);
         start.agreement = NAN;

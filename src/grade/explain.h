@@ -3,8 +3,8 @@
  * built-in method, dt doubled or halved, a stage at the wrong time, a
  * Verlet variant, single precision, too few printed digits, a missing or
  * duplicated row, a shifted time column, another parameter value, a wrong
- * initial state, a wrong energy formula). Works on a bounded prefix of the
- * rows, so its cost does not grow with the run. */
+ * initial state, a wrong energy formula, a column in other units). Works
+ * on a bounded prefix of the rows, so its cost does not grow with the run. */
 #ifndef SW_GRADE_EXPLAIN_H
 #define SW_GRADE_EXPLAIN_H
 
@@ -28,7 +28,7 @@ typedef struct sw_explanation {
     char kind[24];      /* "method", "dt", "stage-time", "k3-full-step", "verlet-half-step",
                            "verlet-recomputed", "position-verlet", "single-precision",
                            "digits", "missing-row", "duplicate-row", "time-shift", "parameter",
-                           "initial-state", "energy-formula", "energy" */
+                           "initial-state", "energy-formula", "energy", "units" */
     char message[480];  /* one sentence for the student */
     double agreement;   /* largest relative difference from the matching variant; NaN n/a */
 } sw_explanation;

@@ -51,6 +51,13 @@ typedef struct xpl_mistake {
 int xpl_mistake_count(void);
 const xpl_mistake *xpl_mistake_at(int i);
 
+/* Units (explain_units.c): when every column of tr matches ref as it is
+ * or divided by one factor of 10, 100 or 1000 (or multiplied), and one at
+ * least does not match as it is, 1 with *out naming the columns, the
+ * factor and the unit it suggests; 0 otherwise. */
+int xpl_units(const xpl_rows *tr, const xpl_rows *ref, const sw_run_desc *d,
+              const sw_check_tol *tol, sw_explanation *out);
+
 /* The initial state (explain_state.c): when row 0 of tr differs from ref's
  * in a state column, 1 with *out naming the first value, the particle and
  * the scene's section of docs/scenes.md; 0 when row 0 matches. */

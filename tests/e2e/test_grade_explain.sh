@@ -110,6 +110,9 @@ why pluck.trace initial-state "particle 2 starts with y2 = 0.5 in yours, 0 in th
 awk -F, -v OFS=, '/^[0-9]/ { r = sqrt($3 * $3 + $4 * $4) - 1
     $7 = sprintf("%.17g", 0.5 * ($5 * $5 + $6 * $6) - 0.5 * 25 * r * r + 9.81 * $4) } { print }' sp.trace > sign.trace
 why sign.trace energy-formula 'energy column is kinetic energy plus gravity potential minus spring potential.*the spring potential has the wrong sign'
+# Positions printed in cm: a unit, not a wrong initial state ("x0 = 150 in yours, 1.5").
+awk -F, -v OFS=, '/^[0-9]/ { $3 = sprintf("%.17g", 100 * $3); $4 = sprintf("%.17g", 100 * $4) } { print }' sp.trace > cm.trace
+why cm.trace units 'x0 and y0 are 100 times the reference at every step: positions in cm instead of m\?'
 
 # Plugins get the same "why" as traces: on a damped chain set as verlet.
 cat > damped.txt <<'A'

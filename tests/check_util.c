@@ -269,6 +269,61 @@ START_TEST(escape_invisible_cut)
 }
 END_TEST
 
+/* Fitting text to terminal cells (grade's table) and to a message's room
+ * after a whole word (the sandbox's reasons, the table's last column). */
+START_TEST(escape_fit_cells_and_words)
+{
+    char out[128];
+    /* By cells, not bytes: é is two bytes and one cell, 日 three and two. */
+    sw_escape_fit("Henri Poincaré", 0, 20, 0, out, sizeof out);
+    ck_assert_str_eq(out, "Henri Poincaré");
+    sw_escape_fit("Émilie du Châtelet Lebrun", 0, 20, 0, out, sizeof out);
+    ck_assert_str_eq(out, "Émilie du Châtele...");
+    ck_assert_uint_eq(sw_utf8_columns(out, strlen(out)), 20);
+    sw_escape_fit("日本語のテキスト", 0, 9, 0, out, sizeof out);
+    ck_assert_str_eq(out, "日本語...");
+    sw_escape_fit("日本語のテキスト", 0, 10, 0, out, sizeof out); /* no half of a wide one */
+    ck_assert_str_eq(out, "日本語...");
+    /* An escape counts its four cells and is never cut. */
+    sw_escape_fit("x\033[2Jfake.trace", 0, 8, 0, out, sizeof out);
+    ck_assert_str_eq(out, "x\\x1b...");
+    sw_escape_fit("x\033[2Jfake.trace", 0, 7, 0, out, sizeof out);
+    ck_assert_str_eq(out, "x...");
+    /* After a whole word, the punctuation left hanging dropped. */
+    const char *why = "the sandbox could not be set up: unshare(CLONE_NEWUSER | CLONE_NEWNS) failed "
+                      "(Operation not permitted); it needs Linux user namespaces";
+    sw_escape_fit(why, 1, SIZE_MAX, 1, out, 101);
+    ck_assert_str_eq(out, "the sandbox could not be set up: unshare(CLONE_NEWUSER | CLONE_NEWNS) failed "
+                          "(Operation not...");
+    sw_escape_fit(why, 1, SIZE_MAX, 1, out, 107);
+    ck_assert_str_eq(out, "the sandbox could not be set up: unshare(CLONE_NEWUSER | CLONE_NEWNS) failed "
+                          "(Operation not permitted)...");
+    sw_escape_fit("first part; second part", 0, 15, 1, out, sizeof out);
+    ck_assert_str_eq(out, "first part...");
+    /* A cut just before a space keeps the word it ends. */
+    sw_escape_fit("abc defgh ijk", 0, 12, 1, out, sizeof out);
+    ck_assert_str_eq(out, "abc defgh...");
+    /* No word ends in the room's second half (a path): cut between characters. */
+    sw_escape_fit("see /a/very/long/path/without/spaces", 0, 20, 1, out, sizeof out);
+    ck_assert_str_eq(out, "see /a/very/long/...");
+    /* Text that fits is left as it is, and the bytes bound too. */
+    char whole[256];
+    sw_escape_fit(why, 1, SIZE_MAX, 1, whole, sizeof whole);
+    ck_assert_str_eq(whole, why);
+    sw_escape_fit("abcdef", 0, SIZE_MAX, 1, out, 5);
+    ck_assert_str_eq(out, "a...");
+    for (size_t outlen = 1; outlen < 40; outlen++)
+        for (size_t cells = 0; cells < 40; cells++) {
+            char o[64];
+            memset(o, 'Z', sizeof o);
+            sw_escape_fit("Zoë Brontë, 日本, and a \x1b word", 0, cells, (int)(cells % 2), o, outlen);
+            ck_assert(strnlen(o, outlen) < outlen && o[outlen] == 'Z');
+            ck_assert_msg(sw_utf8_columns(o, strlen(o)) <= cells || outlen < 4 || cells < 3,
+                          "cells %zu outlen %zu: '%s'", cells, outlen, o);
+        }
+}
+END_TEST
+
 static const char *word_at(const void *ctx, int i) { return ((const char *const *)ctx)[i]; }
 
 START_TEST(names)
@@ -574,6 +629,7 @@ Suite *make_util_suite(void)
     tcase_add_test(tc, escape_invisible_families);
     tcase_add_test(tc, escape_keeps_text);
     tcase_add_test(tc, escape_invisible_cut);
+    tcase_add_test(tc, escape_fit_cells_and_words);
     tcase_add_test(tc, names);
     tcase_add_test(tc, kv_pairs);
     tcase_add_test(tc, outfile_regular);

@@ -21,6 +21,7 @@
 #include "util/escape.h"
 #include "util/outfile.h"
 #include "util/tmpdir.h"
+#include "util/utf8.h"
 
 /* Where the table goes: stdout, or stderr when a report is written there. */
 static FILE *table_stream;
@@ -96,13 +97,26 @@ void grade_print_head(const sw_assignment *a, const grade_list *l)
     fflush(table());
 }
 
+/* Text in a table cell of cells terminal cells: escaped, cut by display
+ * width ("..." within it) and padded with spaces, so that the columns line
+ * up on the terminal whatever the bytes (é is two bytes and one cell). */
+static const char *cell(const char *text, size_t cells, char *out, size_t outlen)
+{
+    sw_escape_fit(text, 0, cells, 0, out, outlen);
+    size_t len = strlen(out), shown = sw_utf8_columns(out, len);
+    for (; shown < cells && len + 1 < outlen; shown++)
+        out[len++] = ' ';
+    out[len] = '\0';
+    return out;
+}
+
 void grade_print_row(grade_entry *e)
 {
-    char student[SW_TRACE_STUDENT_MAX], s_esc[80], f_esc[80], m_esc[400], step[24];
+    char student[SW_TRACE_STUDENT_MAX], s_cell[128], f_cell[128], m_esc[400], step[24];
     student_of(e, student, sizeof student);
-    sw_escape(student, 20, s_esc, sizeof s_esc);
     const char *base = strrchr(e->path, '/');
-    sw_escape(base ? base + 1 : e->path, 24, f_esc, sizeof f_esc);
+    cell(student, 20, s_cell, sizeof s_cell);
+    cell(base ? base + 1 : e->path, 24, f_cell, sizeof f_cell);
     sw_escape(e->message, 300, m_esc, sizeof m_esc);
     if (e->failing_step >= 0)
         snprintf(step, sizeof step, "%ld", e->failing_step);
@@ -110,7 +124,7 @@ void grade_print_row(grade_entry *e)
         snprintf(step, sizeof step, "-");
     char score[48];
     grade_score_text(e, score, sizeof score);
-    fprintf(table(), "  %-20s %-24s %-7s %7s %6s  %s\n", s_esc, f_esc, verdict_word(e->status), score,
+    fprintf(table(), "  %s %s %-7s %7s %6s  %s\n", s_cell, f_cell, verdict_word(e->status), score,
             step, m_esc);
     if (e->remarks[0]) {
         sw_escape(e->remarks, 300, m_esc, sizeof m_esc);

@@ -31,4 +31,15 @@ void sw_escape_message(char *msg, size_t len);
  * out: text that is already escaped and fits comes out unchanged. */
 void sw_escape_kept(const char *text, size_t max, char *out, size_t outlen);
 
+/* Text for a fixed space, a table's cell or a message's buffer: the
+ * sw_escape rule (keep_backslash 0) or the message rule (1), fitted to at
+ * most cells terminal cells (an escape takes one per byte; é one, 日 two)
+ * and outlen bytes. Text that does not fit is cut and marked "..." within
+ * both; with words, the cut falls after the last whole word that ends in
+ * the second half of the room ("..." after it, a hanging ',' ';' or ':'
+ * dropped), else between characters (a long name, a path); never inside a
+ * character or the escapes of one. */
+void sw_escape_fit(const char *text, int keep_backslash, size_t cells, int words, char *out,
+                   size_t outlen);
+
 #endif

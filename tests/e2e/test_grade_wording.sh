@@ -1,0 +1,35 @@
+#!/bin/sh
+# What grade prints about a class, letter by letter (issue 36's feedback
+# wording): the table's columns line up in terminal cells whatever the
+# letters (é is two bytes and one cell, 日 three and two) and a long cell
+# is cut by width.
+. "$(dirname "$0")/lib.sh"
+
+"$SW" record spring --steps 20 -o ref.trace 2>/dev/null || fail "cannot record the assignment"
+mkdir class
+student() { # NAME FILE: a passing trace that says it is NAME's
+    { echo '# stepwise trace 1'; echo "# student: $1"; sed -n '2,$p' ref.trace; } > "class/$2"
+}
+student "Ada Lovelace" ada.trace
+student "Henri Poincaré" poincare.trace
+student "henri poincare" hp.trace
+student "Émilie du Châtelet" emilie.trace
+student "日本 太郎" nihon.trace
+student "Srinivasa Ramanujan Iyengar" ramanujan.trace
+cp ref.trace "class/café_éèà_crème_brûlée_au_four.trace"
+
+# --- the table: every row's verdict starts at the header's cell ----------------
+"$SW" grade --assignment ref.trace class/ --feedback fb > out 2>err || fail "grade: $(cat out err)"
+cells() { LC_ALL=C.UTF-8 wc -L; } # display cells (wcwidth) of one line
+head_at=$(grep '^  student ' out | sed 's/ verdict .*//' | cells)
+[ "$head_at" -eq 47 ] || fail "the header's verdict at cell $head_at, want 47: $(cat out)"
+[ "$(grep -c ' pass ' out)" -eq 7 ] || fail "want 7 passing rows: $(cat out)"
+grep ' pass ' out | while IFS= read -r row; do
+    at=$(printf '%s\n' "$row" | sed 's/ pass .*//' | cells)
+    [ "$at" -eq "$head_at" ] || fail "a row's verdict at cell $at, the header's at $head_at: '$row'"
+done || exit 1
+# Cut by width, "..." within the 24 cells: 21 letters, most of them two bytes.
+grep -q ' café_éèà_crème_brûlée\.\.\. pass ' out || fail "the long file name is not cut to 24 cells: $(cat out)"
+grep -q ' Srinivasa Ramanuj\.\.\. ' out || fail "the long name is not cut to 20 cells: $(cat out)"
+
+echo ok

@@ -296,7 +296,12 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             break;
         }
         char sub[PATH_MAX], subrel[PATH_MAX];
-        int n = snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
+        /* Joined once: "class/" or "class//" as given names "class/a.trace". */
+        size_t plen = strlen(path);
+        while (plen > 1 && path[plen - 1] == '/')
+            plen--;
+        int root = plen == 1 && path[0] == '/';
+        int n = snprintf(sub, sizeof sub, "%.*s%s%s", (int)plen, path, root ? "" : "/", e->d_name);
         int m = snprintf(subrel, sizeof subrel, "%s%s%s", rel, rel[0] ? "/" : "", e->d_name);
         struct stat st;
         if (n < 0 || (size_t)n >= sizeof sub || m < 0 || (size_t)m >= sizeof subrel) {

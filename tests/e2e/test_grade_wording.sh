@@ -2,7 +2,8 @@
 # What grade prints about a class, letter by letter (issue 36's feedback
 # wording): the table's columns line up in terminal cells whatever the
 # letters (é is two bytes and one cell, 日 three and two) and a long cell
-# is cut by width.
+# is cut by width; a class folder given with a trailing slash has its
+# paths joined once.
 . "$(dirname "$0")/lib.sh"
 
 "$SW" record spring --steps 20 -o ref.trace 2>/dev/null || fail "cannot record the assignment"
@@ -31,5 +32,12 @@ done || exit 1
 # Cut by width, "..." within the 24 cells: 21 letters, most of them two bytes.
 grep -q ' café_éèà_crème_brûlée\.\.\. pass ' out || fail "the long file name is not cut to 24 cells: $(cat out)"
 grep -q ' Srinivasa Ramanuj\.\.\. ' out || fail "the long name is not cut to 20 cells: $(cat out)"
+
+# --- paths joined once, however many slashes the folder is given with -------------
+for arg in class/ class//; do
+    "$SW" grade --assignment ref.trace "$arg" --csv - --results r.json > csv 2>err || fail "grade $arg: $(cat err)"
+    grep -q '//' csv r.json && fail "grade $arg: a path with '//': $(grep -h '//' csv r.json | head -3)"
+    grep -q '^Ada Lovelace,class/ada.trace,pass' csv || fail "grade $arg: $(cat csv)"
+done
 
 echo ok

@@ -4,6 +4,7 @@
  * Moodle and plain prefixes, with ambiguity named and self-declared names
  * checked, not believed. */
 #include <check.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,7 @@
 
 #include "grade/roster.h"
 #include "stepwise/base.h"
+#include "util/utf8.h"
 
 static sw_roster parse_ok(const char *text)
 {
@@ -201,6 +203,39 @@ START_TEST(folding_names)
     ck_assert_str_eq(out, "σωκρατησ");
     ck_assert_int_eq(sw_roster_fold("abcdef", 6, out, 4), 3); /* cut, NUL-terminated */
     ck_assert_str_eq(out, "abc");
+}
+END_TEST
+
+/* File names from names (grade --feedback) fold as the roster does, case
+ * kept: every Latin letter the roster folds gives the same letters, only
+ * its capital kept, so a file's name and a roster match agree. */
+START_TEST(folding_names_for_files)
+{
+    char out[96];
+    sw_roster_fold_latin("Henri Poincaré", strlen("Henri Poincaré"), out, sizeof out);
+    ck_assert_str_eq(out, "Henri Poincare");
+    sw_roster_fold_latin("Émilie du Châtelet", strlen("Émilie du Châtelet"), out, sizeof out);
+    ck_assert_str_eq(out, "Emilie du Chatelet");
+    const char *many = "Straße Ærø Øyvind Łukasz Œuvre Ĳssel Ŋ Ÿves Žofie ĸ";
+    sw_roster_fold_latin(many, strlen(many), out, sizeof out);
+    ck_assert_str_eq(out, "Strasse Aero Oyvind Lukasz Oeuvre Ijssel N Yves Zofie k");
+    sw_roster_fold_latin("Jose\xCC\x81 Jos\xE9", 11, out, sizeof out); /* NFD; a Latin-1 byte */
+    ck_assert_str_eq(out, "Jose Jose");
+    sw_roster_fold_latin("O'Brien_Σ 3×4", strlen("O'Brien_Σ 3×4"), out, sizeof out);
+    ck_assert_str_eq(out, "O'Brien_Σ 34");                 /* the rest kept, × dropped as the roster does */
+    ck_assert_int_eq(sw_roster_fold_latin("abcdef", 6, out, 4), 3);
+    ck_assert_str_eq(out, "abc");
+    /* Each letter of U+00C0..U+017F: lower-cased, the same as the roster's fold. */
+    for (uint32_t cp = 0xC0; cp < 0x180; cp++) {
+        char in[4], latin[8], roster[8];
+        int n = sw_utf8_encode(cp, in);
+        sw_roster_fold(in, (size_t)n, roster, sizeof roster);
+        size_t k = sw_roster_fold_latin(in, (size_t)n, latin, sizeof latin);
+        for (size_t i = 0; i < k; i++)
+            latin[i] = (char)(latin[i] >= 'A' && latin[i] <= 'Z' ? latin[i] - 'A' + 'a' : latin[i]);
+        ck_assert_msg(strcmp(latin, roster) == 0, "U+%04X: '%s' for files, '%s' in the roster",
+                      (unsigned)cp, latin, roster);
+    }
 }
 END_TEST
 
@@ -477,6 +512,7 @@ Suite *make_roster_suite(void)
     tcase_add_test(tc, csv_errors_name_the_line);
     tcase_add_test(tc, csv_bounds_and_files);
     tcase_add_test(tc, folding_names);
+    tcase_add_test(tc, folding_names_for_files);
     suite_add_tcase(s, tc);
     tc = tcase_create("match");
     tcase_add_test(tc, match_plain_prefixes);

@@ -1,19 +1,22 @@
 /* `grade --feedback DIR`: one plain-text report per student, ready to hand
  * back. Invariants: DIR is checked before grading like every output (a
  * writable directory, not among the submissions); a file name comes from
- * the student's name reduced to [A-Za-z0-9._-] (never a path, never
- * hidden, never a link followed), made unique; each file is written whole
- * or not at all (util/outfile.h). */
+ * the student's name, its accents folded as the roster folds them, reduced
+ * to [A-Za-z0-9._-] (never a path, never hidden, never a link followed),
+ * made unique whatever the case (a Mac's disk ignores it); each file is
+ * written whole or not at all (util/outfile.h). */
 #include "cli/grade.h"
 
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "grade/roster.h"
 #include "util/escape.h"
 #include "util/outfile.h"
 
@@ -39,11 +42,14 @@ int grade_feedback_check(const grade_list *l, const char *dir)
     return SW_EXIT_OK;
 }
 
-/* The student's name as a file name: letters, digits, '.', '-', '_'. */
+/* The student's name as a file name: letters, digits, '.', '-', '_', its
+ * Latin letters folded as the roster folds them (Poincaré: Poincare). */
 static void safe_name(const char *name, char *out, size_t len)
 {
+    char folded[4 * SW_TRACE_STUDENT_MAX];
+    sw_roster_fold_latin(name, strlen(name), folded, sizeof folded);
     size_t n = 0;
-    for (const unsigned char *s = (const unsigned char *)name; *s && n + 1 < len && n < 80; s++) {
+    for (const unsigned char *s = (const unsigned char *)folded; *s && n + 1 < len && n < 80; s++) {
         char c = (char)*s;
         int keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                    c == '-' || (c == '.' && n > 0);
@@ -118,7 +124,7 @@ int grade_feedback_write(const grade_list *l, const char *dir)
     }
     /* With a roster its students name their files first, and a row no
      * student matched gets "unmatched-": a file's name reduced alike
-     * ("AliceéAdams") never takes a student's file. */
+     * ("Alice_Adams") never takes a student's file. */
     for (int pass = 0; pass < rows * (l->roster ? 2 : 1) && rc == SW_EXIT_OK; pass++) {
         int i = pass % rows, on_roster = l->roster && row(l, i)->who >= 0;
         if (done[i] || (l->roster && (pass < rows) != on_roster))
@@ -136,7 +142,7 @@ int grade_feedback_write(const grade_list *l, const char *dir)
         for (int k = 2, clash = 1; clash; k++) {
             clash = 0;
             for (int j = 0; j < written && !clash; j++)
-                clash = strcmp(names[j], names[written]) == 0;
+                clash = strcasecmp(names[j], names[written]) == 0;
             if (clash)
                 snprintf(names[written], sizeof names[written], "%s-%d", base, k);
         }

@@ -111,4 +111,11 @@ sw_roster_claim sw_roster_check_claim(const sw_roster *r, int student, const cha
  * Returns the length. */
 size_t sw_roster_fold(const char *text, size_t len, char *out, size_t outlen);
 
+/* The same Latin letters with their case and everything else kept, into
+ * out (always NUL-terminated): "Émilie du Châtelet" gives "Emilie du
+ * Chatelet", "Straße" "Strasse"; combining marks dropped, other text
+ * copied. For file names made from names the roster compares folded.
+ * Returns the length. */
+size_t sw_roster_fold_latin(const char *text, size_t len, char *out, size_t outlen);
+
 #endif

@@ -63,23 +63,68 @@ static void fold_cp(uint32_t cp, char *out, size_t outlen, size_t *o)
     put(out, outlen, o, enc, (size_t)sw_utf8_encode(cp, enc));
 }
 
+/* The code point at s (avail bytes); *n its length. A byte that is not
+ * UTF-8 is read as Latin-1: a zip made on Windows may hold "Jos\xe9". */
+static uint32_t next_cp(const unsigned char *s, size_t avail, size_t *n)
+{
+    uint32_t cp = s[0];
+    *n = 1;
+    if (s[0] >= 0x80 && sw_utf8_check(s, avail, n, &cp) != SW_UTF8_OK) {
+        cp = s[0];
+        *n = 1;
+    }
+    return cp;
+}
+
 size_t sw_roster_fold(const char *text, size_t len, char *out, size_t outlen)
 {
     if (!out || outlen == 0)
         return 0;
     size_t o = 0;
     const unsigned char *s = (const unsigned char *)(text ? text : "");
-    for (size_t i = 0; i < len && s[i];) {
-        uint32_t cp = s[i];
-        size_t n = 1;
-        /* A byte that is not UTF-8 is read as Latin-1: a zip made on
-         * Windows may hold "Jos\xe9". */
-        if (s[i] >= 0x80 && sw_utf8_check(s + i, len - i, &n, &cp) != SW_UTF8_OK) {
-            cp = s[i];
-            n = 1;
+    for (size_t i = 0, n; i < len && s[i]; i += n)
+        fold_cp(next_cp(s + i, len - i, &n), out, outlen, &o);
+    out[o] = '\0';
+    return o;
+}
+
+/* Whether a letter of U+00C0..U+017F is a capital: Latin-1's À..Þ but ×,
+ * then Latin Extended-A's pairs, capital first: Ā ā .. ķ from an even code
+ * point, Ĺ ĺ .. ň (after ĸ) from an odd one, Ŋ ŋ .. ŷ even, Ÿ, Ź ź .. ž odd. */
+static int latin_capital(uint32_t cp)
+{
+    if (cp < 0x100)
+        return cp <= 0xDE && cp != 0xD7;
+    if (cp <= 0x137)
+        return cp % 2 == 0;
+    if (cp <= 0x148)
+        return cp % 2 == 1;
+    if (cp == 0x149)
+        return 0;
+    if (cp <= 0x177)
+        return cp % 2 == 0;
+    return cp == 0x178 || (cp <= 0x17E && cp % 2 == 1);
+}
+
+size_t sw_roster_fold_latin(const char *text, size_t len, char *out, size_t outlen)
+{
+    if (!out || outlen == 0)
+        return 0;
+    size_t o = 0;
+    const unsigned char *s = (const unsigned char *)(text ? text : "");
+    for (size_t i = 0, n; i < len && s[i]; i += n) {
+        uint32_t cp = next_cp(s + i, len - i, &n);
+        if (cp >= 0xC0 && cp < 0x180) {
+            char folded[3] = "";
+            size_t k = 0;
+            fold_cp(cp, folded, sizeof folded, &k); /* the roster's letters, lower case */
+            if (k > 0 && latin_capital(cp))
+                folded[0] = (char)(folded[0] - 'a' + 'A');
+            put(out, outlen, &o, folded, k);
+        } else if (cp < 0x300 || cp > 0x36F) { /* combining marks go, as in the roster */
+            char enc[4];
+            put(out, outlen, &o, enc, (size_t)sw_utf8_encode(cp, enc));
         }
-        i += n;
-        fold_cp(cp, out, outlen, &o);
     }
     out[o] = '\0';
     return o;

@@ -115,12 +115,13 @@ grep -q "euler" fb/Blaise_Pascal.txt || fail "Blaise's feedback: $(cat fb/Blaise
 [ "$(ls fb | wc -l)" -ge 10 ] || fail "feedback files: $(ls fb)"
 ls -a fb | grep -q tmp && fail "a temporary left in fb: $(ls -a fb)"
 
-# Without a roster a name comes from the trace: reduced to a safe file
-# name, never a path; a feedback directory among the submissions is refused.
+# Without a roster a name comes from the trace: folded as the roster folds
+# (ë: e) and reduced to a safe file name, never a path; a feedback
+# directory among the submissions is refused.
 mkdir loose
 { head -1 ref.trace; echo "# student: ../../x/Zoë \$(rm) O'Brien"; tail -n +2 ref.trace; } > loose/a.trace
 "$SW" grade --assignment assignment.txt --feedback fb2 loose > /dev/null 2>&1
-[ "$(ls fb2)" = "x_Zo_rm_O_Brien.txt" ] || fail "feedback name: $(ls -a fb2)"
+[ "$(ls fb2)" = "x_Zoe_rm_O_Brien.txt" ] || fail "feedback name: $(ls -a fb2)"
 "$SW" grade --assignment assignment.txt --feedback loose/fb loose > o 2>&1 && fail "feedback among the submissions"
 grep -q "inside the submissions directory" o || fail "feedback among the submissions: $(cat o)"
 

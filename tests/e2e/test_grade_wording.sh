@@ -3,7 +3,8 @@
 # wording): the table's columns line up in terminal cells whatever the
 # letters (é is two bytes and one cell, 日 three and two) and a long cell
 # is cut by width; a class folder given with a trailing slash has its
-# paths joined once.
+# paths joined once; --feedback files are named with the roster's fold
+# (Poincaré: Poincare), distinct when two names fold alike.
 . "$(dirname "$0")/lib.sh"
 
 "$SW" record spring --steps 20 -o ref.trace 2>/dev/null || fail "cannot record the assignment"
@@ -39,5 +40,15 @@ for arg in class/ class//; do
     grep -q '//' csv r.json && fail "grade $arg: a path with '//': $(grep -h '//' csv r.json | head -3)"
     grep -q '^Ada Lovelace,class/ada.trace,pass' csv || fail "grade $arg: $(cat csv)"
 done
+
+# --- feedback files: the roster's fold, case kept; a clash made distinct ------------
+ls fb > names
+grep -qx 'Emilie_du_Chatelet.txt' names || fail "no Emilie_du_Chatelet.txt: $(cat names)"
+grep -q 'Poincar_\|Poincar\.txt\|Ch_telet' names && fail "a letter dropped, not folded: $(cat names)"
+[ "$(grep -ci '^henri_poincare\(-2\)\{0,1\}\.txt$' names)" -eq 2 ] ||
+    fail "Henri Poincaré and henri poincare do not get two files: $(cat names)"
+[ "$(sort -f names | uniq -i | wc -l)" -eq 7 ] || fail "two files differ only in case: $(cat names)"
+grep -l 'Feedback for Henri Poincaré' fb/*.txt | grep -qi 'henri_poincare' ||
+    fail "Henri Poincaré's feedback is not in a Henri_Poincare file"
 
 echo ok

@@ -12,6 +12,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <stdint.h>
@@ -26,10 +27,26 @@
 #include <unistd.h>
 
 #include "stepwise/stepwise.h"
+#include "util/escape.h"
 #include "util/fds.h"
 #include "util/signals.h"
 #include "util/tmpdir.h"
 
+/* A message about the jail into err: formatted whole, then fitted to
+ * errlen after a whole word and marked "...", where snprintf would stop
+ * mid-word ("... and seccomp (docs/sandbox.m"). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+static void say(char *err, size_t errlen, const char *fmt, ...)
+{
+    char whole[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(whole, sizeof whole, fmt, ap);
+    va_end(ap);
+    sw_escape_fit(whole, 1, SIZE_MAX, 1, err, errlen);
+}
 
 static void set_limit(int resource, rlim_t value)
 {
@@ -321,7 +338,7 @@ static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t e
     int rc = sw_sandbox_read(sync, &tag, 1, limit);
     if (rc == 1 && tag == 'U') {
         if (sw_jail_map_user(pid, why, sizeof why) != 0) {
-            snprintf(err, errlen, "the sandbox could not be set up: %s", why);
+            say(err, errlen, "the sandbox could not be set up: %s", why);
             return SW_EIO;
         }
         tag = 'M';
@@ -341,9 +358,9 @@ static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t e
                      "most %zu MiB, and its build must fit its scratch space", SW_JAIL_FILE_MAX >> 20);
             return SW_EINVAL;
         }
-        snprintf(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
-                 "user namespaces, or root where they are refused, and seccomp (docs/sandbox.md)",
-                 f.step, strerror(f.err));
+        say(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
+            "user namespaces, or root where they are refused, and seccomp (docs/sandbox.md)",
+            f.step, strerror(f.err));
         return SW_EIO;
     }
     snprintf(err, errlen, "the sandbox could not be set up (its first process %s)",
@@ -439,7 +456,7 @@ static int layers_work(void *ctx, int in, int out)
 int sw_sandbox_probe(char *err, size_t errlen)
 {
     static int known; /* 1 works, -1 does not */
-    static char why[SW_ERRLEN];
+    static char why[2 * SW_ERRLEN]; /* the longest reason whole, its docs/sandbox.md included */
     if (!sw_jail_enabled())
         return SW_OK;
     if (!known) {
@@ -453,8 +470,8 @@ int sw_sandbox_probe(char *err, size_t errlen)
             sw_sandbox_reap(&c, 5.0, &end);
             if (got == 1) {
                 f.step[sizeof f.step - 1] = '\0';
-                snprintf(why, sizeof why, "the sandbox could not be set up: %.120s failed (%s); it needs "
-                         "Linux seccomp (docs/sandbox.md)", f.step, strerror(f.err));
+                say(why, sizeof why, "the sandbox could not be set up: %.120s failed (%s); it needs "
+                    "Linux seccomp (docs/sandbox.md)", f.step, strerror(f.err));
                 known = -1;
             } else if (!end.exited || end.code != 0) {
                 snprintf(why, sizeof why, "the sandbox could not be set up: its probe did not finish");
@@ -463,7 +480,7 @@ int sw_sandbox_probe(char *err, size_t errlen)
         }
     }
     if (known < 0)
-        snprintf(err, errlen, "%s", why);
+        say(err, errlen, "%s", why);
     return known > 0 ? SW_OK : SW_EIO;
 }
 

@@ -4,7 +4,8 @@
 # letters (é is two bytes and one cell, 日 three and two) and a long cell
 # is cut by width; a class folder given with a trailing slash has its
 # paths joined once; --feedback files are named with the roster's fold
-# (Poincaré: Poincare), distinct when two names fold alike.
+# (Poincaré: Poincare), distinct when two names fold alike; a long message
+# is cut after a whole word, and the probe's reason is whole.
 . "$(dirname "$0")/lib.sh"
 
 "$SW" record spring --steps 20 -o ref.trace 2>/dev/null || fail "cannot record the assignment"
@@ -51,4 +52,23 @@ grep -q 'Poincar_\|Poincar\.txt\|Ch_telet' names && fail "a letter dropped, not 
 grep -l 'Feedback for Henri Poincaré' fb/*.txt | grep -qi 'henri_poincare' ||
     fail "Henri Poincaré's feedback is not in a Henri_Poincare file"
 
+# --- a long message cut after a whole word -----------------------------------------
+# A plugin whose compiler error is longer than the table's last column:
+# every word ends in z, so a word cut in two shows.
+if "$SW" autograder --probe >/dev/null 2>&1 && command -v cc >/dev/null 2>&1; then
+    mkdir plugins
+    { printf '#error '; i=1; while [ $i -le 80 ]; do printf 'word%dz ' $i; i=$((i + 1)); done; echo; } > plugins/bad.c
+    "$SW" grade --assignment ref.trace plugins > out 2>err
+    row=$(grep ' bad\.c ' out)
+    printf '%s\n' "$row" | grep -Eq ' word[0-9]+z\.\.\.$' || fail "the message is not cut after a word: '$row'"
+fi
+
+# --- the probe's reason whole: as root, in a container without user namespaces -----
+if [ "$(id -u)" -eq 0 ] && cc -std=c11 -O2 -o nouserns "$ROOT/tests/e2e/nouserns.c" 2>/dev/null &&
+   ./nouserns true; then
+    STEPWISE_JAIL=ns ./nouserns "$SW" autograder --probe > out 2>err && fail "the probe passes without user namespaces"
+    [ "$(wc -l < err)" -eq 1 ] || fail "the probe's reason is not one line: $(cat err)"
+    grep -q '(docs/sandbox\.md)$' err || fail "the probe's reason is cut: $(cat err)"
+    grep -q 'unshare(' err || fail "the probe does not say what failed: $(cat err)"
+fi
 echo ok

@@ -47,6 +47,25 @@ cmp -s ag.zip ag2.zip || fail "the same inputs gave different bundles"
 unzip -p ag.zip run_autograder | grep -q -- '--gradescope "$results" --wall 300 "$@"' ||
     fail "run_autograder does not pass the limits on"
 
+# The docs' figures for the bundle against this tree's: docs/gradescope.md
+# says "about M MB, N entries". Within 10 %: its two digits round by up to
+# 3 %, and the tree may grow some 7 % before the page is due a new
+# measurement (the "1.4 MB, 199 files" it said was 28 % and 27 % off).
+said=$(grep -o 'about [0-9.]* MB, [0-9]* entries' "$ROOT/docs/gradescope.md")
+[ -n "$said" ] || fail "docs/gradescope.md states no 'about M MB, N entries' for the bundle"
+bytes=$(wc -c < ag.zip)
+entries=$(unzip -Z1 ag.zip | wc -l)
+echo "$said" | awk -v bytes="$bytes" -v entries="$entries" '{
+    mb = $2 * 1e6; n = $4 + 0
+    if (mb < 0.9 * bytes || mb > 1.1 * bytes) { printf "size: says %s MB, is %.2f MB\n", $2, bytes / 1e6; bad = 1 }
+    if (n < 0.9 * entries || n > 1.1 * entries) { printf "entries: says %d, are %d\n", n, entries; bad = 1 }
+    exit bad }' > drift || fail "docs/gradescope.md's bundle figures drifted (update them): $(cat drift)"
+# The help sends '# points' readers to the page that documents them.
+"$SW" autograder --help > help.txt
+doc=$(tr '\n' ' ' < help.txt | sed -n "s|.*'# points'[^.]*\(docs/[a-z-]*\.md\).*|\1|p")
+[ -n "$doc" ] || fail "autograder --help names no page for '# points': $(cat help.txt)"
+grep -q '`# points WHAT: N`' "$ROOT/$doc" || fail "autograder --help sends '# points' readers to $doc, which does not document them"
+
 # The submissions.
 "$SW" record spring --integrator euler --dt 0.01 --steps 200 -o good.trace 2>/dev/null
 "$SW" record spring --integrator euler --dt 0.01 --until 2 -o until.trace 2>/dev/null

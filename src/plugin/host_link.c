@@ -1,7 +1,7 @@
 /* The parent's end of a plugin's host: start the program
  * stepwise-plugin-host in the jail (the host and the plugin copied into
- * its /work, the host exec'd there), read what loading found, and read
- * replies within the watchdog. Invariant: every record is fixed-size and
+ * the jail's work/, the host exec'd there), read what loading found, and
+ * read replies, buffered, within the watchdog. Invariant: every record is fixed-size and
  * read whole; every string is terminated here; no field is used unchecked. */
 #include "plugin/plugin_box.h"
 
@@ -138,7 +138,6 @@ void sw_host_lost(sw_plugin_entry *e, sw_child_end *end)
         sw_sandbox_reap(&h->child, 1.0, end);
     h->alive = 0;
     h->slots = 0;
-    h->busy_slot = -1;
 }
 
 void sw_host_stop(sw_plugin_entry *e)
@@ -177,7 +176,6 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     sw_limits lim;
     sw_plugin_limits(&lim);
     h->have_fault = h->dying = 0;
-    h->busy_slot = -1;
     h->rpos = h->rlen = 0;
     if (sw_sandbox_spawn_jailed(&h->child, exec_host, &x, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
         snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);

@@ -18,7 +18,6 @@ typedef struct sw_host_link {
     int alive;
     int generation;                        /* bumped by every start: slots of an older one are gone */
     unsigned long long slots;              /* the slots in use, one bit each */
-    int busy_slot;                         /* the slot whose run is being read, or -1 */
     sw_host_reply fault;                   /* a FAULT record the host sent before it died */
     int have_fault;
     int dying;                             /* it said DYING: every step before was sent */

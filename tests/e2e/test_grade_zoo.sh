@@ -40,6 +40,7 @@ zoo over-one 'work[ode->dim] = 1'
 zoo over-many 'work[3 * ode->dim + 7] = 1'
 zoo over-y 'y[ode->dim] = 1'
 zoo writes-dim 'ode->dim += 1'
+zoo allocs 'free(malloc(64))'
 zoo nan 'k[0] = 0.0 / 0.0'
 zoo info-loops '' 1 'for (volatile int spin = 1; spin;) { }'
 sed 's/\.name = "nan"/.name = "euler "/' nan.c > badname.c
@@ -56,10 +57,11 @@ expect() {
         over-many) echo "overrun_work|wrote past its 1 work vector \\(work\\[19\\]" ;;
         over-y) echo "overrun_y|wrote past the end of y \\(y\\[4\\]" ;;
         writes-dim) echo "ode_written|changed ode->dim from 4 to 5" ;;
+        allocs) echo "allocated|allocated memory in its step" ;;
     esac
 }
 
-for p in exits aborts segv loops over-one over-many over-y writes-dim; do
+for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
     kind=${p%%|*}; words=$(expect "$p" | cut -d'|' -f2); kind=$(expect "$p" | cut -d'|' -f1)
     # record: the trace up to the step, a one-line verdict, exit 1, no temp file
     start=$(date +%s)
@@ -155,7 +157,7 @@ sane() {
     echo "$s" | grep -q 'icanon' || fail "no stty line after $1: $s"
 }
 tmux_start
-for p in exits aborts segv loops over-one over-many over-y writes-dim; do
+for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
     type_cmd "$SW play spring --plugin ./$p.so -i $p"
     wait_for "plugin $p disabled" 10 || fail "play: $p was not disabled"
     wait_for 'spring +euler +dt=0\.02' 5 || fail "play: the UI did not go on under euler after $p"

@@ -21,6 +21,28 @@ static void sim_with(sw_sim *s, const char *scene, const char *method, double dt
 }
 
 /* Two sims of the same settings are the same run, bit for bit. */
+/* An embedder's scene without a view (issue 39: it was called unchecked):
+ * the sim starts and steps, its runaway limit taken from the state, and
+ * gives the same numbers as the scene with its view. */
+START_TEST(scene_without_view)
+{
+    sw_scene bare = *sw_scene_find("spring");
+    bare.view = NULL;
+    char err[SW_ERRLEN];
+    sw_sim a, b;
+    ck_assert_msg(sw_sim_init(&a, &bare, NULL, sw_integrator_find("rk4"), 0.01, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_sim_init(&b, sw_scene_find("spring"), NULL, sw_integrator_find("rk4"), 0.01, err, sizeof err) ==
+                      SW_OK, "%s", err);
+    for (int i = 0; i < 100; i++) {
+        ck_assert_int_eq(sw_sim_step(&a), 0);
+        ck_assert_int_eq(sw_sim_step(&b), 0);
+    }
+    ck_assert_mem_eq(a.sys.y, b.sys.y, (size_t)a.sys.ode->dim * sizeof(double));
+    sw_sim_free(&a);
+    sw_sim_free(&b);
+}
+END_TEST
+
 START_TEST(deterministic)
 {
     sw_sim a, b;
@@ -302,6 +324,7 @@ Suite *make_sim_suite(void)
     Suite *s = suite_create("sim");
     TCase *tc = tcase_create("sim");
     tcase_add_test(tc, deterministic);
+    tcase_add_test(tc, scene_without_view);
     tcase_add_test(tc, counters_and_landing);
     tcase_add_test(tc, method_change_keeps_state);
     tcase_add_test(tc, dt_limits);

@@ -103,6 +103,9 @@ typedef struct sw_scene {
     /* 1 when a tight-tolerance rk45 run is a trustworthy reference (0 where
      * events at step boundaries make every run, rk45 too, only first order). */
     int reference;
+    /* The region to draw; required to be drawn (play, lesson). NULL: the
+     * scene is not drawn, and a sim takes its runaway limit from the
+     * state's own extent. */
     sw_view (*view)(const sw_system *sys);
     /* After each step: contact, births and deaths. Returns 1 when y changed. */
     int (*post_step)(sw_system *sys, double t, double *y);

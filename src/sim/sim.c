@@ -41,7 +41,8 @@ static double max_abs(int n, const double *v)
  * exponent field): far past anything on screen, long before overflow. */
 static void set_limits(sw_sim *s)
 {
-    sw_view v = s->sys.scene->view(&s->sys);
+    /* an embedder's scene may have no view: the state's own extent serves */
+    sw_view v = s->sys.scene->view ? s->sys.scene->view(&s->sys) : (sw_view){ 0, 0, 0, 0 };
     double span = fmax(fmax(fabs(v.xmin), fabs(v.xmax)), fmax(fabs(v.ymin), fabs(v.ymax)));
     int e;
     frexp(1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y)), &e);

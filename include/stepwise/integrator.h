@@ -57,6 +57,17 @@ int sw_integrator_register(const sw_integrator *method, char *err, size_t errlen
 /* Whether the method can step this system; when not, err says why. */
 int sw_integrator_accepts(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen);
 
+/* For a program that owns its state and steps it itself (the engine as a
+ * library of integrators): a stepper of method m for systems like ode (its
+ * workspace allocated here, once), NULL with err filled when m cannot
+ * step ode or memory is short; then one step of at most h from (*t, y),
+ * *t advanced, 0 or a negative status (a failed solve); then freed.
+ * Adaptive methods use SW_RTOL_DEFAULT and SW_ATOL_DEFAULT. A stepper
+ * belongs to one thread at a time. */
+sw_stepper *sw_stepper_new(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen);
+int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
+void sw_stepper_delete(sw_stepper *s);
+
 /* Student plugins: a shared object exports
  *     const sw_plugin *sw_plugin_info(void);
  * returning a description of its integrator (see examples/euler_plugin.c). */

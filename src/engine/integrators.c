@@ -228,6 +228,34 @@ void sw_stepper_free(sw_stepper *s)
 
 void sw_stepper_touch(sw_stepper *s) { s->have_cache = 0; }
 
+sw_stepper *sw_stepper_new(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
+{
+    if (!m || !ode || !ode->deriv || ode->dim < 1 || (ode->order != 1 && ode->order != 2) ||
+        (ode->order == 2 && ode->dim % 2)) {
+        snprintf(err, errlen, "a stepper needs a method and an ode with a derivative, dim >= 1 and "
+                 "order 1 or 2 (order 2: an even dim, y = [x | v])");
+        return NULL;
+    }
+    sw_stepper *s = malloc(sizeof *s);
+    if (!s) {
+        snprintf(err, errlen, "out of memory for a stepper");
+        return NULL;
+    }
+    if (sw_stepper_init(s, m, ode, err, errlen) != SW_OK) {
+        free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void sw_stepper_delete(sw_stepper *s)
+{
+    if (!s)
+        return;
+    sw_stepper_free(s);
+    free(s);
+}
+
 int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     s->checked = 0;

@@ -45,8 +45,8 @@ void sw_stepper_touch(sw_stepper *s);
 /* Refuse a registered (plugin) method from now on: sw_integrator_accepts
  * then fails with `why` (play disables a plugin that crashed). */
 void sw_integrator_disable(const sw_integrator *m, const char *why);
-/* One step through the method's table entry. */
-int sw_stepper_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
+/* One step through the method's table entry: sw_stepper_step, public
+ * (stepwise/integrator.h). */
 
 /* Solve (I - c·J) z = r through ode->solve, or the dense finite-difference
  * fallback (dim <= SW_DENSE_MAX) using s->dense. */

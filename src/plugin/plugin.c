@@ -97,10 +97,16 @@ static int check_reply(const sw_host_info *r, const char *shown, char *err, size
 {
     char why[SW_ERRLEN], esc[200];
     switch (r->stage) {
-    case SW_HOST_STAGE_DLOPEN:
-        sw_escape(r->dlerr, 160, esc, sizeof esc);
+    case SW_HOST_STAGE_DLOPEN: {
+        /* the loader names the host's copy ("./plugin.so: ..."); the message names the file already */
+        const char *why_dl = r->dlerr;
+        size_t at = strcspn(why_dl, ":");
+        if (why_dl[at] == ':' && at < 64 && strstr(why_dl, "plugin.so") && strstr(why_dl, "plugin.so") < why_dl + at)
+            why_dl += at + (why_dl[at + 1] == ' ' ? 2 : 1);
+        sw_escape(why_dl, 160, esc, sizeof esc);
         snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
         return SW_EINVAL;
+    }
     case SW_HOST_STAGE_SYMBOL:
         snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
                  "const sw_plugin *sw_plugin_info(void)", shown);

@@ -202,8 +202,9 @@ FORCE:
 LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)
 
 # For embedders: the engine library, the public headers and a pkg-config
-# file (`pkg-config --cflags --libs stepwise`; static only, so Libs names
-# what the library itself needs).
+# file (`pkg-config --cflags --libs stepwise`). Static only: Libs names what
+# the engine needs (libm); the sandbox's libseccomp is Libs.private, for a
+# program that runs plugins (`pkg-config --static --libs stepwise`).
 LIBDIR   = $(PREFIX)/lib
 VERSION  = $(shell sed -n 's/^\#define SW_VERSION "\(.*\)"/\1/p' include/stepwise/base.h)
 
@@ -219,7 +220,8 @@ install: $(BIN) $(LIB) $(HOST)
 	printf '%s\n' 'prefix=$(PREFIX)' 'includedir=$${prefix}/include' 'libdir=$(LIBDIR)' '' \
 	    'Name: stepwise' 'Description: particle systems and numerical integrators, as stepwise teaches them' \
 	    'Version: $(VERSION)' 'Cflags: -I$${includedir}' \
-	    'Libs: -L$${libdir} -lstepwise $(strip $(SECCOMP_LIBS)) -lm -ldl' > $(DESTDIR)$(LIBDIR)/pkgconfig/stepwise.pc
+	    'Libs: -L$${libdir} -lstepwise -lm' 'Libs.private: $(strip $(SECCOMP_LIBS))' \
+	    > $(DESTDIR)$(LIBDIR)/pkgconfig/stepwise.pc
 
 # A student's integrator as a shared object: examples/euler_plugin.c is the
 # template (docs/plugins.md); load it with --plugin examples/euler_plugin.so.

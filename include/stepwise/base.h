@@ -4,6 +4,8 @@
 #define STEPWISE_BASE_H
 
 #define SW_VERSION "0.1.0"
+/* The version of the library linked in (SW_VERSION is the headers'). */
+const char *sw_version(void);
 
 /* Status codes returned by library calls; messages go to a caller buffer. */
 enum {

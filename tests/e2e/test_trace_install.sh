@@ -82,7 +82,7 @@ int main(void)
         return 1;
     }
     sw_sim_run_until(&s, 1.0);
-    printf("stepwise %s: t=%g steps=%ld\n", SW_VERSION, s.t, s.steps);
+    printf("stepwise %s: t=%g steps=%ld\n", sw_version(), s.t, s.steps);
     sw_sim_free(&s);
     /* a system of its own, stepped by rk4 through the public stepper:
      * x'' = -x from (1, 0) for 100 steps of 0.01; the error against
@@ -103,6 +103,10 @@ int main(void)
 }
 C
 flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs stepwise) || fail "pkg-config does not know the installed stepwise"
+# the engine alone needs no libseccomp (the sandbox's, for a program that runs plugins: --static)
+case " $flags " in *" -lseccomp "*) fail "pkg-config --libs asks an embedder for -lseccomp: $flags" ;; esac
+PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --static --libs stepwise | grep -q -- -lseccomp ||
+    fail "pkg-config --static --libs does not name the sandbox's libseccomp"
 # shellcheck disable=SC2086
 ${CC:-cc} -std=c11 -Wall -Wextra -Werror -o "$dir/embed" "$dir/embed.c" $flags || fail "an embedder does not build against stepwise.pc: $flags"
 out=$("$dir/embed") || fail "the embedder failed: $out"

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/particles_deriv.h"
 #include "stepwise/base.h"
 #include "scenes/scenes.h"
 #include "util/num.h"
@@ -25,10 +26,6 @@ static const sw_param spring_params[] = {
     { "g", 0.0, -100.0, 100.0, 0, "m/s^2", "gravity, pointing down (0: none)" },
 };
 
-/* The particle derivative the spring scene wraps (the same function for
- * every particle system). */
-static sw_deriv_fn *particle_deriv;
-
 /* The particle derivative, with the side the mass is on when events are
  * located (sys->extra[0]: +1, -1; 0 when not) extended smoothly past the
  * anchor: there the engine's -k(|x| - rest)·sign(x) is corrected to
@@ -36,7 +33,7 @@ static sw_deriv_fn *particle_deriv;
 static void spring_deriv(void *ctx, double t, const double *y, double *dydt)
 {
     sw_system *sys = (sw_system *)(void *)((char *)ctx - offsetof(sw_system, particles));
-    particle_deriv(ctx, t, y, dydt);
+    swp_deriv(ctx, t, y, dydt); /* the particle system's own, which this one wraps */
     double side = sys->extra[0];
     double now = y[0] > 0 ? 1.0 : y[0] < 0 ? -1.0 : 0.0;
     if (side != 0 && now != side)
@@ -69,7 +66,6 @@ static int spring_build(sw_system *sys, char *err, size_t errlen)
         return SW_ENOMEM;
     }
     sys->nextra = 1;
-    particle_deriv = sys->particles.ode.deriv;
     sys->particles.ode.deriv = spring_deriv;
     return SW_OK;
 }

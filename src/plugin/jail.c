@@ -292,10 +292,31 @@ int sw_jail_build(const sw_jail *spec, const char **step)
 static char uid_dir[512]; /* the jail's directory, for Landlock */
 static int drop_bounding(void);
 
+/* Whether every directory on path (absolute) lets others pass through
+ * (o+x): the jail's user, which owns none of them, must reach its work/. */
+static int others_may_pass(const char *path)
+{
+    char prefix[512];
+    size_t len = strlen(path);
+    if (path[0] != '/' || len >= sizeof prefix)
+        return 0;
+    for (size_t i = 1; i <= len; i++)
+        if (path[i] == '/' || path[i] == '\0') {
+            memcpy(prefix, path, i);
+            prefix[i] = '\0';
+            struct stat st;
+            if (stat(prefix, &st) != 0 || !S_ISDIR(st.st_mode) || !(st.st_mode & S_IXOTH))
+                return 0;
+        }
+    return 1;
+}
+
 void sw_jail_uid_dir(int pid, char *dir, size_t dirlen)
 {
+    /* $TMPDIR when the jail's user can reach into it (a grader's private
+     * TMPDIR, mode 0700, it cannot), else /tmp */
     const char *tmp = getenv("TMPDIR");
-    if (!tmp || tmp[0] != '/' || strlen(tmp) > 300)
+    if (!tmp || strlen(tmp) > 300 || !others_may_pass(tmp))
         tmp = "/tmp";
     snprintf(dir, dirlen, "%s/stepwise-jail-%d", tmp, pid);
 }

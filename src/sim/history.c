@@ -18,6 +18,7 @@ struct sw_history_meta {
     double err_last;          /* ... and the last accepted step's error norm */
     long accepted, rejected, newton_iters;
     int have_cache, fsal;     /* the FSAL derivative (kept in the vector's second half) */
+    const sw_integrator *method; /* whose cache it is */
     long located;             /* events located so far, and the last one's time */
     double last_event;
 };
@@ -70,7 +71,7 @@ void sw_history_push(sw_history *h, const sw_sim *s)
         .t = s->t, .steps = s->steps, .evals = s->sys.ode->evals,
         .h_next = st->h_next, .h_last = st->h_last, .err_last = st->err_last,
         .accepted = st->accepted, .rejected = st->rejected, .newton_iters = st->newton_iters,
-        .have_cache = st->have_cache, .fsal = st->fsal,
+        .have_cache = st->have_cache, .fsal = st->fsal, .method = st->method,
         .located = sw_sim_events_located(s), .last_event = sw_sim_events_last_time(s),
     };
     h->head = (h->head + 1) % h->cap;
@@ -99,7 +100,10 @@ static void restore(const sw_history *h, int i, sw_sim *s)
     size_t dim = (size_t)h->dim;
     sw_stepper *st = s->stepper;
     memcpy(s->sys.y, v, dim * sizeof *v);
-    if (m->have_cache)
+    /* A cache is its method's: after a change of method (which should
+     * have cleared the history) it is not put into another's workspace. */
+    int cache = m->have_cache && m->method == st->method;
+    if (cache)
         memcpy(SW_WORK(st, m->fsal), v + dim, dim * sizeof *v);
     if (h->nextra)
         memcpy(s->sys.extra, v + 2 * dim, (size_t)h->nextra * sizeof *v);
@@ -112,8 +116,8 @@ static void restore(const sw_history *h, int i, sw_sim *s)
     st->accepted = m->accepted;
     st->rejected = m->rejected;
     st->newton_iters = m->newton_iters;
-    st->have_cache = m->have_cache;
-    st->fsal = m->fsal;
+    st->have_cache = cache;
+    st->fsal = cache ? m->fsal : st->fsal;
     st->why = NULL;
     sw_sim_events_restore(s, m->located, m->last_event);
     s->blown = 0; /* only states before a blow-up are kept */

@@ -82,51 +82,6 @@ static int sandbox_wait(int fd, double seconds)
     }
 }
 
-int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
-{
-    double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
-    char *p = buf;
-    size_t got = 0;
-    int sock = 1;
-    double spin_until = -1;
-    while (got < len) {
-        /* What is there already costs one call, no poll; a reply due in
-         * microseconds (a plugin's step) is waited for awake, briefly,
-         * which saves two context switches a step when both have a core. */
-        ssize_t n = sock ? recv(fd, p + got, len - got, MSG_DONTWAIT) : -1;
-        if (n < 0 && errno == EAGAIN && sock) {
-            double now = sw_sandbox_now();
-            if (spin_until < 0)
-                spin_until = now + SPIN_SECONDS;
-            if (now < spin_until)
-                continue;
-        }
-        if (n < 0 && errno == ENOTSOCK)
-            sock = 0;
-        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR || errno == ENOTSOCK)) {
-            double left = seconds >= 0 ? deadline - sw_sandbox_now() : -1;
-            if (seconds >= 0 && left < 0)
-                left = 0;
-            int w = sandbox_wait(fd, left);
-            if (w < 0)
-                return -1;
-            if (w == 0)
-                return -2;
-            if (sock)
-                continue;
-            n = read(fd, p + got, len - got);
-            if (n < 0 && (errno == EINTR || errno == EAGAIN))
-                continue;
-        }
-        if (n == 0)
-            return 0;
-        if (n < 0)
-            return errno == ECONNRESET ? 0 : -3;
-        got += (size_t)n;
-    }
-    return 1;
-}
-
 long sw_sandbox_read_some(int fd, void *buf, size_t max, double seconds)
 {
     double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
@@ -161,6 +116,21 @@ long sw_sandbox_read_some(int fd, void *buf, size_t max, double seconds)
         if (w == 0)
             return -2;
     }
+}
+
+int sw_sandbox_read(int fd, void *buf, size_t len, double seconds)
+{
+    /* pieces as they come, within one deadline for the whole */
+    double deadline = seconds >= 0 ? sw_sandbox_now() + seconds : -1;
+    char *p = buf;
+    for (size_t got = 0; got < len;) {
+        double left = seconds >= 0 ? fmax(deadline - sw_sandbox_now(), 0) : -1;
+        long n = sw_sandbox_read_some(fd, p + got, len - got, left);
+        if (n <= 0)
+            return (int)n;
+        got += (size_t)n;
+    }
+    return 1;
 }
 
 int sw_sandbox_write(int fd, const void *buf, size_t len)

@@ -17,6 +17,7 @@ static const struct command {
     { "record", sw_cmd_record, "run a scene headless and write a step trace" },
     { "check", sw_cmd_check, "compare a trace with a reference (homework grading)" },
     { "grade", sw_cmd_grade, "grade a class: every submission against an assignment" },
+    { "handout", sw_cmd_handout, "write each student's own assignment sheet (per-student parameters)" },
     { "autograder", sw_cmd_autograder, "write Gradescope's autograder bundle for an assignment" },
     { "try", sw_cmd_try, "build your integrator, measure it, check it and watch it live" },
     { "list", sw_cmd_list, "list scenes, integrators or lessons" },

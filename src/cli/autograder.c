@@ -7,6 +7,7 @@
  * read (and its points checked) before anything is written; the zip is
  * written whole or not at all; the same inputs give the same bytes. */
 #include "cli/cli.h"
+#include "grade/homework.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -90,6 +91,8 @@ static const char run_autograder_head[] =
     "for d in \"$root/submission\"/*/; do\n"
     "    [ -d \"$d\" ] && [ ! -L \"${d%/}\" ] && set -- \"$@\" \"${d%/}\"\n"
     "done\n"
+    "# Whose submission it is: for parameters drawn per student (their e-mail).\n"
+    "[ -f \"$root/submission_metadata.json\" ] && set -- --submission-metadata \"$root/submission_metadata.json\" \"$@\"\n"
     "# The bundle, the submission and the results are root's alone: a plugin,\n"
     "# run as another user, can read or write none of them.\n"
     "chmod go-rwx \"$root\" \"$root/source\" \"$root/results\" \"$root/submission\" \"$here\" 2>/dev/null\n"
@@ -268,8 +271,11 @@ static char *bundled_assignment(const char *path, const char **points, int npoin
             k++;
         int is_points = line[0] == '#' && line_len > 8 && strncmp(k, "points ", 7) == 0;
         int is_meta = line[0] == '#';
-        if (!is_meta && !header_done && npoints > 0) {
-            header_done = 1; /* a reference trace: the points go before its header row */
+        int is_part = is_meta && line_len > 6 && strncmp(k, "part", 4) == 0 && (k[4] == ' ' || k[4] == ':');
+        if ((!is_meta || is_part) && !header_done && npoints > 0) {
+            /* a reference trace: the points go before its header row; a
+             * homework of parts: before the first part, shared by all */
+            header_done = 1;
             for (int i = 0; i < npoints; i++) {
                 const char *eq = strrchr(points[i], '=');
                 used += (size_t)sprintf(out + used, "# points %.*s: %s\n",
@@ -308,9 +314,9 @@ static int check_bundled(const char *text, size_t len, double *trace_max, double
         fwrite(text, 1, len, f);
         rc = fclose(f) == 0 ? SW_OK : SW_EIO;
     }
-    static sw_assignment a;
+    static sw_homework h;
     char msg[SW_ERRLEN + 600];
-    if (rc == SW_OK && sw_assignment_read(&a, path, msg, sizeof msg) != SW_OK) {
+    if (rc == SW_OK && sw_homework_read(&h, path, NULL, msg, sizeof msg) != SW_OK) {
         /* The message names the temporary: give the option's view. */
         const char *colon = strstr(msg, "assignment.trace:");
         char *rest = NULL;
@@ -324,13 +330,17 @@ static int check_bundled(const char *text, size_t len, double *trace_max, double
     } else if (rc != SW_OK)
         snprintf(err, errlen, "cannot write %.300s", path);
     *trace_max = *plugin_max = 0;
-    for (int i = 0; rc == SW_OK && i < a.points.n; i++) {
-        sw_points_kind k = a.points.items[i].kind;
-        if (k != SW_POINTS_ORDER && k != SW_POINTS_STABILITY)
-            *trace_max += a.points.items[i].points;
-        if (k != SW_POINTS_HEADER)
-            *plugin_max += a.points.items[i].points;
+    for (int p = 0; rc == SW_OK && p < h.nparts; p++) {
+        const sw_points_set *set = &h.parts[p].a.points;
+        for (int i = 0; i < set->n; i++) {
+            sw_points_kind k = set->items[i].kind;
+            if (k != SW_POINTS_ORDER && k != SW_POINTS_STABILITY)
+                *trace_max += set->items[i].points;
+            if (k != SW_POINTS_HEADER)
+                *plugin_max += set->items[i].points;
+        }
     }
+    sw_homework_free(&h);
     sw_tmpdir_remove(dir);
     return rc;
 }
@@ -401,8 +411,10 @@ int sw_cmd_autograder(int argc, char **argv)
     if (!assignment || !output)
         return sw_cli_error("autograder needs --assignment A and -o FILE.zip; see 'stepwise "
                             "autograder --help'");
-    static sw_assignment asg;
-    if (sw_assignment_read(&asg, assignment, err, sizeof err) != SW_OK)
+    static sw_homework asg;
+    int read = sw_homework_read(&asg, assignment, NULL, err, sizeof err);
+    sw_homework_free(&asg);
+    if (read != SW_OK)
         return sw_cli_error("%s", err);
     char srcdir[PATH_MAX];
     if (source)

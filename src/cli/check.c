@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "cli/check_report.h"
+#include "grade/homework.h"
 #include "grade/verdict.h"
 #include "plugin/jail.h"
 
@@ -261,17 +262,32 @@ int sw_cmd_check(int argc, char **argv)
             return failed_helper(&a, "check: the plugin could not be loaded (see stderr)");
     if (a.reference && sw_cli_integrator(a.reference, &a.req.reference) != SW_EXIT_OK)
         return failed_helper(&a, "check: --reference names no integrator (see stderr)");
-    static sw_assignment assignment;
+    static sw_homework hw;
     char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    int first = 0, last = 1; /* the parts to check */
     if (a.assignment) {
-        if (sw_assignment_read(&assignment, a.assignment, err, sizeof err) != SW_OK)
+        if (sw_homework_read(&hw, a.assignment, NULL, err, sizeof err) != SW_OK) {
+            sw_homework_free(&hw);
             return fail_usage(&a, "%s", err);
-        a.req.assignment = &assignment;
+        }
+        sw_homework_free(&hw);
+        a.req.assignment = &hw.parts[0].a;
         char why[200], msg[300];
-        if (!sw_assignment_kind_ok(&assignment, plugin_run, why, sizeof why)) {
+        if (!sw_assignment_kind_ok(&hw.parts[0].a, plugin_run, why, sizeof why)) {
             snprintf(msg, sizeof msg, "%s: %s", why, plugin_run ? "give the trace you recorded"
                      : "give --plugin FILE (your .c or .so)");
             return fail_usage(&a, "check: %s", msg);
+        }
+        last = hw.nparts;
+        if (a.trace) {
+            sw_trace_reader r;
+            if (sw_trace_read_open(&r, a.trace, err, sizeof err) == SW_OK) {
+                first = sw_homework_part_of_trace(&hw, a.trace, &r.meta, err, sizeof err);
+                sw_trace_read_close(&r);
+                if (first < 0)
+                    return fail_usage(&a, "check: %s", err);
+                last = first + 1;
+            }
         }
     }
     if (plugin_run) {
@@ -282,6 +298,38 @@ int sw_cmd_check(int argc, char **argv)
     a.req.trace = a.trace;
     a.req.against = a.against;
     static sw_verdict v;
-    sw_check_run(&a.req, &v);
-    return sw_check_print(&v, a.json);
+    int rc = SW_EXIT_OK, shown = 0, hidden = 0, by[SW_VIS_AFTER_PUBLISHED + 1] = { 0 };
+    if (hw.nvarying > 0 && !a.json)
+        printf("note: %s draws parameters per student; checked with the first value of each "
+               "(your own are on your assignment sheet, 'stepwise handout')\n", a.assignment);
+    for (int p = first; p < last; p++) {
+        if (a.assignment && hw.parts[p].visibility != SW_VIS_VISIBLE) {
+            hidden++;
+            by[hw.parts[p].visibility]++;
+            continue;
+        }
+        if (a.assignment)
+            a.req.assignment = &hw.parts[p].a;
+        if (a.assignment && hw.nparts > 1 && !a.json)
+            printf("%s== part %s ==\n", shown ? "\n" : "", hw.parts[p].name);
+        if (a.json)
+            fputs(shown ? ",\n" : hw.nparts > 1 ? "[\n" : "", stdout);
+        sw_check_run(&a.req, &v);
+        int one = sw_check_print(&v, a.json);
+        if (one > rc)
+            rc = one;
+        shown++;
+    }
+    if (a.json && hw.nparts > 1)
+        fputs(shown ? "\n]\n" : "[]\n", stdout);
+    if (hidden && !a.json)
+    {
+        printf("%s%d %spart%s of this homework %s graded by the teacher's grader only:", shown ? "\n" : "",
+               hidden, shown ? "more " : "", hidden == 1 ? "" : "s", hidden == 1 ? "is" : "are");
+        for (int k = SW_VIS_HIDDEN, said = 0; k <= SW_VIS_AFTER_PUBLISHED; k++)
+            if (by[k])
+                printf("%s %d %s", said++ ? "," : "", by[k], sw_visibility_words((sw_visibility)k));
+        printf(".\n");
+    }
+    return rc;
 }

@@ -77,6 +77,7 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
 int sw_cmd_grade(int argc, char **argv);
 /* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
 int sw_cmd_autograder(int argc, char **argv);
+int sw_cmd_handout(int argc, char **argv);
 int sw_cmd_try(int argc, char **argv);
 /* Once the scene is known: defaults, --set values, default method and dt. */
 int sw_cli_finish_opts(sw_run_opts *o);

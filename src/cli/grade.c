@@ -32,7 +32,8 @@ static const char grade_help[] =
     "usage: stepwise grade --assignment A [--csv FILE] [--results FILE] [--cpu S] [--memory MB]\n"
     "                      [--output KB] [--wall S] [--plugin-timeout S] [--rtol R] [--atol A]\n"
     "                      [--tol COL=REL[,ABS]]... [--ignore COL]... [--roster FILE] [--fresh]\n"
-    "                      [--similarity] [--feedback DIR] [-j N] FILES...|DIR...\n"
+    "                      [--similarity] [--feedback DIR] [--gradebook FILE] [--lms FILE]\n"
+    "                      [-j N] FILES...|DIR...\n"
     "\n"
     "Grades every submission against the assignment A (a small metadata file, or a\n"
     "reference trace whose header serves): traces (.trace, .csv) are checked like\n"
@@ -50,6 +51,13 @@ static const char grade_help[] =
     "                         message,id,remarks,similar,score,max; an existing one is updated: the\n"
     "                         rows of the files graded now replaced, the others kept\n"
     "      --fresh            start the --csv gradebook over instead of updating it\n"
+    "      --gradebook FILE   one row per student (the roster's, or each '# student:'): the\n"
+    "                         counted submissions' score out of the homework's, by its\n"
+    "                         '# count:' rule (best, or latest); needs --csv, whose rows\n"
+    "                         (kept across regrades) it is made from\n"
+    "      --lms FILE         the gradebook as Canvas and Moodle import it (needs --csv)\n"
+    "      --submission-metadata FILE  Gradescope's submission_metadata.json: whose\n"
+    "                         submission this is, for per-student parameters\n"
     "      --roster FILE      the class (CSV: a name column, optional id and email): every\n"
     "                         row gets its student from the file's or folder's name\n"
     "                         (Gradescope, Canvas, Moodle downloads; folders are walked),\n"
@@ -60,6 +68,8 @@ static const char grade_help[] =
     "      --feedback DIR     write each student's full report to DIR/NAME.txt\n"
     "  -j, --jobs N           grade N submissions at once, 1 to 256 (default: the online\n"
     "                         cores); the results are the same for every N\n"
+    ;
+static const char grade_help_more[] =
     "      --results FILE     write a class-wide results.json (score, max_score, tests)\n"
     "      --gradescope FILE  write Gradescope's results.json for one submission: one test\n"
     "                         per check of the assignment ('# points'), as run_autograder\n"
@@ -138,7 +148,8 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
                     rec.status != GRADE_LIMIT))
         rc = -3;
     if (rc == 1 && (rec.report_len > job->report_max || rec.failing_step < -1 ||
-                    rec.score.n < 0 || rec.score.n > SW_POINTS_MAX || rec.nwrong > SW_SIMILAR_ROWS_MAX))
+                    rec.score.n < 0 || rec.score.n > SW_SCORE_CHECKS || rec.nwrong > SW_SIMILAR_ROWS_MAX ||
+                    rec.part < -1 || rec.part >= job->hw->nparts))
         rc = -3;
     if (rc == 1) {
         rec.student[sizeof rec.student - 1] = rec.notes[sizeof rec.notes - 1] = '\0';
@@ -152,6 +163,9 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
                 c->max = 0;
             if (!(c->score >= 0 && c->score <= c->max))
                 c->score = 0;
+            if (c->part < 0 || c->part >= job->hw->nparts)
+                c->part = 0;
+            c->visibility = (int)job->hw->parts[c->part].visibility; /* the homework's word, not the record's */
             rec.score.score += c->score;
             rec.score.max += c->max;
         }
@@ -188,6 +202,7 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         memcpy(e->kind, rec.kind, sizeof e->kind);
         memcpy(e->message, rec.message, sizeof e->message);
         e->score = rec.score;
+        e->part = rec.part;
     } else {
         char how[120];
         if (rc == -2 || rc == -1)
@@ -211,7 +226,8 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         /* Out of its wall-clock or CPU time: a limit, not a wrong answer. */
         if (rc == -2 || (rc == 0 && !end.exited && end.signal == SIGXCPU))
             e->status = GRADE_LIMIT;
-        grade_zero_score(&e->score, job->base->assignment, job->plugin, e->message);
+        e->part = -1;
+        grade_zero_score(&e->score, job->hw, job->plugin, e->message);
     }
     e->seconds = sw_sandbox_now() - start;
     slot->active = 0;
@@ -246,6 +262,7 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
             slots[k].job.path = list->items[next].path;
             slots[k].job.plugin = list->items[next].plugin;
             slots[k].job.index = next;
+            slots[k].job.student_key = grade_student_key(list, &list->items[next]);
             if (grade_start(&slots[k], &list->items[next]) == 0)
                 running++;
             else
@@ -303,7 +320,7 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
 static int grade_command(int argc, char **argv, char **wargv)
 {
     /* a plugin's worker, started again as a program (grade.h) */
-    const char *w_build = NULL, *w_path = NULL;
+    const char *w_build = NULL, *w_path = NULL, *w_student = NULL;
     int w_index = -1, w_similarity = 0;
     if (argc > 1 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
         /* only as grade starts it: its channel on descriptor 3, the mark
@@ -311,18 +328,19 @@ static int grade_command(int argc, char **argv, char **wargv)
          * is neither) */
         struct stat ch;
         const char *mark = getenv("STEPWISE_GRADE_WORKER");
-        if (argc <= 6 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
+        if (argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
             return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
                                 "option (to grade a file of that name, give it after --)");
         w_index = atoi(argv[2]);
         w_build = argv[3];
         w_path = argv[4];
         w_similarity = atoi(argv[5]);
-        argc -= 5;
-        argv += 5;
+        w_student = argv[6];
+        argc -= 6;
+        argv += 6;
     }
     const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL, *roster = NULL;
-    const char *feedback = NULL;
+    const char *feedback = NULL, *gradebook = NULL, *lms = NULL, *metadata = NULL;
     int fresh = 0, similarity = 0, jobs = 0;
     sw_limits lim = { .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
                       .output_bytes = (size_t)1024 << 10 };
@@ -346,6 +364,7 @@ static int grade_command(int argc, char **argv, char **wargv)
                     strcmp(a, "--similarity") != 0) || strcmp(a, "-j") == 0);
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(grade_help, stdout);
+            fputs(grade_help_more, stdout);
             free(files);
             return SW_EXIT_OK;
         }
@@ -401,6 +420,12 @@ static int grade_command(int argc, char **argv, char **wargv)
         }
         else if (strcmp(a, "--csv") == 0)
             csv = val;
+        else if (strcmp(a, "--gradebook") == 0)
+            gradebook = val;
+        else if (strcmp(a, "--lms") == 0)
+            lms = val;
+        else if (strcmp(a, "--submission-metadata") == 0)
+            metadata = val;
         else if (strcmp(a, "--results") == 0)
             results = val;
         else if (strcmp(a, "--gradescope") == 0)
@@ -436,26 +461,33 @@ static int grade_command(int argc, char **argv, char **wargv)
                           "see 'stepwise grade --help'");
     if (rc == SW_EXIT_OK && nfiles == 0 && !w_path)
         rc = sw_cli_error("grade needs submissions: FILES... or a DIR");
-    static sw_assignment asg;
+    static sw_homework hw;
     struct stat asg_st;
-    if (rc == SW_EXIT_OK && (sw_assignment_read(&asg, assignment, err, sizeof err) != SW_OK ||
+    if (rc == SW_EXIT_OK && (sw_homework_read(&hw, assignment, NULL, err, sizeof err) != SW_OK ||
                              stat(assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
+    if (rc == SW_EXIT_OK && (gradebook || lms) && !csv)
+        rc = sw_cli_error("grade: --gradebook and --lms are made from every file's row: give --csv FILE "
+                          "too (the file rows, kept across regrades)");
     if (w_path) {
         free(files);
         if (rc != SW_EXIT_OK)
             return rc;
-        base.assignment = &asg;
+        base.assignment = &hw.parts[0].a;
         sw_decimal_init();
-        grade_job job = { w_path, 1, w_build, w_index, &base, lim.output_bytes, NULL, w_similarity, &lim, 0, NULL };
+        grade_job job = { w_path, 1, w_build, w_index, &base, lim.output_bytes, NULL, w_similarity, &lim, 0, NULL,
+                          &hw, w_student };
         return grade_worker(&job, 3, 3);
     }
     grade_list list = { 0 };
+    list.hw = &hw;
     list.fresh = fresh;
     list.similarity = similarity;
     list.feedback = feedback;
     if (rc == SW_EXIT_OK && roster)
         rc = grade_roster_load(&list, roster);
+    if (rc == SW_EXIT_OK && metadata)
+        rc = grade_read_submission_metadata(&list, metadata);
     for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
         rc = grade_collect(&list, files[i], &asg_st);
     free(files);
@@ -465,14 +497,18 @@ static int grade_command(int argc, char **argv, char **wargv)
     if (rc == SW_EXIT_OK && gradescope && results)
         rc = sw_cli_error("grade: --gradescope and --results are two forms of results.json; give "
                           "one");
+    const char *const out_opts[] = { "--csv", gradescope ? "--gradescope" : "--results", "--gradebook", "--lms" };
+    const char *const out_paths[] = { csv, gradescope ? gradescope : results, gradebook, lms };
     if (rc == SW_EXIT_OK)
-        rc = grade_check_outputs(&list, &asg_st, csv, gradescope ? gradescope : results);
+        rc = grade_check_outputs(&list, &asg_st, out_opts, out_paths, 4);
     if (rc == SW_EXIT_OK && feedback)
         rc = grade_feedback_check(&list, feedback);
     if (rc == SW_EXIT_OK)
         rc = grade_book_load(&list, csv);
     if (rc == SW_EXIT_OK)
         rc = grade_roster_missing(&list);
+    if (rc == SW_EXIT_OK)
+        rc = grade_student_keys_check(&list);
     if (rc != SW_EXIT_OK) {
         grade_list_free(&list);
         return rc;
@@ -485,7 +521,7 @@ static int grade_command(int argc, char **argv, char **wargv)
     /* the workers build their jails the way the probe found works here */
     if (sw_jail_enabled() && sw_jail_kind_now() == SW_JAIL_UID)
         setenv("STEPWISE_JAIL", "uid", 1);
-    base.assignment = &asg;
+    base.assignment = &hw.parts[0].a;
     if (!(wall > 0))
         wall = GRADE_WALL(lim.cpu_seconds);
     char build_dir[PATH_MAX];
@@ -494,7 +530,7 @@ static int grade_command(int argc, char **argv, char **wargv)
         return sw_cli_error("grade: %s", err);
     }
     sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
-    grade_print_head(&asg, &list);
+    grade_print_head(&hw, &list);
     double start = sw_sandbox_now();
     if (jobs == 0) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);
@@ -502,7 +538,8 @@ static int grade_command(int argc, char **argv, char **wargv)
     }
     if (jobs > list.n)
         jobs = list.n > 0 ? list.n : 1;
-    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim, wargc, wargv };
+    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim, wargc, wargv,
+                        &hw, "" };
     sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
     grade_all(&list, &proto, wall, jobs);
     sw_sandbox_kill_orphans(); /* before any result is written */
@@ -518,8 +555,13 @@ static int grade_command(int argc, char **argv, char **wargv)
     double seconds = sw_sandbox_now() - start;
     if (rc == SW_EXIT_OK)
         rc = grade_finish(&list, &lim, wall, seconds, csv, results);
+    if (rc != SW_EXIT_USAGE && (gradebook || lms)) {
+        int brc = grade_students_write(&list, gradebook, lms);
+        if (brc != SW_EXIT_OK)
+            rc = brc;
+    }
     if (gradescope) {
-        int grc = grade_write_gradescope(&list, &asg, gradescope, seconds, sw_jail_enabled());
+        int grc = grade_write_gradescope(&list, &hw, gradescope, seconds, sw_jail_enabled());
         if (grc != SW_EXIT_OK)
             rc = grc;
     }

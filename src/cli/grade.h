@@ -8,6 +8,7 @@
 #include <sys/types.h>
 
 #include "grade/assignment.h"
+#include "grade/homework.h"
 #include "grade/points.h"
 #include "grade/roster.h"
 #include "grade/verdict.h"
@@ -43,6 +44,8 @@ typedef struct grade_entry {
     char *report;                        /* the plain report, or NULL */
     double seconds;
     sw_score score;                      /* the assignment's points, check by check */
+    int part;                            /* a trace: the part it is for; -1 every part */
+    long long mtime;                     /* the file's modification time (the "latest" rule) */
 } grade_entry;
 
 /* The verdict of an entry that was not graded (not a submission, a link, a
@@ -78,6 +81,8 @@ typedef struct grade_list {
     struct sw_csv_doc *old_book;         /* the --csv gradebook read back, or NULL */
     int similarity;                      /* --similarity */
     char similar_summary[200];           /* e.g. "2 similar pairs" for the summary */
+    const sw_homework *hw;               /* the homework, with the teacher's preview values */
+    char student_email[128];             /* --submission-metadata: whose submission this is */
     char *similar_table;                 /* the pairs, in words, printed after the rows */
 } grade_list;
 
@@ -92,12 +97,12 @@ int grade_collect(grade_list *list, const char *arg, const struct stat *assign_s
 /* Check the --csv and --results paths before any grading: writable, not
  * the assignment, a submission or a file among them; standard output sends
  * the table to stderr. SW_EXIT_OK, or SW_EXIT_USAGE with one line printed. */
-int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *csv,
-                        const char *results);
+int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *const *opts,
+                        const char *const *paths, int n);
 void grade_list_free(grade_list *l);
 /* The table's heading, then one row per graded submission (on stdout, or
  * stderr when a report goes to stdout; names escaped). */
-void grade_print_head(const sw_assignment *a, const grade_list *l);
+void grade_print_head(const sw_homework *h, const grade_list *l);
 void grade_print_row(grade_entry *e);
 /* The entries not graded, the totals; the CSV gradebook and results.json
  * when asked (each written whole through a temporary file renamed into
@@ -108,7 +113,7 @@ int grade_finish(const grade_list *l, const sw_limits *lim, double wall, double 
  * checks of each graded file as tests, the best file's total as the score,
  * whole or not at all. jailed says how plugins ran. SW_EXIT_OK or
  * SW_EXIT_USAGE (grade_gs.c). */
-int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const char *path,
+int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char *path,
                            double seconds, int jailed);
 /* Remove dir and all that grading built in it (n: the submissions). */
 void grade_clean_dir(const char *dir, int n);
@@ -125,8 +130,8 @@ void grade_student_of(const grade_entry *e, char *buf, size_t len);
 char *grade_text_shown(const char *text);
 const char *grade_verdict_word(int status);
 /* A row's points and their maximum, as every report counts them: the
- * assignment's checks where it was scored, else 1 for a pass of 1. */
-void grade_points_of(const grade_entry *e, double *score, double *max);
+ * checks it was scored on, else 0 of the homework's points. */
+void grade_points_of(const grade_list *l, const grade_entry *e, double *score, double *max);
 
 /* --roster (grade_roster.c): read the roster (and Gradescope's metadata
  * when the submissions hold it), match every row to a student, check each
@@ -136,6 +141,27 @@ int grade_roster_load(grade_list *l, const char *path);
 void grade_roster_assign(grade_list *l);
 void grade_roster_claim(const grade_list *l, grade_entry *e);
 int grade_roster_missing(grade_list *l);
+/* Gradescope's submission_metadata.json: its first user's e-mail into
+ * l->student_email. SW_EXIT_OK or SW_EXIT_USAGE, printed. */
+int grade_read_submission_metadata(grade_list *l, const char *path);
+/* Whose values a submission is graded with: --submission-metadata's
+ * student, else its roster student's e-mail, else "". */
+const char *grade_student_key(const grade_list *l, const grade_entry *e);
+/* A homework with per-student values needs to know each student's e-mail:
+ * from --submission-metadata, or a --roster with an email column. */
+int grade_student_keys_check(const grade_list *l);
+
+/* The counted submissions of one student (grade_count.c): per part, the
+ * entry whose checks count (best score, or the latest file, by the
+ * homework's rule), among entries of the kind it asks for; -1 none. */
+typedef struct grade_counted {
+    int entry[SW_PARTS_MAX];
+    double score, max;                   /* the sum over parts; max the homework's */
+    int status;                          /* pass when every part's counted entry passed */
+} grade_counted;
+void grade_count(const grade_list *l, const int *entries, int n, grade_counted *out);
+/* --gradebook and --lms (grade_students.c): one row per student. */
+int grade_students_write(const grade_list *l, const char *gradebook, const char *lms);
 
 /* --csv over an existing gradebook (grade_book.c): read it back before
  * grading (refused unless its columns are this version's or a prefix of
@@ -153,6 +179,9 @@ int grade_similar_run(grade_list *l);
  * report per student at the end, each whole. */
 int grade_feedback_check(const grade_list *l, const char *dir);
 int grade_feedback_write(const grade_list *l, const char *dir);
+/* A student's name as a file name: letters, digits, '.', '-', '_', its
+ * Latin letters folded as the roster folds them (Poincaré: Poincare). */
+void grade_safe_name(const char *name, char *out, size_t len);
 
 /* What a submission's child sends back: this, then report_len bytes, then
  * nwrong grade_wrong_row (--similarity). */
@@ -164,6 +193,7 @@ typedef struct grade_record {
     char kind[24];
     char message[1200];
     sw_score score;
+    int part;                /* a trace's part; -1 a plugin's, every part */
     unsigned report_len;
     unsigned nwrong;
 } grade_record;
@@ -180,9 +210,11 @@ typedef struct grade_job {
     const sw_limits *lim;    /* the submission's: this worker and its plugin's processes together */
     int argc;                /* the command's arguments (argv[0] "grade"), from which a plugin's */
     char **argv;             /* worker starts again as a new program; NULL: it is that program */
+    const sw_homework *hw;   /* the homework, with the teacher's preview values */
+    const char *student_key; /* whose values this submission is graded with ("" unknown) */
 } grade_job;
 
-/* `stepwise grade --worker INDEX BUILD_DIR PATH SIMILARITY ARGS...`: the
+/* `stepwise grade --worker INDEX BUILD_DIR PATH SIMILARITY STUDENT ARGS...`: the
  * worker of one plugin, as a new program (grade_worker.c starts it): so
  * that nothing of the class the grader had read (roster, gradebook, the
  * other submissions, in live or in freed memory) is in the process the
@@ -194,7 +226,7 @@ typedef struct grade_job {
 int grade_worker(void *ctx, int in, int out);
 /* Every check of the assignment at 0 points, for a submission that could
  * not be checked, with why. */
-void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, const char *why);
+void grade_zero_score(sw_score *s, const sw_homework *h, int plugin, const char *why);
 
 /* The grader's CPU budget for one submission's worker (its own work:
  * the reference, the comparison, the measurements, the explainer), from

@@ -20,7 +20,7 @@
 
 /* New columns go last, so an older gradebook's header is a prefix of ours. */
 static const char *const columns[] = { "student", "file", "verdict", "first_failing_step",
-                                       "message", "id", "remarks", "similar", "score", "max" };
+                                       "message", "id", "remarks", "similar", "score", "max", "part" };
 enum { NCOLS = sizeof columns / sizeof columns[0], COL_STUDENT = 0, COL_FILE = 1,
        COL_VERDICT = 2 };
 
@@ -101,7 +101,7 @@ static void file_cell(const char *path, char *out, size_t outlen)
     }
 }
 
-static void row_cells(const grade_entry *e, const char **cells, row_text *t)
+static void row_cells(const grade_list *l, const grade_entry *e, const char **cells, row_text *t)
 {
     grade_student_of(e, t->student, sizeof t->student);
     file_cell(e->path ? e->path : "", t->file, sizeof t->file);
@@ -109,19 +109,20 @@ static void row_cells(const grade_entry *e, const char **cells, row_text *t)
     if (e->failing_step >= 0)
         snprintf(t->step, sizeof t->step, "%ld", e->failing_step);
     double points, most;
-    grade_points_of(e, &points, &most);
+    grade_points_of(l, e, &points, &most);
     snprintf(t->score, sizeof t->score, "%g", points);
     snprintf(t->max, sizeof t->max, "%g", most);
     const char *c[NCOLS] = { t->student, t->file, grade_verdict_word(e->status), t->step, e->message,
-                             e->owner_id, e->remarks, e->similar, t->score, t->max };
+                             e->owner_id, e->remarks, e->similar, t->score, t->max,
+                             l->hw && e->part >= 0 && e->part < l->hw->nparts ? l->hw->parts[e->part].name : "" };
     memcpy(cells, c, sizeof c);
 }
 
-static int render(const grade_entry *e, book_row *out)
+static int render(const grade_list *l, const grade_entry *e, book_row *out)
 {
     row_text text;
     const char *cells[NCOLS];
-    row_cells(e, cells, &text);
+    row_cells(l, e, cells, &text);
     size_t len = 0;
     out->line = NULL;
     out->used = 0;
@@ -196,13 +197,13 @@ void grade_book_write(FILE *f, const grade_list *l, char *said, size_t saidlen)
     book_row *nr = calloc((size_t)rows + 1, sizeof *nr);
     int ok = nr != NULL;
     for (int i = 0; ok && i < rows; i++)
-        ok = render(i < l->n ? &l->items[i] : &l->refused[i - l->n], &nr[i]) == SW_OK;
+        ok = render(l, i < l->n ? &l->items[i] : &l->refused[i - l->n], &nr[i]) == SW_OK;
     if (!ok) {
         /* Out of memory: the gradebook is written from this run alone. */
         for (int i = 0; i < rows; i++) {
             row_text text;
             const char *cells[NCOLS];
-            row_cells(i < l->n ? &l->items[i] : &l->refused[i - l->n], cells, &text);
+            row_cells(l, i < l->n ? &l->items[i] : &l->refused[i - l->n], cells, &text);
             for (int c = 0; c < NCOLS; c++) {
                 sw_csv_field(f, cells[c]);
                 fputs(c + 1 < NCOLS ? "," : "\r\n", f);

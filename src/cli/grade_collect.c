@@ -335,11 +335,7 @@ static int collect_dir(grade_list *list, const char *path, const char *rel, cons
             free(list->gs_metadata);
             if (!(list->gs_metadata = strdup(sub)))
                 rc = SW_ENOMEM;
-            if (rc == SW_OK)
-                rc = refuse(list, sub, "not a submission: Gradescope's submission metadata (read "
-                            "for the roster)");
-            if (rc == SW_OK && !(last_row(list, 0)->rel = strdup(subrel)))
-                rc = SW_ENOMEM;
+            /* read, never a row of the gradebook */
             if (rc == SW_OK)
                 rc = add_place(list, &st, NULL);
             continue;
@@ -474,6 +470,10 @@ int grade_list_add(grade_list *l, const char *path, int plugin)
         return SW_ENOMEM;
     e->plugin = plugin;
     e->who = SW_ROSTER_NONE;
+    e->part = -1;
+    struct stat st;
+    if (lstat(path, &st) == 0)
+        e->mtime = (long long)st.st_mtime;
     l->n++;
     return SW_OK;
 }

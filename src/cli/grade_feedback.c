@@ -44,7 +44,7 @@ int grade_feedback_check(const grade_list *l, const char *dir)
 
 /* The student's name as a file name: letters, digits, '.', '-', '_', its
  * Latin letters folded as the roster folds them (Poincaré: Poincare). */
-static void safe_name(const char *name, char *out, size_t len)
+void grade_safe_name(const char *name, char *out, size_t len)
 {
     char folded[4 * SW_TRACE_STUDENT_MAX];
     sw_roster_fold_latin(name, strlen(name), folded, sizeof folded);
@@ -134,7 +134,7 @@ int grade_feedback_write(const grade_list *l, const char *dir)
             continue; /* not a student's: a stray file */
         char student[SW_TRACE_STUDENT_MAX], base[90], path[PATH_MAX];
         grade_student_of(e, student, sizeof student);
-        safe_name(student, base + (l->roster && !on_roster ? 10 : 0), sizeof base - 10);
+        grade_safe_name(student, base + (l->roster && !on_roster ? 10 : 0), sizeof base - 10);
         if (l->roster && !on_roster)
             memcpy(base, "unmatched-", 10);
         /* Two students whose names reduce alike get -2, -3, ... */

@@ -31,7 +31,8 @@ static const char *base_name(const char *path)
     return out;
 }
 
-static void test(FILE *f, int *first, const char *name, double score, double max, const char *output)
+static void test(FILE *f, int *first, const char *name, double score, double max, const char *output,
+                 int visibility)
 {
     fprintf(f, "%s\n    {\n      \"name\": ", *first ? "" : ",");
     *first = 0;
@@ -42,7 +43,7 @@ static void test(FILE *f, int *first, const char *name, double score, double max
     sw_json_num(f, max);
     fprintf(f, ",\n      \"status\": \"%s\",\n      \"output\": ", score >= max ? "passed" : "failed");
     sw_json_str(f, output);
-    fputs(",\n      \"visibility\": \"visible\"\n    }", f);
+    fprintf(f, ",\n      \"visibility\": \"%s\"\n    }", sw_visibility_name((sw_visibility)visibility));
 }
 
 static const char *verdict_of(int status)
@@ -51,29 +52,31 @@ static const char *verdict_of(int status)
            : status == GRADE_SKIPPED ? "skipped" : "error";
 }
 
-int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const char *path,
+int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char *path,
                            double seconds, int jailed)
 {
-    /* The submission's score is its best graded file's: a student who
-     * uploads a draft beside the answer is not marked down for it. */
-    /* Only the kind the homework asks for is ever counted. */
-    int best = -1;
-    char other[200];
+    /* The submission's score is its counted files' (grade_count.c): a
+     * student who uploads a draft beside the answer is not marked down for
+     * it, and only the kind the homework asks for is ever counted. */
+    const sw_assignment *a = &h->parts[0].a;
+    int *all = calloc((size_t)l->n + 1, sizeof *all);
+    if (!all)
+        return sw_cli_error("grade: out of memory");
     for (int i = 0; i < l->n; i++)
-        if (sw_assignment_kind_ok(a, l->items[i].plugin, other, sizeof other) &&
-            (best < 0 || l->items[i].score.score > l->items[best].score.score))
-            best = i;
-    sw_score none;
+        all[i] = i;
+    grade_counted c;
+    grade_count(l, all, l->n, &c);
+    free(all);
+    int counted = c.status != GRADE_MISSING;
     char why[300];
     snprintf(why, sizeof why, "no submission to grade: upload %s%s", sw_assignment_wanted(a),
              l->n > 0 ? "; the files uploaded are not what this homework asks for"
              : l->ignored ? "; the files uploaded are listed in the output" : "");
-    sw_score_facts facts = { .is_plugin = 0, .usable = 0, .error = why };
-    sw_points_score(&a->points, &facts, &none);
-    const sw_score *s = best >= 0 ? &l->items[best].score : &none;
+    sw_score none;
+    grade_zero_score(&none, h, h->kind == SW_KIND_PLUGIN, why);
 
     sw_outfile o;
-    char err[SW_ERRLEN + 256];
+    char err[SW_ERRLEN + 256], other[200];
     if (sw_outfile_open(&o, path, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: %s", err);
     FILE *f = o.f;
@@ -83,12 +86,36 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
     if (t) {
         fprintf(t, "stepwise %s, assignment %s%s%s%s: ", SW_VERSION, base_name(a->path),
                 a->title[0] ? " (" : "", a->title, a->title[0] ? ")" : "");
-        if (best >= 0)
-            fprintf(t, "%g of %g points for %s (%s)", s->score, s->max,
-                    base_name(l->items[best].path), verdict_of(l->items[best].status));
+        /* With parts not shown yet, nothing here tells how those went:
+         * the points and verdicts of the visible parts only. */
+        int hidden = sw_homework_hidden_parts(h);
+        int one = c.entry[0]; /* the one file counted for every part, or -1 */
+        for (int p = 1; p < h->nparts; p++)
+            if (c.entry[p] != one)
+                one = -1;
+        double shown_pts = 0, shown_max = 0;
+        for (int p = 0; p < h->nparts; p++) {
+            const sw_score *s = c.entry[p] >= 0 ? &l->items[c.entry[p]].score : &none;
+            for (int k = 0; k < s->n; k++)
+                if (s->checks[k].part == p && h->parts[p].visibility == SW_VIS_VISIBLE) {
+                    shown_pts += s->checks[k].score;
+                    shown_max += s->checks[k].max;
+                }
+        }
+        if (hidden)
+            fprintf(t, "%g of %g points on the parts shown now; %d of the %d parts are graded now "
+                    "and shown later (or never): their tests say when", counted ? shown_pts : 0, shown_max,
+                    hidden, h->nparts);
+        else if (counted && one >= 0)
+            fprintf(t, "%g of %g points for %s (%s)", c.score, c.max, base_name(l->items[one].path),
+                    verdict_of(c.status));
+        else if (counted)
+            fprintf(t, "%g of %g points (%s)", c.score, c.max, verdict_of(c.status));
         else
-            fprintf(t, "0 of %g points: %s", s->max, why);
+            fprintf(t, "0 of %g points: %s", h->max, why);
         fprintf(t, ".\n");
+        if (hidden && !counted)
+            fprintf(t, "%s.\n", why);
         int ran_plugin = 0;
         for (int i = 0; i < l->n; i++)
             ran_plugin |= l->items[i].plugin && sw_assignment_kind_ok(a, 1, other, sizeof other);
@@ -97,36 +124,61 @@ int grade_write_gradescope(const grade_list *l, const sw_assignment *a, const ch
                                                    "CPU, memory and time limits still hold)"
                 : sw_jail_kind_now() == SW_JAIL_UID ? "in stepwise's jail (a user of its own, seccomp, Landlock, limits)"
                                                     : "in stepwise's jail (namespaces, seccomp, Landlock, limits)");
-        for (int i = 0; i < l->n; i++)
-            if (i != best)
-                fprintf(t, "Also graded, not counted: %s, %g of %g points (%s)\n",
-                        base_name(l->items[i].path), l->items[i].score.score,
-                        l->items[i].score.max, verdict_of(l->items[i].status));
+        for (int i = 0; i < l->n; i++) {
+            int is = 0;
+            for (int p = 0; p < h->nparts; p++)
+                is |= c.entry[p] == i;
+            const grade_entry *e = &l->items[i];
+            if (is && h->nparts > 1 && e->part >= 0)
+                fprintf(t, "Counted for part %s: %s\n", h->parts[e->part].name, base_name(e->path));
+            else if (is && (hidden || one < 0))
+                fprintf(t, "Counted: %s\n", base_name(e->path));
+            else if (is)
+                ; /* named on the first line */
+            else if (hidden)
+                fprintf(t, "Also graded, not counted (%s): %s\n",
+                        h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts", base_name(e->path));
+            else
+                fprintf(t, "Also graded, not counted (%s): %s, %g of %g points (%s)\n",
+                        h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts",
+                        base_name(e->path), e->score.score, e->score.max, verdict_of(e->status));
+        }
         for (int i = 0; i < l->ignored; i++)
             fprintf(t, "Not graded: %s: %s\n", base_name(l->refused[i].path), l->refused[i].message);
-        if (best >= 0 && l->items[best].status == 0 && l->items[best].message[0])
-            fprintf(t, "Note: %s\n", l->items[best].message); /* a pass's warning */
-        if (best >= 0 && l->items[best].report)
-            fprintf(t, "\n%s", l->items[best].report);
-        else if (best >= 0)
-            fprintf(t, "\n%s\n", l->items[best].message);
+        for (int p = 0; p < h->nparts; p++) {
+            int i = c.entry[p];
+            if (i < 0 || (p > 0 && c.entry[p - 1] == i))
+                continue; /* a plugin's report covers every part */
+            const grade_entry *e = &l->items[i];
+            if (e->status == 0 && e->message[0] && h->nparts == 1)
+                fprintf(t, "Note: %s\n", e->message); /* a pass's warning */
+            if (e->report)
+                fprintf(t, "\n%s", e->report);
+            else if (h->parts[p].visibility == SW_VIS_VISIBLE)
+                fprintf(t, "\n%s\n", e->message);
+        }
         fclose(t);
         char *shown = text ? grade_text_shown(text) : NULL;
         free(text);
         text = shown;
     }
     fputs("{\n  \"score\": ", f);
-    sw_json_num(f, s->score);
+    sw_json_num(f, counted ? c.score : 0);
     fputs(",\n  \"execution_time\": ", f);
     sw_json_num(f, ceil(seconds));
     fputs(",\n  \"output\": ", f);
     sw_json_str(f, text ? text : "(no output: out of memory)");
     fputs(",\n  \"output_format\": \"text\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [", f);
     int first = 1;
-    /* The counted file's checks; the others are named in the output. */
-    for (int k = 0; k < s->n; k++)
-        test(f, &first, s->checks[k].name, s->checks[k].score, s->checks[k].max,
-             s->checks[k].output);
+    /* Each part's checks from the file counted for it; a part with
+     * nothing counted gets its checks at 0, saying why. */
+    for (int p = 0; p < h->nparts; p++) {
+        const sw_score *s = c.entry[p] >= 0 ? &l->items[c.entry[p]].score : &none;
+        for (int k = 0; k < s->n; k++)
+            if (s->checks[k].part == p)
+                test(f, &first, s->checks[k].name, s->checks[k].score, s->checks[k].max,
+                     s->checks[k].output, (int)h->parts[p].visibility);
+    }
     fputs(first ? "]\n}\n" : "\n  ]\n}\n", f);
     free(text);
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)

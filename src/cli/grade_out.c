@@ -75,16 +75,21 @@ static void grade_score_text(const grade_entry *e, char *buf, size_t len)
         snprintf(buf, len, "%g/%g", e->score.score, e->score.max);
 }
 
-void grade_print_head(const sw_assignment *a, const grade_list *l)
+void grade_print_head(const sw_homework *h, const grade_list *l)
 {
+    const sw_assignment *a = &h->parts[0].a;
     int n = l->n, ignored = 0, missing = 0;
     for (int i = 0; i < l->ignored; i++)
         *(l->refused[i].status == GRADE_MISSING ? &missing : &ignored) += 1;
     char dt[40], path[300];
     sw_fmt_shortest(dt, sizeof dt, a->meta.dt);
     sw_escape(a->path, 200, path, sizeof path);
-    fprintf(table(), "grading %d submission%s against %s (%s%s on %s, dt %s)", n, n == 1 ? "" : "s",
-            path, a->nmethods > 1 ? "any of " : "", a->methods[0]->name, a->meta.scene->name, dt);
+    if (h->nparts > 1)
+        fprintf(table(), "grading %d submission%s against %s (%d parts: %s on %s%s)", n, n == 1 ? "" : "s",
+                path, h->nparts, a->methods[0]->name, a->meta.scene->name, h->nparts > 1 ? ", ..." : "");
+    else
+        fprintf(table(), "grading %d submission%s against %s (%s%s on %s, dt %s)", n, n == 1 ? "" : "s",
+                path, a->nmethods > 1 ? "any of " : "", a->methods[0]->name, a->meta.scene->name, dt);
     if (ignored)
         fprintf(table(), "; %d other entr%s not graded", ignored, ignored == 1 ? "y" : "ies");
     if (missing)
@@ -199,27 +204,31 @@ static int check_output(const grade_list *l, const struct stat *assign_st, const
     return SW_EXIT_OK;
 }
 
-int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *csv,
-                        const char *results)
+int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *const *opts,
+                        const char *const *paths, int n)
 {
-    sw_outfile_target c, r;
-    if (csv && check_output(l, assign_st, "--csv", csv, &c) != SW_EXIT_OK)
-        return SW_EXIT_USAGE;
-    if (results && check_output(l, assign_st, "--results", results, &r) != SW_EXIT_OK)
-        return SW_EXIT_USAGE;
+    sw_outfile_target t[8];
+    for (int i = 0; i < n && i < 8; i++)
+        if (paths[i] && check_output(l, assign_st, opts[i], paths[i], &t[i]) != SW_EXIT_OK)
+            return SW_EXIT_USAGE;
     /* Two reports in one file would be neither; a device such as /dev/null
      * takes both. */
-    if (csv && results && !(c.exists && S_ISCHR(c.st.st_mode))) {
-        int same = (c.is_stdout && r.is_stdout) ||
-                   (!c.is_stdout && !r.is_stdout && (strcmp(c.path, r.path) == 0 ||
-                    (c.exists && r.exists && same_file(&c.st, r.st.st_dev, r.st.st_ino))));
-        if (same)
-            return sw_cli_error("grade: --csv and --results both write to '%.200s'; give each its "
-                                "own file", c.is_stdout ? "standard output" : csv);
-    }
+    for (int i = 0; i < n && i < 8; i++)
+        for (int j = i + 1; paths[i] && j < n && j < 8; j++) {
+            const sw_outfile_target *c = &t[i], *r = &t[j];
+            if (!paths[j] || (c->exists && S_ISCHR(c->st.st_mode)))
+                continue;
+            int same = (c->is_stdout && r->is_stdout) ||
+                       (!c->is_stdout && !r->is_stdout && (strcmp(c->path, r->path) == 0 ||
+                        (c->exists && r->exists && same_file(&c->st, r->st.st_dev, r->st.st_ino))));
+            if (same)
+                return sw_cli_error("grade: %s and %s both write to '%.200s'; give each its own file",
+                                    opts[i], opts[j], c->is_stdout ? "standard output" : paths[i]);
+        }
     /* A report on stdout keeps stdout for itself: the table goes to stderr. */
-    if ((csv && c.is_stdout) || (results && r.is_stdout))
-        table_stream = stderr;
+    for (int i = 0; i < n && i < 8; i++)
+        if (paths[i] && t[i].is_stdout)
+            table_stream = stderr;
     return SW_EXIT_OK;
 }
 
@@ -287,18 +296,25 @@ static void write_csv(FILE *f, const grade_list *l, const char *summary)
 /* Gradescope's format: a score, its maximum, and one test per entry. */
 static void write_results(FILE *f, const grade_list *l, const char *summary)
 {
-    int rows = l->n + l->ignored;
+    int rows = l->n + l->ignored, counted = 0;
     double score = 0, max = 0;
     for (int i = 0; i < rows; i++) {
         double s1, m1;
-        grade_points_of(row_at(l, i), &s1, &m1);
+        if (row_at(l, i)->status == GRADE_SKIPPED)
+            continue; /* not a submission */
+        grade_points_of(l, row_at(l, i), &s1, &m1);
         score += s1;
-        max += m1;
+        max = m1 > max ? m1 : max;
+        counted++;
     }
+    /* The class's figure: the mean of its rows (submissions, and students
+     * without one), out of the homework's points; each test below is one
+     * file's. */
     fputs("{\n  \"score\": ", f);
-    sw_json_num(f, score);
+    sw_json_num(f, counted > 0 ? score / counted : 0);
     fputs(",\n  \"max_score\": ", f);
-    sw_json_num(f, max);
+    /* (a homework of either kind: the larger of its rows' maxima) */
+    sw_json_num(f, l->hw && (l->hw->kind != SW_KIND_ANY || counted == 0) ? l->hw->max : max);
     fputs(",\n  \"output\": ", f);
     sw_json_str(f, summary);
     fputs(",\n  \"tests\": [", f);
@@ -312,7 +328,7 @@ static void write_results(FILE *f, const grade_list *l, const char *summary)
         sw_json_str(f, shown_name ? shown_name : "?");
         free(shown_name);
         double points, most;
-        grade_points_of(e, &points, &most);
+        grade_points_of(l, e, &points, &most);
         fputs(",\n      \"score\": ", f);
         sw_json_num(f, points);
         fputs(",\n      \"max_score\": ", f);

@@ -158,3 +158,77 @@ int grade_roster_missing(grade_list *l)
     free(seen);
     return rc;
 }
+
+/* The JSON string at s (after its opening quote) into out: escapes other
+ * than \" \\ \/ are refused (an e-mail has none). 0 or -1. */
+static int json_string(const char *s, char *out, size_t outlen)
+{
+    size_t n = 0;
+    for (; *s && *s != '"'; s++) {
+        if (*s == '\\') {
+            s++;
+            if (*s != '"' && *s != '\\' && *s != '/')
+                return -1;
+        }
+        if ((unsigned char)*s < 0x20 || n + 1 >= outlen)
+            return -1;
+        out[n++] = *s;
+    }
+    out[n] = '\0';
+    return *s == '"' && n > 0 ? 0 : -1;
+}
+
+int grade_read_submission_metadata(grade_list *l, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *text = malloc(SW_ROSTER_FILE_MAX + 1);
+    size_t len = f && text ? fread(text, 1, SW_ROSTER_FILE_MAX, f) : 0;
+    if (f)
+        fclose(f);
+    if (!f || !text) {
+        free(text);
+        return sw_cli_error("grade: --submission-metadata '%.200s': cannot read it", path);
+    }
+    text[len] = '\0';
+    const char *users = strstr(text, "\"users\"");
+    const char *email = users ? strstr(users, "\"email\"") : NULL;
+    const char *colon = email ? email + 7 : NULL;
+    while (colon && (*colon == ' ' || *colon == ':' || *colon == '\n' || *colon == '\t' || *colon == '\r'))
+        colon++;
+    char value[128];
+    int ok = colon && *colon == '"' && json_string(colon + 1, value, sizeof value) == 0;
+    free(text);
+    if (!ok)
+        return sw_cli_error("grade: --submission-metadata '%.200s' names no user's email (Gradescope's "
+                            "submission_metadata.json: \"users\": [{\"email\": ...}])", path);
+    sw_homework_student_key(value, l->student_email, sizeof l->student_email);
+    return SW_EXIT_OK;
+}
+
+const char *grade_student_key(const grade_list *l, const grade_entry *e)
+{
+    if (l->student_email[0])
+        return l->student_email;
+    if (l->roster && e->who >= 0)
+        return l->roster->students[e->who].email;
+    return "";
+}
+
+int grade_student_keys_check(const grade_list *l)
+{
+    if (!l->hw || l->hw->nvarying == 0 || l->student_email[0])
+        return SW_EXIT_OK;
+    if (!l->roster)
+        return sw_cli_error("grade: %.200s:%ld draws parameters per student: give --roster FILE (with "
+                            "an email column) or --submission-metadata FILE, so each submission is "
+                            "graded with its student's", l->hw->path, l->hw->varying[0].line);
+    for (int s = 0; s < l->roster->n; s++)
+        if (!l->roster->students[s].email[0]) {
+            char shown[160];
+            sw_escape(l->roster->students[s].name, 80, shown, sizeof shown);
+            return sw_cli_error("grade: %.200s:%ld draws parameters per student from each e-mail, and "
+                                "the roster has none for %s (line %ld)", l->hw->path,
+                                l->hw->varying[0].line, shown, l->roster->students[s].line);
+        }
+    return SW_EXIT_OK;
+}

@@ -33,10 +33,10 @@ void grade_student_of(const grade_entry *e, char *buf, size_t len)
         *dot = '\0';
 }
 
-void grade_points_of(const grade_entry *e, double *score, double *max)
+void grade_points_of(const grade_list *l, const grade_entry *e, double *score, double *max)
 {
-    *score = e->score.n ? e->score.score : e->status == 0;
-    *max = e->score.n ? e->score.max : 1;
+    *score = e->score.n ? e->score.score : 0;
+    *max = e->score.n ? e->score.max : !l->hw ? 1 : l->hw->kind != SW_KIND_ANY ? l->hw->max : l->hw->max_of[e->plugin != 0];
 }
 
 char *grade_text_shown(const char *text)

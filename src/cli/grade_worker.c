@@ -79,6 +79,7 @@ static void start_clean(const grade_job *job)
     args[n++] = (char *)job->build_dir;
     args[n++] = (char *)job->path;
     args[n++] = similarity;
+    args[n++] = (char *)(job->student_key ? job->student_key : "");
     for (int i = 1; i < job->argc; i++)
         args[n++] = job->argv[i];
     args[n] = NULL;
@@ -111,12 +112,17 @@ static void short_reason(const sw_verdict *v, char *buf, size_t len)
         snprintf(buf, len, "%.1000s", v->first);
 }
 
-/* Every check of the assignment at 0 points, for a submission that could
- * not be checked, with why. */
-void grade_zero_score(sw_score *s, const sw_assignment *a, int plugin, const char *why)
+/* Every check of the homework at 0 points, every part's, for a submission
+ * that could not be checked, with why. */
+void grade_zero_score(sw_score *s, const sw_homework *h, int plugin, const char *why)
 {
-    sw_score_facts f = { .is_plugin = plugin, .usable = 0, .error = why };
-    sw_points_score(&a->points, &f, s);
+    memset(s, 0, sizeof *s);
+    for (int p = 0; p < h->nparts; p++) {
+        sw_score part;
+        sw_score_facts f = { .is_plugin = plugin, .usable = 0, .error = why };
+        sw_points_score(&h->parts[p].a.points, &f, &part);
+        sw_score_append(s, &part, h->parts[p].name, (int)h->parts[p].visibility, p);
+    }
 }
 
 /* A failing trace's rows from its first failing step on, each as its row
@@ -154,50 +160,109 @@ static unsigned wrong_rows(const char *path, long failing_step, grade_wrong_row 
     return n;
 }
 
+/* The homework with this submission's student's values: the parent's when
+ * nothing is drawn per student, else read again here for the student. */
+static const sw_homework *student_homework(const grade_job *job, char *err, size_t errlen)
+{
+    static sw_homework own;
+    if (job->hw->nvarying == 0)
+        return job->hw;
+    if (!job->student_key || !job->student_key[0]) {
+        snprintf(err, errlen, "whose submission this is could not be told (no roster student "
+                 "matched it), so neither could the parameters it is graded with: this homework "
+                 "gives each student their own");
+        return NULL;
+    }
+    if (sw_homework_read(&own, job->hw->path, job->student_key, err, errlen) != SW_OK)
+        return NULL;
+    return &own;
+}
+
+/* A header that differs in a parameter drawn per student: made for other
+ * parameters than this student's (whose is not said). */
+static void other_parameters(const sw_homework *h, int part, const sw_verdict *v, char *buf,
+                             size_t len)
+{
+    for (int i = 0; i < v->ndiffs && i < SW_VERDICT_DIFFS; i++)
+        if (strncmp(v->diffs[i].what, "param ", 6) == 0 &&
+            sw_homework_varies(h, part, v->diffs[i].what + 6)) {
+            snprintf(buf, len, "made for other parameters than yours (%s: %s in the file, %s in "
+                     "your assignment): each student has their own, on their assignment sheet",
+                     v->diffs[i].what, v->diffs[i].got, v->diffs[i].want);
+            return;
+        }
+}
+
+/* A record for a submission not checked at all: status, kind, why. */
+static void send_unchecked(int out, const sw_homework *h, int status, int plugin, const char *kind,
+                           const char *why)
+{
+    static grade_record r;
+    memset(&r, 0, sizeof r);
+    r.status = status;
+    r.failing_step = -1;
+    r.part = -1;
+    snprintf(r.message, sizeof r.message, "%s", why);
+    snprintf(r.kind, sizeof r.kind, "%s", kind);
+    grade_zero_score(&r.score, h, plugin, r.message);
+    sw_sandbox_write(out, &r, sizeof r);
+}
+
+/* Check the submission on part p of h into v (a plugin: req.plugin set). */
+static void check_part(const grade_job *job, const sw_homework *h, int p, sw_check_request *req,
+                       sw_verdict *v)
+{
+    req->assignment = &h->parts[p].a;
+    memset(v, 0, sizeof *v);
+    v->failing_step = -1;
+    if (job->plugin) {
+        req->measure = 0;
+        for (int i = 0; i < req->assignment->points.n; i++)
+            req->measure |= req->assignment->points.items[i].kind == SW_POINTS_ORDER ||
+                            req->assignment->points.items[i].kind == SW_POINTS_STABILITY;
+    }
+    sw_check_run(req, v);
+    if (job->plugin && v->status == SW_VERDICT_FAIL && !v->got_end.fault && !req->measure) {
+        /* A wrong plugin: its measured order says more than a value. */
+        req->measure = 1;
+        sw_check_run(req, v);
+    }
+}
+
 /* The child: check one submission, send the record and the report. */
 int grade_worker(void *ctx, int in, int out)
 {
     (void)in;
     const grade_job *job = ctx;
     forget_the_class(job);
-    char wrong_kind[200];
-    if (!sw_assignment_kind_ok(job->base->assignment, job->plugin, wrong_kind, sizeof wrong_kind)) {
-        /* the other kind of upload: nothing of it is built, run or read */
-        static grade_record other;
-        memset(&other, 0, sizeof other);
-        other.status = SW_VERDICT_FAIL;
-        other.failing_step = -1;
-        snprintf(other.message, sizeof other.message, "%s: not graded", wrong_kind);
-        snprintf(other.kind, sizeof other.kind, "wrong_kind");
-        /* scored out of what the homework pays for its own kind: one max for every row */
-        grade_zero_score(&other.score, job->base->assignment, job->base->assignment->kind == SW_KIND_PLUGIN,
-                         other.message);
-        sw_sandbox_write(out, &other, sizeof other);
+    char wrong_kind[200], err[SW_ERRLEN + 512];
+    const sw_homework *h = student_homework(job, err, sizeof err);
+    if (!h) {
+        send_unchecked(out, job->hw, SW_VERDICT_ERROR, job->plugin, "student", err);
+        return 0;
+    }
+    if (!sw_assignment_kind_ok(&h->parts[0].a, job->plugin, wrong_kind, sizeof wrong_kind)) {
+        /* the other kind of upload: nothing of it is built, run or read;
+         * scored out of what the homework pays for its own kind */
+        snprintf(err, sizeof err, "%s: not graded", wrong_kind);
+        send_unchecked(out, h, SW_VERDICT_FAIL, h->kind == SW_KIND_PLUGIN, "wrong_kind", err);
         return 0;
     }
     if (job->plugin && job->argv) {
         start_clean(job); /* a plugin never runs from the grader's memory */
-        static grade_record failed;
-        memset(&failed, 0, sizeof failed);
-        failed.status = SW_VERDICT_ERROR;
-        failed.failing_step = -1;
-        snprintf(failed.message, sizeof failed.message,
-                 "the grader could not start a fresh process to run this plugin from (%s); not run",
-                 strerror(errno));
-        grade_zero_score(&failed.score, job->base->assignment, 1, failed.message);
-        sw_sandbox_write(out, &failed, sizeof failed);
+        snprintf(err, sizeof err, "the grader could not start a fresh process to run this plugin "
+                 "from (%s); not run", strerror(errno));
+        send_unchecked(out, h, SW_VERDICT_ERROR, 1, "", err);
         return 0;
     }
     sw_plugin_set_limits(job->lim); /* the documented limits hold for the plugin's processes too */
     sw_check_request req = *job->base;
     static sw_verdict v;
     static grade_record rec;
-    char err[SW_ERRLEN + 512], so[PATH_MAX + 80], name[32];
+    char so[PATH_MAX + 80], name[32];
     memset(&rec, 0, sizeof rec);
-    memset(&v, 0, sizeof v);
-    v.failing_step = -1;
     const char *path = job->path;
-    int rc = SW_OK;
+    int rc = SW_OK, first = -1, lo = 0, hi = h->nparts;
     if (job->plugin) {
         size_t len = strlen(path);
         if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
@@ -207,49 +272,69 @@ int grade_worker(void *ctx, int in, int out)
         }
         if (rc == SW_OK)
             rc = sw_plugin_load(path, job->path, &req.plugin, err, sizeof err);
-        req.measure = 0;
-        for (int i = 0; i < req.assignment->points.n; i++)
-            req.measure |= req.assignment->points.items[i].kind == SW_POINTS_ORDER ||
-                           req.assignment->points.items[i].kind == SW_POINTS_STABILITY;
-    } else
-        req.trace = path;
-    if (rc != SW_OK) {
-        v.status = SW_VERDICT_ERROR;
-        snprintf(v.error, sizeof v.error, "%s", err);
-        grade_zero_score(&rec.score, req.assignment, job->plugin, err);
+        rec.part = -1;
     } else {
-        sw_check_run(&req, &v);
-        if (job->plugin && v.status == SW_VERDICT_FAIL && !v.got_end.fault && !req.measure) {
-            /* A wrong plugin: its measured order says more than a value. */
-            req.measure = 1;
-            sw_check_run(&req, &v);
+        req.trace = path;
+        sw_trace_reader r;
+        rc = sw_trace_read_open(&r, path, err, sizeof err);
+        if (rc == SW_OK) {
+            lo = sw_homework_part_of_trace(h, job->path, &r.meta, err, sizeof err);
+            sw_trace_read_close(&r);
+            rc = lo < 0 ? SW_EINVAL : SW_OK;
+            hi = lo + 1;
         }
+        rec.part = lo;
     }
-    rec.status = v.limit ? GRADE_LIMIT : (int)v.status;
-    if (rc == SW_OK)
-        rec.score = v.score;
-    rec.failing_step = v.failing_step;
-    snprintf(rec.student, sizeof rec.student, "%s", v.student);
-    snprintf(rec.notes, sizeof rec.notes, "%s", v.notes);
-    snprintf(rec.kind, sizeof rec.kind, "%s", v.have_explanation ? v.explanation.kind : "");
-    short_reason(&v, rec.message, sizeof rec.message);
+    if (rc != SW_OK) {
+        send_unchecked(out, h, SW_VERDICT_ERROR, job->plugin, "", err);
+        return 0;
+    }
     char *report = NULL;
     size_t report_len = 0;
     FILE *f = open_memstream(&report, &report_len);
-    if (f) {
-        if (v.status == SW_VERDICT_ERROR)
+    rec.status = SW_VERDICT_PASS;
+    rec.failing_step = -1;
+    for (int p = lo; p < hi; p++) {
+        const sw_part *part = &h->parts[p];
+        check_part(job, h, p, &req, &v);
+        int status = v.limit ? GRADE_LIMIT : (int)v.status;
+        sw_score_append(&rec.score, &v.score, part->name, (int)part->visibility, p);
+        if (f && h->nparts > 1)
+            fprintf(f, "%s== part %s ==\n", p > lo ? "\n" : "", part->name);
+        if (f && part->visibility != SW_VIS_VISIBLE)
+            fprintf(f, "Graded; the results of this part are %s.\n",
+                    sw_visibility_words(part->visibility));
+        else if (f && v.status == SW_VERDICT_ERROR)
             fprintf(f, "ERROR: %s\n", v.error);
-        else
+        else if (f)
             sw_check_print_plain(f, &v);
-        fclose(f);
+        if (status != SW_VERDICT_PASS && first < 0) {
+            first = p;
+            rec.status = status;
+            rec.failing_step = v.failing_step;
+            snprintf(rec.kind, sizeof rec.kind, "%s", v.have_explanation ? v.explanation.kind : "");
+            char reason[1100] = "";
+            other_parameters(h, p, &v, reason, sizeof reason);
+            if (!reason[0])
+                short_reason(&v, reason, sizeof reason);
+            snprintf(rec.message, sizeof rec.message, "%s%s%s", h->nparts > 1 ? part->name : "",
+                     h->nparts > 1 ? ": " : "", reason);
+        } else if (first < 0 && !rec.message[0] && v.status == SW_VERDICT_PASS)
+            short_reason(&v, rec.message, sizeof rec.message); /* a pass's warning */
+        if (p == lo) {
+            snprintf(rec.student, sizeof rec.student, "%s", v.student);
+            snprintf(rec.notes, sizeof rec.notes, "%s", v.notes);
+        }
     }
+    if (f)
+        fclose(f);
     rec.report_len = (unsigned)(report_len < job->report_max ? report_len : job->report_max);
     static grade_wrong_row wrong[SW_SIMILAR_ROWS_MAX];
     /* Explained mistakes are stepwise's own numbers, alike for everyone
      * who made them: not compared. */
-    if (job->similarity && !job->plugin && v.status == SW_VERDICT_FAIL && v.failing_step >= 0 &&
+    if (job->similarity && !job->plugin && rec.status == SW_VERDICT_FAIL && rec.failing_step >= 0 &&
         !v.have_explanation)
-        rec.nwrong = wrong_rows(job->path, v.failing_step, wrong);
+        rec.nwrong = wrong_rows(job->path, rec.failing_step, wrong);
     sw_sandbox_write(out, &rec, sizeof rec);
     if (report)
         sw_sandbox_write(out, report, rec.report_len);

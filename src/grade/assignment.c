@@ -165,10 +165,16 @@ int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, char *why, size
 
 int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t errlen)
 {
+    return sw_assignment_read_filtered(a, path, NULL, NULL, err, errlen);
+}
+
+int sw_assignment_read_filtered(sw_assignment *a, const char *path, sw_trace_meta_filter filter,
+                                void *ctx, char *err, size_t errlen)
+{
     memset(a, 0, sizeof *a);
     snprintf(a->path, sizeof a->path, "%s", path);
     sw_trace_reader r;
-    int rc = sw_trace_read_open_as(&r, path, 1, err, errlen);
+    int rc = sw_trace_read_open_filtered(&r, path, filter, ctx, err, errlen);
     if (rc != SW_OK)
         return rc;
     a->meta = r.meta;

@@ -57,6 +57,9 @@ const char *sw_assignment_wanted(const sw_assignment *a);
 /* Read an assignment file (or a trace, whose header serves). 0 or an error
  * "FILE:LINE: what". */
 int sw_assignment_read(sw_assignment *a, const char *path, char *err, size_t errlen);
+/* The same with each metadata line through filter (grade/homework.c). */
+int sw_assignment_read_filtered(sw_assignment *a, const char *path, sw_trace_meta_filter filter,
+                                void *ctx, char *err, size_t errlen);
 
 /* Parse "COL=REL[,ABS]" (or "REL[,ABS]" for the key form: col NULL) into t;
  * where names the source for messages. 0 or SW_EINVAL. */

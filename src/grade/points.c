@@ -345,3 +345,18 @@ void sw_points_score(const sw_points_set *set, const sw_score_facts *f, sw_score
         s->max += c->max;
     }
 }
+
+void sw_score_append(sw_score *into, const sw_score *part, const char *name, int visibility,
+                     int index)
+{
+    for (int i = 0; i < part->n && into->n < SW_SCORE_CHECKS; i++) {
+        sw_score_check *c = &into->checks[into->n++];
+        *c = part->checks[i];
+        if (name[0])
+            snprintf(c->name, sizeof c->name, "%.30s: %.31s", name, part->checks[i].name);
+        c->visibility = visibility;
+        c->part = index;
+        into->score += c->score;
+        into->max += c->max;
+    }
+}

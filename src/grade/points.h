@@ -57,15 +57,20 @@ int sw_points_resolve(sw_points_set *set, const sw_system *sys, const char *path
 /* Whether column name c of the group p (SW_POINTS_COLUMNS) is one of its. */
 int sw_points_has_column(const sw_points *p, const char *column);
 
+/* The checks of a submission over every part of a homework. */
+#define SW_SCORE_CHECKS 32
+
 /* One check's result, as Gradescope lists a test. */
 typedef struct sw_score_check {
-    char name[64];
+    char name[64];                /* "header"; "gyre: order" in a homework of parts */
     double score, max;
     char output[600];             /* why, in the explainer's words */
+    int visibility;               /* the part's (grade/homework.h, sw_visibility) */
+    int part;                     /* the part's index */
 } sw_score_check;
 
 typedef struct sw_score {
-    sw_score_check checks[SW_POINTS_MAX];
+    sw_score_check checks[SW_SCORE_CHECKS];
     int n;
     double score, max;
 } sw_score;
@@ -94,5 +99,10 @@ typedef struct sw_score_facts {
 
 /* Score the facts f on the checks of set into s. */
 void sw_points_score(const sw_points_set *set, const sw_score_facts *f, sw_score *s);
+/* Add the checks of part to into, each named "PART: check" (part "" keeps
+ * the names) with the part's visibility; the sums too. Checks beyond
+ * SW_SCORE_CHECKS are dropped (a homework is read with at most that many). */
+void sw_score_append(sw_score *into, const sw_score *part, const char *name, int visibility,
+                     int index);
 
 #endif

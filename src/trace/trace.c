@@ -174,6 +174,8 @@ static int read_meta(sw_trace_reader *r, char *err, size_t errlen)
         int rc = read_line(r, err, errlen);
         if (rc < 0)
             return rc;
+        if (r->filter && r->filter(r->filter_ctx, r->line, r->buf, &r->len, r->cap))
+            continue;
         rc = tr_meta_line(r, &ms, err, errlen);
         if (rc != SW_OK)
             return rc;
@@ -219,12 +221,14 @@ int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t e
     return sw_trace_read_open_as(r, path, 0, err, errlen);
 }
 
-int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
-                          size_t errlen)
+static int open_with(sw_trace_reader *r, const char *path, int assignment,
+                     sw_trace_meta_filter filter, void *ctx, char *err, size_t errlen)
 {
     memset(r, 0, sizeof *r);
     snprintf(r->name, sizeof r->name, "%s", path);
     r->meta.assignment = assignment;
+    r->filter = filter;
+    r->filter_ctx = ctx;
     int rc = open_regular(r, path, err, errlen);
     if (rc != SW_OK)
         return rc;
@@ -237,6 +241,18 @@ int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, 
     if (rc != SW_OK)
         sw_trace_read_close(r);
     return rc;
+}
+
+int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
+                          size_t errlen)
+{
+    return open_with(r, path, assignment, NULL, NULL, err, errlen);
+}
+
+int sw_trace_read_open_filtered(sw_trace_reader *r, const char *path, sw_trace_meta_filter filter,
+                                void *ctx, char *err, size_t errlen)
+{
+    return open_with(r, path, 1, filter, ctx, err, errlen);
 }
 
 /* The next comma-separated cell of *cursor, trimmed; NULL after the last. */

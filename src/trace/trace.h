@@ -137,6 +137,13 @@ typedef struct sw_trace_meta {
     int nextras;
 } sw_trace_meta;
 
+/* A metadata line's filter (an assignment's parts and per-student values,
+ * grade/homework.c): called with each "# ..." line after the first, its
+ * number and its text (len bytes, room for cap); returns 1 to skip the
+ * line, 0 to read it as it now is (it may be rewritten in place, len
+ * updated, within cap). */
+typedef int (*sw_trace_meta_filter)(void *ctx, long line, char *buf, size_t *len, size_t cap);
+
 typedef struct sw_trace_reader {
     int fd;                           /* the open file (have_fd) */
     int have_fd;
@@ -160,6 +167,8 @@ typedef struct sw_trace_reader {
     long max_rows;                    /* the most rows the metadata's run can give */
     long blank_line;                  /* first empty line since the last row; 0: none */
     int at_end;
+    sw_trace_meta_filter filter;      /* sw_trace_read_open_filtered; NULL: none */
+    void *filter_ctx;
 } sw_trace_reader;
 
 /* Open path and read its first line and metadata, up to (not including) the
@@ -175,6 +184,9 @@ int sw_trace_read_open(sw_trace_reader *r, const char *path, char *err, size_t e
  * "title" are kept in meta.extras. */
 int sw_trace_read_open_as(sw_trace_reader *r, const char *path, int assignment, char *err,
                           size_t errlen);
+/* The same as an assignment, each metadata line through filter first. */
+int sw_trace_read_open_filtered(sw_trace_reader *r, const char *path, sw_trace_meta_filter filter,
+                                void *ctx, char *err, size_t errlen);
 /* Read the header row: every column of the scene once, in any order, matched
  * by name (rows are returned in the canonical order). Up to
  * SW_TRACE_EXTRA_COLS other names (e.g. "ke") are ignored, their cells

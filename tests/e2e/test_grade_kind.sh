@@ -34,7 +34,7 @@ cp good.trace honest.c class/
 grep -q "good.trace,fail,,\"this homework asks for a plugin (.c, .so), not a trace: not graded\"" p.csv ||
     fail "plugin homework: the trace's row: $(cat p.csv)"
 grep -q "honest.c,pass," p.csv || fail "plugin homework: the plugin's row: $(cat p.csv)"
-maxes=$(awk -F, 'NR > 1 { print $NF }' p.csv | sort -u | tr -d '\r')
+maxes=$(awk -F, 'NR > 1 { print $(NF - 1) }' p.csv | sort -u | tr -d '\r')
 [ "$maxes" = 5 ] || fail "plugin homework: not one max for every row: $maxes"
 "$SW" grade --assignment trace-hw.txt --csv t.csv class > out 2>&1
 grep -q "honest.c,fail,,\"this homework asks for a trace (.trace, .csv), not a plugin: not graded\"" t.csv ||

@@ -51,7 +51,7 @@ Mallory Mars,s1004,mallory@u.edu
 EOF
 # a gradebook to read back, with a classmate's verdict cell in it
 "$SW" grade --assignment $A --roster roster.csv --csv book.csv class/ZQCLASSMATE_s1001.trace >/dev/null 2>&1
-printf 'ZQBOOKROW,elsewhere/x.trace,pass,,,,,,2,2\r\n' >> book.csv
+printf 'ZQBOOKROW,elsewhere/x.trace,pass,,,,,,2,2,\r\n' >> book.csv
 # Not in the sanitizer pass (SW_TEST_QUICK): there ASan owns SIGSEGV and its
 # shadow memory, and the scan's probing of unmapped pages ends in a
 # forbidden system call of ASan's own (SIGSYS), which says nothing.

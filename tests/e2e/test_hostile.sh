@@ -600,11 +600,14 @@ judge_class() { # CLASS
     elif ! awk -f "$JSON" "$json" > "$BOOK/fields-$X" 2>/dev/null; then
         bad "class $X: results.json is not JSON"
     else
-        # the points of every row (the CSV's score and max columns), summed
-        passes=$(awk -F'\t' '{ s += $6 } END { printf "%g", s }' "$BOOK/rows-$X")
-        rows=$(awk -F'\t' '{ s += $7 } END { printf "%g", s }' "$BOOK/rows-$X")
-        grep -qx "score=$passes" "$BOOK/fields-$X" && grep -qx "max_score=$rows" "$BOOK/fields-$X" ||
-            bad "class $X: results.json's $(grep '^score=' "$BOOK/fields-$X") $(grep '^max_score=' "$BOOK/fields-$X") differs from the CSV's $passes of $rows"
+        # the class's figure: the mean of the rows that are submissions (the
+        # CSV's score column), out of the homework's points (every row's max)
+        passes=$(awk -F'\t' '$2 != "skipped" { s += $6; n++ } END { printf "%.15g", n ? s / n : 0 }' "$BOOK/rows-$X")
+        rows=$(awk -F'\t' '$2 != "skipped" { print $7 }' "$BOOK/rows-$X" | sort -u | tr '\n' ' ')
+        got=$(sed -n 's/^score=//p' "$BOOK/fields-$X")
+        awk -v a="$got" -v b="$passes" 'BEGIN { d = a - b; exit !(d < 1e-12 && d > -1e-12) }' &&
+            grep -qx "max_score=${rows% }" "$BOOK/fields-$X" ||
+            bad "class $X: results.json's score=$got $(grep '^max_score=' "$BOOK/fields-$X") differs from the CSV's mean $passes of ${rows% }"
     fi
 }
 

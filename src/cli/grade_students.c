@@ -1,0 +1,229 @@
+/* `grade --gradebook FILE` and `--lms FILE`: one row per student. With a
+ * roster, every roster student in its order (a `missing` row for those
+ * with nothing), then any file that matched nobody, each its own row; with
+ * none, each student a file names. Each row's score is the counted
+ * submissions' (grade_count.c) out of the homework's points, the same max
+ * on every row. A regrade keeps the rows of students this run saw nothing
+ * of. Invariant: every cell goes through sw_csv_field; each file is
+ * written whole or not at all. */
+#include "cli/grade.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "util/csv.h"
+#include "util/escape.h"
+#include "util/outfile.h"
+
+static const char *const book_columns[] = { "student", "id", "email", "score", "max", "verdict",
+                                            "counted", "also", "message", "remarks" };
+enum { BOOK_NCOLS = sizeof book_columns / sizeof book_columns[0] };
+
+/* One student's row: which entries are theirs. */
+typedef struct student_row {
+    char name[SW_TRACE_STUDENT_MAX];
+    int who;                 /* roster index, or -1 */
+    int *entries;            /* indices into l->items */
+    int n;
+    int missing;             /* a roster student with no file */
+    const grade_entry *any;  /* an entry of theirs, for id and remarks */
+} student_row;
+
+static int add_entry(student_row *r, int i)
+{
+    int *e = realloc(r->entries, (size_t)(r->n + 1) * sizeof *e);
+    if (!e)
+        return -1;
+    r->entries = e;
+    r->entries[r->n++] = i;
+    return 0;
+}
+
+/* The rows, in roster order then in the order files came. */
+static student_row *group(const grade_list *l, int *nrows)
+{
+    int cap = (l->roster ? l->roster->n : 0) + l->n + l->ignored + 1;
+    student_row *rows = calloc((size_t)cap, sizeof *rows);
+    int n = 0;
+    if (!rows)
+        return NULL;
+    if (l->roster)
+        for (int s = 0; s < l->roster->n; s++) {
+            rows[n].who = s;
+            snprintf(rows[n].name, sizeof rows[n].name, "%s", l->roster->students[s].name);
+            rows[n].missing = -1; /* not yet known */
+            n++;
+        }
+    for (int i = 0; i < l->n + l->ignored; i++) {
+        const grade_entry *e = i < l->n ? &l->items[i] : &l->refused[i - l->n];
+        if (i >= l->n && e->status != GRADE_MISSING)
+            continue;
+        int r = -1;
+        if (l->roster && e->who >= 0)
+            r = e->who;
+        else {
+            char name[SW_TRACE_STUDENT_MAX];
+            grade_student_of(e, name, sizeof name);
+            for (int k = l->roster ? l->roster->n : 0; r < 0 && k < n && !l->roster; k++)
+                if (strcmp(rows[k].name, name) == 0)
+                    r = k;
+            if (r < 0) {
+                r = n++;
+                rows[r].who = -1;
+                snprintf(rows[r].name, sizeof rows[r].name, "%s", name);
+            }
+        }
+        if (!rows[r].any)
+            rows[r].any = e;
+        if (e->status == GRADE_MISSING)
+            rows[r].missing = 1;
+        else if (add_entry(&rows[r], i) != 0) {
+            for (int k = 0; k < n; k++)
+                free(rows[k].entries);
+            free(rows);
+            return NULL;
+        }
+    }
+    *nrows = n;
+    return rows;
+}
+
+/* The files of entries, "; "-joined, escaped; counted ones (in c) or the
+ * others. */
+static void file_list(const grade_list *l, const student_row *r, const grade_counted *c, int counted,
+                      char *out, size_t outlen)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (int k = 0; k < r->n && used + 1 < outlen; k++) {
+        int i = r->entries[k], is = 0;
+        for (int p = 0; p < l->hw->nparts; p++)
+            is |= c->entry[p] == i;
+        int again = 0; /* a plugin counted for every part: named once */
+        for (int j = 0; j < k; j++)
+            again |= r->entries[j] == i;
+        if (is != counted || again)
+            continue;
+        char shown[600];
+        sw_escape(l->items[i].path, 300, shown, sizeof shown);
+        used += (size_t)snprintf(out + used, outlen - used, "%s%s", used ? "; " : "", shown);
+    }
+}
+
+/* Why the row has what it has: the first counted entry that did not pass,
+ * or the parts with nothing counted. */
+static void row_message(const grade_list *l, const student_row *r, const grade_counted *c, char *out,
+                        size_t outlen)
+{
+    const sw_homework *h = l->hw;
+    out[0] = '\0';
+    if (r->n == 0) {
+        snprintf(out, outlen, "no submission");
+        return;
+    }
+    if (c->status == GRADE_MISSING) {
+        snprintf(out, outlen, "nothing of the kind this homework asks for: %s",
+                 sw_assignment_wanted(&h->parts[0].a));
+        return;
+    }
+    size_t used = 0;
+    for (int p = 0; p < h->nparts && used + 1 < outlen; p++) {
+        if (c->entry[p] < 0)
+            used += (size_t)snprintf(out + used, outlen - used, "%sno trace for part %s", used ? "; " : "",
+                                     h->parts[p].name);
+        else if (l->items[c->entry[p]].status != SW_VERDICT_PASS && (p == 0 || c->entry[p] != c->entry[p - 1]))
+            used += (size_t)snprintf(out + used, outlen - used, "%s%s", used ? "; " : "",
+                                     l->items[c->entry[p]].message);
+    }
+}
+
+static void put_row(FILE *f, const char *const *cells, int n)
+{
+    for (int c = 0; c < n; c++) {
+        sw_csv_field(f, cells[c]);
+        fputs(c + 1 < n ? "," : "\r\n", f);
+    }
+}
+
+/* The old file's rows of students not in rows (a regrade of some), when
+ * it has our columns (ncols, the first named first). */
+static void keep_old(FILE *f, const char *path, int ncols, const char *first, const student_row *rows,
+                     int n)
+{
+    sw_csv_doc d;
+    char err[SW_ERRLEN + 512];
+    if (sw_csv_read(path, &d, err, sizeof err) != SW_OK)
+        return;
+    if (d.nrows > 0 && d.rows[0].n == ncols && strcmp(d.rows[0].cells[0], first) == 0)
+        for (int r = 1; r < d.nrows; r++) {
+            const sw_csv_row *o = &d.rows[r];
+            int seen = o->n != ncols;
+            for (int k = 0; !seen && k < n; k++)
+                seen = strcmp(rows[k].name, o->cells[0]) == 0 && (rows[k].n > 0 || rows[k].missing == 1);
+            if (!seen)
+                put_row(f, (const char *const *)o->cells, ncols);
+        }
+    sw_csv_doc_free(&d);
+}
+
+static int write_one(const grade_list *l, const char *path, int lms, student_row *rows, int n)
+{
+    sw_outfile o;
+    char err[SW_ERRLEN + 256];
+    if (sw_outfile_open(&o, path, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s", err);
+    FILE *f = o.f;
+    static const char *const lms_columns[] = { "name", "id", "email", "score", "max" };
+    put_row(f, lms ? lms_columns : book_columns, lms ? 5 : BOOK_NCOLS);
+    if (!o.direct && !l->fresh)
+        keep_old(f, path, lms ? 5 : BOOK_NCOLS, lms ? "name" : "student", rows, n);
+    for (int k = 0; k < n; k++) {
+        student_row *r = &rows[k];
+        if (r->n == 0 && r->missing != 1)
+            continue; /* a roster student this regrade saw nothing of: kept above */
+        grade_counted c;
+        grade_count(l, r->entries, r->n, &c);
+        char score[32], max[32], counted[2400], also[2400], message[1600];
+        snprintf(score, sizeof score, "%g", c.score);
+        snprintf(max, sizeof max, "%g", c.max);
+        const char *id = "", *email = "";
+        if (l->roster && r->who >= 0) {
+            const sw_student *s = &l->roster->students[r->who];
+            id = s->nids ? s->ids[0] : "";
+            email = s->email;
+        }
+        if (lms) {
+            const char *cells[] = { r->name, id, email, score, max };
+            put_row(f, cells, 5);
+            continue;
+        }
+        file_list(l, r, &c, 1, counted, sizeof counted);
+        file_list(l, r, &c, 0, also, sizeof also);
+        row_message(l, r, &c, message, sizeof message);
+        const char *cells[] = { r->name, id, email, score, max,
+                                grade_verdict_word(r->n == 0 ? GRADE_MISSING
+                                                   : c.status == GRADE_MISSING ? SW_VERDICT_FAIL : c.status),
+                                counted, also, message, r->any ? r->any->remarks : "" };
+        put_row(f, cells, BOOK_NCOLS);
+    }
+    if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s", err);
+    return SW_EXIT_OK;
+}
+
+int grade_students_write(const grade_list *l, const char *gradebook, const char *lms)
+{
+    int n = 0, rc = SW_EXIT_OK;
+    student_row *rows = group(l, &n);
+    if (!rows)
+        return sw_cli_error("grade: out of memory for the gradebook");
+    if (gradebook)
+        rc = write_one(l, gradebook, 0, rows, n);
+    if (rc == SW_EXIT_OK && lms)
+        rc = write_one(l, lms, 1, rows, n);
+    for (int k = 0; k < n; k++)
+        free(rows[k].entries);
+    free(rows);
+    return rc;
+}

@@ -146,6 +146,9 @@ grep "^Grace Hopper" book4.csv | grep -q "Ada" && fail "the copied trace's messa
 book4 "Emmy Noether" fail "swing.trace" "x0 is 100 times the reference at every step: positions in cm instead of m"
 book4 "Henri Poincaré" fail "swing.trace" ""
 book4 "Sofia Kovalevskaya" missing "" "no submission"
+grep "^Henri Poincaré" book4.csv | grep -q "x0 = 1.50000015 in yours, 1.5 in the assignment's" ||
+    fail "HW4 Henri Poincaré: $(grep '^Henri' book4.csv)"
+grep "Henri Poincaré.*swing.trace" files4.csv | grep -q ',3,4,swing' || fail "HW4 Henri: not 3 of 4 on swing: $(grep Henri files4.csv)"
 book4 "Carl Gauss" fail "swing-v2.trace" ""
 grep "^Carl Gauss" book4.csv | grep -q ",swing-v2.trace.*hw4/Carl Gauss_1007_assignsubmission_file_/swing.trace," ||
     true # the older upload is in 'also' (checked below)

@@ -221,8 +221,8 @@ grep "^Henri Poincaré" book5.csv | grep -q "nothing of the kind this homework a
 # ---- the bundle, as Gradescope runs it -----------------------------------
 "$SW" autograder --assignment hw5-rk4.txt -o hw5.zip --source "$ROOT" > /dev/null 2>&1 || fail "autograder bundle"
 gs=0
-for n in "Ada Lovelace" "Grace Hopper" "Emmy Noether" "Henri Poincaré" "Sofia Kovalevskaya" "Carl Gauss" \
-         "Katherine Johnson"; do
+printf '%s\n' "$names" > names
+while IFS= read -r n; do
     r=$WORK/ag; rm -rf "$r"; mkdir -p "$r/source" "$r/submission"
     (cd "$r/source" && unzip -q "$WORK/hw5.zip") || fail "unzip"
     cp "$(folder hw5 "$n")"/* "$r/submission/" 2>/dev/null
@@ -239,8 +239,8 @@ for n in "Ada Lovelace" "Grace Hopper" "Emmy Noether" "Henri Poincaré" "Sofia K
     printf '%s\n' "chain: order|visible" "chain: values: x* y*|visible" "gyre: values: x* y*|hidden" \
         "long-chain: values: x* y*|after_due_date" | sort > want-tests
     cmp -s tests want-tests || fail "$n: tests and visibility: $(cat tests)"
-    grep '^output=' flat | grep -q "gyre" && [ "$n" != "Ada Lovelace" ] && grep '^output=' flat | grep -q "gyre: " &&
+    grep '^output=' flat | grep -q "gyre: " &&
         fail "$n: the output tells how the hidden part went: $(grep '^output=' flat)"
     gs=$((gs + 1))
-done
-[ $gs -eq 7 ] || fail "the bundle ran $gs times"
+done < names
+[ $gs -eq 32 ] || fail "the bundle ran $gs times"

@@ -53,9 +53,10 @@ static const char grade_help[] =
     "      --fresh            start the --csv gradebook over instead of updating it\n"
     "      --gradebook FILE   one row per student (the roster's, or each '# student:'): the\n"
     "                         counted submissions' score out of the homework's, by its\n"
-    "                         '# count:' rule (best, or latest); needs --csv, whose rows\n"
-    "                         (kept across regrades) it is made from\n"
-    "      --lms FILE         the gradebook as Canvas and Moodle import it (needs --csv)\n"
+    "                         '# count:' rule (best, or latest); a regrade keeps the rows\n"
+    "                         of the students it saw nothing of\n"
+    "      --lms FILE         name,id,email,score,max per student, for an LMS import (Moodle's\n"
+    "                         maps it by email as it is)\n"
     "      --submission-metadata FILE  Gradescope's submission_metadata.json: whose\n"
     "                         submission this is, for per-student parameters\n"
     "      --roster FILE      the class (CSV: a name column, optional id and email): every\n"
@@ -466,9 +467,6 @@ static int grade_command(int argc, char **argv, char **wargv)
     if (rc == SW_EXIT_OK && (sw_homework_read(&hw, assignment, NULL, err, sizeof err) != SW_OK ||
                              stat(assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
-    if (rc == SW_EXIT_OK && (gradebook || lms) && !csv)
-        rc = sw_cli_error("grade: --gradebook and --lms are made from every file's row: give --csv FILE "
-                          "too (the file rows, kept across regrades)");
     if (w_path) {
         free(files);
         if (rc != SW_EXIT_OK)

@@ -40,9 +40,13 @@ CHECK_CFLAGS  = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 SECCOMP_LIBS  = $(shell pkg-config --libs libseccomp 2>/dev/null || echo -lseccomp)
 
-# The engine library: every layer below the front ends (docs/architecture.md),
-# util/ included. Only tui/ includes ncurses; cli/ and tui/ are linked into
-# the program only.
+# Two archives. The tool's: every layer below the front ends
+# (docs/architecture.md), util/ included, which the program, the tests and
+# the benchmarks link; only tui/ includes ncurses, and cli/ and tui/ are
+# linked into the program only. The embedder's, libstepwise.a, installed:
+# the engine, the scenes and the sim with the three util modules they use,
+# partially linked into one object whose only global names are sw_ ones
+# (docs/embedding.md): no grader, no lessons, no jail, no libseccomp.
 TUI_SRC  = $(wildcard src/tui/*.c)
 HOST_MAIN = $(wildcard src/host/*.c)
 CLI_SRC  = $(wildcard src/cli/*.c)
@@ -53,6 +57,10 @@ MAIN_OBJ = $(BUILD)/src/main.o
 TEST_SRC = $(wildcard tests/check_*.c)
 TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o) $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/support/*.c))
 WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
+CORE_SRC = $(wildcard src/engine/*.c src/scenes/*.c src/sim/*.c) \
+           src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
+CORE_OBJ = $(CORE_SRC:%.c=$(BUILD)/%.o)
+TOOLLIB  = $(BUILD)/libstepwise-tool.a
 LIB      = $(BUILD)/libstepwise.a
 BIN      = stepwise
 TESTBIN  = $(BUILD)/check_stepwise
@@ -71,12 +79,18 @@ $(BUILD)/%.o: %.c | deps
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(if $(filter src/tui/%,$<),$(CURSES_CFLAGS)) \
 	    $(if $(filter tests/%,$<),$(CHECK_CFLAGS) -I$(BUILD)/tests -Itests/support) -c $< -o $@
 
-$(LIB): $(LIB_OBJ)
+$(TOOLLIB): $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(LIB)
-	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(LIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
+$(LIB): $(CORE_OBJ)
+	@rm -f $@ $(BUILD)/stepwise-core.o
+	$(CC) -nostdlib -r -o $(BUILD)/stepwise-core.o $(CORE_OBJ)
+	objcopy --wildcard --keep-global-symbol='sw_*' $(BUILD)/stepwise-core.o
+	ar rcs $@ $(BUILD)/stepwise-core.o
+
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB)
+	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # Each tests/check_NAME.c exports make_NAME_suite(); the list is generated so
 # adding a suite never means editing the runner.
@@ -87,8 +101,8 @@ $(BUILD)/tests/suites.h: $(TEST_SRC)
 
 $(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
 
-$(TESTBIN): $(TEST_OBJ) $(LIB)
-	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(LIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
+$(TESTBIN): $(TEST_OBJ) $(TOOLLIB)
+	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(TOOLLIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # A student plugin's host (docs/sandbox.md): the plugin interface, the
 # engine's derivatives and the scenes' builders, and nothing of the methods
@@ -140,9 +154,9 @@ FUZZ_TIME ?= 60
 FUZZERS   = lesson trace parse canvas runner check channel roster similar gradebook
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -Iinclude -Isrc -Itests/support
 fuzz:
-	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise.a
+	$(MAKE) CC=clang BUILD=build/fuzz FUZZ=1 build/fuzz/libstepwise-tool.a
 	@for t in $(FUZZERS); do \
-	    clang $(FUZZ_FLAGS) tests/fuzz/fuzz_$$t.c tests/support/fuzz_targets.c build/fuzz/libstepwise.a \
+	    clang $(FUZZ_FLAGS) tests/fuzz/fuzz_$$t.c tests/support/fuzz_targets.c build/fuzz/libstepwise-tool.a \
 	        $(SECCOMP_LIBS) -lm -ldl -o build/fuzz/fuzz_$$t || exit 1; \
 	    mkdir -p build/fuzz/corpus-$$t; \
 	    echo "fuzz: $$t for $(FUZZ_TIME) s"; \
@@ -171,9 +185,9 @@ $(BUILD)/gsl.stamp: FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(GSL_FLAGS) $(CVODE_FLAGS)' | cmp -s - $@ || echo '$(GSL_FLAGS) $(CVODE_FLAGS)' > $@
 
-$(BENCHBIN): $(BENCH_SRC) bench/bench_common.h tests/support/alloc_count.c $(LIB) $(BUILD)/gsl.stamp
+$(BENCHBIN): $(BENCH_SRC) bench/bench_common.h tests/support/alloc_count.c $(TOOLLIB) $(BUILD)/gsl.stamp
 	$(CC) $(CPPFLAGS) -Itests/support -std=c11 $(OPT) $(VECT) $(MATH) $(WARN) $(CFLAGS) $(GSL_FLAGS) $(CVODE_FLAGS) \
-	    $(BENCH_SRC) tests/support/alloc_count.c $(LIB) $(LDSAN) $(WRAP) $(GSL_LIBS) $(CVODE_LIBS) $(SECCOMP_LIBS) \
+	    $(BENCH_SRC) tests/support/alloc_count.c $(TOOLLIB) $(LDSAN) $(WRAP) $(GSL_LIBS) $(CVODE_LIBS) $(SECCOMP_LIBS) \
 	    -lm -o $@
 
 bench:
@@ -203,8 +217,7 @@ LESSON_FILES = $(wildcard lessons/*.lesson lessons/README.md)
 
 # For embedders: the engine library, the public headers and a pkg-config
 # file (`pkg-config --cflags --libs stepwise`). Static only: Libs names what
-# the engine needs (libm); the sandbox's libseccomp is Libs.private, for a
-# program that runs plugins (`pkg-config --static --libs stepwise`).
+# the engine needs (libm), and nothing else: the library holds no sandbox.
 LIBDIR   = $(PREFIX)/lib
 VERSION  = $(shell sed -n 's/^\#define SW_VERSION "\(.*\)"/\1/p' include/stepwise/base.h)
 
@@ -220,7 +233,7 @@ install: $(BIN) $(LIB) $(HOST)
 	printf '%s\n' 'prefix=$(PREFIX)' 'includedir=$${prefix}/include' 'libdir=$(LIBDIR)' '' \
 	    'Name: stepwise' 'Description: particle systems and numerical integrators, as stepwise teaches them' \
 	    'Version: $(VERSION)' 'Cflags: -I$${includedir}' \
-	    'Libs: -L$${libdir} -lstepwise -lm' 'Libs.private: $(strip $(SECCOMP_LIBS))' \
+	    'Libs: -L$${libdir} -lstepwise -lm' \
 	    > $(DESTDIR)$(LIBDIR)/pkgconfig/stepwise.pc
 
 # A student's integrator as a shared object: examples/euler_plugin.c is the

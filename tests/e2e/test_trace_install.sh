@@ -103,10 +103,16 @@ int main(void)
 }
 C
 flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs stepwise) || fail "pkg-config does not know the installed stepwise"
-# the engine alone needs no libseccomp (the sandbox's, for a program that runs plugins: --static)
-case " $flags " in *" -lseccomp "*) fail "pkg-config --libs asks an embedder for -lseccomp: $flags" ;; esac
-PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --static --libs stepwise | grep -q -- -lseccomp ||
-    fail "pkg-config --static --libs does not name the sandbox's libseccomp"
+# the engine alone: no libseccomp, even for a static link (the library holds no sandbox)
+PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --static --libs stepwise | grep -q -- -lseccomp &&
+    fail "pkg-config asks an embedder for -lseccomp"
+# only sw_ names leave the library: no grader, lesson, jail or helper names
+others=$(nm -g --defined-only "$prefix/lib/libstepwise.a" | awk 'NF == 3 { print $3 }' | grep -v '^sw_' | head -5)
+[ -z "$others" ] || fail "the installed library exports names that are not sw_: $others"
+nm -g --defined-only "$prefix/lib/libstepwise.a" | grep -q ' T sw_sim_init$' || fail "the library lacks sw_sim_init"
+for s in sw_grade sw_lesson sw_jail sw_roster sw_trace_read sw_plugin_load; do
+    nm -g --defined-only "$prefix/lib/libstepwise.a" | grep -q " $s" && fail "the engine library holds $s"
+done
 # shellcheck disable=SC2086
 ${CC:-cc} -std=c11 -Wall -Wextra -Werror -o "$dir/embed" "$dir/embed.c" $flags || fail "an embedder does not build against stepwise.pc: $flags"
 out=$("$dir/embed") || fail "the embedder failed: $out"

@@ -116,6 +116,26 @@ done
 # shellcheck disable=SC2086
 ${CC:-cc} -std=c11 -Wall -Wextra -Werror -o "$dir/embed" "$dir/embed.c" $flags || fail "an embedder does not build against stepwise.pc: $flags"
 out=$("$dir/embed") || fail "the embedder failed: $out"
+# examples/embed, each built from the prefix with pkg-config alone and run
+for e in particles stiff_spring orbit; do
+    # shellcheck disable=SC2086
+    ${CC:-cc} -std=c11 -Wall -Wextra -Werror -o "$dir/$e" "$ROOT/examples/embed/$e.c" $flags ||
+        fail "examples/embed/$e.c does not build against stepwise.pc"
+    "$dir/$e" > "$dir/$e.out" || fail "examples/embed/$e failed: $(cat "$dir/$e.out")"
+done
+# particles: the closed form of a ball under gravity and linear drag; euler
+# at h = 0.01 is first order (an error of order h times the motion's second
+# derivative, 1e-3 to 1e-1 m), rk4 fourth (below 1e-8 m)
+awk '/^euler:/ { split($0, a, ": "); e = a[3] + 0; ok += (e > 1e-3 && e < 1e-1) }
+     /^rk4:/ { split($0, a, ": "); e = a[3] + 0; ok += (e < 1e-8) } END { exit ok != 2 }' "$dir/particles.out" ||
+    fail "examples/embed/particles: $(cat "$dir/particles.out")"
+# stiff_spring: rk4 beyond its limit blows up; rodas4 stays bounded
+grep -q "^rk4: .*blown up" "$dir/stiff_spring.out" && grep -q "^rodas4: |x(1)| = 0\.[0-9]*: bounded" "$dir/stiff_spring.out" ||
+    fail "examples/embed/stiff_spring: $(cat "$dir/stiff_spring.out")"
+# orbit: every frame reached, back at the start after one period (1e-8: the
+# method's default tolerances are 1e-6 relative, 1e-9 absolute per step)
+awk '{ for (i = 1; i <= NF; i++) if ($i == "within") d = $(i + 1) + 0 } END { exit !(d < 1e-8) }' "$dir/orbit.out" &&
+    grep -q "^dop853: 189 frames" "$dir/orbit.out" || fail "examples/embed/orbit: $(cat "$dir/orbit.out")"
 echo "$out" | grep -q '^stepwise [0-9.]*: t=1 steps=100$' || fail "the embedder ran: $out"
 echo "$out" | grep -q '^oscillator: x(1) = 0.54030230.., error small$' || fail "the embedder's own system under rk4: $out"
 

@@ -205,7 +205,8 @@ static void send_unchecked(int out, const sw_homework *h, int status, int plugin
     snprintf(r.message, sizeof r.message, "%s", why);
     snprintf(r.kind, sizeof r.kind, "%s", kind);
     grade_zero_score(&r.score, h, plugin, r.message);
-    sw_sandbox_write(out, &r, sizeof r);
+    if (sw_sandbox_write(out, &r, sizeof r) != 0)
+        _exit(1); /* the grader is gone, or its channel: it records the worker's end */
 }
 
 /* Check the submission on part p of h into v (a plugin: req.plugin set). */
@@ -335,11 +336,11 @@ int grade_worker(void *ctx, int in, int out)
     if (job->similarity && !job->plugin && rec.status == SW_VERDICT_FAIL && rec.failing_step >= 0 &&
         !v.have_explanation)
         rec.nwrong = wrong_rows(job->path, rec.failing_step, wrong);
-    sw_sandbox_write(out, &rec, sizeof rec);
-    if (report)
-        sw_sandbox_write(out, report, rec.report_len);
-    if (rec.nwrong)
-        sw_sandbox_write(out, wrong, rec.nwrong * sizeof wrong[0]);
+    /* A write that fails (the grader gone, its channel closed) ends the
+     * worker with status 1; the grader records how the worker ended. */
+    int sent = sw_sandbox_write(out, &rec, sizeof rec) == 0 &&
+               (!report || sw_sandbox_write(out, report, rec.report_len) == 0) &&
+               (!rec.nwrong || sw_sandbox_write(out, wrong, rec.nwrong * sizeof wrong[0]) == 0);
     free(report);
-    return 0;
+    return sent ? 0 : 1;
 }

@@ -48,11 +48,20 @@ static void say(char *err, size_t errlen, const char *fmt, ...)
     sw_escape_fit(whole, 1, SIZE_MAX, 1, err, errlen);
 }
 
+/* A child whose set-up failed ends at once with this status ("exited with
+ * status 125"): it never runs with a limit or a descriptor short. */
+#define SETUP_FAILED 125
+
+static void setup_or_exit(int ok)
+{
+    if (!ok)
+        _exit(SETUP_FAILED);
+}
+
 static void set_limit(int resource, rlim_t value)
 {
     struct rlimit rl;
-    if (getrlimit(resource, &rl) != 0)
-        return;
+    setup_or_exit(getrlimit(resource, &rl) == 0);
     if (rl.rlim_max != RLIM_INFINITY && value > rl.rlim_max)
         value = rl.rlim_max;
     rl.rlim_cur = value;
@@ -67,7 +76,7 @@ static void set_limit(int resource, rlim_t value)
         rl.rlim_max = rl.rlim_max == RLIM_INFINITY || value + 1 <= rl.rlim_max ? value + 1 : rl.rlim_max;
     else if (resource == RLIMIT_AS)
         rl.rlim_max = value;
-    setrlimit(resource, &rl);
+    setup_or_exit(setrlimit(resource, &rl) == 0);
 }
 
 /* Everything the child does before running fn: it may only use what it was
@@ -75,7 +84,7 @@ static void set_limit(int resource, rlim_t value)
  * channel becomes descriptor 3; the rest above 2 are closed. */
 static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
 {
-    setpgid(0, 0);
+    setup_or_exit(setpgid(0, 0) == 0 || getpgid(0) == getpid());
     static const int ignored[] = { SIGINT, SIGQUIT, SIGHUP, SIGTSTP, SIGTTIN, SIGTTOU };
     static const int fatal[] = { SIGTERM, SIGPIPE, SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL,
                                  SIGXCPU, SIGXFSZ, SIGALRM, SIGCHLD, SIGSYS };
@@ -88,17 +97,13 @@ static void child_setup(int sock, int output_fd, const sw_limits *lim, int keep)
     sigprocmask(SIG_SETMASK, &none, NULL);
     int devnull = open("/dev/null", O_RDWR);
     int out = output_fd >= 0 ? output_fd : devnull;
-    if (devnull >= 0)
-        dup2(devnull, STDIN_FILENO);
-    if (out >= 0) {
-        dup2(out, STDOUT_FILENO);
-        dup2(out, STDERR_FILENO);
-    }
+    setup_or_exit(devnull >= 0 && dup2(devnull, STDIN_FILENO) == STDIN_FILENO);
+    setup_or_exit(dup2(out, STDOUT_FILENO) == STDOUT_FILENO && dup2(out, STDERR_FILENO) == STDERR_FILENO);
     if (sock != 3) {
-        dup2(sock, 3);
+        setup_or_exit(dup2(sock, 3) == 3);
         close(sock);
     }
-    fcntl(3, F_SETFD, 0);
+    setup_or_exit(fcntl(3, F_SETFD, 0) == 0);
     sw_close_fds(keep + 1, NULL, 0);
     if (lim && lim->cpu_seconds > 0)
         set_limit(RLIMIT_CPU, (rlim_t)(lim->cpu_seconds + 0.999));

@@ -319,13 +319,14 @@ START_TEST(progress_under_input_rules)
             ck_assert_int_eq(ftruncate(fd, (off_t)2 << 30), 0);
             close(fd);
         }
-        double start = sw_clock_now();
+        /* Judged without reading: a FIFO opened for reading would block
+         * (the case would hang, and fail at Check's timeout), and the
+         * sparse file's message is about its size. No clock here: a loaded
+         * machine must not fail it. */
         ck_assert_int_eq(sw_progress_readable(err, sizeof err), SW_EIO);
         ck_assert_msg(strstr(err, cases[i].says), "%s: %s", cases[i].what, err);
         ck_assert_int_eq(sw_progress_get("intro.lesson"), 0);
         ck_assert_int_eq(sw_progress_set("intro.lesson", 2, err, sizeof err), SW_EIO);
-        ck_assert_msg(sw_clock_now() - start < 1.0, "%s took %.2f s", cases[i].what,
-                      sw_clock_now() - start);
         struct stat st;
         ck_assert_int_eq(lstat(path, &st), 0);
         if (strcmp(cases[i].what, "fifo") == 0)

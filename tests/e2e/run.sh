@@ -15,10 +15,12 @@ for t in "$dir"/test_*.sh; do
     [ -e "$t" ] || continue
     name=$(basename "$t" .sh)
     log=$(mktemp)
+    t0=$(date +%s)
     STEPWISE="$bin" sh "$t" >"$log" 2>&1
     rc=$?
+    took=$(( $(date +%s) - t0 )) # for the developer reading the log; never judged
     if [ $rc -eq 0 ]; then
-        pass=$((pass + 1)); echo "e2e: $name: ok"
+        pass=$((pass + 1)); echo "e2e: $name: ok ($took s)"
         # a part of a passing test left out here says so: shown, and counted
         while IFS= read -r line; do
             [ -n "$line" ] || continue

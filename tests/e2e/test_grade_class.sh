@@ -141,13 +141,11 @@ plugin class/looping.c looping 'for (volatile int spin = 1; spin;) { }'
 cp assignment.txt class/README.txt   # not a submission: a row 'skipped' with the reason
 
 # --- grade the class -----------------------------------------------------------
-start=$(date +%s)
-timeout 120 "$SW" grade --assignment assignment.txt --csv grades.csv --results results.json class >out 2>err
+# (timeout: a guard against a hang, never a measure: it ends grade with 124)
+timeout 600 "$SW" grade --assignment assignment.txt --csv grades.csv --results results.json class >out 2>err
 rc=$?
-took=$(( $(date +%s) - start ))
 cat out
 [ "$rc" -eq 1 ] || fail "grade exited $rc, want 1: $(cat err)"
-[ "$took" -le 60 ] || fail "grading took $took s"
 grep -q '^grading 13 submissions against assignment.txt (euler on spring, dt 0.01); 1 other entry not graded' out \
     || fail "heading: $(head -1 out)"
 grep -q '^13 submissions: 2 passed, 11 failed' out || fail "totals: $(tail -1 out)"
@@ -231,4 +229,4 @@ awk -F= '$1 == "score" { d = $2 - 9 / 13; exit !(d < 1e-12 && d > -1e-12) }' fie
 grep -q '^tests\[[0-9]*\]\.name=Emmy Noether (class/bom-crlf.trace)$' fields || fail "test names: $(grep name= fields)"
 grep -q '^tests\[[0-9]*\]\.extra_data\.notes=written on Windows$' fields || fail "the note is not carried"
 grep -q '^tests\[[0-9]*\]\.output=FAIL: class/wrong-dt.trace' fields || fail "outputs: $(grep output= fields | head -2)"
-echo "ok (graded in $took s)"
+echo ok

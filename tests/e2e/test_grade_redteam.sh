@@ -52,10 +52,10 @@ EOF
 # a gradebook to read back, with a classmate's verdict cell in it
 "$SW" grade --assignment $A --roster roster.csv --csv book.csv class/ZQCLASSMATE_s1001.trace >/dev/null 2>&1
 printf 'ZQBOOKROW,elsewhere/x.trace,pass,,,,,,2,2,\r\n' >> book.csv
-# Not in the sanitizer pass (SW_TEST_QUICK): there ASan owns SIGSEGV and its
+# Not in the sanitizer pass (SW_SANITIZED): there ASan owns SIGSEGV and its
 # shadow memory, and the scan's probing of unmapped pages ends in a
 # forbidden system call of ASan's own (SIGSYS), which says nothing.
-for j in ${SW_TEST_QUICK:+skip} 1 2; do
+for j in ${SW_SANITIZED:+skip} 1 2; do
     [ "$j" = skip ] && break
     "$SW" grade --assignment $A --roster roster.csv --csv book.csv --feedback fb$j -j $j class >out$j.txt 2>&1
     [ $? -le 1 ] || fail "1: grade -j $j exited $?: $(cat out$j.txt)"
@@ -111,9 +111,9 @@ cp class/ZQCLASSMATE_s1001.trace "esc/$(printf 'Jos\351.trace')"
     || fail "3: a regrade of one name changed the other's row: $(cat esc.csv)"
 
 # 4: a compiler that would take 800 MB is held to --memory 64 (not in the
-# sanitizer pass, SW_TEST_QUICK: ASan reserves terabytes of address space,
+# sanitizer pass, SW_SANITIZED: ASan reserves terabytes of address space,
 # so that build sets no address-space limit at all)
-if [ -z "${SW_TEST_QUICK:-}" ]; then
+if [ -z "${SW_SANITIZED:-}" ]; then
 mkdir bomb
 {
     cat "$ROOT/examples/euler_plugin.c"

@@ -21,6 +21,7 @@ cpu_ticks() {
 }
 
 now_ms() { date +%s%3N; }
+gone() { [ ! -d "/proc/$1" ]; }
 
 # find_app: the pid of our stepwise process (its command line names the binary and "lesson").
 find_app() {
@@ -62,8 +63,9 @@ vanish() {
     before=$(cpu_ticks "$pid")
     start=$(now_ms)
     if [ "$how" = pane ]; then tmux kill-pane -t "$s"; else tmux kill-session -t "$s"; fi
-    i=0
-    while [ -d "/proc/$pid" ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    # a condition with a generous guard: a stepwise that survives its
+    # terminal (a busy loop on a dead tty) is still there after 30 s
+    wait_until 30 gone "$pid"
     took=$(( $(now_ms) - start ))
     if [ -d "/proc/$pid" ]; then
         spent=$(( $(cpu_ticks "$pid") - before ))
@@ -107,8 +109,7 @@ if command -v script >/dev/null; then
     [ -n "$spid" ] || fail "pty: no script process"
     start=$(now_ms)
     kill -KILL "$spid"
-    i=0
-    while [ -d "/proc/$pid" ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
+    wait_until 30 gone "$pid"
     took=$(( $(now_ms) - start ))
     [ -d "/proc/$pid" ] && { kill -KILL "$pid"; fail "pty: stepwise still runs ${took} ms after its pty closed"; }
     wait_until 30 test -s rc

@@ -74,6 +74,11 @@ screen() { tmux capture-pane -p -t "$SESSION"; }
 . "$ROOT/tests/e2e/wait.sh"   # wait_until
 
 screen_has() { screen | grep -Eq -- "$1"; }
+# The same for the shell's text after a program ended, its wrapped lines
+# joined: a message that names the binary's path wraps where the checkout
+# lies deep (wait_for_text PATTERN [LIMIT]).
+text_has() { tmux capture-pane -p -J -t "$SESSION" | grep -Eq -- "$1"; }
+wait_for_text() { wait_until "${2:-30}" text_has "$1"; }
 
 # wait_for REGEX [SECONDS]: poll the screen until it matches.
 wait_for() { wait_until "${2:-30}" screen_has "$1"; }

@@ -65,7 +65,7 @@ keys n
 wait_for 'The stability meter' || fail "lesson 1 has no page on the meter"
 wait_for 'stiffness·dt … of limit 2\.83' || fail "the page does not explain the meter"
 keys q
-wait_for 'lesson 1 continues at page 3 of [0-9]+: .*stepwise lesson 1' || fail "q did not say how to continue"
+wait_for_text 'lesson 1 continues at page 3 of [0-9]+: .*stepwise lesson 1' || fail "q did not say how to continue"
 check_terminal_sane lesson1
 
 # Lesson 2 page 3: doubling dt is not answered with "halve dt again".
@@ -129,6 +129,6 @@ wait_for "Euler's method +\(page 1/" || fail "a finished lesson does not reopen 
 wait_for 'earlier session' || fail "the page does not say it was done before"
 screen | grep -q '✓ steps >= 5' && fail "the goal is ticked from last time"
 keys q
-wait_for 'next: .*stepwise lesson 3' || fail "q after a finished lesson does not name the next one"
+wait_for_text 'next: .*stepwise lesson 3' || fail "q after a finished lesson does not name the next one"
 check_terminal_sane reopened
 echo ok

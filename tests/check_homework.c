@@ -203,30 +203,27 @@ static void refused(const char *text, const char *line, const char *words)
 
 START_TEST(mistakes_named)
 {
-    const char *head = "# stepwise assignment 1\n# scene: chain\n# integrator: rk4\n# dt: 0.01\n# steps: 10\n";
-    char text[1024];
-    snprintf(text, sizeof text, "%s# param k: 8..12 per student\n", head);
-    refused(text, ":6:", "need '# secret: WORDS'");
-    snprintf(text, sizeof text, "%s# secret: s\n# param n: 2.5..4 per student\n", head);
-    refused(text, ":7:", "whole number in [1, 1e+06]");
-    snprintf(text, sizeof text, "%s# secret: s\n# param k: 1..2e9 per student\n", head);
-    refused(text, ":7:", "LO..HI per student");
-    snprintf(text, sizeof text, "%s# secret: s\n# param k: 100..100000000 per student\n", head);
-    refused(text, ":7:", "outside chain's range");
-    snprintf(text, sizeof text, "%s# secret: s\n# param k: 8..12\n", head);
-    refused(text, ":7:", "LO..HI per student");
-    snprintf(text, sizeof text, "%s# secret: s\n# param k: one of 5\n", head);
-    refused(text, ":7:", "one of A, B");
-    snprintf(text, sizeof text, "%s# part a\n# kind: trace\n", head);
-    refused(text, ":7:", "the homework's, not a part's");
-    snprintf(text, sizeof text, "%s# part a\n# part a\n", head);
-    refused(text, ":7:", "each name once");
-    snprintf(text, sizeof text, "%s# part a\n# visibility: secret\n", head);
-    refused(text, ":7:", "visible, hidden, after_due_date or after_published");
-    snprintf(text, sizeof text, "%s# count: first\n", head);
-    refused(text, ":6:", "best or latest");
-    snprintf(text, sizeof text, "%s# part a\n# scene: nowhere\n", head);
-    refused(text, ":7:", "nowhere");
+    static const struct {
+        const char *tail, *line, *words;
+    } cases[] = {
+        { "# param k: 8..12 per student\n", ":6:", "need '# secret: WORDS'" },
+        { "# secret: s\n# param n: 2.5..4 per student\n", ":7:", "whole number in [1, 1e+06]" },
+        { "# secret: s\n# param k: 1..2e9 per student\n", ":7:", "LO..HI per student" },
+        { "# secret: s\n# param k: 100..100000000 per student\n", ":7:", "outside chain's range" },
+        { "# secret: s\n# param k: 8..12\n", ":7:", "LO..HI per student" },
+        { "# secret: s\n# param k: one of 5\n", ":7:", "one of A, B" },
+        { "# part a\n# kind: trace\n", ":7:", "the homework's, not a part's" },
+        { "# part a\n# part a\n", ":7:", "each name once" },
+        { "# part a\n# visibility: secret\n", ":7:", "visible, hidden, after_due_date or after_published" },
+        { "# count: first\n", ":6:", "best or latest" },
+        { "# part a\n# scene: nowhere\n", ":7:", "nowhere" },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char text[1024];
+        snprintf(text, sizeof text, "# stepwise assignment 1\n# scene: chain\n# integrator: rk4\n# dt: 0.01\n"
+                 "# steps: 10\n%s", cases[i].tail);
+        refused(text, cases[i].line, cases[i].words);
+    }
 }
 END_TEST
 

@@ -182,6 +182,9 @@ int grade_feedback_write(const grade_list *l, const char *dir);
 /* A student's name as a file name: letters, digits, '.', '-', '_', its
  * Latin letters folded as the roster folds them (Poincaré: Poincare). */
 void grade_safe_name(const char *name, char *out, size_t len);
+/* names[n] = base, or base-2, base-3, ... when names[0..n) has it (in any
+ * case): one file each for students whose names fold alike. */
+void grade_name_unique(char (*names)[112], int n, const char *base);
 
 /* What a submission's child sends back: this, then report_len bytes, then
  * nwrong grade_wrong_row (--similarity). */

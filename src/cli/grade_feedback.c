@@ -65,6 +65,18 @@ void grade_safe_name(const char *name, char *out, size_t len)
         snprintf(out, len, "student");
 }
 
+void grade_name_unique(char (*names)[112], int n, const char *base)
+{
+    snprintf(names[n], sizeof names[n], "%s", base);
+    for (int k = 2, clash = 1; clash; k++) { /* names that fold alike: -2, -3, ... */
+        clash = 0;
+        for (int j = 0; j < n && !clash; j++)
+            clash = strcasecmp(names[j], names[n]) == 0;
+        if (clash)
+            snprintf(names[n], sizeof names[n], "%s-%d", base, k);
+    }
+}
+
 static const grade_entry *row(const grade_list *l, int i)
 {
     return i < l->n ? &l->items[i] : &l->refused[i - l->n];
@@ -137,15 +149,7 @@ int grade_feedback_write(const grade_list *l, const char *dir)
         grade_safe_name(student, base + (l->roster && !on_roster ? 10 : 0), sizeof base - 10);
         if (l->roster && !on_roster)
             memcpy(base, "unmatched-", 10);
-        /* Two students whose names reduce alike get -2, -3, ... */
-        snprintf(names[written], sizeof names[written], "%s", base);
-        for (int k = 2, clash = 1; clash; k++) {
-            clash = 0;
-            for (int j = 0; j < written && !clash; j++)
-                clash = strcasecmp(names[j], names[written]) == 0;
-            if (clash)
-                snprintf(names[written], sizeof names[written], "%s-%d", base, k);
-        }
+        grade_name_unique(names, written, base);
         snprintf(path, sizeof path, "%s/%s.txt", dir, names[written]);
         written++;
         struct stat st;

@@ -89,14 +89,7 @@ int sw_cmd_handout(int argc, char **argv)
         const sw_student *st = &r.students[s];
         char base[100];
         grade_safe_name(st->name, base, sizeof base);
-        snprintf(names[s], sizeof names[s], "%s", base);
-        for (int k = 2, clash = 1; clash; k++) { /* names that fold alike: -2, -3, ... */
-            clash = 0;
-            for (int j = 0; j < s && !clash; j++)
-                clash = strcasecmp(names[j], names[s]) == 0;
-            if (clash)
-                snprintf(names[s], sizeof names[s], "%s-%d", base, k);
-        }
+        grade_name_unique(names, s, base);
         snprintf(path, sizeof path, "%s/%s.txt", dir, names[s]);
         sw_outfile o;
         if (sw_homework_read(&h, assignment, st->email, err, sizeof err) != SW_OK ||

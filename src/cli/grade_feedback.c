@@ -111,11 +111,20 @@ static void write_report(FILE *f, const grade_list *l, int first, const unsigned
         const char *base = strrchr(e->path, '/');
         char shown[300];
         sw_escape(base ? base + 1 : e->path, 200, shown, sizeof shown);
-        fprintf(f, "== %s: %s ==\n", shown, grade_verdict_word(e->status));
-        if (e->failing_step >= 0)
-            fprintf(f, "first failing step: %ld\n", e->failing_step);
-        if (e->message[0])
-            fprintf(f, "%s\n", e->message);
+        /* A graded file's verdict, step and message cover every part it was
+         * graded on: with parts not shown yet, the report below (which
+         * holds only the shown ones) speaks for it alone. */
+        int partial = e->report && l->hw && sw_homework_hidden_parts(l->hw) > 0 &&
+                      (e->part < 0 || l->hw->parts[e->part].visibility != SW_VIS_VISIBLE);
+        if (partial)
+            fprintf(f, "== %s ==\n", shown);
+        else {
+            fprintf(f, "== %s: %s ==\n", shown, grade_verdict_word(e->status));
+            if (e->failing_step >= 0)
+                fprintf(f, "first failing step: %ld\n", e->failing_step);
+            if (e->message[0])
+                fprintf(f, "%s\n", e->message);
+        }
         if (e->remarks[0])
             fprintf(f, "note: %s\n", e->remarks);
         if (e->report)

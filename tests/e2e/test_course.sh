@@ -200,7 +200,7 @@ folder hw5 "Sofia Kovalevskaya" > /dev/null
 cp "$ROOT/examples/euler_plugin.c" "$(folder hw5 "Carl Gauss")/rk4.c"; rm -f "$(folder hw5 "Carl Gauss")/rk4.so"
 
 "$SW" grade --assignment hw5-rk4.txt --roster roster.csv --csv files5.csv --gradebook book5.csv \
-    --lms lms5.csv hw5 > out5 2>&1
+    --lms lms5.csv --feedback fb5 hw5 > out5 2>&1
 [ $? -le 1 ] || fail "grade hw5: $(cat out5)"
 # Points of 7: values 2 on each part, the order 1 on the chain.
 {
@@ -213,6 +213,11 @@ cp "$ROOT/examples/euler_plugin.c" "$(folder hw5 "Carl Gauss")/rk4.c"; rm -f "$(
 tr -d '\r' < lms5.csv > got-lms5.csv
 cmp -s got-lms5.csv want-lms5.csv || fail "HW5's LMS CSV is not the expectation: $(diff want-lms5.csv got-lms5.csv)"
 grep "^Grace Hopper" book5.csv | grep -q "gyre:" || fail "HW5 Grace Hopper: the gyre is not named: $(grep Hopper book5.csv)"
+# ... to the teacher; her feedback shows the chain and says the gyre was graded, nothing more
+grep -q "== part chain ==" fb5/Grace_Hopper.txt && grep -q "never shown to students" fb5/Grace_Hopper.txt ||
+    fail "HW5 Grace Hopper's feedback: $(cat fb5/Grace_Hopper.txt)"
+grep -q "every stage evaluated\|rk4.c: fail\|first failing step" fb5/Grace_Hopper.txt &&
+    fail "HW5 Grace Hopper's feedback tells how the hidden part went: $(cat fb5/Grace_Hopper.txt)"
 grep "^Emmy Noether" book5.csv | grep -q ",7,7,pass,.*rk4_final.so,.*draft.c," ||
     fail "HW5 Emmy Noether: the best upload does not count: $(grep Noether book5.csv)"
 grep "^Henri Poincaré" book5.csv | grep -q "nothing of the kind this homework asks for: a plugin" ||

@@ -233,8 +233,15 @@ static int load_lines(sw_homework *h, char *err, size_t errlen)
     const char *what = NULL;
     int fd = sw_infile_open(h->path, &st, &what);
     if (fd < 0) {
-        snprintf(err, errlen, "%.200s:1: cannot read: %s", h->path, what ? what : strerror(errno));
-        return SW_EIO;
+        /* the trace reader's words for a file it cannot read, as before */
+        sw_trace_reader r;
+        int rc = sw_trace_read_open_as(&r, h->path, 1, err, errlen);
+        if (rc == SW_OK) {
+            sw_trace_read_close(&r);
+            snprintf(err, errlen, "%.200s:1: cannot read: %s", h->path, what ? what : strerror(errno));
+            rc = SW_EIO;
+        }
+        return rc;
     }
     h->text = malloc(HOMEWORK_FILE_MAX + 1);
     size_t len = 0;

@@ -601,9 +601,10 @@ judge_class() { # CLASS
         bad "class $X: results.json is not JSON"
     else
         # the class's figure: the mean of the rows that are submissions (the
-        # CSV's score column), out of the homework's points (every row's max)
+        # CSV's score column), out of the homework's points (a homework of
+        # either kind: the larger of a trace's and a plugin's maximum)
         passes=$(awk -F'\t' '$2 != "skipped" { s += $6; n++ } END { printf "%.15g", n ? s / n : 0 }' "$BOOK/rows-$X")
-        rows=$(awk -F'\t' '$2 != "skipped" { print $7 }' "$BOOK/rows-$X" | sort -u | tr '\n' ' ')
+        rows=$(awk -F'\t' '$2 != "skipped" { print $7 }' "$BOOK/rows-$X" | sort -n | tail -1)
         got=$(sed -n 's/^score=//p' "$BOOK/fields-$X")
         awk -v a="$got" -v b="$passes" 'BEGIN { d = a - b; exit !(d < 1e-12 && d > -1e-12) }' &&
             grep -qx "max_score=${rows% }" "$BOOK/fields-$X" ||

@@ -316,48 +316,33 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
     free(which);
 }
 
-/* The command; wargv (argc + 2 long) receives what a plugin's worker is
- * started with. */
-static int grade_command(int argc, char **argv, char **wargv)
+/* What the command line asked for. */
+typedef struct grade_opts {
+    const char *assignment, *csv, *results, *gradescope, *roster, *feedback, *gradebook, *lms, *metadata;
+    int fresh, similarity, jobs;
+    sw_limits lim;
+    double wall;                 /* 0: the default, GRADE_WALL(cpu) */
+    sw_check_request base;       /* the tolerance options */
+    const char **files;          /* argc long */
+    int nfiles;
+    int wargc;                   /* wargv[0..wargc): what a plugin's worker is started with */
+} grade_opts;
+
+#define GRADE_HELP_SHOWN (-1)
+
+/* Parse the options into o (o->files allocated by the caller, argc + 1
+ * long); wargv receives the options that shape a check, never a file of
+ * the class (grade.h). SW_EXIT_OK, GRADE_HELP_SHOWN, or SW_EXIT_USAGE with
+ * the error printed. */
+static int grade_parse(int argc, char **argv, grade_opts *o, char **wargv)
 {
-    /* a plugin's worker, started again as a program (grade.h) */
-    const char *w_build = NULL, *w_path = NULL, *w_student = NULL;
-    int w_index = -1, w_similarity = 0;
-    if (argc > 1 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
-        /* only as grade starts it: its channel on descriptor 3, the mark
-         * in its environment (a file named "--worker" in a teacher's glob
-         * is neither) */
-        struct stat ch;
-        const char *mark = getenv("STEPWISE_GRADE_WORKER");
-        if (argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
-            return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
-                                "option (to grade a file of that name, give it after --)");
-        w_index = atoi(argv[2]);
-        w_build = argv[3];
-        w_path = argv[4];
-        w_similarity = atoi(argv[5]);
-        w_student = argv[6];
-        argc -= 6;
-        argv += 6;
-    }
-    const char *assignment = NULL, *csv = NULL, *results = NULL, *gradescope = NULL, *roster = NULL;
-    const char *feedback = NULL, *gradebook = NULL, *lms = NULL, *metadata = NULL;
-    int fresh = 0, similarity = 0, jobs = 0;
-    sw_limits lim = { .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
-                      .output_bytes = (size_t)1024 << 10 };
-    double wall = 0;
-    sw_check_request base;
-    sw_check_request_init(&base);
     char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
-    int first_file = 0;
-    const char **files = calloc((size_t)argc + 1, sizeof *files);
-    if (!files)
-        return sw_cli_error("grade: out of memory");
-    /* what a plugin's worker is started with: the options that shape a
-     * check, never a file of the class (grade.h) */
-    int wargc = 1;
+    int first_file = 0, rc = SW_EXIT_OK;
+    o->lim = (sw_limits){ .cpu_seconds = 10, .memory_bytes = (size_t)1024 << 20,
+                          .output_bytes = (size_t)1024 << 10 };
+    sw_check_request_init(&o->base);
+    o->wargc = 1;
     wargv[0] = "grade";
-    int nfiles = 0, rc = SW_EXIT_OK;
     for (int i = 1; i < argc && rc == SW_EXIT_OK; i++) {
         const char *a = argv[i];
         int takes = a[0] == '-' && ((a[1] == '-' && strcmp(a, "--help") != 0 && strcmp(a, "--") != 0 &&
@@ -366,11 +351,10 @@ static int grade_command(int argc, char **argv, char **wargv)
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(grade_help, stdout);
             fputs(grade_help_more, stdout);
-            free(files);
-            return SW_EXIT_OK;
+            return GRADE_HELP_SHOWN;
         }
         if (first_file || a[0] != '-') {
-            files[nfiles++] = a;
+            o->files[o->nfiles++] = a;
             continue;
         }
         struct stat named;
@@ -397,50 +381,50 @@ static int grade_command(int argc, char **argv, char **wargv)
                                                   "--tol", "--ignore" };
         for (size_t k = 0; k < sizeof for_worker / sizeof *for_worker; k++)
             if (strcmp(a, for_worker[k]) == 0) {
-                wargv[wargc++] = (char *)a;
+                wargv[o->wargc++] = (char *)a;
                 if (val)
-                    wargv[wargc++] = (char *)val;
+                    wargv[o->wargc++] = (char *)val;
             }
         double d;
         if (strcmp(a, "--assignment") == 0)
-            assignment = val;
+            o->assignment = val;
         else if (strcmp(a, "--roster") == 0)
-            roster = val;
+            o->roster = val;
         else if (strcmp(a, "--fresh") == 0)
-            fresh = 1;
+            o->fresh = 1;
         else if (strcmp(a, "--similarity") == 0)
-            similarity = 1;
+            o->similarity = 1;
         else if (strcmp(a, "--feedback") == 0)
-            feedback = val;
+            o->feedback = val;
         else if (strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0 || strncmp(a, "-j", 2) == 0) {
             rc = sw_cli_range(strncmp(a, "--", 2) == 0 ? a : "-j", val ? val : a + 2, 1, 256, "",
                               &d);
             if (rc == SW_EXIT_OK && d != (int)d)
                 rc = sw_cli_error("grade: -j takes a whole number of submissions at once, 1 to 256");
-            jobs = (int)d;
+            o->jobs = (int)d;
         }
         else if (strcmp(a, "--csv") == 0)
-            csv = val;
+            o->csv = val;
         else if (strcmp(a, "--gradebook") == 0)
-            gradebook = val;
+            o->gradebook = val;
         else if (strcmp(a, "--lms") == 0)
-            lms = val;
+            o->lms = val;
         else if (strcmp(a, "--submission-metadata") == 0)
-            metadata = val;
+            o->metadata = val;
         else if (strcmp(a, "--results") == 0)
-            results = val;
+            o->results = val;
         else if (strcmp(a, "--gradescope") == 0)
-            gradescope = val;
+            o->gradescope = val;
         else if (strcmp(a, "--cpu") == 0)
-            rc = sw_cli_range("--cpu", val, 0.1, 3600, "seconds", &lim.cpu_seconds);
+            rc = sw_cli_range("--cpu", val, 0.1, 3600, "seconds", &o->lim.cpu_seconds);
         else if (strcmp(a, "--wall") == 0)
-            rc = sw_cli_range("--wall", val, 0.1, 86400, "seconds", &wall);
+            rc = sw_cli_range("--wall", val, 0.1, 86400, "seconds", &o->wall);
         else if (strcmp(a, "--memory") == 0) {
             rc = sw_cli_range("--memory", val, 64, 65536, "MiB", &d);
-            lim.memory_bytes = (size_t)(d * 1048576);
+            o->lim.memory_bytes = (size_t)(d * 1048576);
         } else if (strcmp(a, "--output") == 0) {
             rc = sw_cli_range("--output", val, 4, 1048576, "KiB", &d);
-            lim.output_bytes = (size_t)(d * 1024);
+            o->lim.output_bytes = (size_t)(d * 1024);
         } else if (strcmp(a, "--no-sandbox") == 0) {
             sw_jail_set_enabled(0);
         } else if (strcmp(a, "--plugin-timeout") == 0) {
@@ -448,61 +432,98 @@ static int grade_command(int argc, char **argv, char **wargv)
             if (rc == SW_EXIT_OK)
                 sw_plugin_set_timeout(d);
         } else if (strcmp(a, "--rtol") == 0)
-            rc = sw_cli_range("--rtol", val, 1e-16, 1, "", &base.rtol);
+            rc = sw_cli_range("--rtol", val, 1e-16, 1, "", &o->base.rtol);
         else if (strcmp(a, "--atol") == 0)
-            rc = sw_cli_range("--atol", val, 1e-300, 1e6, "", &base.atol);
+            rc = sw_cli_range("--atol", val, 1e-300, 1e6, "", &o->base.atol);
         else if (strcmp(a, "--tol") == 0 || strcmp(a, "--ignore") == 0) {
-            if (sw_coltol_parse(&base.coltols, val, a[2] == 'i', a, err, sizeof err) != SW_OK)
+            if (sw_coltol_parse(&o->base.coltols, val, a[2] == 'i', a, err, sizeof err) != SW_OK)
                 rc = sw_cli_error("grade: %s", err);
         } else
             rc = sw_cli_error("grade: unknown option '%.40s'; see 'stepwise grade --help'", a);
     }
-    if (rc == SW_EXIT_OK && !assignment)
+    return rc;
+}
+
+/* The command; wargv (argc + 2 long) receives what a plugin's worker is
+ * started with. */
+static int grade_command(int argc, char **argv, char **wargv)
+{
+    /* a plugin's worker, started again as a program (grade.h) */
+    const char *w_build = NULL, *w_path = NULL, *w_student = NULL;
+    int w_index = -1, w_similarity = 0;
+    if (argc > 1 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
+        /* only as grade starts it: its channel on descriptor 3, the mark
+         * in its environment (a file named "--worker" in a teacher's glob
+         * is neither) */
+        struct stat ch;
+        const char *mark = getenv("STEPWISE_GRADE_WORKER");
+        if (argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
+            return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
+                                "option (to grade a file of that name, give it after --)");
+        w_index = atoi(argv[2]);
+        w_build = argv[3];
+        w_path = argv[4];
+        w_similarity = atoi(argv[5]);
+        w_student = argv[6];
+        argc -= 6;
+        argv += 6;
+    }
+    static grade_opts o;
+    memset(&o, 0, sizeof o);
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    if (!(o.files = calloc((size_t)argc + 1, sizeof *o.files)))
+        return sw_cli_error("grade: out of memory");
+    int rc = grade_parse(argc, argv, &o, wargv);
+    if (rc == GRADE_HELP_SHOWN) {
+        free(o.files);
+        return SW_EXIT_OK;
+    }
+    if (rc == SW_EXIT_OK && !o.assignment)
         rc = sw_cli_error("grade needs --assignment A (an assignment file or a reference trace); "
                           "see 'stepwise grade --help'");
-    if (rc == SW_EXIT_OK && nfiles == 0 && !w_path)
+    if (rc == SW_EXIT_OK && o.nfiles == 0 && !w_path)
         rc = sw_cli_error("grade needs submissions: FILES... or a DIR");
     static sw_homework hw;
     struct stat asg_st;
-    if (rc == SW_EXIT_OK && (sw_homework_read(&hw, assignment, NULL, err, sizeof err) != SW_OK ||
-                             stat(assignment, &asg_st) != 0))
+    if (rc == SW_EXIT_OK && (sw_homework_read(&hw, o.assignment, NULL, err, sizeof err) != SW_OK ||
+                             stat(o.assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
     if (w_path) {
-        free(files);
+        free(o.files);
         if (rc != SW_EXIT_OK)
             return rc;
-        base.assignment = &hw.parts[0].a;
+        o.base.assignment = &hw.parts[0].a;
         sw_decimal_init();
-        grade_job job = { w_path, 1, w_build, w_index, &base, lim.output_bytes, NULL, w_similarity, &lim, 0, NULL,
+        grade_job job = { w_path, 1, w_build, w_index, &o.base, o.lim.output_bytes, NULL, w_similarity, &o.lim, 0, NULL,
                           &hw, w_student };
         return grade_worker(&job, 3, 3);
     }
     grade_list list = { 0 };
     list.hw = &hw;
-    list.fresh = fresh;
-    list.similarity = similarity;
-    list.feedback = feedback;
-    if (rc == SW_EXIT_OK && roster)
-        rc = grade_roster_load(&list, roster);
-    if (rc == SW_EXIT_OK && metadata)
-        rc = grade_read_submission_metadata(&list, metadata);
-    for (int i = 0; rc == SW_EXIT_OK && i < nfiles; i++)
-        rc = grade_collect(&list, files[i], &asg_st);
-    free(files);
-    if (rc == SW_EXIT_OK && list.n + list.ignored == 0 && !gradescope)
+    list.fresh = o.fresh;
+    list.similarity = o.similarity;
+    list.feedback = o.feedback;
+    if (rc == SW_EXIT_OK && o.roster)
+        rc = grade_roster_load(&list, o.roster);
+    if (rc == SW_EXIT_OK && o.metadata)
+        rc = grade_read_submission_metadata(&list, o.metadata);
+    for (int i = 0; rc == SW_EXIT_OK && i < o.nfiles; i++)
+        rc = grade_collect(&list, o.files[i], &asg_st);
+    free(o.files);
+    if (rc == SW_EXIT_OK && list.n + list.ignored == 0 && !o.gradescope)
         rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
                           ".so or .c)");
-    if (rc == SW_EXIT_OK && gradescope && results)
+    if (rc == SW_EXIT_OK && o.gradescope && o.results)
         rc = sw_cli_error("grade: --gradescope and --results are two forms of results.json; give "
                           "one");
-    const char *const out_opts[] = { "--csv", gradescope ? "--gradescope" : "--results", "--gradebook", "--lms" };
-    const char *const out_paths[] = { csv, gradescope ? gradescope : results, gradebook, lms };
+    const char *const out_opts[] = { "--csv", o.gradescope ? "--gradescope" : "--results", "--gradebook", "--lms" };
+    const char *const out_paths[] = { o.csv, o.gradescope ? o.gradescope : o.results, o.gradebook, o.lms };
     if (rc == SW_EXIT_OK)
         rc = grade_check_outputs(&list, &asg_st, out_opts, out_paths, 4);
-    if (rc == SW_EXIT_OK && feedback)
-        rc = grade_feedback_check(&list, feedback);
+    if (rc == SW_EXIT_OK && o.feedback)
+        rc = grade_feedback_check(&list, o.feedback);
     if (rc == SW_EXIT_OK)
-        rc = grade_book_load(&list, csv);
+        rc = grade_book_load(&list, o.csv);
     if (rc == SW_EXIT_OK)
         rc = grade_roster_missing(&list);
     if (rc == SW_EXIT_OK)
@@ -519,9 +540,9 @@ static int grade_command(int argc, char **argv, char **wargv)
     /* the workers build their jails the way the probe found works here */
     if (sw_jail_enabled() && sw_jail_kind_now() == SW_JAIL_UID)
         setenv("STEPWISE_JAIL", "uid", 1);
-    base.assignment = &hw.parts[0].a;
-    if (!(wall > 0))
-        wall = GRADE_WALL(lim.cpu_seconds);
+    o.base.assignment = &hw.parts[0].a;
+    if (!(o.wall > 0))
+        o.wall = GRADE_WALL(o.lim.cpu_seconds);
     char build_dir[PATH_MAX];
     if (sw_tmpdir_make("grade", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
         grade_list_free(&list);
@@ -530,16 +551,16 @@ static int grade_command(int argc, char **argv, char **wargv)
     sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
     grade_print_head(&hw, &list);
     double start = sw_sandbox_now();
-    if (jobs == 0) {
+    if (o.jobs == 0) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        jobs = cores < 1 ? 1 : cores > 256 ? 256 : (int)cores;
+        o.jobs = cores < 1 ? 1 : cores > 256 ? 256 : (int)cores;
     }
-    if (jobs > list.n)
-        jobs = list.n > 0 ? list.n : 1;
-    grade_job proto = { NULL, 0, build_dir, 0, &base, lim.output_bytes, &list, similarity, &lim, wargc, wargv,
+    if (o.jobs > list.n)
+        o.jobs = list.n > 0 ? list.n : 1;
+    grade_job proto = { NULL, 0, build_dir, 0, &o.base, o.lim.output_bytes, &list, o.similarity, &o.lim, o.wargc, wargv,
                         &hw, "" };
     sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
-    grade_all(&list, &proto, wall, jobs);
+    grade_all(&list, &proto, o.wall, o.jobs);
     sw_sandbox_kill_orphans(); /* before any result is written */
     grade_clean_dir(build_dir, list.n);
     if (!sw_signal_caught)
@@ -552,14 +573,14 @@ static int grade_command(int argc, char **argv, char **wargv)
     }
     double seconds = sw_sandbox_now() - start;
     if (rc == SW_EXIT_OK)
-        rc = grade_finish(&list, &lim, wall, seconds, csv, results);
-    if (rc != SW_EXIT_USAGE && (gradebook || lms)) {
-        int brc = grade_students_write(&list, gradebook, lms);
+        rc = grade_finish(&list, &o.lim, o.wall, seconds, o.csv, o.results);
+    if (rc != SW_EXIT_USAGE && (o.gradebook || o.lms)) {
+        int brc = grade_students_write(&list, o.gradebook, o.lms);
         if (brc != SW_EXIT_OK)
             rc = brc;
     }
-    if (gradescope) {
-        int grc = grade_write_gradescope(&list, &hw, gradescope, seconds, sw_jail_enabled());
+    if (o.gradescope) {
+        int grc = grade_write_gradescope(&list, &hw, o.gradescope, seconds, sw_jail_enabled());
         if (grc != SW_EXIT_OK)
             rc = grc;
     }

@@ -104,6 +104,62 @@ static void check_rule(const sw_bench_report *r, const sw_bench_series *s, const
 /* Symplectic Euler's order in the last table, by scene (NaN: not run). */
 static double se_order[64];
 
+/* docs/performance.md's "Observed orders, default run" table, checked cell
+ * by cell against the default run: a number is the order printed with two
+ * decimals, "no order" is NaN, "-" a method that does not apply. */
+static const char *const table_methods[] = { "euler", "symplectic-euler", "midpoint", "heun", "rk4", "verlet",
+                                             "implicit-euler", "implicit-midpoint", "rk45", "dop853", "yoshida4",
+                                             "rkn", "rodas4" };
+enum { TABLE_COLS = sizeof table_methods / sizeof table_methods[0] };
+static int table_checked;
+
+static void check_docs_row(const sw_bench_report *r)
+{
+    FILE *f = fopen("docs/performance.md", "r");
+    ck_assert_ptr_nonnull(f);
+    char line[1024], want[64];
+    int in_table = 0, found = 0;
+    snprintf(want, sizeof want, "| %s |", r->scene->name);
+    while (fgets(line, sizeof line, f)) {
+        if (strncmp(line, "| scene | euler | sympl. euler |", 31) == 0)
+            in_table = 1;
+        else if (in_table && line[0] != '|')
+            in_table = 0;
+        if (!in_table || strncmp(line, want, strlen(want)) != 0)
+            continue;
+        found = 1;
+        char *cell = line + strlen(want);
+        for (int c = 0; c < TABLE_COLS; c++) {
+            while (*cell == ' ')
+                cell++;
+            size_t len = strcspn(cell, "|");
+            while (len > 0 && cell[len - 1] == ' ')
+                len--;
+            char text[32];
+            snprintf(text, sizeof text, "%.*s", (int)len, cell);
+            const sw_bench_series *s = NULL;
+            for (int i = 0; i < r->nseries; i++)
+                if (strcmp(r->series[i].method->name, table_methods[c]) == 0)
+                    s = &r->series[i];
+            char got[32];
+            if (!s)
+                snprintf(got, sizeof got, "-");
+            else if (isnan(s->order))
+                snprintf(got, sizeof got, "no order");
+            else
+                snprintf(got, sizeof got, "%.2f", s->order);
+            ck_assert_msg(strcmp(text, got) == 0, "docs/performance.md: %s %s reads '%s', the run gives '%s'",
+                          r->scene->name, table_methods[c], text, got);
+            cell = strchr(cell, '|');
+            ck_assert_ptr_nonnull(cell);
+            cell++;
+        }
+    }
+    fclose(f);
+    ck_assert_msg(found, "docs/performance.md: no row for %s in the orders table", r->scene->name);
+    table_checked++;
+}
+
 /* Bench scene sc (parameters p, NULL: defaults) under the given methods
  * (NULL: every one that applies, as `bench` does) and check every series. */
 static void bench_scene(const sw_scene *sc, const double *p, const char *what, const char *const *names, int n)
@@ -131,6 +187,8 @@ static void bench_scene(const sw_scene *sc, const double *p, const char *what, c
                     isnan(r.series[i].order) ? "no order " : "", r.series[i].order, r.series[i].nfit,
                     isnan(r.series[i].order) ? ": " : "", sw_bench_no_order_text(&r.series[i]));
     }
+    if (!p && !names)
+        check_docs_row(&r);
     sw_bench_free(&r);
 }
 
@@ -151,12 +209,14 @@ START_TEST(test_whole_table)
         return;
     for (int i = 0; i < 64; i++)
         se_order[i] = NAN;
+    table_checked = 0;
     for (int i = 0; i < sw_scene_count(); i++) {
         const sw_scene *sc = sw_scene_at(i);
         char why[SW_ERRLEN];
         if (sw_bench_measurable(sc, NULL, why, sizeof why))
             bench_scene(sc, NULL, sc->name, NULL, 0);
     }
+    ck_assert_int_ge(table_checked, 10); /* every row of the docs table */
     static const char *const scenes[] = { "orbit", "chain" };
     for (size_t j = 0; j < 2; j++)
         for (int k = 0; k < sw_scene_count(); k++)

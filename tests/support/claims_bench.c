@@ -74,7 +74,35 @@ static double band_abs(void) { return SW_BENCH_BAND_ABS; }
 static double band_rel(void) { return SW_BENCH_BAND_REL; }
 static double min_fit(void) { return SW_BENCH_MIN_FIT; }
 
+/* docs/performance.md's stability table: spring k = m = 1, c = 0 (ω = 1),
+ * what `stepwise stability` measures, and the default spring's Euler limit. */
+#define UNDAMPED "k=1 m=1 c=0"
+static double st_se(void) { return cl_stability("spring", UNDAMPED, "symplectic-euler").dt; }
+static double st_rk4(void) { return cl_stability("spring", UNDAMPED, "rk4").dt; }
+static double st_verlet(void) { return cl_stability("spring", UNDAMPED, "verlet").dt; }
+static double st_rk4_theory(void) { return 2 * sqrt(2.0); }
+static double st_se_below(void) { return 100 * (1 - st_se() / 2); }
+/* rk4 and verlet: the larger relative distance from 2√2 and 2, in % */
+static double st_close(void) { return 100 * fmax(fabs(st_rk4() / (2 * sqrt(2.0)) - 1), fabs(st_verlet() / 2 - 1)); }
+static double st_euler_damped(void) { return cl_stability("spring", NULL, "euler").dt; }
+static double st_euler_formula(void) { return cl_param("spring", "c") / cl_param("spring", "k"); }
+static double st_euler_k1(void) { return cl_param("spring", "c") / 1.0; }
+static double two(void) { return 2; }
+
 const claim sw_claims_o[] = {
+    { PERF, "| symplectic-euler | {1.8611} | 1.861 | 2 |", st_se, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| symplectic-euler | 1.8611 | {1.861} | 2 |", st_se, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "| symplectic-euler | 1.8611 | 1.861 | {2} |", two, EXACT, 0, "|1 - h²ω²/2| <= 1 up to hω = 2", NULL },
+    { PERF, "| rk4 | {2.8283} | 2.828 | 2.828 (2√2) |", st_rk4, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| rk4 | 2.8283 | {2.828} | 2.828 (2√2) |", st_rk4, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "| rk4 | 2.8283 | 2.828 | {2.828} (2√2) |", st_rk4_theory, ROUNDED, 0, R_MATH, NULL },
+    { PERF, "| verlet | {1.9982} | 1.998 | 2 |", st_verlet, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| verlet | 1.9982 | {1.998} | 2 |", st_verlet, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "rk4 and verlet land within {0.1} % of 2√2 and 2", st_close, ATMOST, 0, "a bound on both", NULL },
+    { PERF, "Symplectic Euler is found {7} % below its linear limit", st_se_below, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "h ≤ 2γ/ω0² = c/k = {0.05} (found", st_euler_formula, EXACT, 0, "c/k at the default spring", NULL },
+    { PERF, "(found {0.049999}, tested)", st_euler_damped, ROUNDED, 0, "what stability measures on the default spring", NULL },
+    { PERF, "at k = 1 the same formula gives {0.5}", st_euler_k1, EXACT, 0, "c/k with k = 1", NULL },
     { PERF, "no finer point's error falls below {0.75} of", stall, EXACT, 0, "SW_BENCH_STALL", NULL },
     { PERF, "(the orbit at e = 0.9 stalls at {2e-11} to 1.8e-10", plateau_low, ROUNDED, 0, "rkn's smallest error on its plateau, default sweep", NULL },
     { PERF, "stalls at 2e-11 to {1.8e-10}, not the", plateau_high, ROUNDED, 0, "rkn's largest error on its plateau: the series' floor", NULL },

@@ -560,6 +560,63 @@ START_TEST(reference_frame_changes_cost_not_answer)
 }
 END_TEST
 
+/* Issue 38: `stability bounce --set drag=0.5` never returned: its theory
+ * asks the reference for t = 1257 (100 periods of the drag's 0.5/s), and
+ * once the balls rest on the floor the reference locates a contact every
+ * step. The reference is now stopped once it spends SW_TRUTH_CRAWL times
+ * what its first steps predicted (a count of evaluations, not a clock):
+ * sw_truth_at says no, why says it crawls, and the evaluations spent stay
+ * within the cap. A reference that does not crawl (the chain to its
+ * report time, the bounce without drag to 20 s) is not stopped. */
+START_TEST(reference_crawl_stopped)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("bounce");
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(sc, p);
+    ck_assert_int_eq(sw_scene_set(sc, p, "drag=0.5", err, sizeof err), SW_OK);
+    sw_truth tr;
+    ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(tr.source, SW_TRUTH_REFERENCE);
+    tr.frame = 1257.0 / 15; /* as stability's spectra along the run ask */
+    ck_assert_ptr_null(sw_truth_at(&tr, 1257.0));
+    ck_assert_msg(strstr(tr.why, "crawls") != NULL, "why: %s", tr.why);
+    ck_assert(tr.ref_rate > 0);
+    ck_assert_double_le((double)sw_sim_evals(&tr.ref), SW_TRUTH_CRAWL * tr.ref_rate * 1257.0 + SW_TRUTH_CRAWL_SLACK + 1e3);
+    sw_truth_free(&tr);
+
+    static const struct { const char *scene, *set; double t; } fine[] = { { "chain", NULL, 5.0 }, { "bounce", "drag=0", 20.0 } };
+    for (size_t i = 0; i < sizeof fine / sizeof fine[0]; i++) {
+        sc = sw_scene_find(fine[i].scene);
+        sw_scene_defaults(sc, p);
+        if (fine[i].set)
+            ck_assert_int_eq(sw_scene_set(sc, p, fine[i].set, err, sizeof err), SW_OK);
+        ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+        if (tr.source == SW_TRUTH_REFERENCE)
+            ck_assert_msg(sw_truth_at(&tr, fine[i].t) != NULL, "%s: stopped: %s", fine[i].scene, tr.why);
+        sw_truth_free(&tr);
+    }
+}
+END_TEST
+
+/* ... and `stability bounce --set drag=0.5` returns: every method's theory
+ * (the measurement is refused: contact splits nearby runs). */
+START_TEST(stability_bounce_drag_returns)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("bounce");
+    double p[SW_MAX_PARAMS];
+    sw_scene_defaults(sc, p);
+    ck_assert_int_eq(sw_scene_set(sc, p, "drag=0.5", err, sizeof err), SW_OK);
+    sw_stability_config c;
+    sw_stability_config_default(&c);
+    sw_stability_result r;
+    ck_assert_int_eq(sw_stability_find(sc, p, sw_integrator_find("rk4"), &c, &r, err, sizeof err), SW_OK);
+    ck_assert_int_eq(r.measured, 0);
+    ck_assert(r.theory > 0);
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -574,6 +631,8 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, meter_matches_runs);
     tcase_add_test(tc, drift_against_the_motion);
     tcase_add_test(tc, no_order_from_growth);
+    tcase_add_test(tc, reference_crawl_stopped);
+    tcase_add_test(tc, stability_bounce_drag_returns);
     tcase_add_test(tc, free_modes_left_out);
     tcase_add_test(tc, spectrum_job_matches_synchronous);
     tcase_add_test(tc, meter_on_a_large_chain_in_slices);

@@ -88,6 +88,8 @@ static double st_euler_damped(void) { return cl_stability("spring", NULL, "euler
 static double st_euler_formula(void) { return cl_param("spring", "c") / cl_param("spring", "k"); }
 static double st_euler_k1(void) { return cl_param("spring", "c") / 1.0; }
 static double two(void) { return 2; }
+static double st_stretch(void) { return cl_param("spring", "stretch"); }
+static double st_rest(void) { return cl_param("spring", "rest"); }
 
 const claim sw_claims_o[] = {
     { PERF, "| symplectic-euler | {1.8611} | 1.861 | 2 |", st_se, ROUNDED, 0, "what stability measures", NULL },
@@ -103,6 +105,9 @@ const claim sw_claims_o[] = {
     { PERF, "h ≤ 2γ/ω0² = c/k = {0.05} (found", st_euler_formula, EXACT, 0, "c/k at the default spring", NULL },
     { PERF, "(found {0.049999}, tested)", st_euler_damped, ROUNDED, 0, "what stability measures on the default spring", NULL },
     { PERF, "at k = 1 the same formula gives {0.5}", st_euler_k1, EXACT, 0, "c/k with k = 1", NULL },
+    { PERF, "read it as \"below 2, near {1.86}\"", st_se, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "the amplitude (stretch {0.5} against rest 1)", st_stretch, EXACT, 0, R_COUNT, NULL },
+    { PERF, "the amplitude (stretch 0.5 against rest {1})", st_rest, EXACT, 0, R_COUNT, NULL },
     { PERF, "no finer point's error falls below {0.75} of", stall, EXACT, 0, "SW_BENCH_STALL", NULL },
     { PERF, "(the orbit at e = 0.9 stalls at {2e-11} to 1.8e-10", plateau_low, ROUNDED, 0, "rkn's smallest error on its plateau, default sweep", NULL },
     { PERF, "stalls at 2e-11 to {1.8e-10}, not the", plateau_high, ROUNDED, 0, "rkn's largest error on its plateau: the series' floor", NULL },

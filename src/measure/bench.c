@@ -380,7 +380,8 @@ static void diagnose(const sw_bench_report *r, sw_bench_series *s, int first, in
     if (s->plateau >= 0) {
         const char *what = r->source == SW_BENCH_REFERENCE && s->floor <= SW_BENCH_MARGIN * r->ref_error
                                ? " (the reference's accuracy)"
-                           : s->floor <= SW_BENCH_ROUNDOFF * pts[s->plateau].floor ? " (round-off)" : "";
+                           : s->floor <= SW_BENCH_ROUNDOFF * (pts[s->plateau].floor - r->ref_error) ? " (round-off)"
+                                                                                                    : "";
         snprintf(past, sizeof past, "the error stops falling at %.1e%s", s->floor, what);
     } else {
         /* no plateau, but finer points within SW_BENCH_MARGIN of their floor */
@@ -562,7 +563,7 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
          * finer steps only cost */
         sw_bench_fit(r, se);
         if (k + 1 >= c->min_points && se->plateau >= 0 && se->plateau <= k - 2 &&
-            se->floor <= SW_BENCH_ROUNDOFF * se->points[se->plateau].floor) {
+            se->floor <= SW_BENCH_ROUNDOFF * (se->points[se->plateau].floor - r->ref_error)) {
             se->stop = SW_BENCH_STOP_FLOOR;
             break;
         }

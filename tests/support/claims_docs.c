@@ -410,7 +410,7 @@ const claim sw_claims_d[] = {
     { README, "| dop853 | Dormand–Prince 8(5,3) (Hairer), adaptive (rtol/atol) | {8} |", cl_ord_dop853, EXACT, 0, "the method's order in the table", NULL },
     { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", 8, {12},", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { README, "rk45's error after two orbits is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
+    { README, "is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
     { README, "`1`–`9`, `{0}`, `!`, `@`, `#`, `$`, `%` and `^` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
     { README, "`1`–`9`, `0`, `!`, `@`, `#`, `$`, `%` and `^` pick one", key_at_yoshida, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
     { README, "Verlet substeps of w1·h, w0·h, w1·h | {4} | 3", ord_yoshida, ABS, 0.1, "the order measured halving Δt from 0.04 on the undamped spring (the damped one gives 2: Verlet's velocity predictor)", NULL },

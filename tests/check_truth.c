@@ -617,6 +617,52 @@ START_TEST(stability_bounce_drag_returns)
 }
 END_TEST
 
+/* Issue 38: the meter's growth is the largest over the modes; where that
+ * is not the fastest mode's, the meter names its mode and gives the
+ * fastest one's own factor. stiff-spring, rk4, Δt 0.028: the growth is the
+ * slow swing's (|λ| the smaller of the two), the fastest factor is rk4's
+ * |R(iωΔt)| at ω = √(k/m) = 100, computed here from R(z) = 1 + z + z²/2 +
+ * z³/6 + z⁴/24; the field reads "(fastest ×0.930667)" in brief. On the
+ * vortex (one mode pair) there is no such field. */
+static double rk4_abs_r(double theta)
+{
+    double complex z = I * theta;
+    return cabs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24);
+}
+
+START_TEST(meter_names_its_mode)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("stiff-spring");
+    sw_app a;
+    ck_assert_int_eq(sw_app_init(&a, sc, NULL, sw_integrator_find("rk4"), 0.028, err, sizeof err), SW_OK);
+    sw_app_meter m;
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    double k = sc->params[0].def, mass = sc->params[1].def, omega = sqrt(k / mass);
+    ck_assert_str_eq(sc->params[0].name, "k");
+    ck_assert_str_eq(sc->params[1].name, "m");
+    ck_assert_double_eq_tol(m.stiff, omega, 1e-6 * omega);      /* the stretch is the fastest mode */
+    ck_assert_double_eq_tol(m.fast_growth, rk4_abs_r(omega * 0.028), 1e-12);
+    ck_assert(m.growth_lambda < 0.1 * omega);                    /* the slow swing's */
+    ck_assert_double_eq_tol(m.growth, rk4_abs_r(m.growth_lambda * 0.028), 1e-12);
+    ck_assert(m.growth > m.fast_growth);
+    sw_field f[16];
+    int warn, n = sw_app_meter_fields(&a, f, 16, &warn), found = 0;
+    for (int i = 0; i < n; i++)
+        found |= strstr(f[i].brief, "(fastest ×0.930667)") != NULL && strstr(f[i].full, "the fastest, |λ| 100") != NULL;
+    ck_assert_msg(found, "no field names the fastest mode's factor");
+    sw_app_free(&a);
+
+    ck_assert_int_eq(sw_app_init(&a, sw_scene_find("vortex"), NULL, sw_integrator_find("rk4"), 0.05, err, sizeof err),
+                     SW_OK);
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    n = sw_app_meter_fields(&a, f, 16, &warn);
+    for (int i = 0; i < n; i++)
+        ck_assert_msg(strstr(f[i].full, "fastest") == NULL, "vortex: %s", f[i].full);
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -632,6 +678,7 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, drift_against_the_motion);
     tcase_add_test(tc, no_order_from_growth);
     tcase_add_test(tc, reference_crawl_stopped);
+    tcase_add_test(tc, meter_names_its_mode);
     tcase_add_test(tc, stability_bounce_drag_returns);
     tcase_add_test(tc, free_modes_left_out);
     tcase_add_test(tc, spectrum_job_matches_synchronous);

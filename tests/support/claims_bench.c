@@ -91,7 +91,13 @@ static double two(void) { return 2; }
 static double st_stretch(void) { return cl_param("spring", "stretch"); }
 static double st_rest(void) { return cl_param("spring", "rest"); }
 
+static double samples(void) { return SW_TRUTH_SAMPLES; }
+/* the bounce page's report time, which the message measures to */
+static double bounce_report(void) { return sw_scene_find("bounce")->duration; }
+
 const claim sw_claims_o[] = {
+    { L4, "largest position error at {16} times spread to t = 3", samples, EXACT, 0, "SW_TRUTH_SAMPLES: the message's sample times", NULL },
+    { L4, "largest position error at 16 times spread to t = {3}, at", bounce_report, EXACT, 0, "bounce's report time", NULL },
     { PERF, "| symplectic-euler | {1.8611} | 1.861 | 2 |", st_se, ROUNDED, 0, "what stability measures", NULL },
     { PERF, "| symplectic-euler | 1.8611 | {1.861} | 2 |", st_se, ROUNDED, 0, "ω·dt with ω = 1", NULL },
     { PERF, "| symplectic-euler | 1.8611 | 1.861 | {2} |", two, EXACT, 0, "|1 - h²ω²/2| <= 1 up to hω = 2", NULL },

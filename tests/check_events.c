@@ -31,14 +31,17 @@ static const struct {
  * parabola, which every method of order 2 or more integrates exactly: with
  * contacts located only round-off is left (under 1e-11: about 1e4 ulps of
  * the state over ~1000 steps and a few contacts), and euler is first order.
- * Stepped over, every method is about first order: the least-squares slope
- * of log error against log dt over dt = 0.01 ... 0.0003125 lies within 0.5
- * of 1 (where each contact falls in its step makes the error wander). */
+ * Stepped over, no method keeps its order: the errors at dt = 0.01 ...
+ * 0.0003125 through bench's order rule (issue 38) give either no order
+ * (where each contact falls in its step makes the error wander, and the
+ * rule refuses to read a slope through it) or one within 0.5 of 1; and at
+ * least one of the six cases per method is read (the rule does not refuse
+ * everything). */
 START_TEST(bounce_orders)
 {
     static const double es[] = { 0.6, 0.85, 1.0 }, drags[] = { 0.0, 0.5 };
     const double T = 1.9; /* after several contacts, before any ball comes to rest */
-    int c = _i;
+    int c = _i, read = 0;
     for (int ie = 0; ie < 3; ie++)
         for (int id = 0; id < 2; id++) {
             double p[] = { 2, 9.81, es[ie], drags[id] }, truth[8], errs[3];
@@ -54,12 +57,14 @@ START_TEST(bounce_orders)
                               order_cases[c].method, es[ie], drags[id], got, order_cases[c].order);
             }
             double step = ev_step_order("bounce", p, order_cases[c].method, T, truth);
-            ck_assert_msg(fabs(step - 1.0) <= 0.5, "%s e=%g drag=%g: order %.3f stepping over contacts",
+            ck_assert_msg(isnan(step) || fabs(step - 1.0) <= 0.5, "%s e=%g drag=%g: order %.3f stepping over contacts",
                           order_cases[c].method, es[ie], drags[id], step);
+            read += !isnan(step);
             if (getenv("SW_EVENTS_VERBOSE"))
                 printf("bounce e=%g drag=%g %-8s locate %.3f step %.3f\n", es[ie], drags[id],
                        order_cases[c].method, got, step);
         }
+    ck_assert_msg(read > 0, "%s: the rule refused every stepped-over order", order_cases[c].method);
 }
 END_TEST
 

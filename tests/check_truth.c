@@ -560,6 +560,116 @@ START_TEST(reference_frame_changes_cost_not_answer)
 }
 END_TEST
 
+/* Issue 38: `stability bounce --set drag=0.5` never returned: its theory
+ * asks the reference for t = 1257 (100 periods of the drag's 0.5/s), and
+ * once the balls rest on the floor the reference locates a contact every
+ * step. The reference is now stopped once it spends SW_TRUTH_CRAWL times
+ * what its first steps predicted (a count of evaluations, not a clock):
+ * sw_truth_at says no, why says it crawls, and the evaluations spent stay
+ * within the cap. A reference that does not crawl (the chain to its
+ * report time, the bounce without drag to 20 s) is not stopped. */
+/* Scene `name`'s defaults with one assignment (NULL: none) into p. */
+static const sw_scene *scene_set(const char *name, const char *set, double *p)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find(name);
+    sw_scene_defaults(sc, p);
+    if (set)
+        ck_assert_msg(sw_scene_set(sc, p, set, err, sizeof err) == SW_OK, "%s", err);
+    return sc;
+}
+
+START_TEST(reference_crawl_stopped)
+{
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = scene_set("bounce", "drag=0.5", p);
+    sw_truth tr;
+    ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(tr.source, SW_TRUTH_REFERENCE);
+    tr.frame = 1257.0 / 15; /* as stability's spectra along the run ask */
+    ck_assert_ptr_null(sw_truth_at(&tr, 1257.0));
+    ck_assert_msg(strstr(tr.why, "crawls") != NULL, "why: %s", tr.why);
+    ck_assert(tr.ref_rate > 0);
+    ck_assert_double_le((double)sw_sim_evals(&tr.ref), SW_TRUTH_CRAWL * tr.ref_rate * 1257.0 + SW_TRUTH_CRAWL_SLACK + 1e3);
+    sw_truth_free(&tr);
+
+    /* the same bounce to its report time (bench's reference: balls still
+     * bouncing) and the chain to its report time are not stopped */
+    static const struct { const char *scene, *set; double t; } fine[] = { { "chain", NULL, 5.0 },
+                                                                         { "bounce", "drag=0.5", 3.0 } };
+    for (size_t i = 0; i < sizeof fine / sizeof fine[0]; i++) {
+        sc = scene_set(fine[i].scene, fine[i].set, p);
+        ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+        ck_assert_int_eq(tr.source, SW_TRUTH_REFERENCE);
+        ck_assert_msg(sw_truth_at(&tr, fine[i].t) != NULL, "%s: stopped: %s", fine[i].scene, tr.why);
+        sw_truth_free(&tr);
+    }
+}
+END_TEST
+
+/* ... and `stability bounce --set drag=0.5` returns: every method's theory
+ * (the measurement is refused: contact splits nearby runs). */
+START_TEST(stability_bounce_drag_returns)
+{
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = scene_set("bounce", "drag=0.5", p);
+    sw_stability_config c;
+    sw_stability_config_default(&c);
+    sw_stability_result r;
+    ck_assert_int_eq(sw_stability_find(sc, p, sw_integrator_find("rk4"), &c, &r, err, sizeof err), SW_OK);
+    ck_assert_int_eq(r.measured, 0);
+    ck_assert(r.theory > 0);
+}
+END_TEST
+
+/* Issue 38: the meter's growth is the largest over the modes; where that
+ * is not the fastest mode's, the meter names its mode and gives the
+ * fastest one's own factor. stiff-spring, rk4, Δt 0.028: the growth is the
+ * slow swing's (|λ| the smaller of the two), the fastest factor is rk4's
+ * |R(iωΔt)| at ω = √(k/m) = 100, computed here from R(z) = 1 + z + z²/2 +
+ * z³/6 + z⁴/24; the field reads "(fastest ×0.930667)" in brief. On the
+ * vortex (one mode pair) there is no such field. */
+static double rk4_abs_r(double theta)
+{
+    double complex z = I * theta;
+    return cabs(1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24);
+}
+
+START_TEST(meter_names_its_mode)
+{
+    char err[SW_ERRLEN];
+    const sw_scene *sc = sw_scene_find("stiff-spring");
+    sw_app a;
+    ck_assert_int_eq(sw_app_init(&a, sc, NULL, sw_integrator_find("rk4"), 0.028, err, sizeof err), SW_OK);
+    sw_app_meter m;
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    double k = sc->params[0].def, mass = sc->params[1].def, omega = sqrt(k / mass);
+    ck_assert_str_eq(sc->params[0].name, "k");
+    ck_assert_str_eq(sc->params[1].name, "m");
+    ck_assert_double_eq_tol(m.stiff, omega, 1e-6 * omega);      /* the stretch is the fastest mode */
+    ck_assert_double_eq_tol(m.fast_growth, rk4_abs_r(omega * 0.028), 1e-12);
+    ck_assert(m.growth_lambda < 0.1 * omega);                    /* the slow swing's */
+    ck_assert_double_eq_tol(m.growth, rk4_abs_r(m.growth_lambda * 0.028), 1e-12);
+    ck_assert(m.growth > m.fast_growth);
+    sw_field f[16];
+    int warn, n = sw_app_meter_fields(&a, f, 16, &warn), found = 0;
+    for (int i = 0; i < n; i++)
+        found |= strstr(f[i].brief, "(fastest ×0.930667)") != NULL && strstr(f[i].full, "the fastest, |λ| 100") != NULL;
+    ck_assert_msg(found, "no field names the fastest mode's factor");
+    sw_app_free(&a);
+
+    ck_assert_int_eq(sw_app_init(&a, sw_scene_find("vortex"), NULL, sw_integrator_find("rk4"), 0.05, err, sizeof err),
+                     SW_OK);
+    ck_assert_int_eq(sw_app_stability(&a, &m), 1);
+    n = sw_app_meter_fields(&a, f, 16, &warn);
+    for (int i = 0; i < n; i++)
+        ck_assert_msg(strstr(f[i].full, "fastest") == NULL, "vortex: %s", f[i].full);
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_truth_suite(void);
 Suite *make_truth_suite(void)
 {
@@ -574,6 +684,9 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, meter_matches_runs);
     tcase_add_test(tc, drift_against_the_motion);
     tcase_add_test(tc, no_order_from_growth);
+    tcase_add_test(tc, reference_crawl_stopped);
+    tcase_add_test(tc, meter_names_its_mode);
+    tcase_add_test(tc, stability_bounce_drag_returns);
     tcase_add_test(tc, free_modes_left_out);
     tcase_add_test(tc, spectrum_job_matches_synchronous);
     tcase_add_test(tc, meter_on_a_large_chain_in_slices);

@@ -37,7 +37,9 @@ typedef struct sw_app_meter {
     double limit_undamped;      /* the same with every oscillating mode's damping taken away
                                    (what a lesson's closed form gives): 0 when no mode is damped */
     int unbounded;              /* ... no limit up to SW_DT_MAX */
-    double growth;              /* ρ: growth per step of the worst mode at dt */
+    double growth;              /* ρ: growth per step of the worst mode at dt (the largest over the modes) */
+    double growth_lambda;       /* |λ| of the mode ρ belongs to (NaN: unknown) */
+    double fast_growth;         /* the stiffest mode's own growth per step at dt (NaN: unknown) */
     int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
     int slow;                   /* ρ > 1 + SW_TRUTH_NEUTRAL, but too slowly to show */
     double horizon;             /* the horizon (sw_truth_horizon) */

@@ -332,7 +332,13 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->stiff = a->spec.largest;
             m->complete = a->spec.complete;
             m->growing = a->spec.growing;
-            m->growth = sw_truth_growth_with(a->meter_work, s->method, &a->spec, a->dt, NULL);
+            int worst = -1;
+            m->growth = sw_truth_growth_with(a->meter_work, s->method, &a->spec, a->dt, &worst);
+            m->growth_lambda = worst >= 0 ? hypot(a->spec.mode[worst].re, a->spec.mode[worst].im) : NAN;
+            /* the stiffest mode alone (modes are kept stiffest first) */
+            sw_spectrum fast = a->spec;
+            fast.n = fast.n > 0 ? 1 : 0;
+            m->fast_growth = fast.n ? sw_truth_growth_with(a->meter_work, s->method, &fast, a->dt, NULL) : NAN;
             m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
             m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
             m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;

@@ -161,6 +161,15 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
         snprintf(x->full, sizeof x->full, "growth %s per step: %s", num, m.grows ? "GROWS" : word);
         snprintf(x->brief, sizeof x->brief, "growth %s/step %s", num, m.grows ? "GROWS" : m.slow ? "grows slowly" : word);
     }
+    /* ρ is the largest over the modes: where it is not the fastest mode's,
+     * name its mode and give the fastest one's own factor (issue 38) */
+    if (m.growth_lambda < m.stiff * (1 - 1e-9) && isfinite(m.fast_growth) && (x = add(f, &n, max, 5))) {
+        char fast[40];
+        sw_app_growth_text(m.fast_growth, 0, 0, fast, sizeof fast);
+        snprintf(x->full, sizeof x->full, "(of the mode |λ| %.3g; the fastest, |λ| %.3g: %s)", m.growth_lambda, m.stiff,
+                 fast);
+        snprintf(x->brief, sizeof x->brief, "(fastest %s)", fast);
+    }
     int run_grows = a->watch.verdict != SW_WATCH_STEADY;
     if (run_grows && !m.grows && (x = add(f, &n, max, 6))) {
         snprintf(x->full, sizeof x->full, "but the run's energy grows: nonlinear");

@@ -28,10 +28,13 @@ static const char usage_text[] =
     "number of periods), the derivative evaluations, the wall time (median of repeats)\n"
     "and blow-ups. A sweep goes on until 4 points agree and the error is below 1e-6 of\n"
     "the state, or 6 points agree.\n"
-    "The observed order is the least-squares slope of log error against log dt over the\n"
-    "points marked *: not blown up, above round-off (and the reference's own error), below\n"
-    "1e-2 of the state's size, contiguous down to the finest such point; at least 3 of\n"
-    "them and a slope of 0.1 or more, else 'no order' and why.\n"
+    "The observed order is the least-squares slope of log error against log dt (adaptive\n"
+    "methods: the mean step) over the points marked *: not blown up, before the error\n"
+    "stops falling (a plateau: round-off, or the reference's accuracy), 10x above that\n"
+    "floor and below 1e-2 of the state's size, contiguous down to the finest such point;\n"
+    "at least 3 of them, errors and steps falling, steps spanning a factor 2, local\n"
+    "slopes within 0.15 + 0.03 x order of each other, else 'no order' and why (past the\n"
+    "asymptotic range, not yet in it, or steps that do not shrink with the tolerance).\n"
     "With no SCENE, every scene that has a reference and every method that applies.\n"
     "docs/performance.md has the details and the figures.\n"
     "\n"
@@ -170,6 +173,32 @@ static void print_events(const sw_bench_report *r)
     sw_system_free(&sys);
 }
 
+/* "no order: why" in lines of at most 78 columns, the stop note unless the
+ * reason already says the error reached its floor. */
+static void print_no_order(const sw_bench_series *s)
+{
+    char line[256];
+    snprintf(line, sizeof line, "no order: %s%s", sw_bench_no_order_text(s),
+             s->no_order == SW_BENCH_ORDER_PAST ? "" : stop_note(s->stop));
+    printf("   %-18s ", s->method->name);
+    int indent = 22, col = indent;
+    for (const char *w = line; *w;) {
+        int len = (int)strcspn(w, " ");
+        if (col > indent && col + 1 + len > 78) {
+            printf("\n%*s", indent, "");
+            col = indent;
+        } else if (col > indent) {
+            putchar(' ');
+            col++;
+        }
+        printf("%.*s", len, w);
+        col += len;
+        w += len;
+        w += strspn(w, " ");
+    }
+    putchar('\n');
+}
+
 static void print_report(const sw_bench_report *r, const char *skipped)
 {
     const sw_scene *sc = r->scene;
@@ -214,13 +243,11 @@ static void print_report(const sw_bench_report *r, const char *skipped)
     for (int i = 0; i < r->nseries; i++) {
         const sw_bench_series *s = &r->series[i];
         if (isfinite(s->order))
-            printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)%s\n",
+            printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)\n",
                    s->method->name, s->order, s->nfit, s->slope_min, s->slope_max, s->method->order,
-                   stop_note(s->stop), s->asymptotic ? "" : "\n                        the local "
-                   "slopes disagree: these steps are not yet in the asymptotic range");
-        else
-            printf("   %-18s   no order: %s%s\n", s->method->name, sw_bench_no_order_text(s),
                    stop_note(s->stop));
+        else
+            print_no_order(s);
     }
     print_events(r);
     printf("\n   cheapest measured run to reach each error level:\n");

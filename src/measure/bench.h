@@ -19,6 +19,27 @@
 #define SW_BENCH_MIN_FIT 3
 /* ... and a slope below this is no order: the error does not fall with the step. */
 #define SW_BENCH_MIN_ORDER 0.1
+/* A fitted point's error is at least this many times the series' floor (the
+ * larger of the assumed round-off and the plateau the run itself reached):
+ * round-off of at most a tenth moves ln error by at most ln 1.1 = 0.095. */
+#define SW_BENCH_MARGIN 10.0
+/* A point is on the round-off plateau when no finer point's error falls
+ * below this fraction of its own: asymptotic points always have finer ones
+ * well below them (a halving takes even a first-order error to 0.5). */
+#define SW_BENCH_STALL 0.75
+/* The fitted points span at least this factor in step: between neighbours
+ * whose steps differ by a few per cent (an adaptive method whose step count
+ * hardly changes) a local slope is noise. */
+#define SW_BENCH_MIN_SPAN 2.0
+/* The local slopes between neighbouring fitted points agree within this
+ * band: max - min <= SW_BENCH_BAND_ABS + SW_BENCH_BAND_REL·order. */
+#define SW_BENCH_BAND_ABS 0.15
+#define SW_BENCH_BAND_REL 0.03
+/* A plateau within this factor of the assumed floor (SW_BENCH_SAMPLES runs'
+ * round-off, scale·(1e-13 + 4e-16·steps)) is round-off amplified by the
+ * dynamics (the orbit at e = 0.97 amplifies it about 340 times); above it,
+ * the error stops falling for another reason and is not called round-off. */
+#define SW_BENCH_ROUNDOFF 1e3
 
 /* A run's error is the largest over the truth module's sample times
  * (sw_truth_sample_time): one report time may be special, the run is not. */
@@ -29,9 +50,13 @@ enum { SW_BENCH_EXACT = 1, SW_BENCH_REFERENCE = 2 };
 
 /* Why a series has no order (sw_bench_series.no_order). */
 enum {
-    SW_BENCH_ORDER_OK = 0,     /* an order was fitted */
-    SW_BENCH_ORDER_FEW = 1,    /* fewer than SW_BENCH_MIN_FIT points between the floor and 1e-2 of the state */
-    SW_BENCH_ORDER_FLAT = 2    /* the error does not fall with the step over those points (slope < SW_BENCH_MIN_ORDER) */
+    SW_BENCH_ORDER_OK = 0,       /* an order was fitted */
+    SW_BENCH_ORDER_FEW = 1,      /* fewer than SW_BENCH_MIN_FIT clean points, no plateau reached */
+    SW_BENCH_ORDER_FLAT = 2,     /* the error does not fall with the step (slope < SW_BENCH_MIN_ORDER) */
+    SW_BENCH_ORDER_PAST = 3,     /* the error stopped falling (a plateau) or reached round-off before a clean fit */
+    SW_BENCH_ORDER_STEPS = 4,    /* the steps do not shrink as the tolerance tightens: the error is not read against them */
+    SW_BENCH_ORDER_MONOTONE = 5, /* the finest clean errors do not fall steadily */
+    SW_BENCH_ORDER_SLOPES = 6    /* the local slopes at the finest clean steps disagree: not yet in the asymptotic range */
 };
 
 /* Why a series' sweep ended. */
@@ -66,9 +91,13 @@ typedef struct sw_bench_series {
     double order;     /* least-squares slope of ln error against ln h, > 0; NaN when none (no_order says why) */
     int nfit;         /* points in the fit: 0, or SW_BENCH_MIN_FIT and more */
     int no_order;     /* SW_BENCH_ORDER_*: why order is NaN */
-    int ncandidates;  /* points between the floor and 1e-2 of the state, contiguous to the finest */
-    double slope_min, slope_max; /* local slopes between neighbouring fit points */
-    int asymptotic;   /* 1 when the local slopes agree (spread <= 0.25 + 0.1·|order|) */
+    int ncandidates;  /* clean points: between SW_BENCH_MARGIN × floor and 1e-2 of the state, before the plateau */
+    double slope_min, slope_max; /* local slopes between neighbouring fit points (no order: between the
+                                    finest clean points, NaN when fewer than 2) */
+    int asymptotic;   /* 1 when an order was fitted (its local slopes agree) */
+    double floor;     /* the series' floor: the largest point floor, or the plateau's largest error */
+    int plateau;      /* index of the first point on the round-off plateau, -1 when none was reached */
+    char why[160];    /* no order: why, in a few words ("" when there is an order) */
     int stop;         /* SW_BENCH_STOP_* */
 } sw_bench_series;
 
@@ -139,14 +168,23 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
 int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
                          char *err, size_t errlen);
 
-/* Refit a series (marks in_fit, sets order, nfit, no_order, the local
- * slopes and asymptotic): the points that did not blow up and whose error
- * lies between the point's floor and 1e-2·scale, in the contiguous run that
- * ends at the finest such point, less coarse points whose local slope
- * disagrees with the rest (by more than 0.2 + 0.1·|slope of the rest|)
- * while SW_BENCH_MIN_FIT are left; then the least-squares slope of ln error
- * against ln h. Returns the order: NaN below SW_BENCH_MIN_FIT points or
- * where the slope is below SW_BENCH_MIN_ORDER (no_order says which), never <= 0. */
+/* Refit a series (marks in_fit, sets order, nfit, no_order, why, floor,
+ * plateau, the local slopes and asymptotic). An order stands only on points
+ * that can carry one:
+ *  - the plateau: the first point no finer point falls below
+ *    SW_BENCH_STALL of, and every point after it, is past the asymptotic
+ *    range; its largest error is the run's own floor (round-off amplified by
+ *    the dynamics, or the reference's accuracy), never guessed;
+ *  - clean points: not blown, before the plateau, error between
+ *    SW_BENCH_MARGIN × the larger of the point's floor and the plateau's
+ *    and 1e-2·scale;
+ *  - the fit: the longest contiguous run of clean points that ends at the
+ *    finest one (the asymptotic range is at the fine end), at least
+ *    SW_BENCH_MIN_FIT of them, error and step strictly falling, the steps
+ *    spanning SW_BENCH_MIN_SPAN, the local slopes within the band;
+ *    then the least-squares slope of ln error against ln h.
+ * Returns the order, or NaN with no_order and why saying which rule failed;
+ * never <= 0. */
 double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s);
 
 /* The cheapest measured point with error <= level: by wall time, or by
@@ -159,7 +197,7 @@ char sw_bench_marker(const sw_integrator *m);
 
 enum { SW_BENCH_X_TIME = 0, SW_BENCH_X_EVALS = 1 };
 
-/* Why series s has no order, in a few words for "no order: ..." ("" when it has one). */
+/* Why series s has no order, in a few words for "no order: ..." ("" when it has one): s->why. */
 const char *sw_bench_no_order_text(const sw_bench_series *s);
 
 /* Render error against wall time (SW_BENCH_X_TIME) or evaluations on log–log

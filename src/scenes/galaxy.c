@@ -104,7 +104,8 @@ const sw_scene sw_scene_galaxy = {
     .name = "galaxy",
     .kind = SW_SYS_PARTICLES,
     .summary = "stars around a heavy core, every body pulling every other (N-body)",
-    .teaches = "Verlet keeps the angular momentum to rounding; RK4 lets it drift.",
+    .teaches = "Verlet keeps the angular momentum to rounding (theta = 0, every pair summed; the tree's "
+               "forces break it); RK4 lets it drift.",
     .params = galaxy_params,
     .nparams = SW_NPARAMS(galaxy_params),
     .dt = 0.01,

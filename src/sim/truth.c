@@ -136,6 +136,28 @@ double sw_truth_reference_cost(sw_truth *tr, double t_end)
     return cost;
 }
 
+/* Run the reference to t, as sw_sim_run_until does, but stop once it
+ * spends SW_TRUTH_CRAWL times the evaluations its first steps predicted
+ * (plus SW_TRUTH_CRAWL_SLACK). 0, or 1 (blown or crawling: why says which). */
+static int reference_until(sw_truth *tr, double t)
+{
+    sw_sim *s = &tr->ref;
+    while (t - s->t > 1e-9 * s->dt) {
+        if (sw_sim_step_until(s, t))
+            return 1;
+        long evals = sw_sim_evals(s);
+        if (tr->ref_rate == 0 && (s->steps >= 20 || s->t >= t) && s->t > 0)
+            tr->ref_rate = (double)evals / s->t;
+        if (tr->ref_rate > 0 && (double)evals > SW_TRUTH_CRAWL * tr->ref_rate * t + SW_TRUTH_CRAWL_SLACK) {
+            snprintf(tr->why, sizeof tr->why, "the reference run crawls (%ld evaluations by t = %.4g, %.0f times "
+                     "what its first steps predicted: contacts every step, as with balls at rest on a floor)",
+                     evals, s->t, (double)evals / (tr->ref_rate * t));
+            return 1;
+        }
+    }
+    return s->blown;
+}
+
 const double *sw_truth_at(sw_truth *tr, double t)
 {
     if (tr->t == t)
@@ -149,7 +171,7 @@ const double *sw_truth_at(sw_truth *tr, double t)
             tr->failed = 1;
             return NULL;
         }
-        if (sw_sim_run_until(&tr->ref, t) != 0) {
+        if (reference_until(tr, t) != 0) {
             tr->failed = 1;
             return NULL;
         }

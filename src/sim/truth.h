@@ -55,8 +55,19 @@ typedef struct sw_truth {
                            * before the first sw_truth_at) */
     double *y;            /* the state at time t (sys.ode->dim doubles) */
     double t;             /* NaN: none computed yet */
+    double ref_rate;      /* the reference's evaluations per simulated second over its first
+                             steps (0: not yet measured); a run that spends SW_TRUTH_CRAWL times
+                             what that rate predicts, plus SW_TRUTH_CRAWL_SLACK, is stopped */
     char why[SW_ERRLEN];  /* see sw_truth_source_of */
 } sw_truth;
+
+/* A reference run that costs this many times what its first steps
+ * predicted is crawling (balls at rest on the floor: a contact located
+ * every step) and is stopped: the truth ends there (sw_truth_at: NULL,
+ * `why` says so) instead of running on for minutes (issue 38:
+ * `stability bounce --set drag=0.5` never returned). */
+#define SW_TRUTH_CRAWL 50.0
+#define SW_TRUTH_CRAWL_SLACK 1e5 /* evaluations: short runs are never stopped */
 
 /* Prepare the truth for scene sc with parameters p (NULL: defaults).
  * 0, or a status with err filled (the scene does not build, no memory). */

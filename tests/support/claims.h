@@ -87,6 +87,8 @@ extern const size_t sw_claims_r_n;
 /* claims_stiff.c: the stiff method rodas4's figures (lesson 9, performance, README). */
 extern const claim sw_claims_k[];
 extern const size_t sw_claims_k_n;
+extern const claim sw_claims_o[]; /* claims_bench.c: the order rule in docs/performance.md */
+extern const size_t sw_claims_o_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

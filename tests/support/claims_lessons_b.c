@@ -222,6 +222,39 @@ static double l9_proportion(void)
     return (tight / 1e-8) / cl_l9_rk45_error_over_rtol();
 }
 
+/* Lesson 9's rk45 run (cl_l9_adaptive's) split into position and velocity
+ * errors: the state error (cl_l9_rk45_error) is the velocity's. */
+static void l9_split(double *pos, double *vel)
+{
+    sw_sim s;
+    double p[SW_MAX_PARAMS], truth[4];
+    const sw_scene *sc = cl_scene_p("orbit", ECC, p);
+    cl_sim_init(&s, "orbit", ECC, "rk45", 0.4);
+    sw_sim_set_tolerances(&s, SW_RTOL_DEFAULT, SW_ATOL_DEFAULT);
+    ck_assert_int_eq(sw_sim_run_until(&s, cl_two_orbits()), 0);
+    ck_assert_int_eq(sw_truth_state(sc, p, s.t, truth), 0);
+    *pos = fmax(fabs(s.sys.y[0] - truth[0]), fabs(s.sys.y[1] - truth[1]));
+    *vel = fmax(fabs(s.sys.y[2] - truth[2]), fabs(s.sys.y[3] - truth[3]));
+    sw_sim_free(&s);
+}
+static double l9_position_error(void)
+{
+    double pos, vel;
+    l9_split(&pos, &vel);
+    ck_assert_msg(vel == cl_l9_rk45_error() && vel > pos, "the state error is not the velocity's");
+    return pos;
+}
+static double l9_position_over_rtol(void) { return l9_position_error() / SW_RTOL_DEFAULT; }
+static double l9_semi_major(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "orbit", ECC, "rk45", 0.4);
+    double x = s.sys.y[0], y = s.sys.y[1], vx = s.sys.y[2], vy = s.sys.y[3], mu = cl_param("orbit", "mu");
+    sw_sim_free(&s);
+    double energy = 0.5 * (vx * vx + vy * vy) - mu / hypot(x, y);
+    return -mu / (2 * energy);
+}
+
 static double l9_dop853_vs_rk45(void)
 {
     double e1, e2, error;
@@ -537,8 +570,10 @@ const claim sw_claims_b[] = {
     { L9, "takes each step twice at once: a {5}th-order answer", l9_rk45_order, EXACT, 0, "the method's order in the table", NULL },
     { L9, "@hint Press {0} (zero), or i until the status line says rk45.", cl_key_rk45, EXACT, 0, "the key that picks the method", NULL },
     { L9, "The tolerance (rtol = {1e-6}) bounds each step's error", l9_sim_rtol, EXACT, 0, "the tolerance a sim starts with", NULL },
-    { L9, "after two orbits the planet is off by about {0.034}", cl_l9_rk45_error, ROUNDED, 0, "rk45 at largest step 0.4 (the page's), the error against Kepler at two orbits", NULL },
-    { L9, "some {34 000} times rtol", cl_l9_rk45_error_over_rtol, REL, 0.015, "two significant figures", NULL },
+    { L9, "position is off by about {0.0015} and its velocity", l9_position_error, ROUNDED, 0, "rk45 at largest step 0.4 (the page's): the largest position component's error against Kepler at two orbits", NULL },
+    { L9, "and its velocity by about {0.034} (lengths", cl_l9_rk45_error, ROUNDED, 0, "the state error, whose largest component is a velocity (checked there)", NULL },
+    { L9, "semi-major axis, {1}): the", l9_semi_major, ABS, 1e-12, "a = -μ/(2E) from the start's energy", NULL },
+    { L9, "position error alone is some {1500} times rtol", l9_position_over_rtol, REL, 0.01, "two significant figures", NULL },
     { L9, "Ask for less per step and the run's error falls in proportion", l9_proportion, MAGNITUDE, 0.3, "error over rtol at rtol 1e-8 against at 1e-6: within a factor two", cl_one },
     { L9, "dop853, {twelve} new evaluations per step", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { L9, "Dormand and Prince also paired an {8}th-order answer", cl_ord_dop853, EXACT, 0, "the method's order in the table", NULL },

@@ -7,9 +7,11 @@
 
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "measure/bench.h"
 #include "util/num.h"
 
 /* ---- the bounce without drag, in closed form ------------------------------ */
@@ -147,17 +149,38 @@ double ev_run_error(const char *scene, const double *p, const char *method, doub
     return err;
 }
 
-/* Stepped over: the least-squares slope of log2 error against log2 dt over
- * six halvings of dt from 0.01 (pairwise ratios are erratic there). */
+/* Stepped over: six halvings of dt from 0.01 through bench's order rule
+ * (sw_bench_fit, issue 38: monotone errors, local slopes that agree),
+ * the same rule every printed order goes through; NaN when it refuses
+ * (the errors need not fall steadily when crossings are stepped over).
+ * The floor is bench's, scale·(1e-13 + 4e-16·steps), scale = max(1, |truth|). */
 double ev_step_order(const char *scene, const double *p, const char *method, double T,
                          const double *truth)
 {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    static sw_bench_report r;
+    memset(&r, 0, sizeof r);
+    r.scale = 1;
+    sw_sim s;
+    ev_sim_of(&s, scene, p, method, 0.01, SW_EVENTS_STEP);
+    for (int i = 0; i < s.sys.ode->dim; i++)
+        r.scale = fmax(r.scale, fabs(truth[i]));
+    sw_sim_free(&s);
+    sw_bench_series *se = &r.series[0];
+    se->method = sw_integrator_find(method);
+    se->npoints = 6;
     for (int j = 0; j < 6; j++) {
-        double x = -j, yv = log2(ev_run_error(scene, p, method, 0.01 / (1 << j), SW_EVENTS_STEP, T, truth));
-        sx += x, sy += yv, sxx += x * x, sxy += x * yv;
+        sw_bench_point *pt = &se->points[j];
+        pt->dt = pt->h = 0.01 / (1 << j);
+        pt->error = ev_run_error(scene, p, method, pt->dt, SW_EVENTS_STEP, T, truth);
+        pt->steps = (long)ceil(T / pt->dt);
+        pt->floor = r.scale * (1e-13 + 4e-16 * (double)pt->steps);
     }
-    return (6 * sxy - sx * sy) / (6 * sxx - sx * sx);
+    double order = sw_bench_fit(&r, se);
+    if (getenv("SW_CLAIMS_PRINT"))
+        fprintf(stderr, "stepped over: %s %s: %.3f %s (errors %.3g %.3g %.3g %.3g %.3g %.3g)\n", scene, method, order,
+                sw_bench_no_order_text(se), se->points[0].error, se->points[1].error, se->points[2].error,
+                se->points[3].error, se->points[4].error, se->points[5].error);
+    return order;
 }
 
 enum { B_N, B_G, B_E, B_DRAG };

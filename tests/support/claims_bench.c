@@ -1,0 +1,131 @@
+/* Claims: the order rule's figures in docs/performance.md (issue 38): the
+ * rule's constants as bench.h defines them, and the measurements the text
+ * quotes (the e = 0.9 orbit's round-off plateau under rkn, rodas4 on the
+ * gyre), each from a sweep run here with the default configuration. */
+#include "claims.h"
+
+#define PERF "docs/performance.md"
+
+/* One method's default sweep on scene (with sets) into *s; the report's
+ * scale into *scale and its first point's assumed floor into *floor0. */
+static sw_bench_series sweep(const char *scene, const char *sets, const char *m)
+{
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    const sw_scene *sc = cl_scene_p(scene, sets, p);
+    static sw_bench_report r;
+    sw_bench_config c;
+    sw_bench_config_default(&c);
+    c.repeats = 1; /* the errors do not depend on the timing */
+    ck_assert_msg(sw_bench_init(&r, sc, p, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_bench_sweep(&r, cl_method(m), &c, err, sizeof err) == SW_OK, "%s", err);
+    sw_bench_series s = r.series[0];
+    sw_bench_free(&r);
+    return s;
+}
+
+/* rkn on the orbit at e = 0.9: the plateau's smallest and largest error,
+ * and the floor scale·(1e-13 + 4e-16·steps) assumed at its first point. */
+static double plateau_low(void)
+{
+    sw_bench_series s = sweep("orbit", ECC, "rkn");
+    ck_assert_int_ge(s.plateau, 0);
+    double low = INFINITY;
+    for (int i = s.plateau; i < s.npoints; i++)
+        low = fmin(low, s.points[i].error);
+    return low;
+}
+static double plateau_high(void)
+{
+    sw_bench_series s = sweep("orbit", ECC, "rkn");
+    ck_assert_int_ge(s.plateau, 0);
+    return s.floor;
+}
+static double plateau_assumed(void)
+{
+    sw_bench_series s = sweep("orbit", ECC, "rkn");
+    ck_assert_int_ge(s.plateau, 0);
+    return s.points[s.plateau].floor;
+}
+
+/* rodas4 on the gyre: the first fitted point's error and the fit's local slopes. */
+static sw_bench_series gyre_rodas4(void)
+{
+    sw_bench_series s = sweep("gyre", NULL, "rodas4");
+    ck_assert_msg(isfinite(s.order), "rodas4 on the gyre: no order (%s)", sw_bench_no_order_text(&s));
+    return s;
+}
+static double gyre_first_error(void)
+{
+    sw_bench_series s = gyre_rodas4();
+    for (int i = 0; i < s.npoints; i++)
+        if (s.points[i].in_fit)
+            return s.points[i].error;
+    return NAN;
+}
+static double gyre_slope_min(void) { return gyre_rodas4().slope_min; }
+static double gyre_slope_max(void) { return gyre_rodas4().slope_max; }
+static double gyre_nfit(void) { return gyre_rodas4().nfit; }
+
+static double stall(void) { return SW_BENCH_STALL; }
+static double margin(void) { return SW_BENCH_MARGIN; }
+static double span(void) { return SW_BENCH_MIN_SPAN; }
+static double band_abs(void) { return SW_BENCH_BAND_ABS; }
+static double band_rel(void) { return SW_BENCH_BAND_REL; }
+static double min_fit(void) { return SW_BENCH_MIN_FIT; }
+
+/* docs/performance.md's stability table: spring k = m = 1, c = 0 (ω = 1),
+ * what `stepwise stability` measures, and the default spring's Euler limit. */
+#define UNDAMPED "k=1 m=1 c=0"
+static double st_se(void) { return cl_stability("spring", UNDAMPED, "symplectic-euler").dt; }
+static double st_rk4(void) { return cl_stability("spring", UNDAMPED, "rk4").dt; }
+static double st_verlet(void) { return cl_stability("spring", UNDAMPED, "verlet").dt; }
+static double st_rk4_theory(void) { return 2 * sqrt(2.0); }
+static double st_se_below(void) { return 100 * (1 - st_se() / 2); }
+/* rk4 and verlet: the larger relative distance from 2√2 and 2, in % */
+static double st_close(void) { return 100 * fmax(fabs(st_rk4() / (2 * sqrt(2.0)) - 1), fabs(st_verlet() / 2 - 1)); }
+static double st_euler_damped(void) { return cl_stability("spring", NULL, "euler").dt; }
+static double st_euler_formula(void) { return cl_param("spring", "c") / cl_param("spring", "k"); }
+static double st_euler_k1(void) { return cl_param("spring", "c") / 1.0; }
+static double two(void) { return 2; }
+static double st_stretch(void) { return cl_param("spring", "stretch"); }
+static double st_rest(void) { return cl_param("spring", "rest"); }
+
+static double samples(void) { return SW_TRUTH_SAMPLES; }
+/* the bounce page's report time, which the message measures to */
+static double bounce_report(void) { return sw_scene_find("bounce")->duration; }
+
+const claim sw_claims_o[] = {
+    { L4, "largest position error at {16} times spread to t = 3", samples, EXACT, 0, "SW_TRUTH_SAMPLES: the message's sample times", NULL },
+    { L4, "largest position error at 16 times spread to t = {3}, at", bounce_report, EXACT, 0, "bounce's report time", NULL },
+    { PERF, "| symplectic-euler | {1.8611} | 1.861 | 2 |", st_se, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| symplectic-euler | 1.8611 | {1.861} | 2 |", st_se, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "| symplectic-euler | 1.8611 | 1.861 | {2} |", two, EXACT, 0, "|1 - h²ω²/2| <= 1 up to hω = 2", NULL },
+    { PERF, "| rk4 | {2.8283} | 2.828 | 2.828 (2√2) |", st_rk4, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| rk4 | 2.8283 | {2.828} | 2.828 (2√2) |", st_rk4, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "| rk4 | 2.8283 | 2.828 | {2.828} (2√2) |", st_rk4_theory, ROUNDED, 0, R_MATH, NULL },
+    { PERF, "| verlet | {1.9982} | 1.998 | 2 |", st_verlet, ROUNDED, 0, "what stability measures", NULL },
+    { PERF, "| verlet | 1.9982 | {1.998} | 2 |", st_verlet, ROUNDED, 0, "ω·dt with ω = 1", NULL },
+    { PERF, "rk4 and verlet land within {0.1} % of 2√2 and 2", st_close, ATMOST, 0, "a bound on both", NULL },
+    { PERF, "Symplectic Euler is found {7} % below its linear limit", st_se_below, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "h ≤ 2γ/ω0² = c/k = {0.05} (found", st_euler_formula, EXACT, 0, "c/k at the default spring", NULL },
+    { PERF, "(found {0.049999}, tested)", st_euler_damped, ROUNDED, 0, "what stability measures on the default spring", NULL },
+    { PERF, "at k = 1 the same formula gives {0.5}", st_euler_k1, EXACT, 0, "c/k with k = 1", NULL },
+    { PERF, "read it as \"below 2, near {1.86}\"", st_se, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "the amplitude (stretch {0.5} against rest 1)", st_stretch, EXACT, 0, R_COUNT, NULL },
+    { PERF, "the amplitude (stretch 0.5 against rest {1})", st_rest, EXACT, 0, R_COUNT, NULL },
+    { PERF, "no finer point's error falls below {0.75} of", stall, EXACT, 0, "SW_BENCH_STALL", NULL },
+    { PERF, "(the orbit at e = 0.9 stalls at {2e-11} to 1.8e-10", plateau_low, ROUNDED, 0, "rkn's smallest error on its plateau, default sweep", NULL },
+    { PERF, "stalls at 2e-11 to {1.8e-10}, not the", plateau_high, ROUNDED, 0, "rkn's largest error on its plateau: the series' floor", NULL },
+    { PERF, "not the {9e-12} that", plateau_assumed, ROUNDED, 0, "the assumed floor at the plateau's first point", NULL },
+    { PERF, "error at least {10} times the", margin, EXACT, 0, "SW_BENCH_MARGIN", NULL },
+    { PERF, "at least {3} of them, errors", min_fit, EXACT, 0, "SW_BENCH_MIN_FIT", NULL },
+    { PERF, "the steps spanning a factor {2}, the local slopes", span, EXACT, 0, "SW_BENCH_MIN_SPAN", NULL },
+    { PERF, "within {0.15} + 0.03·order of each other", band_abs, EXACT, 0, "SW_BENCH_BAND_ABS", NULL },
+    { PERF, "within 0.15 + {0.03}·order of each other", band_rel, EXACT, 0, "SW_BENCH_BAND_REL", NULL },
+    { PERF, "below an error of about {5e-9} its error", gyre_first_error, ROUNDED, 0, "rodas4's first fitted error on the gyre", NULL },
+    { PERF, "(local slopes {1.12} to 1.20 over its", gyre_slope_min, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "(local slopes 1.12 to {1.20} over its", gyre_slope_max, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "over its {four} finest points)", gyre_nfit, EXACT, 0, R_COUNT, NULL },
+};
+const size_t sw_claims_o_n = sizeof sw_claims_o / sizeof sw_claims_o[0];

@@ -78,9 +78,95 @@ static marks find_marks(const sw_canvas *c)
     return m;
 }
 
+/* The edge on a ray, against the closed forms: Euler's disc |1 + z| <= 1
+ * meets the ray r·u (|u| = 1) at r = -2 Re u; RK4's region meets the
+ * imaginary axis at 2√2 (|R(iy)|² = 1 - y⁶/72 + y⁸/576 = 1). The search
+ * bisects to 1e-9 relative; the tolerance is 1e-8 relative, and on Euler's
+ * ray a point within SW_TRUTH_NEUTRAL (1e-12) of growth 1 counts as stable,
+ * which moves the edge by about 1e-12 / |Re u|. */
+START_TEST(region_edge_on_ray)
+{
+    sw_truth_work *w = sw_truth_work_new();
+    ck_assert_ptr_nonnull(w);
+    const sw_integrator *euler = sw_integrator_find("euler"), *rk4 = sw_integrator_find("rk4");
+    double re = -5, im = sqrt(10000 - 25), u = re / hypot(re, im);
+    double e = sw_region_edge_on_ray(w, euler, 2, re, im);
+    ck_assert_double_eq_tol(e, -2 * u, 1e-8 * -2 * u);
+    ck_assert_double_eq_tol(sw_region_edge_on_ray(w, euler, 2, -1, 0), 2, 2e-8);
+    ck_assert_double_eq_tol(sw_region_edge_on_ray(w, rk4, 2, 0, 1), 2 * sqrt(2), 3e-8);
+    /* undamped under Euler: out at once (past the neutral tolerance); backward Euler: never out */
+    ck_assert_double_lt(sw_region_edge_on_ray(w, euler, 2, 0, 1), 1e-5);
+    ck_assert(isinf(sw_region_edge_on_ray(w, sw_integrator_find("implicit-euler"), 2, -1, 1)));
+    sw_truth_work_free(w);
+}
+END_TEST
+
+/* The line under the region: the edge '|' in the same column whatever the
+ * ratio, each factor 2 the same notch, X out and '*' in, the ratio said. */
+START_TEST(region_gauge_line)
+{
+    char g[4][128];
+    double ratio[4] = { 5, 2.5, 1.25, 0.625 };
+    int edge = -1, pos[4];
+    for (int k = 0; k < 4; k++) {
+        sw_region_gauge(g[k], sizeof g[k], 39, ratio[k], ratio[k] > 1);
+        ck_assert_int_le((int)strlen(g[k]), 39);
+        const char *bar = strchr(g[k], '|');
+        ck_assert_ptr_nonnull(bar);
+        if (edge < 0)
+            edge = (int)(bar - g[k]);
+        ck_assert_msg((int)(bar - g[k]) == edge || strchr(g[k], 'X') == bar, "the edge moved: %s", g[k]);
+        const char *mark = strchr(g[k], ratio[k] > 1 ? 'X' : '*');
+        ck_assert_msg(mark != NULL, "no mark: %s", g[k]);
+        pos[k] = (int)(mark - g[k]);
+        ck_assert_msg(ratio[k] > 1 ? pos[k] > edge : pos[k] < edge, "the mark is on the wrong side: %s", g[k]);
+        if (k > 0)
+            ck_assert_int_eq(pos[k - 1] - pos[k], pos[0] - pos[1]);
+    }
+    ck_assert_ptr_nonnull(strstr(g[0], " 5x"));
+    ck_assert_ptr_nonnull(strstr(g[3], " 0.625x"));
+    sw_region_gauge(g[0], sizeof g[0], 39, INFINITY, 1);
+    ck_assert_ptr_nonnull(strstr(g[0], "always out"));
+    sw_region_gauge(g[0], sizeof g[0], 39, 0, 0);
+    ck_assert_ptr_nonnull(strstr(g[0], "always in"));
+}
+END_TEST
+
+/* The screen's rows from the region's title down (the picture's columns). */
+static int row_of(const char *text, const char *needle)
+{
+    const char *p = strstr(text, needle);
+    if (!p)
+        return -1;
+    int row = 0;
+    for (const char *q = text; q < p; q++)
+        row += *q == '\n';
+    return row;
+}
+
+/* No tick label over the shading: every digit in the picture's rows has
+ * no Braille cell or ':' of shading touching it on its row. */
+static void assert_labels_clear(const sw_canvas *c, const char *text)
+{
+    for (int row = 0; row < c->rows; row++)
+        for (int col = 0; col < c->cols; col++) {
+            uint32_t g = sw_canvas_codepoint(c, col, row);
+            if (!((g >= '0' && g <= '9') || g == '.'))
+                continue;
+            for (int d = -1; d <= 1; d += 2) {
+                uint32_t n = sw_canvas_codepoint(c, col + d, row);
+                ck_assert_msg(!(n >= 0x2800 && n <= 0x28ff) && n != ':', "a label touches the shading at row %d, "
+                              "column %d:\n%s", row, col, text);
+            }
+        }
+}
+
 /* Lesson 5, "Why: outside the stability region", at 80x24: each press of
  * '-' (0.005 -> 0.0025 -> 0.00125 -> 0.000625) moves every mark to another
- * cell, the axes stay where they were, and the scale is said. */
+ * cell, the axes and the numbers under them stay where they were (the
+ * scale is fixed, and said), and the line under the numbers shows the mark
+ * crossing the edge: 5x, 2.5x, 1.25x out, then 0.625x in, one notch a
+ * halving. */
 START_TEST(region_marks_move_on_lesson5)
 {
     sw_runner *r = malloc(sizeof *r);
@@ -92,12 +178,31 @@ START_TEST(region_marks_move_on_lesson5)
     char err[SW_ERRLEN];
     ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
     marks prev = { 0 };
+    char ticks0[256] = "";
+    int gauge_col[4];
+    static const char *said[4] = { " 5x", " 2.5x", " 1.25x", " 0.625x" };
     for (int k = 0; k < 4; k++) {
         int clipped;
         char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
         marks m = find_marks(&f.canvas);
         ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", a.dt, m.n, text);
-        ck_assert_msg(strstr(text, "fixed scale") != NULL, "dt %g: the scale is not said:\n%s", a.dt, text);
+        ck_assert_msg(strstr(text, "scale +-0.62 fixed") != NULL, "dt %g: the scale is not said:\n%s", a.dt, text);
+        assert_labels_clear(&f.canvas, text);
+        if (k == 0)
+            snprintf(ticks0, sizeof ticks0, "%s", f.region.ticks);
+        ck_assert_msg(strcmp(ticks0, f.region.ticks) == 0, "dt %g: the scale's numbers changed:\n%s\n%s", a.dt,
+                      ticks0, f.region.ticks);
+        ck_assert_msg(strstr(f.region.ticks, "-0.2") != NULL, "no numbers under the picture: '%s'", f.region.ticks);
+        /* the gauge, as on the screen */
+        int grow = row_of(text, "in :");
+        ck_assert_msg(grow > 0 && strstr(f.region.gauge, said[k]) != NULL, "dt %g: the line under the picture "
+                      "does not say%s:\n%s", a.dt, said[k], text);
+        const char *edge = strchr(f.region.gauge, '|'), *mk = strchr(f.region.gauge, k < 3 ? 'X' : '*');
+        ck_assert_msg(edge && mk && (k < 3 ? mk > edge : mk < edge), "dt %g: the mark is not on its side of the "
+                      "edge: %s", a.dt, f.region.gauge);
+        gauge_col[k] = (int)(mk - f.region.gauge);
+        if (k > 0)
+            ck_assert_int_eq(gauge_col[k - 1] - gauge_col[k], gauge_col[0] - gauge_col[1]);
         /* the marks mirror each other across the real axis */
         ck_assert_int_eq(m.row[0] + m.row[1], 2 * m.axis_row);
         if (k > 0) {
@@ -122,11 +227,12 @@ START_TEST(region_marks_move_on_lesson5)
 }
 END_TEST
 
-/* Lesson 6, "RK4's region": doubling Δt (0.005 -> 0.04) takes the marks
- * past the view chosen for them; the view widens to hold them and the
- * region, so every mark stays drawn and the last ones, outside RK4's
- * region (ωΔt = 4 > 2.83), are drawn X. */
-START_TEST(region_widens_when_marks_leave)
+/* Lesson 6, "RK4's region": the view opens on the whole region (the marks
+ * at ±0.5i and where their ray leaves it, 2.83i); doubling Δt (0.005 ->
+ * 0.04) moves the marks, the scale stays put (no rescale by itself), and
+ * at 0.04 the marks, past the view, are arrows at its edge while the line
+ * under the picture says they are out (4 / 2.83 = 1.41x). */
+START_TEST(region_scale_stays_when_marks_leave)
 {
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
@@ -135,15 +241,26 @@ START_TEST(region_widens_when_marks_leave)
     sw_frame f;
     char err[SW_ERRLEN];
     ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    char ticks0[256] = "";
     for (int k = 0; k < 4; k++) {
         int clipped;
         char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
         marks m = find_marks(&f.canvas);
-        ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
-        if (k == 3)
-            for (int j = 0; j < 2; j++)
-                ck_assert_msg(sw_canvas_codepoint(&f.canvas, m.col[j], m.row[j]) == 'X', "dt %g: a mark outside "
-                              "RK4's region is not X:\n%s", a.dt, text);
+        assert_labels_clear(&f.canvas, text);
+        if (k == 0) {
+            snprintf(ticks0, sizeof ticks0, "%s", f.region.ticks);
+            /* the whole region: its reach on the real axis (-2.79) is numbered */
+            ck_assert_msg(strstr(ticks0, "-2") != NULL && strstr(ticks0, "2") != NULL, "%s", text);
+        }
+        ck_assert_msg(strcmp(ticks0, f.region.ticks) == 0, "dt %g: the scale changed by itself:\n%s", a.dt, text);
+        if (k < 3)
+            ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
+        else {
+            ck_assert_msg(strstr(f.region.gauge, "X") && strstr(f.region.gauge, " 1.41x"), "dt %g: the line under "
+                          "the picture does not say out, 1.41x:\n%s", a.dt, text);
+            ck_assert_msg(strchr(text, '^') && strchr(text, 'v'), "dt %g: the marks past the view have no arrows:"
+                          "\n%s", a.dt, text);
+        }
         free(text);
         sw_app_key(&a, '+', 1);
     }
@@ -479,7 +596,9 @@ Suite *make_point_pictures_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, region_scale_choice);
     tcase_add_test(tc, region_marks_move_on_lesson5);
-    tcase_add_test(tc, region_widens_when_marks_leave);
+    tcase_add_test(tc, region_scale_stays_when_marks_leave);
+    tcase_add_test(tc, region_edge_on_ray);
+    tcase_add_test(tc, region_gauge_line);
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);

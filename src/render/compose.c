@@ -276,14 +276,26 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         return;
     sw_field fl[12];
     int n = 0;
+    char brief[SW_TEXT_LINE];
     snprintf(buf, sizeof buf, "stability region of %s", m->name);
-    field(fl, &n, 10, buf, NULL);
+    snprintf(brief, sizeof brief, "region of %s", m->name);
+    field(fl, &n, 10, buf, brief);
+    /* the marks' legend in the title's row, so the picture keeps its rows */
+    if (a->have_spec && a->spec.n > 0) {
+        snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
+                 a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
+        field(fl, &n, 9, buf, "* dt x eigenvalue");
+        snprintf(buf, sizeof buf, "dt=%g", a->dt);
+        field(fl, &n, 8, buf, NULL);
+    }
     field(fl, &n, 6, "(shaded: growth per step <= 1)", "(shaded: stable)");
-    field(fl, &n, 3, "in the plane of dt x eigenvalue", NULL);
     fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
+    /* under the picture: the real axis's numbers, the worst mark against
+     * its edge along its ray, and the legend */
+    int crows = rows - 4;
     sw_canvas *c = &f->canvas;
-    if (c->cols != cols || c->rows != rows - 3)
-        sw_canvas_resize(c, cols, rows - 3, err, sizeof err);
+    if (c->cols != cols || c->rows != crows)
+        sw_canvas_resize(c, cols, crows, err, sizeof err);
     /* Braille where the terminal shows it, or when asked for */
     sw_canvas_set_mode(c, f->unicode || a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
     double worst;
@@ -293,22 +305,15 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         return;
     }
     sw_screen_blit(scr, c, row0 + 1, col0);
+    sw_screen_text(scr, row0 + 1 + crows, col0, cols, SW_STYLE_DIM, f->region.ticks);
+    if (f->region.gauge[0])
+        sw_screen_text(scr, row0 + 2 + crows, col0, cols, f->region.ratio_grows ? SW_STYLE_WARN : SW_STYLE_STATUS,
+                       f->region.gauge);
     n = 0;
     if (why[0]) {
         sw_screen_wrapped(scr, row0 + rows - 2, col0, cols, 2, SW_STYLE_DIM, why);
         return;
     }
-    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
-             a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
-    field(fl, &n, 9, buf, "* dt x eigenvalue");
-    snprintf(buf, sizeof buf, "dt=%g", a->dt);
-    field(fl, &n, 8, buf, NULL);
-    if (a->spec.growing) {
-        snprintf(buf, sizeof buf, "(%d growing by the physics, not shown)", a->spec.growing);
-        field(fl, &n, 2, buf, NULL);
-    }
-    fit_line(scr, row0 + rows - 2, col0, cols, SW_STYLE_DIM, fl, n);
-    n = 0;
     if (f->region.progress < 1) {
         snprintf(buf, sizeof buf, "shading %s's region: %.0f%% (each point steps the sandboxed plugin)", m->name,
                  100 * f->region.progress);
@@ -319,9 +324,17 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         field(fl, &n, 10, buf, "X grows");
     } else
         field(fl, &n, 10, "all inside: no mode grows", "all inside");
+    /* the scale chosen for the page: it stays while dt changes */
+    snprintf(buf, sizeof buf, "scale +-%.2g, fixed (z zooms)", f->region.fit_half * a->zoom);
+    snprintf(brief, sizeof brief, "scale +-%.2g fixed", f->region.fit_half * a->zoom);
+    field(fl, &n, 9, buf, brief);
+    field(fl, &n, 6, "+/- move the marks", "+/- dt");
     snprintf(buf, sizeof buf, "worst x%.6f/step", worst);
-    field(fl, &n, 9, buf, NULL);
-    field(fl, &n, 4, "+/- move the marks", "+/- dt");
+    field(fl, &n, 5, buf, NULL);
+    if (a->spec.growing) {
+        snprintf(buf, sizeof buf, "(%d growing by the physics, not shown)", a->spec.growing);
+        field(fl, &n, 2, buf, NULL);
+    }
     fit_line(scr, row0 + rows - 1, col0, cols, outside ? SW_STYLE_WARN : SW_STYLE_STATUS, fl, n);
 }
 

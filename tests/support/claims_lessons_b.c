@@ -331,6 +331,18 @@ static double l6_dt_plus3(void) { return cl_page_dt_after(L6, "RK4's region", SW
 static double l6_inside_002(void) { return cl_growth0("spring", "k=10000 c=0", "rk4", 0.02); }
 static double l6_outside_004(void) { return cl_growth0("spring", "k=10000 c=0", "rk4", 0.04); }
 static double one_plus(void) { return 1 + SW_TRUTH_NEUTRAL; }
+/* The region view's line under the picture at Δt = 0.04: the mark's
+ * |Δt·λ| over where its ray leaves RK4's region (the view's own search). */
+static double l6_ray_ratio_004(void)
+{
+    sw_spectrum sp = cl_spectrum0("spring", "k=10000 c=0");
+    ck_assert_int_ge(sp.n, 1);
+    sw_truth_work *w = sw_truth_work_new();
+    ck_assert_ptr_nonnull(w);
+    double edge = sw_region_edge_on_ray(w, sw_integrator_find("rk4"), 2, sp.mode[0].re, sp.mode[0].im);
+    sw_truth_work_free(w);
+    return hypot(sp.mode[0].re, sp.mode[0].im) * 0.04 / edge;
+}
 static double l7_region_swing(void) { return l7_slow() * 0.04; }
 static double l7_region_stretch(void) { return l7_fast() * 0.04; }
 static double l7_region_growth(void) { return cl_growth0("stiff-spring", NULL, "implicit-euler", 0.04); }
@@ -439,6 +451,7 @@ const claim sw_claims_b[] = {
     { L6, "Δt = {0.04} they are at ±4i", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "they are at ±{4}i, outside the region", l6_mark_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "outside the region, and the meter says GROWS", l6_outside_004, ATLEAST, 0, "outside: RK4's growth at ωΔt = 4 is above one", one_plus },
+    { L6, "the line under the numbers says {1.41}x the edge's distance", l6_ray_ratio_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "@hint Press + three times: 0.01, 0.02, {0.04}.", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "ωΔt would be {28}", l6_twenty_eight, EXACT, 0, R_MATH, NULL },
     { L6, "over one turn (t = {2π})", l6_report_time, REL, 1e-12, R_COUNT, NULL },

@@ -19,23 +19,6 @@
 #include "render/workprec.h"
 #include "stepwise/stepwise.h"
 
-/* Open lesson FILE on the page titled TITLE (XDG_STATE_HOME in a scratch
- * directory, so no progress file is touched). */
-static void open_page(sw_runner *r, sw_app *a, const char *file, const char *title)
-{
-    char err[SW_LESSON_ERRLEN];
-    sw_lesson lesson;
-    setenv("XDG_STATE_HOME", "/tmp/sw-point-pictures-no-state", 1);
-    ck_assert_msg(sw_lesson_load(file, &lesson, err, sizeof err) == SW_OK, "%s", err);
-    int page = -1;
-    for (int i = 0; i < lesson.npages; i++)
-        if (strcmp(lesson.pages[i].title, title) == 0)
-            page = i;
-    sw_lesson_free(&lesson);
-    ck_assert_msg(page >= 0, "%s has no page '%s'", file, title);
-    ck_assert_msg(sw_runner_start(r, a, file, page, err, sizeof err) == SW_OK, "%s", err);
-}
-
 /* The scale: the whole region when the marks are large, 1.25 × the largest
  * mark when it is small (never below reach / 1000), the region with no mark. */
 START_TEST(region_scale_choice)
@@ -171,7 +154,7 @@ START_TEST(region_marks_move_on_lesson5)
 {
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
-    open_page(r, &a, "lessons/05-springs.lesson", "Why: outside the stability region");
+    ct_open_page(r, &a, "lessons/05-springs.lesson", "Why: outside the stability region");
     sw_app_key(&a, 's', 1);
     ck_assert_int_eq(a.view, SW_VIEW_REGION);
     sw_frame f;
@@ -236,7 +219,7 @@ START_TEST(region_scale_stays_when_marks_leave)
 {
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
-    open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
+    ct_open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
     sw_app_key(&a, 's', 1);
     sw_frame f;
     char err[SW_ERRLEN];
@@ -359,7 +342,7 @@ START_TEST(workprec_table_points_beside_the_text)
     } table[] = { { "euler", 503, 0.04 }, { "midpoint", 504, 0.00064 }, { "rk4", 504, 3e-7 } };
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
-    open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
+    ct_open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
     ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
     ck_assert_ptr_nonnull(a.bench);
     const sw_bench_report *b = a.bench;
@@ -551,7 +534,7 @@ START_TEST(every_named_difference_is_shown)
                           l.pages[p].title);
             sw_runner *r = malloc(sizeof *r);
             sw_app a;
-            open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
+            ct_open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
             sw_app_set_ghost(&a, 1);
             sw_app_set_until(&a, diff_pages[k].t);
             a.paused = 0;

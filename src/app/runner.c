@@ -17,6 +17,7 @@
  * lines, and leaves the picture at least this many. */
 #define PANE_GROW 6
 #define PANE_PICTURE_MIN 30
+#define READING_COLS 100 /* the reading mode's widest line: longer ones are hard to follow */
 
 void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
 {
@@ -193,7 +194,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         }
         return 0;
     }
-    if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_SCROLL_DOWN)
+    if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_READ)
         a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
@@ -213,9 +214,14 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         r->hint = !r->hint;
         r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
+    case SW_ACT_READ:
+        r->wide = !r->wide;
+        snprintf(a->message, sizeof a->message, "%s", r->wide ? "reading mode: the text full width (o: the picture "
+                 "again)" : "the picture and the text side by side (o: the text full width)");
+        return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
-        r->scroll += c->action == SW_ACT_SCROLL_DOWN ? 3 : -3;
+        r->scroll += (c->action == SW_ACT_SCROLL_DOWN ? 1 : -1) * (r->step > 3 ? r->step : 3);
         if (r->scroll < 0)
             r->scroll = 0;
         return 1;
@@ -280,6 +286,8 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
     /* beside the scene at every size: the scene keeps every row above the status lines */
     int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols / 2;
+    /* the reading mode: the whole width, up to a line a reader's eye follows */
+    int wide = r->wide ? (cols - 2 < READING_COLS ? cols - 2 : READING_COLS) : 0;
     /* A page with verbatim lines (a table, a formula) gets a pane up to
      * PANE_GROW columns wider, so that they show whole (a table row split
      * in two no longer reads as a row); the picture keeps PANE_PICTURE_MIN
@@ -297,12 +305,16 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         width = need < width + PANE_GROW ? need : width + PANE_GROW;
     if (width > cols - PANE_PICTURE_MIN - 1)
         width = cols - PANE_PICTURE_MIN - 1;
+    if (wide > width)
+        width = wide;
+    r->side.full = r->wide;
     char buf[SW_RUNNER_COLS];
     r->side.nlines = 0;
     r->side.lines = r->lines;
     r->side.kinds = r->kinds;
     r->side.width = width;
     r->side.scroll = &r->scroll;
+    r->side.step = &r->step;
     r->side.question_open = pg->question.text && !r->answered[r->page] ? pg->question.nanswers : 0;
     r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
@@ -313,6 +325,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         snprintf(buf, sizeof buf, "%s  (%d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
     add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
     add_wrapped(r, SW_SIDE_TITLE, pg->title, width - 1);
+    r->side.head = r->side.nlines;
     add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {
@@ -345,7 +358,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         add_line(r, met ? SW_SIDE_OK : SW_SIDE_BAD, buf);
     }
     const sw_lesson_question *q = &pg->question;
+    int fold_at = -1;
     if (q->text) {
+        fold_at = r->side.nlines;
         add_line(r, SW_SIDE_TEXT, "");
         add_wrapped(r, SW_SIDE_TITLE, q->text, width - 1);
         for (int i = 0; i < q->nanswers; i++) {
@@ -379,5 +394,6 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     else
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;
+    r->side.fold = fold_at >= 0 ? r->side.nlines - fold_at : 0;
     return &r->side;
 }

@@ -442,11 +442,12 @@ static int side_style(sw_side_kind kind)
     return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
 }
 
-/* Lines first .. first + n - 1 of the pane from row on, scrolled with a
- * row that says there is more above or below. */
-static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int n)
+/* Lines off + first .. off + n - 1 of the pane from row on, scrolled with
+ * a row that says there is more above or below; returns first clamped. */
+static int draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int off,
+                         int n, int first)
 {
-    int more_above = 0, more_below = 0, body = height, first = side->scroll ? *side->scroll : 0;
+    int more_above = 0, more_below = 0, body = height;
     if (n <= height)
         first = 0; /* it all fits: nothing to scroll, no "more" rows */
     for (int pass = 0; pass < 3 && n > height; pass++) {
@@ -460,35 +461,77 @@ static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col,
         if (first < 0)
             first = 0;
     }
-    if (side->scroll)
-        *side->scroll = first;
     int r = row;
     if (more_above)
         sw_screen_text(scr, r++, col, width, SW_STYLE_DIM, "(Up: more above)");
     for (int i = 0; first + i < n && i < body; i++)
-        sw_screen_text(scr, r++, col, width, side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT),
-                       side->lines[first + i]);
+        sw_screen_text(scr, r++, col, width,
+                       side_style(side->kinds ? side->kinds[off + first + i] : SW_SIDE_TEXT),
+                       side->lines[off + first + i]);
     if (more_below)
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_DIM, "(Down: more below)");
+    return first;
 }
 
-/* The lesson pane: when it is too long, the text scrolls and what the page
- * asks (goals, question) stays at its foot, as long as that leaves the text
- * a third of the pane. */
+static void draw_lines(const sw_side *side, sw_screen *scr, int row, int col, int width, int from, int n)
+{
+    for (int i = 0; i < n; i++)
+        sw_screen_text(scr, row + i, col, width, side_style(side->kinds ? side->kinds[from + i] : SW_SIDE_TEXT),
+                       side->lines[from + i]);
+}
+
+/* The fewest rows the page's text keeps while the goals and the question
+ * stay in sight below it. */
+#define SIDE_TEXT_MIN 4
+
+/* The lesson pane: the lesson's and the page's titles stay at its top; when
+ * the rest is too long, the text scrolls and what the page asks (goals,
+ * question) stays at its foot. A question with no room beside the text
+ * folds into one line until the text has been read to its end (Down), and
+ * then takes the room it needs, the text's last lines above it; Up folds
+ * it again. Nothing here depends on a goal being met, so the pane moves
+ * only with a key. */
 static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int height, int width)
 {
-    int pinned = side->pinned;
-    if (side->nlines <= height || pinned <= 0 || pinned > height * 2 / 3) {
-        draw_scrolled(side, scr, row, col, height, width, side->nlines);
-        return;
-    }
-    int text = height - pinned;
-    draw_scrolled(side, scr, row, col, text, width, side->nlines - pinned);
-    for (int i = 0; i < pinned; i++) {
-        int k = side->nlines - pinned + i;
-        sw_screen_text(scr, row + text + i, col, width, side_style(side->kinds ? side->kinds[k] : SW_SIDE_TEXT),
-                       side->lines[k]);
-    }
+    int head = side->head < height - 2 ? side->head : 0;
+    draw_lines(side, scr, row, col, width, 0, head);
+    row += head;
+    height -= head;
+    int text = side->nlines - head - side->pinned, foot = side->pinned;
+    int first = side->scroll ? *side->scroll : 0, window_rows = height;
+    /* folded, the question leaves one line; the text's end is in sight from `open` on */
+    int kept = foot - side->fold, window = height - kept - 1;
+    int open = text <= window ? 1 : text - window + 1; /* (past the top, a row says "more above") */
+    if (text + foot <= height || foot <= 0)
+        first = draw_scrolled(side, scr, row, col, height, width, head, text + foot, first);
+    else if (side->fold > 0 && window >= SIDE_TEXT_MIN && first < open) {
+        window_rows = window;
+        first = draw_scrolled(side, scr, row, col, window, width, head, text, first);
+        draw_lines(side, scr, row + window, col, width, side->nlines - foot, kept);
+        static const char *const stub[] = { "(a question below: Down; o: wide)", "(a question below: Down)",
+                                            "(question: Down)" };
+        int k = 0;
+        while (k < 2 && sw_text_cells(stub[k]) > width)
+            k++;
+        sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_TITLE, stub[k]);
+    } else if (foot <= height - (side->fold > 0 ? 1 : SIDE_TEXT_MIN)) {
+        /* the foot whole at the bottom, the text (its end, once a question opened) above it */
+        window_rows = side->fold > 0 ? window : height - foot;
+        int shown = draw_scrolled(side, scr, row, col, height - foot, width, head, text,
+                                  side->fold > 0 ? text : first);
+        draw_lines(side, scr, row + height - foot, col, width, side->nlines - foot, foot);
+        first = side->fold > 0 ? open : shown;
+    } else if (side->fold > 0 && window >= SIDE_TEXT_MIN) {
+        /* the foot alone is taller than the pane: it scrolls on from where the fold opened */
+        first = open + draw_scrolled(side, scr, row, col, height, width, side->nlines - foot, foot, first - open);
+    } else
+        first = draw_scrolled(side, scr, row, col, height, width, head, text + foot, first); /* as one */
+    if (side->scroll)
+        *side->scroll = first;
+    /* a press moves the text's rows less the two "more" lines and one
+     * line read before, so nothing is skipped */
+    if (side->step)
+        *side->step = window_rows - 3;
 }
 
 /* ---- the frame ---------------------------------------------------------------------- */
@@ -505,6 +548,14 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     int bottom = status_block(a, side, scr, 1);
     int pic_rows = scr->rows - bottom, pic_cols = scr->cols, side_w = 0;
+    if (side && side->nlines > 0 && side->full) {
+        /* the reading mode: the text over the whole width, no picture */
+        draw_side(side, scr, 0, 1, pic_rows, scr->cols - 2);
+        status_block(a, side, scr, 0);
+        if (a->help)
+            sw_draw_help(a, scr, 0, 0, pic_rows, scr->cols, 1);
+        return;
+    }
     if (side && side->nlines > 0) {
         side_w = side->width > 0 ? side->width : scr->cols / 2;
         if (scr->cols - side_w - 1 < 30)
@@ -556,7 +607,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         a->help = 0; /* past the last page: closed */
     /* the work-precision plot stays in the picture's place beside a lesson:
      * the page's text (its table) is what the plot is read against */
-    int overlay = (a->workprec && a->bench && side_w == 0) || a->panel || a->help;
+    /* (the parameter panel stays over the picture: the goals beside it
+     * say what the values are for) */
+    int overlay = (a->workprec && a->bench && side_w == 0) || (a->panel && side_w == 0) || a->help;
     /* The pane starts two columns right of the picture (a single blank
      * column reads as a space between words); its text is wrapped to one
      * column less than its width. An overlay that reaches over the pane
@@ -567,7 +620,7 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     if (a->workprec && a->bench)
         sw_draw_workprec(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : scr->cols);
     if (a->panel)
-        sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
+        sw_draw_panel(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : over_cols);
     if (a->help)
         sw_draw_help(a, scr, 0, 0, pic_rows, over_cols, side != NULL);
 }

@@ -6,6 +6,9 @@
 
 #include <check.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "lesson/lesson.h"
 
 static char text[4096];
 
@@ -61,4 +64,19 @@ char *ct_compose(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows
     *clipped = scr.clipped;
     sw_screen_free(&scr);
     return out;
+}
+
+void ct_open_page(sw_runner *r, sw_app *a, const char *file, const char *title)
+{
+    char err[SW_LESSON_ERRLEN];
+    sw_lesson lesson;
+    setenv("XDG_STATE_HOME", "/tmp/sw-point-pictures-no-state", 1);
+    ck_assert_msg(sw_lesson_load(file, &lesson, err, sizeof err) == SW_OK, "%s", err);
+    int page = -1;
+    for (int i = 0; i < lesson.npages; i++)
+        if (strcmp(lesson.pages[i].title, title) == 0)
+            page = i;
+    sw_lesson_free(&lesson);
+    ck_assert_msg(page >= 0, "%s has no page '%s'", file, title);
+    ck_assert_msg(sw_runner_start(r, a, file, page, err, sizeof err) == SW_OK, "%s", err);
 }

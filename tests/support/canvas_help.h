@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include "app/runner.h"
 #include "render/canvas.h"
 #include "render/screen.h"
 #include "stepwise/stepwise.h"
@@ -20,5 +21,9 @@ int ct_count_cp(const sw_canvas *c, uint32_t cp);
  * screen, as text the caller frees; the number of texts the composer had
  * to cut into *clipped. */
 char *ct_compose(sw_frame *f, sw_app *a, const sw_side *side, int cols, int rows, int *clipped);
+
+/* Open lesson file on the page titled title into r and a (XDG_STATE_HOME in
+ * a scratch directory, so no progress file is touched). */
+void ct_open_page(sw_runner *r, sw_app *a, const char *file, const char *title);
 
 #endif

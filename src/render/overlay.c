@@ -227,8 +227,12 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
     static const struct { const char *keys, *help; } terms[] = {
         { "", "energy: change since t=0, % of the energy of the motion (above the resting state; an orbit: of |E(0)|)" },
         { "", "error: largest |y - true y| over positions and velocities" },
-        { "", "|L|dt: stiffest eigenvalue of the linearisation, times dt" },
-        { "", "x.../step: growth per step of the worst mode (1: neutral)" },
+        { "", "stiffness·dt: the fastest rate |λ| of the system (an eigenvalue of its linearisation, the "
+              "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
+        { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
+        { "", "growth x.../step: what one step does to the fastest motion (1: neutral, below: decays, above: "
+              "grows)" },
+        { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "
                         "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },
     };

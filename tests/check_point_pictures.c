@@ -254,6 +254,53 @@ START_TEST(region_scale_stays_when_marks_leave)
 }
 END_TEST
 
+/* Lesson 3, "The spring in phase space", at 80x24 after t = 10: the
+ * legend names the glyphs drawn (Euler's present point o and its dotted
+ * path ".", the exact curve "'"), every glyph on the picture is one the
+ * legend or the axes name, and symplectic Euler's closed curve (x) is
+ * drawn over the exact ellipse it hugs, not hidden under it (issue 37). */
+START_TEST(phase_legend_matches_picture)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    ck_assert_int_eq(a.nsims, 3);
+    sw_app_key(&a, 'v', 1);
+    ck_assert_int_eq(a.view, SW_VIEW_PHASE);
+    a.paused = 0;
+    for (int i = 0; i < 4000 && a.sims[0].t < 10; i++)
+        sw_app_advance(&a, 0.05 / a.speed, 1000000);
+    ck_assert(a.sims[0].t >= 10);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "' exact") && strstr(text, "o. euler") && strstr(text, "x symp") &&
+                  strstr(text, "+ impl"), "the legend does not name the glyphs drawn:\n%s", text);
+    int xs = 0, ghosts = 0;
+    for (int row = 0; row < f.canvas.rows; row++)
+        for (int col = 0; col < f.canvas.cols; col++) {
+            uint32_t g = sw_canvas_codepoint(&f.canvas, col, row);
+            ck_assert_msg(strchr(" -|+'.ox<>^v", (int)g) != NULL, "a glyph U+%04X on the picture the legend does not "
+                          "name:\n%s", (unsigned)g, text);
+            xs += g == 'x';
+            ghosts += g == '\'';
+        }
+    printf("phase view, lesson 3 at t = 10: %d cells of symplectic Euler's curve, %d of the exact one showing\n", xs,
+           ghosts);
+    /* its curve stays within a few cells of the ellipse: drawn over it, it
+     * shows most of the way round */
+    ck_assert_msg(xs > 2 * ghosts, "symplectic Euler's curve is hidden under the exact one (%d x, %d '):\n%s", xs,
+                  ghosts, text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
 /* bounce has no mode to mark: the view says why, and no "0 modes". */
 START_TEST(region_without_modes_says_why)
 {
@@ -583,6 +630,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, region_edge_on_ray);
     tcase_add_test(tc, region_gauge_line);
     tcase_add_test(tc, region_without_modes_says_why);
+    tcase_add_test(tc, phase_legend_matches_picture);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);

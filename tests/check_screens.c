@@ -566,7 +566,7 @@ START_TEST(legend_and_graph_room)
         ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
         char *text;
         check_screen_text(&f, &a, sw_runner_side(r, &a, cols), cols, rows, "phase legend", &text);
-        static const char *const entries[] = { "o euler", "x symp", "+ impl" };
+        static const char *const entries[] = { "o. euler", "x symp", "+ impl" }; /* (o: now, .: its path) */
         for (int k = 0; k < 3; k++)
             ck_assert_msg(strstr(text, entries[k]), "at %dx%d the legend drops %s:\n%s", cols, rows, entries[k], text);
         free(text);

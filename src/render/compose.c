@@ -231,14 +231,17 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     sw_field lg[12];
     int nl = 0;
     int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
-    field(lg, &nl, 9, exact ? "' exact orbit" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
+    field(lg, &nl, 9, exact ? "' exact solution" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
           exact ? "' exact" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference" : NULL);
+    int ascii = !a->braille; /* (in Braille the paths are dots, said by no glyph) */
     for (int i = 0; i < a->nsims; i++) {
-        char name[64];
-        snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
-                 a->sims[i].blown ? " (blew up)" : "");
+        char name[64], mark[8];
+        /* the glyphs drawn: the present point, and its path when that differs ("o. euler") */
+        uint32_t path = sw_phase_path_glyph(i);
+        snprintf(mark, sizeof mark, "%c%s", (char)sim_glyph[i], ascii && path != sim_glyph[i] ? "." : "");
+        snprintf(buf, sizeof buf, "%s %s%s", mark, a->sims[i].method->name, a->sims[i].blown ? " (blew up)" : "");
         sw_text_brief_name(a->sims[i].method->name, name, sizeof name);
-        snprintf(brief, sizeof brief, "%c %s%s", (char)sim_glyph[i], name[0] ? name : a->sims[i].method->name,
+        snprintf(brief, sizeof brief, "%s %s%s", mark, name[0] ? name : a->sims[i].method->name,
                  a->sims[i].blown ? " (blown)" : "");
         field(lg, &nl, 12 - i, buf, brief);
     }

@@ -81,15 +81,19 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
             vmin = fmin(vmin, v), vmax = fmax(vmax, v);
         }
     int has_energy = isfinite(sw_sim_energy_drift(&a->sims[0]));
-    sw_field title[2] = {
-        { "", "", 2 }, { "", "", 1 },
+    sw_field title[3] = {
+        { "", "", 3 }, { "", "", 2 }, { "", "", 1 },
     };
     snprintf(title[0].full, sizeof title[0].full, "%s", has_energy ? "energy drift (%)" : "error");
     snprintf(title[1].full, sizeof title[1].full, "against time t (s)");
     snprintf(title[1].brief, sizeof title[1].brief, "against t (s)");
+    /* both axes are linear; the dashed row, when the values straddle it, is 0 */
+    int zero_line = vmin < 0 && vmax > 0;
+    snprintf(title[2].full, sizeof title[2].full, "%s", zero_line ? "(linear axes, --- is 0)" : "(linear axes)");
+    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "");
     char line[SW_TEXT_LINE];
     sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
-    sw_text_fit(line, sizeof line, width, title, 2, " ");
+    sw_text_fit(line, sizeof line, width, title, 3, " ");
     sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, line);
     if (!(tmax > tmin)) {
         if (width >= 24)

@@ -136,6 +136,13 @@ static void draw_path(sw_canvas *c, const double r[4], const double *q, const do
 }
 
 static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
+
+uint32_t sw_phase_path_glyph(int i)
+{
+    /* the main run's path is dotted, its present point 'o'; the others
+     * draw both with their glyph */
+    return i == 0 ? '.' : sim_glyph[i];
+}
 static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
 
 int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
@@ -169,10 +176,18 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
         sw_canvas_line(c, 0, y0, c->cols, y0, '-', SW_STYLE_WALL);
     if (r[0] < 0 && r[1] > 0)
         sw_canvas_line(c, x0, 0, x0, 2.0 * c->rows, '|', SW_STYLE_WALL);
-    /* the runs' recent paths (the last 60% of a report time: a few turns,
-     * so each method's present orbit reads apart from its past), the main
-     * one last; the exact orbit on top, so it is never hidden; then where
-     * each run is now */
+    /* the exact solution first, then the runs' recent paths over it (the
+     * last 60% of a report time: a few turns, so each method's present
+     * orbit reads apart from its past), the main one last: a run that
+     * keeps to the exact curve, or near it, is seen, not hidden under it
+     * (issue 37: symplectic Euler's closed curve was); then where each run
+     * is now */
+    if (ph->n > 1)
+        draw_path(c, r, ph->q, ph->v, NULL, ph->n, 0, SW_PHASE_EXACT, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
+    if (!exact && ref->count > 1)
+        draw_path(c, r, ref->q, ref->v, NULL, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
+                  SW_PHASE_HIST, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     double since = a->sims[0].t - 0.6 * a->scene->duration;
     double now[2 * SW_APP_SIMS];
     int left = 0;
@@ -180,14 +195,8 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
         const sw_phase_hist *h = &a->phase[i];
         int start = (h->head - h->count + SW_PHASE_HIST) % SW_PHASE_HIST;
         draw_path(c, r, h->q, h->v, h->t, h->count, start, SW_PHASE_HIST, since,
-                  c->mode == SW_CANVAS_BRAILLE ? 0 : i == 0 ? '.' : sim_glyph[i], sim_style[i]);
+                  c->mode == SW_CANVAS_BRAILLE ? 0 : sw_phase_path_glyph(i), sim_style[i]);
     }
-    if (ph->n > 1)
-        draw_path(c, r, ph->q, ph->v, NULL, ph->n, 0, SW_PHASE_EXACT, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
-    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
-    if (!exact && ref->count > 1)
-        draw_path(c, r, ref->q, ref->v, NULL, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
-                  SW_PHASE_HIST, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     for (int i = a->nsims - 1; i >= 0; i--) {
         const sw_phase_hist *h = &a->phase[i];
         now[2 * i] = now[2 * i + 1] = NAN;

@@ -80,7 +80,7 @@ for m in euler verlet; do
     if [ $m = euler ]; then
         [ "$path" -gt $((exact + 4)) ] || fail "euler's path ($path) does not leave the ellipse ($exact)"
     else
-        # (the exact orbit is drawn over the paths, so a path on it shows only where it strays)
+        # (the paths are drawn over the exact orbit, so a path on it hides it)
         [ "$path" -ge 1 ] && [ "$path" -le $((exact + 2)) ] ||
             fail "verlet's path ($path) is not within a band of the ellipse ($exact)"
     fi

@@ -110,8 +110,10 @@ START_TEST(region_gauge_line)
     ck_assert_ptr_nonnull(strstr(g[3], " 0.625x"));
     sw_region_gauge(g[0], sizeof g[0], 39, INFINITY, 1);
     ck_assert_ptr_nonnull(strstr(g[0], "always out"));
+    ck_assert_ptr_null(strchr(g[0], '|')); /* no edge drawn where there is none to measure against */
     sw_region_gauge(g[0], sizeof g[0], 39, 0, 0);
     ck_assert_ptr_nonnull(strstr(g[0], "always in"));
+    ck_assert_ptr_null(strchr(g[0], '|'));
 }
 END_TEST
 

@@ -329,8 +329,13 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         field(fl, &n, 10, "all inside: no mode grows", "all inside");
     /* the scale chosen for the page: it stays while dt changes */
     snprintf(buf, sizeof buf, "scale +-%.2g, fixed (z zooms)", f->region.fit_half * a->zoom);
-    snprintf(brief, sizeof brief, "scale +-%.2g fixed", f->region.fit_half * a->zoom);
-    field(fl, &n, 9, buf, brief);
+    snprintf(brief, sizeof brief, "%s+-%.2g fixed", f->region.beyond > 0 ? "" : "scale ", f->region.fit_half * a->zoom);
+    field(fl, &n, 8, buf, brief);
+    if (f->region.beyond > 0) {
+        snprintf(buf, sizeof buf, "arrows: marks past the edge, to %.3g", f->region.beyond);
+        snprintf(brief, sizeof brief, "arrows: %.3g", f->region.beyond);
+        field(fl, &n, 9, buf, brief); /* (before the scale, which the numbers under the picture show too) */
+    }
     field(fl, &n, 6, "+/- move the marks", "+/- dt");
     snprintf(buf, sizeof buf, "worst x%.6f/step", worst);
     field(fl, &n, 5, buf, NULL);

@@ -289,6 +289,7 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     *outside = *shown = 0;
     r->ticks[0] = r->gauge[0] = '\0';
     r->ratio = NAN;
+    r->beyond = 0;
     if (m->flags & SW_ADAPTIVE) {
         snprintf(why, whylen, "%s chooses its own steps, so it has no fixed stability region: pick a fixed-step "
                  "method (i)", m->name);
@@ -443,7 +444,16 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         sw_canvas_put(c, col, row, grows[k] ? 'X' : '*', grows[k] ? SW_STYLE_WARN : SW_STYLE_MAIN);
         (*shown)++;
     }
-    sw_canvas_offscreen(c, xy, nm, NULL, SW_STYLE_WARN, 1);
+    /* marks past the view: arrows at its edge, their distance said under
+     * the picture (a number here would be written over the shading) */
+    sw_canvas_offscreen(c, xy, nm, NULL, SW_STYLE_WARN, 0);
+    sw_view vis = sw_canvas_visible(c);
+    r->beyond = 0;
+    for (int k = 0; k < nm; k++) {
+        double x = xy[2 * k], y = xy[2 * k + 1];
+        if (isfinite(x) && isfinite(y) && !(x >= vis.xmin && x < vis.xmax && y > vis.ymin && y <= vis.ymax))
+            r->beyond = fmax(r->beyond, hypot(x, y));
+    }
     /* the worst mark against its edge, along its ray */
     r->ratio = NAN;
     r->ratio_grows = 0;

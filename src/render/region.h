@@ -44,6 +44,7 @@ typedef struct sw_region {
     char gauge[256];
     double ratio;              /* the worst mark's |Δt·λ| over its edge's (NaN: no mark) */
     int ratio_grows;
+    double beyond;             /* the farthest mark past the view's edge, |Δt·λ| (0: none) */
     /* the scale, fixed while the view is open on a page: chosen when the
      * view opens, a page is entered or the method changes, not when Δt does */
     double fit;                /* units of Δt·λ per column at zoom 1 */

@@ -55,12 +55,12 @@ void sw_region_gauge(char *out, size_t len, int width, double ratio, int grows)
      * factor 2 of the ratio `notch` columns, the inside shaded as the
      * picture shades it */
     char tail[32];
-    if (ratio == 0)
-        snprintf(tail, sizeof tail, " always in");
-    else if (isinf(ratio))
-        snprintf(tail, sizeof tail, " always out");
-    else
-        snprintf(tail, sizeof tail, " %.3gx", ratio);
+    if (ratio == 0 || isinf(ratio)) {
+        /* no edge to measure against: said, not drawn */
+        snprintf(out, len, "%s", ratio == 0 ? "its ray has no edge: always in" : "its ray's edge is 0: always out");
+        return;
+    }
+    snprintf(tail, sizeof tail, " %.3gx", ratio);
     /* the tail's room is fixed, so that the bar (and its edge) stays put
      * while the ratio's figures change */
     int bar = width - 3 - 4 - 11;
@@ -73,14 +73,8 @@ void sw_region_gauge(char *out, size_t len, int width, double ratio, int grows)
     if (bar % 2 == 0)
         bar--;
     int mid = bar / 2, notch = mid >= 9 ? 3 : 2, pos;
-    if (ratio == 0)
-        pos = 0;
-    else if (isinf(ratio))
-        pos = bar - 1;
-    else {
-        double p = mid + notch * log2(ratio);
-        pos = p < 0 ? 0 : p > bar - 1 ? bar - 1 : (int)lround(p);
-    }
+    double p = mid + notch * log2(ratio);
+    pos = p < 0 ? 0 : p > bar - 1 ? bar - 1 : (int)lround(p);
     char line[128];
     int n = snprintf(line, sizeof line, "in ");
     for (int k = 0; k < bar; k++) {

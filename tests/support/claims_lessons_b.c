@@ -487,7 +487,8 @@ const claim sw_claims_b[] = {
     { L7, "@hint The page chose implicit-midpoint; press {9} if you switched away.", key_im, EXACT, 0, "the key that picks the method", NULL },
     { L7, "A step divides each mode by 1 - Δt·λ", l7_region_growth, REL, 1e-9, "ρ of backward Euler's map is the largest 1/|1 - Δt·λ|", l7_region_formula },
     { L7, "(near ±{0.125}i at Δt = 0.04)", l7_region_swing, ROUNDED, 0, R_ROUND, NULL },
-    { L7, "the stretch's (±{4}i, beyond", l7_region_stretch, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "the stretch's (±{4}i, beyond that", l7_region_stretch, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "beyond that at {0.08}: past the picture's edge", l7_dt_plus1, EXACT, 0, "the step one press of + gives", NULL },
     { L7, "@hint Press + once: {0.08}.", l7_dt_plus1, EXACT, 0, "the step one press of + gives", NULL },
     /* lesson 8 */
     { L8, "(eccentricity {0.5}; one orbit", l8_e, EXACT, 0, R_COUNT, NULL },

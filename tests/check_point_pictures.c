@@ -303,6 +303,36 @@ START_TEST(phase_legend_matches_picture)
 }
 END_TEST
 
+/* The phase view on the projectile opens with its curve in it and says
+ * which axis is which: the height y across (its name and its largest
+ * value at the axis's right end), its rate vy up (at the top). */
+START_TEST(phase_axes_named)
+{
+    const sw_scene *sc = sw_scene_find("projectile");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    sw_app a;
+    ck_assert_msg(sw_app_init(&a, sc, p, NULL, sc->dt, err, sizeof err) == SW_OK, "%s", err);
+    sw_app_set_view(&a, SW_VIEW_PHASE);
+    sw_frame f;
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, NULL, 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "^ vy ") != NULL, "the vertical axis is not named vy:\n%s", text);
+    const char *across = strstr(text, "y ");
+    int named = 0;
+    for (; across; across = strstr(across + 1, "y "))
+        named |= (across == text || across[-1] == ' ' || across[-1] == '-') && strstr(across, " >") &&
+                 strchr(across, '\n') > strstr(across, " >");
+    ck_assert_msg(named, "the horizontal axis is not named y:\n%s", text);
+    ck_assert_msg(ct_count_cp(&f.canvas, '\'') > 20, "the phase view opens without the exact curve:\n%s", text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* bounce has no mode to mark: the view says why, and no "0 modes". */
 START_TEST(region_without_modes_says_why)
 {
@@ -633,6 +663,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, region_gauge_line);
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, phase_legend_matches_picture);
+    tcase_add_test(tc, phase_axes_named);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);

@@ -145,6 +145,37 @@ uint32_t sw_phase_path_glyph(int i)
 }
 static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
 
+/* Write text at (col, row) when every cell under it is blank or an axis
+ * stroke (never over a path or a mark). */
+static void name_at(sw_canvas *c, int col, int row, const char *text)
+{
+    int len = (int)strlen(text);
+    if (row < 0 || row >= c->rows || col < 0 || col + len > c->cols)
+        return;
+    for (int k = 0; k < len; k++) {
+        uint32_t g = sw_canvas_codepoint(c, col + k, row);
+        if (g != ' ' && g != '-' && g != '|')
+            return;
+    }
+    sw_canvas_text(c, col, row, text, SW_STYLE_WALL);
+}
+
+/* Which axis is which: the coordinate's name at the right end of the
+ * horizontal axis (or the bottom row), its rate's at the top of the
+ * vertical one (or the left column), each with the value at that end. */
+static void axis_names(sw_canvas *c, const sw_app *a, const double r[4], double x0, double y0)
+{
+    const char *q, *qu, *v, *vu;
+    sw_phase_names(a->phase_coord, &q, &qu, &v, &vu);
+    char lab[48];
+    int row = r[2] < 0 && r[3] > 0 ? c->rows - 1 - (int)floor(y0 / 2.0) : c->rows - 1;
+    int len = snprintf(lab, sizeof lab, "%s %.3g >", q, r[1]);
+    name_at(c, c->cols - len, row - 1 >= 0 ? row - 1 : row, lab);
+    int col = r[0] < 0 && r[1] > 0 ? (int)floor(x0) : 0;
+    snprintf(lab, sizeof lab, "^ %s %.3g", v, r[3]);
+    name_at(c, col + 1 < c->cols ? col + 1 : col, 0, lab);
+}
+
 int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
 {
     (void)unicode;
@@ -208,5 +239,6 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
     }
     for (int i = 0; i < a->nsims; i++)
         left += sw_canvas_offscreen(c, &now[2 * i], 1, NULL, sim_style[i], 0);
+    axis_names(c, a, r, x0, y0);
     return left;
 }

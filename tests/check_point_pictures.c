@@ -333,6 +333,35 @@ START_TEST(phase_axes_named)
 }
 END_TEST
 
+/* Lanes on lesson 3's page at 80x24: each lane wide enough to name its
+ * method whole (side by side they were 12 columns: stacked instead); in a
+ * window too small for any readable lane they are overlaid, and said. */
+START_TEST(lanes_readable_or_refused)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_app_key(&a, 'l', 1);
+    ck_assert(a.lanes);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "x symplectic-euler") && strstr(text, "+ implicit-euler"), "a lane's method is cut:\n%s",
+                  text);
+    free(text);
+    text = ct_compose(&f, &a, sw_runner_side(r, &a, SW_MIN_COLS), SW_MIN_COLS, SW_MIN_ROWS, &clipped);
+    ck_assert_msg(strstr(text, "x symplectic-euler") || strstr(text, "lanes"), "at %dx%d the lanes are neither "
+                  "readable nor refused:\n%s", SW_MIN_COLS, SW_MIN_ROWS, text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
 /* bounce has no mode to mark: the view says why, and no "0 modes". */
 START_TEST(region_without_modes_says_why)
 {
@@ -664,6 +693,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, phase_legend_matches_picture);
     tcase_add_test(tc, phase_axes_named);
+    tcase_add_test(tc, lanes_readable_or_refused);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);

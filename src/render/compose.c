@@ -155,6 +155,19 @@ static void blown_banner(sw_screen *scr, const sw_sim *s, int row, int col, int 
 /* Compare side by side: one lane per method, each with its own title line
  * (method, energy, error) and picture, stacked or in columns, whichever
  * gives the scene the larger scale. */
+/* The smallest lane that reads: a picture this wide side by side, or this
+ * tall stacked (its status line above it). */
+#define LANE_MIN_COLS 20
+#define LANE_MIN_ROWS 5
+
+/* Whether a->nsims lanes in rows x cols are each at least that big, side
+ * by side or stacked. */
+static int lanes_readable(const sw_app *a, int rows, int cols)
+{
+    int n = a->nsims;
+    return (cols - (n - 1)) / n >= LANE_MIN_COLS || rows / n >= LANE_MIN_ROWS;
+}
+
 static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
     int n = a->nsims;
@@ -164,6 +177,11 @@ static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     double s_stack = fmax(vx / cols, vy / (2.0 * (stack_h - 1)));
     double s_cols = fmax(vx / col_w, vy / (2.0 * (rows - 1)));
     int stacked = s_stack <= s_cols;
+    /* the finer scale, unless its lanes are too small to read and the other's are not */
+    if (!stacked && col_w < LANE_MIN_COLS && stack_h >= LANE_MIN_ROWS)
+        stacked = 1;
+    else if (stacked && stack_h < LANE_MIN_ROWS && col_w >= LANE_MIN_COLS)
+        stacked = 0;
     for (int i = 0; i < n; i++) {
         int r = stacked ? row0 + i * stack_h : row0, c = stacked ? col0 : col0 + i * (col_w + 1);
         int h = stacked ? (i == n - 1 ? rows - i * stack_h : stack_h) : rows, w = stacked ? cols : col_w;
@@ -591,13 +609,24 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
     else if (a->view == SW_VIEW_REGION)
         draw_region(f, a, scr, 0, 0, view_rows, pic_cols);
-    else if (a->compare && a->lanes && a->nsims > 1)
+    else if (a->compare && a->lanes && a->nsims > 1 && lanes_readable(a, view_rows, pic_cols))
         draw_lanes(f, a, scr, 0, 0, view_rows, pic_cols);
     else {
         draw_sims(f, a, &f->canvas, pic_cols, view_rows, 0, a->nsims - 1);
         sw_screen_blit(scr, &f->canvas, 0, 0);
         if (a->sims[0].blown)
             blown_banner(scr, &a->sims[0], 0, 0, pic_cols, view_rows);
+    }
+    if (a->view == SW_VIEW_SCENE && !a->stages_open && a->compare && a->lanes && a->nsims > 1 &&
+        !lanes_readable(a, view_rows, pic_cols)) {
+        /* lanes too small to read: overlaid, and said */
+        sw_field fl[1];
+        int n = 0;
+        char buf[96];
+        snprintf(buf, sizeof buf, "(lanes need %d columns or %d rows each: overlaid here)", LANE_MIN_COLS,
+                 LANE_MIN_ROWS);
+        field(fl, &n, 1, buf, "(lanes: no room, overlaid)");
+        fit_line(scr, 0, 0, pic_cols, SW_STYLE_DIM, fl, n);
     }
     if (graph_h > 0)
         sw_draw_graph(f, a, scr, view_rows, 0, graph_h, pic_cols);

@@ -362,6 +362,53 @@ START_TEST(lanes_readable_or_refused)
 }
 END_TEST
 
+/* Lesson 3's three runs at t = 10 with the energy graph at 80x24: Euler's
+ * +557 % no longer squeezes symplectic Euler (a few %) and backward Euler
+ * (-86 %) into one row of '*': the scale is theirs, Euler runs past the
+ * top and the title says so (issue 37). */
+START_TEST(graph_keeps_small_runs_apart)
+{
+    sw_runner *r = malloc(sizeof *r);
+    sw_app a;
+    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_app_key(&a, 'e', 1);
+    ck_assert(a.graph);
+    a.paused = 0;
+    for (int i = 0; i < 4000 && a.sims[0].t < 10; i++)
+        sw_app_advance(&a, 0.05 / a.speed, 1000000);
+    sw_frame f;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    const char *title = strstr(text, "energy drift (%)");
+    ck_assert_msg(title != NULL && strstr(title, "o ^") != NULL, "the graph does not say Euler runs past the top:\n%s",
+                  text);
+    /* the plot's rows: from the title's next line while they hold '|' at column 9 */
+    int rows_x = 0, rows_plus = 0, shared = 0;
+    for (const char *line = strchr(title, '\n') + 1; line && line[9] == '|'; ) {
+        const char *end = strchr(line, '\n');
+        int x = 0, plus = 0, merged = 0;
+        for (const char *c = line + 10; c < end && c < line + 40; c++) {
+            x |= *c == 'x';
+            plus |= *c == '+';
+            merged |= *c == '*';
+        }
+        rows_x += x;
+        rows_plus += plus;
+        shared += merged && !x && !plus;
+        line = end ? end + 1 : NULL;
+    }
+    printf("graph, lesson 3 at t = 10: symplectic Euler on %d rows, backward Euler on %d\n", rows_x, rows_plus);
+    ck_assert_msg(rows_plus >= 3 && shared == 0, "backward Euler's fall is not drawn apart:\n%s", text);
+    free(text);
+    sw_frame_free(&f);
+    sw_app_free(&a);
+    sw_runner_free(r);
+    free(r);
+}
+END_TEST
+
 /* bounce has no mode to mark: the view says why, and no "0 modes". */
 START_TEST(region_without_modes_says_why)
 {
@@ -694,6 +741,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, phase_legend_matches_picture);
     tcase_add_test(tc, phase_axes_named);
     tcase_add_test(tc, lanes_readable_or_refused);
+    tcase_add_test(tc, graph_keeps_small_runs_apart);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);

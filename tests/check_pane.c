@@ -59,36 +59,27 @@ static void prefix(char *out, size_t len, const char *s)
 
 typedef void page_fn(sw_runner *r, sw_app *a, sw_frame *f, int cols, int rows, const char *what);
 
+/* fn on the page at both sizes, the page entered afresh for each. */
+static void at_both_sizes(sw_runner *r, sw_app *a, const sw_lesson_entry *e, int n, int lesson, int page,
+                          void *ctx)
+{
+    (void)n;
+    page_fn *fn = *(page_fn **)ctx;
+    for (int s = 0; s < 2; s++) {
+        char what[300], ferr[SW_ERRLEN];
+        sw_runner_enter(r, a, page);
+        sw_frame f;
+        ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+        snprintf(what, sizeof what, "%s page %d at %dx%d", e[lesson].file, page + 1, sizes[s][0], sizes[s][1]);
+        fn(r, a, &f, sizes[s][0], sizes[s][1], what);
+        sw_frame_free(&f);
+    }
+}
+
 /* fn on every page of every lesson at both sizes. */
 static void every_page(page_fn *fn)
 {
-    char state[] = "/tmp/sw-pane-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(state));
-    setenv("XDG_STATE_HOME", state, 1);
-    sw_lesson_entry *e;
-    int n;
-    char err[SW_LESSON_ERRLEN], what[300];
-    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
-    ck_assert_int_ge(n, 10);
-    for (int i = 0; i < n; i++) {
-        sw_runner *r = malloc(sizeof *r);
-        sw_app a;
-        ck_assert_msg(sw_runner_start(r, &a, e[i].path, 0, err, sizeof err) == SW_OK, "%s", err);
-        for (int p = 0; p < r->lesson.npages; p++)
-            for (int s = 0; s < 2; s++) {
-                sw_runner_enter(r, &a, p);
-                sw_frame f;
-                char ferr[SW_ERRLEN];
-                ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
-                snprintf(what, sizeof what, "%s page %d at %dx%d", e[i].file, p + 1, sizes[s][0], sizes[s][1]);
-                fn(r, &a, &f, sizes[s][0], sizes[s][1], what);
-                sw_frame_free(&f);
-            }
-        sw_app_free(&a);
-        sw_runner_free(r);
-        free(r);
-    }
-    sw_lesson_list_free(e, n);
+    ct_each_page(at_both_sizes, &fn);
 }
 
 /* The lesson's title with "page N/M" and the page's title stay on the
@@ -166,38 +157,32 @@ END_TEST
  * picture. */
 START_TEST(reading_mode_full_width)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/01-flow-fields.lesson", "A particle in the wind");
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/01-flow-fields.lesson", "A particle in the wind");
+    sw_runner *r = pg.r;
     for (int s = 0; s < 2; s++) {
         int cols = sizes[s][0], rows = sizes[s][1], col;
-        char *text = screen_of(&f, r, &a, cols, rows);
+        char *text = ct_page_screen(&pg, cols, rows);
         ck_assert_msg(strstr(text, "o gives") != NULL || strstr(text, "more below") != NULL, "%s", text);
         ck_assert_int_eq(find_row(text, r->lesson.title, &col), 0);
         int beside = col;
         ck_assert_int_gt(beside, 29);
         free(text);
-        ck_assert_int_eq(sw_runner_key(r, &a, 'o'), 1);
-        text = screen_of(&f, r, &a, cols, rows);
+        ck_assert_int_eq(sw_runner_key(r, &pg.a, 'o'), 1);
+        text = ct_page_screen(&pg, cols, rows);
         ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col == 1, "%dx%d: o does not give the text "
                       "the whole width:\n%s", cols, rows, text);
         /* the first paragraph's opening, on one row now */
         ck_assert_msg(strstr(text, "Each dot in the scene is a particle with a position x = (x, y).") != NULL,
                       "%dx%d: the text is not wrapped to the whole width:\n%s", cols, rows, text);
         free(text);
-        ck_assert_int_eq(sw_runner_key(r, &a, 'o'), 1);
-        text = screen_of(&f, r, &a, cols, rows);
+        ck_assert_int_eq(sw_runner_key(r, &pg.a, 'o'), 1);
+        text = ct_page_screen(&pg, cols, rows);
         ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col == beside, "%dx%d: o again does not bring "
                       "the picture back:\n%s", cols, rows, text);
         free(text);
     }
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -205,27 +190,21 @@ END_TEST
  * the text's rows stay where they were (the pane moves only with a key). */
 START_TEST(pane_still_when_a_goal_is_met)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/05-springs.lesson", "Remedy 1: heavy damping");
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/05-springs.lesson", "Remedy 1: heavy damping");
+    sw_app *a = &pg.a;
     for (int s = 0; s < 2; s++) {
         int cols = sizes[s][0], rows = sizes[s][1];
-        sw_runner_enter(r, &a, r->page);
-        sw_runner_key(r, &a, SW_KEY_DOWN);
-        char *before = screen_of(&f, r, &a, cols, rows);
-        int col0;
-        int row0 = find_row(before, "The first remedy", &col0);
-        ck_assert_int_ge(row0, -1);
-        a.paused = 0;
-        for (int i = 0; i < 400 && a.sims[0].t < 0.6; i++) {
-            sw_app_advance(&a, 0.05 / a.speed, 1000000);
-            sw_runner_update(r, &a);
+        sw_runner_enter(pg.r, a, pg.r->page);
+        sw_runner_key(pg.r, a, SW_KEY_DOWN);
+        char *before = ct_page_screen(&pg, cols, rows);
+        a->paused = 0;
+        for (int i = 0; i < 400 && a->sims[0].t < 0.6; i++) {
+            sw_app_advance(a, 0.05 / a->speed, 1000000);
+            sw_runner_update(pg.r, a);
         }
-        ck_assert_msg(a.sims[0].t >= 0.5, "the run did not reach t = 0.5 (t = %g)", a.sims[0].t);
-        char *after = screen_of(&f, r, &a, cols, rows);
+        ck_assert_msg(a->sims[0].t >= 0.5, "the run did not reach t = 0.5 (t = %g)", a->sims[0].t);
+        char *after = ct_page_screen(&pg, cols, rows);
         /* every text row of the pane above its foot is where it was */
         const char *lines[] = { "critically damped", "per step: the motion dies out", "Same Euler, same" };
         for (size_t k = 0; k < sizeof lines / sizeof lines[0]; k++) {
@@ -236,10 +215,7 @@ START_TEST(pane_still_when_a_goal_is_met)
         free(before);
         free(after);
     }
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 

@@ -154,61 +154,57 @@ static void assert_labels_clear(const sw_canvas *c, const char *text)
  * halving. */
 START_TEST(region_marks_move_on_lesson5)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/05-springs.lesson", "Why: outside the stability region");
-    sw_app_key(&a, 's', 1);
-    ck_assert_int_eq(a.view, SW_VIEW_REGION);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/05-springs.lesson", "Why: outside the stability region");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 's', 1);
+    ck_assert_int_eq(ap->view, SW_VIEW_REGION);
     marks prev = { 0 };
     char ticks0[256] = "";
     int gauge_col[4];
     static const char *said[4] = { " 5x", " 2.5x", " 1.25x", " 0.625x" };
     for (int k = 0; k < 4; k++) {
         int clipped;
-        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
-        marks m = find_marks(&f.canvas);
-        ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", a.dt, m.n, text);
-        ck_assert_msg(strstr(text, "scale +-0.62 fixed") != NULL, "dt %g: the scale is not said:\n%s", a.dt, text);
-        assert_labels_clear(&f.canvas, text);
+        char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+        marks m = find_marks(&pg.f.canvas);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", ap->dt, m.n, text);
+        ck_assert_msg(strstr(text, "scale +-0.62 fixed") != NULL, "dt %g: the scale is not said:\n%s", ap->dt, text);
+        assert_labels_clear(&pg.f.canvas, text);
         if (k == 0)
-            snprintf(ticks0, sizeof ticks0, "%s", f.region.ticks);
-        ck_assert_msg(strcmp(ticks0, f.region.ticks) == 0, "dt %g: the scale's numbers changed:\n%s\n%s", a.dt,
-                      ticks0, f.region.ticks);
-        ck_assert_msg(strstr(f.region.ticks, "-0.2") != NULL, "no numbers under the picture: '%s'", f.region.ticks);
+            snprintf(ticks0, sizeof ticks0, "%s", pg.f.region.ticks);
+        ck_assert_msg(strcmp(ticks0, pg.f.region.ticks) == 0, "dt %g: the scale's numbers changed:\n%s\n%s", ap->dt,
+                      ticks0, pg.f.region.ticks);
+        ck_assert_msg(strstr(pg.f.region.ticks, "-0.2") != NULL, "no numbers under the picture: '%s'",
+                      pg.f.region.ticks);
         /* the gauge, as on the screen */
         int grow = row_of(text, "in :");
-        ck_assert_msg(grow > 0 && strstr(f.region.gauge, said[k]) != NULL, "dt %g: the line under the picture "
-                      "does not say%s:\n%s", a.dt, said[k], text);
-        const char *edge = strchr(f.region.gauge, '|'), *mk = strchr(f.region.gauge, k < 3 ? 'X' : '*');
+        ck_assert_msg(grow > 0 && strstr(pg.f.region.gauge, said[k]) != NULL, "dt %g: the line under the picture "
+                      "does not say%s:\n%s", ap->dt, said[k], text);
+        const char *edge = strchr(pg.f.region.gauge, '|'), *mk = strchr(pg.f.region.gauge, k < 3 ? 'X' : '*');
         ck_assert_msg(edge && mk && (k < 3 ? mk > edge : mk < edge), "dt %g: the mark is not on its side of the "
-                      "edge: %s", a.dt, f.region.gauge);
-        gauge_col[k] = (int)(mk - f.region.gauge);
+                      "edge: %s", ap->dt, pg.f.region.gauge);
+        gauge_col[k] = (int)(mk - pg.f.region.gauge);
         if (k > 0)
             ck_assert_int_eq(gauge_col[k - 1] - gauge_col[k], gauge_col[0] - gauge_col[1]);
         /* the marks mirror each other across the real axis */
         ck_assert_int_eq(m.row[0] + m.row[1], 2 * m.axis_row);
         if (k > 0) {
             ck_assert_msg(m.axis_col == prev.axis_col && m.axis_row == prev.axis_row,
-                          "dt %g: the axes moved from (%d, %d) to (%d, %d)", a.dt, prev.axis_col, prev.axis_row,
+                          "dt %g: the axes moved from (%d, %d) to (%d, %d)", ap->dt, prev.axis_col, prev.axis_row,
                           m.axis_col, m.axis_row);
             for (int j = 0; j < 2; j++)
                 ck_assert_msg(m.row[j] != prev.row[j] || m.col[j] != prev.col[j],
-                              "dt %g: mark %d did not move (row %d, column %d):\n%s", a.dt, j, m.row[j], m.col[j],
+                              "dt %g: mark %d did not move (row %d, column %d):\n%s", ap->dt, j, m.row[j], m.col[j],
                               text);
             /* towards the origin */
             ck_assert_int_lt(abs(m.row[0] - m.axis_row), abs(prev.row[0] - prev.axis_row));
         }
         prev = m;
         free(text);
-        sw_app_key(&a, '-', 1);
+        sw_app_key(ap, '-', 1);
     }
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -219,40 +215,35 @@ END_TEST
  * under the picture says they are out (4 / 2.83 = 1.41x). */
 START_TEST(region_scale_stays_when_marks_leave)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
-    sw_app_key(&a, 's', 1);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/06-runge-kutta.lesson", "RK4's region");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 's', 1);
     char ticks0[256] = "";
     for (int k = 0; k < 4; k++) {
         int clipped;
-        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
-        marks m = find_marks(&f.canvas);
-        assert_labels_clear(&f.canvas, text);
+        char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+        marks m = find_marks(&pg.f.canvas);
+        assert_labels_clear(&pg.f.canvas, text);
         if (k == 0) {
-            snprintf(ticks0, sizeof ticks0, "%s", f.region.ticks);
+            snprintf(ticks0, sizeof ticks0, "%s", pg.f.region.ticks);
             /* the whole region: its reach on the real axis (-2.79) is numbered */
             ck_assert_msg(strstr(ticks0, "-2") != NULL && strstr(ticks0, "2") != NULL, "%s", text);
         }
-        ck_assert_msg(strcmp(ticks0, f.region.ticks) == 0, "dt %g: the scale changed by itself:\n%s", a.dt, text);
+        ck_assert_msg(strcmp(ticks0, pg.f.region.ticks) == 0, "dt %g: the scale changed by itself:\n%s", ap->dt, text);
         if (k < 3)
-            ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
+            ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", ap->dt, m.n, text);
         else {
-            ck_assert_msg(strstr(f.region.gauge, "X") && strstr(f.region.gauge, " 1.41x"), "dt %g: the line under "
-                          "the picture does not say out, 1.41x:\n%s", a.dt, text);
+            ck_assert_msg(strstr(pg.f.region.gauge, "X") && strstr(pg.f.region.gauge, " 1.41x"),
+                          "dt %g: the line under the picture does not say out, 1.41x:\n%s", ap->dt, text);
             ck_assert_msg(strchr(text, '^') && strchr(text, 'v'), "dt %g: the marks past the view have no arrows:"
-                          "\n%s", a.dt, text);
+                          "\n%s", ap->dt, text);
         }
         free(text);
-        sw_app_key(&a, '+', 1);
+        sw_app_key(ap, '+', 1);
     }
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -263,27 +254,25 @@ END_TEST
  * drawn over the exact ellipse it hugs, not hidden under it (issue 37). */
 START_TEST(phase_legend_matches_picture)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
-    ck_assert_int_eq(a.nsims, 3);
-    sw_app_key(&a, 'v', 1);
-    ck_assert_int_eq(a.view, SW_VIEW_PHASE);
-    a.paused = 0;
-    for (int i = 0; i < 4000 && a.sims[0].t < 10; i++)
-        sw_app_advance(&a, 0.05 / a.speed, 1000000);
-    ck_assert(a.sims[0].t >= 10);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    ck_assert_int_eq(ap->nsims, 3);
+    sw_app_key(ap, 'v', 1);
+    ck_assert_int_eq(ap->view, SW_VIEW_PHASE);
+    ap->paused = 0;
+    for (int i = 0; i < 4000 && ap->sims[0].t < 10; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
+    ck_assert(ap->sims[0].t >= 10);
     int clipped;
-    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
     ck_assert_msg(strstr(text, "' exact") && strstr(text, "o. euler") && strstr(text, "x symp") &&
                   strstr(text, "+ impl"), "the legend does not name the glyphs drawn:\n%s", text);
     int xs = 0, ghosts = 0;
-    for (int row = 0; row < f.canvas.rows; row++)
-        for (int col = 0; col < f.canvas.cols; col++) {
-            uint32_t g = sw_canvas_codepoint(&f.canvas, col, row);
+    for (int row = 0; row < pg.f.canvas.rows; row++)
+        for (int col = 0; col < pg.f.canvas.cols; col++) {
+            uint32_t g = sw_canvas_codepoint(&pg.f.canvas, col, row);
             ck_assert_msg(strchr(" -|+'.ox<>^v", (int)g) != NULL, "a glyph U+%04X on the picture the legend does not "
                           "name:\n%s", (unsigned)g, text);
             xs += g == 'x';
@@ -296,10 +285,7 @@ START_TEST(phase_legend_matches_picture)
     ck_assert_msg(xs > 2 * ghosts, "symplectic Euler's curve is hidden under the exact one (%d x, %d '):\n%s", xs,
                   ghosts, text);
     free(text);
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -338,27 +324,22 @@ END_TEST
  * window too small for any readable lane they are overlaid, and said. */
 START_TEST(lanes_readable_or_refused)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
-    sw_app_key(&a, 'l', 1);
-    ck_assert(a.lanes);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'l', 1);
+    ck_assert(ap->lanes);
     int clipped;
-    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
     ck_assert_msg(strstr(text, "x symplectic-euler") && strstr(text, "+ implicit-euler"), "a lane's method is cut:\n%s",
                   text);
     free(text);
-    text = ct_compose(&f, &a, sw_runner_side(r, &a, SW_MIN_COLS), SW_MIN_COLS, SW_MIN_ROWS, &clipped);
+    text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, SW_MIN_COLS), SW_MIN_COLS, SW_MIN_ROWS, &clipped);
     ck_assert_msg(strstr(text, "x symplectic-euler") || strstr(text, "lanes"), "at %dx%d the lanes are neither "
                   "readable nor refused:\n%s", SW_MIN_COLS, SW_MIN_ROWS, text);
     free(text);
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -368,19 +349,17 @@ END_TEST
  * top and the title says so (issue 37). */
 START_TEST(graph_keeps_small_runs_apart)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    ct_open_page(r, &a, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
-    sw_app_key(&a, 'e', 1);
-    ck_assert(a.graph);
-    a.paused = 0;
-    for (int i = 0; i < 4000 && a.sims[0].t < 10; i++)
-        sw_app_advance(&a, 0.05 / a.speed, 1000000);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'e', 1);
+    ck_assert(ap->graph);
+    ap->paused = 0;
+    for (int i = 0; i < 4000 && ap->sims[0].t < 10; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
     int clipped;
-    char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
     const char *title = strstr(text, "energy drift (%)");
     ck_assert_msg(title != NULL && strstr(title, "o ^") != NULL, "the graph does not say Euler runs past the top:\n%s",
                   text);
@@ -402,10 +381,7 @@ START_TEST(graph_keeps_small_runs_apart)
     printf("graph, lesson 3 at t = 10: symplectic Euler on %d rows, backward Euler on %d\n", rows_x, rows_plus);
     ck_assert_msg(rows_plus >= 3 && shared == 0, "backward Euler's fall is not drawn apart:\n%s", text);
     free(text);
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 

@@ -306,95 +306,83 @@ static void assert_overlays_claim_pane(sw_frame *f, sw_app *a, sw_runner *r, int
 
 /* Every page of every lesson, with its pane: as it opens, after a second
  * of play, with the hint, with the help screen over the picture. */
+/* One page, with its pane: as it opens, after a second of play, with the
+ * hint, with the help screen over the picture. */
+static void lesson_page(sw_runner *r, sw_app *a, const sw_lesson_entry *e, int n, int lesson, int page, void *ctx)
+{
+    (void)n;
+    (void)ctx;
+    char what[300];
+    for (int s = 0; s < 2; s++) {
+        sw_frame f;
+        char ferr[SW_ERRLEN];
+        ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+        int cols = sizes[s][0], rows = sizes[s][1];
+        snprintf(what, sizeof what, "%s page %d", e[lesson].file, page + 1);
+        check_screen(&f, a, sw_runner_side(r, a, cols), cols, rows, what);
+        assert_pane_apart(&f, a, r, cols, rows, what);
+        assert_scroll_stops(&f, a, r, cols, rows, what);
+        assert_overlays_claim_pane(&f, a, r, cols, rows, what);
+        r->hint = 1;
+        check_screen(&f, a, sw_runner_side(r, a, cols), cols, rows, what);
+        r->hint = 0;
+        /* an open question stays in sight under every overlay */
+        const sw_lesson_question *q = &r->lesson.pages[page].question;
+        if (q->text && !r->answered[page]) {
+            const sw_side *side = sw_runner_side(r, a, cols);
+            char want[16];
+            snprintf(want, sizeof want, "%c) ", SW_ANSWER_FIRST + q->nanswers - 1);
+            for (int ov = 0; ov < 2; ov++) {
+                a->help = ov == 0;
+                a->panel = ov == 1;
+                char *text;
+                int scroll = r->scroll;
+                r->scroll = 1000; /* the pane's end: the answers */
+                check_screen_text(&f, a, side, cols, rows, what, &text);
+                r->scroll = scroll;
+                ck_assert_msg(strstr(text, want) != NULL, "%s at %dx%d: the %s hides the question's "
+                              "answer %s:\n%s", what, cols, rows, ov ? "panel" : "help", want, text);
+                free(text);
+            }
+            a->help = a->panel = 0;
+            /* the key line names the question's own letters (A-C for three) */
+            char *text, keys[16];
+            check_screen_text(&f, a, side, cols, rows, what, &text);
+            snprintf(keys, sizeof keys, "A-%c answer", SW_ANSWER_FIRST + q->nanswers - 1);
+            const char *k = strstr(text, "A-");
+            while (k && strncmp(k + 3, " answer", 7) != 0)
+                k = strstr(k + 1, "A-");
+            ck_assert_msg(k && strncmp(k, keys, strlen(keys)) == 0, "%s at %dx%d: the key line does not say "
+                          "'%s':\n%s", what, cols, rows, keys, text);
+            free(text);
+        }
+        for (int hp = 1; hp < 20; hp++) {
+            a->help = hp;
+            check_screen(&f, a, sw_runner_side(r, a, cols), cols, rows, what);
+            if (a->help == 0)
+                break; /* past the last page */
+        }
+        a->help = 0;
+        sw_frame_free(&f);
+    }
+    int paused = a->paused;
+    a->paused = 0;
+    sw_app_advance(a, 1.0, 100000);
+    a->paused = paused;
+    for (int s = 0; s < 2; s++) {
+        sw_frame f;
+        char ferr[SW_ERRLEN];
+        ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
+        snprintf(what, sizeof what, "%s page %d after a second", e[lesson].file, page + 1);
+        check_screen(&f, a, sw_runner_side(r, a, sizes[s][0]), sizes[s][0], sizes[s][1], what);
+        sw_frame_free(&f);
+    }
+}
+
+/* Every page of every lesson (lesson_page above). */
 START_TEST(every_lesson_page)
 {
-    char state[] = "/tmp/sw-screens-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(state));
-    setenv("XDG_STATE_HOME", state, 1);
-    sw_lesson_entry *e;
-    int n;
-    char err[SW_LESSON_ERRLEN], what[300];
-    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
-    ck_assert_int_ge(n, 10);
-    for (int i = 0; i < n; i++) {
-        sw_runner *r = malloc(sizeof *r);
-        sw_app a;
-        ck_assert_msg(sw_runner_start(r, &a, e[i].path, 0, err, sizeof err) == SW_OK, "%s", err);
-        for (int p = 0; p < r->lesson.npages; p++) {
-            sw_runner_enter(r, &a, p);
-            for (int s = 0; s < 2; s++) {
-                sw_frame f;
-                char ferr[SW_ERRLEN];
-                ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
-                int cols = sizes[s][0], rows = sizes[s][1];
-                snprintf(what, sizeof what, "%s page %d", e[i].file, p + 1);
-                check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
-                assert_pane_apart(&f, &a, r, cols, rows, what);
-                assert_scroll_stops(&f, &a, r, cols, rows, what);
-                assert_overlays_claim_pane(&f, &a, r, cols, rows, what);
-                r->hint = 1;
-                check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
-                r->hint = 0;
-                /* an open question stays in sight under every overlay */
-                const sw_lesson_question *q = &r->lesson.pages[p].question;
-                if (q->text && !r->answered[p]) {
-                    const sw_side *side = sw_runner_side(r, &a, cols);
-                    char want[16];
-                    snprintf(want, sizeof want, "%c) ", SW_ANSWER_FIRST + q->nanswers - 1);
-                    for (int ov = 0; ov < 2; ov++) {
-                        a.help = ov == 0;
-                        a.panel = ov == 1;
-                        char *text;
-                        int scroll = r->scroll;
-                        r->scroll = 1000; /* the pane's end: the answers */
-                        check_screen_text(&f, &a, side, cols, rows, what, &text);
-                        r->scroll = scroll;
-                        ck_assert_msg(strstr(text, want) != NULL, "%s at %dx%d: the %s hides the question's "
-                                      "answer %s:\n%s", what, cols, rows, ov ? "panel" : "help", want, text);
-                        free(text);
-                    }
-                    a.help = a.panel = 0;
-                    /* the key line names the question's own letters (A-C for three) */
-                    char *text, keys[16];
-                    check_screen_text(&f, &a, side, cols, rows, what, &text);
-                    snprintf(keys, sizeof keys, "A-%c answer", SW_ANSWER_FIRST + q->nanswers - 1);
-                    const char *k = strstr(text, "A-");
-                    while (k && strncmp(k + 3, " answer", 7) != 0)
-                        k = strstr(k + 1, "A-");
-                    ck_assert_msg(k && strncmp(k, keys, strlen(keys)) == 0, "%s at %dx%d: the key line does not say "
-                                  "'%s':\n%s", what, cols, rows, keys, text);
-                    free(text);
-                }
-                for (int page = 1; page < 20; page++) {
-                    a.help = page;
-                    check_screen(&f, &a, sw_runner_side(r, &a, cols), cols, rows, what);
-                    if (a.help == 0)
-                        break; /* past the last page */
-                }
-                a.help = 0;
-                sw_frame_free(&f);
-            }
-            int paused = a.paused;
-            a.paused = 0;
-            sw_app_advance(&a, 1.0, 100000);
-            a.paused = paused;
-            for (int s = 0; s < 2; s++) {
-                sw_frame f;
-                char ferr[SW_ERRLEN];
-                ck_assert_int_eq(sw_frame_init(&f, ferr, sizeof ferr), SW_OK);
-                snprintf(what, sizeof what, "%s page %d after a second", e[i].file, p + 1);
-                check_screen(&f, &a, sw_runner_side(r, &a, sizes[s][0]), sizes[s][0], sizes[s][1], what);
-                sw_frame_free(&f);
-            }
-        }
-        sw_app_free(&a);
-        sw_runner_free(r);
-        free(r);
-    }
-    sw_lesson_list_free(e, n);
-    char cmd[64];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", state);
-    ck_assert_int_eq(system(cmd), 0);
+    ct_each_page(lesson_page, NULL);
 }
 END_TEST
 

@@ -15,6 +15,7 @@
 
 #include "app/app.h"
 #include "app/runner.h"
+#include "canvas_help.h"
 #include "lesson/lesson.h"
 
 /* Where a form is explained: a lesson file and a page title; both NULL:
@@ -189,44 +190,31 @@ static void check_fields(sw_app *a, const sw_lesson_entry *e, int n, int li, int
     }
 }
 
+/* The page as it opens and after a second of play. */
+static void page_fields(sw_runner *r, sw_app *a, const sw_lesson_entry *e, int n, int lesson, int page, void *ctx)
+{
+    (void)ctx;
+    if (lesson == 0 && page == 0) {
+        /* the first page's pointer, read from its text (lines joined with spaces) */
+        char text[4096] = "";
+        const sw_lesson_page *pg = &r->lesson.pages[0];
+        for (int b = 0; b < pg->nblocks; b++)
+            strncat(text, pg->blocks[b].text, sizeof text - strlen(text) - 2);
+        for (char *c = text; *c; c++)
+            *c = *c == '\n' ? ' ' : *c;
+        first_page_points = strstr(text, FIRST_PAGE_POINTS) != NULL;
+    }
+    check_fields(a, e, n, lesson, page, "as the page opens");
+    int paused = a->paused;
+    a->paused = 0;
+    sw_app_advance(a, 1.0, 100000);
+    a->paused = paused;
+    check_fields(a, e, n, lesson, page, "after a second of play");
+}
+
 START_TEST(every_field_explained_first)
 {
-    char state[] = "/tmp/sw-symbols-XXXXXX";
-    ck_assert_ptr_nonnull(mkdtemp(state));
-    setenv("XDG_STATE_HOME", state, 1);
-    sw_lesson_entry *e;
-    int n;
-    char err[SW_LESSON_ERRLEN];
-    ck_assert_int_eq(sw_lesson_list("lessons", &e, &n, err, sizeof err), SW_OK);
-    ck_assert_int_ge(n, 10);
-    for (int i = 0; i < n; i++) {
-        sw_runner *r = malloc(sizeof *r);
-        sw_app a;
-        ck_assert_msg(sw_runner_start(r, &a, e[i].path, 0, err, sizeof err) == SW_OK, "%s", err);
-        if (i == 0) {
-            /* the first page's pointer, read from its text (lines joined with spaces) */
-            char text[4096] = "";
-            const sw_lesson_page *pg = &r->lesson.pages[0];
-            for (int b = 0; b < pg->nblocks; b++)
-                strncat(text, pg->blocks[b].text, sizeof text - strlen(text) - 2);
-            for (char *c = text; *c; c++)
-                *c = *c == '\n' ? ' ' : *c;
-            first_page_points = strstr(text, FIRST_PAGE_POINTS) != NULL;
-        }
-        for (int p = 0; p < r->lesson.npages; p++) {
-            sw_runner_enter(r, &a, p);
-            check_fields(&a, e, n, i, p, "as the page opens");
-            int paused = a.paused;
-            a.paused = 0;
-            sw_app_advance(&a, 1.0, 100000);
-            a.paused = paused;
-            check_fields(&a, e, n, i, p, "after a second of play");
-        }
-        sw_app_free(&a);
-        sw_runner_free(r);
-        free(r);
-    }
-    sw_lesson_list_free(e, n);
+    ct_each_page(page_fields, NULL);
 }
 END_TEST
 

@@ -249,8 +249,9 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     sw_field lg[12];
     int nl = 0;
     int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
-    field(lg, &nl, 9, exact ? "' exact solution" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
-          exact ? "' exact" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference" : NULL);
+    int reference = a->truth.source == SW_TRUTH_REFERENCE;
+    field(lg, &nl, 9, exact ? "' exact solution" : reference ? "' reference run" : "no truth",
+          exact ? "' exact" : reference ? "' reference" : NULL);
     int ascii = !a->braille; /* (in Braille the paths are dots, said by no glyph) */
     for (int i = 0; i < a->nsims; i++) {
         char name[64], mark[8];

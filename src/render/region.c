@@ -25,18 +25,6 @@ void sw_region_free(sw_region *r)
     memset(r, 0, sizeof *r);
 }
 
-double sw_region_growth(sw_truth_work *w, const sw_integrator *m, int order, double x, double y)
-{
-    sw_spectrum sp;
-    memset(&sp, 0, sizeof sp);
-    sp.order = order;
-    sp.n = 1;
-    sp.complete = 1;
-    sp.mode[0] = (sw_mode){ x, y, x, -y };
-    sp.largest = hypot(x, y);
-    return sw_truth_growth_with(w, m, &sp, 1.0, NULL);
-}
-
 static int stable_at(sw_region *r, const sw_integrator *m, int order, double x, double y)
 {
     return sw_region_growth(r->work, m, order, x, y) <= 1 + SW_TRUTH_NEUTRAL;

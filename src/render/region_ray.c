@@ -11,6 +11,18 @@
 #include <stdio.h>
 #include <string.h>
 
+double sw_region_growth(sw_truth_work *w, const sw_integrator *m, int order, double x, double y)
+{
+    sw_spectrum sp;
+    memset(&sp, 0, sizeof sp);
+    sp.order = order;
+    sp.n = 1;
+    sp.complete = 1;
+    sp.mode[0] = (sw_mode){ x, y, x, -y };
+    sp.largest = hypot(x, y);
+    return sw_truth_growth_with(w, m, &sp, 1.0, NULL);
+}
+
 /* Below this the step is taken as stable at every r (a mark this close to
  * the origin is the free motion the meter calls neutral), above the far
  * end as stable on the whole ray (an implicit method). */

@@ -384,14 +384,18 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
         add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }
-    add_line(r, SW_SIDE_TEXT, "");
+    /* (the keys' reminder only where it fits a line: narrower, the key line
+     * under the pane says it, and its rows go to the text) */
+    int keys_line = width - 1 >= 46;
+    if (r->complete[r->page] || r->before[r->page] || keys_line)
+        add_line(r, SW_SIDE_TEXT, "");
     if (r->complete[r->page])
         add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
     else if (r->before[r->page])
         add_wrapped(r, SW_SIDE_DIM, "Done in an earlier session: the goals start fresh; n skips ahead.",
                     width - 1);
-    else
+    else if (keys_line)
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;
     r->side.fold = fold_at >= 0 ? r->side.nlines - fold_at : 0;

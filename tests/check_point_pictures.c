@@ -502,7 +502,9 @@ START_TEST(workprec_table_points_beside_the_text)
         int clipped;
         char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
         ck_assert_msg(strstr(text, "error vs evaluations") != NULL, "the plot is not shown:\n%s", text);
-        ck_assert_msg(strstr(text, "Error against cost") != NULL && strstr(text, "for one turn") != NULL,
+        /* open: the text beside the plot; answered: the pane at its end, the feedback (its title on top) */
+        ck_assert_msg(strstr(text, "Error against cost") != NULL &&
+                      strstr(text, answered ? "B) " : "for one turn") != NULL,
                       "%s: the plot hides the page's text:\n%s", answered ? "answered" : "open", text);
         ck_assert_msg(strstr(text, "two in a cell") != NULL || strstr(text, "no two series share") != NULL,
                       "shared cells are not said:\n%s", text);

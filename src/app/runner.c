@@ -181,6 +181,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         r->feedback_ok = ok == 1;
         if (ok == 1)
             r->answered[r->page] = 1;
+        r->scroll = SW_RUNNER_LINES; /* the pane's end, where the feedback is (a folded question opens) */
         snprintf(a->message, sizeof a->message, "%s", ok == 1 ? "right!" : "not quite: read the feedback and try again");
         return 1;
     }

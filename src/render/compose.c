@@ -428,16 +428,17 @@ static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
         fit_line(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, f, n);
     }
     int st, n = meter_fields(a, f, &st);
-    /* the run's state, always said (a key that restarts the run keeps it) */
+    /* the run's state: PAUSED said whenever it is (a key that restarts the
+     * run keeps it); "running" only where it costs the meter nothing */
     if (a->paused)
         field(f, &n, 10, "PAUSED", NULL);
     else if (a->slowmo > 1.05) {
         char b[48], s[24];
-        snprintf(b, sizeof b, "running, slow motion x%.1f", a->slowmo);
+        snprintf(b, sizeof b, "slow motion x%.1f", a->slowmo);
         snprintf(s, sizeof s, "slow x%.1f", a->slowmo);
-        field(f, &n, 10, b, s);
+        field(f, &n, 7, b, s);
     } else if (!a->sims[0].blown)
-        field(f, &n, 10, "running", NULL);
+        field(f, &n, 1, "running", NULL);
     if (a->speed != 1) {
         char b[48];
         snprintf(b, sizeof b, "speed x%g", a->speed);

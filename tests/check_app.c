@@ -487,6 +487,45 @@ START_TEST(slow_keys_say_so_first)
 }
 END_TEST
 
+/* The parameter panel's Left and Right walk one ladder (1-2-5 per decade)
+ * both ways and reach every damping the lessons set (c = 0.5, 10, 200,
+ * 5000) from the default and from each other; Left from the ladder's
+ * floor gives 0 and Right from 0 the floor (issue 37: Left halved 200 to
+ * 100 to 0, Right from 0 gave 100, so 10 and 0.5 were out of reach). */
+START_TEST(panel_reaches_lesson_values)
+{
+    sw_app a;
+    app_with(&a, "spring", NULL, 0.01, "c=200");
+    const sw_scene *sc = a.scene;
+    int ci = -1;
+    for (int i = 0; i < sc->nparams; i++)
+        if (strcmp(sc->params[i].name, "c") == 0)
+            ci = i;
+    ck_assert_int_ge(ci, 0);
+    sw_app_apply(&a, SW_ACT_PANEL, 0);
+    a.param_sel = ci;
+    static const double down[] = { 100, 50, 20, 10, 5, 2, 1, 0.5 };
+    for (size_t k = 0; k < sizeof down / sizeof down[0]; k++) {
+        sw_app_apply(&a, SW_ACT_PANEL_DEC, 0);
+        ck_assert_msg(a.p[ci] == down[k], "Left %zu: c = %g, not %g", k + 1, a.p[ci], down[k]);
+    }
+    static const double up[] = { 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000 };
+    for (size_t k = 0; k < sizeof up / sizeof up[0]; k++) {
+        sw_app_apply(&a, SW_ACT_PANEL_INC, 0);
+        ck_assert_msg(a.p[ci] == up[k], "Right %zu: c = %g, not %g", k + 1, a.p[ci], up[k]);
+    }
+    /* down to the floor (a millionth of the range: 0.1), then 0, and back */
+    while (a.p[ci] > 0.1)
+        sw_app_apply(&a, SW_ACT_PANEL_DEC, 0);
+    ck_assert_double_eq(a.p[ci], 0.1);
+    sw_app_apply(&a, SW_ACT_PANEL_DEC, 0);
+    ck_assert_double_eq(a.p[ci], 0);
+    sw_app_apply(&a, SW_ACT_PANEL_INC, 0);
+    ck_assert_double_eq(a.p[ci], 0.1);
+    sw_app_free(&a);
+}
+END_TEST
+
 Suite *make_app_suite(void);
 /* A plugin's label is its author's text: the message that names it on
  * switching shows a right-to-left override, an isolate and a zero-width
@@ -534,6 +573,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, adaptive_status_keeps_evals);
     tcase_add_test(tc, key_press_keeps_to_its_budget);
     tcase_add_test(tc, slow_keys_say_so_first);
+    tcase_add_test(tc, panel_reaches_lesson_values);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -19,23 +19,6 @@
 #include "render/workprec.h"
 #include "stepwise/stepwise.h"
 
-/* Open lesson FILE on the page titled TITLE (XDG_STATE_HOME in a scratch
- * directory, so no progress file is touched). */
-static void open_page(sw_runner *r, sw_app *a, const char *file, const char *title)
-{
-    char err[SW_LESSON_ERRLEN];
-    sw_lesson lesson;
-    setenv("XDG_STATE_HOME", "/tmp/sw-point-pictures-no-state", 1);
-    ck_assert_msg(sw_lesson_load(file, &lesson, err, sizeof err) == SW_OK, "%s", err);
-    int page = -1;
-    for (int i = 0; i < lesson.npages; i++)
-        if (strcmp(lesson.pages[i].title, title) == 0)
-            page = i;
-    sw_lesson_free(&lesson);
-    ck_assert_msg(page >= 0, "%s has no page '%s'", file, title);
-    ck_assert_msg(sw_runner_start(r, a, file, page, err, sizeof err) == SW_OK, "%s", err);
-}
-
 /* The scale: the whole region when the marks are large, 1.25 × the largest
  * mark when it is small (never below reach / 1000), the region with no mark. */
 START_TEST(region_scale_choice)
@@ -78,79 +61,327 @@ static marks find_marks(const sw_canvas *c)
     return m;
 }
 
+/* The edge on a ray, against the closed forms: Euler's disc |1 + z| <= 1
+ * meets the ray r·u (|u| = 1) at r = -2 Re u; RK4's region meets the
+ * imaginary axis at 2√2 (|R(iy)|² = 1 - y⁶/72 + y⁸/576 = 1). The search
+ * bisects to 1e-9 relative; the tolerance is 1e-8 relative, and on Euler's
+ * ray a point within SW_TRUTH_NEUTRAL (1e-12) of growth 1 counts as stable,
+ * which moves the edge by about 1e-12 / |Re u|. */
+START_TEST(region_edge_on_ray)
+{
+    sw_truth_work *w = sw_truth_work_new();
+    ck_assert_ptr_nonnull(w);
+    const sw_integrator *euler = sw_integrator_find("euler"), *rk4 = sw_integrator_find("rk4");
+    double re = -5, im = sqrt(10000 - 25), u = re / hypot(re, im);
+    double e = sw_region_edge_on_ray(w, euler, 2, re, im);
+    ck_assert_double_eq_tol(e, -2 * u, 1e-8 * -2 * u);
+    ck_assert_double_eq_tol(sw_region_edge_on_ray(w, euler, 2, -1, 0), 2, 2e-8);
+    ck_assert_double_eq_tol(sw_region_edge_on_ray(w, rk4, 2, 0, 1), 2 * sqrt(2), 3e-8);
+    /* undamped under Euler: out at once (past the neutral tolerance); backward Euler: never out */
+    ck_assert_double_lt(sw_region_edge_on_ray(w, euler, 2, 0, 1), 1e-5);
+    ck_assert(isinf(sw_region_edge_on_ray(w, sw_integrator_find("implicit-euler"), 2, -1, 1)));
+    sw_truth_work_free(w);
+}
+END_TEST
+
+/* The line under the region: the edge '|' in the same column whatever the
+ * ratio, each factor 2 the same notch, X out and '*' in, the ratio said. */
+START_TEST(region_gauge_line)
+{
+    char g[4][128];
+    double ratio[4] = { 5, 2.5, 1.25, 0.625 };
+    int edge = -1, pos[4];
+    for (int k = 0; k < 4; k++) {
+        sw_region_gauge(g[k], sizeof g[k], 39, ratio[k], ratio[k] > 1);
+        ck_assert_int_le((int)strlen(g[k]), 39);
+        const char *bar = strchr(g[k], '|');
+        ck_assert_ptr_nonnull(bar);
+        if (edge < 0)
+            edge = (int)(bar - g[k]);
+        ck_assert_msg((int)(bar - g[k]) == edge || strchr(g[k], 'X') == bar, "the edge moved: %s", g[k]);
+        const char *mark = strchr(g[k], ratio[k] > 1 ? 'X' : '*');
+        ck_assert_msg(mark != NULL, "no mark: %s", g[k]);
+        pos[k] = (int)(mark - g[k]);
+        ck_assert_msg(ratio[k] > 1 ? pos[k] > edge : pos[k] < edge, "the mark is on the wrong side: %s", g[k]);
+        if (k > 0)
+            ck_assert_int_eq(pos[k - 1] - pos[k], pos[0] - pos[1]);
+    }
+    ck_assert_ptr_nonnull(strstr(g[0], " 5x"));
+    ck_assert_ptr_nonnull(strstr(g[3], " 0.625x"));
+    sw_region_gauge(g[0], sizeof g[0], 39, INFINITY, 1);
+    ck_assert_ptr_nonnull(strstr(g[0], "always out"));
+    ck_assert_ptr_null(strchr(g[0], '|')); /* no edge drawn where there is none to measure against */
+    sw_region_gauge(g[0], sizeof g[0], 39, 0, 0);
+    ck_assert_ptr_nonnull(strstr(g[0], "always in"));
+    ck_assert_ptr_null(strchr(g[0], '|'));
+}
+END_TEST
+
+/* The screen's rows from the region's title down (the picture's columns). */
+static int row_of(const char *text, const char *needle)
+{
+    const char *p = strstr(text, needle);
+    if (!p)
+        return -1;
+    int row = 0;
+    for (const char *q = text; q < p; q++)
+        row += *q == '\n';
+    return row;
+}
+
+/* No tick label over the shading: every digit in the picture's rows has
+ * no Braille cell or ':' of shading touching it on its row. */
+static void assert_labels_clear(const sw_canvas *c, const char *text)
+{
+    for (int row = 0; row < c->rows; row++)
+        for (int col = 0; col < c->cols; col++) {
+            uint32_t g = sw_canvas_codepoint(c, col, row);
+            if (!((g >= '0' && g <= '9') || g == '.'))
+                continue;
+            for (int d = -1; d <= 1; d += 2) {
+                uint32_t n = sw_canvas_codepoint(c, col + d, row);
+                ck_assert_msg(!(n >= 0x2800 && n <= 0x28ff) && n != ':', "a label touches the shading at row %d, "
+                              "column %d:\n%s", row, col, text);
+            }
+        }
+}
+
 /* Lesson 5, "Why: outside the stability region", at 80x24: each press of
  * '-' (0.005 -> 0.0025 -> 0.00125 -> 0.000625) moves every mark to another
- * cell, the axes stay where they were, and the scale is said. */
+ * cell, the axes and the numbers under them stay where they were (the
+ * scale is fixed, and said), and the line under the numbers shows the mark
+ * crossing the edge: 5x, 2.5x, 1.25x out, then 0.625x in, one notch a
+ * halving. */
 START_TEST(region_marks_move_on_lesson5)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    open_page(r, &a, "lessons/05-springs.lesson", "Why: outside the stability region");
-    sw_app_key(&a, 's', 1);
-    ck_assert_int_eq(a.view, SW_VIEW_REGION);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/05-springs.lesson", "Why: outside the stability region");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 's', 1);
+    ck_assert_int_eq(ap->view, SW_VIEW_REGION);
     marks prev = { 0 };
+    char ticks0[256] = "";
+    int gauge_col[4];
+    static const char *said[4] = { " 5x", " 2.5x", " 1.25x", " 0.625x" };
     for (int k = 0; k < 4; k++) {
         int clipped;
-        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
-        marks m = find_marks(&f.canvas);
-        ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", a.dt, m.n, text);
-        ck_assert_msg(strstr(text, "fixed scale") != NULL, "dt %g: the scale is not said:\n%s", a.dt, text);
+        char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+        marks m = find_marks(&pg.f.canvas);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", ap->dt, m.n, text);
+        ck_assert_msg(strstr(text, "scale +-0.62 fixed") != NULL, "dt %g: the scale is not said:\n%s", ap->dt, text);
+        assert_labels_clear(&pg.f.canvas, text);
+        if (k == 0)
+            snprintf(ticks0, sizeof ticks0, "%s", pg.f.region.ticks);
+        ck_assert_msg(strcmp(ticks0, pg.f.region.ticks) == 0, "dt %g: the scale's numbers changed:\n%s\n%s", ap->dt,
+                      ticks0, pg.f.region.ticks);
+        ck_assert_msg(strstr(pg.f.region.ticks, "-0.2") != NULL, "no numbers under the picture: '%s'",
+                      pg.f.region.ticks);
+        /* the gauge, as on the screen */
+        int grow = row_of(text, "in :");
+        ck_assert_msg(grow > 0 && strstr(pg.f.region.gauge, said[k]) != NULL, "dt %g: the line under the picture "
+                      "does not say%s:\n%s", ap->dt, said[k], text);
+        const char *edge = strchr(pg.f.region.gauge, '|'), *mk = strchr(pg.f.region.gauge, k < 3 ? 'X' : '*');
+        ck_assert_msg(edge && mk && (k < 3 ? mk > edge : mk < edge), "dt %g: the mark is not on its side of the "
+                      "edge: %s", ap->dt, pg.f.region.gauge);
+        gauge_col[k] = (int)(mk - pg.f.region.gauge);
+        if (k > 0)
+            ck_assert_int_eq(gauge_col[k - 1] - gauge_col[k], gauge_col[0] - gauge_col[1]);
         /* the marks mirror each other across the real axis */
         ck_assert_int_eq(m.row[0] + m.row[1], 2 * m.axis_row);
         if (k > 0) {
             ck_assert_msg(m.axis_col == prev.axis_col && m.axis_row == prev.axis_row,
-                          "dt %g: the axes moved from (%d, %d) to (%d, %d)", a.dt, prev.axis_col, prev.axis_row,
+                          "dt %g: the axes moved from (%d, %d) to (%d, %d)", ap->dt, prev.axis_col, prev.axis_row,
                           m.axis_col, m.axis_row);
             for (int j = 0; j < 2; j++)
                 ck_assert_msg(m.row[j] != prev.row[j] || m.col[j] != prev.col[j],
-                              "dt %g: mark %d did not move (row %d, column %d):\n%s", a.dt, j, m.row[j], m.col[j],
+                              "dt %g: mark %d did not move (row %d, column %d):\n%s", ap->dt, j, m.row[j], m.col[j],
                               text);
             /* towards the origin */
             ck_assert_int_lt(abs(m.row[0] - m.axis_row), abs(prev.row[0] - prev.axis_row));
         }
         prev = m;
         free(text);
-        sw_app_key(&a, '-', 1);
+        sw_app_key(ap, '-', 1);
     }
-    sw_frame_free(&f);
-    sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+    ct_page_close(&pg);
 }
 END_TEST
 
-/* Lesson 6, "RK4's region": doubling Δt (0.005 -> 0.04) takes the marks
- * past the view chosen for them; the view widens to hold them and the
- * region, so every mark stays drawn and the last ones, outside RK4's
- * region (ωΔt = 4 > 2.83), are drawn X. */
-START_TEST(region_widens_when_marks_leave)
+/* Lesson 6, "RK4's region": the view opens on the whole region (the marks
+ * at ±0.5i and where their ray leaves it, 2.83i); doubling Δt (0.005 ->
+ * 0.04) moves the marks, the scale stays put (no rescale by itself), and
+ * at 0.04 the marks, past the view, are arrows at its edge while the line
+ * under the picture says they are out (4 / 2.83 = 1.41x). */
+START_TEST(region_scale_stays_when_marks_leave)
 {
-    sw_runner *r = malloc(sizeof *r);
-    sw_app a;
-    open_page(r, &a, "lessons/06-runge-kutta.lesson", "RK4's region");
-    sw_app_key(&a, 's', 1);
-    sw_frame f;
-    char err[SW_ERRLEN];
-    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    ct_page pg;
+    ct_page_open(&pg, "lessons/06-runge-kutta.lesson", "RK4's region");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 's', 1);
+    char ticks0[256] = "";
     for (int k = 0; k < 4; k++) {
         int clipped;
-        char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
-        marks m = find_marks(&f.canvas);
-        ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", a.dt, m.n, text);
-        if (k == 3)
-            for (int j = 0; j < 2; j++)
-                ck_assert_msg(sw_canvas_codepoint(&f.canvas, m.col[j], m.row[j]) == 'X', "dt %g: a mark outside "
-                              "RK4's region is not X:\n%s", a.dt, text);
+        char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+        marks m = find_marks(&pg.f.canvas);
+        assert_labels_clear(&pg.f.canvas, text);
+        if (k == 0) {
+            snprintf(ticks0, sizeof ticks0, "%s", pg.f.region.ticks);
+            /* the whole region: its reach on the real axis (-2.79) is numbered */
+            ck_assert_msg(strstr(ticks0, "-2") != NULL && strstr(ticks0, "2") != NULL, "%s", text);
+        }
+        ck_assert_msg(strcmp(ticks0, pg.f.region.ticks) == 0, "dt %g: the scale changed by itself:\n%s", ap->dt, text);
+        if (k < 3)
+            ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", ap->dt, m.n, text);
+        else {
+            ck_assert_msg(strstr(pg.f.region.gauge, "X") && strstr(pg.f.region.gauge, " 1.41x"),
+                          "dt %g: the line under the picture does not say out, 1.41x:\n%s", ap->dt, text);
+            ck_assert_msg(strchr(text, '^') && strchr(text, 'v'), "dt %g: the marks past the view have no arrows:"
+                          "\n%s", ap->dt, text);
+        }
         free(text);
-        sw_app_key(&a, '+', 1);
+        sw_app_key(ap, '+', 1);
     }
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* Lesson 3, "The spring in phase space", at 80x24 after t = 10: the
+ * legend names the glyphs drawn (Euler's present point o and its dotted
+ * path ".", the exact curve "'"), every glyph on the picture is one the
+ * legend or the axes name, and symplectic Euler's closed curve (x) is
+ * drawn over the exact ellipse it hugs, not hidden under it (issue 37). */
+START_TEST(phase_legend_matches_picture)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    ck_assert_int_eq(ap->nsims, 3);
+    sw_app_key(ap, 'v', 1);
+    ck_assert_int_eq(ap->view, SW_VIEW_PHASE);
+    ap->paused = 0;
+    for (int i = 0; i < 4000 && ap->sims[0].t < 10; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
+    ck_assert(ap->sims[0].t >= 10);
+    int clipped;
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "' exact") && strstr(text, "o. euler") && strstr(text, "x symp") &&
+                  strstr(text, "+ impl"), "the legend does not name the glyphs drawn:\n%s", text);
+    int xs = 0, ghosts = 0;
+    for (int row = 0; row < pg.f.canvas.rows; row++)
+        for (int col = 0; col < pg.f.canvas.cols; col++) {
+            uint32_t g = sw_canvas_codepoint(&pg.f.canvas, col, row);
+            ck_assert_msg(strchr(" -|+'.ox<>^v", (int)g) != NULL, "a glyph U+%04X on the picture the legend does not "
+                          "name:\n%s", (unsigned)g, text);
+            xs += g == 'x';
+            ghosts += g == '\'';
+        }
+    printf("phase view, lesson 3 at t = 10: %d cells of symplectic Euler's curve, %d of the exact one showing\n", xs,
+           ghosts);
+    /* its curve stays within a few cells of the ellipse: drawn over it, it
+     * shows most of the way round */
+    ck_assert_msg(xs > 2 * ghosts, "symplectic Euler's curve is hidden under the exact one (%d x, %d '):\n%s", xs,
+                  ghosts, text);
+    free(text);
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* The phase view on the projectile opens with its curve in it and says
+ * which axis is which: the height y across (its name and its largest
+ * value at the axis's right end), its rate vy up (at the top). */
+START_TEST(phase_axes_named)
+{
+    const sw_scene *sc = sw_scene_find("projectile");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    sw_app a;
+    ck_assert_msg(sw_app_init(&a, sc, p, NULL, sc->dt, err, sizeof err) == SW_OK, "%s", err);
+    sw_app_set_view(&a, SW_VIEW_PHASE);
+    sw_frame f;
+    ck_assert_int_eq(sw_frame_init(&f, err, sizeof err), SW_OK);
+    int clipped;
+    char *text = ct_compose(&f, &a, NULL, 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "^ vy ") != NULL, "the vertical axis is not named vy:\n%s", text);
+    const char *across = strstr(text, "y ");
+    int named = 0;
+    for (; across; across = strstr(across + 1, "y "))
+        named |= (across == text || across[-1] == ' ' || across[-1] == '-') && strstr(across, " >") &&
+                 strchr(across, '\n') > strstr(across, " >");
+    ck_assert_msg(named, "the horizontal axis is not named y:\n%s", text);
+    ck_assert_msg(ct_count_cp(&f.canvas, '\'') > 20, "the phase view opens without the exact curve:\n%s", text);
+    free(text);
     sw_frame_free(&f);
     sw_app_free(&a);
-    sw_runner_free(r);
-    free(r);
+}
+END_TEST
+
+/* Lanes on lesson 3's page at 80x24: each lane wide enough to name its
+ * method whole (side by side they were 12 columns: stacked instead); in a
+ * window too small for any readable lane they are overlaid, and said. */
+START_TEST(lanes_readable_or_refused)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'l', 1);
+    ck_assert(ap->lanes);
+    int clipped;
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+    ck_assert_msg(strstr(text, "x symplectic-euler") && strstr(text, "+ implicit-euler"), "a lane's method is cut:\n%s",
+                  text);
+    free(text);
+    text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, SW_MIN_COLS), SW_MIN_COLS, SW_MIN_ROWS, &clipped);
+    ck_assert_msg(strstr(text, "x symplectic-euler") || strstr(text, "lanes"), "at %dx%d the lanes are neither "
+                  "readable nor refused:\n%s", SW_MIN_COLS, SW_MIN_ROWS, text);
+    free(text);
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* Lesson 3's three runs at t = 10 with the energy graph at 80x24: Euler's
+ * +557 % no longer squeezes symplectic Euler (a few %) and backward Euler
+ * (-86 %) into one row of '*': the scale is theirs, Euler runs past the
+ * top and the title says so (issue 37). */
+START_TEST(graph_keeps_small_runs_apart)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "The spring in phase space");
+    sw_runner *r = pg.r;
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'e', 1);
+    ck_assert(ap->graph);
+    ap->paused = 0;
+    for (int i = 0; i < 4000 && ap->sims[0].t < 10; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
+    int clipped;
+    char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
+    const char *title = strstr(text, "energy drift (%)");
+    ck_assert_msg(title != NULL && strstr(title, "o ^") != NULL, "the graph does not say Euler runs past the top:\n%s",
+                  text);
+    /* the plot's rows: from the title's next line while they hold '|' at column 9 */
+    int rows_x = 0, rows_plus = 0, shared = 0;
+    for (const char *line = strchr(title, '\n') + 1; line && line[9] == '|'; ) {
+        const char *end = strchr(line, '\n');
+        int x = 0, plus = 0, merged = 0;
+        for (const char *c = line + 10; c < end && c < line + 40; c++) {
+            x |= *c == 'x';
+            plus |= *c == '+';
+            merged |= *c == '*';
+        }
+        rows_x += x;
+        rows_plus += plus;
+        shared += merged && !x && !plus;
+        line = end ? end + 1 : NULL;
+    }
+    printf("graph, lesson 3 at t = 10: symplectic Euler on %d rows, backward Euler on %d\n", rows_x, rows_plus);
+    ck_assert_msg(rows_plus >= 3 && shared == 0, "backward Euler's fall is not drawn apart:\n%s", text);
+    free(text);
+    ct_page_close(&pg);
 }
 END_TEST
 
@@ -242,7 +473,7 @@ START_TEST(workprec_table_points_beside_the_text)
     } table[] = { { "euler", 503, 0.04 }, { "midpoint", 504, 0.00064 }, { "rk4", 504, 3e-7 } };
     sw_runner *r = malloc(sizeof *r);
     sw_app a;
-    open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
+    ct_open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
     ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
     ck_assert_ptr_nonnull(a.bench);
     const sw_bench_report *b = a.bench;
@@ -271,7 +502,9 @@ START_TEST(workprec_table_points_beside_the_text)
         int clipped;
         char *text = ct_compose(&f, &a, sw_runner_side(r, &a, 80), 80, 24, &clipped);
         ck_assert_msg(strstr(text, "error vs evaluations") != NULL, "the plot is not shown:\n%s", text);
-        ck_assert_msg(strstr(text, "Error against cost") != NULL && strstr(text, "for one turn") != NULL,
+        /* open: the text beside the plot; answered: the pane at its end, the feedback (its title on top) */
+        ck_assert_msg(strstr(text, "Error against cost") != NULL &&
+                      strstr(text, answered ? "B) " : "for one turn") != NULL,
                       "%s: the plot hides the page's text:\n%s", answered ? "answered" : "open", text);
         ck_assert_msg(strstr(text, "two in a cell") != NULL || strstr(text, "no two series share") != NULL,
                       "shared cells are not said:\n%s", text);
@@ -434,7 +667,7 @@ START_TEST(every_named_difference_is_shown)
                           l.pages[p].title);
             sw_runner *r = malloc(sizeof *r);
             sw_app a;
-            open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
+            ct_open_page(r, &a, diff_pages[k].file, diff_pages[k].title);
             sw_app_set_ghost(&a, 1);
             sw_app_set_until(&a, diff_pages[k].t);
             a.paused = 0;
@@ -479,8 +712,14 @@ Suite *make_point_pictures_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, region_scale_choice);
     tcase_add_test(tc, region_marks_move_on_lesson5);
-    tcase_add_test(tc, region_widens_when_marks_leave);
+    tcase_add_test(tc, region_scale_stays_when_marks_leave);
+    tcase_add_test(tc, region_edge_on_ray);
+    tcase_add_test(tc, region_gauge_line);
     tcase_add_test(tc, region_without_modes_says_why);
+    tcase_add_test(tc, phase_legend_matches_picture);
+    tcase_add_test(tc, phase_axes_named);
+    tcase_add_test(tc, lanes_readable_or_refused);
+    tcase_add_test(tc, graph_keeps_small_runs_apart);
     tcase_add_test(tc, workprec_overlap_marks);
     tcase_add_test(tc, workprec_table_points_beside_the_text);
     tcase_add_test(tc, projectile_says_launch_and_energy);

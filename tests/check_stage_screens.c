@@ -3,6 +3,7 @@
  * slope (four for rk4, two for midpoint), the label of the stage shown,
  * the formula's lit line, and no text cut. */
 #include <check.h>
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -54,18 +55,27 @@ static void walk(sw_app *a, sw_runner *r, const char *method, int want)
             char lit[80];
             snprintf(lit, sizeof lit, "> %.20s", sc->lines[sc->views[press - 1].line]);
             ck_assert_msg(strstr(text, lit), "%s %dx%d: line '%s' not lit:\n%s", method, cols, rows, lit, text);
+            /* no label runs into a mark or another label (issue 37: "y1rue", "y14") */
+            for (const char *lab = strstr(text, "y1"); lab; lab = strstr(lab + 1, "y1")) {
+                char after = lab[2], before = lab > text ? lab[-1] : ' ';
+                ck_assert_msg(!isalnum((unsigned char)after) && !isalnum((unsigned char)before), "%s %dx%d: the "
+                              "label y1 runs into its neighbour:\n%s", method, cols, rows, text);
+            }
+            ck_assert_msg(!strstr(text, "rue") || strstr(text, "true"), "%s %dx%d: the label 'true' is cut:\n%s",
+                          method, cols, rows, text);
             if (press == sc->nviews) { /* the whole step: every stage point drawn */
                 int digits = 0;
                 for (char d = '1'; d <= '9'; d++) {
                     /* a stage point is a lone digit on the picture (between blanks, lines,
-                     * the dotted line or the true path; not in the formula or status text) */
+                     * the dotted line, the true path or an arrow's head; not in the formula
+                     * or status text) */
                     const char *line = strchr(text, '\n') + 1; /* below the title */
                     int found = 0;
                     for (int row = 1; row < rows - 5 && line; row++) {
                         const char *end = strchr(line, '\n');
                         int w = side ? cols / 2 : cols - 33;
                         for (const char *c = line; c < end && c - line < w; c++)
-                            if (*c == d && (c == line || strchr(" -.\\/|'", c[-1])) && (c + 1 >= end || strchr(" -.\\/|'", c[1])))
+                            if (*c == d && (c == line || strchr(" -.\\/|'^v<>", c[-1])) && (c + 1 >= end || strchr(" -.\\/|'^v<>", c[1])))
                                 found = 1;
                         line = end ? end + 1 : NULL;
                     }

@@ -321,15 +321,36 @@ static void cycle_method(sw_app *a, int dir)
 /* Step a parameter: by ×2 over ranges spanning decades (a range from 0 counts
  * when it reaches 1000; from 0 the first step is 1/1000 of the range), else
  * by 1/20 of the range. */
+/* The next value of the 1-2-5 ladder (…, 0.5, 1, 2, 5, 10, 20, …) above v
+ * (dir > 0) or below it (dir < 0), v > 0: every round value a lesson sets
+ * (c = 0.5, 10, 200, 5000) is on it, and from any value off it (a page's
+ * own setting) a press lands on it. */
+static double ladder_step(double v, int dir)
+{
+    static const double mant[3] = { 1, 2, 5 };
+    double e = floor(log10(v)), best = dir > 0 ? INFINITY : 0;
+    for (int k = -1; k <= 1; k++)
+        for (int j = 0; j < 3; j++) {
+            double c = mant[j] * pow(10, e + k);
+            if (dir > 0 && c > v * (1 + 1e-9) && c < best)
+                best = c;
+            if (dir < 0 && c < v * (1 - 1e-9) && c > best)
+                best = c;
+        }
+    return best;
+}
+
 static void change_param(sw_app *a, int dir)
 {
     const sw_param *pd = &a->scene->params[a->param_sel];
     double v = a->p[a->param_sel], nv, span = pd->max - pd->min;
     int decades = pd->min > 0 ? pd->max / pd->min >= 100 : pd->min == 0 && pd->max >= 1000;
-    if (decades && pd->min == 0 && (v == 0 || (dir < 0 && v <= span / 1000)))
-        nv = dir > 0 ? (pd->integer ? 1 : span / 1000) : 0;
+    /* with a floor of 0: the ladder down to a millionth of the range, then 0 */
+    double floor0 = ladder_step(span * 1e-6 * 0.999, 1);
+    if (decades && pd->min == 0 && (v == 0 || (dir < 0 && v <= floor0)))
+        nv = dir > 0 ? (pd->integer ? 1 : floor0) : 0;
     else if (decades)
-        nv = dir > 0 ? v * 2 : v / 2;
+        nv = ladder_step(v, dir);
     else if (pd->integer)
         nv = v + dir;
     else

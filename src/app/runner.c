@@ -17,6 +17,7 @@
  * lines, and leaves the picture at least this many. */
 #define PANE_GROW 6
 #define PANE_PICTURE_MIN 30
+#define READING_COLS 100 /* the reading mode's widest line: longer ones are hard to follow */
 
 void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
 {
@@ -180,6 +181,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         r->feedback_ok = ok == 1;
         if (ok == 1)
             r->answered[r->page] = 1;
+        r->scroll = SW_RUNNER_LINES; /* the pane's end, where the feedback is (a folded question opens) */
         snprintf(a->message, sizeof a->message, "%s", ok == 1 ? "right!" : "not quite: read the feedback and try again");
         return 1;
     }
@@ -193,7 +195,7 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         }
         return 0;
     }
-    if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_SCROLL_DOWN)
+    if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_READ)
         a->message[0] = '\0'; /* a message stays until the next key */
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
@@ -213,9 +215,14 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         r->hint = !r->hint;
         r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
+    case SW_ACT_READ:
+        r->wide = !r->wide;
+        snprintf(a->message, sizeof a->message, "%s", r->wide ? "reading mode: the text full width (o: the picture "
+                 "again)" : "the picture and the text side by side (o: the text full width)");
+        return 1;
     case SW_ACT_SCROLL_UP:
     case SW_ACT_SCROLL_DOWN:
-        r->scroll += c->action == SW_ACT_SCROLL_DOWN ? 3 : -3;
+        r->scroll += (c->action == SW_ACT_SCROLL_DOWN ? 1 : -1) * (r->step > 3 ? r->step : 3);
         if (r->scroll < 0)
             r->scroll = 0;
         return 1;
@@ -280,6 +287,8 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
     /* beside the scene at every size: the scene keeps every row above the status lines */
     int width = cols >= 110 ? (cols * 2 / 5 < 64 ? cols * 2 / 5 : 64) : cols / 2;
+    /* the reading mode: the whole width, up to a line a reader's eye follows */
+    int wide = r->wide ? (cols - 2 < READING_COLS ? cols - 2 : READING_COLS) : 0;
     /* A page with verbatim lines (a table, a formula) gets a pane up to
      * PANE_GROW columns wider, so that they show whole (a table row split
      * in two no longer reads as a row); the picture keeps PANE_PICTURE_MIN
@@ -297,12 +306,16 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         width = need < width + PANE_GROW ? need : width + PANE_GROW;
     if (width > cols - PANE_PICTURE_MIN - 1)
         width = cols - PANE_PICTURE_MIN - 1;
+    if (wide > width)
+        width = wide;
+    r->side.full = r->wide;
     char buf[SW_RUNNER_COLS];
     r->side.nlines = 0;
     r->side.lines = r->lines;
     r->side.kinds = r->kinds;
     r->side.width = width;
     r->side.scroll = &r->scroll;
+    r->side.step = &r->step;
     r->side.question_open = pg->question.text && !r->answered[r->page] ? pg->question.nanswers : 0;
     r->side.notice = !r->complete[r->page] ? (r->before[r->page] ? "done before: n skips ahead" : NULL)
                      : r->page + 1 < r->lesson.npages ? "page done: n next page" : "lesson complete: q leaves";
@@ -313,6 +326,7 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         snprintf(buf, sizeof buf, "%s  (%d/%d)", r->lesson.title, r->page + 1, r->lesson.npages);
     add_wrapped(r, SW_SIDE_DIM, buf, width - 1);
     add_wrapped(r, SW_SIDE_TITLE, pg->title, width - 1);
+    r->side.head = r->side.nlines;
     add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {
@@ -345,7 +359,9 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         add_line(r, met ? SW_SIDE_OK : SW_SIDE_BAD, buf);
     }
     const sw_lesson_question *q = &pg->question;
+    int fold_at = -1;
     if (q->text) {
+        fold_at = r->side.nlines;
         add_line(r, SW_SIDE_TEXT, "");
         add_wrapped(r, SW_SIDE_TITLE, q->text, width - 1);
         for (int i = 0; i < q->nanswers; i++) {
@@ -369,15 +385,20 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
         snprintf(buf, sizeof buf, "Hint: %s", h ? h : "nothing left to do here: press n");
         add_wrapped(r, SW_SIDE_HINT, buf, width - 1);
     }
-    add_line(r, SW_SIDE_TEXT, "");
+    /* (the keys' reminder only where it fits a line: narrower, the key line
+     * under the pane says it, and its rows go to the text) */
+    int keys_line = width - 1 >= 46;
+    if (r->complete[r->page] || r->before[r->page] || keys_line)
+        add_line(r, SW_SIDE_TEXT, "");
     if (r->complete[r->page])
         add_wrapped(r, SW_SIDE_OK, r->page + 1 < r->lesson.npages ? "Done: press n for the next page."
                                                                  : "Lesson complete! q leaves the lesson.", width - 1);
     else if (r->before[r->page])
         add_wrapped(r, SW_SIDE_DIM, "Done in an earlier session: the goals start fresh; n skips ahead.",
                     width - 1);
-    else
+    else if (keys_line)
         add_wrapped(r, SW_SIDE_DIM, "h: hint   n: next page once the goals are met", width - 1);
     r->side.pinned = r->side.nlines - foot;
+    r->side.fold = fold_at >= 0 ? r->side.nlines - fold_at : 0;
     return &r->side;
 }

@@ -27,6 +27,8 @@ typedef struct sw_runner {
     int hint_scroll;           /* 1: the hint was just asked for: scroll the pane to it */
     int finished;              /* the last page is complete */
     int scroll;                /* first line of the text pane shown */
+    int wide;                  /* 1: the text takes the whole width (o: the reading mode) */
+    int step;                  /* lines Up and Down move (the composer sets it; 0: 3) */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];
     const char *lines[SW_RUNNER_LINES];
     sw_side_kind kinds[SW_RUNNER_LINES];

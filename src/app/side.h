@@ -20,10 +20,19 @@ typedef struct sw_side {
     const sw_side_kind *kinds;  /* one per line; NULL: all SW_SIDE_TEXT */
     int nlines;
     int width;                  /* wanted columns beside the scene (0: below) */
-    int *scroll;                /* first line shown; the composer clamps it */
+    int *step;                  /* set by the composer: lines a press of Up or Down moves (the
+                                 * text's rows less two, so a line read stays in sight) */
+    int *scroll;                /* first text line shown (0: the first after the head); the
+                                 * composer clamps it */
     int question_open;          /* answers of the page's open question (A..F: 2-6); 0: none open */
+    int head;                   /* the first `head` lines (the lesson, the page's title) stay at
+                                 * the pane's top while the text below them scrolls */
     int pinned;                 /* the last `pinned` lines (goals, question) stay in sight at the
                                  * pane's foot while the text above them scrolls; 0: none */
+    int fold;                   /* of those, the last `fold` (the question, its answers, the keys'
+                                 * line) fold into one line while the text above is not read to
+                                 * its end, when the pane has no room for both; 0: none */
+    int full;                   /* the pane takes the whole width (the reading mode), no picture */
     const char *notice;         /* what the lesson says on the key line ("page done: n next page"), or NULL */
 } sw_side;
 

@@ -18,6 +18,7 @@
 #include "measure/stability.h"
 #include "sim/truth.h"
 #include "util/num.h"
+#include "util/wrap.h"
 
 static const char usage_text[] =
     "usage: stepwise stability SCENE [--integrators LIST] [--set NAME=VALUE] [--plugin FILE]\n"
@@ -143,9 +144,21 @@ static void report_head(const sw_scene *sc, const double *p, int markdown)
         if (!sw_stability_measurable(sc, p, why, sizeof why))
             printf("theory only: %s\n", why);
         printf("\n");
-        printf("  %-22s %-12s %-10s %-34s %-10s\n", "method", "theory dt", "|L|*dt", "measured dt",
-               "|L|*dt");
+        printf("  %-22s %-10s %-9s %-10s %s\n", "method", "theory dt", "|L|*dt", "measured", "|L|*dt");
     }
+}
+
+/* A note under a row of the table, indented to the method's column end
+ * and wrapped so that no line passes 80 columns. */
+static void note_line(void *ctx, int lead, const char *text, size_t len)
+{
+    (void)ctx;
+    printf("  %-22s %*s%.*s\n", "", lead, "", (int)len, text);
+}
+
+static void note_lines(const char *text)
+{
+    sw_wrap_paragraph(text, 80 - 25, note_line, NULL);
 }
 
 /* The rows of methods[lo..hi) on one scene. Returns 0, or 1 when a run
@@ -179,19 +192,27 @@ static int report_rows(const sw_scene *sc, const double *p, const sw_integrator 
             limit_text(r.dt, r.kind == SW_STAB_NONE, r.kind == SW_STAB_UNBOUNDED, me, sizeof me);
             wdt_text(r.stiff, r.dt, r.kind == SW_STAB_NONE, r.kind == SW_STAB_UNBOUNDED, mew, sizeof mew);
         }
-        if (r.measured && r.kind == SW_STAB_LIMIT && !markdown) {
-            size_t n = strlen(me);
-            snprintf(me + n, sizeof me - n, " (%s at %.5g)", sw_stability_verdict_text(r.fail.verdict), r.dt_unstable);
-        }
         if (markdown)
             printf("| %s | %s | %s | %s | %s | %s |\n", m->name, th, thw, me, mew,
                    r.agree ? "yes" : !r.measured ? "theory only" : r.why);
         else {
-            printf("  %-22s %-12s %-10s %-34s %-10s\n", m->name, th, thw, me, mew);
-            if (r.measured && !r.agree)
-                printf("  %-22s differ: %s\n", "", r.why);
-            if (r.fail.verdict == SW_PROBE_BLOWN)
-                printf("  %-22s (at dt = %.6g: %s)\n", "", r.fail.dt, r.fail.reason);
+            /* 66 columns a row; what the measurement saw goes under it,
+             * wrapped to 80 columns, so the table reads at 80 */
+            printf("  %-22s %-10s %-9s %-10s %s\n", m->name, th, thw, me, mew);
+            char note[1024];
+            if (r.measured && r.kind == SW_STAB_LIMIT) {
+                snprintf(note, sizeof note, "(%s at dt = %.5g)", sw_stability_verdict_text(r.fail.verdict),
+                         r.dt_unstable);
+                note_lines(note);
+            }
+            if (r.measured && !r.agree) {
+                snprintf(note, sizeof note, "differ: %s", r.why);
+                note_lines(note);
+            }
+            if (r.fail.verdict == SW_PROBE_BLOWN) {
+                snprintf(note, sizeof note, "(at dt = %.6g: %s)", r.fail.dt, r.fail.reason);
+                note_lines(note);
+            }
         }
         fflush(stdout);
     }

@@ -117,6 +117,8 @@ enum {
     X(HINT, NONE, LESSON, "hint", SW_KEYS('h'), "h", "hint for the first goal not met") \
     X(SCROLL_UP, NONE, LESSON, "scroll up", SW_KEYS(SW_KEY_UP), "Up  Down", "scroll the lesson text") \
     X(SCROLL_DOWN, NONE, LESSON, "scroll down", SW_KEYS(SW_KEY_DOWN), NULL, NULL) \
+    X(READ, NONE, LESSON, "reading mode", SW_KEYS('o'), "o", \
+      "reading mode: the lesson text full width / beside the picture again") \
     /* Capital letters answer a page's question: no play key is a capital \
      * A-F (SW_ANSWER_FIRST; a test keeps it so), so an answer never toggles \
      * a view and a play key never answers. */ \

@@ -155,6 +155,19 @@ static void blown_banner(sw_screen *scr, const sw_sim *s, int row, int col, int 
 /* Compare side by side: one lane per method, each with its own title line
  * (method, energy, error) and picture, stacked or in columns, whichever
  * gives the scene the larger scale. */
+/* The smallest lane that reads: a picture this wide side by side, or this
+ * tall stacked (its status line above it). */
+#define LANE_MIN_COLS 20
+#define LANE_MIN_ROWS 5
+
+/* Whether a->nsims lanes in rows x cols are each at least that big, side
+ * by side or stacked. */
+static int lanes_readable(const sw_app *a, int rows, int cols)
+{
+    int n = a->nsims;
+    return (cols - (n - 1)) / n >= LANE_MIN_COLS || rows / n >= LANE_MIN_ROWS;
+}
+
 static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
     int n = a->nsims;
@@ -164,6 +177,11 @@ static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     double s_stack = fmax(vx / cols, vy / (2.0 * (stack_h - 1)));
     double s_cols = fmax(vx / col_w, vy / (2.0 * (rows - 1)));
     int stacked = s_stack <= s_cols;
+    /* the finer scale, unless its lanes are too small to read and the other's are not */
+    if (!stacked && col_w < LANE_MIN_COLS && stack_h >= LANE_MIN_ROWS)
+        stacked = 1;
+    else if (stacked && stack_h < LANE_MIN_ROWS && col_w >= LANE_MIN_COLS)
+        stacked = 0;
     for (int i = 0; i < n; i++) {
         int r = stacked ? row0 + i * stack_h : row0, c = stacked ? col0 : col0 + i * (col_w + 1);
         int h = stacked ? (i == n - 1 ? rows - i * stack_h : stack_h) : rows, w = stacked ? cols : col_w;
@@ -231,14 +249,18 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     sw_field lg[12];
     int nl = 0;
     int exact = a->have_truth && a->truth.source == SW_TRUTH_EXACT;
-    field(lg, &nl, 9, exact ? "' exact orbit" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference run" : "no truth",
-          exact ? "' exact" : a->truth.source == SW_TRUTH_REFERENCE ? "' reference" : NULL);
+    int reference = a->truth.source == SW_TRUTH_REFERENCE;
+    field(lg, &nl, 9, exact ? "' exact solution" : reference ? "' reference run" : "no truth",
+          exact ? "' exact" : reference ? "' reference" : NULL);
+    int ascii = !a->braille; /* (in Braille the paths are dots, said by no glyph) */
     for (int i = 0; i < a->nsims; i++) {
-        char name[64];
-        snprintf(buf, sizeof buf, "%c %s%s", (char)sim_glyph[i], a->sims[i].method->name,
-                 a->sims[i].blown ? " (blew up)" : "");
+        char name[64], mark[8];
+        /* the glyphs drawn: the present point, and its path when that differs ("o. euler") */
+        uint32_t path = sw_phase_path_glyph(i);
+        snprintf(mark, sizeof mark, "%c%s", (char)sim_glyph[i], ascii && path != sim_glyph[i] ? "." : "");
+        snprintf(buf, sizeof buf, "%s %s%s", mark, a->sims[i].method->name, a->sims[i].blown ? " (blew up)" : "");
         sw_text_brief_name(a->sims[i].method->name, name, sizeof name);
-        snprintf(brief, sizeof brief, "%c %s%s", (char)sim_glyph[i], name[0] ? name : a->sims[i].method->name,
+        snprintf(brief, sizeof brief, "%s %s%s", mark, name[0] ? name : a->sims[i].method->name,
                  a->sims[i].blown ? " (blown)" : "");
         field(lg, &nl, 12 - i, buf, brief);
     }
@@ -276,14 +298,26 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         return;
     sw_field fl[12];
     int n = 0;
+    char brief[SW_TEXT_LINE];
     snprintf(buf, sizeof buf, "stability region of %s", m->name);
-    field(fl, &n, 10, buf, NULL);
+    snprintf(brief, sizeof brief, "region of %s", m->name);
+    field(fl, &n, 10, buf, brief);
+    /* the marks' legend in the title's row, so the picture keeps its rows */
+    if (a->have_spec && a->spec.n > 0) {
+        snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
+                 a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
+        field(fl, &n, 9, buf, "* dt x eigenvalue");
+        snprintf(buf, sizeof buf, "dt=%g", a->dt);
+        field(fl, &n, 8, buf, NULL);
+    }
     field(fl, &n, 6, "(shaded: growth per step <= 1)", "(shaded: stable)");
-    field(fl, &n, 3, "in the plane of dt x eigenvalue", NULL);
     fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
+    /* under the picture: the real axis's numbers, the worst mark against
+     * its edge along its ray, and the legend */
+    int crows = rows - 4;
     sw_canvas *c = &f->canvas;
-    if (c->cols != cols || c->rows != rows - 3)
-        sw_canvas_resize(c, cols, rows - 3, err, sizeof err);
+    if (c->cols != cols || c->rows != crows)
+        sw_canvas_resize(c, cols, crows, err, sizeof err);
     /* Braille where the terminal shows it, or when asked for */
     sw_canvas_set_mode(c, f->unicode || a->braille ? SW_CANVAS_BRAILLE : SW_CANVAS_ASCII);
     double worst;
@@ -293,22 +327,15 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         return;
     }
     sw_screen_blit(scr, c, row0 + 1, col0);
+    sw_screen_text(scr, row0 + 1 + crows, col0, cols, SW_STYLE_DIM, f->region.ticks);
+    if (f->region.gauge[0])
+        sw_screen_text(scr, row0 + 2 + crows, col0, cols, f->region.ratio_grows ? SW_STYLE_WARN : SW_STYLE_STATUS,
+                       f->region.gauge);
     n = 0;
     if (why[0]) {
         sw_screen_wrapped(scr, row0 + rows - 2, col0, cols, 2, SW_STYLE_DIM, why);
         return;
     }
-    snprintf(buf, sizeof buf, "* dt x eigenvalue of %s (%d mode%s%s)", a->scene->name, a->spec.n,
-             a->spec.n == 1 ? "" : "s", a->spec.complete ? "" : ", the stiffest");
-    field(fl, &n, 9, buf, "* dt x eigenvalue");
-    snprintf(buf, sizeof buf, "dt=%g", a->dt);
-    field(fl, &n, 8, buf, NULL);
-    if (a->spec.growing) {
-        snprintf(buf, sizeof buf, "(%d growing by the physics, not shown)", a->spec.growing);
-        field(fl, &n, 2, buf, NULL);
-    }
-    fit_line(scr, row0 + rows - 2, col0, cols, SW_STYLE_DIM, fl, n);
-    n = 0;
     if (f->region.progress < 1) {
         snprintf(buf, sizeof buf, "shading %s's region: %.0f%% (each point steps the sandboxed plugin)", m->name,
                  100 * f->region.progress);
@@ -319,9 +346,22 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         field(fl, &n, 10, buf, "X grows");
     } else
         field(fl, &n, 10, "all inside: no mode grows", "all inside");
+    /* the scale chosen for the page: it stays while dt changes */
+    snprintf(buf, sizeof buf, "scale +-%.2g, fixed (z zooms)", f->region.fit_half * a->zoom);
+    snprintf(brief, sizeof brief, "%s+-%.2g fixed", f->region.beyond > 0 ? "" : "scale ", f->region.fit_half * a->zoom);
+    field(fl, &n, 8, buf, brief);
+    if (f->region.beyond > 0) {
+        snprintf(buf, sizeof buf, "arrows: marks past the edge, to %.3g", f->region.beyond);
+        snprintf(brief, sizeof brief, "arrows: %.3g", f->region.beyond);
+        field(fl, &n, 9, buf, brief); /* (before the scale, which the numbers under the picture show too) */
+    }
+    field(fl, &n, 6, "+/- move the marks", "+/- dt");
     snprintf(buf, sizeof buf, "worst x%.6f/step", worst);
-    field(fl, &n, 9, buf, NULL);
-    field(fl, &n, 4, "+/- move the marks", "+/- dt");
+    field(fl, &n, 5, buf, NULL);
+    if (a->spec.growing) {
+        snprintf(buf, sizeof buf, "(%d growing by the physics, not shown)", a->spec.growing);
+        field(fl, &n, 2, buf, NULL);
+    }
     fit_line(scr, row0 + rows - 1, col0, cols, outside ? SW_STYLE_WARN : SW_STYLE_STATUS, fl, n);
 }
 
@@ -388,6 +428,8 @@ static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
         fit_line(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, f, n);
     }
     int st, n = meter_fields(a, f, &st);
+    /* the run's state: PAUSED said whenever it is (a key that restarts the
+     * run keeps it); "running" only where it costs the meter nothing */
     if (a->paused)
         field(f, &n, 10, "PAUSED", NULL);
     else if (a->slowmo > 1.05) {
@@ -395,7 +437,8 @@ static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
         snprintf(b, sizeof b, "slow motion x%.1f", a->slowmo);
         snprintf(s, sizeof s, "slow x%.1f", a->slowmo);
         field(f, &n, 7, b, s);
-    }
+    } else if (!a->sims[0].blown)
+        field(f, &n, 1, "running", NULL);
     if (a->speed != 1) {
         char b[48];
         snprintf(b, sizeof b, "speed x%g", a->speed);
@@ -429,11 +472,12 @@ static int side_style(sw_side_kind kind)
     return kind >= 0 && kind < (int)(sizeof styles / sizeof styles[0]) ? styles[kind] : SW_STYLE_TEXT;
 }
 
-/* Lines first .. first + n - 1 of the pane from row on, scrolled with a
- * row that says there is more above or below. */
-static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int n)
+/* Lines off + first .. off + n - 1 of the pane from row on, scrolled with
+ * a row that says there is more above or below; returns first clamped. */
+static int draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col, int height, int width, int off,
+                         int n, int first)
 {
-    int more_above = 0, more_below = 0, body = height, first = side->scroll ? *side->scroll : 0;
+    int more_above = 0, more_below = 0, body = height;
     if (n <= height)
         first = 0; /* it all fits: nothing to scroll, no "more" rows */
     for (int pass = 0; pass < 3 && n > height; pass++) {
@@ -447,35 +491,77 @@ static void draw_scrolled(const sw_side *side, sw_screen *scr, int row, int col,
         if (first < 0)
             first = 0;
     }
-    if (side->scroll)
-        *side->scroll = first;
     int r = row;
     if (more_above)
         sw_screen_text(scr, r++, col, width, SW_STYLE_DIM, "(Up: more above)");
     for (int i = 0; first + i < n && i < body; i++)
-        sw_screen_text(scr, r++, col, width, side_style(side->kinds ? side->kinds[first + i] : SW_SIDE_TEXT),
-                       side->lines[first + i]);
+        sw_screen_text(scr, r++, col, width,
+                       side_style(side->kinds ? side->kinds[off + first + i] : SW_SIDE_TEXT),
+                       side->lines[off + first + i]);
     if (more_below)
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_DIM, "(Down: more below)");
+    return first;
 }
 
-/* The lesson pane: when it is too long, the text scrolls and what the page
- * asks (goals, question) stays at its foot, as long as that leaves the text
- * a third of the pane. */
+static void draw_lines(const sw_side *side, sw_screen *scr, int row, int col, int width, int from, int n)
+{
+    for (int i = 0; i < n; i++)
+        sw_screen_text(scr, row + i, col, width, side_style(side->kinds ? side->kinds[from + i] : SW_SIDE_TEXT),
+                       side->lines[from + i]);
+}
+
+/* The fewest rows the page's text keeps while the goals and the question
+ * stay in sight below it. */
+#define SIDE_TEXT_MIN 4
+
+/* The lesson pane: the lesson's and the page's titles stay at its top; when
+ * the rest is too long, the text scrolls and what the page asks (goals,
+ * question) stays at its foot. A question with no room beside the text
+ * folds into one line until the text has been read to its end (Down), and
+ * then takes the room it needs, the text's last lines above it; Up folds
+ * it again. Nothing here depends on a goal being met, so the pane moves
+ * only with a key. */
 static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int height, int width)
 {
-    int pinned = side->pinned;
-    if (side->nlines <= height || pinned <= 0 || pinned > height * 2 / 3) {
-        draw_scrolled(side, scr, row, col, height, width, side->nlines);
-        return;
-    }
-    int text = height - pinned;
-    draw_scrolled(side, scr, row, col, text, width, side->nlines - pinned);
-    for (int i = 0; i < pinned; i++) {
-        int k = side->nlines - pinned + i;
-        sw_screen_text(scr, row + text + i, col, width, side_style(side->kinds ? side->kinds[k] : SW_SIDE_TEXT),
-                       side->lines[k]);
-    }
+    int head = side->head < height - 2 ? side->head : 0;
+    draw_lines(side, scr, row, col, width, 0, head);
+    row += head;
+    height -= head;
+    int text = side->nlines - head - side->pinned, foot = side->pinned;
+    int first = side->scroll ? *side->scroll : 0, window_rows = height;
+    /* folded, the question leaves one line; the text's end is in sight from `open` on */
+    int kept = foot - side->fold, window = height - kept - 1;
+    int open = text <= window ? 1 : text - window + 1; /* (past the top, a row says "more above") */
+    if (text + foot <= height || foot <= 0)
+        first = draw_scrolled(side, scr, row, col, height, width, head, text + foot, first);
+    else if (side->fold > 0 && window >= SIDE_TEXT_MIN && first < open) {
+        window_rows = window;
+        first = draw_scrolled(side, scr, row, col, window, width, head, text, first);
+        draw_lines(side, scr, row + window, col, width, side->nlines - foot, kept);
+        static const char *const stub[] = { "(a question below: Down; o: wide)", "(a question below: Down)",
+                                            "(question: Down)" };
+        int k = 0;
+        while (k < 2 && sw_text_cells(stub[k]) > width)
+            k++;
+        sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_TITLE, stub[k]);
+    } else if (foot <= height - (side->fold > 0 ? 1 : SIDE_TEXT_MIN)) {
+        /* the foot whole at the bottom, the text (its end, once a question opened) above it */
+        window_rows = side->fold > 0 ? window : height - foot;
+        int shown = draw_scrolled(side, scr, row, col, height - foot, width, head, text,
+                                  side->fold > 0 ? text : first);
+        draw_lines(side, scr, row + height - foot, col, width, side->nlines - foot, foot);
+        first = side->fold > 0 ? open : shown;
+    } else if (side->fold > 0 && window >= SIDE_TEXT_MIN) {
+        /* the foot alone is taller than the pane: it scrolls on from where the fold opened */
+        first = open + draw_scrolled(side, scr, row, col, height, width, side->nlines - foot, foot, first - open);
+    } else
+        first = draw_scrolled(side, scr, row, col, height, width, head, text + foot, first); /* as one */
+    if (side->scroll)
+        *side->scroll = first;
+    /* a press moves the text's rows less the two "more" lines and one
+     * line read before, so nothing is skipped */
+    if (side->step)
+        *side->step = window_rows - 3;
 }
 
 /* ---- the frame ---------------------------------------------------------------------- */
@@ -492,6 +578,14 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     }
     int bottom = status_block(a, side, scr, 1);
     int pic_rows = scr->rows - bottom, pic_cols = scr->cols, side_w = 0;
+    if (side && side->nlines > 0 && side->full) {
+        /* the reading mode: the text over the whole width, no picture */
+        draw_side(side, scr, 0, 1, pic_rows, scr->cols - 2);
+        status_block(a, side, scr, 0);
+        if (a->help)
+            sw_draw_help(a, scr, 0, 0, pic_rows, scr->cols, 1);
+        return;
+    }
     if (side && side->nlines > 0) {
         side_w = side->width > 0 ? side->width : scr->cols / 2;
         if (scr->cols - side_w - 1 < 30)
@@ -519,13 +613,24 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         draw_phase(f, a, scr, 0, 0, view_rows, pic_cols);
     else if (a->view == SW_VIEW_REGION)
         draw_region(f, a, scr, 0, 0, view_rows, pic_cols);
-    else if (a->compare && a->lanes && a->nsims > 1)
+    else if (a->compare && a->lanes && a->nsims > 1 && lanes_readable(a, view_rows, pic_cols))
         draw_lanes(f, a, scr, 0, 0, view_rows, pic_cols);
     else {
         draw_sims(f, a, &f->canvas, pic_cols, view_rows, 0, a->nsims - 1);
         sw_screen_blit(scr, &f->canvas, 0, 0);
         if (a->sims[0].blown)
             blown_banner(scr, &a->sims[0], 0, 0, pic_cols, view_rows);
+    }
+    if (a->view == SW_VIEW_SCENE && !a->stages_open && a->compare && a->lanes && a->nsims > 1 &&
+        !lanes_readable(a, view_rows, pic_cols)) {
+        /* lanes too small to read: overlaid, and said */
+        sw_field fl[1];
+        int n = 0;
+        char buf[96];
+        snprintf(buf, sizeof buf, "(lanes need %d columns or %d rows each: overlaid here)", LANE_MIN_COLS,
+                 LANE_MIN_ROWS);
+        field(fl, &n, 1, buf, "(lanes: no room, overlaid)");
+        fit_line(scr, 0, 0, pic_cols, SW_STYLE_DIM, fl, n);
     }
     if (graph_h > 0)
         sw_draw_graph(f, a, scr, view_rows, 0, graph_h, pic_cols);
@@ -543,7 +648,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
         a->help = 0; /* past the last page: closed */
     /* the work-precision plot stays in the picture's place beside a lesson:
      * the page's text (its table) is what the plot is read against */
-    int overlay = (a->workprec && a->bench && side_w == 0) || a->panel || a->help;
+    /* (the parameter panel stays over the picture: the goals beside it
+     * say what the values are for) */
+    int overlay = (a->workprec && a->bench && side_w == 0) || (a->panel && side_w == 0) || a->help;
     /* The pane starts two columns right of the picture (a single blank
      * column reads as a space between words); its text is wrapped to one
      * column less than its width. An overlay that reaches over the pane
@@ -554,7 +661,7 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     if (a->workprec && a->bench)
         sw_draw_workprec(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : scr->cols);
     if (a->panel)
-        sw_draw_panel(a, scr, 0, 0, pic_rows, over_cols);
+        sw_draw_panel(a, scr, 0, 0, pic_rows, side_w > 0 ? pic_cols : over_cols);
     if (a->help)
         sw_draw_help(a, scr, 0, 0, pic_rows, over_cols, side != NULL);
 }

@@ -68,28 +68,74 @@ void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const 
 
 /* ---- the graph ---------------------------------------------------------------- */
 
+/* The graph's value range: every run's, unless one run reaches more than
+ * four times as far as all the others together (Euler's +1440 % beside
+ * symplectic Euler's 3 % and backward Euler's -96 %): then the others'
+ * (with 0), so that they do not share a row, and *off is the run left to
+ * run past the edge (its farthest value in *far); -1 when none. */
+static void graph_range(const sw_app *a, double *vmin, double *vmax, int *off, double *far)
+{
+    double lo[SW_APP_SIMS], hi[SW_APP_SIMS];
+    *off = -1;
+    *far = 0;
+    *vmin = INFINITY, *vmax = -INFINITY;
+    for (int i = 0; i < a->nsims; i++) {
+        lo[i] = INFINITY, hi[i] = -INFINITY;
+        for (int k = 0; k < a->series[i].len; k++) {
+            double t = a->series[i].t[k], v = a->series[i].v[k];
+            if (isfinite(t) && isfinite(v))
+                lo[i] = fmin(lo[i], v), hi[i] = fmax(hi[i], v);
+        }
+        *vmin = fmin(*vmin, lo[i]), *vmax = fmax(*vmax, hi[i]);
+    }
+    if (a->nsims < 2)
+        return;
+    int big = 0;
+    for (int i = 1; i < a->nsims; i++)
+        if (fmax(fabs(lo[i]), fabs(hi[i])) > fmax(fabs(lo[big]), fabs(hi[big])))
+            big = i;
+    double rlo = 0, rhi = 0;
+    for (int i = 0; i < a->nsims; i++)
+        if (i != big && lo[i] <= hi[i])
+            rlo = fmin(rlo, lo[i]), rhi = fmax(rhi, hi[i]);
+    if (rhi > rlo && *vmax - *vmin > 4 * (rhi - rlo)) {
+        *off = big;
+        *far = fabs(hi[big]) > fabs(lo[big]) ? hi[big] : lo[big];
+        *vmin = rlo, *vmax = rhi;
+    }
+}
+
 void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int height, int width)
 {
     char err[SW_ERRLEN];
-    double tmin = INFINITY, tmax = -INFINITY, vmin = INFINITY, vmax = -INFINITY;
+    double tmin = INFINITY, tmax = -INFINITY, vmin, vmax, far;
+    int off;
     for (int i = 0; i < a->nsims; i++)
         for (int k = 0; k < a->series[i].len; k++) {
             double t = a->series[i].t[k], v = a->series[i].v[k];
-            if (!isfinite(t) || !isfinite(v))
-                continue;
-            tmin = fmin(tmin, t), tmax = fmax(tmax, t);
-            vmin = fmin(vmin, v), vmax = fmax(vmax, v);
+            if (isfinite(t) && isfinite(v))
+                tmin = fmin(tmin, t), tmax = fmax(tmax, t);
         }
+    graph_range(a, &vmin, &vmax, &off, &far);
     int has_energy = isfinite(sw_sim_energy_drift(&a->sims[0]));
-    sw_field title[2] = {
-        { "", "", 2 }, { "", "", 1 },
+    sw_field title[4] = {
+        { "", "", 5 }, { "", "", 2 }, { "", "", 1 }, { "", "", 4 },
     };
+    if (off >= 0) {
+        snprintf(title[3].full, sizeof title[3].full, "%c runs past the %s, to %.3g", (char)sim_glyph[off],
+                 far > 0 ? "top" : "bottom", far);
+        snprintf(title[3].brief, sizeof title[3].brief, "%c %s%.3g", (char)sim_glyph[off], far > 0 ? "^" : "v", far);
+    }
     snprintf(title[0].full, sizeof title[0].full, "%s", has_energy ? "energy drift (%)" : "error");
     snprintf(title[1].full, sizeof title[1].full, "against time t (s)");
     snprintf(title[1].brief, sizeof title[1].brief, "against t (s)");
+    /* both axes are linear; the dashed row, when the values straddle it, is 0 */
+    int zero_line = vmin < 0 && vmax > 0;
+    snprintf(title[2].full, sizeof title[2].full, "%s", zero_line ? "(linear axes, --- is 0)" : "(linear axes)");
+    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "");
     char line[SW_TEXT_LINE];
     sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
-    sw_text_fit(line, sizeof line, width, title, 2, " ");
+    sw_text_fit(line, sizeof line, width, title, off >= 0 ? 4 : 3, " ");
     sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, line);
     if (!(tmax > tmin)) {
         if (width >= 24)
@@ -178,12 +224,12 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     sw_screen_blit(scr, &f->plot, row + 1, col + lw + 1);
     if (merged) {
         /* the title line again, with what the merged glyph means */
-        sw_field t3[3] = { title[0], title[1], { "", "", 3 } };
+        sw_field t3[4] = { title[0], title[1], { "", "", 3 }, title[3] };
         snprintf(t3[2].full, sizeof t3[2].full, "%c: runs on one another", SW_GLYPH_MERGED);
         snprintf(t3[2].brief, sizeof t3[2].brief, "%c: overlap", SW_GLYPH_MERGED);
         t3[2].prio = 3;
         sw_screen_fill(scr, row, col, 1, width, SW_STYLE_TEXT);
-        sw_text_fit(line, sizeof line, width, t3, 3, " ");
+        sw_text_fit(line, sizeof line, width, t3, off >= 0 ? 4 : 3, " ");
         sw_screen_text(scr, row, col, width, SW_STYLE_TITLE, line);
     }
 }
@@ -227,8 +273,12 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
     static const struct { const char *keys, *help; } terms[] = {
         { "", "energy: change since t=0, % of the energy of the motion (above the resting state; an orbit: of |E(0)|)" },
         { "", "error: largest |y - true y| over positions and velocities" },
-        { "", "|L|dt: stiffest eigenvalue of the linearisation, times dt" },
-        { "", "x.../step: growth per step of the worst mode (1: neutral)" },
+        { "", "stiffness·dt: the fastest rate |λ| of the system (an eigenvalue of its linearisation, the "
+              "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
+        { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
+        { "", "growth x.../step: what one step does to the fastest motion (1: neutral, below: decays, above: "
+              "grows)" },
+        { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "
                         "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },
     };

@@ -136,7 +136,45 @@ static void draw_path(sw_canvas *c, const double r[4], const double *q, const do
 }
 
 static const uint32_t sim_glyph[SW_APP_SIMS] = { SW_GLYPH_MAIN, SW_GLYPH_COMPARE1, SW_GLYPH_COMPARE2 };
+
+uint32_t sw_phase_path_glyph(int i)
+{
+    /* the main run's path is dotted, its present point 'o'; the others
+     * draw both with their glyph */
+    return i == 0 ? '.' : sim_glyph[i];
+}
 static const int sim_style[SW_APP_SIMS] = { SW_STYLE_MAIN, SW_STYLE_COMPARE1, SW_STYLE_COMPARE2 };
+
+/* Write text at (col, row) when every cell under it is blank or an axis
+ * stroke (never over a path or a mark). */
+static void name_at(sw_canvas *c, int col, int row, const char *text)
+{
+    int len = (int)strlen(text);
+    if (row < 0 || row >= c->rows || col < 0 || col + len > c->cols)
+        return;
+    for (int k = 0; k < len; k++) {
+        uint32_t g = sw_canvas_codepoint(c, col + k, row);
+        if (g != ' ' && g != '-' && g != '|')
+            return;
+    }
+    sw_canvas_text(c, col, row, text, SW_STYLE_WALL);
+}
+
+/* Which axis is which: the coordinate's name at the right end of the
+ * horizontal axis (or the bottom row), its rate's at the top of the
+ * vertical one (or the left column), each with the value at that end. */
+static void axis_names(sw_canvas *c, const sw_app *a, const double r[4], double x0, double y0)
+{
+    const char *q, *qu, *v, *vu;
+    sw_phase_names(a->phase_coord, &q, &qu, &v, &vu);
+    char lab[48];
+    int row = r[2] < 0 && r[3] > 0 ? c->rows - 1 - (int)floor(y0 / 2.0) : c->rows - 1;
+    int len = snprintf(lab, sizeof lab, "%s %.3g >", q, r[1]);
+    name_at(c, c->cols - len, row - 1 >= 0 ? row - 1 : row, lab);
+    int col = r[0] < 0 && r[1] > 0 ? (int)floor(x0) : 0;
+    snprintf(lab, sizeof lab, "^ %s %.3g", v, r[3]);
+    name_at(c, col + 1 < c->cols ? col + 1 : col, 0, lab);
+}
 
 int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
 {
@@ -169,10 +207,18 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
         sw_canvas_line(c, 0, y0, c->cols, y0, '-', SW_STYLE_WALL);
     if (r[0] < 0 && r[1] > 0)
         sw_canvas_line(c, x0, 0, x0, 2.0 * c->rows, '|', SW_STYLE_WALL);
-    /* the runs' recent paths (the last 60% of a report time: a few turns,
-     * so each method's present orbit reads apart from its past), the main
-     * one last; the exact orbit on top, so it is never hidden; then where
-     * each run is now */
+    /* the exact solution first, then the runs' recent paths over it (the
+     * last 60% of a report time: a few turns, so each method's present
+     * orbit reads apart from its past), the main one last: a run that
+     * keeps to the exact curve, or near it, is seen, not hidden under it
+     * (issue 37: symplectic Euler's closed curve was); then where each run
+     * is now */
+    if (ph->n > 1)
+        draw_path(c, r, ph->q, ph->v, NULL, ph->n, 0, SW_PHASE_EXACT, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
+    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
+    if (!exact && ref->count > 1)
+        draw_path(c, r, ref->q, ref->v, NULL, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
+                  SW_PHASE_HIST, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     double since = a->sims[0].t - 0.6 * a->scene->duration;
     double now[2 * SW_APP_SIMS];
     int left = 0;
@@ -180,14 +226,8 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
         const sw_phase_hist *h = &a->phase[i];
         int start = (h->head - h->count + SW_PHASE_HIST) % SW_PHASE_HIST;
         draw_path(c, r, h->q, h->v, h->t, h->count, start, SW_PHASE_HIST, since,
-                  c->mode == SW_CANVAS_BRAILLE ? 0 : i == 0 ? '.' : sim_glyph[i], sim_style[i]);
+                  c->mode == SW_CANVAS_BRAILLE ? 0 : sw_phase_path_glyph(i), sim_style[i]);
     }
-    if (ph->n > 1)
-        draw_path(c, r, ph->q, ph->v, NULL, ph->n, 0, SW_PHASE_EXACT, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
-    const sw_phase_hist *ref = &a->phase[SW_APP_SIMS];
-    if (!exact && ref->count > 1)
-        draw_path(c, r, ref->q, ref->v, NULL, ref->count, (ref->head - ref->count + SW_PHASE_HIST) % SW_PHASE_HIST,
-                  SW_PHASE_HIST, -INFINITY, SW_GLYPH_GHOST, SW_STYLE_GHOST);
     for (int i = a->nsims - 1; i >= 0; i--) {
         const sw_phase_hist *h = &a->phase[i];
         now[2 * i] = now[2 * i + 1] = NAN;
@@ -199,5 +239,6 @@ int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode)
     }
     for (int i = 0; i < a->nsims; i++)
         left += sw_canvas_offscreen(c, &now[2 * i], 1, NULL, sim_style[i], 0);
+    axis_names(c, a, r, x0, y0);
     return left;
 }

@@ -30,6 +30,9 @@ void sw_phase_view_free(sw_phase_view *ph);
 /* Draw the view of app a onto canvas c (sized by the caller). Returns the
  * number of sims whose path left the frame (marked at its edge). */
 int sw_phase_draw(sw_phase_view *ph, sw_canvas *c, sw_app *a, int unicode);
+/* The glyph run i's path is drawn with in ASCII ('.' for the main run,
+ * whose present point is its own glyph), for the legend to show. */
+uint32_t sw_phase_path_glyph(int i);
 /* The range shown (after a draw): q from *q0 to *q1, v from *v0 to *v1. */
 void sw_phase_range(const sw_phase_view *ph, const sw_app *a, double *q0, double *q1, double *v0, double *v1);
 

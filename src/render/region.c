@@ -25,18 +25,6 @@ void sw_region_free(sw_region *r)
     memset(r, 0, sizeof *r);
 }
 
-double sw_region_growth(sw_truth_work *w, const sw_integrator *m, int order, double x, double y)
-{
-    sw_spectrum sp;
-    memset(&sp, 0, sizeof sp);
-    sp.order = order;
-    sp.n = 1;
-    sp.complete = 1;
-    sp.mode[0] = (sw_mode){ x, y, x, -y };
-    sp.largest = hypot(x, y);
-    return sw_truth_growth_with(w, m, &sp, 1.0, NULL);
-}
-
 static int stable_at(sw_region *r, const sw_integrator *m, int order, double x, double y)
 {
     return sw_region_growth(r->work, m, order, x, y) <= 1 + SW_TRUTH_NEUTRAL;
@@ -142,6 +130,10 @@ static int label(sw_canvas *c, taken *t, int col, int row, const char *text)
     int len = (int)strlen(text);
     if (row < 0 || row >= c->rows || col < 0 || col + len > c->cols)
         return 0;
+    /* never over the picture: a label only where the canvas is blank */
+    for (int k = 0; k < len; k++)
+        if (sw_canvas_codepoint(c, col + k, row) != ' ')
+            return 0;
     for (int k = 0; k < t->n; k++)
         if (t->row[k] == row && t->c0[k] <= col + len && t->c1[k] >= col - 1)
             return 0;
@@ -150,8 +142,24 @@ static int label(sw_canvas *c, taken *t, int col, int row, const char *text)
     return 1;
 }
 
-static void axes(sw_canvas *c, taken *t)
+/* Write text into the tick row ticks (cols wide) at col, when it fits and
+ * keeps a blank column from what is there. */
+static void tick_label(char *ticks, int cols, int col, const char *text)
 {
+    int len = (int)strlen(text);
+    if (col < 0 || col + len > cols)
+        return;
+    for (int k = col - 1; k <= col + len; k++)
+        if (k >= 0 && k < cols && ticks[k] != ' ')
+            return;
+    memcpy(ticks + col, text, (size_t)len);
+}
+
+static void axes(sw_canvas *c, taken *t, char *ticks, size_t tickslen)
+{
+    int tcols = c->cols < (int)tickslen - 1 ? c->cols : (int)tickslen - 1;
+    memset(ticks, ' ', (size_t)tcols);
+    ticks[tcols] = '\0';
     sw_view vis = sw_canvas_visible(c);
     int oc, orow, have_origin = 0;
     /* the axes as glyphs in either mode (a Braille line would blur into the shading) */
@@ -165,9 +173,8 @@ static void axes(sw_canvas *c, taken *t)
     }
     int col, row;
     /* the axes' names first: "Im" left of the axis, clear of the tick labels right of it */
-    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && col >= 2 && c->rows > 2 &&
-        label(c, t, col - 2, 1, "Im"))
-        take(t, 1, col, col);
+    if (sw_canvas_world_to_cell(c, 0, vis.ymax - c->scale, &col, &row) && c->rows > 2)
+        label(c, t, col + 1, 0, "Im");
     if (sw_canvas_world_to_cell(c, vis.xmax - c->scale, 0, &col, &row) && row > 0)
         label(c, t, c->cols - 2, row - 1, "Re");
     /* unit ticks, labelled where there is room */
@@ -192,6 +199,8 @@ static void axes(sw_canvas *c, taken *t)
         }
     }
     int n = 0;
+    if (have_origin)
+        tick_label(ticks, tcols, oc, "0");
     for (double v = step; v < vis.xmax && v / step < 20; v += step) {
         char lab[16];
         int len;
@@ -199,10 +208,14 @@ static void axes(sw_canvas *c, taken *t)
         for (int sgn = -1; sgn <= 1; sgn += 2)
             if (sw_canvas_world_to_cell(c, sgn * v, 0, &col, &row))
                 sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
-        /* the negative real axis is where the regions lie: label it below */
+        /* the real axis's labels under the picture, in their own row (the
+         * regions lie on the negative side, where the shading is) */
         len = snprintf(lab, sizeof lab, "%g", -v);
-        if (n % every == 0 && sw_canvas_world_to_cell(c, -v, 0, &col, &row) && row + 1 < c->rows)
-            label(c, t, col - len / 2, row + 1, lab);
+        if (n % every == 0 && sw_canvas_world_to_cell(c, -v, 0, &col, &row))
+            tick_label(ticks, tcols, col - len / 2, lab);
+        len = snprintf(lab, sizeof lab, "%g", v);
+        if (n % every == 0 && sw_canvas_world_to_cell(c, v, 0, &col, &row))
+            tick_label(ticks, tcols, col - len / 2, lab);
         /* (the top and bottom rows are kept for the arrows of marks beyond them) */
         if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row) && row >= 1 && row <= c->rows - 2) {
             sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
@@ -212,17 +225,6 @@ static void axes(sw_canvas *c, taken *t)
     }
 }
 
-/* The axes, and the scale said when it is chosen for the marks (it
- * stays while Δt changes, so the marks' moves are true). */
-static void axes_scaled(sw_canvas *c, taken *t, double half, double reach)
-{
-    axes(c, t);
-    if (half < reach) {
-        char lab[64];
-        snprintf(lab, sizeof lab, "fixed scale +-%.2g (z zooms out)", half);
-        label(c, t, 0, 0, lab);
-    }
-}
 
 double sw_region_scale(double reach, double largest)
 {
@@ -233,13 +235,36 @@ double sw_region_scale(double reach, double largest)
     return fmax(1.25 * largest, reach / 1000);
 }
 
-/* The largest |Δt·λ| over the modes (0: none). */
-static double largest_mark(const sw_app *a)
+/* Each mark's edge on its ray, for method m (the directions of λ and μ
+ * of every mode; Δt only scales along them). A plugin's would cost a
+ * sandboxed child per point: none (NaN). */
+static void ray_edges(sw_region *r, const sw_app *a, const sw_integrator *m, int order)
+{
+    if (!a->have_spec || (r->edge_method == m && r->edge_t == a->spec_t && r->edge_n == a->spec.n))
+        return;
+    for (int k = 0; k < a->spec.n; k++) {
+        const sw_mode *md = &a->spec.mode[k];
+        int plugin = (m->flags & SW_PLUGIN) != 0;
+        r->edge[2 * k] = plugin ? NAN : sw_region_edge_on_ray(r->work, m, order, md->re, md->im);
+        r->edge[2 * k + 1] = plugin ? NAN : sw_region_edge_on_ray(r->work, m, order, md->pre, md->pim);
+    }
+    r->edge_method = m;
+    r->edge_t = a->spec_t;
+    r->edge_n = a->spec.n;
+}
+
+/* The largest |Δt·λ| over the modes, or the farthest edge on their rays
+ * when it lies beyond them (0: none), so that the view chosen holds where
+ * the marks cross the edge. */
+static double largest_mark(const sw_app *a, const sw_region *r)
 {
     double largest = 0;
     for (int k = 0; a->have_spec && k < a->spec.n; k++) {
         const sw_mode *md = &a->spec.mode[k];
         largest = fmax(largest, fmax(hypot(md->re, md->im), hypot(md->pre, md->pim)) * a->dt);
+        for (int j = 0; j < 2; j++)
+            if (isfinite(r->edge[2 * k + j]) && r->edge[2 * k + j] > largest)
+                largest = r->edge[2 * k + j];
     }
     return largest;
 }
@@ -250,6 +275,9 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     const sw_integrator *m = a->sims[0].method;
     *worst = NAN;
     *outside = *shown = 0;
+    r->ticks[0] = r->gauge[0] = '\0';
+    r->ratio = NAN;
+    r->beyond = 0;
     if (m->flags & SW_ADAPTIVE) {
         snprintf(why, whylen, "%s chooses its own steps, so it has no fixed stability region: pick a fixed-step "
                  "method (i)", m->name);
@@ -272,28 +300,31 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         r->extent_order = order;
     }
     double reach = r->extent > 0 ? fmax(3.0, 1.15 * r->extent) : 3.0;
-    double largest = largest_mark(a);
-    /* a mark beyond the view at zoom 1 (Δt doubled past it): the view
-     * widens once, to the whole region and the marks, and stays there */
-    int beyond = r->fit_valid && largest > fmin(r->fit * c->cols / 2, r->fit * c->rows);
+    ray_edges(r, a, m, order);
+    double largest = largest_mark(a, r);
     if (!r->fit_valid || r->fit_gen != a->view_gen || r->fit_method != m || r->fit_order != order ||
-        r->fit_cols != c->cols || beyond) {
+        r->fit_cols != c->cols) {
         /* world units per column, as the canvas fits a square ±half: kept
-         * while the page is open, so that a row more or less for the text
-         * below moves no axis */
-        double fit_half = beyond ? fmax(reach, 1.25 * largest) : sw_region_scale(reach, largest);
+         * while the page is open, whatever Δt does, so that a row more or
+         * less for the text below moves no axis and a mark's move is true */
+        double fit_half = sw_region_scale(reach, largest);
+        r->fit_half = fit_half;
         r->fit = fmax(2 * fit_half / c->cols, fit_half / c->rows);
         r->fit_gen = a->view_gen;
         r->fit_method = m;
         r->fit_order = order;
         r->fit_cols = c->cols;
+        r->fit_rows = c->rows;
         r->fit_valid = 1;
     }
-    double s = r->fit * a->zoom, half = fmin(s * c->cols / 2, s * c->rows);
+    double s = r->fit * a->zoom;
     /* the origin at a cell's centre (a row is two columns tall): the marks
      * on either side of an axis land in cells that mirror each other */
-    double sx = c->cols % 2 == 0 ? s / 2 : 0, sy = c->rows % 2 == 0 ? s : 0;
-    sw_view v = { -s * c->cols / 2 + sx, s * c->cols / 2 + sx, -s * c->rows + sy, s * c->rows + sy };
+    double sx = c->cols % 2 == 0 ? s / 2 : 0, sy = r->fit_rows % 2 == 0 ? s : 0;
+    /* the top as for the rows the scale was chosen with: a row more or less
+     * below (a message line in the status block) moves no axis */
+    double top = s * r->fit_rows + sy;
+    sw_view v = { -s * c->cols / 2 + sx, s * c->cols / 2 + sx, top - 2 * s * c->rows, top };
     char err[SW_ERRLEN];
     sw_canvas_set_view(c, &v, err, sizeof err);
     int dots = c->mode == SW_CANVAS_BRAILLE;
@@ -337,13 +368,13 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     }
     taken t = { 0 };
     if (!a->have_spec) {
-        axes_scaled(c, &t, half, reach * a->zoom);
+        axes(c, &t, r->ticks, sizeof r->ticks);
         snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
         return 0;
     }
     if (a->spec.n == 0) {
         /* the meter's "x1 neutral" and this view say the same thing */
-        axes_scaled(c, &t, half, reach * a->zoom);
+        axes(c, &t, r->ticks, sizeof r->ticks);
         if (a->spec.growing)
             snprintf(why, whylen, "nothing to mark: %s's %d mode%s grow%s by the physics (Re λ > 0), not by the "
                      "method", a->scene->name, a->spec.growing, a->spec.growing == 1 ? "" : "s",
@@ -389,7 +420,7 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         if (sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
             take(&t, row, col, col);
     }
-    axes_scaled(c, &t, half, reach * a->zoom);
+    axes(c, &t, r->ticks, sizeof r->ticks);
     for (int k = 0; k < nm; k++) {
         int col, row;
         *outside += grows[k];
@@ -401,7 +432,31 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         sw_canvas_put(c, col, row, grows[k] ? 'X' : '*', grows[k] ? SW_STYLE_WARN : SW_STYLE_MAIN);
         (*shown)++;
     }
-    sw_canvas_offscreen(c, xy, nm, NULL, SW_STYLE_WARN, 1);
+    /* marks past the view: arrows at its edge, their distance said under
+     * the picture (a number here would be written over the shading) */
+    sw_canvas_offscreen(c, xy, nm, NULL, SW_STYLE_WARN, 0);
+    sw_view vis = sw_canvas_visible(c);
+    r->beyond = 0;
+    for (int k = 0; k < nm; k++) {
+        double x = xy[2 * k], y = xy[2 * k + 1];
+        if (isfinite(x) && isfinite(y) && !(x >= vis.xmin && x < vis.xmax && y > vis.ymin && y <= vis.ymax))
+            r->beyond = fmax(r->beyond, hypot(x, y));
+    }
+    /* the worst mark against its edge, along its ray */
+    r->ratio = NAN;
+    r->ratio_grows = 0;
+    for (int k = 0; k < nm; k++) {
+        double e = r->edge[k], d = hypot(xy[2 * k], xy[2 * k + 1]);
+        double q = e == 0 ? INFINITY : isinf(e) ? 0 : d / e;
+        if (!isnan(q) && (isnan(r->ratio) || q > r->ratio)) {
+            r->ratio = q;
+            r->ratio_grows = grows[k];
+        }
+    }
+    if (isnan(r->ratio))
+        r->gauge[0] = '\0';
+    else
+        sw_region_gauge(r->gauge, sizeof r->gauge, c->cols, r->ratio, r->ratio_grows);
     *worst = rho_max;
     why[0] = '\0';
     return 0;

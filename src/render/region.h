@@ -30,22 +30,38 @@ typedef struct sw_region {
     double marks_dt, marks_t;
     int marks_n;
     double marks_rho[SW_TRUTH_MODES];
+    /* each mark's edge on its ray (|Δt·λ| where the ray leaves the region,
+     * 0: unstable at once, inf: never), asked again when the method or
+     * the spectrum change, not Δt (the ray's direction does not) */
+    const sw_integrator *edge_method;
+    double edge_t;
+    int edge_n;
+    double edge[2 * SW_TRUTH_MODES];
+    /* what the draw leaves for the lines under the picture: the real axis's
+     * tick labels, column by column (never over the shading), and the
+     * worst mark against its edge on its ray (sw_region_gauge) */
+    char ticks[256];
+    char gauge[256];
+    double ratio;              /* the worst mark's |Δt·λ| over its edge's (NaN: no mark) */
+    int ratio_grows;
+    double beyond;             /* the farthest mark past the view's edge, |Δt·λ| (0: none) */
     /* the scale, fixed while the view is open on a page: chosen when the
      * view opens, a page is entered or the method changes, not when Δt does */
     double fit;                /* units of Δt·λ per column at zoom 1 */
+    double fit_half;           /* the half span it was chosen for (the scale said) */
     unsigned fit_gen;          /* the app's view_gen it was chosen for */
     const sw_integrator *fit_method;
-    int fit_order, fit_cols, fit_valid;
+    int fit_order, fit_cols, fit_rows, fit_valid;
 } sw_region;
 
 /* The half span the view shows (zoom 1) for a region reaching reach (its
  * default half span) with marks as far as largest = max |Δt·λ| from the
- * origin: the whole region and the marks when the marks are as large as
- * half of it (max(reach, 1.25 × largest)), else 1.25 × largest, so that
- * the marks fill the view and each halving of Δt moves them visibly (at
- * least reach / 1000; reach when no mark). The view chosen stays while Δt
- * changes, until a mark would leave it: then it widens once to
- * max(reach, 1.25 × largest). */
+ * origin (or their edges on their rays, when farther): the whole region and
+ * the marks when the marks are as large as half of it (max(reach, 1.25 ×
+ * largest)), else 1.25 × largest, so that the marks fill the view and each
+ * halving of Δt moves them visibly (at least reach / 1000; reach when no
+ * mark). The view chosen stays for the page, whatever Δt does: a mark
+ * that leaves it is an arrow at the edge, and z zooms out. */
 double sw_region_scale(double reach, double largest);
 
 /* Seconds a draw may spend shading a plugin's region (each new mode is a
@@ -54,6 +70,17 @@ double sw_region_scale(double reach, double largest);
 #define SW_REGION_BUDGET 0.1
 
 void sw_region_free(sw_region *r);
+/* How far the ray from the origin through (ux, uy) stays in method m's
+ * region for a system of this order: the largest r with growth <= 1 before
+ * the first unstable point (to 1e-9 relative); 0 when unstable at once,
+ * INFINITY when stable out to 100 (an implicit method). */
+double sw_region_edge_on_ray(sw_truth_work *w, const sw_integrator *m, int order, double ux, double uy);
+/* The line under the picture, width columns: "in ::::|--X-- out 5x", a
+ * mark against its ray's edge on a log scale, the edge in the middle and
+ * each halving of the ratio (of Δt) a fixed notch; X when the mark grows,
+ * '*' when not; the ratio said at the end ("always out" for an edge at
+ * 0, "always in" for an edge never reached: ratio inf or 0). */
+void sw_region_gauge(char *out, size_t len, int width, double ratio, int grows);
 /* The growth per step of method m at z = x + iy on a mode of a system of
  * this order (x'' = 2x·q' - |z|²q for order 2: roots z and its conjugate),
  * through workspace w; NaN when the step fails. */

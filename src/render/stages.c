@@ -108,18 +108,57 @@ static void draw_arrow(sw_canvas *c, const arrow *a, int unicode)
         return;
     if (moves)
         sw_canvas_put(c, c1, r1, head_glyph(a, unicode), a->style);
-    /* the label beside the tip, on the side the arrow points to, where it fits */
-    int len = (int)strlen(a->label), right = a->x1 >= a->x0;
-    int col = right ? c1 + 1 : c1 - len;
-    if (col < 0 || col + len > c->cols)
-        col = right ? c1 - len : c1 + 1;
-    if (col >= 0 && col + len <= c->cols)
-        sw_canvas_text(c, col, r1, a->label, a->style);
 }
 
-/* The formula, the current line lit (a '>' in front where colour is not seen). */
+/* Whether cells col .. col + len - 1 of row may take a label: on the
+ * canvas, and holding nothing but blanks and the lines' strokes (never a
+ * stage point, an arrow's head, a particle or another label). */
+static int label_room(const sw_canvas *c, int col, int row, int len)
+{
+    if (row < 0 || row >= c->rows || col < 0 || col + len > c->cols)
+        return 0;
+    for (int k = col - 1; k <= col + len; k++) {
+        uint32_t g = sw_canvas_codepoint(c, k, row);
+        int inside = k >= col && k < col + len;
+        /* inside: strokes may be covered; the cells either side: no letter to run into */
+        if (inside ? !(g == ' ' || g == '.' || g == '\'' || g == '\\' || g == '/' || g == '-' || g == '|')
+                   : ((g >= 'a' && g <= 'z') || (g >= 'A' && g <= 'Z') || (g >= '0' && g <= '9')))
+            return 0;
+    }
+    return 1;
+}
+
+/* The arrow's label beside its tip, after every mark is drawn: on the side
+ * the arrow points to, else the other, else the row above or below; never
+ * over a mark or another label (with no room it is left out: the message
+ * line names the stage). */
+static void arrow_label(sw_canvas *c, const arrow *a)
+{
+    int c1, r1, len = (int)strlen(a->label), right = a->x1 >= a->x0;
+    if (!len || !sw_canvas_world_to_cell(c, a->x1, a->y1, &c1, &r1))
+        return;
+    const int spots[6][2] = { { right ? c1 + 1 : c1 - len, r1 }, { right ? c1 - len : c1 + 1, r1 },
+                              { c1 - len / 2, r1 - 1 }, { c1 - len / 2, r1 + 1 },
+                              { right ? c1 + 1 : c1 - len, r1 - 1 }, { right ? c1 + 1 : c1 - len, r1 + 1 } };
+    for (int i = 0; i < 6; i++)
+        if (label_room(c, spots[i][0], spots[i][1], len)) {
+            sw_canvas_text(c, spots[i][0], spots[i][1], a->label, a->style);
+            return;
+        }
+}
+
+/* What the formula's letters are, under it: every script writes its step
+ * in y, f, h and k (the lesson that first shows the view has not named
+ * them yet). Beside the picture one per line, below it on one line. */
+static const char *const formula_key[] = { "y: the state", "f: its rate, y' = f(t, y)", "h: the step, dt",
+                                           "k: a slope, f at a point" };
+#define FORMULA_KEYS ((int)(sizeof formula_key / sizeof formula_key[0]))
+#define FORMULA_KEY_LINE "y state  f its rate  h = dt  k a slope"
+
+/* The formula, the current line lit (a '>' in front where colour is not
+ * seen), and its key under it. */
 static int draw_formula(sw_screen *scr, const sw_stage_script *sc, int lit, int upto, int row, int col, int width,
-                        int max)
+                        int max, int beside)
 {
     int used = 0;
     for (int i = 0; i < SW_STAGE_LINES && sc->lines[i] && used < max; i++) {
@@ -131,6 +170,12 @@ static int draw_formula(sw_screen *scr, const sw_stage_script *sc, int lit, int 
         else
             used += sw_screen_wrapped(scr, row + used, col, width, max - used, style, line);
     }
+    if (beside && used + 1 + FORMULA_KEYS <= max) {
+        used++;
+        for (int i = 0; i < FORMULA_KEYS; i++)
+            used += sw_screen_text(scr, row + used, col + 2, width - 2, SW_STYLE_DIM, formula_key[i]) > 0;
+    } else if (!beside && used < max)
+        used += sw_screen_wrapped(scr, row + used, col, width, max - used, SW_STYLE_DIM, FORMULA_KEY_LINE);
     return used;
 }
 
@@ -139,6 +184,8 @@ static int formula_width(const sw_stage_script *sc)
     int w = 0;
     for (int i = 0; i < SW_STAGE_LINES && sc->lines[i]; i++)
         w = w > (int)strlen(sc->lines[i]) + 2 ? w : (int)strlen(sc->lines[i]) + 2;
+    for (int i = 0; i < FORMULA_KEYS; i++)
+        w = w > (int)strlen(formula_key[i]) + 2 ? w : (int)strlen(formula_key[i]) + 2;
     return w;
 }
 
@@ -150,7 +197,7 @@ static int formula_rows(const sw_stage_script *sc, int width)
         snprintf(line, sizeof line, "> %s", sc->lines[i]);
         n += sw_text_wrap(line, width, lines, 4);
     }
-    return n;
+    return n + sw_text_wrap(FORMULA_KEY_LINE, width, lines, 4);
 }
 
 int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
@@ -216,10 +263,11 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         for (int j = 1; j < r->path_n; j++)
             sw_canvas_line(c, r->path[2 * j - 2], r->path[2 * j - 1], r->path[2 * j], r->path[2 * j + 1],
                            SW_GLYPH_GHOST, SW_STYLE_GHOST);
+        arrow truth = { 0, 0, 0, 0, 0, "", SW_STYLE_GHOST };
         if (r->path_n && cur->shape != SW_STAGE_SLOPE) {
             const double *end = &r->path[2 * (r->path_n - 1)];
-            arrow t = { end[0], end[1], end[0], end[1], SW_GLYPH_GHOST, "true", SW_STYLE_GHOST };
-            draw_arrow(c, &t, f->unicode);
+            truth = (arrow){ end[0], end[1], end[0], end[1], SW_GLYPH_GHOST, "true", SW_STYLE_GHOST };
+            draw_arrow(c, &truth, f->unicode);
         }
         /* earlier stages: their points only (a kick: dim), so the current
          * arrow stands alone; then where the current stage is taken from
@@ -241,12 +289,16 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         for (int i = 0; i < upto[shown]; i++) /* every stage point on top, numbered */
             if (ar[i].mark >= '1' && ar[i].mark <= '9')
                 sw_canvas_mark(c, ar[i].x0, ar[i].y0, ar[i].mark, i >= upto[shown - 1] ? SW_STYLE_WARN : SW_STYLE_COMPARE1);
+        /* the names last, where they cover nothing: the current stage's, then the true path's */
+        for (int i = upto[shown - 1]; i < upto[shown]; i++)
+            arrow_label(c, &ar[i]);
+        arrow_label(c, &truth);
         drawn = upto[shown];
         sw_screen_blit(scr, c, row0 + 1, col0);
     }
     if (side)
-        draw_formula(scr, sc, cur->line, cur->line, row0 + 1, col0 + ccols + 2, fw - 1, rows - 1);
+        draw_formula(scr, sc, cur->line, cur->line, row0 + 1, col0 + ccols + 2, fw - 1, rows - 1, 1);
     else
-        draw_formula(scr, sc, cur->line, cur->line, row0 + 1 + crows, col0, cols, frows);
+        draw_formula(scr, sc, cur->line, cur->line, row0 + 1 + crows, col0, cols, frows, 0);
     return drawn;
 }

@@ -88,6 +88,17 @@ keys() { tmux send-keys -t "$SESSION" "$@"; }
 # run CMD in the shell (typed, as a student would)
 type_cmd() { keys "$1" Enter; }
 
+# Down in the lesson pane (at most 6 presses) until the screen shows ERE $1:
+# the text scrolls, and a question folded under it opens at its end.
+read_down_to() {
+    for _ in 1 2 3 4 5 6; do
+        screen_has "$1" && return 0
+        keys Down
+        sleep 0.3
+    done
+    screen_has "$1"
+}
+
 # child_of PID: the first process whose parent is PID (from /proc/*/stat:
 # after the parenthesised name come the state, then the parent's pid).
 child_of() {

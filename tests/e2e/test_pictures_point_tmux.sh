@@ -20,23 +20,38 @@ printf '05-springs.lesson 2\n' > "$WORK/state/stepwise/progress"
 type_cmd "LC_ALL=C XDG_STATE_HOME=$WORK/state $STEPWISE lesson 5"
 wait_for 'Springs, damping, stiffness +\(page 3/7\)' || fail "lesson 5 did not open on page 3"
 keys s
-wait_for 'fixed scale' || fail "s did not show the region with its scale said"
-# "ROW:COL" of every mark (X or *) in the region's rows, and the axis
-marks() { picture | awk '/^(\* dt|X |all inside)/ { exit } NR >= 2 { for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
+wait_for 'scale \+-0.62 fixed' || fail "s did not show the region with its scale said"
+# "ROW:COL" of every mark (X or *) in the region's rows (down to the line
+# under the picture, which starts "in "), the axis, the numbers under it
+marks() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
     if (ch == "X" || ch == "*") printf "%d:%d ", NR, i } }'; }
 axis() { picture | awk '/^-+\+/ { row = NR } END { print row }'; }
-prev_marks=$(marks); prev_axis=$(axis)
-echo "dt=0.005: marks $prev_marks axis row $prev_axis"
+ticks() { picture | grep -E '^ *-0\.[0-9] +-0\.[0-9]' | sed 's/ *$//'; }
+# the line under the picture: the edge's column, the mark's, what it says
+gauge() { picture | awk '/^in [:|*X-]/ { print index($0, "|") " " (index($0, "X") ? index($0, "X") : index($0, "*")) " " $NF; exit }'; }
+prev_marks=$(marks); prev_axis=$(axis); prev_ticks=$(ticks)
+set -- $(gauge); edge=$1 prev_pos=$2
+echo "dt=0.005: marks $prev_marks axis row $prev_axis; under it: edge column $1, mark column $2, $3"
 [ -n "$prev_marks" ] || fail "no marks on the region view"
+[ -n "$prev_ticks" ] || fail "no numbers under the picture"
+[ "$3" = 5x ] && [ "$2" -gt "$1" ] || fail "at dt=0.005 the line under the picture does not show the mark out, 5x"
 for dt in 0.0025 0.00125 0.000625; do
     keys -
-    wait_for "dt x eigenvalue +dt=$dt" || fail "- did not halve dt to $dt"
+    wait_for "euler  dt=$dt " || fail "- did not halve dt to $dt"
     m=$(marks); ax=$(axis)
-    echo "dt=$dt: marks $m axis row $ax"
+    set -- $(gauge)
+    echo "dt=$dt: marks $m axis row $ax; under it: edge column $1, mark column $2, $3"
     [ -n "$m" ] || fail "no marks at dt=$dt"
     [ "$m" != "$prev_marks" ] || fail "the marks did not move when dt halved to $dt ($m)"
     [ "$ax" = "$prev_axis" ] || fail "the axis moved from row $prev_axis to $ax at dt=$dt"
-    prev_marks=$m
+    [ "$(ticks)" = "$prev_ticks" ] || fail "the scale's numbers changed at dt=$dt: [$(ticks)] was [$prev_ticks]"
+    [ "$1" = "$edge" ] || fail "the edge moved on the line under the picture at dt=$dt"
+    [ "$2" -lt "$prev_pos" ] || fail "the mark did not move towards the origin on its ray at dt=$dt"
+    case $dt in
+        0.000625) [ "$2" -lt "$1" ] && [ "$3" = 0.625x ] || fail "at dt=$dt the mark is not shown inside, 0.625x" ;;
+        *) [ "$2" -gt "$1" ] || fail "at dt=$dt the mark is not shown outside" ;;
+    esac
+    prev_marks=$m prev_pos=$2
 done
 keys q
 check_terminal_sane region
@@ -78,7 +93,8 @@ case $found in row*) ;; *) fail "RK4's point of the table is not on the plot: $f
 keys B
 wait_for 'Done: press n' || fail "the answer was not taken"
 screen | grep -q 'error vs evaluations' || fail "the plot closed when the question was answered"
-screen | grep -q 'for one turn of the' || fail "after the answer the plot hides the page's text"
+# (the pane shows its end, the answer's feedback, its title on top)
+screen | grep -q 'Error against cost' && screen | grep -q 'B) ' || fail "after the answer the plot hides the page's text"
 keys q
 check_terminal_sane workprec
 

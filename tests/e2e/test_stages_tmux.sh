@@ -62,7 +62,7 @@ wait_for '\[5 of 5: k closes' || fail "the page's stage view did not reach the s
 n=$(points 39)
 echo "lesson 6, rk4: $n stage points drawn"
 [ "$n" -eq 4 ] || fail "the page's rk4 stage view draws $n stage points, not 4"
-screen | grep -q 'Where does RK4 take its last slope' || fail "the page's question is hidden"
+read_down_to 'Where does RK4 take its last slope' || fail "the page's question is hidden"
 keys q
 wait_for 'PROMPT\$ *$' || fail "q did not quit the lesson"
 echo "ok: the stage view at 80x24"

@@ -45,7 +45,7 @@ mkdir -p "$WORK/state/stepwise"
 printf '07-implicit.lesson 4\n' > "$WORK/state/stepwise/progress"
 type_cmd "XDG_STATE_HOME=$WORK/state $STEPWISE lesson 7"
 wait_for 'page 5/6' || fail "lesson 7 did not open on page 5"
-screen | grep -q 'stops by itself at t = 2\.5' || fail "the page does not say it stops at 2.5"
+read_down_to 'stops by itself at t = 2\.5' || fail "the page does not say it stops at 2.5"
 wait_for 'stopped at the stop time t = 2\.5' || fail "page 5 did not stop at t = 2.5"
 screen | grep -Eq '^o linear-implicit-euler +dt=0\.04 +t=2\.5 +stop t=2\.5' || fail "the status line does not show t=2.5"
 keys q

@@ -22,6 +22,7 @@
 #include "measure/bench.h"
 #include "grade/check.h"
 #include "measure/stability.h"
+#include "render/region.h"
 #include "sim/truth.h"
 #include "sim/watch.h"
 #include "stepwise/stepwise.h"

@@ -230,6 +230,23 @@ static double l5_half_c(void) { return 10.0 / (2 * cl_l5_m()); }
 static double l5_mark_re(void) { return l5_mode().re * 0.005; }
 static double l5_mark_im(void) { return l5_mode().im * 0.005; }
 static double l5_growth(void) { return cl_growth0("spring", STIFF, "euler", 0.005); }
+/* The region view's line under the picture: the mark's |Δt·λ| over the
+ * distance along its ray where Euler's region ends (the view's own
+ * search, render/region_ray.c), at the page's Δt and each halving. */
+static double l5_ray_ratio(double dt)
+{
+    sw_mode md = l5_mode();
+    sw_truth_work *w = sw_truth_work_new();
+    ck_assert_ptr_nonnull(w);
+    double edge = sw_region_edge_on_ray(w, sw_integrator_find("euler"), 2, md.re, md.im);
+    sw_truth_work_free(w);
+    return hypot(md.re, md.im) * dt / edge;
+}
+static double l5_ray_ratio0(void) { return l5_ray_ratio(0.005); }
+static double l5_ray_ratio1(void) { return l5_ray_ratio(0.0025); }
+static double l5_ray_ratio2(void) { return l5_ray_ratio(0.00125); }
+static double l5_ray_ratio3(void) { return l5_ray_ratio(0.000625); }
+static double l5_page_dt(void) { return cl_page_dt_after(L5, "Why: outside the stability region", SW_ACT_DT_HALVE, 0); }
 static double l5_growth_formula(void) { return hypot(1 + l5_mark_re(), l5_mark_im()); }
 static double l2_dt_plus2(void) { return cl_page_dt_after(L2, "Bigger steps, bigger errors", SW_ACT_DT_DOUBLE, 2); }
 static double l5_dt_minus3(void) { return cl_page_dt_after(L5, "Remedy 2: tiny time steps", SW_ACT_DT_HALVE, 3); }
@@ -417,7 +434,7 @@ const claim sw_claims_a[] = {
     { L4, "the message reports {rounding}-level errors", l4_located_error, ATMOST, 0, "the dt message's own runs with events located, at the page's dt and half: below 1e-12", NULL },
     /* lesson 5 */
     { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },
-    { L5, "and it shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },
+    { L5, "a wide window shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },
     { L5, "Here k = {10} N/m, damping c = 0.5, mass 1 kg", cl_l5_k, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = {0.5}, mass 1 kg", cl_l5_c, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = 0.5, mass {1} kg", cl_l5_m, EXACT, 0, R_COUNT, NULL },
@@ -462,5 +479,10 @@ const claim sw_claims_a[] = {
     { L5, "The marks are Δt·λ = -0.025 ± {0.5}i", l5_mark_im, ROUNDED, 0, R_ROUND, NULL },
     { L5, "|1 + Δt·λ| = {1.095} per step", l5_growth, ROUNDED, 0, "the meter's growth per step, to the text's digits", NULL },
     { L5, "once Δt is below c/k = {0.001}", l5_light_limit, REL, 1e-6, "Euler's limit from the one-step map on the damped spring is c/k", NULL },
+    { L5, "out the mark is: {5}x the edge's distance", l5_ray_ratio0, REL, 1e-6, "the edge is found by bisection to 1e-9 relative", NULL },
+    { L5, "the edge's distance at Δt = {0.005}.", l5_page_dt, EXACT, 0, "the page's own Δt", NULL },
+    { L5, "one notch left: {2.5}x, 1.25x", l5_ray_ratio1, REL, 1e-6, "as above", NULL },
+    { L5, "one notch left: 2.5x, {1.25}x", l5_ray_ratio2, REL, 1e-6, "as above", NULL },
+    { L5, "then {0.625}x, inside.", l5_ray_ratio3, REL, 1e-6, "as above", NULL },
 };
 const size_t sw_claims_a_n = sizeof sw_claims_a / sizeof sw_claims_a[0];

@@ -82,6 +82,9 @@ static double energy_after_steps(const char *m, double dt, int n)
 
 static double l7_e0(void) { return energy_after_steps("linear-implicit-euler", 1.0, 0); }
 static double l7_e1(void) { return energy_after_steps("linear-implicit-euler", 1.0, 1); }
+/* The page's own huge step: 0.04 doubled five times, where + reaches. */
+static double l7_e1_huge(void) { return energy_after_steps("linear-implicit-euler", 1.28, 1); }
+static double l7_dt_plus5(void) { return cl_page_dt_after(L7, "One Newton step: Baraff and Witkin's large steps", SW_ACT_DT_DOUBLE, 5); }
 
 /* Backward Euler's energy change in its first step at Δt = 1 (< 0: loses). */
 static double l7_be_step(void)
@@ -364,6 +367,18 @@ static double l6_dt_plus3(void) { return cl_page_dt_after(L6, "RK4's region", SW
 static double l6_inside_002(void) { return cl_growth0("spring", "k=10000 c=0", "rk4", 0.02); }
 static double l6_outside_004(void) { return cl_growth0("spring", "k=10000 c=0", "rk4", 0.04); }
 static double one_plus(void) { return 1 + SW_TRUTH_NEUTRAL; }
+/* The region view's line under the picture at Δt = 0.04: the mark's
+ * |Δt·λ| over where its ray leaves RK4's region (the view's own search). */
+static double l6_ray_ratio_004(void)
+{
+    sw_spectrum sp = cl_spectrum0("spring", "k=10000 c=0");
+    ck_assert_int_ge(sp.n, 1);
+    sw_truth_work *w = sw_truth_work_new();
+    ck_assert_ptr_nonnull(w);
+    double edge = sw_region_edge_on_ray(w, sw_integrator_find("rk4"), 2, sp.mode[0].re, sp.mode[0].im);
+    sw_truth_work_free(w);
+    return hypot(sp.mode[0].re, sp.mode[0].im) * 0.04 / edge;
+}
 static double l7_region_swing(void) { return l7_slow() * 0.04; }
 static double l7_region_stretch(void) { return l7_fast() * 0.04; }
 static double l7_region_growth(void) { return cl_growth0("stiff-spring", NULL, "implicit-euler", 0.04); }
@@ -472,6 +487,7 @@ const claim sw_claims_b[] = {
     { L6, "Δt = {0.04} they are at ±4i", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "they are at ±{4}i, outside the region", l6_mark_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "outside the region, and the meter says GROWS", l6_outside_004, ATLEAST, 0, "outside: RK4's growth at ωΔt = 4 is above one", one_plus },
+    { L6, "the line under the numbers says {1.41}x the edge's distance", l6_ray_ratio_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "@hint Press + three times: 0.01, 0.02, {0.04}.", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "ωΔt would be {28}", l6_twenty_eight, EXACT, 0, R_MATH, NULL },
     { L6, "over one turn (t = {2π})", l6_report_time, REL, 1e-12, R_COUNT, NULL },
@@ -491,8 +507,9 @@ const claim sw_claims_b[] = {
     { L7, "the one-step linearised version {81} %", l7_lin_drift, ROUNDED, 0, R_ROUND, NULL },
     { L7, "one Newton step removes about {81} % of the swing's", l7_lin_drift, ROUNDED, 0, R_ROUND, NULL },
     { L7, "where backward Euler removed {65} %", l7_be_drift, ROUNDED, 0, R_ROUND, NULL },
-    { L7, "lifts the energy from {-8.50} J to +38.4 J", l7_e0, ROUNDED, 0, R_ROUND, NULL },
-    { L7, "lifts the energy from -8.50 J to {+38.4} J", l7_e1, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "lifts the energy from {-8.50} J to +45.6 J", l7_e0, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "lifts the energy from -8.50 J to {+45.6} J", l7_e1_huge, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "at Δt = {1.28} (+ five times)", l7_dt_plus5, EXACT, 0, "the step five presses of + give", NULL },
     { L7, "gains energy ({-8.50} J to", l7_e0, ROUNDED, 0, R_ROUND, NULL },
     { L7, "({-8.50} J to +38.4 J) where", l7_e0, ROUNDED, 0, R_ROUND, NULL },
     { L7, "(-8.50 J to {+38.4} J) where backward Euler loses it", l7_e1, ROUNDED, 0, R_ROUND, NULL },
@@ -507,7 +524,8 @@ const claim sw_claims_b[] = {
     { L7, "@hint The page chose implicit-midpoint; press {9} if you switched away.", key_im, EXACT, 0, "the key that picks the method", NULL },
     { L7, "A step divides each mode by 1 - Δt·λ", l7_region_growth, REL, 1e-9, "ρ of backward Euler's map is the largest 1/|1 - Δt·λ|", l7_region_formula },
     { L7, "(near ±{0.125}i at Δt = 0.04)", l7_region_swing, ROUNDED, 0, R_ROUND, NULL },
-    { L7, "the stretch's (±{4}i, beyond", l7_region_stretch, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "the stretch's (±{4}i, beyond that", l7_region_stretch, ROUNDED, 0, R_ROUND, NULL },
+    { L7, "beyond that at {0.08}: past the picture's edge", l7_dt_plus1, EXACT, 0, "the step one press of + gives", NULL },
     { L7, "@hint Press + once: {0.08}.", l7_dt_plus1, EXACT, 0, "the step one press of + gives", NULL },
     /* lesson 8 */
     { L8, "(eccentricity {0.5}; one orbit", l8_e, EXACT, 0, R_COUNT, NULL },

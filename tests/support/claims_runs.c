@@ -1,6 +1,8 @@
 /* Claims: scenes, runs and lesson pages, measured the way the texts say. */
 #include "claims.h"
 
+#include "canvas_help.h"
+
 /* Parameters of scene `name`: its defaults, then "NAME=VALUE" assignments
  * separated by spaces (NULL or "": none). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p)
@@ -166,17 +168,7 @@ sw_stability_result cl_stability(const char *scene, const char *sets, const char
  * settings applied. */
 void cl_lesson_page(sw_runner *r, sw_app *a, const char *file, const char *title)
 {
-    char err[SW_LESSON_ERRLEN];
-    const char *path = file;
-    sw_lesson lesson;
-    ck_assert_msg(sw_lesson_load(path, &lesson, err, sizeof err) == SW_OK, "%s", err);
-    int page = -1;
-    for (int i = 0; i < lesson.npages; i++)
-        if (strcmp(lesson.pages[i].title, title) == 0)
-            page = i;
-    sw_lesson_free(&lesson);
-    ck_assert_msg(page >= 0, "%s has no page '%s'", file, title);
-    ck_assert_msg(sw_runner_start(r, a, path, page, err, sizeof err) == SW_OK, "%s", err);
+    ct_open_page(r, a, file, title);
     a->paused = 0;
 }
 

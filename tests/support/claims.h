@@ -88,6 +88,10 @@ extern const size_t sw_claims_r_n;
 extern const claim sw_claims_k[];
 extern const size_t sw_claims_k_n;
 
+/* claims_fire.c: the fire scene's stability figures (docs/scenes.md). */
+extern const claim sw_claims_f[];
+extern const size_t sw_claims_f_n;
+
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);
 double cl_param(const char *scene, const char *name);

@@ -155,9 +155,11 @@ START_TEST(derivative_matches_plain)
         sw_system sys;
         char err[SW_ERRLEN];
         ck_assert_int_eq(sw_system_build(&sys, sc, NULL, err, sizeof err), SW_OK);
-        int particles = sys.kind == SW_SYS_PARTICLES;
+        int particles = sys.kind == SW_SYS_PARTICLES, sph = 0;
+        for (int k = 0; particles && k < sys.particles.nforces; k++)
+            sph |= sys.particles.forces[k].kind == SW_FORCE_SPH;
         sw_system_free(&sys);
-        if (!particles)
+        if (!particles || sph) /* water: against its own direct sum in check_water.c */
             continue;
         scenes++;
         ck_assert_int_eq(compare_scene(sc->name, NULL, 0, 0.3), 0);

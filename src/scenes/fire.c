@@ -228,7 +228,7 @@ static const sw_param explosion_params[] = {
     { "speed", 6.0, 0.0, 100.0, 0, "m/s", "largest radial speed a fragment gets at the burst" },
     { "g", 9.81, 0.0, 100.0, 0, "m/s^2", "gravity, pointing down" },
     { "drag", 0.3, 0.0, 10.0, 0, "1/s", "linear drag per unit mass" },
-    { "kappa", 0.8, 0.0, 1000.0, 0, "1/s", "cooling rate: dT/dt = -kappa (T - 300 K)" },
+    { "kappa", 0.5, 0.0, 1000.0, 0, "1/s", "cooling rate: dT/dt = -kappa (T - 300 K)" },
     { "e", 0.5, 0.0, 1.0, 0, "", "coefficient of restitution at the floor" },
     { "seed", 1, 0, 2147483647, 1, "", "random seed: the same seed gives the same burst" },
 };

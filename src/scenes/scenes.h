@@ -13,7 +13,7 @@ extern const sw_scene sw_scene_vortex, sw_scene_river, sw_scene_gyre;
 extern const sw_scene sw_scene_projectile, sw_scene_bounce, sw_scene_fireworks;
 extern const sw_scene sw_scene_spring, sw_scene_stiff_spring, sw_scene_chain;
 extern const sw_scene sw_scene_orbit, sw_scene_galaxy;
-extern const sw_scene sw_scene_fire, sw_scene_explosion;
+extern const sw_scene sw_scene_fire, sw_scene_explosion, sw_scene_water;
 
 /* Set sys up as a flow of n points under a field written per point
  * (engine/pointwise.h; jac may be NULL). */

@@ -261,8 +261,8 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
         memcpy(last, A, sizeof A);
         memcpy(last + 4, B, sizeof B);
         int rc = second_order_modes(2, A, B, scratch, sp);
-        if (rc != 0 || sp->n == SW_TRUTH_MODES)
-            return rc;
+        if (rc != 0 || (central && sp->n == SW_TRUTH_MODES))
+            return rc; /* (full, add_mode keeps the stiffest: the others go on) */
     }
     return 0;
 }

@@ -106,14 +106,14 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
     /* one pass per layer; the alive test only where the scene has one */
     alive_ctx ctx = { sys, y, t };
     sw_canvas_keep_fn *keep = sys->scene && sys->scene->alive ? alive_at : NULL;
-    if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
+    if (glyph == SW_GLYPH_MAIN && c->mode != SW_CANVAS_BRAILLE && sys->scene && sys->scene->heat) {
+        draw_by_heat(c, sys, y, t, style); /* its temperature, crowded or not: what the scene is there to show */
+    } else if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
         sw_canvas_layer(c, y, n, keep, &ctx, 1, glyph, style, 0);
     } else if (crowd && glyph == SW_GLYPH_MAIN) {
         /* the main run as a density; a ghost or a compared run keeps its
          * own glyph, or it could not be told from the main one without colour */
         sw_canvas_density_where(c, y, n, keep, &ctx, style);
-    } else if (glyph == SW_GLYPH_MAIN && sys->scene && sys->scene->heat) {
-        draw_by_heat(c, sys, y, t, style);
     } else {
         sw_canvas_layer(c, y, n, keep, &ctx, 0, glyph, style, 0);
     }

@@ -115,11 +115,30 @@ END_TEST
 
 /* A state to test at: the dam a little into its fall under rk4 (pressures,
  * wall contacts and velocities all present), 300 particles. */
-static void dam_in_motion(sw_sim *s)
+typedef struct both {
+    sw_sim s;
+    double *d, *acc;   /* the engine's dy/dt (4n); the direct sum's accelerations (2n) */
+    double wall[2], scale;
+} both;
+
+static void dam_in_motion(both *b)
 {
-    water_sim(s, "n=300", "rk4", 0.002);
+    water_sim(&b->s, "n=300", "rk4", 0.002);
     for (int k = 0; k < 100; k++)
-        sw_sim_step(s);
+        sw_sim_step(&b->s);
+    int n = b->s.sys.n;
+    b->d = malloc((size_t)4 * n * sizeof *b->d);
+    b->acc = malloc((size_t)2 * n * sizeof *b->acc);
+    ck_assert(b->d && b->acc);
+    b->s.sys.ode->deriv(b->s.sys.ode->ctx, b->s.t, b->s.sys.y, b->d);
+    direct_accel(&b->s, b->s.sys.y, b->acc, b->wall, &b->scale);
+}
+
+static void both_free(both *b)
+{
+    free(b->d);
+    free(b->acc);
+    sw_sim_free(&b->s);
 }
 
 /* The engine's derivative (cell list, pairs once) against the direct sum:
@@ -127,23 +146,17 @@ static void dam_in_motion(sw_sim *s)
  * in a sum of a few hundred terms in another order). */
 START_TEST(sph_matches_direct_sum)
 {
-    sw_sim s;
-    dam_in_motion(&s);
-    int n = s.sys.n;
-    double *d = malloc((size_t)4 * n * sizeof *d), *acc = malloc((size_t)2 * n * sizeof *acc), wall[2], scale;
-    s.sys.ode->deriv(s.sys.ode->ctx, s.t, s.sys.y, d);
-    direct_accel(&s, s.sys.y, acc, wall, &scale);
-    double m = s.sys.particles.mass[0], tol = 1e-12 * scale / m;
-    int moved = 0;
+    both b;
+    dam_in_motion(&b);
+    int n = b.s.sys.n, moved = 0;
+    double tol = 1e-12 * b.scale / b.s.sys.particles.mass[0];
     for (int i = 0; i < 2 * n; i++) {
-        ck_assert_msg(fabs(d[2 * n + i] - acc[i]) <= tol, "component %d: %.17g vs %.17g (tol %g)", i, d[2 * n + i],
-                      acc[i], tol);
-        moved += fabs(acc[i] + (i % 2 ? 9.81 : 0)) > 1e-3;
+        ck_assert_msg(fabs(b.d[2 * n + i] - b.acc[i]) <= tol, "component %d: %.17g vs %.17g (tol %g)", i,
+                      b.d[2 * n + i], b.acc[i], tol);
+        moved += fabs(b.acc[i] + (i % 2 ? 9.81 : 0)) > 1e-3;
     }
     ck_assert_int_gt(moved, n / 4); /* the fluid's own forces are at work, not gravity alone */
-    free(d);
-    free(acc);
-    sw_sim_free(&s);
+    both_free(&b);
 }
 END_TEST
 
@@ -151,25 +164,20 @@ END_TEST
  * rounding (1e-13 of Σ|pair terms|: each pair adds +F and -F). */
 START_TEST(sph_momentum_only_gravity_and_walls)
 {
-    sw_sim s;
-    dam_in_motion(&s);
-    int n = s.sys.n;
-    double *d = malloc((size_t)4 * n * sizeof *d), *acc = malloc((size_t)2 * n * sizeof *acc), wall[2], scale;
-    s.sys.ode->deriv(s.sys.ode->ctx, s.t, s.sys.y, d);
-    direct_accel(&s, s.sys.y, acc, wall, &scale);
+    both b;
+    dam_in_motion(&b);
+    int n = b.s.sys.n;
     double F[2] = { 0, 0 }, M = 0;
     for (int i = 0; i < n; i++) {
-        double m = s.sys.particles.mass[i];
-        F[0] += m * d[2 * n + 2 * i];
-        F[1] += m * d[2 * n + 2 * i + 1];
+        double m = b.s.sys.particles.mass[i];
+        F[0] += m * b.d[2 * n + 2 * i];
+        F[1] += m * b.d[2 * n + 2 * i + 1];
         M += m;
     }
-    ck_assert_double_eq_tol(F[0], wall[0], 1e-13 * scale);
-    ck_assert_double_eq_tol(F[1], -9.81 * M + wall[1], 1e-13 * scale);
-    ck_assert(fabs(wall[1]) > 0); /* the floor holds the water up */
-    free(d);
-    free(acc);
-    sw_sim_free(&s);
+    ck_assert_double_eq_tol(F[0], b.wall[0], 1e-13 * b.scale);
+    ck_assert_double_eq_tol(F[1], -9.81 * M + b.wall[1], 1e-13 * b.scale);
+    ck_assert(fabs(b.wall[1]) > 0); /* the floor holds the water up */
+    both_free(&b);
 }
 END_TEST
 

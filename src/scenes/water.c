@@ -16,7 +16,7 @@
 
 enum { WA_N, WA_SHAPE, WA_H, WA_K, WA_NU, WA_G };
 static const sw_param water_params[] = {
-    { "n", 800, 16, 100000, 1, "", "about this many particles (a lattice filling the shape)" },
+    { "n", 800, 4, 100000, 1, "", "about this many particles (a lattice filling the shape)" },
     { "shape", 0, 0, 2, 1, "", "0: a dam breaks; 1: a drop falls into a pool; 2: a column at rest" },
     { "h", 2.0, 1.2, 3.0, 0, "spacings", "kernel radius, in lattice spacings" },
     { "k", 400, 1, 100000, 0, "m^2/s^2", "stiffness: p = k (rho - rho0); the sound speed is sqrt(k)" },

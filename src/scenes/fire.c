@@ -202,7 +202,7 @@ static sw_view fire_view(const sw_system *sys)
 const sw_scene sw_scene_fire = {
     .name = "fire",
     .kind = SW_SYS_PARTICLES,
-    .summary = "flames born at a steady rate, rising by buoyancy while they cool, dying cold or old",
+    .summary = "flames born at a steady rate rise as they cool, dying cold or old",
     .teaches = "A stiff variable in a soft one: fast cooling (kappa dt) limits an explicit step while the "
                "motion is slow.",
     .params = fire_params,

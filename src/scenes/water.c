@@ -153,7 +153,7 @@ static sw_view water_view(const sw_system *sys)
 const sw_scene sw_scene_water = {
     .name = "water",
     .kind = SW_SYS_PARTICLES,
-    .summary = "a particle fluid in a box (SPH): a dam breaks, a drop falls into a pool, a column rests",
+    .summary = "a particle fluid in a box (SPH): dam break, drop, column at rest",
     .teaches = "The pressure's stiffness sets the step: dt below about C h/c (CFL), c = sqrt(k); Euler explodes.",
     .params = water_params,
     .nparams = SW_NPARAMS(water_params),

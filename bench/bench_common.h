@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "stepwise/particles.h"
+
 #define MAX_REPEATS 15
 
 static inline double now_seconds(void)
@@ -67,6 +69,15 @@ int bench_deriv_probe(const char *scene, const char *set, long calls, int generi
 /* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
+/* Median seconds per evaluation of p's derivative over `repeats` runs of at
+ * least `least` seconds each; *allocs: allocations during the timed runs. */
+double bench_time_eval(sw_particles *p, double *dydt, int repeats, double least, long *allocs);
+/* Least-squares slope of log t against log n over the points with t > 0. */
+double bench_fit(const double *n, const double *t, int m);
+/* The water scene's derivative (SPH, its neighbours from a cell list) at
+ * n = 1e3, 1e4, 1e5 (quick: the first two): seconds per evaluation and the
+ * exponent of n fitted (bench_water.c). */
+void bench_water(int repeats, int quick);
 
 /* Methods for x'' = f(x) at equal error: rkn, yoshida4 against dop853,
  * rk45, verlet on the undamped chain and the orbit (quick: 1e-3 only)

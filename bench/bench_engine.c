@@ -619,8 +619,10 @@ static int bench_engine_main(int argc, char **argv)
         memory(&o);
         million(quick ? 100000 : 1000000);
     }
-    if (sections & 16)
+    if (sections & 16) {
         bench_tree(o.repeats, quick);
+        bench_water(o.repeats, quick);
+    }
     if (sections & 8)
         bench_peer(&peer);
     if (sections & 32)

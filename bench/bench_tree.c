@@ -36,9 +36,7 @@ static int disc(sw_particles *p, int n, double theta)
     return 0;
 }
 
-/* Median seconds per evaluation over `repeats` runs of at least `least`
- * seconds each; *allocs: allocations during the timed runs. */
-static double time_eval(sw_particles *p, double *dydt, int repeats, double least, long *allocs)
+double bench_time_eval(sw_particles *p, double *dydt, int repeats, double least, long *allocs)
 {
     double t[MAX_REPEATS];
     p->ode.deriv(p, 0.0, p->y, dydt); /* warm */
@@ -56,8 +54,7 @@ static double time_eval(sw_particles *p, double *dydt, int repeats, double least
     return median(t, repeats);
 }
 
-/* Least-squares slope of log t against log n over the points with t > 0. */
-static double fit(const double *n, const double *t, int m)
+double bench_fit(const double *n, const double *t, int m)
 {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     int k = 0;
@@ -90,14 +87,14 @@ void bench_tree(int repeats, int quick)
         }
         d.ode.deriv(&d, 0.0, d.y, ref);
         if (n <= 10000) { /* 1e5: 5e9 pairs an evaluation, ~20 s; extrapolated below */
-            t_direct[s] = time_eval(&d, got, repeats, quick ? 0.02 : 0.2, &a);
+            t_direct[s] = bench_time_eval(&d, got, repeats, quick ? 0.02 : 0.2, &a);
             allocs += a;
         }
         char cells[3][32];
         for (int k = 0; k < 3; k++) {
             if (disc(&t, n, thetas[k]) != 0)
                 continue;
-            t_tree[k][s] = time_eval(&t, got, repeats, quick ? 0.02 : 0.2, &a);
+            t_tree[k][s] = bench_time_eval(&t, got, repeats, quick ? 0.02 : 0.2, &a);
             allocs += a;
             double num = 0, den = 0;
             for (int i = 2 * n; i < 4 * n; i++)
@@ -118,7 +115,7 @@ void bench_tree(int repeats, int quick)
     double nlogn = 1 + log(log(ns[sizes - 1]) / log(ns[0])) / log(ns[sizes - 1] / ns[0]);
     printf("  fitted exponent of n: direct %.2f; tree theta 0.3 %.2f, 0.5 %.2f, 0.7 %.2f (n log n over the same "
            "n: %.2f)\n",
-           fit(ns, t_direct, sizes), fit(ns, t_tree[0], sizes), fit(ns, t_tree[1], sizes), fit(ns, t_tree[2], sizes),
+           bench_fit(ns, t_direct, sizes), bench_fit(ns, t_tree[0], sizes), bench_fit(ns, t_tree[1], sizes), bench_fit(ns, t_tree[2], sizes),
            nlogn);
     printf("  allocations during the timed evaluations: %ld\n", allocs);
 }

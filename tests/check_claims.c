@@ -26,6 +26,7 @@ static const struct {
     { sw_claims_a, &sw_claims_a_n }, { sw_claims_b, &sw_claims_b_n }, { sw_claims_d, &sw_claims_d_n },
     { sw_claims_e, &sw_claims_e_n }, { sw_claims_m, &sw_claims_m_n }, { sw_claims_s, &sw_claims_s_n },
     { sw_claims_r, &sw_claims_r_n }, { sw_claims_k, &sw_claims_k_n }, { sw_claims_o, &sw_claims_o_n },
+    { sw_claims_f, &sw_claims_f_n }, { sw_claims_l, &sw_claims_l_n },
 };
 
 static size_t claim_count(void)
@@ -133,7 +134,7 @@ static const struct { const char *word; double value; } words[] = {
     { "adozen", 12 }, { "nineteen", 19 }, { "seven", 7 }, { "six", 6 }, { "four", 4 },
     { "eight", 8 }, { "ten-thousandfold", 1e4 }, { "halves", 2 }, { "rounding", 1e-12 },
     { "afewthousandths", 0.005 }, { "constant", 0 }, { "twelve", 12 }, { "once", 1 }, { "three", 3 },
-    { "sixteen", 16 },
+    { "sixteen", 16 }, { "eleven", 11 },
 };
 
 static const char *const superscripts[] = { "⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹" };
@@ -337,7 +338,7 @@ static const struct { const char *file, *snippet; } not_figures[] = {
     { STAB, "which makes its map 3×3" },                   /* a matrix's size */
 };
 
-static const char *const guarded[] = { L1, L2, L3, L4, L5, L6, L7, L8, L9, L10, README, MAN, STAB };
+static const char *const guarded[] = { L1, L2, L3, L4, L5, L6, L7, L8, L9, L10, L11, README, MAN, STAB };
 
 /* Mark the first occurrence of snippet in text as covered. */
 static void cover(const char *text, const char *snippet, unsigned char *covered)

@@ -14,9 +14,11 @@ typedef enum sw_force_kind {
     SW_FORCE_SPRINGS,  /* damped springs between particles or to anchors */
     SW_FORCE_CENTRAL,  /* f = -μ·m·d/|d|³ toward a fixed point */
     SW_FORCE_MUTUAL,   /* f_i = -Σ_j μ·m_i·m_j·d_ij/(|d_ij|² + soft²)^(3/2): softened gravity */
-    SW_FORCE_TREE      /* the same, Barnes-Hut: far groups as their centre of mass, opening angle theta */
+    SW_FORCE_TREE,     /* the same, Barnes-Hut: far groups as their centre of mass, opening angle theta */
+    SW_FORCE_HEAT,     /* hot bodies (the first n/2) and their heat slots (the last n/2): see sw_force */
+    SW_FORCE_SPH       /* smoothed-particle hydrodynamics (Müller et al. 2003) in a box: see sw_force */
 } sw_force_kind;
-#define SW_FORCE_KINDS (SW_FORCE_TREE + 1) /* the last kind + 1 */
+#define SW_FORCE_KINDS (SW_FORCE_SPH + 1) /* the last kind + 1 */
 
 /* A damped spring: f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂, d = x_a - x_b;
  * b < 0 ties a to the fixed anchor (ax, ay). */
@@ -33,6 +35,17 @@ typedef struct sw_force {
     double cx, cy, mu;   /* central attraction; mu = G for mutual gravity */
     double soft;         /* mutual gravity's softening length */
     double theta;        /* Barnes-Hut opening angle: a cell of side s at distance d is one body when s < theta·d */
+    /* SW_FORCE_HEAT: of 2m particles, body i < m carries a temperature in
+     * its slot m + i, whose velocity is (θ_i, r_i): θ = T - T_ambient, r = 1
+     * while the body lives (the slot's position, (∫θ dt, age), follows).
+     * Body: f = m(gx, gy) + m·buoy·θ·ŷ - m·k·v; slot: f = (-m·cool·θ, 0). */
+    double buoy;         /* buoyancy per kelvin above ambient, m/s^2/K */
+    double cool;         /* cooling rate κ in dθ/dt = -κ θ, 1/s */
+    /* SW_FORCE_SPH (engine/force_sph.c): kernel radius h, rest density
+     * rho0, pressure p = stiff·max(ρ - rho0, 0), kinematic viscosity nu,
+     * and walls x = 0, x = box_w, y = 0 pushing within `zone` of them. */
+    double h, rho0, stiff, nu, box_w, zone;
+    double grad;         /* SW_FORCE_SPH: C in ∇Wspiky = -C (h - r)² d/r; 0: the continuum's 30/(π h⁵) */
     sw_spring *springs;  /* owned by the particle system */
     int nsprings;
     void *work;          /* what the kind sizes when added (the tree's node pool); owned by the system */

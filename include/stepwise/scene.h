@@ -113,6 +113,12 @@ typedef struct sw_scene {
     int (*alive)(const sw_system *sys, double t, const double *y, int i);
     /* Where the right-hand side is not smooth; NULL: nowhere. */
     const sw_scene_events *events;
+    /* NULL, or why no run measures this scene's error (one clause): the
+     * truth module then gives none, even with events located. */
+    const char *no_truth;
+    /* How hot particle i is at y, 0 (ambient) to 1 (the hottest it is
+     * born), for drawing by temperature (fire); NULL: one glyph for all. */
+    double (*heat)(const sw_system *sys, const double *y, int i);
 } sw_scene;
 
 int sw_scene_count(void);

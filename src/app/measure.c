@@ -87,7 +87,8 @@ static const double *truth_report(sw_app *a)
         size_t dim = (size_t)a->truth.sys.ode->dim;
         sw_truth tr;
         char err[SW_ERRLEN];
-        a->truth_report = malloc(SW_TRUTH_SAMPLES * dim * sizeof *a->truth_report);
+        if (!a->truth_report) /* kept for the next try when this one finds no truth (fire, water) */
+            a->truth_report = malloc(SW_TRUTH_SAMPLES * dim * sizeof *a->truth_report);
         if (a->truth_report && sw_truth_init(&tr, a->scene, a->p, err, sizeof err) == SW_OK) {
             int ok = 1;
             for (int j = 1; j <= SW_TRUTH_SAMPLES && ok; j++) {

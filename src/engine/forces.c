@@ -13,6 +13,8 @@ const swp_force_type *swp_force_type_of(sw_force_kind kind)
     case SW_FORCE_CENTRAL: return &swp_central;
     case SW_FORCE_MUTUAL: return &swp_mutual;
     case SW_FORCE_TREE: return &swp_tree;
+    case SW_FORCE_HEAT: return &swp_heat;
+    case SW_FORCE_SPH: return &swp_sph;
     }
     return NULL;
 }

@@ -53,7 +53,8 @@ typedef struct swp_force_type {
     int (*uses_velocity)(const sw_force *fo);
 } swp_force_type;
 
-extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp_mutual, swp_tree;
+extern const swp_force_type swp_gravity, swp_drag, swp_springs, swp_central, swp_mutual, swp_tree,
+    swp_heat, swp_sph;
 
 /* The descriptor of a kind; NULL for a value that is not a kind. */
 const swp_force_type *swp_force_type_of(sw_force_kind kind);

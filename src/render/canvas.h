@@ -76,6 +76,8 @@ enum {
 #define SW_GLYPH_GHOST_SPRING '.' /* springs of ghost and compare sims */
 #define SW_GLYPH_TRAIL_NEW ':'  /* trail, newer half of the buffer (fade 1) */
 #define SW_GLYPH_TRAIL_OLD '.'  /* trail, older half of the buffer (fade 2) */
+#define SW_GLYPH_HOT      '@'   /* a scene drawn by temperature: the hottest third */
+#define SW_GLYPH_COOL     ','   /* ... and the coolest (the middle third is SW_GLYPH_MAIN) */
 
 /* The density ramp: count 0 is ' ' (cell left as it was); a cell holding
  * c >= 1 points gets SW_DENSITY_RAMP[min(9, 1 + floor(log2 c))], i.e.

@@ -38,6 +38,29 @@ static int alive_at(const void *ctx, int i)
     return is_alive(a->sys, a->y, a->t, i);
 }
 
+/* A scene drawn by temperature: the living particles in three bands of
+ * its heat (coolest third, middle, hottest), one layer each, hottest on top. */
+typedef struct band_ctx { alive_ctx alive; int band; } band_ctx;
+
+static int in_band(const void *ctx, int i)
+{
+    const band_ctx *b = ctx;
+    const sw_system *sys = b->alive.sys;
+    if (!is_alive(sys, b->alive.y, b->alive.t, i))
+        return 0;
+    double q = sys->scene->heat(sys, b->alive.y, i);
+    return (q >= 2.0 / 3.0 ? 2 : q >= 1.0 / 3.0 ? 1 : 0) == b->band;
+}
+
+static void draw_by_heat(sw_canvas *c, const sw_system *sys, const double *y, double t, int style)
+{
+    static const uint32_t ramp[3] = { SW_GLYPH_COOL, SW_GLYPH_MAIN, SW_GLYPH_HOT };
+    for (int band = 0; band < 3; band++) {
+        band_ctx ctx = { { sys, y, t }, band };
+        sw_canvas_layer(c, y, sys->n, in_band, &ctx, 0, ramp[band], style, 0);
+    }
+}
+
 /* Springs as lines, then their anchors on top (an anchor ends its spring). */
 static void draw_springs(sw_canvas *c, const sw_system *sys, const double *y, double t, int style)
 {
@@ -83,7 +106,9 @@ void sw_canvas_draw_system(sw_canvas *c, const sw_system *sys, const double *y, 
     /* one pass per layer; the alive test only where the scene has one */
     alive_ctx ctx = { sys, y, t };
     sw_canvas_keep_fn *keep = sys->scene && sys->scene->alive ? alive_at : NULL;
-    if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
+    if (glyph == SW_GLYPH_MAIN && c->mode != SW_CANVAS_BRAILLE && sys->scene && sys->scene->heat) {
+        draw_by_heat(c, sys, y, t, style); /* its temperature, crowded or not: what the scene is there to show */
+    } else if (c->mode == SW_CANVAS_BRAILLE && (crowd || sys->kind == SW_SYS_FLOW)) {
         sw_canvas_layer(c, y, n, keep, &ctx, 1, glyph, style, 0);
     } else if (crowd && glyph == SW_GLYPH_MAIN) {
         /* the main run as a density; a ghost or a compared run keeps its

@@ -107,7 +107,7 @@ static void shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int 
 
 /* Cells taken by labels and marks, so that no label touches another or a
  * mark: a label needs its own cells and one free cell on either side. */
-#define TAKEN_MAX 96
+#define TAKEN_MAX 256 /* marks (up to 2 per mode, SW_TRUTH_MODES modes) and labels */
 typedef struct taken {
     int n;
     int row[TAKEN_MAX], c0[TAKEN_MAX], c1[TAKEN_MAX]; /* cells c0..c1 of row */

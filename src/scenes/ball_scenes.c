@@ -130,8 +130,7 @@ static const sw_param bounce_params[] = {
 #define BOX_W 10.0
 #define BOX_H 6.0
 
-/* Deterministic pseudo-random number in [0, 1) from two integers (splitmix64). */
-static double hash01(uint64_t a, uint64_t b)
+double sw_scene_hash01(uint64_t a, uint64_t b)
 {
     uint64_t z = a * 0x9E3779B97F4A7C15ull + b + 0x632BE59BD9B4E5ull;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -143,9 +142,9 @@ static double hash01(uint64_t a, uint64_t b)
 static void bounce_seed(int n, int i, double *s)
 {
     s[0] = BOX_W * (i + 0.5) / n;
-    s[1] = 2.0 + 3.5 * hash01(7, (uint64_t)i);
-    s[2] = -4.0 + 8.0 * hash01(11, (uint64_t)i);
-    s[3] = -2.0 + 4.0 * hash01(13, (uint64_t)i);
+    s[1] = 2.0 + 3.5 * sw_scene_hash01(7, (uint64_t)i);
+    s[2] = -4.0 + 8.0 * sw_scene_hash01(11, (uint64_t)i);
+    s[3] = -2.0 + 4.0 * sw_scene_hash01(13, (uint64_t)i);
 }
 
 static int bounce_build(sw_system *sys, char *err, size_t errlen)
@@ -347,8 +346,8 @@ static double fw_period(const double *p) { return p[FW_BURSTS] * FW_GAP + FW_LIF
 static void fw_origin(const double *p, int b, long k, double *x, double *y)
 {
     uint64_t key = ((uint64_t)p[FW_SEED] << 20) ^ ((uint64_t)k << 8) ^ (uint64_t)b;
-    *x = 2.0 + 6.0 * hash01(key, 1);
-    *y = 4.0 + 3.0 * hash01(key, 2);
+    *x = 2.0 + 6.0 * sw_scene_hash01(key, 1);
+    *y = 4.0 + 3.0 * sw_scene_hash01(key, 2);
 }
 
 /* Which show and burst own particle i at time t, and how old it is. */
@@ -406,8 +405,8 @@ static int fireworks_post(sw_system *sys, double t, double *y)
             changed = 1;
         } else if (sys->extra[i] != (double)show) {
             uint64_t key = ((uint64_t)p[FW_SEED] << 32) ^ ((uint64_t)show << 20) ^ (uint64_t)i;
-            double ang = 2.0 * 3.14159265358979323846 * hash01(key, 3);
-            double spd = FW_SPEED * sqrt(hash01(key, 4));
+            double ang = 2.0 * 3.14159265358979323846 * sw_scene_hash01(key, 3);
+            double spd = FW_SPEED * sqrt(sw_scene_hash01(key, 4));
             fw_origin(p, b, show, &x[0], &x[1]);
             v[0] = spd * cos(ang);
             v[1] = spd * sin(ang);

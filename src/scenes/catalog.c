@@ -18,7 +18,8 @@ static const sw_scene *const catalog[] = {
     &sw_scene_vortex, &sw_scene_river, &sw_scene_gyre,
     &sw_scene_projectile, &sw_scene_bounce, &sw_scene_fireworks,
     &sw_scene_spring, &sw_scene_stiff_spring, &sw_scene_chain,
-    &sw_scene_orbit, &sw_scene_galaxy,
+    &sw_scene_orbit, &sw_scene_galaxy, &sw_scene_fire, &sw_scene_explosion,
+    &sw_scene_water,
 };
 
 #define NSCENES ((int)(sizeof catalog / sizeof catalog[0]))

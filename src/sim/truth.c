@@ -31,6 +31,11 @@ sw_truth_source sw_truth_source_of(const sw_system *sys, char *why, size_t whyle
     }
     /* A scene with events is run with them located: then tight runs converge. */
     int located = sw_system_event_count(sys) > 0;
+    if (sc->no_truth) {
+        if (why)
+            snprintf(why, whylen, "%s", sc->no_truth);
+        return SW_TRUTH_NONE;
+    }
     if (sc->reference || located) {
         if (why)
             snprintf(why, whylen, "%s%s%s", fails ? fails : "no closed form",

@@ -237,7 +237,9 @@ static int dense_particles(sw_truth_work *w, sw_system *sys, const double *y, sw
 /* Particles no force joins move independently: each one's own 2x2 blocks
  * of ∂f/∂x and ∂f/∂v, from the engine. With the same fields on every
  * particle, all have the same modes unless a field depends on position
- * (central attraction): then each particle is asked. */
+ * (central attraction): then each particle is asked. A particle whose
+ * blocks per unit mass differ from the last one asked (a hot body's heat
+ * slot, engine/force_heat.c) is asked too. */
 static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_spectrum *sp)
 {
     sw_particles *p = &sys->particles;
@@ -247,15 +249,20 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
     (void)w;
     if (!own)
         return -1;
+    double last[8];
     for (int i = 0; i < p->n; i++) {
         double A[4], B[4];
         for (int k = 0; k < 4; k++) { /* per unit mass */
             A[k] = own[8 * i + k] * p->inv_mass[i];
             B[k] = own[8 * i + 4 + k] * p->inv_mass[i];
         }
+        if (i > 0 && !central && memcmp(A, last, sizeof A) == 0 && memcmp(B, last + 4, sizeof B) == 0)
+            continue;
+        memcpy(last, A, sizeof A);
+        memcpy(last + 4, B, sizeof B);
         int rc = second_order_modes(2, A, B, scratch, sp);
-        if (rc != 0 || !central || sp->n == SW_TRUTH_MODES)
-            return rc;
+        if (rc != 0 || (central && sp->n == SW_TRUTH_MODES))
+            return rc; /* (full, add_mode keeps the stiffest: the others go on) */
     }
     return 0;
 }

@@ -39,6 +39,10 @@ for s in chain vortex; do
 done
 echo "$out" | grep -q '^Barnes-Hut against the direct sum' || fail "no Barnes-Hut table"
 echo "$out" | grep -q '^  allocations during the timed evaluations: 0$' || fail "the tree allocated: $out"
+echo "$out" | grep -q '^water: one SPH evaluation' || fail "no water table"
+# (its fitted exponent is a timing: printed, not asserted)
+echo "$out" | grep -Eq '^  fitted exponent of n: [0-9.]+ \(a cell list' || fail "no water exponent: $out"
+[ "$(echo "$out" | grep -c '^  allocations during the timed evaluations: 0$')" -ge 2 ] || fail "water allocated: $out"
 # the count probe bench/instructions.sh runs under callgrind
 for kind in generic base; do
     "$BENCH" --count-probe chain 20 rk4 3 $kind || fail "count probe ($kind) exited $?"

@@ -32,6 +32,8 @@ for sc in $scenes; do
         fi
         "$STEPWISE" play "$sc" -i "$m" --dt 50 --frames 3 --ascii --size 80x24 >frame.txt 2>err.txt
         rc=$?
+        # water at its own size refuses implicit methods (no coupled Jacobian), which it took at n = 4
+        [ $rc -eq 2 ] && grep -q "needs a Jacobian this system does not provide" err.txt && continue
         if [ $rc -ne 0 ]; then
             echo "FAIL: play $sc -i $m --dt 50 --frames 3: exit $rc"; sed 's/^/    /' err.txt; fail=$((fail + 1))
         fi

@@ -37,6 +37,7 @@
 #define L8 "lessons/08-energy-orbits.lesson"
 #define L9 "lessons/09-adaptive.lesson"
 #define L10 "lessons/10-homework.lesson"
+#define L11 "lessons/11-fire-and-water.lesson"
 #define GUIDE "lessons/README.md"
 #define README "README.md"
 #define MAN "docs/stepwise.1"
@@ -90,6 +91,13 @@ extern const claim sw_claims_k[];
 extern const size_t sw_claims_k_n;
 extern const claim sw_claims_o[]; /* claims_bench.c: the order rule in docs/performance.md */
 extern const size_t sw_claims_o_n;
+
+/* claims_lesson11.c: lesson 11's figures (fire, explosion, water). */
+extern const claim sw_claims_l[];
+extern const size_t sw_claims_l_n;
+/* claims_fire.c: the fire scene's stability figures (docs/scenes.md). */
+extern const claim sw_claims_f[];
+extern const size_t sw_claims_f_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

@@ -415,7 +415,7 @@ const claim sw_claims_d[] = {
     { README, "`1`–`9`, `0`, `!`, `@`, `#`, `$`, `%` and `^` pick one", key_at_yoshida, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
     { README, "Verlet substeps of w1·h, w0·h, w1·h | {4} | 3", ord_yoshida, ABS, 0.1, "the order measured halving Δt from 0.04 on the undamped spring (the damped one gives 2: Verlet's velocity predictor)", NULL },
     { README, "Verlet substeps of w1·h, w0·h, w1·h | 4 | {3} (reuses the last acceleration) |", ev_yoshida, EXACT, 0, "after the first step", NULL },
-    { README, "the {ten} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
+    { README, "the {eleven} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
     { README, "(ωh = {2} for symplectic Euler and Verlet", symplectic_wdt, ABS, 1e-6, "symplectic Euler's limit in theory (bisected to 1e-9)", NULL },
     { README, "(ωh = {2} for symplectic Euler and Verlet", cl_verlet_wdt, ABS, 1e-6, "Verlet's limit in theory", NULL },

@@ -1,0 +1,281 @@
+/* Smoothed-particle hydrodynamics in 2-D after Müller, Charypar and Gross
+ * (2003), in a box. With kernel radius h and each neighbour b of a within h:
+ *   density   ρ_a = Σ_b m_b W6(x_a - x_b)          (self included)
+ *   pressure  p_a = stiff·max(ρ_a - rho0, 0)       (the sound speed c = √stiff)
+ *   force     f_a = -Σ_b m_a m_b (p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky(x_a - x_b)
+ *                   + nu·rho0 Σ_b m_a m_b (v_b - v_a)/(ρ_a ρ_b) ∇²Wvisc(|x_a - x_b|)
+ * The pressure term is Monaghan's symmetric form; Müller's (p_a + p_b)/
+ * (2 ρ_a ρ_b) is its half where densities agree, and holds a column at rest
+ * only at twice the hydrostatic pressure.
+ * with the 2-D kernels W6 = 4/(π h⁸)(h² - r²)³, ∇Wspiky = -C (h - r)² d/r
+ * (C = 30/(π h⁵), or as the scene renormalises it: fo->grad), ∇²Wvisc =
+ * 40/(π h⁵)(h - r). Each pair's term is symmetric in a and b, so
+ * f_b gets exactly -f_a: Newton's third law pair by pair, momentum changed
+ * only by gravity and the walls. Walls x = 0, x = box_w and y = 0 push a
+ * particle within `zone` of them with acceleration 4·stiff/h²·(zone - dist)
+ * and hold it there (no slip) with a damping -(2c/h)·v.
+ * Neighbours come from a uniform grid (a cell list, counting sort, O(n)) of
+ * cells at least h wide over the particles' bounding box; pairs are visited
+ * cell by cell in a fixed order, so results are deterministic. Invariant: an
+ * evaluation allocates nothing (the grid is sized when the force is added).
+ * The Jacobian it gives is each particle's own estimate (pairs 0): the walls,
+ * and for the pressure and the viscosity each neighbour counted twice, as
+ * in the stiffest mode of a lattice, neighbours moving against each other. */
+#include "engine/forces.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "util/num.h"
+
+typedef struct sph_work {
+    int n, ncap;        /* particles, most cells */
+    double *rho, *press;
+    int *cell, *start, *order; /* each particle's cell; cell c's particles are order[start[c] .. start[c + 1]) */
+    double x0, y0, cs;  /* the grid's corner and cell size */
+    int nx, ny;
+} sph_work;
+
+/* One block: the header, then rho and press (n each), then cell, order
+ * (n each) and start (ncap + 1); the system frees it. */
+static void *sph_work_new(int n)
+{
+    int ncap = 4 * n + 64;
+    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15;
+    char *block = calloc(1, head + (size_t)2 * n * sizeof(double) + ((size_t)2 * n + ncap + 1) * sizeof(int));
+    if (!block)
+        return NULL;
+    sph_work *w = (sph_work *)block;
+    w->n = n;
+    w->ncap = ncap;
+    w->rho = (double *)(block + head);
+    w->press = w->rho + n;
+    w->cell = (int *)(w->press + n);
+    w->order = w->cell + n;
+    w->start = w->order + n;
+    return w;
+}
+
+/* The cell list: cells at least h wide over the bounding box, doubled until
+ * there are at most ncap of them. 0, or -1 when a position is not finite. */
+static int grid(sph_work *w, int n, const double *x, double h)
+{
+    double x0 = x[0], x1 = x[0], y0 = x[1], y1 = x[1];
+    for (int i = 1; i < n; i++) {
+        x0 = fmin(x0, x[2 * i]), x1 = fmax(x1, x[2 * i]);
+        y0 = fmin(y0, x[2 * i + 1]), y1 = fmax(y1, x[2 * i + 1]);
+    }
+    if (!isfinite(x0 + x1 + y0 + y1))
+        return -1;
+    double cs = h;
+    while ((floor((x1 - x0) / cs) + 1) * (floor((y1 - y0) / cs) + 1) > w->ncap)
+        cs *= 2;
+    w->x0 = x0, w->y0 = y0, w->cs = cs;
+    w->nx = (int)floor((x1 - x0) / cs) + 1;
+    w->ny = (int)floor((y1 - y0) / cs) + 1;
+    int ncell = w->nx * w->ny;
+    for (int c = 0; c <= ncell; c++)
+        w->start[c] = 0;
+    for (int i = 0; i < n; i++) {
+        int cx = (int)((x[2 * i] - x0) / cs), cy = (int)((x[2 * i + 1] - y0) / cs);
+        cx = cx < w->nx ? cx : w->nx - 1;
+        cy = cy < w->ny ? cy : w->ny - 1;
+        w->cell[i] = cy * w->nx + cx;
+        w->start[w->cell[i] + 1]++;
+    }
+    for (int c = 0; c < ncell; c++)
+        w->start[c + 1] += w->start[c];
+    for (int i = 0; i < n; i++) /* stable: each cell's particles in index order */
+        w->order[w->start[w->cell[i]]++] = i;
+    for (int c = ncell; c > 0; c--)
+        w->start[c] = w->start[c - 1];
+    w->start[0] = 0;
+    return 0;
+}
+
+/* Every pair (a, b) within h once, cell by cell: each cell with itself
+ * (b after a) and with its right, upper-left, upper and upper-right
+ * neighbours. visit(a, b, dx, dy, r², ctx). */
+typedef void pair_fn(int a, int b, double dx, double dy, double r2, void *ctx);
+
+static void each_pair(const sph_work *w, const double *x, double h, pair_fn *visit, void *ctx)
+{
+    static const int step[4][2] = { { 1, 0 }, { -1, 1 }, { 0, 1 }, { 1, 1 } };
+    double h2 = h * h;
+    for (int cy = 0; cy < w->ny; cy++)
+        for (int cx = 0; cx < w->nx; cx++) {
+            int c = cy * w->nx + cx;
+            for (int ia = w->start[c]; ia < w->start[c + 1]; ia++) {
+                int a = w->order[ia];
+                for (int s = -1; s < 4; s++) {
+                    int ox = s < 0 ? cx : cx + step[s][0], oy = s < 0 ? cy : cy + step[s][1];
+                    if (ox < 0 || ox >= w->nx || oy >= w->ny)
+                        continue;
+                    int o = oy * w->nx + ox;
+                    for (int ib = s < 0 ? ia + 1 : w->start[o]; ib < w->start[o + 1]; ib++) {
+                        int b = w->order[ib];
+                        double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], r2 = dx * dx + dy * dy;
+                        if (r2 < h2)
+                            visit(a, b, dx, dy, r2, ctx);
+                    }
+                }
+            }
+        }
+}
+
+/* C of ∇Wspiky = -C (h - r)² d/r. */
+static double spiky(const sw_force *fo)
+{
+    double h = fo->h;
+    return fo->grad > 0 ? fo->grad : 30.0 / (SW_PI * h * h * h * h * h);
+}
+
+typedef struct sph_ctx {
+    const sw_particles *p;
+    const sw_force *fo;
+    sph_work *w;
+    const double *v;
+    double *f;
+} sph_ctx;
+
+static void density_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+{
+    (void)dx, (void)dy;
+    sph_ctx *c = ctx;
+    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = 4.0 / (SW_PI * h2 * h2 * h2 * h2) * q * q * q;
+    c->w->rho[a] += c->p->mass[b] * w6;
+    c->w->rho[b] += c->p->mass[a] * w6;
+}
+
+static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+{
+    sph_ctx *c = ctx;
+    const sw_force *fo = c->fo;
+    const double *rho = c->w->rho, *press = c->w->press, *v = c->v;
+    double h = fo->h, r = sqrt(r2), h5 = h * h * h * h * h;
+    if (!(r > 0))
+        return; /* two particles at one point push neither way */
+    double mm = c->p->mass[a] * c->p->mass[b], mm_rr = mm / (rho[a] * rho[b]);
+    /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
+    double ps = press[a] / (rho[a] * rho[a]) + press[b] / (rho[b] * rho[b]);
+    double push = mm * ps * spiky(fo) * (h - r) * (h - r) / r;
+    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / (SW_PI * h5) * (h - r);
+    double fx = push * dx + visc * (v[2 * b] - v[2 * a]), fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
+    c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
+    c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
+}
+
+/* The walls' acceleration on coordinate value u, dist = u - wall (sign:
+ * +1 pushes up/right), and its stiffness. */
+static double wall_push(const sw_force *fo, double dist)
+{
+    return dist < fo->zone ? 4.0 * fo->stiff / (fo->h * fo->h) * (fo->zone - dist) : 0.0;
+}
+
+/* Within `zone` of a wall: pushed out, and held (no slip) by a damping
+ * 2c/h, the wall spring's own rate. */
+static int in_zone(const sw_force *fo, const double *xi)
+{
+    return xi[0] <= fo->zone || fo->box_w - xi[0] <= fo->zone || xi[1] <= fo->zone;
+}
+
+static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    sph_work *w = fo->work;
+    int n = p->n;
+    if (grid(w, n, x, fo->h) != 0)
+        return; /* a position went non-finite: the sim reports the blow-up */
+    double h2 = fo->h * fo->h, w0 = 4.0 / (SW_PI * h2) ; /* W6(0) = 4/(π h²) */
+    for (int i = 0; i < n; i++)
+        w->rho[i] = p->mass[i] * w0;
+    sph_ctx c = { p, fo, w, v, f };
+    each_pair(w, x, fo->h, density_pair, &c);
+    for (int i = 0; i < n; i++)
+        w->press[i] = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
+    each_pair(w, x, fo->h, force_pair, &c);
+    double grip = 2.0 * sqrt(fo->stiff) / fo->h;
+    for (int i = 0; i < n; i++) {
+        double at = in_zone(fo, x + 2 * i) ? grip : 0.0;
+        f[2 * i] += p->mass[i] * ((wall_push(fo, x[2 * i]) - wall_push(fo, fo->box_w - x[2 * i])) - at * v[2 * i]);
+        f[2 * i + 1] += p->mass[i] * (wall_push(fo, x[2 * i + 1]) - at * v[2 * i + 1]);
+    }
+}
+
+static long sph_pairs(const sw_particles *p, const sw_force *fo, int *reach)
+{
+    (void)p, (void)fo;
+    *reach = 0;
+    return 0;
+}
+
+/* Each particle's own estimate: twice the sum over its neighbours of the
+ * pressure's stiffness 2·stiff·m²/rho0²·∇Wspiky ∇W6ᵀ (the density each pair
+ * changes, through p_a and p_b, as the pressure's linearisation at rest gives it) and of the
+ * viscosity's damping; the walls' stiffness within their zone. */
+typedef struct block_ctx { const sw_particles *p; const sw_force *fo; double *diag; } block_ctx;
+
+static void block_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+{
+    block_ctx *c = ctx;
+    const sw_force *fo = c->fo;
+    double h = fo->h, h2 = h * h, r = sqrt(r2), h5 = h2 * h2 * h;
+    if (!(r > 0))
+        return;
+    double m = c->p->mass[a], q = h2 - r2;
+    double gs = spiky(fo) * (h - r) * (h - r) / r, g6 = 24.0 / (SW_PI * h2 * h2 * h2 * h2) * q * q;
+    double k = 4.0 * fo->stiff * m * m / (fo->rho0 * fo->rho0) * gs * g6; /* 2 · (p_a + p_b)/ρ0² */
+    double dmp = 2.0 * fo->nu * m / fo->rho0 * 40.0 / (SW_PI * h5) * (h - r);
+    double blk[4] = { k * dx * dx, k * dx * dy, k * dy * dx, k * dy * dy };
+    int who[2] = { a, b };
+    for (int s = 0; s < 2; s++) {
+        double *d = c->diag + 8 * who[s], mass = c->p->mass[who[s]];
+        for (int e = 0; e < 4; e++)
+            d[e] -= mass * blk[e];
+        d[4] -= mass * dmp;
+        d[7] -= mass * dmp;
+    }
+}
+
+static void sph_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                       swp_blocks *out)
+{
+    (void)v;
+    sph_work *w = fo->work;
+    if (grid(w, p->n, x, fo->h) != 0)
+        return;
+    block_ctx c = { p, fo, out->diag };
+    each_pair(w, x, fo->h, block_pair, &c);
+    double kw = 4.0 * fo->stiff / (fo->h * fo->h);
+    for (int i = 0; i < p->n; i++) {
+        double *d = out->diag + 8 * i;
+        if (x[2 * i] <= fo->zone || fo->box_w - x[2 * i] <= fo->zone)
+            d[0] -= p->mass[i] * kw;
+        if (x[2 * i + 1] <= fo->zone)
+            d[3] -= p->mass[i] * kw;
+        if (in_zone(fo, x + 2 * i)) {
+            d[4] -= p->mass[i] * 2.0 * sqrt(fo->stiff) / fo->h;
+            d[7] -= p->mass[i] * 2.0 * sqrt(fo->stiff) / fo->h;
+        }
+    }
+}
+
+static void sph_values(const sw_force *fo, char *buf, size_t len)
+{
+    snprintf(buf, len, "h = %g, rho0 = %g, stiff = %g (c = %g), nu = %g, box width %g", fo->h, fo->rho0, fo->stiff,
+             sqrt(fo->stiff), fo->nu, fo->box_w);
+}
+
+static int sph_uses_velocity(const sw_force *fo) { return fo->nu != 0; }
+
+const swp_force_type swp_sph = {
+    .name = "sph",
+    .formula = "f_a = -sum_b m_a m_b (p_a/rho_a^2 + p_b/rho_b^2) grad W_spiky + nu rho0 sum_b m_a m_b (v_b - v_a)/"
+               "(rho_a rho_b) lap W_visc; p = stiff max(rho - rho0, 0)",
+    .values = sph_values,
+    .add = sph_add,
+    .pairs = sph_pairs,
+    .blocks = sph_blocks,
+    .work_new = sph_work_new,
+    .uses_velocity = sph_uses_velocity,
+};

@@ -1,0 +1,323 @@
+/* Water (SPH after Müller et al. 2003): the force against a direct O(n²)
+ * sum written here from the formulas (so the cell list misses no pair),
+ * Newton's third law pair by pair (the total force is gravity plus the
+ * walls, to rounding), the same run bit for bit, a column at rest keeping
+ * its hydrostatic pressure ρ0·g·depth, the CFL limit in theory against the
+ * step where a column at rest is measured to blow up, implicit methods
+ * refused with a reason. */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/truth.h"
+#include "stepwise/stepwise.h"
+#include "water_cfl.h"
+
+#define PI 3.14159265358979323846
+
+static void water_sim(sw_sim *s, const char *sets, const char *method, double dt)
+{
+    const sw_scene *sc = sw_scene_find("water");
+    ck_assert_ptr_nonnull(sc);
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN], buf[256];
+    sw_scene_defaults(sc, p);
+    snprintf(buf, sizeof buf, "%s", sets);
+    for (char *tok = strtok(buf, " "); tok; tok = strtok(NULL, " "))
+        ck_assert_msg(sw_scene_set(sc, p, tok, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_sim_init(s, sc, p, sw_integrator_find(method), dt, err, sizeof err) == SW_OK, "%s", err);
+}
+
+static const sw_force *sph_of(const sw_sim *s)
+{
+    const sw_particles *p = &s->sys.particles;
+    for (int k = 0; k < p->nforces; k++)
+        if (p->forces[k].kind == SW_FORCE_SPH)
+            return &p->forces[k];
+    ck_abort_msg("water has no sph force");
+    return NULL;
+}
+
+/* Densities by the direct sum over every pair (the formula, no grid). */
+static void direct_density(const sw_particles *p, const sw_force *fo, const double *x, double *rho)
+{
+    double h2 = fo->h * fo->h;
+    for (int a = 0; a < p->n; a++) {
+        rho[a] = 0;
+        for (int b = 0; b < p->n; b++) {
+            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], r2 = dx * dx + dy * dy;
+            if (r2 < h2)
+                rho[a] += p->mass[b] * 4.0 / (PI * h2 * h2 * h2 * h2) * pow(h2 - r2, 3);
+        }
+    }
+}
+
+/* The acceleration of every particle by the direct sum (gravity, the pair
+ * forces, the walls) into acc, and the walls' total force into wall[2]; the
+ * size of the terms summed into scale. */
+static void direct_accel(const sw_sim *s, const double *y, double *acc, double *wall, double *scale)
+{
+    const sw_particles *p = &s->sys.particles;
+    const sw_force *fo = sph_of(s);
+    int n = p->n;
+    const double *x = y, *v = y + 2 * n;
+    double *rho = malloc((size_t)n * sizeof *rho), h = fo->h, kw = 4.0 * fo->stiff / (h * h);
+    direct_density(p, fo, x, rho);
+    wall[0] = wall[1] = *scale = 0;
+    for (int a = 0; a < n; a++) {
+        double fx = 0, fy = -9.81 * p->mass[a], pa = fmax(fo->stiff * (rho[a] - fo->rho0), 0.0);
+        for (int b = 0; b < n; b++) {
+            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], r = hypot(dx, dy);
+            if (b == a || !(r < h) || r == 0)
+                continue;
+            double pb = fmax(fo->stiff * (rho[b] - fo->rho0), 0.0), mm = p->mass[a] * p->mass[b] / (rho[a] * rho[b]);
+            double grad = -fo->grad * (h - r) * (h - r) / r; /* ∇Wspiky = grad·d, C as the scene set it */
+            double lap = 40.0 / (PI * pow(h, 5)) * (h - r);
+            double ps = p->mass[a] * p->mass[b] * (pa / (rho[a] * rho[a]) + pb / (rho[b] * rho[b]));
+            double px = -ps * grad * dx, py = -ps * grad * dy;
+            double vx = fo->nu * fo->rho0 * mm * lap * (v[2 * b] - v[2 * a]);
+            double vy = fo->nu * fo->rho0 * mm * lap * (v[2 * b + 1] - v[2 * a + 1]);
+            fx += px + vx, fy += py + vy;
+            *scale += fabs(px) + fabs(py) + fabs(vx) + fabs(vy);
+        }
+        double wl = x[2 * a] < fo->zone ? kw * (fo->zone - x[2 * a]) : 0;
+        double wr = fo->box_w - x[2 * a] < fo->zone ? kw * (fo->zone - (fo->box_w - x[2 * a])) : 0;
+        double wf = x[2 * a + 1] < fo->zone ? kw * (fo->zone - x[2 * a + 1]) : 0;
+        int near = x[2 * a] <= fo->zone || fo->box_w - x[2 * a] <= fo->zone || x[2 * a + 1] <= fo->zone;
+        double grip = near ? 2.0 * sqrt(fo->stiff) / h : 0; /* no slip: -(2c/h) v within the zone */
+        double gx = p->mass[a] * ((wl - wr) - grip * v[2 * a]), gy = p->mass[a] * (wf - grip * v[2 * a + 1]);
+        wall[0] += gx;
+        wall[1] += gy;
+        fx += gx, fy += gy;
+        acc[2 * a] = fx / p->mass[a], acc[2 * a + 1] = fy / p->mass[a];
+    }
+    free(rho);
+}
+
+/* The scene's lattice-renormalised gradient constant is the continuum's
+ * 30/(π h⁵) to within 25 % (a sum over about 12 neighbours of a smooth
+ * integrand: the lattice's error is that large, not larger). */
+START_TEST(sph_gradient_near_continuum)
+{
+    sw_sim s;
+    water_sim(&s, "n=300", "rk4", 0.002);
+    const sw_force *fo = sph_of(&s);
+    double continuum = 30.0 / (PI * pow(fo->h, 5));
+    printf("water: lattice gradient constant %.5g, continuum %.5g (ratio %.4f)\n", fo->grad, continuum,
+           fo->grad / continuum);
+    ck_assert(fabs(fo->grad / continuum - 1) < 0.25);
+    sw_sim_free(&s);
+}
+END_TEST
+
+/* A state to test at: the dam a little into its fall under rk4 (pressures,
+ * wall contacts and velocities all present), 300 particles. */
+typedef struct both {
+    sw_sim s;
+    double *d, *acc;   /* the engine's dy/dt (4n); the direct sum's accelerations (2n) */
+    double wall[2], scale;
+} both;
+
+static void dam_in_motion(both *b)
+{
+    water_sim(&b->s, "n=300", "rk4", 0.002);
+    for (int k = 0; k < 100; k++)
+        sw_sim_step(&b->s);
+    int n = b->s.sys.n;
+    b->d = malloc((size_t)4 * n * sizeof *b->d);
+    b->acc = malloc((size_t)2 * n * sizeof *b->acc);
+    ck_assert(b->d && b->acc);
+    b->s.sys.ode->deriv(b->s.sys.ode->ctx, b->s.t, b->s.sys.y, b->d);
+    direct_accel(&b->s, b->s.sys.y, b->acc, b->wall, &b->scale);
+}
+
+static void both_free(both *b)
+{
+    free(b->d);
+    free(b->acc);
+    sw_sim_free(&b->s);
+}
+
+/* The engine's derivative (cell list, pairs once) against the direct sum:
+ * every component within 1e-12 of the size of the terms summed (rounding
+ * in a sum of a few hundred terms in another order). */
+START_TEST(sph_matches_direct_sum)
+{
+    both b;
+    dam_in_motion(&b);
+    int n = b.s.sys.n, moved = 0;
+    double tol = 1e-12 * b.scale / b.s.sys.particles.mass[0];
+    for (int i = 0; i < 2 * n; i++) {
+        ck_assert_msg(fabs(b.d[2 * n + i] - b.acc[i]) <= tol, "component %d: %.17g vs %.17g (tol %g)", i,
+                      b.d[2 * n + i], b.acc[i], tol);
+        moved += fabs(b.acc[i] + (i % 2 ? 9.81 : 0)) > 1e-3;
+    }
+    ck_assert_int_gt(moved, n / 4); /* the fluid's own forces are at work, not gravity alone */
+    both_free(&b);
+}
+END_TEST
+
+/* Newton's third law pair by pair: Σ m a = Σ m g + the walls' force, to
+ * rounding (1e-13 of Σ|pair terms|: each pair adds +F and -F). */
+START_TEST(sph_momentum_only_gravity_and_walls)
+{
+    both b;
+    dam_in_motion(&b);
+    int n = b.s.sys.n;
+    double F[2] = { 0, 0 }, M = 0;
+    for (int i = 0; i < n; i++) {
+        double m = b.s.sys.particles.mass[i];
+        F[0] += m * b.d[2 * n + 2 * i];
+        F[1] += m * b.d[2 * n + 2 * i + 1];
+        M += m;
+    }
+    ck_assert_double_eq_tol(F[0], b.wall[0], 1e-13 * b.scale);
+    ck_assert_double_eq_tol(F[1], -9.81 * M + b.wall[1], 1e-13 * b.scale);
+    ck_assert(fabs(b.wall[1]) > 0); /* the floor holds the water up */
+    both_free(&b);
+}
+END_TEST
+
+START_TEST(water_deterministic)
+{
+    sw_sim a, b;
+    water_sim(&a, "n=400 shape=1", "verlet", 0.002);
+    water_sim(&b, "n=400 shape=1", "verlet", 0.002);
+    for (int k = 0; k < 200; k++) {
+        sw_sim_step(&a);
+        sw_sim_step(&b);
+    }
+    ck_assert_int_eq(memcmp(a.sys.y, b.sys.y, (size_t)a.sys.ode->dim * sizeof *a.sys.y), 0);
+    sw_sim_free(&a);
+    sw_sim_free(&b);
+}
+END_TEST
+
+/* A column at rest (shape 2, 0.8 m deep) settles under viscosity (nothing
+ * faster than 0.3 m/s after 3 s; the bulk far slower); then the
+ * pressure at depth d (the direct sum's density through the equation of
+ * state) is ρ0·g·d. Particles in the middle band of depths (0.2 to 0.6 m:
+ * away from the surface, where the kernel is cut off, and the floor),
+ * averaged per band of 0.1 m: within 15 % of ρ0·g·d — depth is read from
+ * the top particle, half a layer below the surface (about 0.02 m, 8 % at
+ * 0.25 m), and a lattice of 1200 particles averages a few layers per band
+ * (measured: 3 to 9 % above). */
+START_TEST(water_hydrostatic_column)
+{
+    sw_sim s;
+    water_sim(&s, "n=1200 shape=2 nu=0.5", "symplectic-euler", 0.001);
+    sw_sim_run_until(&s, 3.0);
+    ck_assert(!s.blown);
+    const sw_particles *p = &s.sys.particles;
+    const sw_force *fo = sph_of(&s);
+    int n = p->n;
+    double *rho = malloc((size_t)n * sizeof *rho), top = 0, speed = 0;
+    direct_density(p, fo, s.sys.y, rho);
+    for (int i = 0; i < n; i++) {
+        top = fmax(top, s.sys.y[2 * i + 1]);
+        speed = fmax(speed, hypot(s.sys.y[2 * n + 2 * i], s.sys.y[2 * n + 2 * i + 1]));
+    }
+    ck_assert_msg(speed < 0.3, "still moving at %g m/s", speed); /* a few at the floor still settle */
+    for (int band = 2; band < 6; band++) {
+        double sum = 0, want = 0;
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            double depth = top - s.sys.y[2 * i + 1];
+            if (depth >= 0.1 * band && depth < 0.1 * (band + 1) && s.sys.y[2 * i] > 0.3 && s.sys.y[2 * i] < 2.7) {
+                sum += fmax(fo->stiff * (rho[i] - fo->rho0), 0.0);
+                want += fo->rho0 * 9.81 * depth;
+                count++;
+            }
+        }
+        ck_assert_int_gt(count, 10);
+        printf("water column: depth %.1f-%.1f m: pressure %.4g, rho0 g d %.4g (%d particles)\n", 0.1 * band,
+               0.1 * (band + 1), sum / count, want / count, count);
+        ck_assert_msg(fabs(sum / want - 1) < 0.15, "band %d: %g vs %g", band, sum / count, want / count);
+    }
+    free(rho);
+    sw_sim_free(&s);
+}
+END_TEST
+
+/* The CFL limit: the theory's largest stable step (from the spectrum's
+ * per-particle estimate, at the start) against the step where a column at
+ * rest is measured to blow up (tests/support/water_cfl.c), for the methods
+ * interactive fluids use. Measured within [0.5, 2] times the theory: the
+ * estimate counts each neighbour twice (a lattice's stiffest mode), which
+ * is exact only for a bipartite lattice of equal springs. */
+START_TEST(water_cfl_limit)
+{
+    static const char *const m[] = { "symplectic-euler", "verlet", "rk4" };
+    for (size_t k = 0; k < sizeof m / sizeof m[0]; k++) {
+        double theory, measured;
+        water_cfl(m[k], &theory, &measured);
+        printf("water CFL: %s theory %.4g s, measured %.4g s (ratio %.3f)\n", m[k], theory, measured,
+               measured / theory);
+        ck_assert_msg(measured / theory > 0.5 && measured / theory < 2.0, "%s: measured %g, theory %g", m[k],
+                      measured, theory);
+    }
+}
+END_TEST
+
+/* The dam's front (the largest x of any particle) at t = 0.3 s under
+ * symplectic Euler at Δt = 1, 0.5 and 0.25 ms against a run at 1/16 ms:
+ * the error falls with Δt, by at least 1.5 per halving (first order would
+ * give 2; a front is one particle, so the ratio is rough). */
+static double dam_front(double dt)
+{
+    sw_sim s;
+    water_sim(&s, "n=300", "symplectic-euler", dt);
+    sw_sim_run_until(&s, 0.3);
+    ck_assert(!s.blown);
+    double front = 0;
+    for (int i = 0; i < s.sys.n; i++)
+        front = fmax(front, s.sys.y[2 * i]);
+    sw_sim_free(&s);
+    return front;
+}
+
+START_TEST(water_front_converges)
+{
+    double ref = dam_front(0.0000625), e[3];
+    for (int k = 0; k < 3; k++) {
+        e[k] = fabs(dam_front(0.001 / (1 << k)) - ref);
+        printf("water front: dt %.4g ms, front %.6g m, error %.3g m\n", 1.0 / (1 << k), ref, e[k]);
+    }
+    ck_assert(ref > 0.6); /* the dam (0.6 m wide) has started to spread */
+    ck_assert_msg(e[0] / e[1] > 1.5 && e[1] / e[2] > 1.5, "errors %g %g %g", e[0], e[1], e[2]);
+}
+END_TEST
+
+/* Implicit methods are refused with a reason (no Jacobian beyond the
+ * per-particle estimate, above the dense fallback's size). */
+START_TEST(water_implicit_refused)
+{
+    const sw_scene *sc = sw_scene_find("water");
+    sw_sim s;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_sim_init(&s, sc, NULL, sw_integrator_find("implicit-euler"), 0.002, err, sizeof err),
+                     SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "Jacobian"));
+}
+END_TEST
+
+Suite *make_water_suite(void);
+Suite *make_water_suite(void)
+{
+    Suite *s = suite_create("water");
+    TCase *tc = tcase_create("sph");
+    tcase_add_test(tc, sph_matches_direct_sum);
+    tcase_add_test(tc, sph_gradient_near_continuum);
+    tcase_add_test(tc, sph_momentum_only_gravity_and_walls);
+    tcase_add_test(tc, water_deterministic);
+    tcase_add_test(tc, water_hydrostatic_column);
+    tcase_add_test(tc, water_cfl_limit);
+    tcase_add_test(tc, water_implicit_refused);
+    tcase_add_test(tc, water_front_converges);
+    tcase_set_timeout(tc, 300);
+    suite_add_tcase(s, tc);
+    return s;
+}

@@ -64,6 +64,8 @@ static const symbol symbols[] = {
     { "growth ×#/step decays", L1_METER },
     { "growth ×#/step neutral", L1_METER },
     { "growth ×#/step GROWS", L1_METER },
+    { "(fastest ×#)", L1_METER },
+    { "(of the mode |λ| #; the fastest, |λ| #: ×#)", L1_METER },
     { "stops at t=# (u)", "02-euler.lesson", "Halve it again" },
     { "<method> chooses its own steps: no fixed-step limit", NULL, NULL },
     { "BLOWN UP at step #", NULL, NULL },

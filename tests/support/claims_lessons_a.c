@@ -435,6 +435,7 @@ const claim sw_claims_a[] = {
     /* lesson 5 */
     { L5, "(The meter reads limit {2.91}:", l5_meter_limit, ROUNDED, 0, "the meter's limit on the page, RK4 with the spring's damping", NULL },
     { L5, "a wide window shows the undamped {2.83} beside it", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page", NULL },
+    { L5, "\"(limit with this damping; {2.83}", l5_meter_undamped, ROUNDED, 0, "the meter's undamped limit on the page, as its field reads", NULL },
     { L5, "Here k = {10} N/m, damping c = 0.5, mass 1 kg", cl_l5_k, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = {0.5}, mass 1 kg", cl_l5_c, EXACT, 0, R_COUNT, NULL },
     { L5, "Here k = 10 N/m, damping c = 0.5, mass {1} kg", cl_l5_m, EXACT, 0, R_COUNT, NULL },

@@ -478,9 +478,16 @@ int sw_cmd_autograder(int argc, char **argv)
     }
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
         return sw_cli_error("autograder: %s", err);
+    char scores[120];
+    if (asg.kind == SW_KIND_TRACE)
+        snprintf(scores, sizeof scores, "a trace scores up to %g points", trace_max);
+    else if (asg.kind == SW_KIND_PLUGIN)
+        snprintf(scores, sizeof scores, "a plugin scores up to %g points", plugin_max);
+    else
+        snprintf(scores, sizeof scores, "a trace scores up to %g points, a plugin up to %g", trace_max,
+                 plugin_max);
     if (!o.is_stdout)
-        sw_cli_note("wrote %s: setup.sh, run_autograder, assignment.trace (a trace scores up "
-                    "to %g points, a plugin up to %g) and stepwise's source (%d files)", output,
-                    trace_max, plugin_max, files - 3);
+        sw_cli_note("wrote %s: setup.sh, run_autograder, assignment.trace (%s) and stepwise's source "
+                    "(%d files)", output, scores, files - 3);
     return SW_EXIT_OK;
 }

@@ -50,13 +50,13 @@ void grade_count(const grade_list *l, const int *entries, int n, grade_counted *
         if (!sw_assignment_kind_ok(&h->parts[0].a, e->plugin, why, sizeof why) ||
             e->status == GRADE_SKIPPED || e->status == GRADE_MISSING)
             continue;
-        if (e->plugin || e->part < 0) {
+        if (e->plugin) {
             if (plugin < 0 || better(e, e->score.score, i, &l->items[plugin], l->items[plugin].score.score,
                                      plugin, h->rule))
                 plugin = i;
             continue;
         }
-        int p = e->part < h->nparts ? e->part : 0;
+        int p = e->part >= 0 && e->part < h->nparts ? e->part : 0; /* unchecked: 0 points on part 0 */
         if (traces[p] < 0 || better(e, part_score(e, p), i, &l->items[traces[p]],
                                     part_score(&l->items[traces[p]], p), traces[p], h->rule))
             traces[p] = i;

@@ -103,9 +103,9 @@ int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char
                 }
         }
         if (hidden)
-            fprintf(t, "%g of %g points on the parts shown now; %d of the %d parts are graded now "
+            fprintf(t, "%g of %g points on the parts shown now; %d of the %d parts %s graded now "
                     "and shown later (or never): their tests say when", counted ? shown_pts : 0, shown_max,
-                    hidden, h->nparts);
+                    hidden, h->nparts, hidden == 1 ? "is" : "are");
         else if (counted && one >= 0)
             fprintf(t, "%g of %g points for %s (%s)", c.score, c.max, base_name(l->items[one].path),
                     verdict_of(c.status));

@@ -159,6 +159,33 @@ static int real_dir_of(const char *path, char *real)
     return realpath(dir, real) ? 0 : -1;
 }
 
+/* What a file each output writes begins with: an existing file is written
+ * over only when it is empty or begins so (one of ours from an earlier
+ * run), never a roster, a source file or anything else a teacher keeps. */
+static const char *ours_begins(const char *flag)
+{
+    static const struct {
+        const char *flag, *begins;
+    } kinds[] = { { "--csv", "student,file,verdict" }, { "--gradebook", "student,id,email," },
+                  { "--lms", "name,id,email,score,max" }, { "--results", "{" }, { "--gradescope", "{" } };
+    for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++)
+        if (strcmp(flag, kinds[i].flag) == 0)
+            return kinds[i].begins;
+    return NULL;
+}
+
+/* Whether the regular file at path is empty or begins with begins. */
+static int begins_with(const char *path, const char *begins)
+{
+    char head[64] = "";
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(head, 1, sizeof head - 1, f) : 0;
+    if (f)
+        fclose(f);
+    head[n] = '\0';
+    return f && (n == 0 || strncmp(head, begins, strlen(begins)) == 0);
+}
+
 /* One output path: usable, and nothing the grading reads. */
 static int check_output(const grade_list *l, const struct stat *assign_st, const char *flag,
                         const char *path, sw_outfile_target *t)
@@ -192,6 +219,11 @@ static int check_output(const grade_list *l, const struct stat *assign_st, const
             return sw_cli_error("grade: %s '%.200s' is inside the submissions directory '%.200s'; "
                                 "write the gradebook elsewhere", flag, path, among);
     }
+    const char *begins = ours_begins(flag);
+    if (t->exists && S_ISREG(t->st.st_mode) && begins && !begins_with(t->path, begins))
+        return sw_cli_error("grade: %s '%.200s' exists and is not what %s writes (it does not begin "
+                            "'%s'): a roster, a source or a file of yours is never written over; "
+                            "give another name", flag, path, flag, begins);
     if (!t->direct) {
         /* The real test of a directory (access() says yes to root on a
          * read-only mount): make the temporary the writing will use, and
@@ -202,6 +234,19 @@ static int check_output(const grade_list *l, const struct stat *assign_st, const
         sw_outfile_abort(&probe);
     }
     return SW_EXIT_OK;
+}
+
+/* The file path will be written as: its directory resolved, then its name
+ * ("m/x.csv" and "./m/x.csv" are one file before either exists). 1, or 0
+ * when the directory cannot be resolved. */
+static int where_written(const char *path, char *out)
+{
+    char real[PATH_MAX];
+    if (real_dir_of(path, real) != 0)
+        return 0;
+    const char *slash = strrchr(path, '/');
+    snprintf(out, 2 * PATH_MAX, "%s/%s", real, slash ? slash + 1 : path);
+    return 1;
 }
 
 int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const char *const *opts,
@@ -218,8 +263,10 @@ int grade_check_outputs(const grade_list *l, const struct stat *assign_st, const
             const sw_outfile_target *c = &t[i], *r = &t[j];
             if (!paths[j] || (c->exists && S_ISCHR(c->st.st_mode)))
                 continue;
+            char cw[2 * PATH_MAX], rw[2 * PATH_MAX];
             int same = (c->is_stdout && r->is_stdout) ||
                        (!c->is_stdout && !r->is_stdout && (strcmp(c->path, r->path) == 0 ||
+                        (where_written(c->path, cw) && where_written(r->path, rw) && strcmp(cw, rw) == 0) ||
                         (c->exists && r->exists && same_file(&c->st, r->st.st_dev, r->st.st_ino))));
             if (same)
                 return sw_cli_error("grade: %s and %s both write to '%.200s'; give each its own file",

@@ -68,6 +68,7 @@ int grade_similar_run(grade_list *l)
      * boilerplate only when a quarter of the sources share it. */
     if (l->n / 4 > s.opt.max_docs)
         s.opt.max_docs = l->n / 4;
+    s.opt.own_runs = l->hw && l->hw->nvarying > 0;
     int *entry_of = calloc((size_t)l->n + 1, sizeof *entry_of);
     if (!entry_of) {
         sw_similar_free(&s);

@@ -146,25 +146,29 @@ static void put_row(FILE *f, const char *const *cells, int n)
     }
 }
 
-/* The old file's rows of students not in rows (a regrade of some), when
- * it has our columns (ncols, the first named first). */
-static void keep_old(FILE *f, const char *path, int ncols, const char *first, const student_row *rows,
-                     int n)
+/* The file already at path, read back when it has our columns (ncols,
+ * the first named first): a regrade keeps its rows of the students it saw
+ * nothing of. 1 when d holds it. */
+static int read_old(const char *path, int ncols, const char *first, sw_csv_doc *d)
 {
-    sw_csv_doc d;
     char err[SW_ERRLEN + 512];
-    if (sw_csv_read(path, &d, err, sizeof err) != SW_OK)
-        return;
-    if (d.nrows > 0 && d.rows[0].n == ncols && strcmp(d.rows[0].cells[0], first) == 0)
-        for (int r = 1; r < d.nrows; r++) {
-            const sw_csv_row *o = &d.rows[r];
-            int seen = o->n != ncols;
-            for (int k = 0; !seen && k < n; k++)
-                seen = strcmp(rows[k].name, o->cells[0]) == 0 && (rows[k].n > 0 || rows[k].missing == 1);
-            if (!seen)
-                put_row(f, (const char *const *)o->cells, ncols);
+    if (sw_csv_read(path, d, err, sizeof err) != SW_OK)
+        return 0;
+    if (d->nrows > 0 && d->rows[0].n == ncols && strcmp(d->rows[0].cells[0], first) == 0)
+        return 1;
+    sw_csv_doc_free(d);
+    return 0;
+}
+
+/* The old row of the student named name, once; NULL when none. */
+static const sw_csv_row *old_row(sw_csv_doc *d, int have, int ncols, unsigned char *used, const char *name)
+{
+    for (int r = 1; have && r < d->nrows; r++)
+        if (!used[r] && d->rows[r].n == ncols && strcmp(d->rows[r].cells[0], name) == 0) {
+            used[r] = 1;
+            return &d->rows[r];
         }
-    sw_csv_doc_free(&d);
+    return NULL;
 }
 
 static int write_one(const grade_list *l, const char *path, int lms, student_row *rows, int n)
@@ -176,12 +180,23 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
     FILE *f = o.f;
     static const char *const lms_columns[] = { "name", "id", "email", "score", "max" };
     put_row(f, lms ? lms_columns : book_columns, lms ? 5 : BOOK_NCOLS);
-    if (!o.direct && !l->fresh)
-        keep_old(f, path, lms ? 5 : BOOK_NCOLS, lms ? "name" : "student", rows, n);
+    int ncols = lms ? 5 : BOOK_NCOLS;
+    sw_csv_doc old;
+    int have = !o.direct && !l->fresh && read_old(path, ncols, lms ? "name" : "student", &old);
+    unsigned char *used = have ? calloc((size_t)old.nrows + 1, 1) : NULL;
+    have = have && used;
     for (int k = 0; k < n; k++) {
         student_row *r = &rows[k];
-        if (r->n == 0 && r->missing != 1)
-            continue; /* a roster student this regrade saw nothing of: kept above */
+        if (r->n == 0 && r->missing != 1) {
+            /* a roster student this regrade saw nothing of: their row as it was, in its place */
+            const sw_csv_row *was = old_row(&old, have, ncols, used, r->name);
+            if (was)
+                put_row(f, (const char *const *)was->cells, ncols);
+            continue;
+        }
+        if (have)
+            while (old_row(&old, have, ncols, used, r->name))
+                ; /* replaced by the row below */
         grade_counted c;
         grade_count(l, r->entries, r->n, &c);
         char score[32], max[32], counted[2400], also[2400], message[1600];
@@ -194,6 +209,8 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
             email = s->email;
         }
         if (lms) {
+            if (l->roster && r->who < 0)
+                continue; /* a file that matched nobody: the gradebook has it, an LMS could not place it */
             const char *cells[] = { r->name, id, email, score, max };
             put_row(f, cells, 5);
             continue;
@@ -207,6 +224,13 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
                                 counted, also, message, r->any ? r->any->remarks : "" };
         put_row(f, cells, BOOK_NCOLS);
     }
+    /* Rows of students neither on the roster nor in this run: kept, last. */
+    for (int r = 1; have && r < old.nrows; r++)
+        if (!used[r] && old.rows[r].n == ncols)
+            put_row(f, (const char *const *)old.rows[r].cells, ncols);
+    if (have)
+        sw_csv_doc_free(&old);
+    free(used);
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: %s", err);
     return SW_EXIT_OK;

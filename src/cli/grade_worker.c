@@ -168,9 +168,9 @@ static const sw_homework *student_homework(const grade_job *job, char *err, size
     if (job->hw->nvarying == 0)
         return job->hw;
     if (!job->student_key || !job->student_key[0]) {
-        snprintf(err, errlen, "whose submission this is could not be told (no roster student "
-                 "matched it), so neither could the parameters it is graded with: this homework "
-                 "gives each student their own");
+        snprintf(err, errlen, "whose values to grade this with could not be told (no roster student "
+                 "matched it, or the roster has no e-mail for them): this homework gives each student "
+                 "their own parameters, drawn from their e-mail");
         return NULL;
     }
     if (sw_homework_read(&own, job->hw->path, job->student_key, err, errlen) != SW_OK)
@@ -217,6 +217,7 @@ static void check_part(const grade_job *job, const sw_homework *h, int p, sw_che
     memset(v, 0, sizeof *v);
     v->failing_step = -1;
     if (job->plugin) {
+        sw_plugin_forgive(req->plugin); /* a part is a check of its own */
         req->measure = 0;
         for (int i = 0; i < req->assignment->points.n; i++)
             req->measure |= req->assignment->points.items[i].kind == SW_POINTS_ORDER ||

@@ -18,6 +18,7 @@
 #include "grade/homework.h"
 #include "grade/roster.h"
 #include "util/csv.h"
+#include "util/escape.h"
 #include "util/outfile.h"
 
 static const char handout_help[] =
@@ -27,12 +28,26 @@ static const char handout_help[] =
     "assignment A with that student's values in place of every '# param P: LO..HI\n"
     "per student' or 'one of ...' line, drawn from their e-mail and A's '# secret:'\n"
     "(the same values 'grade' and the Gradescope autograder use), without the\n"
-    "secret, and for a plugin homework without its hidden parts. A sheet is an\n"
-    "assignment: the student checks their work with 'stepwise check ... --assignment\n"
-    "NAME.txt'. DIR/handout.csv lists name, email and file. The roster needs an\n"
-    "email column.\n"
+    "secret, and for a plugin homework without the parts not shown at once. A\n"
+    "sheet is an assignment: the student checks their work with 'stepwise check\n"
+    "... --assignment NAME.txt'. DIR/handout.csv lists name, email and file.\n"
+    "Values per student need the roster's email column; a student without an\n"
+    "e-mail gets no sheet, and is named.\n"
     "\n"
     "exit status: 0 written, 2 bad usage.\n";
+
+/* Whether path names one of the two inputs (the assignment, the roster):
+ * a sheet or the index is never written over them. */
+static int is_input(const char *path, const struct stat *in, int n)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (st.st_dev == in[i].st_dev && st.st_ino == in[i].st_ino)
+            return 1;
+    return 0;
+}
 
 int sw_cmd_handout(int argc, char **argv)
 {
@@ -65,17 +80,23 @@ int sw_cmd_handout(int argc, char **argv)
     sw_roster r;
     if (sw_roster_read(roster_path, &r, err, sizeof err) != SW_OK)
         return sw_cli_error("handout: --roster: %s", err);
-    int rc = SW_EXIT_OK;
-    for (int s = 0; s < r.n && rc == SW_EXIT_OK; s++)
-        if (!r.students[s].email[0])
-            rc = sw_cli_error("handout: the roster has no e-mail for the student on line %ld: the "
-                              "values are drawn from each student's e-mail (an email column)",
-                              r.students[s].line);
+    int rc = SW_EXIT_OK, with_email = 0, skipped = 0;
+    for (int s = 0; s < r.n; s++)
+        with_email += r.students[s].email[0] != 0;
+    if (h.nvarying > 0 && with_email == 0)
+        rc = sw_cli_error("handout: the roster has no email column, and %.200s draws each student's "
+                          "values from their e-mail", assignment);
     if (rc == SW_EXIT_OK && mkdir(dir, 0777) != 0 && errno != EEXIST)
         rc = sw_cli_error("handout: cannot make '%.200s': %s", dir, strerror(errno));
     sw_outfile index;
     char path[PATH_MAX];
+    struct stat inputs[2];
+    int ninputs = (stat(assignment, &inputs[0]) == 0) + 0;
+    if (stat(roster_path, &inputs[ninputs]) == 0)
+        ninputs++;
     snprintf(path, sizeof path, "%s/handout.csv", dir);
+    if (rc == SW_EXIT_OK && is_input(path, inputs, ninputs))
+        rc = sw_cli_error("handout: '%.200s' is the assignment or the roster: give -o another folder", path);
     if (rc == SW_EXIT_OK && sw_outfile_open(&index, path, err, sizeof err) != SW_OK)
         rc = sw_cli_error("handout: %s", err);
     if (rc != SW_EXIT_OK) {
@@ -87,11 +108,23 @@ int sw_cmd_handout(int argc, char **argv)
     int written = 0;
     for (int s = 0; names && s < r.n && rc == SW_EXIT_OK; s++) {
         const sw_student *st = &r.students[s];
+        if (h.nvarying > 0 && !st->email[0]) {
+            char shown[160];
+            sw_escape(st->name, 80, shown, sizeof shown);
+            sw_cli_note("handout: no sheet for %s (roster line %ld): no e-mail to draw their values from",
+                        shown, st->line);
+            skipped++;
+            continue;
+        }
         char base[100];
         grade_safe_name(st->name, base, sizeof base);
         grade_name_unique(names, s, base);
         snprintf(path, sizeof path, "%s/%s.txt", dir, names[s]);
         sw_outfile o;
+        if (is_input(path, inputs, ninputs)) {
+            rc = sw_cli_error("handout: '%.200s' is the assignment or the roster: give -o another folder", path);
+            break;
+        }
         if (sw_homework_read(&h, assignment, st->email, err, sizeof err) != SW_OK ||
             sw_outfile_open(&o, path, err, sizeof err) != SW_OK) {
             rc = sw_cli_error("handout: %s", err);
@@ -118,7 +151,8 @@ int sw_cmd_handout(int argc, char **argv)
     else if (rc != SW_EXIT_OK)
         sw_outfile_abort(&index);
     if (rc == SW_EXIT_OK)
-        sw_cli_note("handout: %d sheet%s in %s (and handout.csv)", written, written == 1 ? "" : "s", dir);
+        sw_cli_note("handout: %d sheet%s in %s (and handout.csv)%s", written, written == 1 ? "" : "s", dir,
+                    skipped ? "; the students without an e-mail are named above" : "");
     free(names);
     sw_roster_free(&r);
     return rc;

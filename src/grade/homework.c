@@ -166,6 +166,13 @@ static int parse_varying(sw_homework *h, const char *param, const char *value, i
         }
         if (v->nlist < 2)
             goto bad;
+        for (int i = 0; i < v->nlist; i++)
+            for (int j = 0; j < i; j++)
+                if (v->list[i] == v->list[j]) {
+                    snprintf(msg, sizeof msg, "'param %.40s' per student: %g is listed twice (each "
+                             "value once, so that each is as likely)", param, v->list[i]);
+                    return fail(h, line, err, errlen, msg);
+                }
     } else {
         char lo[64], hi[64];
         size_t n = (size_t)(dots - text);
@@ -181,7 +188,12 @@ static int parse_varying(sw_homework *h, const char *param, const char *value, i
         if (dl < 0 || dh < 0 || sw_parse_double(lo, &a) != SW_OK || sw_parse_double(hi, &b) != SW_OK)
             goto bad;
         v->digits = dl > dh ? dl : dh;
-        if (v->digits > 9 || !(b > a))
+        if (!(b > a)) {
+            snprintf(msg, sizeof msg, "'param %.40s' per student: the range's low end comes first and "
+                     "below its high end (%s..%s)", param, lo, hi);
+            return fail(h, line, err, errlen, msg);
+        }
+        if (v->digits > 9)
             goto bad;
         double scale = pow(10, v->digits);
         double la = nearbyint(a * scale), lb = nearbyint(b * scale);
@@ -402,8 +414,8 @@ static int check_ranges(const sw_homework *h, int part, char *err, size_t errlen
         for (int k = 0; k < n; k++) {
             double x = v->nlist > 0 ? v->list[k] : grid_value(v, k == 0 ? 0 : v->count - 1);
             if (x < p->min || x > p->max || (p->integer && x != floor(x))) {
-                snprintf(msg, sizeof msg, "'param %s' per student: %g is outside %s's range %g to %g%s",
-                         v->param, x, sc->name, p->min, p->max, p->integer ? ", whole numbers" : "");
+                snprintf(msg, sizeof msg, "'param %s' per student: %g is outside %s's range for it, "
+                         "[%g, %g]%s", v->param, x, sc->name, p->min, p->max, p->integer ? ", whole numbers" : "");
                 return fail(h, v->line, err, errlen, msg);
             }
         }

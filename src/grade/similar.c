@@ -199,6 +199,7 @@ void sw_similar_defaults(sw_similar_opts *o)
     o->max_docs = 10;
     o->trace_threshold = 0.9;
     o->trace_min_rows = 3;
+    o->own_runs = 0;
 }
 
 int sw_similar_init(sw_similar *s, const sw_similar_opts *opt, char *err, size_t errlen)
@@ -482,16 +483,17 @@ static void compare_sources(const sw_similar *s, const sw_similar_doc *a, const 
 static void compare_traces(const sw_similar *s, const sw_similar_doc *a, const sw_similar_doc *b,
                            sw_similar_pair *p, int say)
 {
+    if (same_digest(&a->digest, &b->digest) && (s->opt.own_runs || !(a->correct && b->correct))) {
+        p->score = 1;
+        p->flagged = 1;
+        snprintf(p->reason, sizeof p->reason, "byte-identical files (%llu bytes)%s",
+                 (unsigned long long)a->digest.bytes,
+                 s->opt.own_runs ? ", where each student ran values of their own" : "");
+        return;
+    }
     if (a->correct && b->correct) {
         if (say)
             snprintf(p->reason, sizeof p->reason, "both correct: identical by design");
-        return;
-    }
-    if (same_digest(&a->digest, &b->digest)) {
-        p->score = 1;
-        p->flagged = 1;
-        snprintf(p->reason, sizeof p->reason, "byte-identical files (%llu bytes)",
-                 (unsigned long long)a->digest.bytes);
         return;
     }
     size_t i = 0, j = 0, both = 0, equal = 0;

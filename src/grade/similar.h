@@ -36,6 +36,9 @@ typedef struct sw_similar_opts {
                              * ignored (MOSS's -m; default 10; 0: never) */
     double trace_threshold; /* traces: share of rows wrong in both that are equal (default 0.9) */
     int trace_min_rows;     /* ...and at least this many such rows (default 3) */
+    int own_runs;           /* every student ran their own values (a homework's per-student
+                             * parameters): two identical traces are a copy even when correct
+                             * (default 0: correct traces are alike by design) */
 } sw_similar_opts;
 
 /* The defaults above. */

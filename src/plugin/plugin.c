@@ -241,6 +241,15 @@ sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t
     return e->last_fault;
 }
 
+void sw_plugin_forgive(const sw_integrator *m)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    if (e && !e->disabled) {
+        e->last_fault = SW_PF_NONE;
+        e->last_failure[0] = '\0';
+    }
+}
+
 void sw_plugin_disable(const sw_integrator *m, const char *why)
 {
     sw_plugin_entry *e = sw_plugin_entry_for(m);

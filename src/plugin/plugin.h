@@ -75,6 +75,11 @@ sw_plugin_fault sw_plugin_failed(sw_sim *s);
 /* The last failure of method m's plugin in any run (stability probes,
  * benchmarks): the fault, with its description in buf; SW_PF_NONE when none. */
 sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len);
+/* Forget m's plugin's last failure, so that the next run starts it afresh
+ * (its host again if it died): a homework's next part is a check of its
+ * own, which a crash on an earlier part must not decide. Not after
+ * sw_plugin_disable. */
+void sw_plugin_forgive(const sw_integrator *m);
 /* Refuse method m from now on, saying why (play disables a crashed plugin). */
 void sw_plugin_disable(const sw_integrator *m, const char *why);
 

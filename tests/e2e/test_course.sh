@@ -89,10 +89,11 @@ d=$(folder hw4 "Joseph Lagrange"); record_swing "$(sheet sheets4 "Joseph Lagrang
 d=$(folder hw4 "Pierre Laplace")
 "$SW" record spring --set k=8 -i verlet --dt 0.01 --steps 200 -o "$d/swing.trace" > /dev/null 2>&1
 record_fall "$(sheet sheets4 "Pierre Laplace")" "$d/fall.trace"
-# Norbert Wiener: no folder at all
+# Norbert Wiener uploads a file that is no trace (which part it is for cannot be told)
+printf 'my answers are on paper\n' > "$(folder hw4 "Norbert Wiener")/homework.trace"
 
 "$SW" grade --assignment hw4-traces.txt --roster roster.csv --csv files4.csv --gradebook book4.csv \
-    --lms lms4.csv hw4 > out4 2>&1
+    --lms lms4.csv --similarity hw4 > out4 2>&1
 [ $? -le 1 ] || fail "grade hw4: $(cat out4)"
 
 # The expectation, written out: each student's points of 8 (4 a part: the
@@ -143,6 +144,10 @@ book4() { # NAME VERDICT COUNTED-PATTERN MESSAGE-PATTERN
 }
 book4 "Grace Hopper" fail "swing.trace" "made for other parameters than yours (param k: "
 grep "^Grace Hopper" book4.csv | grep -q "Ada" && fail "the copied trace's message names whose it was"
+# ... but the teacher's --similarity pairs her files with Ada's: with values
+# per student, byte-identical traces are a copy even when one is correct
+grep "^Grace Hopper,.*swing.trace" files4.csv | grep -q "Ada Lovelace.*byte-identical files" ||
+    fail "HW4: the copied traces are not paired: $(grep '^Grace Hopper' files4.csv)"
 book4 "Emmy Noether" fail "swing.trace" "x0 is 100 times the reference at every step: positions in cm instead of m"
 book4 "Henri Poincaré" fail "swing.trace" ""
 book4 "Sofia Kovalevskaya" missing "" "no submission"
@@ -157,7 +162,7 @@ grep "^Carl Gauss" book4.csv | awk -F, '{ print $8 }' | grep -q "swing.trace" ||
 book4 "Leonhard Euler" fail "" "nothing of the kind this homework asks for: a trace"
 book4 "Joseph Lagrange" fail "swing.trace" "no trace for part fall"
 book4 "Pierre Laplace" fail "swing.trace" "made for other parameters"
-book4 "Norbert Wiener" missing "" "no submission"
+book4 "Norbert Wiener" error "" "not a stepwise trace"
 [ "$(awk -F, 'NR > 1 { print $5 }' book4.csv | sort -u | tr -d '\r')" = 8 ] || fail "HW4: not one max for every row"
 [ "$(($(wc -l < book4.csv) - 1))" -eq 32 ] || fail "HW4: not one row per student: $(wc -l < book4.csv)"
 # the cm trace: named as a unit mistake, in the files' rows
@@ -196,6 +201,12 @@ d=$(folder hw5 "Henri Poincaré"); s=$(sheet sheets5 "Henri Poincaré")
 "$SW" record chain --set n=4 --set k="$(value "$s" k)" -i rk4 --dt 0.01 --steps 100 -o "$d/chain.trace" > /dev/null 2>&1
 # Sofia Kovalevskaya uploads nothing; Norbert Wiener has no folder
 folder hw5 "Sofia Kovalevskaya" > /dev/null
+# John von Neumann's RK4 crashes on the gyre (8 values: 4 particles) and on
+# nothing else: the hidden part's crash costs its own points only
+sed -e "s/@NAME@/jvn/" -e 's/^{$/{ if (ode->dim == 8) abort();/' -e 's/#include <stepwise\/integrator.h>/#include <stdlib.h>\n#include <stepwise\/integrator.h>/' \
+    "$ROOT/tests/hostile/honest-rk4.c" > "$(folder hw5 "John von Neumann")/rk4.c"
+rm -f "$(folder hw5 "John von Neumann")/rk4.so"
+grep -q "abort" "$(folder hw5 "John von Neumann")/rk4.c" || fail "the crashing plugin was not made"
 # Carl Gauss hands in Euler
 cp "$ROOT/examples/euler_plugin.c" "$(folder hw5 "Carl Gauss")/rk4.c"; rm -f "$(folder hw5 "Carl Gauss")/rk4.so"
 
@@ -206,7 +217,7 @@ cp "$ROOT/examples/euler_plugin.c" "$(folder hw5 "Carl Gauss")/rk4.c"; rm -f "$(
 {
     echo "name,id,email,score,max"
     awk -F, 'NR > 1 { s = 7
-        if ($1 == "Grace Hopper") s = 5
+        if ($1 == "Grace Hopper" || $1 == "John von Neumann") s = 5
         if ($1 == "Henri Poincaré" || $1 == "Sofia Kovalevskaya" || $1 == "Carl Gauss" || $1 == "Norbert Wiener") s = 0
         print $1 "," $2 "," $3 "," s ",7" }' roster.csv
 } > want-lms5.csv
@@ -220,6 +231,11 @@ grep -q "every stage evaluated\|rk4.c: fail\|first failing step" fb5/Grace_Hoppe
     fail "HW5 Grace Hopper's feedback tells how the hidden part went: $(cat fb5/Grace_Hopper.txt)"
 grep "^Emmy Noether" book5.csv | grep -q ",7,7,pass,.*rk4_final.so,.*draft.c," ||
     fail "HW5 Emmy Noether: the best upload does not count: $(grep Noether book5.csv)"
+# a teacher's slip: an output named like the roster is refused, the roster kept
+cp roster.csv roster.bak
+"$SW" grade --assignment hw5-rk4.txt --roster roster.csv --gradebook roster.csv hw5 > slip 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "is not what --gradebook writes" slip && cmp -s roster.csv roster.bak ||
+    fail "--gradebook over the roster: exit $rc: $(cat slip)"
 grep "^Henri Poincaré" book5.csv | grep -q "nothing of the kind this homework asks for: a plugin" ||
     fail "HW5 Henri Poincaré: $(grep Henri book5.csv)"
 

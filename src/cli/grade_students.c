@@ -236,12 +236,35 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
     return SW_EXIT_OK;
 }
 
+/* A regrade of some of a student's files: their row counts only these,
+ * so say so when the --csv read back holds more files of theirs. */
+static void warn_partial(const grade_list *l, const student_row *rows, int n)
+{
+    const sw_csv_doc *old = l->old_book;
+    for (int k = 0; old && k < n; k++) {
+        if (rows[k].n == 0)
+            continue;
+        int held = 0;
+        for (int r = 1; r < old->nrows; r++)
+            held += old->rows[r].n > 1 && strcmp(old->rows[r].cells[0], rows[k].name) == 0 &&
+                    old->rows[r].cells[1][0];
+        if (held > rows[k].n) {
+            char shown[160];
+            sw_escape(rows[k].name, 80, shown, sizeof shown);
+            sw_cli_note("gradebook: %s's row counts the %d file%s graded now; the --csv holds %d of "
+                        "theirs: give their whole folder to count every one", shown, rows[k].n,
+                        rows[k].n == 1 ? "" : "s", held);
+        }
+    }
+}
+
 int grade_students_write(const grade_list *l, const char *gradebook, const char *lms)
 {
     int n = 0, rc = SW_EXIT_OK;
     student_row *rows = group(l, &n);
     if (!rows)
         return sw_cli_error("grade: out of memory for the gradebook");
+    warn_partial(l, rows, n);
     if (gradebook)
         rc = write_one(l, gradebook, 0, rows, n);
     if (rc == SW_EXIT_OK && lms)

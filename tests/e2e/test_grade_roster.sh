@@ -174,7 +174,11 @@ head -1 old.csv | grep -q "message,id,remarks,similar" || fail "old gradebook he
 printf 'name,score\r\nx,1\r\n' > other.csv
 "$SW" grade --assignment assignment.txt --csv other.csv class/s1001_rk4.trace > o 2>&1 &&
     fail "a foreign CSV was updated"
-grep -q "not a gradebook to update" o || fail "foreign CSV: $(cat o)"
+grep -q "is not what --csv writes" o || fail "foreign CSV: $(cat o)"
+# ... nor by --fresh: it starts a gradebook over, never a file of another kind
+"$SW" grade --assignment assignment.txt --csv other.csv --fresh class/s1001_rk4.trace > o 2>&1 &&
+    fail "--fresh wrote over a foreign CSV"
+grep -q "^name,score" other.csv || fail "--fresh changed a foreign CSV: $(cat other.csv)"
 # --fresh starts over: one graded row and the nine students it has not seen.
 "$SW" grade --assignment assignment.txt --roster roster.csv --csv grades.csv --fresh \
     class/pascalblaise_4711_998877_hw4.trace > fresh 2>&1

@@ -545,12 +545,13 @@ static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int
             k++;
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_TITLE, stub[k]);
     } else if (foot <= height - (side->fold > 0 ? 1 : SIDE_TEXT_MIN)) {
-        /* the foot whole at the bottom, the text (its end, once a question opened) above it */
-        window_rows = side->fold > 0 ? window : height - foot;
-        int shown = draw_scrolled(side, scr, row, col, height - foot, width, head, text,
-                                  side->fold > 0 ? text : first);
+        /* the foot whole at the bottom, the text above it from where the
+         * reader was (never its end at once: the lines between would be
+         * skipped); a question that opened stays open */
+        window_rows = height - foot; /* what a press moves: the rows the text has here */
+        int shown = draw_scrolled(side, scr, row, col, height - foot, width, head, text, first);
         draw_lines(side, scr, row + height - foot, col, width, side->nlines - foot, foot);
-        first = side->fold > 0 ? open : shown;
+        first = side->fold > 0 && shown < open ? open : shown;
     } else if (side->fold > 0 && window >= SIDE_TEXT_MIN) {
         /* the foot alone is taller than the pane: it scrolls on from where the fold opened */
         first = open + draw_scrolled(side, scr, row, col, height, width, side->nlines - foot, foot, first - open);

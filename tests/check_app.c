@@ -236,6 +236,19 @@ START_TEST(compare_race)
 }
 END_TEST
 
+/* Before the first step nothing has been integrated: the error reads 0,
+ * not the truth's own rounding (lesson 9's orbit read "err 1e-34 m"). */
+START_TEST(no_error_before_a_step)
+{
+    sw_app a;
+    app_with(&a, "orbit", "rk4", 0.05, NULL);
+    char line[512];
+    sw_app_status(&a, 0, line, sizeof line);
+    ck_assert_msg(strstr(line, "position error 0 m") != NULL, "%s", line);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* The graph series stays bounded however long the run. */
 START_TEST(graph_bounded)
 {
@@ -568,6 +581,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, watch_only_where_judged);
     tcase_add_test(tc, clock_and_slow_motion);
     tcase_add_test(tc, compare_race);
+    tcase_add_test(tc, no_error_before_a_step);
     tcase_add_test(tc, graph_bounded);
     tcase_add_test(tc, frames_compose);
     tcase_add_test(tc, adaptive_status_keeps_evals);

@@ -57,6 +57,8 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->brief, sizeof x->brief, "E%+.3g%%", drift);
     }
     double err = sw_app_error(a, i);
+    if (s->steps == 0 && isfinite(err))
+        err = 0; /* nothing integrated yet: what differs is the truth's rounding (lesson 9 read 1e-34) */
     if (isfinite(err) && (x = add(f, &n, max, 6))) {
         /* against the truth at this time; the run restarts when dt or the
          * method changes, so it is this run's error alone */

@@ -42,8 +42,7 @@ void sw_app_history_detach(sw_app *a, int i) { sw_history_free(&a->hist[i]); }
 
 void sw_app_history_restart(sw_app *a, int i)
 {
-    sw_history_clear(&a->hist[i]);
-    sw_history_push(&a->hist[i], &a->sims[i]);
+    sw_history_restart(&a->hist[i], &a->sims[i]);
 }
 
 void sw_app_set_until(sw_app *a, double T) { a->until = T > 0 ? T : 0; }
@@ -157,8 +156,8 @@ int sw_app_step_back(sw_app *a, int n)
         phase_cut(&a->phase[i], s->t);
     sw_app_watch_restart(a);
     if (h->stride > 1)
-        snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (checkpoints every %d steps at this "
-                 "size, %d earlier kept; . steps on)", s->t, s->steps, h->stride, h->count - 1);
+        snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (checkpoints every %d steps here; "
+                 "%d earlier)", s->t, s->steps, h->stride, h->count - 1);
     else
         snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (%d earlier states kept; . steps on)",
                  s->t, s->steps, h->count - 1);

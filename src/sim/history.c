@@ -27,23 +27,45 @@ struct sw_history_meta {
 
 static size_t width(const sw_history *h) { return (size_t)h->dim + (size_t)h->nextra; }
 
+int sw_history_keeps_cache(const sw_integrator *m)
+{
+    return (m->flags & SW_ADAPTIVE) || m->step == sw_step_verlet || m->step == sw_step_yoshida4;
+}
+
+/* The memory allowed snapshots of `one` bytes, and how many fit in it. */
+static size_t budget_for(size_t one)
+{
+    return SW_HISTORY_COPIES * one > SW_HISTORY_BYTES ? SW_HISTORY_COPIES * one : SW_HISTORY_BYTES;
+}
+
+static int fit(size_t one)
+{
+    size_t n = budget_for(one) / one;
+    return n < SW_HISTORY_STATES ? (int)n : SW_HISTORY_STATES;
+}
+
 void sw_history_init(sw_history *h, const sw_sim *s)
 {
     memset(h, 0, sizeof *h);
     h->dim = s->sys.ode->dim;
     h->nextra = s->sys.nextra;
-    size_t dim = (size_t)h->dim;
-    size_t one = (width(h) + dim) * sizeof(double) + sizeof(struct sw_history_meta);
-    h->budget = SW_HISTORY_COPIES * one > SW_HISTORY_BYTES ? SW_HISTORY_COPIES * one : SW_HISTORY_BYTES;
-    size_t fit = h->budget / one;
-    int cap = fit < SW_HISTORY_STATES ? (int)fit : SW_HISTORY_STATES;
-    /* fewer than SW_HISTORY_SPAN snapshots: one every stride-th step, so
-     * the oldest is still SW_HISTORY_SPAN steps or more behind the newest */
-    h->stride = cap >= SW_HISTORY_SPAN ? 1 : (SW_HISTORY_SPAN + cap - 2) / (cap - 1);
-    h->vec = malloc((size_t)cap * width(h) * sizeof(double));
-    h->cache = calloc((size_t)cap * dim, sizeof(double));
-    h->meta = malloc((size_t)cap * sizeof *h->meta);
-    if (!h->vec || !h->cache || !h->meta) {
+    size_t state = width(h) * sizeof(double), fsal = (size_t)h->dim * sizeof(double);
+    size_t meta = sizeof(struct sw_history_meta);
+    /* Fewer than SW_HISTORY_SPAN snapshots: one every stride-th step, so the
+     * oldest is still SW_HISTORY_SPAN steps or more behind the newest. The
+     * stride is the one a method with an FSAL derivative needs, whatever the
+     * method, so that compared runs keep their snapshots at the same steps;
+     * a method without one keeps more of them. */
+    int most = fit(state + fsal + meta);
+    h->stride = most >= SW_HISTORY_SPAN ? 1 : (SW_HISTORY_SPAN + most - 2) / (most - 1);
+    int keeps = sw_history_keeps_cache(s->method);
+    size_t one = state + (keeps ? fsal : 0) + meta;
+    int cap = fit(one);
+    h->budget = budget_for(one);
+    h->vec = malloc((size_t)cap * state);
+    h->cache = keeps ? malloc((size_t)cap * fsal) : NULL;
+    h->meta = malloc((size_t)cap * meta);
+    if (!h->vec || (keeps && !h->cache) || !h->meta) {
         sw_history_free(h);
         return;
     }
@@ -62,7 +84,15 @@ void sw_history_free(sw_history *h)
     h->bytes = 0;
 }
 
-void sw_history_clear(sw_history *h) { h->head = h->count = h->since = 0; }
+void sw_history_restart(sw_history *h, const sw_sim *s)
+{
+    if (!h->cap || sw_history_keeps_cache(s->method) != (h->cache != NULL)) {
+        sw_history_free(h);
+        sw_history_init(h, s);
+    }
+    h->head = h->count = h->since = 0;
+    sw_history_push(h, s);
+}
 
 void sw_history_push(sw_history *h, const sw_sim *s)
 {
@@ -75,7 +105,8 @@ void sw_history_push(sw_history *h, const sw_sim *s)
     double *v = h->vec + (size_t)h->head * width(h);
     size_t dim = (size_t)h->dim;
     memcpy(v, s->sys.y, dim * sizeof *v);
-    if (st->have_cache)
+    int cache = st->have_cache && h->cache; /* see sw_history_keeps_cache */
+    if (cache)
         memcpy(h->cache + (size_t)h->head * dim, SW_WORK(st, st->fsal), dim * sizeof *v);
     if (h->nextra)
         memcpy(v + dim, s->sys.extra, (size_t)h->nextra * sizeof *v);
@@ -83,7 +114,7 @@ void sw_history_push(sw_history *h, const sw_sim *s)
         .t = s->t, .steps = s->steps, .evals = s->sys.ode->evals,
         .h_next = st->h_next, .h_last = st->h_last, .err_last = st->err_last,
         .accepted = st->accepted, .rejected = st->rejected, .newton_iters = st->newton_iters,
-        .have_cache = st->have_cache, .fsal = st->fsal, .method = st->method,
+        .have_cache = cache, .fsal = st->fsal, .method = st->method,
         .located = sw_sim_events_located(s), .last_event = sw_sim_events_last_time(s),
     };
     h->head = (h->head + 1) % h->cap;

@@ -15,8 +15,9 @@
 
 /* Snapshots kept per sim at most, and the memory they may take: the larger
  * of SW_HISTORY_BYTES and SW_HISTORY_COPIES snapshots (a system too large
- * for SW_HISTORY_SPAN snapshots in it keeps a checkpoint every stride-th
- * step, the stride chosen so the ring still spans SW_HISTORY_SPAN steps). */
+ * for SW_HISTORY_SPAN snapshots with an FSAL derivative in it keeps a
+ * checkpoint every stride-th step, the stride chosen so the ring still
+ * spans SW_HISTORY_SPAN steps or more). */
 #define SW_HISTORY_STATES 4096
 #define SW_HISTORY_BYTES ((size_t)16 << 20)
 #define SW_HISTORY_COPIES 2
@@ -32,20 +33,26 @@ typedef struct sw_history {
     int head, count;               /* the newest is at (head - 1), count of them */
     size_t budget, bytes;          /* the memory allowed, and allocated */
     double *vec;                   /* cap × (dim + nextra) doubles: the state, scene data */
-    double *cache;                 /* cap × dim doubles: FSAL derivatives (calloc: untouched
-                                    * pages of a method without one are never resident) */
+    double *cache;                 /* cap × dim doubles: FSAL derivatives; NULL for a
+                                    * method without one (sw_history_keeps_cache) */
     struct sw_history_meta *meta;  /* cap of them */
 } sw_history;
 
-/* Room for sim s's snapshots, allocated once within h->budget (the larger
- * of SW_HISTORY_BYTES and SW_HISTORY_COPIES snapshots), at most
- * SW_HISTORY_STATES of them, every stride-th step; cap 0 (rewind off, not an
- * error) only when memory is short. Starts empty. */
+/* Room for sim s's snapshots under its method, allocated once within
+ * h->budget (the larger of SW_HISTORY_BYTES and SW_HISTORY_COPIES
+ * snapshots), at most SW_HISTORY_STATES of them, every stride-th step; cap
+ * 0 (rewind off, not an error) only when memory is short. Starts empty. */
 void sw_history_init(sw_history *h, const sw_sim *s);
 void sw_history_free(sw_history *h);
 /* Forget every snapshot (a reset, a new method or dt: the past no longer
- * steps the same way). */
-void sw_history_clear(sw_history *h);
+ * steps the same way) and keep s's state as the first; room made again
+ * when s's method keeps an FSAL derivative and the old one did not, or
+ * the other way round. */
+void sw_history_restart(sw_history *h, const sw_sim *s);
+/* Whether a snapshot of a run of m needs room for an FSAL derivative: the
+ * methods whose steps set the stepper's have_cache (tests/check_timeline.c
+ * steps every built-in method to check it). */
+int sw_history_keeps_cache(const sw_integrator *m);
 /* s took a step: keep its state as the newest snapshot when it is the
  * stride-th step since the last one, or the first (the oldest goes when
  * full); a blown-up sim is not kept. */

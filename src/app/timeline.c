@@ -1,10 +1,10 @@
 /* Time under the student's control: a stop time the clock halts at (play
  * --until, a page's @until, the u key) and stepping back through each sim's
- * recent states (its history, sim/history.c: every state, or for a large
- * system a checkpoint every few steps, which stepping back lands on). Invariant: every step the app
+ * recent states (its history, sim/history.c). Invariant: every step the app
  * takes goes through sw_app_step_sim, so the history holds every state the
- * runs passed through, and a run stepped back and on again repeats itself
- * bit for bit. */
+ * runs passed through (a large system's every stride-th: stepping back lands
+ * on one of those), and a run stepped back and on again repeats itself bit
+ * for bit. */
 #include "app/app.h"
 
 #include <math.h>
@@ -135,7 +135,7 @@ int sw_app_step_back(sw_app *a, int n)
     const sw_sim *s = &a->sims[0];
     a->paused = 1;
     if (!h->cap) {
-        snprintf(a->message, sizeof a->message, "no rewind here: no memory for two kept states of %d particles "
+        snprintf(a->message, sizeof a->message, "no rewind here: no memory to keep states of %d particles "
                  "(%.3g MB)", s->sys.n, (double)h->budget / 1e6);
         return 0;
     }
@@ -143,8 +143,14 @@ int sw_app_step_back(sw_app *a, int n)
     double target = sw_history_time(h, k);
     if (k < 0 || isnan(target)) {
         double from = sw_history_time(h, 0);
-        snprintf(a->message, sizeof a->message, "nothing earlier kept: the history starts at t = %.4g (a reset, "
-                 "or a change of method, dt or events, starts it)", isnan(from) ? s->t : from);
+        if (h->wrapped && h->stride > 1)
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: %d checkpoints, %d steps apart, at "
+                     "this size", h->cap, h->stride);
+        else if (h->wrapped)
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: the last %d states are kept", h->cap);
+        else
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: the history starts at t = %.4g (a "
+                     "reset, or a change of method, dt or events, starts it)", isnan(from) ? s->t : from);
         return 0;
     }
     for (int i = 0; i < a->nsims; i++)

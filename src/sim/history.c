@@ -80,7 +80,7 @@ void sw_history_free(sw_history *h)
     free(h->meta);
     h->vec = h->cache = NULL;
     h->meta = NULL;
-    h->cap = h->head = h->count = h->since = 0;
+    h->cap = h->head = h->count = h->since = h->wrapped = 0;
     h->bytes = 0;
 }
 
@@ -90,7 +90,7 @@ void sw_history_restart(sw_history *h, const sw_sim *s)
         sw_history_free(h);
         sw_history_init(h, s);
     }
-    h->head = h->count = h->since = 0;
+    h->head = h->count = h->since = h->wrapped = 0;
     sw_history_push(h, s);
 }
 
@@ -120,6 +120,8 @@ void sw_history_push(sw_history *h, const sw_sim *s)
     h->head = (h->head + 1) % h->cap;
     if (h->count < h->cap)
         h->count++;
+    else
+        h->wrapped = 1;
 }
 
 /* The k-th newest snapshot's index (k = 0: the newest). */

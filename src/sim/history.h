@@ -31,6 +31,7 @@ typedef struct sw_history {
     int since;                     /* steps taken since the newest snapshot */
     int dim, nextra;               /* what one snapshot copies */
     int head, count;               /* the newest is at (head - 1), count of them */
+    int wrapped;                   /* an older snapshot made room for a newer one */
     size_t budget, bytes;          /* the memory allowed, and allocated */
     double *vec;                   /* cap × (dim + nextra) doubles: the state, scene data */
     double *cache;                 /* cap × dim doubles: FSAL derivatives; NULL for a

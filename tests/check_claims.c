@@ -26,7 +26,7 @@ static const struct {
     { sw_claims_a, &sw_claims_a_n }, { sw_claims_b, &sw_claims_b_n }, { sw_claims_d, &sw_claims_d_n },
     { sw_claims_e, &sw_claims_e_n }, { sw_claims_m, &sw_claims_m_n }, { sw_claims_s, &sw_claims_s_n },
     { sw_claims_r, &sw_claims_r_n }, { sw_claims_k, &sw_claims_k_n }, { sw_claims_o, &sw_claims_o_n },
-    { sw_claims_f, &sw_claims_f_n }, { sw_claims_l, &sw_claims_l_n },
+    { sw_claims_f, &sw_claims_f_n }, { sw_claims_l, &sw_claims_l_n }, { sw_claims_w, &sw_claims_w_n },
 };
 
 static size_t claim_count(void)

@@ -13,6 +13,7 @@
 #include "app/runner.h"
 #include "engine/stepper.h"
 #include "sim/history.h"
+#include "alloc_count.h"
 
 #define LESSONS_DIR "lessons"
 
@@ -257,12 +258,18 @@ START_TEST(rewind_follows_and_bounds)
     sw_app_key(&a, ',', 0);
     ck_assert_ptr_nonnull(strstr(a.message, "nothing earlier"));
     ck_assert_int_eq(a.sims[0].steps, 0);
-    /* the history is bounded: 5000 steps keep the last SW_HISTORY_STATES */
+    /* a small system keeps every state: 5000 steps keep the last
+     * SW_HISTORY_STATES */
+    ck_assert_int_eq(a.hist[0].stride, 1);
     for (int k = 0; k < 5000; k++)
         sw_app_key(&a, '.', 0);
     for (int k = 0; k < 100; k++)
         sw_app_key(&a, ';', 0);
     ck_assert_int_eq(a.sims[0].steps, 5000 - (SW_HISTORY_STATES - 1));
+    sw_app_key(&a, ',', 0); /* nothing earlier: the ring's bound, not a reset */
+    char says[80];
+    snprintf(says, sizeof says, "nothing earlier kept: the last %d states are kept", SW_HISTORY_STATES);
+    ck_assert_str_eq(a.message, says);
     sw_app_free(&a);
 }
 END_TEST
@@ -329,27 +336,209 @@ START_TEST(rewind_from_blow_up)
 }
 END_TEST
 
-/* A huge system keeps as many states as fit in SW_HISTORY_BYTES; below
- * SW_HISTORY_MIN none, and the key says why. */
-START_TEST(rewind_bounded_by_memory)
+/* An app on the vortex of n points under method (dt: the scene's). */
+static void vortex_on(sw_app *a, int n, const char *method)
 {
-    sw_app a;
-    char err[SW_ERRLEN];
+    char err[SW_ERRLEN], set[32];
     const sw_scene *sc = sw_scene_find("vortex");
     double p[SW_MAX_PARAMS];
     sw_scene_defaults(sc, p);
-    ck_assert_int_eq(sw_scene_set(sc, p, "n=200000", err, sizeof err), SW_OK);
-    ck_assert_int_eq(sw_app_init(&a, sc, p, NULL, 0, err, sizeof err), SW_OK);
-    ck_assert_int_eq(a.hist[0].cap, 0);
-    sw_app_key(&a, '.', 0);
+    snprintf(set, sizeof set, "n=%d", n);
+    ck_assert_int_eq(sw_scene_set(sc, p, set, err, sizeof err), SW_OK);
+    ck_assert_msg(sw_app_init(a, sc, p, sw_integrator_find(method), 0, err, sizeof err) == SW_OK, "%s", err);
+}
+
+/* A state for comparing bit for bit without keeping it: FNV-1a over y's
+ * bytes, with t, steps and evaluations kept whole. */
+typedef struct print {
+    unsigned long long hash;
+    double t;
+    long steps, evals;
+} print;
+
+static print print_of(const sw_sim *s)
+{
+    const unsigned char *b = (const unsigned char *)s->sys.y;
+    unsigned long long hash = 14695981039346656037ull;
+    for (size_t i = 0; i < (size_t)s->sys.ode->dim * sizeof(double); i++)
+        hash = (hash ^ b[i]) * 1099511628211ull;
+    return (print){ hash, s->t, s->steps, sw_sim_evals(s) };
+}
+
+static void same_print(const print *p, const sw_sim *s, const char *what, int at)
+{
+    print q = print_of(s);
+    ck_assert_msg(p->hash == q.hash && p->t == q.t && p->steps == q.steps && p->evals == q.evals,
+                  "%s at step %d: t %.17g/%.17g steps %ld/%ld evals %ld/%ld hash %llx/%llx", what, at, p->t, q.t,
+                  p->steps, q.steps, p->evals, q.evals, p->hash, q.hash);
+}
+
+/* At a size whose snapshots do not fit SW_HISTORY_SPAN times in the budget
+ * (the vortex at n = 50000: 8 bytes × 2 × 100000 components a snapshot, 1.6
+ * MB, ten of them in 16 MiB) the history keeps a checkpoint every stride-th
+ * step, the ring spanning SW_HISTORY_SPAN steps or more. ',' lands on the
+ * newest checkpoint behind, ';' on the newest at least 50 steps behind
+ * (checkpoints sit at the multiples of the stride: the first is the state
+ * the run started from), each equal bit for bit to the forward run's state
+ * there, and stepping on repeats the forward run bit for bit: rk4, and
+ * rk45, whose FSAL derivative and step proposal a checkpoint carries. */
+START_TEST(rewind_checkpoints_bit_for_bit)
+{
+    static const struct { const char *method; int compare; } cases[] = { { "rk4", 1 }, { "rk45", 0 } };
+    enum { N = 150 };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const char *what = cases[c].method;
+        sw_app a;
+        vortex_on(&a, 50000, what);
+        if (cases[c].compare)
+            sw_app_set_compare(&a, 1, NULL, NULL);
+        const sw_history *h = &a.hist[0];
+        int stride = h->stride;
+        ck_assert_msg(stride > 1, "%s: stride %d", what, stride);
+        for (int i = 0; i < a.nsims; i++) { /* compared runs keep their checkpoints at the same steps */
+            ck_assert_int_eq(a.hist[i].stride, stride);
+            ck_assert_int_ge((a.hist[i].cap - 1) * stride, SW_HISTORY_SPAN);
+        }
+        print (*fwd)[SW_APP_SIMS] = calloc(N + 1, sizeof *fwd);
+        ck_assert_ptr_nonnull(fwd);
+        for (int i = 0; i < a.nsims; i++)
+            fwd[0][i] = print_of(&a.sims[i]);
+        for (int k = 1; k <= N; k++) {
+            sw_app_key(&a, '.', 0);
+            for (int i = 0; i < a.nsims; i++)
+                fwd[k][i] = print_of(&a.sims[i]);
+        }
+        int at = (N - 1) / stride * stride;
+        sw_app_key(&a, ',', 0);
+        ck_assert_int_eq(a.sims[0].steps, at);
+        for (int i = 0; i < a.nsims; i++)
+            same_print(&fwd[a.sims[i].steps][i], &a.sims[i], what, at);
+        char says[80];
+        snprintf(says, sizeof says, "step %d (checkpoints every %d steps here;", at, stride);
+        ck_assert_msg(strstr(a.message, says), "%s", a.message);
+        int back = (at - SW_APP_BACK_MANY) / stride * stride;
+        sw_app_key(&a, ';', 0);
+        ck_assert_int_eq(a.sims[0].steps, back);
+        for (int i = 0; i < a.nsims; i++)
+            same_print(&fwd[a.sims[i].steps][i], &a.sims[i], what, back);
+        for (int k = back + 1; k <= N; k++) {
+            sw_app_key(&a, '.', 0);
+            for (int i = 0; i < a.nsims; i++)
+                same_print(&fwd[a.sims[i].steps][i], &a.sims[i], what, k);
+        }
+        free(fwd);
+        sw_app_free(&a);
+    }
+}
+END_TEST
+
+/* The memory a history allocates (counted at malloc, tests/support/
+ * alloc_count.c) stays within its budget, and the budget is the larger of
+ * SW_HISTORY_BYTES and two snapshots: a snapshot is the state and the
+ * scene's data, the FSAL derivative (as long as the state) for a method
+ * that keeps one (rk45 does, rk4 not), and under 256 bytes of counters.
+ * Small systems keep every state (stride 1: the chain n = 1000 and the
+ * vortex n = 1000, 64 kB and 32 kB a state, 255 or more in 16 MiB); larger
+ * ones stride, the same for both methods; the vortex at n = 300000 (4.8 MB
+ * a state) keeps two under rk45, in a budget beyond 16 MiB. */
+START_TEST(rewind_memory_within_budget)
+{
+    static const struct { const char *scene; int n; const char *method; int fsal, stride1; } cases[] = {
+        { "chain", 1000, "rk4", 0, 1 },        { "vortex", 1000, "rk45", 1, 1 },
+        { "vortex", 50000, "rk4", 0, 0 },      { "vortex", 50000, "rk45", 1, 0 },
+        { "vortex", 300000, "rk4", 0, 0 },     { "vortex", 300000, "rk45", 1, 0 },
+    };
+    int stride_before = 0;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        sw_sim s;
+        sw_history h;
+        char err[SW_ERRLEN], set[32];
+        const sw_scene *sc = sw_scene_find(cases[c].scene);
+        double p[SW_MAX_PARAMS];
+        sw_scene_defaults(sc, p);
+        snprintf(set, sizeof set, "n=%d", cases[c].n);
+        ck_assert_int_eq(sw_scene_set(sc, p, set, err, sizeof err), SW_OK);
+        ck_assert_msg(sw_sim_init(&s, sc, p, sw_integrator_find(cases[c].method), sc->dt, err, sizeof err) == SW_OK,
+                      "%s", err);
+        size_t before = sw_test_allocated_bytes();
+        sw_history_init(&h, &s);
+        size_t took = sw_test_allocated_bytes() - before;
+        double one = ((1.0 + cases[c].fsal) * s.sys.ode->dim + s.sys.nextra) * sizeof(double);
+        double most = fmax((double)SW_HISTORY_BYTES, 2 * (one + 256));
+        ck_assert_int_gt(h.cap, 1);
+        ck_assert_msg(took <= h.budget && h.bytes <= h.budget && (double)h.budget <= most,
+                      "%s n=%d %s: allocated %zu (says %zu), budget %zu, at most %.0f", cases[c].scene, cases[c].n,
+                      cases[c].method, took, h.bytes, h.budget, most);
+        ck_assert_msg((double)took >= h.cap * one, "%s n=%d %s: %zu bytes for %d snapshots", cases[c].scene,
+                      cases[c].n, cases[c].method, took, h.cap);
+        if (cases[c].stride1) {
+            ck_assert_int_eq(h.stride, 1);
+            ck_assert_int_ge(h.cap, SW_HISTORY_SPAN);
+        } else {
+            ck_assert_int_gt(h.stride, 1);
+            ck_assert_int_ge((h.cap - 1) * h.stride, SW_HISTORY_SPAN);
+            if (cases[c].fsal) /* the same scene under rk4, the case before */
+                ck_assert_int_eq(h.stride, stride_before);
+            stride_before = h.stride;
+        }
+        if (cases[c].n == 300000 && cases[c].fsal) {
+            ck_assert_int_eq(h.cap, 2);
+            ck_assert_int_gt(h.budget, SW_HISTORY_BYTES);
+        }
+        sw_history_free(&h);
+        sw_sim_free(&s);
+    }
+}
+END_TEST
+
+/* sw_history_keeps_cache names every built-in method whose steps keep an
+ * FSAL derivative (a snapshot without it would not step on bit for bit):
+ * each method takes three steps of the spring, or of the orbit (one body
+ * alone: dop853-lc), and a cache it keeps must be one the history keeps. */
+START_TEST(history_knows_fsal_methods)
+{
+    static const char *const scenes[] = { "spring", "orbit" };
+    for (int k = 0; k < sw_integrator_count(); k++) {
+        const sw_integrator *m = sw_integrator_at(k);
+        int stepped = 0;
+        for (size_t c = 0; c < sizeof scenes / sizeof scenes[0] && !stepped; c++) {
+            sw_sim s;
+            char err[SW_ERRLEN];
+            const sw_scene *sc = sw_scene_find(scenes[c]);
+            if (sw_sim_init(&s, sc, NULL, m, sc->dt, err, sizeof err) != SW_OK)
+                continue;
+            for (int j = 1; j <= 3; j++)
+                ck_assert_int_eq(sw_sim_step_until(&s, j * sc->dt), 0);
+            ck_assert_msg(!s.stepper->have_cache || sw_history_keeps_cache(m), "%s keeps a cache", m->name);
+            sw_sim_free(&s);
+            stepped = 1;
+        }
+        ck_assert_msg(stepped, "%s stepped neither scene", m->name);
+    }
+}
+END_TEST
+
+/* The vortex at n = 300000 under rk45 keeps two checkpoints
+ * SW_HISTORY_SPAN or more steps apart: past two strides, ';' goes back to the older one's time
+ * and no further ("nothing earlier kept", the run stays). */
+START_TEST(rewind_two_checkpoints)
+{
+    sw_app a;
+    vortex_on(&a, 300000, "rk45");
+    int stride = a.hist[0].stride;
+    ck_assert_int_eq(a.hist[0].cap, 2);
+    ck_assert_int_ge(stride, SW_HISTORY_SPAN);
+    for (int k = 0; k < 2 * stride + 2; k++)
+        sw_app_key(&a, '.', 0);
+    sw_app_key(&a, ';', 0);
+    ck_assert_int_eq(a.sims[0].steps, stride);
+    ck_assert_msg(strstr(a.message, "; 0 earlier)"), "%s", a.message); /* the one at 2·stride was dropped */
     sw_app_key(&a, ',', 0);
-    ck_assert_ptr_nonnull(strstr(a.message, "no rewind here: 200000 particles"));
-    ck_assert_int_eq(a.sims[0].steps, 1);
-    sw_app_free(&a);
-    ck_assert_int_eq(sw_scene_set(sc, p, "n=20000", err, sizeof err), SW_OK);
-    ck_assert_int_eq(sw_app_init(&a, sc, p, NULL, 0, err, sizeof err), SW_OK);
-    ck_assert_int_ge(a.hist[0].cap, SW_HISTORY_MIN);
-    ck_assert_int_lt(a.hist[0].cap, SW_HISTORY_STATES);
+    char says[80]; /* why, in one line of the 80-column screen */
+    snprintf(says, sizeof says, "nothing earlier kept: 2 checkpoints, %d steps apart, at this size", stride);
+    ck_assert_str_eq(a.message, says);
+    ck_assert_int_lt(strlen(a.message), 80);
+    ck_assert_int_eq(a.sims[0].steps, stride);
     sw_app_free(&a);
 }
 END_TEST
@@ -369,7 +558,10 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, lesson_page_until);
     tcase_add_test(tc, record_to_stop_time);
     tcase_add_test(tc, rewind_from_blow_up);
-    tcase_add_test(tc, rewind_bounded_by_memory);
+    tcase_add_test(tc, rewind_checkpoints_bit_for_bit);
+    tcase_add_test(tc, rewind_memory_within_budget);
+    tcase_add_test(tc, history_knows_fsal_methods);
+    tcase_add_test(tc, rewind_two_checkpoints);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -2,8 +2,9 @@
  * --until, a page's @until, the u key) and stepping back through each sim's
  * recent states (its history, sim/history.c). Invariant: every step the app
  * takes goes through sw_app_step_sim, so the history holds every state the
- * runs passed through, and a run stepped back and on again repeats itself
- * bit for bit. */
+ * runs passed through (a large system's every stride-th: stepping back lands
+ * on one of those), and a run stepped back and on again repeats itself bit
+ * for bit. */
 #include "app/app.h"
 
 #include <math.h>
@@ -41,8 +42,7 @@ void sw_app_history_detach(sw_app *a, int i) { sw_history_free(&a->hist[i]); }
 
 void sw_app_history_restart(sw_app *a, int i)
 {
-    sw_history_clear(&a->hist[i]);
-    sw_history_push(&a->hist[i], &a->sims[i]);
+    sw_history_restart(&a->hist[i], &a->sims[i]);
 }
 
 void sw_app_set_until(sw_app *a, double T) { a->until = T > 0 ? T : 0; }
@@ -135,19 +135,22 @@ int sw_app_step_back(sw_app *a, int n)
     const sw_sim *s = &a->sims[0];
     a->paused = 1;
     if (!h->cap) {
-        snprintf(a->message, sizeof a->message, "no rewind here: %d particles are too many states to keep "
-                 "(fewer keep up to %d states)", s->sys.n, SW_HISTORY_STATES);
+        snprintf(a->message, sizeof a->message, "no rewind here: no memory to keep states of %d particles "
+                 "(%.3g MB)", s->sys.n, (double)h->budget / 1e6);
         return 0;
     }
-    /* A blown-up run's newest snapshot is its last finite state: one back. */
-    int k = s->blown ? n - 1 : n;
-    if (k > h->count - 1)
-        k = h->count - 1;
+    int k = sw_history_pick(h, s, n);
     double target = sw_history_time(h, k);
-    if (k < 0 || isnan(target) || (!s->blown && k == 0)) {
+    if (k < 0 || isnan(target)) {
         double from = sw_history_time(h, 0);
-        snprintf(a->message, sizeof a->message, "nothing earlier kept: the history starts at t = %.4g (a reset, "
-                 "or a change of method, dt or events, starts it)", isnan(from) ? s->t : from);
+        if (h->wrapped && h->stride > 1)
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: %d checkpoints, %d steps apart, at "
+                     "this size", h->cap, h->stride);
+        else if (h->wrapped)
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: the last %d states are kept", h->cap);
+        else
+            snprintf(a->message, sizeof a->message, "nothing earlier kept: the history starts at t = %.4g (a "
+                     "reset, or a change of method, dt or events, starts it)", isnan(from) ? s->t : from);
         return 0;
     }
     for (int i = 0; i < a->nsims; i++)
@@ -158,7 +161,11 @@ int sw_app_step_back(sw_app *a, int n)
     for (int i = 0; i <= SW_APP_SIMS; i++)
         phase_cut(&a->phase[i], s->t);
     sw_app_watch_restart(a);
-    snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (%d earlier states kept; . steps on)",
-             s->t, s->steps, h->count - 1);
+    if (h->stride > 1)
+        snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (checkpoints every %d steps here; "
+                 "%d earlier)", s->t, s->steps, h->stride, h->count - 1);
+    else
+        snprintf(a->message, sizeof a->message, "back to t = %.4g, step %ld (%d earlier states kept; . steps on)",
+                 s->t, s->steps, h->count - 1);
     return 1;
 }

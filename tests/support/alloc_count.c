@@ -14,23 +14,29 @@ void *__wrap_calloc(size_t n, size_t size);
 void *__wrap_realloc(void *p, size_t size);
 
 static long count;
+static size_t bytes;
 
 void *__wrap_malloc(size_t size)
 {
     count++;
+    bytes += size;
     return __real_malloc(size);
 }
 
 void *__wrap_calloc(size_t n, size_t size)
 {
     count++;
+    bytes += n * size;
     return __real_calloc(n, size);
 }
 
 void *__wrap_realloc(void *p, size_t size)
 {
     count++;
+    bytes += size;
     return __real_realloc(p, size);
 }
 
 long sw_test_allocations(void) { return count; }
+
+size_t sw_test_allocated_bytes(void) { return bytes; }

@@ -98,6 +98,9 @@ extern const size_t sw_claims_l_n;
 /* claims_fire.c: the fire scene's stability figures (docs/scenes.md). */
 extern const claim sw_claims_f[];
 extern const size_t sw_claims_f_n;
+/* claims_rewind.c: how far back the rewind keys go (README, man page, architecture). */
+extern const claim sw_claims_w[];
+extern const size_t sw_claims_w_n;
 
 /* Runs, pages and measurements (claims_runs.c). */
 const sw_scene *cl_scene_p(const char *name, const char *sets, double *p);

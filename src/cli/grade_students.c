@@ -182,9 +182,9 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
     put_row(f, lms ? lms_columns : book_columns, lms ? 5 : BOOK_NCOLS);
     int ncols = lms ? 5 : BOOK_NCOLS;
     sw_csv_doc old;
-    int have = !o.direct && !l->fresh && read_old(path, ncols, lms ? "name" : "student", &old);
-    unsigned char *used = have ? calloc((size_t)old.nrows + 1, 1) : NULL;
-    have = have && used;
+    int read = !o.direct && !l->fresh && read_old(path, ncols, lms ? "name" : "student", &old);
+    unsigned char *used = read ? calloc((size_t)old.nrows + 1, 1) : NULL;
+    int have = read && used; /* out of memory: this run's rows alone */
     for (int k = 0; k < n; k++) {
         student_row *r = &rows[k];
         if (r->n == 0 && r->missing != 1) {
@@ -228,7 +228,7 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
     for (int r = 1; have && r < old.nrows; r++)
         if (!used[r] && old.rows[r].n == ncols)
             put_row(f, (const char *const *)old.rows[r].cells, ncols);
-    if (have)
+    if (read)
         sw_csv_doc_free(&old);
     free(used);
     if (sw_outfile_commit(&o, err, sizeof err) != SW_OK)

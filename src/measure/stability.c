@@ -241,9 +241,9 @@ static double method_cost(const sw_scene *sc, sw_truth *tr, const sw_integrator 
     return cost;
 }
 
-/* skip_adaptive 0: every method counted (sw_stability_cost's one). */
+/* The adaptive methods are left out: they have no limit to find. */
 static double cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
-                       int skip_adaptive, const sw_stability_config *c, double *each)
+                       const sw_stability_config *c, double *each)
 {
     for (int i = 0; each && i < n; i++)
         each[i] = 0;
@@ -258,7 +258,7 @@ static double cost_sum(const sw_scene *sc, const double *p, const sw_integrator 
         return 0;
     double ref = sw_truth_reference_cost(&tr, duration);
     for (int i = 0; i < n; i++)
-        if (!skip_adaptive || !(methods[i]->flags & SW_ADAPTIVE)) {
+        if (!(methods[i]->flags & SW_ADAPTIVE)) {
             double one = method_cost(sc, &tr, methods[i], w, duration, ref, c);
             total += one;
             if (each)
@@ -268,16 +268,10 @@ static double cost_sum(const sw_scene *sc, const double *p, const sw_integrator 
     return total;
 }
 
-double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
-                         const sw_stability_config *c)
-{
-    return cost_sum(sc, p, &m, 1, 0, c, NULL);
-}
-
 double sw_stability_cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
                              const sw_stability_config *c, double *each)
 {
-    return cost_sum(sc, p, methods, n, 1, c, each);
+    return cost_sum(sc, p, methods, n, c, each);
 }
 
 static int stable(int verdict) { return verdict == SW_PROBE_STABLE || verdict == SW_PROBE_DECAYED; }

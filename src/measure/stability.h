@@ -100,17 +100,14 @@ int sw_stability_probe_run(const sw_scene *sc, const double *p, const sw_integra
                            const sw_stability_config *c, sw_stability_probe *out, char *err,
                            size_t errlen);
 
-/* What sw_stability_find would cost, in state components × derivative
- * evaluations (see SW_WORK_REPORT): the reference run for the theory, the
- * probe at the smallest step (with its small copy) and about 25 probes near
- * the limit. An estimate, for refusing before starting. */
-double sw_stability_cost(const sw_scene *sc, const double *p, const sw_integrator *m,
-                         const sw_stability_config *c);
-/* The sum of sw_stability_cost over methods[0..n) (adaptive ones left out,
- * as they have no limit to find), the same number, with the parts that
+/* What sw_stability_find would cost for each of methods[0..n), summed, in
+ * state components × derivative evaluations (see SW_WORK_REPORT): per
+ * method the reference run for the theory, the probe at the smallest step
+ * (with its small copy) and about 25 probes near the limit; the parts that
  * depend only on the scene (its stiffness, the reference run's pilot)
- * worked out once instead of once per method; each (NULL: not wanted)
- * gets the n terms, 0 for a method left out. */
+ * worked out once. Adaptive methods are left out (no limit to find). An
+ * estimate, for refusing before starting; each (NULL: not wanted) gets the
+ * n terms, 0 for a method left out. */
 double sw_stability_cost_sum(const sw_scene *sc, const double *p, const sw_integrator *const *methods, int n,
                              const sw_stability_config *c, double *each);
 

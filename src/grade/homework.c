@@ -310,7 +310,7 @@ static int sort_lines(sw_homework *h, sw_visibility *shared_vis, char *err, size
             if (h->nparts == SW_PARTS_MAX)
                 return fail(h, line, err, errlen, "more than 8 parts");
             part = h->nparts++;
-            snprintf(h->parts[part].name, sizeof h->parts[part].name, "%s", name);
+            memcpy(h->parts[part].name, name, n + 1); /* n < SW_PART_NAME_MAX, checked above */
             h->parts[part].line = line;
             h->parts[part].visibility = *shared_vis;
             h->line_part[i] = -3; /* a part's header */

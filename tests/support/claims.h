@@ -163,6 +163,11 @@ double cl_rk4_damped_measured(void);
 double cl_key_rk4(void);
 double cl_key_rk45(void);
 double cl_rk4_small_stretch(void);
+/* claims_bench.c: rodas4 on the gyre (a sweep of seconds: the quick tier skips it) */
+double cl_gyre_first_error(void);
+double cl_gyre_slope_min(void);
+double cl_gyre_slope_max(void);
+double cl_gyre_nfit(void);
 double cl_one(void);
 
 #endif

@@ -1,4 +1,5 @@
 #!/bin/sh
+# e2e: long (run.sh starts it first)
 # The worked example of docs/grading.md (issue 36): a course of 32 students
 # (examples/course/roster.csv) with two homeworks. HW5, a plugin homework
 # of three parts on two scenes (chain visible, gyre hidden, a longer chain

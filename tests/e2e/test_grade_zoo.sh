@@ -1,4 +1,5 @@
 #!/bin/sh
+# e2e: long (run.sh starts it first)
 # The hostile-plugin zoo (issue 16): plugins that exit, abort, crash, loop in
 # their step or in sw_plugin_info(), write one and many elements past their
 # work vectors or past y, write ode->dim, return NaN, or carry bad names.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# e2e: long (run.sh starts it first)
 # The hostile-submission suite (issue 21, "What it must show"). Submissions
 # come from someone who wants a better grade or a classmate's worse one.
 # tests/hostile/ holds one file per attack family (evil.h says how each

@@ -1,4 +1,5 @@
 #!/bin/sh
+# e2e: long (run.sh starts it first)
 # Traces are pinned: every scene under every built-in method, 300 steps,
 # must reproduce tests/data/trace_hashes.orig.txt bit for bit (the sha256 of
 # the data rows). A refactor never changes a hash; a deliberate numerical

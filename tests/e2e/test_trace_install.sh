@@ -1,4 +1,5 @@
 #!/bin/sh
+# e2e: long (run.sh starts it first)
 # `make install PREFIX=... DESTDIR=...` installs the binary, the man page, the
 # lessons, the public headers, and for embedders the library and its
 # pkg-config file; the installed binary finds its lessons, and a program

@@ -57,6 +57,9 @@ typedef struct sw_integrator {
                                         * it, ended by a NULL kind; or NULL */
     const char *twin;       /* a method students write instead of this one, or NULL */
     const char *twin_hint;  /* what the explainer asks when numbers match twin */
+    int compare;            /* its place among the partners compare picks (1 first), 0 none */
+    int reference;          /* 1: the truth module's reference (one built-in) */
+    int resting;            /* 1: steps a scene to its resting state (one built-in) */
 } sw_integrator;
 
 #define SW_RTOL_DEFAULT 1e-6

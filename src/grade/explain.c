@@ -2,11 +2,12 @@
  * are held in memory and compared, with the grading tolerances, against
  * runs that make one usual mistake each; the first run that matches every
  * value names the mistake. Data mistakes (rows, time column, digits,
- * precision, units) are tried first, since they need no new run, then the initial
- * state and the energy column (explain_state.c), then mistaken methods
- * (the method row's list, engine/mistakes.c), steps and parameters. Invariant: a variant is
- * reported only when it matches every examined value, never because it is
- * merely closer; rows the assignment's own run matches are never explained. */
+ * precision, units) are tried first, since they need no new run, then the
+ * initial state and the energy column (explain_state.c), then mistaken
+ * methods (the method row's list, engine/mistakes.c), steps and parameters.
+ * Invariant: a variant is reported only when it matches every examined
+ * value, never because it is merely closer; rows the assignment's own run
+ * matches are never explained. */
 #include "grade/explain.h"
 
 #include <math.h>

@@ -110,7 +110,7 @@ $(TESTBIN): $(TEST_OBJ) $(TOOLLIB)
 # -DSW_FIELD_ONLY), so a plugin has no answer in its memory to call. Always
 # built plain (no sanitizer: it defines malloc to see a step allocate), and
 # found beside the program, in build/ beside it, or in LIBEXECDIR.
-HOST_METHODS = adaptive dop853 dop853_lc explicit implicit integrators regularise rk45 rkn rkn12 rosenbrock
+HOST_METHODS = adaptive dop853 dop853_lc explicit implicit integrators lecture mistakes regularise rk45 rkn rkn12 rosenbrock
 HOST_SRC = $(HOST_MAIN) $(wildcard src/scenes/*.c) src/plugin/jail_filter.c \
            $(filter-out $(HOST_METHODS:%=src/engine/%.c),$(wildcard src/engine/*.c)) $(wildcard src/util/*.c)
 HOST_OBJ = $(HOST_SRC:%.c=$(BUILD)/host-obj/%.o)

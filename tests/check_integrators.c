@@ -12,7 +12,9 @@
 #include "stepwise/particles.h"
 #include "stepwise/flow.h"
 #include "stepwise/sim.h"
+#include "engine/mistakes.h"
 #include "engine/stepper.h"
+#include "sim/truth.h"
 #include "alloc_count.h"
 
 /* x'' = -(k/m) x - (c/m) x' as one particle on a zero-rest-length spring to
@@ -556,6 +558,51 @@ START_TEST(backward_euler_gains_on_compressed_spring)
 }
 END_TEST
 
+/* What the rest of the tool reads from the rows, checked whole: one
+ * reference for the truth module (adaptive, and able to step any scene:
+ * flows too), one method that finds a resting state (implicit: it takes
+ * SW_DT_MAX steps), compare's partners ranked 1, 2, ... with no rank
+ * twice, twins that name each other with a question each, and mistake
+ * lists whose every entry can step what its method steps. */
+START_TEST(rows_hold_what_the_tool_reads)
+{
+    int refs = 0, rests = 0, ranks[64] = { 0 }, top = 0, n = sw_integrator_count();
+    ck_assert_int_le(n, 64);
+    for (int i = 0; i < n; i++) {
+        const sw_integrator *m = sw_integrator_at(i);
+        if (m->reference) {
+            refs++;
+            ck_assert_msg((m->flags & SW_ADAPTIVE) && !(m->flags & SW_NEEDS_SECOND_ORDER), "%s", m->name);
+            ck_assert_ptr_eq(sw_truth_reference_method(), m);
+        }
+        if (m->resting) {
+            rests++;
+            ck_assert_msg(m->flags & SW_IMPLICIT, "%s", m->name);
+        }
+        ck_assert_int_ge(m->compare, 0);
+        ck_assert_int_lt(m->compare, 64);
+        if (m->compare) {
+            ck_assert_msg(!ranks[m->compare]++, "compare rank %d twice", m->compare);
+            top = m->compare > top ? m->compare : top;
+        }
+        if (m->twin) {
+            const sw_integrator *t = sw_integrator_find(m->twin);
+            ck_assert_msg(t && t != m && t->twin && !strcmp(t->twin, m->name) && m->twin_hint, "%s", m->name);
+        }
+        for (const sw_mistake *mk = m->mistakes; mk && mk->kind; mk++) {
+            ck_assert_msg(mk->hint && mk->method.step && mk->method.work_vectors > 0, "%s: %s", m->name, mk->kind);
+            ck_assert_msg((mk->method.flags & SW_NEEDS_SECOND_ORDER) == (m->flags & SW_NEEDS_SECOND_ORDER),
+                          "%s: %s", m->name, mk->method.name);
+        }
+    }
+    ck_assert_int_eq(refs, 1);
+    ck_assert_int_eq(rests, 1);
+    ck_assert_int_ge(top, 2); /* compare needs two partners */
+    for (int r = 1; r <= top; r++)
+        ck_assert_msg(ranks[r] == 1, "compare rank %d missing", r);
+}
+END_TEST
+
 Suite *make_integrators_suite(void);
 Suite *make_integrators_suite(void)
 {
@@ -578,6 +625,7 @@ Suite *make_integrators_suite(void)
     tcase_add_test(tc, dense_fallback);
     tcase_add_test(tc, steps_do_not_allocate);
     tcase_add_test(tc, determinism);
+    tcase_add_test(tc, rows_hold_what_the_tool_reads);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -6,9 +6,11 @@
  * step function, and -std=c11 keeps the compiler from fusing a*b+c. */
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/lecture.h"
 #include "sim/stages.h"
 #include "stepwise/stepwise.h"
 
@@ -185,6 +187,58 @@ START_TEST(stages_not_drawn_say_why)
 }
 END_TEST
 
+/* Every method's row tells the stage view something: a lecture form whose
+ * every view lights a line it has and draws a stage the method's own step
+ * records (on the damped spring, or the orbit where a method refuses the spring), or in a
+ * few words why there is none, which the view prints. A row with neither
+ * (an embedder's method) is said to give none, never passed over. */
+START_TEST(stages_every_row_says)
+{
+    for (int i = 0; i < sw_integrator_count(); i++) {
+        const sw_integrator *m = sw_integrator_at(i);
+        const sw_stage_script *sc = m->lecture;
+        ck_assert_msg(!sc != !m->no_lecture, "%s: a lecture form or why not, one of them", m->name);
+        sw_sim s;
+        sw_stages r = { 0 };
+        char why[SW_ERRLEN], want[SW_ERRLEN];
+        /* the damped spring, or the orbit for a method that refuses it
+         * (x'' = f(x) only, one body only) */
+        const sw_scene *sc_on = sw_scene_find("spring");
+        if (sw_sim_init(&s, sc_on, NULL, m, 0.05, why, sizeof why) != SW_OK) {
+            sc_on = sw_scene_find("orbit");
+            ck_assert_msg(sw_sim_init(&s, sc_on, NULL, m, 0.05, why, sizeof why) == SW_OK, "%s: %s", m->name, why);
+        }
+        sw_sim_step(&s); /* a method that keeps a derivative has one now */
+        int rc = sw_stages_record(&r, &s, why, sizeof why);
+        if (!sc) {
+            snprintf(want, sizeof want, "stages: not drawn for %s \xe2\x80\x94 %s", m->name, m->no_lecture);
+            ck_assert_int_eq(rc, SW_EINVAL);
+            ck_assert_str_eq(why, want);
+        } else {
+            ck_assert_msg(rc == SW_OK, "%s: %s", m->name, why);
+            int lines = 0;
+            while (lines < SW_STAGE_LINES && sc->lines[lines])
+                lines++;
+            ck_assert_msg(sc->nviews >= 1 && sc->nviews <= SW_STAGE_VIEWS, "%s: %d views", m->name, sc->nviews);
+            for (int v = 0; v < sc->nviews; v++) {
+                ck_assert_msg(sc->views[v].line >= 0 && sc->views[v].line < lines, "%s: view %d lights line %d of %d",
+                              m->name, v + 1, sc->views[v].line, lines);
+                ck_assert_msg(sc->views[v].stage >= 0 && sc->views[v].stage < r.n, "%s: view %d draws stage %d of %d",
+                              m->name, v + 1, sc->views[v].stage, r.n);
+                ck_assert_msg(sc->views[v].label && sc->views[v].caption, "%s: view %d unlabelled", m->name, v + 1);
+            }
+        }
+        sw_stages_free(&r);
+        sw_sim_free(&s);
+    }
+    sw_integrator bare = *sw_integrator_find("yoshida4");
+    bare.no_lecture = NULL;
+    char why[SW_ERRLEN];
+    ck_assert_int_eq(sw_stages_supported(&bare, why, sizeof why), 0);
+    ck_assert_str_eq(why, "stages: not drawn for yoshida4 \xe2\x80\x94 its row gives no lecture form of its step");
+}
+END_TEST
+
 Suite *make_stages_suite(void);
 Suite *make_stages_suite(void)
 {
@@ -194,6 +248,7 @@ Suite *make_stages_suite(void)
     tcase_add_test(tc, stages_are_where_the_method_looks);
     tcase_add_test(tc, stages_true_path_is_the_exact_motion);
     tcase_add_test(tc, stages_not_drawn_say_why);
+    tcase_add_test(tc, stages_every_row_says);
     suite_add_tcase(s, tc);
     return s;
 }

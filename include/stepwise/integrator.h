@@ -28,6 +28,13 @@ typedef struct sw_stepper sw_stepper;
  * or a negative status when the step cannot be taken (a failed solve). */
 typedef int sw_step_fn(sw_stepper *s, sw_ode *ode, double *t, double *y, double h);
 
+/* More set-up for a new stepper of a method, after its workspace: SW_OK, or
+ * a status with err saying why the method cannot step ode. */
+typedef int sw_prepare_fn(sw_stepper *s, const sw_ode *ode, char *err, size_t errlen);
+
+struct sw_stage_script; /* a step as the lecture writes it (private: engine/lecture.h) */
+struct sw_mistake;      /* a mistaken version of a method (private: engine/mistakes.h) */
+
 typedef struct sw_integrator {
     const char *name;     /* fixed command-line name, e.g. "rk4" */
     const char *label;    /* human name, e.g. "classical Runge-Kutta"; a plugin's is its
@@ -39,6 +46,20 @@ typedef struct sw_integrator {
     int work_vectors;     /* workspace, in vectors of dim doubles */
     sw_step_fn *step;
     const char *summary;  /* one line: the update rule */
+    /* What the rest of the tool knows about the method, kept in its row and
+     * read from nowhere else (a plugin's row: NULL but for no_lecture). */
+    sw_prepare_fn *prepare; /* more set-up for a new stepper, or NULL */
+    const struct sw_stage_script *lecture; /* its step as the lecture writes it,
+                                            * drawn by the stage view; or NULL */
+    const char *no_lecture; /* when lecture is NULL: why the stage view draws
+                             * none, in a few words ("it solves an equation") */
+    const struct sw_mistake *mistakes; /* the explainer's mistaken versions of
+                                        * it, ended by a NULL kind; or NULL */
+    const char *twin;       /* a method students write instead of this one, or NULL */
+    const char *twin_hint;  /* what the explainer asks when numbers match twin */
+    int compare;            /* its place among the partners compare picks (1 first), 0 none */
+    int reference;          /* 1: the truth module's reference (one built-in) */
+    int resting;            /* 1: steps a scene to its resting state (one built-in) */
 } sw_integrator;
 
 #define SW_RTOL_DEFAULT 1e-6

@@ -13,19 +13,21 @@
 #include "stepwise/stepwise.h"
 #include "util/escape.h"
 
-/* A compare pair that differs from the main method and suits the system:
- * the lecture's contrast (Euler against RK4) plus a symplectic method. */
+/* A compare pair that differs from the main method and suits the system,
+ * in the order the method rows give (compare: 1 first): the lecture's
+ * contrast (Euler against RK4) plus a symplectic method. */
 static void default_compare(sw_app *a, const sw_integrator **m1, const sw_integrator **m2)
 {
-    const char *order[] = { "rk4", "euler", "verlet", "midpoint", "symplectic-euler", "implicit-euler" };
     const sw_integrator *main = a->sims[0].method, *picked[2] = { NULL, NULL };
-    int n = 0;
+    int n = 0, count = sw_integrator_count();
     char err[SW_ERRLEN];
-    for (size_t i = 0; i < sizeof order / sizeof order[0] && n < 2; i++) {
-        const sw_integrator *m = sw_integrator_find(order[i]);
-        if (m && m != main && sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
-            picked[n++] = m;
-    }
+    for (int rank = 1; rank <= count && n < 2; rank++)
+        for (int i = 0; i < count && n < 2; i++) {
+            const sw_integrator *m = sw_integrator_at(i);
+            if (m->compare == rank && m != main &&
+                sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
+                picked[n++] = m;
+        }
     *m1 = picked[0];
     *m2 = picked[1];
 }

@@ -12,45 +12,9 @@
  * n = 200000: 0.41 s, measured with -O2 on this machine). */
 #define SW_STAGES_TRUE_DIM 20000
 
-/* Each drawn method's update in the lecture's EulerStep style: the
- * statements of one step, y the state, f its derivative. */
-static const sw_stage_script scripts[] = {
-    { "euler", { "k1 = f(t, y)", "y = y + h*k1", "t = t + h" },
-      { { 0, 0, SW_STAGE_SLOPE, "k1", "k1: the slope where the step starts" },
-        { 1, 0, SW_STAGE_SUM, "y1", "y1: Euler follows k1 for the whole step" } }, 2 },
-    { "midpoint", { "k1 = f(t, y)", "k2 = f(t + h/2, y + h/2*k1)", "y = y + h*k2", "t = t + h" },
-      { { 0, 0, SW_STAGE_SLOPE, "k1", "k1: the slope at the start" },
-        { 1, 1, SW_STAGE_SLOPE, "k2", "k2: the slope half a step along k1" },
-        { 2, 0, SW_STAGE_SUM, "y1", "y1: the whole step on the middle's slope k2" } }, 3 },
-    { "heun", { "k1 = f(t, y)", "k2 = f(t + h, y + h*k1)", "y = y + h/2*(k1 + k2)", "t = t + h" },
-      { { 0, 0, SW_STAGE_SLOPE, "k1", "k1: the predictor's slope, at the start" },
-        { 1, 1, SW_STAGE_SLOPE, "k2", "k2: the corrector's slope, at the end of an Euler step" },
-        { 2, 0, SW_STAGE_SUM, "y1", "y1: the step on the average of k1 and k2" } }, 3 },
-    { "rk4", { "k1 = f(t, y)", "k2 = f(t + h/2, y + h/2*k1)", "k3 = f(t + h/2, y + h/2*k2)",
-               "k4 = f(t + h, y + h*k3)", "y = y + h/6*(k1+2*k2+2*k3+k4)", "t = t + h" },
-      { { 0, 0, SW_STAGE_SLOPE, "k1", "k1: the slope at the start" },
-        { 1, 1, SW_STAGE_SLOPE, "k2", "k2: the slope half a step along k1" },
-        { 2, 2, SW_STAGE_SLOPE, "k3", "k3: the slope half a step along k2" },
-        { 3, 3, SW_STAGE_SLOPE, "k4", "k4: the slope a whole step along k3" },
-        { 4, 0, SW_STAGE_SUM, "y1", "y1: the weighted sum, weights 1 2 2 1 over 6" } }, 5 },
-    { "symplectic-euler", { "a = a(x, v)", "v = v + h*a", "x = x + h*v", "t = t + h" },
-      { { 1, 0, SW_STAGE_KICK, "v1", "kick: v changes by h*a, taken at the old x (dim: before)" },
-        { 2, 0, SW_STAGE_DRIFT, "x1", "drift: x moves a step with the new v" } }, 2 },
-    { "verlet", { "v = v + h/2*a   (a: last step's)", "x = x + h*v", "a = a(x, v)", "v = v + h/2*a", "t = t + h" },
-      { { 0, 0, SW_STAGE_KICK, "v'", "half kick: v changes by h/2*a (dim: v before)" },
-        { 1, 0, SW_STAGE_DRIFT, "x1", "drift: x moves a whole step with the half-kicked v" },
-        { 3, 1, SW_STAGE_KICK_END, "v1", "a at the new x, then the second half kick" } }, 3 },
-};
-
 const sw_stage_script *sw_stage_script_of(const sw_integrator *m)
 {
-    char why[SW_ERRLEN];
-    if (!m || !sw_stages_supported(m, why, sizeof why))
-        return NULL;
-    for (size_t i = 0; i < sizeof scripts / sizeof scripts[0]; i++)
-        if (strcmp(scripts[i].method, m->name) == 0)
-            return &scripts[i];
-    return NULL;
+    return m ? m->lecture : NULL;
 }
 
 /* What the message line says about the stage shown. */

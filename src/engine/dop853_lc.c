@@ -20,7 +20,7 @@
 
 /* dop853 as the regularised run steps it: its step and its workspace
  * (the table's entry is integrators.c's, which calls this file). */
-static const sw_integrator dop853 = { .name = "dop853", .work_vectors = SW_DOP853_VECTORS, .step = sw_step_dop853,
+static const sw_integrator dop853 = { .name = "dop853 (regularised)", .work_vectors = SW_DOP853_VECTORS, .step = sw_step_dop853,
                                       .flags = SW_EXPLICIT | SW_ADAPTIVE };
 
 typedef struct lc_run {

@@ -41,8 +41,17 @@ static void gravity_values(const sw_force *fo, char *buf, size_t len)
     snprintf(buf, len, "g = (%g, %g)", fo->gx, fo->gy);
 }
 
-const swp_force_type swp_gravity = { "gravity", "f = m g", gravity_values, gravity_add, gravity_potential,
-                                     "gravity potential", "m g y", 0, no_pairs, gravity_blocks, NULL, NULL };
+const swp_force_type swp_gravity = {
+    .name = "gravity",
+    .formula = "f = m g",
+    .values = gravity_values,
+    .add = gravity_add,
+    .potential = gravity_potential,
+    .term = "gravity potential",
+    .term_formula = "m g y",
+    .pairs = no_pairs,
+    .blocks = gravity_blocks,
+};
 
 static void drag_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -70,8 +79,15 @@ static void drag_values(const sw_force *fo, char *buf, size_t len)
 
 static int drag_uses_velocity(const sw_force *fo) { return fo->k != 0; }
 
-const swp_force_type swp_drag = { "drag", "f = -k v", drag_values, drag_add, NULL, NULL, NULL, 0, no_pairs,
-                                  drag_blocks, NULL, drag_uses_velocity };
+const swp_force_type swp_drag = {
+    .name = "drag",
+    .formula = "f = -k v",
+    .values = drag_values,
+    .add = drag_add,
+    .pairs = no_pairs,
+    .blocks = drag_blocks,
+    .uses_velocity = drag_uses_velocity,
+};
 
 static void central_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
@@ -107,6 +123,14 @@ static void central_values(const sw_force *fo, char *buf, size_t len)
     snprintf(buf, len, "mu = %g, centre (%g, %g)", fo->mu, fo->cx, fo->cy);
 }
 
-const swp_force_type swp_central = { "central body", "f = -mu m d/|d|^3, d = x - centre", central_values,
-                                     central_add, central_potential, "central potential", "- μ m/|x|", 0,
-                                     no_pairs, central_blocks, NULL, NULL };
+const swp_force_type swp_central = {
+    .name = "central body",
+    .formula = "f = -mu m d/|d|^3, d = x - centre",
+    .values = central_values,
+    .add = central_add,
+    .potential = central_potential,
+    .term = "central potential",
+    .term_formula = "- μ m/|x|",
+    .pairs = no_pairs,
+    .blocks = central_blocks,
+};

@@ -61,6 +61,14 @@ static void mutual_values(const sw_force *fo, char *buf, size_t len)
     snprintf(buf, len, "G = %g, soft = %g", fo->mu, fo->soft);
 }
 
-const swp_force_type swp_mutual = { "mutual gravity", "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j",
-                                    mutual_values, mutual_add, mutual_potential, "mutual gravity potential",
-                                    "- G m_i m_j/√(r² + ε²)", 0, mutual_pairs, mutual_blocks, NULL, NULL };
+const swp_force_type swp_mutual = {
+    .name = "mutual gravity",
+    .formula = "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j",
+    .values = mutual_values,
+    .add = mutual_add,
+    .potential = mutual_potential,
+    .term = "mutual gravity potential",
+    .term_formula = "- G m_i m_j/√(r² + ε²)",
+    .pairs = mutual_pairs,
+    .blocks = mutual_blocks,
+};

@@ -133,8 +133,16 @@ static int springs_use_velocity(const sw_force *fo)
     return 0;
 }
 
-const swp_force_type swp_springs = { "damped springs",
-                                     "on a: f = -[k (|d| - rest) + c (v_a - v_b).d/|d|] d/|d|, d = x_a - x_b; b gets -f",
-                                     springs_values, springs_add, springs_potential, "spring potential",
-                                     "½ k (|d| - rest)²", 1, springs_pairs, springs_blocks, NULL,
-                                     springs_use_velocity };
+const swp_force_type swp_springs = {
+    .name = "damped springs",
+    .formula = "on a: f = -[k (|d| - rest) + c (v_a - v_b).d/|d|] d/|d|, d = x_a - x_b; b gets -f",
+    .values = springs_values,
+    .add = springs_add,
+    .potential = springs_potential,
+    .term = "spring potential",
+    .term_formula = "½ k (|d| - rest)²",
+    .term_half = 1,
+    .pairs = springs_pairs,
+    .blocks = springs_blocks,
+    .uses_velocity = springs_use_velocity,
+};

@@ -251,9 +251,16 @@ static void tree_values(const sw_force *fo, char *buf, size_t len)
     snprintf(buf, len, "G = %g, soft = %g, theta = %g", fo->mu, fo->soft, fo->theta);
 }
 
-const swp_force_type swp_tree = { "mutual gravity (Barnes-Hut tree)",
-                                  "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j; a cell of side s "
-                                  "at distance d from x_i counts as its mass at its centre of mass when s < theta d",
-                                  tree_values, tree_add, tree_potential, "mutual gravity potential",
-                                  "- G m_i m_j/√(r² + ε²)", 0, tree_pairs, tree_blocks,
-                                  tree_work_new, NULL };
+const swp_force_type swp_tree = {
+    .name = "mutual gravity (Barnes-Hut tree)",
+    .formula = "f_i = -sum_j G m_i m_j d/(|d|^2 + soft^2)^(3/2), d = x_i - x_j; a cell of side s "
+               "at distance d from x_i counts as its mass at its centre of mass when s < theta d",
+    .values = tree_values,
+    .add = tree_add,
+    .potential = tree_potential,
+    .term = "mutual gravity potential",
+    .term_formula = "- G m_i m_j/√(r² + ε²)",
+    .pairs = tree_pairs,
+    .blocks = tree_blocks,
+    .work_new = tree_work_new,
+};

@@ -2,8 +2,9 @@
  * each force kind, one descriptor per kind in its own file (force_*.c) and
  * one table (forces.c). The derivative, the energy, the implicit solve and
  * the stability theory ask the descriptor; none of them re-derives a force.
- * Adding a kind: its descriptor file, its line in forces.c, its enum value
- * (and parameters) in include/stepwise/particles.h — docs/architecture.md. */
+ * Adding a kind: its descriptor file (fields named), its extern below, its
+ * line in forces.c, its enum value (and parameters) in
+ * include/stepwise/particles.h — docs/architecture.md. */
 #ifndef SW_ENGINE_FORCES_H
 #define SW_ENGINE_FORCES_H
 

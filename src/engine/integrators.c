@@ -10,60 +10,113 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/lecture.h"
+#include "engine/mistakes.h"
 #include "stepwise/base.h"
 #include "util/names.h"
 
+/* Why a method's stages are not drawn, for its row (the stage view says
+ * "stages: not drawn for NAME — " and this). */
+static const char solves[] = "it solves an equation, see lesson 7";
+static const char adapts[] = "it chooses its own steps, see lesson 9";
+
 static const sw_integrator builtins[] = {
-    { "euler", "explicit (forward) Euler", 1, 1, SW_EXPLICIT, 0.0, 1, sw_step_euler,
-      "y1 = y0 + h f(y0)" },
-    { "symplectic-euler", "semi-implicit Euler", 1, 1, SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
-      2.0, 1, sw_step_symplectic_euler, "v1 = v0 + h a(x0, v0); x1 = x0 + h v1" },
-    { "midpoint", "explicit midpoint (RK2)", 2, 2, SW_EXPLICIT, 0.0, 2, sw_step_midpoint,
-      "y1 = y0 + h f(y0 + h/2 f(y0))" },
-    { "heun", "Heun / explicit trapezoid (RK2)", 2, 2, SW_EXPLICIT, 0.0, 3, sw_step_heun,
-      "y1 = y0 + h/2 (f(y0) + f(y0 + h f(y0)))" },
-    { "rk4", "classical Runge-Kutta", 4, 4, SW_EXPLICIT, 2.0 * 1.4142135623730951, 3, sw_step_rk4,
-      "y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)" },
-    { "verlet", "velocity Verlet (leapfrog)", 2, 1, SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
-      2.0, 2, sw_step_verlet, "v+ = v0 + h/2 a0; x1 = x0 + h v+; v1 = v+ + h/2 a1" },
-    { "implicit-euler", "backward Euler (Newton to rounding, direct solve)", 1, 1, SW_IMPLICIT | SW_NEWTON,
-      INFINITY, 6, sw_step_implicit_euler, "y1 = y0 + h f(y1), solved by Newton's method" },
-    { "linear-implicit-euler", "linearly implicit Euler (one Newton step)", 1, 1, SW_IMPLICIT,
-      INFINITY, 2, sw_step_linear_implicit_euler, "(I - h J(y0)) dy = h f(y0): Baraff-Witkin's large steps" },
-    { "implicit-midpoint", "implicit midpoint (Newton to rounding)", 2, 2, SW_IMPLICIT | SW_SYMPLECTIC | SW_NEWTON,
-      INFINITY, 6, sw_step_implicit_midpoint, "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method" },
-    { "rk45", "Dormand-Prince 5(4), adaptive", 5, 6, SW_EXPLICIT | SW_ADAPTIVE, 0.0, 9, sw_step_rk45,
-      "adaptive: error estimate from an embedded 4th-order solution" },
-    { "dop853", "Dormand-Prince 8(5,3), adaptive (Hairer)", 8, 12, SW_EXPLICIT | SW_ADAPTIVE, 0.0, SW_DOP853_VECTORS,
-      sw_step_dop853, "adaptive: error estimate from embedded 5th- and 3rd-order solutions" },
+    { .name = "euler", .label = "explicit (forward) Euler", .order = 1, .evals = 1,
+      .flags = SW_EXPLICIT, .stability = 0.0, .work_vectors = 1, .step = sw_step_euler,
+      .summary = "y1 = y0 + h f(y0)",
+      .lecture = &sw_lecture_euler, .compare = 2,
+      .twin = "symplectic-euler",
+      .twin_hint = "did you update v before x? (Euler moves x with the old v)" },
+    { .name = "symplectic-euler", .label = "semi-implicit Euler", .order = 1, .evals = 1,
+      .flags = SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, .stability = 2.0,
+      .work_vectors = 1, .step = sw_step_symplectic_euler,
+      .summary = "v1 = v0 + h a(x0, v0); x1 = x0 + h v1",
+      .lecture = &sw_lecture_symplectic_euler, .compare = 5,
+      .twin = "euler",
+      .twin_hint = "did you move x with the old v? (symplectic Euler updates v first, "
+                   "then x with the new v)" },
+    { .name = "midpoint", .label = "explicit midpoint (RK2)", .order = 2, .evals = 2,
+      .flags = SW_EXPLICIT, .stability = 0.0, .work_vectors = 2, .step = sw_step_midpoint,
+      .summary = "y1 = y0 + h f(y0 + h/2 f(y0))",
+      .lecture = &sw_lecture_midpoint, .mistakes = sw_mistakes_midpoint, .compare = 4 },
+    { .name = "heun", .label = "Heun / explicit trapezoid (RK2)", .order = 2, .evals = 2,
+      .flags = SW_EXPLICIT, .stability = 0.0, .work_vectors = 3, .step = sw_step_heun,
+      .summary = "y1 = y0 + h/2 (f(y0) + f(y0 + h f(y0)))",
+      .lecture = &sw_lecture_heun, .mistakes = sw_mistakes_heun },
+    { .name = "rk4", .label = "classical Runge-Kutta", .order = 4, .evals = 4,
+      .flags = SW_EXPLICIT, .stability = 2.0 * 1.4142135623730951, .work_vectors = 3,
+      .step = sw_step_rk4, .summary = "y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)",
+      .lecture = &sw_lecture_rk4, .mistakes = sw_mistakes_rk4, .compare = 1 },
+    { .name = "verlet", .label = "velocity Verlet (leapfrog)", .order = 2, .evals = 1,
+      .flags = SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, .stability = 2.0,
+      .work_vectors = 2, .step = sw_step_verlet,
+      .summary = "v+ = v0 + h/2 a0; x1 = x0 + h v+; v1 = v+ + h/2 a1",
+      .lecture = &sw_lecture_verlet, .mistakes = sw_mistakes_verlet, .compare = 3 },
+    { .name = "implicit-euler", .label = "backward Euler (Newton to rounding, direct solve)",
+      .order = 1, .evals = 1, .flags = SW_IMPLICIT | SW_NEWTON, .stability = INFINITY,
+      .work_vectors = 6, .step = sw_step_implicit_euler,
+      .summary = "y1 = y0 + h f(y1), solved by Newton's method", .no_lecture = solves,
+      .compare = 6, .resting = 1 },
+    { .name = "linear-implicit-euler", .label = "linearly implicit Euler (one Newton step)",
+      .order = 1, .evals = 1, .flags = SW_IMPLICIT, .stability = INFINITY, .work_vectors = 2,
+      .step = sw_step_linear_implicit_euler,
+      .summary = "(I - h J(y0)) dy = h f(y0): Baraff-Witkin's large steps", .no_lecture = solves },
+    { .name = "implicit-midpoint", .label = "implicit midpoint (Newton to rounding)", .order = 2,
+      .evals = 2, .flags = SW_IMPLICIT | SW_SYMPLECTIC | SW_NEWTON, .stability = INFINITY,
+      .work_vectors = 6, .step = sw_step_implicit_midpoint,
+      .summary = "y1 = y0 + h f((y0 + y1)/2), solved by Newton's method", .no_lecture = solves },
+    { .name = "rk45", .label = "Dormand-Prince 5(4), adaptive", .order = 5, .evals = 6,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE, .stability = 0.0, .work_vectors = 9, .step = sw_step_rk45,
+      .summary = "adaptive: error estimate from an embedded 4th-order solution", .no_lecture = adapts },
+    { .name = "dop853", .label = "Dormand-Prince 8(5,3), adaptive (Hairer)", .order = 8, .evals = 12,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE, .stability = 0.0, .work_vectors = SW_DOP853_VECTORS,
+      .step = sw_step_dop853,
+      .summary = "adaptive: error estimate from embedded 5th- and 3rd-order solutions",
+      .no_lecture = adapts, .reference = 1 },
     /* Last, so that the keys of the methods before it (lessons name them)
      * keep their places. Stability: the first ω·h where the trace of the
      * one-step map on x'' = -ω²x, M = V(w1 z) V(w0 z) V(w1 z) with V(τ) =
      * [[1 - τ²/2, τ], [-τ(1 - τ²/4), 1 - τ²/2]], climbs back to +2: found by
      * bisection on the product at 30 digits (no root of |tr M| = 2 beyond it
      * up to ω·h = 4); tests/check_yoshida.c recomputes it. */
-    { "yoshida4", "Yoshida 4th-order symplectic (triple-jump Verlet)", 4, 3,
-      SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER, 1.5734019474345401, 2, sw_step_yoshida4,
-      "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1" },
+    { .name = "yoshida4", .label = "Yoshida 4th-order symplectic (triple-jump Verlet)", .order = 4,
+      .evals = 3, .flags = SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
+      .stability = 1.5734019474345401, .work_vectors = 2, .step = sw_step_yoshida4,
+      .summary = "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1",
+      .no_lecture = "three Verlet steps in one, see verlet's" },
     /* x'' = f(x) only: refused where a force reads velocities (below). */
-    { "rkn", "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)", 6, 5,
-      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY, 0.0, 8, sw_step_rkn,
-      "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution" },
+    { .name = "rkn", .label = "Runge-Kutta-Nystrom 6(4), adaptive (Dormand, El-Mikkawy, Prince)",
+      .order = 6, .evals = 5,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY,
+      .stability = 0.0, .work_vectors = 8, .step = sw_step_rkn,
+      .summary = "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution",
+      .no_lecture = adapts },
     /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
      * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
      * six solves with one matrix (I - γh J). */
-    { "rodas4", "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", 4, 7, SW_IMPLICIT | SW_ADAPTIVE,
-      INFINITY, 12, sw_step_rodas4, "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages" },
+    { .name = "rodas4", .label = "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", .order = 4,
+      .evals = 7, .flags = SW_IMPLICIT | SW_ADAPTIVE, .stability = INFINITY, .work_vectors = 12,
+      .step = sw_step_rodas4,
+      .summary = "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages",
+      .no_lecture = solves },
     /* rkn's 12th-order sibling for tight tolerances: 16 stages and the
      * derivative at the new state (not FSAL), 17 evaluations a step. */
-    { "rkn12", "Runge-Kutta-Nystrom 12(10), adaptive (Dormand, El-Mikkawy, Prince)", 12, 17,
-      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY, 0.0, 21, sw_step_rkn12,
-      "adaptive: x'' = f(x) stepped directly at 12th order, error from an embedded 10th-order solution" },
+    { .name = "rkn12", .label = "Runge-Kutta-Nystrom 12(10), adaptive (Dormand, El-Mikkawy, Prince)",
+      .order = 12, .evals = 17,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_POSITION_ONLY,
+      .stability = 0.0, .work_vectors = 21, .step = sw_step_rkn12,
+      .summary = "adaptive: x'' = f(x) stepped directly at 12th order, error from an embedded "
+                 "10th-order solution",
+      .no_lecture = adapts },
     /* One body alone in one central field only (dop853_lc.c): 12 stages
-     * and the derivative at the start, anew each step. */
-    { "dop853-lc", "dop853 in Levi-Civita's variables: the Kepler problem regularised", 8, 13,
-      SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_ONE_BODY, 0.0, 1, sw_step_dop853_lc,
-      "adaptive: x = c + u^2, dt = |x - c| ds: the close pass taken in a clock that slows there" },
+     * and the derivative at the start, anew each step; prepare makes the
+     * regularised run it steps. */
+    { .name = "dop853-lc", .label = "dop853 in Levi-Civita's variables: the Kepler problem regularised",
+      .order = 8, .evals = 13,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_ONE_BODY, .stability = 0.0,
+      .work_vectors = 1, .step = sw_step_dop853_lc, .prepare = sw_dop853_lc_prepare,
+      .summary = "adaptive: x = c + u^2, dt = |x - c| ds: the close pass taken in a clock that slows there",
+      .no_lecture = adapts },
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
@@ -199,8 +252,8 @@ int sw_stepper_init(sw_stepper *s, const sw_integrator *m, const sw_ode *ode, ch
         snprintf(err, errlen, "out of memory for %s workspace (%d doubles)", m->name, ode->dim);
         return SW_ENOMEM;
     }
-    if (m->flags & SW_ONE_BODY) {
-        rc = sw_dop853_lc_prepare(s, ode, err, errlen);
+    if (m->prepare) {
+        rc = m->prepare(s, ode, err, errlen);
         if (rc != SW_OK) {
             sw_stepper_free(s);
             return rc;

@@ -28,7 +28,7 @@ struct sw_stepper {
     long rejected;        /* adaptive: rejected trial steps */
     long newton_iters;    /* implicit: Newton iterations, summed */
     void *plugin;         /* SW_PLUGIN methods: the plugin's sandbox (plugin/plugin_box.c) */
-    void *inner;          /* SW_ONE_BODY methods: the regularised run (dop853_lc.c) */
+    void *inner;          /* what a method's prepare made (dop853-lc: the regularised run) */
     void (*release)(sw_stepper *s); /* frees what `plugin` holds; called by sw_stepper_free */
     unsigned limit_exp;   /* 0, or: flag |y_i| >= 2^(limit_exp - 1023), inf or NaN */
     int checked;          /* the last step tested the whole state against limit_exp */
@@ -66,9 +66,9 @@ sw_step_fn sw_step_rkn12;                              /* rkn12.c */
 sw_step_fn sw_step_rodas4;                             /* rosenbrock.c */
 sw_step_fn sw_step_dop853_lc;                          /* dop853_lc.c */
 
-/* The regularised run an SW_ONE_BODY method steps (dop853_lc.c), made by
- * sw_stepper_init: SW_OK, or SW_EINVAL / SW_ENOMEM with err. */
-int sw_dop853_lc_prepare(sw_stepper *s, const sw_ode *ode, char *err, size_t errlen);
+/* dop853-lc's preparation (its row's prepare, dop853_lc.c): the regularised
+ * run it steps; SW_OK, or SW_EINVAL / SW_ENOMEM with err. */
+sw_prepare_fn sw_dop853_lc_prepare;
 
 /* Explicit Runge-Kutta steps run over the whole state for coupled systems,
  * or slice by slice (L1-sized) for pointwise ones (flow fields), where

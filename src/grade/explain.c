@@ -2,11 +2,12 @@
  * are held in memory and compared, with the grading tolerances, against
  * runs that make one usual mistake each; the first run that matches every
  * value names the mistake. Data mistakes (rows, time column, digits,
- * precision, units) are tried first, since they need no new run, then the initial
- * state and the energy column (explain_state.c), then mistaken methods
- * (explain_methods.c), steps and parameters. Invariant: a variant is
- * reported only when it matches every examined value, never because it is
- * merely closer; rows the assignment's own run matches are never explained. */
+ * precision, units) are tried first, since they need no new run, then the
+ * initial state and the energy column (explain_state.c), then mistaken
+ * methods (the method row's list, engine/mistakes.c), steps and parameters.
+ * Invariant: a variant is reported only when it matches every examined
+ * value, never because it is merely closer; rows the assignment's own run
+ * matches are never explained. */
 #include "grade/explain.h"
 
 #include <math.h>
@@ -14,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/mistakes.h"
 #include "engine/stepper.h"
 #include "grade/assignment.h"
 #include "grade/explain_int.h"
@@ -143,13 +145,12 @@ static int explain_format(const xpl_rows *tr, const xpl_rows *ref, const sw_run_
 
 /* ---- variant runs ------------------------------------------------------- */
 
+/* What to ask a student whose numbers for want match got: the row's own
+ * question when got is the method students write instead (its twin). */
 static void method_hint(const sw_integrator *want, const sw_integrator *got, char *buf, size_t len)
 {
-    if (strcmp(got->name, "symplectic-euler") == 0 && strcmp(want->name, "euler") == 0)
-        snprintf(buf, len, "did you update v before x? (Euler moves x with the old v)");
-    else if (strcmp(got->name, "euler") == 0 && strcmp(want->name, "symplectic-euler") == 0)
-        snprintf(buf, len, "did you move x with the old v? (symplectic Euler updates v first, "
-                 "then x with the new v)");
+    if (want->twin && want->twin_hint && strcmp(got->name, want->twin) == 0)
+        snprintf(buf, len, "%s", want->twin_hint);
     else
         snprintf(buf, len, "did you implement %s (%s) instead of %s?", got->name, got->label,
                  want->name);
@@ -193,10 +194,7 @@ static int explain_methods(const xpl_rows *tr, xpl_rows *scratch, const sw_run_d
     double worst;
     char how[40], hint[200], num[40], want_num[40];
     int timed = -1;
-    for (int i = 0; i < xpl_mistake_count(); i++) {
-        const xpl_mistake *mk = xpl_mistake_at(i);
-        if (strcmp(mk->base, d->method->name) != 0)
-            continue;
+    for (const sw_mistake *mk = d->method->mistakes; mk && mk->kind; mk++) {
         if (mk->time_only && timed < 0)
             timed = time_dependent(d);
         if ((mk->time_only && !timed) || !try_variant(tr, scratch, d, &mk->method, d->p, d->dt, tol, &worst))

@@ -38,19 +38,6 @@ int xpl_rows_match(const xpl_rows *a, const xpl_rows *b, int n, const sw_check_t
 /* "exactly" or "to 3e-16", for an agreement. */
 void xpl_agree(char *buf, size_t len, double worst);
 
-/* A mistaken version of a built-in method (explain_methods.c). */
-typedef struct xpl_mistake {
-    const char *base;        /* the method it is a mistaken version of */
-    int time_only;           /* shows only on a time-dependent scene */
-    const char *kind;
-    sw_integrator method;
-    const char *hint;        /* what the run does, in words */
-    const char *fix;         /* what to change, or NULL */
-} xpl_mistake;
-
-int xpl_mistake_count(void);
-const xpl_mistake *xpl_mistake_at(int i);
-
 /* Units (explain_units.c): when every column of tr matches ref as it is
  * or divided by one factor of 10, 100 or 1000 (or multiplied), and one at
  * least does not match as it is, 1 with *out naming the columns, the

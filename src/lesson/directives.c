@@ -488,13 +488,25 @@ static const struct directive {
     int once;
     void (*init)(sw_lesson_page *pg);
 } directives[] = {
-    { "scene", d_scene, 0, NULL }, { "set", d_set, 0, NULL }, { "integrator", d_integrator, 0, NULL },
-    { "dt", d_dt, 0, NULL }, { "compare", d_compare, 0, i_compare }, { "ghost", d_ghost, 1, i_ghost },
-    { "pause", d_pause, 1, i_pause }, { "reset", d_reset, 1, NULL }, { "speed", d_speed, 1, NULL }, { "until", d_until, 1, NULL },
-    { "view", d_view, 1, i_view }, { "events", d_events, 1, i_events }, { "lock", d_lock_on, 0, NULL },
-    { "unlock", d_lock_off, 0, NULL },
-    { "goal", sw_lp_goal, 0, NULL }, { "hint", d_hint, 0, NULL }, { "question", d_question, 0, NULL },
-    { "answer", d_answer, 0, NULL }, { "correct", d_correct, 0, NULL },
+    { .name = "scene", .run = d_scene },
+    { .name = "set", .run = d_set },
+    { .name = "integrator", .run = d_integrator },
+    { .name = "dt", .run = d_dt },
+    { .name = "compare", .run = d_compare, .init = i_compare },
+    { .name = "ghost", .run = d_ghost, .once = 1, .init = i_ghost },
+    { .name = "pause", .run = d_pause, .once = 1, .init = i_pause },
+    { .name = "reset", .run = d_reset, .once = 1 },
+    { .name = "speed", .run = d_speed, .once = 1 },
+    { .name = "until", .run = d_until, .once = 1 },
+    { .name = "view", .run = d_view, .once = 1, .init = i_view },
+    { .name = "events", .run = d_events, .once = 1, .init = i_events },
+    { .name = "lock", .run = d_lock_on },
+    { .name = "unlock", .run = d_lock_off },
+    { .name = "goal", .run = sw_lp_goal },
+    { .name = "hint", .run = d_hint },
+    { .name = "question", .run = d_question },
+    { .name = "answer", .run = d_answer },
+    { .name = "correct", .run = d_correct },
 };
 
 #define NDIRECTIVES ((int)(sizeof directives / sizeof directives[0]))

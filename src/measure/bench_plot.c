@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sim/truth.h"
 #include "stepwise/base.h"
 
 /* ---- plots ---------------------------------------------------------------- */
@@ -211,6 +212,8 @@ int sw_bench_write_csv(FILE *out, const sw_bench_report *const *reports, int nre
 {
     fputs("scene,method,dt,rtol,h,error,evals,solves,steps,seconds,repeats,blown,blow_time,"
           "in_fit,order,reference\n", out);
+    /* where a scene has no exact solution: the truth module's reference run */
+    const char *reference = sw_truth_reference_method()->name;
     for (int k = 0; k < nreports; k++) {
         const sw_bench_report *r = reports[k];
         for (int i = 0; i < r->nseries; i++) {
@@ -223,7 +226,7 @@ int sw_bench_write_csv(FILE *out, const sw_bench_report *const *reports, int nre
                 fprintf(out, ",%.17g,%.17g,%.17g,%.17g,%ld,%ld,%ld,%.17g,%d,%d,%.17g,%d,%.17g,%s\n",
                         pt->dt, pt->rtol, pt->h, pt->error, pt->evals, pt->solves, pt->steps,
                         pt->seconds, pt->repeats, pt->blown, pt->blown ? pt->blow_time : NAN,
-                        pt->in_fit, s->order, r->source == SW_BENCH_EXACT ? "exact" : "rk45");
+                        pt->in_fit, s->order, r->source == SW_BENCH_EXACT ? "exact" : reference);
             }
         }
     }

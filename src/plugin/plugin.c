@@ -211,7 +211,8 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     sw_integrator m = { .name = e->name, .label = e->label, .order = r.order, .evals = r.evals,
                         .flags = SW_PLUGIN | SW_EXPLICIT, .stability = NAN,
                         .work_vectors = r.work_vectors, .step = sw_plugin_step,
-                        .summary = "student plugin (run in its own sandboxed process)" };
+                        .summary = "student plugin (run in its own sandboxed process)",
+                        .no_lecture = "a plugin's stages run in its sandbox" };
     if (sw_integrator_register(&m, why, sizeof why) != SW_OK) {
         sw_host_stop(e);
         close(e->fd);

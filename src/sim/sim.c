@@ -278,9 +278,12 @@ int sw_sim_resting_state(const sw_system *sys, double *out, double *energy)
     const sw_scene *sc = sys->scene;
     sw_sim s;
     char err[SW_ERRLEN];
-    if (sys->kind != SW_SYS_PARTICLES || !sc->energy || sc->post_step)
+    const sw_integrator *rest = NULL; /* the built-in whose row says it finds rest */
+    for (int i = 0; i < sw_integrator_count() && !rest; i++)
+        rest = sw_integrator_at(i)->resting ? sw_integrator_at(i) : NULL;
+    if (sys->kind != SW_SYS_PARTICLES || !sc->energy || sc->post_step || !rest)
         return -1;
-    if (sw_sim_init(&s, sc, sys->p, sw_integrator_find("implicit-euler"), SW_DT_MAX, err, sizeof err) != SW_OK)
+    if (sw_sim_init(&s, sc, sys->p, rest, SW_DT_MAX, err, sizeof err) != SW_OK)
         return -1;
     double e0 = sw_sim_energy(&s);
     int rc = -1;

@@ -37,21 +37,10 @@ static void record_deriv(void *ctx, double t, const double *y, double *dydt)
 
 int sw_stages_supported(const sw_integrator *m, char *why, size_t len)
 {
-    static const char *const drawn[] = { "euler", "symplectic-euler", "midpoint", "heun", "rk4", "verlet" };
-    const char *what = NULL;
-    if (m->flags & SW_PLUGIN)
-        what = "a plugin's stages run in its sandbox";
-    else if (m->flags & SW_IMPLICIT)
-        what = "it solves an equation, see lesson 7";
-    else if (m->flags & SW_ADAPTIVE)
-        what = "it chooses its own steps, see lesson 9";
-    else {
-        for (size_t i = 0; i < sizeof drawn / sizeof drawn[0]; i++)
-            if (strcmp(m->name, drawn[i]) == 0)
-                return 1;
-        what = "three Verlet steps in one, see verlet's";
-    }
-    snprintf(why, len, "stages: not drawn for %s \xe2\x80\x94 %s", m->name, what);
+    if (m->lecture)
+        return 1;
+    snprintf(why, len, "stages: not drawn for %s \xe2\x80\x94 %s", m->name,
+             m->no_lecture ? m->no_lecture : "its row gives no lecture form of its step");
     return 0;
 }
 

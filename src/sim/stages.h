@@ -39,9 +39,10 @@ typedef struct sw_stages {
     int cap;                     /* the dim mem is sized for */
 } sw_stages;
 
-/* Whether the stages of m are drawn: 1, or 0 with why saying in one line
- * what m does instead ("stages: not drawn for implicit-euler — it solves
- * an equation, see lesson 7"). */
+/* Whether the stages of m are drawn (its row has a lecture form): 1, or 0
+ * with why saying in one line what m does instead, from its row's
+ * no_lecture ("stages: not drawn for implicit-euler — it solves an
+ * equation, see lesson 7"). */
 int sw_stages_supported(const sw_integrator *m, char *why, size_t len);
 /* Record one step of s's method by s->dt from s's state and time (s is not
  * changed): SW_OK, SW_EINVAL with why (a method whose stages are not drawn,

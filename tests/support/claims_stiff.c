@@ -102,7 +102,7 @@ const claim sw_claims_k[] = {
     { PERF, "rodas4 spends {7} evaluations and 6 solves a step", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "one Jacobian a step | {4} | 7 + 6 linear solves", rodas_order, EXACT, 0, "the method's order in the table", NULL },
     { README, "one Jacobian a step | 4 | {7} + 6 linear solves", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { INTEGRATORS, "adaptive, L-stable (Hairer)\", 4, {7},", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { INTEGRATORS, "adaptive, L-stable (Hairer)\", .order = 4, .evals = {7},", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "`!`, `@`, `#`, `$`, `%` and `^` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
     { GUIDE, "`$` the fourteenth, rodas4", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
 };

@@ -1,11 +1,11 @@
-/* The mistaken methods the explainer runs: Runge-Kutta stages at the wrong
- * time or from the wrong step, and the Verlet variants students write from
- * textbooks. Each is a step function with the arithmetic a student's program
- * would have, so a trace made that way matches it to rounding. */
-#include "grade/explain_int.h"
+/* The mistaken methods the explainer runs (see mistakes.h): Runge-Kutta
+ * stages at the wrong time or from the wrong step, and the Verlet variants
+ * students write from textbooks. Each is a step function with the
+ * arithmetic a student's program would have, so a trace made that way
+ * matches it to rounding. */
+#include "engine/mistakes.h"
 
 #include "engine/stepper.h"
-#include "stepwise/stepwise.h"
 
 /* ---- Runge-Kutta stages ---------------------------------------------------- */
 
@@ -151,50 +151,62 @@ static int verlet_stormer(sw_stepper *s, sw_ode *ode, double *t, double *y, doub
     return 0;
 }
 
-/* ---- the table ------------------------------------------------------------- */
+/* ---- the lists, one per method, each named in the method's row ---------- */
 
-#define MISTAKE(name, order, evals, work, fn) { name, "", order, evals, SW_EXPLICIT, 0, work, fn, "" }
-#define VERLET(name, evals, fn) \
-    { name, "", 2, evals, SW_EXPLICIT | SW_NEEDS_SECOND_ORDER, 0, 2, fn, "" }
+#define MISTAKE(shown, ord, n_evals, work, fn) \
+    { .name = shown, .label = "", .order = ord, .evals = n_evals, .flags = SW_EXPLICIT, \
+      .work_vectors = work, .step = fn, .summary = "" }
+#define VERLET(shown, n_evals, fn) \
+    { .name = shown, .label = "", .order = 2, .evals = n_evals, \
+      .flags = SW_EXPLICIT | SW_NEEDS_SECOND_ORDER, .work_vectors = 2, .step = fn, .summary = "" }
 
 static const char velocity_verlet[] = "the assignment's verlet is velocity Verlet: v½ = v + "
     "(h/2)*a0, x1 = x + h*v½, a1 = a(x1, v + h*a0), v1 = v½ + (h/2)*a1 (docs/scenes.md, "
     "'Stepping')";
 
-static const xpl_mistake mistakes[] = {
-    { "midpoint", 1, "stage-time", MISTAKE("midpoint (stage at t)", 2, 2, 2, mid_at_t),
-      "midpoint with its second stage evaluated at t instead of t + h/2", NULL },
-    { "heun", 1, "stage-time", MISTAKE("heun (stage at t)", 2, 2, 3, heun_at_t),
-      "Heun with its second stage evaluated at t instead of t + h", NULL },
-    { "rk4", 1, "stage-time", MISTAKE("rk4 (stages at t)", 4, 4, 5, rk4_at_t),
-      "rk4 with every stage evaluated at the step's start t: k2 and k3 belong at t + h/2, k4 "
-      "at t + h", NULL },
-    { "rk4", 0, "k3-full-step", MISTAKE("rk4 (k3 from a full step)", 4, 4, 5, rk4_k3_full),
-      "rk4 with k3 taken at y + h*k2 instead of y + h/2*k2", NULL },
-    { "verlet", 0, "verlet-half-step", VERLET("verlet (a1 at v½)", 1, verlet_half_v),
-      "textbook velocity Verlet, with a1 = a(x1, v½) taken at the half-step velocity",
-      "this scene's forces depend on v (damping or drag), and verlet takes a1 at the "
-      "predicted velocity v + h*a0 instead: a1 = a(x1, v + h*a0) (docs/scenes.md, 'Stepping')" },
-    { "verlet", 0, "verlet-recomputed", VERLET("verlet (a0 recomputed)", 2, verlet_fresh),
-      "velocity Verlet that recomputes a0 = a(x, v) at the start of every step",
-      "verlet keeps the a1 of the last step as the next a0 (one evaluation a step; it "
-      "differs from a(x, v) because this scene's forces depend on v): reuse a1 instead of "
-      "evaluating again (docs/scenes.md, 'Stepping')" },
-    { "verlet", 0, "verlet-half-step",
-      VERLET("verlet (a0 recomputed, a1 at v½)", 2, verlet_fresh_half_v),
-      "velocity Verlet that recomputes a0 = a(x, v) every step and takes a1 at the half-step "
-      "velocity v½",
-      "verlet takes a1 = a(x1, v + h*a0) and keeps it as the next step's a0 (it matters "
-      "because this scene's forces depend on v; docs/scenes.md, 'Stepping')" },
-    { "verlet", 0, "position-verlet", VERLET("position verlet", 1, verlet_dkd),
-      "drift-kick-drift position Verlet: x moved h/2 with v, v moved h with a at that "
-      "midpoint, then x the other h/2 with the new v", velocity_verlet },
-    { "verlet", 0, "position-verlet", VERLET("stormer verlet", 1, verlet_stormer),
-      "Störmer's position Verlet, x_next = 2x - x_prev + h^2*a with v written as "
-      "(x_next - x)/h",
-      velocity_verlet },
+const sw_mistake sw_mistakes_midpoint[] = {
+    { .kind = "stage-time", .time_only = 1, .method = MISTAKE("midpoint (stage at t)", 2, 2, 2, mid_at_t),
+      .hint = "midpoint with its second stage evaluated at t instead of t + h/2" },
+    { .kind = NULL },
 };
 
-int xpl_mistake_count(void) { return (int)(sizeof mistakes / sizeof mistakes[0]); }
+const sw_mistake sw_mistakes_heun[] = {
+    { .kind = "stage-time", .time_only = 1, .method = MISTAKE("heun (stage at t)", 2, 2, 3, heun_at_t),
+      .hint = "Heun with its second stage evaluated at t instead of t + h" },
+    { .kind = NULL },
+};
 
-const xpl_mistake *xpl_mistake_at(int i) { return &mistakes[i]; }
+const sw_mistake sw_mistakes_rk4[] = {
+    { .kind = "stage-time", .time_only = 1, .method = MISTAKE("rk4 (stages at t)", 4, 4, 5, rk4_at_t),
+      .hint = "rk4 with every stage evaluated at the step's start t: k2 and k3 belong at t + h/2, "
+              "k4 at t + h" },
+    { .kind = "k3-full-step", .method = MISTAKE("rk4 (k3 from a full step)", 4, 4, 5, rk4_k3_full),
+      .hint = "rk4 with k3 taken at y + h*k2 instead of y + h/2*k2" },
+    { .kind = NULL },
+};
+
+const sw_mistake sw_mistakes_verlet[] = {
+    { .kind = "verlet-half-step", .method = VERLET("verlet (a1 at v½)", 1, verlet_half_v),
+      .hint = "textbook velocity Verlet, with a1 = a(x1, v½) taken at the half-step velocity",
+      .fix = "this scene's forces depend on v (damping or drag), and verlet takes a1 at the "
+             "predicted velocity v + h*a0 instead: a1 = a(x1, v + h*a0) (docs/scenes.md, 'Stepping')" },
+    { .kind = "verlet-recomputed", .method = VERLET("verlet (a0 recomputed)", 2, verlet_fresh),
+      .hint = "velocity Verlet that recomputes a0 = a(x, v) at the start of every step",
+      .fix = "verlet keeps the a1 of the last step as the next a0 (one evaluation a step; it "
+             "differs from a(x, v) because this scene's forces depend on v): reuse a1 instead of "
+             "evaluating again (docs/scenes.md, 'Stepping')" },
+    { .kind = "verlet-half-step", .method = VERLET("verlet (a0 recomputed, a1 at v½)", 2, verlet_fresh_half_v),
+      .hint = "velocity Verlet that recomputes a0 = a(x, v) every step and takes a1 at the "
+              "half-step velocity v½",
+      .fix = "verlet takes a1 = a(x1, v + h*a0) and keeps it as the next step's a0 (it matters "
+             "because this scene's forces depend on v; docs/scenes.md, 'Stepping')" },
+    { .kind = "position-verlet", .method = VERLET("position verlet", 1, verlet_dkd),
+      .hint = "drift-kick-drift position Verlet: x moved h/2 with v, v moved h with a at that "
+              "midpoint, then x the other h/2 with the new v",
+      .fix = velocity_verlet },
+    { .kind = "position-verlet", .method = VERLET("stormer verlet", 1, verlet_stormer),
+      .hint = "Störmer's position Verlet, x_next = 2x - x_prev + h^2*a with v written as "
+              "(x_next - x)/h",
+      .fix = velocity_verlet },
+    { .kind = NULL },
+};

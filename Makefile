@@ -90,7 +90,7 @@ $(LIB): $(CORE_OBJ)
 	ar rcs $@ $(BUILD)/stepwise-core.o
 
 $(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB)
-	$(CC) $(OPT) $(LDSAN) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
+	$(CC) $(OPT) $(LDSAN) -pthread -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # Each tests/check_NAME.c exports make_NAME_suite(); the list is generated so
 # adding a suite never means editing the runner.
@@ -102,7 +102,7 @@ $(BUILD)/tests/suites.h: $(TEST_SRC)
 $(BUILD)/tests/check_main.o: $(BUILD)/tests/suites.h
 
 $(TESTBIN): $(TEST_OBJ) $(TOOLLIB)
-	$(CC) $(OPT) $(LDSAN) $(WRAP) -o $@ $(TEST_OBJ) $(TOOLLIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
+	$(CC) $(OPT) $(LDSAN) $(WRAP) -pthread -o $@ $(TEST_OBJ) $(TOOLLIB) $(CHECK_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # A student plugin's host (docs/sandbox.md): the plugin interface, the
 # engine's derivatives and the scenes' builders, and nothing of the methods

@@ -458,6 +458,35 @@ START_TEST(err_is_position_in_metres_and_restarts)
 }
 END_TEST
 
+/* w measures on a worker: the key returns at once, the runs step on while
+ * it measures, and the report is taken when it is done; a new scene while
+ * it measures stops it (nothing leaks: the sanitizer and valgrind passes). */
+START_TEST(workprec_sweep_beside_the_picture)
+{
+    sw_app a;
+    app_with(&a, "chain", "rk4", 0.01, NULL);
+    ck_assert_int_eq(sw_app_key(&a, 'w', 0), 1);
+    ck_assert_int_eq(a.workprec, 1);
+    ck_assert(a.sweep != NULL || a.bench != NULL);
+    double t0 = a.sims[0].t;
+    sw_app_advance(&a, 0.05, 1000);
+    ck_assert_double_gt(a.sims[0].t, t0); /* stepping does not wait for it */
+    sw_app_sweep_wait(&a);
+    ck_assert_ptr_null(a.sweep);
+    ck_assert_ptr_nonnull(a.bench);
+    ck_assert_ptr_nonnull(strstr(a.message, "work-precision: error against derivative evaluations"));
+    sw_app_free(&a);
+    app_with(&a, "chain", "rk4", 0.01, NULL);
+    ck_assert_int_eq(sw_app_key(&a, 'w', 0), 1);
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_app_set_scene(&a, sw_scene_find("spring"), NULL, err, sizeof err), SW_OK);
+    ck_assert_ptr_null(a.sweep);
+    ck_assert_ptr_null(a.bench);
+    ck_assert_int_eq(a.workprec, 0);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* A key press spends at most a->work_key state evaluations: below what the
  * gyre's reference costs (its particles × DP8's steps to the report time,
  * about 2.4e6), the work-precision key and the Δt measurement both say so
@@ -485,7 +514,7 @@ START_TEST(slow_keys_say_so_first)
 {
     sw_app a;
     app_with(&a, "spring", "rk4", 0.05, NULL);
-    ck_assert_ptr_nonnull(sw_app_key_notice(&a, 'w', 0));
+    ck_assert_ptr_null(sw_app_key_notice(&a, 'w', 0)); /* measured on a worker: no wait to announce */
     ck_assert_ptr_nonnull(sw_app_key_notice(&a, '-', 0));
     ck_assert_ptr_nonnull(sw_app_key_notice(&a, '+', 0));
     ck_assert_ptr_null(sw_app_key_notice(&a, 'u', 0));
@@ -494,6 +523,7 @@ START_TEST(slow_keys_say_so_first)
     sw_app_set_until(&a, 2);
     ck_assert_ptr_nonnull(sw_app_key_notice(&a, 'u', 0));
     ck_assert_int_eq(sw_app_key(&a, 'w', 0), 1);
+    sw_app_sweep_wait(&a);
     ck_assert_ptr_nonnull(a.bench);
     ck_assert_ptr_null(sw_app_key_notice(&a, 'w', 0)); /* the kept sweep: at once */
     sw_app_free(&a);
@@ -586,6 +616,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, frames_compose);
     tcase_add_test(tc, adaptive_status_keeps_evals);
     tcase_add_test(tc, key_press_keeps_to_its_budget);
+    tcase_add_test(tc, workprec_sweep_beside_the_picture);
     tcase_add_test(tc, slow_keys_say_so_first);
     tcase_add_test(tc, panel_reaches_lesson_values);
     suite_add_tcase(s, tc);

@@ -475,6 +475,7 @@ START_TEST(workprec_table_points_beside_the_text)
     sw_app a;
     ct_open_page(r, &a, "lessons/06-runge-kutta.lesson", "Error against cost");
     ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
+    sw_app_sweep_wait(&a);
     ck_assert_ptr_nonnull(a.bench);
     const sw_bench_report *b = a.bench;
     for (size_t t = 0; t < sizeof table / sizeof table[0]; t++) {

@@ -217,6 +217,7 @@ START_TEST(workprec_overlay)
         sw_app a;
         app_for(&a, sw_scene_find(scenes[k]), NULL, 0);
         ck_assert_int_eq(sw_app_apply(&a, SW_ACT_WORKPREC, 1), 1);
+        sw_app_sweep_wait(&a);
         ck_assert_ptr_nonnull(a.bench);
         for (int s = 0; s < 2; s++) {
             sw_frame f;
@@ -509,6 +510,7 @@ START_TEST(workprec_cycle_in_a_lesson)
         static const char *const next[] = { "against", "w closes" };
         for (int k = 0; k < 2; k++) {
             ck_assert_int_eq(sw_app_key(&a, 'w', 1), 1);
+            sw_app_sweep_wait(&a);
             ck_assert_int_eq(a.workprec, k + 1);
             char *text;
             check_screen_text(&f, &a, sw_runner_side(r, &a, cols), cols, rows, "w in a lesson", &text);

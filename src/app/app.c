@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "app/stages.h"
+#include "app/sweep.h"
 #include "measure/bench.h"
 #include "stepwise/stepwise.h"
 #include "util/escape.h"
@@ -34,12 +35,48 @@ static void default_compare(sw_app *a, const sw_integrator **m1, const sw_integr
 
 static void free_bench(sw_app *a)
 {
+    sw_sweep_cancel(a->sweep);
+    a->sweep = NULL;
     if (a->bench) {
         sw_bench_free(a->bench);
         free(a->bench);
     }
     a->bench = NULL;
     a->workprec = 0;
+}
+
+static void workprec_message(sw_app *a)
+{
+    snprintf(a->message, sizeof a->message, "%s",
+             !a->workprec ? "work-precision plot closed"
+             : a->sweep ? "measuring every method for the work-precision plot; it opens when done (w: "
+                          "the mode, Esc: close)"
+             : a->workprec == 1 ? "work-precision: error against derivative evaluations (w: against time)"
+                                : "work-precision: error against wall time (w closes)");
+}
+
+void sw_app_sweep_poll(sw_app *a)
+{
+    sw_bench_report *r;
+    char why[SW_ERRLEN];
+    if (!a->sweep || !sw_sweep_poll(a->sweep, &r, why, sizeof why))
+        return;
+    a->sweep = NULL;
+    if (!r) {
+        a->workprec = 0;
+        snprintf(a->message, sizeof a->message, "no work-precision plot: %s", why);
+        return;
+    }
+    a->bench = r;
+    if (a->workprec)
+        workprec_message(a);
+}
+
+void sw_app_sweep_wait(sw_app *a)
+{
+    if (a->sweep)
+        sw_sweep_wait(a->sweep);
+    sw_app_sweep_poll(a);
 }
 
 static void free_sims(sw_app *a)
@@ -527,22 +564,23 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return 1;
     case SW_ACT_WORKPREC: {
         /* off -> against evaluations -> against wall time -> off; the sweep
-         * (well under a second for default scenes) runs once per scene. */
+         * runs once per scene, on a worker thread (app/sweep.c): the
+         * picture runs on and the plot opens when it is done. */
         char why[SW_ERRLEN];
         a->workprec = (a->workprec + 1) % 3;
-        if (a->workprec && !a->bench) {
-            sw_bench_report *r = malloc(sizeof *r);
-            if (!r || !sw_bench_measurable(a->scene, a->p, why, sizeof why) ||
-                sw_bench_scene_quick(r, a->scene, a->p, 4 * a->work_key, why, sizeof why) != SW_OK) {
-                free(r);
+        if (a->workprec && !a->bench && !a->sweep) {
+            if (!sw_bench_measurable(a->scene, a->p, why, sizeof why) ||
+                !sw_bench_quick_affordable(a->scene, a->p, 4 * a->work_key, why, sizeof why) ||
+                !(a->sweep = sw_sweep_start(a->scene, a->p, 4 * a->work_key, why, sizeof why))) {
                 a->workprec = 0;
-                snprintf(a->message, sizeof a->message, "no work-precision plot: %s", r ? why : "out of memory");
+                snprintf(a->message, sizeof a->message, "no work-precision plot: %s", why);
                 return 0;
             }
-            a->bench = r;
+            sw_app_sweep_poll(a); /* done already when it ran on this thread */
+            if (!a->workprec)
+                return 0;
         }
-        snprintf(a->message, sizeof a->message, "%s", a->workprec == 1 ? "work-precision: error against derivative evaluations (w: against time)"
-                 : a->workprec == 2 ? "work-precision: error against wall time (w closes)" : "work-precision plot closed");
+        workprec_message(a);
         return 1;
     }
     case SW_ACT_STAGES:
@@ -574,6 +612,7 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
 
 void sw_app_advance(sw_app *a, double wall, long max_steps)
 {
+    sw_app_sweep_poll(a);
     if (a->paused || !(wall > 0))
         return;
     double want = wall * a->speed;

@@ -88,6 +88,7 @@ typedef struct sw_app {
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
     void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
+    struct sw_sweep *sweep;     /* ... while it is measured on a worker thread (app/sweep.h) */
     int param_sel;
     double speed;               /* simulated seconds per wall second */
     double t_goal;              /* simulated time the clock asks for */
@@ -180,6 +181,10 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson);
 /* Advance by wall seconds: simulated time wall·speed in whole steps of dt,
  * stopping early after max_steps steps per sim (then slowmo > 1). */
 void sw_app_advance(sw_app *a, double wall, long max_steps);
+/* The work-precision sweep's worker: take its report when it is done (every
+ * frame; sw_app_advance calls it), or wait for it (tests). */
+void sw_app_sweep_poll(sw_app *a);
+void sw_app_sweep_wait(sw_app *a);
 /* Back to t = 0 for every sim. */
 void sw_app_reset(sw_app *a);
 /* (plugins.c) After stepping: a sim whose plugin failed (crash, exit, loop,

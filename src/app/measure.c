@@ -5,6 +5,7 @@
  * on screen; measurements run on their own sims and on the truth's copy of
  * the system, so reading a number never changes what is shown. */
 #include "app/app.h"
+#include "app/sweep.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -163,7 +164,9 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
         return NULL;
     switch (c->action) {
     case SW_ACT_WORKPREC:
-        return !a->workprec && !a->bench ? "measuring every method for the work-precision plot..." : NULL;
+        /* on a worker thread the picture runs on: nothing to announce */
+        return !a->workprec && !a->bench && !a->sweep && sw_sweep_inline()
+                   ? "measuring every method for the work-precision plot..." : NULL;
     case SW_ACT_DT_HALVE:
     case SW_ACT_DT_DOUBLE:
         return "measuring the error at the old and the new dt...";

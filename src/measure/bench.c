@@ -105,7 +105,10 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
     }
     for (int j = 1; j <= SW_BENCH_SAMPLES && rc == SW_OK; j++) {
         double t = sample_time(r, j);
-        if (sw_sim_run_until(&s, t)) {
+        if (r->stop && atomic_load(r->stop)) {
+            snprintf(err, errlen, "stopped");
+            rc = SW_EINVAL;
+        } else if (sw_sim_run_until(&s, t)) {
             snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
                      r->scene->name, m->name, rtol, s.blow_time, s.blow_reason);
             rc = SW_EDIVERGED;
@@ -121,7 +124,14 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
 
 int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen)
 {
+    return sw_bench_init_stoppable(r, sc, p, NULL, err, errlen);
+}
+
+int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
+                            char *err, size_t errlen)
+{
     memset(r, 0, sizeof *r);
+    r->stop = stop;
     r->scene = sc;
     sw_scene_fill(sc, p, r->p);
     r->t_report = sc->duration;
@@ -206,6 +216,15 @@ static int cmp_double(const void *a, const void *b)
  * and counters (every run is identical: the sim is deterministic), the median
  * of all runs the time. *work gets evals × an evaluation's work plus
  * solver iterations × a solve's (sw_truth_eval_work). */
+/* Another thread asked the sweep to end (c->stop). */
+static int stopped(const sw_bench_config *c, char *err, size_t errlen)
+{
+    if (!c->stop || !atomic_load(c->stop))
+        return 0;
+    snprintf(err, errlen, "stopped");
+    return 1;
+}
+
 static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt, double rtol,
                      const sw_bench_config *c, sw_bench_point *pt, double *work, double *scratch,
                      char *err, size_t errlen)
@@ -237,6 +256,10 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
         double seconds = 0, error = 0;
         long evals = 0;
         for (int j = first; j <= SW_BENCH_SAMPLES && !s.blown; j++) {
+            if (stopped(c, err, errlen)) {
+                sw_sim_free(&s);
+                return SW_EINVAL;
+            }
             double t = sample_time(r, j), t0 = sw_clock_now();
             sw_sim_run_until(&s, t);
             seconds += sw_clock_now() - t0;
@@ -607,29 +630,42 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
     return rc;
 }
 
-int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
-                         char *err, size_t errlen)
+/* The quick config for a budget: up front, the two reference runs and, per
+ * method, a sweep whose runs double in cost to max_work (under 2·max_work
+ * each). Three quarters of the budget go to the sweeps: with the UI's
+ * 4·SW_WORK_KEY that is the quick config's own max_work. */
+static void quick_config(sw_bench_config *c, double budget)
+{
+    sw_bench_config_quick(c);
+    c->max_work = fmin(c->max_work, 0.75 * budget / (2.0 * sw_integrator_count()));
+}
+
+int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen)
 {
     sw_bench_config c;
-    sw_bench_config_quick(&c);
-    /* Up front: the two reference runs and, per method, a sweep whose runs
-     * double in cost to max_work (under 2·max_work each). Three quarters of
-     * the budget go to the sweeps: with the UI's 4·SW_WORK_KEY that is the
-     * quick config's own max_work. */
-    int count = sw_integrator_count();
-    c.max_work = fmin(c.max_work, 0.75 * budget / (2.0 * count));
+    quick_config(&c, budget);
     sw_truth tr;
-    int rc = sw_truth_init(&tr, sc, p, err, errlen);
-    if (rc != SW_OK)
-        return rc;
-    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * count;
+    if (sw_truth_init(&tr, sc, p, err, errlen) != SW_OK)
+        return 0;
+    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sw_integrator_count();
     sw_truth_free(&tr);
     if (!(cost <= budget)) {
         snprintf(err, errlen, "the sweep would cost about %.2g state evaluations, over the %.0e the plot may "
                  "spend (fewer particles, or stepwise bench in a shell)", cost, budget);
-        return SW_EINVAL;
+        return 0;
     }
-    rc = sw_bench_init(r, sc, p, err, errlen);
+    return 1;
+}
+
+int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
+                         const atomic_int *stop, char *err, size_t errlen)
+{
+    if (!sw_bench_quick_affordable(sc, p, budget, err, errlen))
+        return SW_EINVAL;
+    sw_bench_config c;
+    quick_config(&c, budget);
+    c.stop = stop;
+    int rc = sw_bench_init_stoppable(r, sc, p, stop, err, errlen);
     if (rc != SW_OK)
         return rc;
     rc = sw_bench_sweep_all(r, NULL, 0, &c, err, errlen);

@@ -6,6 +6,7 @@
 #ifndef SW_MEASURE_BENCH_H
 #define SW_MEASURE_BENCH_H
 
+#include <stdatomic.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -114,6 +115,8 @@ typedef struct sw_bench_config {
     int repeats;       /* timing repeats per point; the median is kept */
     double repeat_below; /* repeat only runs faster than this many seconds */
     double max_work;   /* skip runs above this many (evaluations + solver iterations) × dimension */
+    const atomic_int *stop; /* NULL, or set by another thread: the sweep ends at its next sample
+                               time with SW_EINVAL, "stopped" (the UI's sweep on a worker) */
 } sw_bench_config;
 
 /* One scene's sweep: the truth at the report time and one series per method. */
@@ -127,6 +130,7 @@ typedef struct sw_bench_report {
     const double *truth; /* ... the last of them: the state at t_report */
     double ref_error;  /* reference: |rtol 1e-12 run - rtol 1e-11 run| over the samples, an upper estimate of its error */
     long ref_evals;    /* evaluations the reference runs took */
+    const atomic_int *stop; /* as sw_bench_config's, for the reference runs */
     double scale;      /* max(1, max |truth| over the samples): errors are judged against this */
     double omega;      /* largest |λ| of the linearisation at the start, NaN when unknown */
     sw_spectrum spectrum; /* the linearisation's modes at the start (n = 0: none) */
@@ -149,6 +153,9 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
  * (rtol 1e-12, atol 1e-14) computed once here. 0, SW_EINVAL (no reference),
  * SW_ENOMEM or SW_EDIVERGED (the reference run failed). r is freed on failure. */
 int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen);
+/* ... that ends early (SW_EINVAL, "stopped") when another thread sets stop. */
+int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
+                            char *err, size_t errlen);
 void sw_bench_free(sw_bench_report *r);
 
 /* Sweep method m and append its series to r, with its fitted order. 0, or
@@ -161,12 +168,15 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
 int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, int nmethods,
                        const sw_bench_config *c, char *err, size_t errlen);
 
+/* 1 when sw_bench_scene_quick's estimate is within budget; else 0 with err
+ * saying why (as sw_bench_scene_quick would refuse). */
+int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen);
 /* For the UI: init + sweep_all with the quick config, within budget state
  * evaluations in all (refused with SW_EINVAL, err saying why, when the
  * reference alone would spend a quarter of it). r must be freed with
- * sw_bench_free when this returns 0. */
+ * sw_bench_free when this returns 0. stop: see sw_bench_config. */
 int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
-                         char *err, size_t errlen);
+                         const atomic_int *stop, char *err, size_t errlen);
 
 /* Refit a series (marks in_fit, sets order, nfit, no_order, why, floor,
  * plateau, the local slopes and asymptotic). An order stands only on points

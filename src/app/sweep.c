@@ -1,0 +1,118 @@
+/* The work-precision sweep on a worker thread (app/sweep.h). The worker
+ * touches only its own job: a report, the scene (read-only), a copy of the
+ * parameters and the method table (read-only once plugins are loaded; see
+ * docs/architecture.md, "Threads"). */
+#include "app/sweep.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "stepwise/stepwise.h"
+
+struct sw_sweep {
+    const sw_scene *sc;
+    double p[SW_MAX_PARAMS];
+    int has_p;            /* 0: the scene's defaults */
+    double budget;
+    atomic_int stop;      /* the app asks the worker to end early */
+    atomic_int done;      /* the worker has written rc, report and why */
+    int threaded;         /* 0: it ran on the caller's thread */
+    pthread_t thread;
+    int rc;
+    sw_bench_report *report;
+    char why[SW_ERRLEN];
+};
+
+static void *work(void *arg)
+{
+    sw_sweep *s = arg;
+    s->report = malloc(sizeof *s->report);
+    if (!s->report) {
+        s->rc = SW_ENOMEM;
+        snprintf(s->why, sizeof s->why, "out of memory");
+    } else {
+        s->rc = sw_bench_scene_quick(s->report, s->sc, s->has_p ? s->p : NULL, s->budget, &s->stop, s->why, sizeof s->why);
+        if (s->rc != SW_OK) {
+            free(s->report);
+            s->report = NULL;
+        }
+    }
+    atomic_store(&s->done, 1);
+    return NULL;
+}
+
+/* A plugin steps through its host's one channel, which the main thread
+ * uses too. */
+int sw_sweep_inline(void)
+{
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i)->flags & SW_PLUGIN)
+            return 1;
+    return 0;
+}
+
+sw_sweep *sw_sweep_start(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen)
+{
+    sw_sweep *s = calloc(1, sizeof *s);
+    if (!s) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    s->sc = sc;
+    if (p) {
+        memcpy(s->p, p, sizeof s->p);
+        s->has_p = 1;
+    }
+    s->budget = budget;
+    atomic_init(&s->stop, 0);
+    atomic_init(&s->done, 0);
+    if (sw_sweep_inline()) {
+        work(s);
+        return s;
+    }
+    int rc = pthread_create(&s->thread, NULL, work, s);
+    if (rc != 0) {
+        snprintf(err, errlen, "cannot start the sweep's thread: %s", strerror(rc));
+        free(s);
+        return NULL;
+    }
+    s->threaded = 1;
+    return s;
+}
+
+static void join(sw_sweep *s)
+{
+    if (s->threaded) {
+        pthread_join(s->thread, NULL);
+        s->threaded = 0;
+    }
+}
+
+int sw_sweep_poll(sw_sweep *s, sw_bench_report **report, char *why, size_t whylen)
+{
+    if (!atomic_load(&s->done))
+        return 0;
+    join(s);
+    *report = s->report;
+    snprintf(why, whylen, "%s", s->rc == SW_OK ? "" : s->why);
+    free(s);
+    return 1;
+}
+
+void sw_sweep_wait(sw_sweep *s) { join(s); }
+
+void sw_sweep_cancel(sw_sweep *s)
+{
+    if (!s)
+        return;
+    atomic_store(&s->stop, 1);
+    join(s);
+    if (s->report) {
+        sw_bench_free(s->report);
+        free(s->report);
+    }
+    free(s);
+}

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/forces.h"
 #include "sim/truth.h"
 #include "stepwise/stepwise.h"
 #include "water_cfl.h"
@@ -369,6 +370,54 @@ START_TEST(water_dam_break_martin_moyce)
 }
 END_TEST
 
+/* The neighbour search is O(n), counted, not timed: the candidate pairs
+ * one evaluation computes a distance for (engine/force_sph.c counts them),
+ * per particle, on a column at rest of 1e3, 1e4 and 1e5 particles (the
+ * same density: the lattice spacing s shrinks as n grows and h = 2 s with
+ * it). Independently: cells are h wide and a particle is checked against
+ * the rest of its own cell's particles once each way round (half) and four
+ * neighbouring cells', 4.5 cells of h² at 1/(s²·√3/2) particles each, less
+ * the half of itself: 4.5·4/(√3/2) - 1/2 = 20.3 a particle in the bulk.
+ * At every n within [0.85, 1] of that, below it by the cells along the
+ * column's edges, part empty: a share of the cells that falls as 1/√n, so
+ * the shortfall falls by √10 = 3.2 a decade of n (checked: by 2 to 5).
+ * The count a particle tends to the bulk's: O(n) in all. Every pair would
+ * be n/2 a particle (50 000 at 1e5). */
+START_TEST(water_neighbours_linear)
+{
+    const sw_scene *sc = sw_scene_find("water");
+    double bulk = 4.5 * 4.0 / 0.86602540378443865 - 0.5, each[3];
+    for (int k = 0; k < 3; k++) {
+        double p[SW_MAX_PARAMS];
+        char err[SW_ERRLEN];
+        sw_system sys;
+        sw_scene_defaults(sc, p);
+        p[sw_scene_param_index(sc, "n")] = pow(10, 3 + k);
+        p[sw_scene_param_index(sc, "shape")] = 2;
+        ck_assert_msg(sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
+        double *d = malloc((size_t)sys.ode->dim * sizeof *d);
+        ck_assert_ptr_nonnull(d);
+        sys.ode->deriv(sys.ode->ctx, 0.0, sys.y, d);
+        const sw_force *fo = NULL;
+        for (int i = 0; i < sys.particles.nforces; i++)
+            if (sys.particles.forces[i].kind == SW_FORCE_SPH)
+                fo = &sys.particles.forces[i];
+        ck_assert_ptr_nonnull(fo);
+        each[k] = (double)swp_sph_visited(fo) / sys.n;
+        printf("water neighbours: n = %d: %.2f candidate pairs a particle (bulk %.2f; every pair: %.0f)\n", sys.n,
+               each[k], bulk, (sys.n - 1) / 2.0);
+        ck_assert(each[k] >= 0.85 * bulk && each[k] < bulk);
+        free(d);
+        sw_system_free(&sys);
+    }
+    for (int k = 0; k < 2; k++) {
+        double fall = (bulk - each[k]) / (bulk - each[k + 1]);
+        printf("water neighbours: the shortfall falls %.2f times from 1e%d to 1e%d\n", fall, 3 + k, 4 + k);
+        ck_assert(fall > 2 && fall < 5);
+    }
+}
+END_TEST
+
 /* Implicit methods are refused with a reason (no Jacobian beyond the
  * per-particle estimate, above the dense fallback's size). */
 START_TEST(water_implicit_refused)
@@ -397,6 +446,7 @@ Suite *make_water_suite(void)
     tcase_add_test(tc, water_implicit_refused);
     tcase_add_test(tc, water_front_converges);
     tcase_add_test(tc, water_dam_break_martin_moyce);
+    tcase_add_test(tc, water_neighbours_linear);
     tcase_set_timeout(tc, 300);
     suite_add_tcase(s, tc);
     return s;

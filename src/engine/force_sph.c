@@ -32,7 +32,7 @@
 
 typedef struct sph_work {
     int n, ncap;        /* particles, most cells */
-    double *rho, *press;
+    double *rho, *press; /* density; p/ρ², the pressure's share in each pair's term */
     int *cell, *start, *order; /* each particle's cell; cell c's particles are order[start[c] .. start[c + 1]) */
     double x0, y0, cs;  /* the grid's corner and cell size */
     int nx, ny;
@@ -156,6 +156,7 @@ typedef struct sph_ctx {
     sph_work *w;
     const double *v;
     double *f;
+    double w6, spiky, visc; /* 4/(π h⁸), the spiky gradient's C, π h⁵: the kernels' constants */
 } sph_ctx;
 
 /* The density's term, and the pair kept for the force pass (its order is
@@ -165,7 +166,7 @@ static void density_pair(int a, int b, double dx, double dy, double r2, void *ct
     (void)dx, (void)dy;
     sph_ctx *c = ctx;
     sph_work *w = c->w;
-    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = 4.0 / (SW_PI * h2 * h2 * h2 * h2) * q * q * q;
+    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = c->w6 * q * q * q;
     w->rho[a] += c->p->mass[b] * w6;
     w->rho[b] += c->p->mass[a] * w6;
     if (w->npair >= 0 && w->npair < w->paircap) {
@@ -182,14 +183,14 @@ static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
     sph_ctx *c = ctx;
     const sw_force *fo = c->fo;
     const double *rho = c->w->rho, *press = c->w->press, *v = c->v;
-    double h = fo->h, r = sqrt(r2), h5 = h * h * h * h * h;
+    double h = fo->h, r = sqrt(r2);
     if (!(r > 0))
         return; /* two particles at one point push neither way */
     double mm = c->p->mass[a] * c->p->mass[b], mm_rr = mm / (rho[a] * rho[b]);
     /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
-    double ps = press[a] / (rho[a] * rho[a]) + press[b] / (rho[b] * rho[b]);
-    double push = mm * ps * spiky(fo) * (h - r) * (h - r) / r;
-    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / (SW_PI * h5) * (h - r);
+    double ps = press[a] + press[b];
+    double push = mm * ps * c->spiky * (h - r) * (h - r) / r;
+    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / c->visc * (h - r);
     double fx = push * dx + visc * (v[2 * b] - v[2 * a]), fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
     c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
     c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
@@ -218,12 +219,15 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
     double h2 = fo->h * fo->h, w0 = 4.0 / (SW_PI * h2) ; /* W6(0) = 4/(π h²) */
     for (int i = 0; i < n; i++)
         w->rho[i] = p->mass[i] * w0;
-    sph_ctx c = { p, fo, w, v, f };
+    sph_ctx c = { p, fo, w, v, f, 4.0 / (SW_PI * h2 * h2 * h2 * h2), spiky(fo),
+                  SW_PI * (fo->h * fo->h * fo->h * fo->h * fo->h) };
     w->npair = 0;
     each_pair(w, x, fo->h, density_pair, &c);
     long visited = w->visited;
-    for (int i = 0; i < n; i++)
-        w->press[i] = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
+    for (int i = 0; i < n; i++) {
+        double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
+        w->press[i] = pressure / (w->rho[i] * w->rho[i]);
+    }
     if (w->npair >= 0) { /* the pairs the density found, in its order: the same sums as walking again */
         for (long k = 0; k < w->npair; k++) {
             int a = w->pair[2 * k], b = w->pair[2 * k + 1];

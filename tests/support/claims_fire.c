@@ -2,10 +2,12 @@
  * the truth module's limits on the scene's own spectrum, water's CFL limit
  * measured against it (tests/support/water_cfl.c). */
 #include "claims.h"
+#include "engine/forces.h"
 #include "water_cfl.h"
 #include "water_dam.h"
 
 #define SCENES "docs/scenes.md"
+#define PERF "docs/performance.md"
 
 static double euler_fast_cooling(void) { return cl_limit0("fire", "kappa=100", "euler"); }
 static double verlet_fast_cooling(void) { return cl_limit0("fire", "kappa=100", "verlet"); }
@@ -85,6 +87,67 @@ static double dam_spacing(void)
 static double dam_last_T(void) { return water_dam_T[WATER_DAM_POINTS - 1]; }
 static double water_nu(void) { return WATER_NU; }
 static double default_nu(void) { return cl_param("water", "nu"); }
+/* The dam at n = 1e4 (docs/performance.md): symplectic Euler's limit in
+ * theory at the start, ms; when the default step blows it up; its count;
+ * the candidate pairs and the pairs within h a particle at the start. */
+static double big_dam_limit_ms(void) { return 1000 * cl_limit0("water", "n=10000", "symplectic-euler"); }
+static double big_dam_blowup(void)
+{
+    sw_sim s;
+    cl_sim_init(&s, "water", "n=10000", "symplectic-euler", sw_scene_find("water")->dt);
+    while (!s.blown && s.t < 1)
+        sw_sim_step(&s);
+    ck_assert(s.blown);
+    double t = s.blow_time;
+    sw_sim_free(&s);
+    return t;
+}
+static double default_dt_ms(void) { return 1000 * sw_scene_find("water")->dt; }
+static double frame_steps(void) { return ceil(1.0 / 60 / 0.0005); }
+static double meter_every(void) { return sw_scene_find("water")->duration / 20; }
+static void big_dam_pairs(double *count, double *candidates, double *within)
+{
+    sw_sim s;
+    cl_sim_init(&s, "water", "n=10000", "symplectic-euler", 0.0005);
+    int n = s.sys.n;
+    double *d = malloc((size_t)s.sys.ode->dim * sizeof *d);
+    ck_assert_ptr_nonnull(d);
+    s.sys.ode->deriv(s.sys.ode->ctx, 0.0, s.sys.y, d);
+    const sw_force *fo = NULL;
+    for (int k = 0; k < s.sys.particles.nforces; k++)
+        if (s.sys.particles.forces[k].kind == SW_FORCE_SPH)
+            fo = &s.sys.particles.forces[k];
+    ck_assert_ptr_nonnull(fo);
+    long pairs = 0;
+    for (int a = 0; a < n; a++) /* every pair, directly: no cell list */
+        for (int b = a + 1; b < n; b++) {
+            double dx = s.sys.y[2 * a] - s.sys.y[2 * b], dy = s.sys.y[2 * a + 1] - s.sys.y[2 * b + 1];
+            pairs += dx * dx + dy * dy < fo->h * fo->h;
+        }
+    *count = n;
+    *candidates = (double)swp_sph_visited(fo) / n;
+    *within = (double)pairs / n;
+    free(d);
+    sw_sim_free(&s);
+}
+static double big_dam_count(void)
+{
+    double c, v, w;
+    big_dam_pairs(&c, &v, &w);
+    return c;
+}
+static double big_dam_candidates(void)
+{
+    double c, v, w;
+    big_dam_pairs(&c, &v, &w);
+    return v;
+}
+static double big_dam_within(void)
+{
+    double c, v, w;
+    big_dam_pairs(&c, &v, &w);
+    return w;
+}
 static double sound_speed(void) { return sqrt(cl_param("water", "k")); }
 static double dense_particles(void) { return SW_DENSE_MAX / 4; }
 
@@ -107,6 +170,14 @@ const claim sw_claims_f[] = {
     { SCENES, "at n = 3000, {3} to 11 % ahead", dam_ahead_least, ROUNDED, 0, R_ROUND, NULL },
     { SCENES, "at n = 3000, 3 to {11} % ahead", dam_ahead_most, ROUNDED, 0, R_ROUND, NULL },
     { SCENES, "its front is {28} % behind at T = 2.95", dam_default_nu, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "on the dam at n = 1e4 is {0.37} ms", big_dam_limit_ms, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "default Δt = {1} ms blows up", default_dt_ms, EXACT, 0, R_COUNT, NULL },
+    { PERF, "blows up at t = {0.025} s", big_dam_blowup, ABS, 1e-9, "the step it blew up at ends there", NULL },
+    { PERF, "A frame at speed 1 then takes {34} steps", frame_steps, EXACT, 0, "ceil(1/60 / 0.5 ms)", NULL },
+    { PERF, "(every {0.05} s of simulated time", meter_every, EXACT, 0, "the meter: twenty times per report time", NULL },
+    { PERF, "so the truth module takes {9815}", big_dam_count, EXACT, 0, R_COUNT, NULL },
+    { PERF, "(about {20} candidate pairs a particle", big_dam_candidates, ABS, 1, "\"about\": within 1", NULL },
+    { PERF, "of which some {7} are within h)", big_dam_within, ABS, 1, "\"some\": within 1", NULL },
     { SCENES, "the sound speed is c = √k = {20} m/s", sound_speed, EXACT, 0, R_COUNT, NULL },
     { SCENES, "Implicit methods are refused above {16} particles", dense_particles, EXACT, 0,
       "the dense fallback's dimension over 4 doubles a particle", NULL },

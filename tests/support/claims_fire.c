@@ -178,6 +178,7 @@ const claim sw_claims_f[] = {
     { PERF, "so the truth module takes {9815}", big_dam_count, EXACT, 0, R_COUNT, NULL },
     { PERF, "(about {20} candidate pairs a particle", big_dam_candidates, ABS, 1, "\"about\": within 1", NULL },
     { PERF, "of which some {7} are within h)", big_dam_within, ABS, 1, "\"some\": within 1", NULL },
+    { SCENES, "about {20} candidate pairs a particle whatever n", big_dam_candidates, ABS, 1, "\"about\": within 1 (at 1e4)", NULL },
     { SCENES, "the sound speed is c = √k = {20} m/s", sound_speed, EXACT, 0, R_COUNT, NULL },
     { SCENES, "Implicit methods are refused above {16} particles", dense_particles, EXACT, 0,
       "the dense fallback's dimension over 4 doubles a particle", NULL },

@@ -48,8 +48,8 @@ static double euler_ratio_within(double horizon)
     water_cfl_at(NULL, "euler", horizon, &theory, &measured);
     return measured / theory;
 }
-static double euler_ratio_1s(void) { return euler_ratio_within(1.0); }
-static double euler_ratio_8s(void) { return euler_ratio_within(8.0); }
+double cl_water_euler_1s(void) { return euler_ratio_within(1.0); }
+double cl_water_euler_8s(void) { return euler_ratio_within(8.0); }
 /* The dam's front against Martin & Moyce (tests/support/water_dam.c), in
  * percent: behind at n = 800 (least and most), ahead at n = 3000, the
  * largest miss of either, and the default nu's miss at the last point. */
@@ -62,15 +62,15 @@ static double dam_miss(int n, double nu, int which)
     last_n = n, last_nu = nu;
     return 100 * (which == 0 ? lo : which == 1 ? hi : Z[WATER_DAM_POINTS - 1] / water_dam_Z[WATER_DAM_POINTS - 1] - 1);
 }
-static double dam_behind_least(void) { return -dam_miss(800, WATER_NU, 1); }
-static double dam_behind_most(void) { return -dam_miss(800, WATER_NU, 0); }
-static double dam_ahead_least(void) { return dam_miss(3000, WATER_NU, 0); }
-static double dam_ahead_most(void) { return dam_miss(3000, WATER_NU, 1); }
-static double dam_worst(void)
+double cl_dam_behind_least(void) { return -dam_miss(800, WATER_NU, 1); }
+double cl_dam_behind_most(void) { return -dam_miss(800, WATER_NU, 0); }
+double cl_dam_ahead_least(void) { return dam_miss(3000, WATER_NU, 0); }
+double cl_dam_ahead_most(void) { return dam_miss(3000, WATER_NU, 1); }
+double cl_dam_worst(void)
 {
-    return fmax(fmax(dam_behind_most(), -dam_behind_least()), fmax(dam_ahead_most(), -dam_ahead_least()));
+    return fmax(fmax(cl_dam_behind_most(), -cl_dam_behind_least()), fmax(cl_dam_ahead_most(), -cl_dam_ahead_least()));
 }
-static double dam_default_nu(void) { return -dam_miss(800, cl_param("water", "nu"), 2); }
+double cl_dam_default_nu(void) { return -dam_miss(800, cl_param("water", "nu"), 2); }
 /* The lattice spacing at n = 800 over the dam's width a = 0.6 m, percent. */
 static double dam_spacing(void)
 {
@@ -91,7 +91,7 @@ static double default_nu(void) { return cl_param("water", "nu"); }
  * theory at the start, ms; when the default step blows it up; its count;
  * the candidate pairs and the pairs within h a particle at the start. */
 static double big_dam_limit_ms(void) { return 1000 * cl_limit0("water", "n=10000", "symplectic-euler"); }
-static double big_dam_blowup(void)
+double cl_big_dam_blowup(void)
 {
     sw_sim s;
     cl_sim_init(&s, "water", "n=10000", "symplectic-euler", sw_scene_find("water")->dt);
@@ -107,6 +107,11 @@ static double frame_steps(void) { return ceil(1.0 / 60 / 0.0005); }
 static double meter_every(void) { return sw_scene_find("water")->duration / 20; }
 static void big_dam_pairs(double *count, double *candidates, double *within)
 {
+    static double kept[3]; /* the first answer, kept: three rows ask it */
+    if (kept[0] > 0) {
+        *count = kept[0], *candidates = kept[1], *within = kept[2];
+        return;
+    }
     sw_sim s;
     cl_sim_init(&s, "water", "n=10000", "symplectic-euler", 0.0005);
     int n = s.sys.n;
@@ -127,6 +132,7 @@ static void big_dam_pairs(double *count, double *candidates, double *within)
     *count = n;
     *candidates = (double)swp_sph_visited(fo) / n;
     *within = (double)pairs / n;
+    kept[0] = *count, kept[1] = *candidates, kept[2] = *within;
     free(d);
     sw_sim_free(&s);
 }
@@ -158,21 +164,21 @@ const claim sw_claims_f[] = {
       "the largest of the three ratios (bisected to 1 %)", NULL },
     { SCENES, "the theory's estimate gives C = {4.2}", euler_c, ROUNDED, 0, R_ROUND, NULL },
     { SCENES, "C = 4.2 ({0.52} ms", euler_ms, ROUNDED, 0, R_ROUND, NULL },
-    { SCENES, "column blows up at {7.7} times that", euler_ratio_1s, ROUNDED, 0, "bisected to 1 %: to its last digit", NULL },
-    { SCENES, "rather than 1 s, at {4.6} times)", euler_ratio_8s, ROUNDED, 0, "bisected to 1 %: to its last digit", NULL },
+    { SCENES, "column blows up at {7.7} times that", cl_water_euler_1s, ROUNDED, 0, "bisected to 1 %: to its last digit", NULL },
+    { SCENES, "rather than 1 s, at {4.6} times)", cl_water_euler_8s, ROUNDED, 0, "bisected to 1 %: to its last digit", NULL },
     { SCENES, "a spacing is {5} % of a at n = 800", dam_spacing, ROUNDED, 0, R_ROUND, NULL },
     { SCENES, "five points (T up to {2.95}", dam_last_T, EXACT, 0, "the last point compared", NULL },
     { SCENES, "water's own viscosity (`nu` = {1e-6} m²/s)", water_nu, EXACT, 0, "the run's nu", NULL },
     { SCENES, "default `nu` ({0.05} m²/s", default_nu, EXACT, 0, R_COUNT, NULL },
-    { SCENES, "within {15} % at each", dam_worst, ATMOST, 0, "the largest miss at n = 800 and n = 3000", NULL },
-    { SCENES, "the front is {2} to 8 % behind", dam_behind_least, ROUNDED, 0, R_ROUND, NULL },
-    { SCENES, "the front is 2 to {8} % behind", dam_behind_most, ROUNDED, 0, R_ROUND, NULL },
-    { SCENES, "at n = 3000, {3} to 11 % ahead", dam_ahead_least, ROUNDED, 0, R_ROUND, NULL },
-    { SCENES, "at n = 3000, 3 to {11} % ahead", dam_ahead_most, ROUNDED, 0, R_ROUND, NULL },
-    { SCENES, "its front is {28} % behind at T = 2.95", dam_default_nu, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "within {15} % at each", cl_dam_worst, ATMOST, 0, "the largest miss at n = 800 and n = 3000", NULL },
+    { SCENES, "the front is {2} to 8 % behind", cl_dam_behind_least, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "the front is 2 to {8} % behind", cl_dam_behind_most, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "at n = 3000, {3} to 11 % ahead", cl_dam_ahead_least, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "at n = 3000, 3 to {11} % ahead", cl_dam_ahead_most, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "its front is {28} % behind at T = 2.95", cl_dam_default_nu, ROUNDED, 0, R_ROUND, NULL },
     { PERF, "on the dam at n = 1e4 is {0.37} ms", big_dam_limit_ms, ROUNDED, 0, R_ROUND, NULL },
     { PERF, "default Δt = {1} ms blows up", default_dt_ms, EXACT, 0, R_COUNT, NULL },
-    { PERF, "blows up at t = {0.025} s", big_dam_blowup, ABS, 1e-9, "the step it blew up at ends there", NULL },
+    { PERF, "blows up at t = {0.025} s", cl_big_dam_blowup, ABS, 1e-9, "the step it blew up at ends there", NULL },
     { PERF, "A frame at speed 1 then takes {34} steps", frame_steps, EXACT, 0, "ceil(1/60 / 0.5 ms)", NULL },
     { PERF, "(every {0.05} s of simulated time", meter_every, EXACT, 0, "the meter: twenty times per report time", NULL },
     { PERF, "so the truth module takes {9815}", big_dam_count, EXACT, 0, R_COUNT, NULL },

@@ -502,15 +502,18 @@ static void machine(void)
 /* One heavy view of bench_frame.c alone, for paired timings and for
  * callgrind (the difference between two SECONDS counts is the frames'
  * cost alone): VIEW is "plain" or a '+'-joined list of compare, lanes,
- * ghost, trails. 0, or 2 when an argument is not allowed. */
-static int frame_view(const char *scene, const char *n_text, const char *view, const char *seconds_text)
+ * ghost, trails; DT (NULL: the scene's) the step. 0, or 2 when an
+ * argument is not allowed. */
+static int frame_view(const char *scene, const char *n_text, const char *view, const char *seconds_text,
+                      const char *dt_text)
 {
-    char *n_end, *end;
+    char *n_end, *end, *dt_end = "";
     long n = strtol(n_text, &n_end, 10);
-    double seconds = strtod(seconds_text, &end);
-    if (*n_end || *end || !(seconds > 0 && seconds <= 40) || n < 0 || n > 1000000 || !sw_scene_find(scene)) {
-        fprintf(stderr, "stepwise: --frame-view takes SCENE N VIEW SECONDS: a scene, n in [0, 1000000] "
-                "(0: the default), and seconds in (0, 40]\n");
+    double seconds = strtod(seconds_text, &end), dt = dt_text ? strtod(dt_text, &dt_end) : 0;
+    if (*n_end || *end || *dt_end || !(seconds > 0 && seconds <= 40) || n < 0 || n > 1000000 ||
+        !(dt_text == NULL || (dt >= 1e-9 && dt <= 1)) || !sw_scene_find(scene)) {
+        fprintf(stderr, "stepwise: --frame-view takes SCENE N VIEW SECONDS [DT]: a scene, n in [0, 1000000] "
+                "(0: the default), seconds in (0, 40] and a step in [1e-9, 1] (none: the scene's)\n");
         return 2;
     }
     int compare = 0, ghost = 0, lanes = 0, trails = 0;
@@ -531,7 +534,7 @@ static int frame_view(const char *scene, const char *n_text, const char *view, c
             return 2;
         }
     }
-    bench_heavy_one(scene, (int)n, compare, ghost, lanes, trails, seconds);
+    bench_heavy_one(scene, (int)n, compare, ghost, lanes, trails, seconds, dt);
     return 0;
 }
 
@@ -552,7 +555,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
             return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--frame-view") == 0 && i + 4 < argc)
-            return frame_view(argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 4]);
+            return frame_view(argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 4],
+                              i + 5 < argc && argv[i + 5][0] != '-' ? argv[i + 5] : NULL);
         if (strcmp(argv[i], "--quick") == 0) {
             o.repeats = 3;
             o.chain_n = 100;
@@ -601,7 +605,7 @@ static int bench_engine_main(int argc, char **argv)
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
                     "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
-                    "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE N VIEW SECONDS\n",
+                    "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE N VIEW SECONDS [DT]\n",
                     argv[i]);
             return 2;
         }

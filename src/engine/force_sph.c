@@ -16,7 +16,8 @@
  * and hold it there (no slip) with a damping -(2c/h)·v.
  * Neighbours come from a uniform grid (a cell list, counting sort, O(n)) of
  * cells at least h wide over the particles' bounding box; pairs are visited
- * cell by cell in a fixed order, so results are deterministic. Invariant: an
+ * cell by cell in a fixed order, so results are deterministic; the force
+ * pass takes the pairs the density pass found, in its order. Invariant: an
  * evaluation allocates nothing (the grid is sized when the force is added).
  * The Jacobian it gives is each particle's own estimate (pairs 0): the walls,
  * and for the pressure and the viscosity each neighbour counted twice, as
@@ -31,19 +32,29 @@
 
 typedef struct sph_work {
     int n, ncap;        /* particles, most cells */
-    double *rho, *press;
+    double *rho, *press; /* density; p/ρ², the pressure's share in each pair's term */
     int *cell, *start, *order; /* each particle's cell; cell c's particles are order[start[c] .. start[c + 1]) */
     double x0, y0, cs;  /* the grid's corner and cell size */
     int nx, ny;
+    int *pair;          /* the pairs within h the density pass found, (a, b) in its order */
+    long npair, paircap; /* how many; room for (-1 when they did not fit) */
+    long visited;       /* candidate pairs (distances computed) by the last pass over the grid */
 } sph_work;
 
+/* Room for this many pairs a particle: a lattice of h = 2 spacings has 9
+ * (18 neighbours), h = 3 spacings 18; more (a fluid squeezed far past its
+ * rest density) and the force pass walks the grid again. */
+#define PAIRS_EACH 24
+
 /* One block: the header, then rho and press (n each), then cell, order
- * (n each) and start (ncap + 1); the system frees it. */
+ * (n each), start (ncap + 1) and the pairs (2 PAIRS_EACH n); the system
+ * frees it. */
 static void *sph_work_new(int n)
 {
     int ncap = 4 * n + 64;
-    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15;
-    char *block = calloc(1, head + (size_t)2 * n * sizeof(double) + ((size_t)2 * n + ncap + 1) * sizeof(int));
+    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, paircap = (size_t)PAIRS_EACH * n;
+    char *block = calloc(1, head + (size_t)2 * n * sizeof(double) +
+                                ((size_t)2 * n + ncap + 1 + 2 * paircap) * sizeof(int));
     if (!block)
         return NULL;
     sph_work *w = (sph_work *)block;
@@ -54,6 +65,8 @@ static void *sph_work_new(int n)
     w->cell = (int *)(w->press + n);
     w->order = w->cell + n;
     w->start = w->order + n;
+    w->pair = w->start + ncap + 1;
+    w->paircap = (long)paircap;
     return w;
 }
 
@@ -96,13 +109,17 @@ static int grid(sph_work *w, int n, const double *x, double h)
 
 /* Every pair (a, b) within h once, cell by cell: each cell with itself
  * (b after a) and with its right, upper-left, upper and upper-right
- * neighbours. visit(a, b, dx, dy, r², ctx). */
+ * neighbours. visit(a, b, dx, dy, r², ctx). The candidates (pairs whose
+ * distance it computes) are counted in w->visited: about 20 a particle at
+ * the lattice's density, whatever n (the cells are h wide). Inline, so
+ * each caller's visit is compiled into its loop. */
 typedef void pair_fn(int a, int b, double dx, double dy, double r2, void *ctx);
 
-static void each_pair(const sph_work *w, const double *x, double h, pair_fn *visit, void *ctx)
+static inline void each_pair(sph_work *w, const double *x, double h, pair_fn *visit, void *ctx)
 {
     static const int step[4][2] = { { 1, 0 }, { -1, 1 }, { 0, 1 }, { 1, 1 } };
     double h2 = h * h;
+    long visited = 0;
     for (int cy = 0; cy < w->ny; cy++)
         for (int cx = 0; cx < w->nx; cx++) {
             int c = cy * w->nx + cx;
@@ -112,8 +129,9 @@ static void each_pair(const sph_work *w, const double *x, double h, pair_fn *vis
                     int ox = s < 0 ? cx : cx + step[s][0], oy = s < 0 ? cy : cy + step[s][1];
                     if (ox < 0 || ox >= w->nx || oy >= w->ny)
                         continue;
-                    int o = oy * w->nx + ox;
-                    for (int ib = s < 0 ? ia + 1 : w->start[o]; ib < w->start[o + 1]; ib++) {
+                    int o = oy * w->nx + ox, ib0 = s < 0 ? ia + 1 : w->start[o];
+                    visited += w->start[o + 1] - ib0;
+                    for (int ib = ib0; ib < w->start[o + 1]; ib++) {
                         int b = w->order[ib];
                         double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], r2 = dx * dx + dy * dy;
                         if (r2 < h2)
@@ -122,6 +140,7 @@ static void each_pair(const sph_work *w, const double *x, double h, pair_fn *vis
                 }
             }
         }
+    w->visited = visited;
 }
 
 /* C of ∇Wspiky = -C (h - r)² d/r. */
@@ -137,15 +156,26 @@ typedef struct sph_ctx {
     sph_work *w;
     const double *v;
     double *f;
+    double w6, spiky, visc; /* 4/(π h⁸), the spiky gradient's C, π h⁵: the kernels' constants */
 } sph_ctx;
 
+/* The density's term, and the pair kept for the force pass (its order is
+ * the grid's, so the forces sum in the same order either way). */
 static void density_pair(int a, int b, double dx, double dy, double r2, void *ctx)
 {
     (void)dx, (void)dy;
     sph_ctx *c = ctx;
-    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = 4.0 / (SW_PI * h2 * h2 * h2 * h2) * q * q * q;
-    c->w->rho[a] += c->p->mass[b] * w6;
-    c->w->rho[b] += c->p->mass[a] * w6;
+    sph_work *w = c->w;
+    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = c->w6 * q * q * q;
+    w->rho[a] += c->p->mass[b] * w6;
+    w->rho[b] += c->p->mass[a] * w6;
+    if (w->npair >= 0 && w->npair < w->paircap) {
+        w->pair[2 * w->npair] = a;
+        w->pair[2 * w->npair + 1] = b;
+        w->npair++;
+    } else {
+        w->npair = -1;
+    }
 }
 
 static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
@@ -153,14 +183,14 @@ static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
     sph_ctx *c = ctx;
     const sw_force *fo = c->fo;
     const double *rho = c->w->rho, *press = c->w->press, *v = c->v;
-    double h = fo->h, r = sqrt(r2), h5 = h * h * h * h * h;
+    double h = fo->h, r = sqrt(r2);
     if (!(r > 0))
         return; /* two particles at one point push neither way */
     double mm = c->p->mass[a] * c->p->mass[b], mm_rr = mm / (rho[a] * rho[b]);
     /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
-    double ps = press[a] / (rho[a] * rho[a]) + press[b] / (rho[b] * rho[b]);
-    double push = mm * ps * spiky(fo) * (h - r) * (h - r) / r;
-    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / (SW_PI * h5) * (h - r);
+    double ps = press[a] + press[b];
+    double push = mm * ps * c->spiky * (h - r) * (h - r) / r;
+    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / c->visc * (h - r);
     double fx = push * dx + visc * (v[2 * b] - v[2 * a]), fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
     c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
     c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
@@ -189,11 +219,26 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
     double h2 = fo->h * fo->h, w0 = 4.0 / (SW_PI * h2) ; /* W6(0) = 4/(π h²) */
     for (int i = 0; i < n; i++)
         w->rho[i] = p->mass[i] * w0;
-    sph_ctx c = { p, fo, w, v, f };
+    sph_ctx c = { p, fo, w, v, f, 4.0 / (SW_PI * h2 * h2 * h2 * h2), spiky(fo),
+                  SW_PI * (fo->h * fo->h * fo->h * fo->h * fo->h) };
+    w->npair = 0;
     each_pair(w, x, fo->h, density_pair, &c);
-    for (int i = 0; i < n; i++)
-        w->press[i] = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
-    each_pair(w, x, fo->h, force_pair, &c);
+    long visited = w->visited;
+    for (int i = 0; i < n; i++) {
+        double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
+        w->press[i] = pressure / (w->rho[i] * w->rho[i]);
+    }
+    if (w->npair >= 0) { /* the pairs the density found, in its order: the same sums as walking again */
+        for (long k = 0; k < w->npair; k++) {
+            int a = w->pair[2 * k], b = w->pair[2 * k + 1];
+            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1];
+            force_pair(a, b, dx, dy, dx * dx + dy * dy, &c);
+        }
+    } else {
+        each_pair(w, x, fo->h, force_pair, &c);
+        visited += w->visited;
+    }
+    w->visited = visited;
     double grip = 2.0 * sqrt(fo->stiff) / fo->h;
     for (int i = 0; i < n; i++) {
         double at = in_zone(fo, x + 2 * i) ? grip : 0.0;
@@ -264,6 +309,12 @@ static void sph_values(const sw_force *fo, char *buf, size_t len)
 {
     snprintf(buf, len, "h = %g, rho0 = %g, stiff = %g (c = %g), nu = %g, box width %g", fo->h, fo->rho0, fo->stiff,
              sqrt(fo->stiff), fo->nu, fo->box_w);
+}
+
+long swp_sph_visited(const sw_force *fo)
+{
+    const sph_work *w = fo->work;
+    return w ? w->visited : 0;
 }
 
 static int sph_uses_velocity(const sw_force *fo) { return fo->nu != 0; }

@@ -70,4 +70,9 @@ int swp_force_prepare(const sw_particles *p, sw_force *fo);
  * where q = 0. */
 void swp_inverse_square_block(double s, double dx, double dy, double soft2, double blk[4]);
 
+/* The candidate pairs (pairs of particles whose distance it computed, from
+ * the cell list's neighbouring cells) of an SPH force's last pass over its
+ * grid: a count, for the O(n) test; 0 before the first. */
+long swp_sph_visited(const sw_force *fo);
+
 #endif

@@ -52,5 +52,8 @@ done
 one=$("$BENCH" --frame-view vortex 1000 compare+ghost 1 2>&1) || fail "--frame-view exited $?: $one"
 echo "$one" | grep -Fq "  vortex     1000 compare+ghost " || fail "no --frame-view row: $one"
 "$BENCH" --frame-view vortex 1000 sideways 1 2>/dev/null; [ $? -eq 2 ] || fail "--frame-view took an unknown view"
+one=$("$BENCH" --frame-view water 300 plain 0.1 0.0005 2>&1) || fail "--frame-view with a step exited $?: $one"
+echo "$one" | grep -Eq '^  water +[0-9]+ plain ' || fail "no --frame-view row for water: $one"
+"$BENCH" --frame-view water 300 plain 0.1 0 2>/dev/null; [ $? -eq 2 ] || fail "--frame-view took a step of 0"
 "$BENCH" --frame-view nosuch 1000 plain 1 2>/dev/null; [ $? -eq 2 ] || fail "--frame-view took an unknown scene"
 echo "engine benchmark: ok"

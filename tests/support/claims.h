@@ -167,6 +167,17 @@ double cl_rk4_small_stretch(void);
 double cl_gyre_first_error(void);
 double cl_gyre_slope_min(void);
 double cl_gyre_slope_max(void);
+/* Water's slow rows (claims_fire.c): Euler's measured limit, the dam break
+ * against Martin & Moyce, the big dam's blow-up. */
+double cl_water_euler_1s(void);
+double cl_water_euler_8s(void);
+double cl_dam_worst(void);
+double cl_dam_ahead_least(void);
+double cl_dam_ahead_most(void);
+double cl_dam_behind_least(void);
+double cl_dam_behind_most(void);
+double cl_dam_default_nu(void);
+double cl_big_dam_blowup(void);
 double cl_gyre_nfit(void);
 double cl_one(void);
 

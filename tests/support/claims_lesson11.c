@@ -102,6 +102,12 @@ static double water_dt_ms(void)
     return 1000 * dt;
 }
 static double water_limit(void) { return cl_limit0("water", NULL, "symplectic-euler"); }
+/* Euler's limit on the page's water: over nu/c² (c² = k), and in ms. */
+static double euler_water_ms(void) { return 1000 * cl_limit0("water", NULL, "euler"); }
+static double euler_water_c(void)
+{
+    return cl_limit0("water", NULL, "euler") * page_param(P_WATER, "k", NULL) / page_param(P_WATER, "nu", NULL);
+}
 
 const claim sw_claims_l[] = {
     { L11, "born at the source {60} times a second", births, EXACT, 0, R_COUNT, NULL },
@@ -125,5 +131,7 @@ const claim sw_claims_l[] = {
       "symplectic Euler's limit in theory is below the page's step", NULL },
     { L11, "At Δt = {4} ms the meter", water_dt_ms, EXACT, 0, "the page's Δt", NULL },
     { L11, "until dt is {0.001} or less", water_limit, ATLEAST, 0, "the goal's step is within the theory's limit", NULL },
+    { L11, "gives it a limit ({4.2}·nu/c²", euler_water_c, ROUNDED, 0, R_ROUND, NULL },
+    { L11, "·nu/c², {0.52} ms here)", euler_water_ms, ROUNDED, 0, R_ROUND, NULL },
 };
 const size_t sw_claims_l_n = sizeof sw_claims_l / sizeof sw_claims_l[0];

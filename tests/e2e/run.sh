@@ -15,11 +15,10 @@ jobs=${SW_TEST_JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 case $jobs in ''|*[!0-9]*|0) echo "e2e: SW_TEST_JOBS must be a whole number of 1 or more, not '$jobs'" >&2; exit 2 ;; esac
 out=$(mktemp -d) || exit 1
 trap 'rm -rf "$out"' EXIT
-export bin out
 # The tests that take longest start first (a "# e2e: long" line says so),
 # so that two cores are not left with one long test at the end.
 { grep -l '^# e2e: long' "$dir"/test_*.sh; grep -L '^# e2e: long' "$dir"/test_*.sh; } |
-    tr '\n' '\0' | xargs -0 -n1 -P "$jobs" sh "$dir/run_one.sh"
+    tr '\n' '\0' | xargs -0 -n1 -P "$jobs" sh "$dir/run_one.sh" "$bin" "$out"
 # A test that needs what this machine lacks (a jail for plugins) exits 77
 # with one line saying why: counted as skipped, and the line shown.
 pass=0 fail=0 skip=0 parts=0

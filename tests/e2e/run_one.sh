@@ -1,8 +1,11 @@
 #!/bin/sh
-# One end-to-end test for run.sh: runs $1 against $bin, keeps its log and
-# status in $out and prints one line when it ends. The seconds are for the
-# developer reading the log; never judged.
-t=$1
+# One end-to-end test for run.sh (run_one.sh BIN OUT TEST): runs TEST
+# against BIN, keeps its log and status in the directory OUT and prints one
+# line when it ends. Nothing is exported to the test but STEPWISE (a test's
+# own variables, such as a trace held in $out, must not reach its
+# programs' environment). The seconds are for the developer reading the
+# log; never judged.
+bin=$1 out=$2 t=$3
 name=$(basename "$t" .sh)
 t0=$(date +%s)
 STEPWISE="$bin" sh "$t" >"$out/$name.log" 2>&1

@@ -7,7 +7,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "cli/bench_jobs.h"
 #include "measure/bench.h"
 #include "util/clock.h"
 #include "util/names.h"
@@ -16,7 +18,7 @@
 
 static const char usage_text[] =
     "usage: stepwise bench [SCENE...] [--integrators LIST] [--csv FILE] [--svg FILE]\n"
-    "                      [--set NAME=VALUE] [--quick] [--repeats N] [--plugin FILE]\n"
+    "                      [--set NAME=VALUE] [--quick] [--repeats N] [--jobs N] [--plugin FILE]\n"
     "                      [--events locate|step]\n"
     "\n"
     "Work-precision report: for each scene with an exact solution or a tight reference\n"
@@ -44,6 +46,8 @@ static const char usage_text[] =
     "  --set NAME=VALUE    change a scene parameter (one SCENE only)\n"
     "  --quick             the small sweep the UI uses (6-8 step sizes, one run each)\n"
     "  --repeats N         timing repeats per point, 1..15 (default 3)\n"
+    "  --jobs N            scenes measured side by side, 1..16 (default: one per core;\n"
+    "                      1 with --plugin); only the times depend on it\n"
     "  --plugin FILE       load a student integrator (.so) and include it\n"
     "  --events MODE       locate: cut steps at contacts and crossings (every method keeps\n"
     "                      its order); step: meet them at step ends (default, first order)\n"
@@ -322,7 +326,9 @@ int sw_cmd_bench(int argc, char **argv)
     const char *scene_names[64], *plugins[8], *csv_path = NULL, *svg_path = NULL;
     char *methods_arg = NULL;
     int nscenes = 0, nplugins = 0, quick = 0;
-    long repeats = 3;
+    long repeats = 3, jobs_n = sysconf(_SC_NPROCESSORS_ONLN);
+    if (jobs_n < 1)
+        jobs_n = 1;
     sw_run_opts opts;
     memset(&opts, 0, sizeof opts);
     for (int i = 1; i < argc; i++) {
@@ -330,7 +336,7 @@ int sw_cmd_bench(int argc, char **argv)
         int takes = strcmp(a, "--integrators") == 0 || strcmp(a, "--csv") == 0 ||
                     strcmp(a, "--svg") == 0 || strcmp(a, "--set") == 0 ||
                     strcmp(a, "--repeats") == 0 || strcmp(a, "--plugin") == 0 ||
-                    strcmp(a, "--events") == 0;
+                    strcmp(a, "--events") == 0 || strcmp(a, "--jobs") == 0;
         if (takes && i + 1 >= argc)
             return sw_cli_error("%s needs a value; see 'stepwise bench --help'", a);
         if (strcmp(a, "--integrators") == 0)
@@ -345,6 +351,9 @@ int sw_cmd_bench(int argc, char **argv)
         } else if (strcmp(a, "--repeats") == 0) {
             if (sw_cli_long("--repeats", argv[++i], 1, 15, &repeats) != SW_EXIT_OK)
                 return SW_EXIT_USAGE;
+        } else if (strcmp(a, "--jobs") == 0) {
+            if (sw_cli_long("--jobs", argv[++i], 1, 16, &jobs_n) != SW_EXIT_OK)
+                return SW_EXIT_USAGE;
         } else if (strcmp(a, "--plugin") == 0) {
             if (nplugins == 8)
                 return sw_cli_error("at most 8 --plugin options");
@@ -356,7 +365,7 @@ int sw_cmd_bench(int argc, char **argv)
             quick = 1;
         else if (a[0] == '-')
             return sw_cli_error("bench: unknown option '%.40s'; options: --integrators, --csv, --svg, "
-                                "--set, --quick, --repeats, --plugin, --events, --help", a);
+                                "--set, --quick, --repeats, --jobs, --plugin, --events, --help", a);
         else {
             const sw_scene *sc;
             if (sw_cli_scene(a, &sc) != SW_EXIT_OK)
@@ -424,22 +433,33 @@ int sw_cmd_bench(int argc, char **argv)
         printf("skipped: %s\n\n", notes);
     int ndone = 0, status = SW_EXIT_OK;
     double t0 = sw_clock_now();
+    sw_bench_task task[64];
+    for (int i = 0; i < n; i++)
+        task[i] = (sw_bench_task){ .scene = scenes[i], .p = params[i], .methods = nmethods ? methods : NULL,
+                                   .nmethods = nmethods, .cfg = &cfg, .events = opts.events };
+    /* a plugin's host answers one thread: with one loaded, no workers */
+    char err[SW_ERRLEN];
+    sw_bench_jobs *jobs = sw_bench_jobs_start(task, reports, n, nplugins ? 0 : (int)jobs_n, err, sizeof err);
+    if (!jobs) {
+        sw_cli_note("%s", err);
+        free(reports);
+        free(done);
+        return SW_EXIT_FAIL;
+    }
     for (int i = 0; i < n; i++) {
-        char err[SW_ERRLEN], skipped[512];
+        char skipped[512];
         sw_bench_report *r = &reports[i];
-        int rc = sw_bench_init(r, scenes[i], params[i], err, sizeof err);
-        r->events = opts.events;
-        if (rc != SW_OK ||
-            sw_bench_sweep_all(r, nmethods ? methods : NULL, nmethods, &cfg, err, sizeof err) != SW_OK) {
+        if (sw_bench_jobs_wait(jobs, i, err, sizeof err) != SW_OK) {
             sw_cli_note("%s", err);
-            sw_bench_free(r);
             status = SW_EXIT_FAIL;
             continue;
         }
         list_inapplicable(scenes[i], params[i], methods, nmethods, skipped, sizeof skipped);
         print_report(r, skipped);
+        fflush(stdout);
         done[ndone++] = r;
     }
+    sw_bench_jobs_free(jobs);
     printf("bench: %d scene%s in %.1f s\n", ndone, ndone == 1 ? "" : "s", sw_clock_now() - t0);
     sw_signals_catch();
     if (csv_path && out_write("--csv", csv_path, sw_bench_write_csv, done, ndone) != SW_EXIT_OK)

@@ -56,4 +56,17 @@ done
 if command -v xmllint >/dev/null 2>&1; then
     xmllint --noout "$svg" || fail "xmllint rejects the SVG"
 fi
+# Scenes measured side by side (--jobs): every number but the seconds is
+# the same as one at a time, and the reports come in the order asked.
+"$STEPWISE" bench spring chain orbit --quick --jobs 1 --csv "$dir/j1.csv" > "$dir/j1.txt" || fail "--jobs 1"
+"$STEPWISE" bench spring chain orbit --quick --jobs 3 --csv "$dir/j3.csv" > "$dir/j3.txt" || fail "--jobs 3"
+cut -d, -f1-9,11- "$dir/j1.csv" > "$dir/j1.cut"
+cut -d, -f1-9,11- "$dir/j3.csv" > "$dir/j3.cut"
+cmp -s "$dir/j1.cut" "$dir/j3.cut" || fail "--jobs 3 measured other numbers than --jobs 1: $(diff "$dir/j1.cut" "$dir/j3.cut" | head -3)"
+[ "$(cut -d, -f1 "$dir/j3.csv" | uniq | tr '\n' ' ')" = "scene spring chain orbit " ] ||
+    fail "--jobs 3: scenes out of order: $(cut -d, -f1 "$dir/j3.csv" | uniq | tr '\n' ' ')"
+"$STEPWISE" bench spring --jobs 0 > /dev/null 2> "$dir/j0.err"
+rc=$?
+[ "$rc" -eq 2 ] || fail "--jobs 0 exited $rc, not 2"
+grep -q -- "--jobs" "$dir/j0.err" || fail "--jobs 0: the message does not name --jobs: $(cat "$dir/j0.err")"
 echo "bench report: ok"

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Pictures that show their point at 80x24 (issue 25), as a student sees
 # them: on lesson 5 page 3 the stability region's marks move at every
-# halving of dt and the axes stay put; on lesson 6 page 4 the
+# halving of dt and the axes stay put, each drawn on its side of the
+# region's edge line (X past it, * on the shading), as the line under the
+# picture says; on lesson 6 page 4 the
 # work-precision plot shows Euler (its marker, or '&' with the pair named)
 # and RK4's point of the page's table (about 500 evaluations, error 3e-7)
 # beside the page's text, before and after the answer; the projectile's
@@ -27,6 +29,14 @@ marks() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { for (i = 1; i <= lengt
     if (ch == "X" || ch == "*") printf "%d:%d ", NR, i } }'; }
 axis() { picture | awk '/^-+\+/ { row = NR } END { print row }'; }
 ticks() { picture | grep -E '^ *-0\.[0-9] +-0\.[0-9]' | sed 's/ *$//'; }
+# the mark's side of the edge line (#) in its row: "outside" when the nearest
+# region glyph on each side is the line or none, "inside" when the inside (:)
+# is next to it; the first mark's row is read
+side() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
+    if (ch == "X" || ch == "*") { l = substr($0, 1, i - 1); r = substr($0, i + 1); gsub(/[^:#]/, "", l); gsub(/[^:#]/, "", r)
+        ll = substr(l, length(l), 1); rr = substr(r, 1, 1)
+        print (ll != ":" && rr != ":") ? "outside" : (substr($0, i - 1, 1) == ":" || substr($0, i + 1, 1) == ":") ? "inside" : "on the line"
+        exit } } }'; }
 # the line under the picture: the edge's column, the mark's, what it says
 gauge() { picture | awk '/^in [:|*X-]/ { print index($0, "|") " " (index($0, "X") ? index($0, "X") : index($0, "*")) " " $NF; exit }'; }
 prev_marks=$(marks); prev_axis=$(axis); prev_ticks=$(ticks)
@@ -35,12 +45,13 @@ echo "dt=0.005: marks $prev_marks axis row $prev_axis; under it: edge column $1,
 [ -n "$prev_marks" ] || fail "no marks on the region view"
 [ -n "$prev_ticks" ] || fail "no numbers under the picture"
 [ "$3" = 5x ] && [ "$2" -gt "$1" ] || fail "at dt=0.005 the line under the picture does not show the mark out, 5x"
+[ "$(side)" = outside ] || fail "at dt=0.005 the mark is not drawn outside the edge line (#)"
 for dt in 0.0025 0.00125 0.000625; do
     keys -
     wait_for "euler  dt=$dt " || fail "- did not halve dt to $dt"
     m=$(marks); ax=$(axis)
     set -- $(gauge)
-    echo "dt=$dt: marks $m axis row $ax; under it: edge column $1, mark column $2, $3"
+    echo "dt=$dt: marks $m axis row $ax; in the picture: $(side), edge line #; under it: edge column $1, mark column $2, $3"
     [ -n "$m" ] || fail "no marks at dt=$dt"
     [ "$m" != "$prev_marks" ] || fail "the marks did not move when dt halved to $dt ($m)"
     [ "$ax" = "$prev_axis" ] || fail "the axis moved from row $prev_axis to $ax at dt=$dt"
@@ -48,8 +59,9 @@ for dt in 0.0025 0.00125 0.000625; do
     [ "$1" = "$edge" ] || fail "the edge moved on the line under the picture at dt=$dt"
     [ "$2" -lt "$prev_pos" ] || fail "the mark did not move towards the origin on its ray at dt=$dt"
     case $dt in
-        0.000625) [ "$2" -lt "$1" ] && [ "$3" = 0.625x ] || fail "at dt=$dt the mark is not shown inside, 0.625x" ;;
-        *) [ "$2" -gt "$1" ] || fail "at dt=$dt the mark is not shown outside" ;;
+        0.000625) [ "$2" -lt "$1" ] && [ "$3" = 0.625x ] && [ "$(side)" = inside ] ||
+            fail "at dt=$dt the mark is not shown inside, 0.625x, on the shading" ;;
+        *) [ "$2" -gt "$1" ] && [ "$(side)" = outside ] || fail "at dt=$dt the mark is not shown outside, past the edge line" ;;
     esac
     prev_marks=$m prev_pos=$2
 done

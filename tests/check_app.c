@@ -10,6 +10,7 @@
 
 #include "stepwise/stepwise.h"
 #include "app/app.h"
+#include "canvas_help.h"
 #include "render/screen.h"
 
 static void app_with(sw_app *a, const char *scene, const char *method, double dt, const char *set)
@@ -207,6 +208,47 @@ START_TEST(clock_and_slow_motion)
     a.paused = 1;
     sw_app_advance(&a, 1.0, 100);
     ck_assert_int_eq(a.sims[0].steps, 200);
+    sw_app_free(&a);
+}
+END_TEST
+
+/* One rule for the run's state (issue 37): only space runs it; every key
+ * that starts the run again at t = 0 (r, + and -, a method by i or by its
+ * number, a parameter from the panel) leaves it paused, so a page's "then
+ * press space" always starts it; space pauses and runs; '.' pauses. The
+ * meter line says which, PAUSED or running. */
+START_TEST(one_rule_for_the_run)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.01, NULL);
+    static const int keys[] = { 'r', '+', '-', 'i', '3', SW_KEY_RIGHT };
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        if (keys[k] == SW_KEY_RIGHT)
+            sw_app_key(&a, 'p', 0); /* the panel: Right raises the parameter chosen */
+        a.paused = 0;
+        sw_app_advance(&a, 0.5, 100000);
+        ck_assert_double_gt(a.sims[0].t, 0);
+        sw_app_key(&a, keys[k], 0);
+        ck_assert_msg(a.paused && a.sims[0].t == 0, "key %d: t = %g, %s", keys[k], a.sims[0].t,
+                      a.paused ? "paused" : "running");
+        sw_frame fr;
+        char err[SW_ERRLEN];
+        int clipped;
+        ck_assert_int_eq(sw_frame_init(&fr, err, sizeof err), SW_OK);
+        char *text = ct_compose(&fr, &a, NULL, 80, 24, &clipped);
+        ck_assert_msg(strstr(text, "PAUSED") != NULL, "key %d: the screen does not say PAUSED:\n%s", keys[k], text);
+        free(text);
+        sw_frame_free(&fr);
+        if (keys[k] == SW_KEY_RIGHT)
+            sw_app_key(&a, SW_KEY_ESC, 0);
+        sw_app_key(&a, ' ', 0);
+        ck_assert(!a.paused);
+    }
+    sw_app_key(&a, ' ', 0);
+    ck_assert(a.paused);
+    sw_app_key(&a, ' ', 0);
+    sw_app_key(&a, '.', 0);
+    ck_assert(a.paused);
     sw_app_free(&a);
 }
 END_TEST
@@ -570,6 +612,7 @@ Suite *make_app_suite(void)
     TCase *tc = tcase_create("model");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, key_table_drives_lookup);
+    tcase_add_test(tc, one_rule_for_the_run);
     tcase_add_test(tc, switch_keeps_state);
     tcase_add_test(tc, method_label_escaped);
     tcase_add_test(tc, meter_word_agrees_with_number);

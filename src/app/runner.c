@@ -57,6 +57,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_method(a, pg->method);
         sw_app_set_dt(a, pg->dt);
         sw_app_reset(a);
+        a->paused = 1; /* a page that starts a run starts it paused, unless it says @pause off */
         a->nmeas = 0;
         a->error_ratio = NAN;
     }

@@ -428,8 +428,9 @@ static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
         fit_line(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, f, n);
     }
     int st, n = meter_fields(a, f, &st);
-    /* the run's state: PAUSED said whenever it is (a key that restarts the
-     * run keeps it); "running" only where it costs the meter nothing */
+    /* the run's state: PAUSED said whenever it is (every restart leaves
+     * it so: app.c, restart_run); "running" only where it costs the meter
+     * nothing */
     if (a->paused)
         field(f, &n, 10, "PAUSED", NULL);
     else if (a->slowmo > 1.05) {

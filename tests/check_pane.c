@@ -245,6 +245,47 @@ START_TEST(reading_mode_full_width)
 }
 END_TEST
 
+/* The reading mode never hides a run (the newcomer's "watch" pages that
+ * opened text only): on lesson 1 it carries over to page 4 ("watch a full
+ * turn"), which starts paused and says that space brings the picture
+ * back; space runs and shows the picture (the title beside it again). A
+ * page whose run goes on arrival (lesson 10, "Record a trace") opens with
+ * the picture. */
+START_TEST(reading_mode_never_hides_a_run)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/01-flow-fields.lesson", "The stability meter");
+    sw_runner *r = pg.r;
+    sw_app *a = &pg.a;
+    int col;
+    ck_assert_int_eq(sw_runner_key(r, a, 'o'), 1);
+    ck_assert(r->wide);
+    sw_runner_enter(r, a, r->page + 1); /* (past the question: n would wait for its answer) */
+    ck_assert(r->wide && a->paused);
+    ck_assert_msg(strstr(a->message, "space runs and brings the picture back") != NULL, "%s", a->message);
+    char *text = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col == 1, "not in the reading mode:\n%s", text);
+    ck_assert_msg(strstr(text, "space runs and brings") != NULL, "the screen does not say how to watch:\n%s", text);
+    free(text);
+    ck_assert_int_eq(sw_runner_key(r, a, ' '), 1);
+    ck_assert(!a->paused && !r->wide);
+    text = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col > 29, "space did not bring the picture back:"
+                  "\n%s", text);
+    free(text);
+    ct_page_close(&pg);
+
+    ct_page_open(&pg, "lessons/10-homework.lesson", "Record a trace");
+    r = pg.r;
+    a = &pg.a;
+    sw_runner_key(r, a, 'o');
+    sw_runner_enter(r, a, r->page);
+    ck_assert_msg(!a->paused && !r->wide, "a running page opened in the reading mode");
+    ck_assert_msg(strstr(a->message, "the picture again") != NULL, "%s", a->message);
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* Lesson 5, "Remedy 1": the goal t >= 0.5 is met while the student reads;
  * the text's rows stay where they were (the pane moves only with a key). */
 START_TEST(pane_still_when_a_goal_is_met)
@@ -288,6 +329,7 @@ Suite *make_pane_suite(void)
     tcase_add_test(tc, question_a_few_presses_away);
     tcase_add_test(tc, nothing_skipped_while_scrolling);
     tcase_add_test(tc, reading_mode_full_width);
+    tcase_add_test(tc, reading_mode_never_hides_a_run);
     tcase_add_test(tc, pane_still_when_a_goal_is_met);
     suite_add_tcase(s, tc);
     return s;

@@ -397,7 +397,7 @@ START_TEST(meter_word_agrees_with_number)
 {
     static const struct { double rho; int grows, slow; const char *word; int sign; } cases[] = {
         { 1 + 4e-7, 1, 0, "grows", 1 },            /* visible over a long horizon, 1.000000 at 6 digits */
-        { 1 + 4e-9, 0, 1, "grows, too slowly to see", 1 },
+        { 1 + 4e-9, 0, 1, "grows slowly", 1 },
         { 1 - 3e-8, 0, 0, "decays", -1 },
         { 0.996995, 0, 0, "decays", -1 },
         { 1.0, 0, 0, "neutral", 0 },

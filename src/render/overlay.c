@@ -277,7 +277,8 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
               "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
         { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
         { "", "growth x.../step: the largest factor by which one step scales any motion, a bound, often the "
-              "slowest motion's (1: neutral, below: decays, above: grows); wider: which mode, and the fastest's" },
+              "slowest motion's (1: neutral, below: decays, above: GROWS, or grows slowly: too slowly to see in a run); "
+              "wider: which mode, and the fastest's" },
         { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "
                         "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },

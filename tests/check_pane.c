@@ -14,6 +14,7 @@
 #include "canvas_help.h"
 #include "lesson/lesson.h"
 #include "render/screen.h"
+#include "render/text.h"
 
 static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
 
@@ -286,6 +287,37 @@ START_TEST(reading_mode_never_hides_a_run)
 }
 END_TEST
 
+/* The message under the meter is never cut (the newcomer's lesson 8 page
+ * 2, "…halve dt again. Symplectic: energy and path kept, the"): a Δt
+ * change after a run, its report led by "restarted at t = 0, paused",
+ * shows to its last word at 80x24 and 120x40. */
+START_TEST(message_shown_whole)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/08-energy-orbits.lesson", "Verlet keeps the orbit");
+    sw_app *a = &pg.a;
+    for (int s = 0; s < 2; s++) {
+        sw_runner_enter(pg.r, a, pg.r->page);
+        sw_app_key(a, '6', 1);
+        sw_app_key(a, '-', 1);
+        a->paused = 0;
+        sw_app_advance(a, 0.5, 1000000);
+        sw_app_key(a, '-', 1);
+        ck_assert_msg(strncmp(a->message, "restarted at t = 0, paused; ", 28) == 0, "%s", a->message);
+        char lines[8][SW_TEXT_LINE];
+        int n = sw_text_wrap(a->message, sizes[s][0], lines, 8);
+        ck_assert_int_ge(n, (s == 0 ? 4 : 1));
+        char *text = ct_page_screen(&pg, sizes[s][0], sizes[s][1]);
+        /* every line of the message, the last one too */
+        for (int k = 0; k < n && k < 8; k++)
+            ck_assert_msg(strstr(text, lines[k]) != NULL, "%dx%d: the message's line %d is not shown, '%s':\n%s",
+                          sizes[s][0], sizes[s][1], k + 1, lines[k], text);
+        free(text);
+    }
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* Lesson 5, "Remedy 1": the goal t >= 0.5 is met while the student reads;
  * the text's rows stay where they were (the pane moves only with a key). */
 START_TEST(pane_still_when_a_goal_is_met)
@@ -330,6 +362,7 @@ Suite *make_pane_suite(void)
     tcase_add_test(tc, nothing_skipped_while_scrolling);
     tcase_add_test(tc, reading_mode_full_width);
     tcase_add_test(tc, reading_mode_never_hides_a_run);
+    tcase_add_test(tc, message_shown_whole);
     tcase_add_test(tc, pane_still_when_a_goal_is_met);
     suite_add_tcase(s, tc);
     return s;

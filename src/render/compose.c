@@ -403,13 +403,17 @@ static void key_fields(const sw_app *a, const sw_side *side, sw_field *f, int *n
     field(f, n, 10, "q quit", NULL);
 }
 
+#define MSG_ROWS 4 /* the message's most lines under the meter */
+
 /* The status block's lines (full width), bottom of the screen; returns its rows. */
 static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
 {
-    char msg[4][SW_TEXT_LINE];
-    int nmsg = a->message[0] ? sw_text_wrap(a->message, scr->cols, msg, 3) : 0;
-    if (nmsg > 3)
-        nmsg = 3;
+    /* a message as long as a Δt change's report after a restart takes four
+     * lines at 80 columns: all of it is shown (the picture gives a row) */
+    char msg[MSG_ROWS][SW_TEXT_LINE];
+    int nmsg = a->message[0] ? sw_text_wrap(a->message, scr->cols, msg, MSG_ROWS) : 0;
+    if (nmsg > MSG_ROWS)
+        nmsg = MSG_ROWS;
     int nstat = a->compare && a->lanes && a->view == SW_VIEW_SCENE ? 1 : a->nsims;
     int rows = nstat + 1 + (nmsg ? nmsg : 1) + 1;
     if (dry)

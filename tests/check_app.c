@@ -214,14 +214,14 @@ END_TEST
 
 /* One rule for the run's state (issue 37): only space runs it; every key
  * that starts the run again at t = 0 (r, + and -, a method by i or by its
- * number, a parameter from the panel) leaves it paused, so a page's "then
+ * number, compare, a parameter from the panel) leaves it paused, so a page's "then
  * press space" always starts it; space pauses and runs; '.' pauses. The
  * meter line says which, PAUSED or running. */
 START_TEST(one_rule_for_the_run)
 {
     sw_app a;
     app_with(&a, "spring", "euler", 0.01, NULL);
-    static const int keys[] = { 'r', '+', '-', 'i', '3', SW_KEY_RIGHT };
+    static const int keys[] = { 'r', '+', '-', 'i', '3', 'c', SW_KEY_RIGHT };
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
         if (keys[k] == SW_KEY_RIGHT)
             sw_app_key(&a, 'p', 0); /* the panel: Right raises the parameter chosen */
@@ -260,6 +260,7 @@ START_TEST(compare_race)
     sw_app a;
     app_with(&a, "spring", "euler", 0.3, "c=0");
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     ck_assert_int_eq(a.nsims, 3);
     ck_assert_str_ne(a.sims[1].method->name, "euler");
     ck_assert_str_ne(a.sims[2].method->name, "euler");
@@ -375,6 +376,7 @@ START_TEST(frames_compose)
     app_with(&a, "chain", "euler", 0.2, NULL);
     a.trails = a.ghost = a.graph = 1;
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     for (int f = 0; f < 200 && !a.sims[0].blown; f++)
         sw_app_advance(&a, 1.0, 1000);
     ck_assert(a.sims[0].blown);

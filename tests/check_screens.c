@@ -177,6 +177,7 @@ START_TEST(every_scene_every_view)
         every_view(&a, sc->name);
         /* compare overlaid, then in lanes */
         sw_app_key(&a, 'c', 0);
+        sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
         sw_app_advance(&a, 0.5, 100000);
         a.lanes = 0;
         every_view(&a, sc->name);
@@ -194,6 +195,7 @@ START_TEST(blowups_and_adaptive)
     sw_app a;
     app_for(&a, sw_scene_find("spring"), "euler", 0.3);
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     for (int i = 0; i < 200 && !a.sims[0].blown; i++)
         sw_app_advance(&a, 1.0, 100000);
     ck_assert(a.sims[0].blown);

@@ -460,8 +460,10 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     }
     case SW_ACT_COMPARE:
         sw_app_set_compare(a, !a->compare, NULL, NULL);
+        a->paused = 1; /* a restart of every run, as restart_run's */
         if (a->compare && a->nsims > 1)
-            snprintf(a->message, sizeof a->message, "compare %s, %s%s%s from t = 0 (l: side by side; &: one cell)",
+            snprintf(a->message, sizeof a->message, "compare %s, %s%s%s from t = 0, paused (l: side by side; &: "
+                     "one cell)",
                      a->sims[0].method->name, a->sims[1].method->name, a->nsims > 2 ? " and " : "",
                      a->nsims > 2 ? a->sims[2].method->name : "");
         else

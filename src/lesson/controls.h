@@ -81,7 +81,7 @@ enum {
     X(SLOWER, SPEED, PLAY, "slower", SW_KEYS('['), "[  ]", "slower / faster simulated time") \
     X(FASTER, SPEED, PLAY, "faster", SW_KEYS(']'), NULL, NULL) \
     X(COMPARE, COMPARE, PLAY, "compare", SW_KEYS('c'), \
-      "c", "compare: the same scene under two more integrators") \
+      "c", "compare: the same scene under two more integrators (all from t = 0, paused)") \
     X(GHOST, GHOST, PLAY, "ghost", SW_KEYS('g'), \
       "g", "ghost: the exact solution (or a reference run) beside yours") \
     X(TRAILS, TRAILS, PLAY, "trails", SW_KEYS('t'), "t", "trails") \

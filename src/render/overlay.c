@@ -248,12 +248,18 @@ static void pick_help(const sw_control *c, int width, char *keys, size_t keys_le
             n = i;
             break;
         }
-    snprintf(keys, keys_len, n <= 9 ? "1-%d" : "1-9  0", n);
+    /* every key in the column, run together past 0 ("1-9 0 !@#$%^"), or
+     * cut with "+" where they do not fit: never left out unsaid (the help
+     * text beside them names every one) */
+    snprintf(keys, keys_len, n <= 9 ? "1-%d" : "1-9 0", n);
     for (int i = 10; i < n; i++) {
         size_t k = strlen(keys);
-        if ((int)k + 2 + (i == 10) > width || k + 3 > keys_len)
+        int last = i == n - 1;
+        if ((int)k + 1 + (i == 10) + (last ? 0 : 1) > width || k + 4 > keys_len) {
+            snprintf(keys + k, keys_len - k, "+");
             break;
-        snprintf(keys + k, keys_len - k, "%s%c", i == 10 ? "  " : " ", c->keys[i]);
+        }
+        snprintf(keys + k, keys_len - k, "%s%c", i == 10 ? " " : "", c->keys[i]);
     }
     used = snprintf(help, help_len, "pick an integrator:");
     for (int i = 0; i < n && used > 0 && (size_t)used < help_len; i++)

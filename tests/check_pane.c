@@ -261,6 +261,10 @@ START_TEST(reading_mode_never_hides_a_run)
     int col;
     ck_assert_int_eq(sw_runner_key(r, a, 'o'), 1);
     ck_assert(r->wide);
+    /* the folded question's reminder does not offer the mode it is in */
+    char *meter = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(strstr(meter, "question below") && !strstr(meter, "o: wide"), "%s", meter);
+    free(meter);
     sw_runner_enter(r, a, r->page + 1); /* (past the question: n would wait for its answer) */
     ck_assert(r->wide && a->paused);
     ck_assert_msg(strstr(a->message, "space runs and brings the picture back") != NULL, "%s", a->message);

@@ -545,7 +545,7 @@ static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int
         draw_lines(side, scr, row + window, col, width, side->nlines - foot, kept);
         static const char *const stub[] = { "(a question below: Down; o: wide)", "(a question below: Down)",
                                             "(question: Down)" };
-        int k = 0;
+        int k = side->full; /* (in the reading mode already: no "o: wide") */
         while (k < 2 && sw_text_cells(stub[k]) > width)
             k++;
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_TITLE, stub[k]);

@@ -250,7 +250,7 @@ END_TEST
  * opened text only): on lesson 1 it carries over to page 4 ("watch a full
  * turn"), which starts paused and says that space brings the picture
  * back; space runs and shows the picture (the title beside it again). A
- * page whose run goes on arrival (lesson 10, "Record a trace") opens with
+ * page whose run goes on arrival (lesson 9, "Accepted and rejected steps") opens with
  * the picture. */
 START_TEST(reading_mode_never_hides_a_run)
 {
@@ -280,7 +280,7 @@ START_TEST(reading_mode_never_hides_a_run)
     free(text);
     ct_page_close(&pg);
 
-    ct_page_open(&pg, "lessons/10-homework.lesson", "Record a trace");
+    ct_page_open(&pg, "lessons/09-adaptive.lesson", "Accepted and rejected steps");
     r = pg.r;
     a = &pg.a;
     sw_runner_key(r, a, 'o');

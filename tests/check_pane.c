@@ -291,6 +291,25 @@ START_TEST(reading_mode_never_hides_a_run)
 }
 END_TEST
 
+/* A page that starts its own run starts it where its text assumes: paused,
+ * at speed 1 (lesson 5's "Remedy 1" runs slowed sixteen times; "Remedy 2",
+ * which waits for t >= 1, no longer inherits that: 16 s of waiting). */
+START_TEST(page_run_starts_paused_at_speed_one)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/05-springs.lesson", "Remedy 1: heavy damping");
+    sw_app *a = &pg.a;
+    ck_assert_double_eq(a->speed, 0.0625);
+    a->paused = 0;
+    sw_app_advance(a, 0.5, 1000000);
+    sw_runner_enter(pg.r, a, pg.r->page + 1);
+    ck_assert_str_eq(pg.r->lesson.pages[pg.r->page].title, "Remedy 2: tiny time steps");
+    ck_assert_msg(a->paused && a->speed == 1 && a->sims[0].t == 0, "paused %d, speed %g, t %g", a->paused, a->speed,
+                  a->sims[0].t);
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* The message under the meter is never cut (the newcomer's lesson 8 page
  * 2, "…halve dt again. Symplectic: energy and path kept, the"): a Δt
  * change after a run, its report led by "restarted at t = 0, paused",
@@ -367,6 +386,7 @@ Suite *make_pane_suite(void)
     tcase_add_test(tc, reading_mode_full_width);
     tcase_add_test(tc, reading_mode_never_hides_a_run);
     tcase_add_test(tc, message_shown_whole);
+    tcase_add_test(tc, page_run_starts_paused_at_speed_one);
     tcase_add_test(tc, pane_still_when_a_goal_is_met);
     suite_add_tcase(s, tc);
     return s;

@@ -57,7 +57,11 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_method(a, pg->method);
         sw_app_set_dt(a, pg->dt);
         sw_app_reset(a);
-        a->paused = 1; /* a page that starts a run starts it paused, unless it says @pause off */
+        /* a page that starts a run starts it paused and at speed 1, unless
+         * it says @pause off or @speed (a slowed page before it no longer
+         * slows this one's wait) */
+        a->paused = 1;
+        a->speed = 1;
         a->nmeas = 0;
         a->error_ratio = NAN;
     }

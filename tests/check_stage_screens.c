@@ -94,16 +94,22 @@ static void walk(sw_app *a, sw_runner *r, const char *method, int want)
     }
 }
 
-START_TEST(stage_view_in_play)
+/* The vortex with one particle under rk4 at step dt. */
+static void one_particle_vortex(sw_app *a, double dt)
 {
-    sw_app a;
     char err[SW_ERRLEN];
     const sw_scene *sc = sw_scene_find("vortex");
     double p[SW_MAX_PARAMS];
     for (int i = 0; i < sc->nparams; i++)
         p[i] = sc->params[i].def;
     p[sw_scene_param_index(sc, "n")] = 1;
-    ck_assert_msg(sw_app_init(&a, sc, p, sw_integrator_find("rk4"), 1.0, err, sizeof err) == SW_OK, "%s", err);
+    ck_assert_msg(sw_app_init(a, sc, p, sw_integrator_find("rk4"), dt, err, sizeof err) == SW_OK, "%s", err);
+}
+
+START_TEST(stage_view_in_play)
+{
+    sw_app a;
+    one_particle_vortex(&a, 1.0);
     walk(&a, NULL, "rk4", 4);
     walk(&a, NULL, "midpoint", 2);
     /* Esc closes; a method without stages says why in one line, and nothing opens */
@@ -124,13 +130,7 @@ END_TEST
 START_TEST(stage_view_at_a_small_step)
 {
     sw_app a;
-    char err[SW_ERRLEN];
-    const sw_scene *sc = sw_scene_find("vortex");
-    double p[SW_MAX_PARAMS];
-    for (int i = 0; i < sc->nparams; i++)
-        p[i] = sc->params[i].def;
-    p[sw_scene_param_index(sc, "n")] = 1;
-    ck_assert_msg(sw_app_init(&a, sc, p, sw_integrator_find("rk4"), 0.05, err, sizeof err) == SW_OK, "%s", err);
+    one_particle_vortex(&a, 0.05);
     walk(&a, NULL, "rk4", 4);
     sw_app_free(&a);
 }

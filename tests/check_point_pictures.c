@@ -393,6 +393,27 @@ START_TEST(lanes_readable_or_refused)
 }
 END_TEST
 
+/* Lesson 3, "Euler on a spring", the energy graph at 80x24: its axes are
+ * linear, and its title says so in the picture's 40 columns (the
+ * newcomer: "is it logarithmic?"). */
+START_TEST(graph_says_linear)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "Euler on a spring");
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'e', 1);
+    ap->paused = 0;
+    for (int i = 0; i < 200 && ap->sims[0].t < 3; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
+    char *text = ct_page_screen(&pg, 80, 24);
+    const char *title = strstr(text, "energy drift (%)");
+    ck_assert_msg(title && strstr(title, "(linear") && strstr(title, "(linear") < strchr(title, '\n'),
+                  "the graph's title does not say its axes are linear:\n%s", text);
+    free(text);
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* Lesson 3's three runs at t = 10 with the energy graph at 80x24: Euler's
  * +557 % no longer squeezes symplectic Euler (a few %) and backward Euler
  * (-86 %) into one row of '*': the scale is theirs, Euler runs past the
@@ -765,6 +786,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, region_scale_stays_when_marks_leave);
     tcase_add_test(tc, region_edge_on_ray);
     tcase_add_test(tc, region_gauge_line);
+    tcase_add_test(tc, graph_says_linear);
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, phase_legend_matches_picture);
     tcase_add_test(tc, phase_axes_named);

@@ -132,7 +132,7 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     /* both axes are linear; the dashed row, when the values straddle it, is 0 */
     int zero_line = vmin < 0 && vmax > 0;
     snprintf(title[2].full, sizeof title[2].full, "%s", zero_line ? "(linear axes, --- is 0)" : "(linear axes)");
-    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "");
+    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "(linear)");
     char line[SW_TEXT_LINE];
     sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
     sw_text_fit(line, sizeof line, width, title, off >= 0 ? 4 : 3, " ");

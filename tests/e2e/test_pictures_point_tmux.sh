@@ -3,7 +3,8 @@
 # them: on lesson 5 page 3 the stability region's marks move at every
 # halving of dt and the axes stay put, each drawn on its side of the
 # region's edge line (X past it, * on the shading), as the line under the
-# picture says; on lesson 6 page 4 the
+# picture says; on lesson 6 page 5 RK4's marks climb the imaginary axis
+# and pass its edge line only at dt = 0.04, drawn X there; on lesson 6 page 4 the
 # work-precision plot shows Euler (its marker, or '&' with the pair named)
 # and RK4's point of the page's table (about 500 evaluations, error 3e-7)
 # beside the page's text, before and after the answer; the projectile's
@@ -67,6 +68,34 @@ for dt in 0.0025 0.00125 0.000625; do
 done
 keys q
 check_terminal_sane region
+
+# 1b. Lesson 6 page 5 (RK4's region, undamped: the marks on the imaginary
+#     axis): doubling dt from 0.005 to 0.04 the marks climb the axis; the
+#     edge line (#) crosses it at 2.83i; at 0.02 the upper mark is at or
+#     below the line's top row there, at 0.04 above it, drawn X.
+printf '06-runge-kutta.lesson 4\n' > "$WORK/state/stepwise/progress"
+type_cmd "LC_ALL=C XDG_STATE_HOME=$WORK/state $STEPWISE lesson 6"
+wait_for "RK4's region" || fail "lesson 6 did not open on RK4's region"
+keys s
+wait_for 'scale \+-[0-9.]+ fixed' || fail "s did not show RK4's region"
+# "MARKROW LINEROW GLYPH": the upper mark's row and glyph, the top row of
+# the edge line in the three columns round the mark's
+rk4_rows() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { line[NR] = $0
+    if (!mr) for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1); if (ch == "X" || ch == "*") { mr = NR; mc = i; g = ch == "X" ? "X" : "star"; break } } }
+    END { for (r = 2; r in line; r++) { s = substr(line[r], mc - 1, 3); if (index(s, "#")) { print mr " " r " " g; exit } } }'; }
+for dt in 0.01 0.02 0.04; do
+    keys +
+    wait_for "rk4  dt=$dt " || fail "+ did not double dt to $dt"
+    set -- $(rk4_rows)
+    echo "rk4 at dt=$dt: upper mark row $1 ($3), edge line's top row on the axis $2"
+    [ -n "${3:-}" ] || fail "no mark or no edge line on RK4's region at dt=$dt"
+    case $dt in
+        0.04) [ "$1" -lt "$2" ] && [ "$3" = X ] || fail "at dt=0.04 the mark is not drawn past the edge line, X" ;;
+        *) [ "$1" -ge "$2" ] && [ "$3" = star ] || fail "at dt=$dt the mark is not drawn inside the edge line" ;;
+    esac
+done
+keys q
+check_terminal_sane region-rk4
 
 # 2. Lesson 6 page 4: the plot in the picture's place, the page's text beside it.
 printf '06-runge-kutta.lesson 3\n' > "$WORK/state/stepwise/progress"

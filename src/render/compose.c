@@ -310,7 +310,7 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         snprintf(buf, sizeof buf, "dt=%g", a->dt);
         field(fl, &n, 8, buf, NULL);
     }
-    field(fl, &n, 6, "(shaded: growth per step <= 1)", "(shaded: stable)");
+    field(fl, &n, 6, "(shaded: growth per step <= 1; its edge a line)", "(shaded: stable)");
     fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
     /* under the picture: the real axis's numbers, the worst mark against
      * its edge along its ray, and the legend */

@@ -10,6 +10,7 @@
 
 #include "stepwise/stepwise.h"
 #include "app/app.h"
+#include "canvas_help.h"
 #include "render/screen.h"
 
 static void app_with(sw_app *a, const char *scene, const char *method, double dt, const char *set)
@@ -211,6 +212,47 @@ START_TEST(clock_and_slow_motion)
 }
 END_TEST
 
+/* One rule for the run's state (issue 37): only space runs it; every key
+ * that starts the run again at t = 0 (r, + and -, a method by i or by its
+ * number, compare, a parameter from the panel) leaves it paused, so a page's "then
+ * press space" always starts it; space pauses and runs; '.' pauses. The
+ * meter line says which, PAUSED or running. */
+START_TEST(one_rule_for_the_run)
+{
+    sw_app a;
+    app_with(&a, "spring", "euler", 0.01, NULL);
+    static const int keys[] = { 'r', '+', '-', 'i', '3', 'c', SW_KEY_RIGHT };
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        if (keys[k] == SW_KEY_RIGHT)
+            sw_app_key(&a, 'p', 0); /* the panel: Right raises the parameter chosen */
+        a.paused = 0;
+        sw_app_advance(&a, 0.5, 100000);
+        ck_assert_double_gt(a.sims[0].t, 0);
+        sw_app_key(&a, keys[k], 0);
+        ck_assert_msg(a.paused && a.sims[0].t == 0, "key %d: t = %g, %s", keys[k], a.sims[0].t,
+                      a.paused ? "paused" : "running");
+        sw_frame fr;
+        char err[SW_ERRLEN];
+        int clipped;
+        ck_assert_int_eq(sw_frame_init(&fr, err, sizeof err), SW_OK);
+        char *text = ct_compose(&fr, &a, NULL, 80, 24, &clipped);
+        ck_assert_msg(strstr(text, "PAUSED") != NULL, "key %d: the screen does not say PAUSED:\n%s", keys[k], text);
+        free(text);
+        sw_frame_free(&fr);
+        if (keys[k] == SW_KEY_RIGHT)
+            sw_app_key(&a, SW_KEY_ESC, 0);
+        sw_app_key(&a, ' ', 0);
+        ck_assert(!a.paused);
+    }
+    sw_app_key(&a, ' ', 0);
+    ck_assert(a.paused);
+    sw_app_key(&a, ' ', 0);
+    sw_app_key(&a, '.', 0);
+    ck_assert(a.paused);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* Compare runs three methods from the same state; a blow-up freezes only
  * the one that blew up. */
 START_TEST(compare_race)
@@ -218,6 +260,7 @@ START_TEST(compare_race)
     sw_app a;
     app_with(&a, "spring", "euler", 0.3, "c=0");
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     ck_assert_int_eq(a.nsims, 3);
     ck_assert_str_ne(a.sims[1].method->name, "euler");
     ck_assert_str_ne(a.sims[2].method->name, "euler");
@@ -333,6 +376,7 @@ START_TEST(frames_compose)
     app_with(&a, "chain", "euler", 0.2, NULL);
     a.trails = a.ghost = a.graph = 1;
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     for (int f = 0; f < 200 && !a.sims[0].blown; f++)
         sw_app_advance(&a, 1.0, 1000);
     ck_assert(a.sims[0].blown);
@@ -355,7 +399,7 @@ START_TEST(meter_word_agrees_with_number)
 {
     static const struct { double rho; int grows, slow; const char *word; int sign; } cases[] = {
         { 1 + 4e-7, 1, 0, "grows", 1 },            /* visible over a long horizon, 1.000000 at 6 digits */
-        { 1 + 4e-9, 0, 1, "grows, too slowly to see", 1 },
+        { 1 + 4e-9, 0, 1, "grows slowly", 1 },
         { 1 - 3e-8, 0, 0, "decays", -1 },
         { 0.996995, 0, 0, "decays", -1 },
         { 1.0, 0, 0, "neutral", 0 },
@@ -600,6 +644,7 @@ Suite *make_app_suite(void)
     TCase *tc = tcase_create("model");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, key_table_drives_lookup);
+    tcase_add_test(tc, one_rule_for_the_run);
     tcase_add_test(tc, switch_keeps_state);
     tcase_add_test(tc, method_label_escaped);
     tcase_add_test(tc, meter_word_agrees_with_number);

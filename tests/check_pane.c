@@ -14,6 +14,7 @@
 #include "canvas_help.h"
 #include "lesson/lesson.h"
 #include "render/screen.h"
+#include "render/text.h"
 
 static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
 
@@ -245,6 +246,101 @@ START_TEST(reading_mode_full_width)
 }
 END_TEST
 
+/* The reading mode never hides a run (the newcomer's "watch" pages that
+ * opened text only): on lesson 1 it carries over to page 4 ("watch a full
+ * turn"), which starts paused and says that space brings the picture
+ * back; space runs and shows the picture (the title beside it again). A
+ * page whose run goes on arrival (lesson 9, "Accepted and rejected steps") opens with
+ * the picture. */
+START_TEST(reading_mode_never_hides_a_run)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/01-flow-fields.lesson", "The stability meter");
+    sw_runner *r = pg.r;
+    sw_app *a = &pg.a;
+    int col;
+    ck_assert_int_eq(sw_runner_key(r, a, 'o'), 1);
+    ck_assert(r->wide);
+    /* the folded question's reminder does not offer the mode it is in */
+    char *meter = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(strstr(meter, "question below") && !strstr(meter, "o: wide"), "%s", meter);
+    free(meter);
+    sw_runner_enter(r, a, r->page + 1); /* (past the question: n would wait for its answer) */
+    ck_assert(r->wide && a->paused);
+    ck_assert_msg(strstr(a->message, "space runs and brings the picture back") != NULL, "%s", a->message);
+    char *text = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col == 1, "not in the reading mode:\n%s", text);
+    ck_assert_msg(strstr(text, "space runs and brings") != NULL, "the screen does not say how to watch:\n%s", text);
+    free(text);
+    ck_assert_int_eq(sw_runner_key(r, a, ' '), 1);
+    ck_assert(!a->paused && !r->wide);
+    text = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(find_row(text, r->lesson.title, &col) == 0 && col > 29, "space did not bring the picture back:"
+                  "\n%s", text);
+    free(text);
+    ct_page_close(&pg);
+
+    ct_page_open(&pg, "lessons/09-adaptive.lesson", "Accepted and rejected steps");
+    r = pg.r;
+    a = &pg.a;
+    sw_runner_key(r, a, 'o');
+    sw_runner_enter(r, a, r->page);
+    ck_assert_msg(!a->paused && !r->wide, "a running page opened in the reading mode");
+    ck_assert_msg(strstr(a->message, "the picture again") != NULL, "%s", a->message);
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* A page that starts its own run starts it where its text assumes: paused,
+ * at speed 1 (lesson 5's "Remedy 1" runs slowed sixteen times; "Remedy 2",
+ * which waits for t >= 1, no longer inherits that: 16 s of waiting). */
+START_TEST(page_run_starts_paused_at_speed_one)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/05-springs.lesson", "Remedy 1: heavy damping");
+    sw_app *a = &pg.a;
+    ck_assert_double_eq(a->speed, 0.0625);
+    a->paused = 0;
+    sw_app_advance(a, 0.5, 1000000);
+    sw_runner_enter(pg.r, a, pg.r->page + 1);
+    ck_assert_str_eq(pg.r->lesson.pages[pg.r->page].title, "Remedy 2: tiny time steps");
+    ck_assert_msg(a->paused && a->speed == 1 && a->sims[0].t == 0, "paused %d, speed %g, t %g", a->paused, a->speed,
+                  a->sims[0].t);
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* The message under the meter is never cut (the newcomer's lesson 8 page
+ * 2, "…halve dt again. Symplectic: energy and path kept, the"): a Δt
+ * change after a run, its report led by "restarted at t = 0, paused",
+ * shows to its last word at 80x24 and 120x40. */
+START_TEST(message_shown_whole)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/08-energy-orbits.lesson", "Verlet keeps the orbit");
+    sw_app *a = &pg.a;
+    for (int s = 0; s < 2; s++) {
+        sw_runner_enter(pg.r, a, pg.r->page);
+        sw_app_key(a, '6', 1);
+        sw_app_key(a, '-', 1);
+        a->paused = 0;
+        sw_app_advance(a, 0.5, 1000000);
+        sw_app_key(a, '-', 1);
+        ck_assert_msg(strncmp(a->message, "restarted at t = 0, paused; ", 28) == 0, "%s", a->message);
+        char lines[8][SW_TEXT_LINE];
+        int n = sw_text_wrap(a->message, sizes[s][0], lines, 8);
+        ck_assert_int_ge(n, (s == 0 ? 4 : 1));
+        char *text = ct_page_screen(&pg, sizes[s][0], sizes[s][1]);
+        /* every line of the message, the last one too */
+        for (int k = 0; k < n && k < 8; k++)
+            ck_assert_msg(strstr(text, lines[k]) != NULL, "%dx%d: the message's line %d is not shown, '%s':\n%s",
+                          sizes[s][0], sizes[s][1], k + 1, lines[k], text);
+        free(text);
+    }
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* Lesson 5, "Remedy 1": the goal t >= 0.5 is met while the student reads;
  * the text's rows stay where they were (the pane moves only with a key). */
 START_TEST(pane_still_when_a_goal_is_met)
@@ -288,6 +384,9 @@ Suite *make_pane_suite(void)
     tcase_add_test(tc, question_a_few_presses_away);
     tcase_add_test(tc, nothing_skipped_while_scrolling);
     tcase_add_test(tc, reading_mode_full_width);
+    tcase_add_test(tc, reading_mode_never_hides_a_run);
+    tcase_add_test(tc, message_shown_whole);
+    tcase_add_test(tc, page_run_starts_paused_at_speed_one);
     tcase_add_test(tc, pane_still_when_a_goal_is_met);
     suite_add_tcase(s, tc);
     return s;

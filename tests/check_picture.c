@@ -213,6 +213,7 @@ START_TEST(compare_restarts_together)
         sw_app_apply(&a, SW_ACT_STEP, 1);
     ck_assert_double_gt(fabs(sw_sim_energy_drift(&a.sims[0])), 1e-3);
     sw_app_key(&a, 'c', 0);
+    sw_app_key(&a, ' ', 0); /* (compare restarts the runs paused) */
     ck_assert_int_eq(a.nsims, 3);
     for (int i = 0; i < a.nsims; i++) {
         ck_assert_double_eq(a.sims[i].t, 0);

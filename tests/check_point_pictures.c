@@ -117,6 +117,32 @@ START_TEST(region_gauge_line)
 }
 END_TEST
 
+/* What a student reads beside mark j in its row of the region drawn in
+ * characters (':' inside, SW_REGION_EDGE the edge line): looking left and
+ * right from the mark, past blanks, axes and labels, the first glyph of
+ * the region each way (0 at the picture's border). A mark that grows must
+ * meet the edge line or nothing on both sides, never the inside; one that
+ * does not must meet the region (inside or its edge line) on one side at
+ * least (it may sit on the line, which is inside). */
+static void assert_mark_side(const sw_canvas *c, const marks *m, int j, double dt, const char *text)
+{
+    uint32_t mark = sw_canvas_codepoint(c, m->col[j], m->row[j]), seen[2] = { 0, 0 };
+    for (int d = 0; d < 2; d++)
+        for (int col = m->col[j] + (d ? 1 : -1); col >= 0 && col < c->cols && !seen[d]; col += d ? 1 : -1) {
+            uint32_t g = sw_canvas_codepoint(c, col, m->row[j]);
+            if (g == ':' || g == SW_REGION_EDGE)
+                seen[d] = g;
+        }
+    for (int d = 0; d < 2; d++)
+        if (mark == 'X')
+            ck_assert_msg(seen[d] != ':', "dt %g: the growing mark in row %d, column %d meets the inside to its %s "
+                          "with no edge line between:\n%s", dt, m->row[j], m->col[j], d ? "right" : "left", text);
+        else
+            ck_assert_msg(seen[d] == ':' || seen[d] == SW_REGION_EDGE || seen[!d] == ':' || seen[!d] == SW_REGION_EDGE,
+                          "dt %g: the mark inside in row %d, column %d has no region on either side:\n%s", dt,
+                          m->row[j], m->col[j], text);
+}
+
 /* The screen's rows from the region's title down (the picture's columns). */
 static int row_of(const char *text, const char *needle)
 {
@@ -169,6 +195,15 @@ START_TEST(region_marks_move_on_lesson5)
         char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
         marks m = find_marks(&pg.f.canvas);
         ck_assert_msg(m.n == 2, "dt %g: %d marks, not the mode's two:\n%s", ap->dt, m.n, text);
+        for (int j = 0; j < m.n; j++) {
+            assert_mark_side(&pg.f.canvas, &m, j, ap->dt, text);
+            ck_assert_msg(sw_canvas_codepoint(&pg.f.canvas, m.col[j], m.row[j]) == (k < 3 ? 'X' : '*'),
+                          "dt %g: mark %d is not drawn %s:\n%s", ap->dt, j, k < 3 ? "out (X)" : "in (*)", text);
+            /* just inside (0.625x): on the inside's side of the line, the inside next to it */
+            if (k == 3)
+                ck_assert_msg(sw_canvas_codepoint(&pg.f.canvas, m.col[j] - 1, m.row[j]) == ':',
+                              "dt %g: the mark just inside is not drawn on the shading:\n%s", ap->dt, text);
+        }
         ck_assert_msg(strstr(text, "scale +-0.62 fixed") != NULL, "dt %g: the scale is not said:\n%s", ap->dt, text);
         assert_labels_clear(&pg.f.canvas, text);
         if (k == 0)
@@ -209,10 +244,12 @@ START_TEST(region_marks_move_on_lesson5)
 END_TEST
 
 /* Lesson 6, "RK4's region": the view opens on the whole region (the marks
- * at ±0.5i and where their ray leaves it, 2.83i); doubling Δt (0.005 ->
- * 0.04) moves the marks, the scale stays put (no rescale by itself), and
- * at 0.04 the marks, past the view, are arrows at its edge while the line
- * under the picture says they are out (4 / 2.83 = 1.41x). */
+ * at ±0.5i and where their ray leaves it, 2.83i, and where a doubling past
+ * it puts them); doubling Δt (0.005 -> 0.04) moves the marks, the scale
+ * stays put (no rescale by itself), and at 0.04 the marks are on the
+ * picture, past the edge line (farther from the real axis than the line's
+ * cell on the imaginary axis, nothing of the region beside them), while
+ * the line under the picture says they are out (4 / 2.83 = 1.41x). */
 START_TEST(region_scale_stays_when_marks_leave)
 {
     ct_page pg;
@@ -232,13 +269,26 @@ START_TEST(region_scale_stays_when_marks_leave)
             ck_assert_msg(strstr(ticks0, "-2") != NULL && strstr(ticks0, "2") != NULL, "%s", text);
         }
         ck_assert_msg(strcmp(ticks0, pg.f.region.ticks) == 0, "dt %g: the scale changed by itself:\n%s", ap->dt, text);
+        ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", ap->dt, m.n, text);
+        for (int j = 0; j < m.n; j++)
+            assert_mark_side(&pg.f.canvas, &m, j, ap->dt, text);
+        /* the edge line's farthest cell up the imaginary axis's column */
+        int line_row = -1;
+        for (int row = 0; row < m.axis_row && line_row < 0; row++)
+            for (int col = m.axis_col - 1; col <= m.axis_col + 1; col++)
+                if (sw_canvas_codepoint(&pg.f.canvas, col, row) == SW_REGION_EDGE)
+                    line_row = row;
+        ck_assert_msg(line_row >= 0, "dt %g: no edge line crosses the imaginary axis:\n%s", ap->dt, text);
+        int top = m.row[0] < m.row[1] ? 0 : 1;
         if (k < 3)
-            ck_assert_msg(m.n == 2, "dt %g: %d marks drawn, not 2:\n%s", ap->dt, m.n, text);
+            ck_assert_msg(m.row[top] >= line_row, "dt %g: the mark inside is drawn above the edge line:\n%s",
+                          ap->dt, text);
         else {
             ck_assert_msg(strstr(pg.f.region.gauge, "X") && strstr(pg.f.region.gauge, " 1.41x"),
                           "dt %g: the line under the picture does not say out, 1.41x:\n%s", ap->dt, text);
-            ck_assert_msg(strchr(text, '^') && strchr(text, 'v'), "dt %g: the marks past the view have no arrows:"
-                          "\n%s", ap->dt, text);
+            ck_assert_msg(m.row[top] < line_row && sw_canvas_codepoint(&pg.f.canvas, m.col[top], m.row[top]) == 'X',
+                          "dt %g: the mark out is not drawn X past the edge line (row %d):\n%s", ap->dt, line_row,
+                          text);
         }
         free(text);
         sw_app_key(ap, '+', 1);
@@ -338,6 +388,27 @@ START_TEST(lanes_readable_or_refused)
     text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, SW_MIN_COLS), SW_MIN_COLS, SW_MIN_ROWS, &clipped);
     ck_assert_msg(strstr(text, "x symplectic-euler") || strstr(text, "lanes"), "at %dx%d the lanes are neither "
                   "readable nor refused:\n%s", SW_MIN_COLS, SW_MIN_ROWS, text);
+    free(text);
+    ct_page_close(&pg);
+}
+END_TEST
+
+/* Lesson 3, "Euler on a spring", the energy graph at 80x24: its axes are
+ * linear, and its title says so in the picture's 40 columns (the
+ * newcomer: "is it logarithmic?"). */
+START_TEST(graph_says_linear)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/03-particles-with-mass.lesson", "Euler on a spring");
+    sw_app *ap = &pg.a;
+    sw_app_key(ap, 'e', 1);
+    ap->paused = 0;
+    for (int i = 0; i < 200 && ap->sims[0].t < 3; i++)
+        sw_app_advance(ap, 0.05 / ap->speed, 1000000);
+    char *text = ct_page_screen(&pg, 80, 24);
+    const char *title = strstr(text, "energy drift (%)");
+    ck_assert_msg(title && strstr(title, "(linear") && strstr(title, "(linear") < strchr(title, '\n'),
+                  "the graph's title does not say its axes are linear:\n%s", text);
     free(text);
     ct_page_close(&pg);
 }
@@ -716,6 +787,7 @@ Suite *make_point_pictures_suite(void)
     tcase_add_test(tc, region_scale_stays_when_marks_leave);
     tcase_add_test(tc, region_edge_on_ray);
     tcase_add_test(tc, region_gauge_line);
+    tcase_add_test(tc, graph_says_linear);
     tcase_add_test(tc, region_without_modes_says_why);
     tcase_add_test(tc, phase_legend_matches_picture);
     tcase_add_test(tc, phase_axes_named);

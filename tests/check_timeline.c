@@ -316,6 +316,37 @@ START_TEST(record_to_stop_time)
 }
 END_TEST
 
+/* R names no path: the trace goes to the directory stepwise started in,
+ * and the messages say which, by its absolute name, as the recording
+ * starts and when it is written (the newcomer's "R wrote into my
+ * worktree without saying so"). */
+START_TEST(record_says_where)
+{
+    char dir[] = "/tmp/sw-timeline-XXXXXX", here[512];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    ck_assert_ptr_nonnull(getcwd(here, sizeof here));
+    ck_assert_int_eq(chdir(dir), 0);
+    char real[512];
+    ck_assert_ptr_nonnull(getcwd(real, sizeof real)); /* (the directory's own name, links resolved) */
+    sw_app a;
+    app_on(&a, "spring", "euler", 0.03);
+    sw_app_record_begin(&a, NULL);
+    char in[600];
+    snprintf(in, sizeof in, " in %s (the directory stepwise started in)", real);
+    ck_assert_msg(strstr(a.message, in) != NULL && strstr(a.message, a.record_path) != NULL, "%s", a.message);
+    char name[sizeof a.record_path];
+    snprintf(name, sizeof name, "%s", a.record_path);
+    sw_app_set_until(&a, 0.3);
+    run_frames(&a);
+    ck_assert_msg(a.recorded && strstr(a.message, in) != NULL, "%s", a.message);
+    ck_assert_int_eq(access(name, R_OK), 0);
+    sw_app_free(&a);
+    unlink(name);
+    ck_assert_int_eq(chdir(here), 0);
+    rmdir(dir);
+}
+END_TEST
+
 /* A run that blew up steps back to its last finite state, and on from
  * there blows up at the same step again. */
 START_TEST(rewind_from_blow_up)
@@ -557,6 +588,7 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, rewind_follows_and_bounds);
     tcase_add_test(tc, lesson_page_until);
     tcase_add_test(tc, record_to_stop_time);
+    tcase_add_test(tc, record_says_where);
     tcase_add_test(tc, rewind_from_blow_up);
     tcase_add_test(tc, rewind_checkpoints_bit_for_bit);
     tcase_add_test(tc, rewind_memory_within_budget);

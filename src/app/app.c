@@ -316,14 +316,18 @@ void sw_app_reset(sw_app *a)
 
 /* A key changed dt or the method mid-run: the run starts again at t = 0,
  * so what is on screen (err, energy, the picture) is this dt's and this
- * method's alone, never an error carried over from the steps before. */
+ * method's alone, never an error carried over from the steps before.
+ * The one rule for the run's state: only space runs it; every restart
+ * (this, r, a parameter) leaves it paused, so "then press space" always
+ * starts it, and the meter line says PAUSED. */
 static void restart_run(sw_app *a)
 {
+    a->paused = 1;
     if (!(a->sims[0].t > 0))
         return;
     sw_app_reset(a);
     /* first, so that a long message cut at the screen's third line keeps it */
-    static const char lead[] = "restarted at t = 0; ";
+    static const char lead[] = "restarted at t = 0, paused; ";
     char said[sizeof a->message];
     size_t keep = strlen(a->message), room = sizeof a->message - sizeof lead;
     keep = keep < room ? keep : room;
@@ -405,10 +409,11 @@ static void change_param(sw_app *a, int dir)
     char err[SW_ERRLEN];
     memcpy(p, a->p, sizeof p);
     p[a->param_sel] = nv;
+    a->paused = 1; /* a restart, as every other (restart_run) */
     if (sw_app_set_scene(a, a->scene, p, err, sizeof err) != SW_OK)
         snprintf(a->message, sizeof a->message, "%s", err);
     else
-        snprintf(a->message, sizeof a->message, "%s = %g %s (restarted)", pd->name, nv, pd->unit);
+        snprintf(a->message, sizeof a->message, "%s = %g %s (restarted, paused: space runs)", pd->name, nv, pd->unit);
 }
 
 int sw_app_apply(sw_app *a, sw_action act, int arg)
@@ -482,7 +487,8 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         return sw_app_step_back(a, act == SW_ACT_BACK ? 1 : SW_APP_BACK_MANY);
     case SW_ACT_RESET:
         sw_app_reset(a);
-        snprintf(a->message, sizeof a->message, "reset to t = 0");
+        a->paused = 1;
+        snprintf(a->message, sizeof a->message, "reset to t = 0, paused (space runs)");
         return 1;
     case SW_ACT_SLOWER:
     case SW_ACT_FASTER: {
@@ -493,8 +499,10 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     }
     case SW_ACT_COMPARE:
         sw_app_set_compare(a, !a->compare, NULL, NULL);
+        a->paused = 1; /* a restart of every run, as restart_run's */
         if (a->compare && a->nsims > 1)
-            snprintf(a->message, sizeof a->message, "compare %s, %s%s%s from t = 0 (l: side by side; &: one cell)",
+            snprintf(a->message, sizeof a->message, "compare %s, %s%s%s from t = 0, paused (l: side by side; &: "
+                     "one cell)",
                      a->sims[0].method->name, a->sims[1].method->name, a->nsims > 2 ? " and " : "",
                      a->nsims > 2 ? a->sims[2].method->name : "");
         else

@@ -291,7 +291,7 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
 int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
 /* (status.c) The growth per step rho as text "×1.000000" into num, with as
  * many digits as it takes for the printed number to agree with the word
- * returned ("grows", "grows, too slowly to see", "decays", "neutral"):
+ * returned ("grows", "grows slowly": too little to see over the meter's horizon, "decays", "neutral"):
  * grows is the meter's visible growth, slow its invisible growth. */
 const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact

@@ -264,8 +264,8 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (%.3g m at dt=%g), ratio %.3g",
              a->dt, e_new, T, e_old, old_dt, ratio);
     if (grow > 2) {
-        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows x%.4g per step, "
-                 "x%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
+        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows ×%.4g per step, "
+                 "×%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
     } else if (big > 0.5 * scale) {
         /* an order shows only where the error is small: say which way that is */
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s%s",

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "trace/trace.h"
 #include "stepwise/base.h"
@@ -51,6 +52,17 @@ static int replay(sw_app *a, long steps, char *err, size_t errlen)
     return rc;
 }
 
+/* Where a relative path lands, said with it: " in DIR" (the directory
+ * stepwise was started in, where a student's shell runs stepwise check),
+ * or nothing for an absolute path or an unknown directory. */
+static void where(const char *path, char *out, size_t len)
+{
+    char dir[512];
+    out[0] = '\0';
+    if (path[0] != '/' && getcwd(dir, sizeof dir))
+        snprintf(out, len, " in %.200s (the directory stepwise started in)", dir);
+}
+
 void sw_app_record_stop(sw_app *a)
 {
     if (!a->record_path[0])
@@ -62,8 +74,10 @@ void sw_app_record_stop(sw_app *a)
     else if (replay(a, steps, err, sizeof err) != SW_OK)
         snprintf(a->message, sizeof a->message, "recording failed: %s", err);
     else {
-        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.120s (grade it: stepwise check %.120s)",
-                 steps, a->record_path, a->record_path);
+        char in[300];
+        where(a->record_path, in, sizeof in);
+        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.120s%s; grade it: stepwise check %.120s",
+                 steps, a->record_path, in, a->record_path);
         a->recorded = 1;
     }
     a->record_path[0] = '\0';
@@ -83,5 +97,8 @@ void sw_app_record_begin(sw_app *a, const char *path)
     snprintf(a->record_path, sizeof a->record_path, "%s", path);
     a->record_method = a->sims[0].method;
     a->record_dt = a->dt;
-    snprintf(a->message, sizeof a->message, "recording from t = 0 to %.200s (R stops and writes it)", a->record_path);
+    char in[300];
+    where(a->record_path, in, sizeof in);
+    snprintf(a->message, sizeof a->message, "recording from t = 0 to %.200s%s; R stops and writes it", a->record_path,
+             in);
 }

@@ -57,6 +57,11 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
         sw_app_set_method(a, pg->method);
         sw_app_set_dt(a, pg->dt);
         sw_app_reset(a);
+        /* a page that starts a run starts it paused and at speed 1, unless
+         * it says @pause off or @speed (a slowed page before it no longer
+         * slows this one's wait) */
+        a->paused = 1;
+        a->speed = 1;
         a->nmeas = 0;
         a->error_ratio = NAN;
     }
@@ -113,6 +118,17 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     r->hint = 0;
     r->scroll = 0;
     snprintf(a->message, sizeof a->message, "page %d of %d: %s", page + 1, r->lesson.npages, pg->title);
+    /* the reading mode carries over, but never hides a run: a page whose
+     * run goes on arrival shows the picture; on a paused one, space both
+     * runs and brings the picture back (sw_runner_key) */
+    size_t said = strlen(a->message);
+    if (r->wide && !a->paused) {
+        r->wide = 0;
+        snprintf(a->message + said, sizeof a->message - said, " (the picture again: the run is going; o: reading "
+                 "mode)");
+    } else if (r->wide)
+        snprintf(a->message + said, sizeof a->message - said, " (reading mode: space runs and brings the picture "
+                 "back)");
 }
 
 int sw_runner_start(sw_runner *r, sw_app *a, const char *path, int page, char *err, size_t errlen)
@@ -214,6 +230,15 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
     case SW_ACT_HINT:
         r->hint = !r->hint;
         r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
+        return 1;
+    case SW_ACT_PAUSE:
+        /* running in the reading mode would show nothing: the picture comes back */
+        if (!r->wide || !a->paused)
+            return 0;
+        if (!sw_app_apply(a, SW_ACT_PAUSE, 1))
+            return 1; /* (locked on this page: the app said so) */
+        r->wide = 0;
+        snprintf(a->message, sizeof a->message, "running: the picture again (o: reading mode)");
         return 1;
     case SW_ACT_READ:
         r->wide = !r->wide;

@@ -105,7 +105,7 @@ void sw_app_status(sw_app *a, int i, char *buf, size_t len)
 
 const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len)
 {
-    const char *word = grows ? "grows" : slow ? "grows, too slowly to see"
+    const char *word = grows ? "grows" : slow ? "grows slowly"
                      : rho < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
     int above = grows || slow, below = !above && rho < 1 - SW_TRUTH_NEUTRAL;
     /* the word is decided from rho; the digits follow it, so the number
@@ -161,7 +161,7 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
         char num[40];
         const char *word = sw_app_growth_text(m.growth, m.grows, m.slow, num, sizeof num);
         snprintf(x->full, sizeof x->full, "growth %s per step: %s", num, m.grows ? "GROWS" : word);
-        snprintf(x->brief, sizeof x->brief, "growth %s/step %s", num, m.grows ? "GROWS" : m.slow ? "grows slowly" : word);
+        snprintf(x->brief, sizeof x->brief, "growth %s/step %s", num, m.grows ? "GROWS" : word);
     }
     /* ρ is the largest over the modes: where it is not the fastest mode's,
      * name its mode and give the fastest one's own factor (issue 38) */

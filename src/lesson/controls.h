@@ -63,25 +63,25 @@ enum {
  * Help shows PLAY controls, and LESSON ones in a lesson, in this order. */
 #define SW_CONTROLS(X) \
     X(NEXT_METHOD, INTEGRATOR, PLAY, "next integrator", SW_KEYS('i', SW_KEY_TAB), \
-      "i  Tab", "next integrator (the run starts again at t = 0)") \
+      "i  Tab", "next integrator (the run starts again at t = 0, paused)") \
     X(PREV_METHOD, INTEGRATOR, PLAY, "previous integrator", SW_KEYS('I', SW_KEY_BTAB), \
       "I  Shift-Tab", "previous integrator") \
     X(PICK_METHOD, INTEGRATOR, PLAY, "pick integrator", SW_KEYS(SW_PICK_KEYS), \
       "1-9  0", "pick an integrator by its place in 'stepwise list integrators'") \
     X(DT_DOUBLE, DT, PLAY, "double dt", SW_KEYS('+', '='), "+  -", \
-      "double / halve dt (the run starts again at t = 0)") \
+      "double / halve dt (the run starts again at t = 0, paused)") \
     X(DT_HALVE, DT, PLAY, "halve dt", SW_KEYS('-'), NULL, NULL) \
-    X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "pause / run") \
+    X(PAUSE, RUN, PLAY, "pause", SW_KEYS(' '), "space", "run / pause: the one key that runs (every restart is paused)") \
     X(STEP, RUN, PLAY, "single step", SW_KEYS('.'), ".  ,  ;  u", \
       "one step on / back, 50 back (pauses); u: run to the stop time (--until, @until)") \
     X(BACK, RUN, PLAY, "step back", SW_KEYS(','), NULL, NULL) \
     X(BACK_MANY, RUN, PLAY, "rewind", SW_KEYS(';'), NULL, NULL) \
     X(UNTIL, RUN, PLAY, "run to the stop time", SW_KEYS('u'), NULL, NULL) \
-    X(RESET, RESET, PLAY, "reset", SW_KEYS('r'), "r", "reset to t = 0") \
+    X(RESET, RESET, PLAY, "reset", SW_KEYS('r'), "r", "reset to t = 0, paused") \
     X(SLOWER, SPEED, PLAY, "slower", SW_KEYS('['), "[  ]", "slower / faster simulated time") \
     X(FASTER, SPEED, PLAY, "faster", SW_KEYS(']'), NULL, NULL) \
     X(COMPARE, COMPARE, PLAY, "compare", SW_KEYS('c'), \
-      "c", "compare: the same scene under two more integrators") \
+      "c", "compare: the same scene under two more integrators (all from t = 0, paused)") \
     X(GHOST, GHOST, PLAY, "ghost", SW_KEYS('g'), \
       "g", "ghost: the exact solution (or a reference run) beside yours") \
     X(TRAILS, TRAILS, PLAY, "trails", SW_KEYS('t'), "t", "trails") \

@@ -310,7 +310,7 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         snprintf(buf, sizeof buf, "dt=%g", a->dt);
         field(fl, &n, 8, buf, NULL);
     }
-    field(fl, &n, 6, "(shaded: growth per step <= 1)", "(shaded: stable)");
+    field(fl, &n, 6, "(shaded: growth per step <= 1; its edge a line)", "(shaded: stable)");
     fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
     /* under the picture: the real axis's numbers, the worst mark against
      * its edge along its ray, and the legend */
@@ -403,13 +403,17 @@ static void key_fields(const sw_app *a, const sw_side *side, sw_field *f, int *n
     field(f, n, 10, "q quit", NULL);
 }
 
+#define MSG_ROWS 4 /* the message's most lines under the meter */
+
 /* The status block's lines (full width), bottom of the screen; returns its rows. */
 static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
 {
-    char msg[4][SW_TEXT_LINE];
-    int nmsg = a->message[0] ? sw_text_wrap(a->message, scr->cols, msg, 3) : 0;
-    if (nmsg > 3)
-        nmsg = 3;
+    /* a message as long as a Δt change's report after a restart takes four
+     * lines at 80 columns: all of it is shown (the picture gives a row) */
+    char msg[MSG_ROWS][SW_TEXT_LINE];
+    int nmsg = a->message[0] ? sw_text_wrap(a->message, scr->cols, msg, MSG_ROWS) : 0;
+    if (nmsg > MSG_ROWS)
+        nmsg = MSG_ROWS;
     int nstat = a->compare && a->lanes && a->view == SW_VIEW_SCENE ? 1 : a->nsims;
     int rows = nstat + 1 + (nmsg ? nmsg : 1) + 1;
     if (dry)
@@ -428,8 +432,9 @@ static int status_block(sw_app *a, const sw_side *side, sw_screen *scr, int dry)
         fit_line(scr, row++, 2, scr->cols - 2, a->sims[i].blown ? SW_STYLE_BAD : SW_STYLE_STATUS, f, n);
     }
     int st, n = meter_fields(a, f, &st);
-    /* the run's state: PAUSED said whenever it is (a key that restarts the
-     * run keeps it); "running" only where it costs the meter nothing */
+    /* the run's state: PAUSED said whenever it is (every restart leaves
+     * it so: app.c, restart_run); "running" only where it costs the meter
+     * nothing */
     if (a->paused)
         field(f, &n, 10, "PAUSED", NULL);
     else if (a->slowmo > 1.05) {
@@ -540,7 +545,7 @@ static void draw_side(const sw_side *side, sw_screen *scr, int row, int col, int
         draw_lines(side, scr, row + window, col, width, side->nlines - foot, kept);
         static const char *const stub[] = { "(a question below: Down; o: wide)", "(a question below: Down)",
                                             "(question: Down)" };
-        int k = 0;
+        int k = side->full; /* (in the reading mode already: no "o: wide") */
         while (k < 2 && sw_text_cells(stub[k]) > width)
             k++;
         sw_screen_text(scr, row + height - 1, col, width, SW_STYLE_TITLE, stub[k]);

@@ -132,7 +132,7 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     /* both axes are linear; the dashed row, when the values straddle it, is 0 */
     int zero_line = vmin < 0 && vmax > 0;
     snprintf(title[2].full, sizeof title[2].full, "%s", zero_line ? "(linear axes, --- is 0)" : "(linear axes)");
-    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "");
+    snprintf(title[2].brief, sizeof title[2].brief, "%s", zero_line ? "--- is 0" : "(linear)");
     char line[SW_TEXT_LINE];
     sw_screen_fill(scr, row, col, height, width, SW_STYLE_TEXT);
     sw_text_fit(line, sizeof line, width, title, off >= 0 ? 4 : 3, " ");
@@ -248,12 +248,18 @@ static void pick_help(const sw_control *c, int width, char *keys, size_t keys_le
             n = i;
             break;
         }
-    snprintf(keys, keys_len, n <= 9 ? "1-%d" : "1-9  0", n);
+    /* every key in the column, run together past 0 ("1-9 0 !@#$%^"), or
+     * cut with "+" where they do not fit: never left out unsaid (the help
+     * text beside them names every one) */
+    snprintf(keys, keys_len, n <= 9 ? "1-%d" : "1-9 0", n);
     for (int i = 10; i < n; i++) {
         size_t k = strlen(keys);
-        if ((int)k + 2 + (i == 10) > width || k + 3 > keys_len)
+        int last = i == n - 1;
+        if ((int)k + 1 + (i == 10) + (last ? 0 : 1) > width || k + 4 > keys_len) {
+            snprintf(keys + k, keys_len - k, "+");
             break;
-        snprintf(keys + k, keys_len - k, "%s%c", i == 10 ? "  " : " ", c->keys[i]);
+        }
+        snprintf(keys + k, keys_len - k, "%s%c", i == 10 ? " " : "", c->keys[i]);
     }
     used = snprintf(help, help_len, "pick an integrator:");
     for (int i = 0; i < n && used > 0 && (size_t)used < help_len; i++)
@@ -277,7 +283,8 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
               "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
         { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
         { "", "growth x.../step: the largest factor by which one step scales any motion, a bound, often the "
-              "slowest motion's (1: neutral, below: decays, above: grows); wider: which mode, and the fastest's" },
+              "slowest motion's (1: neutral, below: decays, above: GROWS, or grows slowly: too slowly to see in a run); "
+              "wider: which mode, and the fastest's" },
         { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "
                         "v43.1) is how far the farthest one is from the picture's centre (z zooms out, f follows)" },

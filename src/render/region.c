@@ -105,6 +105,65 @@ static void shade(sw_region *r, const sw_canvas *c, const sw_integrator *m, int 
     }
 }
 
+/* Whether grid point (x, y) of a gc × gr grid (cells, or Braille dots) is
+ * on the region's edge: stable, with an unstable point among its eight
+ * neighbours (the grid's border is no edge). */
+static int on_edge(const unsigned char *g, int gc, int gr, int x, int y)
+{
+    if (!g[(size_t)y * (size_t)gc + (size_t)x])
+        return 0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int xx = x + dx, yy = y + dy;
+            if (xx >= 0 && xx < gc && yy >= 0 && yy < gr && !g[(size_t)yy * (size_t)gc + (size_t)xx])
+                return 1;
+        }
+    return 0;
+}
+
+/* Which side of the edge line a cell shows: wholly outside (nothing
+ * shaded), on the line, or wholly inside. */
+enum { SIDE_OUT, SIDE_EDGE, SIDE_IN };
+
+static int cell_side(const sw_region *r, const sw_canvas *c, int col, int row)
+{
+    const unsigned char *cell = r->stable, *dot = r->stable + (size_t)c->cols * (size_t)c->rows;
+    if (c->mode != SW_CANVAS_BRAILLE)
+        return !cell[row * c->cols + col] ? SIDE_OUT
+               : on_edge(cell, c->cols, c->rows, col, row) ? SIDE_EDGE : SIDE_IN;
+    int stable = 0, edge = 0;
+    for (int b = 0; b < 8; b++) {
+        int dc = 2 * col + b % 2, dr = 4 * row + b / 2;
+        stable += dot[(size_t)dr * (size_t)(2 * c->cols) + (size_t)dc];
+        edge |= on_edge(dot, 2 * c->cols, 4 * c->rows, dc, dr);
+    }
+    return stable == 0 ? SIDE_OUT : edge ? SIDE_EDGE : SIDE_IN;
+}
+
+/* The column a mark at world x, in cell (col, row), is drawn in: its own
+ * when that cell is on the mark's side of the edge line (wholly outside
+ * for a mark that grows, wholly inside for one that does not), else the
+ * nearest cell of its row that is, up to SW_REGION_NUDGE columns away.
+ * Near the origin a lightly damped mode's path runs within a cell of the
+ * edge: without this a mark just outside and one just inside share the
+ * edge's cell and look the same. */
+static int mark_col(const sw_region *r, const sw_canvas *c, double x, int col, int row, int grows)
+{
+    int want = grows ? SIDE_OUT : SIDE_IN;
+    if (cell_side(r, c, col, row) == want)
+        return col;
+    sw_view vis = sw_canvas_visible(c);
+    double w = (vis.xmax - vis.xmin) / c->cols, off = x - (vis.xmin + (col + 0.5) * w);
+    for (int d = 1; d <= SW_REGION_NUDGE; d++)
+        for (int k = 0; k < 2; k++) {
+            /* the nearer of the two first: the side the mark lies towards */
+            int cc = col + ((off >= 0) == (k == 0) ? d : -d);
+            if (cc >= 0 && cc < c->cols && cell_side(r, c, cc, row) == want)
+                return cc;
+        }
+    return col;
+}
+
 /* Cells taken by labels and marks, so that no label touches another or a
  * mark: a label needs its own cells and one free cell on either side. */
 #define TAKEN_MAX 256 /* marks (up to 2 per mode, SW_TRUTH_MODES modes) and labels */
@@ -155,7 +214,7 @@ static void tick_label(char *ticks, int cols, int col, const char *text)
     memcpy(ticks + col, text, (size_t)len);
 }
 
-static void axes(sw_canvas *c, taken *t, char *ticks, size_t tickslen)
+static void axes(const sw_region *r, sw_canvas *c, taken *t, char *ticks, size_t tickslen)
 {
     int tcols = c->cols < (int)tickslen - 1 ? c->cols : (int)tickslen - 1;
     memset(ticks, ' ', (size_t)tcols);
@@ -165,10 +224,14 @@ static void axes(sw_canvas *c, taken *t, char *ticks, size_t tickslen)
     /* the axes as glyphs in either mode (a Braille line would blur into the shading) */
     if (sw_canvas_world_to_cell(c, 0, 0, &oc, &orow)) {
         have_origin = 1;
+        /* (not over the edge line: where it runs along an axis, the line
+         * is the news) */
         for (int k = 0; k < c->cols; k++)
-            sw_canvas_put(c, k, orow, '-', SW_STYLE_WALL);
+            if (cell_side(r, c, k, orow) != SIDE_EDGE)
+                sw_canvas_put(c, k, orow, '-', SW_STYLE_WALL);
         for (int k = 0; k < c->rows; k++)
-            sw_canvas_put(c, oc, k, '|', SW_STYLE_WALL);
+            if (cell_side(r, c, oc, k) != SIDE_EDGE)
+                sw_canvas_put(c, oc, k, '|', SW_STYLE_WALL);
         sw_canvas_put(c, oc, orow, '+', SW_STYLE_WALL);
     }
     int col, row;
@@ -206,7 +269,7 @@ static void axes(sw_canvas *c, taken *t, char *ticks, size_t tickslen)
         int len;
         n++;
         for (int sgn = -1; sgn <= 1; sgn += 2)
-            if (sw_canvas_world_to_cell(c, sgn * v, 0, &col, &row))
+            if (sw_canvas_world_to_cell(c, sgn * v, 0, &col, &row) && cell_side(r, c, col, row) != SIDE_EDGE)
                 sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
         /* the real axis's labels under the picture, in their own row (the
          * regions lie on the negative side, where the shading is) */
@@ -218,7 +281,8 @@ static void axes(sw_canvas *c, taken *t, char *ticks, size_t tickslen)
             tick_label(ticks, tcols, col - len / 2, lab);
         /* (the top and bottom rows are kept for the arrows of marks beyond them) */
         if (v < vis.ymax && sw_canvas_world_to_cell(c, 0, v, &col, &row) && row >= 1 && row <= c->rows - 2) {
-            sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
+            if (cell_side(r, c, col, row) != SIDE_EDGE)
+                sw_canvas_put(c, col, row, '+', SW_STYLE_WALL);
             snprintf(lab, sizeof lab, "%gi", v);
             label(c, t, col + 1, row, lab);
         }
@@ -253,9 +317,10 @@ static void ray_edges(sw_region *r, const sw_app *a, const sw_integrator *m, int
     r->edge_n = a->spec.n;
 }
 
-/* The largest |Δt·λ| over the modes, or the farthest edge on their rays
- * when it lies beyond them (0: none), so that the view chosen holds where
- * the marks cross the edge. */
+/* The largest |Δt·λ| over the modes, or SW_REGION_PAST times the farthest
+ * edge on their rays when that lies beyond them (0: none), so that the
+ * view chosen holds where the marks cross the edge and where the first
+ * doubling of Δt past it puts them (at most twice the edge's distance). */
 static double largest_mark(const sw_app *a, const sw_region *r)
 {
     double largest = 0;
@@ -263,8 +328,8 @@ static double largest_mark(const sw_app *a, const sw_region *r)
         const sw_mode *md = &a->spec.mode[k];
         largest = fmax(largest, fmax(hypot(md->re, md->im), hypot(md->pre, md->pim)) * a->dt);
         for (int j = 0; j < 2; j++)
-            if (isfinite(r->edge[2 * k + j]) && r->edge[2 * k + j] > largest)
-                largest = r->edge[2 * k + j];
+            if (isfinite(r->edge[2 * k + j]) && SW_REGION_PAST * r->edge[2 * k + j] > largest)
+                largest = SW_REGION_PAST * r->edge[2 * k + j];
     }
     return largest;
 }
@@ -355,26 +420,30 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
     r->progress = (double)r->next / total;
     sw_canvas_clear(c);
     const unsigned char *cell = r->stable, *dot = r->stable + (size_t)c->cols * (size_t)c->rows;
+    /* the inside half-toned, its edge a solid line: where the edge runs
+     * along an axis or a mark's path, the line is what tells them apart */
     if (dots) {
         for (int dr = 0; dr < 4 * c->rows; dr++)
             for (int dc = 0; dc < 2 * c->cols; dc++)
-                if (dot[(size_t)dr * (size_t)(2 * c->cols) + (size_t)dc])
+                if (dot[(size_t)dr * (size_t)(2 * c->cols) + (size_t)dc] &&
+                    ((dc + dr) % 2 == 0 || on_edge(dot, 2 * c->cols, 4 * c->rows, dc, dr)))
                     sw_canvas_dot(c, dc, dr, SW_STYLE_GHOST, 0);
     } else {
         for (int row = 0; row < c->rows; row++)
             for (int col = 0; col < c->cols; col++)
                 if (cell[row * c->cols + col])
-                    sw_canvas_put(c, col, row, ':', SW_STYLE_GHOST);
+                    sw_canvas_put(c, col, row, on_edge(cell, c->cols, c->rows, col, row) ? SW_REGION_EDGE : ':',
+                                  SW_STYLE_GHOST);
     }
     taken t = { 0 };
     if (!a->have_spec) {
-        axes(c, &t, r->ticks, sizeof r->ticks);
+        axes(r, c, &t, r->ticks, sizeof r->ticks);
         snprintf(why, whylen, "no eigenvalues of %s's linearisation here to mark", a->scene->name);
         return 0;
     }
     if (a->spec.n == 0) {
         /* the meter's "x1 neutral" and this view say the same thing */
-        axes(c, &t, r->ticks, sizeof r->ticks);
+        axes(r, c, &t, r->ticks, sizeof r->ticks);
         if (a->spec.growing)
             snprintf(why, whylen, "nothing to mark: %s's %d mode%s grow%s by the physics (Re λ > 0), not by the "
                      "method", a->scene->name, a->spec.growing, a->spec.growing == 1 ? "" : "s",
@@ -414,17 +483,22 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
             nm++;
         }
     }
-    /* the marks' cells first: labels keep clear of them (a mark wins over a label) */
+    /* the marks' cells first, each on its side of the edge line: labels
+     * keep clear of them (a mark wins over a label) */
+    int mcol[2 * SW_TRUTH_MODES], mrow[2 * SW_TRUTH_MODES];
     for (int k = 0; k < nm; k++) {
-        int col, row;
-        if (sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
-            take(&t, row, col, col);
+        mrow[k] = -1;
+        if (sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &mcol[k], &mrow[k])) {
+            mcol[k] = mark_col(r, c, xy[2 * k], mcol[k], mrow[k], grows[k]);
+            take(&t, mrow[k], mcol[k], mcol[k]);
+        } else
+            mrow[k] = -1;
     }
-    axes(c, &t, r->ticks, sizeof r->ticks);
+    axes(r, c, &t, r->ticks, sizeof r->ticks);
     for (int k = 0; k < nm; k++) {
-        int col, row;
+        int col = mcol[k], row = mrow[k];
         *outside += grows[k];
-        if (!sw_canvas_world_to_cell(c, xy[2 * k], xy[2 * k + 1], &col, &row))
+        if (row < 0)
             continue;
         /* a growing mode on top of a stable one in the same cell */
         if (!grows[k] && sw_canvas_codepoint(c, col, row) == 'X')

@@ -54,9 +54,15 @@ typedef struct sw_region {
     int fit_order, fit_cols, fit_rows, fit_valid;
 } sw_region;
 
+/* How far past its edge on its ray the view chosen for a page holds a
+ * mark: a doubling of Δt from inside puts it at most twice as far, and
+ * the view (1.25 × this) keeps a row's margin beyond that. */
+#define SW_REGION_PAST 1.8
+
 /* The half span the view shows (zoom 1) for a region reaching reach (its
  * default half span) with marks as far as largest = max |Δt·λ| from the
- * origin (or their edges on their rays, when farther): the whole region and
+ * origin (or SW_REGION_PAST times their edges on their rays, when
+ * farther): the whole region and
  * the marks when the marks are as large as half of it (max(reach, 1.25 ×
  * largest)), else 1.25 × largest, so that the marks fill the view and each
  * halving of Δt moves them visibly (at least reach / 1000; reach when no
@@ -68,6 +74,13 @@ double sw_region_scale(double reach, double largest);
  * fresh sandboxed child, about 10 ms; its grid is two cells wide): it fills
  * in over several seconds while the rest of the screen stays live. */
 #define SW_REGION_BUDGET 0.1
+
+/* The edge line's glyph where the region is drawn in characters (Braille
+ * draws it as a solid line of dots round a half-toned inside). */
+#define SW_REGION_EDGE '#'
+/* How many columns a mark may be drawn from its own cell to stay on its
+ * side of the edge line (render/region.c, mark_col). */
+#define SW_REGION_NUDGE 2
 
 void sw_region_free(sw_region *r);
 /* How far the ray from the origin through (ux, uy) stays in method m's

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "app/stages.h"
@@ -147,6 +148,70 @@ static void arrow_label(sw_canvas *c, const arrow *a)
         }
 }
 
+/* Whether number k (of n, at cells col/row; placed[j]: j's cell is final)
+ * may sit at (cc, rr): a blank cell on the canvas with no letter or digit
+ * beside it in its row, and no other number in or beside it (so that "2"
+ * beside "3" never reads as 23). */
+static int number_room(const sw_canvas *c, const int *col, const int *row, const int *placed, int n, int k, int cc,
+                       int rr)
+{
+    if (rr < 0 || rr >= c->rows || cc < 0 || cc >= c->cols || sw_canvas_codepoint(c, cc, rr) != ' ')
+        return 0;
+    for (int d = cc - 1; d <= cc + 1; d += 2) {
+        uint32_t g = sw_canvas_codepoint(c, d, rr);
+        if ((g >= 'a' && g <= 'z') || (g >= 'A' && g <= 'Z') || (g >= '0' && g <= '9'))
+            return 0;
+    }
+    for (int j = 0; j < n; j++)
+        if (j != k && placed[j] && row[j] == rr && abs(col[j] - cc) <= 1)
+            return 0;
+    return 1;
+}
+
+/* The stage points' numbers, on top. A number in the same cell as a later
+ * one or beside it in its row (at a small h, k2's and k3's points lie
+ * O(h²) apart) is moved to a free cell above or below, else left out and
+ * named in under ("2 under 3"). Returns how many were left out. */
+static int stage_numbers(sw_canvas *c, const arrow *ar, int n, int first_now, char *under, size_t len)
+{
+    int col[2 * SW_STAGE_VIEWS], row[2 * SW_STAGE_VIEWS], placed[2 * SW_STAGE_VIEWS], crowded[2 * SW_STAGE_VIEWS];
+    int dropped = 0, later[2 * SW_STAGE_VIEWS];
+    size_t used = 0;
+    under[0] = '\0';
+    for (int i = 0; i < n; i++)
+        placed[i] = ar[i].mark >= '1' && ar[i].mark <= '9' && sw_canvas_world_to_cell(c, ar[i].x0, ar[i].y0, &col[i], &row[i]);
+    for (int i = 0; i < n; i++) {
+        crowded[i] = 0;
+        for (int j = i + 1; j < n && placed[i]; j++)
+            if (placed[j] && row[j] == row[i] && abs(col[j] - col[i]) <= 1) {
+                crowded[i] = 1;
+                later[i] = j;
+            }
+        placed[i] &= !crowded[i];
+    }
+    static const int spots[6][2] = { { 0, -1 }, { 0, 1 }, { -1, -1 }, { 1, -1 }, { -1, 1 }, { 1, 1 } };
+    for (int i = 0; i < n; i++) {
+        if (!crowded[i])
+            continue;
+        int c0 = col[i], r0 = row[i];
+        for (int s = 0; s < 6 && !placed[i]; s++)
+            if (number_room(c, col, row, placed, n, i, c0 + spots[s][0], r0 + spots[s][1])) {
+                col[i] = c0 + spots[s][0];
+                row[i] = r0 + spots[s][1];
+                placed[i] = 1;
+            }
+        if (!placed[i] && used + 16 < len) {
+            used += (size_t)snprintf(under + used, len - used, "%s%c under %c", dropped ? ", " : "", (char)ar[i].mark,
+                                     (char)ar[later[i]].mark);
+            dropped++;
+        }
+    }
+    for (int i = 0; i < n; i++)
+        if (placed[i])
+            sw_canvas_put(c, col[i], row[i], ar[i].mark, i >= first_now ? SW_STYLE_WARN : SW_STYLE_COMPARE1);
+    return dropped;
+}
+
 /* What the formula's letters are, under it: every script writes its step
  * in y, f, h and k (the lesson that first shows the view has not named
  * them yet). Beside the picture one per line, below it on one line. */
@@ -204,7 +269,7 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
 {
     const sw_stages *r = sw_app_stages(a);
     const sw_stage_script *sc = r ? sw_stage_script_of(r->method) : NULL;
-    char buf[SW_TEXT_LINE], err[SW_ERRLEN];
+    char buf[SW_TEXT_LINE], err[SW_ERRLEN], under[64] = "";
     if (!r || !sc) {
         snprintf(buf, sizeof buf, "%s. Esc closes.", r ? "stages: not drawn" : a->stages_why);
         sw_screen_wrapped(scr, row0 + 1, col0 + 1, cols - 2, rows - 2, SW_STYLE_TEXT, buf);
@@ -214,24 +279,6 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     int shown = a->stage_shown < 1 ? 1 : a->stage_shown > sc->nviews ? sc->nviews : a->stage_shown;
     const sw_stage_view *cur = &sc->views[shown - 1];
     int p = r->particle;
-
-    /* the title: method, which stage, the keys */
-    sw_field fl[5];
-    int n = 0;
-    snprintf(fl[n].full, sizeof fl[n].full, "one %s step, h = %g", r->method->name, r->h);
-    snprintf(fl[n].brief, sizeof fl[n].brief, "%s", r->method->name);
-    fl[n++].prio = 10;
-    snprintf(fl[n].full, sizeof fl[n].full, "stage %d of %d: %s", shown, sc->nviews, cur->label);
-    snprintf(fl[n].brief, sizeof fl[n].brief, "%d/%d %s", shown, sc->nviews, cur->label);
-    fl[n++].prio = 9;
-    snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
-    fl[n].brief[0] = '\0';
-    fl[n++].prio = 3;
-    snprintf(fl[n].full, sizeof fl[n].full, "k %s  Esc close", shown < sc->nviews ? "next" : "closes");
-    snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
-    fl[n++].prio = 5;
-    if (sw_text_fit(buf, sizeof buf, cols, fl, n, "  ") > 0)
-        sw_screen_text(scr, row0, col0, cols, SW_STYLE_TITLE, buf);
 
     /* the formula beside the picture when there is room, else below it */
     int fw = formula_width(sc) + 1, side = cols - fw >= 40;
@@ -281,14 +328,16 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
             e.style = SW_STYLE_TRAIL;
             e.label = ""; /* only the current stage is named */
             if (e.mark >= '1' && e.mark <= '9')
-                e.x1 = e.x0, e.y1 = e.y0;
+                e.x1 = e.x0, e.y1 = e.y0, e.mark = 0; /* (its number comes last) */
             draw_arrow(c, &e, f->unicode);
         }
-        for (int i = upto[shown - 1]; i < upto[shown]; i++)
-            draw_arrow(c, &ar[i], f->unicode);
-        for (int i = 0; i < upto[shown]; i++) /* every stage point on top, numbered */
-            if (ar[i].mark >= '1' && ar[i].mark <= '9')
-                sw_canvas_mark(c, ar[i].x0, ar[i].y0, ar[i].mark, i >= upto[shown - 1] ? SW_STYLE_WARN : SW_STYLE_COMPARE1);
+        for (int i = upto[shown - 1]; i < upto[shown]; i++) {
+            arrow e = ar[i];
+            if (e.mark >= '1' && e.mark <= '9')
+                e.mark = 0;
+            draw_arrow(c, &e, f->unicode);
+        }
+        stage_numbers(c, ar, upto[shown], upto[shown - 1], under, sizeof under); /* every stage point on top */
         /* the names last, where they cover nothing: the current stage's, then the true path's */
         for (int i = upto[shown - 1]; i < upto[shown]; i++)
             arrow_label(c, &ar[i]);
@@ -296,6 +345,29 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         drawn = upto[shown];
         sw_screen_blit(scr, c, row0 + 1, col0);
     }
+    /* the title: method, which stage, the keys */
+    sw_field fl[6];
+    int n = 0;
+    snprintf(fl[n].full, sizeof fl[n].full, "one %s step, h = %g", r->method->name, r->h);
+    snprintf(fl[n].brief, sizeof fl[n].brief, "%s", r->method->name);
+    fl[n++].prio = 10;
+    snprintf(fl[n].full, sizeof fl[n].full, "stage %d of %d: %s", shown, sc->nviews, cur->label);
+    snprintf(fl[n].brief, sizeof fl[n].brief, "%d/%d %s", shown, sc->nviews, cur->label);
+    fl[n++].prio = 9;
+    snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
+    fl[n].brief[0] = '\0';
+    fl[n++].prio = 3;
+    snprintf(fl[n].full, sizeof fl[n].full, "k %s  Esc close", shown < sc->nviews ? "next" : "closes");
+    snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
+    fl[n++].prio = 5;
+    if (under[0]) { /* stage points drawn over by a later one, said */
+        snprintf(fl[n].full, sizeof fl[n].full, "(%s: one cell)", under);
+        snprintf(fl[n].brief, sizeof fl[n].brief, "(%s)", under);
+        fl[n++].prio = 8;
+    }
+    if (sw_text_fit(buf, sizeof buf, cols, fl, n, "  ") > 0)
+        sw_screen_text(scr, row0, col0, cols, SW_STYLE_TITLE, buf);
+
     if (side)
         draw_formula(scr, sc, cur->line, cur->line, row0 + 1, col0 + ccols + 2, fw - 1, rows - 1, 1);
     else

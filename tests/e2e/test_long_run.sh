@@ -8,6 +8,8 @@ type_cmd "$STEPWISE play orbit --speed 1000"
 wait_for 'orbit +verlet' || fail "play orbit did not start"
 keys t e c
 wait_for 'vs +rk4' || fail "compare did not open"
+keys ' ' # (compare restarts every run at t = 0, paused)
+wait_for 'running|slow' || fail "space did not run the compare"
 pid=$(app_pid)
 [ -n "$pid" ] || fail "no stepwise process"
 rss() { awk '/^VmRSS/ { print $2 }' "/proc/$pid/status"; }

@@ -1,7 +1,10 @@
 #!/bin/sh
 # Pictures that show their point at 80x24 (issue 25), as a student sees
 # them: on lesson 5 page 3 the stability region's marks move at every
-# halving of dt and the axes stay put; on lesson 6 page 4 the
+# halving of dt and the axes stay put, each drawn on its side of the
+# region's edge line (X past it, * on the shading), as the line under the
+# picture says; on lesson 6 page 5 RK4's marks climb the imaginary axis
+# and pass its edge line only at dt = 0.04, drawn X there; on lesson 6 page 4 the
 # work-precision plot shows Euler (its marker, or '&' with the pair named)
 # and RK4's point of the page's table (about 500 evaluations, error 3e-7)
 # beside the page's text, before and after the answer; the projectile's
@@ -27,6 +30,14 @@ marks() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { for (i = 1; i <= lengt
     if (ch == "X" || ch == "*") printf "%d:%d ", NR, i } }'; }
 axis() { picture | awk '/^-+\+/ { row = NR } END { print row }'; }
 ticks() { picture | grep -E '^ *-0\.[0-9] +-0\.[0-9]' | sed 's/ *$//'; }
+# the mark's side of the edge line (#) in its row: "outside" when the nearest
+# region glyph on each side is the line or none, "inside" when the inside (:)
+# is next to it; the first mark's row is read
+side() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1)
+    if (ch == "X" || ch == "*") { l = substr($0, 1, i - 1); r = substr($0, i + 1); gsub(/[^:#]/, "", l); gsub(/[^:#]/, "", r)
+        ll = substr(l, length(l), 1); rr = substr(r, 1, 1)
+        print (ll != ":" && rr != ":") ? "outside" : (substr($0, i - 1, 1) == ":" || substr($0, i + 1, 1) == ":") ? "inside" : "on the line"
+        exit } } }'; }
 # the line under the picture: the edge's column, the mark's, what it says
 gauge() { picture | awk '/^in [:|*X-]/ { print index($0, "|") " " (index($0, "X") ? index($0, "X") : index($0, "*")) " " $NF; exit }'; }
 prev_marks=$(marks); prev_axis=$(axis); prev_ticks=$(ticks)
@@ -35,12 +46,13 @@ echo "dt=0.005: marks $prev_marks axis row $prev_axis; under it: edge column $1,
 [ -n "$prev_marks" ] || fail "no marks on the region view"
 [ -n "$prev_ticks" ] || fail "no numbers under the picture"
 [ "$3" = 5x ] && [ "$2" -gt "$1" ] || fail "at dt=0.005 the line under the picture does not show the mark out, 5x"
+[ "$(side)" = outside ] || fail "at dt=0.005 the mark is not drawn outside the edge line (#)"
 for dt in 0.0025 0.00125 0.000625; do
     keys -
     wait_for "euler  dt=$dt " || fail "- did not halve dt to $dt"
     m=$(marks); ax=$(axis)
     set -- $(gauge)
-    echo "dt=$dt: marks $m axis row $ax; under it: edge column $1, mark column $2, $3"
+    echo "dt=$dt: marks $m axis row $ax; in the picture: $(side), edge line #; under it: edge column $1, mark column $2, $3"
     [ -n "$m" ] || fail "no marks at dt=$dt"
     [ "$m" != "$prev_marks" ] || fail "the marks did not move when dt halved to $dt ($m)"
     [ "$ax" = "$prev_axis" ] || fail "the axis moved from row $prev_axis to $ax at dt=$dt"
@@ -48,13 +60,42 @@ for dt in 0.0025 0.00125 0.000625; do
     [ "$1" = "$edge" ] || fail "the edge moved on the line under the picture at dt=$dt"
     [ "$2" -lt "$prev_pos" ] || fail "the mark did not move towards the origin on its ray at dt=$dt"
     case $dt in
-        0.000625) [ "$2" -lt "$1" ] && [ "$3" = 0.625x ] || fail "at dt=$dt the mark is not shown inside, 0.625x" ;;
-        *) [ "$2" -gt "$1" ] || fail "at dt=$dt the mark is not shown outside" ;;
+        0.000625) [ "$2" -lt "$1" ] && [ "$3" = 0.625x ] && [ "$(side)" = inside ] ||
+            fail "at dt=$dt the mark is not shown inside, 0.625x, on the shading" ;;
+        *) [ "$2" -gt "$1" ] && [ "$(side)" = outside ] || fail "at dt=$dt the mark is not shown outside, past the edge line" ;;
     esac
     prev_marks=$m prev_pos=$2
 done
 keys q
 check_terminal_sane region
+
+# 1b. Lesson 6 page 5 (RK4's region, undamped: the marks on the imaginary
+#     axis): doubling dt from 0.005 to 0.04 the marks climb the axis; the
+#     edge line (#) crosses it at 2.83i; at 0.02 the upper mark is at or
+#     below the line's top row there, at 0.04 above it, drawn X.
+printf '06-runge-kutta.lesson 4\n' > "$WORK/state/stepwise/progress"
+type_cmd "LC_ALL=C XDG_STATE_HOME=$WORK/state $STEPWISE lesson 6"
+wait_for "RK4's region" || fail "lesson 6 did not open on RK4's region"
+keys s
+wait_for 'scale \+-[0-9.]+ fixed' || fail "s did not show RK4's region"
+# "MARKROW LINEROW GLYPH": the upper mark's row and glyph, the top row of
+# the edge line in the three columns round the mark's
+rk4_rows() { picture | awk '/^in [:|*X-]/ { exit } NR >= 2 { line[NR] = $0
+    if (!mr) for (i = 1; i <= length($0); i++) { ch = substr($0, i, 1); if (ch == "X" || ch == "*") { mr = NR; mc = i; g = ch == "X" ? "X" : "star"; break } } }
+    END { for (r = 2; r in line; r++) { s = substr(line[r], mc - 1, 3); if (index(s, "#")) { print mr " " r " " g; exit } } }'; }
+for dt in 0.01 0.02 0.04; do
+    keys +
+    wait_for "rk4  dt=$dt " || fail "+ did not double dt to $dt"
+    set -- $(rk4_rows)
+    echo "rk4 at dt=$dt: upper mark row $1 ($3), edge line's top row on the axis $2"
+    [ -n "${3:-}" ] || fail "no mark or no edge line on RK4's region at dt=$dt"
+    case $dt in
+        0.04) [ "$1" -lt "$2" ] && [ "$3" = X ] || fail "at dt=0.04 the mark is not drawn past the edge line, X" ;;
+        *) [ "$1" -ge "$2" ] && [ "$3" = star ] || fail "at dt=$dt the mark is not drawn inside the edge line" ;;
+    esac
+done
+keys q
+check_terminal_sane region-rk4
 
 # 2. Lesson 6 page 4: the plot in the picture's place, the page's text beside it.
 printf '06-runge-kutta.lesson 3\n' > "$WORK/state/stepwise/progress"

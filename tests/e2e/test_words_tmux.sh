@@ -34,7 +34,7 @@ keys m
 wait_for 'err [0-9.e+-]+ m ' || fail "m did not switch back"
 wait_for 'dt=0\.4 +t=[1-9]' || fail "the run did not pass t = 1"
 keys -
-wait_for 'restarted at t = 0; dt=0\.2: position error' || fail "a dt change does not restart or say position error"
+wait_for 'restarted at t = 0, paused; dt=0\.2: position error' || fail "a dt change does not restart or say position error"
 keys q
 check_terminal_sane meter
 

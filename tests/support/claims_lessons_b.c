@@ -420,6 +420,7 @@ static double l9_dt_plus3(void) { return cl_page_dt_after(L9, "One step size doe
 /* How much the drift moved between t = 4 (after the second close pass) and two
  * orbits, as a fraction of it. */
 static double l9_rk4_first(void) { return cl_drift_at("orbit", ECC, "rk4", 0.05, 1.5); }
+static double l9_rk4_first_down(void) { return -l9_rk4_first(); }
 
 /* The time of RK4's second close pass: its nearest approach after t = 1. */
 static double l9_rk4_second_pass(void)
@@ -570,6 +571,10 @@ const claim sw_claims_b[] = {
     { L9, "RK4 at fixed Δt 0.05 ({1008} evaluations)", l9_rk4_evals, EXACT, 0, R_COUNT, NULL },
     { L9, "(energy +{1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
     { L9, "(energy {-122} % by t = 1.5)", l9_rk4_first, ROUNDED, 0, R_ROUND, NULL },
+    { L9, "(its energy down {122} % by t = 1.5)", l9_rk4_first_down, ROUNDED, 0, "the same drift, its sign said in words", NULL },
+    { L9, "the one at t ≈ {2.9} flings it out", l9_rk4_second_pass, ROUNDED, 0, "as below", NULL },
+    { L9, "flings it out (up {1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
+    { L9, "(up 1250 %, then {constant}: it has escaped)", l9_constant, ABS, 0.001, "as for \"constant\" below", NULL },
     { L9, "the second, at t ≈ {2.9}, flings it away", l9_rk4_second_pass, ROUNDED, 0, "the time of the nearest approach after t = 1, to the text's digits", NULL },
     { L9, "at its second close pass (t ≈ {2.9}) RK4", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
     { L9, "close pass, at t ≈ {2.9}, lasts long", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },

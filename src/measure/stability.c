@@ -86,8 +86,12 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
     sw_watch_start(&w, (double)steps * dt / SW_WATCH_WINDOWS, &s);
     out->verdict = SW_PROBE_STABLE;
     int bound = s.sys.scene->energy && !sw_sim_energy_scale_is_motion(&s);
-    long k;
-    for (k = 1; k <= steps; k++) {
+    /* an orbit whose energy reached 0 near the end is run on until the
+     * watch has seen whether it stays unbound for a revolution */
+    long more = w.revolution > 0 ? (long)ceil(w.revolution / dt) + 1 : 0;
+    long k, taken = 0;
+    for (k = 1; k <= steps || (sw_watch_pending(&w) && k <= steps + more); k++) {
+        taken = k;
         if (sw_sim_step(&s)) {
             out->verdict = SW_PROBE_BLOWN;
             snprintf(out->reason, sizeof out->reason, "%s", s.blow_reason);
@@ -110,7 +114,7 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
             break;
         }
     }
-    out->steps = k > steps ? steps : k;
+    out->steps = taken;
     if (out->verdict == SW_PROBE_STABLE) {
         sw_watch_verdict wv = sw_watch_finish(&w);
         if (wv != SW_WATCH_STEADY)

@@ -287,7 +287,7 @@ static int is_slow(double (*compute)(void))
 {
     double (*const slow[])(void) = { cl_l7_im_limit, cl_l7_verlet_theory, cl_l7_verlet_measured, cl_verlet_measured_wdt,
                                      cl_rk4_measured_wdt, cl_rk4_damped_measured, cl_rk4_small_stretch,
-                                     cl_gyre_first_error, cl_gyre_slope_min, cl_gyre_slope_max, cl_gyre_nfit };
+                                     cl_gyre_first_error, cl_gyre_slope_min, cl_gyre_slope_max };
     for (size_t i = 0; i < sizeof slow / sizeof slow[0]; i++)
         if (slow[i] == compute)
             return 1;

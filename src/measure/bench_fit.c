@@ -95,6 +95,17 @@ static int window_ok(const sw_bench_point *pts, int first, int last, double *ord
            *hi - *lo <= SW_BENCH_BAND_ABS + SW_BENCH_BAND_REL * fabs(*order);
 }
 
+/* The ceiling as the messages write it: 1e-2, or 0.5. */
+static const char *ceiling_text(const fit_ctx *r, char *buf, size_t len)
+{
+    double e = round(log10(r->ceiling));
+    if (r->ceiling == pow(10.0, e))
+        snprintf(buf, len, "1e%d", (int)e);
+    else
+        snprintf(buf, len, "%g", r->ceiling);
+    return buf;
+}
+
 /* Why there is no order, when the clean points are pts[first..last]
  * (last < first: none), into s->no_order and s->why. */
 static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
@@ -105,7 +116,7 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
      * while their steps span less than SW_BENCH_MIN_SPAN */
     while (fine > first && !(pts[fine].h >= SW_BENCH_MIN_SPAN * pts[last].h))
         fine--;
-    char past[80] = "";
+    char past[80] = "", ceil_txt[24];
     if (s->plateau >= 0) {
         const char *what = r->reference && s->floor <= SW_BENCH_MARGIN * r->ref_error
                                ? " (the reference's accuracy)"
@@ -139,15 +150,16 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
         if (past[0])
             snprintf(s->why, sizeof s->why, "past the asymptotic range: %s", past);
         else
-            snprintf(s->why, sizeof s->why, "no point between round-off and %.0e of the state", r->ceiling);
+            snprintf(s->why, sizeof s->why, "no point between round-off and %s of the state",
+                     ceiling_text(r, ceil_txt, sizeof ceil_txt));
     } else if (n < SW_BENCH_MIN_FIT && past[0]) {
         s->no_order = SW_BENCH_ORDER_PAST;
         snprintf(s->why, sizeof s->why, "past the asymptotic range: %s, only %d clean point%s above it (%d needed)",
                  past, n, n == 1 ? "" : "s", SW_BENCH_MIN_FIT);
     } else if (n < SW_BENCH_MIN_FIT) {
         s->no_order = SW_BENCH_ORDER_FEW;
-        snprintf(s->why, sizeof s->why, "only %d point%s between round-off and %.0e of the state (%d needed)", n,
-                 n == 1 ? "" : "s", r->ceiling, SW_BENCH_MIN_FIT);
+        snprintf(s->why, sizeof s->why, "only %d point%s between round-off and %s of the state (%d needed)", n,
+                 n == 1 ? "" : "s", ceiling_text(r, ceil_txt, sizeof ceil_txt), SW_BENCH_MIN_FIT);
     } else if (!steps_fall || pts[first].h < 1.25 * pts[last].h) {
         s->no_order = SW_BENCH_ORDER_STEPS;
         snprintf(s->why, sizeof s->why, "the steps do not shrink steadily as the tolerance tightens (mean step "

@@ -167,7 +167,6 @@ double cl_rk4_small_stretch(void);
 double cl_gyre_first_error(void);
 double cl_gyre_slope_min(void);
 double cl_gyre_slope_max(void);
-double cl_gyre_nfit(void);
 double cl_one(void);
 
 #endif

@@ -287,7 +287,7 @@ static int is_slow(double (*compute)(void))
 {
     double (*const slow[])(void) = { cl_l7_im_limit, cl_l7_verlet_theory, cl_l7_verlet_measured, cl_verlet_measured_wdt,
                                      cl_rk4_measured_wdt, cl_rk4_damped_measured, cl_rk4_small_stretch,
-                                     cl_gyre_first_error, cl_gyre_slope_min, cl_gyre_slope_max, cl_gyre_nfit,
+                                     cl_gyre_first_error, cl_gyre_slope_min, cl_gyre_slope_max,
                                      cl_water_euler_1s, cl_water_euler_8s, cl_dam_worst, cl_dam_ahead_least,
                                      cl_dam_ahead_most, cl_dam_behind_least, cl_dam_behind_most, cl_dam_default_nu,
                                      cl_big_dam_blowup };

@@ -58,6 +58,8 @@ typedef struct sw_walls {
     unsigned sides;      /* SW_WALL_* bits */
     double xmin, xmax, ymin, ymax;
     double e;            /* restitution, 0..1 */
+    double rest;         /* floor only: a ball leaving it slower than this is set at rest on it, a
+                            resting contact (Witkin & Baraff), not ever smaller bounces; 0: none */
 } sw_walls;
 
 enum { SW_WALL_FLOOR = 1, SW_WALL_LEFT = 2, SW_WALL_RIGHT = 4, SW_WALL_CEILING = 8 };

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "measure/bench.h"
 #include "stepwise/stepwise.h"
 
 void sw_app_truth_reset(sw_app *a)
@@ -204,6 +205,10 @@ static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *r
  * in the last place, summed over thousands of steps), never an order. */
 #define SW_APP_ROUNDING 1e-11
 
+/* The message fits errors up to half the motion (larger ones get "the
+ * error is N% of the motion" above): the order rule's ceiling here. */
+#define SW_APP_CEILING 0.5
+
 #define PHASE_NOTE ". Symplectic: energy and path kept, the error is phase"
 
 void sw_app_measure_dt_change(sw_app *a, double old_dt)
@@ -266,23 +271,31 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
     if (grow > 2) {
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows ×%.4g per step, "
                  "×%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
-    } else if (big > 0.5 * scale) {
+    } else if (big >= SW_APP_CEILING * scale) {
         /* an order shows only where the error is small: say which way that is */
         snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s%s",
                  head, big_dt, 100 * big / scale,
                  a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
                  (m->flags & SW_SYMPLECTIC) ? PHASE_NOTE : "");
     } else {
+        /* the three runs through the order rule every printed order
+         * passes (sw_bench_order_rule): above round-off, falling, local
+         * slopes within 0.15 + 0.03·p of each other */
         double small_dt = fmin(old_dt, a->dt), e_next = sw_app_measure(a, m, 0.5 * small_dt);
-        double next = small / e_next;
-        if (isfinite(next) && e_next > 0 && fabs(log2(ratio) - log2(next)) > 0.15) {
-            snprintf(a->message, sizeof a->message, "%s: not an order yet - at dt=%g the ratio is %.3g, still "
-                     "changing%s%s", head, 0.5 * small_dt, next,
+        double h[3] = { big_dt, small_dt, 0.5 * small_dt }, e[3] = { big, small, e_next };
+        long steps[3];
+        for (int k = 0; k < 3; k++)
+            steps[k] = (long)ceil(T / h[k]);
+        static sw_bench_series fit; /* large: kept off the stack; the app is single-threaded */
+        double order = sw_bench_order_rule(h, e, steps, 3, scale, SW_APP_CEILING, &fit);
+        if (isnan(order)) {
+            snprintf(a->message, sizeof a->message, "%s: not an order yet - with dt=%g too, %s%s%s", head,
+                     0.5 * small_dt, sw_bench_no_order_text(&fit),
                      a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
                      (m->flags & SW_SYMPLECTIC) && big > 0.05 * scale ? PHASE_NOTE : "");
         } else {
             a->error_ratio = ratio;
-            snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, log2(ratio));
+            snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, order);
         }
     }
 }

@@ -74,7 +74,7 @@ static void print_measure(const sw_integrator *m, const sw_integrator *ref)
     double order, wdt;
     int kind;
     char why[SW_ERRLEN];
-    if (sw_measure_order(m, &order, why, sizeof why) == SW_OK)
+    if (sw_measure_order(m, &order, NULL, why, sizeof why) == SW_OK)
         printf("  order      claimed %d, measured %.2f  (%s: %d)\n", m->order, order, ref->name,
                ref->order);
     else

@@ -175,8 +175,9 @@ int sw_particles_finish(sw_particles *p, char *err, size_t errlen)
 }
 
 /* Reflect a coordinate that crossed a wall back inside, losing the fraction
- * (1 - e) of its overshoot, and reverse its normal velocity scaled by e. */
-static int bounce(double *x, double *v, double wall, double sign, double e)
+ * (1 - e) of its overshoot, and reverse its normal velocity scaled by e;
+ * leaving slower than rest, it stays on the wall at rest (sw_walls.rest). */
+static int bounce(double *x, double *v, double wall, double sign, double e, double rest)
 {
     double over = sign * (*x - wall); /* > 0: outside */
     if (!(over > 0))
@@ -184,6 +185,10 @@ static int bounce(double *x, double *v, double wall, double sign, double e)
     *x = wall - sign * e * over;
     if (sign * *v > 0)
         *v = -e * *v;
+    if (fabs(*v) < rest) {
+        *x = wall;
+        *v = 0;
+    }
     return 1;
 }
 
@@ -196,13 +201,13 @@ int sw_particles_contact(sw_particles *p, double *y)
     for (int i = 0; i < p->n; i++) {
         double *x = y + 2 * i, *v = y + n2 + 2 * i;
         if (w->sides & SW_WALL_FLOOR)
-            changed |= bounce(&x[1], &v[1], w->ymin, -1.0, w->e);
+            changed |= bounce(&x[1], &v[1], w->ymin, -1.0, w->e, w->rest);
         if (w->sides & SW_WALL_CEILING)
-            changed |= bounce(&x[1], &v[1], w->ymax, 1.0, w->e);
+            changed |= bounce(&x[1], &v[1], w->ymax, 1.0, w->e, 0.0);
         if (w->sides & SW_WALL_LEFT)
-            changed |= bounce(&x[0], &v[0], w->xmin, -1.0, w->e);
+            changed |= bounce(&x[0], &v[0], w->xmin, -1.0, w->e, 0.0);
         if (w->sides & SW_WALL_RIGHT)
-            changed |= bounce(&x[0], &v[0], w->xmax, 1.0, w->e);
+            changed |= bounce(&x[0], &v[0], w->xmax, 1.0, w->e, 0.0);
     }
     return changed;
 }

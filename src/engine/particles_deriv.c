@@ -555,9 +555,22 @@ SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
     }
 }
 
-/* Two tail calls: the small path is set only while the compiled form is
- * current (swp_model_touch clears it), and the generic one compiles first
- * when it is not. */
+/* Resting contact (sw_walls.rest): a ball on the floor at rest, exactly
+ * (the contact put it there), is held by the floor's normal force, which
+ * cancels whatever pulls it down; pulled up, it leaves. Every stage of a
+ * step then leaves it where it is, so it stays at rest exactly. */
+static void hold_resting(const sw_particles *p, const double *y, double *dydt)
+{
+    int n2 = 2 * p->n;
+    double floor = p->walls.ymin;
+    for (int i = 0; i < p->n; i++)
+        if (y[2 * i + 1] == floor && y[n2 + 2 * i + 1] == 0 && dydt[n2 + 2 * i + 1] < 0)
+            dydt[n2 + 2 * i + 1] = 0;
+}
+
+/* The small path is set only while the compiled form is current
+ * (swp_model_touch clears it), and the generic one compiles first when it
+ * is not; a floor with resting contact then holds the balls on it. */
 void swp_deriv(void *ctx, double t, const double *y, double *dydt)
 {
     const sw_particles *p = ctx;
@@ -566,12 +579,17 @@ void swp_deriv(void *ctx, double t, const double *y, double *dydt)
         p->model->small(p, y, dydt);
     else
         deriv(ctx, y, dydt);
+    if (p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR))
+        hold_resting(p, y, dydt);
 }
 
 void swp_deriv_generic(void *ctx, double t, const double *y, double *dydt)
 {
+    const sw_particles *p = ctx;
     (void)t;
     deriv(ctx, y, dydt);
+    if (p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR))
+        hold_resting(p, y, dydt);
 }
 
 int swp_deriv_is_small(const sw_particles *p)

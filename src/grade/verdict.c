@@ -435,7 +435,7 @@ static void measure(sw_verdict *v, const sw_integrator *plugin)
     v->claimed_order = plugin->order;
     v->order = v->stability = NAN;
     char why[SW_ERRLEN];
-    if (sw_measure_order(plugin, &v->order, why, sizeof why) != SW_OK) {
+    if (sw_measure_order(plugin, &v->order, NULL, why, sizeof why) != SW_OK) {
         snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", why);
         return;
     }

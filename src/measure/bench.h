@@ -41,6 +41,9 @@
  * dynamics (the orbit at e = 0.97 amplifies it about 340 times); above it,
  * the error stops falling for another reason and is not called round-off. */
 #define SW_BENCH_ROUNDOFF 1e3
+/* bench fits no error from this fraction of the state up: coarser errors
+ * are seldom asymptotic, and a table of orders should not depend on luck. */
+#define SW_BENCH_CEILING 1e-2
 
 /* A run's error is the largest over the truth module's sample times
  * (sw_truth_sample_time): one report time may be special, the run is not. */
@@ -196,6 +199,23 @@ int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p
  * Returns the order, or NaN with no_order and why saying which rule failed;
  * never <= 0. */
 double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s);
+
+/* Round-off's share of an error after `steps` steps on a state of size
+ * scale: scale·(1e-13 + 4e-16·steps) (it grows at most about linearly
+ * with the steps). The floor each point of a sweep is judged against. */
+double sw_bench_roundoff(double scale, long steps);
+
+/* The order rule of sw_bench_fit for any measured sequence, the one rule
+ * every printed order passes (check's measured order, the Δt-halving
+ * message, the `w` plot): n points (at most SW_BENCH_MAX_POINTS, coarse to
+ * fine) with step h[i], error error[i] (NaN or infinite: the run blew up)
+ * after steps[i] steps (its floor: sw_bench_roundoff), on a state of size
+ * scale; errors from ceiling·scale up are not fitted (bench and check:
+ * SW_BENCH_CEILING; the Δt message, which says when the error is too large a
+ * share of the motion, more). Fills *s (method NULL) as sw_bench_fit does and returns the order, or NaN with s->why
+ * saying which rule failed. */
+double sw_bench_order_rule(const double *h, const double *error, const long *steps, int n, double scale,
+                           double ceiling, sw_bench_series *s);
 
 /* The cheapest measured point with error <= level: by wall time, or by
  * evaluations when by_evals. Returns the series index and sets *point, or -1. */

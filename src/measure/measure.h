@@ -7,17 +7,28 @@
 
 #include <stddef.h>
 
+#include "measure/bench.h"
 #include "stepwise/sim.h"
 
 /* The measuring problem: spring with c = 0 (k 10, m 1: ω = √10), to t = 2. */
 #define SW_MEASURE_T 2.0
+/* The sweep: from ω·dt = 0.51 (where an eighth-order error is still well
+ * above round-off) down to dt = 0.16/2^11 = 7.8e-5 (where a first-order
+ * one is below 1e-2 of the state for three halvings); stopped once four
+ * points carry an order. */
+#define SW_MEASURE_DT0 0.16
+#define SW_MEASURE_POINTS 12
+#define SW_MEASURE_SETTLED 4
+#define SW_MEASURE_DIM 16 /* room for the spring's state (position and velocity in the plane: 4) */
 
-/* Order: errors at t = SW_MEASURE_T against the exact solution for dt =
- * 0.02, 0.01, 0.005, 0.0025; *order is the slope of log error against
- * log dt, fitted by least squares over the steps whose error is above
- * round-off (1e-11). 0, or SW_EINVAL when a run blew up or failed (err says
- * why) or every error is at round-off. */
-int sw_measure_order(const sw_integrator *m, double *order, char *err, size_t errlen);
+/* Order: the largest error against the exact solution over the sample
+ * times to SW_MEASURE_T (sw_truth_sample_time) for dt = SW_MEASURE_DT0
+ * halved up to SW_MEASURE_POINTS - 1 times, until SW_MEASURE_SETTLED
+ * points carry an order or the error reaches round-off; *order is the
+ * order rule's (sw_bench_order_rule). *fit (NULL: not wanted) gets the
+ * points and the fit. 0, or SW_EINVAL with err saying why: a run failed,
+ * the plugin failed, or "no order: " and the rule's reason. */
+int sw_measure_order(const sw_integrator *m, double *order, sw_bench_series *fit, char *err, size_t errlen);
 
 /* Stability limit ω·dt on the same spring, from sw_stability_find. *kind
  * is its sw_stab_kind. 0, or a status with err filled. */

@@ -86,8 +86,12 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
     sw_watch_start(&w, (double)steps * dt / SW_WATCH_WINDOWS, &s);
     out->verdict = SW_PROBE_STABLE;
     int bound = s.sys.scene->energy && !sw_sim_energy_scale_is_motion(&s);
-    long k;
-    for (k = 1; k <= steps; k++) {
+    /* an orbit whose energy reached 0 near the end is run on until the
+     * watch has seen whether it stays unbound for a revolution */
+    long more = w.revolution > 0 ? (long)ceil(w.revolution / dt) + 1 : 0;
+    long k, taken = 0;
+    for (k = 1; k <= steps || (sw_watch_pending(&w) && k <= steps + more); k++) {
+        taken = k;
         if (sw_sim_step(&s)) {
             out->verdict = SW_PROBE_BLOWN;
             snprintf(out->reason, sizeof out->reason, "%s", s.blow_reason);
@@ -110,13 +114,15 @@ static int probe_from(const sw_scene *sc, const double *p, const sw_integrator *
             break;
         }
     }
-    out->steps = k > steps ? steps : k;
+    out->steps = taken;
     if (out->verdict == SW_PROBE_STABLE) {
         sw_watch_verdict wv = sw_watch_finish(&w);
         if (wv != SW_WATCH_STEADY)
             out->verdict = wv == SW_WATCH_BOUND ? SW_PROBE_BOUND : wv == SW_WATCH_RAISED ? SW_PROBE_RAISED
                                                                                          : SW_PROBE_TREND;
     }
+    double solve, eval = sw_truth_eval_work(&s.sys, &solve);
+    out->work = (double)sw_sim_evals(&s) * eval + (double)s.sys.ode->solver_iters * solve;
     free(y0);
     sw_sim_free(&s);
     return SW_OK;
@@ -192,10 +198,12 @@ static int probe(const sw_scene *sc, const double *p, const sw_integrator *m, do
     rc = probe_from(sc, p, m, dt, duration, st->small, c, &small, err, errlen);
     if (rc == SW_OK && small.verdict != SW_PROBE_STABLE && small.verdict != SW_PROBE_DECAYED) {
         small.steps += out->steps;
+        small.work += out->work;
         *out = small;
         out->small = 1;
     } else {
         out->steps += small.steps;
+        out->work += small.work;
     }
     return rc;
 }
@@ -352,6 +360,7 @@ static int run(search *q, double dt, double horizon, sw_stability_probe *pr)
     if (rc == SW_OK) {
         q->out->probes++;
         q->out->steps += pr->steps;
+        q->out->work += pr->work;
     }
     return rc;
 }
@@ -503,6 +512,7 @@ int sw_stability_find(const sw_scene *sc, const double *p, const sw_integrator *
     out->theory_unbounded = al.unbounded;
     out->stiff = al.stiffest;
     out->horizon = horizon;
+    out->work = al.ref_work;
     if (!sw_stability_measurable(sc, p, out->why, sizeof out->why))
         return SW_OK; /* theory only */
     out->measured = 1;

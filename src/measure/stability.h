@@ -57,6 +57,7 @@ typedef struct sw_stability_config {
 typedef struct sw_stability_probe {
     double dt;
     long steps;        /* steps taken (fewer than planned when it failed early) */
+    double work;       /* evaluations × sw_truth_eval_work + solver iterations × a solve's */
     int verdict;       /* SW_PROBE_* */
     double m_max;      /* largest M seen */
     int small;         /* the verdict is the small-amplitude copy's (see stability.c) */
@@ -75,6 +76,8 @@ typedef struct sw_stability_result {
     double horizon;     /* simulated time of the probes that set dt (longer where confirmed) */
     int probes;
     long steps;         /* summed over all probes */
+    double work;        /* the probes' and the theory's reference run's, in SW_WORK_REPORT's units:
+                           what the budget bounds (tests/check_stability_budget.c) */
     sw_stability_probe fail; /* the failing probe nearest the limit (NONE: the one at dt) */
     int measured;       /* 0: theory only (the scene's growth cannot be measured: why says so) */
     int agree;          /* theory and measurement within 2% (or both none / both unbounded) */

@@ -129,6 +129,13 @@ static const sw_param bounce_params[] = {
 
 #define BOX_W 10.0
 #define BOX_H 6.0
+/* A hop off the floor lower than this is no hop: the ball rests (a
+ * resting contact, as in Witkin & Baraff's notes), instead of bouncing
+ * ever lower, a geometric series of flights that never ends in steps. */
+#define REST_HOP 1e-3
+
+/* The speed that would lift a ball REST_HOP: leaving slower, it rests. */
+static double rest_speed(double g) { return g > 0 ? sqrt(2.0 * g * REST_HOP) : 0.0; }
 
 double sw_scene_hash01(uint64_t a, uint64_t b)
 {
@@ -165,6 +172,7 @@ static int bounce_build(sw_system *sys, char *err, size_t errlen)
     w->ymin = 0;
     w->ymax = BOX_H;
     w->e = p[BO_E];
+    w->rest = rest_speed(p[BO_G]);
     for (int i = 0; i < n; i++) {
         double s[4];
         bounce_seed(n, i, s);
@@ -198,7 +206,8 @@ static void exact_walls(double x, double v, double lo, double hi, double e, doub
 }
 
 /* Exact vertical motion: parabolic hops off the floor, each launched at e
- * times the landing speed, until the hops vanish (a finite total time). */
+ * times the landing speed, until one would leave slower than the resting
+ * speed: then the ball rests on the floor. */
 static void exact_floor(double y, double v, double g, double e, double t, double *yo, double *vo)
 {
     if (g <= 0) {
@@ -215,7 +224,7 @@ static void exact_floor(double y, double v, double g, double e, double t, double
         t -= tl;
         v = e * (g * tl - v);
         y = 0;
-        if (v < 1e-12)
+        if (v < rest_speed(g))
             break;
     }
     *yo = 0;
@@ -274,7 +283,9 @@ static double bounce_event_g(const sw_system *sys, int k, double t, const double
 
 /* At the contact (the ball a rounding error past the wall): the normal
  * velocity reversed and scaled by e, the overshoot reflected as the
- * step-boundary contact does, so the ball resumes inside. */
+ * step-boundary contact does, so the ball resumes inside; at the floor,
+ * leaving slower than the resting speed, it rests on it (g = 0 exactly
+ * there starts no event: the next steps' contacts keep it there). */
 static void bounce_event_jump(sw_system *sys, int k, double t, double *y)
 {
     (void)t;
@@ -288,6 +299,10 @@ static void bounce_event_jump(sw_system *sys, int k, double t, double *y)
         *x = wall - sign * w->e * over;
     if (sign * *v > 0)
         *v = -w->e * *v;
+    if (axis && fabs(*v) < w->rest) { /* resting contact: on the floor, at rest */
+        *x = wall;
+        *v = 0;
+    }
 }
 
 static const char *bounce_event_breaks(const sw_system *sys)

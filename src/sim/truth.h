@@ -236,6 +236,8 @@ typedef struct sw_truth_along {
     double t_growth;      /* the sample where it does */
     double growth_total;  /* at h: the growth accumulated over [0, t_end], each sample's growth per
                              step held over its share of the run */
+    double ref_work;      /* the reference run behind the samples: evaluations × sw_truth_eval_work
+                             (the same whether this call ran it or found it done) */
 } sw_truth_along;
 int sw_truth_along_run(const sw_scene *sc, const double *p, const sw_integrator *m, double t_end, int samples,
                        double h_max, double h, sw_truth_along *out, char *err, size_t errlen);

@@ -28,6 +28,7 @@ typedef struct along_memo {
     int stop_after;               /* 1: no truth beyond the start; the run stops after sample 0 */
     sw_spectrum *sp;              /* samples of them */
     double *t;
+    double ref_work;              /* what the reference run spent (sw_truth_eval_work × evaluations) */
 } along_memo;
 
 static along_memo memo;
@@ -92,6 +93,11 @@ static int memo_fill(const sw_scene *sc, const double *p, double t_end, int samp
             break;
         }
     }
+    memo.ref_work = 0;
+    if (tr.have_ref) {
+        double solve, eval = sw_truth_eval_work(&tr.ref.sys, &solve);
+        memo.ref_work = (double)sw_sim_evals(&tr.ref) * eval + (double)tr.ref.sys.ode->solver_iters * solve;
+    }
     sw_truth_free(&tr);
     memo.sc = sc;
     sw_scene_fill(sc, p, memo.p);
@@ -108,6 +114,7 @@ int sw_truth_along_run(const sw_scene *sc, const double *p, const sw_integrator 
         out->growth_total = NAN;
     if (memo_fill(sc, p, t_end, samples, err, errlen) != SW_OK)
         return -1;
+    out->ref_work = memo.ref_work;
     for (int k = 0; k <= memo.count && k < samples; k++) {
         if (k == memo.count) {
             if (!memo.failed)

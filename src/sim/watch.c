@@ -11,6 +11,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "engine/central.h"
+#include "engine/ode_fast.h"
+#include "util/num.h"
+
 
 double sw_watch_measure(const sw_sim *s, const double *y0)
 {
@@ -72,7 +76,10 @@ void sw_watch_init(sw_watch *w, double window, double raised)
     w->first_min = INFINITY;
     w->first_mean = NAN;
     w->last = NAN;
+    w->unbound_since = NAN;
 }
+
+int sw_watch_pending(const sw_watch *w) { return w->verdict == SW_WATCH_STEADY && !isnan(w->unbound_since); }
 
 double sw_watch_sampling_floor(const sw_watch *w)
 {
@@ -82,12 +89,25 @@ double sw_watch_sampling_floor(const sw_watch *w)
     return w->step_max * w->step_max / (8 * amplitude);
 }
 
+/* One revolution of a single body about a fixed centre from its energy at
+ * the start, T = 2π·μ/(−2ε)^(3/2) with ε = E/m; 0 when the system is not
+ * that or is not bound. */
+static double revolution(const sw_sim *s)
+{
+    sw_central1 c;
+    if (!sw_ode_central1(s->sys.ode, &c) || !(c.mu > 0) || !(c.mass > 0))
+        return 0;
+    double eps = s->energy0 / c.mass;
+    return eps < 0 ? 2 * SW_PI * c.mu / pow(-2 * eps, 1.5) : 0;
+}
+
 void sw_watch_start(sw_watch *w, double window, const sw_sim *s)
 {
     sw_watch_init(w, window, sw_watch_raised_level(s));
     if (bound_state(s)) {
         w->rebound = 0;
         w->escape = 2.0;
+        w->revolution = revolution(s);
     } else
         w->relative = (s->method->flags & SW_SYMPLECTIC) != 0;
 }
@@ -154,11 +174,18 @@ sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m)
         w->verdict = SW_WATCH_BOUND;
         return w->verdict;
     }
-    /* a bound orbit at E >= 0 is unbound at that step: a state the planet
-     * would leave from, however the next step brings it back */
+    /* a bound orbit at E >= 0 for a whole revolution has escaped: a
+     * planet whose energy touches 0 at a pericentre pass and comes back is
+     * still bound */
     if (w->escape > 0 && m >= w->escape) {
-        w->verdict = SW_WATCH_RAISED;
-        return w->verdict;
+        if (isnan(w->unbound_since))
+            w->unbound_since = t;
+        if (t - w->unbound_since >= w->revolution) {
+            w->verdict = SW_WATCH_RAISED;
+            return w->verdict;
+        }
+    } else {
+        w->unbound_since = NAN;
     }
     w->max_seen = fmax(w->max_seen, m);
     while (t - w->t0 >= w->window && w->window > 0) {

@@ -178,7 +178,6 @@ double cl_dam_behind_least(void);
 double cl_dam_behind_most(void);
 double cl_dam_default_nu(void);
 double cl_big_dam_blowup(void);
-double cl_gyre_nfit(void);
 double cl_one(void);
 
 #endif

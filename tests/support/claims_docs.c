@@ -1,8 +1,47 @@
 /* Claims: the figures of the README, the man page, docs/stability.md, the
  * authoring guide and the scenes' own strings, and how each is measured. */
 #include "claims.h"
+#include "measure/measure.h"
 
 static double reference_order(void) { return sw_truth_reference_method()->order; }
+
+/* try's measured order of rk4 (the handout's my_rk4.c is rk4), and where
+ * its sweep starts. */
+static double measured_rk4(void)
+{
+    double order;
+    char err[SW_ERRLEN];
+    return sw_measure_order(sw_integrator_find("rk4"), &order, NULL, err, sizeof err) == SW_OK ? order : NAN;
+}
+static double measure_dt0(void) { return SW_MEASURE_DT0; }
+
+/* The hop, in mm, that the bounce's resting speed would lift a ball:
+ * v²/(2g), v the largest speed a ball leaving the floor is set at rest
+ * with, found by bisection on the step-boundary contact (a ball 1e-9
+ * under the floor with upward speed e·v after it). */
+static double bounce_rest_hop_mm(void)
+{
+    const sw_scene *sc = sw_scene_find("bounce");
+    double p[SW_MAX_PARAMS], lo = 0, hi = 10;
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    sw_system sys;
+    if (sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK)
+        return NAN;
+    int n = sys.n;
+    for (int it = 0; it < 200; it++) {
+        double v = 0.5 * (lo + hi);
+        sys.y[1] = -1e-9;
+        sys.y[2 * n + 1] = -v / p[2]; /* lands at v/e: leaves at v */
+        sc->post_step(&sys, 0, sys.y);
+        if (sys.y[2 * n + 1] == 0)
+            lo = v;
+        else
+            hi = v;
+    }
+    sw_system_free(&sys);
+    return 1e3 * lo * lo / (2 * p[1]);
+}
 
 /* Backward Euler's energy gain on step 3 of the stiff pendulum held above
  * its anchor (k = 100, angle = 160, dt = 1): E3 - E2. */
@@ -469,6 +508,9 @@ const claim sw_claims_d[] = {
     { MAN, "Timing repeats per point, 1..15 (default {3})", bench_default_repeats, EXACT, 0, R_COUNT, NULL },
     { MAN, "with a {ten\\-thousandfold} smaller copy of the motion", stab_shrink, REL, 1e-12, R_COUNT, NULL },
     { MAN, "Where the two differ by more than {2}% a line says why", stab_agree, REL, 1e-12, R_COUNT, NULL },
+    { "docs/plugins.md", "spring as dt halves from {0.16}; a least-squares", measure_dt0, EXACT, 0, R_COUNT, NULL },
+    { "docs/scenes.md", "slower than √(2g·h), h = {1} mm (too slow", bounce_rest_hop_mm, REL, 1e-9, "the hop height at the scene's resting speed, from a 1-ball run", NULL },
+    { "docs/plugins.md", "order      claimed 4, measured {3.97}", measured_rk4, ROUNDED, 0, "sw_measure_order on rk4, as try prints it", NULL },
     /* docs/stability.md (its table: tests/e2e/test_stability_doc.sh) */
     { STAB, "It is taken at {16} times along the true solution", stab_samples, EXACT, 0, R_COUNT, NULL },
     { STAB, "\"none\" means the method grows already at |λ|·Δt = {0.01}", euler_grows_at_low, EXACT, 0, "the smallest |λ|·Δt probed, where Euler grows", NULL },

@@ -42,7 +42,9 @@ void ev_walls_at(double x, double v, double lo, double hi, double e, double t, d
 
 /* Vertical: y = y0 + v t - g t²/2 until it lands at the larger root of the
  * quadratic, t = (v + √(v² + 2 g y0)) / g; it leaves at e times the landing
- * speed. The landing times go into land[] (up to nland). */
+ * speed, unless that speed would lift it less than 1 mm (v² < 2 g·1e-3,
+ * the scene's resting contact): then it rests at y = 0. The landing times
+ * go into land[] (up to nland). */
 void ev_floor_at(double y, double v, double g, double e, double t, double *yo, double *vo,
                      double *land, int *nland)
 {
@@ -59,6 +61,11 @@ void ev_floor_at(double y, double v, double g, double e, double t, double *yo, d
         count++;
         v = e * (g * tl - v);
         y = 0;
+        if (v * v < 2.0 * g * 1e-3) {
+            v = 0;
+            g = 0; /* resting: the floor holds it */
+            break;
+        }
     }
     if (nland)
         *nland = count;

@@ -83,11 +83,11 @@ START_TEST(sandbox_says_how_a_child_ended)
     sw_child_end end;
     char err[SW_ERRLEN], how[120];
     ck_assert_int_eq(sw_sandbox_spawn(&c, child_exits, NULL, NULL, -1, err, sizeof err), SW_OK);
-    sw_sandbox_reap(&c, 5.0, &end);
+    sw_sandbox_reap(&c, 120.0, &end);
     sw_sandbox_describe(&end, how, sizeof how);
     ck_assert_str_eq(how, "exited with status 3");
     ck_assert_int_eq(sw_sandbox_spawn(&c, child_crashes, NULL, NULL, -1, err, sizeof err), SW_OK);
-    sw_sandbox_reap(&c, 5.0, &end);
+    sw_sandbox_reap(&c, 120.0, &end);
     sw_sandbox_describe(&end, how, sizeof how);
     ck_assert_str_eq(how, "crashed with SIGSEGV (invalid memory access)");
     ck_assert_int_eq(c.pid, 0);
@@ -111,14 +111,15 @@ START_TEST(sandbox_watchdog_stops_a_loop)
     double start = sw_sandbox_now();
     ck_assert_int_eq(sw_sandbox_read(c.from_child, &byte, 1, 0.2), -2);
     double took = sw_sandbox_now() - start;
-    ck_assert_msg(took >= 0.19 && took < 2.0, "the watchdog took %g s for a 0.2 s limit", took);
+    /* at least its limit; the upper bound only tells a hang from a busy machine */
+    ck_assert_msg(took >= 0.19 && took < 60.0, "the watchdog took %g s for a 0.2 s limit", took);
     sw_sandbox_kill(&c, &end);
     ck_assert(end.killed);
     /* Writing to a dead child is an error, not a SIGPIPE. */
     ck_assert_int_eq(sw_sandbox_spawn(&c, child_exits, NULL, NULL, -1, err, sizeof err), SW_OK);
     sw_child_end e2;
     int fd = dup(c.to_child);
-    sw_sandbox_reap(&c, 5.0, &e2);
+    sw_sandbox_reap(&c, 120.0, &e2);
     int rc = 0;
     for (int i = 0; i < 100 && rc == 0; i++)
         rc = sw_sandbox_write(fd, "x", 1);
@@ -127,8 +128,9 @@ START_TEST(sandbox_watchdog_stops_a_loop)
 }
 END_TEST
 
-/* CPU time: a loop under a 1 s limit dies of SIGXCPU (the limit is CPU
- * time, so the wall-clock bound is generous). */
+/* CPU time: a loop under a 1 s limit dies of SIGXCPU. The limit is CPU
+ * time, which a loaded machine hands out slowly (load 21 on two cores once
+ * took it past a 30 s wait): the wall-clock wait only guards a hang. */
 START_TEST(sandbox_cpu_limit)
 {
     sw_child c;
@@ -136,7 +138,7 @@ START_TEST(sandbox_cpu_limit)
     char err[SW_ERRLEN], how[120];
     sw_limits lim = { .cpu_seconds = 1 };
     ck_assert_int_eq(sw_sandbox_spawn(&c, child_loops, NULL, &lim, -1, err, sizeof err), SW_OK);
-    sw_sandbox_reap(&c, 30.0, &end);
+    sw_sandbox_reap(&c, 300.0, &end);
     sw_sandbox_describe(&end, how, sizeof how);
     ck_assert_msg(end.signal == SIGXCPU || end.signal == SIGKILL, "%s", how);
     ck_assert(!end.killed);
@@ -153,7 +155,7 @@ START_TEST(sandbox_memory_limit)
     char err[SW_ERRLEN];
     sw_limits lim = { .memory_bytes = (size_t)128 << 20 };
     ck_assert_int_eq(sw_sandbox_spawn(&c, child_allocates, NULL, &lim, -1, err, sizeof err), SW_OK);
-    sw_sandbox_reap(&c, 30.0, &end);
+    sw_sandbox_reap(&c, 300.0, &end);
     ck_assert(end.exited);
     ck_assert_int_eq(end.code, 4); /* 512 MiB refused under a 128 MiB limit */
 #endif

@@ -188,8 +188,16 @@ void sw_app_reset(sw_app *a);
  * restarts them from t = 0). */
 int sw_app_plugins_disable_failed(sw_app *a, char *msg, size_t len);
 
-/* (view.c) View actions: zoom, follow, lanes, phase and region views. 1 when handled. */
-int sw_app_view_apply(sw_app *a, sw_action act);
+/* (view.c) The view actions, each 1 (handled): zoom out (out) or in, the
+ * camera following or fixed, compare in lanes or overlaid, the phase view
+ * and its coordinate (how: 1 the next coordinate, +2/-2 the next/previous
+ * particle), the stability region. */
+int sw_app_zoom(sw_app *a, int out);
+int sw_app_toggle_follow(sw_app *a);
+int sw_app_toggle_lanes(sw_app *a);
+int sw_app_toggle_phase(sw_app *a);
+int sw_app_phase_next(sw_app *a, int how);
+int sw_app_toggle_region(sw_app *a);
 /* (view.c) Set the view (the lesson's @view); resets nothing. */
 void sw_app_set_view(sw_app *a, sw_app_view v);
 /* (view.c) Forget the phase paths (a reset, a new scene or coordinate). */

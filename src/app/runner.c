@@ -226,9 +226,14 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         if (r->scroll < 0)
             r->scroll = 0;
         return 1;
-    default:
+    case SW_ACT_ANSWER: /* answered above, while the page's question is open */
+    SW_PLAY_CASES /* the app's (app.c) */
+    SW_PANEL_CASES
+    case SW_ACT_NONE:
+    case SW_ACT_COUNT:
         return 0;
     }
+    return 0;
 }
 
 /* ---- the text pane ---------------------------------------------------------- */

@@ -138,6 +138,26 @@ typedef enum sw_action {
     SW_ACT_COUNT
 } sw_action;
 
+/* The case labels of one context's actions, generated from the list
+ * (SW_LESSON_CASES: `case SW_ACT_PAGE_NEXT: case ...:`). A switch over
+ * actions has no default (STYLE.md): it names the actions another module
+ * handles with these, so -Wswitch names it when a control is added. */
+#define SW_CASE_IF_PLAY_PLAY(action) case SW_ACT_##action:
+#define SW_CASE_IF_PLAY_LESSON(action)
+#define SW_CASE_IF_PLAY_PANEL(action)
+#define SW_CASE_IF_LESSON_PLAY(action)
+#define SW_CASE_IF_LESSON_LESSON(action) case SW_ACT_##action:
+#define SW_CASE_IF_LESSON_PANEL(action)
+#define SW_CASE_IF_PANEL_PLAY(action)
+#define SW_CASE_IF_PANEL_LESSON(action)
+#define SW_CASE_IF_PANEL_PANEL(action) case SW_ACT_##action:
+#define SW_X_PLAY_CASE(action, lock, context, ...) SW_CASE_IF_PLAY_##context(action)
+#define SW_X_LESSON_CASE(action, lock, context, ...) SW_CASE_IF_LESSON_##context(action)
+#define SW_X_PANEL_CASE(action, lock, context, ...) SW_CASE_IF_PANEL_##context(action)
+#define SW_PLAY_CASES SW_CONTROLS(SW_X_PLAY_CASE)
+#define SW_LESSON_CASES SW_CONTROLS(SW_X_LESSON_CASE)
+#define SW_PANEL_CASES SW_CONTROLS(SW_X_PANEL_CASE)
+
 /* Lock groups: a bit each in an sw_lock_mask. */
 enum {
 #define SW_G(group, name) SW_LOCK_BIT_##group,

@@ -276,9 +276,6 @@ const double *sw_app_ghost(sw_app *a);
  * (with err_velocity set: of a velocity, in m/s; NaN for a flow). NaN when
  * there is no truth or the run blew up. */
 double sw_app_error(sw_app *a, int i);
-/* (measure.c) The error of state y against truth for system sys: positions
- * (velocity 0) or velocities (1; NaN for a flow, which has none). */
-double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity);
 /* A field of a status line: its full and brief forms and how much it
  * matters (higher is kept longer when the line must shrink). */
 typedef struct sw_field {

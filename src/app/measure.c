@@ -62,7 +62,9 @@ const double *sw_app_ghost(sw_app *a)
     return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
-double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
+/* The error of state y against truth for system sys: positions (velocity
+ * 0) or velocities (1; NaN for a flow, which has none). */
+static double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
 {
     const sw_ode *ode = sys->ode;
     if (ode->order != 2) /* a flow's state is positions alone */

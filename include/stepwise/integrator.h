@@ -68,7 +68,7 @@ typedef struct sw_integrator {
 /* The most methods the table holds, built-ins and registered plugins
  * together (engine/integrators.c checks its rows at compile time): the UI
  * has a key to pick each (lesson/controls.c checks, at compile time too). */
-#define SW_METHODS_MAX 24
+#define SW_METHODS_MAX 28
 
 /* The built-in methods, in list order (positions 1..count in the UI). */
 int sw_integrator_count(void);

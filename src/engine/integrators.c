@@ -122,8 +122,8 @@ static const sw_integrator builtins[] = {
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
 #define MAX_EXTRA 8 /* plugins registered after the built-ins */
 _Static_assert(NBUILTIN + MAX_EXTRA <= SW_METHODS_MAX,
-               "a row too many: SW_METHODS_MAX (stepwise/integrator.h) counts the built-ins and 8 plugins, "
-               "and the UI needs a pick key for each (SW_PICK_KEYS in lesson/controls.h)");
+               "a row too many: the built-ins and 8 plugins must fit SW_METHODS_MAX (stepwise/integrator.h), "
+               "and the UI then needs a pick key for each (SW_PICK_KEYS in lesson/controls.h)");
 static sw_integrator extra[MAX_EXTRA];
 static char extra_disabled[MAX_EXTRA][SW_ERRLEN]; /* non-empty: why it is refused */
 static int nextra;

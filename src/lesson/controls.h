@@ -44,8 +44,9 @@ enum {
  * shifted keys beside them, so every built-in and every plugin (at most
  * SW_PICK_KEY_COUNT in all) has one. */
 #define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
-                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|'
-#define SW_PICK_KEY_COUNT 24
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|', \
+                     '~', ':', '"', '/'
+#define SW_PICK_KEY_COUNT 28
 
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'

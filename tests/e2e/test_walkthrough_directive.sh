@@ -7,11 +7,10 @@
 # (app/runner.c). It builds (warnings as errors), `lesson --check` takes a
 # good line and names file, line and column of a bad one and of a second
 # on one page (the table's .once), a page with it turns the trails on or
-# off when entered; and what the docs ask beside the code is named, not
-# silent: the docs test (tests/check_docs.c) names lessons/README.md's
-# missing @trails until it is written. The runner's line is the one step
-# no build or test names: a directive parsed and then ignored shows only
-# in a run, which this test makes (the trails on entering the page).
+# off when entered; and nothing is silent: before the runner's line, the
+# page fields test (tests/e2e/test_page_fields.sh) names the field the app
+# never reads and app/runner.c; the docs test (tests/check_docs.c) names
+# lessons/README.md's missing @trails until it is written.
 # Full tier only (make test-full).
 . "$(dirname "$0")/lib.sh"
 . "$ROOT/tests/e2e/walkthrough.sh"
@@ -32,6 +31,13 @@ insert_before "$copy/src/lesson/directives.c" '^/\* The directives: one line eac
 echo '    { .name = "trails", .run = d_trails, .once = 1, .init = i_trails },' >"$WORK/row"
 insert_in_table "$copy/src/lesson/directives.c" '^} directives\[\] = \{' "$WORK/row" ||
     fail "no directives[] table closed by '};' in directives.c"
+# Nothing silent: with the field parsed and the runner not told, the page
+# fields test names it and runner.c
+STEPWISE=$SW sh "$copy/tests/e2e/test_page_fields.sh" >"$WORK/fields.log" 2>&1 &&
+    fail "the page fields test passed with @trails parsed and never applied"
+grep -q "sw_lesson_page's trails is read nowhere in src/app/ (.*app/runner.c)" "$WORK/fields.log" ||
+    { cat "$WORK/fields.log"; fail "the page fields test does not name trails and runner.c"; }
+
 # 3. what entering the page does with it
 cat >"$WORK/enter" <<'X'
     if (pg->trails >= 0)
@@ -41,6 +47,8 @@ insert_before "$copy/src/app/runner.c" '^    if \(pg->events >= 0\)' "$WORK/ente
 
 walkthrough_build stepwise build/check_stepwise
 SWC=$copy/stepwise
+STEPWISE=$SWC sh "$copy/tests/e2e/test_page_fields.sh" >"$WORK/fields.log" 2>&1 ||
+    { cat "$WORK/fields.log"; fail "the page fields test fails with the runner's line in"; }
 
 # lesson --check: a good line, a bad one, one too many
 cat >"$WORK/good.lesson" <<'X'
@@ -95,4 +103,4 @@ got=$(XDG_STATE_HOME=$WORK/state "$WORK/enter" "$WORK/good.lesson") || fail "ent
     fail "the docs test passed without @trails in lessons/README.md"
 grep -q "lessons/README.md never shows '@trails'" "$WORK/docs.log" ||
     { cat "$WORK/docs.log"; fail "the docs test does not name the missing @trails"; }
-echo "directive walk-through: 3 files; the guide's missing row named; trails on and off on entering"
+echo "directive walk-through: 3 files; the runner's line and the guide's row named until written; trails on and off"

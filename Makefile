@@ -57,8 +57,14 @@ MAIN_OBJ = $(BUILD)/src/main.o
 TEST_SRC = $(wildcard tests/check_*.c)
 TEST_OBJ = $(TEST_SRC:%.c=$(BUILD)/%.o) $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/support/*.c))
 WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
-CORE_SRC = $(wildcard src/engine/*.c src/scenes/*.c src/sim/*.c) \
-           src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
+# The embedder's library in two parts, one split used twice: the methods,
+# and the derivative part (particles, forces, flow fields, the scenes and
+# the util modules they use), which the plugin host is built from alone.
+ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explicit.c implicit.c integrators.c \
+                 lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c)
+DERIV_SRC = $(filter-out $(ENGINE_METHODS),$(wildcard src/engine/*.c)) $(wildcard src/scenes/*.c) \
+            src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
+CORE_SRC = $(DERIV_SRC) $(ENGINE_METHODS) $(wildcard src/sim/*.c)
 CORE_OBJ = $(CORE_SRC:%.c=$(BUILD)/%.o)
 TOOLLIB  = $(BUILD)/libstepwise-tool.a
 LIB      = $(BUILD)/libstepwise.a
@@ -110,9 +116,7 @@ $(TESTBIN): $(TEST_OBJ) $(TOOLLIB)
 # -DSW_FIELD_ONLY), so a plugin has no answer in its memory to call. Always
 # built plain (no sanitizer: it defines malloc to see a step allocate), and
 # found beside the program, in build/ beside it, or in LIBEXECDIR.
-HOST_METHODS = adaptive dop853 dop853_lc explicit implicit integrators lecture mistakes regularise rk45 rkn rkn12 rosenbrock
-HOST_SRC = $(HOST_MAIN) $(wildcard src/scenes/*.c) src/plugin/jail_filter.c \
-           $(filter-out $(HOST_METHODS:%=src/engine/%.c),$(wildcard src/engine/*.c)) $(wildcard src/util/*.c)
+HOST_SRC = $(HOST_MAIN) $(DERIV_SRC) src/plugin/jail_filter.c
 HOST_OBJ = $(HOST_SRC:%.c=$(BUILD)/host-obj/%.o)
 $(BUILD)/host-obj/%.o: %.c | deps
 	@mkdir -p $(dir $@)

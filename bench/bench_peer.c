@@ -319,17 +319,56 @@ static double deriv_seconds(problem *pb)
     return best;
 }
 
-/* Whether stepwise's candidate c takes its steps fused with the field,
- * computes the orbit's field inline (rkn12 on one particle in one central
- * field) or steps it in regularised variables (dop853-lc): then its
- * evaluations do not call the derivative. */
+/* The derivative's calls, whole or in slices, counted by a copy of the
+ * problem's solver view whose deriv and deriv_part are these wrappers (its
+ * ctx and other fast paths the system's own). */
+static sw_deriv_fn *counted_deriv;
+static sw_deriv_part_fn *counted_part;
+static long deriv_calls;
+
+static void counting_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    deriv_calls++;
+    counted_deriv(ctx, t, y, dydt);
+}
+
+static void counting_part(void *ctx, double t, int len, const double *y, double *dydt)
+{
+    deriv_calls++;
+    counted_part(ctx, t, len, y, dydt);
+}
+
+/* Whether stepwise's candidate c makes its evaluations without calling the
+ * derivative: steps fused with the field, the orbit's field computed inline
+ * (rkn12 on one particle in one central field), or regularised variables
+ * (dop853-lc). Measured, not looked up by the method's name: its second
+ * step from the start (the first may call it to choose a step) calls the
+ * derivative, whole or in slices, or not. */
 static int fused(const problem *pb, const candidate *c)
 {
-    const sw_ode *ode = pb->sys.ode;
-    sw_central1 field;
-    return c->m && ((c->m->flags & SW_ONE_BODY) || (strcmp(c->name, "rk4") == 0 && sw_ode_fused_rk4(ode)) ||
-                    (strcmp(c->name, "euler") == 0 && sw_ode_fused_euler(ode)) ||
-                    (strcmp(c->name, "rkn12") == 0 && sw_ode_central1(ode, &field)));
+    if (!c->m)
+        return 0;
+    sw_ode ode = *pb->sys.ode;
+    struct sw_ode_fast fast;
+    counted_deriv = ode.deriv;
+    ode.deriv = counting_deriv;
+    if (ode.fast && ode.fast->deriv_part) {
+        fast = *ode.fast;
+        counted_part = fast.deriv_part;
+        fast.deriv_part = counting_part;
+        ode.fast = &fast;
+    }
+    char err[SW_ERRLEN];
+    sw_stepper *st = sw_stepper_new(c->m, &ode, err, sizeof err);
+    if (!st)
+        return 0;
+    double t = 0, h = pb->T / 1000;
+    memcpy(pb->y, pb->y0, sizeof *pb->y * (size_t)pb->dim);
+    int ok = sw_stepper_step(st, &ode, &t, pb->y, h) == SW_OK;
+    deriv_calls = 0;
+    ok = ok && sw_stepper_step(st, &ode, &t, pb->y, h) == SW_OK;
+    sw_stepper_delete(st);
+    return ok && deriv_calls == 0;
 }
 
 /* Paired, interleaved timing of the two cheapest runs: medians and spreads;

@@ -65,6 +65,13 @@ typedef struct sw_integrator {
 #define SW_RTOL_DEFAULT 1e-6
 #define SW_ATOL_DEFAULT 1e-9
 
+/* The most methods the table holds, built-ins and registered plugins
+ * together (engine/integrators.c checks its rows at compile time): the UI
+ * has a key to pick each (lesson/controls.c checks, at compile time too). */
+#define SW_METHODS_MAX 28
+/* The most methods registered after the built-ins (loaded plugins). */
+#define SW_REGISTERED_MAX 8
+
 /* The built-in methods, in list order (positions 1..count in the UI). */
 int sw_integrator_count(void);
 const sw_integrator *sw_integrator_at(int index);

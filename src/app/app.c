@@ -600,9 +600,27 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
     case SW_ACT_QUIT:
         a->quit = 1;
         return 1;
-    default:
-        return sw_app_view_apply(a, act); /* lesson actions belong to the lesson runner */
+    case SW_ACT_ZOOM_OUT:
+    case SW_ACT_ZOOM_IN:
+        return sw_app_zoom(a, act == SW_ACT_ZOOM_OUT);
+    case SW_ACT_FOLLOW:
+        return sw_app_toggle_follow(a);
+    case SW_ACT_LANES:
+        return sw_app_toggle_lanes(a);
+    case SW_ACT_PHASE:
+        return sw_app_toggle_phase(a);
+    case SW_ACT_PHASE_COORD:
+    case SW_ACT_PHASE_PREV:
+    case SW_ACT_PHASE_NEXT:
+        return sw_app_phase_next(a, act == SW_ACT_PHASE_COORD ? 1 : act == SW_ACT_PHASE_NEXT ? 2 : -2);
+    case SW_ACT_REGION:
+        return sw_app_toggle_region(a);
+    SW_LESSON_CASES /* the lesson runner's (runner.c) */
+    case SW_ACT_NONE:
+    case SW_ACT_COUNT:
+        return 0;
     }
+    return 0;
 }
 
 int sw_app_key(sw_app *a, int key, int in_lesson)

@@ -193,8 +193,16 @@ void sw_app_reset(sw_app *a);
  * restarts them from t = 0). */
 int sw_app_plugins_disable_failed(sw_app *a, char *msg, size_t len);
 
-/* (view.c) View actions: zoom, follow, lanes, phase and region views. 1 when handled. */
-int sw_app_view_apply(sw_app *a, sw_action act);
+/* (view.c) The view actions, each 1 (handled): zoom out (out) or in, the
+ * camera following or fixed, compare in lanes or overlaid, the phase view
+ * and its coordinate (how: 1 the next coordinate, +2/-2 the next/previous
+ * particle), the stability region. */
+int sw_app_zoom(sw_app *a, int out);
+int sw_app_toggle_follow(sw_app *a);
+int sw_app_toggle_lanes(sw_app *a);
+int sw_app_toggle_phase(sw_app *a);
+int sw_app_phase_next(sw_app *a, int how);
+int sw_app_toggle_region(sw_app *a);
 /* (view.c) Set the view (the lesson's @view); resets nothing. */
 void sw_app_set_view(sw_app *a, sw_app_view v);
 /* (view.c) Forget the phase paths (a reset, a new scene or coordinate). */
@@ -273,9 +281,6 @@ const double *sw_app_ghost(sw_app *a);
  * (with err_velocity set: of a velocity, in m/s; NaN for a flow). NaN when
  * there is no truth or the run blew up. */
 double sw_app_error(sw_app *a, int i);
-/* (measure.c) The error of state y against truth for system sys: positions
- * (velocity 0) or velocities (1; NaN for a flow, which has none). */
-double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity);
 /* A field of a status line: its full and brief forms and how much it
  * matters (higher is kept longer when the line must shrink). */
 typedef struct sw_field {

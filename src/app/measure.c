@@ -64,7 +64,9 @@ const double *sw_app_ghost(sw_app *a)
     return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
-double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
+/* The error of state y against truth for system sys: positions (velocity
+ * 0) or velocities (1; NaN for a flow, which has none). */
+static double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
 {
     const sw_ode *ode = sys->ode;
     if (ode->order != 2) /* a flow's state is positions alone */
@@ -173,9 +175,21 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
         return "measuring the error at the old and the new dt...";
     case SW_ACT_UNTIL:
         return a->until > 0 ? "running to the stop time..." : NULL;
-    default:
+    /* the rest answer at once */
+    case SW_ACT_NEXT_METHOD: case SW_ACT_PREV_METHOD: case SW_ACT_PICK_METHOD: case SW_ACT_PAUSE:
+    case SW_ACT_STEP: case SW_ACT_BACK: case SW_ACT_BACK_MANY: case SW_ACT_RESET: case SW_ACT_SLOWER:
+    case SW_ACT_FASTER: case SW_ACT_COMPARE: case SW_ACT_GHOST: case SW_ACT_TRAILS: case SW_ACT_GRAPH:
+    case SW_ACT_ERROR_KIND: case SW_ACT_BRAILLE: case SW_ACT_PANEL: case SW_ACT_RECORD: case SW_ACT_ZOOM_OUT:
+    case SW_ACT_ZOOM_IN: case SW_ACT_FOLLOW: case SW_ACT_LANES: case SW_ACT_PHASE: case SW_ACT_PHASE_COORD:
+    case SW_ACT_PHASE_PREV: case SW_ACT_PHASE_NEXT: case SW_ACT_REGION: case SW_ACT_STAGES:
+    case SW_ACT_STAGES_CLOSE: case SW_ACT_EVENTS: case SW_ACT_HELP: case SW_ACT_QUIT:
+    SW_LESSON_CASES
+    SW_PANEL_CASES
+    case SW_ACT_NONE:
+    case SW_ACT_COUNT:
         return NULL;
     }
+    return NULL;
 }
 
 /* The spectrum at the start (for the dt-change check), once per scene. */

@@ -213,6 +213,15 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
     }
     if (c->action >= SW_ACT_PAGE_NEXT && c->action <= SW_ACT_READ)
         a->message[0] = '\0'; /* a message stays until the next key */
+    if (c->action == SW_ACT_PAUSE && r->wide && a->paused) {
+        /* running in the reading mode would show nothing: the picture comes
+         * back (otherwise the app's, as every play action: below) */
+        if (!sw_app_apply(a, SW_ACT_PAUSE, 1))
+            return 1; /* (locked on this page: the app said so) */
+        r->wide = 0;
+        snprintf(a->message, sizeof a->message, "running: the picture again (o: reading mode)");
+        return 1;
+    }
     switch (c->action) {
     case SW_ACT_PAGE_NEXT:
         if (!r->complete[r->page] && !r->before[r->page]) {
@@ -231,15 +240,6 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         r->hint = !r->hint;
         r->hint_scroll = r->hint; /* the pane scrolls to it: it may sit below the text shown */
         return 1;
-    case SW_ACT_PAUSE:
-        /* running in the reading mode would show nothing: the picture comes back */
-        if (!r->wide || !a->paused)
-            return 0;
-        if (!sw_app_apply(a, SW_ACT_PAUSE, 1))
-            return 1; /* (locked on this page: the app said so) */
-        r->wide = 0;
-        snprintf(a->message, sizeof a->message, "running: the picture again (o: reading mode)");
-        return 1;
     case SW_ACT_READ:
         r->wide = !r->wide;
         snprintf(a->message, sizeof a->message, "%s", r->wide ? "reading mode: the text full width (o: the picture "
@@ -251,9 +251,14 @@ int sw_runner_key(sw_runner *r, sw_app *a, int key)
         if (r->scroll < 0)
             r->scroll = 0;
         return 1;
-    default:
+    case SW_ACT_ANSWER: /* answered above, while the page's question is open */
+    SW_PLAY_CASES /* the app's (app.c) */
+    SW_PANEL_CASES
+    case SW_ACT_NONE:
+    case SW_ACT_COUNT:
         return 0;
     }
+    return 0;
 }
 
 /* ---- the text pane ---------------------------------------------------------- */

@@ -68,58 +68,63 @@ static void phase_message(sw_app *a, const char *head)
              q, qu, a->phase_particle + 1, v, vu);
 }
 
-int sw_app_view_apply(sw_app *a, sw_action act)
+int sw_app_zoom(sw_app *a, int out)
+{
+    double z = out ? a->zoom * 2 : a->zoom / 2;
+    if (z < ZOOM_MIN || z > ZOOM_MAX) {
+        snprintf(a->message, sizeof a->message, "zoom stays between x%g and x%g", ZOOM_MIN, ZOOM_MAX);
+        return 1;
+    }
+    a->zoom = z;
+    snprintf(a->message, sizeof a->message, "view x%g the %s (z out, Z in)", z,
+             a->view == SW_VIEW_SCENE ? "scene's" : "natural size");
+    return 1;
+}
+
+int sw_app_toggle_follow(sw_app *a)
+{
+    a->follow = !a->follow;
+    snprintf(a->message, sizeof a->message, "%s", a->follow ? "camera follows the particles (f: fixed)"
+                                                            : "camera fixed on the scene (f: follow)");
+    return 1;
+}
+
+int sw_app_toggle_lanes(sw_app *a)
+{
+    a->lanes = !a->lanes;
+    snprintf(a->message, sizeof a->message, "%s%s", a->lanes ? "compare side by side" : "compare overlaid",
+             a->compare ? "" : " (press c to compare)");
+    return 1;
+}
+
+int sw_app_toggle_phase(sw_app *a)
 {
     const sw_system *sys = &a->sims[0].sys;
-    switch (act) {
-    case SW_ACT_ZOOM_OUT:
-    case SW_ACT_ZOOM_IN: {
-        double z = act == SW_ACT_ZOOM_OUT ? a->zoom * 2 : a->zoom / 2;
-        if (z < ZOOM_MIN || z > ZOOM_MAX) {
-            snprintf(a->message, sizeof a->message, "zoom stays between x%g and x%g", ZOOM_MIN, ZOOM_MAX);
-            return 1;
-        }
-        a->zoom = z;
-        snprintf(a->message, sizeof a->message, "view x%g the %s (z out, Z in)", z,
-                 a->view == SW_VIEW_SCENE ? "scene's" : "natural size");
-        return 1;
-    }
-    case SW_ACT_FOLLOW:
-        a->follow = !a->follow;
-        snprintf(a->message, sizeof a->message, "%s", a->follow ? "camera follows the particles (f: fixed)"
-                                                                : "camera fixed on the scene (f: follow)");
-        return 1;
-    case SW_ACT_LANES:
-        a->lanes = !a->lanes;
-        snprintf(a->message, sizeof a->message, "%s%s", a->lanes ? "compare side by side" : "compare overlaid",
-                 a->compare ? "" : " (press c to compare)");
-        return 1;
-    case SW_ACT_PHASE:
-        sw_app_set_view(a, a->view == SW_VIEW_PHASE ? SW_VIEW_SCENE : SW_VIEW_PHASE);
-        if (a->view == SW_VIEW_PHASE) {
-            if (!sw_phase_available(sys, a->phase_particle, a->phase_coord))
-                sw_phase_default(sys, &a->phase_particle, &a->phase_coord);
-            phase_message(a, "phase view: ");
-        } else
-            snprintf(a->message, sizeof a->message, "scene view");
-        return 1;
-    case SW_ACT_PHASE_COORD:
-    case SW_ACT_PHASE_PREV:
-    case SW_ACT_PHASE_NEXT:
-        sw_phase_cycle(sys, &a->phase_particle, &a->phase_coord,
-                       act == SW_ACT_PHASE_COORD ? 1 : act == SW_ACT_PHASE_NEXT ? 2 : -2);
-        sw_app_phase_clear(a);
-        phase_message(a, "");
-        return 1;
-    case SW_ACT_REGION:
-        sw_app_set_view(a, a->view == SW_VIEW_REGION ? SW_VIEW_SCENE : SW_VIEW_REGION);
-        if (a->view == SW_VIEW_REGION)
-            snprintf(a->message, sizeof a->message, "stability region of %s: +/- move the marks (dt x eigenvalues)",
-                     a->sims[0].method->name);
-        else
-            snprintf(a->message, sizeof a->message, "scene view");
-        return 1;
-    default:
-        return 0;
-    }
+    sw_app_set_view(a, a->view == SW_VIEW_PHASE ? SW_VIEW_SCENE : SW_VIEW_PHASE);
+    if (a->view == SW_VIEW_PHASE) {
+        if (!sw_phase_available(sys, a->phase_particle, a->phase_coord))
+            sw_phase_default(sys, &a->phase_particle, &a->phase_coord);
+        phase_message(a, "phase view: ");
+    } else
+        snprintf(a->message, sizeof a->message, "scene view");
+    return 1;
+}
+
+int sw_app_phase_next(sw_app *a, int how)
+{
+    sw_phase_cycle(&a->sims[0].sys, &a->phase_particle, &a->phase_coord, how);
+    sw_app_phase_clear(a);
+    phase_message(a, "");
+    return 1;
+}
+
+int sw_app_toggle_region(sw_app *a)
+{
+    sw_app_set_view(a, a->view == SW_VIEW_REGION ? SW_VIEW_SCENE : SW_VIEW_REGION);
+    if (a->view == SW_VIEW_REGION)
+        snprintf(a->message, sizeof a->message, "stability region of %s: +/- move the marks (dt x eigenvalues)",
+                 a->sims[0].method->name);
+    else
+        snprintf(a->message, sizeof a->message, "scene view");
+    return 1;
 }

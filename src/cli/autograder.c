@@ -19,6 +19,7 @@
 
 #include "grade/assignment.h"
 #include "plugin/sandbox.h"
+#include "util/beside.h"
 #include "util/outfile.h"
 #include "util/tmpdir.h"
 #include "util/zip.h"
@@ -419,7 +420,7 @@ int sw_cmd_autograder(int argc, char **argv)
     char srcdir[PATH_MAX];
     if (source)
         snprintf(srcdir, sizeof srcdir, "%s", source);
-    else if (!sw_cli_beside_binary("src", src_dir_ok, srcdir, sizeof srcdir))
+    else if (!sw_beside_binary("src", src_dir_ok, srcdir, sizeof srcdir))
         return sw_cli_error("autograder: no stepwise source tree beside this binary; give "
                             "--source DIR (a checkout of stepwise: the bundle builds it in "
                             "Gradescope's container)");

@@ -296,22 +296,25 @@ static void list_inapplicable(const sw_scene *sc, const double *p, const sw_inte
     const sw_integrator *refused[SW_BENCH_MAX_METHODS + 64];
     int nrefused = 0, count = n ? n : sw_integrator_count();
     unsigned why = 0; /* the kinds refused: implicit, x'' = f(x) only, one body only */
+    const char *one_body = ""; /* the method refused for wanting one body alone (named in the reason) */
     for (int i = 0; i < count && nrefused < (int)(sizeof refused / sizeof refused[0]); i++) {
         const sw_integrator *m = n ? wanted[i] : sw_integrator_at(i);
         if (sw_integrator_accepts(m, sys.ode, err, sizeof err) != SW_OK) {
             refused[nrefused++] = m;
             why |= m->flags & (SW_IMPLICIT | SW_ONE_BODY) ? m->flags & (SW_IMPLICIT | SW_ONE_BODY) : SW_POSITION_ONLY;
+            if (m->flags & SW_ONE_BODY)
+                one_body = m->name;
         }
     }
     size_t used = sw_names_join(buf, len, method_name_at, refused, nrefused);
     if (used > 0 && used < len && sys.kind == SW_SYS_FLOW)
         snprintf(buf + used, len - used, " (a flow field has no masses, or no Jacobian for implicit methods)");
     else if (used > 0 && used < len)
-        snprintf(buf + used, len - used, " (%s%s%s%s%s)", why & SW_IMPLICIT ? "no Jacobian at this size" : "",
+        snprintf(buf + used, len - used, " (%s%s%s%s%s%s)", why & SW_IMPLICIT ? "no Jacobian at this size" : "",
                  why & SW_IMPLICIT && why & ~SW_IMPLICIT ? "; " : "",
                  why & SW_POSITION_ONLY ? "a force reads velocities: x'' = f(x) only" : "",
-                 why & SW_POSITION_ONLY && why & SW_ONE_BODY ? "; " : "",
-                 why & SW_ONE_BODY ? "dop853-lc: one body alone in one central field" : "");
+                 why & SW_POSITION_ONLY && why & SW_ONE_BODY ? "; " : "", one_body,
+                 why & SW_ONE_BODY ? ": one body alone in one central field" : "");
     sw_system_free(&sys);
 }
 

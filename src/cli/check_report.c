@@ -90,7 +90,8 @@ static void json_end(FILE *out, int in, const char *key, const sw_run_end *e, in
     fputs(" }", out);
 }
 
-void sw_check_json(FILE *out, const sw_verdict *v, int in)
+/* The JSON verdict object on out, at indent in. */
+static void sw_check_json(FILE *out, const sw_verdict *v, int in)
 {
     const sw_check_result *r = &v->res;
     fputs("{", out);

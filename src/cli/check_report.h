@@ -13,7 +13,5 @@ int sw_check_print(const sw_verdict *v, int json);
 void sw_check_print_error(const char *msg);
 /* The plain report on out. */
 void sw_check_print_plain(FILE *out, const sw_verdict *v);
-/* The JSON verdict object on out, at indent (grade's per-submission detail). */
-void sw_check_json(FILE *out, const sw_verdict *v, int indent);
 
 #endif

@@ -71,9 +71,6 @@ int sw_cli_plugin(const char *path);
 /* Compile a plugin's C source with the documented flags into a private
  * temporary directory (removed at exit); the .so's path into so. */
 int sw_cli_build_plugin(const char *src, char *so, size_t solen);
-/* The same into dir/NAME.so (and NAME.log); 0 or a status with err filled. */
-int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
-                          size_t solen, char *err, size_t errlen);
 int sw_cmd_grade(int argc, char **argv);
 /* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
 int sw_cmd_autograder(int argc, char **argv);
@@ -83,10 +80,6 @@ int sw_cmd_try(int argc, char **argv);
 int sw_cli_finish_opts(sw_run_opts *o);
 /* Initialise a sim from options; prints the error and returns SW_EXIT_USAGE on failure. */
 int sw_cli_sim(sw_sim *s, const sw_run_opts *o);
-
-/* The first of the binary's directory and up to three above it where
- * DIR/sub satisfies ok (a build tree); 1 with the path in out, else 0. */
-int sw_cli_beside_binary(const char *sub, int (*ok)(const char *path), char *out, size_t len);
 
 /* Flush standard output: 0, or 2 with "cannot write standard output: why"
  * on stderr (a full disk, a closed pipe). Every command's output ends here. */

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "trace/trace.h"
+#include "util/beside.h"
 #include "util/escape.h"
 #include "util/num.h"
 
@@ -183,25 +184,6 @@ static int has_lessons(const char *dir)
     return found;
 }
 
-int sw_cli_beside_binary(const char *sub, int (*ok)(const char *path), char *out, size_t len)
-{
-    char exe[2048];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0)
-        return 0;
-    exe[n] = '\0';
-    for (int up = 0; up < 4; up++) {
-        char *slash = strrchr(exe, '/');
-        if (!slash)
-            break;
-        *slash = '\0';
-        snprintf(out, len, "%s/%s", exe, sub);
-        if (ok(out))
-            return 1;
-    }
-    return 0;
-}
-
 const char *sw_cli_lessons_dir(void)
 {
     static char dir[2100];
@@ -211,7 +193,7 @@ const char *sw_cli_lessons_dir(void)
     /* A build tree: lessons/ beside the binary or a few levels up (build/san/
      * stepwise finds the checkout's lessons); then the working directory;
      * then the installed lessons. */
-    if (sw_cli_beside_binary("lessons", has_lessons, dir, sizeof dir))
+    if (sw_beside_binary("lessons", has_lessons, dir, sizeof dir))
         return dir;
     if (has_lessons("lessons"))
         return "lessons";

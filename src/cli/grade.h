@@ -86,7 +86,6 @@ typedef struct grade_list {
     char *similar_table;                 /* the pairs, in words, printed after the rows */
 } grade_list;
 
-int grade_list_add(grade_list *l, const char *path, int plugin);
 /* Add the submission FILE, or every entry of the directory DIR (sorted by
  * path): regular files named .trace, .csv, .so or .c to grade; anything
  * else (a link, a FIFO, a device, a subdirectory, a hidden or unknown file,
@@ -138,7 +137,6 @@ void grade_points_of(const grade_list *l, const grade_entry *e, double *score, d
  * graded file's "# student:" line, add a row for every student nobody's
  * submission matched. Each returns SW_EXIT_OK or SW_EXIT_USAGE, printed. */
 int grade_roster_load(grade_list *l, const char *path);
-void grade_roster_assign(grade_list *l);
 void grade_roster_claim(const grade_list *l, grade_entry *e);
 int grade_roster_missing(grade_list *l);
 /* Gradescope's submission_metadata.json: its first user's e-mail into

@@ -191,6 +191,8 @@ static grade_entry *last_row(grade_list *l, int graded)
     return graded ? &l->items[l->n - 1] : &l->refused[l->ignored - 1];
 }
 
+static int grade_list_add(grade_list *l, const char *path, int plugin);
+
 /* Judge one entry and add it to the submissions or to the refused; rel is
  * what the roster matches. */
 static int take(grade_list *list, const char *path, const char *name, const char *rel,
@@ -453,7 +455,7 @@ const char *grade_inside_submissions(const grade_list *l, const char *real)
     return NULL;
 }
 
-int grade_list_add(grade_list *l, const char *path, int plugin)
+static int grade_list_add(grade_list *l, const char *path, int plugin)
 {
     if (l->n == l->cap) {
         int cap = l->cap ? 2 * l->cap : 32;

@@ -76,7 +76,7 @@ static void assign_one(const sw_roster *r, grade_entry *e, int graded)
     }
 }
 
-void grade_roster_assign(grade_list *l)
+static void grade_roster_assign(grade_list *l)
 {
     if (!l->roster)
         return;

@@ -15,6 +15,7 @@
 
 #include "cli/check_report.h"
 #include "cli/cli.h"
+#include "plugin/plugin_build.h"
 #include "plugin/sandbox.h"
 #include "grade/similar.h"
 #include "grade/verdict.h"
@@ -269,7 +270,7 @@ int grade_worker(void *ctx, int in, int out)
         size_t len = strlen(path);
         if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
             snprintf(name, sizeof name, "s%d", job->index);
-            rc = sw_cli_compile_plugin(path, job->build_dir, name, so, sizeof so, err, sizeof err);
+            rc = sw_plugin_compile(path, job->build_dir, name, so, sizeof so, err, sizeof err);
             path = so;
         }
         if (rc == SW_OK)

@@ -1,11 +1,41 @@
 /* --plugin PATH for every subcommand: a shared object loaded as is, a C
- * source built first (plugin_build.c). Apart from common.c so that the
- * helpers the builder uses never call back into it. */
+ * source built first (plugin/plugin_build.c) into a private temporary
+ * directory removed when stepwise ends, however it ends (util/tmpdir.h: at
+ * exit, or by a watcher after a signal or a crash). */
 #include "cli/cli.h"
 
+#include <limits.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "plugin/plugin.h"
+#include "plugin/plugin_build.h"
+#include "util/tmpdir.h"
+
+static char build_dir[PATH_MAX];
+static pid_t build_dir_owner;
+
+int sw_cli_build_plugin(const char *src, char *so, size_t solen)
+{
+    static int count;
+    char err[SW_ERRLEN + 256], name[16];
+    if (!build_dir[0] || build_dir_owner != getpid()) {
+        if (sw_tmpdir_make("plugins", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
+            build_dir[0] = '\0';
+            return sw_cli_error("--plugin: %s", err);
+        }
+        build_dir_owner = getpid();
+        count = 0;
+    }
+    if (count == 64)
+        return sw_cli_error("--plugin: at most 64 plugins are built per run");
+    snprintf(name, sizeof name, "p%d", count++);
+    if (sw_plugin_compile(src, build_dir, name, so, solen, err, sizeof err) != SW_OK)
+        return sw_cli_error("%s", err);
+    return SW_EXIT_OK;
+}
+
 
 int sw_cli_plugin(const char *path)
 {

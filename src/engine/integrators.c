@@ -120,9 +120,11 @@ static const sw_integrator builtins[] = {
 };
 
 #define NBUILTIN ((int)(sizeof builtins / sizeof builtins[0]))
-#define MAX_EXTRA 8
-static sw_integrator extra[MAX_EXTRA];
-static char extra_disabled[MAX_EXTRA][SW_ERRLEN]; /* non-empty: why it is refused */
+_Static_assert(NBUILTIN + SW_REGISTERED_MAX <= SW_METHODS_MAX,
+               "a row too many: the built-ins and SW_REGISTERED_MAX plugins must fit SW_METHODS_MAX "
+               "(stepwise/integrator.h), and the UI then needs a pick key for each (SW_PICK_KEYS, lesson/controls.h)");
+static sw_integrator extra[SW_REGISTERED_MAX];
+static char extra_disabled[SW_REGISTERED_MAX][SW_ERRLEN]; /* non-empty: why it is refused */
 static int nextra;
 
 int sw_integrator_count(void) { return NBUILTIN + nextra; }
@@ -159,8 +161,8 @@ int sw_integrator_register(const sw_integrator *method, char *err, size_t errlen
         snprintf(err, errlen, "an integrator named '%s' already exists", method->name);
         return SW_EINVAL;
     }
-    if (nextra == MAX_EXTRA) {
-        snprintf(err, errlen, "at most %d plugin integrators can be loaded", MAX_EXTRA);
+    if (nextra == SW_REGISTERED_MAX) {
+        snprintf(err, errlen, "at most %d plugin integrators can be loaded", SW_REGISTERED_MAX);
         return SW_EINVAL;
     }
     extra[nextra++] = *method;

@@ -6,6 +6,15 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "stepwise/integrator.h"
+
+/* Every method the table can hold has a key that picks it, and
+ * SW_PICK_KEY_COUNT counts the keys SW_PICK_KEYS lists. */
+_Static_assert(SW_PICK_KEY_COUNT >= SW_METHODS_MAX,
+               "SW_PICK_KEYS needs a key for each of the SW_METHODS_MAX methods (stepwise/integrator.h)");
+_Static_assert(sizeof (int[]){ SW_PICK_KEYS } / sizeof(int) == SW_PICK_KEY_COUNT,
+               "SW_PICK_KEY_COUNT must count the keys in SW_PICK_KEYS");
+
 #define SW_X(action, lock, context, name, keys, help_keys, help) \
     static const int keys_##action[] = keys;
 SW_CONTROLS(SW_X)

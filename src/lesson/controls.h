@@ -44,8 +44,9 @@ enum {
  * shifted keys beside them, so every built-in and every plugin (at most
  * SW_PICK_KEY_COUNT in all) has one. */
 #define SW_PICK_KEYS '1', '2', '3', '4', '5', '6', '7', '8', '9', '0', \
-                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|'
-#define SW_PICK_KEY_COUNT 24
+                     '!', '@', '#', '$', '%', '^', '&', '*', '(', ')', '_', '{', '}', '|', \
+                     '~', ':', '"', '/'
+#define SW_PICK_KEY_COUNT 28
 
 /* The answer keys: SW_ANSWER_FIRST + i answers choice i (a) .. f)). */
 #define SW_ANSWER_FIRST 'A'
@@ -137,6 +138,26 @@ typedef enum sw_action {
 #undef SW_X
     SW_ACT_COUNT
 } sw_action;
+
+/* The case labels of one context's actions, generated from the list
+ * (SW_LESSON_CASES: `case SW_ACT_PAGE_NEXT: case ...:`). A switch over
+ * actions has no default (STYLE.md): it names the actions another module
+ * handles with these, so -Wswitch names it when a control is added. */
+#define SW_CASE_IF_PLAY_PLAY(action) case SW_ACT_##action:
+#define SW_CASE_IF_PLAY_LESSON(action)
+#define SW_CASE_IF_PLAY_PANEL(action)
+#define SW_CASE_IF_LESSON_PLAY(action)
+#define SW_CASE_IF_LESSON_LESSON(action) case SW_ACT_##action:
+#define SW_CASE_IF_LESSON_PANEL(action)
+#define SW_CASE_IF_PANEL_PLAY(action)
+#define SW_CASE_IF_PANEL_LESSON(action)
+#define SW_CASE_IF_PANEL_PANEL(action) case SW_ACT_##action:
+#define SW_X_PLAY_CASE(action, lock, context, ...) SW_CASE_IF_PLAY_##context(action)
+#define SW_X_LESSON_CASE(action, lock, context, ...) SW_CASE_IF_LESSON_##context(action)
+#define SW_X_PANEL_CASE(action, lock, context, ...) SW_CASE_IF_PANEL_##context(action)
+#define SW_PLAY_CASES SW_CONTROLS(SW_X_PLAY_CASE)
+#define SW_LESSON_CASES SW_CONTROLS(SW_X_LESSON_CASE)
+#define SW_PANEL_CASES SW_CONTROLS(SW_X_PANEL_CASE)
 
 /* Lock groups: a bit each in an sw_lock_mask. */
 enum {

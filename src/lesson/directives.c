@@ -525,6 +525,11 @@ static const char *directive_name_at(const void *ctx, int i)
     return directives[i].name;
 }
 
+const char *sw_lp_directive_name(int i)
+{
+    return i >= 0 && i < NDIRECTIVES ? directives[i].name : NULL;
+}
+
 int sw_lp_directive(sw_lp_parser *ps, size_t at)
 {
     if (!sw_lp_page(ps))

@@ -96,6 +96,8 @@ int sw_lp_add_prose(sw_lp_parser *ps, const char *s, size_t len, int verbatim);
 
 /* ---- directives.c ---- */
 int sw_lp_directive(sw_lp_parser *ps, size_t at);
+/* The name of the table's i-th directive ("scene"), NULL past the last. */
+const char *sw_lp_directive_name(int i);
 /* A new page's "leave as is" settings, from every directive that has one. */
 void sw_lp_page_defaults(sw_lesson_page *pg);
 

@@ -15,7 +15,7 @@
 #include "stepwise/sim.h"
 #include "util/escape.h" /* sw_escape: how a plugin's bytes reach a message */
 
-#define SW_PLUGIN_MAX 8
+#define SW_PLUGIN_MAX SW_REGISTERED_MAX /* each registers its method */
 /* Names: 1 to 40 bytes of [A-Za-z0-9._+-], starting with a letter or digit. */
 #define SW_PLUGIN_NAME_MAX 40
 /* Labels: 1 to 80 bytes of printable text (UTF-8), no control characters,

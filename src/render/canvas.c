@@ -226,7 +226,8 @@ int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, in
     return to_grid(&g, c, x, y, col, row);
 }
 
-void sw_canvas_point_faded(sw_canvas *c, double x, double y, uint32_t glyph, int style, int fade)
+/* A point with a fade level: 0 full, 1 newer trail, 2 older trail. */
+static void sw_canvas_point_faded(sw_canvas *c, double x, double y, uint32_t glyph, int style, int fade)
 {
     grid g = grid_of(c, c->mode == SW_CANVAS_BRAILLE);
     int gc, gr;

@@ -136,8 +136,6 @@ int sw_canvas_world_to_cell(const sw_canvas *c, double x, double y, int *col, in
 /* A point: in ASCII mode the cell gets glyph (0: 'o'); in Braille mode its
  * dot is set (glyph unused). Off-canvas or non-finite points are skipped. */
 void sw_canvas_point(sw_canvas *c, double x, double y, uint32_t glyph, int style);
-/* The same with a fade level: 0 full, 1 newer trail, 2 older trail. */
-void sw_canvas_point_faded(sw_canvas *c, double x, double y, uint32_t glyph, int style, int fade);
 /* A marker: the cell gets glyph (0: 'o') in either mode (anchors, sun, particles). */
 void sw_canvas_mark(sw_canvas *c, double x, double y, uint32_t glyph, int style);
 /* A line from (x0, y0) to (x1, y1), clipped; glyph 0 picks one by the on-screen

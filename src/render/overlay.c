@@ -60,8 +60,10 @@ static void box(sw_screen *scr, int row, int col, int height, int width, const c
         sw_screen_text(scr, r0 + 1 + i, c0 + 2, w - 4, style, lines[i]);
 }
 
-void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
-                 const char *const *lines, int n, int style)
+/* A boxed overlay of lines, centred in the rectangle, each line fitted to
+ * its width (the caller wraps). */
+static void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
+                        const char *const *lines, int n, int style)
 {
     box(scr, row, col, height, width, title, lines, n, style, NULL, 0);
 }

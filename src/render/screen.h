@@ -100,10 +100,6 @@ void sw_draw_help(sw_app *a, sw_screen *scr, int row, int col, int height, int w
 int sw_help_pages(int height, int width, int in_lesson);
 void sw_draw_panel(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
 void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, int width);
-/* (overlay.c) A boxed overlay of lines, centred in the rectangle, each line
- * fitted to its width (the caller wraps). */
-void sw_draw_box(sw_screen *scr, int row, int col, int height, int width, const char *title,
-                 const char *const *lines, int n, int style);
 /* (overlay.c) Write text wrapped to width on rows row.., at most max rows;
  * returns the rows used. */
 int sw_screen_wrapped(sw_screen *scr, int row, int col, int width, int max, int style, const char *text);

@@ -81,7 +81,14 @@ void sw_watch_init(sw_watch *w, double window, double raised)
 
 int sw_watch_pending(const sw_watch *w) { return w->verdict == SW_WATCH_STEADY && !isnan(w->unbound_since); }
 
-double sw_watch_sampling_floor(const sw_watch *w)
+/* How far a window's sampled peak of M can lie below the oscillation's
+ * true peak, from the samples alone: an oscillation M = c + A·cos(θ)
+ * sampled every φ of phase moves at most A·φ between samples, and its
+ * sampled peak misses the true one by up to A·(1 - cos(φ/2)) ≈ A·φ²/8 =
+ * step_max²/(8·A), A half the first window's range. Peaks that creep up
+ * by less than this (as the sampling phase drifts towards the crest) are
+ * no growth. 0 before two windows. */
+static double sw_watch_sampling_floor(const sw_watch *w)
 {
     double amplitude = (w->first_max - w->first_min) / 2;
     if (w->windows < 1 || !(amplitude > 0))

@@ -18,7 +18,7 @@ typedef enum sw_watch_verdict {
                              that many times its lowest window: growth a nonlinearity capped
                              (see sw_watch_raised_level); a bound orbit: E >= 0 at any sample */
     SW_WATCH_TREND = 3    /* M's window peaks climbed window after window by more than
-                             sampling an oscillation can make them (see sw_watch_sampling_floor),
+                             sampling an oscillation can make them (see sw_watch_sampling_floor in watch.c),
                              or the latest peak stands above the first by more than the first
                              varied */
 } sw_watch_verdict;
@@ -99,14 +99,6 @@ int sw_watch_pending(const sw_watch *w);
 sw_watch_verdict sw_watch_add(sw_watch *w, double t, double m);
 /* Close the window in progress (the end of a run) and judge it too. */
 sw_watch_verdict sw_watch_finish(sw_watch *w);
-/* How far a window's sampled peak of M can lie below the oscillation's
- * true peak, from the samples alone: an oscillation M = c + A·cos(θ)
- * sampled every φ of phase moves at most A·φ between samples, and its
- * sampled peak misses the true one by up to A·(1 - cos(φ/2)) ≈ A·φ²/8 =
- * step_max²/(8·A), A half the first window's range. Peaks that creep up
- * by less than this (as the sampling phase drifts towards the crest) are
- * no growth. 0 before two windows. */
-double sw_watch_sampling_floor(const sw_watch *w);
 /* A few words for a verdict ("energy x1000", ...). */
 const char *sw_watch_text(sw_watch_verdict v);
 

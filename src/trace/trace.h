@@ -84,8 +84,6 @@ int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen
  * step 0), the header row and row 0. 0, SW_EINVAL or SW_EIO. */
 int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spec,
                    char *err, size_t errlen);
-/* Write the sim's current row, whole, and flush it. 0 or SW_EIO. */
-int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
 /* After each step: write the row when the spec records this step. 0 or SW_EIO. */
 int sw_trace_observe(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
 /* Finish: the last row if not yet written, a "# diverged:" line after a

@@ -56,6 +56,9 @@ int sw_trace_open(sw_trace_writer *w, const char *path, char *err, size_t errlen
     return rc;
 }
 
+/* Write the sim's current row, whole, and flush it. 0 or SW_EIO. */
+static int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen);
+
 int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spec,
                    char *err, size_t errlen)
 {
@@ -107,7 +110,7 @@ int sw_trace_begin(sw_trace_writer *w, const sw_sim *s, const sw_trace_spec *spe
     return sw_trace_write_row(w, s, err, errlen);
 }
 
-int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
+static int sw_trace_write_row(sw_trace_writer *w, const sw_sim *s, char *err, size_t errlen)
 {
     const sw_system *sys = &s->sys;
     double cell[4];

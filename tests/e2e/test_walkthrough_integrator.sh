@@ -12,31 +12,9 @@
 # the method-name test must still pass. A minute or two of building:
 # full tier only (make test-full).
 . "$(dirname "$0")/lib.sh"
-if [ -n "${SW_TEST_QUICK:-}" ]; then
-    echo "skip: the integrator walk-through is built in a scratch copy at the full tier (make test-full)"
-    exit 77
-fi
-
-copy=$WORK/copy
-mkdir -p "$copy"
-# the tree as it is (built objects too, so only what the walk-through
-# touches is compiled again), without the program and its git data
-(cd "$ROOT" && tar --exclude=./.git --exclude=./stepwise -cf - .) | (cd "$copy" && tar -xf -) ||
-    fail "cannot copy the tree"
-
-# insert_before FILE ERE TEXTFILE: TEXTFILE's lines before the last line of
-# FILE matching ERE (fails when none does).
-insert_before() {
-    awk -v re="$2" -v add="$3" '
-        { line[NR] = $0; if ($0 ~ re) last = NR }
-        END {
-            if (!last) exit 1
-            for (i = 1; i <= NR; i++) {
-                if (i == last) while ((getline l < add) > 0) print l
-                print line[i]
-            }
-        }' "$1" >"$1.new" && mv "$1.new" "$1"
-}
+. "$ROOT/tests/e2e/walkthrough.sh"
+walkthrough_full integrator
+walkthrough_copy
 
 # 1. its step function in the family's file
 cat >>"$copy/src/engine/explicit.c" <<'EOF'
@@ -65,13 +43,8 @@ cat >"$WORK/row" <<'EOF'
       .stability = 0.0, .work_vectors = 3, .step = sw_step_ralston,
       .summary = "y1 = y0 + h/4 (f(y0) + 3 f(y0 + 2h/3 f(y0)))", .lecture = &sw_lecture_ralston },
 EOF
-awk -v add="$WORK/row" '
-    /^static const sw_integrator builtins\[\] = \{/ { inside = 1 }
-    inside && /^\};/ { while ((getline l < add) > 0) print l; inside = 0; done = 1 }
-    { print }
-    END { if (!done) exit 1 }' "$copy/src/engine/integrators.c" >"$WORK/table" ||
+insert_in_table "$copy/src/engine/integrators.c" '^static const sw_integrator builtins\[\] = \{' "$WORK/row" ||
     fail "no builtins[] table closed by '};' in integrators.c"
-mv "$WORK/table" "$copy/src/engine/integrators.c"
 # 4. its script in engine/lecture.c, 5. its extern in engine/lecture.h
 cat >>"$copy/src/engine/lecture.c" <<'EOF'
 
@@ -90,8 +63,7 @@ echo 'extern const sw_stage_script sw_lecture_ralston;' >"$WORK/ext"
 insert_before "$copy/src/engine/lecture.h" '^#endif' "$WORK/ext" || fail "no #endif in lecture.h"
 
 # It builds, warnings as errors (the program and the unit tests).
-(cd "$copy" && make -j2 WERROR=1 stepwise build/check_stepwise) >"$WORK/build.log" 2>&1 ||
-    { tail -30 "$WORK/build.log"; fail "the walk-through's tree does not build"; }
+walkthrough_build stepwise build/check_stepwise
 SWC=$copy/stepwise
 
 # list

@@ -1,14 +1,14 @@
-/* Building a student's integrator from C source: `--plugin my.c` compiles
- * it with the documented flags (docs/plugins.md) into a private temporary
- * directory, under a time limit, and loads the result. The directory and
- * what is in it are removed when stepwise ends, however it ends
- * (util/tmpdir.h: at exit, or by a watcher after a signal or a crash). */
-#include "cli/cli.h"
+/* Building a student's integrator from C source with the documented flags
+ * (docs/plugins.md), in the compiler's jail (or, --no-sandbox, a private
+ * directory), under a time limit: the first half of running a student's
+ * code, beside its loading and stepping in this folder. */
+#include "plugin/plugin_build.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -18,13 +18,12 @@
 
 #include "plugin/plugin.h"
 #include "plugin/sandbox.h"
-#include "util/tmpdir.h"
+#include "stepwise/base.h"
+#include "util/beside.h"
+#include "util/escape.h"
 
 /* Seconds a compiler may take for one plugin. */
 #define BUILD_SECONDS 60.0
-
-static char build_dir[PATH_MAX];
-static pid_t build_dir_owner;
 
 static int has_header(const char *dir)
 {
@@ -41,7 +40,7 @@ static const char *include_dir(void)
     const char *env = getenv("STEPWISE_INCLUDE");
     if (env && *env)
         return env;
-    if (sw_cli_beside_binary("include", has_header, dir, sizeof dir))
+    if (sw_beside_binary("include", has_header, dir, sizeof dir))
         return dir;
     return SW_DATADIR "/../../include";
 }
@@ -256,8 +255,8 @@ static int grader_limit(const char *log, size_t out_len, const sw_child_end *end
     return 0;
 }
 
-int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, char *so,
-                          size_t solen, char *err, size_t errlen)
+int sw_plugin_compile(const char *src, const char *dir, const char *name, char *so, size_t solen, char *err,
+                      size_t errlen)
 {
     char shown[200], msg[SW_ERRLEN], cc[PATH_MAX];
     sw_escape(src, 120, shown, sizeof shown);
@@ -369,24 +368,4 @@ int sw_cli_compile_plugin(const char *src, const char *dir, const char *name, ch
     free(log);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
     return SW_EINVAL;
-}
-
-int sw_cli_build_plugin(const char *src, char *so, size_t solen)
-{
-    static int count;
-    char err[SW_ERRLEN + 256], name[16];
-    if (!build_dir[0] || build_dir_owner != getpid()) {
-        if (sw_tmpdir_make("plugins", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
-            build_dir[0] = '\0';
-            return sw_cli_error("--plugin: %s", err);
-        }
-        build_dir_owner = getpid();
-        count = 0;
-    }
-    if (count == 64)
-        return sw_cli_error("--plugin: at most 64 plugins are built per run");
-    snprintf(name, sizeof name, "p%d", count++);
-    if (sw_cli_compile_plugin(src, build_dir, name, so, solen, err, sizeof err) != SW_OK)
-        return sw_cli_error("%s", err);
-    return SW_EXIT_OK;
 }

@@ -1,0 +1,15 @@
+/* Building a student's integrator from C source (plugin_build.c): the
+ * documented flags, the compiler jailed with limits of its own. */
+#ifndef SW_PLUGIN_PLUGIN_BUILD_H
+#define SW_PLUGIN_PLUGIN_BUILD_H
+
+#include <stddef.h>
+
+/* Compile src into dir/NAME.so (its messages in dir/NAME.log), the .so's
+ * path into so: 0, or SW_EINVAL (it does not compile, or took too long) or
+ * SW_EIO (a limit of the grader's, no room) with err saying which, the
+ * compiler's first error quoted. */
+int sw_plugin_compile(const char *src, const char *dir, const char *name, char *so, size_t solen, char *err,
+                      size_t errlen);
+
+#endif

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "engine/particles_solve.h"
 #include "measure/bench.h"
 #include "measure/stability.h"
 #include "sim/truth.h"
@@ -446,6 +447,40 @@ START_TEST(spectrum_job_matches_synchronous)
 }
 END_TEST
 
+/* The same for particles no force joins in the Jacobian, each with its
+ * own blocks: the water's 800, whose blocks all differ (each is its
+ * neighbours' sum), so the job asks a few particles a call. It asks the
+ * same particles in the same order as the synchronous computation: the
+ * same bits, after more than a few calls. */
+START_TEST(spectrum_job_free_particles_in_slices)
+{
+    sw_truth tr;
+    char err[SW_ERRLEN];
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = params("water", p, (const char *const[]){ "n=800", NULL });
+    ck_assert_int_eq(sw_truth_init(&tr, sc, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_coupled(&tr.sys.particles), 0);
+    ck_assert_int_eq(sw_truth_spectrum_sliced(&tr.sys, 131072), 1);
+    ck_assert_int_eq(sw_truth_spectrum_sliced(&tr.sys, 1L << 30), 0);
+    sw_spectrum sync, got;
+    ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, tr.sys.y, &sync), 0);
+    ck_assert_int_gt(sync.n, 0);
+    sw_spectrum_job job = { 0 };
+    ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.0), 0);
+    int calls = 0, rc = 0;
+    while (rc == 0 && calls < 100000) {
+        rc = sw_spectrum_job_run(&job, &tr.sys, tr.sys.y, 1, &got);
+        calls++;
+    }
+    ck_assert_int_eq(rc, 1);
+    ck_assert_int_gt(calls, 10); /* it did run in slices */
+    ck_assert_msg(same_spectrum(&got, &sync) && got.free == sync.free && got.order == sync.order,
+                  "job %.17g (%d modes), synchronous %.17g (%d)", got.largest, got.n, sync.largest, sync.n);
+    sw_spectrum_job_free(&job);
+    sw_truth_free(&tr);
+}
+END_TEST
+
 /* The live meter on a large chain: while the job runs it reads nothing
  * (and says it is working), a fixed number of calls later it reads the
  * spectrum the synchronous computation gives at the state the job began
@@ -689,6 +724,7 @@ Suite *make_truth_suite(void)
     tcase_add_test(tc, stability_bounce_drag_returns);
     tcase_add_test(tc, free_modes_left_out);
     tcase_add_test(tc, spectrum_job_matches_synchronous);
+    tcase_add_test(tc, spectrum_job_free_particles_in_slices);
     tcase_add_test(tc, meter_on_a_large_chain_in_slices);
     tcase_add_test(tc, error_norm_matches_plain_loop);
     tcase_add_test(tc, reference_frame_changes_cost_not_answer);

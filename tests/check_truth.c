@@ -396,6 +396,17 @@ static int same_spectrum(const sw_spectrum *a, const sw_spectrum *b)
            memcmp(a->mode, b->mode, (size_t)a->n * sizeof a->mode[0]) == 0;
 }
 
+/* Job j, started on sys, run in calls of `passes` at y to its end (at most
+ * `most` calls): its result into got; the calls it took. */
+static int job_to_end(sw_spectrum_job *j, sw_system *sys, const double *y, long passes, int most, sw_spectrum *got)
+{
+    int calls = 0, rc = 0;
+    for (; rc == 0 && calls < most; calls++)
+        rc = sw_spectrum_job_run(j, sys, y, passes, got);
+    ck_assert_int_eq(rc, 1);
+    return calls;
+}
+
 START_TEST(spectrum_job_matches_synchronous)
 {
     sw_truth tr;
@@ -409,12 +420,7 @@ START_TEST(spectrum_job_matches_synchronous)
     ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, tr.sys.y, &sync), 0);
     sw_spectrum_job job = { 0 };
     ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.0), 0);
-    int calls = 0, rc = 0;
-    while (rc == 0 && calls < 1000) {
-        rc = sw_spectrum_job_run(&job, &tr.sys, tr.sys.y, 7, &got);
-        calls++;
-    }
-    ck_assert_int_eq(rc, 1);
+    int calls = job_to_end(&job, &tr.sys, tr.sys.y, 7, 1000, &got);
     ck_assert_int_gt(calls, 2); /* it did run in slices */
     ck_assert_msg(same_spectrum(&got, &sync), "job %.17g, synchronous %.17g", got.largest, sync.largest);
     /* warm, on a moved state: the beads shifted along the chain */
@@ -426,9 +432,7 @@ START_TEST(spectrum_job_matches_synchronous)
     ck_assert_int_eq(sw_truth_spectrum(&tr.sys, 0.0, y, &sync), 0);
     ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.1), 0);
     int cold_calls = calls;
-    for (rc = 0, calls = 0; rc == 0 && calls < 1000; calls++)
-        rc = sw_spectrum_job_run(&job, &tr.sys, y, 7, &got);
-    ck_assert_int_eq(rc, 1);
+    calls = job_to_end(&job, &tr.sys, y, 7, 1000, &got);
     ck_assert_int_le(calls, cold_calls); /* never more passes than a cold start */
     ck_assert_msg(fabs(got.largest / sync.largest - 1) < 1.25e-4, "warm %.17g, synchronous %.17g", got.largest,
                   sync.largest);
@@ -467,13 +471,7 @@ START_TEST(spectrum_job_free_particles_in_slices)
     ck_assert_int_gt(sync.n, 0);
     sw_spectrum_job job = { 0 };
     ck_assert_int_eq(sw_spectrum_job_start(&job, &tr.sys, 0.0), 0);
-    int calls = 0, rc = 0;
-    while (rc == 0 && calls < 100000) {
-        rc = sw_spectrum_job_run(&job, &tr.sys, tr.sys.y, 1, &got);
-        calls++;
-    }
-    ck_assert_int_eq(rc, 1);
-    ck_assert_int_gt(calls, 10); /* it did run in slices */
+    ck_assert_int_gt(job_to_end(&job, &tr.sys, tr.sys.y, 1, 100000, &got), 10); /* it did run in slices */
     ck_assert_msg(same_spectrum(&got, &sync) && got.free == sync.free && got.order == sync.order,
                   "job %.17g (%d modes), synchronous %.17g (%d)", got.largest, got.n, sync.largest, sync.n);
     sw_spectrum_job_free(&job);

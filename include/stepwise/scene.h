@@ -77,6 +77,10 @@ typedef struct sw_scene {
     const sw_param *params;
     int nparams;
     double dt;                /* default step */
+    /* The default step for parameters p where it depends on them, at most
+     * dt (a fluid's CFL limit falls with its particles' spacing); NULL:
+     * dt. Read it through sw_scene_dt. */
+    double (*step)(const double *p);
     const char *integrator;   /* default method name */
     double duration;          /* report time for bench and error */
     /* Build the system from sys->p; 0 or a status with err filled. */
@@ -134,6 +138,9 @@ size_t sw_scene_param_names(const sw_scene *sc, char *buf, size_t len);
 int sw_scene_param_index(const sw_scene *sc, const char *name);
 /* Fill p with the defaults. */
 void sw_scene_defaults(const sw_scene *sc, double *p);
+/* The default step for parameters p (sc->dt unless the scene's step hook
+ * gives a smaller one for them). */
+double sw_scene_dt(const sw_scene *sc, const double *p);
 /* out (SW_MAX_PARAMS doubles) = the scene's nparams values from p, or its
  * defaults when p is NULL, then zeros, so whole arrays compare equal. */
 void sw_scene_fill(const sw_scene *sc, const double *p, double *out);

@@ -136,7 +136,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
     a->epoch++; /* a new picture */
-    a->dt = dt > 0 ? dt : sc->dt;
+    a->dt = dt > 0 ? dt : sw_scene_dt(sc, a->p);
     a->speed = 1.0;
     a->slowmo = 1.0;
     a->zoom = 1.0;

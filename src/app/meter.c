@@ -1,8 +1,9 @@
 /* The meter's spectrum as the state moves: taken twenty times per report
  * time, or again after a reset (time went back). Where it takes a few
  * hundred products with a large system's Jacobian (the stiffest mode of a
- * chain of 1e5 beads by power iteration), it is a job run a fixed number
- * of passes per call, so no frame waits for it; the meter shows the last
+ * chain of 1e5 beads by power iteration), or thousands of small
+ * eigenproblems (a fluid's particles, each its own), it is a job run a
+ * fixed number of passes per call, so no frame waits for it; the meter shows the last
  * spectrum until the next is done. Invariant: the number of passes per
  * call depends on the system's size only, never on the clock, so a run
  * reads the same numbers on any machine. */

@@ -148,7 +148,7 @@ int sw_cli_finish_opts(sw_run_opts *o)
     if (!o->method)
         o->method = sw_integrator_find(o->scene->integrator);
     if (!(o->dt > 0))
-        o->dt = o->scene->dt;
+        o->dt = sw_scene_dt(o->scene, o->p);
     if (!(o->rtol > 0))
         o->rtol = SW_RTOL_DEFAULT;
     if (!(o->atol > 0))

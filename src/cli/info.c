@@ -139,7 +139,7 @@ int sw_cmd_describe(int argc, char **argv)
         snprintf(range, sizeof range, "[%g, %g]%s", p->min, p->max, p->integer ? " whole" : "");
         printf("  %-8s = %-10g %-22s %-8s %s\n", p->name, o.p[i], range, p->unit, p->help);
     }
-    printf("\ndefaults: integrator %s, dt %g, report time %g\n", sc->integrator, sc->dt, sc->duration);
+    printf("\ndefaults: integrator %s, dt %g, report time %g\n", sc->integrator, sw_scene_dt(sc, o.p), sc->duration);
     sw_system sys;
     char err[SW_ERRLEN], why[SW_ERRLEN];
     if (sw_system_build(&sys, sc, o.p, err, sizeof err) != SW_OK)

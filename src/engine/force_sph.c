@@ -178,22 +178,33 @@ static void density_pair(int a, int b, double dx, double dy, double r2, void *ct
     }
 }
 
-static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+/* Pair (a, b)'s force on a (b gets its negative); 0 when they sit at one
+ * point (they push neither way). Inline in the kept pairs' loop. */
+static inline int pair_force(const sph_ctx *c, int a, int b, double dx, double dy, double r2, double *fx,
+                             double *fy)
 {
-    sph_ctx *c = ctx;
     const sw_force *fo = c->fo;
     const double *rho = c->w->rho, *press = c->w->press, *v = c->v;
     double h = fo->h, r = sqrt(r2);
     if (!(r > 0))
-        return; /* two particles at one point push neither way */
+        return 0;
     double mm = c->p->mass[a] * c->p->mass[b], mm_rr = mm / (rho[a] * rho[b]);
     /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
     double ps = press[a] + press[b];
     double push = mm * ps * c->spiky * (h - r) * (h - r) / r;
     double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / c->visc * (h - r);
-    double fx = push * dx + visc * (v[2 * b] - v[2 * a]), fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
-    c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
-    c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
+    *fx = push * dx + visc * (v[2 * b] - v[2 * a]), *fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
+    return 1;
+}
+
+static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+{
+    sph_ctx *c = ctx;
+    double fx, fy;
+    if (pair_force(c, a, b, dx, dy, r2, &fx, &fy)) {
+        c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
+        c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
+    }
 }
 
 /* The walls' acceleration on coordinate value u, dist = u - wall (sign:
@@ -231,8 +242,11 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
     if (w->npair >= 0) { /* the pairs the density found, in its order: the same sums as walking again */
         for (long k = 0; k < w->npair; k++) {
             int a = w->pair[2 * k], b = w->pair[2 * k + 1];
-            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1];
-            force_pair(a, b, dx, dy, dx * dx + dy * dy, &c);
+            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], fx, fy;
+            if (pair_force(&c, a, b, dx, dy, dx * dx + dy * dy, &fx, &fy)) {
+                f[2 * a] += fx, f[2 * a + 1] += fy;
+                f[2 * b] -= fx, f[2 * b + 1] -= fy;
+            }
         }
     } else {
         each_pair(w, x, fo->h, force_pair, &c);

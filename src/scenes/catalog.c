@@ -53,6 +53,11 @@ void sw_scene_defaults(const sw_scene *sc, double *p)
         p[i] = sc->params[i].def;
 }
 
+double sw_scene_dt(const sw_scene *sc, const double *p)
+{
+    return sc->step ? fmin(sc->dt, sc->step(p)) : sc->dt;
+}
+
 void sw_scene_fill(const sw_scene *sc, const double *p, double *out)
 {
     if (p)

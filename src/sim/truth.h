@@ -207,15 +207,23 @@ typedef struct sw_spectrum_job {
     double *v, *w;        /* into buf */
     double *buf;          /* 2 · 2n doubles, owned */
     size_t cap;
+    /* particles no force joins (each one's own blocks, particle by particle) */
+    const double *own;    /* the blocks at the job's state, in sys's solver; NULL: not yet */
+    int next, central;    /* the next particle to take; a central field (every particle asked) */
+    double last[8];       /* the last particle's blocks per unit mass (a particle like it adds nothing) */
+    sw_spectrum part;     /* the modes so far */
 } sw_spectrum_job;
 
-/* 1 when sys's spectrum is found by power iteration taking more than
- * `slice` state components × passes (then the meter runs it as a job). */
+/* 1 when sys's spectrum takes more than `slice` state components × passes:
+ * power iteration on a large coupled system, or the modes of many free
+ * particles (a fluid's, each particle's own blocks; one costs about 512
+ * components). Then the meter runs it as a job. */
 int sw_truth_spectrum_sliced(const sw_system *sys, long slice);
 /* Start (or restart) job j on sys, for the state at time t: 0, or -1 out of memory. */
 int sw_spectrum_job_start(sw_spectrum_job *j, const sw_system *sys, double t);
 /* Up to `passes` more passes at state y (the state the job started at; it
- * is read by the first call only, which assembles the Jacobian's blocks). 1 when done, with out filled; 0 when
+ * is read by the first call only, which assembles the Jacobian's blocks);
+ * for free particles, the modes of up to passes · 2n / 512 of them. 1 when done, with out filled; 0 when
  * there is more to do; -1 when it failed (or was not started). */
 int sw_spectrum_job_run(sw_spectrum_job *j, sw_system *sys, const double *y, long passes, sw_spectrum *out);
 void sw_spectrum_job_free(sw_spectrum_job *j);

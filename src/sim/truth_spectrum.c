@@ -239,18 +239,17 @@ static int dense_particles(sw_truth_work *w, sw_system *sys, const double *y, sw
  * particle, all have the same modes unless a field depends on position
  * (central attraction): then each particle is asked. A particle whose
  * blocks per unit mass differ from the last one asked (a hot body's heat
- * slot, engine/force_heat.c) is asked too. */
-static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_spectrum *sp)
+ * slot, engine/force_heat.c; every particle of a fluid, whose blocks are
+ * its neighbours' sum) is asked too. From particle *next on, asking at
+ * most `budget` of them: 1 when done, 0 when there are more to ask, else
+ * the eigenvalue solver's failure. Taken in slices or whole, the same
+ * particles are asked in the same order: the same spectrum. */
+static int free_modes(sw_particles *p, const double *own, int central, int *next, double *last, long budget,
+                      sw_spectrum *sp)
 {
-    sw_particles *p = &sys->particles;
-    double scratch[5 * 2 * 2 + 5 * 2], cx, cy, mu;
-    int central = sw_particles_central(p, &cx, &cy, &mu);
-    const double *own = sw_particles_own_blocks(p, y);
-    (void)w;
-    if (!own)
-        return -1;
-    double last[8];
-    for (int i = 0; i < p->n; i++) {
+    double scratch[5 * 2 * 2 + 5 * 2];
+    for (; *next < p->n; ++*next) {
+        int i = *next;
         double A[4], B[4];
         for (int k = 0; k < 4; k++) { /* per unit mass */
             A[k] = own[8 * i + k] * p->inv_mass[i];
@@ -258,13 +257,32 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
         }
         if (i > 0 && !central && memcmp(A, last, sizeof A) == 0 && memcmp(B, last + 4, sizeof B) == 0)
             continue;
+        if (budget-- <= 0)
+            return 0;
         memcpy(last, A, sizeof A);
         memcpy(last + 4, B, sizeof B);
         int rc = second_order_modes(2, A, B, scratch, sp);
-        if (rc != 0 || (central && sp->n == SW_TRUTH_MODES))
-            return rc; /* (full, add_mode keeps the stiffest: the others go on) */
+        if (rc != 0)
+            return rc;
+        if (central && sp->n == SW_TRUTH_MODES) { /* full, add_mode keeps the stiffest: the others go on */
+            *next = p->n;
+            return 1;
+        }
     }
-    return 0;
+    return 1;
+}
+
+static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_spectrum *sp)
+{
+    sw_particles *p = &sys->particles;
+    double cx, cy, mu, last[8];
+    int central = sw_particles_central(p, &cx, &cy, &mu), next = 0;
+    const double *own = sw_particles_own_blocks(p, y);
+    (void)w;
+    if (!own)
+        return -1;
+    int rc = free_modes(p, own, central, &next, last, p->n, sp);
+    return rc == 1 ? 0 : rc;
 }
 
 /* A large coupled system: the eigenvalue of M⁻¹Fx largest in size by power
@@ -280,7 +298,7 @@ static int free_particles(sw_truth_work *w, sw_system *sys, const double *y, sw_
  * frames; run whole, it is the synchronous computation, pass for pass. */
 #define POWER_ITERATIONS 100
 
-enum { JOB_MAIN, JOB_SHIFTED, JOB_DAMPING };
+enum { JOB_MAIN, JOB_SHIFTED, JOB_DAMPING, JOB_FREE };
 
 static void power_start(sw_spectrum_job *j, double shift, int warm)
 {
@@ -410,11 +428,18 @@ static int stiffest_particles(sw_truth_work *ws, sw_system *sys, const double *y
     return 0;
 }
 
+/* One particle's modes (a 4x4 QR and the partners' inverse iteration,
+ * some 16 thousand instructions) cost about as much as this many
+ * components of a power pass: a free-particle job's budget per pass. */
+#define FREE_COST 512
+
 int sw_truth_spectrum_sliced(const sw_system *sys, long slice)
 {
-    return sys->kind == SW_SYS_PARTICLES && sys->n > DENSE_PARTICLES &&
-           (double)POWER_ITERATIONS * 2.0 * sys->n > (double)slice &&
-           sw_particles_coupled(&sys->particles);
+    if (sys->kind != SW_SYS_PARTICLES || sys->n <= DENSE_PARTICLES)
+        return 0;
+    if (!sw_particles_coupled(&sys->particles))
+        return (double)FREE_COST * sys->n > (double)slice;
+    return (double)POWER_ITERATIONS * 2.0 * sys->n > (double)slice;
 }
 
 int sw_spectrum_job_start(sw_spectrum_job *j, const sw_system *sys, double t)
@@ -439,14 +464,43 @@ int sw_spectrum_job_start(sw_spectrum_job *j, const sw_system *sys, double t)
     j->growing = 0;
     j->warm_ok = 0;
     power_start(j, 0.0, warm);
+    j->own = NULL;
+    if (!sw_particles_coupled(&sys->particles)) {
+        j->stage = JOB_FREE;
+        j->next = 0;
+        memset(&j->part, 0, sizeof j->part);
+        j->part.complete = 1;
+        j->part.order = 2;
+    }
     return 0;
+}
+
+/* A free-particle job: the blocks at y on the first call, then up to
+ * passes · 2n / FREE_COST particles a call. */
+static int free_job_run(sw_spectrum_job *j, sw_particles *p, const double *y, long passes, sw_spectrum *out)
+{
+    if (!j->own) {
+        double cx, cy, mu;
+        j->central = sw_particles_central(p, &cx, &cy, &mu);
+        if (!(j->own = sw_particles_own_blocks(p, y)))
+            return -1;
+    }
+    double budget = (double)passes * j->n2 / FREE_COST;
+    int rc = free_modes(p, j->own, j->central, &j->next, j->last, budget < 1 ? 1 : (long)budget, &j->part);
+    if (rc != 1)
+        return rc == 0 ? 0 : -1;
+    *out = j->part;
+    finish(out);
+    j->active = 0;
+    return 1;
 }
 
 int sw_spectrum_job_run(sw_spectrum_job *j, sw_system *sys, const double *y, long passes, sw_spectrum *out)
 {
     if (!j->active)
         return -1;
-    int rc = job_run(j, &sys->particles, y, passes < 1 ? 1 : passes, out);
+    int rc = j->stage == JOB_FREE ? free_job_run(j, &sys->particles, y, passes < 1 ? 1 : passes, out)
+                                  : job_run(j, &sys->particles, y, passes < 1 ? 1 : passes, out);
     if (rc < 0)
         j->active = 0;
     return rc;

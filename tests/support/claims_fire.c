@@ -104,6 +104,43 @@ double cl_big_dam_blowup(void)
 }
 static double default_dt_ms(void) { return 1000 * sw_scene_find("water")->dt; }
 static double frame_steps(void) { return ceil(1.0 / 60 / 0.0005); }
+/* The default step at n = 1e4 (ms), at the defaults (ms), the steps of a
+ * frame at it, and its formula's two numbers, 1/Δt = A c/h + B ν/h², each
+ * solved for from the built dam's h, c and ν given the other. */
+static double water_step_at(const char *set)
+{
+    const sw_scene *sc = sw_scene_find("water");
+    double p[SW_MAX_PARAMS];
+    cl_scene_p("water", set, p);
+    return sw_scene_dt(sc, p);
+}
+static double big_dam_step_ms(void) { return 1000 * water_step_at("n=10000"); }
+static double default_step_ms(void) { return 1000 * water_step_at(NULL); }
+static double big_dam_frame_steps(void) { return ceil(1.0 / 60 / water_step_at("n=10000")); }
+static void big_dam_hcn(double *h, double *c, double *nu)
+{
+    sw_sim s;
+    cl_sim_init(&s, "water", "n=10000", "symplectic-euler", 0.001);
+    const sw_force *fo = NULL;
+    for (int k = 0; k < s.sys.particles.nforces; k++)
+        if (s.sys.particles.forces[k].kind == SW_FORCE_SPH)
+            fo = &s.sys.particles.forces[k];
+    ck_assert_ptr_nonnull(fo);
+    *h = fo->h, *c = sqrt(fo->stiff), *nu = fo->nu;
+    sw_sim_free(&s);
+}
+static double step_sound_share(void)
+{
+    double h, c, nu;
+    big_dam_hcn(&h, &c, &nu);
+    return (1 / water_step_at("n=10000") - 13 * nu / (h * h)) * h / c;
+}
+static double step_viscous_share(void)
+{
+    double h, c, nu;
+    big_dam_hcn(&h, &c, &nu);
+    return (1 / water_step_at("n=10000") - 2.2 * c / h) * h * h / nu;
+}
 static double meter_every(void) { return sw_scene_find("water")->duration / 20; }
 static void big_dam_pairs(double *count, double *candidates, double *within)
 {
@@ -180,6 +217,14 @@ const claim sw_claims_f[] = {
     { PERF, "default Δt = {1} ms blows up", default_dt_ms, EXACT, 0, R_COUNT, NULL },
     { PERF, "blows up at t = {0.025} s", cl_big_dam_blowup, ABS, 1e-9, "the step it blew up at ends there", NULL },
     { PERF, "A frame at speed 1 then takes {34} steps", frame_steps, EXACT, 0, "ceil(1/60 / 0.5 ms)", NULL },
+    { SCENES, "1/({2.2}·c/h + 13·ν/h²)", step_sound_share, REL, 1e-9, "solved for from the built dam: to rounding", NULL },
+    { SCENES, "1/(2.2·c/h + {13}·ν/h²)", step_viscous_share, REL, 1e-9, "solved for from the built dam: to rounding", NULL },
+    { SCENES, "and no more than {1} ms, which it is at the defaults", default_step_ms, EXACT, 0, "sw_scene_dt at the defaults", NULL },
+    { PERF, "1/({2.2} c/h + 13", step_sound_share, REL, 1e-9, "solved for from the built dam: to rounding", NULL },
+    { PERF, "1/(2.2 c/h + {13}", step_viscous_share, REL, 1e-9, "solved for from the built dam: to rounding", NULL },
+    { PERF, "which is the scene's {1} ms at the default", default_step_ms, EXACT, 0, "sw_scene_dt at the defaults", NULL },
+    { PERF, "and {0.229} ms at n = 1e4", big_dam_step_ms, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "a frame at speed 1 takes {73} steps", big_dam_frame_steps, EXACT, 0, "ceil(1/60 / the default step)", NULL },
     { PERF, "(every {0.05} s of simulated time", meter_every, EXACT, 0, "the meter: twenty times per report time", NULL },
     { PERF, "so the truth module takes {9815}", big_dam_count, EXACT, 0, R_COUNT, NULL },
     { PERF, "(about {20} candidate pairs a particle", big_dam_candidates, ABS, 1, "\"about\": within 1", NULL },

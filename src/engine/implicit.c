@@ -123,18 +123,28 @@ static double advance(int n, double *d, double lambda, const double *delta, cons
  * where J does not change (linear systems: the same bits).
  * Without yj, J afresh at every iterate (quadratic convergence: the
  * continuation below, where the start is far from the solution).
- * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3
- * (and yj). */
+ * Returns 0 with d the solution, or -1 with s->why set. With from_zero
+ * the start is Δ = 0, d cleared in the first pass over it (no pass of its
+ * own). Vectors 1..3 (and yj): with yj the iterates alternate between
+ * vector 1 and yj, so the point J was taken at stays where it was written
+ * and is never copied. */
 #define SIMPLIFIED_RATE 0.125
 
 static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                  double *d, int max_iter, double *yj)
+                  double *d, int from_zero, int max_iter, double *yj)
 {
     int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
     double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
-    for (int i = 0; i < n; i++)
-        ym[i] = y[i] + theta * d[i];
+    const double *at = ym; /* where J is taken */
+    if (from_zero)
+        for (int i = 0; i < n; i++) {
+            d[i] = 0.0;
+            ym[i] = y[i] + theta * d[i];
+        }
+    else
+        for (int i = 0; i < n; i++)
+            ym[i] = y[i] + theta * d[i];
     sw_ode_eval(ode, te, ym, g);
     for (int i = 0; i < n; i++)
         g[i] = h * g[i] - d[i]; /* -G */
@@ -146,11 +156,14 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         }
         if (gnorm == 0)
             return 0; /* Δ solves G = 0 exactly */
-        const double *at = ym; /* where J is taken */
-        if (yj && fresh)
-            memcpy(yj, ym, (size_t)n * sizeof *yj);
-        if (yj)
-            at = yj;
+        if (!yj) {
+            at = ym;
+        } else if (fresh) {
+            /* J at this iterate, kept in its vector; the next iterates
+             * go to the other one */
+            at = ym;
+            ym = ym == yj ? SW_WORK(s, 1) : yj;
+        }
         if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
@@ -214,8 +227,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
 {
     int n = ode->dim;
     double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
-    memset(d, 0, (size_t)n * sizeof *d);
-    if (newton(s, ode, *t, y, h, theta, d, 40, SW_WORK(s, 4)) != 0) {
+    if (newton(s, ode, *t, y, h, theta, d, 1, 40, SW_WORK(s, 4)) != 0) {
         const char *why = s->why;
         double sigma = 0, sigma_prev = 0, dsigma = 0.125;
         memset(done, 0, (size_t)n * sizeof *done);
@@ -230,7 +242,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
             double w = sigma > sigma_prev ? (next - sigma) / (sigma - sigma_prev) : 0.0;
             for (int i = 0; i < n; i++)
                 d[i] = done[i] + w * (done[i] - prev[i]);
-            if (newton(s, ode, *t, y, next * h, theta, d, 12, NULL) == 0) {
+            if (newton(s, ode, *t, y, next * h, theta, d, 0, 12, NULL) == 0) {
                 sigma_prev = sigma;
                 sigma = next;
                 memcpy(prev, done, (size_t)n * sizeof *d);

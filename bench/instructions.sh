@@ -23,6 +23,24 @@ for row in "chain 1000 euler 20 120" "chain 1000 rk4 20 120" "vortex 100000 eule
     awk -v s="$1 n = $2" -v m="$3" -v g1="$g1" -v g2="$g2" -v b1="$b1" -v b2="$b2" -v k=$(($5 - $4)) -v n="$2" \
         'BEGIN { g = (g2 - g1) / (k * n); b = (b2 - b1) / (k * n); printf "%-18s %-6s %10.1f %10.1f %7.2f\n", s, m, g, b, g / b }'
 done
+# The implicit and Rosenbrock steps against rk4 on the chain (issue 41's
+# targets at n = 1000: linear-implicit-euler <= 4, implicit-euler and
+# implicit-midpoint <= 5, rodas4 <= 10): instructions per particle-step
+# of the generic stepper, the difference between K1 and K2 steps as above.
+gcount() { # n method k1 k2
+    c1=$(count chain "$1" "$2" "$3" generic); c2=$(count chain "$1" "$2" "$4" generic)
+    awk -v c1="$c1" -v c2="$c2" -v k=$(($4 - $3)) -v n="$1" 'BEGIN { printf "%.1f", (c2 - c1) / (k * n) }'
+}
+printf '\n%-18s %-22s %10s %7s\n' problem method generic "x rk4"
+for row in "1000 5 25" "10 200 2200"; do
+    set -- $row
+    rk4=$(gcount "$1" rk4 "$2" "$3")
+    for m in rk4 linear-implicit-euler implicit-euler implicit-midpoint rodas4; do
+        if [ "$m" = rk4 ]; then g=$rk4; else g=$(gcount "$1" "$m" "$2" "$3"); fi
+        awk -v s="chain n = $1" -v m="$m" -v g="$g" -v r="$rk4" \
+            'BEGIN { printf "%-18s %-22s %10.1f %7.2f\n", s, m, g, g / r }'
+    done
+done
 # Instructions per call of the particle derivative, as the methods call it
 # (the small-system path where it applies) and through the generic passes,
 # at the scene's start: the difference between 2000 and 12000 calls.

@@ -7,8 +7,19 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
+
+/* Four doubles side by side: lane k of a sum holds the chain of additions
+ * of the components i ≡ k (mod 4), the scalar code's four partial sums;
+ * lane-wise IEEE operations, so the bits do not depend on the width. */
+typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
+typedef long long v4i __attribute__((vector_size(4 * sizeof(long long))));
+
+/* (no functions that take or return one: without AVX that changes the ABI) */
+static const v4i MAGNITUDE = { 0x7FFFFFFFFFFFFFFFLL, 0x7FFFFFFFFFFFFFFFLL, 0x7FFFFFFFFFFFFFFFLL,
+                               0x7FFFFFFFFFFFFFFFLL }; /* & clears the sign: fabs */
 
 /* Euclidean norm: the sum of squares in four interleaved partial sums (the
  * serial sum's chain of additions was the cost; the norm only steers
@@ -25,16 +36,16 @@ static double norm2_scaled(int n, const double *v)
     return m * sqrt(s);
 }
 
-static double sum_squares(int n, const double *v)
+static SW_CLONES double sum_squares(int n, const double *v)
 {
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    v4d sum = { 0, 0, 0, 0 };
     int i = 0;
     for (; i + 4 <= n; i += 4) {
-        s0 += v[i] * v[i];
-        s1 += v[i + 1] * v[i + 1];
-        s2 += v[i + 2] * v[i + 2];
-        s3 += v[i + 3] * v[i + 3];
+        v4d vi;
+        memcpy(&vi, v + i, sizeof vi);
+        sum += vi * vi;
     }
+    double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     for (; i < n; i++)
         s0 += v[i] * v[i];
     return (s0 + s2) + (s1 + s3);
@@ -49,24 +60,20 @@ static double norm2(int n, const double *v) { return norm2_of(n, v, sum_squares(
 
 /* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂ as
  * norm2 takes it, in one pass. */
-static double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+static SW_CLONES double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
 {
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    v4d sum = { 0, 0, 0, 0 };
     int i = 0;
     for (; i + 4 <= n; i += 4) {
-        double g0 = h * g[i] - (d[i] + lambda * delta[i]);
-        double g1 = h * g[i + 1] - (d[i + 1] + lambda * delta[i + 1]);
-        double g2 = h * g[i + 2] - (d[i + 2] + lambda * delta[i + 2]);
-        double g3 = h * g[i + 3] - (d[i + 3] + lambda * delta[i + 3]);
-        g[i] = g0;
-        g[i + 1] = g1;
-        g[i + 2] = g2;
-        g[i + 3] = g3;
-        s0 += g0 * g0;
-        s1 += g1 * g1;
-        s2 += g2 * g2;
-        s3 += g3 * g3;
+        v4d gi, di, dl;
+        memcpy(&gi, g + i, sizeof gi);
+        memcpy(&di, d + i, sizeof di);
+        memcpy(&dl, delta + i, sizeof dl);
+        gi = h * gi - (di + lambda * dl);
+        memcpy(g + i, &gi, sizeof gi);
+        sum += gi * gi;
     }
+    double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     for (; i < n; i++) {
         g[i] = h * g[i] - (d[i] + lambda * delta[i]);
         s0 += g[i] * g[i];
@@ -76,33 +83,45 @@ static double residual(int n, double *g, double h, const double *d, double lambd
 
 /* d += λ·δ; returns |δ|∞ (NaN when any component is, as sw_norm_inf) and
  * sets *size = |y + d|∞ (NaN components skipped, as fmax skips them). The
- * maxima in two interleaved halves, without branches: a maximum is the
- * same whatever the order it is taken in. */
-static double advance(int n, double *d, double lambda, const double *delta, const double *y, double *size)
+ * maxima four lanes wide, without branches: a maximum is the same whatever
+ * the order it is taken in. */
+static SW_CLONES double advance(int n, double *d, double lambda, const double *delta, const double *y,
+                                double *size)
 {
-    double m0 = 0, m1 = 0, s0 = 0, s1 = 0;
-    int nan = 0, i = 0;
-    for (; i + 2 <= n; i += 2) {
-        double a0 = fabs(delta[i]), a1 = fabs(delta[i + 1]);
-        nan |= (a0 != a0) | (a1 != a1);
-        m0 = a0 > m0 ? a0 : m0;
-        m1 = a1 > m1 ? a1 : m1;
-        d[i] = d[i] + lambda * delta[i];
-        d[i + 1] = d[i + 1] + lambda * delta[i + 1];
-        double b0 = fabs(y[i] + d[i]), b1 = fabs(y[i + 1] + d[i + 1]);
-        s0 = b0 > s0 ? b0 : s0;
-        s1 = b1 > s1 ? b1 : s1;
+    v4d m4 = { 0, 0, 0, 0 }, s4 = { 0, 0, 0, 0 };
+    v4i nan4 = { 0, 0, 0, 0 };
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        v4d dl, di, yi;
+        memcpy(&dl, delta + i, sizeof dl);
+        memcpy(&di, d + i, sizeof di);
+        memcpy(&yi, y + i, sizeof yi);
+        v4d a = (v4d)((v4i)dl & MAGNITUDE);
+        nan4 |= a != a;
+        v4i take = a > m4; /* m4 = a > m4 ? a : m4, lane by lane */
+        m4 = (v4d)(((v4i)a & take) | ((v4i)m4 & ~take));
+        di = di + lambda * dl;
+        memcpy(d + i, &di, sizeof di);
+        v4d b = (v4d)((v4i)(yi + di) & MAGNITUDE);
+        take = b > s4;
+        s4 = (v4d)(((v4i)b & take) | ((v4i)s4 & ~take));
+    }
+    double m = 0, sz = 0;
+    int nan = (nan4[0] | nan4[1] | nan4[2] | nan4[3]) != 0;
+    for (int k = 0; k < 4; k++) {
+        m = m4[k] > m ? m4[k] : m;
+        sz = s4[k] > sz ? s4[k] : sz;
     }
     for (; i < n; i++) {
         double a = fabs(delta[i]);
         nan |= a != a;
-        m0 = a > m0 ? a : m0;
+        m = a > m ? a : m;
         d[i] = d[i] + lambda * delta[i];
         double b = fabs(y[i] + d[i]);
-        s0 = b > s0 ? b : s0;
+        sz = b > sz ? b : sz;
     }
-    *size = s0 > s1 ? s0 : s1;
-    return nan ? NAN : m0 > m1 ? m0 : m1;
+    *size = sz;
+    return nan ? NAN : m;
 }
 
 /* Newton's method from Δ = d on G(Δ) = Δ - σh·f(t + θσh, y0 + θΔ) = 0, the
@@ -123,18 +142,28 @@ static double advance(int n, double *d, double lambda, const double *delta, cons
  * where J does not change (linear systems: the same bits).
  * Without yj, J afresh at every iterate (quadratic convergence: the
  * continuation below, where the start is far from the solution).
- * Returns 0 with d the solution, or -1 with s->why set. Vectors 1..3
- * (and yj). */
+ * Returns 0 with d the solution, or -1 with s->why set. With from_zero
+ * the start is Δ = 0, d cleared in the first pass over it (no pass of its
+ * own). Vectors 1..3 (and yj): with yj the iterates alternate between
+ * vector 1 and yj, so the point J was taken at stays where it was written
+ * and is never copied. */
 #define SIMPLIFIED_RATE 0.125
 
 static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                  double *d, int max_iter, double *yj)
+                  double *d, int from_zero, int max_iter, double *yj)
 {
     int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
     double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
-    for (int i = 0; i < n; i++)
-        ym[i] = y[i] + theta * d[i];
+    const double *at = ym; /* where J is taken */
+    if (from_zero)
+        for (int i = 0; i < n; i++) {
+            d[i] = 0.0;
+            ym[i] = y[i] + theta * d[i];
+        }
+    else
+        for (int i = 0; i < n; i++)
+            ym[i] = y[i] + theta * d[i];
     sw_ode_eval(ode, te, ym, g);
     for (int i = 0; i < n; i++)
         g[i] = h * g[i] - d[i]; /* -G */
@@ -146,11 +175,14 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         }
         if (gnorm == 0)
             return 0; /* Δ solves G = 0 exactly */
-        const double *at = ym; /* where J is taken */
-        if (yj && fresh)
-            memcpy(yj, ym, (size_t)n * sizeof *yj);
-        if (yj)
-            at = yj;
+        if (!yj) {
+            at = ym;
+        } else if (fresh) {
+            /* J at this iterate, kept in its vector; the next iterates
+             * go to the other one */
+            at = ym;
+            ym = ym == yj ? SW_WORK(s, 1) : yj;
+        }
         if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
@@ -214,8 +246,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
 {
     int n = ode->dim;
     double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
-    memset(d, 0, (size_t)n * sizeof *d);
-    if (newton(s, ode, *t, y, h, theta, d, 40, SW_WORK(s, 4)) != 0) {
+    if (newton(s, ode, *t, y, h, theta, d, 1, 40, SW_WORK(s, 4)) != 0) {
         const char *why = s->why;
         double sigma = 0, sigma_prev = 0, dsigma = 0.125;
         memset(done, 0, (size_t)n * sizeof *done);
@@ -230,7 +261,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
             double w = sigma > sigma_prev ? (next - sigma) / (sigma - sigma_prev) : 0.0;
             for (int i = 0; i < n; i++)
                 d[i] = done[i] + w * (done[i] - prev[i]);
-            if (newton(s, ode, *t, y, next * h, theta, d, 12, NULL) == 0) {
+            if (newton(s, ode, *t, y, next * h, theta, d, 0, 12, NULL) == 0) {
                 sigma_prev = sigma;
                 sigma = next;
                 memcpy(prev, done, (size_t)n * sizeof *d);

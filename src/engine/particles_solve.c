@@ -32,7 +32,6 @@ struct sw_particles_solver {
     double *pblock;        /* 8 per pair: ∂g/∂d and ∂g/∂(dv), d = x_a - x_b */
     long npairs, cap;      /* pairs written by the last assembly; room for */
     int counted;           /* 1 + the forces there were when cap was last checked; 0: never */
-    double *rhs;           /* 2n: the velocity system's right-hand side */
     double *band;          /* the velocity system's band, or NULL before prepare */
     int *piv;
     int half_band;         /* in dof: 2·(largest particle distance along a spring) + 1 */
@@ -52,8 +51,7 @@ int sw_particles_solver_init(sw_particles *p)
     if (!p->solver)
         return SW_ENOMEM;
     p->solver->diag = calloc((size_t)8 * p->n, sizeof *p->solver->diag);
-    p->solver->rhs = calloc((size_t)2 * p->n, sizeof *p->solver->rhs);
-    return p->solver->diag && p->solver->rhs ? SW_OK : SW_ENOMEM;
+    return p->solver->diag ? SW_OK : SW_ENOMEM;
 }
 
 /* The pairs the forces join, and the widest distance among them. */
@@ -106,7 +104,6 @@ void sw_particles_solver_free(sw_particles *p)
         free(p->solver->pa);
         free(p->solver->pb);
         free(p->solver->pblock);
-        free(p->solver->rhs);
         free(p->solver->y_at);
         free(p->solver->band);
         free(p->solver->piv);
@@ -271,20 +268,23 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
     return sw_band_factor(band);
 }
 
-/* rhs = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone). */
-static void velocity_rhs(const sw_particles *p, double c, const double *r)
+/* out = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone), out 2n
+ * long; r's velocity half is read only where out is written, so out may be
+ * that half itself. Each entry gets its terms in the order it always had:
+ * the mass, the particle's own block, then the pairs. */
+static void velocity_rhs(const sw_particles *p, double c, const double *r, double *out_v)
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;
     for (int i = 0; i < p->n; i++) {
-        s->rhs[2 * i] = p->mass[i] * r[n2 + 2 * i];
-        s->rhs[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
+        out_v[2 * i] = p->mass[i] * r[n2 + 2 * i];
+        out_v[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
     }
     if (c == 0)
         return;
     for (int i = 0; i < p->n; i++)
-        apply_block(s->rhs, i, i, c, s->diag + 8 * i, r);
-    double *restrict out = s->rhs;
+        apply_block(out_v, i, i, c, s->diag + 8 * i, r);
+    double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
         int ea = s->pa[j], eb = s->pb[j];
@@ -336,12 +336,13 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
         s->c_at = c;
         s->factored = 1;
     }
-    velocity_rhs(p, c, r);
-    sw_band_solve(&s->lu, s->rhs);
-    for (int i = 0; i < n2; i++) {
-        z[n2 + i] = s->rhs[i];
-        z[i] = r[i] + c * s->rhs[i];
-    }
+    /* the velocity system solved where its solution belongs, z's
+     * velocity half (z may be r: r's positions are read, never written) */
+    double *z_v = z + n2;
+    velocity_rhs(p, c, r, z_v);
+    sw_band_solve(&s->lu, z_v);
+    for (int i = 0; i < n2; i++)
+        z[i] = r[i] + c * z_v[i];
     p->ode.solver_iters++;
     return SW_OK;
 }

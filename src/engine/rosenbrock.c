@@ -32,44 +32,98 @@ static int time_derivative(sw_ode *ode, double t, const double *y, const double 
     return any;
 }
 
+/* One pass of a stage's arithmetic, with the tableau's row fixed at each
+ * call (terms and with_ft are constants where it is inlined, so the loop
+ * over i has no inner loop and vectorises):
+ *     out_i = base_i + Σ_{j<terms} coef_j·k_j,i                (scale 0)
+ *     out_i = scale·((base_i + dh·ft_i) + Σ_{j<terms} coef_j·k_j,i)
+ * the sums taken in the lecture form's order, j rising, so the bits are
+ * its bits. out is never one of the vectors read. */
+SW_INLINE void stage_pass(int n, int terms, int with_ft, double *restrict out, const double *restrict base,
+                          double dh, const double *restrict ft, double scale, const double *coef,
+                          const double *const *k)
+{
+    const double *restrict k0 = k[0], *restrict k1 = k[1], *restrict k2 = k[2], *restrict k3 = k[3],
+                 *restrict k4 = k[4];
+    double c0 = terms > 0 ? coef[0] : 0, c1 = terms > 1 ? coef[1] : 0, c2 = terms > 2 ? coef[2] : 0,
+           c3 = terms > 3 ? coef[3] : 0, c4 = terms > 4 ? coef[4] : 0;
+    for (int i = 0; i < n; i++) {
+        double sum = base[i];
+        if (with_ft)
+            sum += dh * ft[i];
+        if (terms > 0)
+            sum += c0 * k0[i];
+        if (terms > 1)
+            sum += c1 * k1[i];
+        if (terms > 2)
+            sum += c2 * k2[i];
+        if (terms > 3)
+            sum += c3 * k3[i];
+        if (terms > 4)
+            sum += c4 * k4[i];
+        out[i] = with_ft ? scale * sum : sum;
+    }
+}
+
+/* stage_pass with the number of terms made a constant, one copy each. */
+static SW_CLONES void stage_combine(int n, int terms, int with_ft, double *restrict out,
+                                    const double *restrict base, double dh, const double *restrict ft,
+                                    double scale, const double *coef, const double *const *k)
+{
+    switch (terms * 2 + with_ft) {
+    case 0: stage_pass(n, 0, 0, out, base, dh, ft, scale, coef, k); break;
+    case 1: stage_pass(n, 0, 1, out, base, dh, ft, scale, coef, k); break;
+    case 2: stage_pass(n, 1, 0, out, base, dh, ft, scale, coef, k); break;
+    case 3: stage_pass(n, 1, 1, out, base, dh, ft, scale, coef, k); break;
+    case 4: stage_pass(n, 2, 0, out, base, dh, ft, scale, coef, k); break;
+    case 5: stage_pass(n, 2, 1, out, base, dh, ft, scale, coef, k); break;
+    case 6: stage_pass(n, 3, 0, out, base, dh, ft, scale, coef, k); break;
+    case 7: stage_pass(n, 3, 1, out, base, dh, ft, scale, coef, k); break;
+    case 8: stage_pass(n, 4, 0, out, base, dh, ft, scale, coef, k); break;
+    case 9: stage_pass(n, 4, 1, out, base, dh, ft, scale, coef, k); break;
+    case 10: stage_pass(n, 5, 0, out, base, dh, ft, scale, coef, k); break;
+    case 11: stage_pass(n, 5, 1, out, base, dh, ft, scale, coef, k); break;
+    }
+}
+
 /* A trial step of size h over the whole state (the solve couples it, so the
  * controller never slices it): stage i solves, scaled by γh,
  *     (I - γh·J) k_i = γh·[f(t + α_i h, y0 + Σ a_ij k_j) + Σ (c_ij/h) k_j + d_i h f_t],
  * y1 = y0 + Σ m_i k_i; error estimate k_6, normed as rk45's. A failed solve
- * makes the sums NaN (the controller shrinks the step) and leaves y0. */
+ * makes the sums NaN (the controller shrinks the step) and leaves y0.
+ * Each stage is two passes over the state (its point, then its right-hand
+ * side, stage_combine) around its evaluation, which lands in k_i's own
+ * vector until the solve overwrites it with k_i: nothing is cleared or
+ * copied between stages. */
 static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                         unsigned elim, sw_trial_sums *sums)
 {
     (void)lo, (void)hi;
     int n = ode->dim;
-    const double *f0 = SW_WORK(s, s->fsal);
+    const double *f0 = SW_WORK(s, s->fsal), *k[SW_RODAS_STAGES];
     double *yt = SW_WORK(s, S_YT), *rhs = SW_WORK(s, S_RHS), *ft = SW_WORK(s, S_FT);
     double *saved = SW_WORK(s, S_SAVED), *f1 = SW_WORK(s, s->fsal ? 0 : S_F1);
     double gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
     memcpy(saved, y, (size_t)n * sizeof *y);
     int timed = time_derivative(ode, t, y, f0, ft);
+    for (int st = 0; st < SW_RODAS_STAGES; st++)
+        k[st] = SW_WORK(s, S_K1 + st);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
-        double *k = SW_WORK(s, S_K1 + st);
-        if (st == 0) {
-            memcpy(rhs, f0, (size_t)n * sizeof *rhs);
-        } else {
-            for (int i = 0; i < n; i++) {
-                double sum = y[i];
-                for (int j = 0; j < st; j++)
-                    sum += SW_RODAS_A[st][j] * SW_WORK(s, S_K1 + j)[i];
-                yt[i] = sum;
-            }
-            sw_ode_eval(ode, t + SW_RODAS_ALPHA[st] * h, yt, rhs);
+        double *kst = SW_WORK(s, S_K1 + st), c_over_h[SW_RODAS_STAGES];
+        const double *f = f0;
+        if (st > 0) {
+            stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
+            sw_ode_eval(ode, t + SW_RODAS_ALPHA[st] * h, yt, kst);
+            f = kst;
         }
+        for (int j = 0; j < st; j++)
+            c_over_h[j] = SW_RODAS_C[st][j] / h;
+        /* d_i h f_t is 0·f_t = +0 where f does not depend on t: adding it
+         * still turns a -0 into +0, as the lecture form did */
         double dh = timed ? SW_RODAS_D[st] * h : 0.0;
-        for (int i = 0; i < n; i++) {
-            double sum = rhs[i] + dh * ft[i];
-            for (int j = 0; j < st; j++)
-                sum += (SW_RODAS_C[st][j] / h) * SW_WORK(s, S_K1 + j)[i];
-            rhs[i] = gh * sum;
-        }
-        if (sw_ode_solve(s, ode, t, y, gh, rhs, k) != 0) {
+        stage_combine(n, st, 1, rhs, f, dh, ft, gh, c_over_h, k);
+        if (sw_ode_solve(s, ode, t, y, gh, rhs, kst) != 0) {
             s->why = "the linear system of a Rosenbrock stage is singular";
             sums->err = NAN;
             return;

@@ -531,6 +531,33 @@ START_TEST(workprec_sweep_beside_the_picture)
 }
 END_TEST
 
+/* A run at its scene's default step follows the default when the
+ * parameters change (water's step follows n); a step the student chose
+ * stays. The expected steps are sw_scene_dt's, whose own test
+ * (check_water) holds them under the stability limit. */
+START_TEST(default_step_follows_the_parameters)
+{
+    const sw_scene *sc = sw_scene_find("water");
+    sw_app a;
+    app_with(&a, "water", "symplectic-euler", 0, NULL);
+    ck_assert_double_eq(a.dt, sw_scene_dt(sc, a.p));
+    double p[SW_MAX_PARAMS];
+    memcpy(p, a.p, sizeof p);
+    int n = sw_scene_param_index(sc, "n");
+    ck_assert_int_ge(n, 0);
+    p[n] = 10000;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_app_set_scene(&a, sc, p, err, sizeof err), SW_OK);
+    ck_assert_double_eq(a.dt, sw_scene_dt(sc, p));
+    ck_assert_double_lt(a.dt, sc->dt);
+    a.dt = 1e-4; /* the student's own step */
+    p[n] = 2000;
+    ck_assert_int_eq(sw_app_set_scene(&a, sc, p, err, sizeof err), SW_OK);
+    ck_assert_double_eq(a.dt, 1e-4);
+    sw_app_free(&a);
+}
+END_TEST
+
 /* A key press spends at most a->work_key state evaluations: below what the
  * gyre's reference costs (its particles × DP8's steps to the report time,
  * about 2.4e6), the work-precision key and the Δt measurement both say so
@@ -662,6 +689,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, adaptive_status_keeps_evals);
     tcase_add_test(tc, key_press_keeps_to_its_budget);
     tcase_add_test(tc, workprec_sweep_beside_the_picture);
+    tcase_add_test(tc, default_step_follows_the_parameters);
     tcase_add_test(tc, slow_keys_say_so_first);
     tcase_add_test(tc, panel_reaches_lesson_values);
     suite_add_tcase(s, tc);

@@ -173,8 +173,10 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
     a->scene = sc;
     sw_scene_fill(sc, p, a->p);
     a->epoch++; /* a new picture */
-    if (sc != old_scene)
-        a->dt = sc->dt;
+    /* a new scene, or a run at its scene's default step, starts at the
+     * default step for the new parameters (water's follows n, k and nu) */
+    if (sc != old_scene || old_dt == sw_scene_dt(old_scene, old_p))
+        a->dt = sw_scene_dt(sc, a->p);
     int rc = build(a, m, err, errlen);
     if (rc == SW_EINVAL)
         rc = build(a, sw_integrator_find(sc->integrator), err, errlen);

@@ -492,6 +492,10 @@ int sw_lp_end_page(sw_lp_parser *ps)
                            "expected other parameters or another goal", sc->name,
                            sw_lesson_var_name(pg->goals[i].var));
     }
+    /* a page that picks its scene and no step runs at the scene's default
+     * step for the parameters it sets (water's follows its stability limit) */
+    if (ps->at_scene.line && !ps->at_dt.line)
+        ps->dt = sw_scene_dt(ps->scene, ps->p);
     pg->scene = ps->scene;
     memcpy(pg->p, ps->p, sizeof pg->p);
     pg->method = ps->method;

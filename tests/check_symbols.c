@@ -53,6 +53,8 @@ static const symbol symbols[] = {
     { "acc # rej #", "09-adaptive.lesson", "Let the method choose Δt" },
     { "accepted # rejected #", "09-adaptive.lesson", "Let the method choose Δt" },
     { "stiffness·dt # of limit #", L1_METER },
+    { "stability: finding the stiffest mode", L1_METER },
+    { "finding the stiffest mode", L1_METER },
     { "stiffness·dt #, no stable dt", L1_METER },
     { "stiffness·dt #, stable at any dt", L1_METER },
     { "(limit with this damping; # undamped)", "05-springs.lesson", "Remedy 3: better integration" },

@@ -61,7 +61,7 @@ WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 # and the derivative part (particles, forces, flow fields, the scenes and
 # the util modules they use), which the plugin host is built from alone.
 ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explicit.c implicit.c integrators.c \
-                 lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c)
+                 lecture.c mistakes.c reference.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c)
 DERIV_SRC = $(filter-out $(ENGINE_METHODS),$(wildcard src/engine/*.c)) $(wildcard src/scenes/*.c) \
             src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
 CORE_SRC = $(DERIV_SRC) $(ENGINE_METHODS) $(wildcard src/sim/*.c)

@@ -121,7 +121,7 @@ START_TEST(production_steps_are_the_lecture_forms)
         }
         ck_assert_msg(scenes > 0, "%s: no scene to compare on", m->name);
     }
-    ck_assert_int_eq(methods, 7); /* the seven steps of explicit.c, each with its lecture form */
+    ck_assert_int_ge(methods, 7); /* at least explicit.c's seven (every_explicit_step_has_its_form) */
     for (int i = 0; i < PATHS; i++)
         ck_assert_msg(taken[i] > 0, "production path %d never taken", i);
 }

@@ -1,7 +1,9 @@
 /* The explicit fixed-step methods: Euler, symplectic Euler, midpoint, Heun,
  * RK4, velocity Verlet and Yoshida's 4th-order composition of it. Each step reads only its stepper's workspace and
  * allocates nothing; the Runge-Kutta family runs slice by slice on pointwise
- * systems with results bit-identical to a whole-state pass. */
+ * systems with results bit-identical to a whole-state pass. Each method as
+ * the lecture writes it, plain loops to read first, is in reference.c; these
+ * steps are held to its bits (tests/check_reference.c). */
 #include "engine/stepper.h"
 
 #include <math.h>

@@ -541,6 +541,7 @@ START_TEST(default_step_follows_the_parameters)
     sw_app a;
     app_with(&a, "water", "symplectic-euler", 0, NULL);
     ck_assert_double_eq(a.dt, sw_scene_dt(sc, a.p));
+    ck_assert_double_eq(sw_scene_dt(sc, NULL), a.dt); /* NULL: the defaults */
     double p[SW_MAX_PARAMS];
     memcpy(p, a.p, sizeof p);
     int n = sw_scene_param_index(sc, "n");

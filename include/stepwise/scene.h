@@ -138,8 +138,8 @@ size_t sw_scene_param_names(const sw_scene *sc, char *buf, size_t len);
 int sw_scene_param_index(const sw_scene *sc, const char *name);
 /* Fill p with the defaults. */
 void sw_scene_defaults(const sw_scene *sc, double *p);
-/* The default step for parameters p (sc->dt unless the scene's step hook
- * gives a smaller one for them). */
+/* The default step for parameters p (NULL: the defaults): sc->dt unless
+ * the scene's step hook gives a smaller one for them. */
 double sw_scene_dt(const sw_scene *sc, const double *p);
 /* out (SW_MAX_PARAMS doubles) = the scene's nparams values from p, or its
  * defaults when p is NULL, then zeros, so whole arrays compare equal. */

@@ -55,7 +55,11 @@ void sw_scene_defaults(const sw_scene *sc, double *p)
 
 double sw_scene_dt(const sw_scene *sc, const double *p)
 {
-    return sc->step ? fmin(sc->dt, sc->step(p)) : sc->dt;
+    if (!sc->step)
+        return sc->dt;
+    double full[SW_MAX_PARAMS];
+    sw_scene_fill(sc, p, full); /* NULL: the defaults, as sw_scene_fill reads it */
+    return fmin(sc->dt, sc->step(full));
 }
 
 void sw_scene_fill(const sw_scene *sc, const double *p, double *out)

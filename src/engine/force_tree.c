@@ -1,16 +1,22 @@
-/* Softened mutual gravity by a Barnes-Hut quadtree: for each body, a cell of
- * side s whose centre of mass lies at distance d (the body outside it) acts
- * as one body of the cell's mass there when s < θ·d, and is opened
- * otherwise; leaves are summed pair by pair as the direct sum does:
- *   f_i ≈ -G m_i Σ_cells M_c (x_i - X_c)/(|x_i - X_c|² + ε²)^(3/2).
- * The cells are those of a quadtree on 16-bit Morton keys in the bodies'
- * bounding square, kept only where they split (every inner node has two
- * children or more, so at most 2n - 1 nodes); a range of at most LEAF_MAX
- * bodies, or bodies sharing a cell 2^-16 of the box wide, is a leaf.
- * Invariant: an evaluation allocates nothing — the node pool and the sort
- * buffers are sized when the force is added (tree_work_new) — and is
- * deterministic (a stable radix sort; bodies and cells walked in a fixed
- * order). Only the force is approximated: the potential, the pairs and the
+/* Softened mutual gravity by a Barnes-Hut quadtree, walked by groups: the
+ * bodies of a small cell (a group) share one interaction list, in which a
+ * cell whose bodies span s (the larger side of their bounding box) and
+ * whose centre of mass lies at distance d from the group's bounding box
+ * stands as one body of the cell's mass there when s < θ·d, and is opened
+ * otherwise; a leaf that is opened gives its bodies. Every body of the
+ * group then sums the list, in list order, as the direct sum does:
+ *   f_i ≈ -G m_i Σ_list M_c (x_i - X_c)/(|x_i - X_c|² + ε²)^(3/2).
+ * Since d is no more than any group body's distance, the criterion holds
+ * for each body of the group (a cell taken whole for the group would be for
+ * each body). The cells are those of a quadtree on 16-bit Morton keys in
+ * the bodies' bounding square, kept only where they split (every inner node
+ * has two children or more, so at most 2n - 1 nodes); a range of at most
+ * LEAF_MAX bodies, or bodies sharing a cell 2^-16 of the box wide, is a leaf.
+ * Invariant: an evaluation allocates nothing — the node pool, the sort
+ * buffers and the list are sized when the force is added (tree_work_new) —
+ * and is deterministic (a stable radix sort; groups, cells and bodies
+ * walked in a fixed order; a full list is summed and emptied at fixed
+ * points). Only the force is approximated: the potential, the pairs and the
  * Jacobian blocks are the direct sum's (force_mutual.c), so energies and
  * implicit steps see exact softened gravity. Parameters: mu = G, soft = ε,
  * theta = θ. */
@@ -21,23 +27,34 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define KEY_BITS 16  /* per axis: the smallest cell is 2^-16 of the box */
-#define LEAF_MAX 8   /* a range of at most this many bodies is summed directly */
-#define STACK_MAX 64 /* a walk keeps at most 3 siblings per level, 17 levels, + 4 */
+#define KEY_BITS 16   /* per axis: the smallest cell is 2^-16 of the box */
+#define LEAF_MAX 8    /* a range of at most this many bodies is a leaf */
+#define GROUP_MAX 64  /* a cell of at most this many bodies shares one list */
+#define BLOCK 4       /* bodies summed side by side (one 4-wide vector) */
+#define LIST_MAX 2048 /* interactions gathered before the group sums them */
+#define STACK_MAX 64  /* a walk keeps at most 3 siblings per level, 17 levels, + 4 */
 
 typedef struct tree_node {
     double mx, my, m; /* centre of mass and mass */
-    double side;      /* the cell's side */
+    double size2;     /* the square of the larger side of the bodies' box */
     int lo, hi;       /* its bodies, in sorted order */
     int first, count; /* its children (consecutive nodes); count 0: a leaf */
 } tree_node;
 
+typedef struct tree_box {
+    double x0, x1, y0, y1; /* a node's bodies' bounding box (apart: the walk reads only groups') */
+} tree_box;
+
 typedef struct tree_work {
     int n, nnodes;
     tree_node *node;    /* 2n - 1 */
+    tree_box *box;      /* one per node */
     double *bx, *by, *bm; /* the bodies in key order */
+    double *ax, *ay;    /* their sums Σ M (x_r - X)/q³ */
     uint32_t *key, *key2;
     int *idx, *idx2;    /* body numbers in key order; the sort's second buffer */
+    double lx[LIST_MAX], ly[LIST_MAX], lm[LIST_MAX]; /* a group's list: point masses */
+    int len;
 } tree_work;
 
 static size_t round_up(size_t b) { return (b + 63) & ~(size_t)63; }
@@ -45,18 +62,22 @@ static size_t round_up(size_t b) { return (b + 63) & ~(size_t)63; }
 static void *tree_work_new(int n)
 {
     size_t nodes = 2 * (size_t)n, head = round_up(sizeof(tree_work)), node_b = round_up(nodes * sizeof(tree_node)),
+           box_b = round_up(nodes * sizeof(tree_box)),
            dbl_b = round_up((size_t)n * sizeof(double)), key_b = round_up((size_t)n * sizeof(uint32_t)),
            idx_b = round_up((size_t)n * sizeof(int));
-    char *block = calloc(1, head + node_b + 3 * dbl_b + 2 * key_b + 2 * idx_b);
+    char *block = calloc(1, head + node_b + box_b + 5 * dbl_b + 2 * key_b + 2 * idx_b);
     if (!block)
         return NULL;
     tree_work *w = (tree_work *)block;
     char *at = block + head;
     w->n = n;
     w->node = (tree_node *)at, at += node_b;
+    w->box = (tree_box *)at, at += box_b;
     w->bx = (double *)at, at += dbl_b;
     w->by = (double *)at, at += dbl_b;
     w->bm = (double *)at, at += dbl_b;
+    w->ax = (double *)at, at += dbl_b;
+    w->ay = (double *)at, at += dbl_b;
     w->key = (uint32_t *)at, at += key_b;
     w->key2 = (uint32_t *)at, at += key_b;
     w->idx = (int *)at, at += idx_b;
@@ -112,23 +133,25 @@ static int digit_start(const uint32_t *key, int lo, int hi, int shift, unsigned 
     return lo;
 }
 
-/* Fill node k with bodies [lo, hi) of a box of side `side`, and its
- * subtree (children taken from the pool in order). The cell is the one
- * its first and last keys share: depth D = (common leading bits) / 2. */
-static void build(tree_work *w, int k, int lo, int hi, double side)
+/* Fill node k with bodies [lo, hi) and its subtree (children taken from
+ * the pool in order). The cell is the one its first and last keys share:
+ * depth D = (common leading bits) / 2; its mass, centre of mass and the
+ * bounding box of its bodies. */
+static void build(tree_work *w, int k, int lo, int hi)
 {
     tree_node *nd = &w->node[k];
     uint32_t diff = w->key[lo] ^ w->key[hi - 1];
     int depth = diff ? __builtin_clz(diff) / 2 : KEY_BITS;
     nd->lo = lo, nd->hi = hi;
-    nd->side = ldexp(side, -depth);
     nd->count = 0;
-    double m = 0, sx = 0, sy = 0;
+    double m = 0, sx = 0, sy = 0, x0 = w->bx[lo], x1 = x0, y0 = w->by[lo], y1 = y0;
     if (hi - lo <= LEAF_MAX || depth == KEY_BITS) {
         for (int r = lo; r < hi; r++) {
             m += w->bm[r];
             sx += w->bm[r] * w->bx[r];
             sy += w->bm[r] * w->by[r];
+            x0 = w->bx[r] < x0 ? w->bx[r] : x0, x1 = w->bx[r] > x1 ? w->bx[r] : x1;
+            y0 = w->by[r] < y0 ? w->by[r] : y0, y1 = w->by[r] > y1 ? w->by[r] : y1;
         }
     } else {
         int shift = 2 * (KEY_BITS - 1 - depth), start[5] = { lo, 0, 0, 0, hi };
@@ -141,49 +164,109 @@ static void build(tree_work *w, int k, int lo, int hi, double side)
         for (int d = 0, c = nd->first; d < 4; d++) {
             if (start[d + 1] == start[d])
                 continue;
-            build(w, c, start[d], start[d + 1], side);
+            build(w, c, start[d], start[d + 1]);
             nd = &w->node[k];
-            m += w->node[c].m;
-            sx += w->node[c].m * w->node[c].mx;
-            sy += w->node[c].m * w->node[c].my;
+            const tree_node *ch = &w->node[c];
+            const tree_box *cb = &w->box[c];
+            m += ch->m;
+            sx += ch->m * ch->mx;
+            sy += ch->m * ch->my;
+            x0 = cb->x0 < x0 ? cb->x0 : x0, x1 = cb->x1 > x1 ? cb->x1 : x1;
+            y0 = cb->y0 < y0 ? cb->y0 : y0, y1 = cb->y1 > y1 ? cb->y1 : y1;
             c++;
         }
     }
+    double size = fmax(x1 - x0, y1 - y0);
     nd->m = m;
     nd->mx = m > 0 ? sx / m : w->bx[lo];
     nd->my = m > 0 ? sy / m : w->by[lo];
+    w->box[k] = (tree_box){ x0, x1, y0, y1 };
+    nd->size2 = size * size;
 }
 
-/* The pull on sorted body r from the tree, as Σ M (x_r - X)/q³ (times
- * -G m_r by the caller). */
-static void walk(const tree_work *w, int r, double theta2, double e2, double *fx, double *fy)
+/* Add Σ_list M (x_r - X)/q³ to (ax, ay) for the group's bodies [lo, hi),
+ * each body's sum in list order: BLOCK bodies at a time take one list entry
+ * side by side (the inner loop, which vectorises without reordering any
+ * sum), so the bits are the same whatever the vector width. A body meets
+ * itself in the list at distance 0: with ε > 0 that term is 0 (dx = dy =
+ * 0); with ε = 0 the guarded loop drops it. On x86-64 an AVX2 copy is
+ * chosen at load time where the processor has it: 4 lanes, not 2, of the
+ * same IEEE operations (no FMA), hence the same bits. */
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay)
+{
+    for (int c = lo; c < hi; c += BLOCK) {
+        int cnt = hi - c < BLOCK ? hi - c : BLOCK;
+        double xr[BLOCK], yr[BLOCK], gx[BLOCK], gy[BLOCK];
+        for (int i = 0; i < BLOCK; i++) { /* a short block is padded with its last body, then dropped */
+            int r = c + (i < cnt ? i : cnt - 1);
+            xr[i] = w->bx[r], yr[i] = w->by[r], gx[i] = ax[r], gy[i] = ay[r];
+        }
+        if (e2 > 0) {
+            for (int j = 0; j < w->len; j++) {
+                double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
+                for (int i = 0; i < BLOCK; i++) {
+                    double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey + e2, s = M / (q2 * sqrt(q2));
+                    gx[i] += s * ex;
+                    gy[i] += s * ey;
+                }
+            }
+        } else {
+            for (int j = 0; j < w->len; j++) {
+                double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
+                for (int i = 0; i < BLOCK; i++) {
+                    double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey;
+                    double s = q2 > 0 ? M / (q2 * sqrt(q2)) : 0;
+                    gx[i] += s * ex;
+                    gy[i] += s * ey;
+                }
+            }
+        }
+        for (int i = 0; i < cnt; i++)
+            ax[c + i] = gx[i], ay[c + i] = gy[i];
+    }
+}
+
+/* Append one point mass to the list, summing and emptying it when full. */
+static void list_add(tree_work *w, const tree_node *g, double x, double y, double m, double e2, double *ax, double *ay)
+{
+    if (w->len == LIST_MAX) {
+        sum_list(w, g->lo, g->hi, e2, ax, ay);
+        w->len = 0;
+    }
+    w->lx[w->len] = x, w->ly[w->len] = y, w->lm[w->len] = m;
+    w->len++;
+}
+
+/* The pull on group g's bodies from the tree, added to (ax, ay) as
+ * Σ M (x_r - X)/q³ (times -G m_r by the caller). g's own cell and its
+ * ancestors are always opened; another cell at distance d from g's box
+ * (0 if its centre of mass lies inside) is taken whole when s² < θ² d². */
+static void walk(tree_work *w, const tree_node *g, double theta2, double e2, double *ax, double *ay)
 {
     int stack[STACK_MAX], top = 0;
-    double xr = w->bx[r], yr = w->by[r], gx = 0, gy = 0;
+    const tree_box *gb = &w->box[g - w->node];
+    double x0 = gb->x0, x1 = gb->x1, y0 = gb->y0, y1 = gb->y1;
     stack[top++] = 0;
+    w->len = 0;
     while (top > 0) {
         const tree_node *nd = &w->node[stack[--top]];
-        double dx = xr - nd->mx, dy = yr - nd->my, d2 = dx * dx + dy * dy;
-        int inside = r >= nd->lo && r < nd->hi;
-        if (!inside && nd->side * nd->side < theta2 * d2) {
-            double q2 = d2 + e2, s = nd->m / (q2 * sqrt(q2));
-            gx += s * dx;
-            gy += s * dy;
+        int holds_g = nd->lo <= g->lo && g->hi <= nd->hi;
+        double dx = nd->mx < x0 ? x0 - nd->mx : nd->mx > x1 ? nd->mx - x1 : 0.0;
+        double dy = nd->my < y0 ? y0 - nd->my : nd->my > y1 ? nd->my - y1 : 0.0;
+        if (!holds_g && nd->size2 < theta2 * (dx * dx + dy * dy)) {
+            list_add(w, g, nd->mx, nd->my, nd->m, e2, ax, ay);
         } else if (nd->count == 0) {
-            for (int j = nd->lo; j < nd->hi; j++) {
-                if (j == r)
-                    continue;
-                double ex = xr - w->bx[j], ey = yr - w->by[j], q2 = ex * ex + ey * ey + e2;
-                double s = w->bm[j] / (q2 * sqrt(q2));
-                gx += s * ex;
-                gy += s * ey;
-            }
+            for (int j = nd->lo; j < nd->hi; j++)
+                list_add(w, g, w->bx[j], w->by[j], w->bm[j], e2, ax, ay);
         } else {
             for (int c = nd->first + nd->count - 1; c >= nd->first; c--)
                 stack[top++] = c; /* popped in order: first child first */
         }
     }
-    *fx = gx, *fy = gy;
+    sum_list(w, g->lo, g->hi, e2, ax, ay);
 }
 
 static void tree_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
@@ -218,14 +301,25 @@ static void tree_add(const sw_particles *p, const sw_force *fo, const double *x,
         w->bx[r] = x[2 * i], w->by[r] = x[2 * i + 1], w->bm[r] = p->mass[i];
     }
     w->nnodes = 1;
-    build(w, 0, 0, n, side);
+    build(w, 0, 0, n);
+    double *ax = w->ax, *ay = w->ay;
+    for (int r = 0; r < n; r++)
+        ax[r] = 0, ay[r] = 0;
     double theta2 = fo->theta * fo->theta, e2 = fo->soft * fo->soft;
+    int stack[STACK_MAX], top = 0;
+    stack[top++] = 0;
+    while (top > 0) { /* the groups, in tree order */
+        const tree_node *nd = &w->node[stack[--top]];
+        if (nd->hi - nd->lo <= GROUP_MAX || nd->count == 0)
+            walk(w, nd, theta2, e2, ax, ay);
+        else
+            for (int c = nd->first + nd->count - 1; c >= nd->first; c--)
+                stack[top++] = c;
+    }
     for (int r = 0; r < n; r++) {
-        double gx, gy, s;
-        walk(w, r, theta2, e2, &gx, &gy);
-        s = fo->mu * w->bm[r];
-        f[2 * w->idx[r]] -= s * gx;
-        f[2 * w->idx[r] + 1] -= s * gy;
+        double s = fo->mu * w->bm[r];
+        f[2 * w->idx[r]] -= s * ax[r];
+        f[2 * w->idx[r] + 1] -= s * ay[r];
     }
 }
 

@@ -49,8 +49,10 @@ static void workprec_message(sw_app *a)
 {
     snprintf(a->message, sizeof a->message, "%s",
              !a->workprec ? "work-precision plot closed"
-             : a->sweep ? "measuring every method for the work-precision plot; it opens when done (w: "
-                          "the mode, Esc: close)"
+             : a->sweep ? (a->workprec == 1 ? "measuring every method for the work-precision plot; it opens "
+                                              "when done (w: against time)"
+                                            : "measuring every method for the work-precision plot; it opens "
+                                              "when done, against wall time (w closes)")
              : a->workprec == 1 ? "work-precision: error against derivative evaluations (w: against time)"
                                 : "work-precision: error against wall time (w closes)");
 }

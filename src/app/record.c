@@ -60,7 +60,7 @@ static void where(const char *path, char *out, size_t len)
     char dir[512];
     out[0] = '\0';
     if (path[0] != '/' && getcwd(dir, sizeof dir))
-        snprintf(out, len, " in %.200s (the directory stepwise started in)", dir);
+        snprintf(out, len, " in %.160s (the directory stepwise started in)", dir);
 }
 
 void sw_app_record_stop(sw_app *a)
@@ -74,9 +74,9 @@ void sw_app_record_stop(sw_app *a)
     else if (replay(a, steps, err, sizeof err) != SW_OK)
         snprintf(a->message, sizeof a->message, "recording failed: %s", err);
     else {
-        char in[300];
+        char in[208]; /* where()'s longest: " in " + 160 + 37 */
         where(a->record_path, in, sizeof in);
-        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.120s%s; grade it: stepwise check %.120s",
+        snprintf(a->message, sizeof a->message, "recorded %ld steps to %.100s%s; grade it: stepwise check %.100s",
                  steps, a->record_path, in, a->record_path);
         a->recorded = 1;
     }
@@ -97,7 +97,7 @@ void sw_app_record_begin(sw_app *a, const char *path)
     snprintf(a->record_path, sizeof a->record_path, "%s", path);
     a->record_method = a->sims[0].method;
     a->record_dt = a->dt;
-    char in[300];
+    char in[208];
     where(a->record_path, in, sizeof in);
     snprintf(a->message, sizeof a->message, "recording from t = 0 to %.200s%s; R stops and writes it", a->record_path,
              in);

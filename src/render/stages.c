@@ -361,8 +361,8 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
     fl[n++].prio = 5;
     if (under[0]) { /* stage points drawn over by a later one, said */
-        snprintf(fl[n].full, sizeof fl[n].full, "(%s: one cell)", under);
-        snprintf(fl[n].brief, sizeof fl[n].brief, "(%s)", under);
+        snprintf(fl[n].full, sizeof fl[n].full, "(%.60s: one cell)", under);
+        snprintf(fl[n].brief, sizeof fl[n].brief, "(%.60s)", under);
         fl[n++].prio = 8;
     }
     if (sw_text_fit(buf, sizeof buf, cols, fl, n, "  ") > 0)

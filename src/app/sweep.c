@@ -15,7 +15,6 @@
 struct sw_sweep {
     const sw_scene *sc;
     double p[SW_MAX_PARAMS];
-    int has_p;            /* 0: the scene's defaults */
     double budget;
     atomic_int stop;      /* the app asks the worker to end early */
     atomic_int done;      /* the worker has written rc, report and why */
@@ -34,7 +33,7 @@ static void *work(void *arg)
         s->rc = SW_ENOMEM;
         snprintf(s->why, sizeof s->why, "out of memory");
     } else {
-        s->rc = sw_bench_scene_quick(s->report, s->sc, s->has_p ? s->p : NULL, s->budget, &s->stop, s->why, sizeof s->why);
+        s->rc = sw_bench_scene_quick(s->report, s->sc, s->p, s->budget, &s->stop, s->why, sizeof s->why);
         if (s->rc != SW_OK) {
             free(s->report);
             s->report = NULL;
@@ -62,10 +61,7 @@ sw_sweep *sw_sweep_start(const sw_scene *sc, const double *p, double budget, cha
         return NULL;
     }
     s->sc = sc;
-    if (p) {
-        memcpy(s->p, p, sizeof s->p);
-        s->has_p = 1;
-    }
+    sw_scene_fill(sc, p, s->p); /* NULL: the defaults */
     s->budget = budget;
     atomic_init(&s->stop, 0);
     atomic_init(&s->done, 0);

@@ -13,7 +13,7 @@
 
 typedef struct sw_sweep sw_sweep;
 
-/* Start measuring scene sc at parameters p within budget state
+/* Start measuring scene sc at parameters p (NULL: the defaults) within budget state
  * evaluations. NULL when out of memory or no thread could start (err says
  * which). */
 sw_sweep *sw_sweep_start(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen);

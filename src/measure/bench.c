@@ -87,6 +87,15 @@ static double sample_time(const sw_bench_report *r, int j) { return sw_truth_sam
 
 /* One reference run to the report time at the given tolerances, the state
  * at every sample time into out (SW_BENCH_SAMPLES × dim). */
+/* Another thread asked the sweep to end (stop set): err says so. */
+static int stopped(const atomic_int *stop, char *err, size_t errlen)
+{
+    if (!stop || !atomic_load(stop))
+        return 0;
+    snprintf(err, errlen, "stopped");
+    return 1;
+}
+
 static int reference_run(sw_bench_report *r, double rtol, double atol, double *out, double *deriv,
                          char *err, size_t errlen)
 {
@@ -104,8 +113,7 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
     }
     for (int j = 1; j <= SW_BENCH_SAMPLES && rc == SW_OK; j++) {
         double t = sample_time(r, j);
-        if (r->stop && atomic_load(r->stop)) {
-            snprintf(err, errlen, "stopped");
+        if (stopped(r->stop, err, errlen)) {
             rc = SW_EINVAL;
         } else if (sw_sim_run_until(&s, t)) {
             snprintf(err, errlen, "%s: the %s reference run (rtol %g) failed at t = %g: %s",
@@ -215,15 +223,6 @@ static int cmp_double(const void *a, const void *b)
  * and counters (every run is identical: the sim is deterministic), the median
  * of all runs the time. *work gets evals × an evaluation's work plus
  * solver iterations × a solve's (sw_truth_eval_work). */
-/* Another thread asked the sweep to end (c->stop). */
-static int stopped(const sw_bench_config *c, char *err, size_t errlen)
-{
-    if (!c->stop || !atomic_load(c->stop))
-        return 0;
-    snprintf(err, errlen, "stopped");
-    return 1;
-}
-
 static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt, double rtol,
                      const sw_bench_config *c, sw_bench_point *pt, double *work, double *scratch,
                      char *err, size_t errlen)
@@ -255,7 +254,7 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
         double seconds = 0, error = 0;
         long evals = 0;
         for (int j = first; j <= SW_BENCH_SAMPLES && !s.blown; j++) {
-            if (stopped(c, err, errlen)) {
+            if (stopped(c->stop, err, errlen)) {
                 sw_sim_free(&s);
                 return SW_EINVAL;
             }

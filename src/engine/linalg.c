@@ -110,7 +110,7 @@ int sw_dense_solve(int n, double *a, double *b)
 
 size_t sw_band_doubles(int n, int kl, int ku) { return (size_t)(2 * kl + ku + 1) * (size_t)n; }
 
-void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
+void sw_band_shape(sw_band *b, int n, int kl, int ku, double *a, int *piv)
 {
     b->n = n;
     b->kl = kl;
@@ -119,6 +119,11 @@ void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
     b->a = a;
     b->piv = piv;
     b->fill = kl + ku;
+}
+
+void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
+{
+    sw_band_shape(b, n, kl, ku, a, piv);
     memset(a, 0, sw_band_doubles(n, kl, ku) * sizeof *a);
 }
 

@@ -35,6 +35,9 @@ typedef struct sw_band {
 size_t sw_band_doubles(int n, int kl, int ku);
 /* Point b at caller storage and zero it. */
 void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv);
+/* Point b at caller storage, left as it is: the caller zeroes each column
+ * (b->ld doubles from b->a + j·b->ld) before it writes into it. */
+void sw_band_shape(sw_band *b, int n, int kl, int ku, double *a, int *piv);
 /* Add v to entry (i, j), which must lie in the band. */
 void sw_band_add(sw_band *b, int i, int j, double v);
 /* Factor in place (LU with partial pivoting, as LAPACK's dgbtf2); 0 or -1

@@ -142,18 +142,29 @@ int sw_band_factor(sw_band *b)
     b->fill = b->ku;
     for (int j = 0; j < n; j++) {
         double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
-        int km = imin(kl, n - 1 - j), jp = 0;
+        int km = n - 1 - j < kl ? n - 1 - j : kl, jp = 0;
         double best = fabs(col[0]);
-        for (int t = 1; t <= km; t++)
-            if (fabs(col[t]) > best) {
-                best = fabs(col[t]);
-                jp = t;
-            }
+        if (km == 3) { /* the loop below, written out (a chain's band) */
+            double a1 = fabs(col[1]), a2 = fabs(col[2]), a3 = fabs(col[3]);
+            if (a1 > best)
+                best = a1, jp = 1;
+            if (a2 > best)
+                best = a2, jp = 2;
+            if (a3 > best)
+                best = a3, jp = 3;
+        } else {
+            for (int t = 1; t <= km; t++)
+                if (fabs(col[t]) > best) {
+                    best = fabs(col[t]);
+                    jp = t;
+                }
+        }
         b->piv[j] = j + jp;
         if (!(best > 0) || !isfinite(best))
             return -1;
-        ju = imax(ju, imin(j + kv - kl + jp, n - 1)); /* j + ku + jp */
-        b->fill = imax(b->fill, ju - j);
+        int reach = j + kv - kl + jp < n - 1 ? j + kv - kl + jp : n - 1; /* j + ku + jp */
+        ju = reach > ju ? reach : ju;
+        b->fill = ju - j > b->fill ? ju - j : b->fill;
         if (jp != 0)
             for (int c = j; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c; /* cc[t]: entry (j + t, c) */
@@ -167,6 +178,28 @@ int sw_band_factor(sw_band *b)
             col[1] = l1;
             col[2] = l2;
             col[3] = l3;
+            if (ju == j + 3) { /* no interchange widened U here: the three
+                                  columns of the loop below, written out */
+                double *c1 = col + (ld - 1), *c2 = c1 + (ld - 1), *c3 = c2 + (ld - 1);
+                double u1 = c1[0], u2 = c2[0], u3 = c3[0];
+                if (u1 != 0) {
+                    c1[1] -= l1 * u1;
+                    c1[2] -= l2 * u1;
+                    c1[3] -= l3 * u1;
+                }
+                if (u2 != 0) {
+                    c2[1] -= l1 * u2;
+                    c2[2] -= l2 * u2;
+                    c2[3] -= l3 * u2;
+                }
+                if (u3 != 0) {
+                    c3[1] -= l1 * u3;
+                    c3[2] -= l2 * u3;
+                    c3[3] -= l3 * u3;
+                }
+                continue;
+            }
+            /* column c's entries from row j down start at col + (c - j)·(ld - 1) */
             for (int c = j + 1; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c;
                 double u = cc[0];

@@ -138,8 +138,8 @@ static int imax(int a, int b) { return a > b ? a : b; }
  * so every inner loop runs down one column. */
 int sw_band_factor(sw_band *b)
 {
-    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0;
-    b->fill = b->ku;
+    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0, fill = b->ku;
+    int *piv = b->piv;
     for (int j = 0; j < n; j++) {
         double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
         int km = n - 1 - j < kl ? n - 1 - j : kl, jp = 0;
@@ -159,12 +159,14 @@ int sw_band_factor(sw_band *b)
                     jp = t;
                 }
         }
-        b->piv[j] = j + jp;
-        if (!(best > 0) || !isfinite(best))
+        piv[j] = j + jp;
+        if (!(best > 0) || !isfinite(best)) {
+            b->fill = fill;
             return -1;
+        }
         int reach = j + kv - kl + jp < n - 1 ? j + kv - kl + jp : n - 1; /* j + ku + jp */
         ju = reach > ju ? reach : ju;
-        b->fill = ju - j > b->fill ? ju - j : b->fill;
+        fill = ju - j > fill ? ju - j : fill;
         if (jp != 0)
             for (int c = j; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c; /* cc[t]: entry (j + t, c) */
@@ -221,6 +223,7 @@ int sw_band_factor(sw_band *b)
                     cc[t] -= col[t] * u;
         }
     }
+    b->fill = fill;
     return 0;
 }
 

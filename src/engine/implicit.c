@@ -5,21 +5,20 @@
  * implicit_wide.c (four lanes, fused); the same steps in plain loops, as
  * the lecture writes them, are in reference_implicit.c, and
  * tests/check_reference_implicit.c holds these to their bits. */
-#include "engine/stepper.h"
+#include "engine/implicit.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "engine/implicit_wide.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
-/* Newton's stopping rule (stepper.h): converged, failed, or go on with a
+/* Newton's stopping rule (implicit.h): converged, failed, or go on with a
  * kept or a fresh J. SIMPLIFIED_RATE: the contraction a kept J must keep. */
 #define SIMPLIFIED_RATE 0.125
 
-int sw_newton_next(double step, double size, double gnew, double gnorm, double lambda, int keep_j, int *fresh,
-                   double *last_step, const char **why)
+int swi_newton_next(double step, double size, double gnew, double gnorm, double lambda, int keep_j, int *fresh,
+                    double *last_step, const char **why)
 {
     int kept = keep_j && !*fresh;
     /* With a kept J the iteration converges linearly, at the rate θ of
@@ -125,7 +124,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         /* step = λ·|δ|∞, d += λδ and size = |y + d|∞, in one pass */
         double size, dmax = swi_advance(n, d, lambda, delta, y, &size);
         double step = lambda * dmax;
-        int next = sw_newton_next(step, size, gnew, gnorm, lambda, yj != NULL, &fresh, &last_step, &s->why);
+        int next = swi_newton_next(step, size, gnew, gnorm, lambda, yj != NULL, &fresh, &last_step, &s->why);
         if (next <= 0)
             return next;
         gnorm = gnew;
@@ -134,15 +133,15 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
     return -1;
 }
 
-/* Continuation (stepper.h), after Newton from Δ = 0 failed with `why`:
+/* Continuation (implicit.h), after Newton from Δ = 0 failed with `why`:
  * the equation for σ·h, σ rising from 0 to 1, each solution the start of
  * the next (predicted by the secant through the last two), σ's increment
  * doubled after a solve and quartered after a failed one. That finds the
  * solution connected to y0, the one backward Euler means where the
  * equation has several; it fails, with a message, only when that branch
  * folds back. Vectors 0 (Δ), 4 and 5. */
-int sw_newton_continuation(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                           sw_newton_fn *solve, const char *why)
+int swi_newton_continuation(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
+                            swi_newton_fn *solve, const char *why)
 {
     int n = ode->dim;
     double *d = SW_WORK(s, 0), *done = SW_WORK(s, 4), *prev = SW_WORK(s, 5);
@@ -186,7 +185,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
 {
     double *d = SW_WORK(s, 0);
     if (newton(s, ode, *t, y, h, theta, d, 1, 40, SW_WORK(s, 4)) != 0 &&
-        sw_newton_continuation(s, ode, *t, y, h, theta, newton_far, s->why) != 0)
+        swi_newton_continuation(s, ode, *t, y, h, theta, newton_far, s->why) != 0)
         return SW_EDIVERGED;
     sw_axpy(ode->dim, y, y, 1.0, d);
     *t += h;

@@ -2,7 +2,7 @@
  * four lanes wide and fused: each gives the bits of the plain loops in
  * reference_implicit.c (lane k holds the components i ≡ k (mod 4), the
  * partial sums the plain loops keep; a maximum is the same in any order). */
-#include "engine/implicit_wide.h"
+#include "engine/implicit.h"
 
 #include <math.h>
 #include <string.h>

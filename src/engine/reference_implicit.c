@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "engine/implicit_wide.h"
+#include "engine/implicit.h"
 #include "engine/rosenbrock.h"
 #include "stepwise/base.h"
 
@@ -38,7 +38,7 @@ static double norm2(int n, const double *v)
  *     solve (I - θσh·J) δ = -G(Δ),  then  Δ = Δ + λ·δ,
  * λ halved until |G|₂ falls (a line search: far from the solution a full
  * step can overshoot). Stop when the correction λ|δ|∞ is at rounding
- * level, 1e-12·|y0 + Δ|∞ (sw_newton_next, implicit.c, says exactly when).
+ * level, 1e-12·|y0 + Δ|∞ (swi_newton_next, implicit.c, says exactly when).
  * With keep_j, simplified Newton: J taken once, at the first iterate, and
  * kept while each iteration shrinks |G| eightfold (each solve with the
  * same J reuses its factors); a slower or stalled iteration takes J afresh.
@@ -106,7 +106,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
         }
         /* stop at rounding level, or take J afresh, or go on (implicit.c:
          * the rule is one for both forms) */
-        int next = sw_newton_next(lambda * (nan ? NAN : dmax), size, gnew, gnorm, lambda, keep_j, &fresh,
+        int next = swi_newton_next(lambda * (nan ? NAN : dmax), size, gnew, gnorm, lambda, keep_j, &fresh,
                                   &last_step, &s->why);
         if (next <= 0)
             return next;
@@ -133,7 +133,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
     for (int i = 0; i < n; i++)
         d[i] = 0.0;
     if (newton(s, ode, *t, y, h, theta, d, 40, 1) != 0 &&
-        sw_newton_continuation(s, ode, *t, y, h, theta, newton_far, s->why) != 0)
+        swi_newton_continuation(s, ode, *t, y, h, theta, newton_far, s->why) != 0)
         return SW_EDIVERGED;
     for (int i = 0; i < n; i++)
         y[i] = y[i] + d[i];
@@ -192,7 +192,7 @@ static void lecture_trial(sw_stepper *s, sw_ode *ode, double t, double *y, doubl
     double *f1 = SW_WORK(s, s->fsal ? 0 : S_F1), gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
     memcpy(SW_WORK(s, S_SAVED), y, (size_t)n * sizeof *y);
-    int timed = sw_rodas_time_derivative(ode, t, y, f0, ft);
+    int timed = swr_time_derivative(ode, t, y, f0, ft);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
         double *k = SW_WORK(s, S_K1 + st);
         const double *f = f0;
@@ -241,7 +241,7 @@ static void lecture_trial(sw_stepper *s, sw_ode *ode, double t, double *y, doubl
  * the production controller (the same settings: adaptive.c is shared). */
 int sw_refi_rodas4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
 {
-    sw_adaptive lecture = sw_rodas4_method;
+    sw_adaptive lecture = swr_rodas4;
     lecture.trial = lecture_trial;
     return sw_adaptive_step(&lecture, s, ode, t, y, h_max);
 }

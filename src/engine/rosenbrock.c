@@ -17,7 +17,7 @@
 #include "engine/rodas_tableau.h"
 #include "stepwise/base.h"
 
-int sw_rodas_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft)
+int swr_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft)
 {
     int n = ode->dim, any = 0;
     double delta = sqrt(DBL_EPSILON * fmax(1e-5, fabs(t)));
@@ -49,7 +49,7 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
     double gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
     memcpy(saved, y, (size_t)n * sizeof *y);
-    int timed = sw_rodas_time_derivative(ode, t, y, f0, ft);
+    int timed = swr_time_derivative(ode, t, y, f0, ft);
     for (int st = 0; st < SW_RODAS_STAGES; st++)
         k[st] = SW_WORK(s, S_K1 + st);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
@@ -91,7 +91,7 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
 /* Hairer's RODAS: h_new/h = 0.9·err^(-1/4) within [1/5, 6], no growth right
  * after a rejection. The trial counts its own evaluations (a failed solve
  * stops it early). */
-const sw_adaptive sw_rodas4_method = {
+const sw_adaptive swr_rodas4 = {
     .trial = rodas_trial,
     .evals = 0,
     .coupled = 1,
@@ -109,5 +109,5 @@ _Static_assert(ROSENBROCK_VECTORS == 12, "rodas4 needs 12 work vectors (integrat
 /* One accepted RODAS4 step of at most h_max. */
 int sw_step_rodas4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
 {
-    return sw_adaptive_step(&sw_rodas4_method, s, ode, t, y, h_max);
+    return sw_adaptive_step(&swr_rodas4, s, ode, t, y, h_max);
 }

@@ -11,12 +11,12 @@
 enum { S_K1 = 1, S_K6 = S_K1 + SW_RODAS_STAGES - 1, S_YT, S_RHS, S_FT, S_SAVED, S_F1, ROSENBROCK_VECTORS };
 
 /* RODAS4's trial and Hairer's controller settings for it. */
-extern const sw_adaptive sw_rodas4_method;
+extern const sw_adaptive swr_rodas4;
 
 /* ∂f/∂t at (t, y) by a forward difference (Hairer's RODAS: δ = √(u·max(1e-5,
  * |t|))), into ft; returns 0 when it is zero everywhere (an autonomous
  * system: the stages then skip the term). One evaluation. */
-int sw_rodas_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft);
+int swr_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft);
 
 /* One pass of a stage's arithmetic over n components (out is never one of
  * the vectors read; k holds five vector pointers, the first `terms` read):

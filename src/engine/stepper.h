@@ -48,22 +48,6 @@ void sw_integrator_disable(const sw_integrator *m, const char *why);
 /* One step through the method's table entry: sw_stepper_step, public
  * (stepwise/integrator.h). */
 
-/* Newton's stopping rule for the implicit methods (implicit.c), one for the
- * production and the lecture form: after an iteration with correction step
- * = λ·|δ|∞ at size = |y0 + Δ|∞ and |G|₂ gone from gnorm to gnew, 0
- * converged, -1 failed (*why set), 1 go on (*fresh: take J afresh;
- * *last_step the last correction, INFINITY at the start). */
-int sw_newton_next(double step, double size, double gnew, double gnorm, double lambda, int keep_j, int *fresh,
-                   double *last_step, const char **why);
-/* Newton from Δ = d on the implicit equation over the step h (implicit.c),
- * J afresh at every iterate, at most 12 iterations: 0, d the solution. */
-typedef int sw_newton_fn(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                         double *d);
-/* The continuation in σ·h, σ from 0 to 1, that solves the implicit step
- * where Newton from Δ = 0 failed with `why` (implicit.c), each equation by
- * `solve`: 0 with Δ in work vector 0, or SW_EDIVERGED with s->why = why. */
-int sw_newton_continuation(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
-                           sw_newton_fn *solve, const char *why);
 /* Solve (I - c·J) z = r through ode->solve, or the dense finite-difference
  * fallback (dim <= SW_DENSE_MAX) using s->dense. */
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,

@@ -119,6 +119,7 @@ void sw_band_shape(sw_band *b, int n, int kl, int ku, double *a, int *piv)
     b->a = a;
     b->piv = piv;
     b->fill = kl + ku;
+    b->straight = 0;
 }
 
 void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
@@ -138,7 +139,7 @@ static int imax(int a, int b) { return a > b ? a : b; }
  * so every inner loop runs down one column. */
 int sw_band_factor(sw_band *b)
 {
-    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0, fill = b->ku;
+    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0, fill = b->ku, straight = n;
     int *piv = b->piv;
     for (int j = 0; j < n; j++) {
         double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
@@ -167,13 +168,15 @@ int sw_band_factor(sw_band *b)
         int reach = j + kv - kl + jp < n - 1 ? j + kv - kl + jp : n - 1; /* j + ku + jp */
         ju = reach > ju ? reach : ju;
         fill = ju - j > fill ? ju - j : fill;
-        if (jp != 0)
+        if (jp != 0) {
+            straight = straight < j ? straight : j;
             for (int c = j; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c; /* cc[t]: entry (j + t, c) */
                 double tmp = cc[jp];
                 cc[jp] = cc[0];
                 cc[0] = tmp;
             }
+        }
         double inv = 1.0 / col[0];
         if (km == 3) { /* a chain's band written out, as in sw_band_solve */
             double l1 = col[1] * inv, l2 = col[2] * inv, l3 = col[3] * inv;
@@ -224,22 +227,24 @@ int sw_band_factor(sw_band *b)
         }
     }
     b->fill = fill;
+    b->straight = straight;
     return 0;
 }
 
 /* A chain's band (kl = 3) forward, from row 0 while no row was
- * interchanged: the rows still being updated ride in registers (through
+ * interchanged (the factorisation's b->straight): the rows still being updated ride in registers (through
  * memory, each update waited for the store of the last). Every x_i gets
  * the same updates in the same order as in sw_band_solve's loop. Returns
  * the row where that loop takes over (an interchange, or the last rows). */
 static int forward_chain(const sw_band *b, double *x)
 {
-    int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = 0;
+    int n = b->n, ld = b->ld, j = 0;
     if (n < 4)
         return 0;
+    int end = b->straight < n - 3 ? b->straight : n - 3;
+    const double *col = b->a + b->kl + b->ku; /* column j's diagonal */
     double q0 = x[0], q1 = x[1], q2 = x[2]; /* x_j, x_j+1, x_j+2 as updated so far */
-    for (; j < n - 3 && b->piv[j] == j; j++) {
-        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+    for (; j < end; j++, col += ld) {
         double xj = q0;
         x[j] = xj;
         q0 = q1 - col[1] * xj;
@@ -261,9 +266,9 @@ static int back_chain(const sw_band *b, double *x)
     int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = n - 1;
     if (n < 4)
         return j;
+    const double *col = b->a + (size_t)j * (size_t)ld + kv; /* column j's diagonal */
     double p0 = x[j], p1 = x[j - 1], p2 = x[j - 2]; /* x_j, x_j-1, x_j-2 as updated so far */
-    for (; j >= 3; j--) {
-        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+    for (; j >= 3; j--, col -= ld) {
         double xj = p0 / col[0];
         if (!isfinite(xj))
             break;

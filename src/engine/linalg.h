@@ -29,6 +29,8 @@ typedef struct sw_band {
     int *piv;        /* n pivot rows, owned by the caller */
     int fill;        /* after sw_band_factor: super-diagonals of U that row interchanges
                         filled, ku to kl + ku (beyond them U is zero) */
+    int straight;    /* after sw_band_factor: the columns before the first row
+                        interchange (n: none) */
 } sw_band;
 
 /* Doubles and ints a band of this shape needs. */

@@ -107,7 +107,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
         /* stop at rounding level, or take J afresh, or go on (implicit.c:
          * the rule is one for both forms) */
         int next = swi_newton_next(lambda * (nan ? NAN : dmax), size, gnew, gnorm, lambda, keep_j, &fresh,
-                                  &last_step, &s->why);
+                                   &last_step, &s->why);
         if (next <= 0)
             return next;
         gnorm = gnew;

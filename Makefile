@@ -60,11 +60,11 @@ WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 # The embedder's library in two parts, one split used twice: the methods,
 # and the derivative part (particles, forces, flow fields, the scenes and
 # the util modules they use), which the plugin host is built from alone.
-ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explicit.c implicit.c integrators.c \
-                 lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c)
+ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explicit.c implicit.c implicit_wide.c \
+                 integrators.c lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c rosenbrock_wide.c)
 # The methods' lecture forms, for reading and for the tests: in the tool's
 # archive only, neither the embedder's library nor the plugin host.
-ENGINE_READING = src/engine/reference.c
+ENGINE_READING = src/engine/reference.c src/engine/reference_implicit.c
 DERIV_SRC = $(filter-out $(ENGINE_METHODS) $(ENGINE_READING),$(wildcard src/engine/*.c)) $(wildcard src/scenes/*.c) \
             src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
 CORE_SRC = $(DERIV_SRC) $(ENGINE_METHODS) $(wildcard src/sim/*.c)

@@ -110,7 +110,7 @@ int sw_dense_solve(int n, double *a, double *b)
 
 size_t sw_band_doubles(int n, int kl, int ku) { return (size_t)(2 * kl + ku + 1) * (size_t)n; }
 
-void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
+void sw_band_shape(sw_band *b, int n, int kl, int ku, double *a, int *piv)
 {
     b->n = n;
     b->kl = kl;
@@ -119,6 +119,12 @@ void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
     b->a = a;
     b->piv = piv;
     b->fill = kl + ku;
+    b->straight = 0;
+}
+
+void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv)
+{
+    sw_band_shape(b, n, kl, ku, a, piv);
     memset(a, 0, sw_band_doubles(n, kl, ku) * sizeof *a);
 }
 
@@ -133,35 +139,72 @@ static int imax(int a, int b) { return a > b ? a : b; }
  * so every inner loop runs down one column. */
 int sw_band_factor(sw_band *b)
 {
-    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0;
-    b->fill = b->ku;
+    int n = b->n, kl = b->kl, kv = b->kl + b->ku, ld = b->ld, ju = 0, fill = b->ku, straight = n;
+    int *piv = b->piv;
     for (int j = 0; j < n; j++) {
         double *col = b->a + (size_t)j * (size_t)ld + kv; /* col[t]: entry (j + t, j) */
-        int km = imin(kl, n - 1 - j), jp = 0;
+        int km = n - 1 - j < kl ? n - 1 - j : kl, jp = 0;
         double best = fabs(col[0]);
-        for (int t = 1; t <= km; t++)
-            if (fabs(col[t]) > best) {
-                best = fabs(col[t]);
-                jp = t;
-            }
-        b->piv[j] = j + jp;
-        if (!(best > 0) || !isfinite(best))
+        if (km == 3) { /* the loop below, written out (a chain's band) */
+            double a1 = fabs(col[1]), a2 = fabs(col[2]), a3 = fabs(col[3]);
+            if (a1 > best)
+                best = a1, jp = 1;
+            if (a2 > best)
+                best = a2, jp = 2;
+            if (a3 > best)
+                best = a3, jp = 3;
+        } else {
+            for (int t = 1; t <= km; t++)
+                if (fabs(col[t]) > best) {
+                    best = fabs(col[t]);
+                    jp = t;
+                }
+        }
+        piv[j] = j + jp;
+        if (!(best > 0) || !isfinite(best)) {
+            b->fill = fill;
             return -1;
-        ju = imax(ju, imin(j + kv - kl + jp, n - 1)); /* j + ku + jp */
-        b->fill = imax(b->fill, ju - j);
-        if (jp != 0)
+        }
+        int reach = j + kv - kl + jp < n - 1 ? j + kv - kl + jp : n - 1; /* j + ku + jp */
+        ju = reach > ju ? reach : ju;
+        fill = ju - j > fill ? ju - j : fill;
+        if (jp != 0) {
+            straight = straight < j ? straight : j;
             for (int c = j; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c; /* cc[t]: entry (j + t, c) */
                 double tmp = cc[jp];
                 cc[jp] = cc[0];
                 cc[0] = tmp;
             }
+        }
         double inv = 1.0 / col[0];
         if (km == 3) { /* a chain's band written out, as in sw_band_solve */
             double l1 = col[1] * inv, l2 = col[2] * inv, l3 = col[3] * inv;
             col[1] = l1;
             col[2] = l2;
             col[3] = l3;
+            if (ju == j + 3) { /* no interchange widened U here: the three
+                                  columns of the loop below, written out */
+                double *c1 = col + (ld - 1), *c2 = c1 + (ld - 1), *c3 = c2 + (ld - 1);
+                double u1 = c1[0], u2 = c2[0], u3 = c3[0];
+                if (u1 != 0) {
+                    c1[1] -= l1 * u1;
+                    c1[2] -= l2 * u1;
+                    c1[3] -= l3 * u1;
+                }
+                if (u2 != 0) {
+                    c2[1] -= l1 * u2;
+                    c2[2] -= l2 * u2;
+                    c2[3] -= l3 * u2;
+                }
+                if (u3 != 0) {
+                    c3[1] -= l1 * u3;
+                    c3[2] -= l2 * u3;
+                    c3[3] -= l3 * u3;
+                }
+                continue;
+            }
+            /* column c's entries from row j down start at col + (c - j)·(ld - 1) */
             for (int c = j + 1; c <= ju; c++) {
                 double *cc = b->a + (size_t)c * (size_t)ld + kv + j - c;
                 double u = cc[0];
@@ -183,22 +226,25 @@ int sw_band_factor(sw_band *b)
                     cc[t] -= col[t] * u;
         }
     }
+    b->fill = fill;
+    b->straight = straight;
     return 0;
 }
 
 /* A chain's band (kl = 3) forward, from row 0 while no row was
- * interchanged: the rows still being updated ride in registers (through
+ * interchanged (the factorisation's b->straight): the rows still being updated ride in registers (through
  * memory, each update waited for the store of the last). Every x_i gets
  * the same updates in the same order as in sw_band_solve's loop. Returns
  * the row where that loop takes over (an interchange, or the last rows). */
 static int forward_chain(const sw_band *b, double *x)
 {
-    int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = 0;
+    int n = b->n, ld = b->ld, j = 0;
     if (n < 4)
         return 0;
+    int end = b->straight < n - 3 ? b->straight : n - 3;
+    const double *col = b->a + b->kl + b->ku; /* column j's diagonal */
     double q0 = x[0], q1 = x[1], q2 = x[2]; /* x_j, x_j+1, x_j+2 as updated so far */
-    for (; j < n - 3 && b->piv[j] == j; j++) {
-        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+    for (; j < end; j++, col += ld) {
         double xj = q0;
         x[j] = xj;
         q0 = q1 - col[1] * xj;
@@ -220,9 +266,9 @@ static int back_chain(const sw_band *b, double *x)
     int n = b->n, kv = b->kl + b->ku, ld = b->ld, j = n - 1;
     if (n < 4)
         return j;
+    const double *col = b->a + (size_t)j * (size_t)ld + kv; /* column j's diagonal */
     double p0 = x[j], p1 = x[j - 1], p2 = x[j - 2]; /* x_j, x_j-1, x_j-2 as updated so far */
-    for (; j >= 3; j--) {
-        const double *col = b->a + (size_t)j * (size_t)ld + kv;
+    for (; j >= 3; j--, col -= ld) {
         double xj = p0 / col[0];
         if (!isfinite(xj))
             break;

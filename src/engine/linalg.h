@@ -29,12 +29,17 @@ typedef struct sw_band {
     int *piv;        /* n pivot rows, owned by the caller */
     int fill;        /* after sw_band_factor: super-diagonals of U that row interchanges
                         filled, ku to kl + ku (beyond them U is zero) */
+    int straight;    /* after sw_band_factor: the columns before the first row
+                        interchange (n: none) */
 } sw_band;
 
 /* Doubles and ints a band of this shape needs. */
 size_t sw_band_doubles(int n, int kl, int ku);
 /* Point b at caller storage and zero it. */
 void sw_band_init(sw_band *b, int n, int kl, int ku, double *a, int *piv);
+/* Point b at caller storage, left as it is: the caller zeroes each column
+ * (b->ld doubles from b->a + j·b->ld) before it writes into it. */
+void sw_band_shape(sw_band *b, int n, int kl, int ku, double *a, int *piv);
 /* Add v to entry (i, j), which must lie in the band. */
 void sw_band_add(sw_band *b, int i, int j, double v);
 /* Factor in place (LU with partial pivoting, as LAPACK's dgbtf2); 0 or -1

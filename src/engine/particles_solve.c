@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/clones.h"
 #include "engine/forces.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
@@ -160,7 +161,10 @@ static int assemble(sw_particles *p, const double *y)
     s->factored = 0;
     if (reserve_pairs(p) != SW_OK)
         return SW_ENOMEM;
-    memset(s->diag, 0, (size_t)8 * p->n * sizeof *s->diag);
+    /* eight doubles a particle, cleared a particle at a time (stores, not
+     * one long memset: callgrind counts each byte of a long one) */
+    for (int i = 0; i < p->n; i++)
+        memset(s->diag + 8 * i, 0, 8 * sizeof *s->diag);
     swp_blocks out = { s->diag, s->pa, s->pb, s->pblock, 0 };
     for (int k = 0; k < p->nforces; k++)
         swp_force_type_of(p->forces[k].kind)->blocks(p, &p->forces[k], y, y + 2 * p->n, &out);
@@ -194,33 +198,34 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
     }
 }
 
-/* Entry (i, j) of the band's storage (LAPACK's layout, engine/linalg.h). */
-static double *band_entry(const sw_band *b, int i, int j)
-{
-    return b->a + (b->kl + b->ku + i - j) + (size_t)j * (size_t)b->ld;
-}
-
 /* The band += a·Kx + b·Kv for the 2x2 blocks Kx, Kv at particle rows pi,
- * columns pj, written straight into the factorisation's storage; a term
+ * columns pj, written straight into the factorisation's storage (LAPACK's
+ * layout, engine/linalg.h: entry (i, j) at top + i - j + j·ld; with own,
+ * the particle's own block, its mass m on the diagonal first); a term
  * whose factor is 0 is left out (it would add nothing but could turn an
- * infinite entry into NaN). Each entry gets its terms in the order the
+ * infinite entry into NaN; with_a = a != 0, with_b = b != 0, constants
+ * where the caller fixes them). Each entry gets its terms in the order the
  * blocks come (a particle's own, then the pairs', Kx before Kv), the order
  * the solve has always added them in. */
-static inline void band_blocks(const sw_band *b, int pi, int pj, double a, const double *kx, double bv,
-                               const double *kv)
+SW_INLINE void band_blocks(double *top, int ld, int pi, int pj, int own, double m, double a, const double *kx, double bv,
+                           const double *kv, int with_a, int with_b)
 {
-    double *e = band_entry(b, 2 * pi, 2 * pj); /* (r, c) at e + r - c + c·ld */
-    double *e01 = e + b->ld - 1, *e11 = e + b->ld;
+    double *e = top + 2 * (pi - pj) + (size_t)2 * (size_t)pj * (size_t)ld; /* (r, c) at e + r - c + c·ld */
+    double *e01 = e + ld - 1, *e11 = e + ld;
     /* four distinct entries, loaded once and stored once (through the
      * pointers, each second update waited for the first one's store) */
     double v00 = e[0], v01 = *e01, v10 = e[1], v11 = *e11;
-    if (a != 0) {
+    if (own) { /* a particle's own block, just cleared: its mass first (0 + m) */
+        v00 = 0.0 + m;
+        v11 = 0.0 + m;
+    }
+    if (with_a) {
         v00 += a * kx[0];
         v01 += a * kx[1];
         v10 += a * kx[2];
         v11 += a * kx[3];
     }
-    if (bv != 0) {
+    if (with_b) {
         v00 += bv * kv[0];
         v01 += bv * kv[1];
         v10 += bv * kv[2];
@@ -241,30 +246,48 @@ static inline void apply_block(double *out, int pi, int pj, double sc, const dou
 }
 
 /* The velocity system's matrix A = M - c·Fv - c²·Fx from the blocks, into
- * the band, and its factors. 0, or -1 when A is singular. */
-static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
+ * the band (whose shape is set), with_a and with_b as in band_blocks. */
+SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, const sw_band *band, int with_a,
+                                    int with_b)
 {
-    struct sw_particles_solver *s = p->solver;
-    double a = -c * c, b = -c;
-    sw_band_init(band, 2 * p->n, s->half_band, s->half_band, s->band, s->piv);
+    const struct sw_particles_solver *s = p->solver;
+    int ld = band->ld;
+    double *top = band->a + band->kl + band->ku; /* the diagonal's row in column 0 */
     for (int i = 0; i < p->n; i++) {
-        *band_entry(band, 2 * i, 2 * i) += p->mass[i];
-        *band_entry(band, 2 * i + 1, 2 * i + 1) += p->mass[i];
-        band_blocks(band, i, i, a, s->diag + 8 * i, b, s->diag + 8 * i + 4);
+        /* particle i's two columns cleared just before its own entries go
+         * in (nothing before wrote there; the pairs come after): the band
+         * is cleared column by column while it is in the cache, not in one
+         * pass of its own */
+        memset(band->a + (size_t)2 * i * (size_t)ld, 0, (size_t)2 * (size_t)ld * sizeof *band->a);
+        band_blocks(top, ld, i, i, 1, p->mass[i], a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
     }
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j, *kv = kx + 4;
         /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b). */
         int ea = s->pa[j], eb = s->pb[j];
         if (ea >= 0)
-            band_blocks(band, ea, ea, a, kx, b, kv);
+            band_blocks(top, ld, ea, ea, 0, 0.0, a, kx, b, kv, with_a, with_b);
         if (ea >= 0 && eb >= 0) {
-            band_blocks(band, ea, eb, -a, kx, -b, kv);
-            band_blocks(band, eb, ea, -a, kx, -b, kv);
+            band_blocks(top, ld, ea, eb, 0, 0.0, -a, kx, -b, kv, with_a, with_b);
+            band_blocks(top, ld, eb, ea, 0, 0.0, -a, kx, -b, kv, with_a, with_b);
         }
         if (eb >= 0)
-            band_blocks(band, eb, eb, a, kx, b, kv);
+            band_blocks(top, ld, eb, eb, 0, 0.0, a, kx, b, kv, with_a, with_b);
     }
+}
+
+/* A = M - c·Fv - c²·Fx into the band, and its factors. 0, or -1 when A is
+ * singular. a = -c² and b = -c are both nonzero but where c is 0 or c²
+ * underflows: that case gets its own copy of the loops. */
+static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
+{
+    struct sw_particles_solver *s = p->solver;
+    double a = -c * c, b = -c;
+    sw_band_shape(band, 2 * p->n, s->half_band, s->half_band, s->band, s->piv);
+    if (a != 0 && b != 0)
+        fill_velocity_system(p, a, b, band, 1, 1);
+    else
+        fill_velocity_system(p, a, b, band, a != 0, b != 0);
     return sw_band_factor(band);
 }
 

@@ -1,11 +1,14 @@
 /* RODAS4, Hairer & Wanner's L-stable Rosenbrock method of order 4 with an
  * embedded order-3 estimate, under the shared step-size controller
- * (adaptive.c). Linearly implicit: one Jacobian per step, and every stage
+ * (adaptive.c). The stages' arithmetic runs in rosenbrock_wide.c (one
+ * unrolled pass a stage); the trial in plain loops, as the lecture writes
+ * it, is in reference_implicit.c, held to these bits by
+ * tests/check_reference_implicit.c. Linearly implicit: one Jacobian per step, and every stage
  * solves with the same matrix (I - γh·J(t0, y0)) through sw_ode_solve with
  * the same (t0, y0, γh), so a solve that keeps its factorisation factors
  * once per step. Invariant: y0 is left untouched until a trial has every
  * stage, so a failed solve costs only the trial. */
-#include "engine/adaptive.h"
+#include "engine/rosenbrock.h"
 
 #include <float.h>
 #include <math.h>
@@ -14,13 +17,7 @@
 #include "engine/rodas_tableau.h"
 #include "stepwise/base.h"
 
-/* Slots: the FSAL derivative alternates between 0 and S_F1. */
-enum { S_K1 = 1, S_K6 = S_K1 + SW_RODAS_STAGES - 1, S_YT, S_RHS, S_FT, S_SAVED, S_F1, ROSENBROCK_VECTORS };
-
-/* ∂f/∂t at (t, y) by a forward difference (Hairer's RODAS: δ = √(u·max(1e-5,
- * |t|))), into ft; returns 0 when it is zero everywhere (an autonomous
- * system: the stages then skip the term). One evaluation. */
-static int time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft)
+int swr_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft)
 {
     int n = ode->dim, any = 0;
     double delta = sqrt(DBL_EPSILON * fmax(1e-5, fabs(t)));
@@ -30,60 +27,6 @@ static int time_derivative(sw_ode *ode, double t, const double *y, const double 
         any |= ft[i] != 0;
     }
     return any;
-}
-
-/* One pass of a stage's arithmetic, with the tableau's row fixed at each
- * call (terms and with_ft are constants where it is inlined, so the loop
- * over i has no inner loop and vectorises):
- *     out_i = base_i + Σ_{j<terms} coef_j·k_j,i                (scale 0)
- *     out_i = scale·((base_i + dh·ft_i) + Σ_{j<terms} coef_j·k_j,i)
- * the sums taken in the lecture form's order, j rising, so the bits are
- * its bits. out is never one of the vectors read. */
-SW_INLINE void stage_pass(int n, int terms, int with_ft, double *restrict out, const double *restrict base,
-                          double dh, const double *restrict ft, double scale, const double *coef,
-                          const double *const *k)
-{
-    const double *restrict k0 = k[0], *restrict k1 = k[1], *restrict k2 = k[2], *restrict k3 = k[3],
-                 *restrict k4 = k[4];
-    double c0 = terms > 0 ? coef[0] : 0, c1 = terms > 1 ? coef[1] : 0, c2 = terms > 2 ? coef[2] : 0,
-           c3 = terms > 3 ? coef[3] : 0, c4 = terms > 4 ? coef[4] : 0;
-    for (int i = 0; i < n; i++) {
-        double sum = base[i];
-        if (with_ft)
-            sum += dh * ft[i];
-        if (terms > 0)
-            sum += c0 * k0[i];
-        if (terms > 1)
-            sum += c1 * k1[i];
-        if (terms > 2)
-            sum += c2 * k2[i];
-        if (terms > 3)
-            sum += c3 * k3[i];
-        if (terms > 4)
-            sum += c4 * k4[i];
-        out[i] = with_ft ? scale * sum : sum;
-    }
-}
-
-/* stage_pass with the number of terms made a constant, one copy each. */
-static SW_CLONES void stage_combine(int n, int terms, int with_ft, double *restrict out,
-                                    const double *restrict base, double dh, const double *restrict ft,
-                                    double scale, const double *coef, const double *const *k)
-{
-    switch (terms * 2 + with_ft) {
-    case 0: stage_pass(n, 0, 0, out, base, dh, ft, scale, coef, k); break;
-    case 1: stage_pass(n, 0, 1, out, base, dh, ft, scale, coef, k); break;
-    case 2: stage_pass(n, 1, 0, out, base, dh, ft, scale, coef, k); break;
-    case 3: stage_pass(n, 1, 1, out, base, dh, ft, scale, coef, k); break;
-    case 4: stage_pass(n, 2, 0, out, base, dh, ft, scale, coef, k); break;
-    case 5: stage_pass(n, 2, 1, out, base, dh, ft, scale, coef, k); break;
-    case 6: stage_pass(n, 3, 0, out, base, dh, ft, scale, coef, k); break;
-    case 7: stage_pass(n, 3, 1, out, base, dh, ft, scale, coef, k); break;
-    case 8: stage_pass(n, 4, 0, out, base, dh, ft, scale, coef, k); break;
-    case 9: stage_pass(n, 4, 1, out, base, dh, ft, scale, coef, k); break;
-    case 10: stage_pass(n, 5, 0, out, base, dh, ft, scale, coef, k); break;
-    case 11: stage_pass(n, 5, 1, out, base, dh, ft, scale, coef, k); break;
-    }
 }
 
 /* A trial step of size h over the whole state (the solve couples it, so the
@@ -106,14 +49,14 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
     double gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
     memcpy(saved, y, (size_t)n * sizeof *y);
-    int timed = time_derivative(ode, t, y, f0, ft);
+    int timed = swr_time_derivative(ode, t, y, f0, ft);
     for (int st = 0; st < SW_RODAS_STAGES; st++)
         k[st] = SW_WORK(s, S_K1 + st);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
         double *kst = SW_WORK(s, S_K1 + st), c_over_h[SW_RODAS_STAGES];
         const double *f = f0;
         if (st > 0) {
-            stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
+            swr_stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
             sw_ode_eval(ode, t + SW_RODAS_ALPHA[st] * h, yt, kst);
             f = kst;
         }
@@ -122,7 +65,7 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
         /* d_i h f_t is 0·f_t = +0 where f does not depend on t: adding it
          * still turns a -0 into +0, as the lecture form did */
         double dh = timed ? SW_RODAS_D[st] * h : 0.0;
-        stage_combine(n, st, 1, rhs, f, dh, ft, gh, c_over_h, k);
+        swr_stage_combine(n, st, 1, rhs, f, dh, ft, gh, c_over_h, k);
         if (sw_ode_solve(s, ode, t, y, gh, rhs, kst) != 0) {
             s->why = "the linear system of a Rosenbrock stage is singular";
             sums->err = NAN;
@@ -148,7 +91,7 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
 /* Hairer's RODAS: h_new/h = 0.9·err^(-1/4) within [1/5, 6], no growth right
  * after a rejection. The trial counts its own evaluations (a failed solve
  * stops it early). */
-static const sw_adaptive rodas = {
+const sw_adaptive swr_rodas4 = {
     .trial = rodas_trial,
     .evals = 0,
     .coupled = 1,
@@ -166,5 +109,5 @@ _Static_assert(ROSENBROCK_VECTORS == 12, "rodas4 needs 12 work vectors (integrat
 /* One accepted RODAS4 step of at most h_max. */
 int sw_step_rodas4(sw_stepper *s, sw_ode *ode, double *t, double *y, double h_max)
 {
-    return sw_adaptive_step(&rodas, s, ode, t, y, h_max);
+    return sw_adaptive_step(&swr_rodas4, s, ode, t, y, h_max);
 }

@@ -1,0 +1,29 @@
+/* Private to the engine: RODAS4 (rosenbrock.c) in pieces its lecture form
+ * (reference_implicit.c) shares: the work slots, the controller's
+ * settings, the time derivative and the stage pass (rosenbrock_wide.c). */
+#ifndef SW_ENGINE_ROSENBROCK_H
+#define SW_ENGINE_ROSENBROCK_H
+
+#include "engine/adaptive.h"
+#include "engine/rodas_tableau.h"
+
+/* Slots: the FSAL derivative alternates between 0 and S_F1. */
+enum { S_K1 = 1, S_K6 = S_K1 + SW_RODAS_STAGES - 1, S_YT, S_RHS, S_FT, S_SAVED, S_F1, ROSENBROCK_VECTORS };
+
+/* RODAS4's trial and Hairer's controller settings for it. */
+extern const sw_adaptive swr_rodas4;
+
+/* ∂f/∂t at (t, y) by a forward difference (Hairer's RODAS: δ = √(u·max(1e-5,
+ * |t|))), into ft; returns 0 when it is zero everywhere (an autonomous
+ * system: the stages then skip the term). One evaluation. */
+int swr_time_derivative(sw_ode *ode, double t, const double *y, const double *f0, double *ft);
+
+/* One pass of a stage's arithmetic over n components (out is never one of
+ * the vectors read; k holds five vector pointers, the first `terms` read):
+ *     out_i = base_i + Σ_{j<terms} coef_j·k_j,i                 (with_ft 0)
+ *     out_i = scale·((base_i + dh·ft_i) + Σ_{j<terms} coef_j·k_j,i)  (1)
+ * the sum taken j rising. terms 0..5. */
+void swr_stage_combine(int n, int terms, int with_ft, double *restrict out, const double *restrict base, double dh,
+                       const double *restrict ft, double scale, const double *coef, const double *const *k);
+
+#endif

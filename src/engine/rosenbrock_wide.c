@@ -1,0 +1,61 @@
+/* RODAS4's stage arithmetic (rosenbrock.c), one pass over the state a
+ * stage, with the tableau's row made a constant so that the loop has no
+ * inner loop and vectorises: the same operations in the same order as the
+ * plain loops of reference_implicit.c. */
+#include "engine/rosenbrock.h"
+
+#include "engine/clones.h"
+
+/* One pass of a stage's arithmetic, with the tableau's row fixed at each
+ * call (terms and with_ft are constants where it is inlined, so the loop
+ * over i has no inner loop and vectorises):
+ *     out_i = base_i + Σ_{j<terms} coef_j·k_j,i                (scale 0)
+ *     out_i = scale·((base_i + dh·ft_i) + Σ_{j<terms} coef_j·k_j,i)
+ * the sums taken in the lecture form's order, j rising, so the bits are
+ * its bits. out is never one of the vectors read. */
+SW_INLINE void stage_pass(int n, int terms, int with_ft, double *restrict out, const double *restrict base,
+                          double dh, const double *restrict ft, double scale, const double *coef,
+                          const double *const *k)
+{
+    const double *restrict k0 = k[0], *restrict k1 = k[1], *restrict k2 = k[2], *restrict k3 = k[3],
+                 *restrict k4 = k[4];
+    double c0 = terms > 0 ? coef[0] : 0, c1 = terms > 1 ? coef[1] : 0, c2 = terms > 2 ? coef[2] : 0,
+           c3 = terms > 3 ? coef[3] : 0, c4 = terms > 4 ? coef[4] : 0;
+    for (int i = 0; i < n; i++) {
+        double sum = base[i];
+        if (with_ft)
+            sum += dh * ft[i];
+        if (terms > 0)
+            sum += c0 * k0[i];
+        if (terms > 1)
+            sum += c1 * k1[i];
+        if (terms > 2)
+            sum += c2 * k2[i];
+        if (terms > 3)
+            sum += c3 * k3[i];
+        if (terms > 4)
+            sum += c4 * k4[i];
+        out[i] = with_ft ? scale * sum : sum;
+    }
+}
+
+/* stage_pass with the number of terms made a constant, one copy each. */
+SW_CLONES void swr_stage_combine(int n, int terms, int with_ft, double *restrict out,
+                                    const double *restrict base, double dh, const double *restrict ft,
+                                    double scale, const double *coef, const double *const *k)
+{
+    switch (terms * 2 + with_ft) {
+    case 0: stage_pass(n, 0, 0, out, base, dh, ft, scale, coef, k); break;
+    case 1: stage_pass(n, 0, 1, out, base, dh, ft, scale, coef, k); break;
+    case 2: stage_pass(n, 1, 0, out, base, dh, ft, scale, coef, k); break;
+    case 3: stage_pass(n, 1, 1, out, base, dh, ft, scale, coef, k); break;
+    case 4: stage_pass(n, 2, 0, out, base, dh, ft, scale, coef, k); break;
+    case 5: stage_pass(n, 2, 1, out, base, dh, ft, scale, coef, k); break;
+    case 6: stage_pass(n, 3, 0, out, base, dh, ft, scale, coef, k); break;
+    case 7: stage_pass(n, 3, 1, out, base, dh, ft, scale, coef, k); break;
+    case 8: stage_pass(n, 4, 0, out, base, dh, ft, scale, coef, k); break;
+    case 9: stage_pass(n, 4, 1, out, base, dh, ft, scale, coef, k); break;
+    case 10: stage_pass(n, 5, 0, out, base, dh, ft, scale, coef, k); break;
+    case 11: stage_pass(n, 5, 1, out, base, dh, ft, scale, coef, k); break;
+    }
+}

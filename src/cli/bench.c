@@ -227,11 +227,14 @@ static void print_report(const sw_bench_report *r, const char *skipped)
         const sw_bench_series *s = &r->series[i];
         if (s->npoints == 0)
             printf("   %-18s (no run: the coarsest step is already over the work budget)\n", s->method->name);
-        for (int j = 0; j < s->npoints; j++) {
-            const sw_bench_point *pt = &s->points[j];
+        for (int j = 0; j < s->npoints + s->nfixed; j++) {
+            /* an adaptive method's controlled runs, then its fixed steps */
+            const sw_bench_point *pt = j < s->npoints ? &s->points[j] : &s->fixed[j - s->npoints];
             char step[32], err[40], t[24];
             if (pt->rtol > 0)
                 snprintf(step, sizeof step, "rtol %.0e", pt->rtol);
+            else if (j >= s->npoints)
+                snprintf(step, sizeof step, "dt %.4g fixed", pt->dt);
             else
                 snprintf(step, sizeof step, "dt %.4g", pt->dt);
             if (pt->blown)
@@ -243,13 +246,14 @@ static void print_report(const sw_bench_report *r, const char *skipped)
                    pt->evals, t, pt->in_fit ? "*" : "");
         }
     }
-    printf("\n   observed order (slope of log error against log dt over the * points):\n");
+    printf("\n   observed order (slope of log error against log dt over the * points; adaptive methods:\n"
+           "   their formula on fixed steps, error control off):\n");
     for (int i = 0; i < r->nseries; i++) {
         const sw_bench_series *s = &r->series[i];
         if (isfinite(s->order))
-            printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)\n",
-                   s->method->name, s->order, s->nfit, s->slope_min, s->slope_max, s->method->order,
-                   stop_note(s->stop));
+            printf("   %-18s %5.2f  (%d%s points, local slopes %.2f to %.2f; theory %d%s)\n",
+                   s->method->name, s->order, s->nfit, s->method->flags & SW_ADAPTIVE ? " fixed-step" : "",
+                   s->slope_min, s->slope_max, s->method->order, stop_note(s->stop));
         else
             print_no_order(s);
     }

@@ -107,11 +107,12 @@ typedef struct sw_bench_series {
     /* Adaptive methods: the same formula on fixed steps (error control off,
      * SW_TOL_NONE), the points the order is fitted from. An order is the
      * exponent p in error = C·h^p for a constant step h; a controlled run's
-     * error against its mean step T/N is not that: its N counts steps that
-     * do not scale with the tolerance (the landings on the 16 sample times,
-     * the first steps, the rejections' aftermath), so the slope reads above
-     * p (rk45 5.34 on the orbits, rkn 6.66 on the stiff spring) until N is
-     * far larger than round-off allows. */
+     * error against its mean step T/N is not that: it divides how fast the
+     * error falls with the tolerance by how fast the steps grow, and the
+     * first is not yet proportional at any tolerance above round-off (the
+     * controller holds the embedded estimate at rtol, the run carries the
+     * higher-order solution), so the slope read above p (rk45 5.34 on the
+     * orbits, rkn 6.66 on the stiff spring: docs/performance.md). */
     int nfixed;
     sw_bench_point fixed[SW_BENCH_MAX_POINTS];
     double order;     /* least-squares slope of ln error against ln h (sw_bench_order_points), > 0;

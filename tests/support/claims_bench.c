@@ -86,34 +86,31 @@ double cl_gyre_slope_max(void) { return gyre_rodas4().slope_max; }
  * decade of rtol, 1e-8 to 1e-9 and on (the asymptote 10^(1/5) = 1.585),
  * and the order rule applied to the controlled runs' error against their
  * mean step T/N (the slope bench printed as an order before). */
-static double controlled_growth(int from)
+static sw_bench_series orbit_rk45(void)
 {
-    static sw_bench_series s; /* one sweep for the three rows */
+    static sw_bench_series s; /* one sweep for the six rows */
     static int have;
     if (!have) {
         s = sweep("orbit", NULL, "rk45");
         have = 1;
     }
-    for (int i = 0; i + 1 < s.npoints; i++)
-        if (s.points[i].rtol > 0 && fabs(log10(s.points[i].rtol) + from) < 0.01)
-            return (double)s.points[i + 1].steps / (double)s.points[i].steps;
-    return NAN;
+    return s;
 }
-/* ... and how much its error falls over the same decades (10 where the
- * error is proportional to the tolerance) */
-static double controlled_fall(int from)
+/* The controlled point at rtol 10^-from and the next (10x tighter). */
+static const sw_bench_point *decade(int from)
 {
     static sw_bench_series s;
-    static int have;
-    if (!have) {
-        s = sweep("orbit", NULL, "rk45");
-        have = 1;
-    }
+    s = orbit_rk45();
     for (int i = 0; i + 1 < s.npoints; i++)
         if (s.points[i].rtol > 0 && fabs(log10(s.points[i].rtol) + from) < 0.01)
-            return s.points[i].error / s.points[i + 1].error;
-    return NAN;
+            return &s.points[i];
+    ck_abort_msg("rk45 on the orbit: no controlled run at rtol 1e-%d", from);
+    return NULL;
 }
+static double controlled_growth(int from) { return (double)decade(from)[1].steps / (double)decade(from)[0].steps; }
+/* ... and how much its error falls over the same decades (10 where the
+ * error is proportional to the tolerance) */
+static double controlled_fall(int from) { return decade(from)[0].error / decade(from)[1].error; }
 static double fall_8(void) { return controlled_fall(8); }
 static double fall_9(void) { return controlled_fall(9); }
 static double fall_10(void) { return controlled_fall(10); }

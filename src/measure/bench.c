@@ -463,7 +463,7 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
      * its formula on fixed steps for the order */
     if (m->flags & SW_ADAPTIVE) {
         rc = sweep(r, m, c, 1, se, se->points, &se->npoints, scratch, err, errlen);
-        if (rc == SW_OK)
+        if (rc == SW_OK && !c->no_fixed)
             rc = sweep(r, m, c, 0, se, se->fixed, &se->nfixed, scratch, err, errlen);
     } else {
         rc = sweep(r, m, c, 0, se, se->points, &se->npoints, scratch, err, errlen);
@@ -499,20 +499,13 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
  * method, a sweep whose runs double in cost to max_work (under 2·max_work
  * each). Three quarters of the budget go to the sweeps: with the UI's
  * 4·SW_WORK_KEY that is the quick config's own max_work. */
-/* Sweeps over every method: an adaptive method sweeps twice (fixed steps
- * for its order, then controlled). */
-static int sweep_count(void)
-{
-    int sweeps = 0;
-    for (int i = 0; i < sw_integrator_count(); i++)
-        sweeps += sw_integrator_at(i)->flags & SW_ADAPTIVE ? 2 : 1;
-    return sweeps;
-}
-
+/* The UI's plot shows no order: its adaptive methods sweep their
+ * controlled runs only, one sweep a method. */
 static void quick_config(sw_bench_config *c, double budget)
 {
     sw_bench_config_quick(c);
-    c->max_work = fmin(c->max_work, 0.75 * budget / (2.0 * sweep_count()));
+    c->no_fixed = 1;
+    c->max_work = fmin(c->max_work, 0.75 * budget / (2.0 * sw_integrator_count()));
 }
 
 int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen)
@@ -522,7 +515,7 @@ int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget
     sw_truth tr;
     if (sw_truth_init(&tr, sc, p, err, errlen) != SW_OK)
         return 0;
-    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sweep_count();
+    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sw_integrator_count();
     sw_truth_free(&tr);
     if (!(cost <= budget)) {
         snprintf(err, errlen, "the sweep would cost about %.2g state evaluations, over the %.0e the plot may "

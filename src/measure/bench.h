@@ -144,6 +144,8 @@ typedef struct sw_bench_config {
     double max_work;   /* skip runs above this many (evaluations + solver iterations) × dimension */
     const atomic_int *stop; /* NULL, or set by another thread: the sweep ends at its next sample
                                time with SW_EINVAL, "stopped" (the UI's sweep on a worker) */
+    int no_fixed;      /* 1: adaptive methods sweep their controlled runs only, and have no order
+                          (the UI's plot, which shows no order); 0: their fixed steps too */
 } sw_bench_config;
 
 /* One scene's sweep: the truth at the report time and one series per method. */

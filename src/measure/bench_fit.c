@@ -229,6 +229,12 @@ static double fit(const fit_ctx *r, sw_bench_series *s)
             hi = h;
         }
     }
+    if (s->method && (s->method->flags & SW_ADAPTIVE) && npts == 0 && s->npoints > 0) {
+        s->no_order = SW_BENCH_ORDER_FEW;
+        snprintf(s->why, sizeof s->why, "its formula was not run on fixed steps (the order is read from "
+                 "those, never from the controlled runs)");
+        return s->order;
+    }
     if (best < 0) {
         diagnose(r, s, pts, npts, first, last);
         return s->order;

@@ -25,14 +25,23 @@ static void check_series(const sw_bench_report *r, const sw_bench_series *s, con
         ck_assert_msg(sw_bench_no_order_text(s)[0] != '\0', "%s %s: an empty reason", what, name);
         for (int j = 0; j < s->npoints; j++)
             ck_assert_msg(!s->points[j].in_fit, "%s %s: point %d marked * with no order", what, name, j);
+        for (int j = 0; j < s->nfixed; j++)
+            ck_assert_msg(!s->fixed[j].in_fit, "%s %s: fixed point %d marked * with no order", what, name, j);
         return;
     }
     /* printed with two decimals: never 0.00 or below */
     ck_assert_msg(s->order >= SW_BENCH_MIN_ORDER && isfinite(s->order), "%s %s: order %g", what, name, s->order);
     ck_assert_msg(s->nfit >= SW_BENCH_MIN_FIT, "%s %s: order %.2f from %d points", what, name, s->order, s->nfit);
-    int marked = 0;
-    for (int j = 0; j < s->npoints; j++) {
-        const sw_bench_point *pt = &s->points[j];
+    int marked = 0, npts;
+    const sw_bench_point *pts = sw_bench_order_points(s, &npts);
+    /* an adaptive method's order comes from its fixed-step runs, never
+     * from the controlled ones (their error against the mean step) */
+    ck_assert_msg(!(s->method->flags & SW_ADAPTIVE) || pts == s->fixed, "%s %s: order from controlled runs", what,
+                  name);
+    for (int j = 0; j < s->npoints && pts != s->points; j++)
+        ck_assert_msg(!s->points[j].in_fit, "%s %s: controlled run %d marked *", what, name, j);
+    for (int j = 0; j < npts; j++) {
+        const sw_bench_point *pt = &pts[j];
         if (!pt->in_fit)
             continue;
         marked++;
@@ -53,13 +62,14 @@ static void check_series(const sw_bench_report *r, const sw_bench_series *s, con
 static void check_rule(const sw_bench_report *r, const sw_bench_series *s, const char *what)
 {
     const char *name = s->method->name;
-    const sw_bench_point *p = s->points;
+    int np;
+    const sw_bench_point *p = sw_bench_order_points(s, &np);
     int plateau = -1;
-    for (int i = 0; i < s->npoints && plateau < 0; i++) {
+    for (int i = 0; i < np && plateau < 0; i++) {
         if (p[i].blown || !(p[i].error > 0))
             continue;
         int later = 0, falls = 0;
-        for (int k = i + 1; k < s->npoints; k++)
+        for (int k = i + 1; k < np; k++)
             if (!p[k].blown && p[k].error > 0) {
                 later = 1;
                 falls |= p[k].error < 0.75 * p[i].error;
@@ -69,11 +79,11 @@ static void check_rule(const sw_bench_report *r, const sw_bench_series *s, const
     }
     ck_assert_msg(plateau == s->plateau, "%s %s: plateau at %d, the fit says %d", what, name, plateau, s->plateau);
     double top = 0;
-    for (int i = plateau < 0 ? s->npoints : plateau; i < s->npoints; i++)
+    for (int i = plateau < 0 ? np : plateau; i < np; i++)
         if (!p[i].blown && p[i].error > top)
             top = p[i].error;
     int first = -1, last = -1;
-    for (int j = 0; j < s->npoints; j++)
+    for (int j = 0; j < np; j++)
         if (p[j].in_fit) {
             ck_assert_msg(last < 0 || last == j - 1, "%s %s: fitted points not contiguous", what, name);
             first = first < 0 ? j : first;
@@ -98,8 +108,8 @@ static void check_rule(const sw_bench_report *r, const sw_bench_series *s, const
     ck_assert_msg(p[first].h >= 2 * p[last].h, "%s %s: steps span only %g", what, name, p[first].h / p[last].h);
     ck_assert_msg(hi - lo <= 0.15 + 0.03 * s->order + 1e-12, "%s %s: local slopes %.2f to %.2f", what, name, lo, hi);
     /* the finest clean point ends the fit: the next one is past it */
-    for (int j = last + 1; j < s->npoints && (plateau < 0 || j < plateau); j++)
-        ck_assert_msg(p[j].blown || p[j].error < 10 * p[j].floor || p[j].error >= 1e-2 * r->scale,
+    for (int j = last + 1; j < np && (plateau < 0 || j < plateau); j++)
+        ck_assert_msg(p[j].blown || p[j].error < 10 * fmax(p[j].floor, top) || p[j].error >= 1e-2 * r->scale,
                       "%s %s: clean point %d after the fit", what, name, j);
 }
 
@@ -260,16 +270,17 @@ static int theory_order(const sw_integrator *m, const sw_system *sys)
     return strcmp(m->name, "yoshida4") == 0 && !sw_ode_position_only(sys->ode) ? 2 : m->order;
 }
 
-/* Issue 38's cases, every method that applies: no printed order breaks
- * the rule (check_rule), and every printed order is near theory: within
- * 0.3 for a fixed step (the window's local slopes agree within 0.15 +
- * 0.03·p, so the next error term moves the fit by less than that), within
- * 0.7 for an adaptive method, whose fit reads the error against the mean
- * step T/N while the steps' distribution still shifts as the tolerance
- * tightens (rk45 5.34 on the orbits, rkn 6.66 on the stiff spring). The
- * audit's false orders are gone: rkn's 1.02 and 1.12 (fitted on the
- * round-off plateau) and dop853-lc's 7.05 and 7.31 (its step count hardly
- * changes with the tolerance: no order, and that reason). */
+/* Issue 38's cases: no printed order breaks the rule (check_rule), and
+ * every printed order is within 0.3 of its theory, adaptive methods too:
+ * the rule's window has local slopes within 0.15 + 0.03·p of each other,
+ * so the next error term moves the fit by less than that. An adaptive
+ * method's order is its formula's on fixed steps (error control off):
+ * before, bench read it from the controlled runs' error against their mean
+ * step and printed rk45 5.34 on the orbits, 6.15 on the gyre, 5.35 on the
+ * river and rkn 6.66 on the stiff spring k = 1e6; and the audit's false
+ * orders (rkn's 1.02 and 1.12 fitted on the round-off plateau, dop853-lc's
+ * 7.05 and 7.31 from steps that hardly changed with the tolerance) stay
+ * gone. The methods: names (n of them), or every one that applies. */
 static void bench_theory_of(const char *scene, const char *sets, int locate, const char *const *names, int n)
 {
     const sw_scene *sc = sw_scene_find(scene);
@@ -303,17 +314,10 @@ static void bench_theory_of(const char *scene, const char *sets, int locate, con
             fprintf(stderr, "%-32s %-22s %.2f %s\n", what, s->method->name, s->order, sw_bench_no_order_text(s));
         if (isnan(s->order) || stepped_over)
             continue; /* events stepped over: first order for every method, the scene says so */
-        double tol = s->method->flags & SW_ADAPTIVE ? 0.7 : 0.3;
         int theory = theory_order(s->method, &sys);
-        ck_assert_msg(fabs(s->order - theory) <= tol, "%s %s: order %.2f, theory %d (within %.1f)", what,
-                      s->method->name, s->order, theory, tol);
-        if (strcmp(s->method->name, "dop853-lc") == 0)
-            ck_assert_msg(0, "%s: dop853-lc printed an order %.2f", what, s->order);
+        ck_assert_msg(fabs(s->order - theory) <= 0.3, "%s %s: order %.2f, theory %d (within 0.3)", what,
+                      s->method->name, s->order, theory);
     }
-    for (int i = 0; i < r.nseries; i++)
-        if (strcmp(r.series[i].method->name, "dop853-lc") == 0 && strcmp(sets, "e=0.5") != 0)
-            ck_assert_msg(r.series[i].no_order == SW_BENCH_ORDER_STEPS, "%s dop853-lc: %s", what,
-                          sw_bench_no_order_text(&r.series[i]));
     sw_system_free(&sys);
     sw_bench_free(&r);
 }
@@ -323,16 +327,40 @@ static void bench_theory(const char *scene, const char *sets, int locate)
     bench_theory_of(scene, sets, locate, NULL, 0);
 }
 
+static const struct { const char *scene, *sets; int locate; } issue38_cases[] = {
+    { "orbit", "e=0.5", 0 }, { "orbit", "e=0.9", 0 }, { "orbit", "e=0.97", 0 },
+    { "stiff-spring", "k=1e6", 0 }, { "chain", "", 0 }, { "bounce", "", 0 }, { "bounce", "", 1 },
+};
+
+/* Every method on every case: the full tier (about a minute). */
 START_TEST(test_issue38_cases)
 {
-    static const struct { const char *scene, *sets; int locate; } cases[] = {
-        { "orbit", "e=0.5", 0 }, { "orbit", "e=0.9", 0 }, { "orbit", "e=0.97", 0 },
-        { "stiff-spring", "k=1e6", 0 }, { "chain", "", 0 }, { "bounce", "", 0 }, { "bounce", "", 1 },
-    };
     if (getenv("SW_TEST_QUICK"))
         return;
-    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        bench_theory(cases[i].scene, cases[i].sets, cases[i].locate);
+    for (size_t i = 0; i < sizeof issue38_cases / sizeof issue38_cases[0]; i++)
+        bench_theory(issue38_cases[i].scene, issue38_cases[i].sets, issue38_cases[i].locate);
+}
+END_TEST
+
+/* The quick tier's share: the adaptive methods, whose printed orders this
+ * pass changed, on every case (the fixed-step methods' orders come from
+ * the same rule and are checked in the full tier and in the docs table). */
+START_TEST(test_issue38_adaptive)
+{
+    static const char *const adaptive[] = { "rk45", "dop853", "rkn", "rodas4", "rkn12", "dop853-lc" };
+    for (size_t i = 0; i < sizeof issue38_cases / sizeof issue38_cases[0]; i++) {
+        const char *names[6];
+        int n = 0;
+        sw_system sys;
+        char err[SW_ERRLEN];
+        const sw_scene *sc = sw_scene_find(issue38_cases[i].scene);
+        ck_assert_int_eq(sw_system_build(&sys, sc, NULL, err, sizeof err), SW_OK);
+        for (int k = 0; k < 6; k++)
+            if (sw_integrator_accepts(sw_integrator_find(adaptive[k]), sys.ode, err, sizeof err) == SW_OK)
+                names[n++] = adaptive[k];
+        sw_system_free(&sys);
+        bench_theory_of(issue38_cases[i].scene, issue38_cases[i].sets, issue38_cases[i].locate, names, n);
+    }
 }
 END_TEST
 
@@ -451,6 +479,41 @@ START_TEST(test_status_line_ratio)
 }
 END_TEST
 
+/* Issue 38, the outside audit's misleading orders, for the Δt message: its
+ * old check (the two ratios' base-2 logarithms within 0.15 of each other,
+ * the error above 1e-11 of the motion and below half of it) printed an
+ * "order" from errors that rise as dt falls: "order ~-0.04" for linearly
+ * implicit Euler on the chain at dt 0.08 (0.241, 0.248, 0.282: the error
+ * has stopped falling) and "order ~-0.40" for rk4 on the orbit at dt
+ * 3.125e-4 (1.2e-11, 1.6e-11, 1.9e-11: round-off growing with the steps).
+ * The errors are measured here first: each rises at both halvings, so no
+ * order can stand on them, and the message after '-' (dt halved, the
+ * third run at dt/4) must print none and say why. */
+START_TEST(test_dt_message_rising_errors)
+{
+    static const struct { const char *scene, *method; double dt; } cases[] = {
+        { "chain", "linear-implicit-euler", 0.08 }, { "orbit", "rk4", 0.0003125 },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        sw_app a;
+        char err[SW_ERRLEN];
+        const sw_integrator *m = sw_integrator_find(cases[i].method);
+        double dt = cases[i].dt;
+        ck_assert_int_eq(sw_app_init(&a, sw_scene_find(cases[i].scene), NULL, m, dt, err, sizeof err), SW_OK);
+        double e1 = sw_app_measure(&a, m, dt), e2 = sw_app_measure(&a, m, dt / 2), e3 = sw_app_measure(&a, m, dt / 4);
+        ck_assert_msg(e1 < e2 && e2 < e3, "%s %s: the errors %g, %g, %g do not rise: the case is gone", cases[i].scene,
+                      cases[i].method, e1, e2, e3);
+        ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+        ck_assert_double_eq(a.dt, dt / 2);
+        ck_assert_msg(!strstr(a.message, "order ~") && isnan(a.error_ratio), "%s %s: %s", cases[i].scene,
+                      cases[i].method, a.message);
+        ck_assert_msg(strstr(a.message, "not an order") || strstr(a.message, "rounding level"), "%s %s: no reason: %s",
+                      cases[i].scene, cases[i].method, a.message);
+        sw_app_free(&a);
+    }
+}
+END_TEST
+
 Suite *make_bench_orders_suite(void);
 Suite *make_bench_orders_suite(void)
 {
@@ -459,11 +522,13 @@ Suite *make_bench_orders_suite(void)
     tcase_set_timeout(tc, 240); /* the whole table: about 20 s */
     tcase_add_test(tc, test_two_points_no_order);
     tcase_add_test(tc, test_status_line_ratio);
+    tcase_add_test(tc, test_dt_message_rising_errors);
     tcase_add_test(tc, test_measured_order_rule);
     tcase_add_test(tc, test_resting_bounce_orders);
     tcase_add_test(tc, test_whole_table);
     tcase_add_test(tc, test_audit_cases);
     tcase_add_test(tc, test_issue38_cases);
+    tcase_add_test(tc, test_issue38_adaptive);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -64,6 +64,12 @@ typedef struct sw_integrator {
 
 #define SW_RTOL_DEFAULT 1e-6
 #define SW_ATOL_DEFAULT 1e-9
+/* Tolerances this loose switch an adaptive method's error control off: every
+ * trial is accepted and every step is the largest allowed (dt, or shorter to
+ * land on a time asked for): the method's formula on fixed steps, whose
+ * global error is what its order describes (bench measures it so). Finite,
+ * so that rtol·0 stays 0 in the error norms. */
+#define SW_TOL_NONE 1e300
 
 /* The most methods the table holds, built-ins and registered plugins
  * together (engine/integrators.c checks its rows at compile time): the UI

@@ -25,18 +25,20 @@ static const char usage_text[] =
     "(rtol 1e-12, atol 1e-14, computed once per scene) and each integrator that applies,\n"
     "runs the scene to its report time over a geometric sweep of step sizes (from 8x the\n"
     "scene's dt, or twice the method's stability limit when the scene knows w, halving;\n"
-    "adaptive methods sweep the tolerance 1e-2, 1e-3, ...) and records the largest absolute\n"
+    "adaptive methods sweep the tolerance 1e-2, 1e-3, ..., then their formula on fixed\n"
+    "steps with the error control off, rows 'dt ... fixed') and records the largest absolute\n"
     "state error at 16 times spread to the report time (one time can be special: a whole\n"
     "number of periods), the derivative evaluations, the wall time (median of repeats)\n"
     "and blow-ups. A sweep goes on until 4 points agree and the error is below 1e-6 of\n"
     "the state, or 6 points agree.\n"
     "The observed order is the least-squares slope of log error against log dt (adaptive\n"
-    "methods: the mean step) over the points marked *: not blown up, before the error\n"
+    "methods: of their fixed-step runs) over the points marked *: not blown up, before the error\n"
     "stops falling (a plateau: round-off, or the reference's accuracy), 10x above that\n"
     "floor and below 1e-2 of the state's size, contiguous down to the finest such point;\n"
     "at least 3 of them, errors and steps falling, steps spanning a factor 2, local\n"
-    "slopes within 0.15 + 0.03 x order of each other, else 'no order' and why (past the\n"
-    "asymptotic range, not yet in it, or steps that do not shrink with the tolerance).\n"
+    "slopes within 0.15 + 0.03 x order of each other, at most 0.3 above the method's order,\n"
+    "else 'no order' and why (past the asymptotic range, not yet in it, or falling faster\n"
+    "than the order can).\n"
     "With no SCENE, every scene that has a reference and every method that applies.\n"
     "docs/performance.md has the details and the figures.\n"
     "\n"
@@ -227,11 +229,14 @@ static void print_report(const sw_bench_report *r, const char *skipped)
         const sw_bench_series *s = &r->series[i];
         if (s->npoints == 0)
             printf("   %-18s (no run: the coarsest step is already over the work budget)\n", s->method->name);
-        for (int j = 0; j < s->npoints; j++) {
-            const sw_bench_point *pt = &s->points[j];
+        for (int j = 0; j < s->npoints + s->nfixed; j++) {
+            /* an adaptive method's controlled runs, then its fixed steps */
+            const sw_bench_point *pt = j < s->npoints ? &s->points[j] : &s->fixed[j - s->npoints];
             char step[32], err[40], t[24];
             if (pt->rtol > 0)
                 snprintf(step, sizeof step, "rtol %.0e", pt->rtol);
+            else if (j >= s->npoints)
+                snprintf(step, sizeof step, "dt %.4g fixed", pt->dt);
             else
                 snprintf(step, sizeof step, "dt %.4g", pt->dt);
             if (pt->blown)
@@ -243,13 +248,14 @@ static void print_report(const sw_bench_report *r, const char *skipped)
                    pt->evals, t, pt->in_fit ? "*" : "");
         }
     }
-    printf("\n   observed order (slope of log error against log dt over the * points):\n");
+    printf("\n   observed order (slope of log error against log dt over the * points; adaptive methods:\n"
+           "   their formula on fixed steps, error control off):\n");
     for (int i = 0; i < r->nseries; i++) {
         const sw_bench_series *s = &r->series[i];
         if (isfinite(s->order))
-            printf("   %-18s %5.2f  (%d points, local slopes %.2f to %.2f; theory %d%s)\n",
-                   s->method->name, s->order, s->nfit, s->slope_min, s->slope_max, s->method->order,
-                   stop_note(s->stop));
+            printf("   %-18s %5.2f  (%d%s points, local slopes %.2f to %.2f; theory %d%s)\n",
+                   s->method->name, s->order, s->nfit, s->method->flags & SW_ADAPTIVE ? " fixed-step" : "",
+                   s->slope_min, s->slope_max, s->method->order, stop_note(s->stop));
         else
             print_no_order(s);
     }

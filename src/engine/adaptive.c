@@ -65,7 +65,7 @@ int sw_adaptive_step(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double *t
     }
     double *saved = SW_WORK(s, m->saved);
     double h = s->h_next > 0 && s->h_next < h_max ? s->h_next : h_max;
-    if (m->guess_first && !(s->h_next > 0))
+    if (m->guess_first && !(s->h_next > 0) && s->rtol < SW_TOL_NONE) /* no control: h_max from the start */
         h = first_step(s, ode, *t, y, SW_WORK(s, s->fsal), saved, SW_WORK(s, s->fsal ? 0 : m->fsal_other),
                        1.0 / m->expo, h_max);
     unsigned elim = s->limit_exp ? s->limit_exp : 0x800; /* 0x800: never */

@@ -238,9 +238,10 @@ static int run_point(const sw_bench_report *r, const sw_integrator *m, double dt
         int rc = sw_sim_init(&s, r->scene, r->p, m, dt, err, errlen);
         if (rc != SW_OK)
             return rc;
-        if (rtol > 0) {
+        if (rtol > 0)
             sw_sim_set_tolerances(&s, rtol, 1e-3 * rtol);
-        }
+        else if (m->flags & SW_ADAPTIVE) /* its formula on fixed steps dt */
+            sw_sim_set_tolerances(&s, SW_TOL_NONE, SW_TOL_NONE);
         rc = sw_sim_set_events(&s, r->events, err, errlen);
         if (rc != SW_OK) {
             sw_sim_free(&s);
@@ -313,6 +314,128 @@ static double sweep_top(const sw_bench_report *r, const sw_integrator *m)
     return fmax(SW_DT_MIN, fmin(top, SW_DT_MAX));
 }
 
+/* Three points down where no finer one falls below SW_BENCH_STALL of the
+ * first (find_plateau's test, on the last three): a plateau. */
+static int stalled(const sw_bench_point *pts, int k)
+{
+    return k >= 2 && !pts[k - 2].blown && !pts[k - 1].blown && !pts[k].blown &&
+           !(pts[k - 1].error < SW_BENCH_STALL * pts[k - 2].error) &&
+           !(pts[k].error < SW_BENCH_STALL * pts[k - 2].error);
+}
+
+/* One sweep of method m into pts (*npts points): the tolerance 1e-2,
+ * 1e-3, ... (controlled, adaptive methods only), or fixed steps down by a
+ * factor 2^(1/q) a point, q = ceil(p/4) for an adaptive method (so that a
+ * step cuts the error by about 2^4 at most and a high order still has
+ * points between 1e-2 and round-off; every q-th step an exact halving), 2
+ * otherwise. Fixed steps start at sweep_top, or for an adaptive method at
+ * its coarsest controlled run's mean step when that is larger (where its
+ * error is near the tolerance 1e-2: sweep_top's 8 dt is already at 1e-9
+ * for dop853 on the orbit). A fixed sweep ends as the order fit allows
+ * (se's order points are pts); a controlled one at its floor, its
+ * plateau, or min_points and an error two decades under fine (the
+ * cheapest-run table's 1e-8). */
+static int sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_config *c, int controlled,
+                 sw_bench_series *se, sw_bench_point *pts, int *npts, double *scratch, char *err, size_t errlen)
+{
+    int adaptive = (m->flags & SW_ADAPTIVE) != 0, rc = SW_OK;
+    int maxp = c->max_points < 1 ? 1 : c->max_points > SW_BENCH_MAX_POINTS ? SW_BENCH_MAX_POINTS : c->max_points;
+    /* Controlled runs choose their own steps: allow up to half the report time. */
+    double top = controlled ? fmax(SW_DT_MIN, fmin(0.5 * r->t_report, SW_DT_MAX)) : sweep_top(r, m);
+    for (int j = 0; !controlled && adaptive && j < se->npoints; j++)
+        if (!se->points[j].blown && se->points[j].h > top)
+            top = fmin(se->points[j].h, fmax(SW_DT_MIN, fmin(0.5 * r->t_report, SW_DT_MAX)));
+    int q = adaptive ? (m->order + 3) / 4 : 1;
+    if (q < 1)
+        q = 1;
+    /* An adaptive method's fixed steps divide the samples' spacing T/16
+     * exactly (m steps to each): every step is dt, none cut short to land
+     * on a sample time. A cut step's share of the error changes from one
+     * dt to the next without pattern (its length is the spacing modulo
+     * dt), about dt/spacing of the error: enough to scatter a high order's
+     * local slopes (dop853 read 6.99 on the orbit). */
+    double spacing = r->t_report / SW_BENCH_SAMPLES;
+    long mk = (long)fmax(1.0, ceil(spacing / top - 1e-9));
+    int fixed_adaptive = !controlled && adaptive, coarse = 0;
+    /* Before the first run, guess its work from the nominal evaluations. */
+    double est = ceil(r->t_report / top) * (m->evals > 0 ? m->evals : 1) * r->dim;
+    int stop = SW_BENCH_STOP_MAX;
+    *npts = 0;
+    for (int k = 0, runs = 0; k < maxp && runs < 4 * SW_BENCH_MAX_POINTS; k++, runs++) {
+        double dt = controlled ? top : fixed_adaptive ? spacing / (double)mk : ldexp(top, -k);
+        double rtol = controlled ? 1e-2 * pow(10.0, -k) : 0.0;
+        if (dt < SW_DT_MIN) {
+            stop = SW_BENCH_STOP_DT_MIN;
+            break;
+        }
+        if (est > c->max_work) {
+            stop = SW_BENCH_STOP_BUDGET;
+            break;
+        }
+        sw_bench_point *pt = &pts[k];
+        double work = 0;
+        rc = run_point(r, m, dt, rtol, c, pt, &work, scratch, err, errlen);
+        if (rc != SW_OK)
+            break;
+        *npts = k + 1;
+        /* Next run: a fixed step dt·2^(-1/q) takes 2^(1/q) times the steps; a
+         * 10x tighter tolerance costs DP5 about 10^(1/5) = 1.6x as many
+         * steps (2x to be safe). A run that blew up stopped early: scale
+         * its per-step cost. */
+        double per_step = work / (double)(pt->steps > 0 ? pt->steps : 1);
+        double steps_next = controlled ? 2.0 * (double)pt->steps : ceil(r->t_report * exp2(1.0 / q) / dt);
+        est = per_step * steps_next;
+        if (!pt->blown && pt->error <= pt->floor) {
+            stop = SW_BENCH_STOP_FLOOR;
+            break;
+        }
+        if (fixed_adaptive) {
+            /* Too coarse to fit (blown, or 1e-2 of the state or more):
+             * halve, and let the next run take this one's place when the
+             * one before was too coarse as well; in range: the next by
+             * 2^(1/q) (at least one step more to each spacing). So the
+             * sweep's points lie where an order can be read, on an orbit
+             * whose pericentre wants 1e4 fixed steps too. */
+            int was_coarse = coarse;
+            coarse = pt->blown || !(pt->error < SW_BENCH_CEILING * r->scale);
+            long next = lround((double)mk * exp2(1.0 / q));
+            mk = coarse ? 2 * mk : next > mk ? next : mk + 1;
+            est = per_step * (double)SW_BENCH_SAMPLES * (double)mk; /* T/dt steps */
+            if (coarse && was_coarse && k > 0) {
+                pts[k - 1] = *pt;
+                *npts = k;
+                k--;
+                continue;
+            }
+        }
+        if (controlled) {
+            if (k + 1 >= c->min_points && (stalled(pts, k) || pt->error <= 1e-2 * c->fine * r->scale)) {
+                stop = stalled(pts, k) ? SW_BENCH_STOP_FLOOR : SW_BENCH_STOP_ENOUGH;
+                break;
+            }
+            continue;
+        }
+        /* three points on a plateau down where only round-off is left:
+         * finer steps only cost */
+        sw_bench_fit(r, se);
+        if (k + 1 >= c->min_points && se->plateau >= 0 && se->plateau <= k - 2 &&
+            se->floor <= SW_BENCH_ROUNDOFF * (pts[se->plateau].floor - r->ref_error)) {
+            stop = SW_BENCH_STOP_FLOOR;
+            break;
+        }
+        if (k + 1 >= c->min_points && !fixed_adaptive) { /* fixed_adaptive: on to round-off, the finest window */
+            int small = pt->error <= c->fine * r->scale || (c->settled > 0 && se->nfit >= c->settled);
+            if (se->nfit >= c->fit_points && se->asymptotic && small) {
+                stop = SW_BENCH_STOP_ENOUGH;
+                break;
+            }
+        }
+    }
+    if (!controlled)
+        se->stop = stop;
+    return rc;
+}
+
 int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_config *c, char *err,
                    size_t errlen)
 {
@@ -336,56 +459,14 @@ int sw_bench_sweep(sw_bench_report *r, const sw_integrator *m, const sw_bench_co
     sw_bench_series *se = &r->series[r->nseries];
     memset(se, 0, sizeof *se);
     se->method = m;
-    int adaptive = (m->flags & SW_ADAPTIVE) != 0;
-    int maxp = c->max_points < 1 ? 1 : c->max_points > SW_BENCH_MAX_POINTS ? SW_BENCH_MAX_POINTS : c->max_points;
-    /* Adaptive methods choose their own steps: allow up to half the report time. */
-    double top = adaptive ? fmax(SW_DT_MIN, fmin(0.5 * r->t_report, SW_DT_MAX)) : sweep_top(r, m);
-    /* Before the first run, guess its work from the nominal evaluations. */
-    double est = ceil(r->t_report / top) * (m->evals > 0 ? m->evals : 1) * r->dim;
-    se->stop = SW_BENCH_STOP_MAX;
-    for (int k = 0; k < maxp; k++) {
-        double dt = adaptive ? top : ldexp(top, -k);
-        double rtol = adaptive ? 1e-2 * pow(10.0, -k) : 0.0;
-        if (dt < SW_DT_MIN) {
-            se->stop = SW_BENCH_STOP_DT_MIN;
-            break;
-        }
-        if (est > c->max_work) {
-            se->stop = SW_BENCH_STOP_BUDGET;
-            break;
-        }
-        sw_bench_point *pt = &se->points[k];
-        double work = 0;
-        rc = run_point(r, m, dt, rtol, c, pt, &work, scratch, err, errlen);
-        if (rc != SW_OK)
-            break;
-        se->npoints = k + 1;
-        /* Next run: halving dt doubles the steps; a 10x tighter tolerance
-         * costs DP5 about 10^(1/5) = 1.6x as many steps (2x to be safe).
-         * A run that blew up stopped early: scale its per-step cost. */
-        double per_step = work / (double)(pt->steps > 0 ? pt->steps : 1);
-        double steps_next = adaptive ? 2.0 * (double)pt->steps : ceil(r->t_report / (0.5 * dt));
-        est = per_step * steps_next;
-        if (!pt->blown && pt->error <= pt->floor) {
-            se->stop = SW_BENCH_STOP_FLOOR;
-            break;
-        }
-        /* three points on a plateau down where only round-off is left:
-         * finer steps only cost */
-        sw_bench_fit(r, se);
-        if (k + 1 >= c->min_points && se->plateau >= 0 && se->plateau <= k - 2 &&
-            se->floor <= SW_BENCH_ROUNDOFF * (se->points[se->plateau].floor - r->ref_error)) {
-            se->stop = SW_BENCH_STOP_FLOOR;
-            break;
-        }
-        if (k + 1 >= c->min_points) {
-            sw_bench_fit(r, se);
-            int small = pt->error <= c->fine * r->scale || (c->settled > 0 && se->nfit >= c->settled);
-            if (se->nfit >= c->fit_points && se->asymptotic && small) {
-                se->stop = SW_BENCH_STOP_ENOUGH;
-                break;
-            }
-        }
+    /* an adaptive method's controlled runs (the ones its users make), then
+     * its formula on fixed steps for the order */
+    if (m->flags & SW_ADAPTIVE) {
+        rc = sweep(r, m, c, 1, se, se->points, &se->npoints, scratch, err, errlen);
+        if (rc == SW_OK && !c->no_fixed)
+            rc = sweep(r, m, c, 0, se, se->fixed, &se->nfixed, scratch, err, errlen);
+    } else {
+        rc = sweep(r, m, c, 0, se, se->points, &se->npoints, scratch, err, errlen);
     }
     free(scratch);
     if (rc != SW_OK)
@@ -418,9 +499,12 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
  * method, a sweep whose runs double in cost to max_work (under 2·max_work
  * each). Three quarters of the budget go to the sweeps: with the UI's
  * 4·SW_WORK_KEY that is the quick config's own max_work. */
+/* The UI's plot shows no order: its adaptive methods sweep their
+ * controlled runs only, one sweep a method. */
 static void quick_config(sw_bench_config *c, double budget)
 {
     sw_bench_config_quick(c);
+    c->no_fixed = 1;
     c->max_work = fmin(c->max_work, 0.75 * budget / (2.0 * sw_integrator_count()));
 }
 

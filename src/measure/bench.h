@@ -60,8 +60,19 @@ enum {
     SW_BENCH_ORDER_PAST = 3,     /* the error stopped falling (a plateau) or reached round-off before a clean fit */
     SW_BENCH_ORDER_STEPS = 4,    /* the steps do not shrink as the tolerance tightens: the error is not read against them */
     SW_BENCH_ORDER_MONOTONE = 5, /* the finest clean errors do not fall steadily */
-    SW_BENCH_ORDER_SLOPES = 6    /* the local slopes at the finest clean steps disagree: not yet in the asymptotic range */
+    SW_BENCH_ORDER_SLOPES = 6,   /* the local slopes at the finest clean steps disagree: not yet in the asymptotic range */
+    SW_BENCH_ORDER_ABOVE = 7     /* the slope is above the method's order by more than SW_BENCH_ABOVE */
 };
+
+/* An order-p method's error is C·h^p + O(h^(p+1)) with C nonzero on almost
+ * every problem, so a slope steadily above p says the h^p term is not yet
+ * the largest at the steps swept (rodas4 reads 4.95 on the orbit at
+ * e = 0.9 on fixed steps down to 3.6e-7, where its h^5 term still leads),
+ * or vanishes on this problem: either way not the order. bench's series
+ * (whose method's order is known) print no order when the slope exceeds
+ * the order by more than this; a slope below it is printed (order lost to
+ * events stepped over, or to stiffness, is what a student should see). */
+#define SW_BENCH_ABOVE 0.3
 
 /* Why a series' sweep ended. */
 enum {
@@ -91,8 +102,21 @@ typedef struct sw_bench_point {
 typedef struct sw_bench_series {
     const sw_integrator *method;
     int npoints;
-    sw_bench_point points[SW_BENCH_MAX_POINTS];
-    double order;     /* least-squares slope of ln error against ln h, > 0; NaN when none (no_order says why) */
+    sw_bench_point points[SW_BENCH_MAX_POINTS]; /* the runs as a user makes them (adaptive: controlled,
+                                                    one per tolerance): the work-precision plot's */
+    /* Adaptive methods: the same formula on fixed steps (error control off,
+     * SW_TOL_NONE), the points the order is fitted from. An order is the
+     * exponent p in error = C·h^p for a constant step h; a controlled run's
+     * error against its mean step T/N is not that: it divides how fast the
+     * error falls with the tolerance by how fast the steps grow, and the
+     * first is not yet proportional at any tolerance above round-off (the
+     * controller holds the embedded estimate at rtol, the run carries the
+     * higher-order solution), so the slope read above p (rk45 5.34 on the
+     * orbits, rkn 6.66 on the stiff spring: docs/performance.md). */
+    int nfixed;
+    sw_bench_point fixed[SW_BENCH_MAX_POINTS];
+    double order;     /* least-squares slope of ln error against ln h (sw_bench_order_points), > 0;
+                         NaN when none (no_order says why) */
     int nfit;         /* points in the fit: 0, or SW_BENCH_MIN_FIT and more */
     int no_order;     /* SW_BENCH_ORDER_*: why order is NaN */
     int ncandidates;  /* clean points: between SW_BENCH_MARGIN × floor and 1e-2 of the state, before the plateau */
@@ -120,6 +144,8 @@ typedef struct sw_bench_config {
     double max_work;   /* skip runs above this many (evaluations + solver iterations) × dimension */
     const atomic_int *stop; /* NULL, or set by another thread: the sweep ends at its next sample
                                time with SW_EINVAL, "stopped" (the UI's sweep on a worker) */
+    int no_fixed;      /* 1: adaptive methods sweep their controlled runs only, and have no order
+                          (the UI's plot, which shows no order); 0: their fixed steps too */
 } sw_bench_config;
 
 /* One scene's sweep: the truth at the report time and one series per method. */
@@ -199,6 +225,10 @@ int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p
  * Returns the order, or NaN with no_order and why saying which rule failed;
  * never <= 0. */
 double sw_bench_fit(const sw_bench_report *r, sw_bench_series *s);
+
+/* The points s's order is fitted from (and in_fit marks): the fixed-step
+ * runs for an adaptive method, the points otherwise; their count in *n. */
+const sw_bench_point *sw_bench_order_points(const sw_bench_series *s, int *n);
 
 /* Round-off's share of an error after `steps` steps on a state of size
  * scale: scale·(1e-13 + 4e-16·steps) (it grows at most about linearly

@@ -56,17 +56,17 @@ static double ls_slope(const sw_bench_point *pts, int first, int last)
 
 /* The round-off plateau: the first usable point (not the finest) that no
  * finer usable point falls below SW_BENCH_STALL of; -1 when none. */
-static int find_plateau(const sw_bench_series *s)
+static int find_plateau(const sw_bench_point *pts, int n)
 {
-    for (int i = 0; i < s->npoints; i++) {
-        if (!usable(&s->points[i]))
+    for (int i = 0; i < n; i++) {
+        if (!usable(&pts[i]))
             continue;
         int later = 0, stalled = 1;
-        for (int k = i + 1; k < s->npoints; k++) {
-            if (!usable(&s->points[k]))
+        for (int k = i + 1; k < n; k++) {
+            if (!usable(&pts[k]))
                 continue;
             later = 1;
-            if (s->points[k].error < SW_BENCH_STALL * s->points[i].error)
+            if (pts[k].error < SW_BENCH_STALL * pts[i].error)
                 stalled = 0;
         }
         if (later && stalled)
@@ -108,9 +108,9 @@ static const char *ceiling_text(const fit_ctx *r, char *buf, size_t len)
 
 /* Why there is no order, when the clean points are pts[first..last]
  * (last < first: none), into s->no_order and s->why. */
-static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
+static void diagnose(const fit_ctx *r, sw_bench_series *s, const sw_bench_point *pts, int npts, int first,
+                     int last)
 {
-    const sw_bench_point *pts = s->points;
     int n = last < 0 ? 0 : last - first + 1, fine = n > SW_BENCH_MIN_FIT ? last - SW_BENCH_MIN_FIT + 1 : first;
     /* the finest points that could carry an order: SW_BENCH_MIN_FIT, more
      * while their steps span less than SW_BENCH_MIN_SPAN */
@@ -125,7 +125,7 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
         snprintf(past, sizeof past, "the error stops falling at %.1e%s", s->floor, what);
     } else {
         /* no plateau, but finer points within SW_BENCH_MARGIN of their floor */
-        for (int i = last < 0 ? 0 : last + 1; i < s->npoints && !past[0]; i++)
+        for (int i = last < 0 ? 0 : last + 1; i < npts && !past[0]; i++)
             if (usable(&pts[i]) && pts[i].error < SW_BENCH_MARGIN * pts[i].floor)
                 snprintf(past, sizeof past, "the error reaches round-off (%.1e)", pts[i].error);
     }
@@ -186,22 +186,25 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, int first, int last)
 
 static double fit(const fit_ctx *r, sw_bench_series *s)
 {
-    sw_bench_point *pts = s->points;
+    int npts;
+    sw_bench_point *pts = (sw_bench_point *)sw_bench_order_points(s, &npts);
     s->order = s->slope_min = s->slope_max = NAN;
     s->asymptotic = 0;
     s->nfit = 0;
     s->no_order = SW_BENCH_ORDER_OK;
     s->why[0] = '\0';
     s->floor = 0;
-    for (int i = 0; i < s->npoints; i++) {
+    for (int i = 0; i < s->npoints; i++)
+        s->points[i].in_fit = 0;
+    for (int i = 0; i < npts; i++) {
         pts[i].in_fit = 0;
         if (usable(&pts[i]))
             s->floor = fmax(s->floor, pts[i].floor);
     }
-    s->plateau = find_plateau(s);
-    int end = s->plateau >= 0 ? s->plateau : s->npoints; /* points before end may be fitted */
+    s->plateau = find_plateau(pts, npts);
+    int end = s->plateau >= 0 ? s->plateau : npts; /* points before end may be fitted */
     double plateau = 0;
-    for (int i = end; i < s->npoints; i++)
+    for (int i = end; i < npts; i++)
         if (usable(&pts[i]))
             plateau = fmax(plateau, pts[i].error);
     s->floor = fmax(s->floor, plateau);
@@ -226,13 +229,28 @@ static double fit(const fit_ctx *r, sw_bench_series *s)
             hi = h;
         }
     }
+    if (s->method && (s->method->flags & SW_ADAPTIVE) && npts == 0 && s->npoints > 0) {
+        s->no_order = SW_BENCH_ORDER_FEW;
+        snprintf(s->why, sizeof s->why, "its formula was not run on fixed steps (the order is read from "
+                 "those, never from the controlled runs)");
+        return s->order;
+    }
     if (best < 0) {
-        diagnose(r, s, first, last);
+        diagnose(r, s, pts, npts, first, last);
         return s->order;
     }
     if (!(order >= SW_BENCH_MIN_ORDER)) {
         s->no_order = SW_BENCH_ORDER_FLAT;
         snprintf(s->why, sizeof s->why, "the error does not fall as the step does (slope %.2f)", order);
+        return s->order;
+    }
+    if (s->method && s->method->order > 0 && order > s->method->order + SW_BENCH_ABOVE) {
+        s->no_order = SW_BENCH_ORDER_ABOVE;
+        snprintf(s->why, sizeof s->why, "the error falls faster than order %d can for long (slope %.2f over "
+                 "the finest steps): its h^%d term is not yet the largest, or vanishes here",
+                 s->method->order, order, s->method->order);
+        s->slope_min = lo;
+        s->slope_max = hi;
         return s->order;
     }
     for (int i = best; i <= last; i++)
@@ -243,6 +261,13 @@ static double fit(const fit_ctx *r, sw_bench_series *s)
     s->slope_max = hi;
     s->asymptotic = 1;
     return s->order;
+}
+
+const sw_bench_point *sw_bench_order_points(const sw_bench_series *s, int *n)
+{
+    int fixed = s->method && (s->method->flags & SW_ADAPTIVE);
+    *n = fixed ? s->nfixed : s->npoints;
+    return fixed ? s->fixed : s->points;
 }
 
 const char *sw_bench_no_order_text(const sw_bench_series *s)

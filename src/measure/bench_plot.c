@@ -218,8 +218,10 @@ int sw_bench_write_csv(FILE *out, const sw_bench_report *const *reports, int nre
         const sw_bench_report *r = reports[k];
         for (int i = 0; i < r->nseries; i++) {
             const sw_bench_series *s = &r->series[i];
-            for (int j = 0; j < s->npoints; j++) {
-                const sw_bench_point *pt = &s->points[j];
+            /* an adaptive method's controlled runs, then its fixed steps
+             * (rtol 0: the rows its order is fitted from) */
+            for (int j = 0; j < s->npoints + s->nfixed; j++) {
+                const sw_bench_point *pt = j < s->npoints ? &s->points[j] : &s->fixed[j - s->npoints];
                 csv_name(out, r->scene->name);
                 fputc(',', out);
                 csv_name(out, s->method->name);

@@ -122,7 +122,19 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, const sw_bench_point 
                                ? " (the reference's accuracy)"
                            : s->floor <= SW_BENCH_ROUNDOFF * (pts[s->plateau].floor - r->ref_error) ? " (round-off)"
                                                                                                     : "";
-        snprintf(past, sizeof past, "the error stops falling at %.1e%s", s->floor, what);
+        /* the plateau's own errors, not the floor assumed beside them */
+        double lo = INFINITY, hi = 0;
+        for (int i = s->plateau; i < npts; i++)
+            if (usable(&pts[i])) {
+                lo = fmin(lo, pts[i].error);
+                hi = fmax(hi, pts[i].error);
+            }
+        if (!(hi > 0))
+            snprintf(past, sizeof past, "the error stops falling%s", what);
+        else if (hi < 1.05 * lo)
+            snprintf(past, sizeof past, "the error stops falling at %.1e%s", hi, what);
+        else
+            snprintf(past, sizeof past, "the error stops falling at %.1e to %.1e%s", lo, hi, what);
     } else {
         /* no plateau, but finer points within SW_BENCH_MARGIN of their floor */
         for (int i = last < 0 ? 0 : last + 1; i < npts && !past[0]; i++)

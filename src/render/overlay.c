@@ -126,7 +126,8 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     if (off >= 0) {
         snprintf(title[3].full, sizeof title[3].full, "%c runs past the %s, to %.3g", (char)sim_glyph[off],
                  far > 0 ? "top" : "bottom", far);
-        snprintf(title[3].brief, sizeof title[3].brief, "%c %s%.3g", (char)sim_glyph[off], far > 0 ? "^" : "v", far);
+        snprintf(title[3].brief, sizeof title[3].brief, "%c off %s: %.3g", (char)sim_glyph[off],
+                 far > 0 ? "top" : "foot", far);
     }
     snprintf(title[0].full, sizeof title[0].full, "%s", has_energy ? "energy drift (%)" : "error");
     snprintf(title[1].full, sizeof title[1].full, "against time t (s)");

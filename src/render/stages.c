@@ -405,7 +405,7 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     snprintf(fl[n].brief, sizeof fl[n].brief, "%d/%d %s", shown, sc->nviews, cur->label);
     fl[n++].prio = 9;
     snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
-    fl[n].brief[0] = '\0';
+    snprintf(fl[n].brief, sizeof fl[n].brief, "zoomed");
     fl[n++].prio = 3;
     snprintf(fl[n].full, sizeof fl[n].full, "k %s  Esc close", shown < sc->nviews ? "next" : "closes");
     snprintf(fl[n].brief, sizeof fl[n].brief, "k %s", shown < sc->nviews ? "next" : "closes");

@@ -350,11 +350,12 @@ START_TEST(frames_compose)
     char *t = compose_text(&a, 80, 24);
     ck_assert_ptr_nonnull(strstr(t, "spring  rk4  dt=0.02  t=0.000"));
     /* The scene pane is the 20 rows above the status block (one sim: 4
-     * rows), which holds the legend's letters: look for the anchor and the
-     * mass there only. */
+     * rows), which holds the legend's letters; its last row is the
+     * picture's legend ("o rk4  # anchor  - spring"): look for the anchor
+     * and the mass in the 19 above it only. */
     int anchor = 0, mass = 0;
     const char *line = t;
-    for (int row = 0; row < 20 && line; row++) {
+    for (int row = 0; row < 19 && line; row++) {
         const char *nl = strchr(line, '\n');
         size_t len = nl ? (size_t)(nl - line) : strlen(line);
         anchor += memchr(line, '#', len) != NULL;

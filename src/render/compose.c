@@ -240,6 +240,33 @@ static int legend_rows(const sw_field *must, int nmust, int width)
     return dropped ? 2 : 1;
 }
 
+/* The scene drawn on f->canvas (rows × cols) onto the screen, with its
+ * legend on its last row or two (two where one would drop a part and the
+ * picture has rows to spare): over the picture's own foot where the
+ * legend's cells there are blank (most pictures: the picture keeps its
+ * scale), else under a picture drawn that much shorter. */
+static void scene_with_legend(sw_frame *f, sw_app *a, sw_screen *scr, int rows, int cols)
+{
+    const sw_canvas *cv[1] = { &f->canvas };
+    sw_field fl[16];
+    char lines[2][SW_TEXT_LINE];
+    int n = rows > SCENE_MIN_ROWS / 2 ? sw_scene_legend(cv, 1, a, fl, 16) : 0;
+    int lr = n == 0 ? 0 : rows > SCENE_MIN_ROWS && legend_rows(fl, n, cols) == 2 ? 2 : 1;
+    int used = lr ? sw_text_fit_rows(lines, lr, cols, fl, n, "  ", NULL) : 0;
+    int blank = 1;
+    for (int i = 0; i < used; i++)
+        for (int k = 0; k < sw_text_cells(lines[i]) && blank; k++)
+            blank = sw_canvas_codepoint(&f->canvas, k, rows - used + i) == ' ';
+    if (!blank) {
+        draw_sims(f, a, &f->canvas, cols, rows - used, 0, a->nsims - 1);
+        n = sw_scene_legend(cv, 1, a, fl, 16);
+        used = sw_text_fit_rows(lines, used, cols, fl, n, "  ", NULL);
+    }
+    sw_screen_blit(scr, &f->canvas, 0, 0);
+    for (int i = 0; i < used; i++)
+        sw_screen_text(scr, rows - used + i, 0, cols, SW_STYLE_DIM, lines[i]);
+}
+
 static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
     char err[SW_ERRLEN], buf[SW_TEXT_LINE], brief[SW_TEXT_LINE];
@@ -641,24 +668,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     else if (a->compare && a->lanes && a->nsims > 1 && lanes_readable(a, view_rows, pic_cols))
         draw_lanes(f, a, scr, 0, 0, view_rows, pic_cols);
     else {
-        /* the scene, and under it what each glyph drawn is: one row, or
-         * two where one would drop a part and the picture has rows to spare */
-        int legend = view_rows > SCENE_MIN_ROWS / 2, n = 0;
-        sw_field fl[16];
-        const sw_canvas *cv[1] = { &f->canvas };
-        draw_sims(f, a, &f->canvas, pic_cols, view_rows - legend, 0, a->nsims - 1);
-        if (legend)
-            n = sw_scene_legend(cv, 1, a, fl, 16);
-        if (legend && view_rows > SCENE_MIN_ROWS && legend_rows(fl, n, pic_cols) == 2) {
-            legend = 2;
-            draw_sims(f, a, &f->canvas, pic_cols, view_rows - legend, 0, a->nsims - 1);
-            n = sw_scene_legend(cv, 1, a, fl, 16);
-        }
-        sw_screen_blit(scr, &f->canvas, 0, 0);
-        char lines[2][SW_TEXT_LINE];
-        int used = legend ? sw_text_fit_rows(lines, legend, pic_cols, fl, n, "  ", NULL) : 0;
-        for (int i = 0; i < used; i++)
-            sw_screen_text(scr, view_rows - legend + i, 0, pic_cols, SW_STYLE_DIM, lines[i]);
+        /* the scene, and at its foot what each glyph drawn is (render/legend.c) */
+        draw_sims(f, a, &f->canvas, pic_cols, view_rows, 0, a->nsims - 1);
+        scene_with_legend(f, a, scr, view_rows, pic_cols);
         if (a->sims[0].blown)
             blown_banner(scr, &a->sims[0], 0, 0, pic_cols, view_rows);
     }

@@ -50,8 +50,8 @@ int sw_scene_legend(const sw_canvas *const *cs, int ncs, const sw_app *a, sw_fie
                  holds(c, SW_GLYPH_COOL, SW_STYLE_MAIN)))
         add(f, &n, max, 12, "@ hot  o warm  , cool", "@ hot o , cool");
     for (int i = heat; i < a->nsims && ncs == 1; i++) { /* (lanes: each lane's title says its run) */
-        if (!holds(c, run_glyph[i], run_style[i]) && !(i == 0 && a->nsims > 1))
-            continue;
+        if (!holds(c, run_glyph[i], run_style[i]) && a->nsims == 1)
+            continue; /* (compared runs are all named: the graph draws them too) */
         sw_text_brief_name(a->sims[i].method->name, name, sizeof name);
         snprintf(full, sizeof full, "%c %s", (char)run_glyph[i], a->sims[i].method->name);
         snprintf(brief, sizeof brief, "%c %s", (char)run_glyph[i], name[0] ? name : a->sims[i].method->name);

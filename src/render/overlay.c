@@ -286,7 +286,8 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
               "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
         { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
         { "", "growth x.../step: the largest factor by which one step scales any motion, a bound, often the "
-              "slowest motion's (1: neutral, below: decays, above: GROWS, or grows slowly: too slowly to see in a run); "
+              "slowest motion's (1: neutral, below: decays, above: GROWS; grows or decays slowly: too little to see in a "
+              "run); "
               "wider: which mode, and the fastest's" },
         { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "

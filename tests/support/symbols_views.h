@@ -176,7 +176,7 @@ static const view_symbol view_symbols[] = {
     { "stages", "↘", "→ slope", NULL, NULL },
     /* keys named in messages and legends */
     { "any", "i", "method (i)", NULL, NULL },
-    { "any", "z", "z zooms out", NULL, NULL },
+    { "any", "z", "(z zooms out)", NULL, NULL },
     { "any", "z", "z: zoom out", NULL, NULL },
     /* springs: the glyphs drawn, then the word */
     { "scene", "-", "spring", NULL, NULL },

@@ -279,6 +279,8 @@ static void check_marks(const view_screen *v, const char *view, sw_app *a,
 /* The view on screen, by what the app shows. */
 static const char *view_now(const sw_app *a)
 {
+    if (a->workprec && a->bench)
+        return "plot";
     if (a->stages_open && a->view == SW_VIEW_SCENE)
         return "stages";
     if (a->view == SW_VIEW_PHASE)
@@ -339,6 +341,19 @@ static void page_views(sw_runner *r, sw_app *a, const sw_lesson_entry *e, int n,
             sw_app_key(a, 'l', 1);
         }
         sw_app_key(a, view_keys[i].close, 1);
+    }
+    /* the work-precision plot, where a page first asks for it (its sweep
+     * takes seconds: not on every page) */
+    char text[8192] = "";
+    const sw_lesson_page *pg = &r->lesson.pages[page];
+    for (int b = 0; b < pg->nblocks; b++)
+        strncat(text, pg->blocks[b].text, sizeof text - strlen(text) - 1);
+    if (strstr(text, "Press w") && sw_app_key(a, 'w', 1)) {
+        sw_app_sweep_wait(a);
+        if (a->workprec && a->bench)
+            check_view(r, a, f, e, n, lesson, page);
+        while (a->workprec)
+            sw_app_key(a, 'w', 1);
     }
 }
 

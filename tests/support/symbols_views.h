@@ -216,4 +216,20 @@ static const view_symbol view_symbols[] = {
     { "graph", "-", "(linear axes, --- is 0)", NULL, NULL },
     { "graph", "|", "energy drift", NULL, NULL },
     { "graph", "|", "error", NULL, NULL },
+    /* ---- the work-precision plot (render/workprec.c), where lesson 6 asks for it ---- */
+    { "plot", "&", "& two in a cell", NULL, NULL },
+    { "plot", ".", ". joins", NULL, NULL },
+    { "plot", "|", "error vs", NULL, NULL },
+    { "plot", "-", "error vs", NULL, NULL },
+    { "plot", "|", "error against", NULL, NULL },
+    { "plot", "-", "error against", NULL, NULL },
+    { "plot", "a", "a=", NULL, NULL },
+    { "plot", "b", "b=", NULL, NULL },
+    { "plot", "c", "c=", NULL, NULL },
+    { "plot", "d", "d=", NULL, NULL },
+    { "plot", "e", "e=", NULL, NULL },
+    { "plot", "e#", "e=", NULL, NULL }, /* (two markers side by side: e, then a method's digit) */
+    { "plot", "w", "w: the same", NULL, NULL },
+    { "plot", "w", "w: against", NULL, NULL },
+    { "plot", "w", "w closes", NULL, NULL },
 };

@@ -15,6 +15,7 @@
 #include "lesson/lesson.h"
 #include "render/screen.h"
 #include "render/text.h"
+#include "util/utf8.h"
 
 static const int sizes[2][2] = { { 80, 24 }, { 120, 40 } };
 
@@ -246,6 +247,34 @@ START_TEST(reading_mode_full_width)
 }
 END_TEST
 
+/* The reading mode re-flows a definition list written narrow for the pane
+ * beside the picture (lesson 1's status and meter pages, newcomer notes
+ * 2026-12-06-b): at 80 columns a description takes the width, its lines
+ * under its own column; beside the picture it stays as written. */
+START_TEST(reading_mode_definitions_take_the_width)
+{
+    ct_page pg;
+    ct_page_open(&pg, "lessons/01-flow-fields.lesson", "The status line");
+    sw_runner *r = pg.r;
+    char *text = ct_page_screen(&pg, 80, 24);
+    ck_assert_msg(strstr(text, "position error in metres: the\n") != NULL, "beside the picture:\n%s", text);
+    free(text);
+    ck_assert_int_eq(sw_runner_key(r, &pg.a, 'o'), 1);
+    text = ct_page_screen(&pg, 80, 24);
+    /* the entry's description on one row with the words that were under it, and its column kept */
+    const char *row = strstr(text, "err … m   position error in metres: the worst dot's distance");
+    ck_assert_msg(row != NULL, "the definition is not re-flowed:\n%s", text);
+    const char *desc = strstr(row, "position"), *line = row;
+    while (line > text && line[-1] != '\n')
+        line--;
+    int column = (int)sw_utf8_columns(line, (size_t)(desc - line));
+    const char *next = strchr(row, '\n') + 1;
+    ck_assert_msg((int)strspn(next, " ") == column, "its next line is not under its column %d:\n%s", column, text);
+    free(text);
+    ct_page_close(&pg);
+}
+END_TEST
+
 /* The reading mode never hides a run (the newcomer's "watch" pages that
  * opened text only): on lesson 1 it carries over to page 4 ("watch a full
  * turn"), which starts paused and says that space brings the picture
@@ -385,6 +414,7 @@ Suite *make_pane_suite(void)
     tcase_add_test(tc, nothing_skipped_while_scrolling);
     tcase_add_test(tc, reading_mode_full_width);
     tcase_add_test(tc, reading_mode_never_hides_a_run);
+    tcase_add_test(tc, reading_mode_definitions_take_the_width);
     tcase_add_test(tc, message_shown_whole);
     tcase_add_test(tc, page_run_starts_paused_at_speed_one);
     tcase_add_test(tc, pane_still_when_a_goal_is_met);

@@ -106,8 +106,8 @@ START_TEST(region_gauge_line)
         if (k > 0)
             ck_assert_int_eq(pos[k - 1] - pos[k], pos[0] - pos[1]);
     }
-    ck_assert_ptr_nonnull(strstr(g[0], " 5x"));
-    ck_assert_ptr_nonnull(strstr(g[3], " 0.625x"));
+    ck_assert_ptr_nonnull(strstr(g[0], " 5×edge"));
+    ck_assert_ptr_nonnull(strstr(g[3], " 0.625×edge"));
     sw_region_gauge(g[0], sizeof g[0], 39, INFINITY, 1);
     ck_assert_ptr_nonnull(strstr(g[0], "always out"));
     ck_assert_ptr_null(strchr(g[0], '|')); /* no edge drawn where there is none to measure against */
@@ -189,7 +189,7 @@ START_TEST(region_marks_move_on_lesson5)
     marks prev = { 0 };
     char ticks0[256] = "";
     int gauge_col[4];
-    static const char *said[4] = { " 5x", " 2.5x", " 1.25x", " 0.625x" };
+    static const char *said[4] = { " 5×edge", " 2.5×edge", " 1.25×edge", " 0.625×edge" };
     for (int k = 0; k < 4; k++) {
         int clipped;
         char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
@@ -284,7 +284,7 @@ START_TEST(region_scale_stays_when_marks_leave)
             ck_assert_msg(m.row[top] >= line_row, "dt %g: the mark inside is drawn above the edge line:\n%s",
                           ap->dt, text);
         else {
-            ck_assert_msg(strstr(pg.f.region.gauge, "X") && strstr(pg.f.region.gauge, " 1.41x"),
+            ck_assert_msg(strstr(pg.f.region.gauge, "X") && strstr(pg.f.region.gauge, " 1.41×edge"),
                           "dt %g: the line under the picture does not say out, 1.41x:\n%s", ap->dt, text);
             ck_assert_msg(m.row[top] < line_row && sw_canvas_codepoint(&pg.f.canvas, m.col[top], m.row[top]) == 'X',
                           "dt %g: the mark out is not drawn X past the edge line (row %d):\n%s", ap->dt, line_row,
@@ -432,7 +432,7 @@ START_TEST(graph_keeps_small_runs_apart)
     int clipped;
     char *text = ct_compose(&pg.f, ap, sw_runner_side(r, ap, 80), 80, 24, &clipped);
     const char *title = strstr(text, "energy drift (%)");
-    ck_assert_msg(title != NULL && strstr(title, "o ^") != NULL, "the graph does not say Euler runs past the top:\n%s",
+    ck_assert_msg(title != NULL && strstr(title, "o off top") != NULL, "the graph does not say Euler runs past the top:\n%s",
                   text);
     /* the plot's rows: from the title's next line while they hold '|' at column 9 */
     int rows_x = 0, rows_plus = 0, shared = 0;
@@ -471,7 +471,7 @@ START_TEST(region_without_modes_says_why)
     int clipped;
     char *text = ct_compose(&f, &a, NULL, 80, 24, &clipped);
     ck_assert_msg(strstr(text, "0 modes") == NULL && strstr(text, "x0.000000") == NULL, "%s", text);
-    ck_assert_msg(strstr(text, "no marks") != NULL && strstr(text, "x1 per step") != NULL, "%s", text);
+    ck_assert_msg(strstr(text, "no marks") != NULL && strstr(text, "×1 per step") != NULL, "%s", text);
     free(text);
     sw_frame_free(&f);
     sw_app_free(&a);

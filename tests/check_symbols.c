@@ -8,7 +8,6 @@
  * explanation and its row), and so does one met on a page before the page
  * that explains it. */
 #include <check.h>
-#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +16,7 @@
 #include "app/runner.h"
 #include "canvas_help.h"
 #include "lesson/lesson.h"
+#include "symbols_help.h"
 
 /* Where a form is explained: a lesson file and a page title; both NULL:
  * the field names itself in words a newcomer reads (a method's name, the
@@ -31,7 +31,6 @@ typedef struct symbol {
 #define L1 "01-flow-fields.lesson"
 #define L1_STATUS L1, "The status line"
 #define L1_METER L1, "The stability meter"
-#define FIRST_PAGE_POINTS "explained field by field on the next two pages"
 
 static const symbol symbols[] = {
     { "dt=#", L1_STATUS },
@@ -64,10 +63,12 @@ static const symbol symbols[] = {
     { "growth ×# per step: neutral", L1_METER },
     { "growth ×# per step: GROWS", L1_METER },
     { "growth ×# per step: grows slowly", L1_METER },
+    { "growth ×# per step: decays slowly", L1_METER },
     { "growth ×#/step decays", L1_METER },
     { "growth ×#/step neutral", L1_METER },
     { "growth ×#/step GROWS", L1_METER },
     { "growth ×#/step grows slowly", L1_METER },
+    { "growth ×#/step decays slowly", L1_METER },
     { "(fastest ×#)", L1_METER },
     { "(of the mode |λ| #; the fastest, |λ| #: ×#)", L1_METER },
     { "stops at t=# (u)", "02-euler.lesson", "Halve it again" },
@@ -77,66 +78,6 @@ static const symbol symbols[] = {
     { "adaptive steps", NULL, NULL },
     { "vs", NULL, NULL },
 };
-
-/* s with every number (digits, a point, an exponent; a sign before it)
- * as one '#', and the meter's bar as "[#]". */
-static void form_of(const char *s, char *out, size_t len)
-{
-    size_t n = 0;
-    while (*s && n + 2 < len) {
-        if (*s == '[' && (s[1] == '#' || s[1] == '.')) {
-            while (*s && *s != ']')
-                s++;
-            s += *s == ']';
-            n += (size_t)snprintf(out + n, len - n, "[#]");
-            continue;
-        }
-        int sign = (*s == '-' || *s == '+') && isdigit((unsigned char)s[1]);
-        if (isdigit((unsigned char)*s) || sign) {
-            s += sign;
-            while (isdigit((unsigned char)*s) || *s == '.' ||
-                   ((*s == 'e' || *s == 'E') && (isdigit((unsigned char)s[1]) || s[1] == '-' || s[1] == '+')))
-                s += (*s == 'e' || *s == 'E') && (s[1] == '-' || s[1] == '+') ? 2 : 1;
-            out[n++] = '#';
-            continue;
-        }
-        out[n++] = *s++;
-    }
-    out[n] = '\0';
-}
-
-static int first_page_points; /* the course's first page says where its lines are explained */
-
-/* The place in the course (lesson index, page index) of page `page` of
- * `file`, from the lesson list, whose text must hold key (the form's first
- * word: the page that explains a field names it). */
-static int place_of(const sw_lesson_entry *e, int n, const char *file, const char *title, const char *key,
-                    int *page)
-{
-    for (int i = 0; i < n; i++) {
-        if (strcmp(e[i].file, file) != 0)
-            continue;
-        char err[SW_LESSON_ERRLEN];
-        sw_lesson lesson;
-        ck_assert_msg(sw_lesson_load(e[i].path, &lesson, err, sizeof err) == SW_OK, "%s", err);
-        int found = -1;
-        int named = 0;
-        for (int p = 0; p < lesson.npages; p++)
-            if (strcmp(lesson.pages[p].title, title) == 0) {
-                found = p;
-                for (int b = 0; b < lesson.pages[p].nblocks; b++)
-                    named |= strstr(lesson.pages[p].blocks[b].text, key) != NULL;
-            }
-        sw_lesson_free(&lesson);
-        ck_assert_msg(found < 0 || named, "%s's page '%s' is said to explain '%s' but does not name it", file, title,
-                      key);
-        ck_assert_msg(found >= 0, "the symbol list names page '%s' of %s, which it does not have", title, file);
-        *page = found;
-        return i;
-    }
-    ck_abort_msg("the symbol list names %s, which is not a lesson", file);
-    return -1;
-}
 
 /* Every field of the status lines and the meter now: known, and explained
  * at or before lesson li's page pi. */
@@ -167,7 +108,7 @@ static void check_fields(sw_app *a, const sw_lesson_entry *e, int n, int li, int
                         snprintf(named, sizeof named, "<method>%s", text + ml);
                 }
                 char form[200];
-                form_of(named, form, sizeof form);
+                sym_form_of(named, form, sizeof form);
                 const symbol *s = NULL;
                 for (size_t j = 0; j < sizeof symbols / sizeof symbols[0]; j++)
                     if (strcmp(symbols[j].form, form) == 0)
@@ -188,8 +129,8 @@ static void check_fields(sw_app *a, const sw_lesson_entry *e, int n, int li, int
                 snprintf(key, sizeof key, "%.*s", (int)kl, s->form);
                 if (strcmp(key, "[") == 0)
                     snprintf(key, sizeof key, "[###");
-                int sp, sl = place_of(e, n, s->file, s->page, key, &sp);
-                int pointed = li == 0 && sl == 0 && pi < sp && sp <= 2 && first_page_points;
+                int sp, sl = sym_place_of(e, n, s->file, s->page, key, &sp);
+                int pointed = li == 0 && sl == 0 && pi < sp && sp <= 2 && sym_first_page_points();
                 ck_assert_msg(sl < li || (sl == li && sp <= pi) || pointed, "%s page %d (%s): '%s' is on screen "
                               "before %s's page '%s' explains it", e[li].file, pi + 1, when, text, s->file, s->page);
             }
@@ -200,16 +141,7 @@ static void check_fields(sw_app *a, const sw_lesson_entry *e, int n, int li, int
 static void page_fields(sw_runner *r, sw_app *a, const sw_lesson_entry *e, int n, int lesson, int page, void *ctx)
 {
     (void)ctx;
-    if (lesson == 0 && page == 0) {
-        /* the first page's pointer, read from its text (lines joined with spaces) */
-        char text[4096] = "";
-        const sw_lesson_page *pg = &r->lesson.pages[0];
-        for (int b = 0; b < pg->nblocks; b++)
-            strncat(text, pg->blocks[b].text, sizeof text - strlen(text) - 2);
-        for (char *c = text; *c; c++)
-            *c = *c == '\n' ? ' ' : *c;
-        first_page_points = strstr(text, FIRST_PAGE_POINTS) != NULL;
-    }
+    sym_read_first_page(r, lesson, page);
     check_fields(a, e, n, lesson, page, "as the page opens");
     int paused = a->paused;
     a->paused = 0;
@@ -228,13 +160,13 @@ END_TEST
 START_TEST(forms)
 {
     char out[64];
-    form_of("stiffness·dt 0.5 of limit 2.83", out, sizeof out);
+    sym_form_of("stiffness·dt 0.5 of limit 2.83", out, sizeof out);
     ck_assert_str_eq(out, "stiffness·dt # of limit #");
-    form_of("E-1.45e+03%", out, sizeof out);
+    sym_form_of("E-1.45e+03%", out, sizeof out);
     ck_assert_str_eq(out, "E#%");
-    form_of("[###.......]", out, sizeof out);
+    sym_form_of("[###.......]", out, sizeof out);
     ck_assert_str_eq(out, "[#]");
-    form_of("err 5.2e-08 m", out, sizeof out);
+    sym_form_of("err 5.2e-08 m", out, sizeof out);
     ck_assert_str_eq(out, "err # m");
 }
 END_TEST

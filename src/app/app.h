@@ -41,7 +41,8 @@ typedef struct sw_app_meter {
     double growth_lambda;       /* |λ| of the mode ρ belongs to (NaN: unknown) */
     double fast_growth;         /* the stiffest mode's own growth per step at dt (NaN: unknown) */
     int grows;                  /* ρ grows the mode by > 1% over the horizon: a run shows it */
-    int slow;                   /* ρ > 1 + SW_TRUTH_NEUTRAL, but too slowly to show */
+    int slow;                   /* 1: ρ > 1 + SW_TRUTH_NEUTRAL, -1: ρ < 1 - SW_TRUTH_NEUTRAL, but
+                                   either by under 1% over the horizon: too slowly to show; else 0 */
     double horizon;             /* the horizon (sw_truth_horizon) */
     int complete;               /* every eigenvalue (0: the stiffest mode only) */
     int growing;                /* physically growing modes left out */
@@ -296,8 +297,9 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max);
 int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
 /* (status.c) The growth per step rho as text "×1.000000" into num, with as
  * many digits as it takes for the printed number to agree with the word
- * returned ("grows", "grows slowly": too little to see over the meter's horizon, "decays", "neutral"):
- * grows is the meter's visible growth, slow its invisible growth. */
+ * returned ("grows", "grows slowly" and "decays slowly": too little to see
+ * over the meter's horizon, "decays", "neutral"): grows is the meter's
+ * visible growth, slow its invisible growth (1) or decay (-1). */
 const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */

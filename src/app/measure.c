@@ -372,7 +372,10 @@ int sw_app_stability(sw_app *a, sw_app_meter *out)
             m->fast_growth = fast.n ? sw_truth_growth_with(a->meter_work, s->method, &fast, a->dt, NULL) : NAN;
             m->horizon = sw_truth_horizon(a->scene, a->spec.largest);
             m->grows = sw_truth_growth_visible(m->growth, a->dt, m->horizon) || isnan(m->growth);
-            m->slow = !m->grows && m->growth > 1 + SW_TRUTH_NEUTRAL;
+            /* a change too small to see over the horizon (under 1%): "slowly" */
+            int faint = !((m->horizon / a->dt) * log(m->growth) < log(0.99));
+            m->slow = m->grows ? 0 : m->growth > 1 + SW_TRUTH_NEUTRAL ? 1
+                    : m->growth < 1 - SW_TRUTH_NEUTRAL && faint ? -1 : 0;
             m->limit = sw_truth_limit_with(a->meter_work, s->method, &a->spec, SW_DT_MAX, &m->unbounded);
             m->limit_undamped = undamped_limit(a, s->method, m->limit);
             m->ok = isfinite(m->growth);

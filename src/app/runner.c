@@ -312,6 +312,70 @@ static void add_verbatim(sw_runner *r, const char *text, int width)
     sw_wrap_verbatim(text, width, pane_verbatim_line, &o);
 }
 
+/* Where a verbatim line's description starts, in columns: after the first
+ * gap of two spaces past its term ("  err … m   position error"), or at its
+ * indent when it is all description ("            worst dot's"); 0: none. */
+static int description_column(const char *line)
+{
+    size_t lead = strspn(line, " ");
+    const char *gap = strstr(line + lead, "  ");
+    if (gap && gap[strspn(gap, " ")])
+        return (int)sw_utf8_columns(line, (size_t)(gap - line) + strspn(gap, " "));
+    return lead >= 4 && line[lead] ? (int)lead : 0;
+}
+
+/* A byte offset of line at column col (col within the line). */
+static size_t byte_at_column(const char *line, int col)
+{
+    size_t b = 0;
+    while (line[b] && (int)sw_utf8_columns(line, b) < col)
+        b++;
+    return b;
+}
+
+/* A description's wrapped lines under its column, the first after its term. */
+typedef struct hanging {
+    sw_runner *r;
+    const char *term;
+    size_t term_bytes;
+    int column, lines;
+} hanging;
+
+static void hanging_line(void *ctx, int lead, const char *text, size_t len)
+{
+    hanging *h = ctx;
+    char buf[SW_RUNNER_COLS];
+    (void)lead;
+    if (h->lines++ == 0)
+        snprintf(buf, sizeof buf, "%.*s%.*s", (int)h->term_bytes, h->term, (int)len, text);
+    else
+        snprintf(buf, sizeof buf, "%*s%.*s", h->column, "", (int)len, text);
+    add_line(h->r, SW_SIDE_VERBATIM, buf);
+}
+
+/* The reading mode re-flows a definition list written narrow for the pane:
+ * lines[0]'s description and the lines under it indented to its column,
+ * joined and wrapped to width under that column. Returns how many of the n
+ * lines it took (1: the line alone, added as written). */
+static int add_definition(sw_runner *r, char (*lines)[SW_RUNNER_COLS], int n, int width)
+{
+    int d = description_column(lines[0]), k = 1;
+    while (d >= 4 && k < n && (int)strspn(lines[k], " ") == d && lines[k][d])
+        k++;
+    if (k == 1 || width - d < 20) {
+        add_verbatim(r, lines[0], width);
+        return 1;
+    }
+    char desc[2048] = "";
+    size_t used = 0, at = byte_at_column(lines[0], d);
+    used += (size_t)snprintf(desc, sizeof desc, "%s", lines[0] + at);
+    for (int i = 1; i < k && used < sizeof desc; i++)
+        used += (size_t)snprintf(desc + used, sizeof desc - used, " %s", lines[i] + d);
+    hanging h = { r, lines[0], at, d, 0 };
+    sw_wrap_paragraph(desc, width - d, hanging_line, &h);
+    return k;
+}
+
 const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
 {
     const sw_lesson_page *pg = &r->lesson.pages[r->page];
@@ -360,14 +424,18 @@ const sw_side *sw_runner_side(sw_runner *r, sw_app *a, int cols)
     add_line(r, SW_SIDE_TEXT, "");
     for (int b = 0; b < pg->nblocks; b++) {
         if (pg->blocks[b].verbatim) {
-            const char *s = pg->blocks[b].text;
-            while (*s) {
+            /* the block's lines (each indented two), then added: as written,
+             * or in the reading mode a definition list re-flowed */
+            char (*lines)[SW_RUNNER_COLS] = r->block;
+            int n = 0;
+            for (const char *s = pg->blocks[b].text; *s && n < SW_RUNNER_LINES;) {
                 const char *e = strchr(s, '\n');
                 size_t len = e ? (size_t)(e - s) : strlen(s);
-                snprintf(buf, sizeof buf, "  %.*s", (int)(len < 300 ? len : 300), s);
-                add_verbatim(r, buf, width - 1);
+                snprintf(lines[n++], SW_RUNNER_COLS, "  %.*s", (int)(len < 300 ? len : 300), s);
                 s += len + (e ? 1 : 0);
             }
+            for (int i = 0; i < n;)
+                i += r->wide ? add_definition(r, lines + i, n - i, width - 1) : (add_verbatim(r, lines[i], width - 1), 1);
         } else {
             add_wrapped(r, SW_SIDE_TEXT, pg->blocks[b].text, width - 1);
         }

@@ -30,6 +30,7 @@ typedef struct sw_runner {
     int wide;                  /* 1: the text takes the whole width (o: the reading mode) */
     int step;                  /* lines Up and Down move (the composer sets it; 0: 3) */
     char text[SW_RUNNER_LINES][SW_RUNNER_COLS];
+    char block[SW_RUNNER_LINES][SW_RUNNER_COLS]; /* scratch: a verbatim block's lines */
     const char *lines[SW_RUNNER_LINES];
     sw_side_kind kinds[SW_RUNNER_LINES];
     sw_side side;

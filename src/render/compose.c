@@ -14,6 +14,7 @@
 
 #include "render/decor.h"
 #include "render/gap.h"
+#include "render/legend.h"
 #include "render/stages.h"
 #include "render/text.h"
 #include "stepwise/stepwise.h"
@@ -171,6 +172,9 @@ static int lanes_readable(const sw_app *a, int rows, int cols)
 static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
     int n = a->nsims;
+    /* a row under the lanes for the legend of the first one's picture */
+    int legend = rows > n * LANE_MIN_ROWS;
+    rows -= legend;
     sw_view v = f->view;
     double vx = v.xmax - v.xmin, vy = v.ymax - v.ymin;
     int stack_h = rows / n, col_w = (cols - (n - 1)) / n;
@@ -215,6 +219,12 @@ static void draw_lanes(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
             for (int k = 0; k < rows; k++)
                 sw_screen_text(scr, row0 + k, c + w, 1, SW_STYLE_DIM, "|");
     }
+    if (legend && f->canvas.cols) {
+        sw_field fl[16];
+        const sw_canvas *cv[SW_APP_SIMS] = { &f->canvas, &f->lanes[0], &f->lanes[1] };
+        int nf = sw_scene_legend(cv, n, a, fl, 16);
+        fit_line(scr, row0 + rows, col0, cols, SW_STYLE_DIM, fl, nf);
+    }
 }
 
 /* ---- the phase and region views ------------------------------------------------ */
@@ -230,6 +240,33 @@ static int legend_rows(const sw_field *must, int nmust, int width)
     return dropped ? 2 : 1;
 }
 
+/* The scene drawn on f->canvas (rows × cols) onto the screen, with its
+ * legend on its last row or two (two where one would drop a part and the
+ * picture has rows to spare): over the picture's own foot where the
+ * legend's cells there are blank (most pictures: the picture keeps its
+ * scale), else under a picture drawn that much shorter. */
+static void scene_with_legend(sw_frame *f, sw_app *a, sw_screen *scr, int rows, int cols)
+{
+    const sw_canvas *cv[1] = { &f->canvas };
+    sw_field fl[16];
+    char lines[2][SW_TEXT_LINE];
+    int n = rows > SCENE_MIN_ROWS / 2 ? sw_scene_legend(cv, 1, a, fl, 16) : 0;
+    int lr = n == 0 ? 0 : rows > SCENE_MIN_ROWS && legend_rows(fl, n, cols) == 2 ? 2 : 1;
+    int used = lr ? sw_text_fit_rows(lines, lr, cols, fl, n, "  ", NULL) : 0;
+    int blank = 1;
+    for (int i = 0; i < used; i++)
+        for (int k = 0; k < sw_text_cells(lines[i]) && blank; k++)
+            blank = sw_canvas_codepoint(&f->canvas, k, rows - used + i) == ' ';
+    if (!blank) {
+        draw_sims(f, a, &f->canvas, cols, rows - used, 0, a->nsims - 1);
+        n = sw_scene_legend(cv, 1, a, fl, 16);
+        used = sw_text_fit_rows(lines, used, cols, fl, n, "  ", NULL);
+    }
+    sw_screen_blit(scr, &f->canvas, 0, 0);
+    for (int i = 0; i < used; i++)
+        sw_screen_text(scr, rows - used + i, 0, cols, SW_STYLE_DIM, lines[i]);
+}
+
 static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
 {
     char err[SW_ERRLEN], buf[SW_TEXT_LINE], brief[SW_TEXT_LINE];
@@ -237,11 +274,12 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
     sw_phase_names(a->phase_coord, &q, &qu, &v, &vu);
     sw_field fl[12];
     int n = 0;
-    snprintf(buf, sizeof buf, "phase: %s (%s) against %s (%s)", q, qu, v, vu);
-    snprintf(brief, sizeof brief, "%s (%s) vs %s (%s)", q, qu, v, vu);
+    /* which axis is which in words: the coordinate across, its rate up */
+    snprintf(buf, sizeof buf, "phase: %s (%s) across, %s (%s) up", q, qu, v, vu);
+    snprintf(brief, sizeof brief, "%s across, %s up", q, v);
     field(fl, &n, 10, buf, brief);
     snprintf(buf, sizeof buf, "of particle %d", a->phase_particle + 1);
-    snprintf(brief, sizeof brief, "#%d", a->phase_particle + 1);
+    snprintf(brief, sizeof brief, "particle %d", a->phase_particle + 1);
     field(fl, &n, 6, buf, brief);
     if (rows < 6)
         return;
@@ -264,6 +302,8 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
                  a->sims[i].blown ? " (blown)" : "");
         field(lg, &nl, 12 - i, buf, brief);
     }
+    /* the keys in words, on a second row when the first has no room */
+    field(lg, &nl, 2, "V coordinate  < > particle", "V: axis  < >: particle");
     int nmust = nl, lrows = legend_rows(lg, nmust, cols);
     sw_canvas *c = &f->canvas;
     int crows = rows - 1 - lrows;
@@ -283,7 +323,6 @@ static void draw_phase(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col
         snprintf(buf, sizeof buf, "%d left the frame (z: zoom out)", left);
         field(lg, &nl, 7, buf, "z: zoom out");
     }
-    field(lg, &nl, 2, "V coordinate  < > particle", "V < >");
     char lines[2][SW_TEXT_LINE];
     int used = sw_text_fit_rows(lines, lrows, cols, lg, nl, "  ", NULL);
     for (int i = 0; i < used; i++)
@@ -294,7 +333,7 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
 {
     char err[SW_ERRLEN], buf[SW_TEXT_LINE], why[SW_ERRLEN];
     const sw_integrator *m = a->sims[0].method;
-    if (rows < 7)
+    if (rows < 8)
         return;
     sw_field fl[12];
     int n = 0;
@@ -310,8 +349,15 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
         snprintf(buf, sizeof buf, "dt=%g", a->dt);
         field(fl, &n, 8, buf, NULL);
     }
-    field(fl, &n, 6, "(shaded: growth per step <= 1; its edge a line)", "(shaded: stable)");
-    fit_line(scr, row0, col0, cols, SW_STYLE_TITLE, fl, n);
+    field(fl, &n, 9, "(shaded: growth per step <= 1; its edge a line)", "(shaded: stable)");
+    /* the title and the marks' legend on two rows where one drops either */
+    char lines[2][SW_TEXT_LINE];
+    int trows = legend_rows(fl, n, cols);
+    int used = sw_text_fit_rows(lines, trows, cols, fl, n, "  ", NULL);
+    for (int i = 0; i < used; i++)
+        sw_screen_text(scr, row0 + i, col0, cols, SW_STYLE_TITLE, lines[i]);
+    row0 += trows - 1;
+    rows -= trows - 1;
     /* under the picture: the real axis's numbers, the worst mark against
      * its edge along its ray, and the legend */
     int crows = rows - 4;
@@ -351,8 +397,8 @@ static void draw_region(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int co
     snprintf(brief, sizeof brief, "%s+-%.2g fixed", f->region.beyond > 0 ? "" : "scale ", f->region.fit_half * a->zoom);
     field(fl, &n, 8, buf, brief);
     if (f->region.beyond > 0) {
-        snprintf(buf, sizeof buf, "arrows: marks past the edge, to %.3g", f->region.beyond);
-        snprintf(brief, sizeof brief, "arrows: %.3g", f->region.beyond);
+        snprintf(buf, sizeof buf, "< > ^ v: marks past the edge, to %.3g", f->region.beyond);
+        snprintf(brief, sizeof brief, "<>^v past edge: %.3g", f->region.beyond);
         field(fl, &n, 9, buf, brief); /* (before the scale, which the numbers under the picture show too) */
     }
     field(fl, &n, 6, "+/- move the marks", "+/- dt");
@@ -622,8 +668,9 @@ void sw_frame_compose(sw_frame *f, sw_app *a, const sw_side *side, sw_screen *sc
     else if (a->compare && a->lanes && a->nsims > 1 && lanes_readable(a, view_rows, pic_cols))
         draw_lanes(f, a, scr, 0, 0, view_rows, pic_cols);
     else {
+        /* the scene, and at its foot what each glyph drawn is (render/legend.c) */
         draw_sims(f, a, &f->canvas, pic_cols, view_rows, 0, a->nsims - 1);
-        sw_screen_blit(scr, &f->canvas, 0, 0);
+        scene_with_legend(f, a, scr, view_rows, pic_cols);
         if (a->sims[0].blown)
             blown_banner(scr, &a->sims[0], 0, 0, pic_cols, view_rows);
     }

@@ -126,7 +126,8 @@ void sw_draw_graph(sw_frame *f, sw_app *a, sw_screen *scr, int row, int col, int
     if (off >= 0) {
         snprintf(title[3].full, sizeof title[3].full, "%c runs past the %s, to %.3g", (char)sim_glyph[off],
                  far > 0 ? "top" : "bottom", far);
-        snprintf(title[3].brief, sizeof title[3].brief, "%c %s%.3g", (char)sim_glyph[off], far > 0 ? "^" : "v", far);
+        snprintf(title[3].brief, sizeof title[3].brief, "%c off %s: %.3g", (char)sim_glyph[off],
+                 far > 0 ? "top" : "foot", far);
     }
     snprintf(title[0].full, sizeof title[0].full, "%s", has_energy ? "energy drift (%)" : "error");
     snprintf(title[1].full, sizeof title[1].full, "against time t (s)");
@@ -285,7 +286,8 @@ static int help_lines(int width, int in_lesson, char (*buf)[SW_TEXT_LINE], const
               "forces' straight-line fit near the state) times dt; 'of limit': the largest the method survives" },
         { "[###.......]", "dt as a share of that limit, one # per tenth: full at the limit" },
         { "", "growth x.../step: the largest factor by which one step scales any motion, a bound, often the "
-              "slowest motion's (1: neutral, below: decays, above: GROWS, or grows slowly: too slowly to see in a run); "
+              "slowest motion's (1: neutral, below: decays, above: GROWS; grows or decays slowly: too little to see in a "
+              "run); "
               "wider: which mode, and the fastest's" },
         { "ev step", "events (a bounce, a crossing) stepped over; ev loc: located inside the step (x toggles)" },
         { "<  >  ^  v", "a particle past the picture's edge, on that side; the number beside the arrow (<1.42, "

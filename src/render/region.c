@@ -261,6 +261,9 @@ static void axes(const sw_region *r, sw_canvas *c, taken *t, char *ticks, size_t
                 break;
         }
     }
+    /* (first, before the positive side's numbers it may displace) the numbers' axis named at their row's end too: the picture's own
+     * "Re" is left out where the shading fills its place */
+    tick_label(ticks, tcols, tcols - 3, "Re");
     int n = 0;
     if (have_origin)
         tick_label(ticks, tcols, oc, "0");
@@ -445,12 +448,12 @@ int sw_region_draw(sw_region *r, sw_canvas *c, sw_app *a, double *worst, int *ou
         /* the meter's "x1 neutral" and this view say the same thing */
         axes(r, c, &t, r->ticks, sizeof r->ticks);
         if (a->spec.growing)
-            snprintf(why, whylen, "nothing to mark: %s's %d mode%s grow%s by the physics (Re λ > 0), not by the "
+            snprintf(why, whylen, "nothing to mark: %s's %d mode%s grow%s by the physics (an eigenvalue λ with Re λ > 0), not by the "
                      "method", a->scene->name, a->spec.growing, a->spec.growing == 1 ? "" : "s",
                      a->spec.growing == 1 ? "s" : "");
         else
-            snprintf(why, whylen, "no marks: every mode of %s has λ = 0 here, free motion under a constant "
-                     "force, which every method carries at x1 per step: neutral", a->scene->name);
+            snprintf(why, whylen, "no marks: every mode of %s has eigenvalue λ = 0 here, free motion under a "
+                     "constant force, which every method carries at ×1 per step: neutral", a->scene->name);
         return 0;
     }
     /* the marks: each mode's λ·Δt and μ·Δt, glyph by the mode's own growth */

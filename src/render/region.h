@@ -88,7 +88,7 @@ void sw_region_free(sw_region *r);
  * the first unstable point (to 1e-9 relative); 0 when unstable at once,
  * INFINITY when stable out to 100 (an implicit method). */
 double sw_region_edge_on_ray(sw_truth_work *w, const sw_integrator *m, int order, double ux, double uy);
-/* The line under the picture, width columns: "in ::::|--X-- out 5x", a
+/* The line under the picture, width columns: "in ::::|--X-- out 5×edge", a
  * mark against its ray's edge on a log scale, the edge in the middle and
  * each halving of the ratio (of Δt) a fixed notch; X when the mark grows,
  * '*' when not; the ratio said at the end ("always out" for an edge at

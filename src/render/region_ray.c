@@ -63,7 +63,7 @@ double sw_region_edge_on_ray(sw_truth_work *w, const sw_integrator *m, int order
 
 void sw_region_gauge(char *out, size_t len, int width, double ratio, int grows)
 {
-    /* "in ::::::|----- out  5.00x": the edge in the middle of the bar, each
+    /* "in ::::::|----- out 5×edge": the edge in the middle of the bar, each
      * factor 2 of the ratio `notch` columns, the inside shaded as the
      * picture shades it */
     char tail[32];
@@ -72,10 +72,10 @@ void sw_region_gauge(char *out, size_t len, int width, double ratio, int grows)
         snprintf(out, len, "%s", ratio == 0 ? "its ray has no edge: always in" : "its ray's edge is 0: always out");
         return;
     }
-    snprintf(tail, sizeof tail, " %.3gx", ratio);
+    snprintf(tail, sizeof tail, " %.3g×edge", ratio); /* (the mark's distance: that many times the edge's) */
     /* the tail's room is fixed, so that the bar (and its edge) stays put
      * while the ratio's figures change */
-    int bar = width - 3 - 4 - 11;
+    int bar = width - 3 - 4 - 14;
     if (bar > 41)
         bar = 41;
     if (bar < 9 || len < (size_t)width + 1) {

@@ -213,12 +213,44 @@ static int stage_numbers(sw_canvas *c, const arrow *ar, int n, int first_now, ch
 }
 
 /* What the formula's letters are, under it: every script writes its step
- * in y, f, h and k (the lesson that first shows the view has not named
- * them yet). Beside the picture one per line, below it on one line. */
-static const char *const formula_key[] = { "y: the state", "f: its rate, y' = f(t, y)", "h: the step, dt",
-                                           "k: a slope, f at a point" };
-#define FORMULA_KEYS ((int)(sizeof formula_key / sizeof formula_key[0]))
-#define FORMULA_KEY_LINE "y state  f its rate  h = dt  k a slope"
+ * in y, f, h and k, or a particle's x, v and a (the lesson that first
+ * shows the view has not named them yet); '>' marks the line drawn now.
+ * Beside the picture one per line; below it, in short (next). */
+#define FORMULA_KEYS 6
+static const char *const formula_key[2][FORMULA_KEYS] = {
+    { "> the line drawn now", "y: the state", "f: its rate, y' = f(t, y)", "k: a slope, f at a point",
+      "h: the step, dt", "t: the time" },
+    { "> the line drawn now", "x: the position", "v: the velocity", "a: the acceleration, a(x, v)",
+      "h: the step, dt", "t: the time" },
+};
+/* Which key a script's formula needs: 1 when it writes a particle's x, v, a. */
+static int key_of(const sw_stage_script *sc)
+{
+    for (int i = 0; i < SW_STAGE_LINES && sc->lines[i]; i++)
+        if (strncmp(sc->lines[i], "x = ", 4) == 0 || strncmp(sc->lines[i], "v = ", 4) == 0)
+            return 1;
+    return 0;
+}
+
+/* The key in short, a field each (a narrow picture wraps it between them). */
+static const char *const formula_key_short[2][FORMULA_KEYS] = {
+    { "> now", "y state", "f its rate", "k a slope", "h = dt", "t time" },
+    { "> now", "x position", "v velocity", "a acceleration", "h = dt", "t time" },
+};
+#define KEY_ROWS 3
+
+/* The short key's lines for a width; returns how many. */
+static int key_lines(const sw_stage_script *sc, int width, char (*lines)[SW_TEXT_LINE])
+{
+    sw_field f[FORMULA_KEYS];
+    for (int i = 0; i < FORMULA_KEYS; i++) {
+        snprintf(f[i].full, sizeof f[i].full, "%s", formula_key_short[key_of(sc)][i]);
+        f[i].brief[0] = '\0';
+        f[i].prio = FORMULA_KEYS - i;
+    }
+    return sw_text_fit_rows(lines, KEY_ROWS, width, f, FORMULA_KEYS, "  ", NULL);
+}
+
 
 /* The formula, the current line lit (a '>' in front where colour is not
  * seen), and its key under it. */
@@ -235,12 +267,17 @@ static int draw_formula(sw_screen *scr, const sw_stage_script *sc, int lit, int 
         else
             used += sw_screen_wrapped(scr, row + used, col, width, max - used, style, line);
     }
+    int k = key_of(sc);
     if (beside && used + 1 + FORMULA_KEYS <= max) {
         used++;
         for (int i = 0; i < FORMULA_KEYS; i++)
-            used += sw_screen_text(scr, row + used, col + 2, width - 2, SW_STYLE_DIM, formula_key[i]) > 0;
-    } else if (!beside && used < max)
-        used += sw_screen_wrapped(scr, row + used, col, width, max - used, SW_STYLE_DIM, FORMULA_KEY_LINE);
+            used += sw_screen_text(scr, row + used, col + 2, width - 2, SW_STYLE_DIM, formula_key[k][i]) > 0;
+    } else if (!beside && used < max) {
+        char lines[KEY_ROWS][SW_TEXT_LINE];
+        int n = key_lines(sc, width, lines);
+        for (int i = 0; i < n && used < max; i++)
+            used += sw_screen_text(scr, row + used, col, width, SW_STYLE_DIM, lines[i]) > 0;
+    }
     return used;
 }
 
@@ -250,7 +287,7 @@ static int formula_width(const sw_stage_script *sc)
     for (int i = 0; i < SW_STAGE_LINES && sc->lines[i]; i++)
         w = w > (int)strlen(sc->lines[i]) + 2 ? w : (int)strlen(sc->lines[i]) + 2;
     for (int i = 0; i < FORMULA_KEYS; i++)
-        w = w > (int)strlen(formula_key[i]) + 2 ? w : (int)strlen(formula_key[i]) + 2;
+        w = w > (int)strlen(formula_key[key_of(sc)][i]) + 2 ? w : (int)strlen(formula_key[key_of(sc)][i]) + 2;
     return w;
 }
 
@@ -262,7 +299,8 @@ static int formula_rows(const sw_stage_script *sc, int width)
         snprintf(line, sizeof line, "> %s", sc->lines[i]);
         n += sw_text_wrap(line, width, lines, 4);
     }
-    return n + sw_text_wrap(FORMULA_KEY_LINE, width, lines, 4);
+    char keys[KEY_ROWS][SW_TEXT_LINE];
+    return n + key_lines(sc, width, keys);
 }
 
 int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, int rows, int cols)
@@ -286,6 +324,8 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     int crows = rows - 1 - frows; /* the caption is on the message line (app/stages.c) */
     if (crows < 4)
         crows = 0; /* too short for a picture: the formula only */
+    int legend = crows > 5; /* the picture's last row says what its glyphs are */
+    crows -= legend;
 
     /* the arrows of every view (the zoom holds the whole step), drawn up to the one shown */
     arrow ar[2 * SW_STAGE_VIEWS];
@@ -344,6 +384,16 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
         arrow_label(c, &truth);
         drawn = upto[shown];
         sw_screen_blit(scr, c, row0 + 1, col0);
+        if (legend) {
+            static const sw_field key[] = {
+                { "o the step's start", "o start", 9 },
+                { "' the true path", "' true", 8 },
+                { "-\\|/→ a slope", "→ slope", 7 },
+                { ". earlier stages", ". earlier", 6 },
+            };
+            if (sw_text_fit(buf, sizeof buf, ccols, key, 4, "  ") > 0)
+                sw_screen_text(scr, row0 + 1 + crows, col0, ccols, SW_STYLE_DIM, buf);
+        }
     }
     /* the title: method, which stage, the keys */
     sw_field fl[6];
@@ -355,10 +405,10 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     snprintf(fl[n].brief, sizeof fl[n].brief, "%d/%d %s", shown, sc->nviews, cur->label);
     fl[n++].prio = 9;
     snprintf(fl[n].full, sizeof fl[n].full, "zoomed on the step");
-    fl[n].brief[0] = '\0';
+    snprintf(fl[n].brief, sizeof fl[n].brief, "zoomed");
     fl[n++].prio = 3;
     snprintf(fl[n].full, sizeof fl[n].full, "k %s  Esc close", shown < sc->nviews ? "next" : "closes");
-    snprintf(fl[n].brief, sizeof fl[n].brief, "k Esc");
+    snprintf(fl[n].brief, sizeof fl[n].brief, "k %s", shown < sc->nviews ? "next" : "closes");
     fl[n++].prio = 5;
     if (under[0]) { /* stage points drawn over by a later one, said */
         snprintf(fl[n].full, sizeof fl[n].full, "(%.60s: one cell)", under);
@@ -371,6 +421,6 @@ int sw_draw_stages(sw_frame *f, sw_app *a, sw_screen *scr, int row0, int col0, i
     if (side)
         draw_formula(scr, sc, cur->line, cur->line, row0 + 1, col0 + ccols + 2, fw - 1, rows - 1, 1);
     else
-        draw_formula(scr, sc, cur->line, cur->line, row0 + 1 + crows, col0, cols, frows, 0);
+        draw_formula(scr, sc, cur->line, cur->line, row0 + 1 + crows + legend, col0, cols, frows, 0);
     return drawn;
 }

@@ -279,7 +279,7 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     if (foot)
         sw_screen_text(scr, row + height - 1, c0, inner, SW_STYLE_DIM, line);
     /* the legend: every method's marker and name (brief names before a third row) */
-    sw_field lg[SW_BENCH_MAX_METHODS];
+    sw_field lg[SW_BENCH_MAX_METHODS + 1];
     int nl = 0;
     for (int i = 0; i < r->nseries && nl < SW_BENCH_MAX_METHODS; i++, nl++) {
         memset(&lg[nl], 0, sizeof lg[nl]);
@@ -291,6 +291,11 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
             snprintf(lg[nl].brief, sizeof lg[nl].brief, "%c=%.40s", sw_bench_marker(r->series[i].method), name);
         lg[nl].prio = 10;
     }
+    /* and the dots drawn between a method's points */
+    memset(&lg[nl], 0, sizeof lg[nl]);
+    snprintf(lg[nl].full, sizeof lg[nl].full, ". joins a method's points");
+    snprintf(lg[nl].brief, sizeof lg[nl].brief, ". joins them");
+    lg[nl++].prio = 9;
     char legend[4][SW_TEXT_LINE];
     int lrows = 1, dropped = 1;
     while (lrows < 4 && (sw_text_fit_rows(legend, lrows, inner, lg, nl, "  ", &dropped), dropped))

@@ -10,7 +10,8 @@ tmux_start
 
 # The scene rows of a capture: everything above the status block (whose
 # first line starts with the main run's glyph and the scene's name).
-scene_rows() { screen | awk -v s="$1" '$0 ~ "^o " s "  " { exit } { print }'; }
+# (the row just above it is the picture's legend, "o euler  .:- crowded": left out)
+scene_rows() { screen | awk -v s="$1" '$0 ~ "^o " s "  " { exit } NR > 1 { print prev } { prev = $0 }'; }
 
 # The horizontal extent (in columns) of the characters in set $1 on stdin.
 extent() {

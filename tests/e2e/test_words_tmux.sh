@@ -9,7 +9,7 @@
 
 # play bounce: the region view and the meter agree (free motion maps by 1).
 out=$("$STEPWISE" play bounce --view region --ascii --frames 5) || fail "play bounce --view region failed"
-echo "$out" | grep -q 'x1 per step: neutral' || fail "the region view does not say x1 per step: $out"
+echo "$out" | grep -q '×1 per step: neutral' || fail "the region view does not say ×1 per step: $out"
 echo "$out" | grep -Eq '0 modes|x0\.000000' && fail "the region view says 0 modes or x0: $out"
 echo "$out" | grep -q 'growth ×1\.000000 per step: neutral' || fail "the meter does not say neutral: $out"
 

@@ -480,10 +480,10 @@ const claim sw_claims_a[] = {
     { L5, "The marks are Δt·λ = -0.025 ± {0.5}i", l5_mark_im, ROUNDED, 0, R_ROUND, NULL },
     { L5, "|1 + Δt·λ| = {1.095} per step", l5_growth, ROUNDED, 0, "the meter's growth per step, to the text's digits", NULL },
     { L5, "once Δt is below c/k = {0.001}", l5_light_limit, REL, 1e-6, "Euler's limit from the one-step map on the damped spring is c/k", NULL },
-    { L5, "out the mark is: {5}x the edge's distance", l5_ray_ratio0, REL, 1e-6, "the edge is found by bisection to 1e-9 relative", NULL },
-    { L5, "the edge's distance at Δt = {0.005}.", l5_page_dt, EXACT, 0, "the page's own Δt", NULL },
-    { L5, "one notch left: {2.5}x, 1.25x", l5_ray_ratio1, REL, 1e-6, "as above", NULL },
-    { L5, "one notch left: 2.5x, {1.25}x", l5_ray_ratio2, REL, 1e-6, "as above", NULL },
-    { L5, "then {0.625}x, inside.", l5_ray_ratio3, REL, 1e-6, "as above", NULL },
+    { L5, "out the mark is: {5}×edge, five times", l5_ray_ratio0, REL, 1e-6, "the edge is found by bisection to 1e-9 relative", NULL },
+    { L5, "the edge's distance, at Δt = {0.005}.", l5_page_dt, EXACT, 0, "the page's own Δt", NULL },
+    { L5, "one notch left: {2.5}×edge, 1.25×edge", l5_ray_ratio1, REL, 1e-6, "as above", NULL },
+    { L5, "one notch left: 2.5×edge, {1.25}×edge", l5_ray_ratio2, REL, 1e-6, "as above", NULL },
+    { L5, "then {0.625}×edge, inside.", l5_ray_ratio3, REL, 1e-6, "as above", NULL },
 };
 const size_t sw_claims_a_n = sizeof sw_claims_a / sizeof sw_claims_a[0];

@@ -488,7 +488,7 @@ const claim sw_claims_b[] = {
     { L6, "Δt = {0.04} they are at ±4i", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "they are at ±{4}i, outside the region", l6_mark_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "outside the region, and the meter says GROWS", l6_outside_004, ATLEAST, 0, "outside: RK4's growth at ωΔt = 4 is above one", one_plus },
-    { L6, "the line under the numbers says {1.41}x the edge's distance", l6_ray_ratio_004, ROUNDED, 0, R_ROUND, NULL },
+    { L6, "the line under the numbers says {1.41}×edge", l6_ray_ratio_004, ROUNDED, 0, R_ROUND, NULL },
     { L6, "@hint Press + three times: 0.01, 0.02, {0.04}.", l6_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L6, "ωΔt would be {28}", l6_twenty_eight, EXACT, 0, R_MATH, NULL },
     { L6, "over one turn (t = {2π})", l6_report_time, REL, 1e-12, R_COUNT, NULL },

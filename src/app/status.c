@@ -52,7 +52,12 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "evals %ld", sw_sim_evals(s));
     }
     double drift = sw_sim_energy_drift(s);
-    if (isfinite(drift) && (x = add(f, &n, max, 7))) {
+    double drift_error = sw_sim_energy_drift_error(s);
+    if (isfinite(drift) && drift_error > 0 && (x = add(f, &n, max, 7))) {
+        /* summed approximately (a large galaxy's tree): say so, and how far off it can be */
+        snprintf(x->full, sizeof x->full, "energy ≈%+.3g%% ±%.2g%%", drift, drift_error);
+        snprintf(x->brief, sizeof x->brief, "E≈%+.2g%%", drift);
+    } else if (isfinite(drift) && (x = add(f, &n, max, 7))) {
         snprintf(x->full, sizeof x->full, "energy %+.3g%%", drift);
         snprintf(x->brief, sizeof x->brief, "E%+.3g%%", drift);
     }

@@ -11,6 +11,7 @@
 
 #include <math.h>
 
+#include "engine/particles_solve.h"
 #include "stepwise/stepwise.h"
 
 /* State components × passes one call may spend: 2^17, about a millisecond
@@ -26,6 +27,15 @@ static long passes_per_call(const sw_system *sys)
 
 int sw_app_meter_pending(const sw_app *a) { return a->spec_job.active; }
 
+long sw_app_meter_out_of_reach(const sw_app *a)
+{
+    const sw_system *sys = &a->truth.sys;
+    if (!a->have_truth || sys->kind != SW_SYS_PARTICLES)
+        return 0;
+    long pairs = sw_particles_pair_count(&sys->particles);
+    return pairs > SW_PARTICLES_PAIRS_MAX ? pairs : 0;
+}
+
 void sw_app_meter_refresh(sw_app *a)
 {
     const sw_sim *s = &a->sims[0];
@@ -35,7 +45,7 @@ void sw_app_meter_refresh(sw_app *a)
     if (j->active && s->t < j->t)
         j->active = 0; /* a reset: the job's state is gone */
     if (!j->active) {
-        if (!due)
+        if (!due || sw_app_meter_out_of_reach(a)) /* (no Jacobian to take one from: said on the meter's line) */
             return;
         if (!sw_truth_spectrum_sliced(&a->truth.sys, METER_SLICE)) {
             a->have_spec = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, s->t, s->sys.y, &a->spec) == 0;

@@ -262,7 +262,7 @@ END_TEST
  * at θ = 0.3, 0.5, 0.7: the galaxies' bound 0.0038, 0.014, 0.065 of |V|
  * (0.042-0.13·θ²) and their error 0.00022, 0.00057, 0.0010 of |V|; the
  * cloud's bound 0.013, 0.064, 0.25 of |V| (up to 0.50·θ²), its error
- * 0.0013, 0.0037, 0.0077. The bound is 10-30 times the error: it takes
+ * 0.0013, 0.0037, 0.0077. The bound is 10 to 63 times the error: it takes
  * every body of a cell at the cell's far corner and the Hessian at its
  * largest, where the errors are those of the cell's quadrupole. As θ → 0 every cell is opened but those of one body or
  * of a few a hair apart: the bound is nil (< 1e-15 of |V|; 6e-32 of it

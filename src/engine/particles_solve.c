@@ -120,7 +120,12 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
     struct sw_particles_solver *s = p->solver;
     int far;
     s->factored = 0;
-    count_pairs(p, &far);
+    long pairs = count_pairs(p, &far);
+    if (pairs > SW_PARTICLES_PAIRS_MAX) {
+        snprintf(err, errlen, "the implicit solve needs the forces' Jacobian, and here they join %.2g pairs, more "
+                 "than the %.2g it may hold", (double)pairs, (double)SW_PARTICLES_PAIRS_MAX);
+        return SW_EINVAL;
+    }
     if (reserve_pairs(p) != SW_OK) {
         snprintf(err, errlen, "out of memory for the implicit solve's force blocks");
         return SW_ENOMEM;

@@ -302,8 +302,7 @@ END_TEST
 
 /* The potential's pass is kept with its positions: an energy after an
  * evaluation elsewhere is a fresh pass's, bit for bit, and one after an
- * evaluation at the same positions reuses it (the same bits again). Up to
- * 4002 bodies the energy is the direct sum's, bit for bit, with bound 0. */
+ * evaluation at the same positions reuses it (the same bits again). */
 START_TEST(energy_cache_same_bits)
 {
     int n = galaxies_of(2500);

@@ -33,14 +33,17 @@ static double *accelerations(int n, const double *xy, const double *m, double so
     return a;
 }
 
-/* The bodies: 0, the scene's two galaxies of 2000 stars (4002 bodies);
- * 1, 4000 equal bodies uniform in the unit square (the LCG of
+/* The bodies: 0, the scene's two galaxies of `size` stars each (2size + 2
+ * bodies; above 2000 stars at theta 0.5, which the scene needs there);
+ * 1, `size` equal bodies uniform in the unit square (the LCG of
  * tests/check_tree.c). Returns n; xy and m malloc'd. */
-static int bodies(int which, double **xy, double **m)
+static int bodies_of(int which, int size, double **xy, double **m)
 {
     if (which == 0) {
         sw_sim s;
-        cl_sim_init(&s, "galaxy", "n=2000 discs=2", "verlet", 0.01);
+        char sets[64];
+        snprintf(sets, sizeof sets, "n=%d discs=2%s", size, size > 2000 ? " theta=0.5" : "");
+        cl_sim_init(&s, "galaxy", sets, "verlet", 0.01);
         int n = s.sys.particles.n;
         *xy = malloc((size_t)2 * n * sizeof **xy), *m = malloc((size_t)n * sizeof **m);
         ck_assert(*xy && *m);
@@ -49,7 +52,7 @@ static int bodies(int which, double **xy, double **m)
         sw_sim_free(&s);
         return n;
     }
-    int n = 4000;
+    int n = size;
     *xy = malloc((size_t)2 * n * sizeof **xy), *m = malloc((size_t)n * sizeof **m);
     ck_assert(*xy && *m);
     uint64_t z = 12345;
@@ -61,6 +64,9 @@ static int bodies(int which, double **xy, double **m)
         (*m)[i] = 1.0 / n;
     return n;
 }
+
+/* 0: two galaxies of 2000 stars (4002 bodies); 1: a cloud of 4000. */
+static int bodies(int which, double **xy, double **m) { return bodies_of(which, which == 0 ? 2000 : 4000, xy, m); }
 
 /* Relative RMS error of the tree's accelerations, or (net = 1) its net
  * force |Σ m a| / Σ |m a|. */
@@ -107,31 +113,10 @@ static double tiny_theta(void) { return tree_figure(1, 1e-6, 0); }
  * 5000): bound (ratio = 0) or bound over the actual error (ratio = 1). */
 static double energy_figure(int which, double theta, int ratio)
 {
-    sw_sim s;
     sw_particles d, t;
     char err[SW_ERRLEN];
     double *xy, *m, soft = which == 0 ? 0.1 : 0.01;
-    int n;
-    if (which == 0) {
-        cl_sim_init(&s, "galaxy", "n=2500 discs=2 theta=0.5", "verlet", 0.01);
-        n = s.sys.particles.n;
-        xy = malloc((size_t)2 * n * sizeof *xy), m = malloc((size_t)n * sizeof *m);
-        ck_assert(xy && m);
-        memcpy(xy, s.sys.y, (size_t)2 * n * sizeof *xy);
-        memcpy(m, s.sys.particles.mass, (size_t)n * sizeof *m);
-        sw_sim_free(&s);
-    } else {
-        n = 5000;
-        xy = malloc((size_t)2 * n * sizeof *xy), m = malloc((size_t)n * sizeof *m);
-        ck_assert(xy && m);
-        uint64_t z = 12345;
-        for (int i = 0; i < 2 * n; i++) {
-            z = z * 6364136223846793005ull + 1442695040888963407ull;
-            xy[i] = (double)(z >> 11) / 9007199254740992.0;
-        }
-        for (int i = 0; i < n; i++)
-            m[i] = 1.0 / n;
-    }
+    int n = bodies_of(which, which == 0 ? 2500 : 5000, &xy, &m);
     sw_particles *both[2] = { &d, &t };
     for (int k = 0; k < 2; k++) {
         ck_assert_int_eq(sw_particles_init(both[k], n, 1.0, err, sizeof err), SW_OK);

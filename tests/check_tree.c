@@ -323,6 +323,24 @@ START_TEST(energy_cache_same_bits)
 }
 END_TEST
 
+/* A state that is not finite (a run blowing up) above 4002 bodies: NaN
+ * forces and a NaN energy and bound at once, not the direct sum's NaNs
+ * after 5e9 pairs (at n = 1e5, some 17 s inside a frame). */
+START_TEST(blown_state_is_nan)
+{
+    int n = galaxies_of(2500);
+    sw_particles t;
+    cloud(&t, n, xy, mass, 0.1, 0.5);
+    t.y[2 * 17] = INFINITY;
+    t.ode.deriv(&t, 0.0, t.y, scratch);
+    for (int i = 2 * n; i < 4 * n; i++)
+        ck_assert(isnan(scratch[i]));
+    ck_assert(isnan(sw_particles_energy(&t, t.y)));
+    ck_assert(isnan(sw_particles_energy_error(&t, t.y)));
+    sw_particles_free(&t);
+}
+END_TEST
+
 Suite *make_tree_suite(void);
 Suite *make_tree_suite(void)
 {
@@ -335,6 +353,7 @@ Suite *make_tree_suite(void)
     tcase_add_test(tc, energy_and_jacobian_are_direct);
     tcase_add_test(tc, energy_within_bound);
     tcase_add_test(tc, energy_cache_same_bits);
+    tcase_add_test(tc, blown_state_is_nan);
     tcase_add_test(tc, no_allocation_and_deterministic);
     suite_add_tcase(s, tc);
     return s;

@@ -21,7 +21,10 @@
 
 static long passes_per_call(const sw_system *sys)
 {
-    long per = METER_SLICE / (2L * sys->n);
+    /* a pass's cost: the state's components, or the pairs' blocks where a
+     * force joins more pairs than there are particles (a galaxy: n²/2) */
+    long pairs = sys->kind == SW_SYS_PARTICLES ? sw_particles_pair_count(&sys->particles) : 0;
+    long per = METER_SLICE / (2L * (pairs > sys->n ? pairs : sys->n));
     return per < 1 ? 1 : per;
 }
 

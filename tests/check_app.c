@@ -296,7 +296,7 @@ END_TEST
  * energy is the tree's (5000 stars, 5001 bodies) says it is approximate
  * and how far off the drift can be: the sim's bound, as the line prints
  * it. Its meter says why it has no spectrum (12.5e6 pairs, past the
- * 2^23 a Jacobian may hold), and the app starts no job for it. */
+ * 2^21 it multiplies live), and the app starts no job for it. */
 START_TEST(approximate_energy_said)
 {
     sw_app a;

@@ -139,7 +139,7 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
             snprintf(x->brief, sizeof x->brief, "finding the stiffest mode");
         } else if (sw_app_meter_out_of_reach(a) && (x = add(f, &n, max, 8))) {
             snprintf(x->full, sizeof x->full, "stability: not measured: every pair of bodies is coupled, %.2g "
-                     "pairs, too many for a Jacobian", (double)sw_app_meter_out_of_reach(a));
+                     "pairs, too many to take its spectrum live", (double)sw_app_meter_out_of_reach(a));
             snprintf(x->brief, sizeof x->brief, "stability: not measured (%.2g pairs)",
                      (double)sw_app_meter_out_of_reach(a));
         }

@@ -97,7 +97,7 @@ void bench_frame_cost(int vortex_n, double target);
 void bench_heavy_views(int quick);
 /* One heavy view alone, for a profiler or paired timings (bench_frame.c;
  * `bench_engine --frame-view`). */
-void bench_heavy_one(const char *scene, int n, int compare, int ghost, int lanes, int trails, double seconds,
+void bench_heavy_one(const char *scene, const char *set, int n, int compare, int ghost, int lanes, int trails, double seconds,
                      double dt);
 
 /* The largest |a[i] - b[i]| over n, a NaN difference taken as the largest

@@ -510,9 +510,12 @@ static int frame_view(const char *scene, const char *n_text, const char *view, c
     char *n_end, *end, *dt_end = "";
     long n = strtol(n_text, &n_end, 10);
     double seconds = strtod(seconds_text, &end), dt = dt_text ? strtod(dt_text, &dt_end) : 0;
+    char base[64];
+    snprintf(base, sizeof base, "%.*s", (int)strcspn(scene, ":"), scene);
     if (*n_end || *end || *dt_end || !(seconds > 0 && seconds <= 40) || n < 0 || n > 1000000 ||
-        !(dt_text == NULL || (dt >= 1e-9 && dt <= 1)) || !sw_scene_find(scene)) {
-        fprintf(stderr, "stepwise: --frame-view takes SCENE N VIEW SECONDS [DT]: a scene, n in [0, 1000000] "
+        !(dt_text == NULL || (dt >= 1e-9 && dt <= 1)) || !sw_scene_find(base)) {
+        fprintf(stderr, "stepwise: --frame-view takes SCENE[:NAME=VALUE] N VIEW SECONDS [DT]: a scene (and one more "
+                "parameter), n in [0, 1000000] "
                 "(0: the default), seconds in (0, 40] and a step in [1e-9, 1] (none: the scene's)\n");
         return 2;
     }
@@ -534,7 +537,11 @@ static int frame_view(const char *scene, const char *n_text, const char *view, c
             return 2;
         }
     }
-    bench_heavy_one(scene, (int)n, compare, ghost, lanes, trails, seconds, dt);
+    char name[64], *set = NULL;
+    snprintf(name, sizeof name, "%s", scene);
+    if ((set = strchr(name, ':')))
+        *set++ = '\0'; /* SCENE:NAME=VALUE, one more parameter */
+    bench_heavy_one(name, set, (int)n, compare, ghost, lanes, trails, seconds, dt);
     return 0;
 }
 
@@ -605,7 +612,7 @@ static int bench_engine_main(int argc, char **argv)
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
                     "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
-                    "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE N VIEW SECONDS [DT]\n",
+                    "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE[:NAME=VALUE] N VIEW SECONDS [DT]\n",
                     argv[i]);
             return 2;
         }

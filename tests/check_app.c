@@ -292,6 +292,37 @@ START_TEST(no_error_before_a_step)
 }
 END_TEST
 
+/* A galaxy summed exactly (n = 100) shows its energy plainly; one whose
+ * energy is the tree's (5000 stars, 5001 bodies) says it is approximate
+ * and how far off the drift can be: the sim's bound, as the line prints
+ * it. Its meter says why it has no spectrum (12.5e6 pairs, past the
+ * 2^21 it multiplies live), and the app starts no job for it. */
+START_TEST(approximate_energy_said)
+{
+    sw_app a;
+    char line[512], bound[32];
+    app_with(&a, "galaxy", "verlet", 0.01, NULL);
+    sw_app_status(&a, 0, line, sizeof line);
+    ck_assert_msg(strstr(line, "energy +0%") && !strstr(line, "≈"), "%s", line);
+    sw_app_free(&a);
+    app_with(&a, "galaxy", "verlet", 0.01, "n=5000 theta=0.5");
+    ck_assert_int_eq(sw_sim_step(&a.sims[0]), 0);
+    double e = sw_sim_energy_drift_error(&a.sims[0]);
+    ck_assert(e > 0);
+    snprintf(bound, sizeof bound, "±%.2g%%", e);
+    sw_app_status(&a, 0, line, sizeof line);
+    ck_assert_msg(strstr(line, "energy ≈") && strstr(line, bound), "%s (bound %s)", line, bound);
+    ck_assert_int_eq(sw_app_meter_out_of_reach(&a), 5001L * 5000 / 2);
+    sw_field f[8];
+    int warn, n = sw_app_meter_fields(&a, f, 8, &warn);
+    ck_assert_int_eq(n, 1);
+    ck_assert_msg(strstr(f[0].full, "not measured") && strstr(f[0].full, "1.3e+07 pairs"), "%s", f[0].full);
+    sw_app_meter_refresh(&a);
+    ck_assert(!sw_app_meter_pending(&a));
+    sw_app_free(&a);
+}
+END_TEST
+
 /* The graph series stays bounded however long the run. */
 START_TEST(graph_bounded)
 {
@@ -694,6 +725,7 @@ Suite *make_app_suite(void)
     tcase_add_test(tc, clock_and_slow_motion);
     tcase_add_test(tc, compare_race);
     tcase_add_test(tc, no_error_before_a_step);
+    tcase_add_test(tc, approximate_energy_said);
     tcase_add_test(tc, graph_bounded);
     tcase_add_test(tc, frames_compose);
     tcase_add_test(tc, adaptive_status_keeps_evals);

@@ -187,6 +187,33 @@ START_TEST(galaxy_tree_breaks_conservation)
 }
 END_TEST
 
+/* Above 2000 stars a disc is summed only by the tree: with theta = 0 the
+ * build refuses and says what to set; with theta > 0 it builds, its
+ * energy comes with a bound (the tree's, above 4002 bodies: 0 below), and
+ * its forces join too many pairs for a Jacobian. */
+START_TEST(galaxy_large_needs_tree)
+{
+    const sw_scene *sc = sw_scene_find("galaxy");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_system sys;
+    sw_scene_fill(sc, NULL, p);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=5000", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_EINVAL);
+    ck_assert_ptr_nonnull(strstr(err, "theta"));
+    ck_assert_int_eq(sw_scene_set(sc, p, "theta=0.5", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_OK);
+    double bound = sc->energy_error(&sys, sys.y), e = sc->energy(&sys, sys.y);
+    ck_assert_msg(bound > 0 && bound < 0.25 * fabs(e), "bound %g on an energy of %g", bound, e); /* θ²|V| at most */
+    sw_system_free(&sys);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=2000", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_system_build(&sys, sc, p, err, sizeof err), SW_OK);
+    ck_assert(sc->energy_error(&sys, sys.y) == 0); /* 2001 bodies: the direct sum */
+    sw_system_free(&sys);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=100001", err, sizeof err), SW_EINVAL); /* the range's end */
+}
+END_TEST
+
 Suite *make_galaxy_suite(void);
 Suite *make_galaxy_suite(void)
 {
@@ -197,6 +224,7 @@ Suite *make_galaxy_suite(void)
     tcase_add_test(tc, every_kind_described);
     tcase_add_test(tc, galaxy_conservation);
     tcase_add_test(tc, galaxy_tree_breaks_conservation);
+    tcase_add_test(tc, galaxy_large_needs_tree);
     tcase_set_timeout(tc, 120);
     suite_add_tcase(s, tc);
     return s;

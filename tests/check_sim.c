@@ -203,7 +203,7 @@ static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0;
 /* After a change the sim's drift is the fresh one; when the change moved
  * the drift (moved = 1) the value read before it (which filled the cache)
  * must differ from the fresh one, or a missed invalidation would go unseen. */
-static void drift_after(const sw_sim *s, double before, int moved, const char *what)
+static void drift_after(const sw_sim *s, double before, double before_e, int moved, const char *what)
 {
     double fresh = fresh_drift(s), got = sw_sim_drift(s);
     ck_assert_msg(same_bits(got, fresh), "%s on %s: the sim says %.17g, a fresh computation %.17g", what,
@@ -211,12 +211,20 @@ static void drift_after(const sw_sim *s, double before, int moved, const char *w
     if (moved)
         ck_assert_msg(!same_bits(before, fresh), "%s on %s did not move the drift (%.17g): the test would "
                       "not see a stale value", what, s->sys.scene->name, fresh);
+    /* the energy is kept the same way (and its bound with it) */
+    const sw_scene *sc = s->sys.scene;
+    double fresh_e = sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN, got_e = sw_sim_energy(s);
+    ck_assert_msg(same_bits(got_e, fresh_e), "%s on %s: the sim's energy %.17g, a fresh one %.17g", what, sc->name,
+                  got_e, fresh_e);
+    if (moved && sc->energy)
+        ck_assert_msg(!same_bits(before_e, fresh_e), "%s on %s did not move the energy", what, sc->name);
 }
 
 /* The drift a sim reports is worked out once per state and kept: after
  * each kind of change (a step, a run, a new dt, method, tolerances or
  * events mode, set_state, a rewind, a reset) it is bit for bit the scene's
- * drift of the state now. Each check reads the drift just before the change,
+ * drift of the state now (and the energy, kept the same way). Each check
+ * reads the drift just before the change,
  * so the cache is full, and the changes that move the state are chosen so
  * that the drift moves too: a missed invalidation shows as a mismatch. */
 START_TEST(drift_cache_follows_every_change)
@@ -242,55 +250,55 @@ START_TEST(drift_cache_follows_every_change)
         ck_assert_ptr_nonnull(y0);
         memcpy(y0, s.sys.y, (size_t)dim * sizeof *y0);
 
-        double before = sw_sim_drift(&s);
-        drift_after(&s, before, 0, "the start");
+        double before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
+        drift_after(&s, before, before_e, 0, "the start");
         for (int k = 0; k < 5; k++) {
-            before = sw_sim_drift(&s);
+            before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
             ck_assert_int_eq(sw_sim_step(&s), 0);
             sw_history_push(&h, &s);
-            drift_after(&s, before, 1, "a step");
+            drift_after(&s, before, before_e, 1, "a step");
         }
         const double t_back = s.t;
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_run_until(&s, s.t + 20 * runs[r].dt), 0);
         sw_history_push(&h, &s);
-        drift_after(&s, before, 1, "a run");
+        drift_after(&s, before, before_e, 1, "a run");
 
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_set_dt(&s, runs[r].dt / 2, err, sizeof err), SW_OK);
-        drift_after(&s, before, 0, "set_dt");
-        before = sw_sim_drift(&s);
+        drift_after(&s, before, before_e, 0, "set_dt");
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_step(&s), 0);
         sw_history_push(&h, &s);
-        drift_after(&s, before, 1, "a step at the new dt");
+        drift_after(&s, before, before_e, 1, "a step at the new dt");
 
         /* the rewind before the change of method: a history is its
          * method's (the app clears it on a change) */
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_history_back_to(&h, &s, t_back), 1);
         ck_assert_double_eq(s.t, t_back);
-        drift_after(&s, before, 1, "a rewind");
+        drift_after(&s, before, before_e, 1, "a rewind");
 
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_set_method(&s, sw_integrator_find("rk4"), err, sizeof err), SW_OK);
-        drift_after(&s, before, 0, "set_method");
-        before = sw_sim_drift(&s);
+        drift_after(&s, before, before_e, 0, "set_method");
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         sw_sim_set_tolerances(&s, 1e-8, 1e-10);
-        drift_after(&s, before, 0, "set_tolerances");
-        before = sw_sim_drift(&s);
+        drift_after(&s, before, before_e, 0, "set_tolerances");
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_set_events(&s, SW_EVENTS_LOCATE, err, sizeof err), SW_OK);
-        drift_after(&s, before, 0, "set_events");
+        drift_after(&s, before, before_e, 0, "set_events");
 
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         sw_sim_set_state(&s, y0);
-        drift_after(&s, before, 1, "set_state");
-        before = sw_sim_drift(&s);
+        drift_after(&s, before, before_e, 1, "set_state");
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_step(&s), 0);
-        drift_after(&s, before, 1, "a step from the set state");
+        drift_after(&s, before, before_e, 1, "a step from the set state");
 
-        before = sw_sim_drift(&s);
+        before = sw_sim_drift(&s), before_e = sw_sim_energy(&s);
         ck_assert_int_eq(sw_sim_reset(&s, err, sizeof err), SW_OK);
-        drift_after(&s, before, 1, "reset");
+        drift_after(&s, before, before_e, 1, "reset");
 
         free(y0);
         sw_history_free(&h);

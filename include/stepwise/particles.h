@@ -111,5 +111,8 @@ int sw_particles_contact(sw_particles *p, double *y);
 
 /* Kinetic + potential energy of the conservative forces at y. */
 double sw_particles_energy(const sw_particles *p, const double *y);
+/* A bound on |sw_particles_energy - the exact energy| at y: 0 where every
+ * potential is summed exactly (a Barnes-Hut tree above 4002 bodies is not). */
+double sw_particles_energy_error(const sw_particles *p, const double *y);
 
 #endif

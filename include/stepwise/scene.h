@@ -99,6 +99,9 @@ typedef struct sw_scene {
     double (*energy_floor)(const sw_system *sys);
     /* Total energy at y; NULL when the scene defines none. */
     double (*energy)(const sw_system *sys, const double *y);
+    /* A bound on |energy(y) - the exact energy| where energy is summed
+     * approximately (a large galaxy's tree); NULL: energy is exact. */
+    double (*energy_error)(const sw_system *sys, const double *y);
     /* How far a quantity exact paths keep constant (stream function, angular
      * momentum, radius) has drifted from its start: 0 on exact paths. NULL
      * when the scene has none. */

@@ -77,6 +77,9 @@ int sw_sim_run_until(sw_sim *s, double t_end);
 long sw_sim_evals(const sw_sim *s);
 /* Energy now; NaN when the scene defines none. */
 double sw_sim_energy(const sw_sim *s);
+/* A bound on |sw_sim_energy - the exact energy|: 0 where the scene sums
+ * it exactly, else its own bound (a large galaxy's tree). */
+double sw_sim_energy_error(const sw_sim *s);
 /* The energy scale drifts are measured against: the energy of the motion
  * at the start, E(0) - E_floor, where the system has a resting state of
  * least energy (a spring, a pendulum, a chain), else |E(0)| (an orbit's
@@ -97,6 +100,9 @@ int sw_sim_resting_state(const sw_system *sys, double *out, double *energy);
 int sw_sim_energy_scale_is_motion(const sw_sim *s);
 /* The energy's drift (E - E(0)) / scale, in percent; NaN when undefined. */
 double sw_sim_energy_drift(const sw_sim *s);
+/* A bound on |the drift shown - the exact drift|, in percent: the bounds
+ * on E and E(0) over the scale; 0 when both are exact. */
+double sw_sim_energy_drift_error(const sw_sim *s);
 /* Largest absolute state error against the exact solution; NaN if none. */
 double sw_sim_exact_error(const sw_sim *s, double *scratch);
 /* The scene's invariant drift now (0 on exact paths); NaN when none. Worked

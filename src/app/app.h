@@ -271,6 +271,9 @@ int sw_app_stability(sw_app *a, sw_app_meter *m);
 void sw_app_meter_refresh(sw_app *a);
 /* (meter.c) 1 while a spectrum job is under way. */
 int sw_app_meter_pending(const sw_app *a);
+/* (meter.c) The pairs the forces join when there are too many to take a
+ * spectrum from frame to frame (2^21): none is taken; else 0. */
+long sw_app_meter_out_of_reach(const sw_app *a);
 /* (meter.c) Run the spectrum job on, up to `calls` slices, until it is
  * done; 1 when no job is under way. */
 int sw_app_meter_settle(sw_app *a, long calls);

@@ -11,6 +11,7 @@
 
 #include <math.h>
 
+#include "engine/particles_solve.h"
 #include "stepwise/stepwise.h"
 
 /* State components × passes one call may spend: 2^17, about a millisecond
@@ -20,11 +21,29 @@
 
 static long passes_per_call(const sw_system *sys)
 {
-    long per = METER_SLICE / (2L * sys->n);
+    /* a pass's cost: the state's components, or the pairs' blocks where a
+     * force joins more pairs than there are particles (a galaxy: n²/2) */
+    long pairs = sys->kind == SW_SYS_PARTICLES ? sw_particles_pair_count(&sys->particles) : 0;
+    long per = METER_SLICE / (2L * (pairs > sys->n ? pairs : sys->n));
     return per < 1 ? 1 : per;
 }
 
 int sw_app_meter_pending(const sw_app *a) { return a->spec_job.active; }
+
+/* The most pairs whose Jacobian the meter multiplies, a pass a frame at
+ * the least: 2^21, a galaxy of 2000 stars (2e6 pairs, some 35 ms a pass
+ * here); two of them (8e6) took 160 ms a frame, a galaxy of 1e5 has no
+ * Jacobian at all (SW_PARTICLES_PAIRS_MAX). */
+#define METER_PAIRS_MAX (1L << 21)
+
+long sw_app_meter_out_of_reach(const sw_app *a)
+{
+    const sw_system *sys = &a->truth.sys;
+    if (!a->have_truth || sys->kind != SW_SYS_PARTICLES)
+        return 0;
+    long pairs = sw_particles_pair_count(&sys->particles);
+    return pairs > METER_PAIRS_MAX ? pairs : 0;
+}
 
 void sw_app_meter_refresh(sw_app *a)
 {
@@ -35,7 +54,7 @@ void sw_app_meter_refresh(sw_app *a)
     if (j->active && s->t < j->t)
         j->active = 0; /* a reset: the job's state is gone */
     if (!j->active) {
-        if (!due)
+        if (!due || sw_app_meter_out_of_reach(a)) /* (no Jacobian to take one from: said on the meter's line) */
             return;
         if (!sw_truth_spectrum_sliced(&a->truth.sys, METER_SLICE)) {
             a->have_spec = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, s->t, s->sys.y, &a->spec) == 0;

@@ -52,7 +52,12 @@ int sw_app_status_fields(sw_app *a, int i, sw_field *f, int max)
         snprintf(x->full, sizeof x->full, "evals %ld", sw_sim_evals(s));
     }
     double drift = sw_sim_energy_drift(s);
-    if (isfinite(drift) && (x = add(f, &n, max, 7))) {
+    double drift_error = sw_sim_energy_drift_error(s);
+    if (isfinite(drift) && drift_error > 0 && (x = add(f, &n, max, 7))) {
+        /* summed approximately (a large galaxy's tree): say so, and how far off it can be */
+        snprintf(x->full, sizeof x->full, "energy ≈%+.3g%% ±%.2g%%", drift, drift_error);
+        snprintf(x->brief, sizeof x->brief, "E≈%+.2g%%±%.2g%%", drift, drift_error);
+    } else if (isfinite(drift) && (x = add(f, &n, max, 7))) {
         snprintf(x->full, sizeof x->full, "energy %+.3g%%", drift);
         snprintf(x->brief, sizeof x->brief, "E%+.3g%%", drift);
     }
@@ -132,6 +137,11 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn)
         } else if (!(a->sims[0].method->flags & SW_ADAPTIVE) && sw_app_meter_pending(a) && (x = add(f, &n, max, 8))) {
             snprintf(x->full, sizeof x->full, "stability: finding the stiffest mode");
             snprintf(x->brief, sizeof x->brief, "finding the stiffest mode");
+        } else if (sw_app_meter_out_of_reach(a) && (x = add(f, &n, max, 8))) {
+            snprintf(x->full, sizeof x->full, "stability: not measured: every pair of bodies is coupled, %.2g "
+                     "pairs, too many to take its spectrum live", (double)sw_app_meter_out_of_reach(a));
+            snprintf(x->brief, sizeof x->brief, "stability: not measured (%.2g pairs)",
+                     (double)sw_app_meter_out_of_reach(a));
         }
         return n;
     }

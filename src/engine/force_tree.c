@@ -16,16 +16,18 @@
  * buffers and the list are sized when the force is added (tree_work_new) —
  * and is deterministic (a stable radix sort; groups, cells and bodies
  * walked in a fixed order; a full list is summed and emptied at fixed
- * points). Only the force is approximated: the potential, the pairs and the
- * Jacobian blocks are the direct sum's (force_mutual.c), so energies and
- * implicit steps see exact softened gravity. Parameters: mu = G, soft = ε,
- * theta = θ. */
+ * points). The pairs and the Jacobian blocks are the direct sum's
+ * (force_mutual.c), so implicit steps see exact softened gravity; the
+ * potential is too up to EXACT_BODIES bodies, and above it is summed over
+ * the same lists as the force, with a stated error bound (tree_energy).
+ * Parameters: mu = G, soft = ε, theta = θ. */
 #include "engine/forces.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define KEY_BITS 16   /* per axis: the smallest cell is 2^-16 of the box */
 #define LEAF_MAX 8    /* a range of at most this many bodies is a leaf */
@@ -45,12 +47,26 @@ typedef struct tree_box {
     double x0, x1, y0, y1; /* a node's bodies' bounding box (apart: the walk reads only groups') */
 } tree_box;
 
+/* What the potential's error bound needs of a node (apart: read only for
+ * cells taken whole): its second moment Q = Σ m |x - X|² about its centre
+ * of mass X, and b, the farthest its box reaches from X (no body is
+ * farther). */
+typedef struct tree_moment {
+    double q, b;
+} tree_moment;
+
 typedef struct tree_work {
     int n, nnodes;
     tree_node *node;    /* 2n - 1 */
     tree_box *box;      /* one per node */
+    tree_moment *mom;   /* one per node */
     double *bx, *by, *bm; /* the bodies in key order */
     double *ax, *ay;    /* their sums Σ M (x_r - X)/q³ */
+    double *ap;         /* and Σ M/q (the potential's, by the same list) */
+    double *px;         /* the positions (2n) the last pass was at, for the potential's cache */
+    int have_pot;       /* pot and bound hold for px */
+    double pot, bound;  /* Σ_r m_r Σ_list' M/q (self term out), and its error bound (see tree_energy) */
+    double group_bound; /* the bound's sum for the group being walked */
     uint32_t *key, *key2;
     int *idx, *idx2;    /* body numbers in key order; the sort's second buffer */
     double lx[LIST_MAX], ly[LIST_MAX], lm[LIST_MAX]; /* a group's list: point masses */
@@ -62,10 +78,10 @@ static size_t round_up(size_t b) { return (b + 63) & ~(size_t)63; }
 static void *tree_work_new(int n)
 {
     size_t nodes = 2 * (size_t)n, head = round_up(sizeof(tree_work)), node_b = round_up(nodes * sizeof(tree_node)),
-           box_b = round_up(nodes * sizeof(tree_box)),
+           box_b = round_up(nodes * sizeof(tree_box)), mom_b = round_up(nodes * sizeof(tree_moment)),
            dbl_b = round_up((size_t)n * sizeof(double)), key_b = round_up((size_t)n * sizeof(uint32_t)),
            idx_b = round_up((size_t)n * sizeof(int));
-    char *block = calloc(1, head + node_b + box_b + 5 * dbl_b + 2 * key_b + 2 * idx_b);
+    char *block = calloc(1, head + node_b + box_b + mom_b + 8 * dbl_b + 2 * key_b + 2 * idx_b);
     if (!block)
         return NULL;
     tree_work *w = (tree_work *)block;
@@ -73,11 +89,14 @@ static void *tree_work_new(int n)
     w->n = n;
     w->node = (tree_node *)at, at += node_b;
     w->box = (tree_box *)at, at += box_b;
+    w->mom = (tree_moment *)at, at += mom_b;
     w->bx = (double *)at, at += dbl_b;
     w->by = (double *)at, at += dbl_b;
     w->bm = (double *)at, at += dbl_b;
     w->ax = (double *)at, at += dbl_b;
     w->ay = (double *)at, at += dbl_b;
+    w->ap = (double *)at, at += dbl_b;
+    w->px = (double *)at, at += 2 * dbl_b;
     w->key = (uint32_t *)at, at += key_b;
     w->key2 = (uint32_t *)at, at += key_b;
     w->idx = (int *)at, at += idx_b;
@@ -182,6 +201,19 @@ static void build(tree_work *w, int k, int lo, int hi)
     nd->my = m > 0 ? sy / m : w->by[lo];
     w->box[k] = (tree_box){ x0, x1, y0, y1 };
     nd->size2 = size * size;
+    /* Q about the centre of mass: a leaf's from its bodies, an inner
+     * node's from its children's (parallel axes: Q_c + M_c |X_c - X|²) */
+    double q = 0, X = nd->mx, Y = nd->my;
+    if (nd->count == 0)
+        for (int r = lo; r < hi; r++)
+            q += w->bm[r] * ((w->bx[r] - X) * (w->bx[r] - X) + (w->by[r] - Y) * (w->by[r] - Y));
+    else
+        for (int c = nd->first; c < nd->first + nd->count; c++) {
+            const tree_node *ch = &w->node[c];
+            q += w->mom[c].q + ch->m * ((ch->mx - X) * (ch->mx - X) + (ch->my - Y) * (ch->my - Y));
+        }
+    double bx = fmax(X - x0, x1 - X), by = fmax(Y - y0, y1 - Y);
+    w->mom[k] = (tree_moment){ q, sqrt(bx * bx + by * by) };
 }
 
 /* Add Σ_list M (x_r - X)/q³ to (ax, ay) for the group's bodies [lo, hi),
@@ -195,14 +227,14 @@ static void build(tree_work *w, int k, int lo, int hi)
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay)
+static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay, double *ap)
 {
     for (int c = lo; c < hi; c += BLOCK) {
         int cnt = hi - c < BLOCK ? hi - c : BLOCK;
-        double xr[BLOCK], yr[BLOCK], gx[BLOCK], gy[BLOCK];
+        double xr[BLOCK], yr[BLOCK], gx[BLOCK], gy[BLOCK], gp[BLOCK];
         for (int i = 0; i < BLOCK; i++) { /* a short block is padded with its last body, then dropped */
             int r = c + (i < cnt ? i : cnt - 1);
-            xr[i] = w->bx[r], yr[i] = w->by[r], gx[i] = ax[r], gy[i] = ay[r];
+            xr[i] = w->bx[r], yr[i] = w->by[r], gx[i] = ax[r], gy[i] = ay[r], gp[i] = ap[r];
         }
         if (e2 > 0) {
             for (int j = 0; j < w->len; j++) {
@@ -211,6 +243,7 @@ static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, 
                     double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey + e2, s = M / (q2 * sqrt(q2));
                     gx[i] += s * ex;
                     gy[i] += s * ey;
+                    gp[i] += s * q2; /* M/q, the potential's term, at the cost of a product */
                 }
             }
         } else {
@@ -221,11 +254,12 @@ static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, 
                     double s = q2 > 0 ? M / (q2 * sqrt(q2)) : 0;
                     gx[i] += s * ex;
                     gy[i] += s * ey;
+                    gp[i] += s * q2;
                 }
             }
         }
         for (int i = 0; i < cnt; i++)
-            ax[c + i] = gx[i], ay[c + i] = gy[i];
+            ax[c + i] = gx[i], ay[c + i] = gy[i], ap[c + i] = gp[i];
     }
 }
 
@@ -233,7 +267,7 @@ static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, 
 static void list_add(tree_work *w, const tree_node *g, double x, double y, double m, double e2, double *ax, double *ay)
 {
     if (w->len == LIST_MAX) {
-        sum_list(w, g->lo, g->hi, e2, ax, ay);
+        sum_list(w, g->lo, g->hi, e2, ax, ay, w->ap);
         w->len = 0;
     }
     w->lx[w->len] = x, w->ly[w->len] = y, w->lm[w->len] = m;
@@ -251,6 +285,7 @@ static void walk(tree_work *w, const tree_node *g, double theta2, double e2, dou
     double x0 = gb->x0, x1 = gb->x1, y0 = gb->y0, y1 = gb->y1;
     stack[top++] = 0;
     w->len = 0;
+    w->group_bound = 0;
     while (top > 0) {
         const tree_node *nd = &w->node[stack[--top]];
         int holds_g = nd->lo <= g->lo && g->hi <= nd->hi;
@@ -258,6 +293,10 @@ static void walk(tree_work *w, const tree_node *g, double theta2, double e2, dou
         double dy = nd->my < y0 ? y0 - nd->my : nd->my > y1 ? nd->my - y1 : 0.0;
         if (!holds_g && nd->size2 < theta2 * (dx * dx + dy * dy)) {
             list_add(w, g, nd->mx, nd->my, nd->m, e2, ax, ay);
+            /* the potential's error for any body of g from this cell taken
+             * whole: at most Q/((d - b)² + ε²)^(3/2) (see tree_energy) */
+            double gap = sqrt(dx * dx + dy * dy) - w->mom[nd - w->node].b, t = (gap > 0 ? gap * gap : 0) + e2;
+            w->group_bound += t > 0 ? w->mom[nd - w->node].q / (t * sqrt(t)) : INFINITY;
         } else if (nd->count == 0) {
             for (int j = nd->lo; j < nd->hi; j++)
                 list_add(w, g, w->bx[j], w->by[j], w->bm[j], e2, ax, ay);
@@ -266,10 +305,14 @@ static void walk(tree_work *w, const tree_node *g, double theta2, double e2, dou
                 stack[top++] = c; /* popped in order: first child first */
         }
     }
-    sum_list(w, g->lo, g->hi, e2, ax, ay);
+    sum_list(w, g->lo, g->hi, e2, ax, ay, w->ap);
 }
 
-static void tree_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+/* One pass of the tree at positions x: every body's Σ M (x_r - X)/q³ in
+ * (ax, ay) and Σ M/q in ap (sorted order), and the potential's sum and
+ * bound for x, kept with a copy of x (tree_energy). 0, or -1 where the
+ * tree cannot be built (a state that is not finite, or no workspace). */
+static int tree_pass(const sw_particles *p, const sw_force *fo, const double *x)
 {
     tree_work *w = fo->work;
     int n = p->n;
@@ -282,10 +325,8 @@ static void tree_add(const sw_particles *p, const sw_force *fo, const double *x,
     int finite = 1;
     for (int i = 0; i < 2 * n && finite; i++)
         finite = isfinite(x[i]);
-    if (!finite || !isfinite(side) || !w || w->n != n) { /* a blown-up state: the direct sum gives its NaNs */
-        swp_mutual.add(p, fo, x, v, f);
-        return;
-    }
+    if (!finite || !isfinite(side) || !w || w->n != n)
+        return -1;
     if (!(side > 0))
         side = 1; /* every body at one point: one leaf */
     double per_unit = 65536.0 / side;
@@ -304,32 +345,99 @@ static void tree_add(const sw_particles *p, const sw_force *fo, const double *x,
     build(w, 0, 0, n);
     double *ax = w->ax, *ay = w->ay;
     for (int r = 0; r < n; r++)
-        ax[r] = 0, ay[r] = 0;
-    double theta2 = fo->theta * fo->theta, e2 = fo->soft * fo->soft;
+        ax[r] = 0, ay[r] = 0, w->ap[r] = 0;
+    double theta2 = fo->theta * fo->theta, e2 = fo->soft * fo->soft, bound = 0;
     int stack[STACK_MAX], top = 0;
     stack[top++] = 0;
     while (top > 0) { /* the groups, in tree order */
         const tree_node *nd = &w->node[stack[--top]];
-        if (nd->hi - nd->lo <= GROUP_MAX || nd->count == 0)
+        if (nd->hi - nd->lo <= GROUP_MAX || nd->count == 0) {
             walk(w, nd, theta2, e2, ax, ay);
-        else
+            bound += nd->m * w->group_bound;
+        } else {
             for (int c = nd->first + nd->count - 1; c >= nd->first; c--)
                 stack[top++] = c;
+        }
     }
+    /* Σ m_r φ_r, each body's own term (M/q at q = ε, as the list summed it) taken out */
+    double pot = 0;
     for (int r = 0; r < n; r++) {
+        double self = e2 > 0 ? w->bm[r] / (e2 * sqrt(e2)) * e2 : 0;
+        pot += w->bm[r] * (w->ap[r] - self);
+    }
+    w->pot = pot;
+    w->bound = bound;
+    memcpy(w->px, x, (size_t)2 * n * sizeof *x);
+    w->have_pot = 1;
+    return 0;
+}
+
+static int tree_exact(const sw_particles *p);
+
+static void tree_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
+{
+    if (tree_pass(p, fo, x) != 0) { /* a blown-up state: the direct sum gives its NaNs, */
+        if (tree_exact(p) || !fo->work)
+            swp_mutual.add(p, fo, x, v, f);
+        else /* or, past its reach (5e9 pairs at n = 1e5, some 17 s), NaN everywhere */
+            for (int i = 0; i < 2 * p->n; i++)
+                f[i] += NAN;
+        return;
+    }
+    const tree_work *w = fo->work;
+    for (int r = 0; r < p->n; r++) {
         double s = fo->mu * w->bm[r];
-        f[2 * w->idx[r]] -= s * ax[r];
-        f[2 * w->idx[r] + 1] -= s * ay[r];
+        f[2 * w->idx[r]] -= s * w->ax[r];
+        f[2 * w->idx[r] + 1] -= s * w->ay[r];
     }
 }
 
-/* The direct sum's potential, pairs and blocks: the tree changes how the
- * force is summed, not the system. */
+/* Up to EXACT_BODIES bodies (every galaxy the scene built before n could
+ * reach 1e5, so their energies keep their bits) the potential is the
+ * direct sum's, n²/2 pairs; above, the tree's, from the lists of the last
+ * pass at these positions (a step of verlet ends with one) or a new pass:
+ *   V ≈ -½ G Σ_r m_r Σ_list' M/√(|x_r - X|² + ε²),
+ * every pair once from each end, each body's own term out. A cell of mass
+ * M, second moment Q about its centre of mass X and every body within b of
+ * X, taken whole for a body at distance d ≥ b from X, errs in Σ m_j/q_j by
+ * at most Q/((d - b)² + ε²)^(3/2): the first-order terms of the Taylor
+ * series about X cancel (X is the centre of mass), and the Hessian of
+ * 1/√(r² + ε²) has norm at most 2/(r² + ε²)^(3/2), r ≥ d - b on the way
+ * (d is at least the distance to the group's box, so one bound serves the
+ * group). Hence |V - V_exact| ≤ ½ G Σ_groups M_g Σ_cells Q/((d - b)² +
+ * ε²)^(3/2), in exact arithmetic; rounding adds some 1e-16 of Σ|terms|. */
+#define EXACT_BODIES 4002
+
+static int tree_exact(const sw_particles *p) { return p->n <= EXACT_BODIES; }
+
+/* The pass for x is there (one is made if not): 0, or -1 (see tree_pass). */
+static int tree_energy(const sw_particles *p, const sw_force *fo, const double *x)
+{
+    const tree_work *w = fo->work;
+    if (w && w->have_pot && w->n == p->n && memcmp(w->px, x, (size_t)2 * p->n * sizeof *x) == 0)
+        return 0;
+    return tree_pass(p, fo, x);
+}
+
 static void tree_potential(const sw_particles *p, const sw_force *fo, const double *x, double *e)
 {
-    swp_mutual.potential(p, fo, x, e);
+    if (tree_exact(p))
+        swp_mutual.potential(p, fo, x, e);
+    else if (tree_energy(p, fo, x) != 0)
+        *e += NAN; /* a state that is not finite has no energy (the direct sum would take seconds to say so) */
+    else
+        *e -= 0.5 * fo->mu * ((const tree_work *)fo->work)->pot;
 }
 
+static double tree_potential_error(const sw_particles *p, const sw_force *fo, const double *x)
+{
+    if (tree_exact(p))
+        return 0;
+    return tree_energy(p, fo, x) == 0 ? 0.5 * fo->mu * ((const tree_work *)fo->work)->bound : NAN;
+}
+
+/* The direct sum's pairs and blocks: the Jacobian an implicit step uses
+ * is exact softened gravity's. */
 static long tree_pairs(const sw_particles *p, const sw_force *fo, int *reach)
 {
     return swp_mutual.pairs(p, fo, reach);
@@ -352,6 +460,7 @@ const swp_force_type swp_tree = {
     .values = tree_values,
     .add = tree_add,
     .potential = tree_potential,
+    .potential_error = tree_potential_error,
     .term = "mutual gravity potential",
     .term_formula = "- G m_i m_j/√(r² + ε²)",
     .pairs = tree_pairs,

@@ -35,6 +35,9 @@ typedef struct swp_force_type {
     /* *e += its potential energy at x, term by term in particle or
      * spring order; NULL: it stores none (drag). */
     void (*potential)(const sw_particles *p, const sw_force *fo, const double *x, double *e);
+    /* A bound on |the potential it adds at x - the exact one|, where it
+     * approximates it (a tree's far cells); NULL hook: it is exact. */
+    double (*potential_error)(const sw_particles *p, const sw_force *fo, const double *x);
     /* The potential as the explainer names it: "spring potential", its
      * formula, and whether the formula has a ½ (a slip forgets it). */
     const char *term, *term_formula;

@@ -226,3 +226,14 @@ double sw_particles_energy(const sw_particles *p, const double *y)
     }
     return e;
 }
+
+double sw_particles_energy_error(const sw_particles *p, const double *y)
+{
+    double bound = 0;
+    for (int k = 0; k < p->nforces; k++) {
+        const swp_force_type *type = swp_force_type_of(p->forces[k].kind);
+        if (type->potential_error)
+            bound += type->potential_error(p, &p->forces[k], y);
+    }
+    return bound;
+}

@@ -79,6 +79,8 @@ static int reserve_pairs(sw_particles *p)
         return SW_OK;
     int far;
     long need = count_pairs(p, &far);
+    if (need > SW_PARTICLES_PAIRS_MAX) /* 72 bytes each: 600 MB at most (two galaxies of 2000 fit) */
+        return SW_ENOMEM;
     if (need <= s->cap) {
         s->counted = p->nforces + 1;
         return SW_OK;
@@ -119,7 +121,12 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
     struct sw_particles_solver *s = p->solver;
     int far;
     s->factored = 0;
-    count_pairs(p, &far);
+    long pairs = count_pairs(p, &far);
+    if (pairs > SW_PARTICLES_PAIRS_MAX) {
+        snprintf(err, errlen, "the implicit solve needs the forces' Jacobian, and here they join %.2g pairs, more "
+                 "than the %.2g it may hold", (double)pairs, (double)SW_PARTICLES_PAIRS_MAX);
+        return SW_EINVAL;
+    }
     if (reserve_pairs(p) != SW_OK) {
         snprintf(err, errlen, "out of memory for the implicit solve's force blocks");
         return SW_ENOMEM;
@@ -427,6 +434,12 @@ double sw_particles_work(const sw_particles *p, double *solve)
     double dim = 4.0 * p->n, per = (double)count_pairs(p, &far) / p->n, width = (2.0 * far + 1) / 3.0;
     *solve = dim * (width > 1 ? width * width : 1.0);
     return dim * (per > 1 ? per : 1.0);
+}
+
+long sw_particles_pair_count(const sw_particles *p)
+{
+    int far;
+    return count_pairs(p, &far);
 }
 
 int sw_particles_coupled(const sw_particles *p)

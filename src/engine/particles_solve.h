@@ -38,6 +38,11 @@ const double *sw_particles_own_blocks(sw_particles *p, const double *y);
 /* 1 when a force joins particles (springs, mutual gravity), so they do not
  * move independently; 0 when each particle feels only fields. */
 int sw_particles_coupled(const sw_particles *p);
+/* The pairs the forces join (their Jacobian's off-diagonal blocks), and
+ * the most whose blocks are ever kept: beyond it (a galaxy of 1e5 stars,
+ * 5e9 pairs) there is no Jacobian, hence no spectrum and no implicit step. */
+long sw_particles_pair_count(const sw_particles *p);
+#define SW_PARTICLES_PAIRS_MAX (1L << 23)
 /* What one derivative evaluation costs, in state components (the budgets'
  * unit: dim when each particle feels a few forces, as with fields, a chain
  * or a cloth; dim times the pairs per particle when a force joins many,

@@ -23,9 +23,14 @@ struct sw_sim_derived {
      * nothing for it and one that steps pays once, however many read it. */
     int have_drift;
     double drift;
+    /* The energy and its error bound (0 where it is summed exactly), kept
+     * the same way: a large galaxy's costs a pass of its tree. */
+    int have_energy;
+    double energy, energy_error;
+    double energy0_error; /* the bound on energy0's error */
 };
 
-void sw_sim_state_changed(sw_sim *s) { s->derived->have_drift = 0; }
+void sw_sim_state_changed(sw_sim *s) { s->derived->have_drift = s->derived->have_energy = 0; }
 
 static double max_abs(int n, const double *v)
 {
@@ -48,7 +53,9 @@ static void set_limits(sw_sim *s)
     frexp(1e6 * (1.0 + span + max_abs(s->sys.ode->dim, s->sys.y)), &e);
     s->runaway = ldexp(1.0, e);
     s->stepper->limit_exp = (unsigned)(e + 1023);
+    s->derived->have_energy = 0;
     s->energy0 = sw_sim_energy(s);
+    s->derived->energy0_error = sw_sim_energy_error(s);
 }
 
 /* A fresh stepper for m on the sim's system, with the sim's tolerances. */
@@ -172,8 +179,9 @@ void sw_sim_set_state(sw_sim *s, const double *y)
     memcpy(s->sys.y, y, (size_t)s->sys.ode->dim * sizeof *y);
     sw_sim_events_arm(s);
     sw_stepper_touch(s->stepper);
-    s->energy0 = sw_sim_energy(s);
     sw_sim_state_changed(s);
+    s->energy0 = sw_sim_energy(s);
+    s->derived->energy0_error = sw_sim_energy_error(s);
 }
 
 int sw_sim_reset(sw_sim *s, char *err, size_t errlen)
@@ -267,11 +275,22 @@ int sw_sim_run_until(sw_sim *s, double t_end)
 
 long sw_sim_evals(const sw_sim *s) { return s->sys.ode->evals; }
 
-double sw_sim_energy(const sw_sim *s)
+/* Worked out once per state, as the drift (below). */
+static const struct sw_sim_derived *energy_now(const sw_sim *s)
 {
-    const sw_scene *sc = s->sys.scene;
-    return sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN;
+    struct sw_sim_derived *d = s->derived;
+    if (!d->have_energy) {
+        const sw_scene *sc = s->sys.scene;
+        d->energy = sc->energy ? sc->energy(&s->sys, s->sys.y) : NAN;
+        d->energy_error = sc->energy && sc->energy_error ? sc->energy_error(&s->sys, s->sys.y) : 0;
+        d->have_energy = 1;
+    }
+    return d;
 }
+
+double sw_sim_energy(const sw_sim *s) { return energy_now(s)->energy; }
+
+double sw_sim_energy_error(const sw_sim *s) { return energy_now(s)->energy_error; }
 
 int sw_sim_resting_state(const sw_system *sys, double *out, double *energy)
 {
@@ -354,6 +373,12 @@ double sw_sim_energy_drift(const sw_sim *s)
 {
     double scale = sw_sim_energy_scale(s);
     return 100.0 * (sw_sim_energy(s) - s->energy0) / scale;
+}
+
+double sw_sim_energy_drift_error(const sw_sim *s)
+{
+    double bound = sw_sim_energy_error(s) + s->derived->energy0_error;
+    return bound > 0 ? 100.0 * bound / fabs(sw_sim_energy_scale(s)) : 0;
 }
 
 double sw_sim_exact_error(const sw_sim *s, double *scratch)

@@ -122,6 +122,10 @@ double sw_truth_reference_cost(sw_truth *tr, double t_end)
     sw_sim pilot;
     char err[SW_ERRLEN];
     const sw_scene *sc = tr->sys.scene;
+    const sw_integrator *ref = sw_truth_reference_method();
+    double step = ref ? sw_truth_step_work(&tr->sys, ref) : INFINITY;
+    if (20 * step > SW_TRUTH_PILOT_MAX) /* the pilot alone would be out of reach (a galaxy of 1e5 stars): */
+        return t_end / sc->dt * step;  /* at the scene's step, which a tight run does not exceed much */
     if (sw_sim_init(&pilot, sc, tr->sys.p, sw_truth_reference_method(), sc->dt, err, sizeof err) != SW_OK)
         return INFINITY;
     sw_sim_set_tolerances(&pilot, SW_TRUTH_RTOL, SW_TRUTH_ATOL);

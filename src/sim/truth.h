@@ -25,6 +25,10 @@
  * (`stability`, the `w` plot) may spend before it starts. Work above a
  * budget is refused up front with the estimate in the message. */
 #define SW_WORK_KEY 1e8
+/* The reference's cost is measured by a pilot of 20 steps unless those
+ * would cost more than this (a thousand key presses): then it is estimated
+ * at the scene's step, without running anything. */
+#define SW_TRUTH_PILOT_MAX 1e11
 #define SW_WORK_LIVE_PER_S 5e7
 #define SW_WORK_REPORT 1e10
 

@@ -144,8 +144,8 @@ START_TEST(production_steps_are_the_lecture_forms)
 }
 END_TEST
 
-/* Every explicit adaptive method of the table has its lecture form: a
- * new one is named here until it gets one (or stops being explicit). */
+/* Every explicit adaptive method of the table has its lecture form, each
+ * paired with its own: a new one is named here until it gets one. */
 START_TEST(every_adaptive_step_has_its_form)
 {
     for (int k = 0; k < sw_integrator_count(); k++) {
@@ -154,6 +154,11 @@ START_TEST(every_adaptive_step_has_its_form)
             ck_assert_msg(sw_ref_adaptive_of(m->step) != NULL, "%s has no lecture form in reference_adaptive.c",
                           m->name);
     }
+    ck_assert(sw_ref_adaptive_of(sw_step_rk45) == sw_ref_rk45);
+    ck_assert(sw_ref_adaptive_of(sw_step_dop853) == sw_ref_dop853);
+    ck_assert(sw_ref_adaptive_of(sw_step_rkn) == sw_ref_rkn);
+    ck_assert(sw_ref_adaptive_of(sw_step_rkn12) == sw_ref_rkn12);
+    ck_assert(sw_ref_adaptive_of(sw_step_dop853_lc) == sw_ref_dop853_lc);
     ck_assert(sw_ref_adaptive_of(sw_step_rodas4) == NULL);
     ck_assert(sw_ref_adaptive_of(sw_step_rk4) == NULL);
 }

@@ -144,6 +144,16 @@ bad_number() { # OPTION VALUE WANT
     [ "$rc" -eq 2 ] && [ ! -s out ] && [ "$(wc -l < err)" -eq 1 ] && grep -qF -- "$3" err \
         || fail "grade $1 $2: exit $rc, want 2 with '$3': $(cat out err)"
 }
+# --worker is how grade starts a plugin's worker again as a program, never
+# an option: without its mark in the environment, or with the mark but no
+# channel (a socket) on descriptor 3, it is refused in one line.
+for mark in "" 1; do
+    STEPWISE_GRADE_WORKER=$mark "$SW" grade --worker 1 build class/alice.trace 0 "" --assignment ref.trace \
+        >out 2>err 3>/dev/null; rc=$?
+    [ "$rc" -eq 2 ] && [ ! -s out ] && [ "$(wc -l < err)" -eq 1 ] &&
+        grep -qF -- "--worker is how grade starts a plugin's worker, not an option" err ||
+        fail "grade --worker (mark '$mark'): exit $rc, want 2 and the refusal: $(cat out err)"
+done
 bad_number --cpu 1e308 "--cpu must be between 0.1 and 3600 seconds"
 bad_number --cpu nan "--cpu must be between 0.1 and 3600 seconds"
 bad_number --cpu inf "--cpu must be between 0.1 and 3600 seconds"

@@ -2,14 +2,23 @@
 # The embedder's library keeps no global mutable state but what
 # docs/embedding.md's "Threads" lists (issue 39: "global mutable state and
 # no statement about threads"). nm reads the writable variables (.data,
-# .bss) of build/libstepwise.a; each must be one of those below, and the
-# doc's Threads section must name the file each lives in. A new one fails
-# here until the doc says what a thread may do with it.
+# .bss) of the objects the library is made of (the Makefile's CORE_OBJ,
+# asked of make itself); each must be one of those below, and the doc's
+# Threads section must name the file each lives in. A new one fails here
+# until the doc says what a thread may do with it.
 . "$(dirname "$0")/lib.sh"
 
-build=${SW_BUILD:-$ROOT/build}
-lib="$build/libstepwise.a"
-[ -f "$lib" ] || fail "no $lib (make builds it; set SW_BUILD to the build directory)"
+# The build directory: SW_BUILD, else the binary's own where its objects
+# are beside it (make sanitize's build/san), else build/ (the binary at the top).
+if [ -n "${SW_BUILD:-}" ]; then
+    build=$SW_BUILD
+else
+    build=$(dirname "$SW")
+    [ -f "$build/src/main.o" ] || build=$ROOT/build
+fi
+objs=$(make -s -C "$ROOT" BUILD="$build" --eval='sw-print-core-obj: ; @echo $(CORE_OBJ)' sw-print-core-obj) ||
+    fail "make could not say which objects the library is made of"
+[ -n "$objs" ] || fail "make names no objects for the library"
 doc="$ROOT/docs/embedding.md"
 
 # name file: each writable variable the library may hold, and its file.
@@ -20,12 +29,18 @@ nextra engine/integrators.c
 memo sim/truth_along.c
 EOF
 
-nm -f sysv "$lib" | awk -F'|' '
+for o in $objs; do
+    [ -f "$o" ] || fail "no $o: build first (make)"
+done
+for o in $objs; do
+    nm -f sysv "$o" || echo "nm failed on $o" >"$WORK/nm-failed"
+done | awk -F'|' '
     $4 ~ /OBJECT/ {
         name = $1; sec = $7; gsub(/ /, "", name); gsub(/ /, "", sec)
         if (sec ~ /^\.bss/ || (sec ~ /^\.data($|\.)/ && sec !~ /^\.data\.rel\.ro/)) print name
-    }' | sort -u >"$WORK/found" || fail "nm failed on $lib"
-[ -s "$WORK/found" ] || fail "nm found no writable variable in $lib at all (the method table's registrations are one): is nm reading it?"
+    }' | sort -u >"$WORK/found"
+[ -e "$WORK/nm-failed" ] && fail "$(cat "$WORK/nm-failed")"
+[ -s "$WORK/found" ] || fail "nm found no writable variable in the library at all (the method table's registrations are one): is nm reading it?"
 
 # The section of the doc that states the rule.
 awk '/^## Threads/ { on = 1; next } /^## / { on = 0 } on' "$doc" >"$WORK/threads"

@@ -172,9 +172,9 @@ static double rk45_trial(sw_ref_adaptive *r, sw_ode *ode, double t, double *y, d
 /* DOP853: twelve stages, y1 = y + h·Σ b_i k_i (8th order). Hairer's
  * error: the 5th-order estimate e5 = Σ er_i k_i and the 3rd-order one
  * e3 = Σ b_i k_i - (bhh1 k1 + bhh9 k9 + bhh12 k12), each over sk, give
- * err = |h|·E5² / √(n·(E5² + 0.01·E3²)) (E the sums of squares): e5,
- * damped where e3 says e5 is unreliably small. k13 = f(t + h, y1) is the
- * next step's k1. */
+ * err = |h|·S5 / √(n·(S5 + 0.01·S3)), S5 and S3 the sums of their
+ * squares: e5, damped where e3 says e5 is unreliably small. k13 =
+ * f(t + h, y1) is the next step's k1. */
 static double dop853_trial(sw_ref_adaptive *r, sw_ode *ode, double t, double *y, double h)
 {
     double *const *k = r->k;

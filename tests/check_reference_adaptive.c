@@ -103,8 +103,8 @@ static seen compare(const sw_integrator *m, sw_ref_adaptive_fn *ref, const sw_sc
 }
 
 /* Every explicit adaptive method on every scene at its defaults under
- * each setting, and on each pointwise (flow) scene again with 1031
- * points, so that rk45 and dop853 cut the state into slices with an odd
+ * each setting, on the orbit at e = 0.9, and on each pointwise (flow)
+ * scene again with 1031 points, so that rk45 and dop853 cut the state into slices with an odd
  * last point. Each method must have been compared on some scene and have
  * rejected some trial (the controller's both branches), and the sliced
  * path must have been taken. */
@@ -135,6 +135,20 @@ START_TEST(production_steps_are_the_lecture_forms)
                     sw_scene_defaults(sc, p);
                 }
             }
+        }
+        /* and the orbit again at e = 0.9, the close pass that shrinks the
+         * steps (and that dop853-lc, on the orbit alone, lands on Newton's
+         * method): each method's second scene at least */
+        const sw_scene *orbit = sw_scene_find("orbit");
+        double p[SW_MAX_PARAMS];
+        char err[SW_ERRLEN];
+        ck_assert(orbit != NULL);
+        sw_scene_defaults(orbit, p);
+        ck_assert_msg(sw_scene_set(orbit, p, "e=0.9", err, sizeof err) == SW_OK, "%s", err);
+        for (size_t i = 0; i < sizeof settings / sizeof settings[0]; i++) {
+            seen got = compare(m, ref, orbit, p, &settings[i]);
+            scenes += got.compared;
+            rejected += got.rejected;
         }
         ck_assert_msg(scenes > 0, "%s: no scene to compare on", m->name);
         ck_assert_msg(rejected > 0, "%s: no trial rejected, the controller's other branch untried", m->name);

@@ -9,14 +9,7 @@
 # tried on planted objects.
 . "$(dirname "$0")/lib.sh"
 
-# The build directory: SW_BUILD, else the binary's own where its objects
-# are beside it (make sanitize's build/san), else build/ (the binary at the top).
-if [ -n "${SW_BUILD:-}" ]; then
-    build=$SW_BUILD
-else
-    build=$(dirname "$SW")
-    [ -f "$build/src/main.o" ] || build=$ROOT/build
-fi
+build=$(build_dir)
 [ -d "$build/src" ] || fail "no objects under $build/src (set SW_BUILD to the build directory)"
 command -v nm >/dev/null || fail "nm is needed"
 

@@ -8,14 +8,7 @@
 # until the doc says what a thread may do with it.
 . "$(dirname "$0")/lib.sh"
 
-# The build directory: SW_BUILD, else the binary's own where its objects
-# are beside it (make sanitize's build/san), else build/ (the binary at the top).
-if [ -n "${SW_BUILD:-}" ]; then
-    build=$SW_BUILD
-else
-    build=$(dirname "$SW")
-    [ -f "$build/src/main.o" ] || build=$ROOT/build
-fi
+build=$(build_dir)
 objs=$(make -s -C "$ROOT" BUILD="$build" --eval='sw-print-core-obj: ; @echo $(CORE_OBJ)' sw-print-core-obj) ||
     fail "make could not say which objects the library is made of"
 [ -n "$objs" ] || fail "make names no objects for the library"

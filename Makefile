@@ -64,7 +64,7 @@ ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explici
                  integrators.c lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c rosenbrock_wide.c)
 # The methods' lecture forms, for reading and for the tests: in the tool's
 # archive only, neither the embedder's library nor the plugin host.
-ENGINE_READING = src/engine/reference.c src/engine/reference_implicit.c
+ENGINE_READING = src/engine/reference.c src/engine/reference_adaptive.c src/engine/reference_implicit.c
 DERIV_SRC = $(filter-out $(ENGINE_METHODS) $(ENGINE_READING),$(wildcard src/engine/*.c)) $(wildcard src/scenes/*.c) \
             src/util/kv.c src/util/names.c src/util/num.c src/util/version.c
 CORE_SRC = $(DERIV_SRC) $(ENGINE_METHODS) $(wildcard src/sim/*.c)

@@ -3,6 +3,7 @@
  * header differences, the explaining checker naming a mistake, and the
  * work budget. */
 #include <check.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -96,6 +97,37 @@ END_TEST
 
 /* A round trip works; a child that never answers is a timeout within the
  * limit (0.2 s, checked with slack for a loaded machine), then killed. */
+static int child_answers(void *ctx, int in, int out)
+{
+    (void)ctx, (void)in;
+    return sw_sandbox_write(out, "r", 1) == 0 ? 0 : 3;
+}
+
+/* A child whose set-up fails ends before it runs anything of its own
+ * (issue 39: child_setup ignored dup2 and the rest). Its output
+ * descriptor here is a number the parent has not open, so the dup2 onto
+ * its stdout fails: it must end with status 125 and never reach fn,
+ * which would answer on the channel. */
+START_TEST(sandbox_child_whose_setup_fails_never_runs)
+{
+    enum { NOT_OPEN = 1000 };
+    ck_assert_int_eq(fcntl(NOT_OPEN, F_GETFD), -1);
+    sw_child c;
+    sw_child_end end;
+    char err[256], byte;
+    ck_assert_int_eq(sw_sandbox_spawn(&c, child_answers, NULL, NULL, NOT_OPEN, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_sandbox_read(c.from_child, &byte, 1, 30.0), 0); /* the end, no answer */
+    sw_sandbox_reap(&c, 30.0, &end);
+    ck_assert(end.exited && end.code == 125);
+    /* the same child with an open output descriptor answers */
+    ck_assert_int_eq(sw_sandbox_spawn(&c, child_answers, NULL, NULL, STDERR_FILENO, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_sandbox_read(c.from_child, &byte, 1, 30.0), 1);
+    ck_assert_int_eq(byte, 'r');
+    sw_sandbox_reap(&c, 30.0, &end);
+    ck_assert(end.exited && end.code == 0);
+}
+END_TEST
+
 START_TEST(sandbox_watchdog_stops_a_loop)
 {
     sw_child c;
@@ -411,6 +443,7 @@ Suite *make_grade_suite(void)
     TCase *tc = tcase_create("sandbox");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, sandbox_says_how_a_child_ended);
+    tcase_add_test(tc, sandbox_child_whose_setup_fails_never_runs);
     tcase_add_test(tc, sandbox_watchdog_stops_a_loop);
     tcase_add_test(tc, sandbox_cpu_limit);
     tcase_add_test(tc, sandbox_memory_limit);

@@ -57,7 +57,9 @@ static void workprec_message(sw_app *a)
                                 : "work-precision: error against wall time (w closes)");
 }
 
-void sw_app_sweep_poll(sw_app *a)
+/* The work-precision sweep's worker: take its report when it is done
+ * (every frame; sw_app_advance calls it). */
+static void sw_app_sweep_poll(sw_app *a)
 {
     sw_bench_report *r;
     char why[SW_ERRLEN];

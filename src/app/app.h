@@ -182,9 +182,7 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson);
 /* Advance by wall seconds: simulated time wall·speed in whole steps of dt,
  * stopping early after max_steps steps per sim (then slowmo > 1). */
 void sw_app_advance(sw_app *a, double wall, long max_steps);
-/* The work-precision sweep's worker: take its report when it is done (every
- * frame; sw_app_advance calls it), or wait for it (tests). */
-void sw_app_sweep_poll(sw_app *a);
+/* The work-precision sweep's worker: wait for its report (tests). */
 void sw_app_sweep_wait(sw_app *a);
 /* Back to t = 0 for every sim. */
 void sw_app_reset(sw_app *a);

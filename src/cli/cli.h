@@ -68,9 +68,6 @@ int sw_cli_add_set(sw_run_opts *o, const char *assignment);
 /* Load a --plugin shared object (or C source, built first) and register
  * its integrator; the plugin runs in child processes (plugin/plugin.h). */
 int sw_cli_plugin(const char *path);
-/* Compile a plugin's C source with the documented flags into a private
- * temporary directory (removed at exit); the .so's path into so. */
-int sw_cli_build_plugin(const char *src, char *so, size_t solen);
 int sw_cmd_grade(int argc, char **argv);
 /* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
 int sw_cmd_autograder(int argc, char **argv);

@@ -444,30 +444,104 @@ static int grade_parse(int argc, char **argv, grade_opts *o, char **wargv)
     return rc;
 }
 
+/* The submissions the command line names, into list, and every check that
+ * comes before grading: the outputs' paths, the feedback directory, the
+ * gradebook to update, the roster, the students' keys, a jail for
+ * plugins. SW_EXIT_OK, or an exit status with the error printed. */
+static int grade_gather(grade_opts *o, grade_list *list, const struct stat *asg_st)
+{
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    int rc = SW_EXIT_OK;
+    if (o->roster)
+        rc = grade_roster_load(list, o->roster);
+    if (rc == SW_EXIT_OK && o->metadata)
+        rc = grade_read_submission_metadata(list, o->metadata);
+    for (int i = 0; rc == SW_EXIT_OK && i < o->nfiles; i++)
+        rc = grade_collect(list, o->files[i], asg_st);
+    if (rc == SW_EXIT_OK && list->n + list->ignored == 0 && !o->gradescope)
+        rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
+                          ".so or .c)");
+    if (rc == SW_EXIT_OK && o->gradescope && o->results)
+        rc = sw_cli_error("grade: --gradescope and --results are two forms of results.json; give "
+                          "one");
+    const char *const out_opts[] = { "--csv", o->gradescope ? "--gradescope" : "--results", "--gradebook", "--lms" };
+    const char *const out_paths[] = { o->csv, o->gradescope ? o->gradescope : o->results, o->gradebook, o->lms };
+    if (rc == SW_EXIT_OK)
+        rc = grade_check_outputs(list, asg_st, out_opts, out_paths, 4);
+    if (rc == SW_EXIT_OK && o->feedback)
+        rc = grade_feedback_check(list, o->feedback);
+    if (rc == SW_EXIT_OK)
+        rc = grade_book_load(list, o->csv);
+    if (rc == SW_EXIT_OK)
+        rc = grade_roster_missing(list);
+    if (rc == SW_EXIT_OK)
+        rc = grade_student_keys_check(list);
+    for (int i = 0; rc == SW_EXIT_OK && i < list->n; i++)
+        if (list->items[i].plugin && sw_sandbox_probe(err, sizeof err) != SW_OK)
+            rc = sw_cli_error("grade: plugins are run isolated, and %s", err);
+    return rc;
+}
+
+/* Grade the gathered list and write every output; the exit status. */
+static int grade_run(grade_opts *o, grade_list *list, sw_homework *hw, char **wargv)
+{
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    int rc = SW_EXIT_OK;
+    /* the workers build their jails the way the probe found works here */
+    if (sw_jail_enabled() && sw_jail_kind_now() == SW_JAIL_UID)
+        setenv("STEPWISE_JAIL", "uid", 1);
+    o->base.assignment = &hw->parts[0].a;
+    if (!(o->wall > 0))
+        o->wall = GRADE_WALL(o->lim.cpu_seconds);
+    char build_dir[PATH_MAX];
+    if (sw_tmpdir_make("grade", build_dir, sizeof build_dir, err, sizeof err) != SW_OK)
+        return sw_cli_error("grade: %s", err);
+    sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
+    grade_print_head(hw, list);
+    double start = sw_sandbox_now();
+    if (o->jobs == 0) {
+        long cores = sysconf(_SC_NPROCESSORS_ONLN);
+        o->jobs = cores < 1 ? 1 : cores > 256 ? 256 : (int)cores;
+    }
+    if (o->jobs > list->n)
+        o->jobs = list->n > 0 ? list->n : 1;
+    grade_job proto = { NULL, 0, build_dir, 0, &o->base, o->lim.output_bytes, list, o->similarity, &o->lim, o->wargc,
+                        wargv, hw, "" };
+    sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
+    grade_all(list, &proto, o->wall, o->jobs);
+    sw_sandbox_kill_orphans(); /* before any result is written */
+    grade_clean_dir(build_dir, list->n);
+    if (!sw_signal_caught)
+        rc = grade_similar_run(list);
+    if (sw_signal_caught) {
+        sw_cli_note("grading interrupted; no gradebook written");
+        sw_signals_reraise(sw_signal_caught);
+        return SW_EXIT_USAGE;
+    }
+    double seconds = sw_sandbox_now() - start;
+    if (rc == SW_EXIT_OK)
+        rc = grade_finish(list, &o->lim, o->wall, seconds, o->csv, o->results);
+    if (rc != SW_EXIT_USAGE && (o->gradebook || o->lms)) {
+        int brc = grade_students_write(list, o->gradebook, o->lms);
+        if (brc != SW_EXIT_OK)
+            rc = brc;
+    }
+    if (o->gradescope) {
+        int grc = grade_write_gradescope(list, hw, o->gradescope, seconds, sw_jail_enabled());
+        if (grc != SW_EXIT_OK)
+            rc = grc;
+    }
+    return rc;
+}
+
 /* The command; wargv (argc + 2 long) receives what a plugin's worker is
  * started with. */
 static int grade_command(int argc, char **argv, char **wargv)
 {
-    /* a plugin's worker, started again as a program (grade.h) */
-    const char *w_build = NULL, *w_path = NULL, *w_student = NULL;
-    int w_index = -1, w_similarity = 0;
-    if (argc > 1 && strcmp(argv[1], GRADE_WORKER_FLAG) == 0) {
-        /* only as grade starts it: its channel on descriptor 3, the mark
-         * in its environment (a file named "--worker" in a teacher's glob
-         * is neither) */
-        struct stat ch;
-        const char *mark = getenv("STEPWISE_GRADE_WORKER");
-        if (argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
-            return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
-                                "option (to grade a file of that name, give it after --)");
-        w_index = atoi(argv[2]);
-        w_build = argv[3];
-        w_path = argv[4];
-        w_similarity = atoi(argv[5]);
-        w_student = argv[6];
-        argc -= 6;
-        argv += 6;
-    }
+    grade_worker_args w;
+    int wrc = grade_worker_mode(&argc, &argv, &w);
+    if (wrc != SW_EXIT_OK)
+        return wrc;
     static grade_opts o;
     memset(&o, 0, sizeof o);
     char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
@@ -481,21 +555,21 @@ static int grade_command(int argc, char **argv, char **wargv)
     if (rc == SW_EXIT_OK && !o.assignment)
         rc = sw_cli_error("grade needs --assignment A (an assignment file or a reference trace); "
                           "see 'stepwise grade --help'");
-    if (rc == SW_EXIT_OK && o.nfiles == 0 && !w_path)
+    if (rc == SW_EXIT_OK && o.nfiles == 0 && !w.path)
         rc = sw_cli_error("grade needs submissions: FILES... or a DIR");
     static sw_homework hw;
     struct stat asg_st;
     if (rc == SW_EXIT_OK && (sw_homework_read(&hw, o.assignment, NULL, err, sizeof err) != SW_OK ||
                              stat(o.assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
-    if (w_path) {
+    if (w.path) {
         free(o.files);
         if (rc != SW_EXIT_OK)
             return rc;
         o.base.assignment = &hw.parts[0].a;
         sw_decimal_init();
-        grade_job job = { w_path, 1, w_build, w_index, &o.base, o.lim.output_bytes, NULL, w_similarity, &o.lim, 0, NULL,
-                          &hw, w_student };
+        grade_job job = { w.path, 1, w.build, w.index, &o.base, o.lim.output_bytes, NULL, w.similarity, &o.lim, 0, NULL,
+                          &hw, w.student };
         return grade_worker(&job, 3, 3);
     }
     grade_list list = { 0 };
@@ -503,87 +577,11 @@ static int grade_command(int argc, char **argv, char **wargv)
     list.fresh = o.fresh;
     list.similarity = o.similarity;
     list.feedback = o.feedback;
-    if (rc == SW_EXIT_OK && o.roster)
-        rc = grade_roster_load(&list, o.roster);
-    if (rc == SW_EXIT_OK && o.metadata)
-        rc = grade_read_submission_metadata(&list, o.metadata);
-    for (int i = 0; rc == SW_EXIT_OK && i < o.nfiles; i++)
-        rc = grade_collect(&list, o.files[i], &asg_st);
+    if (rc == SW_EXIT_OK)
+        rc = grade_gather(&o, &list, &asg_st);
     free(o.files);
-    if (rc == SW_EXIT_OK && list.n + list.ignored == 0 && !o.gradescope)
-        rc = sw_cli_error("grade: no submissions found (traces end in .trace or .csv, plugins in "
-                          ".so or .c)");
-    if (rc == SW_EXIT_OK && o.gradescope && o.results)
-        rc = sw_cli_error("grade: --gradescope and --results are two forms of results.json; give "
-                          "one");
-    const char *const out_opts[] = { "--csv", o.gradescope ? "--gradescope" : "--results", "--gradebook", "--lms" };
-    const char *const out_paths[] = { o.csv, o.gradescope ? o.gradescope : o.results, o.gradebook, o.lms };
     if (rc == SW_EXIT_OK)
-        rc = grade_check_outputs(&list, &asg_st, out_opts, out_paths, 4);
-    if (rc == SW_EXIT_OK && o.feedback)
-        rc = grade_feedback_check(&list, o.feedback);
-    if (rc == SW_EXIT_OK)
-        rc = grade_book_load(&list, o.csv);
-    if (rc == SW_EXIT_OK)
-        rc = grade_roster_missing(&list);
-    if (rc == SW_EXIT_OK)
-        rc = grade_student_keys_check(&list);
-    if (rc != SW_EXIT_OK) {
-        grade_list_free(&list);
-        return rc;
-    }
-    for (int i = 0; i < list.n; i++)
-        if (list.items[i].plugin && sw_sandbox_probe(err, sizeof err) != SW_OK) {
-            grade_list_free(&list);
-            return sw_cli_error("grade: plugins are run isolated, and %s", err);
-        }
-    /* the workers build their jails the way the probe found works here */
-    if (sw_jail_enabled() && sw_jail_kind_now() == SW_JAIL_UID)
-        setenv("STEPWISE_JAIL", "uid", 1);
-    o.base.assignment = &hw.parts[0].a;
-    if (!(o.wall > 0))
-        o.wall = GRADE_WALL(o.lim.cpu_seconds);
-    char build_dir[PATH_MAX];
-    if (sw_tmpdir_make("grade", build_dir, sizeof build_dir, err, sizeof err) != SW_OK) {
-        grade_list_free(&list);
-        return sw_cli_error("grade: %s", err);
-    }
-    sw_signals_catch(); /* the sandbox's waits end on a caught signal too */
-    grade_print_head(&hw, &list);
-    double start = sw_sandbox_now();
-    if (o.jobs == 0) {
-        long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        o.jobs = cores < 1 ? 1 : cores > 256 ? 256 : (int)cores;
-    }
-    if (o.jobs > list.n)
-        o.jobs = list.n > 0 ? list.n : 1;
-    grade_job proto = { NULL, 0, build_dir, 0, &o.base, o.lim.output_bytes, &list, o.similarity, &o.lim, o.wargc, wargv,
-                        &hw, "" };
-    sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
-    grade_all(&list, &proto, o.wall, o.jobs);
-    sw_sandbox_kill_orphans(); /* before any result is written */
-    grade_clean_dir(build_dir, list.n);
-    if (!sw_signal_caught)
-        rc = grade_similar_run(&list);
-    if (sw_signal_caught) {
-        sw_cli_note("grading interrupted; no gradebook written");
-        grade_list_free(&list);
-        sw_signals_reraise(sw_signal_caught);
-        return SW_EXIT_USAGE;
-    }
-    double seconds = sw_sandbox_now() - start;
-    if (rc == SW_EXIT_OK)
-        rc = grade_finish(&list, &o.lim, o.wall, seconds, o.csv, o.results);
-    if (rc != SW_EXIT_USAGE && (o.gradebook || o.lms)) {
-        int brc = grade_students_write(&list, o.gradebook, o.lms);
-        if (brc != SW_EXIT_OK)
-            rc = brc;
-    }
-    if (o.gradescope) {
-        int grc = grade_write_gradescope(&list, &hw, o.gradescope, seconds, sw_jail_enabled());
-        if (grc != SW_EXIT_OK)
-            rc = grc;
-    }
+        rc = grade_run(&o, &list, &hw, wargv);
     grade_list_free(&list);
     return rc;
 }

@@ -222,6 +222,19 @@ typedef struct grade_job {
  * plugin runs from. ARGS are the grade command's own. */
 #define GRADE_WORKER_FLAG "--worker"
 
+/* Those arguments after GRADE_WORKER_FLAG (start_clean in grade_worker.c
+ * writes them). */
+typedef struct grade_worker_args {
+    const char *build, *path, *student; /* path NULL: not a worker */
+    int index, similarity;
+} grade_worker_args;
+
+/* grade_worker.c: the worker's arguments taken off the front of *argc,
+ * *argv into w when the command is a worker's (w->path NULL when not);
+ * SW_EXIT_OK, or SW_EXIT_USAGE with the error printed where the flag is
+ * there but the command is not grade's own start of a worker. */
+int grade_worker_mode(int *argc, char ***argv, grade_worker_args *w);
+
 /* grade_worker.c: a submission's worker, the child that checks it (an
  * sw_child_fn, ctx a grade_job) and sends back a grade_record. */
 int grade_worker(void *ctx, int in, int out);

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli/check_report.h"
@@ -89,6 +90,26 @@ static void start_clean(const grade_job *job)
     int e = errno;
     free(args);
     errno = e;
+}
+
+int grade_worker_mode(int *argc, char ***argv, grade_worker_args *w)
+{
+    char **a = *argv;
+    *w = (grade_worker_args){ .index = -1 };
+    if (*argc <= 1 || strcmp(a[1], GRADE_WORKER_FLAG) != 0)
+        return SW_EXIT_OK;
+    /* only as grade starts it: its channel on descriptor 3, the mark in its
+     * environment (a file named "--worker" in a teacher's glob is neither) */
+    struct stat ch;
+    const char *mark = getenv("STEPWISE_GRADE_WORKER");
+    if (*argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
+        return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
+                            "option (to grade a file of that name, give it after --)");
+    *w = (grade_worker_args){ .index = atoi(a[2]), .build = a[3], .path = a[4], .similarity = atoi(a[5]),
+                              .student = a[6] };
+    *argc -= 6;
+    *argv += 6;
+    return SW_EXIT_OK;
 }
 
 /* The mistake in a few words: explanation, plugin failure, header, values. */

@@ -16,7 +16,9 @@
 static char build_dir[PATH_MAX];
 static pid_t build_dir_owner;
 
-int sw_cli_build_plugin(const char *src, char *so, size_t solen)
+/* Compile a plugin's C source with the documented flags into a private
+ * temporary directory (removed at exit); the .so's path into so. */
+static int sw_cli_build_plugin(const char *src, char *so, size_t solen)
 {
     static int count;
     char err[SW_ERRLEN + 256], name[16];

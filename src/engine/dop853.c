@@ -4,7 +4,8 @@
  * and the code DOP853). 12 stages; the derivative at the new state is the
  * next step's first stage (FSAL), so a step costs 12 evaluations. Each stage
  * is one loop over the state (over L1-sized slices on pointwise systems);
- * nothing is copied on an accepted step. */
+ * nothing is copied on an accepted step. Its lecture form, the same bits:
+ * sw_ref_dop853 in reference_adaptive.c (read it first). */
 #include "engine/adaptive.h"
 #include "engine/dop853_tableau.h"
 

@@ -11,7 +11,8 @@
  * derivative is evaluated anew each step (one more evaluation of the
  * regularised field, a handful of multiplications), and the two changes of
  * variables round each step to a few ulps. The proposal in s is kept in
- * the stepper's h_next, where history keeps it. */
+ * the stepper's h_next, where history keeps it. Its lecture form, the
+ * same bits: sw_ref_dop853_lc in reference_adaptive.c. */
 #include <stdio.h>
 #include <stdlib.h>
 

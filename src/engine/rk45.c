@@ -2,26 +2,14 @@
  * fourth-order error estimate, FSAL, and rtol/atol step control. Each stage
  * is one loop over the state (over L1-sized slices on pointwise systems);
  * nothing is copied on an accepted step. The arithmetic, and so every
- * result, is that of a plain whole-state implementation. */
+ * result, is that of a plain whole-state implementation: its lecture form,
+ * sw_ref_rk45 in reference_adaptive.c (read it first). */
 #include "engine/adaptive.h"
+#include "engine/rk45_tableau.h"
 
 #include <math.h>
 
 #include "stepwise/base.h"
-
-/* Dormand–Prince 5(4) tableau; zero entries left out. */
-static const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
-static const double A21 = 1.0 / 5;
-static const double A31 = 3.0 / 40, A32 = 9.0 / 40;
-static const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
-static const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
-static const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176,
-                    A65 = -5103.0 / 18656;
-/* b (fifth order), the last stage's row too (FSAL) */
-static const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
-/* e = b - b̂ (b̂ fourth order) */
-static const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200,
-                    E6 = 22.0 / 525, E7 = -1.0 / 40;
 
 /* Slots: k1 and k7 alternate between 0 and 6 (FSAL). */
 enum { S_K2 = 1, S_K3, S_K4, S_K5, S_K6, S_K7, S_YT, S_SAVED, RK45_VECTORS };

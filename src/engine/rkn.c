@@ -5,7 +5,8 @@
  * evaluations a step where a first-order Runge-Kutta method needs 7 or
  * more. Error control by the embedded 4th-order solution, through the
  * controller rk45 and dop853 share (adaptive.c); nothing is copied on an
- * accepted step. */
+ * accepted step. Its lecture form, the same bits: sw_ref_rkn in
+ * reference_adaptive.c (read it first). */
 #include "engine/adaptive.h"
 #include "engine/clones.h"
 

@@ -5,7 +5,8 @@
  * Where rkn (6th order, 5 evaluations) or dop853 (8th, 12) need many small
  * steps — tolerances of 1e-8 and tighter, a close encounter — its steps
  * are several times longer. Error control by the controller rk45, dop853
- * and rkn share (adaptive.c); nothing is copied on an accepted step. */
+ * and rkn share (adaptive.c); nothing is copied on an accepted step. Its
+ * lecture form, the same bits: sw_ref_rkn12 in reference_adaptive.c. */
 #include "engine/adaptive.h"
 #include "engine/clones.h"
 

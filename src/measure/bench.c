@@ -129,13 +129,18 @@ static int reference_run(sw_bench_report *r, double rtol, double atol, double *o
     return rc;
 }
 
+/* sw_bench_init, ending early (SW_EINVAL, "stopped") when another thread
+ * sets stop. */
+static int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
+                                   char *err, size_t errlen);
+
 int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen)
 {
     return sw_bench_init_stoppable(r, sc, p, NULL, err, errlen);
 }
 
-int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
-                            char *err, size_t errlen)
+static int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
+                                   char *err, size_t errlen)
 {
     memset(r, 0, sizeof *r);
     r->stop = stop;

@@ -182,9 +182,6 @@ int sw_bench_measurable(const sw_scene *sc, const double *p, char *why, size_t w
  * (rtol 1e-12, atol 1e-14) computed once here. 0, SW_EINVAL (no reference),
  * SW_ENOMEM or SW_EDIVERGED (the reference run failed). r is freed on failure. */
 int sw_bench_init(sw_bench_report *r, const sw_scene *sc, const double *p, char *err, size_t errlen);
-/* ... that ends early (SW_EINVAL, "stopped") when another thread sets stop. */
-int sw_bench_init_stoppable(sw_bench_report *r, const sw_scene *sc, const double *p, const atomic_int *stop,
-                            char *err, size_t errlen);
 void sw_bench_free(sw_bench_report *r);
 
 /* Sweep method m and append its series to r, with its fitted order. 0, or

@@ -148,7 +148,8 @@ void sw_host_stop(sw_plugin_entry *e)
     sw_host_cmd quit;
     memset(&quit, 0, sizeof quit);
     quit.op = SW_HOST_QUIT;
-    sw_sandbox_write(h->child.to_child, &quit, sizeof quit);
+    /* a host that cannot be told (gone already) is reaped, or killed, below all the same */
+    (void)sw_sandbox_write(h->child.to_child, &quit, sizeof quit);
     sw_child_end end;
     sw_sandbox_reap(&h->child, 0.5, &end);
     h->alive = 0;

@@ -412,7 +412,9 @@ static void box_release(sw_stepper *s)
         memset(&c, 0, sizeof c);
         c.op = SW_HOST_CLOSE;
         c.slot = b->slot;
-        sw_sandbox_write(h->child.to_child, &c, sizeof c);
+        /* a host that cannot be told is gone, its slots with it: the next
+         * command to it finds that and says so */
+        (void)sw_sandbox_write(h->child.to_child, &c, sizeof c);
         h->slots &= ~(1ull << b->slot);
     }
     box_free(b);

@@ -49,6 +49,19 @@ needs_jail() {
     fi
 }
 
+# build_dir: the build directory $SW was made in, for a test that reads
+# the objects: SW_BUILD, else the binary's own directory where its objects
+# are beside it (make sanitize's build/san), else build/ (the binary at the top).
+build_dir() {
+    if [ -n "${SW_BUILD:-}" ]; then
+        echo "$SW_BUILD"
+    elif [ -f "$(dirname "$SW")/src/main.o" ]; then
+        dirname "$SW"
+    else
+        echo "$ROOT/build"
+    fi
+}
+
 fail() {
     echo "FAIL: $*"
     if [ "$TMUX_STARTED" = 1 ]; then

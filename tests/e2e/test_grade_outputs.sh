@@ -144,6 +144,59 @@ bad_number() { # OPTION VALUE WANT
     [ "$rc" -eq 2 ] && [ ! -s out ] && [ "$(wc -l < err)" -eq 1 ] && grep -qF -- "$3" err \
         || fail "grade $1 $2: exit $rc, want 2 with '$3': $(cat out err)"
 }
+# --worker is how grade starts a plugin's worker again as a program, never
+# an option: without its mark in the environment, or with the mark but no
+# channel (a socket) on descriptor 3, it is refused in one line.
+for mark in "" 1; do
+    STEPWISE_GRADE_WORKER=$mark "$SW" grade --worker 1 build class/alice.trace 0 "" --assignment ref.trace \
+        >out 2>err 3>/dev/null; rc=$?
+    [ "$rc" -eq 2 ] && [ ! -s out ] && [ "$(wc -l < err)" -eq 1 ] &&
+        grep -qF -- "--worker is how grade starts a plugin's worker, not an option" err ||
+        fail "grade --worker (mark '$mark'): exit $rc, want 2 and the refusal: $(cat out err)"
+done
+# A worker whose record cannot be sent (the grader gone, its channel
+# closed) ends with status 1, which the grader records as the worker's
+# end, not 0 as if it had reported (issue 39). Here a plugin's worker,
+# started as grade starts it, gets a trace assignment (so it sends a
+# "wrong kind" record at once) on a socket whose other end is closed;
+# with the other end open it sends its record and ends 0.
+if command -v python3 >/dev/null 2>&1; then
+    for peer in closed open; do
+        got=$(python3 - "$SW" "$peer" <<'EOF'
+import os, socket, sys
+sw, peer = sys.argv[1], sys.argv[2]
+mine, theirs = socket.socketpair()
+if peer == "closed":
+    mine.close()
+pid = os.fork()
+if pid == 0:
+    os.dup2(theirs.fileno(), 3)
+    env = dict(os.environ, STEPWISE_GRADE_WORKER="1")
+    out = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(out, 1)
+    os.dup2(out, 2)
+    os.execve(sw, [sw, "grade", "--worker", "0", ".", "sub.c", "0", "", "--assignment", "ref.trace"], env)
+theirs.close()
+received = 0
+if peer == "open":
+    while True:
+        part = mine.recv(65536)
+        if not part:
+            break
+        received += len(part)
+_, status = os.waitpid(pid, 0)
+print(os.waitstatus_to_exitcode(status), received)
+EOF
+        ) || fail "the worker's channel harness failed"
+        case $peer in
+        closed) [ "${got% *}" = 1 ] || fail "a worker whose record cannot be sent: status and bytes '$got', want status 1" ;;
+        open) [ "${got% *}" = 0 ] && [ "${got#* }" -gt 0 ] ||
+            fail "a worker with its channel open: status and bytes '$got', want status 0 and its record" ;;
+        esac
+    done
+else
+    echo "skip: a worker's failed write: no python3 to give it a closed channel"
+fi
 bad_number --cpu 1e308 "--cpu must be between 0.1 and 3600 seconds"
 bad_number --cpu nan "--cpu must be between 0.1 and 3600 seconds"
 bad_number --cpu inf "--cpu must be between 0.1 and 3600 seconds"

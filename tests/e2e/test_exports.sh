@@ -27,16 +27,14 @@ kept="main sw_scene_flow aligned_alloc memalign posix_memalign pvalloc valloc"
 lonely() {
     defs_dir=$1
     shift
-    find "$defs_dir" -name '*.o' | sort | while IFS= read -r o; do
-        nm -g --defined-only "$o" | awk -v o="$o" '$2 == "T" { print $3, o }'
-    done | sort >"$WORK/defs" || fail "nm failed on $defs_dir"
-    find "$@" -name '*.o' | while IFS= read -r o; do
-        nm -u "$o" | awk '{ print $NF }'
-    done | sort -u >"$WORK/uses" || fail "nm failed"
-    awk '{ print $1 }' "$WORK/defs" | sort -u | comm -23 - "$WORK/uses" >"$WORK/lonely"
-    while IFS= read -r name; do
-        awk -v n="$name" '$1 == n { print $1, $2; exit }' "$WORK/defs"
-    done <"$WORK/lonely"
+    # one nm for all the objects (-A: each line starts with its file)
+    find "$defs_dir" -name '*.o' -print0 | sort -z | xargs -0 nm -A -g --defined-only \
+        | awk '$2 == "T" { o = $1; sub(/:[^:]*$/, "", o); print $3, o }' >"$WORK/defs" || fail "nm failed on $defs_dir"
+    find "$@" -name '*.o' -print0 | xargs -0 nm -u | awk 'NF && $NF !~ /:$/ { print $NF }' \
+        | sort -u >"$WORK/uses" || fail "nm failed"
+    # the first object defining each name no object uses
+    awk 'NR == FNR { used[$1] = 1; next } !($1 in used) && !($1 in seen) { seen[$1] = 1; print $1, $2 }' \
+        "$WORK/uses" "$WORK/defs"
 }
 
 # The checker itself: one function called from another object, one not,

@@ -136,7 +136,7 @@ static void dop853_range4(DOP853_ARGS)
 
 /* Six components, dop853-lc's regularised state [u, u', h, t]: every
  * loop unrolled, with no loop control (the same operations as any len). */
-SW_CLONES static void dop853_range6(DOP853_ARGS)
+static void dop853_range6(DOP853_ARGS)
 {
     (void)len;
     dop853_body(DOP853_PASS(6));

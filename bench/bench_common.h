@@ -78,7 +78,8 @@ struct sw_integrator;
 int bench_lc_run(const struct sw_integrator *m, struct sw_ode *ode, const double *y0, double T, double tol,
                  double *y, double *seconds, long *evals);
 /* For callgrind: `runs` runs of the orbit at e = 0.9 to its report time at
- * tol, by "dop853-lc" or "rk8pd-lc" (bench_lc.c); 0, or 1. */
+ * tol, by "dop853-lc" or "rk8pd-lc", or their set-up alone ("setup")
+ * (bench_lc.c); 0, or 1. */
 int bench_lc_probe(const char *who, double tol, long runs);
 
 /* For counting instructions (bench/instructions.sh): build SCENE at SET

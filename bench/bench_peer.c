@@ -411,10 +411,10 @@ static void side_by_side(problem *pb, const candidate *a, const candidate *b, do
         snprintf(floor, sizeof floor, "%.2f", (double)a->evals * deriv_seconds(pb) / bm);
     snprintf(label, sizeof label, "%s, error %.0e%s", pb->label, target, tag);
     snprintf(line, len,
-             "  | %-36s | %-6s %.3g (%.3g-%.3g) | %-7s %.3g (%.3g-%.3g) | %.2f (%.2f-%.2f) | %.2f | %s | <= %.2f %s |\n",
+             "  | %-25s | %-6s %.3g (%.3g-%.3g) | %-7s %.3g (%.3g-%.3g) | %.2f (%.2f-%.2f) | %.2f | %s | <= %.2f %s |\n",
              label, a->name, am * 1e3, amin * 1e3, amax * 1e3, b->name, bm * 1e3, bmin * 1e3, bmax * 1e3, rm, rmin,
              rmax, (double)a->evals / (double)b->evals, floor, goal, rm <= goal ? "met" : "missed");
-    printf("%s", line); /* as it is measured too, so that a run cut short keeps it */
+    printf("  measured %s", line + 2); /* as it is measured too, so that a run cut short keeps it */
     fflush(stdout);
 }
 

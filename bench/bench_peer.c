@@ -222,7 +222,7 @@ static void problem_free(problem *pb)
 /* Build the problem; the reference is the scene's exact solution where it
  * has one, else GSL's rk8pd at 1e-13 (else dop853 at 1e-14); a second,
  * independent high-accuracy run (dop853 at 1e-13) bounds its error. */
-static int problem_init(problem *pb, const char *scene, const char *set, double goal, char *why,
+static int problem_init(problem *pb, const char *scene, const char *set, double T, double goal, char *why,
                         size_t whylen)
 {
     char err[SW_ERRLEN];
@@ -247,7 +247,7 @@ static int problem_init(problem *pb, const char *scene, const char *set, double 
         snprintf(why, whylen, "%s", err);
         return -1;
     }
-    pb->T = pb->sc->duration;
+    pb->T = T > 0 ? T : pb->sc->duration;
     double cx, cy;
     pb->orbit = strcmp(scene, "orbit") == 0 && pb->sys.kind == SW_SYS_PARTICLES && pb->sys.particles.n == 1 &&
                 pb->sys.particles.mass[0] == 1.0 && sw_particles_central(&pb->sys.particles, &cx, &cy, &pb->mu) &&
@@ -484,17 +484,21 @@ void bench_peer(const bench_peer_opts *o)
     char chain_set[24], vortex_set[24];
     snprintf(chain_set, sizeof chain_set, "n=%d", o->chain_n);
     snprintf(vortex_set, sizeof vortex_set, "n=%d", o->vortex_n);
-    struct problem_row { const char *scene, *set; double goal; } all[] = {
-        { "orbit", "e=0.9", 0.5 },
-        { "chain", "n=10", 0.5 },
-        { "chain", chain_set, o->chain_n >= 100 ? 0.35 : 0.5 },
-        { "vortex", vortex_set, 0.35 },
-    }, stiff[] = { /* issue 41's stiff set, all at <= 0.5 of GSL's best */
-        { "stiff-spring", "k=1e6", 0.5 },
-        { "chain", "n=1,c=1e4", 0.5 },
-        { "chain", "n=10,c=1e4", 0.5 },
-        { "chain", "n=10,k=1e6,c=100,g=9.81", 0.5 },
-        { "chain", "n=100,k=1e6,c=100,g=9.81", 0.5 },
+    /* T: the report time, 0 for the scene's */
+    struct problem_row { const char *scene, *set; double T, goal; } all[] = {
+        { "orbit", "e=0.9", 0, 0.5 },
+        { "chain", "n=10", 0, 0.5 },
+        { "chain", chain_set, 0, o->chain_n >= 100 ? 0.35 : 0.5 },
+        { "vortex", vortex_set, 0, 0.35 },
+    }, stiff[] = { /* issue 41's stiff set, all at <= 0.5 of GSL's best; the
+                    * stiff chains to T = 1 as bench_stiff.c runs them (to the
+                    * scene's 5 the plucked ten-bead chain is chaotic: two
+                    * references at 1e-13 differ by 0.42) */
+        { "stiff-spring", "k=1e6", 0, 0.5 },
+        { "chain", "n=1,c=1e4", 0, 0.5 },
+        { "chain", "n=10,c=1e4", 0, 0.5 },
+        { "chain", "n=10,k=1e6,c=100,g=9.81", 1, 0.5 },
+        { "chain", "n=100,k=1e6,c=100,g=9.81", 1, 0.5 },
     }, probs[5];
     int nprobs = 0;
     for (int w = o->quick ? 2 : 0; !o->stiff && w < 4; w++)
@@ -511,7 +515,7 @@ void bench_peer(const bench_peer_opts *o)
     for (int w = 0; w < nprobs; w++) {
         problem pb;
         char why[SW_ERRLEN];
-        if (problem_init(&pb, probs[w].scene, probs[w].set, probs[w].goal, why, sizeof why) != 0) {
+        if (problem_init(&pb, probs[w].scene, probs[w].set, probs[w].T, probs[w].goal, why, sizeof why) != 0) {
             printf("  %s %s: %s\n", probs[w].scene, probs[w].set, why);
             problem_free(&pb);
             continue;

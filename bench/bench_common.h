@@ -17,6 +17,15 @@ static inline double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The calling thread's CPU time in seconds: what a run costs on a loaded
+ * machine, where the monotonic clock also counts other programs' turns. */
+static inline double thread_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static inline int cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -53,11 +62,25 @@ typedef struct bench_peer_opts {
     int chain_n, vortex_n;
     int quick;          /* error 1e-6 only, fewer searches */
     const char *only;   /* NULL, or the one scene to compare (orbit, chain, vortex) */
+    int stiff;          /* the stiff set instead (issue 41): rodas4 among stepwise's methods */
 } bench_peer_opts;
 
 /* The peer comparison (bench_peer.c): stepwise's cheapest method against
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);
+
+struct sw_ode;
+struct sw_integrator;
+/* Method m (NULL: GSL's rk8pd) on the orbit's Levi-Civita equations,
+ * landed on T by dop853-lc's own landing (bench_lc.c; GSL builds only):
+ * from the one-body system ode's state y0 at 0 to T at rtol = atol = tol,
+ * the state at T into y; 0, or -1 when the run failed. */
+int bench_lc_run(const struct sw_integrator *m, struct sw_ode *ode, const double *y0, double T, double tol,
+                 double *y, double *seconds, long *evals);
+/* For callgrind: `runs` runs of the orbit at e = 0.9 to its report time at
+ * tol, by "dop853-lc" or "rk8pd-lc", or their set-up alone ("setup")
+ * (bench_lc.c); 0, or 1. */
+int bench_lc_probe(const char *who, double tol, long runs);
 
 /* For counting instructions (bench/instructions.sh): build SCENE at SET
  * ("e=0.9") and call its derivative `calls` times at the start, as the

@@ -559,6 +559,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--lc-probe") == 0 && i + 3 < argc)
+            return bench_lc_probe(argv[i + 1], atof(argv[i + 2]), atol(argv[i + 3]));
         if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)
             return bench_deriv_probe(argv[i + 1], argv[i + 2], atol(argv[i + 3]), strcmp(argv[i + 4], "generic") == 0);
         if (strcmp(argv[i], "--frame-view") == 0 && i + 4 < argc)
@@ -573,6 +575,9 @@ static int bench_engine_main(int argc, char **argv)
             quick = 1;
         } else if (strcmp(argv[i], "--peer") == 0) {
             sections = 8;
+        } else if (strcmp(argv[i], "--peer-stiff") == 0) {
+            sections = 8;
+            peer.stiff = 1;
         } else if (strcmp(argv[i], "--tree") == 0) {
             sections = 16;
         } else if (strcmp(argv[i], "--implicit") == 0) {
@@ -611,7 +616,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
+                    "--repeats N, --peer, --peer-stiff, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
                     "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE[:NAME=VALUE] N VIEW SECONDS [DT]\n",
                     argv[i]);
             return 2;

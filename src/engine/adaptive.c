@@ -40,6 +40,13 @@ static double first_step(sw_stepper *s, sw_ode *ode, double t, const double *y, 
     return h > 0 ? h : h_max; /* NaN (a non-finite f) falls back to h_max */
 }
 
+/* fmax(lo, x) and fmin(hi, x) as comparisons the compiler keeps inline
+ * (fmax and fmin are library calls without -ffinite-math-only): the same
+ * values, a NaN x giving the bound as they do. The controller calls them
+ * on every step. */
+static inline double at_least(double lo, double x) { return x > lo ? x : lo; }
+static inline double at_most(double hi, double x) { return x < hi ? x : hi; }
+
 /* The trial over the whole state, or slice by slice on pointwise systems
  * (every stage of a slice needs only that slice, and the sums are added in
  * the same order either way). */
@@ -98,11 +105,11 @@ int sw_adaptive_step(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double *t
                  * equal to grow while C stays the same, smaller while it grows
                  * (an orbit falling towards its pericentre) */
                 double trend = m->safety * (h / s->h_last) * pow(s->err_last / (err * err), m->expo);
-                grow = fmin(grow, trend);
+                grow = at_most(grow, trend); /* grow is finite: fmin(grow, trend) */
             }
             s->h_last = h;
-            s->err_last = m->predict ? fmax(0.01, err) : 0;
-            s->h_next = h * fmin(m->fac_max, fmax(m->fac_min, grow));
+            s->err_last = m->predict ? at_least(0.01, err) : 0;
+            s->h_next = h * at_most(m->fac_max, at_least(m->fac_min, grow));
             if (m->hold && rejected && s->h_next > h)
                 s->h_next = h;
             s->accepted++;
@@ -113,8 +120,8 @@ int sw_adaptive_step(const sw_adaptive *m, sw_stepper *s, sw_ode *ode, double *t
         memcpy(y, saved, (size_t)n * sizeof *y);
         s->rejected++;
         rejected = 1;
-        h *= fmax(m->fac_min, grow);
-        if (h < 1e-14 * fmax(1.0, fabs(*t)))
+        h *= at_least(m->fac_min, grow);
+        if (h < 1e-14 * at_least(1.0, fabs(*t)))
             break;
     }
     return SW_EDIVERGED;

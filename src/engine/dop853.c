@@ -44,45 +44,46 @@ SW_INLINE void dop853_body(sw_ode *ode, double t, double *restrict y, double h, 
                          double *restrict yt, double *restrict saved, sw_trial_sums *sums)
 {
     int i;
+    sw_evaluator f = sw_evaluator_of(ode);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A2_1 * k1[i]);
-    sw_eval_slice(ode, t + DP8_C2 * h, len, yt, k2);
+    sw_eval_with(&f, t + DP8_C2 * h, len, yt, k2);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A3_1 * k1[i] + DP8_A3_2 * k2[i]);
-    sw_eval_slice(ode, t + DP8_C3 * h, len, yt, k3);
+    sw_eval_with(&f, t + DP8_C3 * h, len, yt, k3);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A4_1 * k1[i] + DP8_A4_3 * k3[i]);
-    sw_eval_slice(ode, t + DP8_C4 * h, len, yt, k4);
+    sw_eval_with(&f, t + DP8_C4 * h, len, yt, k4);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A5_1 * k1[i] + DP8_A5_3 * k3[i] + DP8_A5_4 * k4[i]);
-    sw_eval_slice(ode, t + DP8_C5 * h, len, yt, k5);
+    sw_eval_with(&f, t + DP8_C5 * h, len, yt, k5);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A6_1 * k1[i] + DP8_A6_4 * k4[i] + DP8_A6_5 * k5[i]);
-    sw_eval_slice(ode, t + DP8_C6 * h, len, yt, k6);
+    sw_eval_with(&f, t + DP8_C6 * h, len, yt, k6);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A7_1 * k1[i] + DP8_A7_4 * k4[i] + DP8_A7_5 * k5[i] + DP8_A7_6 * k6[i]);
-    sw_eval_slice(ode, t + DP8_C7 * h, len, yt, k7);
+    sw_eval_with(&f, t + DP8_C7 * h, len, yt, k7);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A8_1 * k1[i] + DP8_A8_4 * k4[i] + DP8_A8_5 * k5[i] + DP8_A8_6 * k6[i] +
                             DP8_A8_7 * k7[i]);
-    sw_eval_slice(ode, t + DP8_C8 * h, len, yt, k8);
+    sw_eval_with(&f, t + DP8_C8 * h, len, yt, k8);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A9_1 * k1[i] + DP8_A9_4 * k4[i] + DP8_A9_5 * k5[i] + DP8_A9_6 * k6[i] +
                             DP8_A9_7 * k7[i] + DP8_A9_8 * k8[i]);
-    sw_eval_slice(ode, t + DP8_C9 * h, len, yt, k9);
+    sw_eval_with(&f, t + DP8_C9 * h, len, yt, k9);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A10_1 * k1[i] + DP8_A10_4 * k4[i] + DP8_A10_5 * k5[i] + DP8_A10_6 * k6[i] +
                             DP8_A10_7 * k7[i] + DP8_A10_8 * k8[i] + DP8_A10_9 * k9[i]);
-    sw_eval_slice(ode, t + DP8_C10 * h, len, yt, k10);
+    sw_eval_with(&f, t + DP8_C10 * h, len, yt, k10);
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A11_1 * k1[i] + DP8_A11_4 * k4[i] + DP8_A11_5 * k5[i] + DP8_A11_6 * k6[i] +
                             DP8_A11_7 * k7[i] + DP8_A11_8 * k8[i] + DP8_A11_9 * k9[i] + DP8_A11_10 * k10[i]);
-    sw_eval_slice(ode, t + DP8_C11 * h, len, yt, k2); /* k11 */
+    sw_eval_with(&f, t + DP8_C11 * h, len, yt, k2); /* k11 */
     for (i = 0; i < len; i++)
         yt[i] = y[i] + h * (DP8_A12_1 * k1[i] + DP8_A12_4 * k4[i] + DP8_A12_5 * k5[i] + DP8_A12_6 * k6[i] +
                             DP8_A12_7 * k7[i] + DP8_A12_8 * k8[i] + DP8_A12_9 * k9[i] + DP8_A12_10 * k10[i] +
                             DP8_A12_11 * k2[i]);
-    sw_eval_slice(ode, t + h, len, yt, k3); /* k12 */
+    sw_eval_with(&f, t + h, len, yt, k3); /* k12 */
     /* The new state in place (the old one saved for a retry), its runaway
      * test, and both error terms, each scaled by sk = atol + rtol·max(|y0|,
      * |y1|) and squared, into k5 and k4 (free until the FSAL evaluation
@@ -107,7 +108,7 @@ SW_INLINE void dop853_body(sw_ode *ode, double t, double *restrict y, double h, 
     sums->err = sw_add_by4(sums->part[0], k5, len);
     sums->err3 = sw_add_by4(sums->part[1], k4, len);
     sums->beyond |= sw_beyond_any(over);
-    sw_eval_slice(ode, t + h, len, y, k4); /* FSAL: the next step's k1 */
+    sw_eval_with(&f, t + h, len, y, k4); /* FSAL: the next step's k1 */
 }
 
 #define DOP853_ARGS                                                                                \
@@ -134,12 +135,20 @@ static void dop853_range4(DOP853_ARGS)
     dop853_body(DOP853_PASS(4));
 }
 
+/* Six components, dop853-lc's regularised state [u, u', h, t]: every
+ * loop unrolled, with no loop control (the same operations as any len). */
+static void dop853_range6(DOP853_ARGS)
+{
+    (void)len;
+    dop853_body(DOP853_PASS(6));
+}
+
 /* The FSAL pair (k1 and k4's slots) and the saved state are state-long
  * (they outlive a slice); the other stage vectors are slice-local. */
 static void dop853_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double h, int lo, int hi,
                          unsigned elim, sw_trial_sums *sums)
 {
-    dop853_range_fn *range = hi - lo == 4 ? dop853_range4 : dop853_range;
+    dop853_range_fn *range = hi - lo == 4 ? dop853_range4 : hi - lo == 6 ? dop853_range6 : dop853_range;
     range(ode, t, y + lo, h, hi - lo, elim, s->atol, s->rtol, SW_WORK(s, s->fsal) + lo, SW_WORK(s, S_K2),
                  SW_WORK(s, S_K3), SW_WORK(s, s->fsal ? 0 : S_K4) + lo, SW_WORK(s, S_K5), SW_WORK(s, S_K6),
                  SW_WORK(s, S_K7), SW_WORK(s, S_K8), SW_WORK(s, S_K9), SW_WORK(s, S_K10), SW_WORK(s, S_YT),

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "engine/central.h"
 #include "engine/regularise.h"
 #include "stepwise/base.h"
 
@@ -59,8 +60,14 @@ int sw_step_dop853_lc(sw_stepper *s, sw_ode *ode, double *t, double *y, double h
     lc_run *r = s->inner;
     char err[SW_ERRLEN];
     double w[SW_LC_DIM];
-    /* the field as the system holds it now (its centre and mu) */
-    if (sw_lc_init_central(&r->lc, ode, err, sizeof err) != SW_OK) {
+    /* the field as the system holds it now (its centre and mu): where it is
+     * the one the run was made for, only the evaluations are cleared (all
+     * that sw_lc_init would change), else the run is made anew */
+    sw_central1 c;
+    if (ode == r->lc.base && ode->dim == 4 && sw_ode_central1(ode, &c) && c.cx == r->lc.cx && c.cy == r->lc.cy &&
+        c.mu * c.mass * c.inv == r->lc.mu)
+        r->lc.ode.evals = 0;
+    else if (sw_lc_init_central(&r->lc, ode, err, sizeof err) != SW_OK) {
         s->why = "dop853-lc: the system is no longer one body alone in one central field";
         return SW_EINVAL;
     }

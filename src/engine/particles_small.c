@@ -46,7 +46,7 @@ SW_INLINE void small_eval(const sw_particles *p, const double *restrict y, doubl
     int n = one ? 1 : p->n;
     const double *x = y, *v = y + 2 * n;
     double *force = m->force;
-    if (springs) {
+    if (springs && !one) {
         for (int j = 0; j < m->npair; j++) {
             int a = m->a[j], b = m->b[j];
             spring_force(m, j, x[a] - x[b], x[a + 1] - x[b + 1], damped ? v[a] - v[b] : 0.0,
@@ -63,9 +63,28 @@ SW_INLINE void small_eval(const sw_particles *p, const double *restrict y, doubl
     double cx = c->cx, cy = c->cy, mu = c->mu, gx = m->gx, gy = m->gy, kd = m->kdrag;
     for (int i = 0; i < n; i++) {
         double fx = 0.0, fy = 0.0;
-        for (int e = springs ? m->first[i] : 0; springs && e < m->first[i + 1]; e++) {
+        for (int e = springs ? m->first[i] : 0; springs && !one && e < m->first[i + 1]; e++) {
             fx += m->sign[e] * force[m->spring[e]];
             fy += m->sign[e] * force[m->spring[e] + 1];
+        }
+        /* One particle: each spring of its list computed where it is summed,
+         * the force kept in registers (no store to m->force and load back on
+         * the way from the state to the derivative); the same operations in
+         * the same order (a spring listed twice is computed twice, the same
+         * bits). */
+        for (int e = springs ? m->first[0] : 0; springs && one && e < m->first[1]; e++) {
+            int j = m->spring[e] / 2, a = m->a[j];
+            double sx, sy;
+            if (j < m->npair) {
+                int b = m->b[j];
+                spring_force(m, j, x[a] - x[b], x[a + 1] - x[b + 1], damped ? v[a] - v[b] : 0.0,
+                             damped ? v[a + 1] - v[b + 1] : 0.0, damped, &sx, &sy);
+            } else {
+                spring_force(m, j, x[a] - m->ax[j], x[a + 1] - m->ay[j], damped ? v[a] : 0.0,
+                             damped ? v[a + 1] : 0.0, damped, &sx, &sy);
+            }
+            fx += m->sign[e] * sx;
+            fy += m->sign[e] * sy;
         }
         if (central) {
             double cfx, cfy;

@@ -90,6 +90,29 @@ static inline void sw_eval_slice(sw_ode *ode, double t, int len, const double *y
         ode->deriv(ode->ctx, t, y, dydt);
 }
 
+/* The same, with the system's functions read once: a step that evaluates
+ * many stages takes them into locals, which the compiler keeps in
+ * registers across the calls (it cannot know that a call leaves *ode
+ * unchanged, so sw_eval_slice reloads them at every stage). */
+typedef struct sw_evaluator {
+    sw_deriv_part_fn *part; /* the system's slice derivative, or NULL */
+    sw_deriv_fn *deriv;
+    void *ctx;
+} sw_evaluator;
+
+static inline sw_evaluator sw_evaluator_of(const sw_ode *ode)
+{
+    return (sw_evaluator){ .part = sw_ode_deriv_part(ode), .deriv = ode->deriv, .ctx = ode->ctx };
+}
+
+static inline void sw_eval_with(const sw_evaluator *f, double t, int len, const double *y, double *dydt)
+{
+    if (f->part)
+        f->part(f->ctx, t, len, y, dydt);
+    else
+        f->deriv(f->ctx, t, y, dydt);
+}
+
 /* The runaway test as one addition, so that a loop ORing it vectorises in
  * 64-bit lanes with no narrowing: v's exponent field plus 0x800 - elim
  * carries into the sign bit exactly when the exponent is at or beyond elim

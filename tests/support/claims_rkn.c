@@ -222,9 +222,42 @@ static double tight_rkn12(void) { return evals_within("rkn12", 1e-8); }
 static double tight_rkn(void) { return evals_within("rkn", 1e-8); }
 static double tight_dop853(void) { return evals_within("dop853", 1e-8); }
 
+/* dop853-lc on the e = 0.9 orbit to its report time at rtol = atol = tol,
+ * as the bench runs it (one sim step of the whole span): its evaluations,
+ * or its largest state error against Kepler's solution. */
+static double lc_orbit_run(double tol, int error)
+{
+    sw_sim s;
+    double p[SW_MAX_PARAMS], truth[4];
+    const sw_scene *sc = cl_scene_p("orbit", "e=0.9", p);
+    cl_sim_init(&s, "orbit", "e=0.9", "dop853-lc", sc->duration);
+    sw_sim_set_tolerances(&s, tol, tol);
+    ck_assert(!sw_sim_run_until(&s, sc->duration));
+    ck_assert_int_eq(sc->exact(&s.sys, sc->duration, truth), 0);
+    double e = 0;
+    for (int i = 0; i < 4; i++)
+        e = fmax(e, fabs(s.sys.y[i] - truth[i]));
+    long evals = sw_sim_evals(&s);
+    sw_sim_free(&s);
+    return error ? e : (double)evals;
+}
+static double lc_evals_3(void) { return lc_orbit_run(6.5e-7, 0); }
+static double lc_evals_6(void) { return lc_orbit_run(1.4e-9, 0); }
+static double lc_evals_9(void) { return lc_orbit_run(1.2e-12, 0); }
+static double lc_error_3(void) { return lc_orbit_run(6.5e-7, 1); }
+static double lc_error_6(void) { return lc_orbit_run(1.4e-9, 1); }
+static double lc_error_9(void) { return lc_orbit_run(1.2e-12, 1); }
+
+#define PERF "docs/performance.md"
 #define R_HUNDRED "\"about\": to the nearest hundred"
 
 const claim sw_claims_r[] = {
+    { PERF, "dop853-lc at rtol = atol = 6.5e-7, 1.4e-9 and 1.2e-12 makes {183}, 298 and 545", lc_evals_3, EXACT, 0, "the evaluations of the run the bench times", NULL },
+    { PERF, "dop853-lc at rtol = atol = 6.5e-7, 1.4e-9 and 1.2e-12 makes 183, {298} and 545", lc_evals_6, EXACT, 0, "the evaluations of the run the bench times", NULL },
+    { PERF, "dop853-lc at rtol = atol = 6.5e-7, 1.4e-9 and 1.2e-12 makes 183, 298 and {545}", lc_evals_9, EXACT, 0, "the evaluations of the run the bench times", NULL },
+    { PERF, "evaluations (errors within {1e-3}, 1e-6 and 1e-9", lc_error_3, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
+    { PERF, "evaluations (errors within 1e-3, {1e-6} and 1e-9", lc_error_6, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
+    { PERF, "evaluations (errors within 1e-3, 1e-6 and {1e-9}", lc_error_9, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
     { README, "`!`, `@`, `#`, `$`, `%` and `^` pick one", key_caret, EXACT, 0, "'^' picks the sixteenth method, dop853-lc", cl_one },
     { README, "a clock that slows there | {8} | 13", lc_order, ABS, 0.3, "fixed steps in s on the e = 0.9 orbit's oscillator u, 100 to 200 steps: 7.96", NULL },
     { README, "a clock that slows there | 8 | {13} (12 stages and the start, anew each step) |", lc_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },

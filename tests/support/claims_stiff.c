@@ -81,7 +81,42 @@ static double key_place_rodas(void)
     return NAN;
 }
 
+/* rodas4 on one bead with heavy damping (chain n = 1, c = 1e4) to the
+ * report time at rtol = atol = tol, as the peer bench runs it: its
+ * evaluations, or its largest state error against dop853 at 1e-13 (the
+ * bench's cross-check of its reference, 1.5e-14 from GSL's rk8pd). */
+static double bead_run(const char *m, double tol, double *y)
+{
+    sw_sim s;
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = cl_scene_p("chain", "n=1 c=1e4", p);
+    cl_sim_init(&s, "chain", "n=1 c=1e4", m, sc->duration);
+    sw_sim_set_tolerances(&s, tol, tol);
+    ck_assert(!sw_sim_run_until(&s, sc->duration));
+    memcpy(y, s.sys.y, 4 * sizeof *y);
+    double evals = (double)sw_sim_evals(&s);
+    sw_sim_free(&s);
+    return evals;
+}
+static double bead_error(double tol)
+{
+    double y[4], ref[4], e = 0;
+    bead_run("rodas4", tol, y);
+    bead_run("dop853", 1e-13, ref);
+    for (int i = 0; i < 4; i++)
+        e = fmax(e, fabs(y[i] - ref[i]));
+    return e;
+}
+static double bead_evals_6(void) { double y[4]; return bead_run("rodas4", 2.5e-6, y); }
+static double bead_evals_9(void) { double y[4]; return bead_run("rodas4", 1e-7, y); }
+static double bead_error_6(void) { return bead_error(2.5e-6); }
+static double bead_error_9(void) { return bead_error(1e-7); }
+
 const claim sw_claims_k[] = {
+    { PERF, "rodas4 at rtol = atol = 2.5e-6 and 1e-7 makes {239} and 197 evaluations", bead_evals_6, EXACT, 0, "the run the peer bench times", NULL },
+    { PERF, "rodas4 at rtol = atol = 2.5e-6 and 1e-7 makes 239 and {197} evaluations", bead_evals_9, EXACT, 0, "the run the peer bench times", NULL },
+    { PERF, "and 197 evaluations within {1e-6} and 1e-9", bead_error_6, ATMOST, 0, "the largest state error against dop853 at 1e-13", NULL },
+    { PERF, "and 197 evaluations within 1e-6 and {1e-9}", bead_error_9, ATMOST, 0, "the largest state error against dop853 at 1e-13", NULL },
     { L9, "could ring at ω = {1000} rad/s", l9_omega, REL, 1e-12, R_MATH, NULL },
     { L9, "so its steps average {0.0014} s", l9_rk45_mean_h, ROUNDED, 0, "two seconds over the accepted steps, to the text's digits", NULL },
     { L9, "rejects a step in {four}", l9_rk45_one_in, ABS, 0.5, "trials per rejection, to the nearest whole number", NULL },

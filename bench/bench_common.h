@@ -118,6 +118,8 @@ void bench_stiff(int repeats, int quick);
  * n = 1e4 instead of 1e5). */
 void bench_frame_cost(int vortex_n, double target);
 void bench_heavy_views(int quick);
+/* Keys that could stall the picture: the longest frame from each key on (bench_keys.c). */
+void bench_key_gaps(int repeats, int quick);
 /* One heavy view alone, for a profiler or paired timings (bench_frame.c;
  * `bench_engine --frame-view`). */
 void bench_heavy_one(const char *scene, const char *set, int n, int compare, int ghost, int lanes, int trails, double seconds,

@@ -550,7 +550,7 @@ static int bench_engine_main(int argc, char **argv)
     bench_opts o = { .repeats = 5, .chain_n = 1000, .vortex_n = 100000, .target = 0.03 };
     bench_peer_opts peer = { .repeats = 7, .chain_n = 100, .vortex_n = 1000 };
     int sections = ~0, quick = 0; /* 1 throughput, 2 frame cost, 4 memory, 8 peer, 16 tree,
-                                     32 rkn, 64 stiff, 128 heavy views, 256 implicit */
+                                     32 rkn, 64 stiff, 128 heavy views, 256 implicit, 512 keys */
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--engine") == 0)
             continue;
@@ -590,6 +590,8 @@ static int bench_engine_main(int argc, char **argv)
             sections = 128;
         } else if (strcmp(argv[i], "--memory") == 0) {
             sections = 4;
+        } else if (strcmp(argv[i], "--keys") == 0) {
+            sections = 512;
         } else if (strcmp(argv[i], "--no-peer") == 0) {
             sections &= ~8;
         } else if ((strcmp(argv[i], "--peer-chain") == 0 || strcmp(argv[i], "--peer-vortex") == 0) && i + 1 < argc) {
@@ -616,7 +618,7 @@ static int bench_engine_main(int argc, char **argv)
             peer.repeats = r < 5 ? 5 : (int)r;
         } else {
             fprintf(stderr, "stepwise: bench --engine: unknown option '%.40s'; options: --quick, "
-                    "--repeats N, --peer, --peer-stiff, --no-peer, --tree, --rkn, --stiff, --frames, --memory, --implicit, "
+                    "--repeats N, --peer, --peer-stiff, --no-peer, --tree, --rkn, --stiff, --frames, --keys, --memory, --implicit, "
                     "--peer-chain N, --peer-vortex N, --peer-only SCENE, --frame-view SCENE[:NAME=VALUE] N VIEW SECONDS [DT]\n",
                     argv[i]);
             return 2;
@@ -631,6 +633,8 @@ static int bench_engine_main(int argc, char **argv)
         bench_frame_cost(o.vortex_n, o.target);
     if (sections & 128)
         bench_heavy_views(quick);
+    if (sections & 512)
+        bench_key_gaps(o.repeats, quick);
     if (sections & 4) {
         memory(&o);
         million(quick ? 100000 : 1000000);

@@ -393,7 +393,7 @@ static int fused(const problem *pb, const candidate *c)
 static void side_by_side(problem *pb, const candidate *a, const candidate *b, double target, const char *tag,
                          double goal, int repeats, char *line, size_t len)
 {
-    double ta[MAX_REPEATS], tb[MAX_REPEATS], ratio[MAX_REPEATS], e;
+    double ta[MAX_REPEATS] = { 0 }, tb[MAX_REPEATS] = { 0 }, ratio[MAX_REPEATS] = { 0 }, e;
     long ev;
     for (int r = 0; r < repeats; r++) {
         run(pb, a, a->setting, &e, &ta[r], &ev);

@@ -505,7 +505,7 @@ START_TEST(workprec_overlap_marks)
     int rows = 12, cols = 40;
     char *g = malloc((size_t)(rows + 2) * (size_t)cols);
     sw_workprec_overlap ov;
-    ck_assert_int_eq(sw_workprec_grid(r, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
+    ck_assert_int_eq(sw_workprec_grid(r, NULL, 0, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
     int amp = 0, third = 0, first = 0;
     for (int k = 0; k < rows * cols; k++) {
         amp += g[k] == '&';
@@ -521,7 +521,7 @@ START_TEST(workprec_overlap_marks)
     /* apart: no '&' and no pair */
     for (int j = 0; j < 4; j++)
         r->series[1].points[j].error = 1e3 * pow(10, -j);
-    ck_assert_int_eq(sw_workprec_grid(r, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
+    ck_assert_int_eq(sw_workprec_grid(r, NULL, 0, SW_BENCH_X_EVALS, g, rows, cols, &ov), 1);
     ck_assert_ptr_null(memchr(g, '&', (size_t)rows * (size_t)cols));
     ck_assert_int_eq(ov.n, 0);
     free(g);

@@ -381,7 +381,7 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     if (ov.clipped) {
         memset(&lg[nl], 0, sizeof lg[nl]);
         snprintf(lg[nl].full, sizeof lg[nl].full, "^ error over 1e%d, off the top", ov.top);
-        snprintf(lg[nl].brief, sizeof lg[nl].brief, "^ over 1e%d", ov.top);
+        snprintf(lg[nl].brief, sizeof lg[nl].brief, "^ error over 1e%d", ov.top);
         lg[nl++].prio = 9;
     }
     char legend[4][SW_TEXT_LINE];

@@ -218,7 +218,6 @@ static const view_symbol view_symbols[] = {
     { "graph", "|", "error", NULL, NULL },
     /* ---- the work-precision plot (render/workprec.c), where lesson 6 asks for it ---- */
     { "plot", "^", "^ error over", NULL, NULL },
-    { "plot", "^", "^ over", NULL, NULL },
     { "plot", ".", ". joins", NULL, NULL },
     { "plot", "|", "error vs", NULL, NULL },
     { "plot", "-", "error vs", NULL, NULL },

@@ -89,6 +89,9 @@ typedef struct sw_app {
     sw_events_mode events;      /* how every sim meets the scene's events (x toggles) */
     int workprec;               /* 0 off, 1 error against evaluations, 2 against time */
     void *bench;                /* the work-precision sweep behind it (sw_bench_report) */
+    const sw_integrator *wp_only[16]; /* a lesson page: the methods the plot shows (those the
+                                   lesson has used so far); wp_nonly 0: every method swept */
+    int wp_nonly;
     struct sw_sweep *sweep;     /* ... while it is measured on a worker thread (app/sweep.h) */
     int param_sel;
     double speed;               /* simulated seconds per wall second */

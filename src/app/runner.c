@@ -34,6 +34,36 @@ void sw_runner_obs(sw_app *a, sw_lesson_obs *obs)
     obs->region = a->view == SW_VIEW_REGION;
 }
 
+/* Add m to the work-precision plot's methods, once. */
+static void plot_method(sw_app *a, const sw_integrator *m)
+{
+    int n = (int)(sizeof a->wp_only / sizeof a->wp_only[0]);
+    for (int i = 0; i < a->wp_nonly; i++)
+        if (a->wp_only[i] == m)
+            return;
+    if (m && a->wp_nonly < n)
+        a->wp_only[a->wp_nonly++] = m;
+}
+
+/* The methods the lesson has used up to page: every page's integrator,
+ * the ones it compares with and the ones its goals name. On a lesson page
+ * the work-precision plot shows these (the methods the text is about),
+ * not every method the student has not met yet. */
+static void methods_met(const sw_runner *r, sw_app *a, int page)
+{
+    a->wp_nonly = 0;
+    for (int p = 0; p <= page && p < r->lesson.npages; p++) {
+        const sw_lesson_page *pg = &r->lesson.pages[p];
+        plot_method(a, pg->method);
+        for (int k = 0; k < pg->ncompare_with; k++)
+            plot_method(a, pg->compare_with[k]);
+        for (int g = 0; g < pg->ngoals; g++)
+            if (pg->goals[g].var == SW_LV_INTEGRATOR)
+                for (int k = 0; k < pg->goals[g].nnames; k++)
+                    plot_method(a, sw_integrator_find(pg->goals[g].names[k]));
+    }
+}
+
 void sw_runner_enter(sw_runner *r, sw_app *a, int page)
 {
     if (page < 0)
@@ -73,6 +103,7 @@ void sw_runner_enter(sw_runner *r, sw_app *a, int page)
     if (pg->view < 0 && a->view != SW_VIEW_SCENE)
         sw_app_set_view(a, SW_VIEW_SCENE);
     a->workprec = 0;
+    methods_met(r, a, page);
     a->epoch++;
     if (pg->compare >= 0 && pg->ncompare_with > 0)
         sw_app_compare_with(a, pg->compare_with, pg->ncompare_with);

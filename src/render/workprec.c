@@ -1,7 +1,9 @@
-/* The work-precision plot: error against cost for every method, log-log,
- * as text. Each method has its own marker; where two series take one cell
- * the cell shows '&' and the legend says which ("1+7": euler's point shares
- * a cell with implicit-euler's), so no series is hidden unsaid. */
+/* The work-precision plot: error against cost, log-log, as text: every
+ * method, or on a lesson page the ones the lesson has used. Each method has
+ * its own marker; curves with fewer points are drawn last, on top, and a
+ * line under the plot says which marker covers which ("5 over 1"), so no
+ * series is hidden unsaid. Errors above the state's own size are no
+ * measurement of accuracy: they are marked '^' on the top edge. */
 #include "render/workprec.h"
 
 #include <math.h>
@@ -19,7 +21,8 @@
  * both ran) and which methods are missing, and why (first: the plot does
  * not show them at all): measured, in words. Methods missing for the same
  * reason share a note. */
-static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_TEXT_LINE], int max)
+static int workprec_notes(sw_app *a, const sw_bench_report *r, const int *shown, int nshown,
+                          char notes[][SW_TEXT_LINE], int max)
 {
     int n = 0;
     char err[SW_ERRLEN];
@@ -29,10 +32,12 @@ static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_T
     int nr = 0;
     for (int k = 0; k < sw_integrator_count(); k++) {
         const sw_integrator *m = sw_integrator_at(k);
-        int in = 0;
+        int in = 0, asked = nshown == r->nseries;
         for (int i = 0; i < r->nseries; i++)
             in |= r->series[i].method == m;
-        if (in)
+        for (int i = 0; i < a->wp_nonly; i++)
+            asked |= a->wp_only[i] == m;
+        if (in || !asked)
             continue;
         if (sw_integrator_accepts(m, a->sims[0].sys.ode, err, sizeof err) == SW_OK)
             snprintf(err, sizeof err, "not swept");
@@ -53,9 +58,12 @@ static int workprec_notes(sw_app *a, const sw_bench_report *r, char notes[][SW_T
     }
     for (int g = 0; g < nr && n < max; g++)
         snprintf(notes[n++], SW_TEXT_LINE, "no %.100s: %.300s", names[g], reason[g]);
-    for (int i = 0; i < r->nseries && n < max; i++)
-        for (int j = i + 1; j < r->nseries && n < max; j++) {
-            const sw_bench_series *s = &r->series[i], *u = &r->series[j];
+    if (nshown < r->nseries && n < max)
+        snprintf(notes[n++], SW_TEXT_LINE, "this page's %d methods; w outside a lesson shows all %d", nshown,
+                 r->nseries);
+    for (int i = 0; i < nshown && n < max; i++)
+        for (int j = i + 1; j < nshown && n < max; j++) {
+            const sw_bench_series *s = &r->series[shown[i]], *u = &r->series[shown[j]];
             int common = 0, apart = 0;
             for (int p = 0; p < s->npoints; p++)
                 for (int q = 0; q < u->npoints; q++) {
@@ -91,11 +99,6 @@ static int wp_cell(double v, double lo, double hi, int cells)
 /* Note that series under's point was drawn over by series over's. */
 static void overlap_add(sw_workprec_overlap *ov, int under, int over)
 {
-    if (under > over) {
-        int t = under;
-        under = over;
-        over = t;
-    }
     int k = 0;
     while (k < ov->n && (ov->under[k] < under || (ov->under[k] == under && ov->over[k] < over)))
         k++;
@@ -108,27 +111,70 @@ static void overlap_add(sw_workprec_overlap *ov, int under, int over)
     ov->n++;
 }
 
+/* The points of series se that the plot draws. */
+static int wp_count(const sw_bench_series *se, int xaxis)
+{
+    int n = 0;
+    for (int j = 0; j < se->npoints; j++) {
+        double x, y;
+        n += wp_xy(&se->points[j], xaxis, &x, &y);
+    }
+    return n;
+}
+
+/* How many cells of the grid show series i's marker. */
+static int wp_visible(const int *owner, int cells, int i)
+{
+    int n = 0;
+    for (int k = 0; k < cells; k++)
+        n += owner[k] == i;
+    return n;
+}
+
 /* Decade labels thinned so that none touches another, lines of dots
- * between a method's points, its marker on each, '&' on a shared cell. */
-int sw_workprec_grid(const sw_bench_report *r, int xaxis, char *g, int rows, int cols, sw_workprec_overlap *ov)
+ * between a method's points, its marker on each. The series are drawn
+ * most points first, so a short curve is never buried under a long one;
+ * a shared cell shows the marker drawn last (the pair in *ov). The error
+ * axis stops at the decade above the state's size (r->scale): a run wrong
+ * by more than the whole state says nothing about accuracy, and is marked
+ * '^' on the top edge at its cost instead of stretching the axis. */
+int sw_workprec_grid(const sw_bench_report *r, const int *shown, int nshown, int xaxis, char *g, int rows,
+                     int cols, sw_workprec_overlap *ov)
 {
     sw_workprec_overlap none;
     if (!ov)
         ov = &none;
-    ov->n = 0;
+    ov->n = ov->clipped = 0;
+    int all[SW_BENCH_MAX_METHODS], order[SW_BENCH_MAX_METHODS];
+    if (!shown) {
+        for (int i = 0; i < r->nseries; i++)
+            all[i] = i;
+        shown = all;
+        nshown = r->nseries;
+    }
+    /* the drawing order: most points first (insertion sort, stable) */
+    for (int i = 0; i < nshown; i++) {
+        int k = i, n = wp_count(&r->series[shown[i]], xaxis);
+        while (k > 0 && wp_count(&r->series[order[k - 1]], xaxis) < n) {
+            order[k] = order[k - 1];
+            k--;
+        }
+        order[k] = shown[i];
+    }
+    double cap = r->scale > 0 ? ceil(log10(r->scale)) : INFINITY;
     /* which series' marker is in each plot cell (-1: none) */
     static int owner[256 * 512];
     for (size_t k = 0; k < (size_t)rows * (size_t)cols && k < sizeof owner / sizeof owner[0]; k++)
         owner[k] = -1;
     double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
-    for (int i = 0; i < r->nseries; i++)
-        for (int j = 0; j < r->series[i].npoints; j++) {
+    for (int i = 0; i < nshown; i++)
+        for (int j = 0; j < r->series[shown[i]].npoints; j++) {
             double v[2];
-            if (!wp_xy(&r->series[i].points[j], xaxis, &v[0], &v[1]))
+            if (!wp_xy(&r->series[shown[i]].points[j], xaxis, &v[0], &v[1]))
                 continue;
             for (int d = 0; d < 2; d++) {
                 lo[d] = fmin(lo[d], log10(v[d]));
-                hi[d] = fmax(hi[d], log10(v[d]));
+                hi[d] = fmax(hi[d], fmin(log10(v[d]), d ? cap : INFINITY));
             }
         }
     memset(g, ' ', (size_t)(rows + 2) * (size_t)cols);
@@ -136,11 +182,12 @@ int sw_workprec_grid(const sw_bench_report *r, int xaxis, char *g, int rows, int
         return 0;
     int range[4];
     for (int d = 0; d < 2; d++) {
-        range[2 * d] = (int)floor(lo[d]);
+        range[2 * d] = (int)floor(fmin(lo[d], hi[d]));
         range[2 * d + 1] = (int)ceil(hi[d]);
         if (range[2 * d + 1] == range[2 * d])
             range[2 * d + 1]++;
     }
+    ov->top = range[3];
     int lw = 0;
     for (int d = range[2]; d <= range[3]; d++) {
         char lab[16];
@@ -174,8 +221,14 @@ int sw_workprec_grid(const sw_bench_report *r, int xaxis, char *g, int rows, int
         memcpy(&G(rows + 1, start), lab, (size_t)len);
         free_col = start + len + 1; /* a blank column between labels */
     }
-    for (int pass = 0; pass < 2; pass++)
-        for (int i = 0; i < r->nseries; i++) {
+    /* pass 0 the dots, 1 the markers, 2 for a series that pass 1 left
+     * with no marker in sight: one of its cells back from a series that
+     * keeps another (a curve hidden whole is not told by its legend) */
+    for (int pass = 0; pass < 3; pass++)
+        for (int o = 0; o < nshown; o++) {
+            int i = order[o], taken = 0;
+            if (pass == 2 && wp_visible(owner, rows * cols, i) > 0)
+                continue;
             const sw_bench_series *se = &r->series[i];
             int prow = -1, pcol = -1;
             for (int j = 0; j < se->npoints; j++) {
@@ -183,17 +236,30 @@ int sw_workprec_grid(const sw_bench_report *r, int xaxis, char *g, int rows, int
                 if (!wp_xy(&se->points[j], xaxis, &x, &y))
                     continue;
                 int cc = left + wp_cell(log10(x), range[0], range[1], pc);
+                if (log10(y) > range[3]) {
+                    /* off the top: an edge mark, not joined to the curve */
+                    if (pass == 1) {
+                        ov->clipped++;
+                        if (owner[cc] < 0 && G(0, cc) != '|')
+                            G(0, cc) = '^';
+                    }
+                    prow = -1;
+                    continue;
+                }
                 int rr = rows - 1 - wp_cell(log10(y), range[2], range[3], rows);
-                if (pass == 1) {
-                    int *own = &owner[(size_t)rr * (size_t)cols + (size_t)cc];
-                    if (*own >= 0 && *own != i) {
+                int *own = &owner[(size_t)rr * (size_t)cols + (size_t)cc];
+                if (pass == 2 && !taken && *own >= 0 && wp_visible(owner, rows * cols, *own) > 1) {
+                    overlap_add(ov, *own, i);
+                    G(rr, cc) = sw_bench_marker(se->method);
+                    *own = i;
+                    taken = 1;
+                } else if (pass == 1) {
+                    if (*own >= 0 && *own != i)
                         overlap_add(ov, *own, i);
-                        G(rr, cc) = '&';
-                    } else if (*own < 0)
-                        G(rr, cc) = sw_bench_marker(se->method);
+                    G(rr, cc) = sw_bench_marker(se->method);
                     *own = i;
                 }
-                else if (prow >= 0) {
+                else if (pass == 0 && prow >= 0) {
                     int n = abs(cc - pcol) > abs(rr - prow) ? abs(cc - pcol) : abs(rr - prow);
                     for (int k = 1; k < n; k++) {
                         int r2 = prow + (int)lround((double)(rr - prow) * k / n);
@@ -210,9 +276,9 @@ int sw_workprec_grid(const sw_bench_report *r, int xaxis, char *g, int rows, int
     return 1;
 }
 
-/* "& two in a cell: euler with implicit-euler, ..." (or "1+7, ...") with the methods'
- * names when they fit the width, else their markers; pairs that do not
- * fit are counted ("+2 more"). */
+/* "where two meet, the one on top: rk4 over euler, ..." (or "5 over 1")
+ * with the methods' names when they fit the width, else their markers;
+ * pairs that do not fit are counted ("+2 more"). */
 static void overlap_line(const sw_bench_report *r, const sw_workprec_overlap *ov, int width, char *out, size_t len)
 {
     if (!ov || ov->n == 0) {
@@ -220,14 +286,14 @@ static void overlap_line(const sw_bench_report *r, const sw_workprec_overlap *ov
         return;
     }
     for (int names = 1; names >= 0; names--) {
-        int used = snprintf(out, len, "& two in a cell:"), k;
+        int used = snprintf(out, len, "shared cell, top one shown:"), k;
         for (k = 0; k < ov->n; k++) {
             const sw_integrator *u = r->series[ov->under[k]].method, *o = r->series[ov->over[k]].method;
             char pair[160], more[24];
             if (names)
-                snprintf(pair, sizeof pair, "%s %s with %s", k ? "," : "", u->name, o->name);
+                snprintf(pair, sizeof pair, "%s %s over %s", k ? "," : "", o->name, u->name);
             else
-                snprintf(pair, sizeof pair, "%s %c+%c", k ? "," : "", sw_bench_marker(u), sw_bench_marker(o));
+                snprintf(pair, sizeof pair, "%s %c over %c", k ? "," : "", sw_bench_marker(o), sw_bench_marker(u));
             int rest = ov->n - k - 1;
             if (rest)
                 snprintf(more, sizeof more, " +%d more", rest);
@@ -278,10 +344,26 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     int foot = height > 1 && sw_text_fit(line, sizeof line, inner, kf, 1, "  ") > 0;
     if (foot)
         sw_screen_text(scr, row + height - 1, c0, inner, SW_STYLE_DIM, line);
+    /* the series shown: on a lesson page the methods it has used (when the sweep has them) */
+    int shown[SW_BENCH_MAX_METHODS] = { 0 }, nshown = 0;
+    for (int i = 0; i < r->nseries; i++)
+        for (int k = 0; k < a->wp_nonly; k++)
+            if (r->series[i].method == a->wp_only[k]) {
+                shown[nshown++] = i;
+                break;
+            }
+    if (nshown == 0)
+        for (int i = 0; i < r->nseries; i++)
+            shown[nshown++] = i;
+    /* whether any point is off the top: the axis does not depend on the grid's size */
+    static char probe[6 * 64];
+    sw_workprec_overlap ov;
+    sw_workprec_grid(r, shown, nshown, xaxis, probe, 4, 64, &ov);
     /* the legend: every method's marker and name (brief names before a third row) */
-    sw_field lg[SW_BENCH_MAX_METHODS + 1];
+    sw_field lg[SW_BENCH_MAX_METHODS + 2];
     int nl = 0;
-    for (int i = 0; i < r->nseries && nl < SW_BENCH_MAX_METHODS; i++, nl++) {
+    for (int s = 0; s < nshown && nl < SW_BENCH_MAX_METHODS; s++, nl++) {
+        int i = shown[s];
         memset(&lg[nl], 0, sizeof lg[nl]);
         char name[64];
         snprintf(lg[nl].full, sizeof lg[nl].full, "%c=%.60s", sw_bench_marker(r->series[i].method),
@@ -296,6 +378,12 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     snprintf(lg[nl].full, sizeof lg[nl].full, ". joins a method's points");
     snprintf(lg[nl].brief, sizeof lg[nl].brief, ". joins them");
     lg[nl++].prio = 9;
+    if (ov.clipped) {
+        memset(&lg[nl], 0, sizeof lg[nl]);
+        snprintf(lg[nl].full, sizeof lg[nl].full, "^ error over 1e%d, off the top", ov.top);
+        snprintf(lg[nl].brief, sizeof lg[nl].brief, "^ error over 1e%d", ov.top);
+        lg[nl++].prio = 9;
+    }
     char legend[4][SW_TEXT_LINE];
     int lrows = 1, dropped = 1;
     while (lrows < 4 && (sw_text_fit_rows(legend, lrows, inner, lg, nl, "  ", &dropped), dropped))
@@ -303,9 +391,9 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
     lrows = nl ? sw_text_fit_rows(legend, lrows, inner, lg, nl, "  ", NULL) : 0;
     /* the plot keeps WP_MIN_ROWS rows (and its axis and labels); whole notes fill what is left */
     /* a row under the legend says which series share cells (or that none do) */
-    int olap = r->nseries > 1;
+    int olap = nshown > 1;
     int body = height - 1 - foot - lrows - olap, plot_min = 6;
-    int nn = workprec_notes(a, r, notes, 8), nw = 0, dropped_notes = 0;
+    int nn = workprec_notes(a, r, shown, nshown, notes, 8), nw = 0, dropped_notes = 0;
     for (int i = 0; i < nn; i++) {
         char part[8][SW_TEXT_LINE];
         int k = sw_text_wrap(notes[i], inner, part, 8);
@@ -344,8 +432,7 @@ void sw_draw_workprec(sw_app *a, sw_screen *scr, int row, int col, int height, i
         pcols = 512;
     if (prows + 2 > 256)
         prows = 254;
-    sw_workprec_overlap ov;
-    int have = sw_workprec_grid(r, xaxis, g, prows, pcols, &ov);
+    int have = sw_workprec_grid(r, shown, nshown, xaxis, g, prows, pcols, &ov);
     int rr = row + 1;
     for (int k = 0; have && k < prows + 2; k++, rr++) {
         int len = pcols;

@@ -5,7 +5,7 @@
 # region's edge line (X past it, * on the shading), as the line under the
 # picture says; on lesson 6 page 5 RK4's marks climb the imaginary axis
 # and pass its edge line only at dt = 0.04, drawn X there; on lesson 6 page 4 the
-# work-precision plot shows Euler (its marker, or '&' with the pair named)
+# work-precision plot shows Euler (its marker, or named under the plot)
 # and RK4's point of the page's table (about 500 evaluations, error 3e-7)
 # beside the page's text, before and after the answer; the projectile's
 # dashed line is labelled as its launch height, not a ground, and the ball
@@ -106,12 +106,12 @@ wait_for 'Runge-Kutta: midpoint and RK4 +\(4/[0-9]+\)' || fail "lesson 6 did not
 keys w
 wait_for 'error vs evaluations' 60 || fail "w did not show the work-precision plot"
 wait_for 'for one turn of the' || fail "the plot hides the page's text"
-# Euler: its marker 1 in the plot, or '&' and the pair said
+# Euler: its marker 1 in the plot, or the cells it shares named
 if picture | sed -n '2,12p' | cut -c7- | grep -q 1; then
     echo "euler: its marker is in the plot"
 else
-    picture | grep -Eq '& two in a cell: .*(1\+|\+1|euler)' || fail "euler is neither drawn nor named in a shared cell"
-    echo "euler: in shared cells, named: $(picture | grep '& two in a cell')"
+    picture | grep -Eq 'shared cell, top one shown: .*(over 1|over euler)' || fail "euler is neither drawn nor named in a shared cell"
+    echo "euler: in shared cells, named: $(picture | grep 'shared cell')"
 fi
 # RK4's table point: ~500 evaluations (log10 2.7 between the 1e2 and 1e3
 # labels), error 3e-7 (between the rows labelled 1e-5 and 1e-8, ±1 row)
@@ -129,7 +129,7 @@ found=$(picture | awk '
                           if (e + 0 <= -6.5 && (bot < 0 || erow[e] < bot)) bot = erow[e] }
         if (top < 0) top = 2; if (bot < 0) bot = axisrow - 1
         for (r = top - 1; r <= bot + 1; r++) for (c = int(x) - 1; c <= int(x) + 2; c++) {
-            ch = substr(line[r], c, 1); if (ch == "5" || ch == "&") { print "row " r " col " c " (" ch ")"; exit } }
+            ch = substr(line[r], c, 1); if (ch == "5") { print "row " r " col " c " (" ch ")"; exit } }
         print "none near column " x " rows " top ".." bot }')
 echo "rk4 at ~500 evaluations, error 3e-7: $found"
 case $found in row*) ;; *) fail "RK4's point of the table is not on the plot: $found" ;; esac

@@ -24,6 +24,9 @@ static double l6_steps_rk4(void) { return (double)cl_steps_for("vortex", NULL, "
 static double l6_evals_euler(void) { return evals_to("vortex", NULL, "euler", 0.0125, TWO_PI); }
 static double l6_evals_mid(void) { return evals_to("vortex", NULL, "midpoint", 0.025, TWO_PI); }
 static double l6_evals_rk4(void) { return evals_to("vortex", NULL, "rk4", 0.05, TWO_PI); }
+/* The decade marks of the plot's evaluation axis around the table's runs. */
+static double l6_decade_below(void) { return pow(10, floor(log10(l6_evals_euler()))); }
+static double l6_decade_above(void) { return pow(10, ceil(log10(l6_evals_rk4()))); }
 static double l6_gain(void) { return l6_err_euler() / l6_err_rk4(); }
 static double l6_rk4_evals(void) { return cl_evals_per_step("vortex", NULL, "rk4", 0.05, 10); }
 static double l6_euler_evals(void) { return cl_evals_per_step("vortex", NULL, "euler", 0.05, 10); }
@@ -469,6 +472,9 @@ const claim sw_claims_b[] = {
     { L6, "RK4 (0.05) {3.1e-7}", l6_err_rk4, ROUNDED, 0, R_ROUND, NULL },
     { L6, "about {500} evaluations of g for one turn", l6_evals_mid, REL, 0.02, "\"about 500\": the three runs take 503 and 504", NULL },
     { L6, "about {500} evaluations of g for one turn", l6_evals_rk4, REL, 0.02, "\"about 500\": the three runs take 503 and 504", NULL },
+    { L6, "its points near {500} evaluations", l6_evals_mid, REL, 0.02, "\"near 500\": the three runs take 503 and 504", NULL },
+    { L6, "between the {1e2} and 1e3 marks", l6_decade_below, EXACT, 0, "the plot's decade mark below the table's 503 evaluations", NULL },
+    { L6, "between the 1e2 and {1e3} marks", l6_decade_above, EXACT, 0, "the plot's decade mark above the table's 504 evaluations", NULL },
     { L6, "RK4 is about {100 000} times more accurate than Euler", l6_gain, REL, 0.5, "one significant figure: 50 000 to 150 000", NULL },
     { L6, "RK4 costs {four} evaluations per step, Euler one", l6_rk4_evals, EXACT, 0, R_COUNT, NULL },
     { L6, "RK4 costs four evaluations per step, Euler {one}", l6_euler_evals, EXACT, 0, R_COUNT, NULL },

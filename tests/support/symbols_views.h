@@ -217,7 +217,7 @@ static const view_symbol view_symbols[] = {
     { "graph", "|", "energy drift", NULL, NULL },
     { "graph", "|", "error", NULL, NULL },
     /* ---- the work-precision plot (render/workprec.c), where lesson 6 asks for it ---- */
-    { "plot", "&", "& two in a cell", NULL, NULL },
+    { "plot", "^", "^ error over", NULL, NULL },
     { "plot", ".", ". joins", NULL, NULL },
     { "plot", "|", "error vs", NULL, NULL },
     { "plot", "-", "error vs", NULL, NULL },

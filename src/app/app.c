@@ -584,7 +584,9 @@ int sw_app_apply(sw_app *a, sw_action act, int arg)
         a->workprec = (a->workprec + 1) % 3;
         if (a->workprec && !a->bench && !a->sweep) {
             if (!sw_bench_measurable(a->scene, a->p, why, sizeof why) ||
-                !sw_bench_quick_affordable(a->scene, a->p, 4 * a->work_key, why, sizeof why) ||
+                /* the truth's cost as the app measured it: no pilot run on the key */
+                !sw_bench_quick_affordable(a->scene, a->p, a->have_truth ? a->truth_cost : NAN, 4 * a->work_key,
+                                           why, sizeof why) ||
                 !(a->sweep = sw_sweep_start(a->scene, a->p, 4 * a->work_key, why, sizeof why))) {
                 a->workprec = 0;
                 snprintf(a->message, sizeof a->message, "no work-precision plot: %s", why);

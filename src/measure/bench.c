@@ -513,15 +513,19 @@ static void quick_config(sw_bench_config *c, double budget)
     c->max_work = fmin(c->max_work, 0.75 * budget / (2.0 * sw_integrator_count()));
 }
 
-int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen)
+int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double ref_cost, double budget, char *err,
+                              size_t errlen)
 {
     sw_bench_config c;
     quick_config(&c, budget);
-    sw_truth tr;
-    if (sw_truth_init(&tr, sc, p, err, errlen) != SW_OK)
-        return 0;
-    double cost = 2.2 * sw_truth_reference_cost(&tr, sc->duration) + 2.0 * c.max_work * sw_integrator_count();
-    sw_truth_free(&tr);
+    if (isnan(ref_cost)) {
+        sw_truth tr;
+        if (sw_truth_init(&tr, sc, p, err, errlen) != SW_OK)
+            return 0;
+        ref_cost = sw_truth_reference_cost(&tr, sc->duration);
+        sw_truth_free(&tr);
+    }
+    double cost = 2.2 * ref_cost + 2.0 * c.max_work * sw_integrator_count();
     if (!(cost <= budget)) {
         snprintf(err, errlen, "the sweep would cost about %.2g state evaluations, over the %.0e the plot may "
                  "spend (fewer particles, or stepwise bench in a shell)", cost, budget);
@@ -533,7 +537,7 @@ int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget
 int sw_bench_scene_quick(sw_bench_report *r, const sw_scene *sc, const double *p, double budget,
                          const atomic_int *stop, char *err, size_t errlen)
 {
-    if (!sw_bench_quick_affordable(sc, p, budget, err, errlen))
+    if (!sw_bench_quick_affordable(sc, p, NAN, budget, err, errlen))
         return SW_EINVAL;
     sw_bench_config c;
     quick_config(&c, budget);

@@ -195,8 +195,11 @@ int sw_bench_sweep_all(sw_bench_report *r, const sw_integrator *const *methods, 
                        const sw_bench_config *c, char *err, size_t errlen);
 
 /* 1 when sw_bench_scene_quick's estimate is within budget; else 0 with err
- * saying why (as sw_bench_scene_quick would refuse). */
-int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double budget, char *err, size_t errlen);
+ * saying why (as sw_bench_scene_quick would refuse). ref_cost: the truth's
+ * sw_truth_reference_cost to the scene's duration when the caller has it
+ * (the app: no second pilot run on a key press), NAN to work it out. */
+int sw_bench_quick_affordable(const sw_scene *sc, const double *p, double ref_cost, double budget, char *err,
+                              size_t errlen);
 /* For the UI: init + sweep_all with the quick config, within budget state
  * evaluations in all (refused with SW_EINVAL, err saying why, when the
  * reference alone would spend a quarter of it). r must be freed with

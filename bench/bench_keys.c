@@ -46,7 +46,7 @@ static void one_frame(sw_app *a, sw_frame *f, sw_screen *scr, long budget, int k
     *wall_ms = (now_seconds() - w0) * 1e3;
 }
 
-static key_frame key_run(const char *scene, int n, int key)
+static key_frame key_run(const char *scene, int n, int key, int quick)
 {
     key_frame r = { 0, 0, 0 };
     char err[SW_ERRLEN], set[32];
@@ -74,7 +74,8 @@ static key_frame key_run(const char *scene, int n, int key)
     /* warm up at the loop's budget, measured as the loop measures it */
     long budget = 1, steps0 = a->sims[0].steps;
     double busy = 0, cpu, wall;
-    for (int i = 0; i < WARM_FRAMES; i++) {
+    int warm = quick ? 5 : WARM_FRAMES, after = quick ? 10 : AFTER_FRAMES;
+    for (int i = 0; i < warm; i++) {
         double c0 = thread_cpu();
         one_frame(a, &f, &scr, budget, 0, &cpu, &wall);
         busy += thread_cpu() - c0;
@@ -83,12 +84,12 @@ static key_frame key_run(const char *scene, int n, int key)
         budget = b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
     }
     /* the key, then frames until its work is done (the sweep's report in) */
-    int frames = 0, limit = key == 'w' ? SWEEP_FRAMES : AFTER_FRAMES;
+    int frames = 0, limit = key == 'w' ? SWEEP_FRAMES : after;
     for (; frames < limit; frames++) {
         one_frame(a, &f, &scr, budget, frames == 0 ? key : 0, &cpu, &wall);
         r.cpu_ms = fmax(r.cpu_ms, cpu);
         r.wall_ms = fmax(r.wall_ms, wall);
-        if (key == 'w' && frames >= AFTER_FRAMES && !a->sweep)
+        if (key == 'w' && frames >= after && !a->sweep)
             break;
     }
     r.ok = key != 'w' || !a->sweep;
@@ -110,12 +111,12 @@ void bench_key_gaps(int repeats, int quick)
 {
     static const struct { const char *scene; int n; } scenes[] = { { "chain", 100000 }, { "vortex", 100000 } };
     static const int keys[] = { 'w', 'k', 'c', '+', '-', ';' };
-    int runs = repeats < 1 ? 1 : repeats > MAX_REPEATS_KEYS ? MAX_REPEATS_KEYS : repeats;
-    int big = quick ? 10000 : 0;
+    int runs = quick ? 1 : repeats < 1 ? 1 : repeats > MAX_REPEATS_KEYS ? MAX_REPEATS_KEYS : repeats;
+    int big = quick ? 1000 : 0;
     printf("keys at n = %s: the longest frame from the key on (w: until the sweep's plot is in, and the\n"
            "Esc that closes it), the live loop's work without a terminal at its step budget; CPU time of\n"
            "the thread (the picture's) and wall time; median of %d runs, the worst run beside it.\n"
-           "Target: <= 100 ms\n\n", quick ? "1e4 (--quick)" : "1e5", runs);
+           "Target: <= 100 ms\n\n", quick ? "1e3 (--quick)" : "1e5", runs);
     printf("  %-7s %7s %-4s %9s %9s %9s %9s  %s\n", "scene", "n", "key", "cpu ms", "worst", "wall ms", "worst",
            "<=100ms");
     for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++)
@@ -123,7 +124,7 @@ void bench_key_gaps(int repeats, int quick)
             double cpu[MAX_REPEATS_KEYS], wall[MAX_REPEATS_KEYS];
             int ok = 1, n = big ? big : scenes[s].n;
             for (int i = 0; i < runs; i++) {
-                key_frame r = key_run(scenes[s].scene, n, keys[k]);
+                key_frame r = key_run(scenes[s].scene, n, keys[k], quick);
                 cpu[i] = r.cpu_ms;
                 wall[i] = r.wall_ms;
                 ok &= r.ok;

@@ -30,6 +30,15 @@ for v in 'plain' 'compare+ghost' 'lanes+ghost'; do
     echo "$out" | grep -Fq "  vortex    10000 $v " || fail "no heavy-view row for vortex $v"
 done
 echo "$out" | grep -Eq '^  chain +10000 plain +verlet ' || fail "no heavy-view row for the chain"
+# the keys' table (its milliseconds are timings: printed, not asserted); a
+# sweep that never came in would say so on its row
+echo "$out" | grep -q '^keys at n = 1e3 (--quick)' || fail "no keys table"
+for s in chain vortex; do
+    for k in w k c + - ';'; do
+        echo "$out" | grep -Eq "^  $s +1000 [$k] +[0-9.]+ " || fail "no keys row for $s '$k'"
+    done
+done
+echo "$out" | grep -q '(sweep not done)' && fail "a key's sweep never came in: $out"
 echo "$out" | grep -q "^  (the baseline's vortex seeds equal the scene's)" || fail "baseline vortex seeds differ"
 for s in chain vortex; do
     echo "$out" | grep -Eq "^  $s +100000 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ " \

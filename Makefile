@@ -153,7 +153,7 @@ layers: $(MAIN_OBJ) $(TUI_OBJ) $(LIB_OBJ)
 TIER_ENV = SW_TEST_QUICK=1
 CK_ENV   = CK_TIMEOUT_MULTIPLIER=$${CK_TIMEOUT_MULTIPLIER:-10}
 # The unit and end-to-end suites run side by side, the end-to-end tests one
-# per core (SW_TEST_JOBS=N: another number).
+# more than the cores at a time (SW_TEST_JOBS=N: another number).
 test: layers $(BIN) $(TESTBIN) $(BENCHBIN) $(HOST)
 	@$(CK_ENV) $(TIER_ENV) STEPWISE_BENCH=$(BENCHBIN) sh tests/run_suite.sh $(TESTBIN) ./$(BIN)
 

@@ -1,6 +1,8 @@
 #!/bin/sh
 # Runs every end-to-end test (tests/e2e/test_*.sh) against the binary given
-# as $1, SW_TEST_JOBS at a time (default: one per core), and prints
+# as $1, SW_TEST_JOBS at a time (default: one more than the cores: many
+# tests wait on a jail's limits or a terminal, and a core left idle
+# while they wait is time lost), and prints
 # "N passed, N failed"; exits 1 when any failed. Each test has its own
 # scratch directory and tmux servers (lib.sh), so they run side by side;
 # a line is printed as each ends, and the logs of the failed ones at the end.
@@ -11,7 +13,8 @@ if [ -n "${STEPWISE_BENCH:-}" ]; then
     STEPWISE_BENCH=$(cd "$(dirname "$STEPWISE_BENCH")" && pwd)/$(basename "$STEPWISE_BENCH")
     export STEPWISE_BENCH
 fi
-jobs=${SW_TEST_JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+cores=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+jobs=${SW_TEST_JOBS:-$((cores + 1))}
 case $jobs in ''|*[!0-9]*|0) echo "e2e: SW_TEST_JOBS must be a whole number of 1 or more, not '$jobs'" >&2; exit 2 ;; esac
 out=$(mktemp -d) || exit 1
 trap 'rm -rf "$out"' EXIT

@@ -9,8 +9,12 @@
 . "$(dirname "$0")/lib.sh"
 
 build=$(build_dir)
-objs=$(make -s -C "$ROOT" BUILD="$build" --eval='sw-print-core-obj: ; @echo $(CORE_OBJ)' sw-print-core-obj) ||
+# (a make of its own: under `make sanitize` the parent's MAKEFLAGS would
+# bring its jobserver, whose warning a nested make prints)
+objs=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s -C "$ROOT" BUILD="$build" \
+    --eval='sw-print-core-obj: ; @echo $(CORE_OBJ)' sw-print-core-obj) ||
     fail "make could not say which objects the library is made of"
+objs=$(echo "$objs" | tr ' ' '\n' | grep '\.o$') # the objects only, whatever else make said
 [ -n "$objs" ] || fail "make names no objects for the library"
 doc="$ROOT/docs/embedding.md"
 

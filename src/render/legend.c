@@ -63,7 +63,7 @@ int sw_scene_legend(const sw_canvas *const *cs, int ncs, const sw_app *a, sw_fie
     if (!heat && cs[0]->mode != SW_CANVAS_BRAILLE && (long long)main->sys.n > (long long)cs[0]->cols * cs[0]->rows / 4) {
         char ramp[16] = "";
         size_t k = 0;
-        for (const char *g = SW_DENSITY_RAMP + 1; *g && k + 1 < sizeof ramp; g++)
+        for (const char *g = &SW_DENSITY_RAMP[1]; *g && k + 1 < sizeof ramp; g++)
             if (*g != SW_GLYPH_MAIN && holds(c, (uint32_t)(unsigned char)*g, SW_STYLE_MAIN))
                 ramp[k++] = *g;
         ramp[k] = '\0';

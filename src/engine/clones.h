@@ -4,11 +4,12 @@
  * for the machine. Both do the same IEEE operations in the same order (no
  * FMA: AVX2 alone does not include it, and ISO C mode does not contract),
  * so results are the same bits on every machine; only the speed differs.
- * -DSW_NO_CLONES turns it off. */
+ * -DSW_NO_CLONES turns it off; clang (14) gets none: its clones of a
+ * function called from another file left the plain name undefined. */
 #ifndef SW_ENGINE_CLONES_H
 #define SW_ENGINE_CLONES_H
 
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && !defined(SW_NO_CLONES)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__linux__) && !defined(SW_NO_CLONES)
 #define SW_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define SW_CLONES

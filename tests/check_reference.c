@@ -13,24 +13,9 @@
 #include "engine/reference.h"
 #include "engine/stepper.h"
 #include "stepwise/stepwise.h"
+#include "same_bits.h"
 
 enum { STEPS = 50 };
-
-/* Scene sc with parameters p. */
-static void build(const sw_scene *sc, const double *p, sw_system *sys)
-{
-    char err[SW_ERRLEN];
-    ck_assert_msg(sw_system_build(sys, sc, p, err, sizeof err) == SW_OK, "%s: %s", sc->name, err);
-}
-
-/* The first component where a and b differ, or -1. */
-static int first_difference(const double *a, const double *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (memcmp(&a[i], &b[i], sizeof a[i]) != 0)
-            return i;
-    return -1;
-}
 
 /* How the production step ran on a system: the system's fused step, slice
  * by slice, or one pass over the whole state. */
@@ -50,12 +35,12 @@ static int compare(const sw_integrator *m, sw_ref_step_fn *ref, const sw_scene *
 {
     char err[SW_ERRLEN];
     sw_system prod, lect;
-    build(sc, p, &prod);
+    sb_build(sc, p, &prod);
     if (sw_integrator_accepts(m, prod.ode, err, sizeof err) != SW_OK) {
         sw_system_free(&prod);
         return 0;
     }
-    build(sc, p, &lect);
+    sb_build(sc, p, &lect);
     int dim = prod.ode->dim;
     ck_assert_int_eq(lect.ode->dim, dim);
     ck_assert_msg(memcmp(prod.y, lect.y, (size_t)dim * sizeof *prod.y) == 0, "%s: two builds differ", sc->name);
@@ -70,7 +55,7 @@ static int compare(const sw_integrator *m, sw_ref_step_fn *ref, const sw_scene *
         ck_assert_int_eq(sw_stepper_step(s, prod.ode, &tp, prod.y, h), SW_OK);
         ref(&r, lect.ode, tl, lect.y, h);
         tl += h;
-        int i = first_difference(prod.y, lect.y, dim);
+        int i = sb_first_difference(prod.y, lect.y, dim);
         ck_assert_msg(i < 0, "%s on %s, step %d, component %d of %d: production %a, lecture form %a", m->name,
                       sc->name, step, i, dim, i < 0 ? 0.0 : prod.y[i], i < 0 ? 0.0 : lect.y[i]);
         ck_assert_msg(tp == tl, "%s on %s, step %d: t %a against %a", m->name, sc->name, step, tp, tl);
@@ -109,7 +94,7 @@ START_TEST(production_steps_are_the_lecture_forms)
             scenes++;
             taken[path - 1]++;
             sw_system sys;
-            build(sc, p, &sys);
+            sb_build(sc, p, &sys);
             int pointwise = sw_ode_deriv_part(sys.ode) != NULL;
             sw_system_free(&sys);
             if (pointwise) {

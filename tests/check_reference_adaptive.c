@@ -18,6 +18,7 @@
 #include "engine/reference_adaptive.h"
 #include "engine/stepper.h"
 #include "stepwise/stepwise.h"
+#include "same_bits.h"
 
 enum { STEPS = 30 };
 
@@ -29,12 +30,6 @@ static const struct setting {
     double rtol, atol, dt_times;
 } settings[] = { { SW_RTOL_DEFAULT, SW_ATOL_DEFAULT, 1 }, { 1e-3, 1e-6, 20 }, { 1e-10, 1e-12, 1 },
                  { 1e-2, 1e-4, 10000 } };
-
-static void build(const sw_scene *sc, const double *p, sw_system *sys)
-{
-    char err[SW_ERRLEN];
-    ck_assert_msg(sw_system_build(sys, sc, p, err, sizeof err) == SW_OK, "%s: %s", sc->name, err);
-}
 
 static int same(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
@@ -53,12 +48,12 @@ static seen compare(const sw_integrator *m, sw_ref_adaptive_fn *ref, const sw_sc
     char err[SW_ERRLEN];
     seen out = { 0 };
     sw_system prod, lect;
-    build(sc, p, &prod);
+    sb_build(sc, p, &prod);
     if (sw_integrator_accepts(m, prod.ode, err, sizeof err) != SW_OK) {
         sw_system_free(&prod);
         return out;
     }
-    build(sc, p, &lect);
+    sb_build(sc, p, &lect);
     int dim = prod.ode->dim;
     sw_stepper *s = sw_stepper_new(m, prod.ode, err, sizeof err);
     ck_assert_msg(s != NULL, "%s on %s: %s", m->name, sc->name, err);

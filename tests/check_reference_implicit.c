@@ -16,22 +16,9 @@
 
 #include "engine/reference_implicit.h"
 #include "stepwise/stepwise.h"
+#include "same_bits.h"
 
 enum { STEPS = 20, DIM_MAX = 4000 };
-
-static void build(const sw_scene *sc, const double *p, sw_system *sys)
-{
-    char err[SW_ERRLEN];
-    ck_assert_msg(sw_system_build(sys, sc, p, err, sizeof err) == SW_OK, "%s: %s", sc->name, err);
-}
-
-static int first_difference(const double *a, const double *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (memcmp(&a[i], &b[i], sizeof a[i]) != 0)
-            return i;
-    return -1;
-}
 
 /* Method m against its lecture form on scene sc with parameters p, step h:
  * 1 compared, 0 when m refuses the scene or it is too large. Counts the
@@ -41,12 +28,12 @@ static int compare(const sw_integrator *m, sw_step_fn *lecture, const sw_scene *
 {
     char err[SW_ERRLEN];
     sw_system prod, lect;
-    build(sc, p, &prod);
+    sb_build(sc, p, &prod);
     if (prod.ode->dim > DIM_MAX || sw_integrator_accepts(m, prod.ode, err, sizeof err) != SW_OK) {
         sw_system_free(&prod);
         return 0;
     }
-    build(sc, p, &lect);
+    sb_build(sc, p, &lect);
     int dim = prod.ode->dim;
     sw_stepper *sp = sw_stepper_new(m, prod.ode, err, sizeof err);
     ck_assert_msg(sp != NULL, "%s on %s: %s", m->name, sc->name, err);
@@ -62,7 +49,7 @@ static int compare(const sw_integrator *m, sw_step_fn *lecture, const sw_scene *
         ck_assert_msg((sp->why == NULL) == (sl->why == NULL) && (!sp->why || strcmp(sp->why, sl->why) == 0),
                       "%s on %s, step %d: \"%s\" against \"%s\"", m->name, sc->name, step,
                       sp->why ? sp->why : "-", sl->why ? sl->why : "-");
-        int i = first_difference(prod.y, lect.y, dim);
+        int i = sb_first_difference(prod.y, lect.y, dim);
         ck_assert_msg(i < 0, "%s on %s (h = %g), step %d, component %d of %d: production %a, lecture form %a",
                       m->name, sc->name, h, step, i, dim, i < 0 ? 0.0 : prod.y[i], i < 0 ? 0.0 : lect.y[i]);
         ck_assert_msg(tp == tl, "%s on %s, step %d: t %a against %a", m->name, sc->name, step, tp, tl);

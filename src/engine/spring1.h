@@ -18,7 +18,10 @@
 SW_INLINE void sw_spring_force(double k, double c, double rest, double dx, double dy, double dvx, double dvy,
                                int damped, double *fx, double *fy)
 {
-    double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
+    /* q = l + (l == 0) as a choice, not an addition: the same value (l + 0
+     * is l, a -0 compares equal to 0 and gives 1, a NaN stays), one
+     * addition fewer between the root and the division */
+    double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l == 0 ? 1.0 : l;
     double ux = dx / q, uy = dy / q;
     double mag = k * (l - rest);
     if (damped)

@@ -139,7 +139,31 @@ static double ss_verlet_1024(void) { return ss_verlet_error(1024); }
 static double ss_verlet_1700(void) { return ss_verlet_error(1700); }
 static double ss_verlet_4000(void) { return ss_verlet_error(4000); }
 
+/* The stiff chain n = 10 (k = 1e6, c = 100, g = 9.81) to T = 1 under
+ * dop853 at 1e-13, 1e-14 and 3e-15: the largest distance between any two
+ * of the three end states (the largest |y_i - y'_i| over the state). */
+static double chain_spread(void)
+{
+    static const double tol[3] = { 1e-13, 1e-14, 3e-15 };
+    double y[3][40], d = 0;
+    for (int r = 0; r < 3; r++) {
+        sw_sim s;
+        cl_sim_init(&s, "chain", "n=10 k=1e6 c=100 g=9.81", "dop853", 1.0);
+        sw_sim_set_tolerances(&s, tol[r], tol[r]);
+        ck_assert(!sw_sim_run_until(&s, 1.0));
+        ck_assert_int_eq(s.sys.ode->dim, 40);
+        memcpy(y[r], s.sys.y, sizeof y[r]);
+        sw_sim_free(&s);
+    }
+    for (int a = 0; a < 3; a++)
+        for (int b = a + 1; b < 3; b++)
+            for (int i = 0; i < 40; i++)
+                d = fmax(d, fabs(y[a][i] - y[b][i]));
+    return d;
+}
+
 const claim sw_claims_k[] = {
+    { PERF, "dop853's own runs at 1e-13, 1e-14 and 3e-15 end up to {2.8e-9} apart", chain_spread, ROUNDED, 0, "the largest state distance between any two of the three runs", NULL },
     { PERF, "verlet is within it at 1024 steps ({8.3e-4})", ss_verlet_1024, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },
     { PERF, "swings from {1.9e-4} (1700 steps) to 2.1e-3 (4000 steps)", ss_verlet_1700, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },
     { PERF, "swings from 1.9e-4 (1700 steps) to {2.1e-3} (4000 steps)", ss_verlet_4000, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },

@@ -97,6 +97,12 @@ END_TEST
 START_TEST(one_particle_entry_same_bits) { nys_one_particle_same_bits("rkn"); }
 END_TEST
 
+/* On the stiff spring (one particle on one anchored spring alone) the
+ * one-particle entry computes the spring inline: the same bits, steps,
+ * rejections and evaluations as through the derivative. */
+START_TEST(spring_inline_same_bits) { nys_spring_inline_same_bits("rkn"); }
+END_TEST
+
 /* Observed orders against the closed forms, fitted over three step sizes
  * halving, where the errors are far above round-off (1e-14 here) and past
  * the pre-asymptotic range:
@@ -187,6 +193,7 @@ Suite *make_rkn_suite(void)
     tcase_add_test(tc, order_conditions);
     tcase_add_test(tc, engine_is_the_tableau);
     tcase_add_test(tc, one_particle_entry_same_bits);
+    tcase_add_test(tc, spring_inline_same_bits);
     tcase_add_test(tc, observed_orders);
     tcase_add_test(tc, tolerance_proportional);
     tcase_add_test(tc, steps_shrink_at_perihelion);

@@ -104,6 +104,12 @@ END_TEST
 START_TEST(one_particle_entry_same_bits) { nys_one_particle_same_bits("rkn12"); }
 END_TEST
 
+/* On the stiff spring (one particle on one anchored spring alone) the
+ * one-particle entry computes the spring inline: the same bits, steps,
+ * rejections and evaluations as through the derivative. */
+START_TEST(spring_inline_same_bits) { nys_spring_inline_same_bits("rkn12"); }
+END_TEST
+
 /* On the orbit (one particle in one central field alone) the one-particle
  * entry computes the field inline (sw_ode_fast's central1) instead of
  * calling the derivative: the same bits, steps and rejections as through
@@ -114,29 +120,15 @@ END_TEST
 static void inline_field_run(int inline_field, double y[4], long counts[3])
 {
     sw_particles p;
-    sw_stepper s;
     sw_central1 c;
     char err[SW_ERRLEN];
     ck_assert_int_eq(sw_particles_init(&p, 1, 2.5, err, sizeof err), SW_OK);
     ck_assert_int_eq(sw_particles_add_central(&p, 0.3, -0.2, 1.7), SW_OK);
     p.y[0] = 0.3 + 0.2, p.y[1] = -0.2, p.y[2] = 0.0, p.y[3] = 3.5;
     ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
-    struct sw_ode_fast without = *p.ode.fast;
-    without.central1 = NULL;
-    sw_ode ode = p.ode;
-    if (!inline_field)
-        ode.fast = &without;
-    ck_assert_int_eq(sw_ode_central1(&ode, &c), inline_field);
-    if (inline_field)
-        ck_assert(c.cx == 0.3 && c.cy == -0.2 && c.mu == 1.7 && c.mass == 2.5 && c.inv == 1 / 2.5);
-    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find("rkn12"), &ode, err, sizeof err), SW_OK);
-    s.rtol = s.atol = 1e-10;
-    double t = 0;
-    for (int j = 0; j < 300; j++)
-        ck_assert_int_eq(sw_stepper_step(&s, &ode, &t, p.y, 1e9), SW_OK);
-    memcpy(y, p.y, 4 * sizeof *y);
-    counts[0] = s.accepted, counts[1] = s.rejected, counts[2] = ode.evals;
-    sw_stepper_free(&s);
+    ck_assert_int_eq(sw_ode_central1(&p.ode, &c), 1);
+    ck_assert(c.cx == 0.3 && c.cy == -0.2 && c.mu == 1.7 && c.mass == 2.5 && c.inv == 1 / 2.5);
+    nys_controlled_300("rkn12", &p, inline_field, y, counts);
     sw_particles_free(&p);
 }
 
@@ -265,6 +257,7 @@ Suite *make_rkn12_suite(void)
     tcase_add_test(tc, order_conditions);
     tcase_add_test(tc, engine_is_the_tableau);
     tcase_add_test(tc, one_particle_entry_same_bits);
+    tcase_add_test(tc, spring_inline_same_bits);
     tcase_add_test(tc, orbit_field_inline_same_bits);
     tcase_add_test(tc, observed_orders);
     tcase_add_test(tc, tolerance_proportional);

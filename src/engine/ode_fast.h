@@ -8,6 +8,7 @@
 #define SW_ENGINE_ODE_FAST_H
 
 #include "engine/central.h"
+#include "engine/spring1.h"
 #include "stepwise/ode.h"
 
 /* For pointwise systems, where each point's derivative depends only on that
@@ -36,6 +37,10 @@ struct sw_ode_fast {
      * the acceleration inline (sw_central1_accel, the same bits as the
      * derivative's) instead of calling the derivative. NULL or 0: no. */
     int (*central1)(const void *ctx, sw_central1 *c);
+    /* One particle on one undamped anchored spring, perhaps under gravity,
+     * and no other force (the stiff-spring pendulum): the same for
+     * sw_spring1_accel. NULL or 0: no. */
+    int (*spring1)(const void *ctx, sw_spring1 *s);
 };
 
 /* The fast path of ode, or NULL. */
@@ -54,6 +59,12 @@ static inline int sw_ode_position_only(const sw_ode *ode)
 static inline int sw_ode_central1(const sw_ode *ode, sw_central1 *c)
 {
     return ode->fast && ode->fast->central1 && ode->fast->central1(ode->ctx, c);
+}
+
+/* 1 when ode is one particle on one anchored spring alone, with *s set. */
+static inline int sw_ode_spring1(const sw_ode *ode, sw_spring1 *s)
+{
+    return ode->fast && ode->fast->spring1 && ode->fast->spring1(ode->ctx, s);
 }
 
 static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)

@@ -39,8 +39,19 @@ static int central1(const void *ctx, sw_central1 *c)
     return swp_deriv_is_small(p) && swp_small_central1(p, c);
 }
 
-/* No slices, no fused steps: the fact above, and the orbit's numbers. */
-static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1 };
+/* The stiff spring's spring and particle, when the small path is that
+ * alone and no resting contact adjusts the derivative. */
+static int spring1(const void *ctx, sw_spring1 *s)
+{
+    const sw_particles *p = ctx;
+    return swp_deriv_is_small(p) && !(p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR)) &&
+           swp_small_spring1(p, s);
+}
+
+/* No slices, no fused steps: the fact above, and the orbit's and the stiff
+ * spring's numbers. */
+static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1,
+                                                   .spring1 = spring1 };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {

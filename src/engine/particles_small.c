@@ -11,30 +11,14 @@
 #include <math.h>
 
 #include "engine/clones.h"
+#include "engine/spring1.h"
 
 /* Spring j's force on its particle a from d = x_a - x_b and dv = v_a - v_b,
- * as block_forces computes it (particles_deriv.c): |d| from the squares,
- * d = 0 divided by 1 (a force ±0), and where |d|² < 1e-290 or NaN from
- * hypot, no force where that is not positive. */
+ * as block_forces computes it (particles_deriv.c): engine/spring1.h. */
 SW_INLINE void spring_force(const struct sw_particles_model *m, int j, double dx, double dy, double dvx,
                             double dvy, int damped, double *fx, double *fy)
 {
-    double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
-    double ux = dx / q, uy = dy / q;
-    double mag = m->k[j] * (l - m->rest[j]);
-    if (damped)
-        mag += m->c[j] * (dvx * ux + dvy * uy);
-    if (!(l2 >= 1e-290)) {
-        l = hypot(dx, dy);
-        if (!(l > 0)) {
-            *fx = *fy = 0.0;
-            return;
-        }
-        ux = dx / l, uy = dy / l;
-        mag = m->k[j] * (l - m->rest[j]) + (damped ? m->c[j] * (dvx * ux + dvy * uy) : 0.0);
-    }
-    *fx = -mag * ux;
-    *fy = -mag * uy;
+    sw_spring_force(m->k[j], m->c[j], m->rest[j], dx, dy, dvx, dvy, damped, fx, fy);
 }
 
 /* dydt = (v, f/m) with f = Σ ±(spring forces) + central + m·g - k·v, for
@@ -147,4 +131,17 @@ swp_small_fn *swp_small_pick(const sw_particles *p)
         return NULL;
     int kinds = total > 0 ? 1 + m->damped : 0;
     return small_table[p->n == 1][kinds][central][m->gravity * 2 + m->drag];
+}
+
+int swp_small_spring1(const sw_particles *p, sw_spring1 *s)
+{
+    const struct sw_particles_model *m = p->model;
+    if ((m->small != small_110000 && m->small != small_110010) || m->first[1] - m->first[0] != 1)
+        return 0;
+    int j = m->spring[m->first[0]] / 2;
+    if (j < m->npair || m->sign[m->first[0]] != 1.0)
+        return 0;
+    *s = (sw_spring1){ .ax = m->ax[j], .ay = m->ay[j], .k = m->k[j], .rest = m->rest[j], .inv = p->inv_mass[0],
+                       .gravity = m->gravity, .mgx = p->mass[0] * m->gx, .mgy = p->mass[0] * m->gy };
+    return 1;
 }

@@ -9,6 +9,7 @@
  * lecture form, the same bits: sw_ref_rkn12 in reference_adaptive.c. */
 #include "engine/adaptive.h"
 #include "engine/clones.h"
+#include "engine/nystrom2.h"
 
 #include <math.h>
 #include <string.h>
@@ -123,79 +124,67 @@ SW_CLONES static void rkn12_range(RKN12_ARGS) { rkn12_body(RKN12_PASS(d)); }
  * a stage's state and acceleration stay in registers: no call, no trip
  * through memory between the stages' sums and the field; the same bits
  * again (orbit_field_inline_same_bits). */
-typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
-
-static inline v2d load2(const double *p)
+/* a at X: inline from the field or the spring, or through the derivative
+ * into k. */
+SW_INLINE sw_v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, const sw_spring1 *spring, double t,
+                     double *yt, sw_v2d X, double *k)
 {
-    v2d v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-/* a at X: inline from the field, or through the derivative into k. */
-SW_INLINE v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, double t, double *yt, v2d X, double *k)
-{
-    if (field) {
+    if (field || spring) {
         double ax, ay;
-        sw_central1_accel(field, canon, X[0], X[1], &ax, &ay);
-        return (v2d){ ax, ay };
+        if (field)
+            sw_central1_accel(field, canon, X[0], X[1], &ax, &ay);
+        else
+            sw_spring1_accel(spring, X[0], X[1], &ax, &ay);
+        return (sw_v2d){ ax, ay };
     }
     memcpy(yt, &X, sizeof X);
     sw_eval_slice(ode, t, 4, yt, k);
-    return load2(k + 2);
+    return sw_load2(k + 2);
 }
 
-#define F(j, w) (v2d){ (w), (w) } * A##j
-#define T(j, w) +(v2d){ (w), (w) } * A##j
+#define F(j, w) (sw_v2d){ (w), (w) } * A##j
+#define T(j, w) +(sw_v2d){ (w), (w) } * A##j
 #define STAGE(st, c, terms)                                                                               \
-    const v2d X##st = x + (v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
-    const v2d A##st = accel2(ode, field, canon, t + (c) * h, yt, X##st, k[(st) - 1]);
+    const sw_v2d X##st = x + (sw_v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
+    const sw_v2d A##st = accel2(ode, field, canon, spring, t + (c) * h, yt, X##st, k[(st) - 1]);
 
-/* field: NULL (call the derivative), or the orbit's, canon a constant. */
-SW_INLINE void rkn12_one(RKN12_ARGS, const sw_central1 *field, int canon)
+/* field and spring: NULL (call the derivative), or the orbit's field or the
+ * stiff spring's (at most one), canon a constant. */
+SW_INLINE void rkn12_one(RKN12_ARGS, const sw_central1 *field, int canon, const sw_spring1 *spring)
 {
-    (void)d;
-    const v2d hh = { h * h, h * h }, hv = { h, h }, x = load2(y), v = load2(y + 2), A1 = load2(k[0] + 2);
+    (void)d, (void)q; /* (the squares wait in registers: sw_nys2_finish) */
+    const sw_v2d hh = { h * h, h * h }, hv = { h, h }, x = sw_load2(y), v = sw_load2(y + 2);
+    const sw_v2d A1 = sw_load2(k[0] + 2);
     memcpy(yt + 2, &v, sizeof v);
     SW_RKN12_STAGES(STAGE, F, T)
-    const v2d x1 = x + hv * v + hh * (SW_RKN12_BX(F, T)), v1 = v + hv * (SW_RKN12_BV(F, T));
-    const v2d ex = hh * (SW_RKN12_EX(F, T)), ev = hv * (SW_RKN12_EV(F, T));
-    unsigned long long over = 0, add = sw_beyond_add(elim);
-    for (int i = 0; i < 2; i++) {
-        double mx = fabs(x[i]) > fabs(x1[i]) ? fabs(x[i]) : fabs(x1[i]);
-        double mv = fabs(v[i]) > fabs(v1[i]) ? fabs(v[i]) : fabs(v1[i]);
-        double rx = ex[i] / (atol + rtol * mx), rv = ev[i] / (atol + rtol * mv);
-        q[i] = rx * rx;
-        q[2 + i] = rv * rv;
-        over |= sw_beyond_bits(x1[i], add) | sw_beyond_bits(v1[i], add);
-    }
-    memcpy(saved, &x, sizeof x);
-    memcpy(saved + 2, &v, sizeof v);
-    memcpy(y, &x1, sizeof x1);
-    memcpy(y + 2, &v1, sizeof v1);
-    if (field) { /* [v | a] at the new state, as the derivative writes it */
+    const sw_v2d x1 = x + hv * v + hh * (SW_RKN12_BX(F, T)), v1 = v + hv * (SW_RKN12_BV(F, T));
+    const sw_v2d ex = hh * (SW_RKN12_EX(F, T)), ev = hv * (SW_RKN12_EV(F, T));
+    sw_nys2_finish(x, v, x1, v1, ex, ev, atol, rtol, elim, 0, y, saved, sums);
+    if (field || spring) { /* [v | a] at the new state, as the derivative writes it */
         memcpy(k[S], &v1, sizeof v1);
-        const v2d a1 = accel2(ode, field, canon, t + h, yt, x1, k[S]);
+        const sw_v2d a1 = accel2(ode, field, canon, spring, t + h, yt, x1, k[S]);
         memcpy(k[S] + 2, &a1, sizeof a1);
     } else {
         sw_eval_slice(ode, t + h, 4, y, k[S]);
     }
-    sums->err = sw_add_by4(sums->part[0], q, 4);
-    sums->beyond |= sw_beyond_any(over);
 }
 
-/* Three entries, not inlined, so that the one a run takes holds only its
+/* Four entries, not inlined, so that the one a run takes holds only its
  * own code (each some 7 KB). */
 #define ONE_ENTRY static __attribute__((noinline)) void
-ONE_ENTRY rkn12_called(RKN12_ARGS) { rkn12_one(RKN12_PASS(d), NULL, 0); }
-ONE_ENTRY rkn12_field(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 0); }
-ONE_ENTRY rkn12_canon(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 1); }
+ONE_ENTRY rkn12_called(RKN12_ARGS) { rkn12_one(RKN12_PASS(d), NULL, 0, NULL); }
+ONE_ENTRY rkn12_field(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 0, NULL); }
+ONE_ENTRY rkn12_canon(RKN12_ARGS, const sw_central1 *f) { rkn12_one(RKN12_PASS(d), f, 1, NULL); }
+ONE_ENTRY rkn12_spring(RKN12_ARGS, const sw_spring1 *sp) { rkn12_one(RKN12_PASS(d), NULL, 0, sp); }
 #undef ONE_ENTRY
 
 static void rkn12_range2(RKN12_ARGS)
 {
     sw_central1 field;
-    if (!sw_ode_central1(ode, &field))
+    sw_spring1 spring;
+    if (sw_ode_spring1(ode, &spring))
+        rkn12_spring(RKN12_PASS(d), &spring);
+    else if (!sw_ode_central1(ode, &field))
         rkn12_called(RKN12_PASS(d));
     else if (sw_central1_canon(&field))
         rkn12_canon(RKN12_PASS(d), &field);

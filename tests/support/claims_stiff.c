@@ -112,7 +112,61 @@ static double bead_evals_9(void) { double y[4]; return bead_run("rodas4", 1e-7, 
 static double bead_error_6(void) { return bead_error(2.5e-6); }
 static double bead_error_9(void) { return bead_error(1e-7); }
 
+/* Verlet on the stiff spring (k = 1e6) to T = 2 in `steps` fixed steps:
+ * its largest state error against dop853 at 1e-13 (3.0e-11 from the peer
+ * bench's reference, GSL's rk8pd at 1e-13). */
+static double ss_verlet_error(long steps)
+{
+    sw_sim s;
+    double ref[4], e = 0;
+    for (int run = 0; run < 2; run++) {
+        cl_sim_init(&s, "stiff-spring", "k=1e6", run ? "verlet" : "dop853", 2.0 / (run ? (double)steps : 1.0));
+        if (!run)
+            sw_sim_set_tolerances(&s, 1e-13, 1e-13);
+        ck_assert(!sw_sim_run_until(&s, 2.0));
+        for (int i = 0; i < 4; i++)
+            if (run)
+                e = fmax(e, fabs(s.sys.y[i] - ref[i]));
+            else
+                ref[i] = s.sys.y[i];
+        if (run)
+            ck_assert_int_eq(s.steps, steps);
+        sw_sim_free(&s);
+    }
+    return e;
+}
+static double ss_verlet_1024(void) { return ss_verlet_error(1024); }
+static double ss_verlet_1700(void) { return ss_verlet_error(1700); }
+static double ss_verlet_4000(void) { return ss_verlet_error(4000); }
+
+/* The stiff chain n = 10 (k = 1e6, c = 100, g = 9.81) to T = 1 under
+ * dop853 at 1e-13, 1e-14 and 3e-15: the largest distance between any two
+ * of the three end states (the largest |y_i - y'_i| over the state). */
+static double chain_spread(void)
+{
+    static const double tol[3] = { 1e-13, 1e-14, 3e-15 };
+    double y[3][40], d = 0;
+    for (int r = 0; r < 3; r++) {
+        sw_sim s;
+        cl_sim_init(&s, "chain", "n=10 k=1e6 c=100 g=9.81", "dop853", 1.0);
+        sw_sim_set_tolerances(&s, tol[r], tol[r]);
+        ck_assert(!sw_sim_run_until(&s, 1.0));
+        ck_assert_int_eq(s.sys.ode->dim, 40);
+        memcpy(y[r], s.sys.y, sizeof y[r]);
+        sw_sim_free(&s);
+    }
+    for (int a = 0; a < 3; a++)
+        for (int b = a + 1; b < 3; b++)
+            for (int i = 0; i < 40; i++)
+                d = fmax(d, fabs(y[a][i] - y[b][i]));
+    return d;
+}
+
 const claim sw_claims_k[] = {
+    { PERF, "dop853's own runs at 1e-13, 1e-14 and 3e-15 end up to {2.8e-9} apart", chain_spread, ROUNDED, 0, "the largest state distance between any two of the three runs", NULL },
+    { PERF, "verlet is within it at 1024 steps ({8.3e-4})", ss_verlet_1024, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },
+    { PERF, "swings from {1.9e-4} (1700 steps) to 2.1e-3 (4000 steps)", ss_verlet_1700, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },
+    { PERF, "swings from 1.9e-4 (1700 steps) to {2.1e-3} (4000 steps)", ss_verlet_4000, ROUNDED, 0, "the largest state error at T against dop853 at 1e-13", NULL },
     { PERF, "rodas4 at rtol = atol = 2.5e-6 and 1e-7 makes {239} and 197 evaluations", bead_evals_6, EXACT, 0, "the run the peer bench times", NULL },
     { PERF, "rodas4 at rtol = atol = 2.5e-6 and 1e-7 makes 239 and {197} evaluations", bead_evals_9, EXACT, 0, "the run the peer bench times", NULL },
     { PERF, "and 197 evaluations within {1e-6} and 1e-9", bead_error_6, ATMOST, 0, "the largest state error against dop853 at 1e-13", NULL },

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/ode_fast.h"
 #include "engine/stepper.h"
 #include "stepwise/flow.h"
 #include "stepwise/particles.h"
@@ -299,5 +300,85 @@ void nys_tolerance_proportional(const char *method, double tol0)
                               k ? "orbit" : "oscillator", tol, e, prev);
             prev = e;
         }
+    }
+}
+
+void nys_controlled_300(const char *method, sw_particles *p, int inline_path, double y[4], long counts[3])
+{
+    sw_stepper s;
+    char err[SW_ERRLEN];
+    struct sw_ode_fast without = *p->ode.fast;
+    without.central1 = NULL;
+    without.spring1 = NULL;
+    sw_ode ode = p->ode;
+    if (!inline_path)
+        ode.fast = &without;
+    ck_assert_int_eq(sw_stepper_init(&s, sw_integrator_find(method), &ode, err, sizeof err), SW_OK);
+    s.rtol = s.atol = 1e-10;
+    double t = 0;
+    for (int j = 0; j < 300; j++)
+        ck_assert_int_eq(sw_stepper_step(&s, &ode, &t, p->y, 1e9), SW_OK);
+    memcpy(y, p->y, 4 * sizeof *y);
+    counts[0] = s.accepted, counts[1] = s.rejected, counts[2] = ode.evals;
+    sw_stepper_free(&s);
+}
+
+/* One particle (mass 2.5) on one anchored spring (anchor (0.3, -0.2),
+ * k = 4e4, rest 1.3) under gravity (0.7, -9.81), started off its rest
+ * length and moving; `more`: 0 that alone, 1 a second spring, 2 the spring
+ * damped, 3 a second particle, 4 a resting floor, 5 no gravity. */
+static void spring1_particle(sw_particles *p, int more)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(p, more == 3 ? 2 : 1, 2.5, err, sizeof err), SW_OK);
+    for (int j = 0; j < (more == 1 ? 2 : 1); j++) {
+        sw_spring *sp = sw_particles_add_springs(p, 1);
+        ck_assert_ptr_nonnull(sp);
+        *sp = (sw_spring){ .a = 0, .b = -1, .k = 4e4, .c = more == 2 ? 0.5 : 0.0, .rest = 1.3, .ax = 0.3 + j,
+                           .ay = -0.2 };
+    }
+    if (more != 5)
+        ck_assert_int_eq(sw_particles_add_gravity(p, 0.7, -9.81), SW_OK);
+    if (more == 4) {
+        p->walls.sides = SW_WALL_FLOOR;
+        p->walls.ymin = -10.0;
+        p->walls.rest = 0.1;
+    }
+    p->y[0] = 0.3 + 0.9, p->y[1] = -0.2 - 1.0, p->y[2 * p->n] = 0.4, p->y[2 * p->n + 1] = -0.3;
+    ck_assert_int_eq(sw_particles_finish(p, err, sizeof err), SW_OK);
+}
+
+/* 300 steps under control at 1e-10, with the spring inline or through the
+ * derivative (a copy of the system with spring1 taken away). */
+static void spring1_run(const char *method, int inline_spring, int gravity, double y[4], long counts[3])
+{
+    sw_particles p;
+    sw_spring1 sp;
+    spring1_particle(&p, gravity ? 0 : 5);
+    ck_assert_int_eq(sw_ode_spring1(&p.ode, &sp), 1);
+    ck_assert(sp.ax == 0.3 && sp.ay == -0.2 && sp.k == 4e4 && sp.rest == 1.3 && sp.inv == 1 / 2.5 &&
+              sp.gravity == gravity);
+    nys_controlled_300(method, &p, inline_spring, y, counts);
+    sw_particles_free(&p);
+}
+
+void nys_spring_inline_same_bits(const char *method)
+{
+    for (int gravity = 0; gravity < 2; gravity++) {
+        double a[4], b[4];
+        long ca[3], cb[3];
+        spring1_run(method, 1, gravity, a, ca);
+        spring1_run(method, 0, gravity, b, cb);
+        ck_assert_msg(memcmp(a, b, sizeof a) == 0, "inline (%.17g, %.17g, %.17g, %.17g), through the derivative "
+                      "(%.17g, %.17g, %.17g, %.17g)", a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]);
+        ck_assert(ca[0] == cb[0] && ca[1] == cb[1] && ca[2] == cb[2]);
+        ck_assert_int_gt(ca[1], 0); /* the run did reject trials: a path the two share too */
+    }
+    for (int more = 1; more <= 4; more++) {
+        sw_particles p;
+        sw_spring1 sp;
+        spring1_particle(&p, more);
+        ck_assert_msg(sw_ode_spring1(&p.ode, &sp) == 0, "case %d offers the inline spring", more);
+        sw_particles_free(&p);
     }
 }

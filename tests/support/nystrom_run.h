@@ -51,6 +51,21 @@ void nys_engine_is_tableau(const char *method, const nys_tableau *tb, const long
  * bits (ck_assert). */
 void nys_one_particle_same_bits(const char *method);
 
+/* 300 steps of method on the one particle p under control at rtol = atol =
+ * 1e-10 (ck_assert that each succeeds), through p's own solver view, or
+ * (inline_path 0) through a copy of it without the inline paths (central1,
+ * spring1): the state into y, the accepted and rejected steps and the
+ * evaluations into counts. */
+void nys_controlled_300(const char *method, sw_particles *p, int inline_path, double y[4], long counts[3]);
+
+/* One particle on one anchored spring, with gravity and without: the
+ * method's entry that computes the spring inline (sw_ode_fast's spring1)
+ * ends on the same bits, steps, rejections and evaluations as through the
+ * derivative, 300 steps under control at 1e-10 (ck_assert); and a second
+ * spring, damping, a second particle or a resting floor takes the inline
+ * spring away. */
+void nys_spring_inline_same_bits(const char *method);
+
 /* The method under error control at rtol = atol = tol over [0, T]: the
  * error against the closed form at T, the evaluations, and (steps not
  * NULL) the smallest and largest accepted step with the radius of each. */

@@ -60,6 +60,7 @@ typedef struct sph_work {
  * at 0.5 ms builds its list every 3.8 steps over its first second at 0.5
  * h, every 5.8 at 0.8 h, every 9.4 at 1.3 h (docs/performance.md). */
 #define SKIN 0.8
+#define REBUILD 0.49 /* of the skin: a move this long rebuilds the list (half, less a margin for rounding) */
 #define LIST_EACH 40
 #define PAIRS_EACH 24
 
@@ -234,7 +235,7 @@ static int build(sph_work *w, int n, const double *x, double h)
  * then have been beyond (1 + skin) h then. */
 static int moved(const sph_work *w, int n, const double *x, double h)
 {
-    double lim = 0.49 * w->skin * h, lim2 = lim * lim;
+    double lim = REBUILD * w->skin * h, lim2 = lim * lim;
     int out = 0;
     for (int i = 0; i < n; i++) {
         double dx = x[2 * i] - w->xb[2 * i], dy = x[2 * i + 1] - w->xb[2 * i + 1];
@@ -454,6 +455,14 @@ long swp_sph_builds(const sw_force *fo)
 {
     const sph_work *w = fo->work;
     return w ? w->builds : 0;
+}
+
+double swp_sph_skin(const sw_force *fo, double *rebuild)
+{
+    const sph_work *w = fo->work;
+    double skin = w ? w->skin : SKIN;
+    *rebuild = REBUILD * skin;
+    return skin;
 }
 
 void swp_sph_set_skin(const sw_force *fo, double skin)

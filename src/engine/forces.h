@@ -87,4 +87,8 @@ long swp_sph_builds(const sw_force *fo);
  * results do not depend on it, to the bit: tests/check_water.c. */
 void swp_sph_set_skin(const sw_force *fo, double skin);
 
+/* Its skin (in units of h) and, in *rebuild, the move that rebuilds the
+ * list (in units of h). */
+double swp_sph_skin(const sw_force *fo, double *rebuild);
+
 #endif

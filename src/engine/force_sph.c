@@ -43,16 +43,16 @@ typedef struct sph_work {
     double skin;        /* the list's reach beyond h, in units of h */
     double *xb;         /* the positions the list was built at */
     int *ls, *lb;       /* the list: a's candidates b > a, ascending, are lb[ls[a] .. ls[a + 1]) */
-    int *ks, *kb;       /* the pairs within h the density pass kept, laid out as the list */
-    long lcap, kcap;    /* room in lb and kb */
-    int listed, kept;   /* 1: the list holds every pair within (1 + skin) h of xb; kb holds every pair within h */
+    int *ks, *kb;       /* while listed, the pairs within h the density pass kept: a's are kb[ks[a] .. ks[a + 1]) */
+    long lcap;          /* room in lb, and so in kb (the kept are some of the list's) */
+    int listed;         /* 1: the list holds every pair within (1 + skin) h of xb */
     int *scratch;       /* n ints: one particle's candidates as they are gathered */
     long visited;       /* distances computed by the last evaluation */
     long builds;        /* lists built so far */
 } sph_work;
 
 /* The list's reach beyond h (a Verlet list's skin), in units of h, and the
- * room for candidates and for pairs within h a particle: a lattice of h =
+ * room for its candidates, on average a particle: a lattice of h =
  * 2 spacings has 6 to 9 pairs within h a particle (each counted once) and
  * 21 within 1.8 h; more (a fluid squeezed far past its rest density) and
  * the evaluation gathers its neighbours from the grid as it goes. A wider
@@ -62,7 +62,6 @@ typedef struct sph_work {
 #define SKIN 0.8
 #define REBUILD 0.49 /* of the skin: a move this long rebuilds the list (half, less a margin for rounding) */
 #define LIST_EACH 40
-#define PAIRS_EACH 24
 
 /* One block: the header, then rho, press, xb (n, n, 2n doubles), then
  * cell, order, scratch (n each), start (ncap + 1), ls and ks (n + 1 each),
@@ -70,10 +69,9 @@ typedef struct sph_work {
 static void *sph_work_new(int n)
 {
     int ncap = 4 * n + 64;
-    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, lcap = (size_t)LIST_EACH * n,
-           kcap = (size_t)PAIRS_EACH * n;
+    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, lcap = (size_t)LIST_EACH * n;
     char *block = calloc(1, head + (size_t)4 * n * sizeof(double) +
-                                ((size_t)3 * n + ncap + 1 + 2 * ((size_t)n + 1) + lcap + kcap) * sizeof(int));
+                                ((size_t)3 * n + ncap + 1 + 2 * ((size_t)n + 1) + 2 * lcap) * sizeof(int));
     if (!block)
         return NULL;
     sph_work *w = (sph_work *)block;
@@ -92,7 +90,6 @@ static void *sph_work_new(int n)
     w->lb = w->ks + n + 1;
     w->kb = w->lb + lcap;
     w->lcap = (long)lcap;
-    w->kcap = (long)kcap;
     return w;
 }
 
@@ -263,15 +260,12 @@ typedef struct sph_ctx {
 /* a's density terms from its candidates b (ascending, all > a) within h:
  * ρ_a and ρ_b both get the pair's term, so every density sums its
  * neighbours in ascending order whatever found them. The pairs within h
- * are kept (kb) while they fit. */
-static void density_row(sph_ctx *c, int a, const int *cand, int k, long *nk)
+ * go to keep (room for k) unless it is NULL; their count. */
+static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
 {
-    sph_work *w = c->w;
     const double *x = c->x, *mass = c->p->mass;
-    double h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = w->rho[a];
-    double *rho = w->rho;
-    int *kb = w->kb;
-    long kk = *nk, kcap = w->kcap;
+    double *rho = c->w->rho, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
+    int kept = 0;
     for (int j = 0; j < k; j++) {
         int b = cand[j];
         double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
@@ -279,13 +273,13 @@ static void density_row(sph_ctx *c, int a, const int *cand, int k, long *nk)
             double q = h2 - r2, t = w6 * q * q * q;
             ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
             rho[b] += ma * t;
-            if (kk < kcap)
-                kb[kk] = b;
-            kk++;
+            if (keep)
+                keep[kept] = b;
+            kept++;
         }
     }
     rho[a] = ra;
-    *nk = kk;
+    return kept;
 }
 
 /* a's pair forces from its candidates b (ascending, all > a) within h: f_a
@@ -332,9 +326,9 @@ static int in_zone(const sw_force *fo, const double *xi)
 }
 
 /* Neighbours from the list while no particle has moved skin/2 since it was
- * built (then built again); where the list or the kept pairs do not fit,
- * gathered from the grid as the passes go. Every sum runs over the
- * neighbours in ascending order either way: the same bits. */
+ * built (then built again); where the list does not fit, gathered from the
+ * grid as the passes go. Every sum runs over the neighbours in ascending
+ * order either way: the same bits. */
 static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
     sph_work *w = fo->work;
@@ -348,31 +342,24 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
         w->rho[i] = p->mass[i] * w0;
     sph_ctx c = { p, fo, w, x, v, f, h2, 4.0 / (SW_PI * h2 * h2 * h2 * h2), spiky(fo),
                   SW_PI * (fo->h * fo->h * fo->h * fo->h * fo->h) };
-    long nk = 0;
     w->ks[0] = 0;
-    for (int a = 0; a < n; a++) {
-        const int *cand = w->lb + w->ls[a];
-        int k = w->listed ? w->ls[a + 1] - w->ls[a] : gather(w, x, a, h2, w->scratch, &w->visited);
-        if (w->listed)
+    for (int a = 0; a < n; a++)
+        if (w->listed) {
+            int k = w->ls[a + 1] - w->ls[a];
             w->visited += k;
-        else
-            cand = w->scratch;
-        density_row(&c, a, cand, k, &nk);
-        w->ks[a + 1] = (int)(nk < w->kcap ? nk : w->kcap);
-    }
-    w->kept = nk <= w->kcap;
+            w->ks[a + 1] = w->ks[a] + density_row(&c, a, w->lb + w->ls[a], k, w->kb + w->ks[a]);
+        } else {
+            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), NULL);
+        }
     for (int i = 0; i < n; i++) {
         double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
         w->press[i] = pressure / (w->rho[i] * w->rho[i]);
     }
-    for (int a = 0; a < n; a++) {
-        if (w->kept)
+    for (int a = 0; a < n; a++)
+        if (w->listed)
             force_row(&c, a, w->kb + w->ks[a], w->ks[a + 1] - w->ks[a]);
-        else if (w->listed)
-            force_row(&c, a, w->lb + w->ls[a], w->ls[a + 1] - w->ls[a]);
         else
             force_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited));
-    }
     double grip = 2.0 * sqrt(fo->stiff) / fo->h;
     for (int i = 0; i < n; i++) {
         double at = in_zone(fo, x + 2 * i) ? grip : 0.0;

@@ -290,7 +290,7 @@ static int is_slow(double (*compute)(void))
                                      cl_gyre_first_error, cl_gyre_slope_min, cl_gyre_slope_max,
                                      cl_water_euler_1s, cl_water_euler_8s, cl_dam_worst, cl_dam_ahead_least,
                                      cl_dam_ahead_most, cl_dam_behind_least, cl_dam_behind_most, cl_dam_default_nu,
-                                     cl_big_dam_blowup };
+                                     cl_big_dam_blowup, cl_big_dam_builds, cl_big_dam_build_every };
     for (size_t i = 0; i < sizeof slow / sizeof slow[0]; i++)
         if (slow[i] == compute)
             return 1;

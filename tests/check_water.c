@@ -225,6 +225,95 @@ START_TEST(water_deterministic)
 }
 END_TEST
 
+/* The neighbour list changes no bit (engine/force_sph.c): each density and
+ * force sums its neighbours in ascending order, whatever found them. The
+ * dam of 2000 under symplectic Euler, 300 steps of 0.5 ms (it breaks:
+ * particles cross cells and the list is rebuilt), with the list's skin 0
+ * (built from the grid at every evaluation: the plain walk), 0.5 h and
+ * 1 h: the same state bit for bit after every step. The skins' lists
+ * were kept across steps and rebuilt: fewer builds than steps, more than
+ * one, and fewer for the wider skin. */
+START_TEST(sph_list_same_bits_any_skin)
+{
+    const double skin[3] = { 0, 0.5, 1.0 };
+    sw_sim s[3];
+    for (int k = 0; k < 3; k++) {
+        water_sim(&s[k], "n=2000", "symplectic-euler", 0.0005);
+        swp_sph_set_skin(sph_of(&s[k]), skin[k]);
+    }
+    size_t bytes = (size_t)s[0].sys.ode->dim * sizeof *s[0].sys.y;
+    for (int step = 0; step < 300; step++)
+        for (int k = 0; k < 3; k++) {
+            ck_assert_int_eq(sw_sim_step(&s[k]), SW_OK);
+            if (k > 0)
+                ck_assert_msg(memcmp(s[0].sys.y, s[k].sys.y, bytes) == 0, "skin %g h: step %d differs", skin[k],
+                              step + 1);
+        }
+    long built[3];
+    for (int k = 0; k < 3; k++)
+        built[k] = swp_sph_builds(sph_of(&s[k]));
+    printf("water list: builds in 300 steps: skin 0: %ld, 0.5 h: %ld, 1 h: %ld\n", built[0], built[1], built[2]);
+    ck_assert_int_ge(built[0], 300);
+    ck_assert(built[1] > 1 && built[1] < 300 && built[2] > 1 && built[2] < built[1]);
+    for (int k = 0; k < 3; k++)
+        sw_sim_free(&s[k]);
+}
+END_TEST
+
+/* The list is rebuilt once a particle has moved skin/2 since it was built,
+ * and not before; either way the derivative is the plain walk's (skin 0),
+ * bit for bit. A column at rest (skin 0.5 h): one particle moved 0.45 of
+ * skin/2 (list kept), 1.1 of it (rebuilt), then put 0.5 h beside a
+ * particle some rows away, a pair the kept list lacks (rebuilt, and the
+ * pair counts: that particle's acceleration changes). */
+static void deriv_at(sw_sim *s, const double *y, double *d)
+{
+    s->sys.ode->deriv(s->sys.ode->ctx, 0.0, y, d);
+}
+
+START_TEST(sph_list_rebuilt_past_skin)
+{
+    sw_sim a, b;
+    water_sim(&a, "n=800 shape=2", "symplectic-euler", 0.001);
+    water_sim(&b, "n=800 shape=2", "symplectic-euler", 0.001);
+    const sw_force *fa = sph_of(&a);
+    swp_sph_set_skin(fa, 0.5);
+    swp_sph_set_skin(sph_of(&b), 0);
+    int n = a.sys.n, dim = a.sys.ode->dim, i = n / 2, j = n / 2 + n / 4;
+    double h = fa->h, half = 0.5 * 0.5 * h;
+    double *y = malloc((size_t)dim * sizeof *y), *da = malloc((size_t)dim * sizeof *da),
+           *db = malloc((size_t)dim * sizeof *db), *d0 = malloc((size_t)dim * sizeof *d0);
+    ck_assert(y && da && db && d0);
+    memcpy(y, a.sys.y, (size_t)dim * sizeof *y);
+    deriv_at(&a, y, d0);
+    ck_assert_int_eq(swp_sph_builds(fa), 1);
+    const double shift[2] = { 0.45 * half, 1.1 * half };
+    const long builds[2] = { 1, 2 };
+    for (int k = 0; k < 2; k++) {
+        memcpy(y, a.sys.y, (size_t)dim * sizeof *y);
+        y[2 * i] += shift[k];
+        deriv_at(&a, y, da);
+        deriv_at(&b, y, db);
+        ck_assert_int_eq(swp_sph_builds(fa), builds[k]);
+        ck_assert_msg(memcmp(da, db, (size_t)dim * sizeof *da) == 0, "moved %g of skin/2: not the plain walk's",
+                      shift[k] / half);
+    }
+    memcpy(y, a.sys.y, (size_t)dim * sizeof *y);
+    double far = hypot(y[2 * i] - y[2 * j], y[2 * i + 1] - y[2 * j + 1]);
+    ck_assert_msg(far > 3 * h, "particles %d and %d only %g h apart", i, j, far / h);
+    y[2 * i] = y[2 * j] + 0.5 * h;
+    y[2 * i + 1] = y[2 * j + 1];
+    deriv_at(&a, y, da);
+    deriv_at(&b, y, db);
+    ck_assert_int_eq(swp_sph_builds(fa), 3);
+    ck_assert(memcmp(da, db, (size_t)dim * sizeof *da) == 0);
+    ck_assert(da[2 * n + 2 * j] != d0[2 * n + 2 * j]);
+    free(y), free(da), free(db), free(d0);
+    sw_sim_free(&a);
+    sw_sim_free(&b);
+}
+END_TEST
+
 /* A column at rest (shape 2, 0.8 m deep) settles under viscosity (nothing
  * faster than 0.3 m/s after 3 s; the bulk far slower); then the
  * pressure at depth d (the direct sum's density through the equation of
@@ -396,23 +485,27 @@ START_TEST(water_dam_break_martin_moyce)
 }
 END_TEST
 
-/* The neighbour search is O(n), counted, not timed: the candidate pairs
- * one evaluation computes a distance for (engine/force_sph.c counts them),
- * per particle, on a column at rest of 1e3, 1e4 and 1e5 particles (the
- * same density: the lattice spacing s shrinks as n grows and h = 2 s with
- * it). Independently: cells are h wide and a particle is checked against
- * the rest of its own cell's particles once each way round (half) and four
- * neighbouring cells', 4.5 cells of h² at 1/(s²·√3/2) particles each, less
- * the half of itself: 4.5·4/(√3/2) - 1/2 = 20.3 a particle in the bulk.
- * At every n within [0.85, 1] of that, below it by the cells along the
- * column's edges, part empty: a share of the cells that falls as 1/√n, so
- * the shortfall falls by √10 = 3.2 a decade of n (checked: by 2 to 5).
- * The count a particle tends to the bulk's: O(n) in all. Every pair would
- * be n/2 a particle (50 000 at 1e5). */
+/* The search is O(n): the candidate pairs (distances computed) of one
+ * evaluation that builds the neighbour list (engine/force_sph.c counts
+ * them), per particle, on a column at rest of 1e3, 1e4 and 1e5 particles
+ * (the same density: the lattice spacing s shrinks as n grows and h = 2 s
+ * with it), the skin set to 0.6 h. Independently: the build's cells are
+ * 1.6 h = 3.2 s wide and a particle is checked against the particles of
+ * its own and the 8 cells around it with a larger index, half of them on
+ * average (the relation is symmetric): 9 cells of (3.2 s)² at 1/(s²·√3/2)
+ * particles each, less itself, halved: (9·3.2²/(√3/2) - 1)/2 = 53.0 in
+ * the bulk; then the evaluation checks the list, the lattice's pairs
+ * within 3.2 s, each once: 36 neighbours (shells at 1, √3, 2, √7, 3 s),
+ * 18. A second evaluation at the same state checks the list alone: 18.
+ * At every n within [0.8, 1] of those, below them by the cells and the
+ * neighbours along the column's edges, part empty: a share of the
+ * particles that falls as 1/√n, so the shortfall falls by √10 = 3.2 a
+ * decade of n (checked: by 2 to 5). The count a particle tends to the
+ * bulk's: O(n) in all. Every pair would be n/2 a particle (50 000 at 1e5). */
 START_TEST(water_neighbours_linear)
 {
     const sw_scene *sc = sw_scene_find("water");
-    double bulk = 4.5 * 4.0 / 0.86602540378443865 - 0.5, each[3];
+    double cells = 9 * 3.2 * 3.2 / 0.86602540378443865, bulk[2] = { (cells - 1) / 2 + 18, 18 }, each[2][3];
     for (int k = 0; k < 3; k++) {
         double p[SW_MAX_PARAMS];
         char err[SW_ERRLEN];
@@ -423,24 +516,30 @@ START_TEST(water_neighbours_linear)
         ck_assert_msg(sw_system_build(&sys, sc, p, err, sizeof err) == SW_OK, "%s", err);
         double *d = malloc((size_t)sys.ode->dim * sizeof *d);
         ck_assert_ptr_nonnull(d);
-        sys.ode->deriv(sys.ode->ctx, 0.0, sys.y, d);
         const sw_force *fo = NULL;
         for (int i = 0; i < sys.particles.nforces; i++)
             if (sys.particles.forces[i].kind == SW_FORCE_SPH)
                 fo = &sys.particles.forces[i];
         ck_assert_ptr_nonnull(fo);
-        each[k] = (double)swp_sph_visited(fo) / sys.n;
-        printf("water neighbours: n = %d: %.2f candidate pairs a particle (bulk %.2f; every pair: %.0f)\n", sys.n,
-               each[k], bulk, (sys.n - 1) / 2.0);
-        ck_assert(each[k] >= 0.85 * bulk && each[k] < bulk);
+        swp_sph_set_skin(fo, 0.6);
+        for (int e = 0; e < 2; e++) {
+            sys.ode->deriv(sys.ode->ctx, 0.0, sys.y, d);
+            each[e][k] = (double)swp_sph_visited(fo) / sys.n;
+            printf("water neighbours: n = %d, %s: %.2f candidate pairs a particle (bulk %.2f; every pair: %.0f)\n",
+                   sys.n, e ? "the list kept" : "the list built", each[e][k], bulk[e], (sys.n - 1) / 2.0);
+            ck_assert(each[e][k] >= 0.8 * bulk[e] && each[e][k] < bulk[e]);
+        }
+        ck_assert_int_eq(swp_sph_builds(fo), 1);
         free(d);
         sw_system_free(&sys);
     }
-    for (int k = 0; k < 2; k++) {
-        double fall = (bulk - each[k]) / (bulk - each[k + 1]);
-        printf("water neighbours: the shortfall falls %.2f times from 1e%d to 1e%d\n", fall, 3 + k, 4 + k);
-        ck_assert(fall > 2 && fall < 5);
-    }
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k < 2; k++) {
+            double fall = (bulk[e] - each[e][k]) / (bulk[e] - each[e][k + 1]);
+            printf("water neighbours (%s): the shortfall falls %.2f times from 1e%d to 1e%d\n",
+                   e ? "kept" : "built", fall, 3 + k, 4 + k);
+            ck_assert(fall > 2 && fall < 5);
+        }
 }
 END_TEST
 
@@ -522,6 +621,8 @@ Suite *make_water_suite(void)
     tcase_add_test(tc, sph_gradient_near_continuum);
     tcase_add_test(tc, sph_momentum_only_gravity_and_walls);
     tcase_add_test(tc, water_deterministic);
+    tcase_add_test(tc, sph_list_same_bits_any_skin);
+    tcase_add_test(tc, sph_list_rebuilt_past_skin);
     tcase_add_test(tc, water_hydrostatic_column);
     tcase_add_test(tc, water_cfl_limit);
     tcase_add_test(tc, water_cfl_euler);

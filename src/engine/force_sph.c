@@ -14,11 +14,15 @@
  * only by gravity and the walls. Walls x = 0, x = box_w and y = 0 push a
  * particle within `zone` of them with acceleration 4·stiff/h²·(zone - dist)
  * and hold it there (no slip) with a damping -(2c/h)·v.
- * Neighbours come from a uniform grid (a cell list, counting sort, O(n)) of
- * cells at least h wide over the particles' bounding box; pairs are visited
- * cell by cell in a fixed order, so results are deterministic; the force
- * pass takes the pairs the density pass found, in its order. Invariant: an
- * evaluation allocates nothing (the grid is sized when the force is added).
+ * Neighbours come from a Verlet list: every pair within (1 + skin) h, found
+ * in a uniform grid (a cell list, counting sort, O(n)) of cells at least
+ * that wide over the particles' bounding box, kept across evaluations and
+ * built again once a particle has moved skin/2 (then no pair within h can
+ * be missing from it). Each particle's sums (density, force) run over its
+ * neighbours in ascending index order, whatever found them (the list, a
+ * list of another skin, the grid): the same bits, deterministic; the force
+ * pass takes the pairs the density pass kept. Invariant: an evaluation
+ * allocates nothing (all is sized when the force is added).
  * The Jacobian it gives is each particle's own estimate (pairs 0): the walls,
  * and for the pressure and the viscosity each neighbour counted twice, as
  * in the stiffest mode of a lattice, neighbours moving against each other. */
@@ -36,37 +40,56 @@ typedef struct sph_work {
     int *cell, *start, *order; /* each particle's cell; cell c's particles are order[start[c] .. start[c + 1]) */
     double x0, y0, cs;  /* the grid's corner and cell size */
     int nx, ny;
-    int *pair;          /* the pairs within h the density pass found, (a, b) in its order */
-    long npair, paircap; /* how many; room for (-1 when they did not fit) */
-    long visited;       /* candidate pairs (distances computed) by the last pass over the grid */
+    double skin;        /* the list's reach beyond h, in units of h */
+    double *xb;         /* the positions the list was built at */
+    int *ls, *lb;       /* the list: a's candidates b > a, ascending, are lb[ls[a] .. ls[a + 1]) */
+    int *ks, *kb;       /* while listed, the pairs within h the density pass kept: a's are kb[ks[a] .. ks[a + 1]) */
+    long lcap;          /* room in lb, and so in kb (the kept are some of the list's) */
+    int listed;         /* 1: the list holds every pair within (1 + skin) h of xb */
+    int *scratch;       /* n ints: one particle's candidates as they are gathered */
+    long visited;       /* distances computed by the last evaluation */
+    long builds;        /* lists built so far */
 } sph_work;
 
-/* Room for this many pairs a particle: a lattice of h = 2 spacings has 9
- * (18 neighbours), h = 3 spacings 18; more (a fluid squeezed far past its
- * rest density) and the force pass walks the grid again. */
-#define PAIRS_EACH 24
+/* The list's reach beyond h (a Verlet list's skin), in units of h, and the
+ * room for its candidates, on average a particle: a lattice of h =
+ * 2 spacings has 6 to 9 pairs within h a particle (each counted once) and
+ * 21 within 1.8 h; more (a fluid squeezed far past its rest density) and
+ * the evaluation gathers its neighbours from the grid as it goes. A wider
+ * skin is more candidates an evaluation and fewer builds: the dam of 1e4
+ * at 0.5 ms builds its list every 3.8 steps over its first second at 0.5
+ * h, every 5.8 at 0.8 h, every 9.4 at 1.3 h (docs/performance.md). */
+#define SKIN 0.8
+#define REBUILD 0.49 /* of the skin: a move this long rebuilds the list (half, less a margin for rounding) */
+#define LIST_EACH 40
 
-/* One block: the header, then rho and press (n each), then cell, order
- * (n each), start (ncap + 1) and the pairs (2 PAIRS_EACH n); the system
- * frees it. */
+/* One block: the header, then rho, press, xb (n, n, 2n doubles), then
+ * cell, order, scratch (n each), start (ncap + 1), ls and ks (n + 1 each),
+ * lb and kb; the system frees it. */
 static void *sph_work_new(int n)
 {
     int ncap = 4 * n + 64;
-    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, paircap = (size_t)PAIRS_EACH * n;
-    char *block = calloc(1, head + (size_t)2 * n * sizeof(double) +
-                                ((size_t)2 * n + ncap + 1 + 2 * paircap) * sizeof(int));
+    size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, lcap = (size_t)LIST_EACH * n;
+    char *block = calloc(1, head + (size_t)4 * n * sizeof(double) +
+                                ((size_t)3 * n + ncap + 1 + 2 * ((size_t)n + 1) + 2 * lcap) * sizeof(int));
     if (!block)
         return NULL;
     sph_work *w = (sph_work *)block;
     w->n = n;
     w->ncap = ncap;
+    w->skin = SKIN;
     w->rho = (double *)(block + head);
     w->press = w->rho + n;
-    w->cell = (int *)(w->press + n);
+    w->xb = w->press + n;
+    w->cell = (int *)(w->xb + 2 * (size_t)n);
     w->order = w->cell + n;
-    w->start = w->order + n;
-    w->pair = w->start + ncap + 1;
-    w->paircap = (long)paircap;
+    w->scratch = w->order + n;
+    w->start = w->scratch + n;
+    w->ls = w->start + ncap + 1;
+    w->ks = w->ls + n + 1;
+    w->lb = w->ks + n + 1;
+    w->kb = w->lb + lcap;
+    w->lcap = (long)lcap;
     return w;
 }
 
@@ -143,6 +166,81 @@ static inline void each_pair(sph_work *w, const double *x, double h, pair_fn *vi
     w->visited = visited;
 }
 
+/* a's neighbours b > a within √r2max of it, in ascending order, into out
+ * (the grid's cells at least that wide): their count. The candidates
+ * whose distance it computes are added to *visited. Each cell's
+ * particles are in index order, so each merges in from the top. */
+static int gather(const sph_work *w, const double *x, int a, double r2max, int *out, long *visited)
+{
+    int cx = w->cell[a] % w->nx, cy = w->cell[a] / w->nx, k = 0;
+    long seen = 0;
+    for (int oy = cy > 0 ? cy - 1 : 0; oy <= cy + 1 && oy < w->ny; oy++)
+        for (int ox = cx > 0 ? cx - 1 : 0; ox <= cx + 1 && ox < w->nx; ox++) {
+            int o = oy * w->nx + ox, ib = w->start[o], end = w->start[o + 1];
+            for (int hi = end; ib < hi;) { /* the first b > a: the run is ascending */
+                int mid = ib + (hi - ib) / 2;
+                if (w->order[mid] <= a)
+                    ib = mid + 1;
+                else
+                    hi = mid;
+            }
+            seen += end - ib;
+            for (; ib < end; ib++) {
+                int b = w->order[ib];
+                double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1];
+                if (dx * dx + dy * dy < r2max) {
+                    int j = k++;
+                    for (; j > 0 && out[j - 1] > b; j--)
+                        out[j] = out[j - 1];
+                    out[j] = b;
+                }
+            }
+        }
+    *visited += seen;
+    return k;
+}
+
+/* The list at x: every pair within (1 + skin) h, a's partners b > a in
+ * ascending order. 0; 1 when it did not fit (w->listed 0: the grid is left
+ * at cells (1 + skin) h wide for the evaluation to gather from); -1 when a
+ * position is not finite. */
+static int build(sph_work *w, int n, const double *x, double h)
+{
+    double reach = (1 + w->skin) * h;
+    w->listed = 0;
+    if (grid(w, n, x, reach) != 0)
+        return -1;
+    long m = 0;
+    w->ls[0] = 0;
+    for (int a = 0; a < n; a++) {
+        int k = gather(w, x, a, reach * reach, w->scratch, &w->visited);
+        if (m + k > w->lcap)
+            return 1;
+        for (int j = 0; j < k; j++)
+            w->lb[m + j] = w->scratch[j];
+        w->ls[a + 1] = (int)(m += k);
+    }
+    for (int i = 0; i < 2 * n; i++)
+        w->xb[i] = x[i];
+    w->listed = 1;
+    w->builds++;
+    return 0;
+}
+
+/* 1 when some particle moved skin/2 or more (less a margin for rounding)
+ * since the list was built, or is not finite: a pair within h now may
+ * then have been beyond (1 + skin) h then. */
+static int moved(const sph_work *w, int n, const double *x, double h)
+{
+    double lim = REBUILD * w->skin * h, lim2 = lim * lim;
+    int out = 0;
+    for (int i = 0; i < n; i++) {
+        double dx = x[2 * i] - w->xb[2 * i], dy = x[2 * i + 1] - w->xb[2 * i + 1];
+        out |= !(dx * dx + dy * dy < lim2);
+    }
+    return out;
+}
+
 /* C of ∇Wspiky = -C (h - r)² d/r. */
 static double spiky(const sw_force *fo)
 {
@@ -154,57 +252,63 @@ typedef struct sph_ctx {
     const sw_particles *p;
     const sw_force *fo;
     sph_work *w;
-    const double *v;
+    const double *x, *v;
     double *f;
-    double w6, spiky, visc; /* 4/(π h⁸), the spiky gradient's C, π h⁵: the kernels' constants */
+    double h2, w6, spiky, visc; /* h², 4/(π h⁸), the spiky gradient's C, π h⁵: the kernels' constants */
 } sph_ctx;
 
-/* The density's term, and the pair kept for the force pass (its order is
- * the grid's, so the forces sum in the same order either way). */
-static void density_pair(int a, int b, double dx, double dy, double r2, void *ctx)
+/* a's density terms from its candidates b (ascending, all > a) within h:
+ * ρ_a and ρ_b both get the pair's term, so every density sums its
+ * neighbours in ascending order whatever found them. The pairs within h
+ * go to keep (room for k) unless it is NULL; their count. */
+static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
 {
-    (void)dx, (void)dy;
-    sph_ctx *c = ctx;
-    sph_work *w = c->w;
-    double h2 = c->fo->h * c->fo->h, q = h2 - r2, w6 = c->w6 * q * q * q;
-    w->rho[a] += c->p->mass[b] * w6;
-    w->rho[b] += c->p->mass[a] * w6;
-    if (w->npair >= 0 && w->npair < w->paircap) {
-        w->pair[2 * w->npair] = a;
-        w->pair[2 * w->npair + 1] = b;
-        w->npair++;
-    } else {
-        w->npair = -1;
+    const double *x = c->x, *mass = c->p->mass;
+    double *rho = c->w->rho, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
+    int kept = 0;
+    for (int j = 0; j < k; j++) {
+        int b = cand[j];
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
+        if (r2 < h2) {
+            double q = h2 - r2, t = w6 * q * q * q;
+            ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
+            rho[b] += ma * t;
+            if (keep)
+                keep[kept] = b;
+            kept++;
+        }
     }
+    rho[a] = ra;
+    return kept;
 }
 
-/* Pair (a, b)'s force on a (b gets its negative); 0 when they sit at one
- * point (they push neither way). Inline in the kept pairs' loop. */
-static inline int pair_force(const sph_ctx *c, int a, int b, double dx, double dy, double r2, double *fx,
-                             double *fy)
+/* a's pair forces from its candidates b (ascending, all > a) within h: f_a
+ * gets each pair's term and f_b its negative, so every force sums its
+ * neighbours in ascending order too; no push when they sit at one point. */
+static void force_row(const sph_ctx *c, int a, const int *cand, int k)
 {
     const sw_force *fo = c->fo;
-    const double *rho = c->w->rho, *press = c->w->press, *v = c->v;
-    double h = fo->h, r = sqrt(r2);
-    if (!(r > 0))
-        return 0;
-    double mm = c->p->mass[a] * c->p->mass[b], mm_rr = mm / (rho[a] * rho[b]);
-    /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
-    double ps = press[a] + press[b];
-    double push = mm * ps * c->spiky * (h - r) * (h - r) / r;
-    double visc = mm_rr * fo->nu * fo->rho0 * 40.0 / c->visc * (h - r);
-    *fx = push * dx + visc * (v[2 * b] - v[2 * a]), *fy = push * dy + visc * (v[2 * b + 1] - v[2 * a + 1]);
-    return 1;
-}
-
-static void force_pair(int a, int b, double dx, double dy, double r2, void *ctx)
-{
-    sph_ctx *c = ctx;
-    double fx, fy;
-    if (pair_force(c, a, b, dx, dy, r2, &fx, &fy)) {
-        c->f[2 * a] += fx, c->f[2 * a + 1] += fy;
-        c->f[2 * b] -= fx, c->f[2 * b + 1] -= fy;
+    const double *x = c->x, *v = c->v, *rho = c->w->rho, *press = c->w->press, *mass = c->p->mass;
+    double *f = c->f, h = fo->h, h2 = c->h2, nvisc = fo->nu * fo->rho0 * 40.0 / c->visc, spk = c->spiky;
+    double xa = x[2 * a], ya = x[2 * a + 1], vxa = v[2 * a], vya = v[2 * a + 1], ma = mass[a], rhoa = rho[a],
+           pa = press[a], fxa = f[2 * a], fya = f[2 * a + 1];
+    for (int j = 0; j < k; j++) {
+        int b = cand[j];
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
+        if (!(r2 < h2))
+            continue;
+        double r = sqrt(r2);
+        if (!(r > 0))
+            continue;
+        double mm = ma * mass[b], mm_rr = mm / (rhoa * rho[b]), hr = h - r;
+        /* -(p_a/ρ_a² + p_b/ρ_b²) ∇Wspiky = (p_a/ρ_a² + p_b/ρ_b²) 30/(π h⁵)(h - r)² d/r */
+        double push = mm * (pa + press[b]) * spk * hr * hr / r;
+        double visc = mm_rr * nvisc * hr;
+        double fx = push * dx + visc * (v[2 * b] - vxa), fy = push * dy + visc * (v[2 * b + 1] - vya);
+        fxa += fx, fya += fy; /* b > a: f_a is not among the f_b */
+        f[2 * b] -= fx, f[2 * b + 1] -= fy;
     }
+    f[2 * a] = fxa, f[2 * a + 1] = fya;
 }
 
 /* The walls' acceleration on coordinate value u, dist = u - wall (sign:
@@ -221,38 +325,41 @@ static int in_zone(const sw_force *fo, const double *xi)
     return xi[0] <= fo->zone || fo->box_w - xi[0] <= fo->zone || xi[1] <= fo->zone;
 }
 
+/* Neighbours from the list while no particle has moved skin/2 since it was
+ * built (then built again); where the list does not fit, gathered from the
+ * grid as the passes go. Every sum runs over the neighbours in ascending
+ * order either way: the same bits. */
 static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)
 {
     sph_work *w = fo->work;
     int n = p->n;
-    if (grid(w, n, x, fo->h) != 0)
-        return; /* a position went non-finite: the sim reports the blow-up */
-    double h2 = fo->h * fo->h, w0 = 4.0 / (SW_PI * h2) ; /* W6(0) = 4/(π h²) */
+    w->visited = 0;
+    if (!w->listed || moved(w, n, x, fo->h))
+        if (build(w, n, x, fo->h) < 0)
+            return; /* a position went non-finite: the sim reports the blow-up */
+    double h2 = fo->h * fo->h, w0 = 4.0 / (SW_PI * h2); /* W6(0) = 4/(π h²) */
     for (int i = 0; i < n; i++)
         w->rho[i] = p->mass[i] * w0;
-    sph_ctx c = { p, fo, w, v, f, 4.0 / (SW_PI * h2 * h2 * h2 * h2), spiky(fo),
+    sph_ctx c = { p, fo, w, x, v, f, h2, 4.0 / (SW_PI * h2 * h2 * h2 * h2), spiky(fo),
                   SW_PI * (fo->h * fo->h * fo->h * fo->h * fo->h) };
-    w->npair = 0;
-    each_pair(w, x, fo->h, density_pair, &c);
-    long visited = w->visited;
+    w->ks[0] = 0;
+    for (int a = 0; a < n; a++)
+        if (w->listed) {
+            int k = w->ls[a + 1] - w->ls[a];
+            w->visited += k;
+            w->ks[a + 1] = w->ks[a] + density_row(&c, a, w->lb + w->ls[a], k, w->kb + w->ks[a]);
+        } else {
+            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), NULL);
+        }
     for (int i = 0; i < n; i++) {
         double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
         w->press[i] = pressure / (w->rho[i] * w->rho[i]);
     }
-    if (w->npair >= 0) { /* the pairs the density found, in its order: the same sums as walking again */
-        for (long k = 0; k < w->npair; k++) {
-            int a = w->pair[2 * k], b = w->pair[2 * k + 1];
-            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1], fx, fy;
-            if (pair_force(&c, a, b, dx, dy, dx * dx + dy * dy, &fx, &fy)) {
-                f[2 * a] += fx, f[2 * a + 1] += fy;
-                f[2 * b] -= fx, f[2 * b + 1] -= fy;
-            }
-        }
-    } else {
-        each_pair(w, x, fo->h, force_pair, &c);
-        visited += w->visited;
-    }
-    w->visited = visited;
+    for (int a = 0; a < n; a++)
+        if (w->listed)
+            force_row(&c, a, w->kb + w->ks[a], w->ks[a + 1] - w->ks[a]);
+        else
+            force_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited));
     double grip = 2.0 * sqrt(fo->stiff) / fo->h;
     for (int i = 0; i < n; i++) {
         double at = in_zone(fo, x + 2 * i) ? grip : 0.0;
@@ -329,6 +436,29 @@ long swp_sph_visited(const sw_force *fo)
 {
     const sph_work *w = fo->work;
     return w ? w->visited : 0;
+}
+
+long swp_sph_builds(const sw_force *fo)
+{
+    const sph_work *w = fo->work;
+    return w ? w->builds : 0;
+}
+
+double swp_sph_skin(const sw_force *fo, double *rebuild)
+{
+    const sph_work *w = fo->work;
+    double skin = w ? w->skin : SKIN;
+    *rebuild = REBUILD * skin;
+    return skin;
+}
+
+void swp_sph_set_skin(const sw_force *fo, double skin)
+{
+    sph_work *w = fo->work;
+    if (w) {
+        w->skin = skin > 0 ? skin : 0;
+        w->listed = 0;
+    }
 }
 
 static int sph_uses_velocity(const sw_force *fo) { return fo->nu != 0; }

@@ -73,9 +73,22 @@ int swp_force_prepare(const sw_particles *p, sw_force *fo);
  * where q = 0. */
 void swp_inverse_square_block(double s, double dx, double dy, double soft2, double blk[4]);
 
-/* The candidate pairs (pairs of particles whose distance it computed, from
- * the cell list's neighbouring cells) of an SPH force's last pass over its
- * grid: a count, for the O(n) test; 0 before the first. */
+/* The candidate pairs (pairs of particles whose distance it computed: the
+ * grid's neighbouring cells' when it built its neighbour list, the list's
+ * otherwise) of an SPH force's last evaluation: a count, for the O(n)
+ * test; 0 before the first. */
 long swp_sph_visited(const sw_force *fo);
+
+/* The neighbour lists an SPH force has built so far. */
+long swp_sph_builds(const sw_force *fo);
+
+/* Its list's skin (reach beyond h, in units of h; 0: built at every
+ * evaluation that moved a particle), the next list built afresh. The
+ * results do not depend on it, to the bit: tests/check_water.c. */
+void swp_sph_set_skin(const sw_force *fo, double skin);
+
+/* Its skin (in units of h) and, in *rebuild, the move that rebuilds the
+ * list (in units of h). */
+double swp_sph_skin(const sw_force *fo, double *rebuild);
 
 #endif

@@ -178,6 +178,8 @@ double cl_dam_behind_least(void);
 double cl_dam_behind_most(void);
 double cl_dam_default_nu(void);
 double cl_big_dam_blowup(void);
+double cl_big_dam_builds(void);
+double cl_big_dam_build_every(void);
 double cl_one(void);
 
 #endif

@@ -89,7 +89,9 @@ static double water_nu(void) { return WATER_NU; }
 static double default_nu(void) { return cl_param("water", "nu"); }
 /* The dam at n = 1e4 (docs/performance.md): symplectic Euler's limit in
  * theory at the start, ms; when the default step blows it up; its count;
- * the candidate pairs and the pairs within h a particle at the start. */
+ * the candidate pairs a particle at the start (of the evaluation that keeps
+ * the neighbour list, and of the one that builds it) and the pairs within
+ * h a particle. */
 static double big_dam_limit_ms(void) { return 1000 * cl_limit0("water", "n=10000", "symplectic-euler"); }
 double cl_big_dam_blowup(void)
 {
@@ -142,9 +144,10 @@ static double step_viscous_share(void)
     return (1 / water_step_at("n=10000") - 2.2 * c / h) * h * h / nu;
 }
 static double meter_every(void) { return sw_scene_find("water")->duration / 20; }
+static double built_each; /* the candidates of the evaluation that built the list */
 static void big_dam_pairs(double *count, double *candidates, double *within)
 {
-    static double kept[3]; /* the first answer, kept: three rows ask it */
+    static double kept[3]; /* the first answer, kept: several rows ask it */
     if (kept[0] > 0) {
         *count = kept[0], *candidates = kept[1], *within = kept[2];
         return;
@@ -154,12 +157,14 @@ static void big_dam_pairs(double *count, double *candidates, double *within)
     int n = s.sys.n;
     double *d = malloc((size_t)s.sys.ode->dim * sizeof *d);
     ck_assert_ptr_nonnull(d);
-    s.sys.ode->deriv(s.sys.ode->ctx, 0.0, s.sys.y, d);
     const sw_force *fo = NULL;
     for (int k = 0; k < s.sys.particles.nforces; k++)
         if (s.sys.particles.forces[k].kind == SW_FORCE_SPH)
             fo = &s.sys.particles.forces[k];
     ck_assert_ptr_nonnull(fo);
+    s.sys.ode->deriv(s.sys.ode->ctx, 0.0, s.sys.y, d); /* builds the list */
+    built_each = (double)swp_sph_visited(fo) / n;
+    s.sys.ode->deriv(s.sys.ode->ctx, 0.0, s.sys.y, d); /* keeps it */
     long pairs = 0;
     for (int a = 0; a < n; a++) /* every pair, directly: no cell list */
         for (int b = a + 1; b < n; b++) {
@@ -185,6 +190,60 @@ static double big_dam_candidates(void)
     big_dam_pairs(&c, &v, &w);
     return v;
 }
+static double big_dam_built(void)
+{
+    double c, v, w;
+    big_dam_pairs(&c, &v, &w);
+    return built_each;
+}
+/* The list's reach (1 + skin) h, its skin and the move that rebuilds it,
+ * in units of h, as the built dam's force has them. */
+static double dam_skin(double *rebuild)
+{
+    sw_sim s;
+    cl_sim_init(&s, "water", NULL, "symplectic-euler", 0.001);
+    const sw_force *fo = NULL;
+    for (int k = 0; k < s.sys.particles.nforces; k++)
+        if (s.sys.particles.forces[k].kind == SW_FORCE_SPH)
+            fo = &s.sys.particles.forces[k];
+    ck_assert_ptr_nonnull(fo);
+    double skin = swp_sph_skin(fo, rebuild);
+    sw_sim_free(&s);
+    return skin;
+}
+static double list_skin(void)
+{
+    double r;
+    return dam_skin(&r);
+}
+static double list_reach(void) { return 1 + list_skin(); }
+static double list_rebuild(void)
+{
+    double r;
+    dam_skin(&r);
+    return r;
+}
+/* The dam at n = 1e4 stepped through its first second at 0.5 ms (2000
+ * steps): the lists it built, and the steps a build. */
+double cl_big_dam_builds(void)
+{
+    static double kept;
+    if (kept > 0)
+        return kept;
+    sw_sim s;
+    cl_sim_init(&s, "water", "n=10000", "symplectic-euler", 0.0005);
+    for (int k = 0; k < 2000; k++)
+        ck_assert_int_eq(sw_sim_step(&s), SW_OK);
+    const sw_force *fo = NULL;
+    for (int k = 0; k < s.sys.particles.nforces; k++)
+        if (s.sys.particles.forces[k].kind == SW_FORCE_SPH)
+            fo = &s.sys.particles.forces[k];
+    ck_assert_ptr_nonnull(fo);
+    kept = (double)swp_sph_builds(fo);
+    sw_sim_free(&s);
+    return kept;
+}
+double cl_big_dam_build_every(void) { return 2000 / cl_big_dam_builds(); }
 static double big_dam_within(void)
 {
     double c, v, w;
@@ -230,6 +289,16 @@ const claim sw_claims_f[] = {
     { PERF, "(about {20} candidate pairs a particle", big_dam_candidates, ABS, 1, "\"about\": within 1", NULL },
     { PERF, "of which some {7} are within h)", big_dam_within, ABS, 1, "\"some\": within 1", NULL },
     { SCENES, "about {20} candidate pairs a particle whatever n", big_dam_candidates, ABS, 1, "\"about\": within 1 (at 1e4)", NULL },
+    { SCENES, "about {83} in an evaluation that builds", big_dam_built, ABS, 1, "\"about\": within 1 (at 1e4)", NULL },
+    { SCENES, "within {1.8} h (a skin of 0.8 h", list_reach, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "within 1.8 h (a skin of {0.8} h", list_skin, ROUNDED, 0, R_ROUND, NULL },
+    { SCENES, "once a particle has moved {0.4} h since", list_rebuild, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "list of every pair within {1.8} h (a skin of", list_reach, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "(a skin of {0.8} h), built from the cell list", list_skin, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "until some particle has moved {0.4} h since", list_rebuild, ROUNDED, 0, R_ROUND, NULL },
+    { PERF, "one that builds it checks about {83}", big_dam_built, ABS, 1, "\"about\": within 1", NULL },
+    { PERF, "so the list is built {344} times", cl_big_dam_builds, EXACT, 0, R_COUNT, NULL },
+    { PERF, "every {5.8} steps, and a build", cl_big_dam_build_every, ROUNDED, 0, "2000 steps over the builds", NULL },
     { SCENES, "the sound speed is c = √k = {20} m/s", sound_speed, EXACT, 0, R_COUNT, NULL },
     { SCENES, "Implicit methods are refused above {16} particles", dense_particles, EXACT, 0,
       "the dense fallback's dimension over 4 doubles a particle", NULL },

@@ -36,6 +36,10 @@ struct sw_ode_fast {
      * the acceleration inline (sw_central1_accel, the same bits as the
      * derivative's) instead of calling the derivative. NULL or 0: no. */
     int (*central1)(const void *ctx, sw_central1 *c);
+    /* 1 when ode's derivative, as set now, ignores t (f(t, y) the same bits
+     * at every t): a Rosenbrock method's ∂f/∂t is then +0 exactly where f
+     * is finite, and need not be evaluated. NULL or 0: unknown. */
+    int (*autonomous)(const sw_ode *ode);
 };
 
 /* The fast path of ode, or NULL. */
@@ -54,6 +58,12 @@ static inline int sw_ode_position_only(const sw_ode *ode)
 static inline int sw_ode_central1(const sw_ode *ode, sw_central1 *c)
 {
     return ode->fast && ode->fast->central1 && ode->fast->central1(ode->ctx, c);
+}
+
+/* 1 when ode's derivative is known not to depend on t. */
+static inline int sw_ode_autonomous(const sw_ode *ode)
+{
+    return ode->fast && ode->fast->autonomous && ode->fast->autonomous(ode);
 }
 
 static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)

@@ -39,8 +39,16 @@ static int central1(const void *ctx, sw_central1 *c)
     return swp_deriv_is_small(p) && swp_small_central1(p, c);
 }
 
-/* No slices, no fused steps: the fact above, and the orbit's numbers. */
-static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1 };
+/* The particles' own derivatives read no t (the forces do not depend on
+ * time); a scene that sets a derivative of its own is not vouched for. */
+static int autonomous(const sw_ode *ode)
+{
+    return ode->deriv == swp_deriv || ode->deriv == swp_deriv_generic;
+}
+
+/* No slices, no fused steps: the facts above, and the orbit's numbers. */
+static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1,
+                                                   .autonomous = autonomous };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {

@@ -49,7 +49,8 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
     double *saved = SW_WORK(s, S_SAVED), *f1 = SW_WORK(s, s->fsal ? 0 : S_F1);
     double gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
-    memcpy(saved, y, (size_t)n * sizeof *y);
+    /* the controller's copy of y0 (restored on a rejection) is taken in
+     * the second stage's point pass, which reads y0 anyway */
     /* ∂f/∂t by its difference, unless the system says f ignores t and f0
      * is finite: then (f - f0)/δ is +0 in every component, not evaluated,
      * and the stages add +0 for its term (with_ft 2), the same bits */
@@ -61,7 +62,10 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
         double *kst = SW_WORK(s, S_K1 + st), c_over_h[SW_RODAS_STAGES];
         const double *f = f0;
         if (st > 0) {
-            swr_stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
+            if (st == 1)
+                swr_stage_point_keep(n, yt, saved, y, SW_RODAS_A[1][0], k[0]);
+            else
+                swr_stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
             sw_ode_eval(ode, t + SW_RODAS_ALPHA[st] * h, yt, kst);
             f = kst;
         }
@@ -74,6 +78,8 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
         if (sw_ode_solve(s, ode, t, y, gh, rhs, kst) != 0) {
             s->why = "the linear system of a Rosenbrock stage is singular";
             sums->err = NAN;
+            if (st == 0) /* before the copy: the controller restores y0 from it */
+                memcpy(saved, y, (size_t)n * sizeof *y);
             return;
         }
     }

@@ -338,6 +338,35 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
     return sw_band_factor(band);
 }
 
+/* out = M·v (two components a particle); out may be v itself. */
+static SW_CLONES void mass_times(int n, const double *mass, const double *v, double *out)
+{
+    for (int i = 0; i < n; i++) {
+        out[2 * i] = mass[i] * v[2 * i];
+        out[2 * i + 1] = mass[i] * v[2 * i + 1];
+    }
+}
+
+/* out += c·K_i·w_i for each particle's own block K_i (the Fx half of its
+ * eight doubles), w and out two components a particle, not aliased. */
+static SW_CLONES void own_blocks_times(int n, const double *diag, double c, const double *restrict w,
+                                       double *restrict out)
+{
+    for (int i = 0; i < n; i++) {
+        const double *blk = diag + 8 * i;
+        double wx = w[2 * i], wy = w[2 * i + 1];
+        out[2 * i] += c * (blk[0] * wx + blk[1] * wy);
+        out[2 * i + 1] += c * (blk[2] * wx + blk[3] * wy);
+    }
+}
+
+/* z = r + c·v over n components (z may be r: each read before written). */
+static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, const double *v)
+{
+    for (int i = 0; i < n; i++)
+        z[i] = r[i] + c * v[i];
+}
+
 /* out = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone), out 2n
  * long; r's velocity half is read only where out is written, so out may be
  * that half itself. Each entry gets its terms in the order it always had:
@@ -346,14 +375,10 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;
-    for (int i = 0; i < p->n; i++) {
-        out_v[2 * i] = p->mass[i] * r[n2 + 2 * i];
-        out_v[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
-    }
+    mass_times(p->n, p->mass, r + n2, out_v);
     if (c == 0)
         return;
-    for (int i = 0; i < p->n; i++)
-        apply_block(out_v, i, i, c, s->diag + 8 * i, r);
+    own_blocks_times(p->n, s->diag, c, r, out_v);
     double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
@@ -428,8 +453,7 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
     double *z_v = z + n2;
     velocity_rhs(p, c, r, z_v);
     sw_band_solve(&s->lu, z_v);
-    for (int i = 0; i < n2; i++)
-        z[i] = r[i] + c * z_v[i];
+    add_scaled(n2, z, r, c, z_v);
     p->ode.solver_iters++;
     return SW_OK;
 }

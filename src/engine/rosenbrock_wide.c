@@ -87,18 +87,9 @@ SW_CLONES int swr_all_finite(int n, const double *v)
     return (over >> 63) == 0 ? 1 : 0;
 }
 
-/* GCC would split the copy below out of its loop into a call to memcpy
- * (a second pass over y0, and `rep movsb`, which callgrind counts a byte
- * at a time): asked not to, for that function only. */
-#if defined(__GNUC__) && !defined(__clang__)
-#define SW_ONE_PASS __attribute__((optimize("no-tree-loop-distribute-patterns")))
-#else
-#define SW_ONE_PASS
-#endif
-
 /* The second stage's point, out_i = base_i + coef·k_i, with base copied
  * into keep in the same pass (the controller's copy of y0, taken where y0
- * is read anyway). */
+ * is read anyway; SW_ONE_PASS keeps the copy in it). */
 SW_CLONES SW_ONE_PASS void swr_stage_point_keep(int n, double *restrict out, double *restrict keep, const double *restrict base,
                                     double coef, const double *restrict k)
 {

@@ -209,56 +209,65 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
     }
 }
 
-/* The band += ±(a·Kx) ± (b·Kv) for the 2x2 blocks Kx, Kv at particle rows
- * pi, columns pj, written straight into the factorisation's storage
- * (LAPACK's layout, engine/linalg.h: entry (i, j) at top + i - j + j·ld),
- * given the products ax = a·Kx and bv = b·Kv (row-major, made once for the
- * four blocks a pair touches) and the sign (1: add, -1: subtract; x - p is
- * x + (-a)·K bit for bit, since (-a)·K = -(a·K) exactly); with own, the
- * particle's own block, its mass m on the diagonal first. A term whose
- * factor is 0 is left out (it would add nothing but could turn an infinite
- * entry into NaN; with_a = a != 0, with_b = b != 0, constants where the
- * caller fixes them). Each entry gets its terms in the order the blocks
- * come (a particle's own, then the pairs', Kx before Kv), the order the
- * solve has always added them in. */
-SW_INLINE void band_blocks(double *top, int ld, int pi, int pj, int own, double m, int sign, const double *ax,
-                           const double *bv, int with_a, int with_b)
+/* Two doubles side by side, lane-wise IEEE operations (the bits of the
+ * scalar ones): a band column's two entries of a 2x2 block. */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+/* The products a·K and b·K' of a 2x2 block pair, by columns: col[0] is
+ * K's first column (xx, yx) times its factor, col[1] its second (xy, yy);
+ * a factor that is 0 gives no product (with_a = a != 0, with_b = b != 0). */
+typedef struct block_cols { v2d a0, a1, b0, b1; } block_cols;
+
+SW_INLINE block_cols block_products(double a, const double *kx, double b, const double *kv, int with_a, int with_b)
 {
-    double *e = top + 2 * (pi - pj) + (size_t)2 * (size_t)pj * (size_t)ld; /* (r, c) at e + r - c + c·ld */
-    double *e01 = e + ld - 1, *e11 = e + ld;
-    /* four distinct entries, loaded once and stored once (through the
-     * pointers, each second update waited for the first one's store) */
-    double v00 = e[0], v01 = *e01, v10 = e[1], v11 = *e11;
-    if (own) { /* a particle's own block, just cleared: its mass first (0 + m) */
-        v00 = 0.0 + m;
-        v11 = 0.0 + m;
-    }
+    block_cols p = { { 0, 0 }, { 0, 0 }, { 0, 0 }, { 0, 0 } };
     if (with_a) {
-        v00 = sign > 0 ? v00 + ax[0] : v00 - ax[0];
-        v01 = sign > 0 ? v01 + ax[1] : v01 - ax[1];
-        v10 = sign > 0 ? v10 + ax[2] : v10 - ax[2];
-        v11 = sign > 0 ? v11 + ax[3] : v11 - ax[3];
+        v2d c0 = { kx[0], kx[2] }, c1 = { kx[1], kx[3] };
+        p.a0 = a * c0;
+        p.a1 = a * c1;
     }
     if (with_b) {
-        v00 = sign > 0 ? v00 + bv[0] : v00 - bv[0];
-        v01 = sign > 0 ? v01 + bv[1] : v01 - bv[1];
-        v10 = sign > 0 ? v10 + bv[2] : v10 - bv[2];
-        v11 = sign > 0 ? v11 + bv[3] : v11 - bv[3];
+        v2d c0 = { kv[0], kv[2] }, c1 = { kv[1], kv[3] };
+        p.b0 = b * c0;
+        p.b1 = b * c1;
     }
-    e[0] = v00;
-    *e01 = v01;
-    e[1] = v10;
-    *e11 = v11;
+    return p;
 }
 
-/* a·K and b·K' for a pair of 2x2 blocks, with_a and with_b as above. */
-SW_INLINE void block_products(double a, const double *kx, double b, const double *kv, int with_a, int with_b,
-                              double *ax, double *bv)
+/* The band += ±(a·Kx) ± (b·Kv) for the 2x2 blocks Kx, Kv at particle rows
+ * pi, columns pj, written straight into the factorisation's storage
+ * (LAPACK's layout, engine/linalg.h: entry (i, j) at top + i - j + j·ld,
+ * so a block's column is two neighbouring doubles), given the products
+ * (made once for the four blocks a pair touches) and the sign (1: add,
+ * -1: subtract; x - p is x + (-a)·K bit for bit, since (-a)·K = -(a·K)
+ * exactly); with own, the particle's own block, its mass m on the
+ * diagonal first. A term whose factor is 0 is left out (it would add
+ * nothing but could turn an infinite entry into NaN; with_a and with_b
+ * constants where the caller fixes them). Each entry gets its terms in
+ * the order the blocks come (a particle's own, then the pairs', Kx before
+ * Kv), the order the solve has always added them in. */
+SW_INLINE void band_blocks(double *top, int ld, int pi, int pj, int own, double m, int sign, const block_cols *p,
+                           int with_a, int with_b)
 {
-    for (int k = 0; k < 4; k++) {
-        ax[k] = with_a ? a * kx[k] : 0.0;
-        bv[k] = with_b ? b * kv[k] : 0.0;
+    double *e = top + 2 * (pi - pj) + (size_t)2 * (size_t)pj * (size_t)ld; /* (r, c) at e + r - c + c·ld */
+    double *e1 = e + ld - 1;                                                 /* column 1: (0, 1), (1, 1) */
+    v2d c0, c1;
+    memcpy(&c0, e, sizeof c0);
+    memcpy(&c1, e1, sizeof c1);
+    if (own) { /* a particle's own block, just cleared: its mass first (0 + m) */
+        c0[0] = 0.0 + m;
+        c1[1] = 0.0 + m;
     }
+    if (with_a) {
+        c0 = sign > 0 ? c0 + p->a0 : c0 - p->a0;
+        c1 = sign > 0 ? c1 + p->a1 : c1 - p->a1;
+    }
+    if (with_b) {
+        c0 = sign > 0 ? c0 + p->b0 : c0 - p->b0;
+        c1 = sign > 0 ? c1 + p->b1 : c1 - p->b1;
+    }
+    memcpy(e, &c0, sizeof c0);
+    memcpy(e1, &c1, sizeof c1);
 }
 
 /* out += sc·K·w for one block: the product Fx·r_x without forming Fx. */
@@ -274,7 +283,6 @@ static inline void apply_block(double *out, int pi, int pj, double sc, const dou
  * `rep stosq`, which callgrind counts a double at a time). */
 SW_INLINE void clear_chain_columns(double *col)
 {
-    typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
     const v2d zero = { 0.0, 0.0 };
 #define SW_CLEAR2(k) memcpy(col + 2 * (k), &zero, sizeof zero)
     SW_CLEAR2(0); SW_CLEAR2(1); SW_CLEAR2(2); SW_CLEAR2(3); SW_CLEAR2(4);
@@ -297,29 +305,28 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
          * is cleared column by column while it is in the cache, not in one
          * pass of its own; on a chain's band (ld = 10) a clear of a known
          * length, which the compiler writes as stores, not a call */
-        double *col = band->a + (size_t)2 * i * (size_t)ld, ax[4], bv[4];
+        double *col = band->a + (size_t)2 * i * (size_t)ld;
         if (ld == CHAIN_LD)
             clear_chain_columns(col);
         else
             memset(col, 0, (size_t)2 * (size_t)ld * sizeof *col);
-        block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b, ax, bv);
-        band_blocks(top, ld, i, i, 1, p->mass[i], 1, ax, bv, with_a, with_b);
+        block_cols own = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
+        band_blocks(top, ld, i, i, 1, p->mass[i], 1, &own, with_a, with_b);
     }
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j, *kv = kx + 4;
         /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b), each
          * product a·K, b·K' made once */
         int ea = s->pa[j], eb = s->pb[j];
-        double ax[4], bv[4];
-        block_products(a, kx, b, kv, with_a, with_b, ax, bv);
+        block_cols pr = block_products(a, kx, b, kv, with_a, with_b);
         if (ea >= 0)
-            band_blocks(top, ld, ea, ea, 0, 0.0, 1, ax, bv, with_a, with_b);
+            band_blocks(top, ld, ea, ea, 0, 0.0, 1, &pr, with_a, with_b);
         if (ea >= 0 && eb >= 0) {
-            band_blocks(top, ld, ea, eb, 0, 0.0, -1, ax, bv, with_a, with_b);
-            band_blocks(top, ld, eb, ea, 0, 0.0, -1, ax, bv, with_a, with_b);
+            band_blocks(top, ld, ea, eb, 0, 0.0, -1, &pr, with_a, with_b);
+            band_blocks(top, ld, eb, ea, 0, 0.0, -1, &pr, with_a, with_b);
         }
         if (eb >= 0)
-            band_blocks(top, ld, eb, eb, 0, 0.0, 1, ax, bv, with_a, with_b);
+            band_blocks(top, ld, eb, eb, 0, 0.0, 1, &pr, with_a, with_b);
     }
 }
 

@@ -213,9 +213,10 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
  * scalar ones): a band column's two entries of a 2x2 block. */
 typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 
-/* The products a·K and b·K' of a 2x2 block pair, by columns: col[0] is
- * K's first column (xx, yx) times its factor, col[1] its second (xy, yy);
- * a factor that is 0 gives no product (with_a = a != 0, with_b = b != 0). */
+/* The products a·Kx and b·Kv of a 2x2 block pair, by columns: a0 is Kx's
+ * first column (xx, yx) times a, a1 its second (xy, yy), b0 and b1 Kv's
+ * times b; a factor that is 0 gives no product (with_a = a != 0, with_b =
+ * b != 0). */
 typedef struct block_cols { v2d a0, a1, b0, b1; } block_cols;
 
 SW_INLINE block_cols block_products(double a, const double *kx, double b, const double *kv, int with_a, int with_b)
@@ -303,8 +304,8 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
         /* particle i's two columns cleared just before its own entries go
          * in (nothing before wrote there; the pairs come after): the band
          * is cleared column by column while it is in the cache, not in one
-         * pass of its own; on a chain's band (ld = 10) a clear of a known
-         * length, which the compiler writes as stores, not a call */
+         * pass of its own; on a chain's band (ld = 10) by stores, not a
+         * call a particle */
         double *col = band->a + (size_t)2 * i * (size_t)ld;
         if (ld == CHAIN_LD)
             clear_chain_columns(col);

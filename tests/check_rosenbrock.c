@@ -370,6 +370,58 @@ START_TEST(chain_and_flow)
 }
 END_TEST
 
+/* The particles' derivative, called through another function: the same
+ * numbers, but a derivative the system does not vouch for as autonomous. */
+static sw_deriv_fn *vouched_deriv;
+
+static void unvouched_deriv(void *ctx, double t, const double *y, double *dydt)
+{
+    vouched_deriv(ctx, t, y, dydt);
+}
+
+/* rodas4 skips ∂f/∂t where the system says f ignores t: (f(t + δ) - f)/δ
+ * is +0 there, so the step must be the one that evaluates it, bit for bit
+ * (memcmp after every step, the same t, accepted and rejected trials),
+ * one evaluation fewer a trial. A damped chain (the damping is what the
+ * springs' Jacobian turns) at 20 times its dt, where trials are rejected. */
+START_TEST(autonomous_skips_time_derivative)
+{
+    const sw_scene *sc = sw_scene_find("chain");
+    double p[SW_MAX_PARAMS];
+    char err[SW_ERRLEN];
+    sw_scene_defaults(sc, p);
+    ck_assert_int_eq(sw_scene_set(sc, p, "n=30", err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_scene_set(sc, p, "c=10", err, sizeof err), SW_OK);
+    sw_system skip, eval;
+    ck_assert_int_eq(sw_system_build(&skip, sc, p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_system_build(&eval, sc, p, err, sizeof err), SW_OK);
+    vouched_deriv = eval.ode->deriv;
+    eval.ode->deriv = unvouched_deriv;
+    const sw_integrator *m = sw_integrator_find("rodas4");
+    sw_stepper *a = sw_stepper_new(m, skip.ode, err, sizeof err), *b = sw_stepper_new(m, eval.ode, err, sizeof err);
+    ck_assert_ptr_nonnull(a);
+    ck_assert_ptr_nonnull(b);
+    double ta = 0, tb = 0, h = 20 * sw_scene_dt(sc, p);
+    int dim = skip.ode->dim;
+    long ea = skip.ode->evals, eb = eval.ode->evals;
+    for (int step = 0; step < 20; step++) {
+        ck_assert_int_eq(sw_stepper_step(a, skip.ode, &ta, skip.y, h), SW_OK);
+        ck_assert_int_eq(sw_stepper_step(b, eval.ode, &tb, eval.y, h), SW_OK);
+        ck_assert_msg(memcmp(skip.y, eval.y, (size_t)dim * sizeof *skip.y) == 0, "step %d: states differ", step);
+        ck_assert(ta == tb);
+    }
+    ck_assert_int_eq(a->accepted, b->accepted);
+    ck_assert_int_eq(a->rejected, b->rejected);
+    ck_assert_int_gt(a->rejected, 0); /* the rejection path was taken too */
+    long trials = a->accepted + a->rejected;
+    ck_assert_int_eq((eval.ode->evals - eb) - (skip.ode->evals - ea), trials);
+    sw_stepper_delete(b);
+    sw_stepper_delete(a);
+    sw_system_free(&eval);
+    sw_system_free(&skip);
+}
+END_TEST
+
 /* Where it cannot run: a system above the dense fallback's size with no
  * solve is refused with a message naming the method; a solve that always
  * fails ends the step with SW_EDIVERGED and a reason, after a bounded
@@ -409,6 +461,7 @@ Suite *make_rosenbrock_suite(void)
     tcase_add_test(tc, stiff_spring_control);
     tcase_add_test(tc, chain_and_flow);
     tcase_add_test(tc, refusals);
+    tcase_add_test(tc, autonomous_skips_time_derivative);
     suite_add_tcase(s, tc);
     return s;
 }

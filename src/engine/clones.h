@@ -15,6 +15,16 @@
 #define SW_CLONES
 #endif
 
+/* A loop that copies or clears one array while it computes another: GCC
+ * would split the copy or clear out into a call to memcpy or memset (a
+ * second pass, and `rep movsb`/`rep stosb` for long arrays, which callgrind
+ * counts a byte at a time); SW_ONE_PASS asks it not to, for one function. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define SW_ONE_PASS __attribute__((optimize("no-tree-loop-distribute-patterns")))
+#else
+#define SW_ONE_PASS
+#endif
+
 /* A hot helper inlined into each clone that calls it: compiled for each
  * target with its caller, and called without a dispatch. */
 #define SW_INLINE static inline __attribute__((always_inline))

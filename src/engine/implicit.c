@@ -75,17 +75,9 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
     double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
     const double *at = ym; /* where J is taken */
-    if (from_zero)
-        for (int i = 0; i < n; i++) {
-            d[i] = 0.0;
-            ym[i] = y[i] + theta * d[i];
-        }
-    else
-        for (int i = 0; i < n; i++)
-            ym[i] = y[i] + theta * d[i];
+    swi_start(n, ym, y, theta, d, from_zero); /* ym = y + θ·d, d = 0 first with from_zero */
     sw_ode_eval(ode, te, ym, g);
-    for (int i = 0; i < n; i++)
-        g[i] = h * g[i] - d[i]; /* -G */
+    swi_minus_g(n, g, h, d); /* g = h·g - d: -G */
     double gnorm = swi_norm2(n, g);
     for (int iter = 0; iter < max_iter; iter++) {
         if (!isfinite(gnorm)) {
@@ -113,8 +105,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         double gnew = INFINITY;
         lambda = fmin(1.0, 4.0 * lambda);
         for (int ls = 0; ls < 30; ls++) {
-            for (int i = 0; i < n; i++)
-                ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
+            swi_trial_point(n, ym, y, theta, d, lambda, delta); /* ym = y + θ·(d + λ·δ) */
             sw_ode_eval(ode, te, ym, g);
             gnew = swi_residual(n, g, h, d, lambda, delta);
             if (gnew <= (1.0 - 1e-4 * lambda) * gnorm || gnew == 0)
@@ -187,7 +178,7 @@ static int implicit_step(sw_stepper *s, sw_ode *ode, double *t, double *y, doubl
     if (newton(s, ode, *t, y, h, theta, d, 1, 40, SW_WORK(s, 4)) != 0 &&
         swi_newton_continuation(s, ode, *t, y, h, theta, newton_far, s->why) != 0)
         return SW_EDIVERGED;
-    sw_axpy(ode->dim, y, y, 1.0, d);
+    swi_take(ode->dim, y, d); /* y = y + 1·d, sw_axpy's operations */
     *t += h;
     s->why = NULL;
     return 0;
@@ -216,13 +207,12 @@ int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double 
 {
     double *r = SW_WORK(s, 0), *dy = SW_WORK(s, 1);
     sw_ode_eval(ode, *t + h, y, r);
-    for (int i = 0; i < ode->dim; i++)
-        r[i] *= h;
+    swi_scale(ode->dim, r, h); /* r = h·f */
     if (sw_ode_solve(s, ode, *t + h, y, h, r, dy) != 0) {
         s->why = "the linear system of the step is singular";
         return SW_EDIVERGED;
     }
-    sw_axpy(ode->dim, y, y, 1.0, dy);
+    swi_take(ode->dim, y, dy);
     *t += h;
     return 0;
 }

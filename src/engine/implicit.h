@@ -38,4 +38,16 @@ double swi_residual(int n, double *g, double h, const double *d, double lambda, 
  * |y + d|∞ (NaN components skipped). */
 double swi_advance(int n, double *d, double lambda, const double *delta, const double *y, double *size);
 
+/* Newton's plain passes, in the loops' own order (AVX2 clones, the same
+ * bits): ym = y + θ·(d + λ·δ), the iterate tried; with from_zero d = 0
+ * first and ym = y + θ·d; g = h·g - d (-G); y = y + 1·d, the step taken
+ * (sw_axpy's operations). */
+void swi_trial_point(int n, double *ym, const double *y, double theta, const double *d, double lambda,
+                     const double *delta);
+void swi_start(int n, double *ym, const double *y, double theta, double *d, int from_zero);
+void swi_minus_g(int n, double *g, double h, const double *d);
+void swi_take(int n, double *y, const double *d);
+/* v = v·h (v[i] *= h). */
+void swi_scale(int n, double *v, double h);
+
 #endif

@@ -123,3 +123,41 @@ SW_CLONES double swi_advance(int n, double *d, double lambda, const double *delt
     *size = sz;
     return nan ? NAN : m;
 }
+
+SW_CLONES void swi_trial_point(int n, double *restrict ym, const double *restrict y, double theta,
+                               const double *restrict d, double lambda, const double *restrict delta)
+{
+    for (int i = 0; i < n; i++)
+        ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
+}
+
+SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *restrict y, double theta, double *restrict d,
+                         int from_zero)
+{
+    if (from_zero)
+        for (int i = 0; i < n; i++) {
+            d[i] = 0.0;
+            ym[i] = y[i] + theta * d[i];
+        }
+    else
+        for (int i = 0; i < n; i++)
+            ym[i] = y[i] + theta * d[i];
+}
+
+SW_CLONES void swi_minus_g(int n, double *restrict g, double h, const double *restrict d)
+{
+    for (int i = 0; i < n; i++)
+        g[i] = h * g[i] - d[i];
+}
+
+SW_CLONES void swi_take(int n, double *restrict y, const double *restrict d)
+{
+    for (int i = 0; i < n; i++)
+        y[i] = y[i] + 1.0 * d[i];
+}
+
+SW_CLONES void swi_scale(int n, double *v, double h)
+{
+    for (int i = 0; i < n; i++)
+        v[i] *= h;
+}

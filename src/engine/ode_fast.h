@@ -41,6 +41,10 @@ struct sw_ode_fast {
      * and no other force (the stiff-spring pendulum): the same for
      * sw_spring1_accel. NULL or 0: no. */
     int (*spring1)(const void *ctx, sw_spring1 *s);
+    /* 1 when ode's derivative, as set now, ignores t (f(t, y) the same bits
+     * at every t): a Rosenbrock method's ∂f/∂t is then +0 exactly where f
+     * is finite, and need not be evaluated. NULL or 0: unknown. */
+    int (*autonomous)(const sw_ode *ode);
 };
 
 /* The fast path of ode, or NULL. */
@@ -65,6 +69,12 @@ static inline int sw_ode_central1(const sw_ode *ode, sw_central1 *c)
 static inline int sw_ode_spring1(const sw_ode *ode, sw_spring1 *s)
 {
     return ode->fast && ode->fast->spring1 && ode->fast->spring1(ode->ctx, s);
+}
+
+/* 1 when ode's derivative is known not to depend on t. */
+static inline int sw_ode_autonomous(const sw_ode *ode)
+{
+    return ode->fast && ode->fast->autonomous && ode->fast->autonomous(ode);
 }
 
 static inline sw_fused_step_fn *sw_ode_fused_euler(const sw_ode *ode)

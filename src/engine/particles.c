@@ -48,10 +48,17 @@ static int spring1(const void *ctx, sw_spring1 *s)
            swp_small_spring1(p, s);
 }
 
-/* No slices, no fused steps: the fact above, and the orbit's and the stiff
- * spring's numbers. */
+/* The particles' own derivatives read no t (the forces do not depend on
+ * time); a scene that sets a derivative of its own is not vouched for. */
+static int autonomous(const sw_ode *ode)
+{
+    return ode->deriv == swp_deriv || ode->deriv == swp_deriv_generic;
+}
+
+/* No slices, no fused steps: the facts above, and the orbit's and the
+ * stiff spring's numbers. */
 static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1,
-                                                   .spring1 = spring1 };
+                                                   .spring1 = spring1, .autonomous = autonomous };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {

@@ -15,6 +15,7 @@
 #include "engine/particles_solve.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,9 @@
 #include "engine/forces.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
+
+/* The band's column length on a chain (kl = ku = 3: 2·kl + ku + 1). */
+#define CHAIN_LD 10
 
 /* Largest band accepted, in doubles (256 MiB). */
 #define BAND_MAX ((size_t)1 << 25)
@@ -205,43 +209,66 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
     }
 }
 
-/* The band += a·Kx + b·Kv for the 2x2 blocks Kx, Kv at particle rows pi,
- * columns pj, written straight into the factorisation's storage (LAPACK's
- * layout, engine/linalg.h: entry (i, j) at top + i - j + j·ld; with own,
- * the particle's own block, its mass m on the diagonal first); a term
- * whose factor is 0 is left out (it would add nothing but could turn an
- * infinite entry into NaN; with_a = a != 0, with_b = b != 0, constants
- * where the caller fixes them). Each entry gets its terms in the order the
- * blocks come (a particle's own, then the pairs', Kx before Kv), the order
- * the solve has always added them in. */
-SW_INLINE void band_blocks(double *top, int ld, int pi, int pj, int own, double m, double a, const double *kx, double bv,
-                           const double *kv, int with_a, int with_b)
+/* Two doubles side by side, lane-wise IEEE operations (the bits of the
+ * scalar ones): a band column's two entries of a 2x2 block. */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+/* The products a·Kx and b·Kv of a 2x2 block pair, by columns: a0 is Kx's
+ * first column (xx, yx) times a, a1 its second (xy, yy), b0 and b1 Kv's
+ * times b; a factor that is 0 gives no product (with_a = a != 0, with_b =
+ * b != 0). */
+typedef struct block_cols { v2d a0, a1, b0, b1; } block_cols;
+
+SW_INLINE block_cols block_products(double a, const double *kx, double b, const double *kv, int with_a, int with_b)
 {
-    double *e = top + 2 * (pi - pj) + (size_t)2 * (size_t)pj * (size_t)ld; /* (r, c) at e + r - c + c·ld */
-    double *e01 = e + ld - 1, *e11 = e + ld;
-    /* four distinct entries, loaded once and stored once (through the
-     * pointers, each second update waited for the first one's store) */
-    double v00 = e[0], v01 = *e01, v10 = e[1], v11 = *e11;
-    if (own) { /* a particle's own block, just cleared: its mass first (0 + m) */
-        v00 = 0.0 + m;
-        v11 = 0.0 + m;
-    }
+    block_cols p = { { 0, 0 }, { 0, 0 }, { 0, 0 }, { 0, 0 } };
     if (with_a) {
-        v00 += a * kx[0];
-        v01 += a * kx[1];
-        v10 += a * kx[2];
-        v11 += a * kx[3];
+        v2d c0 = { kx[0], kx[2] }, c1 = { kx[1], kx[3] };
+        p.a0 = a * c0;
+        p.a1 = a * c1;
     }
     if (with_b) {
-        v00 += bv * kv[0];
-        v01 += bv * kv[1];
-        v10 += bv * kv[2];
-        v11 += bv * kv[3];
+        v2d c0 = { kv[0], kv[2] }, c1 = { kv[1], kv[3] };
+        p.b0 = b * c0;
+        p.b1 = b * c1;
     }
-    e[0] = v00;
-    *e01 = v01;
-    e[1] = v10;
-    *e11 = v11;
+    return p;
+}
+
+/* The band += ±(a·Kx) ± (b·Kv) for the 2x2 blocks Kx, Kv at particle rows
+ * pi, columns pj, written straight into the factorisation's storage
+ * (LAPACK's layout, engine/linalg.h: entry (i, j) at top + i - j + j·ld,
+ * so a block's column is two neighbouring doubles), given the products
+ * (made once for the four blocks a pair touches) and the sign (1: add,
+ * -1: subtract; x - p is x + (-a)·K bit for bit, since (-a)·K = -(a·K)
+ * exactly); with own, the particle's own block, its mass m on the
+ * diagonal first. A term whose factor is 0 is left out (it would add
+ * nothing but could turn an infinite entry into NaN; with_a and with_b
+ * constants where the caller fixes them). Each entry gets its terms in
+ * the order the blocks come (a particle's own, then the pairs', Kx before
+ * Kv), the order the solve has always added them in. */
+SW_INLINE void band_blocks(double *top, int ld, int pi, int pj, int own, double m, int sign, const block_cols *p,
+                           int with_a, int with_b)
+{
+    double *e = top + 2 * (pi - pj) + (size_t)2 * (size_t)pj * (size_t)ld; /* (r, c) at e + r - c + c·ld */
+    double *e1 = e + ld - 1;                                                 /* column 1: (0, 1), (1, 1) */
+    v2d c0, c1;
+    memcpy(&c0, e, sizeof c0);
+    memcpy(&c1, e1, sizeof c1);
+    if (own) { /* a particle's own block, just cleared: its mass first (0 + m) */
+        c0[0] = 0.0 + m;
+        c1[1] = 0.0 + m;
+    }
+    if (with_a) {
+        c0 = sign > 0 ? c0 + p->a0 : c0 - p->a0;
+        c1 = sign > 0 ? c1 + p->a1 : c1 - p->a1;
+    }
+    if (with_b) {
+        c0 = sign > 0 ? c0 + p->b0 : c0 - p->b0;
+        c1 = sign > 0 ? c1 + p->b1 : c1 - p->b1;
+    }
+    memcpy(e, &c0, sizeof c0);
+    memcpy(e1, &c1, sizeof c1);
 }
 
 /* out += sc·K·w for one block: the product Fx·r_x without forming Fx. */
@@ -251,6 +278,19 @@ static inline void apply_block(double *out, int pi, int pj, double sc, const dou
     out[2 * pi] += sc * (blk[0] * wx + blk[1] * wy);
     out[2 * pi + 1] += sc * (blk[2] * wx + blk[3] * wy);
 }
+
+/* A chain's particle's two band columns zeroed by ten 16-byte stores
+ * (straight code: a loop here, or a memset of a known length, becomes
+ * `rep stosq`, which callgrind counts a double at a time). */
+SW_INLINE void clear_chain_columns(double *col)
+{
+    const v2d zero = { 0.0, 0.0 };
+#define SW_CLEAR2(k) memcpy(col + 2 * (k), &zero, sizeof zero)
+    SW_CLEAR2(0); SW_CLEAR2(1); SW_CLEAR2(2); SW_CLEAR2(3); SW_CLEAR2(4);
+    SW_CLEAR2(5); SW_CLEAR2(6); SW_CLEAR2(7); SW_CLEAR2(8); SW_CLEAR2(9);
+#undef SW_CLEAR2
+}
+_Static_assert(2 * CHAIN_LD == 20, "clear_chain_columns writes 20 doubles");
 
 /* The velocity system's matrix A = M - c·Fv - c²·Fx from the blocks, into
  * the band (whose shape is set), with_a and with_b as in band_blocks. */
@@ -264,22 +304,30 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
         /* particle i's two columns cleared just before its own entries go
          * in (nothing before wrote there; the pairs come after): the band
          * is cleared column by column while it is in the cache, not in one
-         * pass of its own */
-        memset(band->a + (size_t)2 * i * (size_t)ld, 0, (size_t)2 * (size_t)ld * sizeof *band->a);
-        band_blocks(top, ld, i, i, 1, p->mass[i], a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
+         * pass of its own; on a chain's band (ld = 10) by stores, not a
+         * call a particle */
+        double *col = band->a + (size_t)2 * i * (size_t)ld;
+        if (ld == CHAIN_LD)
+            clear_chain_columns(col);
+        else
+            memset(col, 0, (size_t)2 * (size_t)ld * sizeof *col);
+        block_cols own = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
+        band_blocks(top, ld, i, i, 1, p->mass[i], 1, &own, with_a, with_b);
     }
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j, *kv = kx + 4;
-        /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b). */
+        /* f_a = g(d, dv), f_b = -g: ±K on the four blocks of (a, b), each
+         * product a·K, b·K' made once */
         int ea = s->pa[j], eb = s->pb[j];
+        block_cols pr = block_products(a, kx, b, kv, with_a, with_b);
         if (ea >= 0)
-            band_blocks(top, ld, ea, ea, 0, 0.0, a, kx, b, kv, with_a, with_b);
+            band_blocks(top, ld, ea, ea, 0, 0.0, 1, &pr, with_a, with_b);
         if (ea >= 0 && eb >= 0) {
-            band_blocks(top, ld, ea, eb, 0, 0.0, -a, kx, -b, kv, with_a, with_b);
-            band_blocks(top, ld, eb, ea, 0, 0.0, -a, kx, -b, kv, with_a, with_b);
+            band_blocks(top, ld, ea, eb, 0, 0.0, -1, &pr, with_a, with_b);
+            band_blocks(top, ld, eb, ea, 0, 0.0, -1, &pr, with_a, with_b);
         }
         if (eb >= 0)
-            band_blocks(top, ld, eb, eb, 0, 0.0, a, kx, b, kv, with_a, with_b);
+            band_blocks(top, ld, eb, eb, 0, 0.0, 1, &pr, with_a, with_b);
     }
 }
 
@@ -298,6 +346,35 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
     return sw_band_factor(band);
 }
 
+/* out = M·v (two components a particle); out may be v itself. */
+static SW_CLONES void mass_times(int n, const double *mass, const double *v, double *out)
+{
+    for (int i = 0; i < n; i++) {
+        out[2 * i] = mass[i] * v[2 * i];
+        out[2 * i + 1] = mass[i] * v[2 * i + 1];
+    }
+}
+
+/* out += c·K_i·w_i for each particle's own block K_i (the Fx half of its
+ * eight doubles), w and out two components a particle, not aliased. */
+static SW_CLONES void own_blocks_times(int n, const double *diag, double c, const double *restrict w,
+                                       double *restrict out)
+{
+    for (int i = 0; i < n; i++) {
+        const double *blk = diag + 8 * i;
+        double wx = w[2 * i], wy = w[2 * i + 1];
+        out[2 * i] += c * (blk[0] * wx + blk[1] * wy);
+        out[2 * i + 1] += c * (blk[2] * wx + blk[3] * wy);
+    }
+}
+
+/* z = r + c·v over n components (z may be r: each read before written). */
+static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, const double *v)
+{
+    for (int i = 0; i < n; i++)
+        z[i] = r[i] + c * v[i];
+}
+
 /* out = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone), out 2n
  * long; r's velocity half is read only where out is written, so out may be
  * that half itself. Each entry gets its terms in the order it always had:
@@ -306,14 +383,10 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;
-    for (int i = 0; i < p->n; i++) {
-        out_v[2 * i] = p->mass[i] * r[n2 + 2 * i];
-        out_v[2 * i + 1] = p->mass[i] * r[n2 + 2 * i + 1];
-    }
+    mass_times(p->n, p->mass, r + n2, out_v);
     if (c == 0)
         return;
-    for (int i = 0; i < p->n; i++)
-        apply_block(out_v, i, i, c, s->diag + 8 * i, r);
+    own_blocks_times(p->n, s->diag, c, r, out_v);
     double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
@@ -340,6 +413,22 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
     }
 }
 
+/* 1 when y differs from key in any bit (as memcmp: -0 is not +0, a NaN
+ * equals its own bits), and key = y either way: the comparison and the
+ * copy a new factorisation needs in one pass, not a pass of each. */
+static SW_CLONES int key_moved(int len, double *restrict key, const double *restrict y)
+{
+    uint64_t diff = 0;
+    for (int i = 0; i < len; i++) {
+        uint64_t was, now;
+        memcpy(&was, key + i, sizeof was);
+        memcpy(&now, y + i, sizeof now);
+        diff |= was ^ now;
+        key[i] = y[i];
+    }
+    return diff != 0;
+}
+
 void sw_particles_solver_touch(sw_particles *p)
 {
     if (p->solver)
@@ -355,14 +444,15 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
         return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
     /* The same y (contents, not address) and c as the factorisation's, and
-     * no force added since: the factors and blocks are this system's. */
-    if (!(s->factored && s->c_at == c && s->counted == p->nforces + 1 &&
-          memcmp(s->y_at, y, (size_t)2 * n2 * sizeof *y) == 0)) {
+     * no force added since: the factors and blocks are this system's. The
+     * key is compared and taken in one pass (y_at is a key only while
+     * factored). */
+    int moved = key_moved(2 * n2, s->y_at, y);
+    if (!(s->factored && s->c_at == c && s->counted == p->nforces + 1 && !moved)) {
         if (assemble(p, y) != SW_OK)
             return SW_ENOMEM;
         if (factor_velocity_system(p, c, &s->lu) != 0)
             return SW_EDIVERGED;
-        memcpy(s->y_at, y, (size_t)2 * n2 * sizeof *y);
         s->c_at = c;
         s->factored = 1;
     }
@@ -371,8 +461,7 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
     double *z_v = z + n2;
     velocity_rhs(p, c, r, z_v);
     sw_band_solve(&s->lu, z_v);
-    for (int i = 0; i < n2; i++)
-        z[i] = r[i] + c * z_v[i];
+    add_scaled(n2, z, r, c, z_v);
     p->ode.solver_iters++;
     return SW_OK;
 }

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "engine/implicit.h"
+#include "engine/ode_fast.h"
 #include "engine/rosenbrock.h"
 #include "stepwise/base.h"
 
@@ -192,7 +193,17 @@ static void lecture_trial(sw_stepper *s, sw_ode *ode, double t, double *y, doubl
     double *f1 = SW_WORK(s, s->fsal ? 0 : S_F1), gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
     memcpy(SW_WORK(s, S_SAVED), y, (size_t)n * sizeof *y);
-    int timed = swr_time_derivative(ode, t, y, f0, ft);
+    /* f_t by a difference, or, where the system says f ignores t and f(t,
+     * y0) is finite, 0 without an evaluation (Hairer's RODAS has the same
+     * switch for autonomous systems): (f - f)/δ would be +0 there */
+    int autonomous = sw_ode_autonomous(ode), timed = 0;
+    for (int i = 0; i < n && autonomous; i++)
+        autonomous = isfinite(f0[i]);
+    if (autonomous)
+        for (int i = 0; i < n; i++)
+            ft[i] = 0.0;
+    else
+        timed = swr_time_derivative(ode, t, y, f0, ft);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
         double *k = SW_WORK(s, S_K1 + st);
         const double *f = f0;

@@ -14,6 +14,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/ode_fast.h"
 #include "engine/rodas_tableau.h"
 #include "stepwise/base.h"
 
@@ -48,15 +49,23 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
     double *saved = SW_WORK(s, S_SAVED), *f1 = SW_WORK(s, s->fsal ? 0 : S_F1);
     double gh = SW_RODAS_GAMMA * h;
     s->why = NULL;
-    memcpy(saved, y, (size_t)n * sizeof *y);
-    int timed = swr_time_derivative(ode, t, y, f0, ft);
+    /* the controller's copy of y0 (restored on a rejection) is taken in
+     * the second stage's point pass, which reads y0 anyway */
+    /* ∂f/∂t by its difference, unless the system says f ignores t and f0
+     * is finite: then (f - f0)/δ is +0 in every component, not evaluated,
+     * and the stages add +0 for its term (with_ft 2), the same bits */
+    int known_zero = sw_ode_autonomous(ode) && swr_all_finite(n, f0);
+    int timed = known_zero ? 0 : swr_time_derivative(ode, t, y, f0, ft);
     for (int st = 0; st < SW_RODAS_STAGES; st++)
         k[st] = SW_WORK(s, S_K1 + st);
     for (int st = 0; st < SW_RODAS_STAGES; st++) {
         double *kst = SW_WORK(s, S_K1 + st), c_over_h[SW_RODAS_STAGES];
         const double *f = f0;
         if (st > 0) {
-            swr_stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
+            if (st == 1)
+                swr_stage_point_keep(n, yt, saved, y, SW_RODAS_A[1][0], k[0]);
+            else
+                swr_stage_combine(n, st, 0, yt, y, 0.0, NULL, 0.0, SW_RODAS_A[st], k);
             sw_ode_eval(ode, t + SW_RODAS_ALPHA[st] * h, yt, kst);
             f = kst;
         }
@@ -65,10 +74,12 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
         /* d_i h f_t is 0·f_t = +0 where f does not depend on t: adding it
          * still turns a -0 into +0, as the lecture form did */
         double dh = timed ? SW_RODAS_D[st] * h : 0.0;
-        swr_stage_combine(n, st, 1, rhs, f, dh, ft, gh, c_over_h, k);
+        swr_stage_combine(n, st, known_zero ? 2 : 1, rhs, f, dh, ft, gh, c_over_h, k);
         if (sw_ode_solve(s, ode, t, y, gh, rhs, kst) != 0) {
             s->why = "the linear system of a Rosenbrock stage is singular";
             sums->err = NAN;
+            if (st == 0) /* before the copy: the controller restores y0 from it */
+                memcpy(saved, y, (size_t)n * sizeof *y);
             return;
         }
     }

@@ -22,8 +22,18 @@ int swr_time_derivative(sw_ode *ode, double t, const double *y, const double *f0
  * the vectors read; k holds five vector pointers, the first `terms` read):
  *     out_i = base_i + Σ_{j<terms} coef_j·k_j,i                 (with_ft 0)
  *     out_i = scale·((base_i + dh·ft_i) + Σ_{j<terms} coef_j·k_j,i)  (1)
+ *     out_i = scale·((base_i + 0.0) + Σ_{j<terms} coef_j·k_j,i)      (2: f_t
+ *             known +0, not read; the bits of (1) with ft = +0)
  * the sum taken j rising. terms 0..5. */
 void swr_stage_combine(int n, int terms, int with_ft, double *restrict out, const double *restrict base, double dh,
                        const double *restrict ft, double scale, const double *coef, const double *const *k);
+
+/* out = base + coef·k and keep = base in one pass (n long, none aliased):
+ * swr_stage_combine's one-term point with the copy of y0 alongside. */
+void swr_stage_point_keep(int n, double *restrict out, double *restrict keep, const double *restrict base,
+                          double coef, const double *restrict k);
+
+/* 1 when every one of v's n components is finite. */
+int swr_all_finite(int n, const double *v);
 
 #endif

@@ -21,6 +21,7 @@
  * potential is too up to EXACT_BODIES bodies, and above it is summed over
  * the same lists as the force, with a stated error bound (tree_energy).
  * Parameters: mu = G, soft = ε, theta = θ. */
+#include "engine/clones.h"
 #include "engine/forces.h"
 
 #include <math.h>
@@ -224,9 +225,7 @@ static void build(tree_work *w, int k, int lo, int hi)
  * 0); with ε = 0 the guarded loop drops it. On x86-64 an AVX2 copy is
  * chosen at load time where the processor has it: 4 lanes, not 2, of the
  * same IEEE operations (no FMA), hence the same bits. */
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+SW_CLONES
 static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay, double *ap)
 {
     for (int c = lo; c < hi; c += BLOCK) {

@@ -79,6 +79,89 @@ START_TEST(rk4_three_vectors_same_bits)
 }
 END_TEST
 
+/* Step a copy of y under rk4 through ode and through a view of it with no
+ * fast paths (the generic rk4_range), `steps` times, and require the same
+ * bits in every component after every step, and the same runaway flag. */
+static void same_as_generic(sw_ode *ode, const double *y0, double h, int steps, unsigned limit_exp, const char *what)
+{
+    sw_ode generic = *ode;
+    generic.fast = NULL;
+    const sw_integrator *rk4 = sw_integrator_find("rk4");
+    sw_stepper fused_st, generic_st;
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_stepper_init(&fused_st, rk4, ode, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_stepper_init(&generic_st, rk4, &generic, err, sizeof err), SW_OK);
+    fused_st.limit_exp = generic_st.limit_exp = limit_exp;
+    int dim = ode->dim;
+    double *yf = malloc(2 * (size_t)dim * sizeof *yf), *yg = yf + dim, tf = 0, tg = 0;
+    ck_assert_ptr_nonnull(yf);
+    memcpy(yf, y0, (size_t)dim * sizeof *yf);
+    memcpy(yg, y0, (size_t)dim * sizeof *yg);
+    for (int step = 0; step < steps; step++) {
+        ck_assert_int_eq(sw_stepper_step(&fused_st, ode, &tf, yf, h), SW_OK);
+        ck_assert_int_eq(sw_stepper_step(&generic_st, &generic, &tg, yg, h), SW_OK);
+        for (int i = 0; i < dim; i++)
+            ck_assert_msg(memcmp(&yf[i], &yg[i], sizeof yf[i]) == 0, "%s step %d component %d: %.17g vs %.17g", what,
+                          step, i, yf[i], yg[i]);
+        ck_assert_int_eq(fused_st.beyond, generic_st.beyond);
+    }
+    free(yf);
+    sw_stepper_free(&fused_st);
+    sw_stepper_free(&generic_st);
+}
+
+/* The chain's fused rk4 (engine/particles_chain.c) against the generic
+ * rk4 step on the same system, bit for bit (no tolerance: the same
+ * operations in the same order): chains shorter than, equal to and
+ * longer than a tile (128 beads) and its halo, undamped and damped, with
+ * and without gravity, with drag added, resting on a floor (the resting
+ * contact's hold), and one that blows up (inf and NaN, the runaway flag).
+ * Each case first checks that the fused step is the one taken, and a
+ * chain with another force must not take it. */
+START_TEST(chain_fused_rk4_same_bits)
+{
+    struct {
+        const char *sets[4];
+        int nsets, steps, extra; /* extra: 1 drag, 2 a floor with resting contact */
+    } cases[] = {
+        { { NULL }, 0, 20, 0 },
+        { { "n=2", "g=9.81" }, 2, 20, 0 },
+        { { "n=3", "c=0.5" }, 2, 20, 0 },
+        { { "n=128", "c=0.7", "g=9.81" }, 3, 10, 0 },
+        { { "n=129", "g=-3" }, 2, 10, 0 },
+        { { "n=200", "c=0.7", "g=9.81" }, 3, 10, 0 },
+        { { "n=1001", "c=0.3", "k=5000", "pluck=3" }, 4, 10, 0 },
+        { { "n=300", "g=9.81" }, 2, 10, 1 },
+        { { "n=40", "g=9.81", "c=0.2" }, 3, 20, 2 },
+        { { "n=50", "k=1000000", "pluck=5" }, 3, 60, 0 },
+    };
+    for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+        sw_system sys;
+        char err[SW_ERRLEN], what[96];
+        build(&sys, "chain", cases[q].sets, cases[q].nsets);
+        sw_particles *p = &sys.particles;
+        if (cases[q].extra == 1)
+            ck_assert_int_eq(sw_particles_add_drag(p, 0.4), SW_OK);
+        if (cases[q].extra == 2)
+            p->walls = (sw_walls){ .active = 1, .sides = SW_WALL_FLOOR, .ymin = 0.0, .e = 0.5, .rest = 0.1 };
+        ck_assert_int_eq(sw_particles_finish(p, err, sizeof err), SW_OK);
+        ck_assert_msg(sw_ode_fused_rk4(sys.ode) != NULL, "case %zu: the fused step is not taken", q);
+        snprintf(what, sizeof what, "chain %s %s %s extra %d", cases[q].sets[0] ? cases[q].sets[0] : "",
+                 cases[q].nsets > 1 ? cases[q].sets[1] : "", cases[q].nsets > 2 ? cases[q].sets[2] : "",
+                 cases[q].extra);
+        same_as_generic(sys.ode, sys.y, sys.scene->dt, cases[q].steps, q == 9 ? 1023 + 30 : 0, what);
+        sw_system_free(&sys);
+    }
+    sw_system sys;
+    char err[SW_ERRLEN];
+    build(&sys, "chain", NULL, 0);
+    ck_assert_int_eq(sw_particles_add_central(&sys.particles, 5.0, 5.0, 1.0), SW_OK);
+    ck_assert_int_eq(sw_particles_finish(&sys.particles, err, sizeof err), SW_OK);
+    ck_assert_msg(sw_ode_fused_rk4(sys.ode) == NULL, "a chain in a central field takes the fused step");
+    sw_system_free(&sys);
+}
+END_TEST
+
 /* Resident KiB of this process (VmRSS), or -1 where /proc cannot say. */
 static long resident_kib(void)
 {
@@ -168,6 +251,7 @@ Suite *make_memory_suite(void)
     Suite *s = suite_create("memory");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, rk4_three_vectors_same_bits);
+    tcase_add_test(tc, chain_fused_rk4_same_bits);
     tcase_add_test(tc, chain_rk4_memory);
     suite_add_tcase(s, tc);
     return s;

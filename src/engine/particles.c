@@ -14,6 +14,7 @@
 
 #include "engine/forces.h"
 #include "engine/ode_fast.h"
+#include "engine/particles_chain.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_small.h"
 #include "engine/particles_solve.h"
@@ -39,8 +40,18 @@ static int central1(const void *ctx, sw_central1 *c)
     return swp_deriv_is_small(p) && swp_small_central1(p, c);
 }
 
-/* No slices, no fused steps: the fact above, and the orbit's numbers. */
-static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1 };
+/* No slices: the fact above, the orbit's numbers, and for a chain between
+ * two anchors its fused rk4 (compiling picks the row: particles_deriv.c);
+ * a plugin's host (-DSW_FIELD_ONLY) keeps no method, fused or not. */
+#ifndef SW_FIELD_ONLY
+#define CHAIN_RK4 swp_chain_rk4
+#else
+#define CHAIN_RK4 NULL
+#endif
+const struct sw_ode_fast swp_particles_fast[2] = {
+    { .position_only = position_only, .central1 = central1 },
+    { .position_only = position_only, .central1 = central1, .fused_rk4 = CHAIN_RK4 },
+};
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {
@@ -72,7 +83,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.solve = sw_particles_solve;
     p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
-    p->ode.fast = &particles_fast;
+    p->ode.fast = &swp_particles_fast[0];
     return SW_OK;
 }
 

@@ -7,7 +7,12 @@
 
 #include <stddef.h>
 
+#include "engine/ode_fast.h"
 #include "stepwise/particles.h"
+
+/* The particle system's fast paths (ode_fast.h): [0] plain, [1] with the
+ * chain's fused rk4; compiling picks one for p->ode.fast. */
+extern const struct sw_ode_fast swp_particles_fast[2];
 
 /* The compiled form, empty (to be compiled on first use); 0 or SW_ENOMEM. */
 int swp_model_init(sw_particles *p);

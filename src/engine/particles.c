@@ -179,6 +179,19 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
     return s;
 }
 
+int sw_particles_add_spring_line(sw_particles *p, int nsprings, const sw_spring line[3])
+{
+    if (nsprings < 2 || p->nforces == SW_MAX_FORCES)
+        return SW_EINVAL;
+    if (swp_model_springs(p, p->nsprings_total + nsprings) != SW_OK)
+        return SW_ENOMEM;
+    sw_force *fo = add_force(p, SW_FORCE_SPRINGS);
+    fo->nsprings = nsprings;
+    memcpy(fo->line, line, sizeof fo->line);
+    p->nsprings_total += nsprings;
+    return SW_OK;
+}
+
 int sw_particles_finish(sw_particles *p, char *err, size_t errlen)
 {
     sw_particles_solver_touch(p);

@@ -20,6 +20,7 @@
 #include "engine/particles_chain.h"
 #include "engine/particles_model.h"
 #include "engine/particles_spring_force.h"
+#include "engine/spring_line.h"
 #include "engine/particles_small.h"
 #include "stepwise/base.h"
 
@@ -126,7 +127,8 @@ static int each_spring(const sw_particles *p, spring_visit *visit, char *err, si
         for (int f = 0; f < p->nforces; f++) {
             const sw_force *fo = &p->forces[f];
             for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
+                sw_spring at = swp_spring_at(fo, j);
+                const sw_spring *sp = &at;
                 if (sp->a < 0 || sp->a >= p->n || sp->b < -1 || sp->b >= p->n) {
                     if (rc == SW_OK && err)
                         snprintf(err, errlen, "spring %d joins particles %d and %d; a system of %d "

@@ -27,11 +27,11 @@ enum {
 };
 
 /* The workspace, in doubles: old state and stage state (x and v each),
- * the running sum (x and v), the paired springs' forces (slot j at 2(j - s0
+ * the running sum (x and v), the accelerations of a stage, the paired springs' forces (slot j at 2(j - s0
  * + 1)), the anchors' forces, and block_forces' differences and squares. */
 enum {
     W_YX = 0, W_YV = W_YX + 2 * SPAN, W_TX = W_YV + 2 * SPAN, W_TV = W_TX + 2 * SPAN,
-    W_QX = W_TV + 2 * SPAN, W_QV = W_QX + 2 * SPAN, W_F = W_QV + 2 * SPAN,
+    W_QX = W_TV + 2 * SPAN, W_QV = W_QX + 2 * SPAN, W_KV = W_QV + 2 * SPAN, W_F = W_KV + 2 * SPAN,
     W_FL = W_F + 2 * (SPAN + 1) + PAD, W_FR = W_FL + PAD, W_D = W_FR + PAD,
     W_DV = W_D + 2 * BLOCK + PAD, W_L2 = W_DV + 2 * BLOCK + PAD, W_AD = W_L2 + BLOCK + PAD,
     W_ADV = W_AD + PAD, W_AL2 = W_ADV + PAD, W_SIZE = W_AL2 + PAD
@@ -86,57 +86,85 @@ SW_INLINE void tile_anchor(const tile *tl, const double *cx, const double *cv, i
     block_forces(1, m->shared, m->shared + BLOCK, m->shared + 2 * BLOCK, d, dv, out, tl->w + W_AL2, damped);
 }
 
-/* Stage s (1..4) of beads [r0, r1): each bead's k = (v, a) from the stage
- * state (cx, cv) and the forces already computed, then the stage update:
- * s = 1: acc = k, next = y + h/2·k; s = 2: acc += 2k, next = y + h/2·k;
- * s = 3: acc += 2k, next = y + h·k; s = 4: y = y + h/6·(acc + k), into the
- * state (yg), OR-ing the runaway bits. next may be the stage state itself:
- * each bead reads its own before writing it, and no other bead reads it. */
+/* Bead i's acceleration from its two springs' forces fa, fb (signs sa,
+ * sb, in the compiled order) at the stage velocity cv: last_range's sum
+ * from +0, gravity, drag and 1/m (particles_deriv.c), the same bits. */
+SW_INLINE v2d bead_accel(const sw_particles *p, const struct sw_particles_model *m, int i, v2d vi, double sa, v2d fa,
+                         double sb, v2d fb, int gravity, int drag)
+{
+    v2d fi = { 0.0, 0.0 }, g = { m->gx, m->gy };
+    fi = (fi + sa * fa) + sb * fb;
+    if (gravity)
+        fi += p->mass[i] * g;
+    if (drag)
+        fi -= m->kdrag * vi;
+    return fi * p->inv_mass[i];
+}
+
+/* The stage update of components [c0, c1) of one half of the state from
+ * their k: s = 1: acc = k, next = y + h/2·k; s = 2: acc += 2k, next = y +
+ * h/2·k; s = 3: acc += 2k, next = y + h·k; s = 4: out = y + h/6·(acc + k),
+ * OR-ing out's runaway bits (rk4_range's arithmetic, explicit.c). next may
+ * be k itself (each component is read before it is written). */
+SW_INLINE unsigned long long stage_update(int s, int c0, int c1, double h, const double *restrict y0, double *restrict q,
+                                          const double *k, double *next, double *restrict out,
+                                          unsigned long long add)
+{
+    double a = s == 3 ? h : 0.5 * h, b = h / 6.0;
+    unsigned long long over = 0;
+    for (int c = c0; c < c1; c++) {
+        double kc = k[c];
+        if (s == 1)
+            q[c] = kc;
+        else if (s < 4)
+            q[c] += 2.0 * kc;
+        if (s < 4) {
+            next[c] = y0[c] + a * kc;
+        } else {
+            out[c - c0] = y0[c] + b * (q[c] + kc);
+            over |= sw_beyond_bits(out[c - c0], add);
+        }
+    }
+    return over;
+}
+
+/* Stage s (1..4) of beads [r0, r1) from the stage state (cx, cv) and the
+ * springs' forces already computed: the accelerations into the tile's kv
+ * row (then the resting contact's hold, as swp_deriv applies it), then
+ * the positions' update (k = cv, read before the stage state is
+ * overwritten) and the velocities' (k = kv); stage 4 writes the state yg. */
 SW_INLINE unsigned long long tile_beads(const tile *tl, const double *cx, const double *cv, int s, int r0, int r1,
                                         double h, double *yg, unsigned long long add, int gravity, int drag)
 {
     const sw_particles *p = tl->p;
     const struct sw_particles_model *m = tl->m;
-    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
-    const double *f = tl->w + W_F, *fl = tl->w + W_FL, *fr = tl->w + W_FR;
-    const double *yx = tl->w + W_YX, *yv = tl->w + W_YV;
-    double *tx = tl->w + W_TX, *tv = tl->w + W_TV, *qx = tl->w + W_QX, *qv = tl->w + W_QV;
-    double gx = m->gx, gy = m->gy, kd = m->kdrag, a = s == 3 ? h : 0.5 * h, b = h / 6.0;
-    int n = tl->n, n2 = 2 * n, hold = p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR);
-    double floor = p->walls.ymin;
-    unsigned long long over = 0;
-    for (int i = r0; i < r1; i++) {
-        int li = i - tl->s0, fi = 2 * (li + 1); /* spring i's force; spring i - 1's at fi - 2 */
-        /* the bead's two springs in the compiled order, summed from +0 */
-        const double *fa = i == 0 ? f + fi : f + fi - 2, *fb = i == 0 ? fl : i == n - 1 ? fr : f + fi;
-        double sa = i == 0 ? -1.0 : 1.0, sb = i == 0 || i == n - 1 ? 1.0 : -1.0;
-        double vx = cv[2 * li], vy = cv[2 * li + 1];
-        double fx = (0.0 + sa * fa[0]) + sb * fb[0], fy = (0.0 + sa * fa[1]) + sb * fb[1];
-        if (gravity)
-            fx += mass[i] * gx, fy += mass[i] * gy;
-        if (drag)
-            fx -= kd * vx, fy -= kd * vy;
-        double k[4] = { vx, vy, fx * inv[i], fy * inv[i] };
-        if (hold && cx[2 * li + 1] == floor && vy == 0 && k[3] < 0) /* resting contact (swp_deriv) */
-            k[3] = 0;
-        double *q[4] = { qx + 2 * li, qx + 2 * li + 1, qv + 2 * li, qv + 2 * li + 1 };
-        double *next[4] = { tx + 2 * li, tx + 2 * li + 1, tv + 2 * li, tv + 2 * li + 1 };
-        const double *y0[4] = { yx + 2 * li, yx + 2 * li + 1, yv + 2 * li, yv + 2 * li + 1 };
-        double *out[4] = { yg + 2 * i, yg + 2 * i + 1, yg + n2 + 2 * i, yg + n2 + 2 * i + 1 };
-        for (int e = 0; e < 4; e++) {
-            if (s == 1)
-                *q[e] = k[e];
-            else if (s < 4)
-                *q[e] += 2.0 * k[e];
-            if (s < 4) {
-                *next[e] = *y0[e] + a * k[e];
-            } else {
-                *out[e] = *y0[e] + b * (*q[e] + k[e]);
-                over |= sw_beyond_bits(*out[e], add);
-            }
-        }
+    const double *f = tl->w + W_F;
+    double *kv = tl->w + W_KV;
+    int n = tl->n, s0 = tl->s0, i0 = r0 > 1 ? r0 : 1, i1 = r1 < n - 1 ? r1 : n - 1;
+    /* bead i's springs: i - 1 (its end a, +) and i (end b, -); spring j's
+     * force at f + 2(j - s0 + 1); bead 0: spring 0 (b, -) then its anchor
+     * (+); bead n - 1: spring n - 2 (a, +) then its anchor (+) */
+    for (int i = i0; i < i1; i++) {
+        int li = i - s0;
+        v2d a = bead_accel(p, m, i, load2(cv + 2 * li), 1.0, load2(f + 2 * li), -1.0, load2(f + 2 * li + 2),
+                           gravity, drag);
+        store2(kv + 2 * li, a);
     }
-    return over;
+    if (r0 == 0)
+        store2(kv - 2 * s0, bead_accel(p, m, 0, load2(cv - 2 * s0), -1.0, load2(f + 2 - 2 * s0), 1.0,
+                                       load2(tl->w + W_FL), gravity, drag));
+    if (r1 == n)
+        store2(kv + 2 * (n - 1 - s0), bead_accel(p, m, n - 1, load2(cv + 2 * (n - 1 - s0)), 1.0,
+                                                 load2(f + 2 * (n - 1 - s0)), 1.0, load2(tl->w + W_FR), gravity,
+                                                 drag));
+    if (p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR))
+        for (int li = r0 - s0; li < r1 - s0; li++)
+            if (cx[2 * li + 1] == p->walls.ymin && cv[2 * li + 1] == 0 && kv[2 * li + 1] < 0)
+                kv[2 * li + 1] = 0;
+    int c0 = 2 * (r0 - s0), c1 = 2 * (r1 - s0), n2 = 2 * n;
+    double *tx = tl->w + W_TX, *tv = tl->w + W_TV;
+    return stage_update(s, c0, c1, h, tl->w + W_YX, tl->w + W_QX, cv, tx, yg + 2 * r0, add) |
+           stage_update(s, c0, c1, h, tl->w + W_YV, tl->w + W_QV, kv, tv, yg + n2 + 2 * r0, add);
 }
 
 /* One tile [lo, hi) of the step, its span's old state already in place. */
@@ -154,7 +182,14 @@ SW_INLINE unsigned long long tile_step(tile *tl, int lo, int hi, double h, doubl
             tile_anchor(tl, cx, cv, m->npair, 0 - tl->s0, tl->w + W_FL, damped);
         if (r1 == n)
             tile_anchor(tl, cx, cv, m->npair + 1, n - 1 - tl->s0, tl->w + W_FR, damped);
-        over |= tile_beads(tl, cx, cv, s, r0, r1, h, y, add, gravity, drag);
+        if (s == 1) /* (a constant stage each: its update loop without branches) */
+            over |= tile_beads(tl, cx, cv, 1, r0, r1, h, y, add, gravity, drag);
+        else if (s == 2)
+            over |= tile_beads(tl, cx, cv, 2, r0, r1, h, y, add, gravity, drag);
+        else if (s == 3)
+            over |= tile_beads(tl, cx, cv, 3, r0, r1, h, y, add, gravity, drag);
+        else
+            over |= tile_beads(tl, cx, cv, 4, r0, r1, h, y, add, gravity, drag);
     }
     return over;
 }

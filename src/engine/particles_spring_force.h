@@ -12,6 +12,21 @@
 
 #include "engine/clones.h"
 
+/* A particle's (x, y) as one value, so a pair of components moves and
+ * subtracts as one (a GNU C vector, which gcc and clang support; each
+ * operation is the elementwise IEEE operation, so the bits are those of two
+ * scalar ones). */
+typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
+
+static inline v2d load2(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
 /* The sign bit set when l2 (a sum of squares: +0 or more, or NaN) is below
  * 1e-290 or NaN, i.e. when !(l2 >= 1e-290), from its bits alone: below, its
  * bits minus those of 1e-290 wrap around; a NaN with the sign clear

@@ -1,7 +1,7 @@
-/* Memory at scale (issue 26, "a million particles"): rk4 in three work
- * vectors gives the textbook four-vector rk4's bits, and a long chain under
- * rk4 stays within twice the memory of the hand-fused loop of
- * bench/bench_base.c, counted here from what that loop allocates. */
+/* Memory at scale (issues 26 and 41, "a million particles"): rk4 in three
+ * work vectors gives the textbook four-vector rk4's bits, the chain's fused
+ * rk4 gives the generic step's, and a long chain under rk4 keeps at most
+ * 2.25 times its state resident. */
 #include <check.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -211,16 +211,20 @@ static int under_valgrind(void)
 }
 
 /* The chain at n = 200000 under rk4: building it and taking two steps may
- * make at most twice as much memory resident as the hand-fused rk4 of
- * bench_base.c allocates and touches: the state (4n doubles), the stage
- * state and the weighted sum (4n each) and the spring forces (2(n + 1)),
- * 112 bytes a bead. (Measured at 212 a bead, where it was 348 before the
- * three-vector rk4 and the compact spring model; the limit is 224.) A
- * freshly allocated page counts once touched; memory reused from earlier
- * tests in this process was resident already and counts as nothing, so
- * the measure can only err low. Skipped under AddressSanitizer and
- * valgrind (shadow memory), where /proc is missing, and with huge pages
- * always on. */
+ * make at most 2.25 times its state resident (the state: 4n doubles, 32
+ * bytes a bead; issue 41 asks for at most three times). Measured at 52.4
+ * bytes a bead in the suite's process, 57.5-58.1 in a forked child: the
+ * state, masses and inverse masses (16) and the compiled model's `first`
+ * (4), and in a child some of the allocator's own; the springs are a line
+ * of three (no array), the fused rk4 works in a tile of fixed size and the
+ * stepper's three work vectors are never touched. The limit, 72, leaves
+ * 14 bytes a bead (2.7 MiB here) above the worst measured for the
+ * allocator's rounding; it was 224 (twice bench_base.c's hand-fused loop, 112),
+ * measured 212, before the fused step. A freshly allocated page counts
+ * once touched; memory reused from earlier tests in this process was
+ * resident already and counts as nothing, so the measure can only err
+ * low. Skipped under AddressSanitizer and valgrind (shadow memory), where
+ * /proc is missing, and with huge pages always on. */
 START_TEST(chain_rk4_memory)
 {
     enum { N = 200000 };
@@ -237,9 +241,9 @@ START_TEST(chain_rk4_memory)
     for (int step = 0; step < 2; step++)
         ck_assert_int_eq(sw_stepper_step(&st, sys.ode, &t, sys.y, sys.scene->dt), SW_OK);
     double per_bead = (resident_kib() - before) * 1024.0 / N;
-    double fused = (4.0 * N + 4.0 * N + 4.0 * N + 2.0 * (N + 1)) * sizeof(double) / N;
-    ck_assert_msg(per_bead <= 2.0 * fused, "%.1f bytes a bead resident, over twice the hand-fused %.1f", per_bead,
-                  fused);
+    double state = 4.0 * N * sizeof(double) / N;
+    ck_assert_msg(per_bead <= 2.25 * state, "%.1f bytes a bead resident, over 2.25 times the state's %.1f",
+                  per_bead, state);
     sw_stepper_free(&st);
     sw_system_free(&sys);
 }

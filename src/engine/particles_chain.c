@@ -144,7 +144,24 @@ SW_INLINE unsigned long long tile_beads(const tile *tl, const double *cx, const 
     /* bead i's springs: i - 1 (its end a, +) and i (end b, -); spring j's
      * force at f + 2(j - s0 + 1); bead 0: spring 0 (b, -) then its anchor
      * (+); bead n - 1: spring n - 2 (a, +) then its anchor (+) */
-    for (int i = i0; i < i1; i++) {
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
+    v4d g = { m->gx, m->gy, m->gx, m->gy }, zero = { 0.0, 0.0, 0.0, 0.0 }, plus = zero + 1.0, minus = zero - 1.0;
+    int i = i0;
+    for (; i + 2 <= i1; i += 2) { /* two beads at a time: each lane bead_accel's operations */
+        int li = i - s0;
+        v4d vi, fa, fb;
+        memcpy(&vi, cv + 2 * li, sizeof vi);
+        memcpy(&fa, f + 2 * li, sizeof fa);
+        memcpy(&fb, f + 2 * li + 2, sizeof fb);
+        v4d fi = (zero + plus * fa) + minus * fb;
+        if (gravity)
+            fi += (v4d){ mass[i], mass[i], mass[i + 1], mass[i + 1] } * g;
+        if (drag)
+            fi -= m->kdrag * vi;
+        fi *= (v4d){ inv[i], inv[i], inv[i + 1], inv[i + 1] };
+        memcpy(kv + 2 * li, &fi, sizeof fi);
+    }
+    for (; i < i1; i++) {
         int li = i - s0;
         v2d a = bead_accel(p, m, i, load2(cv + 2 * li), 1.0, load2(f + 2 * li), -1.0, load2(f + 2 * li + 2),
                            gravity, drag);

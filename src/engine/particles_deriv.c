@@ -24,9 +24,6 @@
 #include "engine/particles_small.h"
 #include "stepwise/base.h"
 
-/* Two particles' (x, y) as one value, for loops that read neighbours in order. */
-typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
-/* (no functions that take or return one: without AVX that changes the ABI) */
 
 
 int swp_model_init(sw_particles *p)

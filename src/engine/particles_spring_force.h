@@ -1,6 +1,7 @@
 /* Private to the particle derivative and the chain's fused rk4
- * (particles_deriv.c, particles_chain.c): the spring forces of a block of
- * springs from their differences, one loop without indices that the
+ * (particles_deriv.c, particles_chain.c): a particle's (x, y) as one
+ * vector (two particles' as one wider), and the spring forces of a block
+ * of springs from their differences, one loop without indices that the
  * compiler vectorises. Both paths inline this one function, so a spring's
  * force is the same operations in the same order (the same bits) wherever
  * it is computed. */
@@ -26,6 +27,10 @@ static inline v2d load2(const double *p)
 }
 
 static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
+
+/* Two particles' (x, y) as one value, for loops that read neighbours in order. */
+typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
+/* (no functions that take or return one: without AVX that changes the ABI) */
 
 /* The sign bit set when l2 (a sum of squares: +0 or more, or NaN) is below
  * 1e-290 or NaN, i.e. when !(l2 >= 1e-290), from its bits alone: below, its

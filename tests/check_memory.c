@@ -212,14 +212,14 @@ static int under_valgrind(void)
 
 /* The chain at n = 200000 under rk4: building it and taking two steps may
  * make at most 2.25 times its state resident (the state: 4n doubles, 32
- * bytes a bead; issue 41 asks for at most three times). Measured at 52.4
- * bytes a bead in the suite's process, 57.5-58.1 in a forked child: the
- * state, masses and inverse masses (16) and the compiled model's `first`
- * (4), and in a child some of the allocator's own; the springs are a line
- * of three (no array), the fused rk4 works in a tile of fixed size and the
- * stepper's three work vectors are never touched. The limit, 72, leaves
- * 14 bytes a bead (2.7 MiB here) above the worst measured for the
- * allocator's rounding; it was 224 (twice bench_base.c's hand-fused loop, 112),
+ * bytes a bead; issue 41 asks for at most three times). Measured at 48.4
+ * bytes a bead in the suite's process, 53.7-53.8 in a forked child: the
+ * state and the masses and inverse masses (16), and in a child some of
+ * the allocator's own; the springs are a line of three (no array), the
+ * compiled model writes no per-bead list, the fused rk4 works in a tile
+ * of fixed size and the stepper's three work vectors are never touched.
+ * The limit, 72, leaves 18 bytes a bead (3.4 MiB here) above the worst
+ * measured for the allocator's rounding; it was 224 (twice bench_base.c's hand-fused loop, 112),
  * measured 212, before the fused step. A freshly allocated page counts
  * once touched; memory reused from earlier tests in this process was
  * resident already and counts as nothing, so the measure can only err

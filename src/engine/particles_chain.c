@@ -39,12 +39,17 @@ enum {
 
 size_t swp_chain_work_size(void) { return W_SIZE; }
 
+int swp_chain_layout(const struct sw_particles_model *m, int n)
+{
+    int an = m->npair;
+    return n >= 2 && m->stride && m->a0 == 2 && m->b0 == 0 && m->npair == n - 1 && m->nanchor == 2 &&
+           m->a[an] == 0 && m->a[an + 1] == 2 * (n - 1);
+}
+
 int swp_chain_shaped(const sw_particles *p)
 {
     const struct sw_particles_model *m = p->model;
-    int n = p->n, an = m->npair;
-    return !m->small && m->nextra == 0 && m->uniform && n >= 2 && m->stride && m->a0 == 2 && m->b0 == 0 &&
-           m->npair == n - 1 && m->nanchor == 2 && m->a[an] == 0 && m->a[an + 1] == 2 * (n - 1) && m->tile;
+    return !m->small && m->nextra == 0 && m->uniform && m->tile && swp_chain_layout(m, p->n);
 }
 
 #ifndef SW_FIELD_ONLY /* a plugin's host keeps no method, fused or not */

@@ -48,7 +48,7 @@ static int central1(const void *ctx, sw_central1 *c)
 #else
 #define CHAIN_RK4 NULL
 #endif
-const struct sw_ode_fast swp_particles_fast[2] = {
+static const struct sw_ode_fast particles_fast[2] = {
     { .position_only = position_only, .central1 = central1 },
     { .position_only = position_only, .central1 = central1, .fused_rk4 = CHAIN_RK4 },
 };
@@ -68,7 +68,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->y = calloc((size_t)4 * n, sizeof *p->y);
     p->mass = malloc((size_t)n * sizeof *p->mass);
     p->inv_mass = malloc((size_t)n * sizeof *p->inv_mass);
-    if (!p->y || !p->mass || !p->inv_mass || swp_model_init(p) != SW_OK || sw_particles_solver_init(p) != SW_OK) {
+    if (!p->y || !p->mass || !p->inv_mass || swp_model_init(p, particles_fast) != SW_OK || sw_particles_solver_init(p) != SW_OK) {
         sw_particles_free(p);
         snprintf(err, errlen, "out of memory for %d particles", n);
         return SW_ENOMEM;
@@ -83,7 +83,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.solve = sw_particles_solve;
     p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
-    p->ode.fast = &swp_particles_fast[0];
+    p->ode.fast = &particles_fast[0];
     return SW_OK;
 }
 

@@ -26,11 +26,12 @@
 
 
 
-int swp_model_init(sw_particles *p)
+int swp_model_init(sw_particles *p, const struct sw_ode_fast fast[2])
 {
     p->model = calloc(1, sizeof *p->model);
     if (!p->model)
         return SW_ENOMEM;
+    p->model->fast = fast;
     p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
     p->model->shared = malloc(3 * BLOCK * sizeof *p->model->shared);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
@@ -61,6 +62,7 @@ int swp_model_springs(sw_particles *p, int nsprings)
             return SW_ENOMEM;
         *rows[r] = q;
     }
+#ifndef SW_FIELD_ONLY /* (a plugin's host takes no fused step) */
     if (!m->tile) { /* the chain's fused rk4: a fixed few KiB */
         size_t size = swp_chain_work_size();
         if (!(m->tile = malloc(size * sizeof *m->tile)))
@@ -68,6 +70,7 @@ int swp_model_springs(sw_particles *p, int nsprings)
         for (size_t i = 0; i < size; i++) /* block_forces' padding reads: lengths, never tiny */
             m->tile[i] = 1.0;
     }
+#endif
     m->cap = nsprings;
     m->compiled = 0;
     m->small = NULL;
@@ -92,8 +95,8 @@ void swp_model_touch(sw_particles *p)
         p->model->compiled = 0;
         p->model->small = NULL;
         p->model->chain = 0;
+        p->ode.fast = &p->model->fast[0];
     }
-    p->ode.fast = &swp_particles_fast[0];
 }
 
 /* Visit the description's springs in the compiled order: paired ones first,
@@ -324,7 +327,7 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
     build_lists(p->n, m);
     m->small = small;
     m->chain = swp_chain_shaped(p);
-    p->ode.fast = &swp_particles_fast[m->chain];
+    p->ode.fast = &m->fast[m->chain];
     m->compiled = 1;
     return rc;
 }

@@ -68,6 +68,7 @@ struct sw_particles_model {
      * with the springs, swp_chain_work_size doubles), or NULL */
     int chain;
     double *tile;
+    const struct sw_ode_fast *fast; /* the system's two rows (swp_model_init) */
     /* NULL, or the small-system path (particles_small.c) that gives these
      * numbers without the blocks and passes above: chosen when compiled */
     swp_small_fn *small;

@@ -4,8 +4,8 @@
 # hand-written baseline reproduces the generic step bit for bit; every
 # default scene gets a frame-cost row; the heavy views (through the app) and
 # the large-n memory rows (against the hand-fused loop) are there, within
-# twice the hand-fused loop's resident memory; --frame-view runs one heavy
-# view alone.
+# twice the hand-fused loop's resident memory and three times the state;
+# --frame-view runs one heavy view alone.
 # Timings are printed, never checked: they vary from machine to machine.
 . "$(dirname "$0")/lib.sh"
 BENCH=${STEPWISE_BENCH:?set STEPWISE_BENCH to the engine benchmark program (make bench)}

@@ -11,6 +11,7 @@
 
 #include "engine/particles_deriv.h"
 #include "engine/particles_model.h"
+#include "engine/spring_line.h"
 #include "stepwise/stepwise.h"
 #include "stepwise/particles.h"
 #include "stepwise/sim.h"
@@ -68,7 +69,8 @@ static void plain_deriv(const sw_particles *p, const double *y, double *dydt, do
                 scale[2 * i + d] += fabs(part);
             }
         for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
-            const sw_spring *sp = &fo->springs[j];
+            sw_spring at = swp_spring_at(fo, j); /* (a line's springs are generated) */
+            const sw_spring *sp = &at;
             int a = sp->a, b = sp->b;
             double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
             double dx = x[2 * a] - bx, dy = x[2 * a + 1] - by, len2 = dx * dx + dy * dy;

@@ -46,8 +46,10 @@ typedef struct sw_force {
      * and walls x = 0, x = box_w, y = 0 pushing within `zone` of them. */
     double h, rho0, stiff, nu, box_w, zone;
     double grad;         /* SW_FORCE_SPH: C in ∇Wspiky = -C (h - r)² d/r; 0: the continuum's 30/(π h⁵) */
-    sw_spring *springs;  /* owned by the particle system */
+    sw_spring *springs;  /* owned by the particle system; NULL for a line (below) */
     int nsprings;
+    sw_spring line[3];   /* springs == NULL: the line's first spring, its second (a and b advance by
+                            one particle a spring after it) and its last (sw_particles_add_spring_line) */
     void *work;          /* what the kind sizes when added (the tree's node pool); owned by the system */
 } sw_force;
 
@@ -94,6 +96,12 @@ int sw_particles_add_central(sw_particles *p, double cx, double cy, double mu);
 int sw_particles_add_force(sw_particles *p, const sw_force *fo);
 /* Reserve room for nsprings springs; fill the returned array (NULL on ENOMEM). */
 sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings);
+/* A line of nsprings >= 2 springs stored as three: line[0] first, then
+ * nsprings - 2 springs like line[1] with a and b advanced by one particle
+ * a spring (spring j: a + j - 1, b + j - 1), then line[2] (a chain between
+ * two anchors). Nothing n-long is written. SW_OK, SW_EINVAL (nsprings < 2,
+ * or no room for another force) or SW_ENOMEM. */
+int sw_particles_add_spring_line(sw_particles *p, int nsprings, const sw_spring line[3]);
 /* Compile the forces for the derivative once the system is built (the
  * springs filled in); call again after changing a force or a spring. 0, or
  * SW_EINVAL when a spring names a particle that does not exist (err says

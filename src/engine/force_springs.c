@@ -9,6 +9,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "engine/spring_line.h"
+
 /* d = x_a - x_b (or the anchor) and dv = v_a - v_b of spring sp. */
 static void differences(const sw_spring *sp, const double *x, const double *v, double d[2], double dv[2])
 {
@@ -30,7 +32,8 @@ static void springs_add(const sw_particles *p, const sw_force *fo, const double 
 {
     (void)p;
     for (int j = 0; j < fo->nsprings; j++) {
-        const sw_spring *sp = &fo->springs[j];
+        sw_spring at = swp_spring_at(fo, j);
+        const sw_spring *sp = &at;
         double d[2], dv[2];
         differences(sp, x, v, d, dv);
         double l = length(d);
@@ -51,7 +54,8 @@ static void springs_potential(const sw_particles *p, const sw_force *fo, const d
 {
     (void)p;
     for (int j = 0; j < fo->nsprings; j++) {
-        const sw_spring *sp = &fo->springs[j];
+        sw_spring at = swp_spring_at(fo, j);
+        const sw_spring *sp = &at;
         double bx = sp->b >= 0 ? x[2 * sp->b] : sp->ax, by = sp->b >= 0 ? x[2 * sp->b + 1] : sp->ay;
         double stretch = hypot(x[2 * sp->a] - bx, x[2 * sp->a + 1] - by) - sp->rest;
         *e += 0.5 * sp->k * stretch * stretch;
@@ -62,9 +66,11 @@ static long springs_pairs(const sw_particles *p, const sw_force *fo, int *reach)
 {
     (void)p;
     *reach = 0;
-    for (int j = 0; j < fo->nsprings; j++)
-        if (fo->springs[j].b >= 0 && abs(fo->springs[j].a - fo->springs[j].b) > *reach)
-            *reach = abs(fo->springs[j].a - fo->springs[j].b);
+    for (int j = 0; j < fo->nsprings; j++) {
+        sw_spring sp = swp_spring_at(fo, j);
+        if (sp.b >= 0 && abs(sp.a - sp.b) > *reach)
+            *reach = abs(sp.a - sp.b);
+    }
     return fo->nsprings;
 }
 
@@ -110,7 +116,8 @@ static void springs_blocks(const sw_particles *p, const sw_force *fo, const doub
 {
     (void)p;
     for (int j = 0; j < fo->nsprings; j++, out->n++) {
-        const sw_spring *sp = &fo->springs[j];
+        sw_spring at = swp_spring_at(fo, j);
+        const sw_spring *sp = &at;
         out->a[out->n] = sp->a;
         out->b[out->n] = sp->b;
         spring_block(sp, x, v, out->pair + 8 * out->n, out->pair + 8 * out->n + 4);
@@ -119,7 +126,8 @@ static void springs_blocks(const sw_particles *p, const sw_force *fo, const doub
 
 static void springs_values(const sw_force *fo, char *buf, size_t len)
 {
-    const sw_spring *sp = fo->springs;
+    sw_spring first = fo->nsprings > 0 ? swp_spring_at(fo, 0) : (sw_spring){ 0 };
+    const sw_spring *sp = fo->nsprings > 0 ? &first : NULL;
     snprintf(buf, len, "%d spring%s%s k = %g, c = %g, rest = %g", fo->nsprings, fo->nsprings == 1 ? "" : "s",
              fo->nsprings == 1 ? ":" : ", the first:", sp ? sp->k : 0, sp ? sp->c : 0, sp ? sp->rest : 0);
 }
@@ -128,7 +136,7 @@ static void springs_values(const sw_force *fo, char *buf, size_t len)
 static int springs_use_velocity(const sw_force *fo)
 {
     for (int j = 0; j < fo->nsprings; j++)
-        if (fo->springs[j].c != 0)
+        if (swp_spring_at(fo, j).c != 0)
             return 1;
     return 0;
 }

@@ -14,6 +14,7 @@
 
 #include "engine/forces.h"
 #include "engine/ode_fast.h"
+#include "engine/particles_chain.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_small.h"
 #include "engine/particles_solve.h"
@@ -55,10 +56,20 @@ static int autonomous(const sw_ode *ode)
     return ode->deriv == swp_deriv || ode->deriv == swp_deriv_generic;
 }
 
-/* No slices, no fused steps: the facts above, and the orbit's and the
- * stiff spring's numbers. */
-static const struct sw_ode_fast particles_fast = { .position_only = position_only, .central1 = central1,
-                                                   .spring1 = spring1, .autonomous = autonomous };
+/* No slices: the facts above, the orbit's and the stiff spring's numbers,
+ * and for a chain between two anchors its fused rk4 (compiling picks the
+ * row: particles_deriv.c); a plugin's host (-DSW_FIELD_ONLY) keeps no
+ * method, fused or not. */
+#ifndef SW_FIELD_ONLY
+#define CHAIN_RK4 swp_chain_rk4
+#else
+#define CHAIN_RK4 NULL
+#endif
+static const struct sw_ode_fast particles_fast[2] = {
+    { .position_only = position_only, .central1 = central1, .spring1 = spring1, .autonomous = autonomous },
+    { .position_only = position_only, .central1 = central1, .spring1 = spring1, .autonomous = autonomous,
+      .fused_rk4 = CHAIN_RK4 },
+};
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)
 {
@@ -75,7 +86,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->y = calloc((size_t)4 * n, sizeof *p->y);
     p->mass = malloc((size_t)n * sizeof *p->mass);
     p->inv_mass = malloc((size_t)n * sizeof *p->inv_mass);
-    if (!p->y || !p->mass || !p->inv_mass || swp_model_init(p) != SW_OK || sw_particles_solver_init(p) != SW_OK) {
+    if (!p->y || !p->mass || !p->inv_mass || swp_model_init(p, particles_fast) != SW_OK || sw_particles_solver_init(p) != SW_OK) {
         sw_particles_free(p);
         snprintf(err, errlen, "out of memory for %d particles", n);
         return SW_ENOMEM;
@@ -90,7 +101,7 @@ int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t err
     p->ode.solve = sw_particles_solve;
     p->ode.prepare = sw_particles_solver_prepare;
     p->ode.ctx = p;
-    p->ode.fast = &particles_fast;
+    p->ode.fast = &particles_fast[0];
     return SW_OK;
 }
 
@@ -184,6 +195,19 @@ sw_spring *sw_particles_add_springs(sw_particles *p, int nsprings)
     fo->nsprings = nsprings;
     p->nsprings_total += nsprings;
     return s;
+}
+
+int sw_particles_add_spring_line(sw_particles *p, int nsprings, const sw_spring line[3])
+{
+    if (nsprings < 2 || p->nforces == SW_MAX_FORCES)
+        return SW_EINVAL;
+    if (swp_model_springs(p, p->nsprings_total + nsprings) != SW_OK)
+        return SW_ENOMEM;
+    sw_force *fo = add_force(p, SW_FORCE_SPRINGS);
+    fo->nsprings = nsprings;
+    memcpy(fo->line, line, sizeof fo->line);
+    p->nsprings_total += nsprings;
+    return SW_OK;
 }
 
 int sw_particles_finish(sw_particles *p, char *err, size_t errlen)

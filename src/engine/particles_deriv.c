@@ -17,35 +17,21 @@
 
 #include "engine/clones.h"
 #include "engine/forces.h"
+#include "engine/particles_chain.h"
 #include "engine/particles_model.h"
+#include "engine/particles_spring_force.h"
+#include "engine/spring_line.h"
 #include "engine/particles_small.h"
 #include "stepwise/base.h"
 
-/* A particle's (x, y) as one value, so a pair of components moves and
- * subtracts as one (a GNU C vector, which gcc and clang support; each
- * operation is the elementwise IEEE operation, so the bits are those of two
- * scalar ones). */
-typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
-
-static inline v2d load2(const double *p)
-{
-    v2d v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
-
-/* Two particles' (x, y) as one value, for loops that read neighbours in order. */
-typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
-/* (no functions that take or return one: without AVX that changes the ABI) */
 
 
-int swp_model_init(sw_particles *p)
+int swp_model_init(sw_particles *p, const struct sw_ode_fast fast[2])
 {
     p->model = calloc(1, sizeof *p->model);
     if (!p->model)
         return SW_ENOMEM;
+    p->model->fast = fast;
     p->model->scratch = malloc(5 * BLOCK * sizeof *p->model->scratch);
     p->model->shared = malloc(3 * BLOCK * sizeof *p->model->shared);
     p->model->first = calloc((size_t)p->n + 1, sizeof *p->model->first);
@@ -76,6 +62,15 @@ int swp_model_springs(sw_particles *p, int nsprings)
             return SW_ENOMEM;
         *rows[r] = q;
     }
+#ifndef SW_FIELD_ONLY /* (a plugin's host takes no fused step) */
+    if (!m->tile) { /* the chain's fused rk4: a fixed few KiB */
+        size_t size = swp_chain_work_size();
+        if (!(m->tile = malloc(size * sizeof *m->tile)))
+            return SW_ENOMEM;
+        for (size_t i = 0; i < size; i++) /* block_forces' padding reads: lengths, never tiny */
+            m->tile[i] = 1.0;
+    }
+#endif
     m->cap = nsprings;
     m->compiled = 0;
     m->small = NULL;
@@ -88,6 +83,7 @@ void swp_model_free(sw_particles *p)
     if (m) {
         free(m->a), free(m->b), free(m->k), free(m->c), free(m->rest), free(m->ax), free(m->ay);
         free(m->scratch), free(m->shared), free(m->force), free(m->first), free(m->spring), free(m->sign);
+        free(m->tile);
         free(m);
     }
     p->model = NULL;
@@ -98,6 +94,8 @@ void swp_model_touch(sw_particles *p)
     if (p->model) {
         p->model->compiled = 0;
         p->model->small = NULL;
+        p->model->chain = 0;
+        p->ode.fast = &p->model->fast[0];
     }
 }
 
@@ -114,7 +112,8 @@ static int each_spring(const sw_particles *p, spring_visit *visit, char *err, si
         for (int f = 0; f < p->nforces; f++) {
             const sw_force *fo = &p->forces[f];
             for (int j = 0; fo->kind == SW_FORCE_SPRINGS && j < fo->nsprings; j++) {
-                const sw_spring *sp = &fo->springs[j];
+                sw_spring at = swp_spring_at(fo, j);
+                const sw_spring *sp = &at;
                 if (sp->a < 0 || sp->a >= p->n || sp->b < -1 || sp->b >= p->n) {
                     if (rc == SW_OK && err)
                         snprintf(err, errlen, "spring %d joins particles %d and %d; a system of %d "
@@ -222,11 +221,36 @@ static int end_offset(const struct sw_particles_model *m, int j, int end)
     return end ? m->b[j] : m->a[j];
 }
 
+/* A chain between two anchors (swp_chain_layout) with no extra pass and no
+ * small path: every particle has two springs, the run is [1, n - 1), and
+ * only the two end beads' lists are written, in spring order (bead 0:
+ * spring 0 as its end b, then its anchor; bead n - 1: spring n - 2 as its
+ * end a, then its anchor). `first` is not written: with degree 2 and no
+ * extra pass no pass reads it (a million beads' 4 MB never resident).
+ * 1 when so. */
+static int line_lists(int n, struct sw_particles_model *m)
+{
+    if (m->full || m->nextra > 0 || !swp_chain_layout(m, n) || n < 3)
+        return 0;
+    m->degree = 2;
+    m->skip_run = stride_run(m);
+    int ends[4] = { 0, 2 * m->npair, 2 * (m->npair - 1), 2 * (m->npair + 1) };
+    double signs[4] = { -1.0, 1.0, 1.0, 1.0 };
+    for (int e = 0; e < 4; e++) {
+        int at = e < 2 ? e : 2 * (n - 1) + e - 2;
+        m->spring[at] = ends[e];
+        m->sign[at] = signs[e];
+    }
+    return m->skip_run;
+}
+
 /* Each particle's list, in spring order: count, then place (but the run's,
  * when skip_run). */
 static void build_lists(int n, struct sw_particles_model *m)
 {
     int total = m->npair + m->nanchor;
+    if (line_lists(n, m))
+        return;
     memset(m->first, 0, (size_t)(n + 1) * sizeof *m->first);
     for (int j = 0; j < total; j++) {
         m->first[end_offset(m, j, 0) / 2 + 1]++;
@@ -302,66 +326,10 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
     }
     build_lists(p->n, m);
     m->small = small;
+    m->chain = swp_chain_shaped(p);
+    p->ode.fast = &m->fast[m->chain];
     m->compiled = 1;
     return rc;
-}
-
-/* The sign bit set when l2 (a sum of squares: +0 or more, or NaN) is below
- * 1e-290 or NaN, i.e. when !(l2 >= 1e-290), from its bits alone: below, its
- * bits minus those of 1e-290 wrap around; a NaN with the sign clear
- * carries into the sign bit when 2^52 - 1 is added; one with it set has it
- * set. Integer operations, so the loop that ORs these vectorises. */
-static inline unsigned long long small_or_nan(double l2)
-{
-    const double tiny = 1e-290;
-    unsigned long long b, t;
-    memcpy(&b, &l2, sizeof b);
-    memcpy(&t, &tiny, sizeof t);
-    return b | (b - t) | (b + 0x000FFFFFFFFFFFFFULL);
-}
-
-/* Spring forces of a block from its differences d (and dv), as (x, y) pairs:
- *   f_a = -[k(|d| - rest) + c·(v_a - v_b)·d̂] d̂,  d̂ = d/|d|,
- * |d| = √(dx² + dy²), or hypot(dx, dy) where dx² + dy² < 1e-290 (there the
- * squares lose their digits or vanish). Where |d| = 0 the direction is
- * undefined and the plain loop adds no force; here d = 0 is divided by 1
- * instead (l + (l == 0), a select without a branch, so the loop
- * vectorises) and the force is ±0, which leaves a sum as it is: the sums
- * start at +0, and a sum that starts at +0 is never -0. The hypot cases are
- * found after the loop (their squares were kept in len2) and redone; the
- * loop flags whether there are any with integer operations on l2's bits,
- * which vectorise (see small_or_nan), so the usual block is not scanned. */
-SW_INLINE void block_forces(int len, const double *restrict k, const double *restrict c, const double *restrict rest,
-                            const double *restrict d, const double *restrict dv, double *restrict force,
-                            double *restrict len2, int damped)
-{
-    unsigned long long flag = 0;
-    int len4 = (len + 3) & ~3; /* whole vectors: the padding is computed and never read */
-    for (int j = 0; j < len4; j++) {
-        double dx = d[2 * j], dy = d[2 * j + 1];
-        double l2 = dx * dx + dy * dy, l = sqrt(l2), q = l + (l == 0);
-        double ux = dx / q, uy = dy / q;
-        double mag = k[j] * (l - rest[j]);
-        if (damped)
-            mag += c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy);
-        len2[j] = l2;
-        flag |= small_or_nan(l2);
-        force[2 * j] = -mag * ux;
-        force[2 * j + 1] = -mag * uy;
-    }
-    for (int j = 0; flag >> 63 && j < len; j++) {
-        if (len2[j] >= 1e-290)
-            continue;
-        double dx = d[2 * j], dy = d[2 * j + 1], l = hypot(dx, dy);
-        if (!(l > 0)) {
-            force[2 * j] = force[2 * j + 1] = 0.0;
-            continue;
-        }
-        double ux = dx / l, uy = dy / l;
-        double mag = k[j] * (l - rest[j]) + (damped ? c[j] * (dv[2 * j] * ux + dv[2 * j + 1] * uy) : 0.0);
-        force[2 * j] = -mag * ux;
-        force[2 * j + 1] = -mag * uy;
-    }
 }
 
 /* d = x_a - x_b (or - anchor) for springs [lo, hi) of which [lo, mid) are

@@ -7,10 +7,14 @@
 
 #include <stddef.h>
 
+#include "engine/ode_fast.h"
 #include "stepwise/particles.h"
 
-/* The compiled form, empty (to be compiled on first use); 0 or SW_ENOMEM. */
-int swp_model_init(sw_particles *p);
+/* The compiled form, empty (to be compiled on first use), and the
+ * system's two rows of fast paths (ode_fast.h, static, the caller's):
+ * fast[0] plain, fast[1] with the chain's fused rk4; compiling points
+ * p->ode.fast at the one that fits, touching at fast[0]. 0 or SW_ENOMEM. */
+int swp_model_init(sw_particles *p, const struct sw_ode_fast fast[2]);
 /* Room for nsprings springs in all; 0 or SW_ENOMEM. */
 int swp_model_springs(sw_particles *p, int nsprings);
 void swp_model_free(sw_particles *p);

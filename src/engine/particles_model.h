@@ -63,6 +63,12 @@ struct sw_particles_model {
      * drag): a pass each, in the order added, before the last pass */
     int nextra;
     int extra[SW_MAX_FORCES]; /* indices into p->forces */
+    /* the springs are a chain between two anchors (swp_chain_shaped):
+     * rk4 takes its fused step; tile: that step's workspace (allocated
+     * with the springs, swp_chain_work_size doubles), or NULL */
+    int chain;
+    double *tile;
+    const struct sw_ode_fast *fast; /* the system's two rows (swp_model_init) */
     /* NULL, or the small-system path (particles_small.c) that gives these
      * numbers without the blocks and passes above: chosen when compiled */
     swp_small_fn *small;

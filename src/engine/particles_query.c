@@ -6,6 +6,8 @@
 
 #include <string.h>
 
+#include "engine/spring_line.h"
+
 int sw_particles_spring_count(const sw_particles *p) { return p->nsprings_total; }
 
 void sw_particles_spring(const sw_particles *p, int j, sw_spring *out)
@@ -15,7 +17,7 @@ void sw_particles_spring(const sw_particles *p, int j, sw_spring *out)
         if (fo->kind != SW_FORCE_SPRINGS)
             continue;
         if (j < fo->nsprings) {
-            *out = fo->springs[j];
+            *out = swp_spring_at(fo, j);
             return;
         }
         j -= fo->nsprings;

@@ -297,21 +297,17 @@ static int chain_build(sw_system *sys, char *err, size_t errlen)
     int rc = sw_scene_particles(sys, n, p[CH_M], err, errlen);
     if (rc != SW_OK)
         return rc;
-    sw_spring *s = sw_particles_add_springs(&sys->particles, n + 1);
-    if (!s) {
+    /* spring j joins mass j-1 (or the left anchor) and mass j (or the
+     * right): a line, stored as its first, second and last springs */
+    double L = p[CH_REST];
+    sw_spring line[3] = {
+        { .a = 0, .b = -1, .k = p[CH_K], .c = p[CH_C], .rest = L, .ax = 0.0, .ay = 0.0 },
+        { .a = 1, .b = 0, .k = p[CH_K], .c = p[CH_C], .rest = L },
+        { .a = n - 1, .b = -1, .k = p[CH_K], .c = p[CH_C], .rest = L, .ax = (n + 1) * L, .ay = 0.0 },
+    };
+    if (sw_particles_add_spring_line(&sys->particles, n + 1, line) != SW_OK) {
         snprintf(err, errlen, "out of memory for %d springs", n + 1);
         return SW_ENOMEM;
-    }
-    double L = p[CH_REST];
-    for (int j = 0; j <= n; j++) {
-        /* spring j joins mass j-1 (or the left anchor) and mass j (or the right). */
-        s[j] = (sw_spring){ .k = p[CH_K], .c = p[CH_C], .rest = L };
-        if (j == 0)
-            s[j].a = 0, s[j].b = -1, s[j].ax = 0.0, s[j].ay = 0.0;
-        else if (j == n)
-            s[j].a = n - 1, s[j].b = -1, s[j].ax = (n + 1) * L, s[j].ay = 0.0;
-        else
-            s[j].a = j, s[j].b = j - 1;
     }
     if (p[CH_G] != 0)
         sw_particles_add_gravity(&sys->particles, 0.0, -p[CH_G]);

@@ -159,8 +159,8 @@ void sw_app_measure_dt_change(sw_app *a, double old_dt)
         sw_app_dt_poll(a); /* done already */
         return;
     }
-    snprintf(a->message, sizeof a->message, "dt=%g: " SW_APP_MEASURING " to t=%.3g (the picture runs on)",
-             a->dt, old_dt, a->dt, a->scene->duration);
+    snprintf(a->message, sizeof a->message, "dt=%g: " SW_APP_MEASURING " to t=%.3g in the background; the "
+             "figures show here when done", a->dt, old_dt, a->dt, a->scene->duration);
 }
 
 const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)

@@ -8,7 +8,8 @@
 # status line's `t=` with `tmux capture-pane` as fast as the shell can for
 # WINDOW seconds. The gap is the longest time the `t=` field went without
 # changing from the key on: the first change after the key, and between
-# changes after it. A measurement, not a test: the sampling interval
+# changes after it; the row "none" presses nothing: the picture's own
+# longest gap over the window at that load. A measurement, not a test: the sampling interval
 # (one capture-pane, a few ms; its median is printed) bounds its
 # resolution, and the machine's load (printed) shifts it. `make bench`
 # runs it; no test asserts a time.
@@ -50,6 +51,7 @@ one_run() {
     wait_running 0.5 || { echo "- -"; return; } # play starts running
     last=$(t_now)
     case $key in
+    none) ;; # the picture's own gaps, for comparison
     w) tmux send-keys -t "$session" -l -- "$key" ;;
     *) tmux send-keys -t "$session" -l -- "$key " ;; # the key, then space: run on
     esac
@@ -68,6 +70,10 @@ one_run() {
     done
     [ $((end - change)) -gt "$gap" ] && gap=$((end - change)) # still at the window's end
     tmux send-keys -t "$session" -l q
+    for _ in $(seq 100); do # gone (and the server with it) before the next one starts
+        tmux has-session -t "$session" 2>/dev/null || break
+        sleep 0.1
+    done
     echo "$((gap / 1000)) $(echo "$intervals" | median | awk '{ printf "%.1f", $1 / 1e3 }')"
 }
 
@@ -79,7 +85,7 @@ echo "median of $REPEATS runs, the worst beside it; sampling interval (one captu
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 printf "  %-7s %-4s %8s %8s %10s  %s\n" scene key "gap ms" worst "sample ms" "<=100ms"
 for scene in chain vortex; do
-    for key in w k c + - ';'; do
+    for key in none w k c + - ';'; do
         gaps="" samples=""
         for _ in $(seq "$REPEATS"); do
             set -- $(one_run "$scene" "$key")

@@ -9,16 +9,19 @@
 # WINDOW seconds. The gap is the longest time the `t=` field went without
 # changing from the key on: the first change after the key, and between
 # changes after it; the row "none" presses nothing: the picture's own
-# longest gap over the window at that load. A measurement, not a test: the sampling interval
+# longest gap over the window at that load. t= moves in whole steps, so
+# at speed 1 a gap is at least the run's dt (printed: `+` doubles it, to
+# 100 ms on the vortex). A measurement, not a test: the sampling interval
 # (one capture-pane, a few ms; its median is printed) bounds its
 # resolution, and the machine's load (printed) shifts it. `make bench`
 # runs it; no test asserts a time.
 #
-# usage: bash bench/keys_tmux.sh [STEPWISE] [REPEATS] [WINDOW]
+# usage: bash bench/keys_tmux.sh [STEPWISE] [REPEATS] [WINDOW] [SCENES]
 set -u
 SW=$(cd "$(dirname "${1:-./stepwise}")" && pwd)/$(basename "${1:-./stepwise}")
 REPEATS=${2:-3}
 WINDOW=${3:-3}
+SCENES=${4:-chain vortex}
 command -v tmux >/dev/null 2>&1 || { echo "keys_tmux: skipped (no tmux)"; exit 0; }
 session=swkeys$$
 trap 'tmux kill-session -t "$session" 2>/dev/null' EXIT
@@ -43,12 +46,13 @@ wait_running() {
 
 
 # One run: prints "GAP_MS SAMPLE_MS" (the longest gap, the median sampling
-# interval), or "- -" when the scene did not start.
+# interval, the run's dt after the key in ms: the floor of the gap at
+# speed 1, as t= moves in whole steps), or "- - -" when it did not start.
 one_run() {
-    local scene=$1 key=$2 start t last now prev gap=0 change end intervals=""
+    local scene=$1 key=$2 start t last now prev gap=0 change end intervals="" step
     tmux kill-session -t "$session" 2>/dev/null
     tmux new -d -s "$session" -x 100 -y 30 "'$SW' play $scene --set n=100000"
-    wait_running 0.5 || { echo "- -"; return; } # play starts running
+    wait_running 0.5 || { echo "- - -"; return; } # play starts running
     last=$(t_now)
     case $key in
     none) ;; # the picture's own gaps, for comparison
@@ -69,32 +73,35 @@ one_run() {
         fi
     done
     [ $((end - change)) -gt "$gap" ] && gap=$((end - change)) # still at the window's end
+    # the run's step after the key: at speed 1, t= moves once per dt of wall time at the most
+    step=$(tmux capture-pane -p -t "$session" | grep -o ' dt=[0-9.e+-]*' | head -1 | cut -d= -f2)
     tmux send-keys -t "$session" -l q
     for _ in $(seq 100); do # gone (and the server with it) before the next one starts
         tmux has-session -t "$session" 2>/dev/null || break
         sleep 0.1
     done
-    echo "$((gap / 1000)) $(echo "$intervals" | median | awk '{ printf "%.1f", $1 / 1e3 }')"
+    echo "$((gap / 1000)) $(echo "$intervals" | median | awk '{ printf "%.1f", $1 / 1e3 }') $(awk -v d="${step:-0}" 'BEGIN { printf "%g", 1e3 * d }')"
 }
 
 median() { tr ' ' '\n' | grep -v '^$' | sort -n | awk '{ v[NR] = $1 } END { print NR ? v[int((NR + 1) / 2)] : "-" }'; }
 worst() { tr ' ' '\n' | grep -v '^$' | sort -n | tail -1; }
 
 echo "keys at n = 1e5 in tmux (100x30): the longest time t= stood still from the key on, over ${WINDOW} s;"
-echo "median of $REPEATS runs, the worst beside it; sampling interval (one capture-pane) median."
+echo "median of $REPEATS runs, the worst beside it; sampling interval (one capture-pane) median; the run's"
+echo "dt after the key (at speed 1 t= moves once a step: a gap of dt is the run's own pace, not a stall)."
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-printf "  %-7s %-4s %8s %8s %10s  %s\n" scene key "gap ms" worst "sample ms" "<=100ms"
-for scene in chain vortex; do
+printf "  %-7s %-4s %8s %8s %10s %8s  %s\n" scene key "gap ms" worst "sample ms" "dt ms" "<=100ms"
+for scene in $SCENES; do
     for key in none w k c + - ';'; do
-        gaps="" samples=""
+        gaps="" samples="" step=-
         for _ in $(seq "$REPEATS"); do
             set -- $(one_run "$scene" "$key")
             [ "$1" = - ] && continue
-            gaps="$gaps $1" samples="$samples $2"
+            gaps="$gaps $1" samples="$samples $2" step=$3
         done
         g=$(echo "$gaps" | median)
-        printf "  %-7s %-4s %8s %8s %10s  %s\n" "$scene" "$key" "$g" "$(echo "$gaps" | worst)" \
-            "$(echo "$samples" | median)" "$( [ "$g" != - ] && [ "$g" -le 100 ] && echo yes || echo NO)"
+        printf "  %-7s %-4s %8s %8s %10s %8s  %s\n" "$scene" "$key" "$g" "$(echo "$gaps" | worst)" \
+            "$(echo "$samples" | median)" "$step" "$( [ "$g" != - ] && [ "$g" -le 100 ] && echo yes || echo NO)"
     done
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -224,6 +224,8 @@ bench:
 	@sh bench/grade_class.sh ./$(BIN) 120 3
 	@echo; echo "grading 100 passing traces, CPU time (bench/grade_traces.sh):"
 	@sh bench/grade_traces.sh ./$(BIN) 100 5
+	@echo; echo "the longest stall after each key at n = 1e5, in tmux (bench/keys_tmux.sh):"
+	@bash bench/keys_tmux.sh ./$(BIN) 3 3
 
 # The lessons directory is compiled in (SW_DATADIR, from PREFIX). Remember it
 # in a stamp, so that `make && make install PREFIX=/opt/sw` rebuilds what uses

@@ -5,9 +5,9 @@
  * from the steps per CPU second measured while warming up), then the key
  * (sw_app_key), then frames until what it started is over. A row is the
  * frame that took longest from the key on, in this thread's CPU time and
- * in wall time (the `w` sweep runs on a worker thread: its CPU is not the
- * picture's, but on a busy machine it takes a core), the median of
- * `repeats` runs; the worst of them beside it. */
+ * in wall time (the `w` sweep and a long Δt measurement run on a worker
+ * thread: their CPU is not the picture's, but on a busy machine it takes a
+ * core), the median of `repeats` runs; the worst of them beside it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -83,16 +83,17 @@ static key_frame key_run(const char *scene, int n, int key, int quick)
         double b = (capacity > 0 ? capacity : 2000) * 0.010 / a->nsims;
         budget = b < 1 ? 1 : b > 1e6 ? 1000000 : (long)b;
     }
-    /* the key, then frames until its work is done (the sweep's report in) */
-    int frames = 0, limit = key == 'w' ? SWEEP_FRAMES : after;
-    for (; frames < limit; frames++) {
+    /* the key, then frames until its work is done (the sweep's report or
+     * the Δt measurement's figures in) */
+    int frames = 0;
+    for (; frames < SWEEP_FRAMES; frames++) {
         one_frame(a, &f, &scr, budget, frames == 0 ? key : 0, &cpu, &wall);
         r.cpu_ms = fmax(r.cpu_ms, cpu);
         r.wall_ms = fmax(r.wall_ms, wall);
-        if (key == 'w' && frames >= after && !a->sweep)
+        if (frames >= after && !a->sweep && !a->dt_job)
             break;
     }
-    r.ok = key != 'w' || !a->sweep;
+    r.ok = !a->sweep && !a->dt_job;
     if (key == 'w' && r.ok) { /* and the Esc that closes the plot */
         one_frame(a, &f, &scr, budget, SW_KEY_ESC, &cpu, &wall);
         r.cpu_ms = fmax(r.cpu_ms, cpu);
@@ -114,7 +115,8 @@ void bench_key_gaps(int repeats, int quick)
     int runs = quick ? 1 : repeats < 1 ? 1 : repeats > MAX_REPEATS_KEYS ? MAX_REPEATS_KEYS : repeats;
     int big = quick ? 1000 : 0;
     printf("keys at n = %s: the longest frame from the key on (w: until the sweep's plot is in, and the\n"
-           "Esc that closes it), the live loop's work without a terminal at its step budget; CPU time of\n"
+           "Esc that closes it; + and -: until the error's figures are in), the live loop's work without\n"
+           "a terminal at its step budget; CPU time of\n"
            "the thread (the picture's) and wall time; median of %d runs, the worst run beside it.\n"
            "Target: <= 100 ms\n\n", quick ? "1e3 (--quick)" : "1e5", runs);
     printf("  %-7s %7s %-4s %9s %9s %9s %9s  %s\n", "scene", "n", "key", "cpu ms", "worst", "wall ms", "worst",
@@ -136,7 +138,7 @@ void bench_key_gaps(int repeats, int quick)
             }
             double mc = median(cpu, runs), mw = median(wall, runs);
             printf("  %-7s %7d %-4c %9.1f %9.1f %9.1f %9.1f  %s%s\n", scenes[s].scene, n, keys[k], mc, worst_cpu,
-                   mw, worst_wall, mc <= 100 ? "yes" : "NO", ok ? "" : "  (sweep not done)");
+                   mw, worst_wall, mc <= 100 ? "yes" : "NO", ok ? "" : "  (worker not done)");
             fflush(stdout);
         }
     printf("\n");

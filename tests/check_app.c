@@ -107,6 +107,7 @@ START_TEST(halving_dt_measures_order)
         sw_app a;
         app_with(&a, cases[i].scene, cases[i].method, cases[i].dt, NULL);
         ck_assert_int_eq(sw_app_key(&a, '-', 0), 1);
+        sw_app_dt_wait(&a); /* the vortex's runs go to a worker */
         ck_assert_double_eq(a.dt, cases[i].dt / 2);
         ck_assert_msg(fabs(a.error_ratio / cases[i].ratio - 1) < 0.1, "%s/%s: ratio %g, expected %g",
                       cases[i].scene, cases[i].method, a.error_ratio, cases[i].ratio);
@@ -621,7 +622,9 @@ END_TEST
 
 /* The keys that may work for a key press's budget name what they do, for
  * the screen to show before it: the work-precision key while no sweep is
- * kept, the Δt keys, u when there is a stop time; never a quick key. */
+ * kept, the Δt keys while their runs stay on the picture's thread, u when
+ * there is a stop time; never a quick key, nor one whose work goes to a
+ * worker (the picture runs on: nothing to wait for). */
 START_TEST(slow_keys_say_so_first)
 {
     sw_app a;
@@ -629,6 +632,9 @@ START_TEST(slow_keys_say_so_first)
     ck_assert_ptr_null(sw_app_key_notice(&a, 'w', 0)); /* measured on a worker: no wait to announce */
     ck_assert_ptr_nonnull(sw_app_key_notice(&a, '-', 0));
     ck_assert_ptr_nonnull(sw_app_key_notice(&a, '+', 0));
+    a.work_inline = 0; /* every Δt measurement on the worker */
+    ck_assert_ptr_null(sw_app_key_notice(&a, '-', 0));
+    a.work_inline = SW_APP_WORK_INLINE;
     ck_assert_ptr_null(sw_app_key_notice(&a, 'u', 0));
     ck_assert_ptr_null(sw_app_key_notice(&a, 'g', 0));
     ck_assert_ptr_null(sw_app_key_notice(&a, 'n', 0)); /* a lesson's key, outside a lesson */

@@ -29,6 +29,7 @@ static void press(sw_runner *r, sw_app *a, int key)
 {
     if (!sw_runner_key(r, a, key))
         sw_app_key(a, key, 1);
+    sw_app_dt_wait(a); /* a Δt key's figures, where they were measured on a worker */
     sw_runner_update(r, a);
 }
 

@@ -146,6 +146,7 @@ int sw_app_init(sw_app *a, const sw_scene *sc, const double *p, const sw_integra
     a->zoom = 1.0;
     a->error_ratio = NAN;
     a->work_key = SW_WORK_KEY;
+    a->work_inline = SW_APP_WORK_INLINE;
     if (!m)
         m = sw_integrator_find(sc->integrator);
     int rc = build(a, m, err, errlen);
@@ -198,6 +199,7 @@ int sw_app_set_scene(sw_app *a, const sw_scene *sc, const double *p, char *err, 
 int sw_app_set_method(sw_app *a, const sw_integrator *m)
 {
     char err[SW_ERRLEN];
+    sw_app_dt_cancel(a); /* it measured the method before */
     if (sw_sim_set_method(&a->sims[0], m, err, sizeof err) != SW_OK) {
         snprintf(a->message, sizeof a->message, "%s", err);
         return SW_EINVAL;
@@ -222,6 +224,7 @@ int sw_app_set_method(sw_app *a, const sw_integrator *m)
 int sw_app_set_dt(sw_app *a, double dt)
 {
     char err[SW_ERRLEN];
+    sw_app_dt_cancel(a); /* a new step: the next key measures again */
     for (int i = 0; i < a->nsims; i++)
         if (sw_sim_set_dt(&a->sims[i], dt, err, sizeof err) != SW_OK) {
             snprintf(a->message, sizeof a->message, "%s", err);
@@ -283,6 +286,7 @@ void sw_app_set_ghost(sw_app *a, int on) { a->ghost = on; }
 void sw_app_set_events(sw_app *a, sw_events_mode mode)
 {
     char err[SW_ERRLEN];
+    sw_app_dt_cancel(a); /* its runs met events the old way */
     a->events = mode;
     for (int i = 0; i < a->nsims; i++) {
         if (sw_sim_set_events(&a->sims[i], mode, err, sizeof err) != SW_OK)
@@ -647,6 +651,7 @@ int sw_app_key(sw_app *a, int key, int in_lesson)
 void sw_app_advance(sw_app *a, double wall, long max_steps)
 {
     sw_app_sweep_poll(a);
+    sw_app_dt_poll(a);
     if (a->paused || !(wall > 0))
         return;
     double want = wall * a->speed;

@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 
+#include "app/dt_error.h"
 #include "sim/history.h"
 #include "sim/stages.h"
 #include "sim/truth.h"
@@ -20,6 +21,13 @@
 #define SW_APP_UNTIL_MAX 1e6   /* the latest stop time, in seconds */
 #define SW_APP_SPEED_MIN (1.0 / 64)
 #define SW_APP_SPEED_MAX 1024.0
+/* What a Δt change's measurement may spend on the picture's thread, in
+ * state evaluations (about 4 ms at 2.5e8 a second): above it, it runs on a
+ * worker and the message says so until the figure is in. */
+#define SW_APP_WORK_INLINE 1e6
+/* The message while it runs: "dt=NEW: " before it, the old and the new
+ * step and the report time in it. */
+#define SW_APP_MEASURING "measuring the error at dt=%g and dt=%g"
 
 /* A bounded time series for the graph pane. */
 typedef struct sw_series {
@@ -105,10 +113,12 @@ typedef struct sw_app {
     double truth_cost;          /* a reference run's cost per report time (0: closed form) */
     double work_key;            /* what one key press may spend, in state evaluations: SW_WORK_KEY
                                    (a sanitized fuzzer lowers it, so a unit stays short) */
-    double *truth_report;       /* the true state at the sample times to the report time
-                                   (SW_TRUTH_SAMPLES × dim, sw_truth_sample_time), once asked for */
-    int have_truth_report;
-    /* live error measurement at the scene's report time */
+    double work_inline;         /* what it may spend on the picture's thread: SW_APP_WORK_INLINE
+                                   (a test sets 0 to send every measurement to the worker) */
+    sw_dt_cache dt_cache;       /* the truth at the report time and the spectrum at the start,
+                                   once asked for (the worker's while it runs) */
+    struct sw_dt_job *dt_job;   /* a Δt change's measurement on a worker thread (app/dt_job.h) */
+    /* live error measurement at the scene's report time (when the job is in) */
     double meas_dt[2], meas_err[2];
     const sw_integrator *meas_method[2];
     int nmeas;
@@ -122,8 +132,8 @@ typedef struct sw_app {
     const sw_integrator *record_method;
     double record_dt;
     /* the meter: spectra at the start and now, and what they gave */
-    sw_spectrum spec0, spec;
-    int have_spec0, have_spec;
+    sw_spectrum spec;
+    int have_spec;
     double spec_t;              /* time spec was taken at */
     sw_app_meter meter;         /* the last reading */
     sw_truth_work *meter_work;  /* the meter's reusable workspace (allocates nothing per frame) */
@@ -321,11 +331,22 @@ void sw_app_truth_reset(sw_app *a);
 const char *sw_app_truth_why(const sw_app *a, char *buf, size_t len);
 /* (measure.c) After a dt change: the errors at the report time at both
  * steps, their ratio in a->error_ratio only when it can be read as an order
- * (else NaN), and a message saying which, or why not. */
+ * (else NaN), and a message saying which, or why not. Where that may take
+ * long (over a->work_inline) it runs on a worker: meanwhile the message
+ * says so (SW_APP_MEASURING), nmeas is 0 and error_ratio NaN; the figures
+ * and the message come in at the frame after it is done (sw_app_advance). */
 void sw_app_measure_dt_change(sw_app *a, double old_dt);
+/* (measure.c) Take the measurement's figures if its worker is done. */
+void sw_app_dt_poll(sw_app *a);
+/* (measure.c) Wait for the measurement under way, if any, and take its
+ * figures (tests, lesson checks: a condition, never a timer). */
+void sw_app_dt_wait(sw_app *a);
+/* (measure.c) Stop the measurement under way, if any (its settings changed). */
+void sw_app_dt_cancel(sw_app *a);
 
 /* Error at the scene's report time for (method, dt), from a fresh headless
- * run; NaN when there is no exact solution or reference or it blew up. */
+ * run, on this thread (after waiting for the worker's measurement); NaN
+ * when there is no exact solution or reference or it blew up. */
 double sw_app_measure(sw_app *a, const sw_integrator *m, double dt);
 
 #endif

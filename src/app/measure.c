@@ -1,10 +1,12 @@
 /* What the live app measures, all of it asked of the truth module: the
  * ghost (the true state now), each sim's error, the error at the report time
- * when Δt changes (and whether its ratio can be read as an order), and the
- * stability meter. Pure C, no terminal. Invariant: nothing here steps a sim
- * on screen; measurements run on their own sims and on the truth's copy of
- * the system, so reading a number never changes what is shown. */
+ * when Δt changes (app/dt_error.c, on a worker when it takes long:
+ * app/dt_job.c), and the stability meter. Pure C, no terminal. Invariant:
+ * nothing here steps a sim on screen; measurements run on their own sims
+ * and on the truth's copy of the system, so reading a number never changes
+ * what is shown. */
 #include "app/app.h"
+#include "app/dt_job.h"
 #include "app/sweep.h"
 
 #include <math.h>
@@ -12,19 +14,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "measure/bench.h"
 #include "stepwise/stepwise.h"
 
 void sw_app_truth_reset(sw_app *a)
 {
     if (a->have_truth)
         sw_truth_free(&a->truth);
-    a->have_truth = a->have_truth_report = 0;
-    a->have_spec0 = a->have_spec = 0;
+    a->have_truth = 0;
+    a->have_spec = 0;
     a->meter.ok = 0;
     a->meter.method = NULL;
-    free(a->truth_report);
-    a->truth_report = NULL;
+    sw_dt_job_cancel(a->dt_job, NULL); /* it measured the old scene: its cache goes with it */
+    a->dt_job = NULL;
+    sw_dt_cache_free(&a->dt_cache);
     char err[SW_ERRLEN];
     a->truth_live = 0;
     sw_spectrum_job_free(&a->spec_job); /* its blocks were in the old truth's system */
@@ -64,99 +66,101 @@ const double *sw_app_ghost(sw_app *a)
     return a->have_truth && a->truth_live ? sw_truth_at(&a->truth, a->sims[0].t) : NULL;
 }
 
-/* The error of state y against truth for system sys: positions (velocity
- * 0) or velocities (1; NaN for a flow, which has none). */
-static double sw_app_state_error(const sw_system *sys, const double *y, const double *truth, int velocity)
-{
-    const sw_ode *ode = sys->ode;
-    if (ode->order != 2) /* a flow's state is positions alone */
-        return velocity ? NAN : sw_truth_error(ode->dim, y, truth);
-    int half = ode->dim / 2; /* y = [x | v] */
-    return velocity ? sw_truth_error(half, y + half, truth + half) : sw_truth_error(half, y, truth);
-}
-
 double sw_app_error(sw_app *a, int i)
 {
     const sw_sim *s = &a->sims[i];
     const double *g = s->blown || !a->have_truth || !a->truth_live ? NULL : sw_truth_at(&a->truth, s->t);
-    return g ? sw_app_state_error(&s->sys, s->sys.y, g, a->err_velocity) : NAN;
+    return g ? sw_dt_state_error(s->sys.ode->dim, s->sys.ode->order, s->sys.y, g, a->err_velocity) : NAN;
 }
 
-/* The true state at the sample times to the report time (one reference
- * run, marching forward), computed once per scene, within the key-press
- * budget; the last sample is the report time's. */
-static const double *truth_report(sw_app *a)
+/* What the measurement of method m from old_dt to dt reads, copied from
+ * the app now (app/dt_error.h). */
+static void dt_in(const sw_app *a, const sw_integrator *m, double old_dt, double dt, sw_dt_in *in)
 {
-    if (!a->have_truth_report && a->have_truth && a->truth_cost <= a->work_key) {
-        size_t dim = (size_t)a->truth.sys.ode->dim;
-        sw_truth tr;
-        char err[SW_ERRLEN];
-        if (!a->truth_report) /* kept for the next try when this one finds no truth (fire, water) */
-            a->truth_report = malloc(SW_TRUTH_SAMPLES * dim * sizeof *a->truth_report);
-        if (a->truth_report && sw_truth_init(&tr, a->scene, a->p, err, sizeof err) == SW_OK) {
-            int ok = 1;
-            for (int j = 1; j <= SW_TRUTH_SAMPLES && ok; j++) {
-                const double *y = sw_truth_at(&tr, sw_truth_sample_time(a->scene->duration, j));
-                if (y)
-                    memcpy(a->truth_report + (size_t)(j - 1) * dim, y, dim * sizeof *y);
-                ok = y != NULL;
-            }
-            a->have_truth_report = ok;
-            sw_truth_free(&tr);
-        }
-    }
-    return a->have_truth_report ? a->truth_report : NULL;
+    memset(in, 0, sizeof *in);
+    in->sc = a->scene;
+    memcpy(in->p, a->p, sizeof in->p);
+    in->events = a->events;
+    in->m = m;
+    in->old_dt = old_dt;
+    in->dt = dt;
+    in->work_key = a->work_key;
+    in->step_work = sw_truth_step_work(&a->sims[0].sys, m);
+    in->dim = a->sims[0].sys.ode->dim;
+    in->order = a->sims[0].sys.ode->order;
+    in->have_truth = a->have_truth;
+    in->truth_cost = a->truth_cost;
+    sw_app_truth_why(a, in->truth_why, sizeof in->truth_why);
 }
 
-/* The state's scale at the report time, for "the error is N% of the motion". */
-static double report_scale(sw_app *a)
+/* Whether the measurement goes to a worker: it may spend more than a
+ * frame's share (a->work_inline) and no plugin is loaded (a plugin's host
+ * answers one thread). */
+static int dt_on_worker(const sw_app *a, const sw_dt_in *in)
 {
-    const double *want = truth_report(a);
-    size_t dim = (size_t)a->sims[0].sys.ode->dim;
-    size_t npos = a->sims[0].sys.ode->order == 2 ? dim / 2 : dim; /* positions: y = [x | v] */
-    double scale = 1e-300;
-    for (size_t j = 0; want && j < SW_TRUTH_SAMPLES; j++)
-        for (size_t k = 0; k < npos; k++)
-            scale = fmax(scale, fabs(want[j * dim + k]));
-    return scale;
+    return !sw_sweep_inline() && sw_dt_change_work(in, &a->dt_cache) > a->work_inline;
 }
 
 double sw_app_measure(sw_app *a, const sw_integrator *m, double dt)
 {
-    const sw_scene *sc = a->scene;
-    double T = sc->duration;
-    int dim = a->sims[0].sys.ode->dim;
-    if (!(dt > 0) || (T / dt) * sw_truth_step_work(&a->sims[0].sys, m) > a->work_key)
-        return NAN;
-    const double *want = truth_report(a);
-    if (!want)
-        return NAN;
-    sw_sim s;
+    sw_dt_in in;
+    sw_app_dt_wait(a); /* the cache is the worker's while it runs */
+    dt_in(a, m, a->dt, a->dt, &in);
+    return sw_dt_error(&in, &a->dt_cache, m, dt);
+}
+
+void sw_app_dt_poll(sw_app *a)
+{
+    sw_dt_result r;
+    if (!a->dt_job || !sw_dt_job_poll(a->dt_job, &r, &a->dt_cache))
+        return;
+    a->dt_job = NULL;
+    if (r.stopped)
+        return;
+    a->meas_err[0] = r.err[0];
+    a->meas_err[1] = r.err[1];
+    a->nmeas = 2;
+    a->error_ratio = r.error_ratio;
+    snprintf(a->message, sizeof a->message, "%s", r.message);
+}
+
+void sw_app_dt_wait(sw_app *a)
+{
+    if (a->dt_job)
+        sw_dt_job_wait(a->dt_job);
+    sw_app_dt_poll(a);
+}
+
+void sw_app_dt_cancel(sw_app *a)
+{
+    sw_dt_job_cancel(a->dt_job, &a->dt_cache);
+    a->dt_job = NULL;
+}
+
+void sw_app_measure_dt_change(sw_app *a, double old_dt)
+{
+    const sw_integrator *m = a->sims[0].method;
+    sw_dt_in in;
     char err[SW_ERRLEN];
-    double e = NAN;
-    if (sw_sim_init(&s, sc, a->p, m, dt, err, sizeof err) == SW_OK) {
-        /* the run on screen's event mode: located events keep the order */
-        if (sw_sim_set_events(&s, a->events, err, sizeof err) != SW_OK) {
-            sw_sim_free(&s);
-            return NAN;
-        }
-        /* the largest error over the samples (SW_TRUTH_SAMPLES): one report
-         * time can be special, a whole run is not */
-        int first = (m->flags & SW_ADAPTIVE) ? 1 : sw_truth_first_sample(T, dt);
-        e = 0;
-        for (int j = first; j <= SW_TRUTH_SAMPLES && !isnan(e); j++) {
-            double t = sw_truth_sample_time(T, j);
-            if (sw_sim_run_until(&s, t) != 0 || fabs(s.t - t) > 1e-9 * fmax(1.0, T)) {
-                e = NAN;
-                break;
-            }
-            double ej = sw_app_state_error(&s.sys, s.sys.y, want + (size_t)(j - 1) * (size_t)dim, 0);
-            if (!(ej <= e))
-                e = ej;
-        }
-        sw_sim_free(&s);
+    sw_app_dt_cancel(a);
+    dt_in(a, m, old_dt, a->dt, &in);
+    a->meas_method[0] = a->meas_method[1] = m;
+    a->meas_dt[0] = old_dt;
+    a->meas_dt[1] = a->dt;
+    a->meas_err[0] = a->meas_err[1] = NAN;
+    a->nmeas = 0;
+    a->error_ratio = NAN;
+    int worker = dt_on_worker(a, &in);
+    if (!(a->dt_job = sw_dt_job_start(&in, &a->dt_cache, !worker, err, sizeof err))) {
+        snprintf(a->message, sizeof a->message, "dt=%g: no error measured: %s", a->dt, err);
+        return;
     }
-    return e;
+    if (!worker) {
+        sw_app_dt_poll(a); /* done already */
+        return;
+    }
+    snprintf(a->message, sizeof a->message, "dt=%g: " SW_APP_MEASURING " to t=%.3g in the background; the "
+             "figures show here when done", a->dt, old_dt, a->dt, a->scene->duration);
 }
 
 const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
@@ -171,8 +175,12 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
         return !a->workprec && !a->bench && !a->sweep && sw_sweep_inline()
                    ? "measuring every method for the work-precision plot..." : NULL;
     case SW_ACT_DT_HALVE:
-    case SW_ACT_DT_DOUBLE:
-        return "measuring the error at the old and the new dt...";
+    case SW_ACT_DT_DOUBLE: {
+        /* on a worker when it takes long: the picture runs on, the message says so */
+        sw_dt_in in;
+        dt_in(a, a->sims[0].method, a->dt, c->action == SW_ACT_DT_HALVE ? a->dt / 2 : a->dt * 2, &in);
+        return dt_on_worker(a, &in) ? NULL : "measuring the error at the old and the new dt...";
+    }
     case SW_ACT_UNTIL:
         return a->until > 0 ? "running to the stop time..." : NULL;
     /* the rest answer at once */
@@ -192,135 +200,13 @@ const char *sw_app_key_notice(const sw_app *a, int key, int in_lesson)
     return NULL;
 }
 
-/* The spectrum at the start (for the dt-change check), once per scene. */
-static const sw_spectrum *spectrum0(sw_app *a)
-{
-    if (!a->have_spec0 && a->have_truth && a->meter_work)
-    {
-        a->have_spec0 = sw_truth_spectrum_with(a->meter_work, &a->truth.sys, 0.0, a->truth.sys.y, &a->spec0) == 0;
-        a->spec_job.active = 0; /* that assembled the truth's Jacobian at the start: the job starts again */
-    }
-    return a->have_spec0 ? &a->spec0 : NULL;
-}
-
-/* How much the method's worst mode grows over a run to the report time at
- * dt: ρ^(T/dt); NaN when unknown (adaptive, no spectrum). */
-static double run_growth(sw_app *a, const sw_integrator *m, double dt, double *rho)
-{
-    const sw_spectrum *sp = spectrum0(a);
-    *rho = sp ? sw_truth_growth_with(a->meter_work, m, sp, dt, NULL) : NAN;
-    return pow(*rho, a->scene->duration / dt);
-}
-
-/* A symplectic method's large position error is mostly phase: it keeps
- * the energy and the path's shape, and runs ahead of or behind the truth
- * along it (lesson 8). */
-/* Errors below this fraction of the motion are rounding (some 1e5 units
- * in the last place, summed over thousands of steps), never an order. */
-#define SW_APP_ROUNDING 1e-11
-
-/* The message fits errors up to half the motion (larger ones get "the
- * error is N% of the motion" above): the order rule's ceiling here. */
-#define SW_APP_CEILING 0.5
-
-#define PHASE_NOTE ". Symplectic: energy and path kept, the error is phase"
-
-void sw_app_measure_dt_change(sw_app *a, double old_dt)
-{
-    const sw_integrator *m = a->sims[0].method;
-    double e_old = sw_app_measure(a, m, old_dt), e_new = sw_app_measure(a, m, a->dt);
-    a->meas_method[0] = a->meas_method[1] = m;
-    a->meas_dt[0] = old_dt;
-    a->meas_err[0] = e_old;
-    a->meas_dt[1] = a->dt;
-    a->meas_err[1] = e_new;
-    a->nmeas = 2;
-    double big_dt = fmax(old_dt, a->dt);
-    double big = old_dt > a->dt ? e_old : e_new, small = old_dt > a->dt ? e_new : e_old;
-    double ratio = big / small, T = a->scene->duration;
-    a->error_ratio = NAN;
-    if (!isfinite(ratio) || !(small > 0)) {
-        char why[SW_ERRLEN], truth_why[SW_ERRLEN];
-        double cost = (T / fmin(old_dt, a->dt)) * sw_truth_step_work(&a->sims[0].sys, m);
-        if (a->have_truth && a->truth_cost > a->work_key)
-            snprintf(why, sizeof why, "no error measured: the reference to t=%.3g would cost %.2g state "
-                     "evaluations, over the %.0e a key press may spend", T, a->truth_cost, a->work_key);
-        else if (cost > a->work_key)
-            snprintf(why, sizeof why, "no error measured: the run to t=%.3g would cost %.2g state evaluations, "
-                     "over the %.0e a key press may spend", T, cost, a->work_key);
-        else if (isnan(e_new) || isnan(e_old))
-            snprintf(why, sizeof why, "no error to compare (%s)",
-                     truth_report(a) ? "a run blew up" : sw_app_truth_why(a, truth_why, sizeof truth_why));
-        else
-            snprintf(why, sizeof why, "the error is zero at one step: no ratio");
-        snprintf(a->message, sizeof a->message, "dt=%g: %s", a->dt, why);
-        return;
-    }
-    /* An order can be read from the ratio only where both runs are in the
-     * asymptotic range: no mode grows much over the run (else the ratio
-     * measures growth), the error is small against the motion, and halving
-     * once more gives the same ratio (within 0.15 in its base-2 logarithm;
-     * Euler's amplitude error on an oscillator, e^(ω²ΔtT/2) - 1, is not yet
-     * proportional to Δt while the exponent is near 1). */
-    if (m->flags & SW_ADAPTIVE) {
-        /* dt only caps the steps: the error follows rtol and atol */
-        snprintf(a->message, sizeof a->message, "dt=%g, the largest step %s may take: position error %.3g m to "
-                 "t=%.3g (%.3g m at dt=%g); the tolerances set the error, not dt, so no order", a->dt, m->name,
-                 e_new, T, e_old, old_dt);
-        return;
-    }
-    double rho, grow = run_growth(a, m, big_dt, &rho);
-    double scale = report_scale(a);
-    if (small <= SW_APP_ROUNDING * scale) {
-        /* rounding, not truncation: a ratio of rounding errors is no order
-         * (RK4 on a parabola, a located bounce without drag) */
-        snprintf(a->message, sizeof a->message, "dt=%g: position error %.3g m to t=%.3g (%.3g m at dt=%g): "
-                 "at rounding level (below %.0e of the motion), so %s is exact here and shows no order",
-                 a->dt, e_new, T, e_old, old_dt, SW_APP_ROUNDING, m->name);
-        return;
-    }
-    char head[160];
-    snprintf(head, sizeof head, "dt=%g: position error %.3g m to t=%.3g (%.3g m at dt=%g), ratio %.3g",
-             a->dt, e_new, T, e_old, old_dt, ratio);
-    if (grow > 2) {
-        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g %s grows ×%.4g per step, "
-                 "×%.2g by t=%.3g", head, big_dt, m->name, rho, grow, T);
-    } else if (big >= SW_APP_CEILING * scale) {
-        /* an order shows only where the error is small: say which way that is */
-        snprintf(a->message, sizeof a->message, "%s: not an order - at dt=%g the error is %.0f%% of the motion%s%s",
-                 head, big_dt, 100 * big / scale,
-                 a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
-                 (m->flags & SW_SYMPLECTIC) ? PHASE_NOTE : "");
-    } else {
-        /* the three runs through the order rule every printed order
-         * passes (sw_bench_order_rule): above round-off, falling, local
-         * slopes within 0.15 + 0.03·p of each other */
-        double small_dt = fmin(old_dt, a->dt), e_next = sw_app_measure(a, m, 0.5 * small_dt);
-        double h[3] = { big_dt, small_dt, 0.5 * small_dt }, e[3] = { big, small, e_next };
-        long steps[3];
-        for (int k = 0; k < 3; k++)
-            steps[k] = (long)ceil(T / h[k]);
-        static sw_bench_series fit; /* large: kept off the stack; the app is single-threaded */
-        double order = sw_bench_order_rule(h, e, steps, 3, scale, SW_APP_CEILING, &fit);
-        if (isnan(order)) {
-            snprintf(a->message, sizeof a->message, "%s: not an order yet - with dt=%g too, %s%s%s", head,
-                     0.5 * small_dt, sw_bench_no_order_text(&fit),
-                     a->dt < old_dt ? "; halve dt again" : " (an order shows at small dt only)",
-                     (m->flags & SW_SYMPLECTIC) && big > 0.05 * scale ? PHASE_NOTE : "");
-        } else {
-            a->error_ratio = ratio;
-            snprintf(a->message, sizeof a->message, "%s, order ~%.2f", head, order);
-        }
-    }
-}
-
 /* The limit with the damping of every oscillating mode taken away (λ, μ =
  * ±i|λ|): what a lesson's closed form for the undamped oscillator gives
  * (RK4's 2√2). 0 when no mode is damped or it rounds to the same 3 digits
  * as the limit shown. */
 static double undamped_limit(sw_app *a, const sw_integrator *m, double limit)
 {
-    static sw_spectrum sp; /* large: kept off the stack; the app is single-threaded */
+    static sw_spectrum sp; /* large: kept off the stack; the meter runs on the picture's thread alone */
     sp = a->spec;
     int damped = 0;
     for (int k = 0; k < sp.n; k++) {

@@ -4,28 +4,24 @@
  * docs/architecture.md, "Threads"). */
 #include "app/sweep.h"
 
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/worker.h"
 #include "stepwise/stepwise.h"
 
 struct sw_sweep {
     const sw_scene *sc;
     double p[SW_MAX_PARAMS];
     double budget;
-    atomic_int stop;      /* the app asks the worker to end early */
-    atomic_int done;      /* the worker has written rc, report and why */
-    int threaded;         /* 0: it ran on the caller's thread */
-    pthread_t thread;
+    sw_worker worker;     /* its stop ends the sweep early; done: rc, report and why written */
     int rc;
     sw_bench_report *report;
     char why[SW_ERRLEN];
 };
 
-static void *work(void *arg)
+static void work(void *arg)
 {
     sw_sweep *s = arg;
     s->report = malloc(sizeof *s->report);
@@ -33,14 +29,12 @@ static void *work(void *arg)
         s->rc = SW_ENOMEM;
         snprintf(s->why, sizeof s->why, "out of memory");
     } else {
-        s->rc = sw_bench_scene_quick(s->report, s->sc, s->p, s->budget, &s->stop, s->why, sizeof s->why);
+        s->rc = sw_bench_scene_quick(s->report, s->sc, s->p, s->budget, &s->worker.stop, s->why, sizeof s->why);
         if (s->rc != SW_OK) {
             free(s->report);
             s->report = NULL;
         }
     }
-    atomic_store(&s->done, 1);
-    return NULL;
 }
 
 /* A plugin steps through its host's one channel, which the main thread
@@ -63,49 +57,30 @@ sw_sweep *sw_sweep_start(const sw_scene *sc, const double *p, double budget, cha
     s->sc = sc;
     sw_scene_fill(sc, p, s->p); /* NULL: the defaults */
     s->budget = budget;
-    atomic_init(&s->stop, 0);
-    atomic_init(&s->done, 0);
-    if (sw_sweep_inline()) {
-        work(s);
-        return s;
-    }
-    int rc = pthread_create(&s->thread, NULL, work, s);
-    if (rc != 0) {
-        snprintf(err, errlen, "cannot start the sweep's thread: %s", strerror(rc));
+    if (sw_worker_start(&s->worker, work, s, sw_sweep_inline(), err, errlen) != 0) {
         free(s);
         return NULL;
     }
-    s->threaded = 1;
     return s;
-}
-
-static void join(sw_sweep *s)
-{
-    if (s->threaded) {
-        pthread_join(s->thread, NULL);
-        s->threaded = 0;
-    }
 }
 
 int sw_sweep_poll(sw_sweep *s, sw_bench_report **report, char *why, size_t whylen)
 {
-    if (!atomic_load(&s->done))
+    if (!sw_worker_done(&s->worker))
         return 0;
-    join(s);
     *report = s->report;
     snprintf(why, whylen, "%s", s->rc == SW_OK ? "" : s->why);
     free(s);
     return 1;
 }
 
-void sw_sweep_wait(sw_sweep *s) { join(s); }
+void sw_sweep_wait(sw_sweep *s) { sw_worker_wait(&s->worker); }
 
 void sw_sweep_cancel(sw_sweep *s)
 {
     if (!s)
         return;
-    atomic_store(&s->stop, 1);
-    join(s);
+    sw_worker_stop(&s->worker);
     if (s->report) {
         sw_bench_free(s->report);
         free(s->report);

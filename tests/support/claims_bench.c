@@ -170,10 +170,15 @@ static double st_stretch(void) { return cl_param("spring", "stretch"); }
 static double st_rest(void) { return cl_param("spring", "rest"); }
 
 static double samples(void) { return SW_TRUTH_SAMPLES; }
+static double work_key(void) { return SW_WORK_KEY; }
+static double work_inline(void) { return SW_APP_WORK_INLINE; }
 /* the bounce page's report time, which the message measures to */
 static double bounce_report(void) { return sw_scene_find("bounce")->duration; }
 
 const claim sw_claims_o[] = {
+    { PERF, "SW_WORK_KEY ({1e8} state evaluations)", work_key, EXACT, 0, R_COUNT, NULL },
+    { PERF, "`SW_APP_WORK_INLINE` ({1e6} state evaluations", work_inline, EXACT, 0, R_COUNT, NULL },
+    { "docs/architecture.md", "`SW_APP_WORK_INLINE`, {1e6} state evaluations", work_inline, EXACT, 0, R_COUNT, NULL },
     { L4, "largest position error at {16} times spread to t = 3", samples, EXACT, 0, "SW_TRUTH_SAMPLES: the message's sample times", NULL },
     { L4, "largest position error at 16 times spread to t = {3}, at", bounce_report, EXACT, 0, "bounce's report time", NULL },
     { PERF, "| symplectic-euler | {1.8611} | 1.861 | 2 |", st_se, ROUNDED, 0, "what stability measures", NULL },

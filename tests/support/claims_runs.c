@@ -185,6 +185,7 @@ void cl_act(sw_app *a, sw_action action, int arg)
     unsigned locked = a->locked;
     a->locked = 0;
     sw_app_apply(a, action, arg);
+    sw_app_dt_wait(a); /* a Δt key's figures, where they were measured on a worker */
     a->locked = locked;
 }
 

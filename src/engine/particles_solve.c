@@ -23,6 +23,7 @@
 #include "engine/clones.h"
 #include "engine/forces.h"
 #include "engine/linalg.h"
+#include "engine/linalg_block.h"
 #include "stepwise/base.h"
 
 /* The band's column length on a chain (kl = ku = 3: 2·kl + ku + 1). */
@@ -48,6 +49,12 @@ struct sw_particles_solver {
     double *y_at, c_at;
     int factored;
     sw_band lu;            /* the band's shape and factors, while factored */
+    /* On a chain's band (half_band 3: particles joined only to their
+     * neighbours) the block Thomas factors (engine/linalg_block.h), 8 a
+     * particle, and whether the factorisation kept is theirs (blocked) or
+     * the band's own (where they refused). */
+    double *block;
+    int blocked;
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -114,6 +121,7 @@ void sw_particles_solver_free(sw_particles *p)
         free(p->solver->y_at);
         free(p->solver->band);
         free(p->solver->piv);
+        free(p->solver->block);
         free(p->solver);
     }
     p->solver = NULL;
@@ -144,6 +152,10 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
         return SW_EINVAL;
     }
     if (!s->y_at && !(s->y_at = malloc((size_t)4 * p->n * sizeof *s->y_at))) {
+        snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
+        return SW_ENOMEM;
+    }
+    if (kb == 3 && !s->block && !(s->block = malloc(SW_BLOCK_DOUBLES(p->n) * sizeof *s->block))) {
         snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
         return SW_ENOMEM;
     }
@@ -331,9 +343,10 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
     }
 }
 
-/* A = M - c·Fv - c²·Fx into the band, and its factors. 0, or -1 when A is
- * singular. a = -c² and b = -c are both nonzero but where c is 0 or c²
- * underflows: that case gets its own copy of the loops. */
+/* A = M - c·Fv - c²·Fx into the band, and its factors: a chain's by
+ * blocks where they are safe, else the band's with row interchanges. 0,
+ * or -1 when A is singular. a = -c² and b = -c are both nonzero but where
+ * c is 0 or c² underflows: that case gets its own copy of the loops. */
 static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
 {
     struct sw_particles_solver *s = p->solver;
@@ -343,7 +356,8 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
         fill_velocity_system(p, a, b, band, 1, 1);
     else
         fill_velocity_system(p, a, b, band, a != 0, b != 0);
-    return sw_band_factor(band);
+    s->blocked = s->half_band == 3 && sw_block_factor(band, s->block) == 0;
+    return s->blocked ? 0 : sw_band_factor(band);
 }
 
 /* out = M·v (two components a particle); out may be v itself. */
@@ -460,7 +474,10 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
      * velocity half (z may be r: r's positions are read, never written) */
     double *z_v = z + n2;
     velocity_rhs(p, c, r, z_v);
-    sw_band_solve(&s->lu, z_v);
+    if (s->blocked)
+        sw_block_solve(&s->lu, s->block, z_v);
+    else
+        sw_band_solve(&s->lu, z_v);
     add_scaled(n2, z, r, c, z_v);
     p->ode.solver_iters++;
     return SW_OK;

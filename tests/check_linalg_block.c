@@ -18,11 +18,14 @@ enum { NBMAX = 12, NMAX = 2 * NBMAX, KL = 3, LD = 3 * KL + 1 };
  * 1 symmetric positive definite and stiff (M + 1e6·a stretched chain's
  *   stiffness: the Schur complements' conditions reach ~1e5);
  * 2 non-symmetric, not dominant (a damped stiff chain: c·Fv and its
- *   turning term).
+ *   turning term);
+ * 3 kind 1 again, for a right-hand side along the springs (test below).
  * Outside the blocks (i, i), (i, i ± 1) zero. */
 static double entry(int kind, int i, int j)
 {
     int bi = i / 2, bj = j / 2, d = bi - bj;
+    if (kind == 3)
+        kind = 1;
     if (d < -1 || d > 1)
         return 0.0;
     double wiggle = sin(1.3 * i + 0.7 * j + kind);
@@ -30,13 +33,13 @@ static double entry(int kind, int i, int j)
         return (i == j ? 6.0 : 0.0) + wiggle;
     /* springs of stiffness 1e6 from each bead to the next (and the ends
      * to anchors), spring s (beads s and s + 1) along a unit n_s turning
-     * by 0.4 a spring: its stiffness block k·(n_s·n_sᵀ + 0.01·I) on the
+     * by 0.4 a spring: its stiffness block k·(n_s·n_sᵀ + 1e-4·I) on the
      * two diagonal blocks, minus it beside them; plus M = I */
     int r = i % 2, c = j % 2;
     double k = 0;
     for (int sp = (d == 0 ? bi - 1 : (bi < bj ? bi : bj)); sp <= (d == 0 ? bi : (bi < bj ? bi : bj)); sp++) {
         double th = 0.4 * sp, n0 = cos(th), n1 = sin(th);
-        double dir = (r == 0 ? n0 : n1) * (c == 0 ? n0 : n1) + (r == c ? 0.01 : 0.0);
+        double dir = (r == 0 ? n0 : n1) * (c == 0 ? n0 : n1) + (r == c ? 1e-4 : 0.0);
         k += 1e6 * (d == 0 ? 1.0 : -1.0) * dir;
     }
     k += i == j ? 1.0 : 0.0;
@@ -63,16 +66,18 @@ static double backward_error(int n, const double *a, const double *x, const doub
     return res / (an * xn + bn);
 }
 
-/* Every size from 1 to NBMAX blocks, the three kinds: the factors are
+/* Every size from 1 to NBMAX blocks, the four kinds: the factors are
  * accepted, the band is left untouched, and the solution's backward error
  * is at rounding: at most 8·n·ε (a backward stable solve's bound for
- * these sizes, growth included: the multipliers are bounded by 2^10 but
- * here stay below 1). On the dominant kind, whose condition is below 10,
- * the solution also agrees with the dense elimination's to 1e-13 of its
- * size. */
+ * these sizes; the Schur complements do not grow here). On the stiff SPD
+ * kind the Schur complements' 2x2 conditions reach 1e4 along directions
+ * turning with the chain: there Cramer's rule (an explicit inverse)
+ * misses this bound when b lies along the springs (kind 3). On the
+ * dominant kind, whose condition is below 10, the solution also agrees
+ * with the dense elimination's to 1e-13 of its size. */
 START_TEST(block_solve_solves)
 {
-    for (int kind = 0; kind < 3; kind++)
+    for (int kind = 0; kind < 4; kind++)
         for (int nb = 1; nb <= NBMAX; nb++) {
             int n = 2 * nb;
             double band[LD * NMAX], before[LD * NMAX], f[SW_BLOCK_DOUBLES(NBMAX)];
@@ -86,7 +91,10 @@ START_TEST(block_solve_solves)
                     if (abs(i - j) <= KL)
                         sw_band_add(&bd, i, j, dense[i * n + j]);
                 }
-                b[i] = x[i] = xd[i] = cos(0.9 * i + kind);
+                /* kind 3: each bead pushed along its springs, the stiff
+                 * direction, so that x is as small as b / ‖A‖ */
+                double th = 0.4 * (i / 2 - 0.5);
+                b[i] = x[i] = xd[i] = kind == 3 ? (i % 2 == 0 ? cos(th) : sin(th)) : cos(0.9 * i + kind);
             }
             memcpy(before, band, sizeof(double) * LD * n);
             memcpy(lu, dense, sizeof(double) * n * n);
@@ -111,8 +119,8 @@ END_TEST
 /* Where elimination needs a row interchange the blocks do not make, the
  * factorisation refuses and leaves the band as it was (the caller then
  * factors it with pivoting): a first block singular to 1e-9 beside order-1
- * neighbours (its condition past 2^20), and a first block of 1e-4·I (well
- * conditioned itself, but its multiplier W = L·S^-1 is 1e4, past 2^10).
+ * neighbours and a first block of 1e-4·I (well conditioned itself): both
+ * make the next Schur complement grow 1e4-fold and more, past 16.
  * The band's own LU solves both (the matrices are far from singular). */
 START_TEST(block_factor_refuses_without_pivots)
 {

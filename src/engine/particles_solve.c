@@ -9,7 +9,12 @@
  * has bandwidth one particle). It is solved by banded LU with partial
  * pivoting: exact, and correct where a compressed spring makes the matrix
  * indefinite or damping makes it non-symmetric — there conjugate gradients,
- * Baraff and Witkin's choice, break down. The system reads the forces only
+ * Baraff and Witkin's choice, break down. On a chain (each particle joined
+ * only to its neighbours) the same band is first factored by 2x2 blocks
+ * (engine/linalg_block.h: no row leaves its particle, no structural zero
+ * is touched), and by the band's LU only where the blocks refuse (a Schur
+ * complement that grows: compressed or damped springs at large c·ω).
+ * The system reads the forces only
  * through the particle accessors. Invariant: the solve allocates nothing;
  * the band is sized once by sw_particles_solver_prepare. */
 #include "engine/particles_solve.h"

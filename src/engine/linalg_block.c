@@ -132,19 +132,18 @@ int sw_block_factor(const sw_band *b, double *f)
 
 void sw_block_solve(const sw_band *b, const double *f, double *x)
 {
-    for (int i = 1; i < b->n / 2; i++) /* y_i = x_i - W_i·y_(i-1) */
-        sw_block_forward_row(f, i, x);
-    sw_block_back(b, f, x);
-}
-
-void sw_block_back(const sw_band *b, const double *f, double *x)
-{
     int nb = b->n / 2;
     if (nb == 0)
         return;
+    v2d prev = load(x);
+    for (int i = 1; i < nb; i++) { /* y_i = x_i - W_i·y_(i-1) */
+        const double *fi = f + PER * i;
+        prev = load(x + 2 * i) - (load(fi + W0) * prev[0] + load(fi + W1) * prev[1]);
+        store(x + 2 * i, prev);
+    }
     /* x_i = S_i^-1·(y_i - U_i·x_(i+1)), the last row without U */
     const double *e = b->a + b->kl + b->ku + (size_t)ROW * (size_t)(nb - 1);
-    v2d next = block_apply(f + PER * (nb - 1), load(x + 2 * (nb - 1)));
+    v2d next = block_apply(f + PER * (nb - 1), prev);
     store(x + 2 * (nb - 1), next);
     for (int i = nb - 2; i >= 0; i--) {
         e -= ROW;

@@ -22,21 +22,7 @@
  * 2^-52 of its first): then f is of no use and the band is untouched. */
 int sw_block_factor(const sw_band *b, double *f);
 /* Solve with those factors and b's upper blocks, x (b->n long) becoming
- * the solution: the forward pass (sw_block_forward_row for rows 1 to
- * nb - 1, in order), then sw_block_back. */
+ * the solution. */
 void sw_block_solve(const sw_band *b, const double *f, double *x);
-/* The backward pass alone, after the forward one. */
-void sw_block_back(const sw_band *b, const double *f, double *x);
-
-/* The forward pass's row i >= 1, x_i -= W_i·x_(i-1) (row i's factors
- * begin with W_i by columns): a caller that builds x row by row may run
- * it as soon as rows i - 1 and i are complete. */
-static inline void sw_block_forward_row(const double *f, int i, double *x)
-{
-    const double *w = f + SW_BLOCK_PER * i;
-    double p0 = x[2 * i - 2], p1 = x[2 * i - 1];
-    x[2 * i] = x[2 * i] - (w[0] * p0 + w[2] * p1);
-    x[2 * i + 1] = x[2 * i + 1] - (w[1] * p0 + w[3] * p1);
-}
 
 #endif

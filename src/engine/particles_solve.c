@@ -60,10 +60,6 @@ struct sw_particles_solver {
      * the band's own (where they refused). */
     double *block;
     int blocked;
-    /* While blocked, after[j]: the particles below it get nothing from
-     * the pairs after pair j (the least particle those join), so their
-     * rows of the right-hand side are complete once pair j is in. */
-    int *after;
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -112,12 +108,9 @@ static int reserve_pairs(sw_particles *p)
     if (pb)
         s->pb = pb;
     double *blk = pb ? realloc(s->pblock, (size_t)need * 8 * sizeof *blk) : NULL;
-    if (blk)
-        s->pblock = blk;
-    int *after = blk ? realloc(s->after, (size_t)need * sizeof *after) : NULL;
-    if (!after)
+    if (!blk)
         return SW_ENOMEM;
-    s->after = after;
+    s->pblock = blk;
     s->cap = need;
     s->counted = p->nforces + 1;
     return SW_OK;
@@ -130,7 +123,6 @@ void sw_particles_solver_free(sw_particles *p)
         free(p->solver->pa);
         free(p->solver->pb);
         free(p->solver->pblock);
-        free(p->solver->after);
         free(p->solver->y_at);
         free(p->solver->band);
         free(p->solver->piv);
@@ -370,16 +362,7 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
     else
         fill_velocity_system(p, a, b, band, a != 0, b != 0);
     s->blocked = s->half_band == 3 && sw_block_factor(band, s->block) == 0;
-    if (!s->blocked)
-        return sw_band_factor(band);
-    int least = p->n;
-    for (long j = s->npairs - 1; j >= 0; j--) {
-        s->after[j] = least;
-        int ea = s->pa[j], eb = s->pb[j];
-        least = ea >= 0 && ea < least ? ea : least;
-        least = eb >= 0 && eb < least ? eb : least;
-    }
-    return 0;
+    return s->blocked ? 0 : sw_band_factor(band);
 }
 
 /* out = M·v (two components a particle); out may be v itself. */
@@ -449,57 +432,6 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
     }
 }
 
-/* Row i of velocity_rhs's first two passes: M r_v + c·K_i r_x. */
-SW_INLINE void own_row(const sw_particles *p, double c, const double *r, double *out, int i)
-{
-    const double *blk = p->solver->diag + 8 * i, *rv = r + 2 * p->n;
-    double wx = r[2 * i], wy = r[2 * i + 1];
-    out[2 * i] = p->mass[i] * rv[2 * i];
-    out[2 * i + 1] = p->mass[i] * rv[2 * i + 1];
-    out[2 * i] += c * (blk[0] * wx + blk[1] * wy);
-    out[2 * i + 1] += c * (blk[2] * wx + blk[3] * wy);
-}
-
-/* velocity_rhs (c != 0) and the block factors' forward pass in one sweep:
- * each row gets the same terms in the same order (its mass, its own
- * block, then the pairs in turn), and is eliminated as soon as it has its
- * first two terms and the pairs still to come leave it alone (after[j]):
- * on a chain, one row behind the pair being added. The same numbers, bit
- * for bit, as velocity_rhs then sw_block_solve's forward pass. */
-static void velocity_rhs_forward(const sw_particles *p, double c, const double *r, double *out)
-{
-    const struct sw_particles_solver *s = p->solver;
-    int ready = 0, done = 1; /* rows below ready have their first terms; below done, eliminated */
-    for (long j = 0; j < s->npairs; j++) {
-        int ea = s->pa[j], eb = s->pb[j], top = ea > eb ? ea : eb;
-        for (; ready <= top; ready++)
-            own_row(p, c, r, out, ready);
-        const double *kx = s->pblock + 8 * j;
-        if (ea >= 0 && eb >= 0) { /* as in velocity_rhs */
-            double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
-            double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
-            double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
-            double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
-            double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
-            out[2 * ea] = ax + -c * kbx;
-            out[2 * ea + 1] = ay + -c * kby;
-            double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
-            out[2 * eb] = bx + c * kbx;
-            out[2 * eb + 1] = by + c * kby;
-        } else if (ea >= 0) {
-            apply_block(out, ea, ea, c, kx, r);
-        } else if (eb >= 0) {
-            apply_block(out, eb, eb, c, kx, r);
-        }
-        for (; done < s->after[j] && done < ready; done++)
-            sw_block_forward_row(s->block, done, out);
-    }
-    for (; ready < p->n; ready++)
-        own_row(p, c, r, out, ready);
-    for (; done < p->n; done++)
-        sw_block_forward_row(s->block, done, out);
-}
-
 /* 1 when y differs from key in any bit (as memcmp: -0 is not +0, a NaN
  * equals its own bits), and key = y either way: the comparison and the
  * copy a new factorisation needs in one pass, not a pass of each. */
@@ -546,16 +478,11 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
     /* the velocity system solved where its solution belongs, z's
      * velocity half (z may be r: r's positions are read, never written) */
     double *z_v = z + n2;
-    if (s->blocked && c != 0) {
-        velocity_rhs_forward(p, c, r, z_v);
-        sw_block_back(&s->lu, s->block, z_v);
-    } else {
-        velocity_rhs(p, c, r, z_v);
-        if (s->blocked)
-            sw_block_solve(&s->lu, s->block, z_v);
-        else
-            sw_band_solve(&s->lu, z_v);
-    }
+    velocity_rhs(p, c, r, z_v);
+    if (s->blocked)
+        sw_block_solve(&s->lu, s->block, z_v);
+    else
+        sw_band_solve(&s->lu, z_v);
     add_scaled(n2, z, r, c, z_v);
     p->ode.solver_iters++;
     return SW_OK;

@@ -151,6 +151,42 @@ START_TEST(changed_state_or_c_refactors)
 }
 END_TEST
 
+/* The solve a caller promises is at the last solve's state
+ * (sw_particles_solve_same: Newton's kept J, Rosenbrock's later stages)
+ * skips comparing y, and nothing else: its answers are a fresh solve's
+ * bit for bit; at another c, after the factors were dropped, or first of
+ * all (nothing kept) it factors afresh; and the key it leaves still tells
+ * a later ordinary solve at a moved state to factor afresh. */
+START_TEST(same_state_solve_is_the_solve)
+{
+    sw_particles p;
+    chain(&p);
+    double y[DIM], r1[DIM], r2[DIM], z[DIM], zf[DIM];
+    memcpy(y, p.y, sizeof y);
+    fill(r1, 1.0);
+    fill(r2, -0.3);
+    double c = 0.05;
+    sw_particles_solver_touch(&p); /* nothing kept: the promise must factor */
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r1, z), SW_OK);
+    fresh_solve(&p, y, c, r1, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r2, z), SW_OK);
+    fresh_solve(&p, y, c, r2, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, 2 * c, r2, z), SW_OK); /* another c */
+    fresh_solve(&p, y, 2 * c, r2, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert(memcmp(z, (double[DIM]){ 0 }, sizeof z) != 0);
+    /* the kept key is y's: a moved state through the ordinary solve refactors */
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r1, z), SW_OK);
+    y[3] += 1e-6;
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r1, z), SW_OK);
+    fresh_solve(&p, y, c, r1, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    sw_particles_free(&p);
+}
+END_TEST
+
 /* sw_dense_factor + sw_dense_lu_solve do the operations of sw_dense_solve in
  * the same order: equal bit for bit, on matrices that need row interchanges
  * (a small leading pivot) at several columns. */
@@ -414,6 +450,7 @@ Suite *make_solve_suite(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, kept_factors_give_fresh_numbers);
     tcase_add_test(tc, changed_state_or_c_refactors);
+    tcase_add_test(tc, same_state_solve_is_the_solve);
     tcase_add_test(tc, dense_lu_equals_elimination);
     tcase_add_test(tc, band_chain_paths_equal_plain_loops);
     tcase_add_test(tc, dense_fallback_keeps_and_drops);

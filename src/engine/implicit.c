@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "engine/linalg.h"
+#include "engine/ode_fast.h"
 #include "stepwise/base.h"
 
 /* Newton's stopping rule (implicit.h): converged, failed, or go on with a
@@ -94,7 +95,9 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
             at = ym;
             ym = ym == yj ? SW_WORK(s, 1) : yj;
         }
-        if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
+        /* a kept J's point is where the last solve was (same_at) */
+        int same_at = yj && !fresh;
+        if ((same_at ? sw_ode_solve_same : sw_ode_solve)(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
         }
@@ -270,4 +273,13 @@ int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c
     if (ode->solve)
         return ode->solve(ode->ctx, t, y, c, r, z);
     return dense_solve(s, ode, t, y, c, r, z);
+}
+
+int sw_ode_solve_same(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                      const double *r, double *z)
+{
+    if (!ode->fast || !ode->fast->solve_same)
+        return sw_ode_solve(s, ode, t, y, c, r, z);
+    ode->solves++;
+    return ode->fast->solve_same(ode->ctx, t, y, c, r, z);
 }

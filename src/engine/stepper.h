@@ -52,6 +52,13 @@ void sw_integrator_disable(const sw_integrator *m, const char *why);
  * fallback (dim <= SW_DENSE_MAX) using s->dense. */
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                  const double *r, double *z);
+/* The same, where the caller promises that y's contents are those of its
+ * last solve on ode (the same point, not written since: Newton's kept J,
+ * a Rosenbrock step's later stages): a system that keeps its factors
+ * keyed by y may then skip comparing them (ode_fast.h's solve_same). The
+ * same bits as sw_ode_solve; counted as a solve. */
+int sw_ode_solve_same(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                      const double *r, double *z);
 
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,

@@ -40,6 +40,10 @@
 
 struct sw_particles_solver {
     double *diag;          /* 8 per particle: Fx (2x2) and Fv (2x2) of per-particle forces */
+    /* own: some force may write diag (swp_force_type's pairs_only); while
+     * it is 0 and diag_zero, every diag entry is +0, from the last
+     * clearing, and the assembly need not clear it again */
+    int own, diag_zero;
     int *pa, *pb;          /* the pairs the forces join (engine/forces.h's swp_blocks) */
     double *pblock;        /* 8 per pair: ∂g/∂d and ∂g/∂(dv), d = x_a - x_b */
     long npairs, cap;      /* pairs written by the last assembly; room for */
@@ -69,6 +73,7 @@ int sw_particles_solver_init(sw_particles *p)
     if (!p->solver)
         return SW_ENOMEM;
     p->solver->diag = calloc((size_t)8 * p->n, sizeof *p->solver->diag);
+    p->solver->diag_zero = 1;
     return p->solver->diag ? SW_OK : SW_ENOMEM;
 }
 
@@ -190,10 +195,16 @@ static int assemble(sw_particles *p, const double *y)
     s->factored = 0;
     if (reserve_pairs(p) != SW_OK)
         return SW_ENOMEM;
+    s->own = 0;
+    for (int k = 0; k < p->nforces; k++)
+        s->own |= !swp_force_type_of(p->forces[k].kind)->pairs_only;
     /* eight doubles a particle, cleared a particle at a time (stores, not
-     * one long memset: callgrind counts each byte of a long one) */
-    for (int i = 0; i < p->n; i++)
-        memset(s->diag + 8 * i, 0, 8 * sizeof *s->diag);
+     * one long memset: callgrind counts each byte of a long one), unless
+     * no force writes them and they are +0 already */
+    if (s->own || !s->diag_zero)
+        for (int i = 0; i < p->n; i++)
+            memset(s->diag + 8 * i, 0, 8 * sizeof *s->diag);
+    s->diag_zero = !s->own;
     swp_blocks out = { s->diag, s->pa, s->pb, s->pblock, 0 };
     for (int k = 0; k < p->nforces; k++)
         swp_force_type_of(p->forces[k].kind)->blocks(p, &p->forces[k], y, y + 2 * p->n, &out);
@@ -309,7 +320,7 @@ _Static_assert(2 * CHAIN_LD == 20, "clear_chain_columns writes 20 doubles");
 /* The velocity system's matrix A = M - c·Fv - c²·Fx from the blocks, into
  * the band (whose shape is set), with_a and with_b as in band_blocks. */
 SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, const sw_band *band, int with_a,
-                                    int with_b)
+                                    int with_b, int own)
 {
     const struct sw_particles_solver *s = p->solver;
     int ld = band->ld;
@@ -325,8 +336,12 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
             clear_chain_columns(col);
         else
             memset(col, 0, (size_t)2 * (size_t)ld * sizeof *col);
-        block_cols own = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
-        band_blocks(top, ld, i, i, 1, p->mass[i], 1, &own, with_a, with_b);
+        if (own) {
+            block_cols pr = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
+            band_blocks(top, ld, i, i, 1, p->mass[i], 1, &pr, with_a, with_b);
+        } else { /* m·I: see factor_velocity_system */
+            band_blocks(top, ld, i, i, 1, p->mass[i], 1, NULL, 0, 0);
+        }
     }
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j, *kv = kx + 4;
@@ -354,10 +369,17 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
     struct sw_particles_solver *s = p->solver;
     double a = -c * c, b = -c;
     sw_band_shape(band, 2 * p->n, s->half_band, s->half_band, s->band, s->piv);
-    if (a != 0 && b != 0)
-        fill_velocity_system(p, a, b, band, 1, 1);
+    /* Where no force writes a particle's own blocks they are +0, and with
+     * a, b finite a·(+0) and b·(+0) are zeros: m + (±0) = m (m > 0) and
+     * +0 + (±0) = +0, so the own block is m·I, the same bits, without
+     * its products and sums. */
+    int own = s->own || !isfinite(a) || !isfinite(b);
+    if (a != 0 && b != 0 && own)
+        fill_velocity_system(p, a, b, band, 1, 1, 1);
+    else if (a != 0 && b != 0)
+        fill_velocity_system(p, a, b, band, 1, 1, 0);
     else
-        fill_velocity_system(p, a, b, band, a != 0, b != 0);
+        fill_velocity_system(p, a, b, band, a != 0, b != 0, own);
     s->blocked = s->half_band == 3 && sw_block_factor(band, s->block) == 0;
     return s->blocked ? 0 : sw_band_factor(band);
 }

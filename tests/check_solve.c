@@ -194,6 +194,38 @@ START_TEST(same_state_solve_is_the_solve)
 }
 END_TEST
 
+/* A solve that takes no key (sw_particles_solve_new: a step's first
+ * solve, asked for again only as the same state's) answers as a fresh
+ * solve, serves the same-state solves after it, and leaves no stale key:
+ * after an ordinary solve at y1 (the key y1) and a new one at y2, an
+ * ordinary solve at y1 again must factor afresh, not take y2's factors
+ * for y1's because the key still reads y1. */
+START_TEST(new_solve_leaves_no_stale_key)
+{
+    sw_particles p;
+    chain(&p);
+    double y1[DIM], y2[DIM], r[DIM], z[DIM], zf1[DIM], zf2[DIM];
+    memcpy(y1, p.y, sizeof y1);
+    memcpy(y2, p.y, sizeof y2);
+    y2[1] += 0.25;
+    y2[2 * NB + 3] -= 0.5;
+    fill(r, 1.0);
+    double c = 0.05;
+    fresh_solve(&p, y1, c, r, zf1);
+    fresh_solve(&p, y2, c, r, zf2);
+    ck_assert(memcmp(zf1, zf2, sizeof zf1) != 0);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y1, c, r, z), SW_OK); /* the key: y1 */
+    ck_assert_int_eq(sw_particles_solve_new(&p, 0.0, y2, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf2, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y2, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf2, sizeof z);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y1, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf1, sizeof z);
+    ck_assert_double_le(dense_residual(&p, y1, c, r, z), 1e-12);
+    sw_particles_free(&p);
+}
+END_TEST
+
 /* Where no force writes a particle's own blocks (springs and gravity:
  * pairs_only) the solve takes them as the zeros they are, without their
  * products: the same bits as a system whose own blocks are written but
@@ -494,6 +526,7 @@ Suite *make_solve_suite(void)
     tcase_add_test(tc, changed_state_or_c_refactors);
     tcase_add_test(tc, same_state_solve_is_the_solve);
     tcase_add_test(tc, own_blocks_skipped_where_zero);
+    tcase_add_test(tc, new_solve_leaves_no_stale_key);
     tcase_add_test(tc, dense_lu_equals_elimination);
     tcase_add_test(tc, band_chain_paths_equal_plain_loops);
     tcase_add_test(tc, dense_fallback_keeps_and_drops);

@@ -57,7 +57,7 @@ struct sw_particles_solver {
      * the blocks or the band clears it. y_at (4n) comes with the band, from
      * prepare: systems stepped explicitly carry none of it. */
     double *y_at, c_at;
-    int factored;
+    int factored, keyed;
     sw_band lu;            /* the band's shape and factors, while factored */
     /* On a chain's band (half_band 3: particles joined only to their
      * neighbours) the block Thomas factors (engine/linalg_block.h), 8 a
@@ -473,21 +473,32 @@ void sw_particles_solver_touch(sw_particles *p)
         p->solver->factored = 0;
 }
 
-/* The solve, given whether y may differ from the last solve's (same: the
- * caller promises it does not, and the key is neither compared nor
- * taken: it already holds y). */
-static int particles_solve(sw_particles *p, const double *y, double c, const double *r, double *z, int same)
+/* What the caller says of y: nothing (ANY: compared with the key), that
+ * it is the last solve's (SAME: the factors serve if c is theirs), or
+ * that these factors will be asked for again only with SAME (NEW:
+ * factored afresh, no key taken). */
+enum { SOLVE_ANY, SOLVE_SAME, SOLVE_NEW };
+
+static int particles_solve(sw_particles *p, const double *y, double c, const double *r, double *z, int mode)
 {
     struct sw_particles_solver *s = p->solver;
     if (!s->band)
         return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
-    /* The same y (contents, not address) and c as the factorisation's, and
-     * no force added since: the factors and blocks are this system's. The
-     * key is compared and taken in one pass (y_at is a key only while
-     * factored). */
-    int moved = same && s->factored ? 0 : key_moved(2 * n2, s->y_at, y);
-    if (!(s->factored && s->c_at == c && s->counted == p->nforces + 1 && !moved)) {
+    /* The factors serve for the same y (contents, not address) and c as
+     * theirs, no force added since. The key is compared and taken in one
+     * pass; it is y_at's while `keyed` (a NEW factorisation takes none). */
+    int fits = s->factored && s->c_at == c && s->counted == p->nforces + 1, reuse;
+    if (mode == SOLVE_SAME && fits) {
+        reuse = 1;
+    } else if (mode == SOLVE_NEW) {
+        reuse = 0;
+        s->keyed = 0;
+    } else {
+        reuse = !key_moved(2 * n2, s->y_at, y) && fits && s->keyed;
+        s->keyed = 1;
+    }
+    if (!reuse) {
         if (assemble(p, y) != SW_OK)
             return SW_ENOMEM;
         if (factor_velocity_system(p, c, &s->lu) != 0)
@@ -511,13 +522,19 @@ static int particles_solve(sw_particles *p, const double *y, double c, const dou
 int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
 {
     (void)t; /* the forces do not depend on time */
-    return particles_solve(ctx, y, c, r, z, 0);
+    return particles_solve(ctx, y, c, r, z, SOLVE_ANY);
 }
 
 int sw_particles_solve_same(void *ctx, double t, const double *y, double c, const double *r, double *z)
 {
     (void)t;
-    return particles_solve(ctx, y, c, r, z, 1);
+    return particles_solve(ctx, y, c, r, z, SOLVE_SAME);
+}
+
+int sw_particles_solve_new(void *ctx, double t, const double *y, double c, const double *r, double *z)
+{
+    (void)t;
+    return particles_solve(ctx, y, c, r, z, SOLVE_NEW);
 }
 
 typedef struct dense_ctx { double *m; int n2; } dense_ctx;

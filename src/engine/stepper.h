@@ -59,6 +59,12 @@ int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c
  * same bits as sw_ode_solve; counted as a solve. */
 int sw_ode_solve_same(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                       const double *r, double *z);
+/* The same as sw_ode_solve, where the caller will solve at this y again
+ * only through sw_ode_solve_same (a step's first solve: Newton's at a
+ * fresh J, a Rosenbrock step's first stage, the linearly implicit step):
+ * the system need not keep y to compare later solves with. */
+int sw_ode_solve_new(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                     const double *r, double *z);
 
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,

@@ -52,6 +52,25 @@ static void fresh_solve(sw_particles *p, const double *y, double c, const double
     ck_assert_int_eq(sw_particles_solve(p, 0.0, y, c, r, z), SW_OK);
 }
 
+/* |(I - c·J) z - r|∞ with J = [[0, I], [M⁻¹Fx, M⁻¹Fv]] from
+ * sw_particles_jacobian (dense, formed independently of the band and the
+ * blocks; the chain's mass 1.3). */
+static double dense_residual(sw_particles *p, const double *y, double c, const double *r, const double *z)
+{
+    static double fx[DIM / 2 * DIM / 2], fv[DIM / 2 * DIM / 2];
+    int n2 = DIM / 2;
+    ck_assert_int_eq(sw_particles_jacobian(p, y, fx, fv), SW_OK);
+    double worst = 0;
+    for (int i = 0; i < n2; i++) {
+        double rx = z[i] - c * z[n2 + i] - r[i];
+        double acc = z[n2 + i];
+        for (int j = 0; j < n2; j++)
+            acc -= c * (fx[i * n2 + j] * z[j] + fv[i * n2 + j] * z[n2 + j]) / 1.3;
+        worst = fmax(worst, fmax(fabs(rx), fabs(acc - r[n2 + i])));
+    }
+    return worst;
+}
+
 /* A second right-hand side at the same y and c is served from the kept
  * factors: bit for bit what a fresh factorisation gives. The answer also
  * solves (I - c·J) z = r with J from sw_particles_jacobian (dense, formed
@@ -74,19 +93,7 @@ START_TEST(kept_factors_give_fresh_numbers)
     fresh_solve(&p, y, c, r2, zf);
     ck_assert_mem_eq(z2, zf, sizeof z2);
 
-    static double fx[DIM / 2 * DIM / 2], fv[DIM / 2 * DIM / 2];
-    int n2 = DIM / 2;
-    ck_assert_int_eq(sw_particles_jacobian(&p, y, fx, fv), SW_OK);
-    /* J = [[0, I], [M⁻¹Fx, M⁻¹Fv]]; residual of (I - cJ) z2 = r2 */
-    double worst = 0;
-    for (int i = 0; i < n2; i++) {
-        double rx = z2[i] - c * z2[n2 + i] - r2[i];
-        double acc = z2[n2 + i];
-        for (int j = 0; j < n2; j++)
-            acc -= c * (fx[i * n2 + j] * z2[j] + fv[i * n2 + j] * z2[n2 + j]) / 1.3;
-        worst = fmax(worst, fmax(fabs(rx), fabs(acc - r2[n2 + i])));
-    }
-    ck_assert_double_le(worst, 1e-12);
+    ck_assert_double_le(dense_residual(&p, y, c, r2, z2), 1e-12);
     sw_particles_free(&p);
 }
 END_TEST
@@ -148,6 +155,109 @@ START_TEST(changed_state_or_c_refactors)
     ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r, z), SW_OK);
     ck_assert_mem_eq(z, z0, sizeof z);
     sw_particles_free(&p);
+}
+END_TEST
+
+/* The solve a caller promises is at the last solve's state
+ * (sw_particles_solve_same: Newton's kept J, Rosenbrock's later stages)
+ * skips comparing y, and nothing else: its answers are a fresh solve's
+ * bit for bit; at another c, after the factors were dropped, or first of
+ * all (nothing kept) it factors afresh; and the key it leaves still tells
+ * a later ordinary solve at a moved state to factor afresh. */
+START_TEST(same_state_solve_is_the_solve)
+{
+    sw_particles p;
+    chain(&p);
+    double y[DIM], r1[DIM], r2[DIM], z[DIM], zf[DIM];
+    memcpy(y, p.y, sizeof y);
+    fill(r1, 1.0);
+    fill(r2, -0.3);
+    double c = 0.05;
+    sw_particles_solver_touch(&p); /* nothing kept: the promise must factor */
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r1, z), SW_OK);
+    fresh_solve(&p, y, c, r1, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r2, z), SW_OK);
+    fresh_solve(&p, y, c, r2, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, 2 * c, r2, z), SW_OK); /* another c */
+    fresh_solve(&p, y, 2 * c, r2, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    ck_assert(memcmp(z, (double[DIM]){ 0 }, sizeof z) != 0);
+    /* the kept key is y's: a moved state through the ordinary solve refactors */
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y, c, r1, z), SW_OK);
+    y[3] += 1e-6;
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, c, r1, z), SW_OK);
+    fresh_solve(&p, y, c, r1, zf);
+    ck_assert_mem_eq(z, zf, sizeof z);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* A solve that takes no key (sw_particles_solve_new: a step's first
+ * solve, asked for again only as the same state's) answers as a fresh
+ * solve, serves the same-state solves after it, and leaves no stale key:
+ * after an ordinary solve at y1 (the key y1) and a new one at y2, an
+ * ordinary solve at y1 again must factor afresh, not take y2's factors
+ * for y1's because the key still reads y1. */
+START_TEST(new_solve_leaves_no_stale_key)
+{
+    sw_particles p;
+    chain(&p);
+    double y1[DIM], y2[DIM], r[DIM], z[DIM], zf1[DIM], zf2[DIM];
+    memcpy(y1, p.y, sizeof y1);
+    memcpy(y2, p.y, sizeof y2);
+    y2[1] += 0.25;
+    y2[2 * NB + 3] -= 0.5;
+    fill(r, 1.0);
+    double c = 0.05;
+    fresh_solve(&p, y1, c, r, zf1);
+    fresh_solve(&p, y2, c, r, zf2);
+    ck_assert(memcmp(zf1, zf2, sizeof zf1) != 0);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y1, c, r, z), SW_OK); /* the key: y1 */
+    ck_assert_int_eq(sw_particles_solve_new(&p, 0.0, y2, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf2, sizeof z);
+    ck_assert_int_eq(sw_particles_solve_same(&p, 0.0, y2, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf2, sizeof z);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y1, c, r, z), SW_OK);
+    ck_assert_mem_eq(z, zf1, sizeof z);
+    ck_assert_double_le(dense_residual(&p, y1, c, r, z), 1e-12);
+    sw_particles_free(&p);
+}
+END_TEST
+
+/* Where no force writes a particle's own blocks (springs and gravity:
+ * pairs_only) the solve takes them as the zeros they are, without their
+ * products: the same bits as a system whose own blocks are written but
+ * are +0 (drag with k = 0, the products made), at several c, both signs
+ * (a backward step) and c = 0. A force added later that does write them
+ * (drag, k = 2) is seen: the answer then solves the system with that
+ * drag (residual against the dense Jacobian at rounding, 1e-12 of |r| ~ 1
+ * as above). */
+START_TEST(own_blocks_skipped_where_zero)
+{
+    sw_particles p, q;
+    char err[SW_ERRLEN];
+    chain(&p);
+    chain(&q);
+    ck_assert_int_eq(sw_particles_add_drag(&q, 0.0), SW_OK);
+    ck_assert_int_eq(sw_particles_finish(&q, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_solver_prepare(&q, err, sizeof err), SW_OK);
+    double y[DIM], r[DIM], zp[DIM], zq[DIM];
+    memcpy(y, p.y, sizeof y);
+    fill(r, 1.0);
+    const double cs[] = { 0.05, 3.0, -0.02, 0.0 };
+    for (int k = 0; k < 4; k++) {
+        ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, cs[k], r, zp), SW_OK);
+        ck_assert_int_eq(sw_particles_solve(&q, 0.0, y, cs[k], r, zq), SW_OK);
+        ck_assert_mem_eq(zp, zq, sizeof zp);
+    }
+    ck_assert_int_eq(sw_particles_add_drag(&p, 2.0), SW_OK);
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_particles_solve(&p, 0.0, y, 0.05, r, zp), SW_OK);
+    ck_assert_double_le(dense_residual(&p, y, 0.05, r, zp), 1e-12);
+    sw_particles_free(&p);
+    sw_particles_free(&q);
 }
 END_TEST
 
@@ -414,6 +524,9 @@ Suite *make_solve_suite(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, kept_factors_give_fresh_numbers);
     tcase_add_test(tc, changed_state_or_c_refactors);
+    tcase_add_test(tc, same_state_solve_is_the_solve);
+    tcase_add_test(tc, own_blocks_skipped_where_zero);
+    tcase_add_test(tc, new_solve_leaves_no_stale_key);
     tcase_add_test(tc, dense_lu_equals_elimination);
     tcase_add_test(tc, band_chain_paths_equal_plain_loops);
     tcase_add_test(tc, dense_fallback_keeps_and_drops);

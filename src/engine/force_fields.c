@@ -51,6 +51,7 @@ const swp_force_type swp_gravity = {
     .term_formula = "m g y",
     .pairs = no_pairs,
     .blocks = gravity_blocks,
+    .pairs_only = 1,
 };
 
 static void drag_add(const sw_particles *p, const sw_force *fo, const double *x, const double *v, double *f)

@@ -152,5 +152,6 @@ const swp_force_type swp_springs = {
     .term_half = 1,
     .pairs = springs_pairs,
     .blocks = springs_blocks,
+    .pairs_only = 1,
     .uses_velocity = springs_use_velocity,
 };

@@ -47,6 +47,10 @@ typedef struct swp_force_type {
     long (*pairs)(const sw_particles *p, const sw_force *fo, int *reach);
     /* Its Jacobian at (x, v) into out. */
     void (*blocks)(const sw_particles *p, const sw_force *fo, const double *x, const double *v, swp_blocks *out);
+    /* 1 when blocks never writes out->diag (pair blocks alone, or none:
+     * springs, gravity); 0 (the default): it may. The implicit solve then
+     * knows a particle's own blocks stay zero and skips them. */
+    int pairs_only;
     /* Its workspace for n particles, kept between evaluations (fo->work,
      * freed by the system), or NULL when out of memory; NULL hook: it keeps
      * none. */

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "engine/linalg.h"
+#include "engine/ode_fast.h"
 #include "stepwise/base.h"
 
 /* Newton's stopping rule (implicit.h): converged, failed, or go on with a
@@ -94,7 +95,11 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
             at = ym;
             ym = ym == yj ? SW_WORK(s, 1) : yj;
         }
-        if (sw_ode_solve(s, ode, te, at, c, g, delta) != 0) {
+        /* a kept J's point is where the last solve was (same); a fresh
+         * one's factors are asked for again only as that (new) */
+        int (*solve)(sw_stepper *, sw_ode *, double, const double *, double, const double *, double *) =
+            !yj ? sw_ode_solve : fresh ? sw_ode_solve_new : sw_ode_solve_same;
+        if (solve(s, ode, te, at, c, g, delta) != 0) {
             s->why = "the linear system of a Newton step is singular";
             return -1;
         }
@@ -208,7 +213,7 @@ int sw_step_linear_implicit_euler(sw_stepper *s, sw_ode *ode, double *t, double 
     double *r = SW_WORK(s, 0), *dy = SW_WORK(s, 1);
     sw_ode_eval(ode, *t + h, y, r);
     swi_scale(ode->dim, r, h); /* r = h·f */
-    if (sw_ode_solve(s, ode, *t + h, y, h, r, dy) != 0) {
+    if (sw_ode_solve_new(s, ode, *t + h, y, h, r, dy) != 0) { /* not solved at y again */
         s->why = "the linear system of the step is singular";
         return SW_EDIVERGED;
     }
@@ -270,4 +275,26 @@ int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c
     if (ode->solve)
         return ode->solve(ode->ctx, t, y, c, r, z);
     return dense_solve(s, ode, t, y, c, r, z);
+}
+
+/* Through the fast path's hook where the system has one, else ode->solve. */
+static int solve_by(sw_stepper *s, sw_ode *ode, sw_solve_fn *fn, double t, const double *y, double c,
+                    const double *r, double *z)
+{
+    if (!fn)
+        return sw_ode_solve(s, ode, t, y, c, r, z);
+    ode->solves++;
+    return fn(ode->ctx, t, y, c, r, z);
+}
+
+int sw_ode_solve_same(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                      const double *r, double *z)
+{
+    return solve_by(s, ode, ode->fast ? ode->fast->solve_same : NULL, t, y, c, r, z);
+}
+
+int sw_ode_solve_new(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                     const double *r, double *z)
+{
+    return solve_by(s, ode, ode->fast ? ode->fast->solve_new : NULL, t, y, c, r, z);
 }

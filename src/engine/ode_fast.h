@@ -45,6 +45,14 @@ struct sw_ode_fast {
      * at every t): a Rosenbrock method's ∂f/∂t is then +0 exactly where f
      * is finite, and need not be evaluated. NULL or 0: unknown. */
     int (*autonomous)(const sw_ode *ode);
+    /* ode->solve, where the caller promises y's contents are those of the
+     * last solve (stepper.h's sw_ode_solve_same): factors kept for the
+     * same c are reused without comparing y. NULL: ode->solve always. */
+    sw_solve_fn *solve_same;
+    /* ode->solve, where the caller will ask for these factors again only
+     * through solve_same (stepper.h's sw_ode_solve_new): the system need
+     * not keep y to compare. NULL: ode->solve always. */
+    sw_solve_fn *solve_new;
 };
 
 /* The fast path of ode, or NULL. */

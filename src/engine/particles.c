@@ -66,9 +66,11 @@ static int autonomous(const sw_ode *ode)
 #define CHAIN_RK4 NULL
 #endif
 static const struct sw_ode_fast particles_fast[2] = {
-    { .position_only = position_only, .central1 = central1, .spring1 = spring1, .autonomous = autonomous },
     { .position_only = position_only, .central1 = central1, .spring1 = spring1, .autonomous = autonomous,
-      .fused_rk4 = CHAIN_RK4 },
+      .solve_same = sw_particles_solve_same, .solve_new = sw_particles_solve_new },
+    { .position_only = position_only, .central1 = central1, .spring1 = spring1, .autonomous = autonomous,
+      .fused_rk4 = CHAIN_RK4, .solve_same = sw_particles_solve_same,
+      .solve_new = sw_particles_solve_new },
 };
 
 int sw_particles_init(sw_particles *p, int n, double mass, char *err, size_t errlen)

@@ -481,8 +481,10 @@ SW_INLINE void last_pass(const sw_particles *p, const struct sw_particles_model 
     last_range(p, m, v, xdot, f, from, gravity, drag, hi, p->n, 0);
 }
 
-/* (compiled twice, engine/clones.h; swp_deriv is its one entry) */
-SW_CLONES static void deriv(void *ctx, const double *y, double *dydt)
+/* (compiled twice, engine/clones.h; swp_deriv is its one entry; one pass:
+ * the last pass's copy of v into dx/dt stays in it, not a memcpy call of
+ * its own, SW_ONE_PASS) */
+SW_CLONES SW_ONE_PASS static void deriv(void *ctx, const double *y, double *dydt)
 {
     sw_particles *p = ctx;
     struct sw_particles_model *m = p->model;

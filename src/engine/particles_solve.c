@@ -9,7 +9,12 @@
  * has bandwidth one particle). It is solved by banded LU with partial
  * pivoting: exact, and correct where a compressed spring makes the matrix
  * indefinite or damping makes it non-symmetric — there conjugate gradients,
- * Baraff and Witkin's choice, break down. The system reads the forces only
+ * Baraff and Witkin's choice, break down. On a chain (each particle joined
+ * only to its neighbours) the same band is first factored by 2x2 blocks
+ * (engine/linalg_block.h: no row leaves its particle, no structural zero
+ * is touched), and by the band's LU only where the blocks refuse (a Schur
+ * complement that grows: compressed or damped springs at large c·ω).
+ * The system reads the forces only
  * through the particle accessors. Invariant: the solve allocates nothing;
  * the band is sized once by sw_particles_solver_prepare. */
 #include "engine/particles_solve.h"
@@ -24,6 +29,7 @@
 #include "engine/forces.h"
 #include "engine/lanes.h"
 #include "engine/linalg.h"
+#include "engine/linalg_block.h"
 #include "stepwise/base.h"
 
 /* The band's column length on a chain (kl = ku = 3: 2·kl + ku + 1). */
@@ -34,6 +40,10 @@
 
 struct sw_particles_solver {
     double *diag;          /* 8 per particle: Fx (2x2) and Fv (2x2) of per-particle forces */
+    /* own: some force may write diag (swp_force_type's pairs_only); while
+     * it is 0 and diag_zero, every diag entry is +0, from the last
+     * clearing, and the assembly need not clear it again */
+    int own, diag_zero;
     int *pa, *pb;          /* the pairs the forces join (engine/forces.h's swp_blocks) */
     double *pblock;        /* 8 per pair: ∂g/∂d and ∂g/∂(dv), d = x_a - x_b */
     long npairs, cap;      /* pairs written by the last assembly; room for */
@@ -47,8 +57,14 @@ struct sw_particles_solver {
      * the blocks or the band clears it. y_at (4n) comes with the band, from
      * prepare: systems stepped explicitly carry none of it. */
     double *y_at, c_at;
-    int factored;
+    int factored, keyed;
     sw_band lu;            /* the band's shape and factors, while factored */
+    /* On a chain's band (half_band 3: particles joined only to their
+     * neighbours) the block Thomas factors (engine/linalg_block.h), 8 a
+     * particle, and whether the factorisation kept is theirs (blocked) or
+     * the band's own (where they refused). */
+    double *block;
+    int blocked;
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -57,6 +73,7 @@ int sw_particles_solver_init(sw_particles *p)
     if (!p->solver)
         return SW_ENOMEM;
     p->solver->diag = calloc((size_t)8 * p->n, sizeof *p->solver->diag);
+    p->solver->diag_zero = 1;
     return p->solver->diag ? SW_OK : SW_ENOMEM;
 }
 
@@ -115,6 +132,7 @@ void sw_particles_solver_free(sw_particles *p)
         free(p->solver->y_at);
         free(p->solver->band);
         free(p->solver->piv);
+        free(p->solver->block);
         free(p->solver);
     }
     p->solver = NULL;
@@ -148,6 +166,10 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen)
         snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
         return SW_ENOMEM;
     }
+    if (kb == 3 && !s->block && !(s->block = malloc(SW_BLOCK_DOUBLES(p->n) * sizeof *s->block))) {
+        snprintf(err, errlen, "out of memory for the implicit solve (%d particles)", p->n);
+        return SW_ENOMEM;
+    }
     if (s->band && s->half_band == kb)
         return SW_OK;
     double *band = realloc(s->band, len * sizeof *band);
@@ -173,10 +195,16 @@ static int assemble(sw_particles *p, const double *y)
     s->factored = 0;
     if (reserve_pairs(p) != SW_OK)
         return SW_ENOMEM;
+    s->own = 0;
+    for (int k = 0; k < p->nforces; k++)
+        s->own |= !swp_force_type_of(p->forces[k].kind)->pairs_only;
     /* eight doubles a particle, cleared a particle at a time (stores, not
-     * one long memset: callgrind counts each byte of a long one) */
-    for (int i = 0; i < p->n; i++)
-        memset(s->diag + 8 * i, 0, 8 * sizeof *s->diag);
+     * one long memset: callgrind counts each byte of a long one), unless
+     * no force writes them and they are +0 already */
+    if (s->own || !s->diag_zero)
+        for (int i = 0; i < p->n; i++)
+            memset(s->diag + 8 * i, 0, 8 * sizeof *s->diag);
+    s->diag_zero = !s->own;
     swp_blocks out = { s->diag, s->pa, s->pb, s->pblock, 0 };
     for (int k = 0; k < p->nforces; k++)
         swp_force_type_of(p->forces[k].kind)->blocks(p, &p->forces[k], y, y + 2 * p->n, &out);
@@ -292,7 +320,7 @@ _Static_assert(2 * CHAIN_LD == 20, "clear_chain_columns writes 20 doubles");
 /* The velocity system's matrix A = M - c·Fv - c²·Fx from the blocks, into
  * the band (whose shape is set), with_a and with_b as in band_blocks. */
 SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, const sw_band *band, int with_a,
-                                    int with_b)
+                                    int with_b, int own)
 {
     const struct sw_particles_solver *s = p->solver;
     int ld = band->ld;
@@ -308,8 +336,12 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
             clear_chain_columns(col);
         else
             memset(col, 0, (size_t)2 * (size_t)ld * sizeof *col);
-        block_cols own = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
-        band_blocks(top, ld, i, i, 1, p->mass[i], 1, &own, with_a, with_b);
+        if (own) {
+            block_cols pr = block_products(a, s->diag + 8 * i, b, s->diag + 8 * i + 4, with_a, with_b);
+            band_blocks(top, ld, i, i, 1, p->mass[i], 1, &pr, with_a, with_b);
+        } else { /* m·I: see factor_velocity_system */
+            band_blocks(top, ld, i, i, 1, p->mass[i], 1, NULL, 0, 0);
+        }
     }
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j, *kv = kx + 4;
@@ -328,19 +360,28 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
     }
 }
 
-/* A = M - c·Fv - c²·Fx into the band, and its factors. 0, or -1 when A is
- * singular. a = -c² and b = -c are both nonzero but where c is 0 or c²
- * underflows: that case gets its own copy of the loops. */
+/* A = M - c·Fv - c²·Fx into the band, and its factors: a chain's by
+ * blocks where they are safe, else the band's with row interchanges. 0,
+ * or -1 when A is singular. a = -c² and b = -c are both nonzero but where
+ * c is 0 or c² underflows: that case gets its own copy of the loops. */
 static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
 {
     struct sw_particles_solver *s = p->solver;
     double a = -c * c, b = -c;
     sw_band_shape(band, 2 * p->n, s->half_band, s->half_band, s->band, s->piv);
-    if (a != 0 && b != 0)
-        fill_velocity_system(p, a, b, band, 1, 1);
+    /* Where no force writes a particle's own blocks they are +0, and with
+     * a, b finite a·(+0) and b·(+0) are zeros: m + (±0) = m (m > 0) and
+     * +0 + (±0) = +0, so the own block is m·I, the same bits, without
+     * its products and sums. */
+    int own = s->own || !isfinite(a) || !isfinite(b);
+    if (a != 0 && b != 0 && own)
+        fill_velocity_system(p, a, b, band, 1, 1, 1);
+    else if (a != 0 && b != 0)
+        fill_velocity_system(p, a, b, band, 1, 1, 0);
     else
-        fill_velocity_system(p, a, b, band, a != 0, b != 0);
-    return sw_band_factor(band);
+        fill_velocity_system(p, a, b, band, a != 0, b != 0, own);
+    s->blocked = s->half_band == 3 && sw_block_factor(band, s->block) == 0;
+    return s->blocked ? 0 : sw_band_factor(band);
 }
 
 /* out = M·v (two components a particle); out may be v itself. */
@@ -432,20 +473,32 @@ void sw_particles_solver_touch(sw_particles *p)
         p->solver->factored = 0;
 }
 
-int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
+/* What the caller says of y: nothing (ANY: compared with the key), that
+ * it is the last solve's (SAME: the factors serve if c is theirs), or
+ * that these factors will be asked for again only with SAME (NEW:
+ * factored afresh, no key taken). */
+enum { SOLVE_ANY, SOLVE_SAME, SOLVE_NEW };
+
+static int particles_solve(sw_particles *p, const double *y, double c, const double *r, double *z, int mode)
 {
-    (void)t; /* the forces do not depend on time */
-    sw_particles *p = ctx;
     struct sw_particles_solver *s = p->solver;
     if (!s->band)
         return SW_EINVAL; /* not prepared: sw_stepper_init prepares implicit methods */
     int n2 = 2 * p->n;
-    /* The same y (contents, not address) and c as the factorisation's, and
-     * no force added since: the factors and blocks are this system's. The
-     * key is compared and taken in one pass (y_at is a key only while
-     * factored). */
-    int moved = key_moved(2 * n2, s->y_at, y);
-    if (!(s->factored && s->c_at == c && s->counted == p->nforces + 1 && !moved)) {
+    /* The factors serve for the same y (contents, not address) and c as
+     * theirs, no force added since. The key is compared and taken in one
+     * pass; it is y_at's while `keyed` (a NEW factorisation takes none). */
+    int fits = s->factored && s->c_at == c && s->counted == p->nforces + 1, reuse;
+    if (mode == SOLVE_SAME && fits) {
+        reuse = 1;
+    } else if (mode == SOLVE_NEW) {
+        reuse = 0;
+        s->keyed = 0;
+    } else {
+        reuse = !key_moved(2 * n2, s->y_at, y) && fits && s->keyed;
+        s->keyed = 1;
+    }
+    if (!reuse) {
         if (assemble(p, y) != SW_OK)
             return SW_ENOMEM;
         if (factor_velocity_system(p, c, &s->lu) != 0)
@@ -457,10 +510,31 @@ int sw_particles_solve(void *ctx, double t, const double *y, double c, const dou
      * velocity half (z may be r: r's positions are read, never written) */
     double *z_v = z + n2;
     velocity_rhs(p, c, r, z_v);
-    sw_band_solve(&s->lu, z_v);
+    if (s->blocked)
+        sw_block_solve(&s->lu, s->block, z_v);
+    else
+        sw_band_solve(&s->lu, z_v);
     add_scaled(n2, z, r, c, z_v);
     p->ode.solver_iters++;
     return SW_OK;
+}
+
+int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z)
+{
+    (void)t; /* the forces do not depend on time */
+    return particles_solve(ctx, y, c, r, z, SOLVE_ANY);
+}
+
+int sw_particles_solve_same(void *ctx, double t, const double *y, double c, const double *r, double *z)
+{
+    (void)t;
+    return particles_solve(ctx, y, c, r, z, SOLVE_SAME);
+}
+
+int sw_particles_solve_new(void *ctx, double t, const double *y, double c, const double *r, double *z)
+{
+    (void)t;
+    return particles_solve(ctx, y, c, r, z, SOLVE_NEW);
 }
 
 typedef struct dense_ctx { double *m; int n2; } dense_ctx;

@@ -19,6 +19,11 @@ int sw_particles_solver_prepare(void *ctx, char *err, size_t errlen);
  * second solve at the same y (compared by contents) and c reuses the first
  * one's factorisation. */
 int sw_particles_solve(void *ctx, double t, const double *y, double c, const double *r, double *z);
+/* The same, y promised to be the last solve's (ode_fast.h's solve_same). */
+int sw_particles_solve_same(void *ctx, double t, const double *y, double c, const double *r, double *z);
+/* The same, factored afresh, asked for again only through
+ * sw_particles_solve_same (ode_fast.h's solve_new). */
+int sw_particles_solve_new(void *ctx, double t, const double *y, double c, const double *r, double *z);
 /* Forget the kept factorisation: the forces or masses changed in place
  * (sw_particles_finish calls it). */
 void sw_particles_solver_touch(sw_particles *p);

@@ -75,7 +75,9 @@ static void rodas_trial(sw_stepper *s, sw_ode *ode, double t, double *y, double 
          * still turns a -0 into +0, as the lecture form did */
         double dh = timed ? SW_RODAS_D[st] * h : 0.0;
         swr_stage_combine(n, st, known_zero ? 2 : 1, rhs, f, dh, ft, gh, c_over_h, k);
-        if (sw_ode_solve(s, ode, t, y, gh, rhs, kst) != 0) {
+        /* stages after the first: at y0, as the first was (its factors
+         * asked for again only so) */
+        if ((st > 0 ? sw_ode_solve_same : sw_ode_solve_new)(s, ode, t, y, gh, rhs, kst) != 0) {
             s->why = "the linear system of a Rosenbrock stage is singular";
             sums->err = NAN;
             if (st == 0) /* before the copy: the controller restores y0 from it */

@@ -52,6 +52,19 @@ void sw_integrator_disable(const sw_integrator *m, const char *why);
  * fallback (dim <= SW_DENSE_MAX) using s->dense. */
 int sw_ode_solve(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
                  const double *r, double *z);
+/* The same, where the caller promises that y's contents are those of its
+ * last solve on ode (the same point, not written since: Newton's kept J,
+ * a Rosenbrock step's later stages): a system that keeps its factors
+ * keyed by y may then skip comparing them (ode_fast.h's solve_same). The
+ * same bits as sw_ode_solve; counted as a solve. */
+int sw_ode_solve_same(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                      const double *r, double *z);
+/* The same as sw_ode_solve, where the caller will solve at this y again
+ * only through sw_ode_solve_same (a step's first solve: Newton's at a
+ * fresh J, a Rosenbrock step's first stage, the linearly implicit step):
+ * the system need not keep y to compare later solves with. */
+int sw_ode_solve_new(sw_stepper *s, sw_ode *ode, double t, const double *y, double c,
+                     const double *r, double *z);
 
 /* The built-in methods' steps, one file per family. */
 sw_step_fn sw_step_euler, sw_step_symplectic_euler, sw_step_midpoint, sw_step_heun,

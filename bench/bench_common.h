@@ -92,6 +92,11 @@ int bench_deriv_probe(const char *scene, const char *set, long calls, int generi
 /* Barnes-Hut against the direct sum at n = 1e3, 1e4, 1e5 (quick: the first
  * two): time per evaluation, force error, fitted exponents (bench_tree.c). */
 void bench_tree(int repeats, int quick);
+/* EVALS evaluations of the tree on bench_tree's disc of N bodies at THETA
+ * (the arguments as typed), for callgrind: the difference between two
+ * counts is what the evaluations cost. 0; 1 when the disc cannot be
+ * built; 2, with a one-line message, for arguments out of range. */
+int bench_tree_probe(const char *n, const char *theta, const char *evals);
 /* Median seconds per evaluation of p's derivative over `repeats` runs of at
  * least `least` seconds each; *allocs: allocations during the timed runs. */
 double bench_time_eval(sw_particles *p, double *dydt, int repeats, double least, long *allocs);

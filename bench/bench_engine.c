@@ -561,6 +561,8 @@ static int bench_engine_main(int argc, char **argv)
         if (strcmp(argv[i], "--count-probe") == 0 && i + 5 < argc)
             return count_probe(argv[i + 1], atoi(argv[i + 2]), argv[i + 3], atol(argv[i + 4]),
                                strcmp(argv[i + 5], "base") == 0);
+        if (strcmp(argv[i], "--tree-probe") == 0 && i + 3 < argc)
+            return bench_tree_probe(argv[i + 1], argv[i + 2], argv[i + 3]);
         if (strcmp(argv[i], "--lc-probe") == 0 && i + 3 < argc)
             return bench_lc_probe(argv[i + 1], atof(argv[i + 2]), atol(argv[i + 3]));
         if (strcmp(argv[i], "--deriv-probe") == 0 && i + 4 < argc)

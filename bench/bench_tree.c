@@ -119,3 +119,25 @@ void bench_tree(int repeats, int quick)
            nlogn);
     printf("  allocations during the timed evaluations: %ld\n", allocs);
 }
+
+int bench_tree_probe(const char *n_arg, const char *theta_arg, const char *evals_arg)
+{
+    char *end_n, *end_t, *end_e;
+    long n = strtol(n_arg, &end_n, 10), evals = strtol(evals_arg, &end_e, 10);
+    double theta = strtod(theta_arg, &end_t);
+    if (*end_n || *end_t || *end_e || n < 2 || n > 1000000 || !(theta > 0 && theta <= 1) || evals < 0 || evals > 1000) {
+        fprintf(stderr, "stepwise: --tree-probe N THETA EVALS takes N in [2, 1000000], THETA in (0, 1], EVALS in "
+                        "[0, 1000]; not '%.20s %.20s %.20s'\n", n_arg, theta_arg, evals_arg);
+        return 2;
+    }
+    sw_particles p;
+    if (disc(&p, (int)n, theta) != 0)
+        return 1;
+    double *dydt = malloc((size_t)4 * n * sizeof *dydt);
+    for (int k = 0; dydt && k < evals; k++)
+        p.ode.deriv(&p, 0.0, p.y, dydt);
+    int bad = !dydt;
+    free(dydt);
+    sw_particles_free(&p);
+    return bad;
+}

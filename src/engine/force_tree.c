@@ -35,13 +35,13 @@
 #define GROUP_MAX 64  /* a cell of at most this many bodies shares one list */
 #define BLOCK 4       /* bodies summed side by side (one 4-wide vector) */
 #define LIST_MAX 2048 /* interactions gathered before the group sums them */
-#define STACK_MAX 64  /* a walk keeps at most 3 siblings per level, 17 levels, + 4 */
 
 typedef struct tree_node {
     double mx, my, m; /* centre of mass and mass */
     double size2;     /* the square of the larger side of the bodies' box */
     int lo, hi;       /* its bodies, in sorted order */
     int first, count; /* its children (consecutive nodes); count 0: a leaf */
+    int next;         /* the node after its subtree in depth-first order (-1: none) */
 } tree_node;
 
 typedef struct tree_box {
@@ -72,6 +72,10 @@ typedef struct tree_work {
     int *idx, *idx2;    /* body numbers in key order; the sort's second buffer */
     double lx[LIST_MAX], ly[LIST_MAX], lm[LIST_MAX]; /* a group's list: point masses */
     int len;
+    double cd2[LIST_MAX], cb[LIST_MAX], cq[LIST_MAX]; /* the cells the group took whole:
+                                   their distance² from its box, reach and second moment (its bound) */
+    int ncells;
+    int paired;         /* every q² of the pass in [1e-100, 1e100]: sum_block may pair entries */
 } tree_work;
 
 static size_t round_up(size_t b) { return (b + 63) & ~(size_t)63; }
@@ -217,49 +221,107 @@ static void build(tree_work *w, int k, int lo, int hi)
     w->mom[k] = (tree_moment){ q, sqrt(bx * bx + by * by) };
 }
 
-/* Add Σ_list M (x_r - X)/q³ to (ax, ay) for the group's bodies [lo, hi),
- * each body's sum in list order: BLOCK bodies at a time take one list entry
- * side by side (the inner loop, which vectorises without reordering any
- * sum), so the bits are the same whatever the vector width. A body meets
- * itself in the list at distance 0: with ε > 0 that term is 0 (dx = dy =
- * 0); with ε = 0 the guarded loop drops it. On x86-64 an AVX2 copy is
- * chosen at load time where the processor has it: 4 lanes, not 2, of the
- * same IEEE operations (no FMA), hence the same bits. */
-SW_CLONES
-static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay, double *ap)
+/* The bodies c .. c + cnt - 1 of the group take the list side by side in
+ * `block` lanes (4, or 2; a short block padded with its last body, then
+ * dropped): for each entry in list order, each body's three sums. The
+ * lanes' loop vectorises without reordering any sum, so a body's bits do
+ * not depend on the block it is summed in. Where the pass allows it
+ * (w->paired) two entries share one division, s = M·b/(a b) and t =
+ * M'·a/(a b) with a = q³, b = q'³: one square root and half a division a
+ * pair, the divider being what bounds this loop (a few ulps of each term,
+ * against one). With ε = 0 a body meets itself at q = 0, and the guarded
+ * loop drops that term. */
+SW_INLINE void sum_block(const tree_work *w, int c, int cnt, int block, double e2, double *ax, double *ay, double *ap)
 {
-    for (int c = lo; c < hi; c += BLOCK) {
-        int cnt = hi - c < BLOCK ? hi - c : BLOCK;
-        double xr[BLOCK], yr[BLOCK], gx[BLOCK], gy[BLOCK], gp[BLOCK];
-        for (int i = 0; i < BLOCK; i++) { /* a short block is padded with its last body, then dropped */
-            int r = c + (i < cnt ? i : cnt - 1);
-            xr[i] = w->bx[r], yr[i] = w->by[r], gx[i] = ax[r], gy[i] = ay[r], gp[i] = ap[r];
-        }
-        if (e2 > 0) {
-            for (int j = 0; j < w->len; j++) {
-                double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
-                for (int i = 0; i < BLOCK; i++) {
-                    double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey + e2, s = M / (q2 * sqrt(q2));
-                    gx[i] += s * ex;
-                    gy[i] += s * ey;
-                    gp[i] += s * q2; /* M/q, the potential's term, at the cost of a product */
-                }
-            }
-        } else {
-            for (int j = 0; j < w->len; j++) {
-                double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
-                for (int i = 0; i < BLOCK; i++) {
-                    double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey;
-                    double s = q2 > 0 ? M / (q2 * sqrt(q2)) : 0;
+    double xr[BLOCK], yr[BLOCK], gx[BLOCK], gy[BLOCK], gp[BLOCK];
+    for (int i = 0; i < block; i++) {
+        int r = c + (i < cnt ? i : cnt - 1);
+        xr[i] = w->bx[r], yr[i] = w->by[r], gx[i] = ax[r], gy[i] = ay[r], gp[i] = ap[r];
+    }
+    if (e2 > 0) {
+        int j = 0;
+        if (w->paired) /* two entries share one division: 1/a = b·(1/(a b)) */
+            for (; j + 1 < w->len; j += 2) {
+                double X = w->lx[j], Y = w->ly[j], M = w->lm[j], X1 = w->lx[j + 1], Y1 = w->ly[j + 1], M1 = w->lm[j + 1];
+                for (int i = 0; i < block; i++) {
+                    double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey + e2, a = q2 * sqrt(q2);
+                    double fx = xr[i] - X1, fy = yr[i] - Y1, p2 = fx * fx + fy * fy + e2, b = p2 * sqrt(p2);
+                    double inv = 1 / (a * b), s = M * (b * inv), t = M1 * (a * inv);
                     gx[i] += s * ex;
                     gy[i] += s * ey;
                     gp[i] += s * q2;
+                    gx[i] += t * fx;
+                    gy[i] += t * fy;
+                    gp[i] += t * p2;
                 }
             }
+        for (; j < w->len; j++) {
+            double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
+            for (int i = 0; i < block; i++) {
+                double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey + e2, s = M / (q2 * sqrt(q2));
+                gx[i] += s * ex;
+                gy[i] += s * ey;
+                gp[i] += s * q2; /* M/q, the potential's term, at the cost of a product */
+            }
         }
-        for (int i = 0; i < cnt; i++)
-            ax[c + i] = gx[i], ay[c + i] = gy[i], ap[c + i] = gp[i];
+    } else {
+        for (int j = 0; j < w->len; j++) {
+            double X = w->lx[j], Y = w->ly[j], M = w->lm[j];
+            for (int i = 0; i < block; i++) {
+                double ex = xr[i] - X, ey = yr[i] - Y, q2 = ex * ex + ey * ey;
+                double s = q2 > 0 ? M / (q2 * sqrt(q2)) : 0;
+                gx[i] += s * ex;
+                gy[i] += s * ey;
+                gp[i] += s * q2;
+            }
+        }
     }
+    for (int i = 0; i < cnt; i++)
+        ax[c + i] = gx[i], ay[c + i] = gy[i], ap[c + i] = gp[i];
+}
+
+/* Add Σ_list M (x_r - X)/q³ to (ax, ay) and Σ_list M/q to ap for the
+ * group's bodies [lo, hi), each body's sum in list order: BLOCK bodies at
+ * a time, a rest of one or two by two lanes (at most one lane of a group
+ * is padding). On x86-64 an AVX2 copy is chosen at load time where the
+ * processor has it: 4 lanes, not 2, of the same IEEE operations (no FMA),
+ * hence the same bits. */
+SW_CLONES
+static void sum_list(const tree_work *w, int lo, int hi, double e2, double *ax, double *ay, double *ap)
+{
+    int c = lo;
+    for (; hi - c >= 3; c += BLOCK)
+        sum_block(w, c, hi - c < BLOCK ? hi - c : BLOCK, BLOCK, e2, ax, ay, ap);
+    if (hi > c)
+        sum_block(w, c, hi - c, 2, e2, ax, ay, ap);
+}
+
+/* The potential's error bound for the group from the cells it took whole
+ * (their distance² d2 from its box, reach b and second moment Q, in list
+ * order): Σ Q/((d - b)² + ε²)^(3/2), d - b taken as 0 where it is not
+ * positive (see tree_energy). With ε > 0 the terms are computed side by
+ * side ((g + |g|)/2 is g or 0 exactly, without a branch) into d2's place,
+ * then summed in list order. */
+SW_CLONES
+static double group_bound(tree_work *w, double e2)
+{
+    double sum = 0, *restrict term = w->cd2;
+    const double *restrict reach = w->cb, *restrict q = w->cq;
+    int n = w->ncells;
+    if (e2 > 0) {
+        for (int i = 0; i < n; i++) {
+            double gap = sqrt(term[i]) - reach[i], pos = 0.5 * (gap + fabs(gap)), t = pos * pos + e2;
+            term[i] = q[i] / (t * sqrt(t));
+        }
+        for (int i = 0; i < n; i++)
+            sum += term[i];
+    } else {
+        for (int i = 0; i < n; i++) {
+            double gap = sqrt(term[i]) - reach[i], t = gap > 0 ? gap * gap : 0;
+            sum += t > 0 ? q[i] / (t * sqrt(t)) : INFINITY;
+        }
+    }
+    return sum;
 }
 
 /* Append one point mass to the list, summing and emptying it when full. */
@@ -279,32 +341,39 @@ static void list_add(tree_work *w, const tree_node *g, double x, double y, doubl
  * (0 if its centre of mass lies inside) is taken whole when s² < θ² d². */
 static void walk(tree_work *w, const tree_node *g, double theta2, double e2, double *ax, double *ay)
 {
-    int stack[STACK_MAX], top = 0;
     const tree_box *gb = &w->box[g - w->node];
     double x0 = gb->x0, x1 = gb->x1, y0 = gb->y0, y1 = gb->y1;
-    stack[top++] = 0;
     w->len = 0;
+    w->ncells = 0;
     w->group_bound = 0;
-    while (top > 0) {
-        const tree_node *nd = &w->node[stack[--top]];
+    for (int k = 0; k >= 0;) { /* depth first, first child first, without a stack */
+        const tree_node *nd = &w->node[k];
         int holds_g = nd->lo <= g->lo && g->hi <= nd->hi;
         double dx = nd->mx < x0 ? x0 - nd->mx : nd->mx > x1 ? nd->mx - x1 : 0.0;
         double dy = nd->my < y0 ? y0 - nd->my : nd->my > y1 ? nd->my - y1 : 0.0;
         if (!holds_g && nd->size2 < theta2 * (dx * dx + dy * dy)) {
             list_add(w, g, nd->mx, nd->my, nd->m, e2, ax, ay);
             /* the potential's error for any body of g from this cell taken
-             * whole: at most Q/((d - b)² + ε²)^(3/2) (see tree_energy) */
-            double gap = sqrt(dx * dx + dy * dy) - w->mom[nd - w->node].b, t = (gap > 0 ? gap * gap : 0) + e2;
-            w->group_bound += t > 0 ? w->mom[nd - w->node].q / (t * sqrt(t)) : INFINITY;
+             * whole: at most Q/((d - b)² + ε²)^(3/2) (see tree_energy),
+             * summed with the others at the end of the walk */
+            if (w->ncells == LIST_MAX) {
+                w->group_bound += group_bound(w, e2);
+                w->ncells = 0;
+            }
+            const tree_moment *mo = &w->mom[nd - w->node];
+            w->cd2[w->ncells] = dx * dx + dy * dy, w->cb[w->ncells] = mo->b, w->cq[w->ncells] = mo->q;
+            w->ncells++;
+            k = nd->next;
         } else if (nd->count == 0) {
             for (int j = nd->lo; j < nd->hi; j++)
                 list_add(w, g, w->bx[j], w->by[j], w->bm[j], e2, ax, ay);
+            k = nd->next;
         } else {
-            for (int c = nd->first + nd->count - 1; c >= nd->first; c--)
-                stack[top++] = c; /* popped in order: first child first */
+            k = nd->first;
         }
     }
     sum_list(w, g->lo, g->hi, e2, ax, ay, w->ap);
+    w->group_bound += group_bound(w, e2);
 }
 
 /* One pass of the tree at positions x: every body's Σ M (x_r - X)/q³ in
@@ -342,20 +411,27 @@ static int tree_pass(const sw_particles *p, const sw_force *fo, const double *x)
     }
     w->nnodes = 1;
     build(w, 0, 0, n);
+    w->node[0].next = -1; /* a parent comes before its children in the pool */
+    for (int k = 0; k < w->nnodes; k++)
+        for (int c = w->node[k].first, end = c + w->node[k].count; c < end; c++)
+            w->node[c].next = c + 1 < end ? c + 1 : w->node[k].next;
     double *ax = w->ax, *ay = w->ay;
     for (int r = 0; r < n; r++)
         ax[r] = 0, ay[r] = 0, w->ap[r] = 0;
     double theta2 = fo->theta * fo->theta, e2 = fo->soft * fo->soft, bound = 0;
-    int stack[STACK_MAX], top = 0;
-    stack[top++] = 0;
-    while (top > 0) { /* the groups, in tree order */
-        const tree_node *nd = &w->node[stack[--top]];
+    /* q² = |x_r - X|² + ε² lies in [ε², 2 side² + ε²] (bodies and centres of
+     * mass are in the box): where that is inside [1e-100, 1e100], a = q³ is
+     * inside [1e-150, 1e150] and the product of two is a normal number, so
+     * sum_block may share a division between two entries */
+    w->paired = e2 >= 1e-100 && 2 * side * side + e2 <= 1e100;
+    for (int k = 0; k >= 0;) { /* the groups, in tree order */
+        const tree_node *nd = &w->node[k];
         if (nd->hi - nd->lo <= GROUP_MAX || nd->count == 0) {
             walk(w, nd, theta2, e2, ax, ay);
             bound += nd->m * w->group_bound;
+            k = nd->next;
         } else {
-            for (int c = nd->first + nd->count - 1; c >= nd->first; c--)
-                stack[top++] = c;
+            k = nd->first;
         }
     }
     /* Σ m_r φ_r, each body's own term (M/q at q = ε, as the list summed it) taken out */

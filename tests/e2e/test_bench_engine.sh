@@ -60,6 +60,8 @@ for kind in generic base; do
     "$BENCH" --count-probe chain 20 rk4 3 $kind || fail "count probe ($kind) exited $?"
 done
 "$BENCH" --count-probe nosuch 20 rk4 3 generic && fail "count probe accepted an unknown scene"
+"$BENCH" --tree-probe 2000 0.5 2 || fail "tree probe exited $?"
+"$BENCH" --tree-probe 2000 0 2 2>/dev/null; [ $? -eq 2 ] || fail "tree probe took theta = 0"
 # one heavy view alone (paired timings, callgrind): a row, and bad views refused
 one=$("$BENCH" --frame-view vortex 1000 compare+ghost 1 2>&1) || fail "--frame-view exited $?: $one"
 echo "$one" | grep -Fq "  vortex     1000 compare+ghost " || fail "no --frame-view row: $one"

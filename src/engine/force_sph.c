@@ -166,16 +166,25 @@ static inline void each_pair(sph_work *w, const double *x, double h, pair_fn *vi
     w->visited = visited;
 }
 
-/* a's neighbours b > a within √r2max of it, in ascending order, into out
- * (the grid's cells at least that wide): their count. The candidates
+/* The cells on each side a search within √r2max must look at. */
+static int span(const sph_work *w, double r2max)
+{
+    int k = 1;
+    while ((double)k * w->cs * ((double)k * w->cs) < r2max)
+        k++;
+    return k;
+}
+
+/* a's neighbours b > a within √r2max of it, in ascending order, into out:
+ * their count (the fallback when the list does not fit). The candidates
  * whose distance it computes are added to *visited. Each cell's
  * particles are in index order, so each merges in from the top. */
 static int gather(const sph_work *w, const double *x, int a, double r2max, int *out, long *visited)
 {
-    int cx = w->cell[a] % w->nx, cy = w->cell[a] / w->nx, k = 0;
+    int cx = w->cell[a] % w->nx, cy = w->cell[a] / w->nx, k = 0, s = span(w, r2max);
     long seen = 0;
-    for (int oy = cy > 0 ? cy - 1 : 0; oy <= cy + 1 && oy < w->ny; oy++)
-        for (int ox = cx > 0 ? cx - 1 : 0; ox <= cx + 1 && ox < w->nx; ox++) {
+    for (int oy = cy > s ? cy - s : 0; oy <= cy + s && oy < w->ny; oy++)
+        for (int ox = cx > s ? cx - s : 0; ox <= cx + s && ox < w->nx; ox++) {
             int o = oy * w->nx + ox, ib = w->start[o], end = w->start[o + 1];
             for (int hi = end; ib < hi;) { /* the first b > a: the run is ascending */
                 int mid = ib + (hi - ib) / 2;
@@ -201,25 +210,58 @@ static int gather(const sph_work *w, const double *x, int a, double r2max, int *
 }
 
 /* The list at x: every pair within (1 + skin) h, a's partners b > a in
- * ascending order. 0; 1 when it did not fit (w->listed 0: the grid is left
- * at cells (1 + skin) h wide for the evaluation to gather from); -1 when a
- * position is not finite. */
+ * ascending order, by a counting sort: each b's partners a < b are found
+ * first (in cells half the reach wide, a 5 × 5 block of them; each cell's
+ * run is ascending, so it stops at b) into kb, each a counted; then, b by
+ * b in ascending order, each b is put in its partners' rows, which so fill
+ * in ascending order. 0; 1 when it did not fit (w->listed 0: the grid is
+ * left for the evaluation to gather from); -1 when a position is not
+ * finite. */
 static int build(sph_work *w, int n, const double *x, double h)
 {
-    double reach = (1 + w->skin) * h;
+    double reach = (1 + w->skin) * h, r2max = reach * reach;
     w->listed = 0;
-    if (grid(w, n, x, reach) != 0)
+    if (grid(w, n, x, reach / 2) != 0)
         return -1;
-    long m = 0;
-    w->ls[0] = 0;
-    for (int a = 0; a < n; a++) {
-        int k = gather(w, x, a, reach * reach, w->scratch, &w->visited);
-        if (m + k > w->lcap)
-            return 1;
-        for (int j = 0; j < k; j++)
-            w->lb[m + j] = w->scratch[j];
-        w->ls[a + 1] = (int)(m += k);
+    int s = span(w, r2max), *tb = w->ks, *t = w->kb, *cnt = w->ls, *pos = w->scratch;
+    long m = 0, seen = 0;
+    for (int a = 0; a <= n; a++)
+        cnt[a] = 0;
+    for (int b = 0; b < n; b++) {
+        int cx = w->cell[b] % w->nx, cy = w->cell[b] / w->nx;
+        double xb = x[2 * b], yb = x[2 * b + 1];
+        tb[b] = (int)m;
+        for (int oy = cy > s ? cy - s : 0; oy <= cy + s && oy < w->ny; oy++) {
+            int row = oy * w->nx;
+            for (int ox = cx > s ? cx - s : 0; ox <= cx + s && ox < w->nx; ox++) {
+                int ia = w->start[row + ox], end = w->start[row + ox + 1];
+                for (; ia < end; ia++) {
+                    int a = w->order[ia];
+                    if (a >= b)
+                        break;
+                    seen++;
+                    double dx = x[2 * a] - xb, dy = x[2 * a + 1] - yb;
+                    if (dx * dx + dy * dy < r2max) {
+                        if (m == w->lcap) {
+                            w->visited += seen;
+                            return 1;
+                        }
+                        t[m++] = a;
+                        cnt[a + 1]++;
+                    }
+                }
+            }
+        }
     }
+    tb[n] = (int)m;
+    w->visited += seen;
+    for (int a = 0; a < n; a++) {
+        cnt[a + 1] += cnt[a]; /* cnt is ls: a's row starts at ls[a] */
+        pos[a] = cnt[a];
+    }
+    for (int b = 0; b < n; b++)
+        for (int j = tb[b]; j < tb[b + 1]; j++)
+            w->lb[pos[t[j]]++] = b;
     for (int i = 0; i < 2 * n; i++)
         w->xb[i] = x[i];
     w->listed = 1;

@@ -324,22 +324,20 @@ static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
     return kept;
 }
 
-/* a's pair forces from its candidates b (ascending, all > a) within h: f_a
+/* a's pair forces from its neighbours b (ascending, all > a, all within h:
+ * the density pass kept them, or gather found them, by the same test): f_a
  * gets each pair's term and f_b its negative, so every force sums its
  * neighbours in ascending order too; no push when they sit at one point. */
 static void force_row(const sph_ctx *c, int a, const int *cand, int k)
 {
     const sw_force *fo = c->fo;
     const double *x = c->x, *v = c->v, *rho = c->w->rho, *press = c->w->press, *mass = c->p->mass;
-    double *f = c->f, h = fo->h, h2 = c->h2, nvisc = fo->nu * fo->rho0 * 40.0 / c->visc, spk = c->spiky;
+    double *f = c->f, h = fo->h, nvisc = fo->nu * fo->rho0 * 40.0 / c->visc, spk = c->spiky;
     double xa = x[2 * a], ya = x[2 * a + 1], vxa = v[2 * a], vya = v[2 * a + 1], ma = mass[a], rhoa = rho[a],
            pa = press[a], fxa = f[2 * a], fya = f[2 * a + 1];
     for (int j = 0; j < k; j++) {
         int b = cand[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
-        if (!(r2 < h2))
-            continue;
-        double r = sqrt(r2);
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r = sqrt(dx * dx + dy * dy);
         if (!(r > 0))
             continue;
         double mm = ma * mass[b], mm_rr = mm / (rhoa * rho[b]), hr = h - r;

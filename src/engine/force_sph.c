@@ -16,7 +16,9 @@
  * and hold it there (no slip) with a damping -(2c/h)·v.
  * Neighbours come from a Verlet list: every pair within (1 + skin) h, found
  * in a uniform grid (a cell list, counting sort, O(n)) of cells at least
- * that wide over the particles' bounding box, kept across evaluations and
+ * half that wide over the particles' bounding box, put in each particle's
+ * row in ascending order by a second counting sort, kept across
+ * evaluations and
  * built again once a particle has moved skin/2 (then no pair within h can
  * be missing from it). Each particle's sums (density, force) run over its
  * neighbours in ascending index order, whatever found them (the list, a
@@ -490,6 +492,15 @@ double swp_sph_skin(const sw_force *fo, double *rebuild)
     double skin = w ? w->skin : SKIN;
     *rebuild = REBUILD * skin;
     return skin;
+}
+
+int swp_sph_row(const sw_force *fo, int a, const int **row)
+{
+    const sph_work *w = fo->work;
+    if (!w || !w->listed || a < 0 || a >= w->n)
+        return -1;
+    *row = w->lb + w->ls[a];
+    return w->ls[a + 1] - w->ls[a];
 }
 
 void swp_sph_set_skin(const sw_force *fo, double skin)

@@ -18,12 +18,11 @@
  * in a uniform grid (a cell list, counting sort, O(n)) of cells at least
  * half that wide over the particles' bounding box, put in each particle's
  * row in ascending order by a second counting sort, kept across
- * evaluations and
- * built again once a particle has moved skin/2 (then no pair within h can
- * be missing from it). Each particle's sums (density, force) run over its
- * neighbours in ascending index order, whatever found them (the list, a
- * list of another skin, the grid): the same bits, deterministic; the force
- * pass takes the pairs the density pass kept. Invariant: an evaluation
+ * evaluations and built again once a particle has moved skin/2 (then no
+ * pair within h can be missing from it). Each particle's sums (density,
+ * force) run over its neighbours in ascending index order, whatever found
+ * them (the list, a list of another skin, the grid): the same bits,
+ * deterministic; the force pass takes the pairs the density pass kept. Invariant: an evaluation
  * allocates nothing (all is sized when the force is added).
  * The Jacobian it gives is each particle's own estimate (pairs 0): the walls,
  * and for the pressure and the viscosity each neighbour counted twice, as

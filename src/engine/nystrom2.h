@@ -10,22 +10,14 @@
 
 #include "engine/adaptive.h"
 #include "engine/clones.h"
-
-typedef double sw_v2d __attribute__((vector_size(2 * sizeof(double))));
-
-static inline sw_v2d sw_load2(const double *p)
-{
-    sw_v2d v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
+#include "engine/lanes.h"
 
 /* From [x | v] to [x1 | v1] with error estimates ex, ev: RMS of e_i / (atol
  * + rtol·max(|y0_i|, |y1_i|)), the squares in the order [x | v] added by
  * i mod 4; the max as the general body writes it (new_first: m1 > m0 ? m1
  * : m0, rkn's; else m0 > m1 ? m0 : m1, rkn12's: the same but for NaNs).
  * The old state into saved, the new one into y. */
-SW_INLINE void sw_nys2_finish(sw_v2d x, sw_v2d v, sw_v2d x1, sw_v2d v1, sw_v2d ex, sw_v2d ev, double atol,
+SW_INLINE void sw_nys2_finish(v2d x, v2d v, v2d x1, v2d v1, v2d ex, v2d ev, double atol,
                               double rtol, unsigned elim, int new_first, double *y, double *saved,
                               sw_trial_sums *sums)
 {

@@ -22,6 +22,7 @@
 
 #include "engine/clones.h"
 #include "engine/forces.h"
+#include "engine/lanes.h"
 #include "engine/linalg.h"
 #include "stepwise/base.h"
 
@@ -208,10 +209,6 @@ static void scatter(const sw_particles *p, double a, double b, block_sink *sink,
             }
     }
 }
-
-/* Two doubles side by side, lane-wise IEEE operations (the bits of the
- * scalar ones): a band column's two entries of a 2x2 block. */
-typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 
 /* The products a·Kx and b·Kv of a 2x2 block pair, by columns: a0 is Kx's
  * first column (xx, yx) times a, a1 its second (xy, yy), b0 and b1 Kv's

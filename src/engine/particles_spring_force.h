@@ -1,6 +1,5 @@
 /* Private to the particle derivative and the chain's fused rk4
- * (particles_deriv.c, particles_chain.c): a particle's (x, y) as one
- * vector (two particles' as one wider), and the spring forces of a block
+ * (particles_deriv.c, particles_chain.c): the spring forces of a block
  * of springs from their differences, one loop without indices that the
  * compiler vectorises. Both paths inline this one function, so a spring's
  * force is the same operations in the same order (the same bits) wherever
@@ -12,25 +11,7 @@
 #include <string.h>
 
 #include "engine/clones.h"
-
-/* A particle's (x, y) as one value, so a pair of components moves and
- * subtracts as one (a GNU C vector, which gcc and clang support; each
- * operation is the elementwise IEEE operation, so the bits are those of two
- * scalar ones). */
-typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
-
-static inline v2d load2(const double *p)
-{
-    v2d v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-static inline void store2(double *p, v2d v) { memcpy(p, &v, sizeof v); }
-
-/* Two particles' (x, y) as one value, for loops that read neighbours in order. */
-typedef double v4d __attribute__((vector_size(4 * sizeof(double))));
-/* (no functions that take or return one: without AVX that changes the ABI) */
+#include "engine/lanes.h"
 
 /* The sign bit set when l2 (a sum of squares: +0 or more, or NaN) is below
  * 1e-290 or NaN, i.e. when !(l2 >= 1e-290), from its bits alone: below, its

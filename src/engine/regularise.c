@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "engine/lanes.h"
 #include "engine/ode_fast.h"
 #include "stepwise/base.h"
 
@@ -41,7 +42,6 @@ static void lc_deriv(void *ctx, double s, const double *w, double *f)
  * cache). Lane-wise IEEE operations in the same order: the same bits. */
 static void lc_deriv_alone(void *ctx, double s, const double *w, double *f)
 {
-    typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
     (void)ctx, (void)s;
     v2d u, up, half_h = { 0.5 * w[4], 0.5 * w[4] };
     memcpy(&u, w, sizeof u);

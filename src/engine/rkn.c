@@ -111,32 +111,32 @@ SW_CLONES static void rkn_range(RKN_ARGS) { rkn_body(RKN_PASS(d)); }
  * acceleration stay in registers: no call, no trip through memory from
  * one stage to the next; the same bits (spring_inline_same_bits in
  * tests/check_rkn.c). As rkn12's one-particle entry does for the orbit. */
-static inline sw_v2d spring_accel2(const sw_spring1 *sp, sw_v2d X)
+static inline v2d spring_accel2(const sw_spring1 *sp, v2d X)
 {
     double ax, ay;
     sw_spring1_accel(sp, X[0], X[1], &ax, &ay);
-    return (sw_v2d){ ax, ay };
+    return (v2d){ ax, ay };
 }
 
-#define W(c) ((sw_v2d){ (c), (c) })
+#define W(c) ((v2d){ (c), (c) })
 #define STAGE2(C, EXPR) spring_accel2(sp, x + W((C) * h) * v + hh * (EXPR))
 
 static __attribute__((noinline)) void rkn_spring(RKN_ARGS, const sw_spring1 *sp)
 {
     (void)ode, (void)t, (void)d, (void)k2, (void)k3, (void)k4, (void)k5, (void)yt;
-    const sw_v2d hh = W(h * h), hv = W(h), x = sw_load2(y), v = sw_load2(y + 2), a1 = sw_load2(k1 + 2);
-    const sw_v2d a2 = STAGE2(RKN_C2, W(RKN_A21) * a1);
-    const sw_v2d a3 = STAGE2(RKN_C3, W(RKN_A31) * a1 + W(RKN_A32) * a2);
-    const sw_v2d a4 = STAGE2(RKN_C4, W(RKN_A41) * a1 + W(RKN_A42) * a2 + W(RKN_A43) * a3);
-    const sw_v2d a5 = STAGE2(RKN_C5, W(RKN_A51) * a1 + W(RKN_A52) * a2 + W(RKN_A53) * a3 + W(RKN_A54) * a4);
-    const sw_v2d x1 = x + hv * v + hh * (W(RKN_BX1) * a1 + W(RKN_BX2) * a2 + W(RKN_BX3) * a3 + W(RKN_BX4) * a4 +
+    const v2d hh = W(h * h), hv = W(h), x = load2(y), v = load2(y + 2), a1 = load2(k1 + 2);
+    const v2d a2 = STAGE2(RKN_C2, W(RKN_A21) * a1);
+    const v2d a3 = STAGE2(RKN_C3, W(RKN_A31) * a1 + W(RKN_A32) * a2);
+    const v2d a4 = STAGE2(RKN_C4, W(RKN_A41) * a1 + W(RKN_A42) * a2 + W(RKN_A43) * a3);
+    const v2d a5 = STAGE2(RKN_C5, W(RKN_A51) * a1 + W(RKN_A52) * a2 + W(RKN_A53) * a3 + W(RKN_A54) * a4);
+    const v2d x1 = x + hv * v + hh * (W(RKN_BX1) * a1 + W(RKN_BX2) * a2 + W(RKN_BX3) * a3 + W(RKN_BX4) * a4 +
                                       W(RKN_BX5) * a5);
-    const sw_v2d ex = hh * (W(RKN_BX1 - RKN_HX1) * a1 + W(RKN_BX2 - RKN_HX2) * a2 + W(RKN_BX3 - RKN_HX3) * a3 +
+    const v2d ex = hh * (W(RKN_BX1 - RKN_HX1) * a1 + W(RKN_BX2 - RKN_HX2) * a2 + W(RKN_BX3 - RKN_HX3) * a3 +
                          W(RKN_BX4 - RKN_HX4) * a4 + W(RKN_BX5 - RKN_HX5) * a5);
-    const sw_v2d a6 = spring_accel2(sp, x1);
-    const sw_v2d v1 = v + hv * (W(RKN_BV1) * a1 + W(RKN_BV2) * a2 + W(RKN_BV3) * a3 + W(RKN_BV4) * a4 +
+    const v2d a6 = spring_accel2(sp, x1);
+    const v2d v1 = v + hv * (W(RKN_BV1) * a1 + W(RKN_BV2) * a2 + W(RKN_BV3) * a3 + W(RKN_BV4) * a4 +
                              W(RKN_BV5) * a5 + W(RKN_BV6) * a6);
-    const sw_v2d ev = hv * (W(RKN_BV1 - RKN_HV1) * a1 + W(RKN_BV2 - RKN_HV2) * a2 + W(RKN_BV3 - RKN_HV3) * a3 +
+    const v2d ev = hv * (W(RKN_BV1 - RKN_HV1) * a1 + W(RKN_BV2 - RKN_HV2) * a2 + W(RKN_BV3 - RKN_HV3) * a3 +
                          W(RKN_BV4 - RKN_HV4) * a4 + W(RKN_BV5 - RKN_HV5) * a5);
     sw_nys2_finish(x, v, x1, v1, ex, ev, atol, rtol, elim, 1, y, saved, sums);
     memcpy(k6, &v1, sizeof v1); /* [v | a] at the new state, as the derivative writes it */

@@ -126,8 +126,8 @@ SW_CLONES static void rkn12_range(RKN12_ARGS) { rkn12_body(RKN12_PASS(d)); }
  * again (orbit_field_inline_same_bits). */
 /* a at X: inline from the field or the spring, or through the derivative
  * into k. */
-SW_INLINE sw_v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, const sw_spring1 *spring, double t,
-                     double *yt, sw_v2d X, double *k)
+SW_INLINE v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, const sw_spring1 *spring, double t,
+                     double *yt, v2d X, double *k)
 {
     if (field || spring) {
         double ax, ay;
@@ -135,34 +135,34 @@ SW_INLINE sw_v2d accel2(sw_ode *ode, const sw_central1 *field, int canon, const 
             sw_central1_accel(field, canon, X[0], X[1], &ax, &ay);
         else
             sw_spring1_accel(spring, X[0], X[1], &ax, &ay);
-        return (sw_v2d){ ax, ay };
+        return (v2d){ ax, ay };
     }
     memcpy(yt, &X, sizeof X);
     sw_eval_slice(ode, t, 4, yt, k);
-    return sw_load2(k + 2);
+    return load2(k + 2);
 }
 
-#define F(j, w) (sw_v2d){ (w), (w) } * A##j
-#define T(j, w) +(sw_v2d){ (w), (w) } * A##j
+#define F(j, w) (v2d){ (w), (w) } * A##j
+#define T(j, w) +(v2d){ (w), (w) } * A##j
 #define STAGE(st, c, terms)                                                                               \
-    const sw_v2d X##st = x + (sw_v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
-    const sw_v2d A##st = accel2(ode, field, canon, spring, t + (c) * h, yt, X##st, k[(st) - 1]);
+    const v2d X##st = x + (v2d){ (c) * h, (c) * h } * v + hh * (terms);                                  \
+    const v2d A##st = accel2(ode, field, canon, spring, t + (c) * h, yt, X##st, k[(st) - 1]);
 
 /* field and spring: NULL (call the derivative), or the orbit's field or the
  * stiff spring's (at most one), canon a constant. */
 SW_INLINE void rkn12_one(RKN12_ARGS, const sw_central1 *field, int canon, const sw_spring1 *spring)
 {
     (void)d, (void)q; /* (the squares wait in registers: sw_nys2_finish) */
-    const sw_v2d hh = { h * h, h * h }, hv = { h, h }, x = sw_load2(y), v = sw_load2(y + 2);
-    const sw_v2d A1 = sw_load2(k[0] + 2);
+    const v2d hh = { h * h, h * h }, hv = { h, h }, x = load2(y), v = load2(y + 2);
+    const v2d A1 = load2(k[0] + 2);
     memcpy(yt + 2, &v, sizeof v);
     SW_RKN12_STAGES(STAGE, F, T)
-    const sw_v2d x1 = x + hv * v + hh * (SW_RKN12_BX(F, T)), v1 = v + hv * (SW_RKN12_BV(F, T));
-    const sw_v2d ex = hh * (SW_RKN12_EX(F, T)), ev = hv * (SW_RKN12_EV(F, T));
+    const v2d x1 = x + hv * v + hh * (SW_RKN12_BX(F, T)), v1 = v + hv * (SW_RKN12_BV(F, T));
+    const v2d ex = hh * (SW_RKN12_EX(F, T)), ev = hv * (SW_RKN12_EV(F, T));
     sw_nys2_finish(x, v, x1, v1, ex, ev, atol, rtol, elim, 0, y, saved, sums);
     if (field || spring) { /* [v | a] at the new state, as the derivative writes it */
         memcpy(k[S], &v1, sizeof v1);
-        const sw_v2d a1 = accel2(ode, field, canon, spring, t + h, yt, x1, k[S]);
+        const v2d a1 = accel2(ode, field, canon, spring, t + h, yt, x1, k[S]);
         memcpy(k[S] + 2, &a1, sizeof a1);
     } else {
         sw_eval_slice(ode, t + h, 4, y, k[S]);

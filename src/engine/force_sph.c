@@ -242,14 +242,16 @@ static int build(sph_work *w, int n, const double *x, double h)
                         break;
                     seen++;
                     double dx = x[2 * a] - xb, dy = x[2 * a + 1] - yb;
-                    if (dx * dx + dy * dy < r2max) {
-                        if (m == w->lcap) {
-                            w->visited += seen;
-                            return 1;
-                        }
-                        t[m++] = a;
-                        cnt[a + 1]++;
+                    int in = dx * dx + dy * dy < r2max; /* no branch on it: some 60 % are in */
+                    if (m == w->lcap) {
+                        if (!in)
+                            continue;
+                        w->visited += seen;
+                        return 1;
                     }
+                    t[m] = a;
+                    m += in;
+                    cnt[a + 1] += in;
                 }
             }
         }
@@ -303,7 +305,10 @@ typedef struct sph_ctx {
 /* a's density terms from its candidates b (ascending, all > a) within h:
  * ρ_a and ρ_b both get the pair's term, so every density sums its
  * neighbours in ascending order whatever found them. The pairs within h
- * go to keep (room for k) unless it is NULL; their count. */
+ * are first put in keep (room for k; it may be cand itself: each is
+ * written at or before the candidate it came from) with no branch, then
+ * summed: a candidate's test is no guess for the branch predictor (about
+ * a third of the list's are within h). Their count. */
 static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
 {
     const double *x = c->x, *mass = c->p->mass;
@@ -311,15 +316,15 @@ static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
     int kept = 0;
     for (int j = 0; j < k; j++) {
         int b = cand[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
-        if (r2 < h2) {
-            double q = h2 - r2, t = w6 * q * q * q;
-            ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
-            rho[b] += ma * t;
-            if (keep)
-                keep[kept] = b;
-            kept++;
-        }
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1];
+        keep[kept] = b;
+        kept += dx * dx + dy * dy < h2;
+    }
+    for (int j = 0; j < kept; j++) {
+        int b = keep[j];
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], q = h2 - (dx * dx + dy * dy), t = w6 * q * q * q;
+        ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
+        rho[b] += ma * t;
     }
     rho[a] = ra;
     return kept;
@@ -390,7 +395,7 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
             w->visited += k;
             w->ks[a + 1] = w->ks[a] + density_row(&c, a, w->lb + w->ls[a], k, w->kb + w->ks[a]);
         } else {
-            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), NULL);
+            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), w->scratch);
         }
     for (int i = 0; i < n; i++) {
         double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;

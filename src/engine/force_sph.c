@@ -43,6 +43,7 @@ typedef struct sph_work {
     int nx, ny;
     double skin;        /* the list's reach beyond h, in units of h */
     double *xb;         /* the positions the list was built at */
+    double *r2;         /* n: one row's kept pairs' squared distances */
     int *ls, *lb;       /* the list: a's candidates b > a, ascending, are lb[ls[a] .. ls[a + 1]) */
     int *ks, *kb;       /* while listed, the pairs within h the density pass kept: a's are kb[ks[a] .. ks[a + 1]) */
     long lcap;          /* room in lb, and so in kb (the kept are some of the list's) */
@@ -64,14 +65,14 @@ typedef struct sph_work {
 #define REBUILD 0.49 /* of the skin: a move this long rebuilds the list (half, less a margin for rounding) */
 #define LIST_EACH 40
 
-/* One block: the header, then rho, press, xb (n, n, 2n doubles), then
+/* One block: the header, then rho, press, xb, r2 (n, n, 2n, n doubles), then
  * cell, order, scratch (n each), start (ncap + 1), ls and ks (n + 1 each),
  * lb and kb; the system frees it. */
 static void *sph_work_new(int n)
 {
     int ncap = 4 * n + 64;
     size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, lcap = (size_t)LIST_EACH * n;
-    char *block = calloc(1, head + (size_t)4 * n * sizeof(double) +
+    char *block = calloc(1, head + (size_t)5 * n * sizeof(double) +
                                 ((size_t)3 * n + ncap + 1 + 2 * ((size_t)n + 1) + 2 * lcap) * sizeof(int));
     if (!block)
         return NULL;
@@ -82,7 +83,8 @@ static void *sph_work_new(int n)
     w->rho = (double *)(block + head);
     w->press = w->rho + n;
     w->xb = w->press + n;
-    w->cell = (int *)(w->xb + 2 * (size_t)n);
+    w->r2 = w->xb + 2 * (size_t)n;
+    w->cell = (int *)(w->r2 + n);
     w->order = w->cell + n;
     w->scratch = w->order + n;
     w->start = w->scratch + n;
@@ -306,23 +308,25 @@ typedef struct sph_ctx {
  * ρ_a and ρ_b both get the pair's term, so every density sums its
  * neighbours in ascending order whatever found them. The pairs within h
  * are first put in keep (room for k; it may be cand itself: each is
- * written at or before the candidate it came from) with no branch, then
- * summed: a candidate's test is no guess for the branch predictor (about
- * a third of the list's are within h). Their count. */
+ * written at or before the candidate it came from), their squared
+ * distances in w->r2, with no branch, then summed: a candidate's test is
+ * no guess for the branch predictor (about a third of the list's are
+ * within h). Their count. */
 static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
 {
     const double *x = c->x, *mass = c->p->mass;
-    double *rho = c->w->rho, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
+    double *rho = c->w->rho, *r2 = c->w->r2, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
     int kept = 0;
     for (int j = 0; j < k; j++) {
         int b = cand[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1];
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], d2 = dx * dx + dy * dy;
         keep[kept] = b;
-        kept += dx * dx + dy * dy < h2;
+        r2[kept] = d2;
+        kept += d2 < h2;
     }
     for (int j = 0; j < kept; j++) {
         int b = keep[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], q = h2 - (dx * dx + dy * dy), t = w6 * q * q * q;
+        double q = h2 - r2[j], t = w6 * q * q * q;
         ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
         rho[b] += ma * t;
     }

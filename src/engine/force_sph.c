@@ -214,11 +214,10 @@ static int gather(const sph_work *w, const double *x, int a, double r2max, int *
 
 /* The list at x: every pair within (1 + skin) h, a's partners b > a in
  * ascending order, by a counting sort: each b's partners a < b are found
- * first (in cells half the reach wide, a 5 × 5 block of them; a row of
- * five cells is one run of order, scanned whole, a < b and the distance
- * tested with no branch) into kb, in any order, and each a counted; then,
- * b by b in ascending order, each b is put in its partners' rows, which so
- * fill in ascending order. 0; 1 when it did not fit (w->listed 0: the grid is
+ * first (in cells half the reach wide, a 5 × 5 block of them; each cell's
+ * run is ascending, so it stops at b) into kb, each a counted; then, b by
+ * b in ascending order, each b is put in its partners' rows, which so fill
+ * in ascending order. 0; 1 when it did not fit (w->listed 0: the grid is
  * left for the evaluation to gather from); -1 when a position is not
  * finite. */
 static int build(sph_work *w, int n, const double *x, double h)
@@ -233,31 +232,34 @@ static int build(sph_work *w, int n, const double *x, double h)
         cnt[a] = 0;
     for (int b = 0; b < n; b++) {
         int cx = w->cell[b] % w->nx, cy = w->cell[b] / w->nx;
-        int ox0 = cx > s ? cx - s : 0, ox1 = cx + s < w->nx ? cx + s : w->nx - 1;
         double xb = x[2 * b], yb = x[2 * b + 1];
         tb[b] = (int)m;
         for (int oy = cy > s ? cy - s : 0; oy <= cy + s && oy < w->ny; oy++) {
-            int row = oy * w->nx, end = w->start[row + ox1 + 1];
-            for (int ia = w->start[row + ox0]; ia < end; ia++) { /* a row's cells are one run of order */
-                int a = w->order[ia], below = a < b;
-                double dx = x[2 * a] - xb, dy = x[2 * a + 1] - yb;
-                int in = below & (dx * dx + dy * dy < r2max); /* no branch on either */
-                seen += below;
-                if (m == w->lcap) {
-                    if (!in)
-                        continue;
-                    w->visited += seen;
-                    return 1;
+            int row = oy * w->nx;
+            for (int ox = cx > s ? cx - s : 0; ox <= cx + s && ox < w->nx; ox++) {
+                int ia = w->start[row + ox], end = w->start[row + ox + 1];
+                for (; ia < end; ia++) {
+                    int a = w->order[ia];
+                    if (a >= b)
+                        break;
+                    seen++;
+                    double dx = x[2 * a] - xb, dy = x[2 * a + 1] - yb;
+                    int in = dx * dx + dy * dy < r2max; /* no branch on it: some 60 % are in */
+                    if (m == w->lcap) {
+                        if (!in)
+                            continue;
+                        w->visited += seen;
+                        return 1;
+                    }
+                    t[m] = a;
+                    m += in;
+                    cnt[a + 1] += in;
                 }
-                t[m] = a;
-                m += in;
             }
         }
     }
     tb[n] = (int)m;
     w->visited += seen;
-    for (long j = 0; j < m; j++)
-        cnt[t[j] + 1]++;
     for (int a = 0; a < n; a++) {
         cnt[a + 1] += cnt[a]; /* cnt is ls: a's row starts at ls[a] */
         pos[a] = cnt[a];

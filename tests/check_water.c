@@ -260,17 +260,68 @@ START_TEST(sph_list_same_bits_any_skin)
 }
 END_TEST
 
+/* The derivative at y. */
+static void deriv_at(sw_sim *s, const double *y, double *d)
+{
+    s->sys.ode->deriv(s->sys.ode->ctx, 0.0, y, d);
+}
+
+/* The list's rows against every pair (engine/force_sph.c builds them by
+ * a counting sort in cells half the reach wide): each particle's row
+ * holds exactly the partners b > a within (1 + skin) h of it, ascending,
+ * found here by the distance of every pair. The dam of 1000 broken for
+ * 200 steps of 0.5 ms (particles far from their lattice order), skins
+ * 0.8 h and 0 (the reach h: a span of two cells), and again with one
+ * particle thrown far above the box (the bounding box so tall the cells
+ * are doubled to more than the reach: a span of one). */
+static void rows_are_every_pair(sw_sim *s, double skin)
+{
+    const sw_force *fo = sph_of(s);
+    swp_sph_set_skin(fo, skin);
+    int n = s->sys.n, dim = s->sys.ode->dim;
+    double *d = malloc((size_t)dim * sizeof *d), reach = (1 + skin) * fo->h;
+    ck_assert(d);
+    deriv_at(s, s->sys.y, d);
+    const double *x = s->sys.y;
+    long pairs = 0;
+    for (int a = 0; a < n; a++) {
+        const int *row;
+        int k = swp_sph_row(fo, a, &row), j = 0;
+        ck_assert_int_ge(k, 0);
+        for (int b = a + 1; b < n; b++) {
+            double dx = x[2 * a] - x[2 * b], dy = x[2 * a + 1] - x[2 * b + 1];
+            if (dx * dx + dy * dy < reach * reach) {
+                ck_assert_msg(j < k && row[j] == b, "skin %g: row %d lacks %d at %d", skin, a, b, j);
+                j++;
+            }
+        }
+        ck_assert_msg(j == k, "skin %g: row %d holds %d, every pair %d", skin, a, k, j);
+        pairs += k;
+    }
+    ck_assert_int_gt(pairs, 3 * n); /* a fluid's rows, not empty ones */
+    free(d);
+}
+
+START_TEST(sph_list_rows_every_pair)
+{
+    sw_sim s;
+    water_sim(&s, "n=1000", "symplectic-euler", 0.0005);
+    for (int step = 0; step < 200; step++)
+        ck_assert_int_eq(sw_sim_step(&s), SW_OK);
+    rows_are_every_pair(&s, 0.8);
+    rows_are_every_pair(&s, 0);
+    s.sys.y[1] += 400.0;
+    rows_are_every_pair(&s, 0.8);
+    sw_sim_free(&s);
+}
+END_TEST
+
 /* The list is rebuilt once a particle has moved skin/2 since it was built,
  * and not before; either way the derivative is the plain walk's (skin 0),
  * bit for bit. A column at rest (skin 0.5 h): one particle moved 0.45 of
  * skin/2 (list kept), 1.1 of it (rebuilt), then put 0.5 h beside a
  * particle some rows away, a pair the kept list lacks (rebuilt, and the
  * pair counts: that particle's acceleration changes). */
-static void deriv_at(sw_sim *s, const double *y, double *d)
-{
-    s->sys.ode->deriv(s->sys.ode->ctx, 0.0, y, d);
-}
-
 START_TEST(sph_list_rebuilt_past_skin)
 {
     sw_sim a, b;
@@ -490,11 +541,12 @@ END_TEST
  * them), per particle, on a column at rest of 1e3, 1e4 and 1e5 particles
  * (the same density: the lattice spacing s shrinks as n grows and h = 2 s
  * with it), the skin set to 0.6 h. Independently: the build's cells are
- * 1.6 h = 3.2 s wide and a particle is checked against the particles of
- * its own and the 8 cells around it with a larger index, half of them on
- * average (the relation is symmetric): 9 cells of (3.2 s)² at 1/(s²·√3/2)
- * particles each, less itself, halved: (9·3.2²/(√3/2) - 1)/2 = 53.0 in
- * the bulk; then the evaluation checks the list, the lattice's pairs
+ * half the reach 1.6 h = 3.2 s wide, 1.6 s, and a particle is checked
+ * against the particles of its own and the 24 cells around it (two
+ * cells each way) with a smaller index, half of them on average (the
+ * relation is symmetric): 25 cells of (1.6 s)² at 1/(s²·√3/2) particles
+ * each, less itself, halved: (25·1.6²/(√3/2) - 1)/2 = 36.4 in the bulk;
+ * then the evaluation checks the list, the lattice's pairs
  * within 3.2 s, each once: 36 neighbours (shells at 1, √3, 2, √7, 3 s),
  * 18. A second evaluation at the same state checks the list alone: 18.
  * At every n within [0.8, 1] of those, below them by the cells and the
@@ -505,7 +557,7 @@ END_TEST
 START_TEST(water_neighbours_linear)
 {
     const sw_scene *sc = sw_scene_find("water");
-    double cells = 9 * 3.2 * 3.2 / 0.86602540378443865, bulk[2] = { (cells - 1) / 2 + 18, 18 }, each[2][3];
+    double cells = 25 * 1.6 * 1.6 / 0.86602540378443865, bulk[2] = { (cells - 1) / 2 + 18, 18 }, each[2][3];
     for (int k = 0; k < 3; k++) {
         double p[SW_MAX_PARAMS];
         char err[SW_ERRLEN];
@@ -623,6 +675,7 @@ Suite *make_water_suite(void)
     tcase_add_test(tc, water_deterministic);
     tcase_add_test(tc, sph_list_same_bits_any_skin);
     tcase_add_test(tc, sph_list_rebuilt_past_skin);
+    tcase_add_test(tc, sph_list_rows_every_pair);
     tcase_add_test(tc, water_hydrostatic_column);
     tcase_add_test(tc, water_cfl_limit);
     tcase_add_test(tc, water_cfl_euler);

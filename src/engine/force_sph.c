@@ -16,12 +16,13 @@
  * and hold it there (no slip) with a damping -(2c/h)·v.
  * Neighbours come from a Verlet list: every pair within (1 + skin) h, found
  * in a uniform grid (a cell list, counting sort, O(n)) of cells at least
- * that wide over the particles' bounding box, kept across evaluations and
- * built again once a particle has moved skin/2 (then no pair within h can
- * be missing from it). Each particle's sums (density, force) run over its
- * neighbours in ascending index order, whatever found them (the list, a
- * list of another skin, the grid): the same bits, deterministic; the force
- * pass takes the pairs the density pass kept. Invariant: an evaluation
+ * half that wide over the particles' bounding box, put in each particle's
+ * row in ascending order by a second counting sort, kept across
+ * evaluations and built again once a particle has moved skin/2 (then no
+ * pair within h can be missing from it). Each particle's sums (density,
+ * force) run over its neighbours in ascending index order, whatever found
+ * them (the list, a list of another skin, the grid): the same bits,
+ * deterministic; the force pass takes the pairs the density pass kept. Invariant: an evaluation
  * allocates nothing (all is sized when the force is added).
  * The Jacobian it gives is each particle's own estimate (pairs 0): the walls,
  * and for the pressure and the viscosity each neighbour counted twice, as
@@ -42,6 +43,7 @@ typedef struct sph_work {
     int nx, ny;
     double skin;        /* the list's reach beyond h, in units of h */
     double *xb;         /* the positions the list was built at */
+    double *r2;         /* n: one row's kept pairs' squared distances */
     int *ls, *lb;       /* the list: a's candidates b > a, ascending, are lb[ls[a] .. ls[a + 1]) */
     int *ks, *kb;       /* while listed, the pairs within h the density pass kept: a's are kb[ks[a] .. ks[a + 1]) */
     long lcap;          /* room in lb, and so in kb (the kept are some of the list's) */
@@ -63,14 +65,14 @@ typedef struct sph_work {
 #define REBUILD 0.49 /* of the skin: a move this long rebuilds the list (half, less a margin for rounding) */
 #define LIST_EACH 40
 
-/* One block: the header, then rho, press, xb (n, n, 2n doubles), then
+/* One block: the header, then rho, press, xb, r2 (n, n, 2n, n doubles), then
  * cell, order, scratch (n each), start (ncap + 1), ls and ks (n + 1 each),
  * lb and kb; the system frees it. */
 static void *sph_work_new(int n)
 {
     int ncap = 4 * n + 64;
     size_t head = (sizeof(sph_work) + 15) & ~(size_t)15, lcap = (size_t)LIST_EACH * n;
-    char *block = calloc(1, head + (size_t)4 * n * sizeof(double) +
+    char *block = calloc(1, head + (size_t)5 * n * sizeof(double) +
                                 ((size_t)3 * n + ncap + 1 + 2 * ((size_t)n + 1) + 2 * lcap) * sizeof(int));
     if (!block)
         return NULL;
@@ -81,7 +83,8 @@ static void *sph_work_new(int n)
     w->rho = (double *)(block + head);
     w->press = w->rho + n;
     w->xb = w->press + n;
-    w->cell = (int *)(w->xb + 2 * (size_t)n);
+    w->r2 = w->xb + 2 * (size_t)n;
+    w->cell = (int *)(w->r2 + n);
     w->order = w->cell + n;
     w->scratch = w->order + n;
     w->start = w->scratch + n;
@@ -166,16 +169,25 @@ static inline void each_pair(sph_work *w, const double *x, double h, pair_fn *vi
     w->visited = visited;
 }
 
-/* a's neighbours b > a within √r2max of it, in ascending order, into out
- * (the grid's cells at least that wide): their count. The candidates
+/* The cells on each side a search within √r2max must look at. */
+static int span(const sph_work *w, double r2max)
+{
+    int k = 1;
+    while ((double)k * w->cs * ((double)k * w->cs) < r2max)
+        k++;
+    return k;
+}
+
+/* a's neighbours b > a within √r2max of it, in ascending order, into out:
+ * their count (the fallback when the list does not fit). The candidates
  * whose distance it computes are added to *visited. Each cell's
  * particles are in index order, so each merges in from the top. */
 static int gather(const sph_work *w, const double *x, int a, double r2max, int *out, long *visited)
 {
-    int cx = w->cell[a] % w->nx, cy = w->cell[a] / w->nx, k = 0;
+    int cx = w->cell[a] % w->nx, cy = w->cell[a] / w->nx, k = 0, s = span(w, r2max);
     long seen = 0;
-    for (int oy = cy > 0 ? cy - 1 : 0; oy <= cy + 1 && oy < w->ny; oy++)
-        for (int ox = cx > 0 ? cx - 1 : 0; ox <= cx + 1 && ox < w->nx; ox++) {
+    for (int oy = cy > s ? cy - s : 0; oy <= cy + s && oy < w->ny; oy++)
+        for (int ox = cx > s ? cx - s : 0; ox <= cx + s && ox < w->nx; ox++) {
             int o = oy * w->nx + ox, ib = w->start[o], end = w->start[o + 1];
             for (int hi = end; ib < hi;) { /* the first b > a: the run is ascending */
                 int mid = ib + (hi - ib) / 2;
@@ -201,25 +213,60 @@ static int gather(const sph_work *w, const double *x, int a, double r2max, int *
 }
 
 /* The list at x: every pair within (1 + skin) h, a's partners b > a in
- * ascending order. 0; 1 when it did not fit (w->listed 0: the grid is left
- * at cells (1 + skin) h wide for the evaluation to gather from); -1 when a
- * position is not finite. */
+ * ascending order, by a counting sort: each b's partners a < b are found
+ * first (in cells half the reach wide, a 5 × 5 block of them; each cell's
+ * run is ascending, so it stops at b) into kb, each a counted; then, b by
+ * b in ascending order, each b is put in its partners' rows, which so fill
+ * in ascending order. 0; 1 when it did not fit (w->listed 0: the grid is
+ * left for the evaluation to gather from); -1 when a position is not
+ * finite. */
 static int build(sph_work *w, int n, const double *x, double h)
 {
-    double reach = (1 + w->skin) * h;
+    double reach = (1 + w->skin) * h, r2max = reach * reach;
     w->listed = 0;
-    if (grid(w, n, x, reach) != 0)
+    if (grid(w, n, x, reach / 2) != 0)
         return -1;
-    long m = 0;
-    w->ls[0] = 0;
-    for (int a = 0; a < n; a++) {
-        int k = gather(w, x, a, reach * reach, w->scratch, &w->visited);
-        if (m + k > w->lcap)
-            return 1;
-        for (int j = 0; j < k; j++)
-            w->lb[m + j] = w->scratch[j];
-        w->ls[a + 1] = (int)(m += k);
+    int s = span(w, r2max), *tb = w->ks, *t = w->kb, *cnt = w->ls, *pos = w->scratch;
+    long m = 0, seen = 0;
+    for (int a = 0; a <= n; a++)
+        cnt[a] = 0;
+    for (int b = 0; b < n; b++) {
+        int cx = w->cell[b] % w->nx, cy = w->cell[b] / w->nx;
+        double xb = x[2 * b], yb = x[2 * b + 1];
+        tb[b] = (int)m;
+        for (int oy = cy > s ? cy - s : 0; oy <= cy + s && oy < w->ny; oy++) {
+            int row = oy * w->nx;
+            for (int ox = cx > s ? cx - s : 0; ox <= cx + s && ox < w->nx; ox++) {
+                int ia = w->start[row + ox], end = w->start[row + ox + 1];
+                for (; ia < end; ia++) {
+                    int a = w->order[ia];
+                    if (a >= b)
+                        break;
+                    seen++;
+                    double dx = x[2 * a] - xb, dy = x[2 * a + 1] - yb;
+                    int in = dx * dx + dy * dy < r2max; /* no branch on it: some 60 % are in */
+                    if (m == w->lcap) {
+                        if (!in)
+                            continue;
+                        w->visited += seen;
+                        return 1;
+                    }
+                    t[m] = a;
+                    m += in;
+                    cnt[a + 1] += in;
+                }
+            }
+        }
     }
+    tb[n] = (int)m;
+    w->visited += seen;
+    for (int a = 0; a < n; a++) {
+        cnt[a + 1] += cnt[a]; /* cnt is ls: a's row starts at ls[a] */
+        pos[a] = cnt[a];
+    }
+    for (int b = 0; b < n; b++)
+        for (int j = tb[b]; j < tb[b + 1]; j++)
+            w->lb[pos[t[j]]++] = b;
     for (int i = 0; i < 2 * n; i++)
         w->xb[i] = x[i];
     w->listed = 1;
@@ -260,44 +307,47 @@ typedef struct sph_ctx {
 /* a's density terms from its candidates b (ascending, all > a) within h:
  * ρ_a and ρ_b both get the pair's term, so every density sums its
  * neighbours in ascending order whatever found them. The pairs within h
- * go to keep (room for k) unless it is NULL; their count. */
+ * are first put in keep (room for k; it may be cand itself: each is
+ * written at or before the candidate it came from), their squared
+ * distances in w->r2, with no branch, then summed: a candidate's test is
+ * no guess for the branch predictor (about a third of the list's are
+ * within h). Their count. */
 static int density_row(sph_ctx *c, int a, const int *cand, int k, int *keep)
 {
     const double *x = c->x, *mass = c->p->mass;
-    double *rho = c->w->rho, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
+    double *rho = c->w->rho, *r2 = c->w->r2, h2 = c->h2, w6 = c->w6, xa = x[2 * a], ya = x[2 * a + 1], ma = mass[a], ra = rho[a];
     int kept = 0;
     for (int j = 0; j < k; j++) {
         int b = cand[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
-        if (r2 < h2) {
-            double q = h2 - r2, t = w6 * q * q * q;
-            ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
-            rho[b] += ma * t;
-            if (keep)
-                keep[kept] = b;
-            kept++;
-        }
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], d2 = dx * dx + dy * dy;
+        keep[kept] = b;
+        r2[kept] = d2;
+        kept += d2 < h2;
+    }
+    for (int j = 0; j < kept; j++) {
+        int b = keep[j];
+        double q = h2 - r2[j], t = w6 * q * q * q;
+        ra += mass[b] * t; /* b > a: ρ_a is not among the ρ_b */
+        rho[b] += ma * t;
     }
     rho[a] = ra;
     return kept;
 }
 
-/* a's pair forces from its candidates b (ascending, all > a) within h: f_a
+/* a's pair forces from its neighbours b (ascending, all > a, all within h:
+ * the density pass kept them, or gather found them, by the same test): f_a
  * gets each pair's term and f_b its negative, so every force sums its
  * neighbours in ascending order too; no push when they sit at one point. */
 static void force_row(const sph_ctx *c, int a, const int *cand, int k)
 {
     const sw_force *fo = c->fo;
     const double *x = c->x, *v = c->v, *rho = c->w->rho, *press = c->w->press, *mass = c->p->mass;
-    double *f = c->f, h = fo->h, h2 = c->h2, nvisc = fo->nu * fo->rho0 * 40.0 / c->visc, spk = c->spiky;
+    double *f = c->f, h = fo->h, nvisc = fo->nu * fo->rho0 * 40.0 / c->visc, spk = c->spiky;
     double xa = x[2 * a], ya = x[2 * a + 1], vxa = v[2 * a], vya = v[2 * a + 1], ma = mass[a], rhoa = rho[a],
            pa = press[a], fxa = f[2 * a], fya = f[2 * a + 1];
     for (int j = 0; j < k; j++) {
         int b = cand[j];
-        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r2 = dx * dx + dy * dy;
-        if (!(r2 < h2))
-            continue;
-        double r = sqrt(r2);
+        double dx = xa - x[2 * b], dy = ya - x[2 * b + 1], r = sqrt(dx * dx + dy * dy);
         if (!(r > 0))
             continue;
         double mm = ma * mass[b], mm_rr = mm / (rhoa * rho[b]), hr = h - r;
@@ -349,7 +399,7 @@ static void sph_add(const sw_particles *p, const sw_force *fo, const double *x, 
             w->visited += k;
             w->ks[a + 1] = w->ks[a] + density_row(&c, a, w->lb + w->ls[a], k, w->kb + w->ks[a]);
         } else {
-            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), NULL);
+            density_row(&c, a, w->scratch, gather(w, x, a, h2, w->scratch, &w->visited), w->scratch);
         }
     for (int i = 0; i < n; i++) {
         double pressure = w->rho[i] > fo->rho0 ? fo->stiff * (w->rho[i] - fo->rho0) : 0.0;
@@ -450,6 +500,15 @@ double swp_sph_skin(const sw_force *fo, double *rebuild)
     double skin = w ? w->skin : SKIN;
     *rebuild = REBUILD * skin;
     return skin;
+}
+
+int swp_sph_row(const sw_force *fo, int a, const int **row)
+{
+    const sph_work *w = fo->work;
+    if (!w || !w->listed || a < 0 || a >= w->n)
+        return -1;
+    *row = w->lb + w->ls[a];
+    return w->ls[a + 1] - w->ls[a];
 }
 
 void swp_sph_set_skin(const sw_force *fo, double skin)

@@ -95,4 +95,10 @@ void swp_sph_set_skin(const sw_force *fo, double skin);
  * list (in units of h). */
 double swp_sph_skin(const sw_force *fo, double *rebuild);
 
+/* Particle a's row of its neighbour list (its partners b > a within
+ * (1 + skin) h of where the list was built, ascending) into *row, and
+ * their count; -1 while no list is held (before the first evaluation,
+ * after a skin is set, or when the list did not fit). */
+int swp_sph_row(const sw_force *fo, int a, const int **row);
+
 #endif

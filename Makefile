@@ -4,6 +4,14 @@
 
 CC      ?= cc
 PREFIX  ?= /usr/local
+
+# One job a core unless the command line says how many (`make -j1`: one at
+# a time; any -jN wins). Only the top-level make: a recursive one shares
+# its parent's jobs. Not with clean among the goals (`make clean all`).
+ifeq ($(MAKELEVEL)$(filter -j%,$(MAKEFLAGS))$(filter clean,$(MAKECMDGOALS)),0)
+MAKEFLAGS += -j$(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+endif
+
 BUILD   ?= build
 DESTDIR ?=
 OPT     ?= -O2 -g

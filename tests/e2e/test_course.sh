@@ -13,7 +13,8 @@
 # the expectation written below, byte for byte; a regrade of one student
 # keeps every other row; the Gradescope bundle, run as Gradescope runs it
 # (/autograder/source, a fresh submission/ and results/ each time), gives
-# every student of HW5 the class run's score, its hidden part hidden.
+# every student of HW5 the class run's score, its hidden part hidden (at
+# the quick tier one student of each kind of submission, below).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 json="$ROOT/tests/e2e/json.awk"
@@ -241,9 +242,18 @@ grep "^Henri Poincaré" book5.csv | grep -q "nothing of the kind this homework a
     fail "HW5 Henri Poincaré: $(grep Henri book5.csv)"
 
 # ---- the bundle, as Gradescope runs it -----------------------------------
+# Every student at the full tier; at the quick tier (SW_TEST_QUICK) each
+# kind of submission once: the planted ones and one plain honest .so
+# (Katherine Johnson's, whose first line is checked), the 22 other honest
+# .so copies left to make test-full.
 "$SW" autograder --assignment hw5-rk4.txt -o hw5.zip --source "$ROOT" > /dev/null 2>&1 || fail "autograder bundle"
 gs=0
-printf '%s\n' "$names" > names
+if [ -n "${SW_TEST_QUICK:-}" ]; then
+    printf '%s\n' "Ada Lovelace" "Grace Hopper" "Emmy Noether" "Henri Poincaré" "Sofia Kovalevskaya" \
+        "Carl Gauss" "Katherine Johnson" "John von Neumann" "Norbert Wiener" > names
+else
+    printf '%s\n' "$names" > names
+fi
 while IFS= read -r n; do
     r=$WORK/ag; rm -rf "$r"; mkdir -p "$r/source" "$r/submission"
     (cd "$r/source" && unzip -q "$WORK/hw5.zip") || fail "unzip"
@@ -269,4 +279,4 @@ while IFS= read -r n; do
     fi
     gs=$((gs + 1))
 done < names
-[ $gs -eq 32 ] || fail "the bundle ran $gs times"
+[ $gs -eq "$(wc -l < names)" ] && [ $gs -ge 9 ] || fail "the bundle ran $gs times for $(wc -l < names) students"

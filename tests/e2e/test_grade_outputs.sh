@@ -230,28 +230,39 @@ static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "loop", .label = "
 const sw_plugin *sw_plugin_info(void);
 const sw_plugin *sw_plugin_info(void) { return &info; }
 C
-# stop SIGNAL COMMAND...: start it, wait until it has made its directory, signal it
+# stop N SIGNAL COMMAND...: start it, wait until it has made its directory,
+# signal it; in the background, with a TMPDIR of its own (tmp-N), so that
+# the cases run side by side (each holds a second before its signal)
+stops=""
 stop() {
-    sig=$1; shift
-    STEPWISE_PLUGIN_TIMEOUT=60 "$@" >/dev/null 2>&1 &
-    pid=$!
-    wait_until 30 temp_made
-    sleep 1   # into the build or the run (either must leave nothing: not a race the test needs to win)
-    kill -s "$sig" "$pid" 2>/dev/null
-    wait "$pid" 2>/dev/null
-    no_temp_left "$sig to $*"
+    n=$1 sig=$2; shift 2
+    (
+        TMPDIR=$WORK/tmp-$n
+        mkdir "$TMPDIR" || exit 1
+        STEPWISE_PLUGIN_TIMEOUT=60 "$@" >/dev/null 2>&1 &
+        pid=$!
+        wait_until 30 temp_made
+        sleep 1   # into the build or the run (either must leave nothing: not a race the test needs to win)
+        kill -s "$sig" "$pid" 2>/dev/null
+        wait "$pid" 2>/dev/null
+        no_temp_left "$sig to $*"
+    ) > "stop-$n.log" 2>&1 &
+    stops="$stops $n:$!"
 }
-stop INT "$SW" grade --assignment ref.trace plugins
-stop TERM "$SW" grade --assignment ref.trace plugins
-stop KILL "$SW" grade --assignment ref.trace plugins
-stop TERM "$SW" check --plugin plugins/loop.c --reference euler --scene spring
-stop KILL "$SW" check --plugin plugins/loop.c --reference euler --scene spring
-stop TERM "$SW" try plugins/loop.c --no-play
-stop KILL "$SW" try plugins/loop.c --no-play
+stop 1 INT "$SW" grade --assignment ref.trace plugins
+stop 2 TERM "$SW" grade --assignment ref.trace plugins
+stop 3 KILL "$SW" grade --assignment ref.trace plugins
+stop 4 TERM "$SW" check --plugin plugins/loop.c --reference euler --scene spring
+stop 5 KILL "$SW" check --plugin plugins/loop.c --reference euler --scene spring
+stop 6 TERM "$SW" try plugins/loop.c --no-play
+stop 7 KILL "$SW" try plugins/loop.c --no-play
 if env --default-signal=INT true 2>/dev/null; then   # a background job's SIGINT is ignored otherwise
-    stop INT env --default-signal=INT "$SW" check --plugin plugins/loop.c --reference euler --scene spring
-    stop INT env --default-signal=INT "$SW" try plugins/loop.c --no-play
+    stop 8 INT env --default-signal=INT "$SW" check --plugin plugins/loop.c --reference euler --scene spring
+    stop 9 INT env --default-signal=INT "$SW" try plugins/loop.c --no-play
 fi
+for np in $stops; do
+    wait "${np#*:}" || { cat "stop-${np%%:*}.log"; fail "a stopped command left its temporary directory (above)"; }
+done
 "$SW" check --plugin plugins/mine.c --reference euler --scene spring >/dev/null 2>&1
 no_temp_left "check --plugin X.c"
 

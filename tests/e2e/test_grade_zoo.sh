@@ -6,6 +6,9 @@
 # Every record, check (--json) and grade run on each ends within its limit
 # with a one-line verdict (valid JSON where asked), never a pass, no temp
 # file left; play disables a failing plugin and leaves the terminal sane.
+# Most of it waits on the plugins' 2 s watchdogs, so its parts run side by
+# side: each plugin's record and check, the loading and signal cases, the
+# grade of the whole zoo, and play (each part's files its own).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -62,79 +65,76 @@ expect() {
     esac
 }
 
-for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
-    kind=${p%%|*}; words=$(expect "$p" | cut -d'|' -f2); kind=$(expect "$p" | cut -d'|' -f1)
+one_plugin() { # NAME: its record and checks, its files NAME.*
+    p=$1
+    words=$(expect "$p" | cut -d'|' -f2); kind=$(expect "$p" | cut -d'|' -f1)
     # record: the trace up to the step, a one-line verdict, exit 1, no temp
     # file (each timeout guards against a hang: it would give 124, not 1)
-    timeout 20 "$SW" record spring --plugin "./$p.so" --steps 20 -o "$p.trace" >out 2>err; rc=$?
-    [ "$rc" -eq 1 ] || fail "record $p: exit $rc, want 1: $(cat err)"
-    [ "$(wc -l < err)" -eq 1 ] || fail "record $p: stderr is not one line: $(cat err)"
-    grep -Eq "$words.* at step 4" err || fail "record $p: message lacks '$words ... at step 4': $(cat err)"
+    timeout 20 "$SW" record spring --plugin "./$p.so" --steps 20 -o "$p.trace" >"$p.out" 2>"$p.err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "record $p: exit $rc, want 1: $(cat "$p.err")"
+    [ "$(wc -l < "$p.err")" -eq 1 ] || fail "record $p: stderr is not one line: $(cat "$p.err")"
+    grep -Eq "$words.* at step 4" "$p.err" || fail "record $p: message lacks '$words ... at step 4': $(cat "$p.err")"
     ls "$p".trace.tmp.* >/dev/null 2>&1 && fail "record $p left a temporary file"
     grep -q '^# diverged: step 4,' "$p.trace" || fail "record $p: the trace does not end at step 4"
     # step 4 did not run: no row claims it did (the rows end at step 3)
     last=$(grep '^[0-9]' "$p.trace" | tail -1 | cut -d, -f1)
     [ "$last" = 3 ] || fail "record $p: the last row is step $last, want 3 (step 4 failed)"
     # check --json: a failure with the step, valid JSON, never a pass
-    timeout 20 "$SW" check --json --plugin "./$p.so" --reference euler --scene spring --steps 20 >out 2>err; rc=$?
-    [ "$rc" -eq 1 ] || fail "check $p: exit $rc, want 1: $(cat out err)"
-    awk -f "$json" out > fields || fail "check $p: not JSON: $(cat out)"
-    grep -qx 'pass=false' fields || fail "check $p: not a failure"
-    grep -qx "plugin_failure.kind=$kind" fields || fail "check $p: plugin_failure.kind is not $kind: $(grep plugin_failure fields)"
-    grep -qx 'plugin_failure.step=4' fields || fail "check $p: plugin_failure.step is not 4"
-    grep -qx 'failing_step=4' fields || fail "check $p: failing_step is not 4"
+    timeout 20 "$SW" check --json --plugin "./$p.so" --reference euler --scene spring --steps 20 >"$p.out" 2>"$p.err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "check $p: exit $rc, want 1: $(cat "$p.out" "$p.err")"
+    awk -f "$json" "$p.out" > "$p.fields" || fail "check $p: not JSON: $(cat "$p.out")"
+    grep -qx 'pass=false' "$p.fields" || fail "check $p: not a failure"
+    grep -qx "plugin_failure.kind=$kind" "$p.fields" || fail "check $p: plugin_failure.kind is not $kind: $(grep plugin_failure "$p.fields")"
+    grep -qx 'plugin_failure.step=4' "$p.fields" || fail "check $p: plugin_failure.step is not 4"
+    grep -qx 'failing_step=4' "$p.fields" || fail "check $p: failing_step is not 4"
     # and the trace it recorded, checked against its own plugin: still a failure
-    timeout 20 "$SW" check "$p.trace" --plugin "./$p.so" >out 2>err; rc=$?
+    timeout 20 "$SW" check "$p.trace" --plugin "./$p.so" >"$p.out" 2>"$p.err"; rc=$?
     [ "$rc" -eq 1 ] || fail "check $p.trace against its own plugin: exit $rc, want 1 (a fake pass?)"
-done
+}
 
 # NaN: a numerical blow-up, reported as such (record exits 0; check fails).
-"$SW" record spring --plugin ./nan.so --steps 20 -o nan.trace 2>err; rc=$?
-[ "$rc" -eq 0 ] && grep -q 'diverged at step 4 .*non-finite' err || fail "nan record: $rc $(cat err)"
-"$SW" check --json --plugin ./nan.so --reference euler --scene spring --steps 20 >out 2>err
-[ $? -eq 1 ] || fail "nan check: not a failure"
-awk -f "$json" out > fields || fail "nan check: not JSON"
-grep -qx 'plugin_diverged.step=4' fields || fail "nan check: plugin_diverged.step is not 4"
+part_nan() {
+    "$SW" record spring --plugin ./nan.so --steps 20 -o nan.trace 2>nan.err; rc=$?
+    [ "$rc" -eq 0 ] && grep -q 'diverged at step 4 .*non-finite' nan.err || fail "nan record: $rc $(cat nan.err)"
+    "$SW" check --json --plugin ./nan.so --reference euler --scene spring --steps 20 >nan.out 2>nan.err
+    [ $? -eq 1 ] || fail "nan check: not a failure"
+    awk -f "$json" nan.out > nan.fields || fail "nan check: not JSON"
+    grep -qx 'plugin_diverged.step=4' nan.fields || fail "nan check: plugin_diverged.step is not 4"
+}
 
-# Loading: a loop in sw_plugin_info() and a bad name are bad input (exit 2), one line.
-for p in info-loops badname; do
+# Loading: a loop in sw_plugin_info() and a bad name are bad input (exit 2),
+# one line that says why.
+one_load() { # NAME WORDS: record and check --json of it, its files NAME.*
+    p=$1
     for cmd in "record spring --plugin ./$p.so" "check --json --plugin ./$p.so --reference euler --scene spring"; do
         # shellcheck disable=SC2086
-        timeout 20 "$SW" $cmd >out 2>err; rc=$?
+        timeout 20 "$SW" $cmd >"$p.out" 2>"$p.err"; rc=$?
         [ "$rc" -eq 2 ] || fail "$cmd: exit $rc, want 2"
-        [ "$(wc -l < err)" -eq 1 ] || fail "$cmd: stderr is not one line: $(cat err)"
-        case "$cmd" in *--json*) awk -f "$json" out > fields || fail "$cmd: not JSON: $(cat out)" ;; esac
+        [ "$(wc -l < "$p.err")" -eq 1 ] || fail "$cmd: stderr is not one line: $(cat "$p.err")"
+        case "$cmd" in
+            record*) grep -q "$2" "$p.err" || fail "$cmd: no message '$2': $(cat "$p.err")" ;;
+            *--json*) awk -f "$json" "$p.out" > "$p.fields" || fail "$cmd: not JSON: $(cat "$p.out")" ;;
+        esac
     done
-done
-grep -q "did not return within 2 s" err 2>/dev/null || true
-"$SW" record spring --plugin ./info-loops.so 2>&1 | grep -q 'sw_plugin_info() did not return within 2 s' \
-    || fail "info loop: no watchdog message"
-"$SW" record spring --plugin ./badname.so 2>&1 | grep -q "name 'euler ' is not allowed" \
-    || fail "bad name: no message"
-
-# A looping plugin never holds off a signal: with a 60 s watchdog, timeout's
-# SIGTERM after 1 s still ends record, leaving no file behind (a record
-# that held it off would be killed 30 s later: 137, not 124).
-STEPWISE_PLUGIN_TIMEOUT=60 timeout -k 30 1 "$SW" record spring --plugin ./loops.so --steps 20 -o sig.trace 2>err; rc=$?
-[ "$rc" -eq 124 ] || fail "record with a looping plugin under timeout 1: exit $rc: $(cat err)"
-grep -q 'record interrupted at step' err || fail "no interrupt message: $(cat err)"
-ls sig.trace sig.trace.tmp.* >/dev/null 2>&1 && fail "an interrupted record left a file"
+}
 
 # grade: the whole zoo in one command, each a failure or an error, within limits.
-mkdir zoo
-cp exits.so aborts.so segv.so loops.so over-one.so over-many.so over-y.so writes-dim.so nan.so \
-   info-loops.so badname.so zoo/
-cp loops.c zoo/loops-source.c
-printf '# stepwise assignment 1\n# scene: spring\n# integrator: euler\n# dt: 0.02\n# steps: 20\n' > a.txt
-timeout 600 "$SW" grade --assignment a.txt --csv g.csv --results r.json zoo >out 2>err; rc=$?
-[ "$rc" -eq 1 ] || fail "grade the zoo: exit $rc, want 1: $(cat out err)"
-awk -f "$json" r.json > fields || fail "results.json is not JSON"
-# every plugin fails: a class mean of 0, out of the homework's 1 point (values)
-grep -qx 'score=0' fields && grep -qx 'max_score=1' fields || fail "zoo score: $(grep score fields | head -3)"
-[ "$(grep -c ',pass,' g.csv)" -eq 0 ] || fail "a zoo plugin passed: $(cat g.csv)"
-[ "$(wc -l < g.csv)" -eq 13 ] || fail "gradebook rows: $(cat g.csv)"
-grep -q 'loops-source.c,limit,4,the plugin did not return.*,0,1,.$' g.csv || fail "looping .c source: $(cat g.csv)"
-grep -q 'info-loops.so,error,,.*,0,1,.$' g.csv || fail "info loop in grade: $(cat g.csv)"
+part_grade() {
+    mkdir zoo
+    cp exits.so aborts.so segv.so loops.so over-one.so over-many.so over-y.so writes-dim.so nan.so \
+       info-loops.so badname.so zoo/
+    cp loops.c zoo/loops-source.c
+    printf '# stepwise assignment 1\n# scene: spring\n# integrator: euler\n# dt: 0.02\n# steps: 20\n' > a.txt
+    timeout 600 "$SW" grade --assignment a.txt --csv g.csv --results r.json zoo >g.out 2>g.err; rc=$?
+    [ "$rc" -eq 1 ] || fail "grade the zoo: exit $rc, want 1: $(cat g.out g.err)"
+    awk -f "$json" r.json > g.fields || fail "results.json is not JSON"
+    # every plugin fails: a class mean of 0, out of the homework's 1 point (values)
+    grep -qx 'score=0' g.fields && grep -qx 'max_score=1' g.fields || fail "zoo score: $(grep score g.fields | head -3)"
+    [ "$(grep -c ',pass,' g.csv)" -eq 0 ] || fail "a zoo plugin passed: $(cat g.csv)"
+    [ "$(wc -l < g.csv)" -eq 13 ] || fail "gradebook rows: $(cat g.csv)"
+    grep -q 'loops-source.c,limit,4,the plugin did not return.*,0,1,.$' g.csv || fail "looping .c source: $(cat g.csv)"
+    grep -q 'info-loops.so,error,,.*,0,1,.$' g.csv || fail "info loop in grade: $(cat g.csv)"
+}
 
 # play: a failing plugin is disabled with a message, the UI goes on, q leaves a sane terminal.
 # (A pause after each exit: on a loaded machine keys typed the instant the
@@ -154,31 +154,64 @@ sane() {
     esac
     echo "$s" | grep -q 'icanon' || fail "no stty line after $1: $s"
 }
-tmux_start
-for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
-    type_cmd "$SW play spring --plugin ./$p.so -i $p"
-    wait_for "plugin $p disabled" 10 || fail "play: $p was not disabled"
-    wait_for 'spring +euler +dt=0\.02' 5 || fail "play: the UI did not go on under euler after $p"
+part_play() {
+    trap tmux_cleanup EXIT # (its tmux server is this part's: the test's own trap does not know it)
+    tmux_start
+    for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
+        type_cmd "$SW play spring --plugin ./$p.so -i $p"
+        wait_for "plugin $p disabled" 10 || fail "play: $p was not disabled"
+        wait_for 'spring +euler +dt=0\.02' 5 || fail "play: the UI did not go on under euler after $p"
+        keys q
+        sane "play-$p"
+    done
+    # NaN is a numerical blow-up: the banner says so and the UI waits for a key.
+    type_cmd "$SW play spring --plugin ./nan.so -i nan"
+    wait_for 'BLOWN UP at step 4' 10 || fail "play: the NaN plugin's blow-up is not shown"
     keys q
-    sane "play-$p"
+    sane "play-nan"
+    # Refused at load: one line, no curses started, a sane shell.
+    for p in info-loops badname; do
+        type_cmd "$SW play spring --plugin ./$p.so"
+        wait_for "stepwise: --plugin './$p.so'" 10 || fail "play: no one-line refusal of $p"
+        sane "play-$p"
+    done
+    # Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.
+    type_cmd "STEPWISE_PLUGIN_TIMEOUT=60 $SW play spring --plugin ./loops.so -i loops"
+    wait_for 'spring +loops' 5 || fail "play with the looping plugin did not start"
+    stepping() { [ -n "$(child_of "$(app_pid)")" ]; } # the plugin's sandboxed child runs (and loops)
+    wait_until 30 stepping || fail "play: the looping plugin's child never ran"
+    keys C-c
+    wait_exit "Ctrl-C during a plugin loop"
+    sane "play-loop-ctrl-c"
+}
+
+# The parts side by side, each in a subshell with its log; then their verdicts.
+parts=""
+start() { # NAME COMMAND...
+    name=$1; shift
+    ( "$@" ) > "part-$name.log" 2>&1 &
+    parts="$parts $name:$!"
+}
+for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
+    start "$p" one_plugin "$p"
 done
-# NaN is a numerical blow-up: the banner says so and the UI waits for a key.
-type_cmd "$SW play spring --plugin ./nan.so -i nan"
-wait_for 'BLOWN UP at step 4' 10 || fail "play: the NaN plugin's blow-up is not shown"
-keys q
-sane "play-nan"
-# Refused at load: one line, no curses started, a sane shell.
-for p in info-loops badname; do
-    type_cmd "$SW play spring --plugin ./$p.so"
-    wait_for "stepwise: --plugin './$p.so'" 10 || fail "play: no one-line refusal of $p"
-    sane "play-$p"
+start nan part_nan
+start info-loops one_load info-loops 'sw_plugin_info() did not return within 2 s'
+start badname one_load badname "name 'euler ' is not allowed"
+start grade part_grade
+start play part_play
+failed=""
+for np in $parts; do
+    wait "${np#*:}" || { failed="$failed ${np%%:*}"; cat "part-${np%%:*}.log"; }
 done
-# Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.
-type_cmd "STEPWISE_PLUGIN_TIMEOUT=60 $SW play spring --plugin ./loops.so -i loops"
-wait_for 'spring +loops' 5 || fail "play with the looping plugin did not start"
-stepping() { [ -n "$(child_of "$(app_pid)")" ]; } # the plugin's sandboxed child runs (and loops)
-wait_until 30 stepping || fail "play: the looping plugin's child never ran"
-keys C-c
-wait_exit "Ctrl-C during a plugin loop"
-sane "play-loop-ctrl-c"
+[ -z "$failed" ] || fail "the zoo's part(s)$failed failed (above)"
+
+# A looping plugin never holds off a signal: with a 60 s watchdog, timeout's
+# SIGTERM after 1 s still ends record, leaving no file behind (a record
+# that held it off would be killed 30 s later: 137, not 124). (Alone, after
+# the parts: its second is not shared with them.)
+STEPWISE_PLUGIN_TIMEOUT=60 timeout -k 30 1 "$SW" record spring --plugin ./loops.so --steps 20 -o sig.trace 2>err; rc=$?
+[ "$rc" -eq 124 ] || fail "record with a looping plugin under timeout 1: exit $rc: $(cat err)"
+grep -q 'record interrupted at step' err || fail "no interrupt message: $(cat err)"
+ls sig.trace sig.trace.tmp.* >/dev/null 2>&1 && fail "an interrupted record left a file"
 echo "ok"

@@ -8,9 +8,10 @@
 # with a staging DESTDIR and once into a real temporary PREFIX that the
 # binary is then run from. make test-full builds it from nothing (at -O0);
 # the quick tier (SW_TEST_QUICK) starts it from a copy of the objects of
-# the plain build under test, so that only what PREFIX changes is compiled. Lessons: the tree's lessons/*.lesson when there
-# are any; a lesson file dropped into the installed lessons directory in any
-# case, so the lookup is tested even before lessons exist.
+# the plain build under test, so that only what PREFIX changes is compiled.
+# Lessons: the tree's lessons/*.lesson when there are any; a lesson file
+# dropped into the installed lessons directory in any case, so the lookup
+# is tested even before lessons exist.
 . "$(dirname "$0")/lib.sh"
 build="$dir/build"
 mk() { make -s -C "$root" BUILD="$build" BIN="$build/stepwise" OPT=-O0 "$@" >"$dir/make.out" 2>&1 \

@@ -53,7 +53,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
 {
     int n = ode->dim, fresh = 1;
     double *yk = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3), *yj = SW_WORK(s, 4);
-    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
+    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY, size = 0;
     /* -G at the start: h·f(y0 + θΔ) - Δ */
     for (int i = 0; i < n; i++)
         yk[i] = y0[i] + theta * d[i];
@@ -76,10 +76,28 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
             return -1;
         }
         s->newton_iters++;
+        lambda = fmin(1.0, 4.0 * lambda);
+        /* a kept J's full correction that leaves Δ settled (the rule
+         * below, judged before G is evaluated again): Δ = Δ + δ, done */
+        if (keep_j && !fresh && lambda == 1.0) {
+            double dmax = 0;
+            int nan = 0;
+            for (int i = 0; i < n; i++) {
+                double a = fabs(delta[i]);
+                if (a != a)
+                    nan = 1;
+                else if (a > dmax)
+                    dmax = a;
+            }
+            if (swi_newton_settled(nan ? NAN : dmax, size, last_step)) {
+                for (int i = 0; i < n; i++)
+                    d[i] = d[i] + 1.0 * delta[i];
+                return 0;
+            }
+        }
         /* the line search: from four times the last λ (at most 1), halved
          * until |G| falls by the Armijo margin */
         double gnew = INFINITY;
-        lambda = fmin(1.0, 4.0 * lambda);
         for (int tries = 0; tries < 30; tries++) {
             for (int i = 0; i < n; i++)
                 yk[i] = y0[i] + theta * (d[i] + lambda * delta[i]);
@@ -92,8 +110,9 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
             lambda *= 0.5;
         }
         /* Δ = Δ + λδ; |δ|∞ and |y0 + Δ|∞ for the stopping rule */
-        double dmax = 0, size = 0;
+        double dmax = 0;
         int nan = 0;
+        size = 0;
         for (int i = 0; i < n; i++) {
             double a = fabs(delta[i]);
             if (a != a)

@@ -18,6 +18,12 @@
  * kept or a fresh J. SIMPLIFIED_RATE: the contraction a kept J must keep. */
 #define SIMPLIFIED_RATE 0.125
 
+int swi_newton_settled(double step, double size, double last_step)
+{
+    double tol = 1e-12 * SIMPLIFIED_RATE, rate = step / last_step;
+    return step <= tol * size || (rate > 0 && rate < SIMPLIFIED_RATE && rate / (1 - rate) * step <= tol * size);
+}
+
 int swi_newton_next(double step, double size, double gnew, double gnorm, double lambda, int keep_j, int *fresh,
                     double *last_step, const char **why)
 {
@@ -29,9 +35,9 @@ int swi_newton_next(double step, double size, double gnew, double gnorm, double 
     double tol = kept ? 1e-12 * SIMPLIFIED_RATE : 1e-12;
     if (step <= tol * size || gnew == 0)
         return 0;
-    double rate = step / *last_step;
+    double rate = step / *last_step; /* 0 after the first correction: no rate yet */
     *last_step = step;
-    if (kept && lambda == 1.0 && rate < SIMPLIFIED_RATE && rate / (1 - rate) * step <= tol * size)
+    if (kept && lambda == 1.0 && rate > 0 && rate < SIMPLIFIED_RATE && rate / (1 - rate) * step <= tol * size)
         return 0;
     int stalled = !(gnew < gnorm) || lambda < 1.0 / 1024;
     if (stalled && !kept) {
@@ -60,7 +66,10 @@ int swi_newton_next(double step, double size, double gnew, double gnorm, double 
  * or better; a slower or stalled iteration takes J afresh at the current
  * iterate, and only a stall with a fresh J fails. With a kept J the
  * tolerance is an eighth of the above, on the correction or on the error
- * the rate of convergence predicts is left. The iterates are Newton's own
+ * the rate of convergence predicts is left; a correction that meets that
+ * before it is taken (swi_newton_settled: the rate from it and the last
+ * one) is taken with no evaluation after it, which only the descent test
+ * read. The iterates are Newton's own
  * where J does not change (linear systems: the same bits).
  * Without yj, J afresh at every iterate (quadratic convergence: the
  * continuation below, where the start is far from the solution).
@@ -74,7 +83,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
 {
     int n = ode->dim, fresh = 1;
     double *ym = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3);
-    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
+    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY, size = 0;
     const double *at = ym; /* where J is taken */
     swi_start(n, ym, y, theta, d, from_zero); /* ym = y + θ·d, d = 0 first with from_zero */
     sw_ode_eval(ode, te, ym, g);
@@ -104,11 +113,17 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
             return -1;
         }
         s->newton_iters++;
+        lambda = fmin(1.0, 4.0 * lambda);
+        /* a kept J's full correction that leaves the iterate settled needs
+         * no evaluation after it */
+        if (yj && !fresh && lambda == 1.0 && swi_newton_settled(swi_norm_inf(n, delta), size, last_step)) {
+            swi_advance(n, d, 1.0, delta, y, &size);
+            return 0;
+        }
         /* Backtrack until |G| drops (Armijo, halving λ), starting from four
          * times the last accepted λ: a full step where Newton converges,
          * few wasted evaluations where a curved valley needs short ones. */
         double gnew = INFINITY;
-        lambda = fmin(1.0, 4.0 * lambda);
         for (int ls = 0; ls < 30; ls++) {
             swi_trial_point(n, ym, y, theta, d, lambda, delta); /* ym = y + θ·(d + λ·δ) */
             sw_ode_eval(ode, te, ym, g);
@@ -118,7 +133,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
             lambda *= 0.5;
         }
         /* step = λ·|δ|∞, d += λδ and size = |y + d|∞, in one pass */
-        double size, dmax = swi_advance(n, d, lambda, delta, y, &size);
+        double dmax = swi_advance(n, d, lambda, delta, y, &size);
         double step = lambda * dmax;
         int next = swi_newton_next(step, size, gnew, gnorm, lambda, yj != NULL, &fresh, &last_step, &s->why);
         if (next <= 0)

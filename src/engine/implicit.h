@@ -25,10 +25,17 @@ typedef int swi_newton_fn(sw_stepper *s, sw_ode *ode, double t, const double *y,
  * `solve`: 0 with Δ in work vector 0, or SW_EDIVERGED with s->why = why. */
 int swi_newton_continuation(sw_stepper *s, sw_ode *ode, double t, const double *y, double h, double theta,
                             swi_newton_fn *solve, const char *why);
+/* Whether a kept J's full correction of |δ|∞ = step, after one of
+ * last_step (INFINITY: none yet), with |y0 + Δ|∞ = size before it, leaves
+ * Δ within the kept J's tolerance by swi_newton_next's rule: then the
+ * correction is taken without evaluating G after it (both forms). */
+int swi_newton_settled(double step, double size, double last_step);
 /* |v|₂: the sum of squares in four partial sums (component i into sum
  * i mod 4, the tail into sum 0), added (s0 + s2) + (s1 + s3); where that
  * sum would overflow or lose digits, swi_norm2_scaled. */
 double swi_norm2(int n, const double *v);
+/* |v|∞, NaN when any component is. */
+double swi_norm_inf(int n, const double *v);
 /* |v|₂ scaled by the largest component (one serial sum of (v_i/m)²). */
 double swi_norm2_scaled(int n, const double *v);
 /* g = h·g - (d + λ·δ) (the residual -G at the trial iterate); returns |g|₂

@@ -124,6 +124,33 @@ SW_CLONES double swi_advance(int n, double *d, double lambda, const double *delt
     return nan ? NAN : m;
 }
 
+/* |v|∞, NaN when any component is (as sw_norm_inf), four lanes wide
+ * without branches, as swi_advance takes it. */
+SW_CLONES double swi_norm_inf(int n, const double *v)
+{
+    v4d m4 = { 0, 0, 0, 0 };
+    v4i nan4 = { 0, 0, 0, 0 };
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        v4d a;
+        memcpy(&a, v + i, sizeof a);
+        a = (v4d)((v4i)a & MAGNITUDE);
+        nan4 |= a != a;
+        v4i take = a > m4;
+        m4 = (v4d)(((v4i)a & take) | ((v4i)m4 & ~take));
+    }
+    double m = 0;
+    int nan = (nan4[0] | nan4[1] | nan4[2] | nan4[3]) != 0;
+    for (int k = 0; k < 4; k++)
+        m = m4[k] > m ? m4[k] : m;
+    for (; i < n; i++) {
+        double a = fabs(v[i]);
+        nan |= a != a;
+        m = a > m ? a : m;
+    }
+    return nan ? NAN : m;
+}
+
 SW_CLONES void swi_trial_point(int n, double *restrict ym, const double *restrict y, double theta,
                                const double *restrict d, double lambda, const double *restrict delta)
 {

@@ -18,6 +18,21 @@
 
 /* ---- Newton's method -------------------------------------------------- */
 
+/* |v|∞, NaN when any component is. */
+static double norm_inf(int n, const double *v)
+{
+    double m = 0;
+    int nan = 0;
+    for (int i = 0; i < n; i++) {
+        double a = fabs(v[i]);
+        if (a != a)
+            nan = 1;
+        else if (a > m)
+            m = a;
+    }
+    return nan ? NAN : m;
+}
+
 /* |v|₂ from its sum of squares, component i added to partial sum i mod 4
  * (the last n mod 4 components to sum 0), the sums added (s0 + s2) +
  * (s1 + s3); scaled by the largest component where the square would
@@ -53,7 +68,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
 {
     int n = ode->dim, fresh = 1;
     double *yk = SW_WORK(s, 1), *g = SW_WORK(s, 2), *delta = SW_WORK(s, 3), *yj = SW_WORK(s, 4);
-    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY;
+    double te = t + theta * h, c = theta * h, lambda = 1.0, last_step = INFINITY, size = 0;
     /* -G at the start: h·f(y0 + θΔ) - Δ */
     for (int i = 0; i < n; i++)
         yk[i] = y0[i] + theta * d[i];
@@ -76,10 +91,17 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
             return -1;
         }
         s->newton_iters++;
+        lambda = fmin(1.0, 4.0 * lambda);
+        /* a kept J's full correction that leaves Δ settled (the rule
+         * below, judged before G is evaluated again): Δ = Δ + δ, done */
+        if (keep_j && !fresh && lambda == 1.0 && swi_newton_settled(norm_inf(n, delta), size, last_step)) {
+            for (int i = 0; i < n; i++)
+                d[i] = d[i] + 1.0 * delta[i];
+            return 0;
+        }
         /* the line search: from four times the last λ (at most 1), halved
          * until |G| falls by the Armijo margin */
         double gnew = INFINITY;
-        lambda = fmin(1.0, 4.0 * lambda);
         for (int tries = 0; tries < 30; tries++) {
             for (int i = 0; i < n; i++)
                 yk[i] = y0[i] + theta * (d[i] + lambda * delta[i]);
@@ -92,14 +114,9 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
             lambda *= 0.5;
         }
         /* Δ = Δ + λδ; |δ|∞ and |y0 + Δ|∞ for the stopping rule */
-        double dmax = 0, size = 0;
-        int nan = 0;
+        double dmax = norm_inf(n, delta);
+        size = 0;
         for (int i = 0; i < n; i++) {
-            double a = fabs(delta[i]);
-            if (a != a)
-                nan = 1;
-            else if (a > dmax)
-                dmax = a;
             d[i] = d[i] + lambda * delta[i];
             double b = fabs(y0[i] + d[i]);
             if (b > size)
@@ -107,7 +124,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y0, double
         }
         /* stop at rounding level, or take J afresh, or go on (implicit.c:
          * the rule is one for both forms) */
-        int next = swi_newton_next(lambda * (nan ? NAN : dmax), size, gnew, gnorm, lambda, keep_j, &fresh,
+        int next = swi_newton_next(lambda * dmax, size, gnew, gnorm, lambda, keep_j, &fresh,
                                    &last_step, &s->why);
         if (next <= 0)
             return next;

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "engine/lanes.h"
 #include "engine/ode_fast.h"
 #include "stepwise/base.h"
 
@@ -35,21 +34,11 @@ static void lc_deriv(void *ctx, double s, const double *w, double *f)
     f[4] = r * (lc->yb[2] * p1 + lc->yb[3] * p2);
 }
 
-/* The same, alone in the field (P = 0): each pair of f written by one
- * 16-byte store, as the steppers' small entries read them (dop853's six-
- * component one loads 16 bytes at a time: a load that one store wrote is
- * forwarded from it, one that two 8-byte stores wrote waits for the
- * cache). Lane-wise IEEE operations in the same order: the same bits. */
-static void lc_deriv_alone(void *ctx, double s, const double *w, double *f)
+/* The same, alone in the field (P = 0): regularise.h's sw_lc_alone. */
+void sw_lc_deriv_alone(void *ctx, double s, const double *w, double *f)
 {
     (void)ctx, (void)s;
-    v2d u, up, half_h = { 0.5 * w[4], 0.5 * w[4] };
-    memcpy(&u, w, sizeof u);
-    memcpy(&up, w + 2, sizeof up);
-    v2d acc = half_h * u, clock = { 0.0, w[0] * w[0] + w[1] * w[1] };
-    memcpy(f, &up, sizeof up);
-    memcpy(f + 2, &acc, sizeof acc);
-    memcpy(f + 4, &clock, sizeof clock);
+    sw_lc_alone(w, f);
 }
 
 int sw_lc_init(sw_lc *lc, sw_ode *base, double cx, double cy, double mu, char *err, size_t errlen)
@@ -70,7 +59,7 @@ int sw_lc_init(sw_lc *lc, sw_ode *base, double cx, double cy, double mu, char *e
     lc->cy = cy;
     lc->mu = mu;
     lc->alone = sw_ode_central1(base, &c) && c.cx == cx && c.cy == cy && c.mu * c.mass * c.inv == mu;
-    lc->ode = (sw_ode){ .dim = SW_LC_DIM, .order = 1, .deriv = lc->alone ? lc_deriv_alone : lc_deriv, .ctx = lc };
+    lc->ode = (sw_ode){ .dim = SW_LC_DIM, .order = 1, .deriv = lc->alone ? sw_lc_deriv_alone : lc_deriv, .ctx = lc };
     return SW_OK;
 }
 

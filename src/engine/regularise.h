@@ -24,10 +24,32 @@
 
 #include <stddef.h>
 
+#include "engine/lanes.h"
 #include "engine/stepper.h"
 #include "stepwise/ode.h"
 
 enum { SW_LC_DIM = 6 };
+
+/* f = dw/ds alone in the field (P = 0): the oscillator u'' = (h/2)·u and
+ * the clock t' = |u|², each pair of f written by one 16-byte store, as
+ * the steppers' small entries read them (dop853's six-component one loads
+ * 16 bytes at a time: a load that one store wrote is forwarded from it,
+ * one that two 8-byte stores wrote waits for the cache). Lane-wise IEEE
+ * operations: the bits of the scalar ones. Inline, so that a step can
+ * take it into its stages (dop853.c); the regularised system's derivative
+ * is sw_lc_deriv_alone, the same. */
+static inline void sw_lc_alone(const double *w, double *f)
+{
+    v2d half_h = { 0.5 * w[4], 0.5 * w[4] };
+    v2d acc = half_h * load2(w), clock = { 0.0, w[0] * w[0] + w[1] * w[1] };
+    store2(f, load2(w + 2));
+    store2(f + 2, acc);
+    store2(f + 4, clock);
+}
+
+/* The regularised system's derivative alone in the field; a step that
+ * finds it as ode->deriv may call sw_lc_alone instead. */
+sw_deriv_fn sw_lc_deriv_alone;
 
 typedef struct sw_lc {
     sw_ode ode;        /* the regularised system, in s; ode.ctx is this struct */

@@ -3,7 +3,10 @@
  * them in the budget), allocated once when the sim is put on screen.
  * Invariant: restoring a snapshot and stepping gives the states the forward
  * run gave, bit for bit (the method's carried memory is restored with the
- * state, not rebuilt); going back lands on a snapshot, never between. */
+ * state, not rebuilt), but for dop853-lc, whose variables are kept only
+ * while the state is the one its last step left (dop853_lc.c): from a
+ * snapshot it starts again from the particle. Going back lands on a
+ * snapshot, never between. */
 #include "sim/history.h"
 
 #include <math.h>

@@ -148,7 +148,8 @@ static void same(const kept *k, const sw_sim *s, const char *what, int at)
  * the way equal to the forward run's, bit for bit), then forward again:
  * the same states as the first time, bit for bit, for methods that carry
  * memory between steps (Verlet's, yoshida4's, rk45's and rkn's FSAL derivative, the
- * adaptive methods' step proposal; rkn12 under predictive control),
+ * adaptive methods' step proposal; rkn12 under predictive control;
+ * dop853-lc's variables, which it goes on in from the state it left),
  * implicit ones, a scene with events located
  * (bounce), one with scene data (fireworks' sparks), and compare's runs. */
 START_TEST(rewind_bit_for_bit)
@@ -157,7 +158,7 @@ START_TEST(rewind_bit_for_bit)
         { "spring", "verlet", 0, 0, 0 }, { "spring", "rk45", 0.5, 0, 0 }, { "orbit", "dop853", 1, 0, 0 },
         { "stiff-spring", "implicit-euler", 0, 0, 0 }, { "bounce", "rk4", 0, 0, 1 },
         { "fireworks", "heun", 0, 0, 0 }, { "spring", "euler", 0, 1, 0 }, { "orbit", "yoshida4", 0, 0, 0 },
-        { "chain", "rkn", 0.5, 0, 0 }, { "orbit", "rkn12", 1, 0, 0 },
+        { "chain", "rkn", 0.5, 0, 0 }, { "orbit", "rkn12", 1, 0, 0 }, { "orbit", "dop853-lc", 1, 0, 0 },
     };
     enum { N = 300, BACK = 120 };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
@@ -201,52 +202,6 @@ START_TEST(rewind_bit_for_bit)
         free(fwd);
         sw_app_free(&a);
     }
-}
-END_TEST
-
-/* dop853-lc goes on in its regularised variables only from the state its
- * last step left, bit for bit (dop853_lc.c); history keeps nothing of
- * them, so stepping on from a rewind's snapshot starts again from the
- * particle. That run is a function of the snapshot: two rewinds to it
- * step on to the same states, bit for bit. It is not the first run's bits
- * but agrees with it to the tolerances: the energy taken back from the
- * particle differs from the one carried by the steps' errors, under
- * rtol = 1e-6 (the default), so after 50 steps of at most dt = 1 (45 in
- * time, seven orbits) the states differ by 2.4e-5: less than 1e-4 of the
- * orbit's size. */
-START_TEST(rewind_dop853_lc_starts_afresh)
-{
-    enum { N = 100, BACK = SW_APP_BACK_MANY };
-    sw_app a;
-    app_on(&a, "orbit", "dop853-lc", 1);
-    kept fwd[N + 1], again[N + 1];
-    for (int k = 0; k <= N; k++) {
-        if (k > 0)
-            sw_app_key(&a, '.', 0);
-        keep(&fwd[k], &a.sims[0]);
-    }
-    double most = 0;
-    for (int pass = 0; pass < 2; pass++) {
-        sw_app_key(&a, ';', 0);
-        same(&fwd[N - BACK], &a.sims[0], "dop853-lc back", N - BACK);
-        for (int k = N - BACK + 1; k <= N; k++) {
-            sw_app_key(&a, '.', 0);
-            if (pass == 0) {
-                keep(&again[k], &a.sims[0]);
-                for (int i = 0; i < 4; i++)
-                    most = fmax(most, fabs(again[k].y[i] - fwd[k].y[i]));
-            } else {
-                same(&again[k], &a.sims[0], "dop853-lc stepped on twice", k);
-            }
-        }
-    }
-    ck_assert_msg(most > 0 && most < 1e-4, "stepped on from the particle: %g from the first run", most);
-    for (int k = 0; k <= N; k++) {
-        free(fwd[k].y);
-        if (k > N - BACK)
-            free(again[k].y);
-    }
-    sw_app_free(&a);
 }
 END_TEST
 
@@ -630,7 +585,6 @@ Suite *make_timeline_suite(void)
     tcase_add_test(tc, until_key_runs_there);
     tcase_add_test(tc, until_key_keeps_to_its_budget);
     tcase_add_test(tc, rewind_bit_for_bit);
-    tcase_add_test(tc, rewind_dop853_lc_starts_afresh);
     tcase_add_test(tc, snapshot_keeps_controller_memory);
     tcase_add_test(tc, rewind_follows_and_bounds);
     tcase_add_test(tc, lesson_page_until);

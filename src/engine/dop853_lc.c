@@ -12,14 +12,14 @@
  * evaluations, not 13, with no change of variables in. A step from any
  * other state (the first, one set from outside, a rewind's snapshot)
  * starts from the particle as above. So the same settings give the same
- * run, bit for bit, and a step from a restored snapshot is a function of
- * the snapshot alone; history keeps nothing of w, so stepping on after a
- * rewind starts again from the particle and is not the first run's,
- * bit for bit (it agrees to the tolerances). The proposal in s is kept in
+ * run, bit for bit; a snapshot keeps w, its field and dop853's derivative
+ * (sw_dop853_lc_save, below), so a run restored and stepped on repeats
+ * itself bit for bit as every method's does. The proposal in s is kept in
  * the stepper's h_next, where history keeps it. Its lecture form, the same
  * bits: sw_ref_dop853_lc in reference_adaptive.c. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "engine/central.h"
 #include "engine/regularise.h"
@@ -110,4 +110,45 @@ int sw_step_dop853_lc(sw_stepper *s, sw_ode *ode, double *t, double *y, double h
     *t = w[5];
     sw_lc_leave(&r->left, &r->lc, y);
     return SW_OK;
+}
+
+/* What a snapshot keeps of the run (sw_stepper_memory_save): where the
+ * last step left the particle, w, the field it was taken in (cx, cy, mu)
+ * and dop853's first-same-as-last derivative at w with its slot. */
+enum { M_W = 0, M_FIELD = SW_LC_DIM, M_SLOT = M_FIELD + 3, M_F = M_SLOT + 1, M_LEN = M_F + SW_LC_DIM };
+_Static_assert((int)M_LEN <= (int)SW_STEPPER_MEMORY_MAX, "dop853-lc's memory fits a snapshot's room");
+
+int sw_dop853_lc_save(const sw_stepper *s, double *out)
+{
+    const lc_run *r = s->inner;
+    if (!r || !r->left.valid)
+        return 0;
+    memcpy(out + M_W, r->left.w, SW_LC_DIM * sizeof *out);
+    out[M_FIELD] = r->left.cx;
+    out[M_FIELD + 1] = r->left.cy;
+    out[M_FIELD + 2] = r->left.mu;
+    out[M_SLOT] = r->st.fsal;
+    memcpy(out + M_F, r->work + (size_t)r->st.fsal * SW_LC_DIM, SW_LC_DIM * sizeof *out);
+    return M_LEN;
+}
+
+/* The run as it was when its snapshot was taken: the next step from the
+ * restored (t, y) goes on from w, as the first run's did, where the field
+ * is still the one w was taken in (sw_lc_resume compares it). */
+void sw_dop853_lc_load(sw_stepper *s, const double *in, int n, double t, const double *y)
+{
+    lc_run *r = s->inner;
+    int slot = n == M_LEN ? (int)in[M_SLOT] : -1;
+    if (!r || slot < 0 || slot >= SW_DOP853_VECTORS)
+        return;
+    memcpy(r->left.w, in + M_W, SW_LC_DIM * sizeof *in);
+    r->left.valid = 1;
+    r->left.base = r->lc.base;
+    r->left.cx = in[M_FIELD];
+    r->left.cy = in[M_FIELD + 1];
+    r->left.mu = in[M_FIELD + 2];
+    r->left.t = t;
+    memcpy(r->left.y, y, sizeof r->left.y);
+    r->st.fsal = slot;
+    memcpy(r->work + (size_t)slot * SW_LC_DIM, in + M_F, SW_LC_DIM * sizeof *in);
 }

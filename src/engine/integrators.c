@@ -284,6 +284,17 @@ void sw_stepper_free(sw_stepper *s)
 
 void sw_stepper_touch(sw_stepper *s) { s->have_cache = 0; }
 
+int sw_stepper_memory_save(const sw_stepper *s, double *out)
+{
+    return s->method->step == sw_step_dop853_lc ? sw_dop853_lc_save(s, out) : 0;
+}
+
+void sw_stepper_memory_load(sw_stepper *s, const double *in, int n, double t, const double *y)
+{
+    if (n > 0 && s->method->step == sw_step_dop853_lc)
+        sw_dop853_lc_load(s, in, n, t, y);
+}
+
 sw_stepper *sw_stepper_new(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
 {
     if (!m || !ode || !ode->deriv || ode->dim < 1 || (ode->order != 1 && ode->order != 2) ||

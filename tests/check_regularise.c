@@ -4,7 +4,8 @@
  * the code under test), the particle's derivative never called where the
  * field is alone, the perturbed form against a direct run of the same
  * system, the landing on the report time, the evaluations it saves at
- * e = 0.9, and its refusals. */
+ * e = 0.9, a run going on in the variables only from the state it left,
+ * and its refusals. */
 #include <check.h>
 #include <math.h>
 #include <string.h>
@@ -209,6 +210,58 @@ START_TEST(fewer_evaluations_at_the_close_pass)
 }
 END_TEST
 
+/* A run goes on in the variables only from the state its last step left
+ * (sw_lc_resume): with the same system, field, time and state, bit for
+ * bit, it keeps w (here an energy 1e-9 off the one [x | v] gives, as a
+ * step's error leaves it), once; one ulp off in the state or the time,
+ * another system, or a field not alone, and w is taken from the particle. */
+START_TEST(goes_on_only_from_the_state_left)
+{
+    sw_particles p, q;
+    sw_lc lc, other;
+    sw_lc_left left = { 0 };
+    char err[SW_ERRLEN];
+    double y[4], w[SW_LC_DIM];
+    nys_particle(&p, 1, 0.9, 0.0);
+    nys_particle(&q, 1, 0.9, 0.0);
+    ck_assert_int_eq(sw_lc_init_central(&lc, &p.ode, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_lc_init_central(&other, &q.ode, err, sizeof err), SW_OK);
+    ck_assert_int_eq(sw_lc_resume(&left, &lc, 0.0, p.y), 0); /* nothing left yet */
+    ck_assert_int_eq(sw_lc_from(&lc, 0.0, p.y, w), SW_OK);
+    ck_assert(memcmp(left.w, w, sizeof w) == 0);
+    left.w[4] += 1e-9;
+    left.w[5] = 0.5;
+    double kept[SW_LC_DIM];
+    memcpy(kept, left.w, sizeof kept);
+    sw_lc_leave(&left, &lc, y);
+    ck_assert_int_eq(sw_lc_resume(&left, &lc, 0.5, y), 1);
+    ck_assert(memcmp(left.w, kept, sizeof kept) == 0);
+    ck_assert_int_eq(sw_lc_from(&lc, 0.5, y, w), SW_OK);
+    ck_assert(fabs(w[4] - kept[4]) > 5e-10); /* what the particle would have given */
+    ck_assert_int_eq(sw_lc_resume(&left, &lc, 0.5, y), 0); /* the key is spent */
+    for (int k = 0; k < 4; k++) {
+        memcpy(left.w, kept, sizeof kept);
+        sw_lc_leave(&left, &lc, y);
+        double t = 0.5, z[4];
+        memcpy(z, y, sizeof z);
+        sw_lc *in = &lc;
+        if (k == 0)
+            z[0] = nextafter(z[0], 2.0);
+        else if (k == 1)
+            t = nextafter(t, 1.0);
+        else if (k == 2)
+            in = &other;
+        else
+            lc.alone = 0;
+        ck_assert_int_eq(sw_lc_resume(&left, in, t, z), 0);
+        ck_assert_int_eq(sw_lc_from(in, t, z, w), SW_OK);
+        ck_assert_msg(memcmp(left.w, w, sizeof w) == 0, "case %d: not the particle's w", k);
+    }
+    sw_particles_free(&p);
+    sw_particles_free(&q);
+}
+END_TEST
+
 /* Refused, with a message: more than one particle, no field, mu <= 0. */
 START_TEST(refusals_say_what_fits)
 {
@@ -242,6 +295,7 @@ Suite *make_regularise_suite(void)
     tcase_add_test(tc, runs_land_on_the_report_time);
     tcase_add_test(tc, perturbed_against_direct_run);
     tcase_add_test(tc, fewer_evaluations_at_the_close_pass);
+    tcase_add_test(tc, goes_on_only_from_the_state_left);
     tcase_add_test(tc, refusals_say_what_fits);
     suite_add_tcase(s, tc);
     return s;

@@ -108,11 +108,12 @@ static const sw_integrator builtins[] = {
       .summary = "adaptive: x'' = f(x) stepped directly at 12th order, error from an embedded "
                  "10th-order solution",
       .no_lecture = adapts },
-    /* One body alone in one central field only (dop853_lc.c): 12 stages
-     * and the derivative at the start, anew each step; prepare makes the
-     * regularised run it steps. */
+    /* One body alone in one central field only (dop853_lc.c): 12 stages,
+     * the first the last step's derivative at its end (13 on a step from
+     * a state the last step did not leave); prepare makes the regularised
+     * run it steps. */
     { .name = "dop853-lc", .label = "dop853 in Levi-Civita's variables: the Kepler problem regularised",
-      .order = 8, .evals = 13,
+      .order = 8, .evals = 12,
       .flags = SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_ONE_BODY, .stability = 0.0,
       .work_vectors = 1, .step = sw_step_dop853_lc, .prepare = sw_dop853_lc_prepare,
       .summary = "adaptive: x = c + u^2, dt = |x - c| ds: the close pass taken in a clock that slows there",
@@ -282,6 +283,17 @@ void sw_stepper_free(sw_stepper *s)
 }
 
 void sw_stepper_touch(sw_stepper *s) { s->have_cache = 0; }
+
+int sw_stepper_memory_save(const sw_stepper *s, double *out)
+{
+    return s->method->step == sw_step_dop853_lc ? sw_dop853_lc_save(s, out) : 0;
+}
+
+void sw_stepper_memory_load(sw_stepper *s, const double *in, int n, double t, const double *y)
+{
+    if (n > 0 && s->method->step == sw_step_dop853_lc)
+        sw_dop853_lc_load(s, in, n, t, y);
+}
 
 sw_stepper *sw_stepper_new(const sw_integrator *m, const sw_ode *ode, char *err, size_t errlen)
 {

@@ -51,6 +51,7 @@ struct sw_ref_lc {
     sw_lc lc;
     sw_stepper st;        /* its method lc_row, its memory in `in` */
     sw_ref_adaptive in;   /* dop853's lecture form on the regularised state */
+    sw_lc_left left;      /* where the last step left the particle, and w there */
 };
 
 void sw_ref_adaptive_free(sw_ref_adaptive *r)
@@ -406,13 +407,15 @@ int sw_ref_dop853_lc(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, doub
             return SW_ENOMEM;
     }
     struct sw_ref_lc *lc = r->lc;
-    double w[SW_LC_DIM];
+    double *w = lc->left.w;
     if (sw_lc_init_central(&lc->lc, ode, err, sizeof err) != SW_OK)
         return SW_EINVAL;
-    if (sw_lc_from(&lc->lc, *t, y, w) != SW_OK)
+    int resumed = sw_lc_resume(&lc->left, &lc->lc, *t, y);
+    if (resumed < 0)
         return SW_EDIVERGED;
     lc->st = (sw_stepper){ .method = &lc_row, .dim = SW_LC_DIM, .inner = &lc->in, .rtol = r->rtol,
-                           .atol = r->atol, .h_next = r->h_next, .rejected = lc->in.rejected };
+                           .atol = r->atol, .h_next = r->h_next, .rejected = lc->in.rejected,
+                           .have_cache = resumed };
     long rejected = lc->in.rejected;
     int rc = sw_lc_step(&lc->lc, &lc->st, w, h_max);
     ode->evals += lc->lc.ode.evals;
@@ -422,8 +425,8 @@ int sw_ref_dop853_lc(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, doub
     r->accepted++;
     r->h_next = lc->st.h_next;
     r->h_last = w[5] - *t;
-    sw_lc_to(&lc->lc, w, y);
     *t = w[5];
+    sw_lc_leave(&lc->left, &lc->lc, y);
     return SW_OK;
 }
 

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "engine/lanes.h"
 #include "engine/ode_fast.h"
 #include "stepwise/base.h"
 
@@ -35,21 +34,11 @@ static void lc_deriv(void *ctx, double s, const double *w, double *f)
     f[4] = r * (lc->yb[2] * p1 + lc->yb[3] * p2);
 }
 
-/* The same, alone in the field (P = 0): each pair of f written by one
- * 16-byte store, as the steppers' small entries read them (dop853's six-
- * component one loads 16 bytes at a time: a load that one store wrote is
- * forwarded from it, one that two 8-byte stores wrote waits for the
- * cache). Lane-wise IEEE operations in the same order: the same bits. */
-static void lc_deriv_alone(void *ctx, double s, const double *w, double *f)
+/* The same, alone in the field (P = 0): regularise.h's sw_lc_alone. */
+void sw_lc_deriv_alone(void *ctx, double s, const double *w, double *f)
 {
     (void)ctx, (void)s;
-    v2d u, up, half_h = { 0.5 * w[4], 0.5 * w[4] };
-    memcpy(&u, w, sizeof u);
-    memcpy(&up, w + 2, sizeof up);
-    v2d acc = half_h * u, clock = { 0.0, w[0] * w[0] + w[1] * w[1] };
-    memcpy(f, &up, sizeof up);
-    memcpy(f + 2, &acc, sizeof acc);
-    memcpy(f + 4, &clock, sizeof clock);
+    sw_lc_alone(w, f);
 }
 
 int sw_lc_init(sw_lc *lc, sw_ode *base, double cx, double cy, double mu, char *err, size_t errlen)
@@ -70,7 +59,7 @@ int sw_lc_init(sw_lc *lc, sw_ode *base, double cx, double cy, double mu, char *e
     lc->cy = cy;
     lc->mu = mu;
     lc->alone = sw_ode_central1(base, &c) && c.cx == cx && c.cy == cy && c.mu * c.mass * c.inv == mu;
-    lc->ode = (sw_ode){ .dim = SW_LC_DIM, .order = 1, .deriv = lc->alone ? lc_deriv_alone : lc_deriv, .ctx = lc };
+    lc->ode = (sw_ode){ .dim = SW_LC_DIM, .order = 1, .deriv = lc->alone ? sw_lc_deriv_alone : lc_deriv, .ctx = lc };
     return SW_OK;
 }
 
@@ -116,6 +105,39 @@ void sw_lc_to(const sw_lc *lc, const double *w, double *y)
     /* v = 2u'/conj(u) = 2u'·u/r */
     y[2] = 2 * (w[2] * u1 - w[3] * u2) / r;
     y[3] = 2 * (w[2] * u2 + w[3] * u1) / r;
+}
+
+/* a and b hold the same n doubles, bit for bit (-0 is not +0, a NaN is
+ * its own payload): the particle's state as the last step wrote it */
+static int same_bits(const double *a, const double *b, int n)
+{
+    unsigned long long x, y, diff = 0;
+    for (int i = 0; i < n; i++) {
+        memcpy(&x, a + i, sizeof x);
+        memcpy(&y, b + i, sizeof y);
+        diff |= x ^ y;
+    }
+    return diff == 0;
+}
+
+int sw_lc_resume(sw_lc_left *left, const sw_lc *lc, double t, const double *y)
+{
+    int same = left->valid && lc->alone && left->base == lc->base && left->cx == lc->cx && left->cy == lc->cy &&
+               left->mu == lc->mu && same_bits(&left->t, &t, 1) && same_bits(left->y, y, 4);
+    left->valid = 0;
+    return same ? 1 : sw_lc_from(lc, t, y, left->w);
+}
+
+void sw_lc_leave(sw_lc_left *left, const sw_lc *lc, double *y)
+{
+    sw_lc_to(lc, left->w, y);
+    left->valid = 1;
+    left->base = lc->base;
+    left->cx = lc->cx;
+    left->cy = lc->cy;
+    left->mu = lc->mu;
+    left->t = left->w[5];
+    memcpy(left->y, y, sizeof left->y);
 }
 
 /* No component of w is infinite or NaN: the engine's runaway test with

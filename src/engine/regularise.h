@@ -24,10 +24,32 @@
 
 #include <stddef.h>
 
+#include "engine/lanes.h"
 #include "engine/stepper.h"
 #include "stepwise/ode.h"
 
 enum { SW_LC_DIM = 6 };
+
+/* f = dw/ds alone in the field (P = 0): the oscillator u'' = (h/2)·u and
+ * the clock t' = |u|², each pair of f written by one 16-byte store, as
+ * the steppers' small entries read them (dop853's six-component one loads
+ * 16 bytes at a time: a load that one store wrote is forwarded from it,
+ * one that two 8-byte stores wrote waits for the cache). Lane-wise IEEE
+ * operations: the bits of the scalar ones. Inline, so that a step can
+ * take it into its stages (dop853.c); the regularised system's derivative
+ * is sw_lc_deriv_alone, the same. */
+static inline void sw_lc_alone(const double *w, double *f)
+{
+    v2d half_h = { 0.5 * w[4], 0.5 * w[4] };
+    v2d acc = half_h * load2(w), clock = { 0.0, w[0] * w[0] + w[1] * w[1] };
+    store2(f, load2(w + 2));
+    store2(f + 2, acc);
+    store2(f + 4, clock);
+}
+
+/* The regularised system's derivative alone in the field; a step that
+ * finds it as ode->deriv may call sw_lc_alone instead. */
+sw_deriv_fn sw_lc_deriv_alone;
 
 typedef struct sw_lc {
     sw_ode ode;        /* the regularised system, in s; ode.ctx is this struct */
@@ -53,6 +75,34 @@ int sw_lc_init_central(sw_lc *lc, sw_ode *base, char *err, size_t errlen);
  * two square roots of d it takes the one with re(u) >= 0. */
 int sw_lc_from(const sw_lc *lc, double t, const double *y, double *w);
 void sw_lc_to(const sw_lc *lc, const double *w, double *y);
+
+/* A run in the variables, from step to step, alone in the field. They
+ * carry what the particle's state does not: the energy h, the flow's
+ * constant, which taken back from [x | v] would take up each step's error
+ * in u and u' (a drift of the period); and a method's first-same-as-last
+ * derivative is f at w, a function of w alone (sw_lc_alone: no clock, no
+ * parameter). So a step that starts where the last one left the
+ * particle, bit for bit, goes on from w; any other (a rewind, a state set
+ * from outside, a changed field, a new run, a perturbed system) starts
+ * from the particle. */
+typedef struct sw_lc_left {
+    double w[SW_LC_DIM]; /* the regularised state the steps advance */
+    int valid;           /* the key below is where w left the particle: */
+    const sw_ode *base;  /* the system, */
+    double cx, cy, mu;   /* its field, */
+    double t, y[4];      /* the time and the state, bit for bit */
+} sw_lc_left;
+
+/* left->w for a step from (t, y) in lc: 1, w as the last step left it,
+ * where lc is alone in its field and the key is lc's system and field
+ * and (t, y) bit for bit; else 0,
+ * w = sw_lc_from's, or SW_EINVAL where that fails. Either way the key is
+ * then cleared until sw_lc_leave. */
+int sw_lc_resume(sw_lc_left *left, const sw_lc *lc, double t, const double *y);
+
+/* The step in lc ended at left->w: the particle's state into y
+ * (sw_lc_to), and the key set to it and to w's clock. */
+void sw_lc_leave(sw_lc_left *left, const sw_lc *lc, double *y);
 
 /* One step of s, an adaptive method made for lc->ode (its rtol and atol
  * set), from w (its clock at t = w[5]) of at most dt in t: the step the

@@ -83,6 +83,18 @@ sw_step_fn sw_step_dop853_lc;                          /* dop853_lc.c */
  * run it steps; SW_OK, or SW_EINVAL / SW_ENOMEM with err. */
 sw_prepare_fn sw_dop853_lc_prepare;
 
+/* A method's memory beyond the state and the stepper's own fields, for a
+ * snapshot (sim/history.c), so that a run restored and stepped on repeats
+ * itself bit for bit: at most SW_STEPPER_MEMORY_MAX doubles. _save writes
+ * it and returns how many (0: none, the next step needs nothing kept);
+ * _load puts back what _save wrote when the state restored with it is
+ * (t, y). Only dop853-lc has any (its variables: dop853_lc.c). */
+enum { SW_STEPPER_MEMORY_MAX = 16 };
+int sw_stepper_memory_save(const sw_stepper *s, double *out);
+void sw_stepper_memory_load(sw_stepper *s, const double *in, int n, double t, const double *y);
+int sw_dop853_lc_save(const sw_stepper *s, double *out);
+void sw_dop853_lc_load(sw_stepper *s, const double *in, int n, double t, const double *y);
+
 /* Explicit Runge-Kutta steps run over the whole state for coupled systems,
  * or slice by slice (L1-sized) for pointwise ones (flow fields), where
  * every stage of a slice needs only that slice. The stage vectors of a

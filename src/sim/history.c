@@ -3,7 +3,9 @@
  * them in the budget), allocated once when the sim is put on screen.
  * Invariant: restoring a snapshot and stepping gives the states the forward
  * run gave, bit for bit (the method's carried memory is restored with the
- * state, not rebuilt); going back lands on a snapshot, never between. */
+ * state, not rebuilt: the FSAL derivative, the controller's memory, and
+ * what a method keeps beyond them, dop853-lc's variables). Going back
+ * lands on a snapshot, never between. */
 #include "sim/history.h"
 
 #include <math.h>
@@ -20,7 +22,9 @@ struct sw_history_meta {
     double err_last;          /* ... and the last accepted step's error norm */
     long accepted, rejected, newton_iters;
     int have_cache, fsal;     /* the FSAL derivative (kept in the cache ring) */
-    const sw_integrator *method; /* whose cache it is */
+    const sw_integrator *method; /* whose cache and memory they are */
+    int nmemory;              /* the method's memory beyond these (sw_stepper_memory_save) */
+    double memory[SW_STEPPER_MEMORY_MAX];
     long located;             /* events located so far, and the last one's time */
     double last_event;
 };
@@ -110,13 +114,15 @@ void sw_history_push(sw_history *h, const sw_sim *s)
         memcpy(h->cache + (size_t)h->head * dim, SW_WORK(st, st->fsal), dim * sizeof *v);
     if (h->nextra)
         memcpy(v + dim, s->sys.extra, (size_t)h->nextra * sizeof *v);
-    h->meta[h->head] = (struct sw_history_meta){
+    struct sw_history_meta *m = &h->meta[h->head];
+    *m = (struct sw_history_meta){
         .t = s->t, .steps = s->steps, .evals = s->sys.ode->evals,
         .h_next = st->h_next, .h_last = st->h_last, .err_last = st->err_last,
         .accepted = st->accepted, .rejected = st->rejected, .newton_iters = st->newton_iters,
         .have_cache = cache, .fsal = st->fsal, .method = st->method,
         .located = sw_sim_events_located(s), .last_event = sw_sim_events_last_time(s),
     };
+    m->nmemory = sw_stepper_memory_save(st, m->memory);
     h->head = (h->head + 1) % h->cap;
     if (h->count < h->cap)
         h->count++;
@@ -178,6 +184,8 @@ static void restore(const sw_history *h, int i, sw_sim *s)
     st->have_cache = cache;
     st->fsal = cache ? m->fsal : st->fsal;
     st->why = NULL;
+    if (m->method == st->method)
+        sw_stepper_memory_load(st, m->memory, m->nmemory, s->t, s->sys.y);
     sw_sim_events_restore(s, m->located, m->last_event);
     s->blown = 0; /* only states before a blow-up are kept */
     s->blow_step = 0;

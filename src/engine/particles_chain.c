@@ -93,7 +93,8 @@ SW_INLINE void line_forces(const v4d *d, const v4d *dv, double *f, double k, dou
     v4d l2 = dx * dx + dy * dy, l, one = { 1.0, 1.0, 1.0, 1.0 }, tiny = one * 1e-290;
     for (int t = 0; t < 4; t++)
         l[t] = sqrt(l2[t]);
-    v4d q = l + (v4d)((v4di)(l == 0.0) & (v4di)one);
+    v4di zero_l = l == 0.0; /* q = l == 0 ? 1 : l: l + (l == 0)'s value (l is never -0), one step less */
+    v4d q = (v4d)((zero_l & (v4di)one) | (~zero_l & (v4di)l));
     v4d ux = dx / q, uy = dy / q;
     v4d mag = k * (l - rest);
     if (damped) {
@@ -223,7 +224,7 @@ SW_INLINE int line_eval(const sw_particles *p, const double *restrict y, double 
 
 /* One function per combination: gravity (G), drag (K), damped (D). */
 #define LINE(G, K, D)                                                                                   \
-    SW_CLONES static int line_##G##K##D(const sw_particles *p, const double *y, double *dydt)           \
+    SW_CLONES SW_ONE_PASS static int line_##G##K##D(const sw_particles *p, const double *y, double *dydt) \
     {                                                                                                   \
         return line_eval(p, y, dydt, G, K, D);                                                          \
     }

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/particles_chain.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_model.h"
 #include "engine/spring_line.h"
@@ -477,7 +478,8 @@ END_TEST
 
 /* The small chain's fused derivative (particles_chain.c) against the
  * generic passes, bit for bit (memcmp: a NaN's bits too), on chains of 2
- * to 16 beads, damped or not, with gravity (sideways too) and drag or not,
+ * to 16 beads and up to its limit (odd and even), damped or not, with
+ * gravity (sideways too) and drag or not,
  * unequal masses, at random states and at the edges: two beads coincident
  * and 1e-160 apart (the fused path hands these to the generic passes, with
  * their hypot), a bead blown up to infinity (inf and NaN forces through
@@ -485,10 +487,11 @@ END_TEST
  * most of the evaluations, and the chain keeps its fused rk4. */
 START_TEST(line_path_matches_generic)
 {
+    static const int sizes[] = { 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 33, 100, 127, SWP_LINE_BEADS };
     unsigned long long seed = 99;
     int fast = 0, evals = 0;
-    for (int n = 2; n <= 16; n++)
-        for (int kinds = 0; kinds < 8; kinds++) {
+    for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
+        for (int kinds = 0, n = sizes[z]; kinds < 8; kinds++) {
             sw_particles p;
             char err[SW_ERRLEN];
             layout_chain(&p, n, kinds & 1 ? 0.75 : 0.0, 0, 0, 0);
@@ -528,6 +531,12 @@ START_TEST(line_path_matches_generic)
             sw_particles_free(&p);
         }
     ck_assert_int_ge(fast, evals * 11 / 14);
+    sw_particles p; /* one bead more: the generic passes */
+    char err[SW_ERRLEN];
+    layout_chain(&p, SWP_LINE_BEADS + 1, 0.75, 0, 0, 0);
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    ck_assert(p.model->line == NULL);
+    sw_particles_free(&p);
 }
 END_TEST
 

@@ -20,7 +20,7 @@ int swp_chain_layout(const struct sw_particles_model *m, int n);
  * other force; its workspace allocated. */
 int swp_chain_shaped(const sw_particles *p);
 /* Largest chain whose derivative takes the fused path below. */
-#define SWP_LINE_BEADS 32
+#define SWP_LINE_BEADS 128
 /* The chain's derivative fused, for p's compiled forces (a chain layout
  * of at most SWP_LINE_BEADS beads, shared k, c and rest, gravity and drag
  * fused, no other force, no small path), or NULL: the generic passes'

@@ -55,8 +55,9 @@ int swp_chain_shaped(const sw_particles *p)
 
 /* ---- the small chain's derivative (issue 41) ----------------------------
  * The generic passes' arithmetic (particles_deriv.c) on a chain of at most
- * SWP_LINE_BEADS beads, fused into one function over small arrays on the
- * stack, in whole vectors of two springs (a pair) or two beads. Spring
+ * SWP_LINE_BEADS beads, fused into one function: the differences in
+ * registers, the forces into one small array on the stack, in whole
+ * vectors of two springs (a pair) or two beads. Spring
  * slot s is spring s - 1 for 0 < s < n (bead s minus bead s - 1), slot 0
  * the left anchor's, slot n the right anchor's, so that bead i's springs
  * are slots i and i + 1. A spring's force is block_forces' operations in
@@ -132,6 +133,7 @@ SW_INLINE void line_beads(const sw_particles *p, const double *v, int i, v4d fl,
     *nan |= fi != fi;
     memcpy(out, &fi, sizeof fi);
 }
+
 /* Slots 2q and 2q + 1's differences d (and dv): pair 0 holds the left
  * anchor's (x_0 - anchor; dv = v_0 - 0 = v_0) and spring 0's; a whole
  * pair two paired springs; the last one spring n - 2's when n is odd and

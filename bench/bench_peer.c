@@ -220,6 +220,19 @@ static void problem_free(problem *pb)
     memset(pb, 0, sizeof *pb);
 }
 
+/* Settings "a=1,b=2" (one or more, comma-separated) into p; SW_OK or the
+ * first assignment's status (err says why). */
+static int scene_settings(const sw_scene *sc, double *p, const char *set, char *err, size_t errlen)
+{
+    int rc = SW_OK;
+    for (const char *one = set; rc == SW_OK && *one; one += strcspn(one, ",") + (one[strcspn(one, ",")] != 0)) {
+        char item[32];
+        snprintf(item, sizeof item, "%.*s", (int)strcspn(one, ","), one);
+        rc = sw_scene_set(sc, p, item, err, errlen);
+    }
+    return rc;
+}
+
 /* Build the problem; the reference is the scene's exact solution where it
  * has one, else GSL's rk8pd at 1e-13 (else dop853 at 1e-14); a second,
  * independent high-accuracy run (dop853 at 1e-13) bounds its error. */
@@ -238,12 +251,7 @@ static int problem_init(problem *pb, const char *scene, const char *set, double 
                  set + strcspn(set, "=") + (set[strcspn(set, "=")] != 0));
     pb->sc = sw_scene_find(scene);
     sw_scene_defaults(pb->sc, pb->p);
-    int rc = SW_OK;
-    for (const char *one = set; rc == SW_OK && *one; one += strcspn(one, ",") + (one[strcspn(one, ",")] != 0)) {
-        char item[32];
-        snprintf(item, sizeof item, "%.*s", (int)strcspn(one, ","), one);
-        rc = sw_scene_set(pb->sc, pb->p, item, err, sizeof err);
-    }
+    int rc = scene_settings(pb->sc, pb->p, set, err, sizeof err);
     if (rc != SW_OK || sw_system_build(&pb->sys, pb->sc, pb->p, err, sizeof err) != SW_OK) {
         snprintf(why, whylen, "%s", err);
         return -1;
@@ -301,7 +309,7 @@ int bench_deriv_probe(const char *scene, const char *set, long calls, int generi
     if (!sc)
         return 1;
     sw_scene_defaults(sc, p);
-    if (sw_scene_set(sc, p, set, err, sizeof err) != SW_OK || sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK ||
+    if (scene_settings(sc, p, set, err, sizeof err) != SW_OK || sw_system_build(&sys, sc, p, err, sizeof err) != SW_OK ||
         sys.kind != SW_SYS_PARTICLES)
         return 1;
     double *dydt = malloc((size_t)sys.ode->dim * sizeof *dydt);

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "engine/particles_chain.h"
 #include "engine/particles_deriv.h"
 #include "engine/particles_model.h"
 #include "engine/spring_line.h"
@@ -475,6 +476,70 @@ START_TEST(small_path_matches_generic)
 }
 END_TEST
 
+/* The small chain's fused derivative (particles_chain.c) against the
+ * generic passes, bit for bit (memcmp: a NaN's bits too), on chains of 2
+ * to 16 beads and up to its limit (odd and even), damped or not, with
+ * gravity (sideways too) and drag or not,
+ * unequal masses, at random states and at the edges: two beads coincident
+ * and 1e-160 apart (the fused path hands these to the generic passes, with
+ * their hypot), a bead blown up to infinity (inf and NaN forces through
+ * the fused path), a NaN position. The fused path itself must finish
+ * most of the evaluations, and the chain keeps its fused rk4. */
+START_TEST(line_path_matches_generic)
+{
+    static const int sizes[] = { 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 33, 100, 127, SWP_LINE_BEADS };
+    unsigned long long seed = 99;
+    int fast = 0, evals = 0;
+    for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
+        for (int kinds = 0, n = sizes[z]; kinds < 8; kinds++) {
+            sw_particles p;
+            char err[SW_ERRLEN];
+            layout_chain(&p, n, kinds & 1 ? 0.75 : 0.0, 0, 0, 0);
+            if (kinds & 2)
+                ck_assert_int_eq(sw_particles_add_gravity(&p, n % 2 ? 0.0 : 0.3, -9.81), SW_OK);
+            if (kinds & 4)
+                ck_assert_int_eq(sw_particles_add_drag(&p, 0.2), SW_OK);
+            ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+            for (int i = 0; i < n; i++) {
+                p.mass[i] = 1.0 + 0.5 * scramble(&seed);
+                p.inv_mass[i] = 1.0 / p.mass[i];
+            }
+            ck_assert(!swp_deriv_is_small(&p));
+            ck_assert(p.model->line != NULL);
+            ck_assert_int_eq(p.model->chain, 1);
+            for (int trial = 0; trial < 14; trial++) {
+                for (int i = 0; i < 4 * n; i++)
+                    y[i] = (i < 2 * n ? 0.1 * (i / 2) * (i % 2 == 0) : 0.0) + 0.05 * scramble(&seed);
+                int b = trial % n;
+                if (trial == 10)
+                    y[2 * b] = y[2 * (n - 1 - b)], y[2 * b + 1] = y[2 * (n - 1 - b) + 1];
+                if (trial == 11)
+                    y[2 * b] = y[2 * ((b + 1) % n)] + 1e-160, y[2 * b + 1] = y[2 * ((b + 1) % n) + 1];
+                if (trial == 12)
+                    y[2 * b + trial % 2] = INFINITY, y[2 * n + 2 * b] = -INFINITY;
+                if (trial == 13)
+                    y[2 * b + 1] = NAN;
+                p.ode.deriv(p.ode.ctx, 0.0, y, got);
+                swp_deriv_generic(&p, 0.0, y, want);
+                for (int i = 0; i < 4 * n; i++)
+                    ck_assert_msg(memcmp(&got[i], &want[i], sizeof got[i]) == 0,
+                                  "n %d kinds %d trial %d component %d: fused %.17g, generic %.17g", n, kinds, trial,
+                                  i, got[i], want[i]);
+                fast += p.model->line(&p, y, got);
+                evals++;
+            }
+            sw_particles_free(&p);
+        }
+    ck_assert_int_ge(fast, evals * 11 / 14);
+    sw_particles p; /* one bead more: the generic passes */
+    char err[SW_ERRLEN];
+    layout_chain(&p, SWP_LINE_BEADS + 1, 0.75, 0, 0, 0);
+    ck_assert_int_eq(sw_particles_finish(&p, err, sizeof err), SW_OK);
+    ck_assert(p.model->line == NULL);
+    sw_particles_free(&p);
+}
+END_TEST
+
 Suite *make_derivative_suite(void);
 Suite *make_derivative_suite(void)
 {
@@ -487,6 +552,7 @@ Suite *make_derivative_suite(void)
     tcase_add_test(tc, regular_chain_matches_plain);
     tcase_add_test(tc, compact_layouts_match_plain);
     tcase_add_test(tc, small_path_matches_generic);
+    tcase_add_test(tc, line_path_matches_generic);
     suite_add_tcase(s, tc);
     return s;
 }

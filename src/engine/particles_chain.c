@@ -13,6 +13,7 @@
  * so the bits are the generic step's (tests/check_memory.c). */
 #include "engine/particles_chain.h"
 
+#include <limits.h>
 #include <string.h>
 
 #include "engine/particles_model.h"
@@ -50,6 +51,195 @@ int swp_chain_shaped(const sw_particles *p)
 {
     const struct sw_particles_model *m = p->model;
     return !m->small && m->nextra == 0 && m->uniform && m->tile && swp_chain_layout(m, p->n);
+}
+
+/* ---- the small chain's derivative (issue 41) ----------------------------
+ * The generic passes' arithmetic (particles_deriv.c) on a chain of at most
+ * SWP_LINE_BEADS beads, fused into one function: the differences in
+ * registers, the forces into one small array on the stack, in whole
+ * vectors of two springs (a pair) or two beads. Spring
+ * slot s is spring s - 1 for 0 < s < n (bead s minus bead s - 1), slot 0
+ * the left anchor's, slot n the right anchor's, so that bead i's springs
+ * are slots i and i + 1. A spring's force is block_forces' operations in
+ * the same order, four springs (two pairs) a vector: it does not depend
+ * on the slot. Bead i's sum is the generic last pass's (0 + F_i) - F_{i+1}
+ * (its signs: the chain's layout fixes them; bead n - 1 adds its anchor's),
+ * then gravity, drag and 1/m. The two terms of a sum commute exactly
+ * unless one is NaN, and a NaN's bits may depend on which operand an
+ * instruction takes first, which C does not fix: so where any
+ * acceleration comes out NaN, as where a length² is below 1e-290 or NaN
+ * (the generic passes' hypot), this returns 0 and the generic passes
+ * evaluate instead. Otherwise the bits are the generic passes'
+ * (tests/check_derivative.c). Vectors are loaded where they were stored
+ * whole (the state at multiples of four, as the methods' loops write it;
+ * the arrays here as written), and the derivative is written so, as the
+ * methods' next loops read it: a load across two stores waits for both. */
+typedef long long v4di __attribute__((vector_size(4 * sizeof(long long))));
+enum { LINE_PAIRS = 2 * (((SWP_LINE_BEADS + 2) / 2 + 1) / 2) }; /* pairs, whole vectors of two */
+
+#define LOAD4(r, q) memcpy(&(r), (q), sizeof(r))
+#define STORE4(q, ...) do { v4d s_ = (__VA_ARGS__); memcpy((q), &s_, sizeof s_); } while (0)
+/* (a.hi, b.lo): the two springs or beads across two whole vectors */
+#define ACROSS(a, b) __builtin_shuffle((a), (b), (v4di){ 2, 3, 4, 5 })
+
+/* The forces of two pairs of springs from their differences d (and dv),
+ * (x, y) per spring, into f; ORs into *flag where a length² is not
+ * >= 1e-290: block_forces' arithmetic, lane by lane. */
+SW_INLINE void line_forces(const v4d *d, const v4d *dv, double *f, double k, double c, double rest, v4di *flag,
+                           int damped)
+{
+    v4d d0 = d[0], d1 = d[1];
+    /* lanes: springs 0, 2, 1, 3 of the four */
+    v4d dx = __builtin_shuffle(d0, d1, (v4di){ 0, 4, 2, 6 }), dy = __builtin_shuffle(d0, d1, (v4di){ 1, 5, 3, 7 });
+    v4d l2 = dx * dx + dy * dy, l, one = { 1.0, 1.0, 1.0, 1.0 }, tiny = one * 1e-290;
+    for (int t = 0; t < 4; t++)
+        l[t] = sqrt(l2[t]);
+    v4di zero_l = l == 0.0; /* q = l == 0 ? 1 : l: l + (l == 0)'s value (l is never -0), one step less */
+    v4d q = (v4d)((zero_l & (v4di)one) | (~zero_l & (v4di)l));
+    v4d ux = dx / q, uy = dy / q;
+    v4d mag = k * (l - rest);
+    if (damped) {
+        v4d dv0 = dv[0], dv1 = dv[1];
+        v4d dvx = __builtin_shuffle(dv0, dv1, (v4di){ 0, 4, 2, 6 }),
+            dvy = __builtin_shuffle(dv0, dv1, (v4di){ 1, 5, 3, 7 });
+        mag += c * (dvx * ux + dvy * uy);
+    }
+    v4d fx = -mag * ux, fy = -mag * uy;
+    *flag |= ~(l2 >= tiny);
+    STORE4(f, __builtin_shuffle(fx, fy, (v4di){ 0, 4, 2, 6 }));
+    STORE4(f + 4, __builtin_shuffle(fx, fy, (v4di){ 1, 5, 3, 7 }));
+}
+
+/* Beads i and i + 1's accelerations into out from their slots' forces fl
+ * (slots i, i + 1) and fr (i + 1, i + 2); last: bead i + 1 is bead n - 1.
+ * ORs into *nan where one is NaN. */
+SW_INLINE void line_beads(const sw_particles *p, const double *v, int i, v4d fl, v4d fr, int last, double *out,
+                          v4di *nan, int gravity, int drag)
+{
+    const struct sw_particles_model *m = p->model;
+    const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
+    v4d zero = { 0.0, 0.0, 0.0, 0.0 }, g = { m->gx, m->gy, m->gx, m->gy };
+    if (last) /* its anchor's force adds: - (-F) = + F exactly */
+        fr = (v4d)((v4di)fr ^ (v4di){ 0, 0, LLONG_MIN, LLONG_MIN });
+    v4d fi = (zero + fl) - fr;
+    if (gravity)
+        fi += (v4d){ mass[i], mass[i], mass[i + 1], mass[i + 1] } * g;
+    if (drag) {
+        v4d vi;
+        LOAD4(vi, v + 2 * i);
+        fi -= m->kdrag * vi;
+    }
+    fi *= (v4d){ inv[i], inv[i], inv[i + 1], inv[i + 1] };
+    *nan |= fi != fi;
+    memcpy(out, &fi, sizeof fi);
+}
+
+/* Slots 2q and 2q + 1's differences d (and dv): pair 0 holds the left
+ * anchor's (x_0 - anchor; dv = v_0 - 0 = v_0) and spring 0's; a whole
+ * pair two paired springs; the last one spring n - 2's when n is odd and
+ * the right anchor's; past it, padding (lengths, never tiny). */
+SW_INLINE void line_pair(const struct sw_particles_model *m, int n, const double *x, const double *v, int q,
+                         v4d *d, v4d *dv, int damped)
+{
+    int n2 = 2 * n, L = m->npair, R = L + 1;
+    v4d zero = { 0.0, 0.0, 0.0, 0.0 }, one = { 1.0, 1.0, 1.0, 1.0 }, a, b, va, vb;
+    *dv = zero; /* (read only when damped) */
+    if (q == 0) {
+        LOAD4(a, x);
+        *d = a - __builtin_shuffle(a, (v4d){ m->ax[L], m->ay[L], 0.0, 0.0 }, (v4di){ 4, 5, 0, 1 });
+        LOAD4(va, v);
+        *dv = va - __builtin_shuffle(va, zero, (v4di){ 4, 5, 0, 1 });
+    } else if (2 * q + 1 <= n - 1) {
+        LOAD4(a, x + 4 * q - 4);
+        LOAD4(b, x + 4 * q);
+        *d = b - ACROSS(a, b);
+        if (damped) {
+            LOAD4(va, v + 4 * q - 4);
+            LOAD4(vb, v + 4 * q);
+            *dv = vb - ACROSS(va, vb);
+        }
+    } else if (2 * q <= n) {
+        v4d xl = { x[n2 - 2], x[n2 - 1], x[n2 - 2], x[n2 - 1] }, vl = { v[n2 - 2], v[n2 - 1], v[n2 - 2], v[n2 - 1] };
+        v4d anchor = { m->ax[R], m->ay[R], m->ax[R], m->ay[R] };
+        if (n & 1) {
+            *d = xl - __builtin_shuffle((v4d){ x[n2 - 4], x[n2 - 3], 0.0, 0.0 }, anchor, (v4di){ 0, 1, 6, 7 });
+            *dv = vl - (v4d){ v[n2 - 4], v[n2 - 3], 0.0, 0.0 };
+        } else {
+            *d = __builtin_shuffle(xl - anchor, one, (v4di){ 0, 1, 4, 5 });
+            *dv = __builtin_shuffle(vl, zero, (v4di){ 0, 1, 4, 5 });
+        }
+    } else {
+        *d = one;
+        *dv = zero;
+    }
+}
+
+SW_INLINE int line_eval(const sw_particles *p, const double *restrict y, double *restrict dydt, int gravity,
+                        int drag, int damped)
+{
+    const struct sw_particles_model *m = p->model;
+    int n = p->n, n2 = 2 * n, pairs = (n + 2) / 2;
+    const double *x = y, *v = y + n2;
+    double *a = dydt + n2;
+    _Alignas(32) double f[4 * LINE_PAIRS];
+    /* the forces, two pairs a vector, from differences in registers */
+    v4di flag = { 0, 0, 0, 0 };
+    for (int k = 0; k < pairs; k += 2) {
+        v4d d[2], dv[2];
+        line_pair(m, n, x, v, k, &d[0], &dv[0], damped);
+        line_pair(m, n, x, v, k + 1, &d[1], &dv[1], damped);
+        line_forces(d, dv, f + 4 * k, m->k0, m->c0, m->rest0, &flag, damped);
+    }
+    if (flag[0] | flag[1] | flag[2] | flag[3])
+        return 0;
+    /* dx/dt = v, whole vectors; then the beads two a vector, placed so that
+     * their vector is a whole one of dydt (bead 0 alone when n is odd) */
+    v4d lo, hi;
+    int u = 0;
+    for (; u + 4 <= n2; u += 4) {
+        LOAD4(lo, v + u);
+        memcpy(dydt + u, &lo, sizeof lo);
+    }
+    if (u < n2)
+        store2(dydt + u, load2(v + u));
+    v4di nan = { 0, 0, 0, 0 };
+    if (n & 1) {
+        _Alignas(32) double b0[4]; /* lanes 2, 3: bead 1 (unused); bead 0 alone, its lanes 0, 1 */
+        LOAD4(lo, f);
+        LOAD4(hi, f + 4);
+        line_beads(p, v, 0, lo, ACROSS(lo, hi), 0, b0, &nan, gravity, drag);
+        store2(a, load2(b0));
+        for (int i = 1; i < n; i += 2) {
+            LOAD4(lo, f + 2 * i - 2);
+            LOAD4(hi, f + 2 * i + 2);
+            line_beads(p, v, i, ACROSS(lo, hi), hi, i + 2 == n, a + 2 * i, &nan, gravity, drag);
+        }
+    } else {
+        for (int i = 0; i < n; i += 2) {
+            LOAD4(lo, f + 2 * i);
+            LOAD4(hi, f + 2 * i + 4);
+            line_beads(p, v, i, lo, ACROSS(lo, hi), i + 2 == n, a + 2 * i, &nan, gravity, drag);
+        }
+    }
+    return !(nan[0] | nan[1] | nan[2] | nan[3]);
+}
+
+/* One function per combination: gravity (G), drag (K), damped (D). */
+#define LINE(G, K, D)                                                                                   \
+    SW_CLONES SW_ONE_PASS static int line_##G##K##D(const sw_particles *p, const double *y, double *dydt) \
+    {                                                                                                   \
+        return line_eval(p, y, dydt, G, K, D);                                                          \
+    }
+LINE(0, 0, 0) LINE(0, 0, 1) LINE(0, 1, 0) LINE(0, 1, 1) LINE(1, 0, 0) LINE(1, 0, 1) LINE(1, 1, 0) LINE(1, 1, 1)
+static swp_line_fn *const line_table[8] = { line_000, line_001, line_010, line_011,
+                                            line_100, line_101, line_110, line_111 };
+
+swp_line_fn *swp_line_pick(const sw_particles *p)
+{
+    const struct sw_particles_model *m = p->model;
+    if (m->small || m->nextra > 0 || !m->uniform || p->n > SWP_LINE_BEADS || !swp_chain_layout(m, p->n))
+        return NULL;
+    return line_table[m->gravity * 4 + m->drag * 2 + m->damped];
 }
 
 #ifndef SW_FIELD_ONLY /* a plugin's host keeps no method, fused or not */

@@ -19,6 +19,15 @@ int swp_chain_layout(const struct sw_particles_model *m, int n);
  * layout, all springs sharing k, c and rest; gravity and drag fused, no
  * other force; its workspace allocated. */
 int swp_chain_shaped(const sw_particles *p);
+/* Largest chain whose derivative takes the fused path below. */
+#define SWP_LINE_BEADS 128
+/* The chain's derivative fused, for p's compiled forces (a chain layout
+ * of at most SWP_LINE_BEADS beads, shared k, c and rest, gravity and drag
+ * fused, no other force, no small path), or NULL: the generic passes'
+ * bits (particles_chain.c). It returns 0, dydt unfinished, where a
+ * spring's length² is below 1e-290 or NaN: the generic passes then. */
+typedef int swp_line_fn(const sw_particles *p, const double *y, double *dydt);
+swp_line_fn *swp_line_pick(const sw_particles *p);
 /* The fused rk4 step (sw_fused_step_fn) on a chain-shaped p. */
 unsigned swp_chain_rk4(void *ctx, double t, double *y, double h, unsigned elim);
 

@@ -74,6 +74,7 @@ int swp_model_springs(sw_particles *p, int nsprings)
     m->cap = nsprings;
     m->compiled = 0;
     m->small = NULL;
+    m->line = NULL;
     return SW_OK;
 }
 
@@ -94,6 +95,7 @@ void swp_model_touch(sw_particles *p)
     if (p->model) {
         p->model->compiled = 0;
         p->model->small = NULL;
+        p->model->line = NULL;
         p->model->chain = 0;
         p->ode.fast = &p->model->fast[0];
     }
@@ -327,6 +329,7 @@ int swp_model_compile(sw_particles *p, char *err, size_t errlen)
     build_lists(p->n, m);
     m->small = small;
     m->chain = swp_chain_shaped(p);
+    m->line = swp_line_pick(p);
     p->ode.fast = &m->fast[m->chain];
     m->compiled = 1;
     return rc;
@@ -538,16 +541,17 @@ static void hold_resting(const sw_particles *p, const double *y, double *dydt)
             dydt[n2 + 2 * i + 1] = 0;
 }
 
-/* The small path is set only while the compiled form is current
- * (swp_model_touch clears it), and the generic one compiles first when it
- * is not; a floor with resting contact then holds the balls on it. */
+/* The small path and the small chain's (particles_chain.c) are set only
+ * while the compiled form is current (swp_model_touch clears them), and the
+ * generic one compiles first when it is not; a floor with resting contact
+ * then holds the balls on it. */
 void swp_deriv(void *ctx, double t, const double *y, double *dydt)
 {
     const sw_particles *p = ctx;
     (void)t;
     if (p->model->small)
         p->model->small(p, y, dydt);
-    else
+    else if (!p->model->line || !p->model->line(p, y, dydt))
         deriv(ctx, y, dydt);
     if (p->walls.rest > 0 && (p->walls.sides & SW_WALL_FLOOR))
         hold_resting(p, y, dydt);

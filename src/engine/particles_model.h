@@ -72,6 +72,10 @@ struct sw_particles_model {
     /* NULL, or the small-system path (particles_small.c) that gives these
      * numbers without the blocks and passes above: chosen when compiled */
     swp_small_fn *small;
+    /* NULL, or the small chain's fused derivative (particles_chain.c),
+     * taken where there is no small path: chosen when compiled; 0 where
+     * it leaves the evaluation to the generic passes */
+    int (*line)(const sw_particles *p, const double *y, double *dydt);
 };
 
 #endif

@@ -165,6 +165,14 @@ START_TEST(score_by_check)
     sw_points_score(&set, &f, &s);
     ck_assert_int_eq(s.n, 3);
     ck_assert(s.score == 5 && s.max == 6);
+    /* Not measured: the check says so once, in the verdict's words. */
+    f.order = NAN;
+    f.measure_note = "order not measured: the plugin ran out of its CPU time (SIGXCPU)";
+    sw_points_score(&set, &f, &s);
+    ck_assert(s.checks[2].score == 0);
+    ck_assert_str_eq(s.checks[2].output, f.measure_note);
+    f.order = 1.02;
+    f.measure_note = NULL;
     /* A plugin that crashed scores nothing, saying why. */
     f.fault = "the plugin crashed with SIGSEGV";
     sw_points_score(&set, &f, &s);

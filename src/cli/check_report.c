@@ -237,13 +237,13 @@ static void print_measure(FILE *out, const sw_verdict *v)
         fputc('\n', out);
     }
     if (isnan(v->order)) {
-        fprintf(out, "  measured: %s (claimed order %d)\n", v->measure_note, v->claimed_order);
+        fprintf(out, "  %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;
     }
     fprintf(out, "  order: claimed %d, measured %.2f (undamped spring, largest error to t = 2, dt halved "
            "from 0.16 until the local slopes agree)\n", v->claimed_order, v->order);
     if (isnan(v->stability))
-        fprintf(out, "  stability: %s\n", v->measure_note);
+        fprintf(out, "  %s\n", v->measure_note); /* "stability not measured: why" */
     else if (isinf(v->stability))
         fprintf(out, "  stability: measured unbounded on the undamped spring (stable at every dt probed)\n");
     else if (v->stability == 0)

@@ -94,6 +94,41 @@ static int same_student(const grade_list *l, int i, int j)
     return strcmp(sa, sb) == 0;
 }
 
+/* A graded file's points, check by check, on the parts shown now: what a
+ * PASS report alone does not tell (a stability limit not measured, an
+ * order missed). A part not shown yet gives nothing away, its points
+ * included. */
+static void write_points(FILE *f, const grade_list *l, const grade_entry *e)
+{
+    const sw_score *s = &e->score;
+    double got = 0, max = 0;
+    int shown = 0, hidden = 0;
+    for (int k = 0; k < s->n; k++) {
+        if (l->hw && l->hw->parts[s->checks[k].part].visibility != SW_VIS_VISIBLE) {
+            hidden = 1;
+            continue;
+        }
+        got += s->checks[k].score;
+        max += s->checks[k].max;
+        shown++;
+    }
+    if (!shown)
+        return;
+    fprintf(f, "points: %g of %g%s\n", got, max, hidden ? " on the parts shown now" : "");
+    const char *said = NULL; /* a reason said once: a file not scored at all has one */
+    for (int k = 0; k < s->n; k++) {
+        const sw_score_check *c = &s->checks[k];
+        if (l->hw && l->hw->parts[c->part].visibility != SW_VIS_VISIBLE)
+            continue;
+        fprintf(f, "  %s: %g of %g", c->name, c->score, c->max);
+        if (c->score < c->max)
+            fprintf(f, ": %s", said && strcmp(said, c->output) == 0 ? "the same" : c->output);
+        if (c->score < c->max)
+            said = c->output;
+        fputc('\n', f);
+    }
+}
+
 static void write_report(FILE *f, const grade_list *l, int first, const unsigned char *done)
 {
     char student[SW_TRACE_STUDENT_MAX], heading[4 * SW_TRACE_STUDENT_MAX];
@@ -127,6 +162,8 @@ static void write_report(FILE *f, const grade_list *l, int first, const unsigned
         }
         if (e->remarks[0])
             fprintf(f, "note: %s\n", e->remarks);
+        if (e->status != GRADE_SKIPPED)
+            write_points(f, l, e);
         if (e->report)
             fprintf(f, "\n%s", e->report);
         fputc('\n', f);

@@ -122,8 +122,10 @@ void grade_print_row(grade_entry *e)
     const char *base = strrchr(e->path, '/');
     cell(student, 20, s_cell, sizeof s_cell);
     cell(base ? base + 1 : e->path, 24, f_cell, sizeof f_cell);
-    /* The last column runs to the end of the line: long, it is cut after a word. */
-    sw_escape_fit(e->message, 0, 300, 1, m_esc, sizeof m_esc);
+    /* The last column runs to the end of the line: long, it is cut after a
+     * word. The message is escaped already (a student's bytes in it, as in
+     * the gradebook and the feedback): its backslashes are kept. */
+    sw_escape_fit(e->message, 1, 300, 1, m_esc, sizeof m_esc);
     if (e->failing_step >= 0)
         snprintf(step, sizeof step, "%ld", e->failing_step);
     else
@@ -133,7 +135,7 @@ void grade_print_row(grade_entry *e)
     fprintf(table(), "  %s %s %-7s %7s %6s  %s\n", s_cell, f_cell, verdict_word(e->status), score,
             step, m_esc);
     if (e->remarks[0]) {
-        sw_escape_fit(e->remarks, 0, 300, 1, m_esc, sizeof m_esc);
+        sw_escape_fit(e->remarks, 1, 300, 1, m_esc, sizeof m_esc); /* escaped already */
         fprintf(table(), "  %-20s %-24s roster: %s\n", "", "", m_esc);
     }
     fflush(table());

@@ -279,8 +279,9 @@ static void score_measure(const sw_points *p, const sw_score_facts *f, sw_score_
         return;
     }
     if (isnan(got) || isnan(want)) {
-        give(c, 0, "not measured: %s", f->measure_note && *f->measure_note ? f->measure_note
-                                                                          : "no figure", NULL);
+        /* the verdict's note names what was not measured, and why */
+        give(c, 0, "%s", f->measure_note && *f->measure_note ? f->measure_note
+                                                             : "not measured: no figure", NULL);
         return;
     }
     /* An order within half of the method's; a stability limit within 5 %

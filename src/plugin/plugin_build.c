@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "plugin/plugin.h"
+#include "plugin/plugin_box.h"
 #include "plugin/sandbox.h"
 #include "stepwise/base.h"
 #include "util/beside.h"
@@ -285,8 +286,14 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     sw_jail spec = { .profile = SW_JAIL_COMPILE, .in = { { .fd = src_fd, .name = "plugin.c" } }, .nin = 1,
                      .include_fd = inc_fd, .out = { "plugin.so", "build.log" }, .nout = 2,
                      .disk_bytes = (size_t)64 << 20 };
-    sw_limits lim = { .cpu_seconds = BUILD_SECONDS, .memory_bytes = (size_t)2048 << 20,
-                      .output_bytes = (size_t)64 << 20 };
+    /* Under grade, the build is the submission's own work: it gets what
+     * is left of --cpu (sw_plugin_limits), never more than a build's own
+     * limit. */
+    sw_limits own;
+    sw_plugin_limits(&own);
+    int by_cpu = own.cpu_seconds > 0 && own.cpu_seconds < BUILD_SECONDS;
+    sw_limits lim = { .cpu_seconds = by_cpu ? own.cpu_seconds : BUILD_SECONDS,
+                      .memory_bytes = (size_t)2048 << 20, .output_bytes = (size_t)64 << 20 };
     /* Under a grader's --memory (this process's hard limit), the build's
      * scratch disk, memory that limit does not count, is at most half of it. */
     struct rlimit as;
@@ -343,6 +350,14 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     if (ok) {
         free(log);
         return SW_OK;
+    }
+    if (by_cpu && !end.killed &&
+        ((!end.exited && end.signal == SIGXCPU) || (log && strstr(log, "CPU time limit exceeded")))) {
+        free(log);
+        snprintf(err, errlen, "--plugin '%s' did not compile within the submission's CPU time: %.3g s "
+                 "were left of it (the submission's CPU-time limit, --cpu: it counts its own processes "
+                 "only, the compiler's included)", shown, lim.cpu_seconds);
+        return SW_EINVAL;
     }
     if (end.killed || (!end.exited && end.signal == SIGXCPU)) {
         free(log);

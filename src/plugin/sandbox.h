@@ -64,7 +64,8 @@ int sw_sandbox_spawn_jailed(sw_child *c, sw_child_fn *fn, void *ctx, const sw_li
  * SW_EIO with err naming what the kernel refused. 0 without the jail. */
 int sw_sandbox_probe(char *err, size_t errlen);
 /* Read a file the jail sends back (sw_jail_send_outputs): at most max
- * bytes into *buf (malloc'ed, NUL-terminated), *len its size. 1 done, 0 the
+ * bytes into *buf (malloc'ed, NUL-terminated), *len its size; of a larger
+ * file its first max bytes (the rest read and dropped). 1 done, 0 the
  * jail had no such regular file, -1 a broken or oversized record. */
 int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t *len);
 

@@ -4,6 +4,7 @@
  * dead child is an error, never a SIGPIPE (MSG_NOSIGNAL). */
 #define _GNU_SOURCE /* MSG_NOSIGNAL, Linux-only like the sandbox */
 #include "plugin/sandbox.h"
+#include "plugin/jail.h"
 
 #include <errno.h>
 #include <math.h>
@@ -41,18 +42,32 @@ int sw_sandbox_read_file(int fd, size_t max, double seconds, char **buf, size_t 
         return -1;
     if (size == -1)
         return 0;
-    if (size < 0 || (uint64_t)size > max)
+    if (size < 0 || (uint64_t)size > SW_JAIL_FILE_MAX)
         return -1;
-    char *b = malloc((size_t)size + 1);
+    /* Larger than max: its first max bytes, the rest read and dropped, so
+     * that the sender (blocked on a full socket) ends and what follows on
+     * fd still comes (a compiler's log of 60 MiB of errors once held its
+     * jail until the build's timeout). */
+    size_t keep = (uint64_t)size > max ? max : (size_t)size;
+    char *b = malloc(keep + 1);
     if (!b)
         return -1;
-    if (size > 0 && sw_sandbox_read(fd, b, (size_t)size, seconds) != 1) {
+    if (keep > 0 && sw_sandbox_read(fd, b, keep, seconds) != 1) {
         free(b);
         return -1;
     }
-    b[size] = '\0';
+    char drop[65536];
+    for (size_t left = (size_t)size - keep; left > 0;) {
+        size_t n = left < sizeof drop ? left : sizeof drop;
+        if (sw_sandbox_read(fd, drop, n, seconds) != 1) {
+            free(b);
+            return -1;
+        }
+        left -= n;
+    }
+    b[keep] = '\0';
     *buf = b;
-    *len = (size_t)size;
+    *len = keep;
     return 1;
 }
 

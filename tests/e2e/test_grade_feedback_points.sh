@@ -1,0 +1,39 @@
+#!/bin/sh
+# --feedback tells each student their points check by check, on the parts
+# shown now: a PASS report alone does not say that the order was missed or
+# the stability limit not measured. A hidden part gives nothing away, its
+# checks and points included; a reason every check shares is said once.
+. "$(dirname "$0")/lib.sh"
+needs_jail
+cat > hw.txt <<'A'
+# stepwise assignment 1
+# kind: plugin
+# integrator: rk4
+# steps: 50
+# points x* y*: 2
+# part line
+# scene: chain
+# param n: 3
+# dt: 0.01
+# points order: 1
+# part swirl
+# scene: gyre
+# param n: 2
+# dt: 0.05
+# visibility: hidden
+A
+mkdir class
+sed "s/@NAME@/honest/" "$ROOT/tests/hostile/honest-rk4.c" > class/honest.c
+cp "$ROOT/examples/euler_plugin.c" class/euler.c
+printf '#include <stepwise/integrator.h>\nint broken = ;\n' > class/broken.c
+"$SW" grade --assignment hw.txt --feedback fb class > out 2>&1
+[ $? -eq 1 ] || fail "grade: $(cat out)"
+grep -qx "points: 3 of 3 on the parts shown now" fb/honest.txt || fail "honest: $(cat fb/honest.txt)"
+grep -qx "  line: order: 1 of 1" fb/honest.txt || fail "honest: no order line: $(cat fb/honest.txt)"
+grep -qx "points: 0 of 3 on the parts shown now" fb/euler.txt || fail "euler: $(cat fb/euler.txt)"
+grep -q "^  line: values: x\* y\*: 0 of 2: .*did you implement euler" fb/euler.txt ||
+    fail "euler: the values' line does not say why: $(cat fb/euler.txt)"
+grep -q "^  line: order: 0 of 1: measured order 1" fb/euler.txt || fail "euler: the order's line: $(cat fb/euler.txt)"
+grep -q "swirl:" fb/*.txt && fail "a hidden part's checks reached the feedback: $(grep swirl: fb/*.txt)"
+grep -q "^  line: order: 0 of 1: the same$" fb/broken.txt || fail "broken: the reason is not said once: $(cat fb/broken.txt)"
+echo "ok: feedback gives the points on the parts shown"

@@ -273,11 +273,15 @@ int sw_cmd_check(int argc, char **argv)
         sw_homework_free(&hw);
         a.req.assignment = &hw.parts[0].a;
         char why[200], msg[300];
-        if (!sw_assignment_kind_ok(&hw.parts[0].a, plugin_run, why, sizeof why)) {
+        if (!sw_assignment_kind_ok(&hw.parts[0].a, plugin_run, NULL, why, sizeof why)) {
             snprintf(msg, sizeof msg, "%s: %s", why, plugin_run ? "give the trace you recorded"
-                     : "give --plugin FILE (your .c or .so)");
+                     : hw.parts[0].a.source_only ? "give --plugin FILE (your .c)"
+                                                 : "give --plugin FILE (your .c or .so)");
             return fail_usage(&a, "check: %s", msg);
         }
+        for (int i = 0; plugin_run && i < nplugins; i++)
+            if (!sw_assignment_kind_ok(&hw.parts[0].a, 1, plugins[i], why, sizeof why))
+                return fail_usage(&a, "check: %s", why);
         last = hw.nparts;
         if (a.trace) {
             sw_trace_reader r;

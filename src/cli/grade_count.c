@@ -47,7 +47,7 @@ void grade_count(const grade_list *l, const int *entries, int n, grade_counted *
     for (int k = 0; k < n; k++) {
         int i = entries[k];
         const grade_entry *e = &l->items[i];
-        if (!sw_assignment_kind_ok(&h->parts[0].a, e->plugin, why, sizeof why) ||
+        if (!sw_assignment_kind_ok(&h->parts[0].a, e->plugin, e->path, why, sizeof why) ||
             e->status == GRADE_SKIPPED || e->status == GRADE_MISSING)
             continue;
         if (e->plugin) {

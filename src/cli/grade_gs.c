@@ -118,7 +118,7 @@ int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char
             fprintf(t, "%s.\n", why);
         int ran_plugin = 0;
         for (int i = 0; i < l->n; i++)
-            ran_plugin |= l->items[i].plugin && sw_assignment_kind_ok(a, 1, other, sizeof other);
+            ran_plugin |= l->items[i].plugin && sw_assignment_kind_ok(a, 1, l->items[i].path, other, sizeof other);
         if (ran_plugin) /* said only where a plugin ran */
             fprintf(t, "Plugins run %s.\n", !jailed ? "without the jail (--no-sandbox, the teacher's choice: the "
                                                    "CPU, memory and time limits still hold)"

@@ -265,7 +265,7 @@ int grade_worker(void *ctx, int in, int out)
         send_unchecked(out, job->hw, SW_VERDICT_ERROR, job->plugin, "student", err);
         return 0;
     }
-    if (!sw_assignment_kind_ok(&h->parts[0].a, job->plugin, wrong_kind, sizeof wrong_kind)) {
+    if (!sw_assignment_kind_ok(&h->parts[0].a, job->plugin, job->path, wrong_kind, sizeof wrong_kind)) {
         /* the other kind of upload: nothing of it is built, run or read;
          * scored out of what the homework pays for its own kind */
         snprintf(err, sizeof err, "%s: not graded", wrong_kind);

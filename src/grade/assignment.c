@@ -147,15 +147,23 @@ const char *sw_assignment_wanted(const sw_assignment *a)
     case SW_KIND_TRACE:
         return "a trace (.trace, .csv)";
     case SW_KIND_PLUGIN:
-        return "a plugin (.c, .so)";
+        return a->source_only ? "a plugin's C source (.c)" : "a plugin (.c, .so)";
     case SW_KIND_ANY:
         break;
     }
-    return "a trace (.trace, .csv) or a plugin (.c, .so)";
+    return a->source_only ? "a trace (.trace, .csv) or a plugin's C source (.c)"
+                          : "a trace (.trace, .csv) or a plugin (.c, .so)";
 }
 
-int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, char *why, size_t whylen)
+int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, const char *path, char *why, size_t whylen)
 {
+    size_t len = path ? strlen(path) : 0;
+    int compiled = is_plugin && len >= 3 && strcmp(path + len - 3, ".so") == 0;
+    if (compiled && a->source_only) {
+        snprintf(why, whylen, "this homework asks for %s, not a compiled plugin (.so): hand in the .c it "
+                 "was built from", sw_assignment_wanted(a));
+        return 0;
+    }
     if (a->kind == SW_KIND_ANY || (a->kind == SW_KIND_PLUGIN) == (is_plugin != 0))
         return 1;
     snprintf(why, whylen, "this homework asks for %s, not %s", sw_assignment_wanted(a),
@@ -198,6 +206,17 @@ int sw_assignment_read_filtered(sw_assignment *a, const char *path, sw_trace_met
                 sw_escape(x->value, 40, shown, sizeof shown);
                 snprintf(err, errlen, "%s: 'kind' is trace or plugin (what students hand in), not '%s'", at,
                          shown);
+                rc = SW_EINVAL;
+            }
+        }
+        else if (strcmp(x->key, "submit") == 0) {
+            if (strcmp(x->value, "source") == 0 || strcmp(x->value, "source or compiled") == 0)
+                a->source_only = strcmp(x->value, "source") == 0;
+            else {
+                char shown[64];
+                sw_escape(x->value, 40, shown, sizeof shown);
+                snprintf(err, errlen, "%s: 'submit' is source (a plugin's .c only) or source or compiled "
+                         "(.c or .so), not '%s'", at, shown);
                 rc = SW_EINVAL;
             }
         }

@@ -45,13 +45,19 @@ typedef struct sw_assignment {
     sw_points_set points;                     /* "# points" lines, or the defaults */
     char title[128];
     sw_assign_kind kind;
+    /* "# submit: source": a plugin only as C source (.c), which the grader
+     * compiles and the similarity check reads; a compiled .so, which can
+     * carry any code (stepwise's own methods linked in among it), is not
+     * graded. 0 ("source or compiled", the default): either. */
+    int source_only;
 } sw_assignment;
 
-/* Whether a submission (a plugin, or a trace) is of the kind a asks for;
- * when not, why says what it asks for, in one clause. */
-int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, char *why, size_t whylen);
+/* Whether a submission (a plugin, or a trace; path, where known, names a
+ * plugin's form by its ending: .c or .so) is of the kind a asks for; when
+ * not, why says what it asks for, in one clause. */
+int sw_assignment_kind_ok(const sw_assignment *a, int is_plugin, const char *path, char *why, size_t whylen);
 /* What to upload, for a message: "a trace (.trace, .csv)", "a plugin (.c,
- * .so)" or both. */
+ * .so)", "a plugin's C source (.c)" or both kinds. */
 const char *sw_assignment_wanted(const sw_assignment *a);
 
 /* Read an assignment file (or a trace, whose header serves). 0 or an error

@@ -320,7 +320,8 @@ static int sort_lines(sw_homework *h, sw_visibility *shared_vis, char *err, size
         if (!value)
             continue; /* the reader names the mistake */
         int own = strcmp(key, "secret") == 0 || strcmp(key, "count") == 0;
-        if ((own || strcmp(key, "kind") == 0 || strcmp(key, "title") == 0) && part >= 0) {
+        if ((own || strcmp(key, "kind") == 0 || strcmp(key, "title") == 0 || strcmp(key, "submit") == 0) &&
+            part >= 0) {
             snprintf(msg, sizeof msg, "'%s' is the homework's, not a part's: give it before the "
                      "first '# part'", key);
             return fail(h, line, err, errlen, msg);

@@ -77,6 +77,7 @@ static int is_assignment_key(const char *key)
 {
     return strcmp(key, "tolerance") == 0 || strncmp(key, "tolerance ", 10) == 0 ||
            strcmp(key, "ignore") == 0 || strcmp(key, "title") == 0 || strcmp(key, "kind") == 0 ||
+           strcmp(key, "submit") == 0 ||
            strncmp(key, "points ", 7) == 0;
 }
 

@@ -5,6 +5,7 @@
 # row, and is never the file a Gradescope submission counts: a trace made
 # with `stepwise record` beside a plugin that does not compile scores 0,
 # not the trace's points. An empty upload is told the kind asked for only.
+# "# submit: source" takes a plugin's .c only (a .so is not graded).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 json="$ROOT/tests/e2e/json.awk"
@@ -59,4 +60,30 @@ mkdir empty
 awk -f "$json" e.json > flat || fail "results.json (empty) does not parse"
 grep -q "^output=.*upload a plugin (.c, .so)" flat || fail "empty upload: $(grep '^output=' flat)"
 grep -q "^output=.*trace" flat && fail "empty upload on a plugin homework is told about traces: $(grep '^output=' flat)"
+
+# "# submit: source": a plugin only as its C source; a compiled .so (which
+# can carry any code, stepwise's own methods linked in) is not graded, in
+# grade, check and the Gradescope count, with one line saying what to give
+{ echo "$base" | head -1; echo "# kind: plugin"; echo "# submit: source"; echo "$base" | tail -n +2; } > src-hw.txt
+{ echo "$base" | head -1; echo "# submit: binary"; echo "$base" | tail -n +2; } > bad-submit.txt
+"$SW" grade --assignment bad-submit.txt good.trace > out 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "'submit' is source (a plugin's .c only) or source or compiled" out ||
+    fail "bad submit: exit $rc: $(cat out)"
+cc -shared -fPIC -I"$ROOT/include" -o honest.so honest.c || fail "cc honest.so"
+mkdir src-class
+cp honest.c honest.so src-class/
+"$SW" grade --assignment src-hw.txt --csv s.csv src-class > out 2>&1
+grep -q "honest.so,fail,,\"this homework asks for a plugin's C source (.c), not a compiled plugin (.so): hand in the .c it was built from: not graded\"" s.csv ||
+    fail "source homework: the .so's row: $(cat s.csv)"
+grep -q "honest.c,pass," s.csv || fail "source homework: the .c's row: $(cat s.csv)"
+"$SW" grade --assignment plugin-hw.txt --csv both.csv src-class > out 2>&1
+grep -q "honest.so,pass," both.csv || fail "plugin homework: the .so's row: $(cat both.csv)"
+"$SW" check --assignment src-hw.txt --plugin ./honest.so > out 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "not a compiled plugin (.so): hand in the .c" out ||
+    fail "check, .so on a source homework: exit $rc: $(cat out)"
+mkdir so-only
+cp honest.so so-only/
+"$SW" grade --assignment src-hw.txt --gradescope so.json so-only > out 2>&1
+awk -f "$json" so.json > flat || fail "results.json (.so only) does not parse"
+grep -qx "score=0" flat || fail "a .so was counted on a source homework: $(grep '^score=\|^output=' flat)"
 echo ok

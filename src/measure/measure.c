@@ -115,6 +115,14 @@ int sw_measure_order(const sw_integrator *m, double *order, sw_bench_series *fit
     return SW_OK;
 }
 
+int sw_measure_stability_as_plugin(const sw_integrator *m, double *omega_dt, int *kind, char *err,
+                                   size_t errlen)
+{
+    sw_integrator as_plugin = *m;
+    as_plugin.flags &= ~SW_SYMPLECTIC;
+    return sw_measure_stability(&as_plugin, omega_dt, kind, err, errlen);
+}
+
 int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, char *err,
                          size_t errlen)
 {

@@ -57,4 +57,10 @@ A
     awk -f "$json" $m.json > $m.flat || fail "$m: results.json does not parse"
     grep -qx "score=3" $m.flat || fail "$m: an honest plugin lost points: $(grep -e '^score=' -e 'output=stab' $m.flat)"
 done
+# try shows the method's figure measured the same way beside the plugin's
+"$SW" try symp.c --reference symplectic-euler --no-play > try.out 2>&1 || fail "try: $(cat try.out)"
+line=$(grep 'stability  largest stable' try.out) || fail "try: no stability line: $(cat try.out)"
+mine=$(echo "$line" | sed 's/.*w\*dt \([0-9.]*\) on.*/\1/')
+theirs=$(echo "$line" | sed 's/.*(symplectic-euler: \([0-9.]*\), measured the same way).*/\1/')
+[ -n "$mine" ] && [ "$mine" = "$theirs" ] || fail "try: the plugin's $mine against the method's $theirs: $line"
 echo "ok: stability points for honest symplectic plugins"

@@ -143,8 +143,9 @@ int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char
                         h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts",
                         base_name(e->path), e->score.score, e->score.max, verdict_of(e->status));
         }
-        for (int i = 0; i < l->ignored; i++)
-            fprintf(t, "Not graded: %s: %s\n", base_name(l->refused[i].path), l->refused[i].message);
+        for (int i = 0; i < l->ignored; i++) /* files left out; a roster's missing rows are no file */
+            if (l->refused[i].status != GRADE_MISSING)
+                fprintf(t, "Not graded: %s: %s\n", base_name(l->refused[i].path), l->refused[i].message);
         for (int p = 0; p < h->nparts; p++) {
             int i = c.entry[p];
             if (i < 0 || (p > 0 && c.entry[p - 1] == i))

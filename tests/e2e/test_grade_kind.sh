@@ -86,4 +86,12 @@ cp honest.so so-only/
 "$SW" grade --assignment src-hw.txt --gradescope so.json so-only > out 2>&1
 awk -f "$json" so.json > flat || fail "results.json (.so only) does not parse"
 grep -qx "score=0" flat || fail "a .so was counted on a source homework: $(grep '^score=\|^output=' flat)"
+
+# Gradescope with a roster: a roster student without a file is no file
+# the submission left out (no "Not graded: : no submission matched ...")
+printf 'name,email\nAda One,ada@example.edu\nBen Two,ben@example.edu\n' > roster.csv
+"$SW" grade --assignment plugin-hw.txt --roster roster.csv --gradescope ro.json src-class > out 2>&1
+awk -f "$json" ro.json > flat || fail "results.json (roster) does not parse"
+grep -q "Not graded: :" flat && fail "Gradescope output names a roster row as a file: $(grep '^output=' flat)"
+grep -q "^output=.*honest.c" flat || fail "Gradescope with a roster: $(grep '^output=' flat)"
 echo ok

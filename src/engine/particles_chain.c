@@ -80,7 +80,7 @@ enum { LINE_PAIRS = 2 * (((SWP_LINE_BEADS + 2) / 2 + 1) / 2) }; /* pairs, whole 
 #define LOAD4(r, q) memcpy(&(r), (q), sizeof(r))
 #define STORE4(q, ...) do { v4d s_ = (__VA_ARGS__); memcpy((q), &s_, sizeof s_); } while (0)
 /* (a.hi, b.lo): the two springs or beads across two whole vectors */
-#define ACROSS(a, b) __builtin_shuffle((a), (b), (v4di){ 2, 3, 4, 5 })
+#define ACROSS(a, b) __builtin_shufflevector((a), (b), 2, 3, 4, 5)
 
 /* The forces of two pairs of springs from their differences d (and dv),
  * (x, y) per spring, into f; ORs into *flag where a length² is not
@@ -90,7 +90,7 @@ SW_INLINE void line_forces(const v4d *d, const v4d *dv, double *f, double k, dou
 {
     v4d d0 = d[0], d1 = d[1];
     /* lanes: springs 0, 2, 1, 3 of the four */
-    v4d dx = __builtin_shuffle(d0, d1, (v4di){ 0, 4, 2, 6 }), dy = __builtin_shuffle(d0, d1, (v4di){ 1, 5, 3, 7 });
+    v4d dx = __builtin_shufflevector(d0, d1, 0, 4, 2, 6), dy = __builtin_shufflevector(d0, d1, 1, 5, 3, 7);
     v4d l2 = dx * dx + dy * dy, l, one = { 1.0, 1.0, 1.0, 1.0 }, tiny = one * 1e-290;
     for (int t = 0; t < 4; t++)
         l[t] = sqrt(l2[t]);
@@ -100,22 +100,23 @@ SW_INLINE void line_forces(const v4d *d, const v4d *dv, double *f, double k, dou
     v4d mag = k * (l - rest);
     if (damped) {
         v4d dv0 = dv[0], dv1 = dv[1];
-        v4d dvx = __builtin_shuffle(dv0, dv1, (v4di){ 0, 4, 2, 6 }),
-            dvy = __builtin_shuffle(dv0, dv1, (v4di){ 1, 5, 3, 7 });
+        v4d dvx = __builtin_shufflevector(dv0, dv1, 0, 4, 2, 6),
+            dvy = __builtin_shufflevector(dv0, dv1, 1, 5, 3, 7);
         mag += c * (dvx * ux + dvy * uy);
     }
     v4d fx = -mag * ux, fy = -mag * uy;
     *flag |= ~(l2 >= tiny);
-    STORE4(f, __builtin_shuffle(fx, fy, (v4di){ 0, 4, 2, 6 }));
-    STORE4(f + 4, __builtin_shuffle(fx, fy, (v4di){ 1, 5, 3, 7 }));
+    STORE4(f, __builtin_shufflevector(fx, fy, 0, 4, 2, 6));
+    STORE4(f + 4, __builtin_shufflevector(fx, fy, 1, 5, 3, 7));
 }
 
 /* Beads i and i + 1's accelerations into out from their slots' forces fl
  * (slots i, i + 1) and fr (i + 1, i + 2); last: bead i + 1 is bead n - 1.
  * ORs into *nan where one is NaN. */
-SW_INLINE void line_beads(const sw_particles *p, const double *v, int i, v4d fl, v4d fr, int last, double *out,
-                          v4di *nan, int gravity, int drag)
+SW_INLINE void line_beads(const sw_particles *p, const double *v, int i, const v4d *flp, const v4d *frp, int last,
+                          double *out, v4di *nan, int gravity, int drag)
 {
+    v4d fl = *flp, fr = *frp; /* (by pointer: a vector argument's ABI differs without AVX) */
     const struct sw_particles_model *m = p->model;
     const double *restrict mass = p->mass, *restrict inv = p->inv_mass;
     v4d zero = { 0.0, 0.0, 0.0, 0.0 }, g = { m->gx, m->gy, m->gx, m->gy };
@@ -146,9 +147,9 @@ SW_INLINE void line_pair(const struct sw_particles_model *m, int n, const double
     *dv = zero; /* (read only when damped) */
     if (q == 0) {
         LOAD4(a, x);
-        *d = a - __builtin_shuffle(a, (v4d){ m->ax[L], m->ay[L], 0.0, 0.0 }, (v4di){ 4, 5, 0, 1 });
+        *d = a - __builtin_shufflevector(a, (v4d){ m->ax[L], m->ay[L], 0.0, 0.0 }, 4, 5, 0, 1);
         LOAD4(va, v);
-        *dv = va - __builtin_shuffle(va, zero, (v4di){ 4, 5, 0, 1 });
+        *dv = va - __builtin_shufflevector(va, zero, 4, 5, 0, 1);
     } else if (2 * q + 1 <= n - 1) {
         LOAD4(a, x + 4 * q - 4);
         LOAD4(b, x + 4 * q);
@@ -162,11 +163,11 @@ SW_INLINE void line_pair(const struct sw_particles_model *m, int n, const double
         v4d xl = { x[n2 - 2], x[n2 - 1], x[n2 - 2], x[n2 - 1] }, vl = { v[n2 - 2], v[n2 - 1], v[n2 - 2], v[n2 - 1] };
         v4d anchor = { m->ax[R], m->ay[R], m->ax[R], m->ay[R] };
         if (n & 1) {
-            *d = xl - __builtin_shuffle((v4d){ x[n2 - 4], x[n2 - 3], 0.0, 0.0 }, anchor, (v4di){ 0, 1, 6, 7 });
+            *d = xl - __builtin_shufflevector((v4d){ x[n2 - 4], x[n2 - 3], 0.0, 0.0 }, anchor, 0, 1, 6, 7);
             *dv = vl - (v4d){ v[n2 - 4], v[n2 - 3], 0.0, 0.0 };
         } else {
-            *d = __builtin_shuffle(xl - anchor, one, (v4di){ 0, 1, 4, 5 });
-            *dv = __builtin_shuffle(vl, zero, (v4di){ 0, 1, 4, 5 });
+            *d = __builtin_shufflevector(xl - anchor, one, 0, 1, 4, 5);
+            *dv = __builtin_shufflevector(vl, zero, 0, 1, 4, 5);
         }
     } else {
         *d = one;
@@ -207,18 +208,21 @@ SW_INLINE int line_eval(const sw_particles *p, const double *restrict y, double 
         _Alignas(32) double b0[4]; /* lanes 2, 3: bead 1 (unused); bead 0 alone, its lanes 0, 1 */
         LOAD4(lo, f);
         LOAD4(hi, f + 4);
-        line_beads(p, v, 0, lo, ACROSS(lo, hi), 0, b0, &nan, gravity, drag);
+        v4d first = ACROSS(lo, hi);
+        line_beads(p, v, 0, &lo, &first, 0, b0, &nan, gravity, drag);
         store2(a, load2(b0));
         for (int i = 1; i < n; i += 2) {
             LOAD4(lo, f + 2 * i - 2);
             LOAD4(hi, f + 2 * i + 2);
-            line_beads(p, v, i, ACROSS(lo, hi), hi, i + 2 == n, a + 2 * i, &nan, gravity, drag);
+            v4d across = ACROSS(lo, hi);
+            line_beads(p, v, i, &across, &hi, i + 2 == n, a + 2 * i, &nan, gravity, drag);
         }
     } else {
         for (int i = 0; i < n; i += 2) {
             LOAD4(lo, f + 2 * i);
             LOAD4(hi, f + 2 * i + 4);
-            line_beads(p, v, i, lo, ACROSS(lo, hi), i + 2 == n, a + 2 * i, &nan, gravity, drag);
+            v4d across = ACROSS(lo, hi);
+            line_beads(p, v, i, &lo, &across, i + 2 == n, a + 2 * i, &nan, gravity, drag);
         }
     }
     return !(nan[0] | nan[1] | nan[2] | nan[3]);

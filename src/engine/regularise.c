@@ -107,23 +107,11 @@ void sw_lc_to(const sw_lc *lc, const double *w, double *y)
     y[3] = 2 * (w[2] * u2 + w[3] * u1) / r;
 }
 
-/* a and b hold the same n doubles, bit for bit (-0 is not +0, a NaN is
- * its own payload): the particle's state as the last step wrote it */
-static int same_bits(const double *a, const double *b, int n)
-{
-    unsigned long long x, y, diff = 0;
-    for (int i = 0; i < n; i++) {
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, b + i, sizeof y);
-        diff |= x ^ y;
-    }
-    return diff == 0;
-}
-
 int sw_lc_resume(sw_lc_left *left, const sw_lc *lc, double t, const double *y)
 {
     int same = left->valid && lc->alone && left->base == lc->base && left->cx == lc->cx && left->cy == lc->cy &&
-               left->mu == lc->mu && same_bits(&left->t, &t, 1) && same_bits(left->y, y, 4);
+               left->mu == lc->mu && memcmp(&left->t, &t, sizeof t) == 0 && /* bit for bit: -0 is not +0 */
+               memcmp(left->y, y, sizeof left->y) == 0;
     left->valid = 0;
     return same ? 1 : sw_lc_from(lc, t, y, left->w);
 }

@@ -208,7 +208,7 @@ GSL_LIBS  = $(shell pkg-config --exists gsl 2>/dev/null && pkg-config --libs gsl
 CVODE_FLAGS = $(shell test -f /usr/include/cvode/cvode.h && echo -DSW_HAVE_CVODE)
 CVODE_LIBS  = $(if $(CVODE_FLAGS),-lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsolband \
               -lsundials_sunlinsoldense -lsundials_sunmatrixband -lsundials_sunmatrixdense)
-BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_tree.c bench/bench_water.c bench/bench_rkn.c bench/bench_stiff.c bench/bench_frame.c bench/bench_implicit.c bench/bench_lc.c bench/bench_keys.c
+BENCH_SRC = bench/bench_engine.c bench/bench_base.c bench/bench_peer.c bench/bench_chain_ref.c bench/bench_tree.c bench/bench_water.c bench/bench_rkn.c bench/bench_stiff.c bench/bench_frame.c bench/bench_implicit.c bench/bench_lc.c bench/bench_keys.c
 
 $(BUILD)/gsl.stamp: FORCE
 	@mkdir -p $(dir $@)

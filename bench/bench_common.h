@@ -65,6 +65,12 @@ typedef struct bench_peer_opts {
     int stiff;          /* the stiff set instead (issue 41): rodas4 among stepwise's methods */
 } bench_peer_opts;
 
+/* The chain's state at T from y0 (bench_chain_ref.c), independent of the
+ * engine: RK4 in long double, steps doubled until the error estimate
+ * (Richardson) is at most goal. par: n, k, m, c, rest, g. 0, or -1. */
+int bench_chain_reference(const double *par, const double *y0, double T, double goal, double *ref,
+                          double *estimate, long *steps);
+
 /* The peer comparison (bench_peer.c): stepwise's cheapest method against
  * GSL's cheapest stepper at equal error, or a note when GSL is absent. */
 void bench_peer(const bench_peer_opts *o);

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The engine benchmark's peer comparison (`make bench`), quick: every
 # candidate's reported error is within its target, stepwise's methods all
-# reach it, the reference is cross-checked far below the target, and, when
+# reach it, the reference is cross-checked far below the target (the
+# chain's long double reference estimates its own error at most 1e-11), and, when
 # the benchmark was built with GSL, the side-by-side table has a row per
 # problem with a time ratio, an evaluations ratio and the derivative's
 # floor (a number, or - for steps fused with the field). Timings are
@@ -21,6 +22,12 @@ for m in rk4 rk45 dop853; do
 done
 echo "$out" | grep -E 'differs from it by' | awk '{ if ($NF + 0 > 1e-9) exit 1 }' \
     || fail "a reference is not within 1e-9 of its cross-check: $out"
+# the chain's reference is the long double run, its own error estimated
+# at most 1e-11 (bench_chain_ref.c)
+echo "$out" | grep -q 'chain n = [0-9]*, T = [0-9.]*, state [0-9]*: reference RK4 in long double' \
+    || fail "the chain's reference is not the long double run: $out"
+echo "$out" | grep -E "reference's own error, estimated" | tr -d ')' | awk '{ if ($NF + 0 > 1e-11 || $NF + 0 <= 0) exit 1 }' \
+    || fail "the chain reference's error estimate is not in (0, 1e-11]: $out"
 if echo "$out" | grep -q 'against GSL'; then
     table=$(echo "$out" | grep '^  | [a-z]* n = [0-9]*, error 1e-06 | ')
     [ "$(echo "$table" | grep -c .)" -eq 2 ] || fail "no side-by-side rows: $out"

@@ -123,7 +123,8 @@ int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char
             fprintf(t, "Plugins run %s.\n", !jailed ? "without the jail (--no-sandbox, the teacher's choice: the "
                                                    "CPU, memory and time limits still hold)"
                 : sw_jail_kind_now() == SW_JAIL_UID ? "in stepwise's jail (a user of its own, seccomp, Landlock, limits)"
-                                                    : "in stepwise's jail (namespaces, seccomp, Landlock, limits)");
+                : sw_jail_landlock_abi()            ? "in stepwise's jail (namespaces, seccomp, Landlock, limits)"
+                                                    : "in stepwise's jail (namespaces, seccomp, limits)");
         for (int i = 0; i < l->n; i++) {
             int is = 0;
             for (int p = 0; p < h->nparts; p++)

@@ -227,6 +227,14 @@ static int fail_at(const char **step, const char *what, int err)
     return err ? err : EINVAL;
 }
 
+/* The step that failed, as the refusal names it. */
+static const char *landlock_step(int rc)
+{
+    return rc == EOPNOTSUPP ? "Landlock, the file boundary of a jail without user namespaces, which this "
+                              "kernel does not enable,"
+                            : "Landlock";
+}
+
 int sw_jail_build(const sw_jail *spec, const char **step)
 {
     static const char *const system_dirs[] = { "/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64",
@@ -324,6 +332,9 @@ void sw_jail_uid_dir(int pid, char *dir, size_t dirlen)
 int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, const char **step)
 {
     int rc;
+    /* no namespaces: Landlock is this jail's only file boundary */
+    if (sw_jail_landlock_abi() < 1)
+        return fail_at(step, landlock_step(EOPNOTSUPP), EOPNOTSUPP);
     *uid = UID_BASE + (unsigned)getpid() % UID_RANGE;
     sw_jail_uid_dir(getpid(), dir, dirlen);
     /* made here or not at all: a path someone else made is never taken
@@ -392,6 +403,7 @@ void sw_jail_kill_user(unsigned uid)
 
 /* ---- the lockdown ----------------------------------------------------------- */
 
+
 /* Empty the bounding set (what a capability could ever be regained from);
  * the capabilities held stay until drop_capabilities. */
 static int drop_bounding(void)
@@ -444,7 +456,7 @@ int sw_jail_lockdown(sw_jail_profile profile, const char **step)
         rc = sw_jail_landlock();
     }
     if (rc != 0)
-        return fail_at(step, "Landlock", rc);
+        return fail_at(step, landlock_step(rc), rc);
     if ((rc = sw_jail_filter(profile)) != 0)
         return fail_at(step, "the seccomp filter", rc);
     return 0;
@@ -456,7 +468,7 @@ int sw_jail_compute_layers(const char **step)
     int rc = sw_jail_kind_now() == SW_JAIL_UID ? sw_jail_landlock_read(sw_jail_system_dirs, 8)
                                               : sw_jail_landlock_read(root, 1);
     if (rc != 0)
-        return fail_at(step, "Landlock", rc);
+        return fail_at(step, landlock_step(rc), rc);
     if ((rc = sw_jail_filter(SW_JAIL_COMPUTE)) != 0)
         return fail_at(step, "the seccomp filter", rc);
     return 0;

@@ -48,11 +48,16 @@ typedef struct sw_jail {
  * user id of the jail's own (root may change ids without them), no new
  * privileges, the same limits, the same seccomp filter, and Landlock
  * narrowed to the system's directories and the jail's own directory under
- * $TMPDIR. Chosen by the first jail built (NS, then UID when NS is refused
+ * $TMPDIR (its only file boundary: without Landlock no UID jail is built,
+ * and the jail is refused). Chosen by the first jail built (NS, then UID when NS is refused
  * as root); STEPWISE_JAIL=uid forces UID, =ns forbids it (tests). */
 typedef enum sw_jail_kind { SW_JAIL_NS = 1, SW_JAIL_UID = 2 } sw_jail_kind;
 sw_jail_kind sw_jail_kind_now(void);
 void sw_jail_kind_set(sw_jail_kind kind);
+/* The kernel's Landlock ABI version, 0 where it has none (or it is not
+ * enabled): the jail of a user of its own needs it (its file boundary),
+ * the namespaces' jail takes it as defence in depth. */
+int sw_jail_landlock_abi(void);
 /* Whether UID may be used instead when NS is refused (root, not forbidden). */
 int sw_jail_uid_allowed(void);
 /* The system's directories a UID jail may read (NULL-terminated). */

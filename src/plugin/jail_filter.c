@@ -52,11 +52,18 @@ static int ll_allow(int ruleset, const char *path, uint64_t access)
     return rc;
 }
 
-int sw_jail_landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull)
+int sw_jail_landlock_abi(void)
 {
     long abi = syscall(SYS_landlock_create_ruleset, NULL, 0, LANDLOCK_CREATE_RULESET_VERSION);
-    if (abi < 1)
-        return 0; /* no Landlock here: the namespaces and seccomp still hold */
+    return abi < 1 ? 0 : abi > 1000 ? 1000 : (int)abi;
+}
+
+int sw_jail_landlock_rules(const char *const *read_dirs, int nread, const char *const *full, int nfull)
+{
+    int abi = sw_jail_landlock_abi();
+    if (abi < 1) /* no Landlock here: the namespaces and seccomp still hold (the jail of a
+                  * user of its own, which has no namespaces, is refused before: jail.c) */
+        return 0;
     uint64_t fs = (1ULL << 13) - 1; /* ABI 1: EXECUTE .. MAKE_SYM */
     if (abi >= 2)
         fs |= LANDLOCK_ACCESS_FS_REFER;

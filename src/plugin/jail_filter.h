@@ -6,7 +6,8 @@
 
 /* Landlock, where the kernel has it: read (and run) the jail's root, write
  * only /work and /dev/null, no TCP, no signals out of the domain. 0 (also
- * when the kernel has no Landlock: it is defence in depth) or an errno. */
+ * when the kernel has no Landlock: with namespaces it is defence in depth,
+ * and the jail of a user of its own is not built without it) or an errno. */
 int sw_jail_landlock(void);
 /* Landlock for a plugin's host: read (and run) only beneath read_dirs,
  * write only /dev/null. 0 or an errno, as above. */

@@ -333,6 +333,11 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     _exit(0);
 }
 
+/* What a refusal says the jail needs. */
+#define JAIL_NEEDS                                                                                         \
+    "it needs Linux seccomp and user namespaces, or where they are refused, root and Landlock "          \
+    "(docs/sandbox.md)"
+
 /* The parent's side of the set-up: map the user, wait for the lockdown.
  * *refused: 1 when the kernel refused the namespaces themselves. */
 static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t errlen)
@@ -363,9 +368,8 @@ static int jail_handshake(pid_t pid, int sync, int *refused, char *err, size_t e
                      "most %zu MiB, and its build must fit its scratch space", SW_JAIL_FILE_MAX >> 20);
             return SW_EINVAL;
         }
-        say(err, errlen, "the sandbox could not be set up: %.120s failed (%s); it needs Linux "
-            "user namespaces, or root where they are refused, and seccomp (docs/sandbox.md)",
-            f.step, strerror(f.err));
+        say(err, errlen, "the sandbox could not be set up: %.120s failed (%s); %s", f.step, strerror(f.err),
+            JAIL_NEEDS);
         return SW_EIO;
     }
     snprintf(err, errlen, "the sandbox could not be set up (its first process %s)",
@@ -475,8 +479,8 @@ int sw_sandbox_probe(char *err, size_t errlen)
             sw_sandbox_reap(&c, 5.0, &end);
             if (got == 1) {
                 f.step[sizeof f.step - 1] = '\0';
-                say(why, sizeof why, "the sandbox could not be set up: %.120s failed (%s); it needs "
-                    "Linux seccomp (docs/sandbox.md)", f.step, strerror(f.err));
+                say(why, sizeof why, "the sandbox could not be set up: %.120s failed (%s); %s", f.step,
+                    strerror(f.err), JAIL_NEEDS);
                 known = -1;
             } else if (!end.exited || end.code != 0) {
                 snprintf(why, sizeof why, "the sandbox could not be set up: its probe did not finish");

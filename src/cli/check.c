@@ -56,7 +56,7 @@ static const char check_help[] =
     "      --no-measure       plugin form: do not measure order and stability\n"
     "      --no-sandbox       plugin form: run the plugin without the jail, only in a\n"
     "                         disposable container (docs/sandbox.md)\n"
-    "      --plugin-timeout S seconds a plugin may take for one step (default 2)\n"
+    "      --plugin-timeout S seconds of its own CPU time (or asleep) a plugin may take for one step (default 2)\n"
     "      --json             print a JSON report (fields in docs/trace-format.md)\n"
     "  -h, --help             this help\n"
     "\n"

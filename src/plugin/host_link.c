@@ -11,6 +11,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "plugin/proc_tree.h"
+
 #define JAIL_PLUGIN "plugin.so"
 #define JAIL_HOST "stepwise-plugin-host"
 
@@ -73,13 +75,65 @@ static int exec_host(void *ctx, int in, int out)
     return 126;
 }
 
+/* The watchdog on a wait for the host, looked at every WATCH_QUANTUM s: the
+ * host has `seconds` of its own CPU time to answer, however busy the machine
+ * (a step starved by load waits on a run queue, and is waited for), and at
+ * most `seconds` of wall time when it is not running (asleep: no step
+ * needs to sleep), all within WATCH_WALL times `seconds` whatever it does.
+ * Where /proc cannot tell, `seconds` of wall time, as before. */
+#define WATCH_QUANTUM 0.25
+#define WATCH_WALL 50
+
+typedef struct host_watch {
+    double waited, asleep, cpu0;
+    int started;
+} host_watch;
+
+/* After a quantum q without an answer: 1 wait on, 0 the watchdog ends the
+ * wait (h->watched says why). */
+static int watch_on(sw_host_link *h, host_watch *w, double q, double seconds)
+{
+    sw_proc_tree now;
+    w->waited += q;
+    h->waited = w->waited;
+    if (sw_proc_tree_read(h->child.pid, &now) != 0) {
+        h->watched = w->waited < seconds ? SW_WATCH_NONE : SW_WATCH_WALL;
+        return w->waited < seconds;
+    }
+    if (!w->started) { /* its CPU time counts from the first look (one quantum's grace) */
+        w->started = 1;
+        w->cpu0 = now.cpu_seconds;
+    }
+    w->asleep += now.runnable ? 0 : q;
+    h->watched = now.cpu_seconds - w->cpu0 >= seconds ? SW_WATCH_CPU
+                 : w->asleep >= seconds               ? SW_WATCH_ASLEEP
+                 : w->waited >= WATCH_WALL * seconds  ? SW_WATCH_WALL
+                                                      : SW_WATCH_NONE;
+    return h->watched == SW_WATCH_NONE;
+}
+
+void sw_host_watch_says(const sw_host_link *h, double seconds, char *out, size_t len)
+{
+    if (h->watched == SW_WATCH_CPU)
+        snprintf(out, len, "used %g s of its own CPU time without returning", seconds);
+    else if (h->watched == SW_WATCH_ASLEEP)
+        snprintf(out, len, "slept %g s without returning", seconds);
+    else
+        snprintf(out, len, "did not return within %.3g s", h->waited > 0 ? h->waited : seconds);
+}
+
 int sw_host_read(sw_plugin_entry *e, void *buf, size_t len, double seconds)
 {
     sw_host_link *h = &e->host;
     unsigned char *out = buf;
     while (len > 0) {
         if (h->rpos == h->rlen) {
-            long n = sw_sandbox_read_some(h->child.from_child, h->rbuf, sizeof h->rbuf, seconds);
+            host_watch w = { 0 };
+            long n;
+            do {
+                double q = seconds < WATCH_QUANTUM ? seconds : WATCH_QUANTUM;
+                n = sw_sandbox_read_some(h->child.from_child, h->rbuf, sizeof h->rbuf, q);
+            } while (n == -2 && watch_on(h, &w, seconds < WATCH_QUANTUM ? seconds : WATCH_QUANTUM, seconds));
             if (n <= 0)
                 return (int)n;
             h->rpos = 0;
@@ -207,9 +261,11 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     if (rc == -2 || rc == -1) {
         sw_sandbox_kill(&h->child, &end);
         h->alive = 0;
+        char said[96];
+        sw_host_watch_says(h, limit, said, sizeof said);
         if (rc == -2)
-            snprintf(err, errlen, "--plugin '%s': %s did not return within %g s (an endless loop?)", e->shown,
-                     what, limit);
+            snprintf(err, errlen, "--plugin '%s': %s %s (%s)", e->shown, what, said,
+                     h->watched == SW_WATCH_ASLEEP ? "it must not wait" : "an endless loop?");
         else
             snprintf(err, errlen, "--plugin '%s': interrupted while %s ran", e->shown, what);
         return SW_EINVAL;

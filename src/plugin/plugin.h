@@ -58,6 +58,9 @@ void sw_plugin_set_limits(const struct sw_limits *lim);
 /* Watchdog for each call into a plugin, in seconds (> 0). */
 void sw_plugin_set_timeout(double seconds);
 double sw_plugin_timeout(void);
+/* The plugin host program, opened once (its descriptor, or -1 with err
+ * saying where it was looked for): grade asks before it grades anything. */
+int sw_plugin_host_fd(char *err, size_t errlen);
 
 /* Load the plugin at path: in its host under the watchdog, dlopen it and
  * call sw_plugin_info(); check the interface version, name, label, step

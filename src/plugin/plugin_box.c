@@ -96,8 +96,12 @@ static void box_fault_now(step_box *b)
         return;
     }
     if (b->pending_rc == -2) {
-        snprintf(why, sizeof why, "did not return from its step within %g s", sw_plugin_timeout());
-        box_fail(b, SW_PF_TIMEOUT, why, "(an endless loop?)");
+        char said[96];
+        sw_host_watch_says(&b->entry->host, sw_plugin_timeout(), said, sizeof said);
+        snprintf(why, sizeof why, "%s from its step", said);
+        box_fail(b, SW_PF_TIMEOUT, why,
+                 b->entry->host.watched == SW_WATCH_ASLEEP ? "(a step must not wait; --plugin-timeout sets the limit)"
+                                                           : "(an endless loop? --plugin-timeout sets the limit)");
         return;
     }
     if (b->pending_rc == -5) {

@@ -13,6 +13,10 @@
 
 /* A plugin's host as the parent sees it: one process for every run of the
  * plugin (a jail per submission, not per run), each run in a slot. */
+/* What ended a wait for the host (host_link.c's watchdog): its own CPU
+ * time spent, so long asleep, the wall-time bound, or nothing. */
+typedef enum sw_host_watched { SW_WATCH_NONE, SW_WATCH_CPU, SW_WATCH_ASLEEP, SW_WATCH_WALL } sw_host_watched;
+
 typedef struct sw_host_link {
     sw_child child;
     int alive;
@@ -21,6 +25,8 @@ typedef struct sw_host_link {
     sw_host_reply fault;                   /* a FAULT record the host sent before it died */
     int have_fault;
     int dying;                             /* it said DYING: every step before was sent */
+    sw_host_watched watched;               /* why the watchdog ended the last wait it ended, */
+    double waited;                         /* ... and after how long (wall seconds) */
     unsigned char rbuf[1 << 16];           /* what was read from the host and not yet used */
     size_t rpos, rlen;
 } sw_host_link;
@@ -50,9 +56,6 @@ sw_plugin_entry *sw_plugin_entry_at(int i);
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The limits a new plugin process gets (sw_plugin_set_limits). */
 void sw_plugin_limits(sw_limits *lim);
-/* The plugin host program, opened once (its descriptor, or -1 with err
- * saying where it was looked for). */
-int sw_plugin_host_fd(char *err, size_t errlen);
 /* ... and its path (once found). */
 const char *sw_plugin_host_path(void);
 
@@ -64,8 +67,13 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
 /* End the entry's host (QUIT, then reaped). */
 void sw_host_stop(sw_plugin_entry *e);
 /* Read exactly len bytes from the host within `seconds` (the wait for the
- * next piece, not the whole): 1, or as sw_sandbox_read. */
+ * next piece, not the whole) of its own CPU time, or asleep (the watchdog:
+ * a busy machine only makes the wait longer): 1, or as sw_sandbox_read. */
 int sw_host_read(sw_plugin_entry *e, void *buf, size_t len, double seconds);
+/* What the watchdog saw when it ended a wait, as "<it> ...": "used 2 s of
+ * its own CPU time without returning", "slept 2 s ...", "did not return
+ * within 2 s". */
+void sw_host_watch_says(const sw_host_link *h, double seconds, char *out, size_t len);
 /* Read one reply of the host within `seconds`: 1, or as sw_sandbox_read
  * (0 the host ended, -1 cancelled, -2 timed out, -3 error); a FAULT
  * record in range is kept in the link and reads as 0 (the host dies

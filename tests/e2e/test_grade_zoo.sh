@@ -56,7 +56,7 @@ expect() {
         exits) echo "exit|ended its process with exit\\(0\\) in its step" ;;
         aborts) echo "crash|crashed with SIGABRT" ;;
         segv) echo "crash|crashed with SIGSEGV" ;;
-        loops) echo "timeout|did not return from its step within 2 s" ;;
+        loops) echo "timeout|used 2 s of its own CPU time without returning from its step" ;;
         over-one) echo "overrun_work|wrote past its 1 work vector \\(work\\[4\\]" ;;
         over-many) echo "overrun_work|wrote past its 1 work vector \\(work\\[19\\]" ;;
         over-y) echo "overrun_y|wrote past the end of y \\(y\\[4\\]" ;;
@@ -132,7 +132,7 @@ part_grade() {
     grep -qx 'score=0' g.fields && grep -qx 'max_score=1' g.fields || fail "zoo score: $(grep score g.fields | head -3)"
     [ "$(grep -c ',pass,' g.csv)" -eq 0 ] || fail "a zoo plugin passed: $(cat g.csv)"
     [ "$(wc -l < g.csv)" -eq 13 ] || fail "gradebook rows: $(cat g.csv)"
-    grep -q 'loops-source.c,limit,4,the plugin did not return.*,0,1,.$' g.csv || fail "looping .c source: $(cat g.csv)"
+    grep -q 'loops-source.c,limit,4,the plugin used 2 s of its own CPU time without returning.*,0,1,.$' g.csv || fail "looping .c source: $(cat g.csv)"
     grep -q 'info-loops.so,error,,.*,0,1,.$' g.csv || fail "info loop in grade: $(cat g.csv)"
 }
 
@@ -196,7 +196,7 @@ for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
     start "$p" one_plugin "$p"
 done
 start nan part_nan
-start info-loops one_load info-loops 'sw_plugin_info() did not return within 2 s'
+start info-loops one_load info-loops 'sw_plugin_info() used 2 s of its own CPU time without returning'
 start badname one_load badname "name 'euler ' is not allowed"
 start grade part_grade
 start play part_play

@@ -20,6 +20,7 @@
 
 #include "cli/check_report.h"
 #include "cli/grade.h"
+#include "plugin/plugin.h"
 #include "plugin/sandbox.h"
 #include "grade/similar.h"
 #include "grade/verdict.h"
@@ -84,7 +85,8 @@ static const char grade_help_more[] =
     "      --wall S           wall-clock seconds per submission, 0.1 to 86400\n"
     "                         (default 4 x cpu + 20): a guard against a submission that\n"
     "                         blocks, not a measure of its work\n"
-    "      --plugin-timeout S seconds a plugin may take per step, 0.01 to 3600 (default 2)\n"
+    "      --plugin-timeout S seconds of its own CPU time (or asleep) a plugin may take per step,\n"
+    "                         0.01 to 3600 (default 2)\n"
     "      --no-sandbox       run plugins and compilers without the jail (namespaces,\n"
     "                         seccomp): only inside a disposable container that holds\n"
     "                         one submission (docs/sandbox.md)\n"
@@ -477,7 +479,9 @@ static int grade_gather(grade_opts *o, grade_list *list, const struct stat *asg_
     if (rc == SW_EXIT_OK)
         rc = grade_student_keys_check(list);
     for (int i = 0; rc == SW_EXIT_OK && i < list->n; i++)
-        if (list->items[i].plugin && sw_sandbox_probe(err, sizeof err) != SW_OK)
+        if (list->items[i].plugin && sw_plugin_host_fd(err, sizeof err) < 0)
+            rc = sw_cli_error("grade: %s", err); /* the grader's fault: never a row of the student's */
+        else if (list->items[i].plugin && sw_sandbox_probe(err, sizeof err) != SW_OK)
             rc = sw_cli_error("grade: plugins are run isolated, and %s", err);
     return rc;
 }

@@ -65,6 +65,10 @@ struct sw_particles_solver {
      * the band's own (where they refused). */
     double *block;
     int blocked;
+    /* chain: the pairs are chain_ordered's (with lead), checked when
+     * factored; generic: never the chain's fused passes (tests compare) */
+    int chain, lead, generic;
+    long fused;            /* factorisations the fused path kept */
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -360,6 +364,80 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
     }
 }
 
+/* 1 when the pairs are a chain's in the order the band's fill meets
+ * them: at most one anchored spring on particle 0 first, then (i, i + 1)
+ * for i = 0, 1, ..., n - 2 (either end first), then at most one anchored
+ * spring on particle n - 1; *lead = 1 with the first. Each particle's own
+ * block then gets its terms as fill_velocity_system adds them: its mass,
+ * the left spring's, the right spring's. */
+static int chain_ordered(const struct sw_particles_solver *s, int n, int *lead)
+{
+    long j = 0, np = s->npairs;
+    const int *pa = s->pa, *pb = s->pb;
+#define SW_ANCHOR(j, k) (j < np && ((pa[j] == k && pb[j] < 0) || (pa[j] < 0 && pb[j] == k)))
+    *lead = SW_ANCHOR(0, 0);
+    j = *lead;
+    for (int i = 0; i + 1 < n; i++, j++)
+        if (j >= np || !((pa[j] == i && pb[j] == i + 1) || (pa[j] == i + 1 && pb[j] == i)))
+            return 0;
+    j += SW_ANCHOR(j, n - 1);
+#undef SW_ANCHOR
+    return n >= 1 && j == np;
+}
+
+/* d += the products of a pair, column by column, a's before b's (the
+ * order band_blocks adds them in). */
+SW_INLINE void add_products(v2d *d0, v2d *d1, const block_cols *p)
+{
+    *d0 = *d0 + p->a0;
+    *d1 = *d1 + p->a1;
+    *d0 = *d0 + p->b0;
+    *d1 = *d1 + p->b1;
+}
+
+/* A chain's velocity system (chain_ordered, no own blocks, a and b
+ * finite and nonzero) filled and factored by blocks in one pass along the
+ * chain: each particle's diagonal block made in registers (0 + m on its
+ * diagonal, +0 beside, then the springs' products in fill_velocity_system's
+ * order), its upper neighbour (i, i + 1), the only entry of that spring's
+ * off-diagonal blocks, as (+0 - a·Kx) - b·Kv, which is also the lower
+ * block of the row below, and each row factored by sw_block_row as
+ * sw_block_factor factors it from the band: the same bits. Only the upper
+ * blocks go into the band (the block solve reads them). 0, or -1 where the
+ * blocks refuse (then the band holds nothing whole). */
+static int factor_chain(sw_particles *p, double a, double b, const sw_band *band, int lead)
+{
+    const struct sw_particles_solver *s = p->solver;
+    const double *blk = s->pblock;
+    double *e = band->a + band->kl + band->ku, *f = s->block; /* row 0's diagonal block and factors */
+    const v2d zero = { 0.0, 0.0 };
+    v2d l0 = zero, l1 = zero; /* the block left of the row's diagonal (row > 0) */
+    block_cols left = { zero, zero, zero, zero };
+    int n = p->n, bad = 0;
+    if (lead) {
+        left = block_products(a, blk, b, blk + 4, 1, 1);
+        blk += 8;
+    }
+    for (int i = 0; i < n; i++, e += 2 * CHAIN_LD, f += SW_BLOCK_PER) {
+        v2d d0 = { 0.0 + p->mass[i], 0.0 }, d1 = { 0.0, 0.0 + p->mass[i] };
+        if (lead || i > 0)
+            add_products(&d0, &d1, &left);
+        if (i + 1 < n || blk < s->pblock + 8 * s->npairs) { /* the right spring, or the last anchor */
+            left = block_products(a, blk, b, blk + 4, 1, 1);
+            blk += 8;
+            add_products(&d0, &d1, &left);
+        }
+        bad |= sw_block_row(f, i > 0 ? f - SW_BLOCK_PER : NULL, d0, d1, l0, l1, l0, l1);
+        if (i + 1 < n) {
+            l0 = (zero - left.a0) - left.b0;
+            l1 = (zero - left.a1) - left.b1;
+            store2(e + 2 * CHAIN_LD - 2, l0);
+            store2(e + 3 * CHAIN_LD - 3, l1);
+        }
+    }
+    return bad ? -1 : 0;
+}
+
 /* A = M - c·Fv - c²·Fx into the band, and its factors: a chain's by
  * blocks where they are safe, else the band's with row interchanges. 0,
  * or -1 when A is singular. a = -c² and b = -c are both nonzero but where
@@ -374,6 +452,16 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
      * +0 + (±0) = +0, so the own block is m·I, the same bits, without
      * its products and sums. */
     int own = s->own || !isfinite(a) || !isfinite(b);
+    s->chain = s->half_band == 3 && !s->generic && chain_ordered(s, p->n, &s->lead);
+    if (a != 0 && b != 0 && !own && s->chain) {
+        s->blocked = factor_chain(p, a, b, band, s->lead) == 0;
+        if (s->blocked) {
+            s->fused++;
+            return 0;
+        }
+        fill_velocity_system(p, a, b, band, 1, 1, 0); /* the blocks refused, as they do from the band */
+        return sw_band_factor(band);
+    }
     if (a != 0 && b != 0 && own)
         fill_velocity_system(p, a, b, band, 1, 1, 1);
     else if (a != 0 && b != 0)
@@ -465,6 +553,13 @@ static SW_CLONES int key_moved(int len, double *restrict key, const double *rest
         key[i] = y[i];
     }
     return diff != 0;
+}
+
+long sw_particles_solver_generic(sw_particles *p, int generic)
+{
+    p->solver->generic = generic;
+    p->solver->factored = 0;
+    return p->solver->fused;
 }
 
 void sw_particles_solver_touch(sw_particles *p)

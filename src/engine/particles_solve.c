@@ -67,7 +67,7 @@ struct sw_particles_solver {
     int blocked;
     /* chain: the pairs are chain_ordered's (with lead), checked when
      * factored; generic: never the chain's fused passes (tests compare) */
-    int chain, lead, generic;
+    int chain, lead, flip, generic;
     long fused;            /* factorisations the fused path kept */
 };
 
@@ -367,18 +367,23 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
 /* 1 when the pairs are a chain's in the order the band's fill meets
  * them: at most one anchored spring on particle 0 first, then (i, i + 1)
  * for i = 0, 1, ..., n - 2 (either end first), then at most one anchored
- * spring on particle n - 1; *lead = 1 with the first. Each particle's own
- * block then gets its terms as fill_velocity_system adds them: its mass,
- * the left spring's, the right spring's. */
-static int chain_ordered(const struct sw_particles_solver *s, int n, int *lead)
+ * spring on particle n - 1; *lead = 1 with the first, *flip = 1 where
+ * every (i, i + 1) spring has i + 1 first, 0 where every one has i (not
+ * a chain's otherwise). Each particle's own block then gets its terms as
+ * fill_velocity_system adds them: its mass, the left spring's, the right
+ * spring's. */
+static int chain_ordered(const struct sw_particles_solver *s, int n, int *lead, int *flip)
 {
     long j = 0, np = s->npairs;
     const int *pa = s->pa, *pb = s->pb;
 #define SW_ANCHOR(j, k) (j < np && ((pa[j] == k && pb[j] < 0) || (pa[j] < 0 && pb[j] == k)))
     *lead = SW_ANCHOR(0, 0);
     j = *lead;
+    *flip = n > 1 && j < np && pa[j] == 1;
+    if (np - j < n - 1)
+        return 0;
     for (int i = 0; i + 1 < n; i++, j++)
-        if (j >= np || !((pa[j] == i && pb[j] == i + 1) || (pa[j] == i + 1 && pb[j] == i)))
+        if (pa[j] != i + *flip || pb[j] != i + 1 - *flip)
             return 0;
     j += SW_ANCHOR(j, n - 1);
 #undef SW_ANCHOR
@@ -452,7 +457,7 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
      * +0 + (±0) = +0, so the own block is m·I, the same bits, without
      * its products and sums. */
     int own = s->own || !isfinite(a) || !isfinite(b);
-    s->chain = s->half_band == 3 && !s->generic && chain_ordered(s, p->n, &s->lead);
+    s->chain = s->half_band == 3 && !s->generic && chain_ordered(s, p->n, &s->lead, &s->flip);
     if (a != 0 && b != 0 && !own && s->chain) {
         s->blocked = factor_chain(p, a, b, band, s->lead) == 0;
         if (s->blocked) {
@@ -494,6 +499,21 @@ static SW_CLONES void own_blocks_times(int n, const double *diag, double c, cons
     }
 }
 
+/* out = M·v + c·K_i·w with each particle's own block K_i = 0 (no force
+ * writes them: +0 each, the assembly's): mass_times then
+ * own_blocks_times' operations, the zeros constants (0·w is no constant:
+ * -0, NaN) and the product c·(0·w_x + 0·w_y), the same in both rows,
+ * made once; one pass (out may be v: each read before written). */
+static SW_CLONES void mass_times_zero_own(int n, const double *mass, const double *v, double c,
+                                         const double *restrict w, double *out)
+{
+    for (int i = 0; i < n; i++) {
+        double own = c * (0.0 * w[2 * i] + 0.0 * w[2 * i + 1]);
+        out[2 * i] = mass[i] * v[2 * i] + own;
+        out[2 * i + 1] = mass[i] * v[2 * i + 1] + own;
+    }
+}
+
 /* z = r + c·v over n components (z may be r: each read before written). */
 static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, const double *v)
 {
@@ -509,10 +529,14 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;
-    mass_times(p->n, p->mass, r + n2, out_v);
-    if (c == 0)
-        return;
-    own_blocks_times(p->n, s->diag, c, r, out_v);
+    if (c != 0 && !s->own && !s->generic) {
+        mass_times_zero_own(p->n, p->mass, r + n2, c, r, out_v);
+    } else {
+        mass_times(p->n, p->mass, r + n2, out_v);
+        if (c == 0)
+            return;
+        own_blocks_times(p->n, s->diag, c, r, out_v);
+    }
     double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;

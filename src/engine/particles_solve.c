@@ -521,6 +521,40 @@ static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, co
         z[i] = r[i] + c * v[i];
 }
 
+/* out += c·Fx·r_x for a pair (ea, eb, both particles) with Fx block kx:
+ * the four blocks of apply_block, each product K·r_a, K·r_b made once
+ * (the same operations, in the same order). */
+SW_INLINE void pair_rhs(double *restrict out, const double *kx, int ea, int eb, double c, const double *r)
+{
+    double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
+    double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
+    double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
+    double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
+    double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
+    out[2 * ea] = ax + -c * kbx;
+    out[2 * ea + 1] = ay + -c * kby;
+    double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
+    out[2 * eb] = bx + c * kbx;
+    out[2 * eb + 1] = by + c * kby;
+}
+
+/* The pairs' terms of velocity_rhs on a chain (chain_ordered, flip its
+ * springs' first ends): the same terms in the same order, the ends known
+ * from the chain's shape rather than read and tested a pair at a time. */
+SW_INLINE void chain_pairs_rhs(const struct sw_particles_solver *s, int n, double c, const double *r,
+                               double *restrict out, int flip)
+{
+    const double *kx = s->pblock;
+    if (s->lead) {
+        apply_block(out, 0, 0, c, kx, r);
+        kx += 8;
+    }
+    for (int i = 0; i + 1 < n; i++, kx += 8)
+        pair_rhs(out, kx, i + flip, i + 1 - flip, c, r);
+    if (kx < s->pblock + 8 * s->npairs)
+        apply_block(out, n - 1, n - 1, c, kx, r);
+}
+
 /* out = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone), out 2n
  * long; r's velocity half is read only where out is written, so out may be
  * that half itself. Each entry gets its terms in the order it always had:
@@ -537,23 +571,19 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
             return;
         own_blocks_times(p->n, s->diag, c, r, out_v);
     }
+    if (s->chain && !s->generic) {
+        if (s->flip)
+            chain_pairs_rhs(s, p->n, c, r, out_v, 1);
+        else
+            chain_pairs_rhs(s, p->n, c, r, out_v, 0);
+        return;
+    }
     double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
         int ea = s->pa[j], eb = s->pb[j];
         if (ea >= 0 && eb >= 0) {
-            /* the four blocks of apply_block below, each product K·r_a,
-             * K·r_b made once (the same operations, in the same order) */
-            double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
-            double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
-            double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
-            double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
-            double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
-            out[2 * ea] = ax + -c * kbx;
-            out[2 * ea + 1] = ay + -c * kby;
-            double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
-            out[2 * eb] = bx + c * kbx;
-            out[2 * eb + 1] = by + c * kby;
+            pair_rhs(out, kx, ea, eb, c, r);
             continue;
         }
         if (ea >= 0)

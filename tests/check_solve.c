@@ -265,7 +265,9 @@ END_TEST
  * anchored at both ends (the chain scene's order: left anchor, springs
  * (i + 1, i), right anchor), 1 free (springs (i, i + 1)), 2 the left
  * anchor only; 3 and 4 not in the fused pass's order (the right anchor
- * first; a second spring on beads 0 and 1). Masses differ bead to bead. */
+ * first; a second spring on beads 0 and 1); 5 as 0 with drag (own blocks:
+ * the chain's right-hand side, not its fused factorisation). Masses
+ * differ bead to bead. */
 #define FB 40
 static void chain_shaped(sw_particles *p, int nb, int shape)
 {
@@ -275,10 +277,10 @@ static void chain_shaped(sw_particles *p, int nb, int shape)
     int ns = 0;
     if (shape == 3)
         sp[ns++] = (sw_spring){ .a = nb - 1, .b = -1, .k = 31.0, .c = 0.2, .rest = 0.7, .ax = nb + 1.0 };
-    if (shape == 0 || shape == 2 || shape == 3)
+    if (shape == 0 || shape == 2 || shape == 3 || shape == 5)
         sp[ns++] = (sw_spring){ .a = 0, .b = -1, .k = 40.0, .c = 0.3, .rest = 0.8 };
     for (int i = 0; i + 1 < nb; i++) {
-        sp[ns] = (sw_spring){ .a = shape == 0 ? i + 1 : i, .b = shape == 0 ? i : i + 1, .k = 41.0 + i,
+        sp[ns] = (sw_spring){ .a = shape % 5 == 0 ? i + 1 : i, .b = shape % 5 == 0 ? i : i + 1, .k = 41.0 + i,
                               .c = 0.3 + 0.01 * i, .rest = 0.8 };
         if (shape == 4 && i == 0) {
             sp[ns + 1] = sp[ns];
@@ -286,7 +288,7 @@ static void chain_shaped(sw_particles *p, int nb, int shape)
         }
         ns++;
     }
-    if (shape == 0)
+    if (shape == 0 || shape == 5)
         sp[ns++] = (sw_spring){ .a = nb - 1, .b = -1, .k = 33.0, .c = 0.25, .rest = 0.9, .ax = nb + 1.0 };
     if (ns > 0) { /* none on one free bead */
         sw_spring *s = sw_particles_add_springs(p, ns);
@@ -294,6 +296,8 @@ static void chain_shaped(sw_particles *p, int nb, int shape)
         memcpy(s, sp, (size_t)ns * sizeof *s);
     }
     sw_particles_add_gravity(p, 0.0, -9.81);
+    if (shape == 5)
+        ck_assert_int_eq(sw_particles_add_drag(p, 0.7), SW_OK);
     ck_assert_int_eq(sw_particles_finish(p, err, sizeof err), SW_OK);
     for (int i = 0; i < nb; i++)
         p->mass[i] = 1.3 + 0.07 * i;
@@ -333,14 +337,15 @@ static void chain_state(double *y, int nb, int kind)
  * hostile states too, and at c where the fused pass does not apply (c²
  * underflowing to 0, or overflowing). The fused pass is taken wherever it
  * applies and the blocks accept (its count rises), and never on pairs in
- * another order or on one bead (no chain's band). The right-hand side's
- * zero own blocks, left as constants, give the bits of reading them. */
+ * another order, with own blocks or on one bead (no chain's band). The
+ * chain's right-hand side (with own blocks too) and the zero own blocks,
+ * left as constants, give the bits of the generic loops. */
 START_TEST(fused_chain_equals_band)
 {
     static const int lengths[] = { 1, 2, 3, 7, FB };
     static const double cs[] = { 0.05, 3.0, -0.02, 40.0, 1e-170, 1e200 };
     for (int li = 0; li < 5; li++)
-        for (int shape = 0; shape < 5; shape++)
+        for (int shape = 0; shape < 6; shape++)
             for (int kind = 0; kind < 5; kind++) {
                 int nb = lengths[li], dim = 4 * nb;
                 sw_particles p;

@@ -65,8 +65,9 @@ struct sw_particles_solver {
      * the band's own (where they refused). */
     double *block;
     int blocked;
-    /* chain: the pairs are chain_ordered's (with lead), checked when
-     * factored; generic: never the chain's fused passes (tests compare) */
+    /* chain: the pairs are chain_ordered's (with lead and flip), checked
+     * at the factorisation; generic: never the chain's own passes nor the
+     * zero own blocks' shortcut (tests compare them with the generic ones) */
     int chain, lead, flip, generic;
     long fused;            /* factorisations the fused path kept */
 };

@@ -261,6 +261,133 @@ START_TEST(own_blocks_skipped_where_zero)
 }
 END_TEST
 
+/* A chain of nb beads (at most FB) for fused_chain_equals_band: shape 0
+ * anchored at both ends (the chain scene's order: left anchor, springs
+ * (i + 1, i), right anchor), 1 free (springs (i, i + 1)), 2 the left
+ * anchor only; 3 and 4 not in the fused pass's order (the right anchor
+ * first; a second spring on beads 0 and 1); 5 as 0 with drag (own blocks:
+ * the chain's right-hand side, not its fused factorisation). Masses
+ * differ bead to bead. */
+#define FB 40
+static void chain_shaped(sw_particles *p, int nb, int shape)
+{
+    char err[SW_ERRLEN];
+    ck_assert_int_eq(sw_particles_init(p, nb, 1.3, err, sizeof err), SW_OK);
+    sw_spring sp[FB + 2];
+    int ns = 0;
+    if (shape == 3)
+        sp[ns++] = (sw_spring){ .a = nb - 1, .b = -1, .k = 31.0, .c = 0.2, .rest = 0.7, .ax = nb + 1.0 };
+    if (shape == 0 || shape == 2 || shape == 3 || shape == 5)
+        sp[ns++] = (sw_spring){ .a = 0, .b = -1, .k = 40.0, .c = 0.3, .rest = 0.8 };
+    for (int i = 0; i + 1 < nb; i++) {
+        sp[ns] = (sw_spring){ .a = shape % 5 == 0 ? i + 1 : i, .b = shape % 5 == 0 ? i : i + 1, .k = 41.0 + i,
+                              .c = 0.3 + 0.01 * i, .rest = 0.8 };
+        if (shape == 4 && i == 0) {
+            sp[ns + 1] = sp[ns];
+            ns++;
+        }
+        ns++;
+    }
+    if (shape == 0 || shape == 5)
+        sp[ns++] = (sw_spring){ .a = nb - 1, .b = -1, .k = 33.0, .c = 0.25, .rest = 0.9, .ax = nb + 1.0 };
+    if (ns > 0) { /* none on one free bead */
+        sw_spring *s = sw_particles_add_springs(p, ns);
+        ck_assert_ptr_nonnull(s);
+        memcpy(s, sp, (size_t)ns * sizeof *s);
+    }
+    sw_particles_add_gravity(p, 0.0, -9.81);
+    if (shape == 5)
+        ck_assert_int_eq(sw_particles_add_drag(p, 0.7), SW_OK);
+    ck_assert_int_eq(sw_particles_finish(p, err, sizeof err), SW_OK);
+    for (int i = 0; i < nb; i++)
+        p->mass[i] = 1.3 + 0.07 * i;
+    ck_assert_int_eq(sw_particles_solver_prepare(p, err, sizeof err), SW_OK);
+}
+
+/* The state, kind: 0 plucked and moving, 1 compressed to a tenth and
+ * strongly damped (the blocks refuse at large c), 2 beads 1 and 2 on one
+ * point (a spring of length 0), 3 huge velocities beside tiny positions,
+ * 4 a NaN velocity and an infinite position. */
+static void chain_state(double *y, int nb, int kind)
+{
+    for (int i = 0; i < nb; i++) {
+        double *x = y + 2 * i, *v = y + 2 * nb + 2 * i;
+        x[0] = (kind == 1 ? 0.1 : 1.0) * (i + 1.0 + 0.1 * sin(i));
+        x[1] = 0.4 * cos(1.7 * i);
+        v[0] = 0.3 * sin(2.1 * i) * (kind == 1 ? 300.0 : 1.0);
+        v[1] = -0.2 * i;
+        if (kind == 3) {
+            x[0] *= 1e-300;
+            x[1] *= 1e-300;
+            v[0] = 1e150 * (i % 3 - 1.0);
+        }
+    }
+    if (kind == 2 && nb > 2)
+        memcpy(y + 4, y + 2, 2 * sizeof *y);
+    if (kind == 4) {
+        y[2 * nb + 1] = NAN;
+        y[2 * (nb - 1)] = INFINITY;
+    }
+}
+
+/* A chain's velocity system filled and factored in one pass along the
+ * chain gives the bits of the band's fill and factorisation: the
+ * solutions (from fresh factors and from kept ones) and the return codes
+ * equal to the last bit on chains of several lengths and shapes, in
+ * hostile states too, and at c where the fused pass does not apply (c²
+ * underflowing to 0, or overflowing). The fused pass is taken wherever it
+ * applies and the blocks accept (its count rises), and never on pairs in
+ * another order, with own blocks or on one bead (no chain's band). The
+ * chain's right-hand side (with own blocks too) and the zero own blocks,
+ * left as constants, give the bits of the generic loops. */
+START_TEST(fused_chain_equals_band)
+{
+    static const int lengths[] = { 1, 2, 3, 7, FB };
+    static const double cs[] = { 0.05, 3.0, -0.02, 40.0, 1e-170, 1e200 };
+    for (int li = 0; li < 5; li++)
+        for (int shape = 0; shape < 6; shape++)
+            for (int kind = 0; kind < 5; kind++) {
+                int nb = lengths[li], dim = 4 * nb;
+                sw_particles p;
+                chain_shaped(&p, nb, shape);
+                double y[4 * FB], r[4 * FB], r2[4 * FB], zf[4 * FB], zg[4 * FB], wf[4 * FB], wg[4 * FB];
+                chain_state(y, nb, kind);
+                for (int i = 0; i < dim; i++)
+                    r[i] = sin(1.0 + 0.37 * i);
+                for (int k = 0; k < 6; k++) {
+                    /* the solve from kept factors: of plain numbers, of
+                     * zeros (+0 positions, -0 velocities: M·r_v + c·0·r_x
+                     * is +0, M·r_v alone -0) or with an infinite position
+                     * (0·∞: NaN where K·∞ alone is ∞) */
+                    for (int i = 0; i < dim; i++) {
+                        int v = (k + kind) % 3;
+                        r2[i] = v == 0 ? cos(0.3 + 1.1 * i) : v == 1 ? (i < dim / 2 ? 0.0 : -0.0) : r[i];
+                        if (v == 2 && i == nb / 2 * 2)
+                            r2[i] = INFINITY;
+                    }
+                    long before = sw_particles_solver_generic(&p, 0);
+                    int ef = sw_particles_solve(&p, 0.0, y, cs[k], r, zf);
+                    int ef2 = ef ? ef : sw_particles_solve_same(&p, 0.0, y, cs[k], r2, wf);
+                    long fused = sw_particles_solver_generic(&p, 1) - before;
+                    int eg = sw_particles_solve(&p, 0.0, y, cs[k], r, zg);
+                    int eg2 = eg ? eg : sw_particles_solve_same(&p, 0.0, y, cs[k], r2, wg);
+                    ck_assert_int_eq(sw_particles_solver_generic(&p, 0) - before, fused);
+                    ck_assert_msg(ef == eg && ef2 == eg2, "%d beads, shape %d, state %d, c %g: %d %d, %d %d", nb,
+                                  shape, kind, cs[k], ef, eg, ef2, eg2);
+                    ck_assert_msg(ef || (memcmp(zf, zg, (size_t)dim * sizeof *zf) == 0 &&
+                                         (ef2 || memcmp(wf, wg, (size_t)dim * sizeof *wf) == 0)),
+                                  "%d beads, shape %d, state %d, c %g: not the band's bits", nb, shape, kind,
+                                  cs[k]);
+                    if (shape >= 3 || k >= 4)
+                        ck_assert_int_eq(fused, 0);
+                    else if (kind == 0 && k < 3 && nb >= 2) /* one bead: a band of half width 1 */
+                        ck_assert_msg(fused == 1, "%d beads, shape %d, c %g: fused %ld", nb, shape, cs[k], fused);
+                }
+                sw_particles_free(&p);
+            }
+}
+END_TEST
+
 /* sw_dense_factor + sw_dense_lu_solve do the operations of sw_dense_solve in
  * the same order: equal bit for bit, on matrices that need row interchanges
  * (a small leading pivot) at several columns. */
@@ -526,6 +653,7 @@ Suite *make_solve_suite(void)
     tcase_add_test(tc, changed_state_or_c_refactors);
     tcase_add_test(tc, same_state_solve_is_the_solve);
     tcase_add_test(tc, own_blocks_skipped_where_zero);
+    tcase_add_test(tc, fused_chain_equals_band);
     tcase_add_test(tc, new_solve_leaves_no_stale_key);
     tcase_add_test(tc, dense_lu_equals_elimination);
     tcase_add_test(tc, band_chain_paths_equal_plain_loops);

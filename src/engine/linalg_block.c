@@ -21,19 +21,6 @@
  * error reached 3000 times the band's on stiff chains. */
 #include "engine/linalg_block.h"
 
-#include <float.h>
-#include <math.h>
-#include <string.h>
-
-typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
-
-/* Largest growth of a Schur complement over its diagonal block accepted,
- * in squared Frobenius norms (‖S_i‖ <= 16·‖D_i‖), and smallest second
- * pivot of a 2x2 block against its first (below: singular to working
- * precision). */
-#define GROWTH2_MAX 0x1p8
-#define PIVOT_MIN 0x1p-52
-
 /* A chain's band: ld = 2·kl + ku + 1 = 10, so block row i's diagonal
  * block starts at top + 20·i (column 0; column 1 at + 9), its lower
  * neighbour (i, i - 1) 18 before it and its upper (i, i + 1) 18 after. */
@@ -41,42 +28,19 @@ typedef double v2d __attribute__((vector_size(2 * sizeof(double))));
 #define ROW (2 * LD)
 #define COL1 (LD - 1)
 #define NEXT (2 * LD - 2)
-
-static inline v2d load(const double *p)
-{
-    v2d v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-static inline void store(double *p, v2d v)
-{
-    memcpy(p, &v, sizeof v);
-}
-
-/* Block row i's factors, SW_BLOCK_DOUBLES / nb doubles: W_i by columns
- * (0-3), then S_i = Pᵀ·[1 0; l 1]·[u11 u12; 0 u22] by its reciprocal
- * pivots, u12, l and whether P swaps the rows (4-8). */
-enum { W0 = 0, W1 = 2, R11 = 4, U12 = 5, R22 = 6, ELL = 7, SWAP = 8, PER = 10 };
-_Static_assert(PER == SW_BLOCK_PER, "block factors' length");
-
-/* ‖S‖²_F for S by its columns. */
-static inline double norm2(v2d s0, v2d s1)
-{
-    v2d q = s0 * s0 + s1 * s1;
-    return q[0] + q[1];
-}
+#define PER SW_BLOCK_PER
+_Static_assert(SW_BSWAP < PER, "block factors' length");
 
 /* z = S^-1·t by S's factors f. */
 static inline v2d block_apply(const double *f, v2d t)
 {
     double t0 = t[0], t1 = t[1];
-    if (f[SWAP] != 0) {
+    if (f[SW_BSWAP] != 0) {
         t0 = t[1];
         t1 = t[0];
     }
-    double x1 = (t1 - f[ELL] * t0) * f[R22];
-    return (v2d){ (t0 - f[U12] * x1) * f[R11], x1 };
+    double x1 = (t1 - f[SW_BELL] * t0) * f[SW_BR22];
+    return (v2d){ (t0 - f[SW_BU12] * x1) * f[SW_BR11], x1 };
 }
 
 int sw_block_factor(const sw_band *b, double *f)
@@ -86,45 +50,16 @@ int sw_block_factor(const sw_band *b, double *f)
         return -1;
     const double *e = b->a + b->kl + b->ku; /* block row i's diagonal block */
     int bad = 0;
-    const double *prev = f;
+    const double *prev = NULL;
     for (int i = 0; i < nb; i++, e += ROW, f += PER) {
-        v2d s0 = load(e), s1 = load(e + COL1), w0 = { 0, 0 }, w1 = { 0, 0 };
+        v2d s0 = load2(e), s1 = load2(e + COL1), l0 = s0, l1 = s0, u0 = s0, u1 = s0;
         if (i > 0) {
-            v2d l0 = load(e - NEXT), l1 = load(e - NEXT + COL1), u0 = load(e - 2), u1 = load(e - 2 + COL1);
-            /* W = L·S^-1 by rows (the two lanes): z·U = row of L, then
-             * ·[1 0; -l 1], then P's swap of the columns */
-            v2d z0 = l0 * prev[R11];
-            v2d z1 = (l1 - z0 * prev[U12]) * prev[R22];
-            z0 = z0 - z1 * prev[ELL];
-            w0 = prev[SWAP] != 0 ? z1 : z0;
-            w1 = prev[SWAP] != 0 ? z0 : z1;
-            double dn = norm2(s0, s1);
-            s0 = s0 - (w0 * u0[0] + w1 * u0[1]); /* S = D - W·U */
-            s1 = s1 - (w0 * u1[0] + w1 * u1[1]);
-            bad |= !(norm2(s0, s1) <= GROWTH2_MAX * dn);
+            l0 = load2(e - NEXT);
+            l1 = load2(e - NEXT + COL1);
+            u0 = load2(e - 2);
+            u1 = load2(e - 2 + COL1);
         }
-        /* S finite (its squared norm is): then so are its factors, |l| <= 1 */
-        bad |= !(norm2(s0, s1) <= DBL_MAX);
-        /* S's LU with the larger of its first column's entries as pivot */
-        double a = s0[0], c = s0[1], bb = s1[0], d = s1[1];
-        int swap = fabs(c) > fabs(a);
-        if (swap) {
-            double t = a;
-            a = c;
-            c = t;
-            t = bb;
-            bb = d;
-            d = t;
-        }
-        double l = c / a, u22 = d - l * bb;
-        bad |= !(fabs(u22) > PIVOT_MIN * fabs(a)); /* false too where a = 0: l is NaN */
-        store(f + W0, w0);
-        store(f + W1, w1);
-        f[R11] = 1.0 / a;
-        f[U12] = bb;
-        f[R22] = 1.0 / u22;
-        f[ELL] = l;
-        f[SWAP] = swap;
+        bad |= sw_block_row(f, prev, s0, s1, l0, l1, u0, u1);
         prev = f;
     }
     return bad ? -1 : 0;
@@ -135,20 +70,20 @@ void sw_block_solve(const sw_band *b, const double *f, double *x)
     int nb = b->n / 2;
     if (nb == 0)
         return;
-    v2d prev = load(x);
+    v2d prev = load2(x);
     for (int i = 1; i < nb; i++) { /* y_i = x_i - W_i·y_(i-1) */
         const double *fi = f + PER * i;
-        prev = load(x + 2 * i) - (load(fi + W0) * prev[0] + load(fi + W1) * prev[1]);
-        store(x + 2 * i, prev);
+        prev = load2(x + 2 * i) - (load2(fi + SW_BW0) * prev[0] + load2(fi + SW_BW1) * prev[1]);
+        store2(x + 2 * i, prev);
     }
     /* x_i = S_i^-1·(y_i - U_i·x_(i+1)), the last row without U */
     const double *e = b->a + b->kl + b->ku + (size_t)ROW * (size_t)(nb - 1);
     v2d next = block_apply(f + PER * (nb - 1), prev);
-    store(x + 2 * (nb - 1), next);
+    store2(x + 2 * (nb - 1), next);
     for (int i = nb - 2; i >= 0; i--) {
         e -= ROW;
-        v2d yi = load(x + 2 * i) - (load(e + NEXT) * next[0] + load(e + NEXT + COL1) * next[1]);
+        v2d yi = load2(x + 2 * i) - (load2(e + NEXT) * next[0] + load2(e + NEXT + COL1) * next[1]);
         next = block_apply(f + PER * i, yi);
-        store(x + 2 * i, next);
+        store2(x + 2 * i, next);
     }
 }

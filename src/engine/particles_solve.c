@@ -65,6 +65,11 @@ struct sw_particles_solver {
      * the band's own (where they refused). */
     double *block;
     int blocked;
+    /* chain: the pairs are chain_ordered's (with lead and flip), checked
+     * at the factorisation; generic: never the chain's own passes nor the
+     * zero own blocks' shortcut (tests compare them with the generic ones) */
+    int chain, lead, flip, generic;
+    long fused;            /* factorisations the fused path kept */
 };
 
 int sw_particles_solver_init(sw_particles *p)
@@ -360,6 +365,85 @@ SW_INLINE void fill_velocity_system(const sw_particles *p, double a, double b, c
     }
 }
 
+/* 1 when the pairs are a chain's in the order the band's fill meets
+ * them: at most one anchored spring on particle 0 first, then (i, i + 1)
+ * for i = 0, 1, ..., n - 2 (either end first), then at most one anchored
+ * spring on particle n - 1; *lead = 1 with the first, *flip = 1 where
+ * every (i, i + 1) spring has i + 1 first, 0 where every one has i (not
+ * a chain's otherwise). Each particle's own block then gets its terms as
+ * fill_velocity_system adds them: its mass, the left spring's, the right
+ * spring's. */
+static int chain_ordered(const struct sw_particles_solver *s, int n, int *lead, int *flip)
+{
+    long j = 0, np = s->npairs;
+    const int *pa = s->pa, *pb = s->pb;
+#define SW_ANCHOR(j, k) (j < np && ((pa[j] == k && pb[j] < 0) || (pa[j] < 0 && pb[j] == k)))
+    *lead = SW_ANCHOR(0, 0);
+    j = *lead;
+    *flip = n > 1 && j < np && pa[j] == 1;
+    if (np - j < n - 1)
+        return 0;
+    for (int i = 0; i + 1 < n; i++, j++)
+        if (pa[j] != i + *flip || pb[j] != i + 1 - *flip)
+            return 0;
+    j += SW_ANCHOR(j, n - 1);
+#undef SW_ANCHOR
+    return n >= 1 && j == np;
+}
+
+/* d += the products of a pair, column by column, a's before b's (the
+ * order band_blocks adds them in). */
+SW_INLINE void add_products(v2d *d0, v2d *d1, const block_cols *p)
+{
+    *d0 = *d0 + p->a0;
+    *d1 = *d1 + p->a1;
+    *d0 = *d0 + p->b0;
+    *d1 = *d1 + p->b1;
+}
+
+/* A chain's velocity system (chain_ordered, no own blocks, a and b
+ * finite and nonzero) filled and factored by blocks in one pass along the
+ * chain: each particle's diagonal block made in registers (0 + m on its
+ * diagonal, +0 beside, then the springs' products in fill_velocity_system's
+ * order), its upper neighbour (i, i + 1), the only entry of that spring's
+ * off-diagonal blocks, as (+0 - a·Kx) - b·Kv, which is also the lower
+ * block of the row below, and each row factored by sw_block_row as
+ * sw_block_factor factors it from the band: the same bits. Only the upper
+ * blocks go into the band (the block solve reads them). 0, or -1 where the
+ * blocks refuse (then the band holds nothing whole). */
+static int factor_chain(sw_particles *p, double a, double b, const sw_band *band, int lead)
+{
+    const struct sw_particles_solver *s = p->solver;
+    const double *blk = s->pblock;
+    double *e = band->a + band->kl + band->ku, *f = s->block; /* row 0's diagonal block and factors */
+    const v2d zero = { 0.0, 0.0 };
+    v2d l0 = zero, l1 = zero; /* the block left of the row's diagonal (row > 0) */
+    block_cols left = { zero, zero, zero, zero };
+    int n = p->n, bad = 0;
+    if (lead) {
+        left = block_products(a, blk, b, blk + 4, 1, 1);
+        blk += 8;
+    }
+    for (int i = 0; i < n; i++, e += 2 * CHAIN_LD, f += SW_BLOCK_PER) {
+        v2d d0 = { 0.0 + p->mass[i], 0.0 }, d1 = { 0.0, 0.0 + p->mass[i] };
+        if (lead || i > 0)
+            add_products(&d0, &d1, &left);
+        if (i + 1 < n || blk < s->pblock + 8 * s->npairs) { /* the right spring, or the last anchor */
+            left = block_products(a, blk, b, blk + 4, 1, 1);
+            blk += 8;
+            add_products(&d0, &d1, &left);
+        }
+        bad |= sw_block_row(f, i > 0 ? f - SW_BLOCK_PER : NULL, d0, d1, l0, l1, l0, l1);
+        if (i + 1 < n) {
+            l0 = (zero - left.a0) - left.b0;
+            l1 = (zero - left.a1) - left.b1;
+            store2(e + 2 * CHAIN_LD - 2, l0);
+            store2(e + 3 * CHAIN_LD - 3, l1);
+        }
+    }
+    return bad ? -1 : 0;
+}
+
 /* A = M - c·Fv - c²·Fx into the band, and its factors: a chain's by
  * blocks where they are safe, else the band's with row interchanges. 0,
  * or -1 when A is singular. a = -c² and b = -c are both nonzero but where
@@ -374,6 +458,16 @@ static int factor_velocity_system(sw_particles *p, double c, sw_band *band)
      * +0 + (±0) = +0, so the own block is m·I, the same bits, without
      * its products and sums. */
     int own = s->own || !isfinite(a) || !isfinite(b);
+    s->chain = s->half_band == 3 && !s->generic && chain_ordered(s, p->n, &s->lead, &s->flip);
+    if (a != 0 && b != 0 && !own && s->chain) {
+        s->blocked = factor_chain(p, a, b, band, s->lead) == 0;
+        if (s->blocked) {
+            s->fused++;
+            return 0;
+        }
+        fill_velocity_system(p, a, b, band, 1, 1, 0); /* the blocks refused, as they do from the band */
+        return sw_band_factor(band);
+    }
     if (a != 0 && b != 0 && own)
         fill_velocity_system(p, a, b, band, 1, 1, 1);
     else if (a != 0 && b != 0)
@@ -406,11 +500,60 @@ static SW_CLONES void own_blocks_times(int n, const double *diag, double c, cons
     }
 }
 
+/* out = M·v + c·K_i·w with each particle's own block K_i = 0 (no force
+ * writes them: +0 each, the assembly's): mass_times then
+ * own_blocks_times' operations, the zeros constants (0·w is no constant:
+ * -0, NaN) and the product c·(0·w_x + 0·w_y), the same in both rows,
+ * made once; one pass (out may be v: each read before written). */
+static SW_CLONES void mass_times_zero_own(int n, const double *mass, const double *v, double c,
+                                         const double *restrict w, double *out)
+{
+    for (int i = 0; i < n; i++) {
+        double own = c * (0.0 * w[2 * i] + 0.0 * w[2 * i + 1]);
+        out[2 * i] = mass[i] * v[2 * i] + own;
+        out[2 * i + 1] = mass[i] * v[2 * i + 1] + own;
+    }
+}
+
 /* z = r + c·v over n components (z may be r: each read before written). */
 static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, const double *v)
 {
     for (int i = 0; i < n; i++)
         z[i] = r[i] + c * v[i];
+}
+
+/* out += c·Fx·r_x for a pair (ea, eb, both particles) with Fx block kx:
+ * the four blocks of apply_block, each product K·r_a, K·r_b made once
+ * (the same operations, in the same order). */
+SW_INLINE void pair_rhs(double *restrict out, const double *kx, int ea, int eb, double c, const double *r)
+{
+    double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
+    double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
+    double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
+    double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
+    double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
+    out[2 * ea] = ax + -c * kbx;
+    out[2 * ea + 1] = ay + -c * kby;
+    double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
+    out[2 * eb] = bx + c * kbx;
+    out[2 * eb + 1] = by + c * kby;
+}
+
+/* The pairs' terms of velocity_rhs on a chain (chain_ordered, flip its
+ * springs' first ends): the same terms in the same order, the ends known
+ * from the chain's shape rather than read and tested a pair at a time. */
+SW_INLINE void chain_pairs_rhs(const struct sw_particles_solver *s, int n, double c, const double *r,
+                               double *restrict out, int flip)
+{
+    const double *kx = s->pblock;
+    if (s->lead) {
+        apply_block(out, 0, 0, c, kx, r);
+        kx += 8;
+    }
+    for (int i = 0; i + 1 < n; i++, kx += 8)
+        pair_rhs(out, kx, i + flip, i + 1 - flip, c, r);
+    if (kx < s->pblock + 8 * s->npairs)
+        apply_block(out, n - 1, n - 1, c, kx, r);
 }
 
 /* out = M r_v + c·Fx r_x, from the blocks (c = 0: M r_v alone), out 2n
@@ -421,27 +564,27 @@ static void velocity_rhs(const sw_particles *p, double c, const double *r, doubl
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;
-    mass_times(p->n, p->mass, r + n2, out_v);
-    if (c == 0)
+    if (c != 0 && !s->own && !s->generic) {
+        mass_times_zero_own(p->n, p->mass, r + n2, c, r, out_v);
+    } else {
+        mass_times(p->n, p->mass, r + n2, out_v);
+        if (c == 0)
+            return;
+        own_blocks_times(p->n, s->diag, c, r, out_v);
+    }
+    if (s->chain && !s->generic) {
+        if (s->flip)
+            chain_pairs_rhs(s, p->n, c, r, out_v, 1);
+        else
+            chain_pairs_rhs(s, p->n, c, r, out_v, 0);
         return;
-    own_blocks_times(p->n, s->diag, c, r, out_v);
+    }
     double *restrict out = out_v; /* only r's position half is read below */
     for (long j = 0; j < s->npairs; j++) {
         const double *kx = s->pblock + 8 * j;
         int ea = s->pa[j], eb = s->pb[j];
         if (ea >= 0 && eb >= 0) {
-            /* the four blocks of apply_block below, each product K·r_a,
-             * K·r_b made once (the same operations, in the same order) */
-            double kax = kx[0] * r[2 * ea] + kx[1] * r[2 * ea + 1];
-            double kay = kx[2] * r[2 * ea] + kx[3] * r[2 * ea + 1];
-            double kbx = kx[0] * r[2 * eb] + kx[1] * r[2 * eb + 1];
-            double kby = kx[2] * r[2 * eb] + kx[3] * r[2 * eb + 1];
-            double ax = out[2 * ea] + c * kax, ay = out[2 * ea + 1] + c * kay;
-            out[2 * ea] = ax + -c * kbx;
-            out[2 * ea + 1] = ay + -c * kby;
-            double bx = out[2 * eb] + -c * kax, by = out[2 * eb + 1] + -c * kay;
-            out[2 * eb] = bx + c * kbx;
-            out[2 * eb + 1] = by + c * kby;
+            pair_rhs(out, kx, ea, eb, c, r);
             continue;
         }
         if (ea >= 0)
@@ -465,6 +608,13 @@ static SW_CLONES int key_moved(int len, double *restrict key, const double *rest
         key[i] = y[i];
     }
     return diff != 0;
+}
+
+long sw_particles_solver_generic(sw_particles *p, int generic)
+{
+    p->solver->generic = generic;
+    p->solver->factored = 0;
+    return p->solver->fused;
 }
 
 void sw_particles_solver_touch(sw_particles *p)

@@ -24,6 +24,14 @@ int sw_particles_solve_same(void *ctx, double t, const double *y, double c, cons
 /* The same, factored afresh, asked for again only through
  * sw_particles_solve_same (ode_fast.h's solve_new). */
 int sw_particles_solve_new(void *ctx, double t, const double *y, double c, const double *r, double *z);
+/* For tests: with generic 1, a chain's velocity system is always filled
+ * into the band and factored from there, never in the fused pass along
+ * the chain (particles_solve.c's factor_chain), the right-hand side's
+ * own blocks are always read, even where they are zero, and its pairs'
+ * ends read and tested a pair at a time on a chain too: each must give
+ * the same bits as its shortcut; 0 restores the default. Returns how many factorisations the
+ * fused pass has made and kept so far. */
+long sw_particles_solver_generic(sw_particles *p, int generic);
 /* Forget the kept factorisation: the forces or masses changed in place
  * (sw_particles_finish calls it). */
 void sw_particles_solver_touch(sw_particles *p);

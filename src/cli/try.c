@@ -28,7 +28,7 @@ static const char try_help[] =
     "                    [--watch] [--no-play]\n"
     "\n"
     "Your integrator, tried the way rustlings tries an exercise: builds FILE.c with the\n"
-    "flags docs/plugins.md gives, measures its order (errors on the undamped spring as\n"
+    "flags docs/plugins.md gives, measures its order (errors on the run it checks as\n"
     "dt halves) and its stability limit, checks it value by value against a built-in\n"
     "method, and, on a terminal, runs it live beside that method (play with compare;\n"
     "q goes on). With --watch it starts again each time you save FILE.\n"
@@ -69,18 +69,21 @@ static const sw_integrator *default_reference(int order)
     return best;
 }
 
-static void print_measure(const sw_integrator *m, const sw_integrator *ref)
+/* The figures the check measured, as grade measures them: the order on
+ * the run checked, the stability limit on the spring. */
+static void print_measure(const sw_verdict *v, const sw_integrator *ref)
 {
-    double order, wdt;
-    int kind;
     char why[SW_ERRLEN];
-    if (sw_measure_order(m, &order, NULL, why, sizeof why) == SW_OK)
-        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", m->order, order, ref->name,
+    if (!isnan(v->order))
+        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", v->claimed_order, v->order, ref->name,
                ref->order);
     else
-        printf("  order      claimed %d, not measured: %s\n", m->order, why);
-    if (sw_measure_stability(m, &wdt, &kind, why, sizeof why) != SW_OK) {
-        printf("  stability  not measured: %s\n", why);
+        printf("  order      claimed %d, not measured: %s\n", v->claimed_order,
+               v->measure_note + strlen("order not measured: "));
+    if (isnan(v->order))
+        return;
+    if (isnan(v->stability)) {
+        printf("  stability  not measured: %s\n", v->measure_note + strlen("stability not measured: "));
         return;
     }
     /* the reference's figure measured the same way, as grade compares them */
@@ -91,14 +94,14 @@ static void print_measure(const sw_integrator *m, const sw_integrator *ref)
         snprintf(rshown, sizeof rshown, "not measured");
     else
         snprintf(rshown, sizeof rshown, rkind == 1 ? "none" : rkind == 2 ? "unbounded" : "%.4g", rwdt);
-    if (kind == 1)
+    if (v->stability_kind == 1)
         printf("  stability  none: grows even at w*dt = 0.01 on the undamped spring (%s: %s)\n",
                ref->name, rshown);
-    else if (kind == 2)
+    else if (v->stability_kind == 2)
         printf("  stability  unbounded on the undamped spring (%s: %s)\n", ref->name, rshown);
     else
         printf("  stability  largest stable w*dt %.4g on the undamped spring (%s: %s, measured the same "
-               "way)\n", wdt, ref->name, rshown);
+               "way)\n", v->stability, ref->name, rshown);
 }
 
 /* When the plugin fails its check: the built-in method it matches, if any. */
@@ -148,10 +151,11 @@ static int try_once(try_args *a)
     memcpy(req.p, a->o.p, sizeof req.p);
     req.dt = a->o.dt;
     req.spec.until = a->o.scene->duration;
+    req.measure = 1; /* on the run checked, as grade measures */
     static sw_verdict v;
-    sw_check_run(&req, &v); /* first: a plugin that crashes is named with its step */
-    if (!v.got_end.fault)
-        print_measure(m, ref);
+    sw_check_run(&req, &v); /* a plugin that crashes is named with its step */
+    if (v.have_measure)
+        print_measure(&v, ref);
     printf("  check      ");
     fflush(stdout);
     sw_check_print_plain(stdout, &v);

@@ -431,13 +431,20 @@ static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
 
 /* ---- a plugin ---------------------------------------------------------------- */
 
-static void measure(sw_verdict *v, const sw_integrator *plugin)
+/* The order on the graded run itself (the probe), the stability limit on
+ * the spring once the order stands (docs/grading.md, "What a measured
+ * figure stands on"). */
+static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_sim *graded,
+                    const sw_trace_spec *spec)
 {
     v->have_measure = 1;
     v->claimed_order = plugin->order;
     v->order = v->stability = NAN;
     char why[SW_ERRLEN];
-    if (sw_measure_order(plugin, &v->order, NULL, why, sizeof why) != SW_OK) {
+    sw_measure_probe pr = { .scene = graded->sys.scene, .p = graded->sys.p, .dt = graded->dt,
+                            .stop_at = spec->steps > 0 ? 0.0 : spec->until,
+                            .graded_steps = graded->steps, .graded_y = graded->sys.y };
+    if (sw_measure_order_on(plugin, &pr, &v->order, NULL, why, sizeof why) != SW_OK) {
         snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", why);
         return;
     }
@@ -508,7 +515,7 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
         if (v->got_end.fault != SW_PF_NONE)
             v->failing_step = v->got_end.step;
         if (req->measure && v->got_end.fault == SW_PF_NONE)
-            measure(v, req->plugin);
+            measure(v, req->plugin, &got_sim, &spec);
         v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
         /* The same "why" as a trace gets: the plugin's first rows, run
          * afresh, against the usual mistakes. A crash or overrun is its

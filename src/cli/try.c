@@ -6,6 +6,7 @@
  * happens in a child process and starts again whenever the file is saved. */
 #include "cli/cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -35,7 +36,9 @@ static const char try_help[] =
     "\n"
     "options:\n"
     "      --reference NAME   the method to match (default: by the order you claim:\n"
-    "                         1 euler, 2 midpoint, 4 rk4)\n"
+    "                         1 euler, 2 midpoint, 4 rk4; a name or label that says\n"
+    "                         symplectic, verlet or leapfrog: 1 symplectic-euler,\n"
+    "                         2 verlet, 4 yoshida4)\n"
     "      --scene SCENE      where to check and show it (default chain: it tells methods apart)\n"
     "  -s, --set PARAM=VALUE  a scene parameter; repeatable\n"
     "      --watch            run again whenever FILE changes (Ctrl-C stops)\n"
@@ -51,17 +54,36 @@ typedef struct try_args {
     int watch, play;
 } try_args;
 
-/* The lecture's method a plugin of this order is compared with: the first
- * plain fixed-step explicit built-in (euler, midpoint, rk4: no other flag)
- * of at least that order, else the highest-order one. */
-static const sw_integrator *default_reference(int order)
+/* Whether the plugin's own words (its name or label) claim a symplectic
+ * method: the ABI has no flags, and a symplectic Euler compared with
+ * euler fails for being right. */
+static int claims_symplectic(const sw_integrator *m)
 {
+    static const char *const words[] = { "symplectic", "verlet", "leapfrog", "stormer", "st\xc3\xb6rmer",
+                                         "semi-implicit" };
+    char said[256];
+    snprintf(said, sizeof said, "%.120s %.120s", m->name ? m->name : "", m->label ? m->label : "");
+    for (char *c = said; *c; c++)
+        *c = (char)tolower((unsigned char)*c);
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (strstr(said, words[i]))
+            return 1;
+    return 0;
+}
+
+/* The lecture's method a plugin of this order is compared with: the first
+ * plain fixed-step explicit built-in (euler, midpoint, rk4: no other flag;
+ * for a symplectic claim symplectic-euler, verlet, yoshida4) of at least
+ * that order, else the highest-order one. */
+static const sw_integrator *default_reference(const sw_integrator *plugin)
+{
+    unsigned want = claims_symplectic(plugin) ? SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER : SW_EXPLICIT;
     const sw_integrator *best = NULL;
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);
-        if (m->flags != SW_EXPLICIT)
+        if ((unsigned)m->flags != want)
             continue;
-        if (m->order >= order)
+        if (m->order >= plugin->order)
             return m;
         if (!best || m->order > best->order)
             best = m;
@@ -132,7 +154,7 @@ static int try_once(try_args *a)
         if (sw_cli_integrator(a->reference, &ref) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     } else
-        ref = default_reference(m->order);
+        ref = default_reference(m);
     if (sw_cli_scene(a->scene ? a->scene : "chain", &a->o.scene) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     a->o.method = ref;

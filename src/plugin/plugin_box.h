@@ -21,6 +21,7 @@ typedef struct sw_host_link {
     sw_host_reply fault;                   /* a FAULT record the host sent before it died */
     int have_fault;
     int dying;                             /* it said DYING: every step before was sent */
+    long long printed;                     /* ... and the plugin had printed this many bytes */
     unsigned char rbuf[1 << 16];           /* what was read from the host and not yet used */
     size_t rpos, rlen;
 } sw_host_link;

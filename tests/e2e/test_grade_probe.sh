@@ -7,8 +7,9 @@
 # tests/data/cheat/ tell the runs apart by the particle count (dim.c), the
 # initial state (start.c), the graded dt (dt.c), the run count (count.c)
 # and the step count (steps.c); none earns the order point, each for the
-# reason the feedback names. An honest RK4 and an honest Euler keep every
-# point they earned.
+# reason the feedback names; nor the stability point, measured on a
+# spring of its own only for a plugin whose order on its graded run is the
+# method's. An honest RK4 and an honest Euler keep every point they earned.
 . "$(dirname "$0")/lib.sh"
 needs_jail
 cheat="$ROOT/tests/data/cheat"
@@ -27,18 +28,25 @@ for m in rk4 euler; do
 # steps: 100
 # points x* y*: 7
 # points order: 1
+# points stability: 1
 A
 done
 "$SW" grade --assignment hw-rk4.txt --csv rk4.csv --feedback fb class > rk4.out 2>&1
 [ $? -le 1 ] || fail "grade exited $?: $(cat rk4.out)"
 score() { grep "^$1,class/$1.c," "$2" | awk -F, '{ print $(NF-2) "/" $(NF-1) }'; }
-[ "$(score honest_rk4 rk4.csv)" = 8/8 ] || fail "the honest RK4 lost points: $(cat fb/honest_rk4.txt)"
+[ "$(score honest_rk4 rk4.csv)" = 9/9 ] || fail "the honest RK4 lost points: $(cat fb/honest_rk4.txt)"
 for c in dim start dt count steps honest_euler; do
-    [ "$(score $c rk4.csv)" = 0/8 ] || fail "$c scored $(score $c rk4.csv): $(grep -i order fb/$c.txt)"
+    [ "$(score $c rk4.csv)" = 0/9 ] || fail "$c scored $(score $c rk4.csv): $(grep -i order fb/$c.txt)"
     grep -q "order: 0 of 1" fb/$c.txt || fail "$c: no order line: $(cat fb/$c.txt)"
+    grep -q "stability: 0 of 1" fb/$c.txt || fail "$c: no stability line: $(cat fb/$c.txt)"
 done
 # each for its own reason
 grep -q "order: 0 of 1: measured order 0\.9" fb/dim.txt || fail "dim: $(grep 'order:' fb/dim.txt)"
+# the stability limit is measured on a spring of its own (dim 4, which the
+# dim cheater runs RK4 on): only for a plugin whose order on its graded
+# run is the method's
+grep -q "stability: 0 of 1: stability not measured: the order measured on the graded run (0\.9[0-9]*) is not rk4's (4)" \
+    fb/dim.txt || fail "dim's stability: $(grep 'stability:' fb/dim.txt)"
 grep -q "order: 0 of 1: measured order 0\.9" fb/start.txt || fail "start: $(grep 'order:' fb/start.txt)"
 grep -q "is not on the line the finer steps give" fb/dt.txt || fail "dt: $(grep 'order:' fb/dt.txt)"
 grep -q "did not repeat its graded run" fb/count.txt || fail "count: $(grep 'order:' fb/count.txt)"
@@ -46,7 +54,7 @@ grep -q "order: 0 of 1: measured order" fb/steps.txt || fail "steps: $(grep 'ord
 # an honest Euler on an Euler homework keeps both
 "$SW" grade --assignment hw-euler.txt --csv euler.csv class/honest_euler.c > euler.out 2>&1 \
     || fail "honest Euler on euler: $(cat euler.out)"
-[ "$(score honest_euler euler.csv)" = 8/8 ] || fail "the honest Euler lost points: $(cat euler.out)"
+[ "$(score honest_euler euler.csv)" = 9/9 ] || fail "the honest Euler lost points: $(cat euler.out)"
 # check and try measure as grade does: the dt cheater has no order there either
 "$SW" check --plugin class/dt.c --reference rk4 --scene chain > check.out 2>&1
 grep -q "is not on the line the finer steps give" check.out || fail "check: $(cat check.out)"

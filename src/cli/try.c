@@ -54,19 +54,24 @@ typedef struct try_args {
     int watch, play;
 } try_args;
 
+#define SYMPLECTIC (SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER)
+
 /* Whether the plugin's own words (its name or label) claim a symplectic
- * method: the ABI has no flags, and a symplectic Euler compared with
- * euler fails for being right. */
+ * method (the ABI has no flags, and a symplectic Euler compared with
+ * euler fails for being right): the words below, or the name of an
+ * explicit symplectic built-in. */
 static int claims_symplectic(const sw_integrator *m)
 {
-    static const char *const words[] = { "symplectic", "verlet", "leapfrog", "stormer", "st\xc3\xb6rmer",
-                                         "semi-implicit" };
+    static const char *const words[] = { "symplectic", "leapfrog", "stormer", "st\xc3\xb6rmer", "semi-implicit" };
     char said[256];
     snprintf(said, sizeof said, "%.120s %.120s", m->name ? m->name : "", m->label ? m->label : "");
     for (char *c = said; *c; c++)
         *c = (char)tolower((unsigned char)*c);
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (strstr(said, words[i]))
+            return 1;
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i)->flags == SYMPLECTIC && strstr(said, sw_integrator_at(i)->name))
             return 1;
     return 0;
 }
@@ -77,7 +82,7 @@ static int claims_symplectic(const sw_integrator *m)
  * that order, else the highest-order one. */
 static const sw_integrator *default_reference(const sw_integrator *plugin)
 {
-    unsigned want = claims_symplectic(plugin) ? SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER : SW_EXPLICIT;
+    unsigned want = claims_symplectic(plugin) ? SYMPLECTIC : SW_EXPLICIT;
     const sw_integrator *best = NULL;
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);

@@ -132,9 +132,9 @@ static const char *off_graded_dt(const sw_bench_series *s, double scale, char *b
     else if (fabs(slope - s->order) < SW_MEASURE_GRADED_SLOPE)
         return NULL;
     else
-        snprintf(buf, len, "the error at the graded dt (%g: %.2g) is not on the line the finer steps give (slope "
-                 "%.2f to dt = %g, order %.2f from there on): a method that is not the same at every dt has no "
-                 "order", p0->h, e0, slope, f->h, s->order);
+        snprintf(buf, len, "the error at the graded dt (%g: %.2g) is off the line of the finer steps (slope "
+                 "%.2f to dt = %g, order %.2f below it): a method not the same at every dt has no order", p0->h,
+                 e0, slope, f->h, s->order);
     return buf;
 }
 

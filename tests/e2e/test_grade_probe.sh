@@ -48,7 +48,7 @@ grep -q "order: 0 of 1: measured order 0\.9" fb/dim.txt || fail "dim: $(grep 'or
 grep -q "stability: 0 of 1: stability not measured: the order measured on the graded run (0\.9[0-9]*) is not rk4's (4)" \
     fb/dim.txt || fail "dim's stability: $(grep 'stability:' fb/dim.txt)"
 grep -q "order: 0 of 1: measured order 0\.9" fb/start.txt || fail "start: $(grep 'order:' fb/start.txt)"
-grep -q "is not on the line the finer steps give" fb/dt.txt || fail "dt: $(grep 'order:' fb/dt.txt)"
+grep -q "is off the line of the finer steps" fb/dt.txt || fail "dt: $(grep 'order:' fb/dt.txt)"
 grep -q "did not repeat its graded run" fb/count.txt || fail "count: $(grep 'order:' fb/count.txt)"
 grep -q "order: 0 of 1: measured order" fb/steps.txt || fail "steps: $(grep 'order:' fb/steps.txt)"
 # an honest Euler on an Euler homework keeps both
@@ -57,7 +57,7 @@ grep -q "order: 0 of 1: measured order" fb/steps.txt || fail "steps: $(grep 'ord
 [ "$(score honest_euler euler.csv)" = 9/9 ] || fail "the honest Euler lost points: $(cat euler.out)"
 # check and try measure as grade does: the dt cheater has no order there either
 "$SW" check --plugin class/dt.c --reference rk4 --scene chain > check.out 2>&1
-grep -q "is not on the line the finer steps give" check.out || fail "check: $(cat check.out)"
+grep -q "is off the line of the finer steps" check.out || fail "check: $(cat check.out)"
 "$SW" try class/dt.c --reference rk4 --no-play > try.out 2>&1
 grep -q "order      claimed 4, not measured: no order: the error at the graded dt" try.out || fail "try: $(cat try.out)"
 "$SW" try class/honest_rk4.c --no-play > try.out 2>&1 || fail "try honest: $(cat try.out)"

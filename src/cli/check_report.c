@@ -240,8 +240,8 @@ static void print_measure(FILE *out, const sw_verdict *v)
         fprintf(out, "  %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;
     }
-    fprintf(out, "  order: claimed %d, measured %.2f (undamped spring, largest error to t = 2, dt halved "
-           "from 0.16 until the local slopes agree)\n", v->claimed_order, v->order);
+    fprintf(out, "  order: claimed %d, measured %.2f (on the run checked: %s from dt = %g, dt halved until the "
+            "local slopes agree)\n", v->claimed_order, v->order, v->scene, v->dt);
     if (isnan(v->stability))
         fprintf(out, "  %s\n", v->measure_note); /* "stability not measured: why" */
     else if (isinf(v->stability))

@@ -80,16 +80,16 @@ typedef struct book_row {
 
 /* A row's text: its cells point into e and into the caller's buffers. */
 typedef struct row_text {
-    char student[SW_TRACE_STUDENT_MAX], step[24], score[32], max[32];
+    char student[4 * SW_TRACE_STUDENT_MAX + 8], step[24], score[32], max[32];
     char file[4 * PATH_MAX + 8];
 } row_text;
 
-/* The file cell, the gradebook's key for a row: the path with every
+/* The student and file cells, a row's keys: the text with every
  * backslash escaped too (\x5c), so two names never give one cell (the
  * message rule keeps backslashes, and "Jos\xe9" written as is would read
- * as the Latin-1 "Jos" + é escaped). Cut to fit a cell, it ends in a
- * digest of the whole path. */
-static void file_cell(const char *path, char *out, size_t outlen)
+ * as the Latin-1 "Jos" + é escaped). A path too long for a cell (over
+ * 3800 bytes escaped) ends in a digest of the whole. */
+static void key_cell(const char *path, char *out, size_t outlen)
 {
     sw_escape(path, strlen(path), out, outlen);
     size_t n = strlen(out);
@@ -103,8 +103,10 @@ static void file_cell(const char *path, char *out, size_t outlen)
 
 static void row_cells(const grade_list *l, const grade_entry *e, const char **cells, row_text *t)
 {
-    grade_student_of(e, t->student, sizeof t->student);
-    file_cell(e->path ? e->path : "", t->file, sizeof t->file);
+    char student[SW_TRACE_STUDENT_MAX];
+    grade_student_of(e, student, sizeof student);
+    key_cell(student, t->student, sizeof t->student);
+    key_cell(e->path ? e->path : "", t->file, sizeof t->file);
     t->step[0] = t->score[0] = t->max[0] = '\0';
     if (e->failing_step >= 0)
         snprintf(t->step, sizeof t->step, "%ld", e->failing_step);
@@ -276,7 +278,10 @@ int grade_book_has_student(const grade_list *l, const char *name)
     FILE *f = open_memstream(&line, &len);
     if (!f)
         return 0;
-    sw_csv_field(f, name);
+    char cut[SW_TRACE_STUDENT_MAX], held_as[4 * SW_TRACE_STUDENT_MAX + 8];
+    snprintf(cut, sizeof cut, "%s", name); /* as grade_student_of gives it */
+    key_cell(cut, held_as, sizeof held_as);
+    sw_csv_field(f, held_as);
     fputs("\r\n", f);
     int known = 0;
     sw_csv_doc d;

@@ -6,6 +6,7 @@
  * happens in a child process and starts again whenever the file is saved. */
 #include "cli/cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -28,14 +29,16 @@ static const char try_help[] =
     "                    [--watch] [--no-play]\n"
     "\n"
     "Your integrator, tried the way rustlings tries an exercise: builds FILE.c with the\n"
-    "flags docs/plugins.md gives, measures its order (errors on the undamped spring as\n"
+    "flags docs/plugins.md gives, measures its order (errors on the run it checks as\n"
     "dt halves) and its stability limit, checks it value by value against a built-in\n"
     "method, and, on a terminal, runs it live beside that method (play with compare;\n"
     "q goes on). With --watch it starts again each time you save FILE.\n"
     "\n"
     "options:\n"
     "      --reference NAME   the method to match (default: by the order you claim:\n"
-    "                         1 euler, 2 midpoint, 4 rk4)\n"
+    "                         1 euler, 2 midpoint, 4 rk4; a name or label that says\n"
+    "                         symplectic, verlet or leapfrog: 1 symplectic-euler,\n"
+    "                         2 verlet, 4 yoshida4)\n"
     "      --scene SCENE      where to check and show it (default chain: it tells methods apart)\n"
     "  -s, --set PARAM=VALUE  a scene parameter; repeatable\n"
     "      --watch            run again whenever FILE changes (Ctrl-C stops)\n"
@@ -51,17 +54,41 @@ typedef struct try_args {
     int watch, play;
 } try_args;
 
-/* The lecture's method a plugin of this order is compared with: the first
- * plain fixed-step explicit built-in (euler, midpoint, rk4: no other flag)
- * of at least that order, else the highest-order one. */
-static const sw_integrator *default_reference(int order)
+#define SYMPLECTIC (SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER)
+
+/* Whether the plugin's own words (its name or label) claim a symplectic
+ * method (the ABI has no flags, and a symplectic Euler compared with
+ * euler fails for being right): the words below, or the name of an
+ * explicit symplectic built-in. */
+static int claims_symplectic(const sw_integrator *m)
 {
+    static const char *const words[] = { "symplectic", "leapfrog", "stormer", "st\xc3\xb6rmer", "semi-implicit" };
+    char said[256];
+    snprintf(said, sizeof said, "%.120s %.120s", m->name ? m->name : "", m->label ? m->label : "");
+    for (char *c = said; *c; c++)
+        *c = (char)tolower((unsigned char)*c);
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (strstr(said, words[i]))
+            return 1;
+    for (int i = 0; i < sw_integrator_count(); i++)
+        if (sw_integrator_at(i)->flags == SYMPLECTIC && strstr(said, sw_integrator_at(i)->name))
+            return 1;
+    return 0;
+}
+
+/* The lecture's method a plugin of this order is compared with: the first
+ * plain fixed-step explicit built-in (euler, midpoint, rk4: no other flag;
+ * for a symplectic claim symplectic-euler, verlet, yoshida4) of at least
+ * that order, else the highest-order one. */
+static const sw_integrator *default_reference(const sw_integrator *plugin)
+{
+    unsigned want = claims_symplectic(plugin) ? SYMPLECTIC : SW_EXPLICIT;
     const sw_integrator *best = NULL;
     for (int i = 0; i < sw_integrator_count(); i++) {
         const sw_integrator *m = sw_integrator_at(i);
-        if (m->flags != SW_EXPLICIT)
+        if ((unsigned)m->flags != want)
             continue;
-        if (m->order >= order)
+        if (m->order >= plugin->order)
             return m;
         if (!best || m->order > best->order)
             best = m;
@@ -69,18 +96,21 @@ static const sw_integrator *default_reference(int order)
     return best;
 }
 
-static void print_measure(const sw_integrator *m, const sw_integrator *ref)
+/* The figures the check measured, as grade measures them: the order on
+ * the run checked, the stability limit on the spring. */
+static void print_measure(const sw_verdict *v, const sw_integrator *ref)
 {
-    double order, wdt;
-    int kind;
     char why[SW_ERRLEN];
-    if (sw_measure_order(m, &order, NULL, why, sizeof why) == SW_OK)
-        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", m->order, order, ref->name,
+    if (!isnan(v->order))
+        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", v->claimed_order, v->order, ref->name,
                ref->order);
     else
-        printf("  order      claimed %d, not measured: %s\n", m->order, why);
-    if (sw_measure_stability(m, &wdt, &kind, why, sizeof why) != SW_OK) {
-        printf("  stability  not measured: %s\n", why);
+        printf("  order      claimed %d, not measured: %s\n", v->claimed_order,
+               v->measure_note + strlen("order not measured: "));
+    if (isnan(v->order))
+        return;
+    if (isnan(v->stability)) {
+        printf("  stability  not measured: %s\n", v->measure_note + strlen("stability not measured: "));
         return;
     }
     /* the reference's figure measured the same way, as grade compares them */
@@ -91,14 +121,14 @@ static void print_measure(const sw_integrator *m, const sw_integrator *ref)
         snprintf(rshown, sizeof rshown, "not measured");
     else
         snprintf(rshown, sizeof rshown, rkind == 1 ? "none" : rkind == 2 ? "unbounded" : "%.4g", rwdt);
-    if (kind == 1)
+    if (v->stability_kind == 1)
         printf("  stability  none: grows even at w*dt = 0.01 on the undamped spring (%s: %s)\n",
                ref->name, rshown);
-    else if (kind == 2)
+    else if (v->stability_kind == 2)
         printf("  stability  unbounded on the undamped spring (%s: %s)\n", ref->name, rshown);
     else
         printf("  stability  largest stable w*dt %.4g on the undamped spring (%s: %s, measured the same "
-               "way)\n", wdt, ref->name, rshown);
+               "way)\n", v->stability, ref->name, rshown);
 }
 
 /* When the plugin fails its check: the built-in method it matches, if any. */
@@ -129,7 +159,7 @@ static int try_once(try_args *a)
         if (sw_cli_integrator(a->reference, &ref) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     } else
-        ref = default_reference(m->order);
+        ref = default_reference(m);
     if (sw_cli_scene(a->scene ? a->scene : "chain", &a->o.scene) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     a->o.method = ref;
@@ -148,10 +178,11 @@ static int try_once(try_args *a)
     memcpy(req.p, a->o.p, sizeof req.p);
     req.dt = a->o.dt;
     req.spec.until = a->o.scene->duration;
+    req.measure = 1; /* on the run checked, as grade measures */
     static sw_verdict v;
-    sw_check_run(&req, &v); /* first: a plugin that crashes is named with its step */
-    if (!v.got_end.fault)
-        print_measure(m, ref);
+    sw_check_run(&req, &v); /* a plugin that crashes is named with its step */
+    if (v.have_measure)
+        print_measure(&v, ref);
     printf("  check      ");
     fflush(stdout);
     sw_check_print_plain(stdout, &v);

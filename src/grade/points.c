@@ -286,7 +286,7 @@ static void score_measure(const sw_points *p, const sw_score_facts *f, sw_score_
     }
     /* An order within half of the method's; a stability limit within 5 %
      * (both unbounded, or both none, match). */
-    int pass = order ? fabs(got - want) < 0.5
+    int pass = order ? fabs(got - want) < SW_POINTS_ORDER_MARGIN
                      : (isinf(got) && isinf(want)) || (got == 0 && want == 0) ||
                            (isfinite(got) && isfinite(want) && fabs(got - want) <= 0.05 * fabs(want));
     if (order)

@@ -11,6 +11,11 @@
 #include "grade/check.h"
 #include "trace/trace.h"
 
+/* A measured order is the method's when within this of it (the order
+ * point; and the stability limit, measured on the spring, is measured only
+ * for a plugin whose order on its graded run is the method's). */
+#define SW_POINTS_ORDER_MARGIN 0.5
+
 #define SW_POINTS_MAX 12
 #define SW_POINTS_LIMIT 1000.0    /* the most one check may give */
 

@@ -431,14 +431,28 @@ static sw_verdict_status check_trace(const sw_check_request *req, sw_verdict *v)
 
 /* ---- a plugin ---------------------------------------------------------------- */
 
-static void measure(sw_verdict *v, const sw_integrator *plugin)
+/* The order on the graded run itself (the probe), the stability limit on
+ * the spring once that order is the reference's: the spring is a system
+ * of its own, which a plugin could tell from its graded run
+ * (docs/grading.md, "What a measured figure stands on"). */
+static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integrator *ref,
+                    const sw_sim *graded, const sw_trace_spec *spec)
 {
     v->have_measure = 1;
     v->claimed_order = plugin->order;
     v->order = v->stability = NAN;
     char why[SW_ERRLEN];
-    if (sw_measure_order(plugin, &v->order, NULL, why, sizeof why) != SW_OK) {
+    sw_measure_probe pr = { .scene = graded->sys.scene, .p = graded->sys.p, .dt = graded->dt,
+                            .stop_at = spec->steps > 0 ? 0.0 : spec->until,
+                            .graded_steps = graded->steps, .graded_y = graded->sys.y };
+    if (sw_measure_order_on(plugin, &pr, &v->order, NULL, why, sizeof why) != SW_OK) {
         snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", why);
+        return;
+    }
+    if (!(fabs(v->order - ref->order) < SW_POINTS_ORDER_MARGIN)) {
+        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: the order measured on "
+                 "the graded run (%.3g) is not %s's (%d), and the limit is measured on a spring of its own",
+                 v->order, ref->name, ref->order);
         return;
     }
     double wdt;
@@ -508,7 +522,7 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
         if (v->got_end.fault != SW_PF_NONE)
             v->failing_step = v->got_end.step;
         if (req->measure && v->got_end.fault == SW_PF_NONE)
-            measure(v, req->plugin);
+            measure(v, req->plugin, ref, &got_sim, &spec);
         v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
         /* The same "why" as a trace gets: the plugin's first rows, run
          * afresh, against the usual mistakes. A crash or overrun is its

@@ -9,6 +9,7 @@
  * path, no grader is in its memory for a plugin to find and call.
  *
  * usage: stepwise-plugin-host PLUGIN.so [--jail [--read DIR]...] [--for WHO] */
+#define _GNU_SOURCE /* fopencookie */
 #include "host/host.h"
 
 #include <dlfcn.h>
@@ -25,6 +26,27 @@
 /* stdout's buffer, given now so that a plugin's first printf in a step
  * does not allocate one. */
 static char stdout_buf[4096];
+
+volatile long long sw_host_printed;
+
+/* stdout and stderr as the plugin sees them: counted, then dropped. */
+static ssize_t count_printed(void *cookie, const char *buf, size_t len)
+{
+    (void)cookie;
+    (void)buf;
+    sw_host_printed += (long long)len;
+    return (ssize_t)len;
+}
+
+static void count_what_is_printed(void)
+{
+    cookie_io_functions_t io = { .write = count_printed };
+    FILE *out = fopencookie(NULL, "w", io), *err = fopencookie(NULL, "w", io);
+    if (out && setvbuf(out, stdout_buf, _IOFBF, sizeof stdout_buf) == 0)
+        stdout = out;
+    if (err && setvbuf(err, NULL, _IONBF, 0) == 0)
+        stderr = err;
+}
 
 static void copy_bounded(const char *src, char *dst, size_t size)
 {
@@ -84,11 +106,11 @@ static sw_plugin_step_fn *load(const char *path, int *work_vectors)
 
 int main(int argc, char **argv)
 {
-    setvbuf(stdout, stdout_buf, _IOFBF, sizeof stdout_buf);
     if (argc < 2) {
         fprintf(stderr, "stepwise-plugin-host: started by stepwise only\n");
         return 2;
     }
+    count_what_is_printed();
     int jail = 0, nread = 0;
     const char *read_dirs[MAX_READ_DIRS];
     for (int i = 2; i < argc; i++) {

@@ -12,6 +12,9 @@
  * (host_alloc.c). */
 extern volatile int sw_host_in_step;
 extern volatile int sw_host_allocated;
+/* The bytes the plugin printed to stdout and stderr (host.c counts them
+ * and drops them: they went to /dev/null before); a DYING record says it. */
+extern volatile long long sw_host_printed;
 
 /* One system the host keeps built, with the state and the work vectors
  * the plugin steps, each ending at a guard page (host_slot.c). */

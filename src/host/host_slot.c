@@ -147,6 +147,7 @@ static void say_dying(void)
     sw_host_reply r;
     memset(&r, 0, sizeof r);
     r.tag = SW_HOST_DYING;
+    r.index = sw_host_printed;
     if (out_flush(fault_fd) != 0 || write(fault_fd, &r, sizeof r) != (ssize_t)sizeof r)
         return; /* the parent is gone: nothing to tell */
 }

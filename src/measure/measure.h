@@ -19,7 +19,15 @@
 #define SW_MEASURE_DT0 0.16
 #define SW_MEASURE_POINTS 12
 #define SW_MEASURE_SETTLED 4
-#define SW_MEASURE_DIM 16 /* room for the spring's state (position and velocity in the plane: 4) */
+/* A probe's samples: its first point's run, at most this many steps of
+ * the graded dt (or the graded run, when shorter). */
+#define SW_MEASURE_PROBE_STEPS 64
+/* ... and no probe point past this many state components × steps (a
+ * first-order method on the 3-mass chain: 6e6 for its finest point). */
+#define SW_MEASURE_WORK 1e8
+/* The graded dt's point off the fit still stands when its local slope to
+ * the fit is within this of the order (the order point's own margin). */
+#define SW_MEASURE_GRADED_SLOPE 0.5
 
 /* Order: the largest error against the exact solution over the sample
  * times to SW_MEASURE_T (sw_truth_sample_time) for dt = SW_MEASURE_DT0
@@ -29,6 +37,30 @@
  * points and the fit. 0, or SW_EINVAL with err saying why: a run failed,
  * the plugin failed, or "no order: " and the rule's reason. */
 int sw_measure_order(const sw_integrator *m, double *order, sw_bench_series *fit, char *err, size_t errlen);
+
+/* The run a plugin is graded on, as its order's probe (docs/grading.md,
+ * "What a measured figure stands on"): the same scene, parameters and
+ * start, the sweep's first step the graded dt. */
+typedef struct sw_measure_probe {
+    const sw_scene *scene;
+    const double *p;
+    double dt;               /* the graded dt: the sweep's first point */
+    double stop_at;          /* the graded run's sw_sim_step_until argument (0: whole steps) */
+    long graded_steps;       /* the steps the graded run took */
+    const double *graded_y;  /* its last state (NULL: not compared) */
+} sw_measure_probe;
+
+/* The order on a probe (NULL: the spring, as sw_measure_order): dt, dt/2,
+ * ... each run sampled 16 times over min(graded_steps,
+ * SW_MEASURE_PROBE_STEPS) steps of dt, the error against the scene's
+ * exact solution or the truth module's reference run. Point 0 runs the
+ * graded run again to its end and must land on graded_y bit for bit, and
+ * the order stands only when the fit includes point 0: a plugin that
+ * tells the measuring runs from its graded run (by its dt, its system,
+ * its start or its run count) gets no order, never one its graded run
+ * does not show. */
+int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, double *order, sw_bench_series *fit,
+                        char *err, size_t errlen);
 
 /* Stability limit ω·dt on the same spring, from sw_stability_find. *kind
  * is its sw_stab_kind. 0, or a status with err filled. */

@@ -154,6 +154,7 @@ int sw_host_reply_read(sw_plugin_entry *e, sw_host_reply *r, double seconds)
     int rc = sw_host_read(e, r, sizeof *r, seconds);
     if (rc == 1 && r->tag == SW_HOST_DYING) {
         h->dying = 1;
+        h->printed = r->index > 0 ? r->index : 0;
         return 0; /* the host dies next */
     }
     if (rc == 1 && r->tag == SW_HOST_FAULT) {
@@ -231,6 +232,7 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     sw_limits lim;
     sw_plugin_limits(&lim);
     h->have_fault = h->dying = 0;
+    h->printed = 0;
     h->rpos = h->rlen = 0;
     if (sw_sandbox_spawn_jailed(&h->child, exec_host, &x, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
         snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);

@@ -13,7 +13,9 @@
  *                               PRINT + f(t, y), then per step STEP + y, then END
  *                    CLOSE slot, QUIT
  *   host -> parent, on a fault: FAULT, then the host dies; on a fatal
- *                  signal or exit() in a step: DYING, then the host dies.
+ *                  signal or exit() in a step: DYING (its index: the bytes
+ *                  the plugin printed to stdout and stderr in this host,
+ *                  for a diagnosis only), then the host dies.
  * Replies are gathered and sent in large writes (at the latest every
  * SW_HOST_FLUSH_MS, so the parent's watchdog sees progress), or one by one
  * in a careful run: when a host dies in a run, the parent asks a new host

@@ -34,6 +34,10 @@
 
 static const char *const ode_fields[] = SW_HOST_ODE_FIELDS;
 
+/* A plugin that printed this much before it ran out of CPU time is told
+ * that printing was the likely cost. */
+#define SW_PRINTED_MUCH ((long long)1 << 20)
+
 typedef struct step_box {
     sw_plugin_entry *entry;
     int slot, generation;    /* the slot on the entry's host, open while generation matches */
@@ -53,6 +57,7 @@ typedef struct step_box {
     sw_child_end pending_end;
     sw_host_reply pending_fault;
     int pending_rc;          /* how the read failed: 0 ended, -1 cancelled, -2 timed out, -4 forged */
+    long long pending_printed; /* what the plugin had printed when its host said DYING */
     sw_plugin_fault fault;   /* set once, then every step fails */
     char why[SW_ERRLEN];     /* what happened ... */
     char hint[96];           /* ... and, after the step, what to do */
@@ -144,7 +149,13 @@ static void box_fault_now(step_box *b)
         snprintf(why, sizeof why, "ended its process with exit(%d) in its step", end->code);
         box_fail(b, SW_PF_EXIT, why, "(a step must return, never exit)");
     } else if (end->signal == SIGXCPU) {
-        box_fail(b, SW_PF_LIMIT, how, "(the submission's CPU-time limit, --cpu: it counts the plugin's "
+        /* printing is the usual cause nobody suspects: say so */
+        if (b->pending_printed >= SW_PRINTED_MUCH)
+            snprintf(why, sizeof why, "%s after printing %.3g MiB to stdout and stderr (printing costs CPU "
+                     "time: take the printf out of the step)", how, (double)b->pending_printed / 1048576);
+        else
+            snprintf(why, sizeof why, "%s", how);
+        box_fail(b, SW_PF_LIMIT, why, "(the submission's CPU-time limit, --cpu: it counts the plugin's "
                  "own time only)");
     } else {
         box_fail(b, SW_PF_CRASH, how, NULL);
@@ -159,6 +170,7 @@ static void box_host_died(step_box *b, int rc)
     b->pending = 1;
     b->pending_rc = rc;
     b->exact = h->dying || h->have_fault;
+    b->pending_printed = h->dying ? h->printed : 0;
     h->dying = 0;
     memset(&b->pending_fault, 0, sizeof b->pending_fault);
     if (h->have_fault)

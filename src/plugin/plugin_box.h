@@ -25,6 +25,7 @@ typedef struct sw_host_link {
     sw_host_reply fault;                   /* a FAULT record the host sent before it died */
     int have_fault;
     int dying;                             /* it said DYING: every step before was sent */
+    long long printed;                     /* ... and the plugin had printed this many bytes */
     sw_host_watched watched;               /* why the watchdog ended the last wait it ended, */
     double waited;                         /* ... and after how long (wall seconds) */
     unsigned char rbuf[1 << 16];           /* what was read from the host and not yet used */

@@ -246,8 +246,9 @@ static int grader_limit(const char *log, size_t out_len, const sw_child_end *end
         int full = limits[i].resource == RLIMIT_FSIZE && (rlim_t)out_len >= rl.rlim_cur;
         if (full || (limits[i].signal && end->signal == limits[i].signal) ||
             strstr(text, limits[i].says)) {
-            snprintf(buf, len, "the grader's %s limit of %g %s was reached while building it (the "
-                     "compiler counts against it); this says nothing about the plugin: raise %s",
+            snprintf(buf, len, "the compiler reached the grader's %s limit of %g %s while building it "
+                     "(the teacher's %s sets it; a source that needs more of the compiler, such as a "
+                     "huge initialiser, table or macro expansion, should be made smaller)",
                      limits[i].flag, (double)rl.rlim_cur / limits[i].scale, limits[i].unit,
                      limits[i].flag);
             return 1;
@@ -373,7 +374,8 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     if (!log || !log[0] || strstr(log, "No space left on device")) {
         /* its scratch disk full: the log, written there, may be lost too */
         snprintf(err, errlen, "--plugin '%s' was not built: the compiler %s; a build's scratch space is "
-                 "%zu MiB here (half the grader's --memory, at most 64): raise --memory for a large plugin",
+                 "%zu MiB here (half the teacher's --memory, at most 64; a source that needs more, such "
+                 "as a huge initialiser, should be made smaller)",
                  shown, log && log[0] ? "ran out of scratch space" : "stopped without a message",
                  spec.disk_bytes >> 20);
         free(log);

@@ -211,7 +211,7 @@ bad_number --atol 1e999 "--atol must be between 1e-300 and 1000000"
 mkdir plugins
 cp "$ROOT/examples/euler_plugin.c" plugins/mine.c
 timeout 60 "$SW" grade --assignment ref.trace --output 4 plugins >out 2>&1
-grep -q "mine.c .*error .*the grader's --output limit of 4 KiB was reached while building it" out \
+grep -q "mine.c .*error .*the compiler reached the grader's --output limit of 4 KiB while building it" out \
     || fail "--output 4: $(cat out)"
 grep -q 'does not compile' out && fail "--output 4 blamed on the student: $(cat out)"
 no_temp_left "grade --output 4"

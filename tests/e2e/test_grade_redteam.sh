@@ -123,7 +123,12 @@ mkdir bomb
     echo 'double big[] = { X21(1.0) };'
 } > bomb/bomb.c
 "$SW" grade --assignment $A --memory 64 --cpu 30 --wall 120 bomb >out.txt 2>&1
-grep -q "limit of 64 MiB was reached while building it" out.txt || fail "4: the build was not held to --memory: $(cat out.txt)"
+grep -q "reached the grader's --memory limit of 64 MiB while building it" out.txt || fail "4: the build was not held to --memory: $(cat out.txt)"
+# ... in words the teacher and the student can each act on (the student
+# cannot raise --memory; their source is what asks the compiler for more)
+grep -q "the teacher's --memory sets it; a source that needs more of the compiler.*should be made smaller" out.txt \
+    || fail "4: the message does not say who can do what: $(cat out.txt)"
+grep -q "raise --memory" out.txt && fail "4: the student is told to raise --memory: $(cat out.txt)"
 fi
 
 # 5: a plugin file too large is said to be one

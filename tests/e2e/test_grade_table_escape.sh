@@ -30,4 +30,14 @@ cp bad.c "class/zz$(printf '\033')x\\x1b.c"
 grep -q "$(printf '\033')" out2 && fail "a raw escape byte reached the table: $(cat -v out2)"
 grep -qF "roster: matches no roster student: no folder or file name in 'class/zz\x1bx\x5cx1b.c'" out2 ||
     fail "the table's remark is not escaped once: $(grep roster: out2)"
-echo "ok: the grade table escapes a message once"
+# The gradebook's student cell escapes a backslash as its file cell does
+# (one function): the literal name Jo\xe9 and the Latin-1 Joé once gave
+# one student cell, Jo\xe9, for two students.
+mkdir esc
+"$SW" record spring -i rk4 --dt 0.01 --steps 10 -o 'esc/Jo\xe9.trace' >/dev/null 2>&1 || fail "record"
+cp 'esc/Jo\xe9.trace' "esc/$(printf 'Jo\351').trace"
+printf '# stepwise assignment 1\n# scene: spring\n# integrator: rk4\n# dt: 0.01\n# steps: 10\n' > hws.txt
+"$SW" grade --assignment hws.txt --csv esc.csv esc > out3 2>&1 || fail "grade: $(cat out3)"
+tr -d '\r' < esc.csv | grep -qxF 'Jo\x5cxe9,esc/Jo\x5cxe9.trace,pass,,,,,,2,2,' || fail "the literal name's cells: $(cat esc.csv)"
+tr -d '\r' < esc.csv | grep -qxF 'Jo\xe9,esc/Jo\xe9.trace,pass,,,,,,2,2,' || fail "the Latin-1 name's cells: $(cat esc.csv)"
+echo "ok: the grade table escapes a message once, the gradebook a name as its file"

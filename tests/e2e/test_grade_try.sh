@@ -29,6 +29,30 @@ sed 's/\.order = 1/.order = 2/' "$root/examples/euler_plugin.c" > claims2.c
 [ "$rc" -eq 1 ] || fail "euler graded as midpoint: exit $rc"
 grep -q 'your numbers match euler' out || fail "the matching method is not named: $(cat out)"
 
+# A plugin whose name says symplectic is compared with the symplectic
+# method of its order (it once failed against euler, then was told it
+# matched symplectic-euler).
+cat > symp.c <<'C'
+#include <stepwise/integrator.h>
+static int step(sw_ode *ode, double t, double *y, double h, double *work)
+{
+    int n = ode->dim, half = n / 2;
+    sw_ode_eval(ode, t, y, work);
+    for (int i = half; i < n; i++) y[i] += h * work[i];
+    for (int i = 0; i < half; i++) y[i] += h * y[half + i];
+    return 0;
+}
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "my-symp", .label = "Symplectic Euler",
+                                .order = 1, .evals = 1, .work_vectors = 1, .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
+C
+"$SW" try symp.c --no-play > out 2>&1 || fail "a symplectic Euler: exit $?: $(cat out)"
+grep -q 'PASS: plugin my-symp on chain matches symplectic-euler' out || fail "symplectic: $(cat out)"
+sed 's/Symplectic Euler/velocity Verlet/; s/\.order = 1/.order = 2/' symp.c > verlet-claim.c
+"$SW" try verlet-claim.c --no-play > out 2>&1; rc=$?
+[ "$rc" -eq 1 ] && grep -q 'differs from verlet on chain' out || fail "a Verlet claim is not compared with verlet: $(cat out)"
+
 printf 'this is not C\n' > broken.c
 "$SW" try broken.c --no-play > out 2>&1; rc=$?
 [ "$rc" -eq 2 ] && grep -q 'does not compile' out || fail "a broken file: exit $rc: $(cat out)"

@@ -1,0 +1,4 @@
+/* An honest RK4. */
+#include "common.h"
+
+CHEATER("honest-rk4", rk4)

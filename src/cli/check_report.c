@@ -240,8 +240,12 @@ static void print_measure(FILE *out, const sw_verdict *v)
         fprintf(out, "  %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;
     }
-    fprintf(out, "  order: claimed %d, measured %.2f (on the run checked: %s from dt = %g, dt halved until the "
-            "local slopes agree)\n", v->claimed_order, v->order, v->scene, v->dt);
+    if (v->order_on_spring)
+        fprintf(out, "  order: claimed %d, measured %.2f (on the undamped spring: the run checked cannot show an "
+                "order, and its values match)\n", v->claimed_order, v->order);
+    else
+        fprintf(out, "  order: claimed %d, measured %.2f (on the run checked: %s from dt = %g, dt halved until "
+                "the local slopes agree)\n", v->claimed_order, v->order, v->scene, v->dt);
     if (isnan(v->stability))
         fprintf(out, "  %s\n", v->measure_note); /* "stability not measured: why" */
     else if (isinf(v->stability))

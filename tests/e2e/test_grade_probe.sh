@@ -9,7 +9,9 @@
 # and the step count (steps.c); none earns the order point, each for the
 # reason the feedback names; nor the stability point, measured on a
 # spring of its own only for a plugin whose order on its graded run is the
-# method's. An honest RK4 and an honest Euler keep every point they earned.
+# method's. An honest RK4 and an honest Euler keep every point they earned,
+# also where the graded run cannot show an order (the projectile): there
+# the spring's order counts only where the graded values match.
 . "$(dirname "$0")/lib.sh"
 needs_jail
 cheat="$ROOT/tests/data/cheat"
@@ -62,4 +64,30 @@ grep -q "is off the line of the finer steps" check.out || fail "check: $(cat che
 grep -q "order      claimed 4, not measured: no order: the error at the graded dt" try.out || fail "try: $(cat try.out)"
 "$SW" try class/honest_rk4.c --no-play > try.out 2>&1 || fail "try honest: $(cat try.out)"
 grep -q "order      claimed 4, measured 3\.9" try.out || fail "try honest: $(cat try.out)"
+# Where the graded run cannot show an order (RK4 on the projectile, a
+# quadratic it integrates to round-off), the order is the spring's, and
+# counts only where the graded values match: the honest RK4 keeps its
+# points, and every cheater whose values fail earns none.
+cat > hw-proj.txt <<A
+# stepwise assignment 1
+# scene: projectile
+# integrator: rk4
+# dt: 0.01
+# steps: 100
+# points x* y*: 7
+# points order: 1
+# points stability: 1
+A
+"$SW" grade --assignment hw-proj.txt --csv proj.csv --feedback fbp class > proj.out 2>&1
+[ $? -le 1 ] || fail "grade (projectile) exited $?: $(cat proj.out)"
+[ "$(score honest_rk4 proj.csv)" = 9/9 ] || fail "the honest RK4 lost points on the projectile: $(cat fbp/honest_rk4.txt)"
+grep -q "order: 1 of 1" fbp/honest_rk4.txt || fail "projectile, honest: $(cat fbp/honest_rk4.txt)"
+# (the dim cheater runs RK4 on every one-particle system: on the
+# projectile, its graded run, it is RK4, and scores as one)
+[ "$(score dim proj.csv)" = 9/9 ] || fail "dim, RK4 on the projectile, scored $(score dim proj.csv)"
+for c in start dt count steps honest_euler; do
+    [ "$(score $c proj.csv)" = 0/9 ] || fail "$c scored $(score $c proj.csv) on the projectile: $(grep -i order fbp/$c.txt)"
+done
+grep -q "the graded run cannot show an order (.*), and the spring's is believed only where the graded values match" \
+    fbp/dt.txt || fail "projectile, dt: $(grep "order:" fbp/dt.txt)"
 echo "ok: no order point for a plugin that tells the measuring runs apart"

@@ -236,6 +236,8 @@ static void print_measure(FILE *out, const sw_verdict *v)
             fprintf(out, " (more than claimed: set .evals to what a step costs)");
         fputc('\n', out);
     }
+    if (v->measure_shown)
+        return;
     if (isnan(v->order)) {
         fprintf(out, "  %s (claimed order %d)\n", v->measure_note, v->claimed_order);
         return;

@@ -97,13 +97,14 @@ static const sw_integrator *default_reference(const sw_integrator *plugin)
 }
 
 /* The figures the check measured, as grade measures them: the order on
- * the run checked, the stability limit on the spring. */
+ * the run checked (on the spring where that run shows none), the
+ * stability limit on the spring. */
 static void print_measure(const sw_verdict *v, const sw_integrator *ref)
 {
     char why[SW_ERRLEN];
     if (!isnan(v->order))
-        printf("  order      claimed %d, measured %.2f  (%s: %d)\n", v->claimed_order, v->order, ref->name,
-               ref->order);
+        printf("  order      claimed %d, measured %.2f  (%s: %d)%s\n", v->claimed_order, v->order, ref->name,
+               ref->order, v->order_on_spring ? " on the undamped spring: the run checked shows none" : "");
     else
         printf("  order      claimed %d, not measured: %s\n", v->claimed_order,
                v->measure_note + strlen("order not measured: "));
@@ -183,6 +184,7 @@ static int try_once(try_args *a)
     sw_check_run(&req, &v); /* a plugin that crashes is named with its step */
     if (v.have_measure)
         print_measure(&v, ref);
+    v.measure_shown = 1; /* above, beside the reference's: not again in the check's lines */
     printf("  check      ");
     fflush(stdout);
     sw_check_print_plain(stdout, &v);

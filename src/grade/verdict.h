@@ -80,6 +80,7 @@ typedef struct sw_verdict {
     double counted_evals;              /* ... and what its host counted per step in the graded run (NaN: none) */
     double order;                      /* NaN: not measured (measure_note says why) */
     int order_on_spring;               /* measured on the undamped spring: the graded run shows none */
+    int measure_shown;                 /* the caller printed order and stability itself (try) */
     double stability;                  /* ω·dt limit on the undamped spring; NaN: none */
     int stability_kind;
     char measure_note[SW_ERRLEN];

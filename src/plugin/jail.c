@@ -25,6 +25,7 @@
 #include <unistd.h>
 
 #include "plugin/jail_filter.h"
+#include "plugin/proc_tree.h"
 #include "util/tmpdir.h"
 
 static int disabled = -1;
@@ -335,7 +336,12 @@ int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *u
     /* no namespaces: Landlock is this jail's only file boundary */
     if (sw_jail_landlock_abi() < 1)
         return fail_at(step, landlock_step(EOPNOTSUPP), EOPNOTSUPP);
-    *uid = UID_BASE + (unsigned)getpid() % UID_RANGE;
+    /* from the pid's place in the range, the first id no process runs as
+     * (two jails whose pids agree mod UID_RANGE no longer share one) */
+    unsigned from = (unsigned)getpid() % UID_RANGE, k = 0;
+    while (k + 1 < UID_RANGE && sw_proc_uid_in_use((uid_t)(UID_BASE + (from + k) % UID_RANGE)) == 1)
+        k++;
+    *uid = UID_BASE + (from + k) % UID_RANGE;
     sw_jail_uid_dir(getpid(), dir, dirlen);
     /* made here or not at all: a path someone else made is never taken
      * (removed once: a jail of an earlier process of this pid, killed) */

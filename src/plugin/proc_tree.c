@@ -1,4 +1,5 @@
-/* The CPU time and run state of a process tree, from /proc/PID/stat: one
+/* The CPU time and run state of a process tree, from /proc/PID/stat (and
+ * whether a user id has any process, for a jail's choice of one): one
  * pass over /proc for every process's parent, state and times, then the
  * descendants of the root by repeated passes over what was read (a jail is
  * a few levels deep). Invariant: reads only; a process that ends while it
@@ -11,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #define PROC_MAX 8192 /* processes looked at; a machine with more is read in part */
@@ -99,4 +101,21 @@ int sw_proc_tree_read(pid_t root, sw_proc_tree *out)
         }
     out->cpu_seconds = (double)ticks / (double)hz;
     return 0;
+}
+
+int sw_proc_uid_in_use(uid_t uid)
+{
+    DIR *d = opendir("/proc");
+    if (!d)
+        return -1;
+    int used = 0;
+    struct dirent *e;
+    while (!used && (e = readdir(d)) != NULL) {
+        char *end;
+        struct stat st;
+        long pid = strtol(e->d_name, &end, 10);
+        used = *end == '\0' && pid > 0 && fstatat(dirfd(d), e->d_name, &st, 0) == 0 && st.st_uid == uid;
+    }
+    closedir(d);
+    return used;
 }

@@ -17,4 +17,8 @@ typedef struct sw_proc_tree {
  * hidden, root gone): the caller falls back on wall time. */
 int sw_proc_tree_read(pid_t root, sw_proc_tree *out);
 
+/* Whether any process runs as uid (its /proc entry's owner): 1, 0, or
+ * -1 where /proc cannot tell. */
+int sw_proc_uid_in_use(uid_t uid);
+
 #endif

@@ -355,8 +355,8 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     if (by_cpu && !end.killed &&
         ((!end.exited && end.signal == SIGXCPU) || (log && strstr(log, "CPU time limit exceeded")))) {
         free(log);
-        snprintf(err, errlen, "--plugin '%s' did not compile within the submission's CPU time: %.3g s "
-                 "were left of it (the submission's CPU-time limit, --cpu: it counts its own processes "
+        snprintf(err, errlen, "--plugin '%s' did not compile within the submission's CPU time: the compiler "
+                 "used all %.3g s left of it (the submission's CPU-time limit, --cpu: it counts its own processes "
                  "only, the compiler's included)", shown, lim.cpu_seconds);
         return SW_EINVAL;
     }

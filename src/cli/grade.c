@@ -1,7 +1,8 @@
 /* `stepwise grade --assignment A FILES...|DIR`: grade a class. Each
  * submission (a trace, or a plugin as .so or .c) is checked in its own
- * child process under CPU-time, memory and output limits and a wall-clock
- * watchdog, so a pathological file or plugin fails that student alone.
+ * child process under CPU-time, memory and output limits and a watchdog
+ * on blocking (--wall), so a pathological file or plugin fails that
+ * student alone.
  * Prints a summary table; writes a CSV gradebook and Gradescope's
  * results.json on request, each whole or not at all. Exit 0 when every
  * submission passed, 1 when any did not, 2 for bad usage. */
@@ -21,6 +22,7 @@
 #include "cli/check_report.h"
 #include "cli/grade.h"
 #include "plugin/plugin.h"
+#include "plugin/proc_tree.h"
 #include "plugin/sandbox.h"
 #include "grade/similar.h"
 #include "grade/verdict.h"
@@ -82,9 +84,9 @@ static const char grade_help_more[] =
     "      --memory MB        address space per submission, 64 to 65536 MiB (default 1024)\n"
     "      --output KB        output per submission, 4 to 1048576 KiB: report kept, files\n"
     "                         written, the compiler's too (default 1024)\n"
-    "      --wall S           wall-clock seconds per submission, 0.1 to 86400\n"
-    "                         (default 4 x cpu + 20): a guard against a submission that\n"
-    "                         blocks, not a measure of its work\n"
+    "      --wall S           seconds a submission may wait with nothing running, 0.1 to\n"
+    "                         86400 (default 4 x cpu + 20): a guard against a submission\n"
+    "                         that blocks, not a measure of its work (load only slows it)\n"
     "      --plugin-timeout S seconds of its own CPU time (or asleep) a plugin may take per step,\n"
     "                         0.01 to 3600 (default 2)\n"
     "      --no-sandbox       run plugins and compilers without the jail (namespaces,\n"
@@ -108,14 +110,38 @@ typedef struct grade_slot {
     grade_job job;
     sw_child child;
     double start;
+    double idle, seen;           /* the watchdog's: time with nothing of it runnable, and when last looked */
 } grade_slot;
+
+/* The --wall watchdog, looked at every WALL_LOOK s: a submission's worker
+ * and everything it started (the jail, the compiler, the plugin's host)
+ * may sit with nothing runnable for `wall` seconds (a compiler reading a
+ * FIFO: blocked), however long a busy machine keeps them waiting on a run
+ * queue; within WALL_CAP times `wall` whatever they do. Where /proc cannot
+ * tell, `wall` seconds, as a plain wall clock. */
+#define WALL_LOOK 0.25
+#define WALL_CAP 20
+
+/* Whether slot's time is up at now (its idle time brought up to date). */
+static int wall_is_up(grade_slot *slot, double now, double wall)
+{
+    sw_proc_tree tree;
+    double dt = now - slot->seen;
+    slot->seen = now;
+    if (sw_proc_tree_read(slot->child.pid, &tree) != 0)
+        slot->idle = now - slot->start;
+    else if (tree.runnable == 0)
+        slot->idle += dt;
+    return slot->idle >= wall || now - slot->start >= WALL_CAP * wall;
+}
 
 /* Start the worker of slot->index; 0, or -1 with the entry filled (an
  * error row) when the worker could not be started. */
 static int grade_start(grade_slot *slot, grade_entry *e)
 {
     char err[SW_ERRLEN];
-    slot->start = sw_sandbox_now();
+    slot->start = slot->seen = sw_sandbox_now();
+    slot->idle = 0;
     e->status = SW_VERDICT_ERROR;
     e->failing_step = -1;
     sw_decimal_init(); /* the trace parser's table, built once here for every worker */
@@ -141,7 +167,9 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
     const grade_job *job = &slot->job;
     const sw_limits *lim = job->lim;
     sw_child *child = &slot->child;
-    double start = slot->start, left = wall - (sw_sandbox_now() - start);
+    /* a worker whose channel is readable has its record written or on the
+     * way: read it within `wall` more (its time was up: no wait at all) */
+    double start = slot->start, left = slot->idle >= wall || sw_sandbox_now() - start >= WALL_CAP * wall ? 0 : wall;
     grade_record rec;
     int rc = sw_sandbox_read(child->from_child, &rec, sizeof rec, left > 0.001 ? left : 0.001);
     /* The worker runs only stepwise's code, but its record is checked like
@@ -174,7 +202,6 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         }
     }
     if (rc == 1 && rec.report_len > 0) {
-        left = wall - (sw_sandbox_now() - start);
         e->report = malloc(rec.report_len + 1);
         if (e->report && sw_sandbox_read(child->from_child, e->report, rec.report_len,
                                          left > 0.001 ? left : 0.001) == 1)
@@ -185,7 +212,6 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         }
     }
     if (rc == 1 && rec.nwrong > 0) {
-        left = wall - (sw_sandbox_now() - start);
         e->wrong = malloc(rec.nwrong * sizeof *e->wrong);
         if (e->wrong && sw_sandbox_read(child->from_child, e->wrong, rec.nwrong * sizeof *e->wrong,
                                         left > 0.001 ? left : 0.001) == 1)
@@ -214,9 +240,9 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
             sw_sandbox_reap(child, 2.0, &end);
         sw_sandbox_describe(&end, how, sizeof how);
         if (rc == -2)
-            snprintf(e->message, sizeof e->message, "grading took longer than the wall-clock "
-                     "limit of %g s and was stopped (the grader's guard, --wall; the submission's own "
-                     "work is held to --cpu)", wall);
+            snprintf(e->message, sizeof e->message, "grading waited %g s with nothing running (a submission "
+                     "that blocks) and was stopped (the grader's guard, --wall; the submission's own work is "
+                     "held to --cpu)", slot->idle >= wall ? wall : WALL_CAP * wall);
         else if (rc == -1)
             snprintf(e->message, sizeof e->message, "interrupted");
         else if (rc == -3)
@@ -272,28 +298,24 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
                 done[next] = 1;
             next++;
         }
-        /* Wait for any worker's record, or the nearest watchdog. */
+        /* Wait for any worker's record, or the watchdog's next look. */
         int nfds = 0;
-        double now = sw_sandbox_now(), soonest = wall;
         for (int k = 0; k < jobs; k++)
             if (slots[k].active) {
                 fds[nfds].fd = slots[k].child.from_child;
                 fds[nfds].events = POLLIN;
                 fds[nfds].revents = 0;
                 which[nfds++] = k;
-                double left = wall - (now - slots[k].start);
-                if (left < soonest)
-                    soonest = left;
             }
         if (nfds > 0) {
-            int ms = soonest > 0 ? (int)(soonest * 1000) + 1 : 0;
-            int ready = poll(fds, (nfds_t)nfds, ms);
+            double look = wall < WALL_LOOK ? wall : WALL_LOOK;
+            int ready = poll(fds, (nfds_t)nfds, (int)(look * 1000) + 1);
             if (ready < 0 && errno != EINTR)
                 ready = 0;
-            now = sw_sandbox_now();
+            double now = sw_sandbox_now();
             for (int f = 0; f < nfds; f++) {
                 grade_slot *sl = &slots[which[f]];
-                if ((ready > 0 && fds[f].revents) || now - sl->start >= wall) {
+                if ((ready > 0 && fds[f].revents) || wall_is_up(sl, now, wall)) {
                     grade_finish_one(sl, &list->items[sl->index], wall);
                     done[sl->index] = 1;
                     running--;

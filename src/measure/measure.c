@@ -109,6 +109,12 @@ static double run_error(sweep *w, const sw_integrator *m, int k, double h, long 
     return e;
 }
 
+double sw_measure_step_work(const sw_system *sys, const sw_integrator *m)
+{
+    double solve, evals = m->evals < 1 ? 1 : m->evals > 16 ? 16 : m->evals;
+    return sw_truth_eval_work(sys, &solve) * evals;
+}
+
 /* Why a probe's fit does not stand on the graded dt, or NULL when it does:
  * the graded dt's point is in the fit, or (a method not yet quite
  * asymptotic there: symplectic Euler on the chain, local slope 1.20
@@ -174,8 +180,13 @@ int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, doub
     double scale = truth_scale(&w);
     int n = 0, echo = 1, rc = SW_OK;
     char why[SW_ERRLEN];
+    /* a probe's budget, and what its first point costs of it (the rerun
+     * of the graded run to its end included) */
+    double step = pr ? sw_measure_step_work(&w.truth.sys, m) : 0;
+    double budget = pr ? fmax(SW_MEASURE_FREE, SW_MEASURE_GRADED * (double)pr->graded_steps * step) : 0;
+    double spent = pr ? (double)(pr->graded_y ? (pr->graded_steps > w.n ? pr->graded_steps : w.n) : w.n) * step : 0;
     for (int k = 0; k < SW_MEASURE_POINTS && rc == SW_OK; k++) {
-        if (pr && k > 0 && ldexp((double)w.n * w.truth.sys.ode->dim, k) > SW_MEASURE_WORK)
+        if (pr && k > 0 && (spent += ldexp((double)w.n, k) * step) > budget)
             break; /* the sweep's budget: the order rule says what the points so far carry */
         h[k] = ldexp(dt0, -k);
         e[k] = run_error(&w, m, k, h[k], &steps[k], &echo, err, errlen);

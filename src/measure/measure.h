@@ -22,9 +22,13 @@
 /* A probe's samples: its first point's run, at most this many steps of
  * the graded dt (or the graded run, when shorter). */
 #define SW_MEASURE_PROBE_STEPS 64
-/* ... and no probe point past this many state components × steps (a
- * first-order method on the 3-mass chain: 6e6 for its finest point). */
-#define SW_MEASURE_WORK 1e8
+/* ... and a probe's work (sw_measure_step_work × steps, the run at the
+ * graded dt to the graded run's end included) at most SW_MEASURE_FREE, or
+ * SW_MEASURE_GRADED times the graded run's own where that is more: what
+ * the sweep costs the student's CPU time is bounded by what the graded run
+ * cost it (a first-order method on the 3-mass chain: 3.1e6 in all). */
+#define SW_MEASURE_FREE 2.5e7
+#define SW_MEASURE_GRADED 1.0
 /* The graded dt's point off the fit still stands when its local slope to
  * the fit is within this of the order (the order point's own margin). */
 #define SW_MEASURE_GRADED_SLOPE 0.5
@@ -61,6 +65,10 @@ typedef struct sw_measure_probe {
  * does not show. */
 int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, double *order, sw_bench_series *fit,
                         char *err, size_t errlen);
+/* A step of m on sys in the budgets' unit: sw_truth_eval_work times its
+ * evaluations (as m says, 1 to 16). A graded run whose steps × this is
+ * over SW_MEASURE_FREE is not run again: give its probe no graded_y. */
+double sw_measure_step_work(const sw_system *sys, const sw_integrator *m);
 
 /* Stability limit ω·dt on the same spring, from sw_stability_find. *kind
  * is its sw_stab_kind. 0, or a status with err filled. */

@@ -4,7 +4,9 @@
 # its own CPU passes while five busy loops share its one CPU (the step then
 # takes about 1.8 s of wall time: a wall-clock watchdog failed it, blaming an
 # endless loop); a step that loops is stopped after 1 s of its CPU time and
-# a step that sleeps after 1 s asleep, each named as what it did.
+# a step that sleeps after 1 s asleep, each named as what it did. grade's
+# --wall 1 passes the same honest student under the same load (it counts
+# only time with nothing of the submission runnable).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 command -v taskset >/dev/null 2>&1 || { echo "skip: test_plugin_watchdog: no taskset"; exit 77; }
@@ -47,7 +49,13 @@ for i in 1 2 3 4 5; do taskset -c 0 sh -c 'while :; do :; done' & busy="$busy $!
 trap 'kill $busy 2>/dev/null' EXIT
 STEPWISE_PLUGIN_TIMEOUT=1 taskset -c 0 "$SW" record spring --plugin ./heavy.so --steps 1 -o heavy.csv 2>err
 rc=$?
+# grade's --wall too: it counts only time with nothing of the submission
+# runnable, so the same student graded with --wall 1 passes
+mkdir class && { printf '#define SPIN 0.3\n#define SLEEP 0\n'; cat slow.c; } > class/heavy.c
+printf '# stepwise assignment 1\n# kind: plugin\n# scene: spring\n# integrator: euler\n# dt: 0.02\n# steps: 1\n# points x* y*: 1\n' > hw.txt
+taskset -c 0 "$SW" grade --assignment hw.txt --wall 1 --plugin-timeout 1 class > grade.out 2>&1
 kill $busy 2>/dev/null
+grep -q "heavy.c .*pass" grade.out || fail "an honest slow plugin under load met --wall: $(cat grade.out)"
 [ $rc -eq 0 ] || fail "an honest 0.3 s step under load failed ($rc): $(cat err)"
 [ "$(grep -c '^[0-9]' heavy.csv)" -eq 2 ] || fail "heavy.csv lacks rows: $(cat heavy.csv)"
 STEPWISE_PLUGIN_TIMEOUT=1 "$SW" record spring --plugin ./loop.so --steps 3 -o loop.csv 2>err && fail "a loop was not stopped"

@@ -164,12 +164,8 @@ int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, doub
     }
     sweep w = { .pr = pr };
     double dt0 = pr ? pr->dt : SW_MEASURE_DT0;
-    if (pr) {
-        w.n = pr->graded_steps < SW_MEASURE_PROBE_STEPS ? pr->graded_steps : SW_MEASURE_PROBE_STEPS;
-        w.n = w.n > 1 ? w.n : 1;
-        w.T = (double)w.n * dt0;
-    } else
-        w.T = SW_MEASURE_T;
+    if (pr && pr->whole)
+        *pr->whole = 0;
     if (sw_truth_init(&w.truth, sc, pr ? pr->p : p, err, errlen) != SW_OK)
         return SW_EINVAL;
     if (w.truth.source == SW_TRUTH_NONE) {
@@ -177,13 +173,23 @@ int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, doub
         sw_truth_free(&w.truth);
         return SW_EINVAL;
     }
+    /* a probe's budget, and what a step costs of it */
+    double step = pr ? sw_measure_step_work(&w.truth.sys, m) : 0;
+    double budget = pr ? fmax(SW_MEASURE_FREE, SW_MEASURE_GRADED * (double)pr->graded_steps * step) : 0;
+    if (pr) {
+        /* the whole graded run where four points over it fit the budget
+         * (a method that changes after some steps shows then), else its
+         * first SW_MEASURE_PROBE_STEPS steps */
+        long all = pr->graded_steps > 1 ? pr->graded_steps : 1;
+        w.n = 15.0 * (double)all * step <= budget ? all : all < SW_MEASURE_PROBE_STEPS ? all : SW_MEASURE_PROBE_STEPS;
+        w.T = (double)w.n * dt0;
+    } else
+        w.T = SW_MEASURE_T;
     double scale = truth_scale(&w);
     int n = 0, echo = 1, rc = SW_OK;
     char why[SW_ERRLEN];
-    /* a probe's budget, and what its first point costs of it (the rerun
-     * of the graded run to its end included) */
-    double step = pr ? sw_measure_step_work(&w.truth.sys, m) : 0;
-    double budget = pr ? fmax(SW_MEASURE_FREE, SW_MEASURE_GRADED * (double)pr->graded_steps * step) : 0;
+    /* what the first point costs (the rerun of the graded run to its end
+     * included) */
     double spent = pr ? (double)(pr->graded_y ? (pr->graded_steps > w.n ? pr->graded_steps : w.n) : w.n) * step : 0;
     for (int k = 0; k < SW_MEASURE_POINTS && rc == SW_OK; k++) {
         if (pr && k > 0 && (spent += ldexp((double)w.n, k) * step) > budget)
@@ -223,6 +229,8 @@ int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, doub
         *order = NAN;
         return rc;
     }
+    if (pr && pr->whole) /* the sweep spans the graded run, and its first point repeated it */
+        *pr->whole = pr->graded_y && echo && w.n >= pr->graded_steps;
     const char *off = !isnan(*order) && pr ? off_graded_dt(s, scale, why, sizeof why) : NULL;
     if (isnan(*order) || off) {
         *order = NAN;

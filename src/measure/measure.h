@@ -19,8 +19,9 @@
 #define SW_MEASURE_DT0 0.16
 #define SW_MEASURE_POINTS 12
 #define SW_MEASURE_SETTLED 4
-/* A probe's samples: its first point's run, at most this many steps of
- * the graded dt (or the graded run, when shorter). */
+/* A probe's samples: its first point's run, the whole graded run where
+ * four points over it fit the budget below, else at most this many steps
+ * of the graded dt. */
 #define SW_MEASURE_PROBE_STEPS 64
 /* ... and a probe's work (sw_measure_step_work × steps, the run at the
  * graded dt to the graded run's end included) at most SW_MEASURE_FREE, or
@@ -52,6 +53,8 @@ typedef struct sw_measure_probe {
     double stop_at;          /* the graded run's sw_sim_step_until argument (0: whole steps) */
     long graded_steps;       /* the steps the graded run took */
     const double *graded_y;  /* its last state (NULL: not compared) */
+    int *whole;              /* out, or NULL: 1 when the sweep spanned the whole graded run and
+                              * its first point repeated it; else the order stands on a part */
 } sw_measure_probe;
 
 /* The order on a probe (NULL: the spring, as sw_measure_order): dt, dt/2,

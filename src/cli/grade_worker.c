@@ -130,6 +130,11 @@ static void short_reason(const sw_verdict *v, char *buf, size_t len)
     else if (v->ndiffs > 0)
         snprintf(buf, len, "%s: yours %s, the assignment's %s%s", v->diffs[0].what, v->diffs[0].got,
                  v->diffs[0].want, v->ndiffs > 1 ? " (and more)" : "");
+    else if (v->got_end.blown && !v->ref_end.blown && strcmp(v->first_column, "step") == 0)
+        /* the run ended there (a step that returned an error): its rows
+         * stop, and the step column is the first to differ */
+        snprintf(buf, len, "the plugin's run ended at step %ld (t = %g): %.900s", v->got_end.step, v->got_end.t,
+                 v->got_end.reason);
     else
         snprintf(buf, len, "%.1000s", v->first);
 }

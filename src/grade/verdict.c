@@ -152,6 +152,9 @@ static void message(sw_verdict *v, const char *what)
         used += (size_t)snprintf(m + used, len - used, " differs from %s", v->reference);
     if (used < len && v->have_explanation)
         used += (size_t)snprintf(m + used, len - used, "; %s", v->explanation.message);
+    else if (used < len && !plugin && v->got_end.blown && !v->ref_end.blown)
+        used += (size_t)snprintf(m + used, len - used, "; the plugin's run ended at step %ld (t = %g): %s",
+                                 v->got_end.step, v->got_end.t, v->got_end.reason);
     else if (used < len && !plugin && v->first[0])
         used += (size_t)snprintf(m + used, len - used, "; first failure: %s", v->first);
     else if (used < len && !v->comparable)
@@ -623,10 +626,11 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
             measure(v, req->plugin, ref, &got_sim, &spec);
         v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
         /* The same "why" as a trace gets: the plugin's first rows, run
-         * afresh, against the usual mistakes. A crash or overrun is its
-         * own answer. */
+         * afresh, against the usual mistakes. A crash, an overrun or a
+         * run that ended (a step that returned an error, a state gone
+         * non-finite) is its own answer. */
         if (!pass && req->explain && v->got_end.fault == SW_PF_NONE &&
-            v->ref_end.fault == SW_PF_NONE) {
+            v->ref_end.fault == SW_PF_NONE && !v->got_end.blown) {
             sw_run_desc desc;
             sw_explanation ex;
             fill_desc(&desc, sc, p, ref, dt, &spec, rtol, atol);

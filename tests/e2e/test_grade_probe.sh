@@ -5,8 +5,9 @@
 # at dts of 0.16/2^k: a plugin that ran RK4 there and Euler on the graded
 # chain failed its values and kept the order point. The cheaters of
 # tests/data/cheat/ tell the runs apart by the particle count (dim.c), the
-# initial state (start.c), the graded dt (dt.c), the run count (count.c)
-# and the step count (steps.c); none earns the order point, each for the
+# initial state (start.c), the graded dt (dt.c), the run count (count.c),
+# the step count (steps.c) and the time (late.c: RK4 for the first 64
+# steps); none earns the order point, each for the
 # reason the feedback names; nor the stability point, measured on a
 # spring of its own only for a plugin whose order on its graded run is the
 # method's. An honest RK4 and an honest Euler keep every point they earned,
@@ -16,7 +17,7 @@
 needs_jail
 cheat="$ROOT/tests/data/cheat"
 mkdir class
-for f in dim start dt count steps honest_rk4 honest_euler; do
+for f in dim start dt count steps late honest_rk4 honest_euler; do
     # one self-contained .c each, as a student hands it in
     { grep -q '"common.h"' "$cheat/$f.c" && cat "$cheat/common.h"; grep -v '"common.h"' "$cheat/$f.c"; } > class/$f.c
 done
@@ -37,7 +38,7 @@ done
 [ $? -le 1 ] || fail "grade exited $?: $(cat rk4.out)"
 score() { grep "^$1,class/$1.c," "$2" | awk -F, '{ print $(NF-2) "/" $(NF-1) }'; }
 [ "$(score honest_rk4 rk4.csv)" = 9/9 ] || fail "the honest RK4 lost points: $(cat fb/honest_rk4.txt)"
-for c in dim start dt count steps honest_euler; do
+for c in dim start dt count steps late honest_euler; do
     [ "$(score $c rk4.csv)" = 0/9 ] || fail "$c scored $(score $c rk4.csv): $(grep -i order fb/$c.txt)"
     grep -q "order: 0 of 1" fb/$c.txt || fail "$c: no order line: $(cat fb/$c.txt)"
     grep -q "stability: 0 of 1" fb/$c.txt || fail "$c: no stability line: $(cat fb/$c.txt)"
@@ -53,6 +54,10 @@ grep -q "order: 0 of 1: measured order 0\.9" fb/start.txt || fail "start: $(grep
 grep -q "is off the line of the finer steps" fb/dt.txt || fail "dt: $(grep 'order:' fb/dt.txt)"
 grep -q "did not repeat its graded run" fb/count.txt || fail "count: $(grep 'order:' fb/count.txt)"
 grep -q "order: 0 of 1: measured order" fb/steps.txt || fail "steps: $(grep 'order:' fb/steps.txt)"
+# RK4 for the first 64 steps (t < 0.64), Euler after: what a sweep over
+# part of the run reads counts only with matching values
+grep -q "order: 0 of 1: order not measured: .*counts only where the graded values match" fb/late.txt \
+    || fail "late: $(grep 'order:' fb/late.txt)"
 # an honest Euler on an Euler homework keeps both
 "$SW" grade --assignment hw-euler.txt --csv euler.csv class/honest_euler.c > euler.out 2>&1 \
     || fail "honest Euler on euler: $(cat euler.out)"

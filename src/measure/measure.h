@@ -30,6 +30,10 @@
  * cost it (a first-order method on the 3-mass chain: 3.1e6 in all). */
 #define SW_MEASURE_FREE 2.5e7
 #define SW_MEASURE_GRADED 1.0
+/* ... and the reference run a probe's errors are measured against (a
+ * scene without a closed form) at most this much work, the grader's own
+ * (a tight run on a tree galaxy of 20 000 stars took 44 min). */
+#define SW_MEASURE_REF_WORK 2.5e9
 /* The graded dt's point off the fit still stands when its local slope to
  * the fit is within this of the order (the order point's own margin). */
 #define SW_MEASURE_GRADED_SLOPE 0.5

@@ -157,6 +157,11 @@ static int reference_until(sw_truth *tr, double t)
         if (sw_sim_step_until(s, t))
             return 1;
         long evals = sw_sim_evals(s);
+        if (tr->max_evals > 0 && evals > tr->max_evals) {
+            snprintf(tr->why, sizeof tr->why, "a reference run to t = %.4g would cost more than the budget "
+                     "allows (%ld evaluations by t = %.4g)", t, evals, s->t);
+            return 1;
+        }
         if (tr->ref_rate == 0 && (s->steps >= 20 || s->t >= t) && s->t > 0)
             tr->ref_rate = (double)evals / s->t;
         if (tr->ref_rate > 0 && (double)evals > SW_TRUTH_CRAWL * tr->ref_rate * t + SW_TRUTH_CRAWL_SLACK) {

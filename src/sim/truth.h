@@ -54,6 +54,9 @@ typedef struct sw_truth {
     sw_system sys;        /* a private copy of the scene (exact() reads its parameters) */
     sw_sim ref;           /* the reference run (REFERENCE) */
     int have_ref, failed;
+    long max_evals;       /* the reference run's evaluations at most (0: no bound); past them
+                           * sw_truth_at fails, why saying so (a caller's budget: set it before
+                           * the first sw_truth_at) */
     double frame;         /* the reference run's frame (its largest step): the scene's dt, or
                            * longer when only far-apart times will be asked for (set it
                            * before the first sw_truth_at) */

@@ -159,9 +159,13 @@ sane() {
 part_play() {
     trap tmux_cleanup EXIT # (its tmux server is this part's: the test's own trap does not know it)
     tmux_start
+    # (The loop is stopped after 2 s of its own CPU time, or at the latest
+    # 50 x 2 s of wall time (host_link.c's WATCH_WALL): on a loaded machine
+    # the first can take longer than the default wait, so the wait is the
+    # second's, with a margin.)
     for p in exits aborts segv loops over-one over-many over-y writes-dim allocs; do
         type_cmd "$SW play spring --plugin ./$p.so -i $p"
-        wait_for "plugin $p disabled" 10 || fail "play: $p was not disabled"
+        wait_for "plugin $p disabled" 130 || fail "play: $p was not disabled"
         wait_for 'spring +euler +dt=0\.02' 5 || fail "play: the UI did not go on under euler after $p"
         keys q
         sane "play-$p"
@@ -174,7 +178,7 @@ part_play() {
     # Refused at load: one line, no curses started, a sane shell.
     for p in info-loops badname; do
         type_cmd "$SW play spring --plugin ./$p.so"
-        wait_for "stepwise: --plugin './$p.so'" 10 || fail "play: no one-line refusal of $p"
+        wait_for "stepwise: --plugin './$p.so'" 130 || fail "play: no one-line refusal of $p"
         sane "play-$p"
     done
     # Ctrl-C in play while the plugin loops (a 60 s watchdog): the UI ends at once, sane.

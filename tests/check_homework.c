@@ -166,6 +166,51 @@ START_TEST(values_per_student)
 }
 END_TEST
 
+/* One value says nothing of another (red team 3, F3): the draw once hashed
+ * the student and the parameter's name only, so a hidden part's k in
+ * 50..90 was always the visible part's (in 80..120) less 30, and a second
+ * homework's k in 80..120 under the same secret ten times the first's in
+ * 8.0..12.0. Now the part and the range are drawn on too: over 200
+ * students the difference (and the ratio) takes many values. (Were they
+ * independent, a fixed offset would repeat for about 1 in 41 of them; the
+ * 12 allowed here fail a fair draw with probability below 1e-3.) */
+START_TEST(values_independent)
+{
+    static const char two_parts[] =
+        "# stepwise assignment 1\n# kind: plugin\n# secret: seven blue herons\n# integrator: rk4\n"
+        "# dt: 0.01\n# steps: 10\n# points x* y*: 1\n"
+        "# part shown\n# scene: chain\n# param k: 80..120 per student\n"
+        "# part hidden\n# scene: chain\n# param k: 50..90 per student\n# visibility: hidden\n";
+    static const char tenth[] =
+        "# stepwise assignment 1\n# kind: plugin\n# secret: seven blue herons\n# integrator: rk4\n"
+        "# dt: 0.01\n# steps: 10\n# points x* y*: 1\n# scene: chain\n# param k: 8.0..12.0 per student\n";
+    static const char whole[] =
+        "# stepwise assignment 1\n# kind: plugin\n# secret: seven blue herons\n# integrator: rk4\n"
+        "# dt: 0.01\n# steps: 10\n# points x* y*: 1\n# scene: chain\n# param k: 80..120 per student\n";
+    static sw_homework h;
+    char err[512], who[64];
+    int offset30 = 0, times10 = 0;
+    for (int s = 0; s < 200; s++) {
+        snprintf(who, sizeof who, "s%d@u.edu", s);
+        write_file(two_parts);
+        ck_assert_msg(sw_homework_read(&h, path, who, err, sizeof err) == SW_OK, "%s", err);
+        offset30 += param(&h, 0, "k") - param(&h, 1, "k") == 30;
+        sw_homework_free(&h);
+        write_file(tenth);
+        ck_assert_msg(sw_homework_read(&h, path, who, err, sizeof err) == SW_OK, "%s", err);
+        double a = param(&h, 0, "k");
+        sw_homework_free(&h);
+        write_file(whole);
+        ck_assert(sw_homework_read(&h, path, who, err, sizeof err) == SW_OK);
+        times10 += fabs(param(&h, 0, "k") - 10 * a) < 1e-9;
+        sw_homework_free(&h);
+    }
+    ck_assert_msg(offset30 <= 12, "%d of 200: the hidden k is the shown one less 30", offset30);
+    ck_assert_msg(times10 <= 12, "%d of 200: one homework's k is ten times the other's", times10);
+    unlink(path);
+}
+END_TEST
+
 /* A range's grid is the finer of its ends': 0.50..2 in hundredths. */
 START_TEST(values_on_the_grid)
 {
@@ -288,6 +333,7 @@ Suite *make_homework_suite(void)
     tcase_add_test(tc, parts_share_and_replace);
     tcase_add_test(tc, values_per_student);
     tcase_add_test(tc, values_on_the_grid);
+    tcase_add_test(tc, values_independent);
     tcase_add_test(tc, mistakes_named);
     tcase_add_test(tc, trace_parts);
     tcase_add_test(tc, student_sheet);

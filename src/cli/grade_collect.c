@@ -167,6 +167,21 @@ static int judge(const char *path, const char *name, const char *dir, const stru
                      ".trace or .csv, plugins in .so or .c");
         return 0;
     }
+    /* In a folder, x.so beside x.c is its build (an upload often holds
+     * both, the .so built on another machine): the source is graded. */
+    size_t nlen = strlen(name), plen = strlen(path);
+    if (dir && nlen > 3 && strcmp(name + nlen - 3, ".so") == 0 && plen < PATH_MAX) {
+        char source[PATH_MAX + 1], shown[200];
+        struct stat cs;
+        memcpy(source, path, plen - 2);
+        memcpy(source + plen - 2, "c", 2);
+        if (lstat(source, &cs) == 0 && S_ISREG(cs.st_mode)) {
+            sw_escape(strrchr(source, '/') ? strrchr(source, '/') + 1 : source, 80, shown, sizeof shown);
+            snprintf(why, len, "not graded: a build of '%s' beside it, which is graded (a source "
+                     "and its build are one submission)", shown);
+            return 0;
+        }
+    }
     /* Opened as it will be read: never through a link, never waiting on a
      * FIFO; the descriptor's own type and identity decide. */
     int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);

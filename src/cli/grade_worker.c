@@ -299,6 +299,9 @@ int grade_worker(void *ctx, int in, int out)
             rc = sw_plugin_compile(path, job->build_dir, name, so, sizeof so, err, sizeof err);
             path = so;
         }
+        /* a name or label the tool would refuse is no reason to fail a
+         * submission: graded under another, with a note */
+        sw_plugin_set_any_name(1);
         if (rc == SW_OK)
             rc = sw_plugin_load(path, job->path, &req.plugin, err, sizeof err);
         rec.part = -1;
@@ -321,10 +324,17 @@ int grade_worker(void *ctx, int in, int out)
     char *report = NULL;
     size_t report_len = 0;
     FILE *f = open_memstream(&report, &report_len);
+    const char *renamed = req.plugin ? sw_plugin_renamed(req.plugin) : NULL;
+    if (f && renamed)
+        fprintf(f, "note: %s; nothing is taken off for it (sw_plugin_info() sets them)\n", renamed);
     rec.status = SW_VERDICT_PASS;
     rec.failing_step = -1;
     for (int p = lo; p < hi; p++) {
         const sw_part *part = &h->parts[p];
+        /* each part in a host of its own: what a plugin keeps in static
+         * memory (a hidden part's system, its dt) never reaches the
+         * values of the next, which its feedback may show */
+        sw_plugin_hosts_end();
         check_part(job, h, p, &req, &v);
         int status = v.limit ? GRADE_LIMIT : (int)v.status;
         sw_score_append(&rec.score, &v.score, part->name, (int)part->visibility, p);

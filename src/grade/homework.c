@@ -222,14 +222,18 @@ static void draw(const sw_homework *h, sw_varying *v)
 {
     uint64_t r = 0;
     if (h->student[0]) {
-        unsigned char msg[320];
-        size_t a = strlen(h->student), b = strlen(v->param);
-        if (a > 200)
-            a = 200;
-        memcpy(msg, h->student, a);
-        msg[a] = '\n';
-        memcpy(msg + a + 1, v->param, b);
-        r = sw_siphash24(h->key, msg, a + 1 + b);
+        /* the student, the part, the parameter and its range: a value
+         * shown on one part's sheet (or one homework's, under the same
+         * secret) says nothing of another's */
+        char msg[1400];
+        int len = snprintf(msg, sizeof msg, "%.200s\n%s\n%s\n", h->student,
+                           v->part >= 0 ? h->parts[v->part].name : "", v->param);
+        for (int i = 0; i < v->nlist && len > 0 && (size_t)len < sizeof msg; i++)
+            len += snprintf(msg + len, sizeof msg - (size_t)len, "%.17g,", v->list[i]);
+        if (v->nlist == 0 && len > 0 && (size_t)len < sizeof msg)
+            len += snprintf(msg + len, sizeof msg - (size_t)len, "%lld+%lld*1e-%d", v->lo, v->count, v->digits);
+        if (len > 0)
+            r = sw_siphash24(h->key, (const unsigned char *)msg, (size_t)len < sizeof msg ? (size_t)len : sizeof msg - 1);
     }
     if (v->nlist > 0)
         v->value = v->list[r % (uint64_t)v->nlist];

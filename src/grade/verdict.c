@@ -559,6 +559,16 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
                  v->order, ref->name, ref->order);
         return;
     }
+    /* the limit is measured on a spring of its own, which a plugin can
+     * tell from its graded run (run the assignment's method there, another
+     * of the same order on the graded run): believed, as the spring's
+     * order is, only where the graded values match */
+    if (v->status != SW_VERDICT_PASS) {
+        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: the limit is measured on "
+                 "a spring of its own, a system a plugin can tell apart, and counts only where the graded "
+                 "values match");
+        return;
+    }
     double wdt;
     int kind;
     if (sw_measure_stability(plugin, &wdt, &kind, why, sizeof why) != SW_OK)
@@ -625,6 +635,9 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
         v->status = pass ? SW_VERDICT_PASS : SW_VERDICT_FAIL;
         if (v->got_end.fault != SW_PF_NONE)
             v->failing_step = v->got_end.step;
+        /* the graded run is over: what the plugin runs from here on is
+         * the grader's own work, on its budget (sw_plugin_grader_runs) */
+        sw_plugin_grader_runs(1);
         if (req->measure && v->got_end.fault == SW_PF_NONE)
             measure(v, req->plugin, ref, &got_sim, &spec);
         v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
@@ -642,6 +655,7 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
                 v->have_explanation = 1;
             }
         }
+        sw_plugin_grader_runs(0);
         score(v, req, &ref_sim.sys, &tol, ref);
         char what[120];
         snprintf(what, sizeof what, "plugin %s on %s", v->plugin, v->scene);

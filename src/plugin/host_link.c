@@ -231,6 +231,7 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     spec.nin = 2;
     sw_limits lim;
     sw_plugin_limits(&lim);
+    h->graders = sw_plugin_grader_open();
     h->have_fault = h->dying = 0;
     h->printed = 0;
     h->rpos = h->rlen = 0;

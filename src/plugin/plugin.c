@@ -95,7 +95,7 @@ int sw_plugin_label_ok(const char *label, char *why, size_t whylen)
 /* Every field of what loading found checked; 0, or SW_EINVAL with why. */
 static int check_reply(const sw_host_info *r, const char *shown, char *err, size_t errlen)
 {
-    char why[SW_ERRLEN], esc[200];
+    char esc[200];
     switch (r->stage) {
     case SW_HOST_STAGE_DLOPEN: {
         /* the loader names the host's copy ("./plugin.so: ..."); the message names the file already */
@@ -132,18 +132,47 @@ static int check_reply(const sw_host_info *r, const char *shown, char *err, size
                  "and 0..64 work vectors", shown);
         return SW_EINVAL;
     }
+    return SW_OK;
+}
+
+static int any_name;
+
+void sw_plugin_set_any_name(int on) { any_name = on != 0; }
+
+/* The name and the label checked: SW_OK, or SW_EINVAL with err; where any
+ * name goes (grading), one not allowed is replaced and renamed says why. */
+static int name_and_label(sw_host_info *r, const char *shown, char *renamed, size_t renamedlen, char *err,
+                          size_t errlen)
+{
+    char why[SW_ERRLEN], esc[200];
+    renamed[0] = '\0';
     sw_escape(r->name, SW_PLUGIN_NAME_MAX + 8, esc, sizeof esc);
-    if (strlen(r->name) >= sizeof r->name - 1 || !sw_plugin_name_ok(r->name, why, sizeof why)) {
-        snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc,
-                 strlen(r->name) >= sizeof r->name - 1 ? "a name has 1 to 40 characters" : why);
-        return SW_EINVAL;
+    int long_name = strlen(r->name) >= sizeof r->name - 1;
+    if (long_name || !sw_plugin_name_ok(r->name, why, sizeof why)) {
+        if (long_name)
+            snprintf(why, sizeof why, "a name has 1 to %d characters", SW_PLUGIN_NAME_MAX);
+        if (!any_name) {
+            snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc, why);
+            return SW_EINVAL;
+        }
+        snprintf(renamed, renamedlen, "its name '%.60s' is not allowed (%.120s): graded as '%s'", esc, why,
+                 SW_PLUGIN_GRADED_NAME);
+        snprintf(r->name, sizeof r->name, "%s", SW_PLUGIN_GRADED_NAME);
     }
     const char *label = r->has_label ? r->label : r->name;
-    if (r->has_label && (strlen(label) >= sizeof r->label - 1 || !sw_plugin_label_ok(label, why, sizeof why))) {
+    int long_label = strlen(label) >= sizeof r->label - 1;
+    if (r->has_label && (long_label || !sw_plugin_label_ok(label, why, sizeof why))) {
+        if (long_label)
+            snprintf(why, sizeof why, "a label has 1 to %d bytes", SW_PLUGIN_LABEL_MAX);
         sw_escape(label, 60, esc, sizeof esc);
-        snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc,
-                 strlen(label) >= sizeof r->label - 1 ? "a label has 1 to 80 bytes" : why);
-        return SW_EINVAL;
+        if (!any_name) {
+            snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc, why);
+            return SW_EINVAL;
+        }
+        size_t at = strlen(renamed);
+        snprintf(renamed + at, renamedlen - at, "%sits label '%.60s' is not allowed (%.120s): shown as its name",
+                 at ? "; " : "", esc, why);
+        r->has_label = 0;
     }
     return SW_OK;
 }
@@ -199,6 +228,10 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     int rc = sw_host_start(e, &r, err, errlen);
     if (rc == SW_OK)
         rc = check_reply(&r, shown, err, errlen);
+    if (rc == SW_OK) {
+        snprintf(e->own_name, sizeof e->own_name, "%s", r.name);
+        rc = name_and_label(&r, shown, e->renamed, sizeof e->renamed, err, errlen);
+    }
     if (rc != SW_OK) {
         sw_host_stop(e);
         close(e->fd);
@@ -231,6 +264,12 @@ sw_plugin_fault sw_plugin_failed(sw_sim *s)
     if (!s->blown || !(s->method->flags & SW_PLUGIN) || !s->stepper)
         return SW_PF_NONE;
     return sw_plugin_box_fault(s->stepper, s->blow_step, s->blow_reason, sizeof s->blow_reason);
+}
+
+const char *sw_plugin_renamed(const sw_integrator *m)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    return e && e->renamed[0] ? e->renamed : NULL;
 }
 
 sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len)

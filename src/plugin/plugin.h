@@ -55,6 +55,26 @@ int sw_plugin_label_ok(const char *label, char *why, size_t whylen);
 struct sw_limits;
 void sw_plugin_set_limits(const struct sw_limits *lim);
 
+/* The grader's measuring runs (the order, the stability limit): between
+ * sw_plugin_grader_runs(1) and (0) every plugin's host is one of their
+ * own, started afresh on the grader's budget (SW_GRADER_CPU of the
+ * limits' CPU time), and the CPU time it used is never counted in what
+ * is left of the submission's. Each call ends the hosts running. */
+#define SW_GRADER_CPU(cpu) (4 * (cpu) + 30)
+void sw_plugin_grader_runs(int on);
+/* Every plugin's host ends now (each starts afresh at its next step):
+ * nothing a plugin keeps in its process passes to the runs after. */
+void sw_plugin_hosts_end(void);
+
+/* Grading: a plugin whose name or label is not allowed (a name that
+ * shadows a built-in method, a label not UTF-8) is loaded all the same,
+ * as SW_PLUGIN_GRADED_NAME or with its name as its label; what it was
+ * renamed for is sw_plugin_renamed's. Elsewhere such a plugin is refused. */
+#define SW_PLUGIN_GRADED_NAME "student-plugin"
+void sw_plugin_set_any_name(int on);
+/* Why m was loaded under another name or label than its own, or NULL. */
+const char *sw_plugin_renamed(const sw_integrator *m);
+
 /* Watchdog for each call into a plugin, in seconds (> 0). */
 void sw_plugin_set_timeout(double seconds);
 double sw_plugin_timeout(void);

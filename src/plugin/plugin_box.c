@@ -155,8 +155,9 @@ static void box_fault_now(step_box *b)
                      "time: take the printf out of the step)", how, (double)b->pending_printed / 1048576);
         else
             snprintf(why, sizeof why, "%s", how);
-        box_fail(b, SW_PF_LIMIT, why, "(the submission's CPU-time limit, --cpu: it counts the plugin's "
-                 "own time only)");
+        box_fail(b, SW_PF_LIMIT, why, b->entry->host.graders
+                 ? "(the grader's budget for its measuring runs, 4 x --cpu + 30 s, never the submission's)"
+                 : "(the submission's CPU-time limit, --cpu: it counts the plugin's own time only)");
     } else {
         box_fail(b, SW_PF_CRASH, how, NULL);
     }
@@ -265,7 +266,7 @@ static int box_host(step_box *b)
         return -1;
     }
     if (info.stage != SW_HOST_STAGE_OK || !info.has_step || info.work_vectors != e->work_vectors ||
-        strncmp(info.name, e->name, sizeof e->name) != 0) {
+        strncmp(info.name, e->own_name, sizeof e->own_name) != 0) {
         sw_child_end end;
         sw_host_lost(e, &end);
         box_fail(b, SW_PF_START, info.stage == SW_HOST_STAGE_OK ? "changed since it was loaded: load it again"

@@ -28,6 +28,7 @@ typedef struct sw_host_link {
     long long printed;                     /* ... and the plugin had printed this many bytes */
     sw_host_watched watched;               /* why the watchdog ended the last wait it ended, */
     double waited;                         /* ... and after how long (wall seconds) */
+    int graders;                           /* started for the grader's measuring runs */
     unsigned char rbuf[1 << 16];           /* what was read from the host and not yet used */
     size_t rpos, rlen;
 } sw_host_link;
@@ -38,6 +39,8 @@ typedef struct sw_plugin_entry {
     int fd;                                /* the file as loaded: what every host gets */
     char name[SW_PLUGIN_NAME_MAX + 1];
     char label[SW_PLUGIN_LABEL_MAX + 1];
+    char own_name[257];                    /* the name its sw_plugin_info() gives (a host's check) */
+    char renamed[SW_ERRLEN];               /* why it was given name or label (grading), or "" */
     int work_vectors;
     const sw_integrator *method;           /* the registered copy */
     sw_plugin_fault last_fault;            /* the last failure in any run */
@@ -57,6 +60,8 @@ sw_plugin_entry *sw_plugin_entry_at(int i);
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The limits a new plugin process gets (sw_plugin_set_limits). */
 void sw_plugin_limits(sw_limits *lim);
+/* Whether the grader's account is open (sw_plugin_grader_runs). */
+int sw_plugin_grader_open(void);
 /* ... and its path (once found). */
 const char *sw_plugin_host_path(void);
 

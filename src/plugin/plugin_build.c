@@ -47,8 +47,10 @@ static const char *include_dir(void)
 }
 
 /* The compiler's command line inside the jail: the documented flags. */
-#define JAIL_FLAGS "-std=c11", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC"
-#define SHOWN_FLAGS "-std=c11 -O2 -Wall -shared -fPIC"
+/* -D_DEFAULT_SOURCE: <math.h>'s M_PI, which students reach for, is not
+ * ISO C; glibc declares it (and POSIX's names) with this. */
+#define JAIL_FLAGS "-std=c11", "-D_DEFAULT_SOURCE", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC"
+#define SHOWN_FLAGS "-std=c11 -D_DEFAULT_SOURCE -O2 -Wall -shared -fPIC"
 
 typedef struct build_job {
     const char *cc;          /* absolute, resolved outside the jail */

@@ -28,20 +28,54 @@ void sw_plugin_set_limits(const sw_limits *lim)
 
 static double seconds_of(struct timeval tv) { return (double)tv.tv_sec + 1e-6 * (double)tv.tv_usec; }
 
+/* CPU time of this process's reaped children (builds and hosts). */
+static double children_cpu(void)
+{
+    struct rusage kids;
+    getrusage(RUSAGE_CHILDREN, &kids);
+    return seconds_of(kids.ru_utime) + seconds_of(kids.ru_stime);
+}
+
+void sw_plugin_hosts_end(void)
+{
+    for (int i = 0; i < nentries; i++)
+        sw_host_stop(&entries[i]);
+}
+
+/* The grader's account: open while its measuring runs go on; what its
+ * hosts used (reaped when it closes) is never the submission's. */
+static int grader_open;
+static double grader_from, grader_used;
+
+void sw_plugin_grader_runs(int on)
+{
+    on = on != 0;
+    if (on == grader_open)
+        return;
+    sw_plugin_hosts_end(); /* the closing account's hosts, reaped: their time is counted below */
+    if (on)
+        grader_from = children_cpu();
+    else
+        grader_used += children_cpu() - grader_from;
+    grader_open = on;
+}
+
 void sw_plugin_limits(sw_limits *lim)
 {
     *lim = limits;
-    if (limits.cpu_seconds > 0) {
+    if (limits.cpu_seconds > 0 && grader_open) {
+        lim->cpu_seconds = SW_GRADER_CPU(limits.cpu_seconds);
+    } else if (limits.cpu_seconds > 0) {
         /* The submission's own processes only (its builds and hosts, each
          * in this process's children's account once reaped): the
-         * grader's work in this process is never charged to it. */
-        struct rusage kids;
-        getrusage(RUSAGE_CHILDREN, &kids);
-        double used = seconds_of(kids.ru_utime) + seconds_of(kids.ru_stime);
-        double left = limits.cpu_seconds - used;
+         * grader's work in this process, and its hosts', is never
+         * charged to it. */
+        double left = limits.cpu_seconds - (children_cpu() - grader_used);
         lim->cpu_seconds = left > 1 ? left : 1;
     }
 }
+
+int sw_plugin_grader_open(void) { return grader_open; }
 
 void sw_plugin_set_timeout(double seconds)
 {

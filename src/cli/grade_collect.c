@@ -82,6 +82,7 @@ static int refuse(grade_list *l, const char *path, const char *why)
         return SW_ENOMEM;
     e->status = GRADE_SKIPPED;
     e->failing_step = -1;
+    e->part = -1; /* of no part (a .md beside the plugin is not its chain part) */
     snprintf(e->kind, sizeof e->kind, "not-graded");
     snprintf(e->message, sizeof e->message, "%s", why);
     l->ignored++;

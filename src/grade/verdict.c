@@ -576,6 +576,10 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
     else {
         v->stability = kind == 1 ? 0.0 : kind == 2 ? INFINITY : wdt;
         v->stability_kind = kind;
+        /* beside it, the method's own measured as a plugin is (a student
+         * compares figures of one measure, not a measure with theory) */
+        if (sw_measure_stability_as_plugin(ref, &wdt, &kind, why, sizeof why) == SW_OK)
+            v->ref_stability = kind == 1 ? 0.0 : kind == 2 ? INFINITY : wdt;
     }
 }
 
@@ -671,7 +675,7 @@ sw_verdict_status sw_check_run(const sw_check_request *req, sw_verdict *v)
 {
     memset(v, 0, sizeof *v);
     v->failing_step = -1;
-    v->order = v->stability = NAN;
+    v->order = v->stability = v->ref_stability = NAN;
     v->dt = NAN;
     sw_verdict_status st = req->trace ? check_trace(req, v) : check_plugin(req, v);
     if (st == SW_VERDICT_ERROR)

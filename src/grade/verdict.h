@@ -83,6 +83,7 @@ typedef struct sw_verdict {
     int measure_shown;                 /* the caller printed order and stability itself (try) */
     double stability;                  /* ω·dt limit on the undamped spring; NaN: none */
     int stability_kind;
+    double ref_stability;              /* the method's own, measured the same way; NaN: not */
     char measure_note[SW_ERRLEN];
     long failing_step;                 /* the first failing step; -1 none */
     int limit;                         /* the plugin ran out of a resource limit */

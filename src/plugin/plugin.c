@@ -177,8 +177,7 @@ static int name_and_label(sw_host_info *r, const char *shown, char *renamed, siz
     return SW_OK;
 }
 
-/* At exit, every plugin's host ends (and a UID jail's directory with it). */
-static void stop_hosts(void)
+void sw_plugin_hosts_end(void)
 {
     for (int i = 0; i < SW_PLUGIN_MAX; i++) {
         sw_plugin_entry *e = sw_plugin_entry_at(i);
@@ -186,6 +185,17 @@ static void stop_hosts(void)
             sw_host_stop(e);
     }
 }
+
+void sw_plugin_grader_runs(int on)
+{
+    if ((on != 0) == sw_plugin_grader_open())
+        return;
+    sw_plugin_hosts_end(); /* the closing account's hosts, reaped: their time is counted */
+    sw_plugin_account(on);
+}
+
+/* At exit, every plugin's host ends (and a UID jail's directory with it). */
+static void stop_hosts(void) { sw_plugin_hosts_end(); }
 
 int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator **out, char *err,
                    size_t errlen)

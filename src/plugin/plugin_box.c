@@ -139,7 +139,8 @@ static void box_fault_now(step_box *b)
         box_fail(b, SW_PF_ODE, why, "(a plugin must not write to the ode)");
         return;
     case SW_PF_ALLOC:
-        box_fail(b, SW_PF_ALLOC, "allocated memory in its step (malloc, calloc, realloc or a relative)",
+        box_fail(b, SW_PF_ALLOC, "allocated memory in its step (malloc, calloc, realloc, or a call that "
+                 "allocates, such as fopen or strdup)",
                  "(a step must not allocate: ask for work vectors in sw_plugin_info)");
         return;
     default:

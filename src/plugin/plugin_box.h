@@ -60,8 +60,10 @@ sw_plugin_entry *sw_plugin_entry_at(int i);
 sw_plugin_entry *sw_plugin_entry_for(const sw_integrator *m);
 /* The limits a new plugin process gets (sw_plugin_set_limits). */
 void sw_plugin_limits(sw_limits *lim);
-/* Whether the grader's account is open (sw_plugin_grader_runs). */
+/* Whether the grader's account is open (sw_plugin_grader_runs), and
+ * opening (1) or closing (0) it once its hosts have ended. */
 int sw_plugin_grader_open(void);
+void sw_plugin_account(int grader);
 /* ... and its path (once found). */
 const char *sw_plugin_host_path(void);
 

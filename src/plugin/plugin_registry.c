@@ -36,28 +36,21 @@ static double children_cpu(void)
     return seconds_of(kids.ru_utime) + seconds_of(kids.ru_stime);
 }
 
-void sw_plugin_hosts_end(void)
-{
-    for (int i = 0; i < nentries; i++)
-        sw_host_stop(&entries[i]);
-}
-
 /* The grader's account: open while its measuring runs go on; what its
  * hosts used (reaped when it closes) is never the submission's. */
 static int grader_open;
 static double grader_from, grader_used;
 
-void sw_plugin_grader_runs(int on)
+void sw_plugin_account(int grader)
 {
-    on = on != 0;
-    if (on == grader_open)
+    grader = grader != 0;
+    if (grader == grader_open)
         return;
-    sw_plugin_hosts_end(); /* the closing account's hosts, reaped: their time is counted below */
-    if (on)
+    if (grader)
         grader_from = children_cpu();
     else
         grader_used += children_cpu() - grader_from;
-    grader_open = on;
+    grader_open = grader;
 }
 
 void sw_plugin_limits(sw_limits *lim)

@@ -70,14 +70,17 @@ grep -q "^output=.*trace" flat && fail "empty upload on a plugin homework is tol
 [ $rc -eq 2 ] && grep -q "'submit' is source (a plugin's .c only) or source or compiled" out ||
     fail "bad submit: exit $rc: $(cat out)"
 cc -shared -fPIC -I"$ROOT/include" -o honest.so honest.c || fail "cc honest.so"
+# (the .so under a name of its own: honest.so beside honest.c would be
+# its build, not graded, test_grade_build_beside.sh)
 mkdir src-class
-cp honest.c honest.so src-class/
+cp honest.c src-class/
+cp honest.so src-class/built.so
 "$SW" grade --assignment src-hw.txt --csv s.csv src-class > out 2>&1
-grep -q "honest.so,fail,,\"this homework asks for a plugin's C source (.c), not a compiled plugin (.so): hand in the .c it was built from: not graded\"" s.csv ||
+grep -q "built.so,fail,,\"this homework asks for a plugin's C source (.c), not a compiled plugin (.so): hand in the .c it was built from: not graded\"" s.csv ||
     fail "source homework: the .so's row: $(cat s.csv)"
 grep -q "honest.c,pass," s.csv || fail "source homework: the .c's row: $(cat s.csv)"
 "$SW" grade --assignment plugin-hw.txt --csv both.csv src-class > out 2>&1
-grep -q "honest.so,pass," both.csv || fail "plugin homework: the .so's row: $(cat both.csv)"
+grep -q "built.so,pass," both.csv || fail "plugin homework: the .so's row: $(cat both.csv)"
 "$SW" check --assignment src-hw.txt --plugin ./honest.so > out 2>&1; rc=$?
 [ $rc -eq 2 ] && grep -q "not a compiled plugin (.so): hand in the .c" out ||
     fail "check, .so on a source homework: exit $rc: $(cat out)"

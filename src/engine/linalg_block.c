@@ -65,7 +65,7 @@ int sw_block_factor(const sw_band *b, double *f)
     return bad ? -1 : 0;
 }
 
-void sw_block_solve(const sw_band *b, const double *f, double *x)
+SW_CLONES void sw_block_solve(const sw_band *b, const double *f, double *x)
 {
     int nb = b->n / 2;
     if (nb == 0)

@@ -411,7 +411,7 @@ SW_INLINE void add_products(v2d *d0, v2d *d1, const block_cols *p)
  * sw_block_factor factors it from the band: the same bits. Only the upper
  * blocks go into the band (the block solve reads them). 0, or -1 where the
  * blocks refuse (then the band holds nothing whole). */
-static int factor_chain(sw_particles *p, double a, double b, const sw_band *band, int lead)
+static SW_CLONES int factor_chain(sw_particles *p, double a, double b, const sw_band *band, int lead)
 {
     const struct sw_particles_solver *s = p->solver;
     const double *blk = s->pblock;
@@ -560,7 +560,7 @@ SW_INLINE void chain_pairs_rhs(const struct sw_particles_solver *s, int n, doubl
  * long; r's velocity half is read only where out is written, so out may be
  * that half itself. Each entry gets its terms in the order it always had:
  * the mass, the particle's own block, then the pairs. */
-static void velocity_rhs(const sw_particles *p, double c, const double *r, double *out_v)
+static SW_CLONES void velocity_rhs(const sw_particles *p, double c, const double *r, double *out_v)
 {
     const struct sw_particles_solver *s = p->solver;
     int n2 = 2 * p->n;

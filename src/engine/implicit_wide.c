@@ -36,31 +36,14 @@ double swi_norm2_scaled(int n, const double *v)
     return m * sqrt(s);
 }
 
-static SW_CLONES double sum_squares(int n, const double *v)
-{
-    v4d sum = { 0, 0, 0, 0 };
-    int i = 0;
-    for (; i + 4 <= n; i += 4) {
-        v4d vi;
-        memcpy(&vi, v + i, sizeof vi);
-        sum += vi * vi;
-    }
-    double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
-    for (; i < n; i++)
-        s0 += v[i] * v[i];
-    return (s0 + s2) + (s1 + s3);
-}
-
 static double norm2_of(int n, const double *v, double sq)
 {
     return sq > 1e-280 && sq < 1e280 ? sqrt(sq) : swi_norm2_scaled(n, v);
 }
 
-double swi_norm2(int n, const double *v) { return norm2_of(n, v, sum_squares(n, v)); }
-
-/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂ as
- * norm2 takes it, in one pass. */
-SW_CLONES double swi_residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate), or with no δ
+ * g = h·g - d, and |g|₂ as norm2 takes it, in one pass. */
+SW_INLINE double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
 {
     v4d sum = { 0, 0, 0, 0 };
     int i = 0;
@@ -68,17 +51,31 @@ SW_CLONES double swi_residual(int n, double *g, double h, const double *d, doubl
         v4d gi, di, dl;
         memcpy(&gi, g + i, sizeof gi);
         memcpy(&di, d + i, sizeof di);
-        memcpy(&dl, delta + i, sizeof dl);
-        gi = h * gi - (di + lambda * dl);
+        if (delta) {
+            memcpy(&dl, delta + i, sizeof dl);
+            gi = h * gi - (di + lambda * dl);
+        } else {
+            gi = h * gi - di;
+        }
         memcpy(g + i, &gi, sizeof gi);
         sum += gi * gi;
     }
     double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     for (; i < n; i++) {
-        g[i] = h * g[i] - (d[i] + lambda * delta[i]);
+        g[i] = delta ? h * g[i] - (d[i] + lambda * delta[i]) : h * g[i] - d[i];
         s0 += g[i] * g[i];
     }
     return norm2_of(n, g, (s0 + s2) + (s1 + s3));
+}
+
+SW_CLONES double swi_residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+{
+    return residual(n, g, h, d, lambda, delta);
+}
+
+SW_CLONES double swi_minus_g(int n, double *g, double h, const double *d)
+{
+    return residual(n, g, h, d, 0.0, NULL);
 }
 
 /* d += λ·δ; returns |δ|∞ (NaN when any component is, as sw_norm_inf) and
@@ -169,12 +166,6 @@ SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *r
     else
         for (int i = 0; i < n; i++)
             ym[i] = y[i] + theta * d[i];
-}
-
-SW_CLONES void swi_minus_g(int n, double *restrict g, double h, const double *restrict d)
-{
-    for (int i = 0; i < n; i++)
-        g[i] = h * g[i] - d[i];
 }
 
 SW_CLONES void swi_take(int n, double *restrict y, const double *restrict d)

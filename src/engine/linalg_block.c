@@ -34,11 +34,9 @@ _Static_assert(SW_BSWAP < PER, "block factors' length");
 /* z = S^-1·t by S's factors f. */
 static inline v2d block_apply(const double *f, v2d t)
 {
+    if (f[SW_BSWAP] != 0)
+        t = (v2d){ t[1], t[0] };
     double t0 = t[0], t1 = t[1];
-    if (f[SW_BSWAP] != 0) {
-        t0 = t[1];
-        t1 = t[0];
-    }
     double x1 = (t1 - f[SW_BELL] * t0) * f[SW_BR22];
     return (v2d){ (t0 - f[SW_BU12] * x1) * f[SW_BR11], x1 };
 }

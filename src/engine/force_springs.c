@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "engine/clones.h"
 #include "engine/lanes.h"
 #include "engine/spring_line.h"
 
@@ -80,7 +81,7 @@ static long springs_pairs(const sw_particles *p, const sw_force *fo, int *reach)
  *   Kv = -c u uᵀ.
  * At r = 0 the force is defined as zero (its direction is undefined); the
  * blocks are then those of a zero-length spring, -k I and 0. */
-static void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
+SW_INLINE void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
 {
     /* on (x, y) pairs as two-lane values (engine/lanes.h: each lane the
      * scalar operation), Kx and Kv made by columns: column j is
@@ -109,30 +110,40 @@ static void spring_block(const sw_spring *sp, const double *x, const double *v, 
     v2d k0 = -k * (u0 + s * q0) - cr * (u * p[0] + along * q0);
     v2d k1 = -k * (u1 + s * q1) - cr * (u * p[1] + along * q1);
     v2d c0 = -c * u0, c1 = -c * u1;
-    kx[0] = k0[0];
-    kx[1] = k1[0];
-    kx[2] = k0[1];
-    kx[3] = k1[1];
-    kv[0] = c0[0];
-    kv[1] = c1[0];
-    kv[2] = c0[1];
-    kv[3] = c1[1];
+    store2(kx, (v2d){ k0[0], k1[0] }); /* by rows */
+    store2(kx + 2, (v2d){ k0[1], k1[1] });
+    store2(kv, (v2d){ c0[0], c1[0] });
+    store2(kv + 2, (v2d){ c0[1], c1[1] });
 }
 
-static void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
-                           swp_blocks *out)
+/* Spring sp's ends and blocks into pair n of out's arrays. */
+SW_INLINE void put_spring(const sw_spring *sp, const double *x, const double *v, const swp_blocks *out, long n)
+{
+    out->a[n] = sp->a;
+    out->b[n] = sp->b;
+    spring_block(sp, x, v, out->pair + 8 * n, out->pair + 8 * n + 4);
+}
+
+static SW_CLONES void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                                     swp_blocks *out)
 {
     (void)p;
-    /* the count and the outputs kept in locals: stored through out, they
-     * would be written and read back at every spring */
-    long n = out->n;
-    int *pa = out->a, *pb = out->b, ns = fo->nsprings;
-    double *blk = out->pair + 8 * n;
-    for (int j = 0; j < ns; j++, n++, blk += 8) {
+    /* out's arrays and count in a copy of its own: read through out they
+     * would be read again after every store */
+    swp_blocks o = *out;
+    long n = o.n;
+    int ns = fo->nsprings, j = 0;
+    if (!fo->springs && ns > 2) {
+        /* a line (spring_line.h): its middle springs are line[1] a
+         * particle on each, made so here, not fetched a spring at a time */
+        sw_spring sp = swp_spring_at(fo, 0);
+        put_spring(&sp, x, v, &o, n++);
+        for (sp = swp_spring_at(fo, 1), j = 1; j < ns - 1; j++, sp.a++, sp.b++)
+            put_spring(&sp, x, v, &o, n++);
+    }
+    for (; j < ns; j++) {
         sw_spring sp = swp_spring_at(fo, j);
-        pa[n] = sp.a;
-        pb[n] = sp.b;
-        spring_block(&sp, x, v, blk, blk + 4);
+        put_spring(&sp, x, v, &o, n++);
     }
     out->n = n;
 }

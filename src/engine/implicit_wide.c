@@ -47,6 +47,7 @@ SW_INLINE double residual(int n, double *g, double h, const double *d, double la
 {
     v4d sum = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d gi, di, dl;
         memcpy(&gi, g + i, sizeof gi);
@@ -88,6 +89,7 @@ SW_CLONES double swi_advance(int n, double *d, double lambda, const double *delt
     v4d m4 = { 0, 0, 0, 0 }, s4 = { 0, 0, 0, 0 };
     v4i nan4 = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d dl, di, yi;
         memcpy(&dl, delta + i, sizeof dl);
@@ -128,6 +130,7 @@ SW_CLONES double swi_norm_inf(int n, const double *v)
     v4d m4 = { 0, 0, 0, 0 };
     v4i nan4 = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d a;
         memcpy(&a, v + i, sizeof a);
@@ -151,6 +154,7 @@ SW_CLONES double swi_norm_inf(int n, const double *v)
 SW_CLONES void swi_trial_point(int n, double *restrict ym, const double *restrict y, double theta,
                                const double *restrict d, double lambda, const double *restrict delta)
 {
+#pragma GCC unroll 2
     for (int i = 0; i < n; i++)
         ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
 }
@@ -159,6 +163,7 @@ SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *r
                          int from_zero)
 {
     if (from_zero)
+#pragma GCC unroll 2
         for (int i = 0; i < n; i++) {
             d[i] = 0.0;
             ym[i] = y[i] + theta * d[i];
@@ -170,6 +175,7 @@ SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *r
 
 SW_CLONES void swi_take(int n, double *restrict y, const double *restrict d)
 {
+#pragma GCC unroll 2
     for (int i = 0; i < n; i++)
         y[i] = y[i] + 1.0 * d[i];
 }

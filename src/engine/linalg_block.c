@@ -69,6 +69,7 @@ SW_CLONES void sw_block_solve(const sw_band *b, const double *f, double *x)
     if (nb == 0)
         return;
     v2d prev = load2(x);
+#pragma GCC unroll 2
     for (int i = 1; i < nb; i++) { /* y_i = x_i - W_i·y_(i-1) */
         const double *fi = f + PER * i;
         prev = load2(x + 2 * i) - (load2(fi + SW_BW0) * prev[0] + load2(fi + SW_BW1) * prev[1]);
@@ -78,6 +79,7 @@ SW_CLONES void sw_block_solve(const sw_band *b, const double *f, double *x)
     const double *e = b->a + b->kl + b->ku + (size_t)ROW * (size_t)(nb - 1);
     v2d next = block_apply(f + PER * (nb - 1), prev);
     store2(x + 2 * (nb - 1), next);
+#pragma GCC unroll 2
     for (int i = nb - 2; i >= 0; i--) {
         e -= ROW;
         v2d yi = load2(x + 2 * i) - (load2(e + NEXT) * next[0] + load2(e + NEXT + COL1) * next[1]);

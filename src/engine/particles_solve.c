@@ -518,6 +518,7 @@ static SW_CLONES void mass_times_zero_own(int n, const double *mass, const doubl
 /* z = r + c·v over n components (z may be r: each read before written). */
 static SW_CLONES void add_scaled(int n, double *z, const double *r, double c, const double *v)
 {
+#pragma GCC unroll 2
     for (int i = 0; i < n; i++)
         z[i] = r[i] + c * v[i];
 }

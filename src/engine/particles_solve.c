@@ -419,13 +419,14 @@ static SW_CLONES int factor_chain(sw_particles *p, double a, double b, const sw_
     const v2d zero = { 0.0, 0.0 };
     v2d l0 = zero, l1 = zero; /* the block left of the row's diagonal (row > 0) */
     block_cols left = { zero, zero, zero, zero };
+    const double *mass = p->mass;
     int n = p->n, bad = 0;
     if (lead) {
         left = block_products(a, blk, b, blk + 4, 1, 1);
         blk += 8;
     }
     for (int i = 0; i < n; i++, e += 2 * CHAIN_LD, f += SW_BLOCK_PER) {
-        v2d d0 = { 0.0 + p->mass[i], 0.0 }, d1 = { 0.0, 0.0 + p->mass[i] };
+        v2d d0 = { 0.0 + mass[i], 0.0 }, d1 = { 0.0, 0.0 + mass[i] };
         if (lead || i > 0)
             add_products(&d0, &d1, &left);
         if (i + 1 < n || blk < s->pblock + 8 * s->npairs) { /* the right spring, or the last anchor */

@@ -9,6 +9,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "engine/clones.h"
+#include "engine/lanes.h"
 #include "engine/spring_line.h"
 
 /* d = x_a - x_b (or the anchor) and dv = v_a - v_b of spring sp. */
@@ -79,49 +81,71 @@ static long springs_pairs(const sw_particles *p, const sw_force *fo, int *reach)
  *   Kv = -c u uᵀ.
  * At r = 0 the force is defined as zero (its direction is undefined); the
  * blocks are then those of a zero-length spring, -k I and 0. */
-static void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
+SW_INLINE void spring_block(const sw_spring *sp, const double *x, const double *v, double kx[4], double kv[4])
 {
-    /* differences() and length() written out on scalars: through their
-     * arrays the compiler kept d and dv on the stack (the same operations) */
+    /* on (x, y) pairs as two-lane values (engine/lanes.h: each lane the
+     * scalar operation), Kx and Kv made by columns: column j is
+     * -k (u u_j + s P_j) - (c/r) (u p_j + (dv·u) P_j), p = P dv */
     int a = sp->a, b = sp->b;
-    double bx = b >= 0 ? x[2 * b] : sp->ax, by = b >= 0 ? x[2 * b + 1] : sp->ay;
-    double d0 = x[2 * a] - bx, d1 = x[2 * a + 1] - by;
-    double dv0 = v[2 * a] - (b >= 0 ? v[2 * b] : 0.0), dv1 = v[2 * a + 1] - (b >= 0 ? v[2 * b + 1] : 0.0);
-    double r2 = d0 * d0 + d1 * d1;
-    double r = r2 >= 1e-290 ? sqrt(r2) : hypot(d0, d1);
+    v2d xb = { sp->ax, sp->ay }, vb = { 0.0, 0.0 };
+    if (b >= 0) {
+        xb = load2(x + 2 * b);
+        vb = load2(v + 2 * b);
+    }
+    v2d d = load2(x + 2 * a) - xb, dv = load2(v + 2 * a) - vb, dd = d * d;
+    double r2 = dd[0] + dd[1];
+    double r = r2 >= 1e-290 ? sqrt(r2) : hypot(d[0], d[1]);
     if (!(r > 0)) {
         kx[0] = kx[3] = -sp->k;
         kx[1] = kx[2] = 0;
         kv[0] = kv[1] = kv[2] = kv[3] = 0;
         return;
     }
-    double u0 = d0 / r, u1 = d1 / r;
-    double along = dv0 * u0 + dv1 * u1;
-    double p0 = dv0 - along * u0, p1 = dv1 - along * u1;
+    v2d u = d / r, du = dv * u;
+    double along = du[0] + du[1];
+    v2d p = dv - along * u;
     double s = 1.0 - sp->rest / r, cr = sp->c / r, k = sp->k, c = sp->c;
-    double u00 = u0 * u0, u01 = u0 * u1, u10 = u1 * u0, u11 = u1 * u1;
-    double q00 = 1 - u00, q01 = 0 - u01, q10 = 0 - u10, q11 = 1 - u11; /* P = I - u uᵀ */
-    kx[0] = -k * (u00 + s * q00) - cr * (u0 * p0 + along * q00);
-    kx[1] = -k * (u01 + s * q01) - cr * (u0 * p1 + along * q01);
-    kx[2] = -k * (u10 + s * q10) - cr * (u1 * p0 + along * q10);
-    kx[3] = -k * (u11 + s * q11) - cr * (u1 * p1 + along * q11);
-    kv[0] = -c * u00;
-    kv[1] = -c * u01;
-    kv[2] = -c * u10;
-    kv[3] = -c * u11;
+    v2d u0 = u * u[0], u1 = u * u[1];                                 /* u uᵀ's columns */
+    v2d q0 = (v2d){ 1.0, 0.0 } - u0, q1 = (v2d){ 0.0, 1.0 } - u1; /* P = I - u uᵀ */
+    v2d k0 = -k * (u0 + s * q0) - cr * (u * p[0] + along * q0);
+    v2d k1 = -k * (u1 + s * q1) - cr * (u * p[1] + along * q1);
+    v2d c0 = -c * u0, c1 = -c * u1;
+    store2(kx, (v2d){ k0[0], k1[0] }); /* by rows */
+    store2(kx + 2, (v2d){ k0[1], k1[1] });
+    store2(kv, (v2d){ c0[0], c1[0] });
+    store2(kv + 2, (v2d){ c0[1], c1[1] });
 }
 
-static void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
-                           swp_blocks *out)
+/* Spring sp's ends and blocks into pair n of out's arrays. */
+SW_INLINE void put_spring(const sw_spring *sp, const double *x, const double *v, const swp_blocks *out, long n)
+{
+    out->a[n] = sp->a;
+    out->b[n] = sp->b;
+    spring_block(sp, x, v, out->pair + 8 * n, out->pair + 8 * n + 4);
+}
+
+static SW_CLONES void springs_blocks(const sw_particles *p, const sw_force *fo, const double *x, const double *v,
+                                     swp_blocks *out)
 {
     (void)p;
-    for (int j = 0; j < fo->nsprings; j++, out->n++) {
-        sw_spring at = swp_spring_at(fo, j);
-        const sw_spring *sp = &at;
-        out->a[out->n] = sp->a;
-        out->b[out->n] = sp->b;
-        spring_block(sp, x, v, out->pair + 8 * out->n, out->pair + 8 * out->n + 4);
+    /* out's arrays and count in a copy of its own: read through out they
+     * would be read again after every store */
+    swp_blocks o = *out;
+    long n = o.n;
+    int ns = fo->nsprings, j = 0;
+    if (!fo->springs && ns > 2) {
+        /* a line (spring_line.h): its middle springs are line[1] a
+         * particle on each, made so here, not fetched a spring at a time */
+        sw_spring sp = swp_spring_at(fo, 0);
+        put_spring(&sp, x, v, &o, n++);
+        for (sp = swp_spring_at(fo, 1), j = 1; j < ns - 1; j++, sp.a++, sp.b++)
+            put_spring(&sp, x, v, &o, n++);
     }
+    for (; j < ns; j++) {
+        sw_spring sp = swp_spring_at(fo, j);
+        put_spring(&sp, x, v, &o, n++);
+    }
+    out->n = n;
 }
 
 static void springs_values(const sw_force *fo, char *buf, size_t len)

@@ -87,8 +87,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
     const double *at = ym; /* where J is taken */
     swi_start(n, ym, y, theta, d, from_zero); /* ym = y + θ·d, d = 0 first with from_zero */
     sw_ode_eval(ode, te, ym, g);
-    swi_minus_g(n, g, h, d); /* g = h·g - d: -G */
-    double gnorm = swi_norm2(n, g);
+    double gnorm = swi_minus_g(n, g, h, d); /* g = h·g - d: -G, and |g|₂ */
     for (int iter = 0; iter < max_iter; iter++) {
         if (!isfinite(gnorm)) {
             s->why = "Newton's method met a non-finite residual";
@@ -117,7 +116,7 @@ static int newton(sw_stepper *s, sw_ode *ode, double t, const double *y, double 
         /* a kept J's full correction that leaves the iterate settled needs
          * no evaluation after it */
         if (yj && !fresh && lambda == 1.0 && swi_newton_settled(swi_norm_inf(n, delta), size, last_step)) {
-            swi_advance(n, d, 1.0, delta, y, &size);
+            swi_take(n, d, delta); /* d = d + 1·δ, swi_advance's operations; its norms unread */
             return 0;
         }
         /* Backtrack until |G| drops (Armijo, halving λ), starting from four

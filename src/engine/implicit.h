@@ -30,16 +30,14 @@ int swi_newton_continuation(sw_stepper *s, sw_ode *ode, double t, const double *
  * Δ within the kept J's tolerance by swi_newton_next's rule: then the
  * correction is taken without evaluating G after it (both forms). */
 int swi_newton_settled(double step, double size, double last_step);
-/* |v|₂: the sum of squares in four partial sums (component i into sum
- * i mod 4, the tail into sum 0), added (s0 + s2) + (s1 + s3); where that
- * sum would overflow or lose digits, swi_norm2_scaled. */
-double swi_norm2(int n, const double *v);
 /* |v|∞, NaN when any component is. */
 double swi_norm_inf(int n, const double *v);
 /* |v|₂ scaled by the largest component (one serial sum of (v_i/m)²). */
 double swi_norm2_scaled(int n, const double *v);
-/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate); returns |g|₂
- * as swi_norm2 takes it. */
+/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate); returns |g|₂:
+ * the sum of squares in four partial sums (component i into sum i mod 4,
+ * the tail into sum 0), added (s0 + s2) + (s1 + s3); where that sum would
+ * overflow or lose digits, swi_norm2_scaled. */
 double swi_residual(int n, double *g, double h, const double *d, double lambda, const double *delta);
 /* d += λ·δ; returns |δ|∞ (NaN when any component is) and sets *size =
  * |y + d|∞ (NaN components skipped). */
@@ -47,12 +45,12 @@ double swi_advance(int n, double *d, double lambda, const double *delta, const d
 
 /* Newton's plain passes, in the loops' own order (AVX2 clones, the same
  * bits): ym = y + θ·(d + λ·δ), the iterate tried; with from_zero d = 0
- * first and ym = y + θ·d; g = h·g - d (-G); y = y + 1·d, the step taken
- * (sw_axpy's operations). */
+ * first and ym = y + θ·d; g = h·g - d (-G), returning |g|₂ as
+ * swi_residual takes it; y = y + 1·d, the step taken (sw_axpy's operations). */
 void swi_trial_point(int n, double *ym, const double *y, double theta, const double *d, double lambda,
                      const double *delta);
 void swi_start(int n, double *ym, const double *y, double theta, double *d, int from_zero);
-void swi_minus_g(int n, double *g, double h, const double *d);
+double swi_minus_g(int n, double *g, double h, const double *d);
 void swi_take(int n, double *y, const double *d);
 /* v = v·h (v[i] *= h). */
 void swi_scale(int n, double *v, double h);

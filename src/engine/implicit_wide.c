@@ -36,49 +36,47 @@ double swi_norm2_scaled(int n, const double *v)
     return m * sqrt(s);
 }
 
-static SW_CLONES double sum_squares(int n, const double *v)
-{
-    v4d sum = { 0, 0, 0, 0 };
-    int i = 0;
-    for (; i + 4 <= n; i += 4) {
-        v4d vi;
-        memcpy(&vi, v + i, sizeof vi);
-        sum += vi * vi;
-    }
-    double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
-    for (; i < n; i++)
-        s0 += v[i] * v[i];
-    return (s0 + s2) + (s1 + s3);
-}
-
 static double norm2_of(int n, const double *v, double sq)
 {
     return sq > 1e-280 && sq < 1e280 ? sqrt(sq) : swi_norm2_scaled(n, v);
 }
 
-double swi_norm2(int n, const double *v) { return norm2_of(n, v, sum_squares(n, v)); }
-
-/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate) and |g|₂ as
- * norm2 takes it, in one pass. */
-SW_CLONES double swi_residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+/* g = h·g - (d + λ·δ) (the residual -G at the trial iterate), or with no δ
+ * g = h·g - d, and |g|₂ as norm2 takes it, in one pass. */
+SW_INLINE double residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
 {
     v4d sum = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d gi, di, dl;
         memcpy(&gi, g + i, sizeof gi);
         memcpy(&di, d + i, sizeof di);
-        memcpy(&dl, delta + i, sizeof dl);
-        gi = h * gi - (di + lambda * dl);
+        if (delta) {
+            memcpy(&dl, delta + i, sizeof dl);
+            gi = h * gi - (di + lambda * dl);
+        } else {
+            gi = h * gi - di;
+        }
         memcpy(g + i, &gi, sizeof gi);
         sum += gi * gi;
     }
     double s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     for (; i < n; i++) {
-        g[i] = h * g[i] - (d[i] + lambda * delta[i]);
+        g[i] = delta ? h * g[i] - (d[i] + lambda * delta[i]) : h * g[i] - d[i];
         s0 += g[i] * g[i];
     }
     return norm2_of(n, g, (s0 + s2) + (s1 + s3));
+}
+
+SW_CLONES double swi_residual(int n, double *g, double h, const double *d, double lambda, const double *delta)
+{
+    return residual(n, g, h, d, lambda, delta);
+}
+
+SW_CLONES double swi_minus_g(int n, double *g, double h, const double *d)
+{
+    return residual(n, g, h, d, 0.0, NULL);
 }
 
 /* d += λ·δ; returns |δ|∞ (NaN when any component is, as sw_norm_inf) and
@@ -91,6 +89,7 @@ SW_CLONES double swi_advance(int n, double *d, double lambda, const double *delt
     v4d m4 = { 0, 0, 0, 0 }, s4 = { 0, 0, 0, 0 };
     v4i nan4 = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d dl, di, yi;
         memcpy(&dl, delta + i, sizeof dl);
@@ -131,6 +130,7 @@ SW_CLONES double swi_norm_inf(int n, const double *v)
     v4d m4 = { 0, 0, 0, 0 };
     v4i nan4 = { 0, 0, 0, 0 };
     int i = 0;
+#pragma GCC unroll 2
     for (; i + 4 <= n; i += 4) {
         v4d a;
         memcpy(&a, v + i, sizeof a);
@@ -154,6 +154,7 @@ SW_CLONES double swi_norm_inf(int n, const double *v)
 SW_CLONES void swi_trial_point(int n, double *restrict ym, const double *restrict y, double theta,
                                const double *restrict d, double lambda, const double *restrict delta)
 {
+#pragma GCC unroll 2
     for (int i = 0; i < n; i++)
         ym[i] = y[i] + theta * (d[i] + lambda * delta[i]);
 }
@@ -162,6 +163,7 @@ SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *r
                          int from_zero)
 {
     if (from_zero)
+#pragma GCC unroll 2
         for (int i = 0; i < n; i++) {
             d[i] = 0.0;
             ym[i] = y[i] + theta * d[i];
@@ -171,14 +173,9 @@ SW_CLONES SW_ONE_PASS void swi_start(int n, double *restrict ym, const double *r
             ym[i] = y[i] + theta * d[i];
 }
 
-SW_CLONES void swi_minus_g(int n, double *restrict g, double h, const double *restrict d)
-{
-    for (int i = 0; i < n; i++)
-        g[i] = h * g[i] - d[i];
-}
-
 SW_CLONES void swi_take(int n, double *restrict y, const double *restrict d)
 {
+#pragma GCC unroll 2
     for (int i = 0; i < n; i++)
         y[i] = y[i] + 1.0 * d[i];
 }

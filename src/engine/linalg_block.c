@@ -34,11 +34,9 @@ _Static_assert(SW_BSWAP < PER, "block factors' length");
 /* z = S^-1·t by S's factors f. */
 static inline v2d block_apply(const double *f, v2d t)
 {
+    if (f[SW_BSWAP] != 0)
+        t = (v2d){ t[1], t[0] };
     double t0 = t[0], t1 = t[1];
-    if (f[SW_BSWAP] != 0) {
-        t0 = t[1];
-        t1 = t[0];
-    }
     double x1 = (t1 - f[SW_BELL] * t0) * f[SW_BR22];
     return (v2d){ (t0 - f[SW_BU12] * x1) * f[SW_BR11], x1 };
 }
@@ -65,12 +63,13 @@ int sw_block_factor(const sw_band *b, double *f)
     return bad ? -1 : 0;
 }
 
-void sw_block_solve(const sw_band *b, const double *f, double *x)
+SW_CLONES void sw_block_solve(const sw_band *b, const double *f, double *x)
 {
     int nb = b->n / 2;
     if (nb == 0)
         return;
     v2d prev = load2(x);
+#pragma GCC unroll 2
     for (int i = 1; i < nb; i++) { /* y_i = x_i - W_i·y_(i-1) */
         const double *fi = f + PER * i;
         prev = load2(x + 2 * i) - (load2(fi + SW_BW0) * prev[0] + load2(fi + SW_BW1) * prev[1]);
@@ -80,6 +79,7 @@ void sw_block_solve(const sw_band *b, const double *f, double *x)
     const double *e = b->a + b->kl + b->ku + (size_t)ROW * (size_t)(nb - 1);
     v2d next = block_apply(f + PER * (nb - 1), prev);
     store2(x + 2 * (nb - 1), next);
+#pragma GCC unroll 2
     for (int i = nb - 2; i >= 0; i--) {
         e -= ROW;
         v2d yi = load2(x + 2 * i) - (load2(e + NEXT) * next[0] + load2(e + NEXT + COL1) * next[1]);

@@ -75,16 +75,12 @@ SW_INLINE int sw_block_row(double *f, const double *prev, v2d s0, v2d s1, v2d l0
     /* S finite (its squared norm is): then so are its factors, |l| <= 1 */
     bad |= !(sw_block_norm2(s0, s1) <= DBL_MAX);
     /* S's LU with the larger of its first column's entries as pivot */
-    double a = s0[0], c = s0[1], bb = s1[0], d = s1[1];
-    int swap = fabs(c) > fabs(a);
-    if (swap) {
-        double t = a;
-        a = c;
-        c = t;
-        t = bb;
-        bb = d;
-        d = t;
+    int swap = fabs(s0[1]) > fabs(s0[0]);
+    if (swap) { /* the rows exchanged */
+        s0 = (v2d){ s0[1], s0[0] };
+        s1 = (v2d){ s1[1], s1[0] };
     }
+    double a = s0[0], c = s0[1], bb = s1[0], d = s1[1];
     double l = c / a, u22 = d - l * bb;
     bad |= !(fabs(u22) > SW_BLOCK_PIVOT_MIN * fabs(a)); /* false too where a = 0: l is NaN */
     store2(f + SW_BW0, w0);

@@ -244,8 +244,9 @@ void grade_zero_score(sw_score *s, const sw_homework *h, int plugin, const char 
 
 /* The grader's CPU budget for one submission's worker (its own work:
  * the reference, the comparison, the measurements, the explainer), from
- * the submission's --cpu; and the default wall-clock guard. */
-#define GRADE_WORKER_CPU(cpu) (4 * (cpu) + 30)
+ * the submission's --cpu, as its measuring runs' host gets it
+ * (plugin.h, via verdict.h); and the default wall-clock guard. */
+#define GRADE_WORKER_CPU(cpu) SW_GRADER_CPU(cpu)
 #define GRADE_WALL(cpu) (4 * (cpu) + 20)
 
 #endif

@@ -231,9 +231,10 @@ static void draw(const sw_homework *h, sw_varying *v)
         for (int i = 0; i < v->nlist && len > 0 && (size_t)len < sizeof msg; i++)
             len += snprintf(msg + len, sizeof msg - (size_t)len, "%.17g,", v->list[i]);
         if (v->nlist == 0 && len > 0 && (size_t)len < sizeof msg)
-            len += snprintf(msg + len, sizeof msg - (size_t)len, "%lld+%lld*1e-%d", v->lo, v->count, v->digits);
-        if (len > 0)
-            r = sw_siphash24(h->key, (const unsigned char *)msg, (size_t)len < sizeof msg ? (size_t)len : sizeof msg - 1);
+            len += snprintf(msg + len, sizeof msg - (size_t)len, "%lld+%lld*1e-%d", v->lo, v->count,
+                            v->digits);
+        size_t n = len < 0 ? 0 : (size_t)len < sizeof msg ? (size_t)len : sizeof msg - 1;
+        r = sw_siphash24(h->key, (const unsigned char *)msg, n);
     }
     if (v->nlist > 0)
         v->value = v->list[r % (uint64_t)v->nlist];

@@ -239,10 +239,14 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
         else
             sw_sandbox_reap(child, 2.0, &end);
         sw_sandbox_describe(&end, how, sizeof how);
-        if (rc == -2)
+        if (rc == -2 && slot->idle >= wall)
             snprintf(e->message, sizeof e->message, "grading waited %g s with nothing running (a submission "
                      "that blocks) and was stopped (the grader's guard, --wall; the submission's own work is "
-                     "held to --cpu)", slot->idle >= wall ? wall : WALL_CAP * wall);
+                     "held to --cpu)", wall);
+        else if (rc == -2)
+            snprintf(e->message, sizeof e->message, "grading went on for %g s of wall time, %d times --wall, and "
+                     "was stopped (the grader's guard, --wall; the submission's own work is held to --cpu)",
+                     WALL_CAP * wall, WALL_CAP);
         else if (rc == -1)
             snprintf(e->message, sizeof e->message, "interrupted");
         else if (rc == -3)

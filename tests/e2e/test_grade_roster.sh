@@ -199,6 +199,15 @@ cp ref.trace wall/t.trace
 "$SW" grade --assignment assignment.txt --wall 3 --plugin-timeout 60 -j 2 wall > wall.out 2>&1
 [ "$(grep -c 'waited 3 s with nothing running' wall.out)" -eq 2 ] || fail "--wall with -j 2: $(cat wall.out)"
 grep -q "t.trace .*pass" wall.out || fail "the trace beside them: $(cat wall.out)"
+# A submission that keeps running (a loop the 60 s watchdog and --cpu 60
+# would stop only later) meets --wall's hard cap, 20 x --wall of wall
+# time, and is told that, not that it waited with nothing running.
+mkdir capped
+sed -e "s/student-euler/capped/" -e 's/^{$/{ for (volatile long spin = 0; ; spin++) ;/' \
+    "$ROOT/examples/euler_plugin.c" > capped/p.c
+"$SW" grade --assignment assignment.txt --wall 0.2 --cpu 60 --plugin-timeout 60 capped > capped.out 2>&1
+grep -q "grading went on for 4 s of wall time, 20 times --wall, and was stopped" capped.out ||
+    fail "--wall's hard cap: $(cat capped.out)"
 
 # Interrupted while plugins spin in their jails with -j 2: nothing of the
 # grading outlives it (the jail re-arms its parent-death signal after the

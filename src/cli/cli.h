@@ -28,6 +28,8 @@ enum { SW_EXIT_OK = 0, SW_EXIT_FAIL = 1, SW_EXIT_USAGE = 2 };
 int sw_cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* The same for a line that is not an error (a notice, a report's verdict). */
 void sw_cli_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* The warning for a homework that keeps the examples' '# secret:' words. */
+void sw_cli_warn_public_secret(const char *assignment);
 
 /* Settings shared by record, play, check and the lab: what to run and how. */
 typedef struct sw_run_opts {

@@ -43,6 +43,13 @@ void sw_cli_note(const char *fmt, ...)
     va_end(ap);
 }
 
+void sw_cli_warn_public_secret(const char *assignment)
+{
+    sw_cli_note("warning: %s: its '# secret:' is the examples' words, which anyone can read: every "
+                "student's values can be drawn from them (write words of your own, and hand the sheets out "
+                "again)", assignment);
+}
+
 int sw_cli_flush_stdout(void)
 {
     errno = 0;

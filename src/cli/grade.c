@@ -592,6 +592,8 @@ static int grade_command(int argc, char **argv, char **wargv)
     if (rc == SW_EXIT_OK && (sw_homework_read(&hw, o.assignment, NULL, err, sizeof err) != SW_OK ||
                              stat(o.assignment, &asg_st) != 0))
         rc = sw_cli_error("%s", err);
+    if (rc == SW_EXIT_OK && !w.path && hw.secret_public && hw.nvarying > 0)
+        sw_cli_warn_public_secret(o.assignment);
     if (w.path) {
         free(o.files);
         if (rc != SW_EXIT_OK)

@@ -76,6 +76,8 @@ int sw_cmd_handout(int argc, char **argv)
         sw_homework_free(&h);
         return sw_cli_error("handout: %s", err);
     }
+    if (h.secret_public && h.nvarying > 0)
+        sw_cli_warn_public_secret(assignment);
     sw_homework_free(&h);
     sw_roster r;
     if (sw_roster_read(roster_path, &r, err, sizeof err) != SW_OK)

@@ -339,6 +339,7 @@ static int sort_lines(sw_homework *h, sw_visibility *shared_vis, char *err, size
             k0[0] ^= 1;
             h->key[1] = sw_siphash24(k0, (const unsigned char *)value, strlen(value));
             h->secret_set = 1;
+            h->secret_public = strcmp(value, SW_EXAMPLE_SECRET) == 0;
         } else if (strcmp(key, "count") == 0) {
             if (strcmp(value, "best") != 0 && strcmp(value, "latest") != 0)
                 return fail(h, line, err, errlen, "'count' is best or latest (which of a student's "

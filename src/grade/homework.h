@@ -67,6 +67,10 @@ typedef struct sw_varying {
     double value;                  /* this student's */
 } sw_varying;
 
+/* The words of the examples' '# secret:' line: public, so a homework that
+ * keeps them lets anyone draw every student's values (a warning). */
+#define SW_EXAMPLE_SECRET "replace these words with your own, and keep them from students"
+
 typedef struct sw_homework {
     char path[SW_TRACE_PATH_MAX];
     char title[128];
@@ -86,6 +90,7 @@ typedef struct sw_homework {
     char *line_text[SW_HOMEWORK_LINES];
     int line_part[SW_HOMEWORK_LINES];  /* -1 shared, else the part; -2 not metadata */
     unsigned char secret_set;
+    unsigned char secret_public;   /* it is the examples' words (SW_EXAMPLE_SECRET) */
     unsigned long long key[2];     /* from "# secret:" */
 } sw_homework;
 

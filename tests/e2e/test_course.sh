@@ -22,7 +22,13 @@ course="$ROOT/examples/course"
 cd "$WORK" || exit 1
 cp "$course/hw5-rk4.txt" "$course/hw4-traces.txt" "$course/roster.csv" .
 "$SW" handout --assignment hw4-traces.txt --roster roster.csv -o sheets4 > /dev/null 2>&1 || fail "handout hw4"
-"$SW" handout --assignment hw5-rk4.txt --roster roster.csv -o sheets5 > /dev/null 2>&1 || fail "handout hw5"
+"$SW" handout --assignment hw5-rk4.txt --roster roster.csv -o sheets5 > /dev/null 2> warn5 || fail "handout hw5"
+# the examples' secret is public: handing out (and grading) with it is warned of, once
+[ "$(grep -c "warning: hw5-rk4.txt: its '# secret:' is the examples' words" warn5)" -eq 1 ] ||
+    fail "no warning of the examples' secret: $(cat warn5)"
+sed 's/^# secret: .*/# secret: a teacher'"'"'s own words/' hw5-rk4.txt > own.txt
+"$SW" handout --assignment own.txt --roster roster.csv -o sheets-own > /dev/null 2> warn-own || fail "handout own"
+grep -q "warning" warn-own && fail "a secret of the teacher's own is warned of: $(cat warn-own)"
 [ "$(ls sheets4 | wc -l)" -eq 33 ] || fail "handout: not 32 sheets and an index: $(ls sheets4)"
 grep -q "lighthouse\|replace these words" sheets4/* sheets5/* && fail "a sheet holds the course secret"
 grep -q "gyre" sheets5/* && fail "a plugin homework's sheet shows its hidden part"

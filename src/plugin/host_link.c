@@ -129,11 +129,11 @@ int sw_host_read(sw_plugin_entry *e, void *buf, size_t len, double seconds)
     while (len > 0) {
         if (h->rpos == h->rlen) {
             host_watch w = { 0 };
+            double q = seconds < WATCH_QUANTUM ? seconds : WATCH_QUANTUM;
             long n;
-            do {
-                double q = seconds < WATCH_QUANTUM ? seconds : WATCH_QUANTUM;
+            do
                 n = sw_sandbox_read_some(h->child.from_child, h->rbuf, sizeof h->rbuf, q);
-            } while (n == -2 && watch_on(h, &w, seconds < WATCH_QUANTUM ? seconds : WATCH_QUANTUM, seconds));
+            while (n == -2 && watch_on(h, &w, q, seconds));
             if (n <= 0)
                 return (int)n;
             h->rpos = 0;

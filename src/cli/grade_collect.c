@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "plugin/plugin_headers.h"
 #include "util/escape.h"
 
 /* What a name says it is: 1 a trace, 2 a plugin, 0 neither. */
@@ -156,6 +157,19 @@ static int judge(const char *path, const char *name, const char *dir, const stru
         snprintf(why, len, "not graded: a hidden file (its name starts with a dot)");
         return 0;
     }
+    sw_headers hd;
+    char unused[SW_ERRLEN];
+    size_t nlen = strlen(name), plen = strlen(path);
+    if (!kind_of(name) && nlen > 2 && strcmp(name + nlen - 2, ".h") == 0 &&
+        sw_headers_find(path, 1, &hd, unused, sizeof unused) == 0 && hd.sources > 0) {
+        if (hd.sources == 1)
+            snprintf(why, len, "not graded on its own: a header, built with the .c beside it (a source and "
+                     "its headers are one submission)");
+        else
+            snprintf(why, len, "not a submission: a .h file, and not built with a .c either: its folder "
+                     "holds %d of them, and a folder's headers go with its one .c only", hd.sources);
+        return 0;
+    }
     if (!kind_of(name)) {
         const char *dot = strrchr(name, '.');
         char ext[80];
@@ -170,7 +184,6 @@ static int judge(const char *path, const char *name, const char *dir, const stru
     }
     /* In a folder, x.so beside x.c is its build (an upload often holds
      * both, the .so built on another machine): the source is graded. */
-    size_t nlen = strlen(name), plen = strlen(path);
     if (dir && nlen > 3 && strcmp(name + nlen - 3, ".so") == 0 && plen < PATH_MAX) {
         char source[PATH_MAX + 1], shown[200];
         struct stat cs;

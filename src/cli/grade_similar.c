@@ -14,6 +14,7 @@
 
 #include "cli/cli.h"
 #include "grade/similar.h"
+#include "plugin/plugin_headers.h"
 #include "util/escape.h"
 #include "util/infile.h"
 
@@ -29,6 +30,32 @@ static char *read_bounded(const char *path, size_t max, size_t *len)
     if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && sw_infile_read(fd, max, &text, len) != 0)
         text = NULL;
     close(fd);
+    return text;
+}
+
+/* A source with the headers it was built with (plugin_headers.h), one
+ * text of at most max bytes: copied code in a header is copied code. */
+static char *read_source(const char *path, size_t max, size_t *len)
+{
+    char *text = read_bounded(path, max, len), err[SW_ERRLEN];
+    sw_headers hd;
+    if (!text || sw_headers_find(path, 1, &hd, err, sizeof err) != 0)
+        return text;
+    for (int i = 0; i < hd.n && *len < max; i++) {
+        int fd = sw_headers_open(&hd, i);
+        char *more = NULL, *all;
+        size_t n = 0;
+        if (fd >= 0 && sw_infile_read(fd, max - *len, &more, &n) == 0 && (all = realloc(text, *len + n + 2))) {
+            text = all;
+            text[(*len)++] = '\n';
+            memcpy(text + *len, more, n);
+            *len += n;
+            text[*len] = '\0';
+        }
+        free(more);
+        if (fd >= 0)
+            close(fd);
+    }
     return text;
 }
 
@@ -80,7 +107,7 @@ int grade_similar_run(grade_list *l)
         int doc = -1;
         if (is_source(e)) {
             size_t len;
-            char *text = read_bounded(e->path, SW_SIMILAR_SOURCE_MAX, &len);
+            char *text = read_source(e->path, SW_SIMILAR_SOURCE_MAX, &len);
             if (text)
                 doc = sw_similar_add_source(&s, text, len, err, sizeof err);
             free(text);

@@ -296,7 +296,7 @@ int grade_worker(void *ctx, int in, int out)
         size_t len = strlen(path);
         if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
             snprintf(name, sizeof name, "s%d", job->index);
-            rc = sw_plugin_compile(path, job->build_dir, name, so, sizeof so, err, sizeof err);
+            rc = sw_plugin_compile(path, 1, job->build_dir, name, so, sizeof so, err, sizeof err);
             path = so;
         }
         /* a name or label the tool would refuse is no reason to fail a

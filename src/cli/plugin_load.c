@@ -33,7 +33,7 @@ static int sw_cli_build_plugin(const char *src, char *so, size_t solen)
     if (count == 64)
         return sw_cli_error("--plugin: at most 64 plugins are built per run");
     snprintf(name, sizeof name, "p%d", count++);
-    if (sw_plugin_compile(src, build_dir, name, so, solen, err, sizeof err) != SW_OK)
+    if (sw_plugin_compile(src, 0, build_dir, name, so, solen, err, sizeof err) != SW_OK)
         return sw_cli_error("%s", err);
     return SW_EXIT_OK;
 }

@@ -30,7 +30,7 @@ typedef struct sw_jail_file {
 /* The set-up step that copies the submission in: failing there with EFBIG
  * or ENOSPC, it is the submission that is too large, not the jail broken. */
 #define SW_JAIL_STEP_SUBMISSION "copying the submission into /work"
-#define SW_JAIL_FILES 4
+#define SW_JAIL_FILES 16
 
 typedef struct sw_jail {
     sw_jail_profile profile;

@@ -18,6 +18,7 @@
 
 #include "plugin/plugin.h"
 #include "plugin/plugin_box.h"
+#include "plugin/plugin_headers.h"
 #include "plugin/sandbox.h"
 #include "stepwise/base.h"
 #include "util/beside.h"
@@ -171,34 +172,38 @@ static int read_whole(const char *path, size_t max, char **buf, size_t *len)
 /* Without the jail (--no-sandbox): the compiler works in DIR/NAME.d, a
  * private directory holding a copy of the source; its files are read back
  * and the directory removed. */
-static int plain_work(const char *dir, const char *name, int src_fd, char *work, size_t len)
+static int plain_work(const char *dir, const char *name, const sw_jail *spec, char *work, size_t len)
 {
     if ((size_t)snprintf(work, len, "%s/%s.d", dir, name) >= len) {
         errno = ENAMETOOLONG;
         return -1;
     }
-    char path[PATH_MAX + 200], *text;
-    size_t text_len;
     if (mkdir(work, 0700) != 0)
         return -1;
-    if (!read_fd(src_fd, SW_JAIL_FILE_MAX, &text, &text_len))
-        return -1;
-    snprintf(path, sizeof path, "%s/plugin.c", work);
-    int rc = write_new(path, text, text_len);
-    free(text);
-    return rc;
+    for (int i = 0; i < spec->nin; i++) {
+        char path[PATH_MAX + 200], *text;
+        size_t text_len;
+        if (!read_fd(spec->in[i].fd, SW_JAIL_FILE_MAX, &text, &text_len))
+            return -1;
+        snprintf(path, sizeof path, "%s/%s", work, spec->in[i].name);
+        int rc = write_new(path, text, text_len);
+        free(text);
+        if (rc != 0)
+            return -1;
+    }
+    return 0;
 }
 
-static void plain_done(const char *work, char **out, size_t *out_len, char **log, size_t *log_len)
+static void plain_done(const char *work, const sw_jail *spec, char **out, size_t *out_len, char **log,
+                       size_t *log_len)
 {
-    static const char *const files[] = { "plugin.c", "plugin.so", "build.log" };
     char path[PATH_MAX + 200];
     snprintf(path, sizeof path, "%s/plugin.so", work);
     read_whole(path, SW_JAIL_FILE_MAX, out, out_len);
     snprintf(path, sizeof path, "%s/build.log", work);
     read_whole(path, (size_t)1 << 20, log, log_len);
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        snprintf(path, sizeof path, "%s/%s", work, files[i]);
+    for (int i = 0; i < spec->nin + spec->nout; i++) {
+        snprintf(path, sizeof path, "%s/%s", work, i < spec->nin ? spec->in[i].name : spec->out[i - spec->nin]);
         unlink(path);
     }
     rmdir(work);
@@ -259,36 +264,77 @@ static int grader_limit(const char *log, size_t out_len, const sw_child_end *end
     return 0;
 }
 
-int sw_plugin_compile(const char *src, const char *dir, const char *name, char *so, size_t solen, char *err,
-                      size_t errlen)
+/* The files handed to the compiler: the source as plugin.c, then its
+ * headers by their own names (plugin_headers.h); 0, or -1 with err. */
+static int open_inputs(const char *src, int shared, sw_jail *spec, sw_headers *hd, char *err, size_t errlen)
 {
-    char shown[200], msg[SW_ERRLEN], cc[PATH_MAX];
-    sw_escape(src, 120, shown, sizeof shown);
-    int src_fd = open(src, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st;
-    if (src_fd < 0 || fstat(src_fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "--plugin '%s': no such file (a plugin's source is a regular file)", shown);
-        if (src_fd >= 0)
-            close(src_fd);
-        return SW_EINVAL;
+    int fd = open(src, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "no such file (a plugin's source is a regular file)");
+        if (fd >= 0)
+            close(fd);
+        return -1;
     }
+    spec->in[spec->nin++] = (sw_jail_file){ .fd = fd, .name = "plugin.c" };
     if ((size_t)st.st_size > SW_JAIL_FILE_MAX) {
-        snprintf(err, errlen, "--plugin '%s': the source is %.0f MiB; a plugin's source may be at most %zu MiB",
-                 shown, (double)st.st_size / 1048576, SW_JAIL_FILE_MAX >> 20);
-        close(src_fd);
+        snprintf(err, errlen, "the source is %.0f MiB; a plugin's source may be at most %zu MiB",
+                 (double)st.st_size / 1048576, SW_JAIL_FILE_MAX >> 20);
+        return -1;
+    }
+    if (sw_headers_find(src, shared, hd, err, errlen) != 0)
+        return -1;
+    for (int i = 0; i < hd->n; i++) {
+        if ((fd = sw_headers_open(hd, i)) < 0) {
+            char one[120];
+            sw_escape(hd->name[i], 60, one, sizeof one);
+            snprintf(err, errlen, "its header '%s' cannot be read: %s", one, strerror(errno));
+            return -1;
+        }
+        spec->in[spec->nin++] = (sw_jail_file){ .fd = fd, .name = hd->name[i] };
+    }
+    return 0;
+}
+
+static void close_inputs(sw_jail *spec)
+{
+    for (int i = 0; i < spec->nin; i++)
+        close(spec->in[i].fd);
+    if (spec->include_fd >= 0)
+        close(spec->include_fd);
+}
+
+/* A missing header where the folder's headers were withheld: why, for the
+ * student and the teacher. */
+static void withheld_hint(const sw_headers *hd, const char *log, char *buf, size_t len)
+{
+    size_t n = strlen(buf);
+    if (hd->withheld && log && strstr(log, ".h: No such file or directory"))
+        snprintf(buf + n, len - n, " (its folder holds %d .c files, so the .h files beside it were not "
+                 "used: they go with a folder's one .c only; give each student a folder)", hd->sources);
+}
+
+int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
+                      char *err, size_t errlen)
+{
+    char shown[200], msg[SW_ERRLEN + 160], cc[PATH_MAX];
+    sw_escape(src, 120, shown, sizeof shown);
+    sw_jail spec = { .profile = SW_JAIL_COMPILE, .include_fd = -1, .out = { "plugin.so", "build.log" },
+                     .nout = 2, .disk_bytes = (size_t)64 << 20 };
+    sw_headers hd;
+    if (open_inputs(src, shared, &spec, &hd, msg, sizeof msg) != 0) {
+        close_inputs(&spec);
+        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EINVAL;
     }
     if (find_compiler(cc, sizeof cc, msg, sizeof msg) != 0) {
-        close(src_fd);
+        close_inputs(&spec);
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EIO;
     }
     char inc[PATH_MAX + 32];
     snprintf(inc, sizeof inc, "%.*s/stepwise", PATH_MAX, include_dir());
-    int inc_fd = open(inc, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    sw_jail spec = { .profile = SW_JAIL_COMPILE, .in = { { .fd = src_fd, .name = "plugin.c" } }, .nin = 1,
-                     .include_fd = inc_fd, .out = { "plugin.so", "build.log" }, .nout = 2,
-                     .disk_bytes = (size_t)64 << 20 };
+    spec.include_fd = open(inc, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     /* Under grade, the build is the submission's own work: it gets what
      * is left of --cpu (sw_plugin_limits), never more than a build's own
      * limit. */
@@ -308,19 +354,15 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     if (!sw_jail_enabled()) {
         job.work = work;
         job.inc = include_dir();
-        if (plain_work(dir, name, src_fd, work, sizeof work) != 0) {
-            close(src_fd);
-            if (inc_fd >= 0)
-                close(inc_fd);
+        if (plain_work(dir, name, &spec, work, sizeof work) != 0) {
+            close_inputs(&spec);
             snprintf(err, errlen, "--plugin '%s': cannot copy it to build it: %s", shown, strerror(errno));
             return SW_EIO;
         }
     }
     sw_child child;
     int rc = sw_sandbox_spawn_jailed(&child, run_compiler, &job, &lim, -1, &spec, msg, sizeof msg);
-    close(src_fd);
-    if (inc_fd >= 0)
-        close(inc_fd);
+    close_inputs(&spec);
     if (rc != SW_OK) {
         snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
         return SW_EIO;
@@ -342,7 +384,7 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
     }
     sw_sandbox_reap(&child, BUILD_SECONDS, &end);
     if (!sw_jail_enabled())
-        plain_done(work, &out, &out_len, &log, &log_len);
+        plain_done(work, &spec, &out, &out_len, &log, &log_len);
     struct rlimit fsize; /* the grader's --output holds for the built plugin too */
     int fits = getrlimit(RLIMIT_FSIZE, &fsize) != 0 || fsize.rlim_cur == RLIM_INFINITY ||
                (rlim_t)out_len < fsize.rlim_cur;
@@ -384,6 +426,7 @@ int sw_plugin_compile(const char *src, const char *dir, const char *name, char *
         return SW_EIO;
     }
     first_error(log, src, msg, sizeof msg);
+    withheld_hint(&hd, log, msg, sizeof msg);
     free(log);
     snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
     return SW_EINVAL;

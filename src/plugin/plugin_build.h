@@ -5,11 +5,13 @@
 
 #include <stddef.h>
 
-/* Compile src into dir/NAME.so (its messages in dir/NAME.log), the .so's
- * path into so: 0, or SW_EINVAL (it does not compile, or took too long) or
+/* Compile src, with the headers beside it (plugin_headers.h; shared: a
+ * grader's folder, whose headers go with src only where it is the one .c
+ * there), into dir/NAME.so (its messages in dir/NAME.log), the .so's path
+ * into so: 0, or SW_EINVAL (it does not compile, or took too long) or
  * SW_EIO (a limit of the grader's, no room) with err saying which, the
  * compiler's first error quoted. */
-int sw_plugin_compile(const char *src, const char *dir, const char *name, char *so, size_t solen, char *err,
-                      size_t errlen);
+int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
+                      char *err, size_t errlen);
 
 #endif

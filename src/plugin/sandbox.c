@@ -610,7 +610,7 @@ static const char *signal_words(int sig, const char **name)
     case SIGPIPE: *name = "SIGPIPE"; return "wrote to a closed pipe";
     case SIGTRAP: *name = "SIGTRAP"; return "trap: a breakpoint or a sanitizer";
     case SIGSYS: *name = "SIGSYS"; return "a system call the sandbox forbids: a plugin may only compute "
-                                          "(no files, processes or network)";
+                                          "(no files, processes, threads or network)";
     default: *name = "a signal"; return "killed by a signal";
     }
 }

@@ -1,0 +1,99 @@
+#!/bin/sh
+# A student's own headers: `#include "tableau.h"` beside the .c. The
+# headers in a source's folder are copied into the compiler's jail beside
+# it (plugin/plugin_headers.c), and listed as part of that submission. In
+# a folder that holds several students' .c files none go in (a classmate's
+# header is not yours to include), and the compile error says why. Copied
+# code in a header counts for --similarity. A link named x.h is never
+# followed; more than 12 headers are refused. `try` builds the same way.
+. "$(dirname "$0")/lib.sh"
+needs_jail
+sim="$ROOT/tests/data/similar"
+export STEPWISE_INCLUDE="$ROOT/include"
+mkdir -p class/ada class/bob class/carl flat many
+# ada: the weights in a header of her own
+cat > class/ada/tableau.h <<'H'
+/* RK4's weights and nodes */
+#define W_OUTER (1.0 / 6.0)
+#define W_INNER (2.0 / 6.0)
+#define C_MID 0.5
+H
+cat > class/ada/rk4.c <<'C'
+#include <stepwise/integrator.h>
+#include "tableau.h"
+
+static int step(sw_ode *ode, double t, double *y, double h, double *w)
+{
+    int n = ode->dim;
+    double *a = w, *b = w + n, *c = w + 2 * n, *d = w + 3 * n, *z = w + 4 * n;
+    sw_ode_eval(ode, t, y, a);
+    for (int i = 0; i < n; i++) z[i] = y[i] + C_MID * h * a[i];
+    sw_ode_eval(ode, t + C_MID * h, z, b);
+    for (int i = 0; i < n; i++) z[i] = y[i] + C_MID * h * b[i];
+    sw_ode_eval(ode, t + C_MID * h, z, c);
+    for (int i = 0; i < n; i++) z[i] = y[i] + h * c[i];
+    sw_ode_eval(ode, t + h, z, d);
+    for (int i = 0; i < n; i++) y[i] += h * (W_OUTER * (a[i] + d[i]) + W_INNER * (b[i] + c[i]));
+    return 0;
+}
+
+static const sw_plugin info = { .abi = SW_PLUGIN_ABI, .name = "ada-rk4", .order = 4, .evals = 4,
+                                .work_vectors = 5, .step = step };
+const sw_plugin *sw_plugin_info(void);
+const sw_plugin *sw_plugin_info(void) { return &info; }
+C
+# bob: Alice's whole method hidden in a header, his .c a single include
+cp "$sim/rk4_alice.c" class/bob/method.h
+printf '/* my RK4 */\n#include "method.h"\n' > class/bob/rk4.c
+cp "$sim/rk4_alice_copy.c" class/carl/rk4.c   # carl: the known copy's source, for a second pair
+cat > hw.txt <<'A'
+# stepwise assignment 1
+# kind: plugin
+# scene: chain
+# param n: 3
+# integrator: rk4
+# dt: 0.01
+# steps: 50
+# points x* y*: 2
+A
+printf 'Name,ID,Email\nAda Lovelace,1001,ada@uni.edu\nBob Brown,1002,bob@uni.edu\nCarl Gauss,1003,carl@uni.edu\n' > roster.csv
+"$SW" grade --assignment hw.txt --roster roster.csv --similarity class > g.out 2>&1
+[ $? -le 1 ] || fail "grade: $(cat g.out)"
+grep -Eq "^  Ada Lovelace +rk4.c +pass +2/2" g.out || fail "ada's header was not built with her source: $(cat g.out)"
+grep -Eq "^  Bob Brown +rk4.c +pass +2/2" g.out || fail "bob's header was not built with his source: $(cat g.out)"
+grep -Eq "tableau.h +skipped .*not graded on its own: a header, built with the .c beside it" g.out ||
+    fail "ada's header's row: $(cat g.out)"
+grep -E "Bob Brown \(rk4.c\)  ~  Carl Gauss \(rk4.c\)|Carl Gauss \(rk4.c\)  ~  Bob Brown \(rk4.c\)" g.out >/dev/null ||
+    fail "the code copied into bob's header is not paired with carl's: $(cat g.out)"
+
+# one folder for everyone: no header goes with any source, and ada is told why
+cp class/ada/rk4.c flat/ada_rk4.c
+cp class/ada/tableau.h flat/
+cp "$sim/rk4_bob.c" flat/bob_rk4.c
+"$SW" grade --assignment hw.txt --roster roster.csv flat > f.out 2>&1
+[ $? -le 1 ] || fail "grade flat: $(cat f.out)"
+grep -Eq "^  Ada Lovelace +ada_rk4.c +error .*tableau.h: No such file or directory \(its folder holds 2 .c files, so the .h files beside it were not used" f.out ||
+    fail "ada's error in a shared folder: $(cat f.out)"
+grep -Eq "^  Bob Brown +bob_rk4.c +pass" f.out || fail "bob in the shared folder: $(cat f.out)"
+grep -Eq "tableau.h +skipped .*its folder holds 2 of them" f.out || fail "the shared header's row: $(cat f.out)"
+
+# a link named .h is not a header: never followed into the jail
+mkdir -p linked
+echo '#define W_OUTER (1.0 / 6.0)' > outside.h
+ln -s ../outside.h linked/tableau.h
+cp class/ada/rk4.c linked/rk4.c
+"$SW" grade --assignment hw.txt linked > l.out 2>&1
+grep -Eq "rk4.c +error .*tableau.h: No such file or directory" l.out || fail "a linked header was used: $(cat l.out)"
+
+# more than 12 headers: refused, saying so
+cp class/ada/rk4.c class/ada/tableau.h many/
+for i in 1 2 3 4 5 6 7 8 9 10 11 12; do echo "/* $i */" > many/h$i.h; done
+"$SW" grade --assignment hw.txt many > m.out 2>&1
+grep -q "its folder holds 13 headers (.h files); a plugin is built with at most 12" m.out ||
+    fail "13 headers: $(cat m.out)"
+
+# try, in the student's own folder with other sources: the headers go in
+cp "$sim/rk4_bob.c" class/ada/scratch.c
+"$SW" try class/ada/rk4.c --no-play > t.out 2>&1 || fail "try with a header: $(cat t.out)"
+grep -q "PASS" t.out || fail "try with a header did not pass: $(cat t.out)"
+exit 0

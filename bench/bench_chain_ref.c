@@ -10,6 +10,7 @@
  * two agree: the difference over 15 estimates the finer run's error
  * (Richardson, order 4), and the ratio of successive differences, 16 in
  * the asymptotic range, is checked before it is believed. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,11 +80,18 @@ static void rk4(const chain *ch, const double *y0, real T, long steps, real *y, 
     }
 }
 
+/* The largest |a_i - b_i|; infinite where a difference is not finite (a
+ * run blown up at too few steps: fmaxl alone would pass over its NaNs, and
+ * two runs all NaN would "agree" to 0). */
 static real max_diff(int dim, const real *a, const real *b)
 {
     real d = 0;
-    for (int i = 0; i < dim; i++)
-        d = fmaxl(d, fabsl(a[i] - b[i]));
+    for (int i = 0; i < dim; i++) {
+        real x = fabsl(a[i] - b[i]);
+        if (!(x <= LDBL_MAX))
+            return INFINITY;
+        d = fmaxl(d, x);
+    }
     return d;
 }
 

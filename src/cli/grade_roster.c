@@ -109,14 +109,24 @@ int grade_roster_missing(grade_list *l)
     grade_roster_assign(l);
     const sw_roster *r = l->roster;
     unsigned char *seen = calloc((size_t)r->n, 1);
-    if (!seen)
+    int *skipped = calloc((size_t)r->n + 1, sizeof *skipped);
+    if (!seen || !skipped) {
+        free(seen);
+        free(skipped);
         return sw_cli_error("grade: out of memory");
-    /* Every member of a group submission has submitted. */
+    }
+    /* Every member of a group submission has submitted. A student whose
+     * files were all left out (a README, a link, a .pdf) has not: their
+     * row is a missing one, saying so, and counts in the gradebook. */
     for (int i = 0; i < l->n + l->ignored; i++) {
         const grade_entry *e = i < l->n ? &l->items[i] : &l->refused[i - l->n];
         int members[SW_ROSTER_GROUP_MAX];
         if (e->who < 0 || !e->rel)
             continue;
+        if (i >= l->n) {
+            skipped[e->who] += e->status == GRADE_SKIPPED;
+            continue;
+        }
         int k = sw_roster_match_all(r, e->rel, members, SW_ROSTER_GROUP_MAX, NULL, 0);
         for (int j = 0; j < k; j++)
             seen[members[j]] = 1;
@@ -151,11 +161,17 @@ int grade_roster_missing(grade_list *l)
         snprintf(e->owner, sizeof e->owner, "%s", r->students[s].name);
         snprintf(e->owner_id, sizeof e->owner_id, "%s",
                  r->students[s].nids ? r->students[s].ids[0] : "");
-        snprintf(e->kind, sizeof e->kind, "missing");
-        snprintf(e->message, sizeof e->message, "no submission matched this student (roster "
-                 "line %ld)", r->students[s].line);
+        snprintf(e->kind, sizeof e->kind, "%s", skipped[s] ? "left-out" : "missing");
+        if (skipped[s])
+            snprintf(e->message, sizeof e->message, "no gradable submission: the %d entr%s matched to this "
+                     "student (roster line %ld) %s not graded, each row says why", skipped[s],
+                     skipped[s] == 1 ? "y" : "ies", r->students[s].line, skipped[s] == 1 ? "was" : "were");
+        else
+            snprintf(e->message, sizeof e->message, "no submission matched this student (roster "
+                     "line %ld)", r->students[s].line);
     }
     free(seen);
+    free(skipped);
     return rc;
 }
 

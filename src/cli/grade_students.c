@@ -119,7 +119,9 @@ static void row_message(const grade_list *l, const student_row *r, const grade_c
     const sw_homework *h = l->hw;
     out[0] = '\0';
     if (r->n == 0) {
-        snprintf(out, outlen, "no submission");
+        /* a missing row: files may have come that were all left out (grade_roster.c) */
+        int left_out = r->any && r->any->status == GRADE_MISSING && strcmp(r->any->kind, "left-out") == 0;
+        snprintf(out, outlen, "%s", left_out ? "no gradable submission (the files sent were not graded)" : "no submission");
         return;
     }
     if (c->status == GRADE_MISSING) {

@@ -156,7 +156,11 @@ typedef struct grade_counted {
     int entry[SW_PARTS_MAX];
     double score, max;                   /* the sum over parts; max the homework's */
     int status;                          /* pass when every part's counted entry passed */
+    int close_times;                     /* count: latest, and a file that scored otherwise was
+                                          * modified within GRADE_CLOSE_SECONDS of the counted
+                                          * one: which is later is a guess (copied files) */
 } grade_counted;
+#define GRADE_CLOSE_SECONDS 2
 void grade_count(const grade_list *l, const int *entries, int n, grade_counted *out);
 /* --gradebook and --lms (grade_students.c): one row per student. */
 int grade_students_write(const grade_list *l, const char *gradebook, const char *lms);

@@ -30,6 +30,26 @@ static int better(const grade_entry *a, double sa, int ia, const grade_entry *b,
     return ia > ib;
 }
 
+/* count: latest: whether a file that competed with the counted one w (the
+ * same kind, and for a trace the same part) and scored otherwise was
+ * modified so close to it that which came later is not to be believed. */
+static int close_times(const grade_list *l, const int *entries, int n, int w, int p)
+{
+    const grade_entry *win = &l->items[w];
+    for (int k = 0; k < n; k++) {
+        const grade_entry *e = &l->items[entries[k]];
+        long long dt = e->mtime - win->mtime;
+        if (entries[k] == w || e->plugin != win->plugin || e->status == GRADE_SKIPPED ||
+            e->status == GRADE_MISSING || (!e->plugin && e->part != win->part))
+            continue;
+        double se = e->plugin ? e->score.score : part_score(e, p), sw = win->plugin ? win->score.score
+                                                                                  : part_score(win, p);
+        if (se != sw && dt <= GRADE_CLOSE_SECONDS && dt >= -GRADE_CLOSE_SECONDS)
+            return 1;
+    }
+    return 0;
+}
+
 void grade_count(const grade_list *l, const int *entries, int n, grade_counted *out)
 {
     const sw_homework *h = l->hw;
@@ -78,6 +98,7 @@ void grade_count(const grade_list *l, const int *entries, int n, grade_counted *
             out->entry[p] = plugin;
         out->score = l->items[plugin].score.score;
         out->status = l->items[plugin].status;
+        out->close_times = h->rule == SW_COUNT_LATEST && close_times(l, entries, n, plugin, 0);
         return;
     }
     if (!any_trace)
@@ -85,6 +106,8 @@ void grade_count(const grade_list *l, const int *entries, int n, grade_counted *
     out->status = SW_VERDICT_PASS;
     for (int p = 0; p < h->nparts; p++) {
         out->entry[p] = traces[p];
+        if (traces[p] >= 0 && h->rule == SW_COUNT_LATEST && close_times(l, entries, n, traces[p], p))
+            out->close_times = 1;
         int st = traces[p] >= 0 ? l->items[traces[p]].status : SW_VERDICT_FAIL;
         if (out->status == SW_VERDICT_PASS && st != SW_VERDICT_PASS)
             out->status = st;

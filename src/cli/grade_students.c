@@ -220,10 +220,17 @@ static int write_one(const grade_list *l, const char *path, int lms, student_row
         file_list(l, r, &c, 1, counted, sizeof counted);
         file_list(l, r, &c, 0, also, sizeof also);
         row_message(l, r, &c, message, sizeof message);
+        char remarks[sizeof r->any->remarks + 240];
+        snprintf(remarks, sizeof remarks, "%s", r->any ? r->any->remarks : "");
+        if (c.close_times)
+            snprintf(remarks + strlen(remarks), sizeof remarks - strlen(remarks),
+                     "%scount: latest: files that scored otherwise were modified within %d s of the "
+                     "counted one, so which is latest is a guess (files copied without their times?): "
+                     "read the 'also' column", remarks[0] ? "; " : "", GRADE_CLOSE_SECONDS);
         const char *cells[] = { r->name, id, email, score, max,
                                 grade_verdict_word(r->n == 0 ? GRADE_MISSING
                                                    : c.status == GRADE_MISSING ? SW_VERDICT_FAIL : c.status),
-                                counted, also, message, r->any ? r->any->remarks : "" };
+                                counted, also, message, remarks };
         put_row(f, cells, BOOK_NCOLS);
     }
     /* Rows of students neither on the roster nor in this run: kept, last. */

@@ -151,9 +151,12 @@ static void box_fault_now(step_box *b)
         box_fail(b, SW_PF_EXIT, why, "(a step must return, never exit)");
     } else if (end->signal == SIGXCPU) {
         /* printing is the usual cause nobody suspects: say so */
-        if (b->pending_printed >= SW_PRINTED_MUCH)
-            snprintf(why, sizeof why, "%s after printing %.3g MiB to stdout and stderr (printing costs CPU "
-                     "time: take the printf out of the step)", how, (double)b->pending_printed / 1048576);
+        if (b->pending_printed >= SW_PRINTED_MUCH) {
+            double mib = (double)b->pending_printed / 1048576;
+            snprintf(why, sizeof why, "%s after printing %.3g %s to stdout and stderr (printing costs CPU "
+                     "time: take the printf out of the step)", how, mib < 1024 ? mib : mib / 1024,
+                     mib < 1024 ? "MiB" : "GiB");
+        }
         else
             snprintf(why, sizeof why, "%s", how);
         box_fail(b, SW_PF_LIMIT, why, b->entry->host.graders

@@ -37,7 +37,7 @@ C
 done
 "$SW" grade --assignment hw.txt --cpu 1 --plugin-timeout 120 --wall 240 --feedback fb class > out 2>&1
 [ $? -eq 1 ] || fail "grade: $(cat out)"
-grep -q "^  chatty .*limit .*ran out of its CPU time (SIGXCPU) after printing [0-9.]* MiB to stdout and stderr (printing costs CPU time" out \
+grep -q "^  chatty .*limit .*ran out of its CPU time (SIGXCPU) after printing [0-9.]* [MG]iB to stdout and stderr (printing costs CPU time" out \
     || fail "the printing plugin is not told it printed: $(cat out)"
 grep -q "after printing" fb/chatty.txt || fail "the feedback does not say it: $(cat fb/chatty.txt)"
 grep -q "^  quiet .*limit .*ran out of its CPU time (SIGXCPU) at step" out || fail "the quiet one: $(cat out)"

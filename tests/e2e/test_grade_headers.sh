@@ -6,6 +6,7 @@
 # header is not yours to include), and the compile error says why. Copied
 # code in a header counts for --similarity. A link named x.h is never
 # followed; more than 12 headers are refused. `try` builds the same way.
+# A row's compile error names the file, not the --plugin flag (QA).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 sim="$ROOT/tests/data/similar"
@@ -75,6 +76,10 @@ cp "$sim/rk4_bob.c" flat/bob_rk4.c
 grep -Eq "^  Ada Lovelace +ada_rk4.c +error .*tableau.h: No such file or directory \(its folder holds 2 .c files, so the .h files beside it were not used" f.out ||
     fail "ada's error in a shared folder: $(cat f.out)"
 grep -Eq "^  Bob Brown +bob_rk4.c +pass" f.out || fail "bob in the shared folder: $(cat f.out)"
+# the row names the file, not a command-line flag the student never typed
+grep -q "error .*--plugin" f.out && fail "the row names --plugin: $(cat f.out)"
+grep -Eq "^  Ada Lovelace +ada_rk4.c +error +0/2 +- +'flat/ada_rk4.c' does not compile" f.out ||
+    fail "ada's row does not start with her file: $(cat f.out)"
 grep -Eq "tableau.h +skipped .*its folder holds 2 of them" f.out || fail "the shared header's row: $(cat f.out)"
 
 # a link named .h is not a header: never followed into the jail

@@ -114,7 +114,8 @@ START_TEST(until_is_steps)
     ck_assert_int_eq(sw_assignment_diff(&a, &m, &sys, d, 4, &comparable), 0);
     m.spec.until = 2.01; /* 201 steps' worth: another run */
     ck_assert_int_eq(sw_assignment_diff(&a, &m, &sys, d, 4, &comparable), 1);
-    ck_assert_str_eq(d[0].what, "until");
+    ck_assert_str_eq(d[0].what, "run length");
+    ck_assert_str_eq(d[0].got, "until 2.01");
     sw_system_free(&sys);
     unlink(path);
 }

@@ -371,7 +371,7 @@ int sw_assignment_diff(const sw_assignment *a, const sw_trace_meta *m, const sw_
         char g[60], wt[60];
         run_length(&m->spec, g, sizeof g);
         run_length(&w->spec, wt, sizeof wt);
-        add_diff(out, max, &n, m->spec.steps > 0 ? "steps" : "until", g, wt, m->steps_line);
+        add_diff(out, max, &n, "run length", g, wt, m->steps_line); /* "steps 200" or "until 2" each */
     }
     if (m->spec.every != w->spec.every)
         add_num(out, max, &n, "every", (double)m->spec.every, (double)w->spec.every, m->every_line);

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -20,18 +21,21 @@
 #include "plugin/plugin_headers.h"
 #include "util/escape.h"
 
-/* What a name says it is: 1 a trace, 2 a plugin, 0 neither. */
+/* What a name says it is: 1 a trace (.trace, .csv in any case: a
+ * spreadsheet's or another system's RING.CSV is one), 2 a plugin (.so,
+ * .c: lower case, as the compiler reads them), -2 a plugin's extension in
+ * another case (.C is C++ to a compiler), 0 neither. */
 static int kind_of(const char *name)
 {
     size_t len = strlen(name);
     static const char *const traces[] = { ".trace", ".csv" }, *const plugins[] = { ".so", ".c" };
     for (int i = 0; i < 2; i++) {
         size_t n = strlen(traces[i]);
-        if (len > n && strcmp(name + len - n, traces[i]) == 0)
+        if (len > n && strcasecmp(name + len - n, traces[i]) == 0)
             return 1;
         n = strlen(plugins[i]);
-        if (len > n && strcmp(name + len - n, plugins[i]) == 0)
-            return 2;
+        if (len > n && strcasecmp(name + len - n, plugins[i]) == 0)
+            return strcmp(name + len - n, plugins[i]) == 0 ? 2 : -2;
     }
     return 0;
 }
@@ -160,7 +164,7 @@ static int judge(const char *path, const char *name, const char *dir, const stru
     sw_headers hd;
     char unused[SW_ERRLEN];
     size_t nlen = strlen(name), plen = strlen(path);
-    if (!kind_of(name) && nlen > 2 && strcmp(name + nlen - 2, ".h") == 0 &&
+    if (kind_of(name) == 0 && nlen > 2 && strcmp(name + nlen - 2, ".h") == 0 &&
         sw_headers_find(path, 1, &hd, unused, sizeof unused) == 0 && hd.sources > 0) {
         if (hd.sources == 1)
             snprintf(why, len, "not graded on its own: a header, built with the .c beside it (a source and "
@@ -170,10 +174,13 @@ static int judge(const char *path, const char *name, const char *dir, const stru
                      "holds %d of them, and a folder's headers go with its one .c only", hd.sources);
         return 0;
     }
-    if (!kind_of(name)) {
+    if (kind_of(name) <= 0) {
         const char *dot = strrchr(name, '.');
         char ext[80];
-        if (dot && dot != name) {
+        if (kind_of(name) < 0) {
+            sw_escape(dot, 24, ext, sizeof ext);
+            snprintf(why, len, "not graded: a %s file; a plugin ends in lower-case .c or .so (rename it)", ext);
+        } else if (dot && dot != name) {
             sw_escape(dot, 24, ext, sizeof ext);
             snprintf(why, len, "not a submission: a %s file; traces end in .trace or .csv, plugins "
                      "in .so or .c", ext);

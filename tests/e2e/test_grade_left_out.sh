@@ -3,7 +3,8 @@
 # a FIFO) has not submitted: a `missing` row saying their files were left
 # out, a 0 row in --gradebook and --lms, and a count in the summary. Before,
 # the skipped rows made them "seen", and they had no gradebook row at all,
-# so an LMS import left them without a grade (QA, 2026-12-07).
+# so an LMS import left them without a grade (QA, 2026-12-07). And a
+# trace named in capitals (.CSV) is graded.
 . "$(dirname "$0")/lib.sh"
 cat > a.txt <<'A'
 # stepwise assignment 1
@@ -32,4 +33,13 @@ tr -d '\r' < lms.csv > lms.txt   # the LMS file's lines end in CRLF
 grep -q '^Bo Chen,2,bo@x.org,0,2$' lms.txt || fail "Bo's LMS row: $(cat lms.csv)"
 grep -q '^Cy Dee,3,cy@x.org,0,2$' lms.txt || fail "Cy's LMS row: $(cat lms.csv)"
 grep -q '^Ann Lee,1,ann@x.org,2,2$' lms.txt || fail "Ann's LMS row: $(cat lms.csv)"
+# A trace's extension in capitals is a trace (a spreadsheet's SWING.CSV);
+# a plugin's is not what the compiler reads: skipped, saying to rename it.
+mkdir -p caps
+"$SW" record spring -i euler --dt 0.02 --steps 10 -o caps/ann_SWING.CSV >/dev/null 2>&1 || fail "record"
+cp "$ROOT/examples/euler_plugin.c" caps/bo_rk4.C
+"$SW" grade --assignment a.txt caps > c.out 2>&1
+grep -Eq "ann_SWING.CSV +pass" c.out || fail "a .CSV trace was not graded: $(cat c.out)"
+grep -Eq "bo_rk4.C +skipped .*not graded: a .C file; a plugin ends in lower-case .c or .so \(rename it\)" c.out ||
+    fail "a .C source: $(cat c.out)"
 exit 0

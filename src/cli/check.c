@@ -93,6 +93,20 @@ static int failed_helper(const check_args *a, const char *what)
     return SW_EXIT_USAGE;
 }
 
+/* The points a part's checks lost, as the grader's feedback gives them: a
+ * PASS alone does not say that the order or the stability point was
+ * missed. Nothing where every point was earned. */
+static void print_lost_points(const sw_score *s)
+{
+    if (s->n == 0 || !(s->score < s->max))
+        return;
+    printf("  points: %g of %g, as the grader would give them:\n", s->score, s->max);
+    for (int k = 0; k < s->n; k++)
+        if (s->checks[k].score < s->checks[k].max)
+            printf("    %s: %g of %g: %s\n", s->checks[k].name, s->checks[k].score, s->checks[k].max,
+                   s->checks[k].output);
+}
+
 static int plugin_form(check_args *a)
 {
     sw_check_request *req = &a->req;
@@ -320,6 +334,8 @@ int sw_cmd_check(int argc, char **argv)
             fputs(shown ? ",\n" : hw.nparts > 1 ? "[\n" : "", stdout);
         sw_check_run(&a.req, &v);
         int one = sw_check_print(&v, a.json);
+        if (a.assignment && !a.json && v.status != SW_VERDICT_ERROR)
+            print_lost_points(&v.score);
         if (one > rc)
             rc = one;
         shown++;

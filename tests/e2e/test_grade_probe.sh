@@ -113,4 +113,10 @@ for c in mid honest_rk4; do
     grep -q "order: 0 of 1: order not measured: on this run midpoint (order 2) ends within the tolerance of rk4 too" \
         fbm/$c.txt || fail "$c, no drag: $(grep 'order:' fbm/$c.txt)"
 done
+# `check` against the same homework says so too: a PASS with the points
+# the grader would take off (QA: a PASS and exit 0 hid a lost point)
+"$SW" check --plugin classm/honest_rk4.c --assignment hw-proj0.txt > check0.out 2>&1
+grep -q "^PASS" check0.out && grep -q "^  points: 7 of 9, as the grader would give them:" check0.out &&
+    grep -q "^    order: 0 of 1: order not measured: on this run midpoint (order 2) ends within the tolerance" check0.out ||
+    fail "check does not show the lost order point: $(cat check0.out)"
 echo "ok: no order point for a plugin that tells the measuring runs apart"

@@ -240,8 +240,8 @@ static void grade_finish_one(grade_slot *slot, grade_entry *e, double wall)
             sw_sandbox_reap(child, 2.0, &end);
         sw_sandbox_describe(&end, how, sizeof how);
         if (rc == -2 && slot->idle >= wall)
-            snprintf(e->message, sizeof e->message, "grading waited %g s with nothing running (a submission "
-                     "that blocks) and was stopped (the grader's guard, --wall; the submission's own work is "
+            snprintf(e->message, sizeof e->message, "grading waited %g s with nothing running (the submission "
+                     "slept or waited: a sleep, a read or a lock in its code) and was stopped (the grader's guard, --wall; the submission's own work is "
                      "held to --cpu)", wall);
         else if (rc == -2)
             snprintf(e->message, sizeof e->message, "grading went on for %g s of wall time, %d times --wall, and "

@@ -21,6 +21,7 @@
 #include "cli/check_report.h"
 #include "measure/measure.h"
 #include "grade/verdict.h"
+#include "plugin/plugin_build.h"
 #include "util/escape.h"
 #include "util/signals.h"
 
@@ -170,6 +171,11 @@ static int try_once(try_args *a)
     sw_escape(m->label, 100, label, sizeof label);
     printf("%s: %s (%s), %d work vector%s\n", a->file_shown, m->name, label, m->work_vectors,
            m->work_vectors == 1 ? "" : "s");
+    char first[400];
+    int warnings = sw_plugin_build_warnings(first, sizeof first);
+    if (warnings)
+        printf("  build      %d compiler warning%s (often a bug: read them); the first: %s\n", warnings,
+               warnings == 1 ? "" : "s", first);
     fflush(stdout);
     sw_check_request req;
     sw_check_request_init(&req);

@@ -119,14 +119,20 @@ static int find_compiler(char *out, size_t len, char *err, size_t errlen)
     return 0;
 }
 
-/* The first line of the log that says "error", escaped, for a message. */
-static void first_error(const char *log, const char *src, char *buf, size_t len)
+/* The last successful build's warnings (sw_plugin_build_warnings). */
+static int warned;
+static char first_warned[400];
+
+/* The first line of the log that says `what` ("error", ": warning:"),
+ * escaped, into buf ("" when none); how many lines say it. */
+static int first_line(const char *log, const char *src, const char *what, char *buf, size_t len)
 {
+    int count = 0;
     buf[0] = '\0';
     /* the compiler saw the student's file as plugin.c: the message names it as they did */
     const char *slash = strrchr(src, '/');
     const char *base = slash ? slash + 1 : src;
-    for (const char *line = log; line && *line && !buf[0];) {
+    for (const char *line = log; line && *line;) {
         const char *end = strchr(line, '\n');
         size_t n = end ? (size_t)(end - line) : strlen(line);
         char one[512];
@@ -134,12 +140,23 @@ static void first_error(const char *log, const char *src, char *buf, size_t len)
             snprintf(one, sizeof one, "%.100s:%.*s", base, (int)(n - 9 < 400 ? n - 9 : 400), line + 9);
         else
             snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), line);
-        if (strstr(one, "error"))
+        if (strstr(one, what) && count++ == 0)
             sw_escape(one, 200, buf, len);
         line = end ? end + 1 : NULL;
     }
-    if (!buf[0])
+    return count;
+}
+
+static void first_error(const char *log, const char *src, char *buf, size_t len)
+{
+    if (!first_line(log, src, "error", buf, len))
         snprintf(buf, len, "see the compiler's messages");
+}
+
+int sw_plugin_build_warnings(char *first, size_t len)
+{
+    snprintf(first, len, "%s", first_warned);
+    return warned;
 }
 
 static int write_new(const char *path, const char *data, size_t len);
@@ -317,6 +334,8 @@ static void withheld_hint(const sw_headers *hd, const char *log, char *buf, size
 int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
                       char *err, size_t errlen)
 {
+    warned = 0;
+    first_warned[0] = '\0';
     char shown[200], msg[SW_ERRLEN + 160], cc[PATH_MAX];
     sw_escape(src, 120, shown, sizeof shown);
     sw_jail spec = { .profile = SW_JAIL_COMPILE, .include_fd = -1, .out = { "plugin.so", "build.log" },
@@ -393,6 +412,7 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
         write_new(log_path, log, log_len);
     free(out);
     if (ok) {
+        warned = log ? first_line(log, src, ": warning:", first_warned, sizeof first_warned) : 0;
         free(log);
         return SW_OK;
     }

@@ -14,4 +14,9 @@
 int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
                       char *err, size_t errlen);
 
+/* The compiler's warnings on the last source built here that compiled:
+ * how many lines say "warning", the first into first (escaped, named as
+ * the student named the file; "" when none). */
+int sw_plugin_build_warnings(char *first, size_t len);
+
 #endif

@@ -23,6 +23,22 @@ grep -q 'order      claimed 1, measured 1\.0' out || fail "no measured order: $(
 grep -q 'stability  none' out || fail "no stability: $(cat out)"
 grep -q 'PASS: plugin student-euler on chain matches euler' out || fail "no check: $(cat out)"
 
+grep -q 'build ' out && fail "warnings reported for a file without any: $(cat out)"
+# The compiler's warnings are shown (often a bug); in grade's feedback too,
+# as a note that takes nothing off (QA: they were shown nowhere)
+sed 's|double \*dydt = work; /\* work vector 0 \*/|double *dydt = work; int unused = 3;|' \
+    "$root/examples/euler_plugin.c" > warns.c
+grep -q "int unused" warns.c || fail "the fixture's edit did not apply"
+"$SW" try warns.c --no-play > out 2>&1 || fail "try with a warning: $(cat out)"
+grep -q "^  build      1 compiler warning (often a bug: read them); the first: warns.c:[0-9]*:[0-9]*: warning: unused variable 'unused'" out ||
+    fail "the warning is not shown: $(cat out)"
+mkdir -p wclass
+cp warns.c wclass/
+printf '# stepwise assignment 1\n# kind: plugin\n# scene: spring\n# integrator: euler\n# dt: 0.02\n# steps: 20\n' > whw.txt
+"$SW" grade --assignment whw.txt --feedback wfb wclass > wgrade.out 2>&1 || fail "grade with a warning: $(cat wgrade.out)"
+grep -q "^note: the compiler warned 1 time (nothing is taken off; a warning is often a bug); the first: warns.c:[0-9]*:[0-9]*: warning: unused variable" wfb/*.txt ||
+    fail "the feedback has no note of the warning: $(cat wfb/*.txt)"
+
 # Claiming order 2 makes midpoint the reference: a failure that names euler.
 sed 's/\.order = 1/.order = 2/' "$root/examples/euler_plugin.c" > claims2.c
 "$SW" try claims2.c --no-play > out 2>&1; rc=$?

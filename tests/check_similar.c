@@ -342,6 +342,11 @@ START_TEST(boilerplate_many_share_is_ignored)
         int n;
         ck_assert_int_eq(sw_similar_pairs(&s, &pairs, &n, err, sizeof err), SW_OK);
         ck_assert_int_eq(n, max_docs ? 0 : 66);
+        /* ... and how much was taken as common is counted, for the teacher */
+        if (max_docs)
+            ck_assert_uint_gt(s.ncommon, 0);
+        else
+            ck_assert_uint_eq(s.ncommon, 0);
         free(pairs);
         sw_similar_free(&s);
     }

@@ -197,6 +197,10 @@ int grade_similar_run(grade_list *l)
     if (t && shown == 0)
         fprintf(t, "similar pairs: none flagged among %d plugin sources and traces compared\n",
                 s.ndocs);
+    if (t && s.ncommon)
+        fprintf(t, "  (%zu fingerprint%s shared by more than %d sources %s taken as common code and not "
+                "counted: code that many students share is never paired; read such sources side by side)\n",
+                s.ncommon, s.ncommon == 1 ? "" : "s", s.opt.max_docs, s.ncommon == 1 ? "was" : "were");
     if (t && skipped)
         fprintf(t, "  (%d submission%s could not be compared: unreadable or larger than %zu KiB)\n",
                 skipped, skipped == 1 ? "" : "s", SW_SIMILAR_SOURCE_MAX >> 10);

@@ -439,6 +439,7 @@ static int prepare(sw_similar *s)
         }
     }
     free(all);
+    s->ncommon = ncommon;
     s->prepared = 1;
     return SW_OK;
 }

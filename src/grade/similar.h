@@ -65,6 +65,7 @@ typedef struct sw_similar {
     uint64_t *base;          /* sorted k-gram hashes of the handout */
     size_t nbase;
     int prepared;            /* the sources' kept fingerprints match the base and set */
+    size_t ncommon;          /* fingerprints more than max_docs sources share, not counted */
 } sw_similar;
 
 /* Start an empty set (opt NULL: the defaults). 0, or SW_EINVAL when an

@@ -420,28 +420,46 @@ static double key_at_twelve(void)
 static double l8_dt_minus2(void) { return cl_page_dt_after(L8, "RK4 leaks energy", SW_ACT_DT_HALVE, 2); }
 static double l9_dt_plus3(void) { return cl_page_dt_after(L9, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3); }
 
-/* How much the drift moved between t = 4 (after the second close pass) and two
+/* How much the drift moved between t = 4 (after the fourth close pass) and two
  * orbits, as a fraction of it. */
 static double l9_rk4_first(void) { return cl_drift_at("orbit", ECC, "rk4", 0.05, 1.5); }
 static double l9_rk4_first_down(void) { return -l9_rk4_first(); }
 
-/* The time of RK4's second close pass: its nearest approach after t = 1. */
-static double l9_rk4_second_pass(void)
+/* RK4's close passes at Δt 0.05, through t = 4: the local minima of r (the
+ * start, at periapsis, is the first), and which one flings the planet out
+ * (the last pass before the energy turns positive, a drift above +100 %).
+ * The passes come ever faster on the tightening orbit: checked here. */
+#define R_PASS "the local minimum of r (RK4 at Δt 0.05), to the text's digits: ±0.05, one step"
+typedef struct l9_passes { int n, out; double t[8]; } l9_passes;
+
+static l9_passes l9_rk4_passes(void)
 {
+    l9_passes p = { .n = 1, .out = 0, .t = { 0 } };
     sw_sim s;
     cl_sim_init(&s, "orbit", ECC, "rk4", 0.05);
-    double nearest = INFINITY, when = NAN;
-    while (s.t < 4) {
+    double r2 = INFINITY, r1 = hypot(s.sys.y[0], s.sys.y[1]), t1 = s.t;
+    while (s.t < 4 - 1e-9) {
         sw_sim_step(&s);
         double r = hypot(s.sys.y[0], s.sys.y[1]);
-        if (s.t > 1 && r < nearest) {
-            nearest = r;
-            when = s.t;
-        }
+        if (r1 < r2 && r1 <= r && t1 > 0 && p.n < 8)
+            p.t[p.n++] = t1;
+        if (!p.out && sw_sim_energy_drift(&s) > 100)
+            p.out = p.n;
+        r2 = r1;
+        r1 = r;
+        t1 = s.t;
     }
     sw_sim_free(&s);
-    return when;
+    ck_assert_msg(p.out > 0 && p.out == p.n, "RK4 escapes after pass %d of %d", p.out, p.n);
+    for (int k = 2; k < p.n; k++)
+        ck_assert_msg(p.t[k] - p.t[k - 1] < p.t[k - 1] - p.t[k - 2], "pass %d comes no faster", k + 1);
+    return p;
 }
+
+static double l9_pass_out(void) { return l9_rk4_passes().out; }
+static double l9_pass_out_t(void) { l9_passes p = l9_rk4_passes(); return p.t[p.out - 1]; }
+static double l9_pass2_t(void) { return l9_rk4_passes().t[1]; }
+static double l9_pass3_t(void) { return l9_rk4_passes().t[2]; }
 
 static double l9_constant(void)
 {
@@ -578,12 +596,21 @@ const claim sw_claims_b[] = {
     { L9, "(energy +{1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
     { L9, "(energy {-122} % by t = 1.5)", l9_rk4_first, ROUNDED, 0, R_ROUND, NULL },
     { L9, "(its energy down {122} % by t = 1.5)", l9_rk4_first_down, ROUNDED, 0, "the same drift, its sign said in words", NULL },
-    { L9, "the one at t ≈ {2.9} flings it out", l9_rk4_second_pass, ROUNDED, 0, "as below", NULL },
+    { L9, "the fourth, at t ≈ {2.9}, flings it out", l9_pass_out_t, ROUNDED, 0, "the pass after which the energy is positive: " R_PASS, NULL },
+    { L9, "the {fourth}, at t ≈ 2.9, flings it out", l9_pass_out, EXACT, 0, "passes counted as minima of r, the start the first", NULL },
+    { L9, "orbit (at t ≈ {1.9} and 2.55); the", l9_pass2_t, ROUNDED, 0, "the second pass: " R_PASS, NULL },
+    { L9, "orbit (at t ≈ 1.9 and {2.55}); the", l9_pass3_t, ROUNDED, 0, "the third pass: " R_PASS, NULL },
     { L9, "flings it out (up {1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
     { L9, "(up 1250 %, then {constant}: it has escaped)", l9_constant, ABS, 0.001, "as for \"constant\" below", NULL },
-    { L9, "the second, at t ≈ {2.9}, flings it away", l9_rk4_second_pass, ROUNDED, 0, "the time of the nearest approach after t = 1, to the text's digits", NULL },
-    { L9, "at its second close pass (t ≈ {2.9}) RK4", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
-    { L9, "close pass, at t ≈ {2.9}, lasts long", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
+    { L9, "fourth, at t ≈ {2.9}, flings it away", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
+    { L9, "the {fourth}, at t ≈ 2.9, flings it away", l9_pass_out, EXACT, 0, "as above", NULL },
+    { L9, "tightening orbit (t ≈ {1.9}, 2.55); the", l9_pass2_t, ROUNDED, 0, "as above", NULL },
+    { L9, "tightening orbit (t ≈ 1.9, {2.55}); the", l9_pass3_t, ROUNDED, 0, "as above", NULL },
+    { L9, "at its {fourth} close pass (t ≈ 2.9) RK4", l9_pass_out, EXACT, 0, "as above", NULL },
+    { L9, "at its fourth close pass (t ≈ {2.9}) RK4", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ {1.9}, 2.55 and 2.9, last", l9_pass2_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ 1.9, {2.55} and 2.9, last", l9_pass3_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ 1.9, 2.55 and {2.9}, last", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
     { L9, "+1250 %, then {constant}: the planet has escaped", l9_constant, ABS, 0.001, "the drift moves less than 0.1 % of itself from t = 4 to two orbits", NULL },
     { L9, "@hint Press + three times: 0.1, 0.2, {0.4}.", l9_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L9, "about {120} accepted, 50 rejected", l9_acc04, ABS, 10, "\"about 120\": within ten", NULL },

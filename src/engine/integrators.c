@@ -79,7 +79,7 @@ static const sw_integrator builtins[] = {
      * [[1 - τ²/2, τ], [-τ(1 - τ²/4), 1 - τ²/2]], climbs back to +2: found by
      * bisection on the product at 30 digits (no root of |tr M| = 2 beyond it
      * up to ω·h = 4); tests/check_yoshida.c recomputes it. */
-    { .name = "yoshida4", .label = "Yoshida 4th-order symplectic (triple-jump Verlet)", .order = 4,
+    { .name = "yoshida4", .label = "Yoshida 4th-order symplectic (2nd where a force reads v)", .order = 4,
       .evals = 3, .flags = SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
       .stability = 1.5734019474345401, .work_vectors = 2, .step = sw_step_yoshida4,
       .summary = "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1",

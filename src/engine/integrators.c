@@ -92,9 +92,12 @@ static const sw_integrator builtins[] = {
       .summary = "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution",
       .no_lecture = adapts },
     /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
-     * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
-     * six solves with one matrix (I - γh J). */
-    { .name = "rodas4", .label = "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", .order = 4,
+     * five stages, the derivative at the new state (FSAL) and one for
+     * ∂f/∂t where the system does not say f ignores t (a flow field): 7,
+     * the most, here; 6 on particle systems. Six solves with one matrix
+     * (I - γh J). */
+    { .name = "rodas4", .label = "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer); 6 evals on particles",
+      .order = 4,
       .evals = 7, .flags = SW_IMPLICIT | SW_ADAPTIVE, .stability = INFINITY, .work_vectors = 12,
       .step = sw_step_rodas4,
       .summary = "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages",

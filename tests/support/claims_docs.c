@@ -5,19 +5,27 @@
 
 static double reference_order(void) { return sw_truth_reference_method()->order; }
 
-/* try's measured order of rk4 (the handout's my_rk4.c is rk4): on the
- * run try checks, the chain at its defaults to its duration. */
-static double measured_rk4(void)
+/* try's measured order of a method on the run try checks, the chain at its
+ * defaults to its duration, and the steps the sweep's runs span (*span)
+ * of the run's (*steps). */
+static double measured_on_chain(const char *m, long *span, long *steps)
 {
     double order, p[SW_MAX_PARAMS];
     char err[SW_ERRLEN];
     const sw_scene *sc = sw_scene_find("chain");
     sw_scene_defaults(sc, p);
-    sw_measure_probe pr = { .scene = sc, .p = p, .dt = sc->dt, .graded_steps = lround(sc->duration / sc->dt) };
-    return sw_measure_order_on(sw_integrator_find("rk4"), &pr, &order, NULL, err, sizeof err) == SW_OK ? order
-                                                                                                    : NAN;
+    *steps = lround(sc->duration / sc->dt);
+    sw_measure_probe pr = { .scene = sc, .p = p, .dt = sc->dt, .graded_steps = *steps, .span = span };
+    return sw_measure_order_on(sw_integrator_find(m), &pr, &order, NULL, err, sizeof err) == SW_OK ? order : NAN;
 }
+/* the handout's my_rk4.c is rk4 */
+static double measured_rk4(void) { long span, steps; return measured_on_chain("rk4", &span, &steps); }
+/* examples/euler_plugin.c is Euler: the span its order is read on */
+static double euler_span(void) { long span = 0, steps; measured_on_chain("euler", &span, &steps); return span; }
+static double euler_span_of(void) { long span, steps; measured_on_chain("euler", &span, &steps); return steps; }
 static double probe_steps(void) { return SW_MEASURE_PROBE_STEPS; }
+static double order_ceiling_percent(void) { return 100 * SW_BENCH_CEILING; }
+static double order_ceiling(void) { return SW_BENCH_CEILING; }
 
 /* The hop, in mm, that the bounce's resting speed would lift a ball:
  * v²/(2g), v the largest speed a ball leaving the floor is set at rest
@@ -527,7 +535,14 @@ const claim sw_claims_d[] = {
     { MAN, "Timing repeats per point, 1..15 (default {3})", bench_default_repeats, EXACT, 0, R_COUNT, NULL },
     { MAN, "with a {ten\\-thousandfold} smaller copy of the motion", stab_shrink, REL, 1e-12, R_COUNT, NULL },
     { MAN, "Where the two differ by more than {2}% a line says why", stab_agree, REL, 1e-12, R_COUNT, NULL },
-    { "docs/plugins.md", "the first {64} steps of the run it", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/plugins.md", "else its first {64} steps; then halved,", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/plugins.md", "the error at that run's dt is {1} % of the state", order_ceiling_percent, EXACT, 0, "the sweep's error ceiling, SW_BENCH_CEILING", NULL },
+    { "docs/plugins.md", "on the first {15} of the chain's 500 steps", euler_span, EXACT, 0, "the span sw_measure_order_on reads Euler's order on, on try's chain", NULL },
+    { "docs/plugins.md", "on the first 15 of the chain's {500} steps", euler_span_of, EXACT, 0, "the chain's duration over its dt", NULL },
+    { "docs/grading.md", "else its first {64} steps; in either", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/grading.md", "the graded dt is {1e-2} of the state or more", order_ceiling, EXACT, 0, "the sweep's error ceiling, SW_BENCH_CEILING", NULL },
+    { "docs/grading.md", "read on its first {15} of 500 steps", euler_span, EXACT, 0, "as docs/plugins.md's", NULL },
+    { "docs/grading.md", "read on its first 15 of {500} steps", euler_span_of, EXACT, 0, "as docs/plugins.md's", NULL },
     { "docs/scenes.md", "slower than √(2g·h), h = {1} mm (too slow", bounce_rest_hop_mm, REL, 1e-9, "the hop height at the scene's resting speed, from a 1-ball run", NULL },
     { "docs/plugins.md", "order      claimed 4, measured {4.06}", measured_rk4, ROUNDED, 0, "sw_measure_order_on rk4 on the chain, as try prints it", NULL },
     /* docs/stability.md (its table: tests/e2e/test_stability_doc.sh) */

@@ -37,37 +37,24 @@ static double rk45_steps(void) { return steps_1s("rk45"); }
 static double rodas_per_step(void) { return cl_adaptive_per_step("rodas4"); }
 static double rodas_order(void) { return cl_method("rodas4")->order; }
 
-/* Evaluations per trial step (accepted or rejected) once under way, on a
- * particle system (the stiff spring, rtol = atol = 1e-6, a second): no
- * ∂f/∂t there, whose derivative ignores t. */
-static double rodas_particle_per_trial(void)
+/* Evaluations (or solves) per trial step (accepted or rejected) once under
+ * way, on a particle system (the stiff spring, rtol = atol = 1e-6, a
+ * second): no ∂f/∂t there, whose derivative ignores t. */
+static double rodas_particle_trial(int solves)
 {
     sw_sim s;
     cl_sim_init(&s, "stiff-spring", NULL, "rodas4", 0.05);
     sw_sim_step(&s);
-    long e1 = sw_sim_evals(&s), acc1, rej1, acc, rej;
+    long n1 = solves ? s.sys.ode->solves : sw_sim_evals(&s), acc1, rej1, acc, rej;
     sw_sim_step_counts(&s, &acc1, &rej1);
     ck_assert_int_eq(sw_sim_run_until(&s, 1.0), 0);
     sw_sim_step_counts(&s, &acc, &rej);
-    double r = (double)(sw_sim_evals(&s) - e1) / (double)(acc + rej - acc1 - rej1);
+    long n = solves ? s.sys.ode->solves : sw_sim_evals(&s);
     sw_sim_free(&s);
-    return r;
+    return (double)(n - n1) / (double)(acc + rej - acc1 - rej1);
 }
-
-/* Solves per trial step once under way, as above: the six stages'. */
-static double rodas_particle_solves(void)
-{
-    sw_sim s;
-    cl_sim_init(&s, "stiff-spring", NULL, "rodas4", 0.05);
-    sw_sim_step(&s);
-    long n1 = s.sys.ode->solves, acc1, rej1, acc, rej;
-    sw_sim_step_counts(&s, &acc1, &rej1);
-    ck_assert_int_eq(sw_sim_run_until(&s, 1.0), 0);
-    sw_sim_step_counts(&s, &acc, &rej);
-    double r = (double)(s.sys.ode->solves - n1) / (double)(acc + rej - acc1 - rej1);
-    sw_sim_free(&s);
-    return r;
-}
+static double rodas_particle_per_trial(void) { return rodas_particle_trial(0); }
+static double rodas_particle_solves(void) { return rodas_particle_trial(1); }
 
 /* 1 when '$' picks rodas4 (the fourteenth place), from the controls' table. */
 static double key_hash_rodas(void) { return cl_key_picks('$', 14, "rodas4"); }

@@ -439,6 +439,8 @@ START_TEST(meter_word_agrees_with_number)
         { 1.0, 0, 0, "neutral", 0 },
         { 1 + 1e-13, 0, 0, "neutral", 0 },         /* within SW_TRUTH_NEUTRAL */
         { 1.5, 1, 0, "grows", 1 },
+        { 2.573751923687954, 0, 0, "grows", 1 },   /* the fastest mode's factor, from rho alone: six digits */
+        { 1 + 1e-9, 0, 0, "grows", 1 },            /* from rho alone, beyond SW_TRUTH_NEUTRAL */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char num[40];
@@ -449,6 +451,9 @@ START_TEST(meter_word_agrees_with_number)
         int sign = shown > 1 ? 1 : shown < 1 ? -1 : 0;
         ck_assert_msg(sign == cases[i].sign, "rho %.17g printed %s beside '%s'", cases[i].rho, num, w);
         ck_assert_int_ge((int)strlen(num), (int)strlen("×1.000000"));
+        /* a factor 1e-6 or more from 1 needs no more than the six digits */
+        if (fabs(cases[i].rho - 1) >= 1e-6)
+            ck_assert_msg(strlen(num) == strlen("×1.000000"), "rho %.17g printed %s", cases[i].rho, num);
     }
 }
 END_TEST

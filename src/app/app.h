@@ -313,7 +313,8 @@ int sw_app_meter_fields(sw_app *a, sw_field *f, int max, int *warn);
  * many digits as it takes for the printed number to agree with the word
  * returned ("grows", "grows slowly" and "decays slowly": too little to see
  * over the meter's horizon, "decays", "neutral"): grows is the meter's
- * visible growth, slow its invisible growth (1) or decay (-1). */
+ * visible growth, slow its invisible growth (1) or decay (-1); both 0: the
+ * word from rho alone (beyond SW_TRUTH_NEUTRAL of 1: grows or decays). */
 const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len);
 /* (status.c) One status line for sim i, every field in full (exact
  * integrator name, dt=, t, steps, evals, ...). */

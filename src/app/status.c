@@ -110,9 +110,11 @@ void sw_app_status(sw_app *a, int i, char *buf, size_t len)
 
 const char *sw_app_growth_text(double rho, int grows, int slow, char *num, size_t len)
 {
-    const char *word = grows ? "grows" : slow > 0 ? "grows slowly" : slow < 0 ? "decays slowly"
+    /* grows = slow = 0: the word from rho alone (the fastest mode's factor) */
+    int beyond = !grows && !slow && rho > 1 + SW_TRUTH_NEUTRAL;
+    const char *word = grows || beyond ? "grows" : slow > 0 ? "grows slowly" : slow < 0 ? "decays slowly"
                      : rho < 1 - SW_TRUTH_NEUTRAL ? "decays" : "neutral";
-    int above = grows || slow > 0, below = !above && rho < 1 - SW_TRUTH_NEUTRAL;
+    int above = grows || beyond || slow > 0, below = !above && rho < 1 - SW_TRUTH_NEUTRAL;
     /* the word is decided from rho; the digits follow it, so the number
      * printed is never 1.000000 beside "grows" or "decays" */
     for (int digits = 6; digits <= 15; digits++) {

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli/bench_jobs.h"
+#include "engine/ode_fast.h"
 #include "measure/bench.h"
 #include "util/clock.h"
 #include "util/names.h"
@@ -143,14 +144,32 @@ static const char *stop_note(int stop)
     }
 }
 
+/* A symplectic composition's order above 2 holds where the forces read
+ * positions alone: where drag or damping reads velocities, each Verlet
+ * substep's velocity predictor errs at second order and the composition
+ * does not cancel it (yoshida4: 2, tests/check_yoshida.c). */
+static void print_velocity_note(const sw_bench_report *r, const sw_system *sys)
+{
+    if (sw_ode_position_only(sys->ode))
+        return;
+    for (int i = 0; i < r->nseries; i++) {
+        const sw_integrator *m = r->series[i].method;
+        if ((m->flags & SW_SYMPLECTIC) && !(m->flags & SW_PLUGIN) && m->order > 2)
+            printf("   %s: order %d where forces read positions alone; here a force reads\n"
+                   "   velocities (drag or damping), and its order is 2\n", m->name, m->order);
+    }
+}
+
 /* Under the orders: what the scene's events do to them (its own sentence)
- * when the runs stepped over them, or that they were located. */
+ * when the runs stepped over them, or that they were located; and what
+ * velocity-dependent forces do to a symplectic composition's. */
 static void print_events(const sw_bench_report *r)
 {
     sw_system sys;
     char err[SW_ERRLEN];
     if (sw_system_build(&sys, r->scene, r->p, err, sizeof err) != SW_OK)
         return;
+    print_velocity_note(r, &sys);
     const char *breaks = sw_system_events_break(&sys);
     if (breaks && r->events == SW_EVENTS_STEP) {
         /* the sentence in lines of at most 78 columns */

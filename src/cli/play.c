@@ -196,10 +196,12 @@ int sw_cmd_play(int argc, char **argv)
     if (until > 0)
         snprintf(a.message, sizeof a.message, "the run stops at t = %g (--until); u runs straight there", until);
     if (!ascii && o.scene->duration < PLAY_PAUSED_BELOW && until <= 0) {
-        /* the whole motion (a projectile's flight) would be over before the
-         * window is drawn and read: it waits for space */
+        /* a scene that reports this early (a projectile's flight) would be
+         * there before the window is drawn and read: it waits for space.
+         * The report time is not when the motion ends (the galaxy and the
+         * stiff pendulum go on): the message says which it is. */
         a.paused = 1;
-        snprintf(a.message, sizeof a.message, "paused: the motion lasts about %g s; space runs it, [ slows it, "
+        snprintf(a.message, sizeof a.message, "paused: this scene reports at t = %g s; space runs it, [ slows it, "
                  ". steps", o.scene->duration);
     }
     int rc = ascii ? ascii_frames(&a, frames ? frames : 1, cols, rows) : sw_cli_play(&a, NULL);

@@ -204,7 +204,10 @@ static int report_rows(const sw_scene *sc, const double *p, const sw_integrator 
             if (r.measured && r.kind == SW_STAB_LIMIT) {
                 snprintf(note, sizeof note, "(%s at dt = %.5g)", sw_stability_verdict_text(r.fail.verdict),
                          r.dt_unstable);
-                note_lines(note);
+                /* once: where theory and measurement differ, the reason
+                 * under it may name the failing step already */
+                if (r.agree || !strstr(r.why, sw_stability_verdict_text(r.fail.verdict)))
+                    note_lines(note);
             }
             if (r.measured && !r.agree) {
                 snprintf(note, sizeof note, "differ: %s", r.why);

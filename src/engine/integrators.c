@@ -79,7 +79,7 @@ static const sw_integrator builtins[] = {
      * [[1 - τ²/2, τ], [-τ(1 - τ²/4), 1 - τ²/2]], climbs back to +2: found by
      * bisection on the product at 30 digits (no root of |tr M| = 2 beyond it
      * up to ω·h = 4); tests/check_yoshida.c recomputes it. */
-    { .name = "yoshida4", .label = "Yoshida 4th-order symplectic (triple-jump Verlet)", .order = 4,
+    { .name = "yoshida4", .label = "Yoshida 4th-order symplectic (2nd where a force reads v)", .order = 4,
       .evals = 3, .flags = SW_EXPLICIT | SW_SYMPLECTIC | SW_NEEDS_SECOND_ORDER,
       .stability = 1.5734019474345401, .work_vectors = 2, .step = sw_step_yoshida4,
       .summary = "verlet substeps of w1 h, w0 h, w1 h; w1 = 1/(2 - 2^(1/3)), w0 = -2^(1/3) w1",
@@ -92,9 +92,12 @@ static const sw_integrator builtins[] = {
       .summary = "adaptive: x'' = f(x) stepped directly, error from an embedded 4th-order solution",
       .no_lecture = adapts },
     /* Linearly implicit and L-stable: stable for every ω·h. Evaluations:
-     * five stages, the derivative at the new state (FSAL) and one for ∂f/∂t;
-     * six solves with one matrix (I - γh J). */
-    { .name = "rodas4", .label = "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer)", .order = 4,
+     * five stages, the derivative at the new state (FSAL) and one for
+     * ∂f/∂t where the system does not say f ignores t (a flow field): 7,
+     * the most, here; 6 on particle systems. Six solves with one matrix
+     * (I - γh J). */
+    { .name = "rodas4", .label = "Rosenbrock RODAS4 4(3), adaptive, L-stable (Hairer); 6 evals on particles",
+      .order = 4,
       .evals = 7, .flags = SW_IMPLICIT | SW_ADAPTIVE, .stability = INFINITY, .work_vectors = 12,
       .step = sw_step_rodas4,
       .summary = "adaptive: (I - h/4 J) k_i = h/4 (f(y0 + sum a_ij k_j) + sum c_ij/h k_j), 6 stages",

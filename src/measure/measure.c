@@ -232,6 +232,8 @@ int sw_measure_order_on(const sw_integrator *m, const sw_measure_probe *pr, doub
             break;
     }
     sw_truth_free(&w.truth);
+    if (pr && pr->span)
+        *pr->span = w.n;
     if (rc != SW_OK) {
         *order = NAN;
         return rc;

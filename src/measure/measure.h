@@ -59,11 +59,15 @@ typedef struct sw_measure_probe {
     const double *graded_y;  /* its last state (NULL: not compared) */
     int *whole;              /* out, or NULL: 1 when the sweep spanned the whole graded run and
                               * its first point repeated it; else the order stands on a part */
+    long *span;              /* out, or NULL: the steps of dt each point's runs span, from the
+                              * start (the horizon, once halved to its error ceiling) */
 } sw_measure_probe;
 
 /* The order on a probe (NULL: the spring, as sw_measure_order): dt, dt/2,
- * ... each run sampled 16 times over min(graded_steps,
- * SW_MEASURE_PROBE_STEPS) steps of dt, the error against the scene's
+ * ... each run sampled 16 times over the first steps of dt of the graded
+ * run (all of them where four points fit the budget, else at most
+ * SW_MEASURE_PROBE_STEPS; halved, down to one, while the error at dt is
+ * at or over SW_BENCH_CEILING of the state), the error against the scene's
  * exact solution or the truth module's reference run. Point 0 runs the
  * graded run again to its end and must land on graded_y bit for bit, and
  * the order stands only when the fit includes point 0: a plugin that

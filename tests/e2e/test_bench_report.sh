@@ -69,4 +69,12 @@ cmp -s "$dir/j1.cut" "$dir/j3.cut" || fail "--jobs 3 measured other numbers than
 rc=$?
 [ "$rc" -eq 2 ] || fail "--jobs 0 exited $rc, not 2"
 grep -q -- "--jobs" "$dir/j0.err" || fail "--jobs 0: the message does not name --jobs: $(cat "$dir/j0.err")"
+# yoshida4's order is 4 where forces read positions alone, 2 where drag or
+# damping reads velocities: the report says so under its orders there (the
+# damped default spring), and not on the undamped one.
+"$STEPWISE" bench spring --quick --integrators yoshida4 > "$dir/y_damped.txt" || fail "bench yoshida4 damped"
+"$STEPWISE" bench spring --set c=0 --quick --integrators yoshida4 > "$dir/y_undamped.txt" || fail "bench yoshida4"
+grep -A2 '^   yoshida4 .*theory 4' "$dir/y_damped.txt" | grep -q 'and its order is 2' ||
+    fail "damped spring: no note that yoshida4's order is 2: $(grep -A3 'observed order' "$dir/y_damped.txt")"
+grep -q 'its order is 2' "$dir/y_undamped.txt" && fail "undamped spring: the velocity note printed"
 echo "bench report: ok"

@@ -20,6 +20,11 @@ out=$("$SW" stability stiff-spring --integrators symplectic-euler,implicit-midpo
 wide=$(echo "$out" | awk '{ n = length($0) } n > 80 { print n ": " $0 }')
 [ -z "$wide" ] || fail "stability stiff-spring prints lines past 80 columns: $wide"
 echo "$out" | grep -Eq '^ +\(energy x1000 at dt = 0\.0199' || fail "symplectic-euler's note is not under its row: $out"
+# rk4 on the default (damped) spring fails below its linear limit: what it
+# saw is said once, in the reason (it was printed twice)
+out=$("$SW" stability spring --integrators rk4) || fail "stability spring rk4 exited $?"
+[ "$(echo "$out" | grep -c 'energy raised at dt')" -eq 1 ] || fail "rk4's failing step not said once: $out"
+echo "$out" | grep -q 'differ: rk4 fails below the linear limit' || fail "rk4's reason is missing: $out"
 out=$("$SW" stability bounce --integrators euler) || fail "stability bounce exited $?"
 echo "$out" | grep -q 'theory only: bounce changes its state at step boundaries' || fail "bounce: $out"
 echo "stability: ok"

@@ -5,19 +5,27 @@
 
 static double reference_order(void) { return sw_truth_reference_method()->order; }
 
-/* try's measured order of rk4 (the handout's my_rk4.c is rk4): on the
- * run try checks, the chain at its defaults to its duration. */
-static double measured_rk4(void)
+/* try's measured order of a method on the run try checks, the chain at its
+ * defaults to its duration, and the steps the sweep's runs span (*span)
+ * of the run's (*steps). */
+static double measured_on_chain(const char *m, long *span, long *steps)
 {
     double order, p[SW_MAX_PARAMS];
     char err[SW_ERRLEN];
     const sw_scene *sc = sw_scene_find("chain");
     sw_scene_defaults(sc, p);
-    sw_measure_probe pr = { .scene = sc, .p = p, .dt = sc->dt, .graded_steps = lround(sc->duration / sc->dt) };
-    return sw_measure_order_on(sw_integrator_find("rk4"), &pr, &order, NULL, err, sizeof err) == SW_OK ? order
-                                                                                                    : NAN;
+    *steps = lround(sc->duration / sc->dt);
+    sw_measure_probe pr = { .scene = sc, .p = p, .dt = sc->dt, .graded_steps = *steps, .span = span };
+    return sw_measure_order_on(sw_integrator_find(m), &pr, &order, NULL, err, sizeof err) == SW_OK ? order : NAN;
 }
+/* the handout's my_rk4.c is rk4 */
+static double measured_rk4(void) { long span, steps; return measured_on_chain("rk4", &span, &steps); }
+/* examples/euler_plugin.c is Euler: the span its order is read on */
+static double euler_span(void) { long span = 0, steps; measured_on_chain("euler", &span, &steps); return span; }
+static double euler_span_of(void) { long span, steps; measured_on_chain("euler", &span, &steps); return steps; }
 static double probe_steps(void) { return SW_MEASURE_PROBE_STEPS; }
+static double order_ceiling_percent(void) { return 100 * SW_BENCH_CEILING; }
+static double order_ceiling(void) { return SW_BENCH_CEILING; }
 
 /* The hop, in mm, that the bounce's resting speed would lift a ball:
  * v²/(2g), v the largest speed a ball leaving the floor is set at rest
@@ -88,7 +96,16 @@ static double ord_lbe(void) { return order1_on_spring("linear-implicit-euler"); 
 static double ord_im(void) { return order_on_spring("implicit-midpoint"); }
 /* yoshida4 is 4th order where the forces do not depend on v: the undamped spring. */
 static double ord_yoshida(void) { return cl_order_by_halving("spring", "c=0", "yoshida4", 0.04); }
+/* ... and 2nd order where a force reads v: the default (damped, c = 0.5)
+ * spring and the projectile's drag, halving from the same step. */
+static double ord_yoshida_damped(void) { return cl_order_by_halving("spring", NULL, "yoshida4", 0.04); }
+static double ord_yoshida_drag(void) { return cl_order_by_halving("projectile", NULL, "yoshida4", 0.04); }
 static double yoshida_wdt(void) { return cl_limit0("spring", "k=1 c=0", "yoshida4"); }
+/* The largest step lesson 9 has rk45 take (cl_l9_adaptive runs at it). */
+static double readme_l9_largest_step(void)
+{
+    return cl_page_dt_after(L9, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3);
+}
 static double table_order(const char *m) { return cl_method(m)->order; }
 static double ord_rk45(void) { return table_order("rk45"); }
 
@@ -453,11 +470,14 @@ const claim sw_claims_d[] = {
     { README, "| dop853 | Dormand–Prince 8(5,3) (Hairer), adaptive (rtol/atol) | {8} |", cl_ord_dop853, EXACT, 0, "the method's order in the table", NULL },
     { README, "(Hairer), adaptive (rtol/atol) | 8 | {12} (reuses the last stage) |", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Dormand-Prince 8(5,3), adaptive (Hairer)\", .order = 8, .evals = {12},", cl_dop853_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { README, "is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure", NULL },
+    { README, "is about {3·10⁴} times rtol", cl_l9_rk45_error_over_rtol, ABS, 5000, "one significant figure (rk45 at largest step 0.4 on e = 0.9: 3.4·10⁴; at the scene's dt 0.01 it is 2.4·10⁴)", NULL },
+    { README, "with {0.4} as its largest step (lesson 9's setting)", readme_l9_largest_step, EXACT, 0, "lesson 9's page's step after three presses of +, the step the row above runs at", NULL },
     { README, "`1`–`9`, `{0}`, `!`, `@`, `#`, `$`, `%` and `^` pick one", cl_key_rk45, EXACT, 0, "the key that picks the tenth method", NULL },
     { README, "`1`–`9`, `0`, `!`, `@`, `#`, `$`, `%` and `^` pick one", key_at_yoshida, EXACT, 0, "'@' picks the twelfth method, yoshida4", cl_one },
-    { README, "Verlet substeps of w1·h, w0·h, w1·h | {4} | 3", ord_yoshida, ABS, 0.1, "the order measured halving Δt from 0.04 on the undamped spring (the damped one gives 2: Verlet's velocity predictor)", NULL },
-    { README, "Verlet substeps of w1·h, w0·h, w1·h | 4 | {3} (reuses the last acceleration) |", ev_yoshida, EXACT, 0, "after the first step", NULL },
+    { README, "Verlet substeps of w1·h, w0·h, w1·h | {4} (2 where", ord_yoshida, ABS, 0.1, "the order measured halving Δt from 0.04 on the undamped spring", NULL },
+    { README, "| 4 ({2} where a force reads the velocity: drag, damping) |", ord_yoshida_damped, ABS, 0.1, "the order measured halving Δt from 0.04 on the damped default spring (Verlet's velocity predictor errs at second order)", NULL },
+    { README, "| 4 ({2} where a force reads the velocity: drag, damping) |", ord_yoshida_drag, ABS, 0.1, "as above, on the projectile with drag", NULL },
+    { README, "(2 where a force reads the velocity: drag, damping) | {3} (reuses the last acceleration) |", ev_yoshida, EXACT, 0, "after the first step", NULL },
     { README, "the {eleven} lessons in `lessons/`", lesson_count, EXACT, 0, R_COUNT, NULL },
     { README, "Euler's energy growth (1 + h²)^N", euler_energy_growth, REL, 1e-9, "Euler's energy on the ω = 1 spring after 50 steps of 0.1", euler_energy_formula },
     { README, "(ωh = {2} for symplectic Euler and Verlet", symplectic_wdt, ABS, 1e-6, "symplectic Euler's limit in theory (bisected to 1e-9)", NULL },
@@ -487,8 +507,11 @@ const claim sw_claims_d[] = {
     { INTEGRATORS, "\"classical Runge-Kutta\", .order = 4, .evals = {4},", ev_rk4, EXACT, 0, "as above", NULL },
     { INTEGRATORS, "\"velocity Verlet (leapfrog)\", .order = {2}, .evals = 1,", ord_verlet, ABS, 0.1, "as above", NULL },
     { INTEGRATORS, "\"velocity Verlet (leapfrog)\", .order = 2, .evals = {1},", ev_verlet, EXACT, 0, "after the first step", NULL },
-    { INTEGRATORS, "\"Yoshida 4th-order symplectic (triple-jump Verlet)\", .order = {4}, .evals = 3,", ord_yoshida, ABS, 0.1, "as the README's row", NULL },
-    { INTEGRATORS, "\"Yoshida 4th-order symplectic (triple-jump Verlet)\", .order = 4, .evals = {3},", ev_yoshida, EXACT, 0, "after the first step", NULL },
+    { INTEGRATORS, "\"Yoshida 4th-order symplectic (2nd where a force reads v)\", .order = {4},", ord_yoshida, ABS, 0.1, "as the README's row", NULL },
+    { INTEGRATORS, "\"Yoshida {4}th-order symplectic (2nd where", ord_yoshida, ABS, 0.1, "as the README's row", NULL },
+    { INTEGRATORS, "\"Yoshida 4th-order symplectic ({2}nd where a force reads v)\"", ord_yoshida_damped, ABS, 0.1, "as the README's row", NULL },
+    { INTEGRATORS, "\"Yoshida 4th-order symplectic ({2}nd where a force reads v)\"", ord_yoshida_drag, ABS, 0.1, "as the README's row", NULL },
+    { INTEGRATORS, "(2nd where a force reads v)\", .order = 4,\n      .evals = {3},", ev_yoshida, EXACT, 0, "after the first step", NULL },
     { INTEGRATORS, ".stability = {1.5734019474345401},", yoshida_wdt, ABS, 1e-6, "the truth module's limit from the method's own one-step map (bisected to 1e-9)", NULL },
     { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", .order = {1}, .evals = 1,", ord_be, ABS, 0.1, "as above", NULL },
     { INTEGRATORS, "\"backward Euler (Newton to rounding, direct solve)\", .order = 1, .evals = {1},", ev_be, ATLEAST, 0, "\"1+solve\": Newton iterates, at least one evaluation", NULL },
@@ -512,7 +535,14 @@ const claim sw_claims_d[] = {
     { MAN, "Timing repeats per point, 1..15 (default {3})", bench_default_repeats, EXACT, 0, R_COUNT, NULL },
     { MAN, "with a {ten\\-thousandfold} smaller copy of the motion", stab_shrink, REL, 1e-12, R_COUNT, NULL },
     { MAN, "Where the two differ by more than {2}% a line says why", stab_agree, REL, 1e-12, R_COUNT, NULL },
-    { "docs/plugins.md", "the first {64} steps of the run it", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/plugins.md", "else its first {64} steps; then halved,", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/plugins.md", "the error at that run's dt is {1} % of the state", order_ceiling_percent, EXACT, 0, "the sweep's error ceiling, SW_BENCH_CEILING", NULL },
+    { "docs/plugins.md", "on the first {15} of the chain's 500 steps", euler_span, EXACT, 0, "the span sw_measure_order_on reads Euler's order on, on try's chain", NULL },
+    { "docs/plugins.md", "on the first 15 of the chain's {500} steps", euler_span_of, EXACT, 0, "the chain's duration over its dt", NULL },
+    { "docs/grading.md", "else its first {64} steps; in either", probe_steps, EXACT, 0, R_COUNT, NULL },
+    { "docs/grading.md", "the graded dt is {1e-2} of the state or more", order_ceiling, EXACT, 0, "the sweep's error ceiling, SW_BENCH_CEILING", NULL },
+    { "docs/grading.md", "read on its first {15} of 500 steps", euler_span, EXACT, 0, "as docs/plugins.md's", NULL },
+    { "docs/grading.md", "read on its first 15 of {500} steps", euler_span_of, EXACT, 0, "as docs/plugins.md's", NULL },
     { "docs/scenes.md", "slower than √(2g·h), h = {1} mm (too slow", bounce_rest_hop_mm, REL, 1e-9, "the hop height at the scene's resting speed, from a 1-ball run", NULL },
     { "docs/plugins.md", "order      claimed 4, measured {4.06}", measured_rk4, ROUNDED, 0, "sw_measure_order_on rk4 on the chain, as try prints it", NULL },
     /* docs/stability.md (its table: tests/e2e/test_stability_doc.sh) */

@@ -1,5 +1,6 @@
 /* Claims: the figures of lessons 6-10 and how each is measured. */
 #include "claims.h"
+#include "app/dt_error.h"
 
 static double l6_ratio_mid(void) { return cl_page_ratio(L6, "Midpoint is second order", NULL, 1); }
 static double l6_ratio_rk4(void) { return cl_page_ratio(L6, "RK4", "rk4", 1); }
@@ -331,6 +332,40 @@ static double euler_error_at_end(double dt)
 
 static double l10_ratio_at_end(void) { return euler_error_at_end(0.02) / euler_error_at_end(0.01); }
 
+/* Euler's largest position error over the samples the Δt message reads
+ * (SW_TRUTH_SAMPLES to the report time, from the first a step reaches),
+ * as the app measures it (app/dt_error.c), and the time it comes at. */
+static double euler_worst(double dt, double *when)
+{
+    double p[SW_MAX_PARAMS], truth[64], worst = 0;
+    const sw_scene *sc = cl_scene_p("spring", NULL, p);
+    sw_sim s;
+    cl_sim_init(&s, "spring", NULL, "euler", dt);
+    for (int j = sw_truth_first_sample(sc->duration, dt); j <= SW_TRUTH_SAMPLES; j++) {
+        double t = sw_truth_sample_time(sc->duration, j);
+        ck_assert_int_eq(sw_sim_run_until(&s, t), 0);
+        ck_assert_int_eq(sw_truth_state(sc, p, t, truth), 0);
+        double e = sw_dt_state_error(s.sys.ode->dim, 2, s.sys.y, truth, 0);
+        if (e > worst) {
+            worst = e;
+            *when = t;
+        }
+    }
+    sw_sim_free(&s);
+    return worst;
+}
+
+static double l10_worst_time(void) { double t; euler_worst(0.02, &t); return t; }
+static double l10_worst_ratio(void) { double t; return euler_worst(0.02, &t) / euler_worst(0.01, &t); }
+/* The exponent ω²Δt·t/2 at Δt = 0.02 when the largest error comes, and
+ * the formula's ratio there. */
+static double l10_worst_exponent(void) { return l10_exponent() * l10_worst_time() / sw_scene_find("spring")->duration; }
+static double l10_worst_formula(void)
+{
+    double x = l10_worst_exponent();
+    return (exp(x) - 1) / (exp(x / 2) - 1);
+}
+
 static double l10_duration(void) { return sw_scene_find("spring")->duration; }
 
 /* Midpoint against Heun, the largest state difference over the run. */
@@ -420,28 +455,46 @@ static double key_at_twelve(void)
 static double l8_dt_minus2(void) { return cl_page_dt_after(L8, "RK4 leaks energy", SW_ACT_DT_HALVE, 2); }
 static double l9_dt_plus3(void) { return cl_page_dt_after(L9, "One step size does not fit all", SW_ACT_DT_DOUBLE, 3); }
 
-/* How much the drift moved between t = 4 (after the second close pass) and two
+/* How much the drift moved between t = 4 (after the fourth close pass) and two
  * orbits, as a fraction of it. */
 static double l9_rk4_first(void) { return cl_drift_at("orbit", ECC, "rk4", 0.05, 1.5); }
 static double l9_rk4_first_down(void) { return -l9_rk4_first(); }
 
-/* The time of RK4's second close pass: its nearest approach after t = 1. */
-static double l9_rk4_second_pass(void)
+/* RK4's close passes at Δt 0.05, through t = 4: the local minima of r (the
+ * start, at periapsis, is the first), and which one flings the planet out
+ * (the last pass before the energy turns positive, a drift above +100 %).
+ * The passes come ever faster on the tightening orbit: checked here. */
+#define R_PASS "the local minimum of r (RK4 at Δt 0.05), to the text's digits: ±0.05, one step"
+typedef struct l9_passes { int n, out; double t[8]; } l9_passes;
+
+static l9_passes l9_rk4_passes(void)
 {
+    l9_passes p = { .n = 1, .out = 0, .t = { 0 } };
     sw_sim s;
     cl_sim_init(&s, "orbit", ECC, "rk4", 0.05);
-    double nearest = INFINITY, when = NAN;
-    while (s.t < 4) {
+    double r2 = INFINITY, r1 = hypot(s.sys.y[0], s.sys.y[1]), t1 = s.t;
+    while (s.t < 4 - 1e-9) {
         sw_sim_step(&s);
         double r = hypot(s.sys.y[0], s.sys.y[1]);
-        if (s.t > 1 && r < nearest) {
-            nearest = r;
-            when = s.t;
-        }
+        if (r1 < r2 && r1 <= r && t1 > 0 && p.n < 8)
+            p.t[p.n++] = t1;
+        if (!p.out && sw_sim_energy_drift(&s) > 100)
+            p.out = p.n;
+        r2 = r1;
+        r1 = r;
+        t1 = s.t;
     }
     sw_sim_free(&s);
-    return when;
+    ck_assert_msg(p.out > 0 && p.out == p.n, "RK4 escapes after pass %d of %d", p.out, p.n);
+    for (int k = 2; k < p.n; k++)
+        ck_assert_msg(p.t[k] - p.t[k - 1] < p.t[k - 1] - p.t[k - 2], "pass %d comes no faster", k + 1);
+    return p;
 }
+
+static double l9_pass_out(void) { return l9_rk4_passes().out; }
+static double l9_pass_out_t(void) { l9_passes p = l9_rk4_passes(); return p.t[p.out - 1]; }
+static double l9_pass2_t(void) { return l9_rk4_passes().t[1]; }
+static double l9_pass3_t(void) { return l9_rk4_passes().t[2]; }
 
 static double l9_constant(void)
 {
@@ -578,12 +631,21 @@ const claim sw_claims_b[] = {
     { L9, "(energy +{1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
     { L9, "(energy {-122} % by t = 1.5)", l9_rk4_first, ROUNDED, 0, R_ROUND, NULL },
     { L9, "(its energy down {122} % by t = 1.5)", l9_rk4_first_down, ROUNDED, 0, "the same drift, its sign said in words", NULL },
-    { L9, "the one at t ≈ {2.9} flings it out", l9_rk4_second_pass, ROUNDED, 0, "as below", NULL },
+    { L9, "the fourth, at t ≈ {2.9}, flings it out", l9_pass_out_t, ROUNDED, 0, "the pass after which the energy is positive: " R_PASS, NULL },
+    { L9, "the {fourth}, at t ≈ 2.9, flings it out", l9_pass_out, EXACT, 0, "passes counted as minima of r, the start the first", NULL },
+    { L9, "orbit (at t ≈ {1.9} and 2.55); the", l9_pass2_t, ROUNDED, 0, "the second pass: " R_PASS, NULL },
+    { L9, "orbit (at t ≈ 1.9 and {2.55}); the", l9_pass3_t, ROUNDED, 0, "the third pass: " R_PASS, NULL },
     { L9, "flings it out (up {1250} %, then constant", l9_rk4_drift, REL, 0.004, "three significant figures", NULL },
     { L9, "(up 1250 %, then {constant}: it has escaped)", l9_constant, ABS, 0.001, "as for \"constant\" below", NULL },
-    { L9, "the second, at t ≈ {2.9}, flings it away", l9_rk4_second_pass, ROUNDED, 0, "the time of the nearest approach after t = 1, to the text's digits", NULL },
-    { L9, "at its second close pass (t ≈ {2.9}) RK4", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
-    { L9, "close pass, at t ≈ {2.9}, lasts long", l9_rk4_second_pass, ROUNDED, 0, "as above", NULL },
+    { L9, "fourth, at t ≈ {2.9}, flings it away", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
+    { L9, "the {fourth}, at t ≈ 2.9, flings it away", l9_pass_out, EXACT, 0, "as above", NULL },
+    { L9, "tightening orbit (t ≈ {1.9}, 2.55); the", l9_pass2_t, ROUNDED, 0, "as above", NULL },
+    { L9, "tightening orbit (t ≈ 1.9, {2.55}); the", l9_pass3_t, ROUNDED, 0, "as above", NULL },
+    { L9, "at its {fourth} close pass (t ≈ 2.9) RK4", l9_pass_out, EXACT, 0, "as above", NULL },
+    { L9, "at its fourth close pass (t ≈ {2.9}) RK4", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ {1.9}, 2.55 and 2.9, last", l9_pass2_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ 1.9, {2.55} and 2.9, last", l9_pass3_t, ROUNDED, 0, "as above", NULL },
+    { L9, "passes, at t ≈ 1.9, 2.55 and {2.9}, last", l9_pass_out_t, ROUNDED, 0, "as above", NULL },
     { L9, "+1250 %, then {constant}: the planet has escaped", l9_constant, ABS, 0.001, "the drift moves less than 0.1 % of itself from t = 4 to two orbits", NULL },
     { L9, "@hint Press + three times: 0.1, 0.2, {0.4}.", l9_dt_plus3, EXACT, 0, "the step three presses of + give", NULL },
     { L9, "about {120} accepted, 50 rejected", l9_acc04, ABS, 10, "\"about 120\": within ten", NULL },
@@ -618,10 +680,18 @@ const claim sw_claims_b[] = {
     { L10, "A correct midpoint gives a ratio near 4, RK4 near {16}", l10_ratio_rk4, ABS, 2, "the lessons' tolerance for 16", NULL },
     { L10, "A first-order method shows {2.3}, then 2.1", l10_ratio_euler1, ROUNDED, 0, "the ratio the status line shows for euler, to the text's digits", NULL },
     { L10, "A first-order method shows 2.3, then {2.1}", l10_ratio_euler2, ROUNDED, 0, "as above, halving again", NULL },
-    { L10, "until the ratio settles near {2}: over the", l10_ratio_euler5, ABS, 0.1, "the fifth halving, from Δt = 0.00125", NULL },
-    { L10, "Euler's amplitude error grows like e^(ω²ΔtT/2) - 1", l10_ratio_at_end, REL, 0.01, "the ratio (e^x - 1)/(e^(x/2) - 1) at x = ω²ΔtT/2 = 1 against Euler's error at T, Δt 0.02 over 0.01", l10_ratio_formula },
-    { L10, "(it is {1} at Δt = 0.02)", l10_exponent, ABS, 1e-9, "ω²ΔtT/2 = 10·0.02·10/2, to rounding", NULL },
-    { L10, "over the {10} s run", l10_duration, EXACT, 0, "the spring's report time", NULL },
+    { L10, "until the ratio settles near {2}: Euler's", l10_ratio_euler5, ABS, 0.1, "the fifth halving, from Δt = 0.00125", NULL },
+    { L10, "Euler's amplitude error at time t grows like e^(ω²Δt·t/2) - 1", l10_ratio_at_end, REL, 0.01, "the ratio (e^x - 1)/(e^(x/2) - 1) at x = ω²ΔtT/2 = 1 against Euler's error at T, Δt 0.02 over 0.01", l10_ratio_formula },
+    { L10, "Euler's amplitude error at time t grows like e^(ω²Δt·t/2) - 1", l10_worst_ratio, REL, 0.01, "the same ratio at x = ω²Δt·t/2 for t where the largest error comes, against the largest errors' ratio", l10_worst_formula },
+    { L10, "The ratio shown is of the largest error over the 10 s run", l10_ratio_euler1, REL, 1e-9, "the message's ratio is the largest position errors' over the samples, recomputed here", l10_worst_ratio },
+    { L10, "over the {10} s run, which comes", l10_duration, EXACT, 0, "the spring's report time", NULL },
+    { L10, "which comes near t = {5} (exponent", l10_worst_time, ABS, 0.625, "the sample of the largest error, Δt 0.02: one sample spacing (T/16)", NULL },
+    { L10, "(exponent {0.5} at Δt = 0.02: the", l10_worst_exponent, ABS, 1e-9, "ω²Δt·t/2 = 10·0.02·5/2, to rounding", NULL },
+    { L10, "at Δt = 0.02: the formula gives {2.3})", l10_worst_formula, ROUNDED, 0, R_MATH, NULL },
+    { L10, "at t = {10} (exponent 1) the", l10_duration, EXACT, 0, "the spring's report time", NULL },
+    { L10, "(exponent {1}) the errors'", l10_exponent, ABS, 1e-9, "ω²ΔtT/2 = 10·0.02·10/2, to rounding", NULL },
+    { L10, "the errors' ratio is {2.6}, as", l10_ratio_at_end, ROUNDED, 0, "Euler's error at T, Δt 0.02 over 0.01, to the text's digits", NULL },
+    { L10, "ratio is {2.6}, as the formula gives too", l10_ratio_formula, ROUNDED, 0, R_MATH, NULL },
     { L10, "what does an error ratio of {2} say about the order?", cl_l2_ratio2, ABS, 0.3, "lesson 2's measurement, with the lessons' tolerance for 2", NULL },
     { L10, "midpoint and Heun agree to {rounding}", l10_spring_same, ATMOST, 0, "1e-12 over the report time", NULL },
     { L10, "Grade on the chain: on the one-dimensional spring", l10_chain_differ, ATLEAST, 0, "on the chain midpoint and Heun differ by more than check's tolerance", check_tolerance },

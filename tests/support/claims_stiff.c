@@ -208,7 +208,7 @@ const claim sw_claims_k[] = {
     { PERF, "(stiff-spring at rtol 1e-2, {36} steps a second against rk45's 600", rodas_steps, EXACT, 0, R_COUNT, NULL },
     { PERF, "(stiff-spring at rtol 1e-2, 36 steps a second against rk45's {600}", rk45_steps, ABS, 50, "\"600\": to the hundred", NULL },
     { PERF, "rodas4 spends {7} evaluations and 6 solves a step", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
-    { PERF, "where f depends on t; {6} on a particle system", rodas_particle_per_trial, EXACT, 0, "evaluations per trial step once under way", NULL },
+    { PERF, "∂f/∂t it takes; {6} on a particle system", rodas_particle_per_trial, EXACT, 0, "evaluations per trial step once under way", NULL },
     { README, "one Jacobian a step | {4} | 6 + 6 linear solves", rodas_order, EXACT, 0, "the method's order in the table", NULL },
     { README, "one Jacobian a step | 4 | {6} + 6 linear solves", rodas_particle_per_trial, EXACT, 0, "evaluations per trial step once under way on a particle system", NULL },
     { README, "one Jacobian a step | 4 | 6 + {6} linear solves", rodas_particle_solves, EXACT, 0, "solves per trial step once under way on a particle system", NULL },

@@ -1,0 +1,97 @@
+#!/bin/sh
+# e2e: long (run.sh starts it first)
+# An honest but slow plugin keeps its stability point (docs/grading.md,
+# "The stability point is decided"): in at most two runs of the spring
+# against the method's own measured limit, in a host of their own
+# on the grader's budget (4 x --cpu + 30 s). Before, the plugin's limit
+# was measured by a bisection of about 10^5 steps, which ran an honest RK4
+# taking 1-2 ms a step out of that budget: "stability: 0 of 1: stability
+# not measured: the plugin ran out of its CPU time (SIGXCPU) (the
+# grader's budget ...)", a point lost to the grader's own limit.
+# A cheater that is fast on its graded run and slow only on the spring
+# (which it can tell apart), where it runs another method, still loses
+# the point: it ran out of the grader's budget slower a step than its
+# graded run went, which is its own doing.
+# CPU time is counted, not wall time, so the machine's load changes
+# nothing; the slowness is calibrated on this machine first.
+. "$(dirname "$0")/lib.sh"
+needs_jail
+cheat="$ROOT/tests/data/cheat"
+
+# SPIN rounds of busy work in each step of an honest RK4, as one .c
+honest() {
+    printf '#define SPIN %s\n' "$1"
+    cat "$cheat/common.h"
+    cat <<'C'
+static int slow(sw_ode *ode, double t, double *y, double h, double *work)
+{
+    for (volatile long i = 0; i < SPIN; i++) {
+    }
+    return rk4(ode, t, y, h, work);
+}
+CHEATER("slow-rk4", slow)
+C
+}
+
+# RK4 on the graded chain; on the spring (one particle, dim 4) SPIN rounds a step and
+# no motion at all: stable at every step, a limit unlike RK4's
+cheater() {
+    printf '#define SPIN %s\n' "$1"
+    cat "$cheat/common.h"
+    cat <<'C'
+static int sly(sw_ode *ode, double t, double *y, double h, double *work)
+{
+    if (ode->dim != 4)
+        return rk4(ode, t, y, h, work);
+    for (volatile long i = 0; i < SPIN; i++) {
+    }
+    return 0;
+}
+CHEATER("sly-rk4", sly)
+C
+}
+
+# the children's CPU time (user + system) in a file `times` wrote, in ms
+ms() { awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d\n", (u[1] * 60 + u[2] + s[1] * 60 + s[2]) * 1000 }' "$1"; }
+
+# Calibrate: 200 steps' spin (the graded run's) to 0.2 s of CPU or more,
+# doubled from 1e5 rounds a step: 1-2 ms a step, so the old bisection
+# (about 10^5 steps) takes well over the grader's 38 s, the two runs
+# (at most 1 600 steps) a few seconds.
+spin=100000
+while :; do
+    printf '#define SPIN %s\nint main(void)\n{\n    for (int s = 0; s < 200; s++)\n        for (volatile long i = 0; i < SPIN; i++) {\n        }\n    return 0;\n}\n' "$spin" > cal.c
+    cc -std=c11 -O2 -o cal cal.c || fail "cannot build the calibration"
+    times > t0.txt
+    ./cal
+    times > t1.txt
+    took=$(( $(ms t1.txt) - $(ms t0.txt) ))
+    [ "$took" -ge 200 ] && break
+    [ "$spin" -lt 1000000000 ] || fail "200 steps of $spin rounds take only $took ms"
+    spin=$((spin * 2))
+done
+
+mkdir class
+honest $spin > class/slow.c
+# 30 times slower a step on the spring: out of 38 s within the two runs
+cheater $((spin * 30)) > class/sly.c
+cat > hw.txt <<'A'
+# stepwise assignment 1
+# kind: plugin
+# scene: chain
+# integrator: rk4
+# dt: 0.01
+# steps: 200
+# points x* y*: 1
+# points stability: 1
+A
+"$SW" grade --assignment hw.txt --cpu 2 -j 2 --csv g.csv --feedback fb class > g.out 2>&1; rc=$?
+[ $rc -le 1 ] || fail "grade exited $rc (200 steps $took ms): $(cat g.out)"
+score() { grep "^$1,class/$1.c," g.csv | awk -F, '{ print $(NF-2) "/" $(NF-1) }'; }
+[ "$(score slow)" = 2/2 ] || fail "the slow honest RK4 lost points (200 steps $took ms): $(cat fb/slow.txt)"
+grep -q "stability: 1 of 1" fb/slow.txt || fail "no stability point: $(cat fb/slow.txt)"
+grep -q "stability limit within 5 % of rk4's" fb/slow.txt || fail "the decision's words: $(cat fb/slow.txt)"
+[ "$(score sly)" = 1/2 ] || fail "the cheater scored $(score sly): $(cat fb/sly.txt)"
+grep -q "stability: 0 of 1: stability not measured: the plugin ran out of the grader's CPU budget" fb/sly.txt ||
+    fail "the cheater's stability: $(cat fb/sly.txt)"
+exit 0

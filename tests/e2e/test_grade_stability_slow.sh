@@ -9,7 +9,7 @@
 # not measured: the plugin ran out of its CPU time (SIGXCPU) (the
 # grader's budget ...)", a point lost to the grader's own limit.
 # A cheater that is fast on its graded run and slow only on the spring
-# (which it can tell apart), where it runs another method, still loses
+# (which it can tell apart), where it does not move at all, still loses
 # the point: it ran out of the grader's budget slower a step than its
 # graded run went, which is its own doing.
 # CPU time is counted, not wall time, so the machine's load changes
@@ -73,8 +73,9 @@ done
 
 mkdir class
 honest $spin > class/slow.c
-# 30 times slower a step on the spring: out of 38 s within the two runs
-cheater $((spin * 30)) > class/sly.c
+# 200 times slower a step on the spring (0.2-0.4 s): out of the grader's
+# 38 s within the first of the two runs
+cheater $((spin * 200)) > class/sly.c
 cat > hw.txt <<'A'
 # stepwise assignment 1
 # kind: plugin
@@ -92,6 +93,10 @@ score() { grep "^$1,class/$1.c," g.csv | awk -F, '{ print $(NF-2) "/" $(NF-1) }'
 grep -q "stability: 1 of 1" fb/slow.txt || fail "no stability point: $(cat fb/slow.txt)"
 grep -q "stability limit within 5 % of rk4's" fb/slow.txt || fail "the decision's words: $(cat fb/slow.txt)"
 [ "$(score sly)" = 1/2 ] || fail "the cheater scored $(score sly): $(cat fb/sly.txt)"
-grep -q "stability: 0 of 1: stability not measured: the plugin ran out of the grader's CPU budget" fb/sly.txt ||
-    fail "the cheater's stability: $(cat fb/sly.txt)"
+# its point is lost to its own slowness ("ran out of the grader's CPU
+# budget ... slower a step than its graded run"), or, where a host that
+# died in steps read ahead is started afresh and the runs end, to its
+# limit ("stability limit above rk4's")
+grep -q "stability: 0 of 1: stability \(not measured: the plugin ran out of the grader's CPU budget\|limit above rk4's\)" \
+    fb/sly.txt || fail "the cheater's stability: $(cat fb/sly.txt)"
 exit 0

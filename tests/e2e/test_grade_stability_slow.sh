@@ -16,28 +16,13 @@
 # nothing; the slowness is calibrated on this machine first.
 . "$(dirname "$0")/lib.sh"
 needs_jail
-cheat="$ROOT/tests/data/cheat"
+. "$(dirname "$0")/slow_rk4.sh"
 
-# SPIN rounds of busy work in each step of an honest RK4, as one .c
-honest() {
-    printf '#define SPIN %s\n' "$1"
-    cat "$cheat/common.h"
-    cat <<'C'
-static int slow(sw_ode *ode, double t, double *y, double h, double *work)
-{
-    for (volatile long i = 0; i < SPIN; i++) {
-    }
-    return rk4(ode, t, y, h, work);
-}
-CHEATER("slow-rk4", slow)
-C
-}
-
-# RK4 on the graded chain; on the spring (one particle, dim 4) SPIN rounds a step and
-# no motion at all: stable at every step, a limit unlike RK4's
+# RK4 on the graded chain; on the spring (one particle, dim 4) SPIN
+# rounds a step and no motion at all: stable at every step, unlike RK4
 cheater() {
     printf '#define SPIN %s\n' "$1"
-    cat "$cheat/common.h"
+    cat "$ROOT/tests/data/cheat/common.h"
     cat <<'C'
 static int sly(sw_ode *ode, double t, double *y, double h, double *work)
 {
@@ -51,28 +36,12 @@ CHEATER("sly-rk4", sly)
 C
 }
 
-# the children's CPU time (user + system) in a file `times` wrote, in ms
-ms() { awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d\n", (u[1] * 60 + u[2] + s[1] * 60 + s[2]) * 1000 }' "$1"; }
-
-# Calibrate: 200 steps' spin (the graded run's) to 0.2 s of CPU or more,
-# doubled from 1e5 rounds a step: 1-2 ms a step, so the old bisection
-# (about 10^5 steps) takes well over the grader's 38 s, the two runs
-# (at most 1 600 steps) a few seconds.
-spin=100000
-while :; do
-    printf '#define SPIN %s\nint main(void)\n{\n    for (int s = 0; s < 200; s++)\n        for (volatile long i = 0; i < SPIN; i++) {\n        }\n    return 0;\n}\n' "$spin" > cal.c
-    cc -std=c11 -O2 -o cal cal.c || fail "cannot build the calibration"
-    times > t0.txt
-    ./cal
-    times > t1.txt
-    took=$(( $(ms t1.txt) - $(ms t0.txt) ))
-    [ "$took" -ge 200 ] && break
-    [ "$spin" -lt 1000000000 ] || fail "200 steps of $spin rounds take only $took ms"
-    spin=$((spin * 2))
-done
+# 1-2 ms a step: the old bisection (about 10^5 steps) takes well over
+# the grader's 38 s, the two runs (at most 1 600 steps) a few seconds
+calibrate_spin
 
 mkdir class
-honest $spin > class/slow.c
+slow_rk4 $spin > class/slow.c
 # 200 times slower a step on the spring (0.2-0.4 s): out of the grader's
 # 38 s within the first of the two runs
 cheater $((spin * 200)) > class/sly.c

@@ -278,6 +278,11 @@ static void score_measure(const sw_points *p, const sw_score_facts *f, sw_score_
         give(c, 0, "not measured: %s", f->fault, NULL);
         return;
     }
+    if (!order && f->stability_decided) {
+        /* decided in two runs against the method's limit: the note says how */
+        give(c, f->stability_given, "%s", f->measure_note, NULL);
+        return;
+    }
     if (isnan(got) || isnan(want)) {
         /* the verdict's note names what was not measured, and why */
         give(c, 0, "%s", f->measure_note && *f->measure_note ? f->measure_note
@@ -288,7 +293,7 @@ static void score_measure(const sw_points *p, const sw_score_facts *f, sw_score_
      * (both unbounded, or both none, match). */
     int pass = order ? fabs(got - want) < SW_POINTS_ORDER_MARGIN
                      : (isinf(got) && isinf(want)) || (got == 0 && want == 0) ||
-                           (isfinite(got) && isfinite(want) && fabs(got - want) <= 0.05 * fabs(want));
+                           (isfinite(got) && isfinite(want) && fabs(got - want) <= SW_POINTS_STABILITY_MARGIN * fabs(want));
     if (order)
         give(c, pass, pass ? "measured order %s, the method's %s"
                            : "measured order %s; the method's is %s", g, w);

@@ -15,6 +15,8 @@
  * point; and the stability limit, measured on the spring, is measured only
  * for a plugin whose order on its graded run is the method's). */
 #define SW_POINTS_ORDER_MARGIN 0.5
+/* A stability limit counts as the method's within this fraction of it. */
+#define SW_POINTS_STABILITY_MARGIN 0.05
 
 #define SW_POINTS_MAX 12
 #define SW_POINTS_LIMIT 1000.0    /* the most one check may give */
@@ -99,6 +101,8 @@ typedef struct sw_score_facts {
     const char *explanation;      /* the explainer's sentence, or NULL */
     double order, expected_order; /* NaN: not measured */
     double stability, expected_stability;
+    int stability_decided;        /* the stability point decided without a figure (the note says */
+    int stability_given;          /* how), and whether it is given */
     const char *measure_note;
 } sw_score_facts;
 

@@ -9,7 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grade/points.h"
 #include "measure/measure.h"
+#include "plugin/plugin.h"
 #include "stepwise/stepwise.h"
 
 void sw_check_request_init(sw_check_request *req)
@@ -219,6 +221,15 @@ static void free_tol(tol_arrays *t)
 
 /* ---- points ------------------------------------------------------------------ */
 
+/* Whether the assignment pays for the stability limit. */
+static int pays_stability(const sw_assignment *a)
+{
+    for (int i = 0; a && i < a->points.n; i++)
+        if (a->points.items[i].kind == SW_POINTS_STABILITY)
+            return 1;
+    return 0;
+}
+
 /* The assignment's checks, scored from what the check found. */
 static void score(sw_verdict *v, const sw_check_request *req, const sw_system *sys,
                   const tol_arrays *t, const sw_integrator *ref)
@@ -240,20 +251,10 @@ static void score(sw_verdict *v, const sw_check_request *req, const sw_system *s
     int rows_differ = v->res.rows_expected != v->res.rows_got || (t && t->col_failed[0] > 0);
     if (rows_differ && v->res.have_first && v->res.first.column <= 0)
         snprintf(rows, sizeof rows, "%s", v->first);
-    double want_stab = NAN;
-    if (ref && req->plugin && v->have_measure) {
-        /* The method measured as the plugin was (an honest symplectic
-         * Euler or Verlet gets the figure of its method, not 15 % less) */
-        for (int i = 0; i < a->points.n; i++)
-            if (a->points.items[i].kind == SW_POINTS_STABILITY) {
-                int kind;
-                char why[SW_ERRLEN];
-                if (sw_measure_stability_as_plugin(ref, &want_stab, &kind, why, sizeof why) == SW_OK)
-                    want_stab = kind == 1 ? 0.0 : kind == 2 ? INFINITY : want_stab;
-                else
-                    want_stab = NAN;
-            }
-    }
+    /* the method's limit measured as the plugin's was (an honest
+     * symplectic Euler or Verlet gets the figure of its method, not 15 %
+     * less): measure() put it beside the plugin's */
+    double want_stab = ref && req->plugin && v->have_measure ? v->ref_stability : NAN;
     sw_score_facts f = {
         .is_plugin = req->plugin != NULL,
         .usable = sys != NULL && t != NULL,
@@ -274,6 +275,8 @@ static void score(sw_verdict *v, const sw_check_request *req, const sw_system *s
         .expected_order = ref ? (double)ref->order : NAN,
         .stability = v->have_measure ? v->stability : NAN,
         .expected_stability = want_stab,
+        .stability_decided = v->stability_decided,
+        .stability_given = v->stability_given,
         .measure_note = v->measure_note,
     };
     sw_points_score(&a->points, &f, &v->score);
@@ -521,12 +524,76 @@ static int order_on_spring(sw_verdict *v, const sw_integrator *plugin, const sw_
     return 1;
 }
 
+/* The stability point without the plugin's own figure: whether its limit
+ * is the method's within SW_POINTS_STABILITY_MARGIN, in at most two runs
+ * of it (sw_measure_stability_match) in a host of their own, on a fresh
+ * grader's budget. The figure's bisection (about 10^5 steps of RK4)
+ * ran a slow honest RK4 out of that budget. */
+static void decide_stability(sw_verdict *v, const sw_integrator *plugin, const sw_integrator *ref,
+                             long graded_steps)
+{
+    sw_stability_match mt;
+    char why[SW_ERRLEN];
+    double rel = SW_POINTS_STABILITY_MARGIN, pct = 100 * rel;
+    size_t n = sizeof v->measure_note;
+    /* a host afresh, its budget whole: the order's sweep used the last one's */
+    sw_plugin_grader_runs(0);
+    sw_plugin_grader_runs(1);
+    if (sw_measure_stability_match(plugin, ref, rel, &mt, why, sizeof why) != SW_OK) {
+        /* Out of the grader's budget B after k steps, where the graded run
+         * took N steps within --cpu: at the graded run's pace or faster
+         * (k·cpu >= N·B) the plugin is slow everywhere, and the grader's
+         * budget, not the plugin, is short: the point is not counted
+         * against it. Slower on these runs than on its graded run, it is
+         * its own doing (a plugin can tell the spring apart). */
+        double cpu = sw_plugin_cpu_limit();
+        if (mt.budget && cpu > 0 && (double)mt.steps * cpu >= (double)graded_steps * SW_GRADER_CPU(cpu)) {
+            v->stability_decided = v->stability_given = 1;
+            snprintf(v->measure_note, n, "stability not measured: the grader could not finish measuring your "
+                     "method's stability within its own budget (4 x --cpu + 30 s of CPU time, never yours); "
+                     "your graded values and your order match %s's, so this point is not counted against you",
+                     ref->name);
+        } else if (mt.budget)
+            snprintf(v->measure_note, n, "stability not measured: the plugin ran out of the grader's CPU "
+                     "budget (4 x --cpu + 30 s) in %ld steps of the spring, slower a step than its graded run "
+                     "(%ld steps within --cpu): a method that is slower only where it is measured gets no "
+                     "stability point", mt.steps, graded_steps);
+        else
+            snprintf(v->measure_note, n, "stability not measured: %.200s", why);
+        return;
+    }
+    v->ref_stability = mt.limit;
+    v->stability_decided = 1;
+    v->stability_given = mt.match;
+    const char *r = ref->name;
+    if (mt.kind == 1 && mt.match)
+        snprintf(v->measure_note, n, "stability: none, as %s's (unstable even at omega*dt = %.4g)", r, mt.outside);
+    else if (mt.kind == 1)
+        snprintf(v->measure_note, n, "stability: stable at omega*dt = %.4g, where %s is not (it has no stability "
+                 "limit)", mt.outside, r);
+    else if (mt.kind == 2 && mt.match)
+        snprintf(v->measure_note, n, "stability: unbounded, as %s's (stable at omega*dt = %.4g)", r, mt.inside);
+    else if (mt.kind == 2)
+        snprintf(v->measure_note, n, "stability: unstable at omega*dt = %.4g, where %s is stable (it has no "
+                 "step-size limit)", mt.inside, r);
+    else if (mt.match)
+        snprintf(v->measure_note, n, "stability limit within %g %% of %s's (omega*dt = %.4g, measured the same "
+                 "way): stable at %.4g, unstable at %.4g", pct, r, mt.limit, mt.inside, mt.outside);
+    else if (mt.held_inside == 0)
+        snprintf(v->measure_note, n, "stability limit below %s's: unstable at omega*dt = %.4g, %g %% under its "
+                 "limit %.4g", r, mt.inside, pct, mt.limit);
+    else
+        snprintf(v->measure_note, n, "stability limit above %s's: stable at omega*dt = %.4g, %g %% over its "
+                 "limit %.4g", r, mt.outside, pct, mt.limit);
+}
+
 /* The order on the graded run itself (the probe), the stability limit on
  * the spring once that order is the reference's: the spring is a system
  * of its own, which a plugin could tell from its graded run
- * (docs/grading.md, "What a measured figure stands on"). */
+ * (docs/grading.md, "What a measured figure stands on"); where the
+ * assignment pays for the limit, the point is decided instead. */
 static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integrator *ref,
-                    const sw_sim *graded, const sw_trace_spec *spec)
+                    const sw_sim *graded, const sw_trace_spec *spec, int decide)
 {
     v->have_measure = 1;
     v->claimed_order = plugin->order;
@@ -567,6 +634,10 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
         snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: the limit is measured on "
                  "a spring of its own, a system a plugin can tell apart, and counts only where the graded "
                  "values match");
+        return;
+    }
+    if (decide) {
+        decide_stability(v, plugin, ref, graded->steps);
         return;
     }
     double wdt;
@@ -643,7 +714,7 @@ static sw_verdict_status check_plugin(const sw_check_request *req, sw_verdict *v
          * the grader's own work, on its budget (sw_plugin_grader_runs) */
         sw_plugin_grader_runs(1);
         if (req->measure && v->got_end.fault == SW_PF_NONE)
-            measure(v, req->plugin, ref, &got_sim, &spec);
+            measure(v, req->plugin, ref, &got_sim, &spec, pays_stability(a));
         v->limit = v->got_end.fault == SW_PF_LIMIT || v->got_end.fault == SW_PF_TIMEOUT;
         /* The same "why" as a trace gets: the plugin's first rows, run
          * afresh, against the usual mistakes. A crash, an overrun or a

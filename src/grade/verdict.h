@@ -84,6 +84,9 @@ typedef struct sw_verdict {
     double stability;                  /* ω·dt limit on the undamped spring; NaN: none */
     int stability_kind;
     double ref_stability;              /* the method's own, measured the same way; NaN: not */
+    int stability_decided;             /* an assignment's stability point, decided without a figure
+                                        * (sw_measure_stability_match; measure_note says how) */
+    int stability_given;               /* ... and given */
     char measure_note[SW_ERRLEN];
     long failing_step;                 /* the first failing step; -1 none */
     int limit;                         /* the plugin ran out of a resource limit */

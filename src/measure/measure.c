@@ -263,6 +263,30 @@ int sw_measure_stability_as_plugin(const sw_integrator *m, double *omega_dt, int
     return sw_measure_stability(&as_plugin, omega_dt, kind, err, errlen);
 }
 
+/* Lighter than `stability`'s defaults (a figure for feedback, from a
+ * plugin that costs a round trip per step): 20 periods per probe,
+ * bisection to 0.1%. */
+static void light_config(sw_stability_config *cfg)
+{
+    sw_stability_config_default(cfg);
+    cfg->periods = 20;
+    cfg->rel_tol = 1e-3;
+}
+
+/* A failure of m's in its last run, as an error: 0 none, else 1 with err
+ * filled, and *limit (when not NULL) 1 where it was a CPU limit. */
+static int plugin_failed(const sw_integrator *m, int *limit, char *err, size_t errlen)
+{
+    char why[SW_ERRLEN];
+    sw_plugin_fault f = sw_plugin_last_failure(m, why, sizeof why);
+    if (limit)
+        *limit = f == SW_PF_LIMIT;
+    if (f == SW_PF_NONE)
+        return 0;
+    snprintf(err, errlen, "the plugin %s", why);
+    return 1;
+}
+
 int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, char *err,
                          size_t errlen)
 {
@@ -272,27 +296,86 @@ int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, ch
         snprintf(err, errlen, "no spring scene to measure on");
         return SW_EINVAL;
     }
-    /* Lighter than `stability`'s defaults (a figure for feedback, from a
-     * plugin that costs a round trip per step): 20 periods per probe,
-     * bisection to 0.1%. */
     sw_stability_config cfg;
-    sw_stability_config_default(&cfg);
-    cfg.periods = 20;
-    cfg.rel_tol = 1e-3;
+    light_config(&cfg);
     sw_stability_result res;
     int rc = sw_stability_find(sc, p, m, &cfg, &res, err, errlen);
     if (rc != SW_OK)
         return rc;
-    char why[SW_ERRLEN];
-    if (sw_plugin_last_failure(m, why, sizeof why) != SW_PF_NONE) {
-        snprintf(err, errlen, "the plugin %s", why);
+    if (plugin_failed(m, NULL, err, errlen))
         return SW_EINVAL;
-    }
     if (!res.measured) {
         snprintf(err, errlen, "%s", res.why[0] ? res.why : "growth cannot be measured here");
         return SW_EINVAL;
     }
     *kind = (int)res.kind;
     *omega_dt = res.dt * res.stiff; /* the undamped spring's only mode: |λ| = ω = √(k/m) */
+    return SW_OK;
+}
+
+/* One probe of m at step dt over cfg's horizon, its steps added to out's:
+ * 1 held (stable or decayed), 0 did not, -1 m failed (err filled,
+ * out->budget 1 where it was its CPU time). */
+static int holds(const sw_scene *sc, const double *p, const sw_integrator *m, double dt,
+                 const sw_stability_config *cfg, sw_stability_match *out, char *err, size_t errlen)
+{
+    sw_stability_probe pr;
+    if (sw_stability_probe_run(sc, p, m, dt, cfg, &pr, err, errlen) != SW_OK)
+        return -1;
+    out->steps += pr.steps;
+    if (plugin_failed(m, &out->budget, err, errlen))
+        return -1;
+    return pr.verdict == SW_PROBE_STABLE || pr.verdict == SW_PROBE_DECAYED;
+}
+
+int sw_measure_stability_match(const sw_integrator *m, const sw_integrator *ref, double rel,
+                               sw_stability_match *out, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    out->limit = out->inside = out->outside = NAN;
+    out->held_inside = out->held_outside = -1;
+    double p[SW_MAX_PARAMS];
+    const sw_scene *sc = spring_undamped(p);
+    if (!sc) {
+        snprintf(err, errlen, "no spring scene to measure on");
+        return SW_EINVAL;
+    }
+    /* the method's limit, measured as a plugin is (its flags but
+     * SW_SYMPLECTIC: sw_measure_stability_as_plugin) */
+    sw_integrator as_plugin = *ref;
+    as_plugin.flags &= ~SW_SYMPLECTIC;
+    sw_stability_config cfg;
+    light_config(&cfg);
+    sw_stability_result res;
+    int rc = sw_stability_find(sc, p, &as_plugin, &cfg, &res, err, errlen);
+    if (rc != SW_OK)
+        return rc;
+    if (!res.measured) {
+        snprintf(err, errlen, "%s", res.why[0] ? res.why : "growth cannot be measured here");
+        return SW_EINVAL;
+    }
+    out->kind = (int)res.kind;
+    double w = res.stiff;
+    out->limit = res.kind == SW_STAB_NONE ? 0.0 : res.kind == SW_STAB_UNBOUNDED ? INFINITY : res.dt * w;
+    /* m's probes over the horizon that set the method's limit: a limit
+     * within rel of it holds at (1 - rel) of it and not at (1 + rel);
+     * none, as the method's, fails at its smallest step; unbounded holds
+     * at its largest */
+    cfg.horizon = res.horizon;
+    double in = res.kind == SW_STAB_LIMIT ? res.dt * (1 - rel) : res.kind == SW_STAB_UNBOUNDED ? res.dt : NAN;
+    double outside = res.kind == SW_STAB_LIMIT ? res.dt * (1 + rel) : res.kind == SW_STAB_NONE ? res.dt : NAN;
+    if (!isnan(in)) {
+        out->inside = in * w;
+        out->held_inside = holds(sc, p, m, in, &cfg, out, err, errlen);
+        if (out->held_inside < 0)
+            return SW_EINVAL;
+    }
+    if (!isnan(outside) && out->held_inside != 0) {
+        out->outside = outside * w;
+        out->held_outside = holds(sc, p, m, outside, &cfg, out, err, errlen);
+        if (out->held_outside < 0)
+            return SW_EINVAL;
+    }
+    out->match = out->held_inside != 0 && out->held_outside != 1;
     return SW_OK;
 }

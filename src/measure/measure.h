@@ -93,4 +93,24 @@ int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, ch
 int sw_measure_stability_as_plugin(const sw_integrator *m, double *omega_dt, int *kind, char *err,
                                    size_t errlen);
 
+/* Whether m's stability limit on the spring is ref's (measured as a
+ * plugin, as sw_measure_stability_as_plugin) within rel of it, decided
+ * in at most two runs of m whatever the precision of the limit's own
+ * bisection: m holds at (1 - rel) × ref's limit and not at (1 + rel) ×
+ * it, over the horizon that set ref's (ref with none: m does not hold at
+ * ref's smallest step; unbounded: m holds at ref's largest). The
+ * stability point's decision (grade/verdict.c). */
+typedef struct sw_stability_match {
+    int kind;             /* ref's sw_stab_kind */
+    double limit;         /* ref's ω·dt: 0 none, ∞ unbounded */
+    double inside, outside; /* the ω·dt where m ran (NaN: not run) */
+    int held_inside, held_outside; /* 1 m held there, 0 did not, -1 not run */
+    int match;            /* 1: m's limit is ref's within rel */
+    long steps;           /* m's steps in all, a failing run's to where it failed */
+    int budget;           /* the status: m ran out of its CPU time (SIGXCPU) */
+} sw_stability_match;
+/* 0, or a status with err filled (m failed: the plugin's words). */
+int sw_measure_stability_match(const sw_integrator *m, const sw_integrator *ref, double rel,
+                               sw_stability_match *out, char *err, size_t errlen);
+
 #endif

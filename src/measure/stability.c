@@ -51,9 +51,11 @@ static double start_stiffness(const sw_scene *sc, const double *p, char *err, si
 
 /* Simulated time per probe: `periods` periods of the stiffest motion (report
  * times when there is none), and at least `reports` report times; with the
- * defaults, the truth module's horizon. */
+ * defaults, the truth module's horizon. Or the config's own horizon. */
 static double probe_time(const sw_scene *sc, double stiff, const sw_stability_config *c)
 {
+    if (c->horizon > 0)
+        return c->horizon;
     double unit = stiff > 0 && isfinite(stiff) ? TWO_PI / stiff : sc->duration;
     return fmax(c->periods * unit, c->reports * sc->duration);
 }

@@ -50,6 +50,7 @@ typedef struct sw_stability_config {
     double low;      /* smallest |λ|·Δt probed (Δt = low·(scene dt) when |λ| = 0) */
     double high;     /* largest |λ|·Δt probed (capped at SW_DT_MAX) */
     double rel_tol;  /* bisection stops once dt_unstable / dt - 1 < rel_tol */
+    double horizon;  /* > 0: simulated time per probe, instead of periods and reports */
     int samples;     /* spectra along the true solution for the theory */
 } sw_stability_config;
 

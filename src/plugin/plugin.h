@@ -62,6 +62,8 @@ void sw_plugin_set_limits(const struct sw_limits *lim);
  * is left of the submission's. Each call ends the hosts running. */
 #define SW_GRADER_CPU(cpu) (4 * (cpu) + 30)
 void sw_plugin_grader_runs(int on);
+/* The submission's CPU-time limit set (--cpu, seconds); 0 none. */
+double sw_plugin_cpu_limit(void);
 /* Every plugin's host ends now (each starts afresh at its next step):
  * nothing a plugin keeps in its process passes to the runs after. */
 void sw_plugin_hosts_end(void);

@@ -70,6 +70,8 @@ void sw_plugin_limits(sw_limits *lim)
 
 int sw_plugin_grader_open(void) { return grader_open; }
 
+double sw_plugin_cpu_limit(void) { return limits.cpu_seconds; }
+
 void sw_plugin_set_timeout(double seconds)
 {
     if (seconds > 0 && isfinite(seconds))

@@ -496,7 +496,7 @@ static int order_on_spring(sw_verdict *v, const sw_integrator *plugin, const sw_
     double ref_order;
     char rwhy[SW_ERRLEN];
     if (sw_measure_order_on(ref, &as_ref, &ref_order, NULL, rwhy, sizeof rwhy) == SW_OK) {
-        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", why);
+        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.540s", why);
         return 0;
     }
     if (v->status != SW_VERDICT_PASS) {
@@ -514,10 +514,10 @@ static int order_on_spring(sw_verdict *v, const sw_integrator *plugin, const sw_
                  ref->name);
         return 0;
     }
-    char swhy[SW_ERRLEN];
+    char swhy[600];
     if (sw_measure_order(plugin, &v->order, NULL, swhy, sizeof swhy) != SW_OK) {
         v->order = NAN;
-        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.200s", swhy);
+        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: %.540s", swhy);
         return 0;
     }
     v->order_on_spring = 1;
@@ -533,7 +533,7 @@ static void decide_stability(sw_verdict *v, const sw_integrator *plugin, const s
                              long graded_steps)
 {
     sw_stability_match mt;
-    char why[SW_ERRLEN];
+    char why[600];
     double rel = SW_POINTS_STABILITY_MARGIN, pct = 100 * rel;
     size_t n = sizeof v->measure_note;
     /* a host afresh, its budget whole: the order's sweep used the last one's */
@@ -559,7 +559,7 @@ static void decide_stability(sw_verdict *v, const sw_integrator *plugin, const s
                      "(%ld steps within --cpu): a method that is slower only where it is measured gets no "
                      "stability point", mt.steps, graded_steps);
         else
-            snprintf(v->measure_note, n, "stability not measured: %.200s", why);
+            snprintf(v->measure_note, n, "stability not measured: %.540s", why);
         return;
     }
     v->ref_stability = mt.limit;
@@ -598,7 +598,7 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
     v->have_measure = 1;
     v->claimed_order = plugin->order;
     v->order = v->stability = NAN;
-    char why[SW_ERRLEN];
+    char why[600];
     int whole = 0;
     sw_measure_probe pr = { .scene = graded->sys.scene, .p = graded->sys.p, .dt = graded->dt,
                             .stop_at = spec->steps > 0 ? 0.0 : spec->until,

@@ -87,7 +87,7 @@ typedef struct sw_verdict {
     int stability_decided;             /* an assignment's stability point, decided without a figure
                                         * (sw_measure_stability_match; measure_note says how) */
     int stability_given;               /* ... and given */
-    char measure_note[SW_ERRLEN];
+    char measure_note[600];
     long failing_step;                 /* the first failing step; -1 none */
     int limit;                         /* the plugin ran out of a resource limit */
     char warning[160];                 /* e.g. extra columns ignored; "" none */

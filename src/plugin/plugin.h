@@ -57,9 +57,10 @@ void sw_plugin_set_limits(const struct sw_limits *lim);
 
 /* The grader's measuring runs (the order, the stability limit): between
  * sw_plugin_grader_runs(1) and (0) every plugin's host is one of their
- * own, started afresh on the grader's budget (SW_GRADER_CPU of the
- * limits' CPU time), and the CPU time it used is never counted in what
- * is left of the submission's. Each call ends the hosts running. */
+ * own, on the grader's budget (SW_GRADER_CPU of the limits' CPU time,
+ * for all of them together: a host started again gets what is left), and
+ * the CPU time they used is never counted in what is left of the
+ * submission's. Each call ends the hosts running. */
 #define SW_GRADER_CPU(cpu) (4 * (cpu) + 30)
 void sw_plugin_grader_runs(int on);
 /* The submission's CPU-time limit set (--cpu, seconds); 0 none. */

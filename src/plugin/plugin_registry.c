@@ -57,7 +57,11 @@ void sw_plugin_limits(sw_limits *lim)
 {
     *lim = limits;
     if (limits.cpu_seconds > 0 && grader_open) {
-        lim->cpu_seconds = SW_GRADER_CPU(limits.cpu_seconds);
+        /* What is left of the grader's budget: a host restarted within its
+         * measuring runs (one that died computing steps nobody asked for)
+         * does not start a budget afresh. */
+        double left = SW_GRADER_CPU(limits.cpu_seconds) - (children_cpu() - grader_from);
+        lim->cpu_seconds = left > 1 ? left : 1;
     } else if (limits.cpu_seconds > 0) {
         /* The submission's own processes only (its builds and hosts, each
          * in this process's children's account once reaped): the

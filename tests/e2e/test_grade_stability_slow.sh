@@ -63,9 +63,9 @@ grep -q "stability: 1 of 1" fb/slow.txt || fail "no stability point: $(cat fb/sl
 grep -q "stability limit within 5 % of rk4's" fb/slow.txt || fail "the decision's words: $(cat fb/slow.txt)"
 [ "$(score sly)" = 1/2 ] || fail "the cheater scored $(score sly): $(cat fb/sly.txt)"
 # its point is lost to its own slowness ("ran out of the grader's CPU
-# budget ... slower a step than its graded run"), or, where a host that
-# died in steps read ahead is started afresh and the runs end, to its
-# limit ("stability limit above rk4's")
-grep -q "stability: 0 of 1: stability \(not measured: the plugin ran out of the grader's CPU budget\|limit above rk4's\)" \
+# budget ... slower a step than its graded run"): the budget holds for
+# all the grader's hosts together (a host that died in steps read ahead
+# and was started again once got a budget afresh, and the runs ended)
+grep -q "stability: 0 of 1: stability not measured: the plugin ran out of the grader's CPU budget" \
     fb/sly.txt || fail "the cheater's stability: $(cat fb/sly.txt)"
 exit 0

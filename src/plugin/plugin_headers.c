@@ -61,7 +61,7 @@ int sw_headers_find(const char *src, int shared, sw_headers *h, char *err, size_
             h->sources++;
         else if (header_name(e->d_name) && regular(h->dir, e->d_name)) {
             if (found < SW_HEADERS_MAX)
-                snprintf(h->name[found], SW_HEADER_NAME_MAX, "%s", e->d_name);
+                snprintf(h->name[found], SW_HEADER_NAME_MAX, "%.*s", SW_HEADER_NAME_MAX - 1, e->d_name);
             found++;
         }
     }

@@ -67,9 +67,11 @@ int sw_cli_events(const char *text, sw_events_mode *out);
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */
 int sw_cli_add_set(sw_run_opts *o, const char *assignment);
-/* Load a --plugin shared object (or C source, built first) and register
- * its integrator; the plugin runs in child processes (plugin/plugin.h). */
-int sw_cli_plugin(const char *path);
+/* Load a plugin's shared object (or C source, built first) and register
+ * its integrator; the plugin runs in child processes (plugin/plugin.h).
+ * flag: what the user typed before the path ("--plugin"), which starts
+ * each error message, or "" where the path was the command's argument. */
+int sw_cli_plugin(const char *flag, const char *path);
 int sw_cmd_grade(int argc, char **argv);
 /* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
 int sw_cmd_autograder(int argc, char **argv);

@@ -320,11 +320,7 @@ int grade_worker(void *ctx, int in, int out)
         rec.part = lo;
     }
     if (rc != SW_OK) {
-        /* the build's and the loader's words name the command line's flag,
-         * which a student never typed: the row names the file alone */
-        const char *flag = "--plugin ";
-        send_unchecked(out, h, SW_VERDICT_ERROR, job->plugin, "",
-                       strncmp(err, flag, strlen(flag)) == 0 ? err + strlen(flag) : err);
+        send_unchecked(out, h, SW_VERDICT_ERROR, job->plugin, "", err);
         return 0;
     }
     char *report = NULL;

@@ -154,7 +154,7 @@ static void name_match(const sw_check_request *base)
 /* One run: build, measure, check, play. Returns the exit status. */
 static int try_once(try_args *a)
 {
-    if (sw_cli_plugin(a->file) != SW_EXIT_OK)
+    if (sw_cli_plugin("", a->file) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     const sw_integrator *m = sw_integrator_at(sw_integrator_count() - 1), *ref;
     if (a->reference) {

@@ -217,7 +217,7 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     char msg[SW_ERRLEN];
     int host_fd = sw_plugin_host_fd(msg, sizeof msg);
     if (host_fd < 0) {
-        snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);
+        snprintf(err, errlen, "'%s': %s", e->shown, msg);
         return SW_EIO;
     }
     int jailed = sw_jail_enabled();
@@ -236,7 +236,7 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     h->printed = 0;
     h->rpos = h->rlen = 0;
     if (sw_sandbox_spawn_jailed(&h->child, exec_host, &x, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
-        snprintf(err, errlen, "--plugin '%s': %s", e->shown, msg);
+        snprintf(err, errlen, "'%s': %s", e->shown, msg);
         return SW_EIO;
     }
     h->alive = 1;
@@ -267,20 +267,20 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
         char said[96];
         sw_host_watch_says(h, limit, said, sizeof said);
         if (rc == -2)
-            snprintf(err, errlen, "--plugin '%s': %s %s (%s)", e->shown, what, said,
+            snprintf(err, errlen, "'%s': %s %s (%s)", e->shown, what, said,
                      h->watched == SW_WATCH_ASLEEP ? "it must not wait" : "an endless loop?");
         else
-            snprintf(err, errlen, "--plugin '%s': interrupted while %s ran", e->shown, what);
+            snprintf(err, errlen, "'%s': interrupted while %s ran", e->shown, what);
         return SW_EINVAL;
     }
     sw_host_lost(e, &end);
     if (end.exited && end.code == 126) {
-        snprintf(err, errlen, "--plugin '%s': the plugin host could not be started (%s)", e->shown,
+        snprintf(err, errlen, "'%s': the plugin host could not be started (%s)", e->shown,
                  strerror(ENOEXEC));
         return SW_EIO;
     }
     sw_sandbox_describe(&end, msg, sizeof msg);
-    snprintf(err, errlen, "--plugin '%s': %s %s%s", e->shown, what, msg,
+    snprintf(err, errlen, "'%s': %s %s%s", e->shown, what, msg,
              end.exited ? " (a plugin must not end the process: return from it)" : "");
     return SW_EINVAL;
 }

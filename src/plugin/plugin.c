@@ -104,31 +104,31 @@ static int check_reply(const sw_host_info *r, const char *shown, char *err, size
         if (why_dl[at] == ':' && at < 64 && strstr(why_dl, "plugin.so") && strstr(why_dl, "plugin.so") < why_dl + at)
             why_dl += at + (why_dl[at + 1] == ' ' ? 2 : 1);
         sw_escape(why_dl, 160, esc, sizeof esc);
-        snprintf(err, errlen, "--plugin '%s' could not be loaded: %s", shown, esc);
+        snprintf(err, errlen, "'%s' could not be loaded: %s", shown, esc);
         return SW_EINVAL;
     }
     case SW_HOST_STAGE_SYMBOL:
-        snprintf(err, errlen, "--plugin '%s' has no sw_plugin_info symbol; a plugin must define "
+        snprintf(err, errlen, "'%s' has no sw_plugin_info symbol; a plugin must define "
                  "const sw_plugin *sw_plugin_info(void)", shown);
         return SW_EINVAL;
     case SW_HOST_STAGE_NULL:
-        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() returned NULL; it must return the "
+        snprintf(err, errlen, "'%s': sw_plugin_info() returned NULL; it must return the "
                  "address of a static sw_plugin", shown);
         return SW_EINVAL;
     case SW_HOST_STAGE_OK:
         break;
     default:
-        snprintf(err, errlen, "--plugin '%s': its loader sent a reply it could not have sent", shown);
+        snprintf(err, errlen, "'%s': its loader sent a reply it could not have sent", shown);
         return SW_EINVAL;
     }
     if (r->abi != SW_PLUGIN_ABI) { /* (1: sw_ode had the engine's fast-path fields; they moved) */
-        snprintf(err, errlen, "--plugin '%s' was built for plugin interface %d; this stepwise needs "
+        snprintf(err, errlen, "'%s' was built for plugin interface %d; this stepwise needs "
                  "%d: rebuild it from its .c (give stepwise the .c file, or see docs/plugins.md for "
                  "the cc line)", shown, r->abi, SW_PLUGIN_ABI);
         return SW_EINVAL;
     }
     if (!r->name[0] || !r->has_step || r->work_vectors < 0 || r->work_vectors > 64) {
-        snprintf(err, errlen, "--plugin '%s': sw_plugin_info() must give a name, a step function "
+        snprintf(err, errlen, "'%s': sw_plugin_info() must give a name, a step function "
                  "and 0..64 work vectors", shown);
         return SW_EINVAL;
     }
@@ -152,7 +152,7 @@ static int name_and_label(sw_host_info *r, const char *shown, char *renamed, siz
         if (long_name)
             snprintf(why, sizeof why, "a name has 1 to %d characters", SW_PLUGIN_NAME_MAX);
         if (!any_name) {
-            snprintf(err, errlen, "--plugin '%s': the name '%s' is not allowed: %s", shown, esc, why);
+            snprintf(err, errlen, "'%s': the name '%s' is not allowed: %s", shown, esc, why);
             return SW_EINVAL;
         }
         snprintf(renamed, renamedlen, "its name '%.60s' is not allowed (%.120s): graded as '%s'", esc, why,
@@ -166,7 +166,7 @@ static int name_and_label(sw_host_info *r, const char *shown, char *renamed, siz
             snprintf(why, sizeof why, "a label has 1 to %d bytes", SW_PLUGIN_LABEL_MAX);
         sw_escape(label, 60, esc, sizeof esc);
         if (!any_name) {
-            snprintf(err, errlen, "--plugin '%s': the label '%s' is not allowed: %s", shown, esc, why);
+            snprintf(err, errlen, "'%s': the label '%s' is not allowed: %s", shown, esc, why);
             return SW_EINVAL;
         }
         size_t at = strlen(renamed);
@@ -207,7 +207,7 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     sw_escape(shown_as ? shown_as : path, 120, shown, sizeof shown);
     struct stat st;
     if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "--plugin '%s': no such file (give the path to a .so built from "
+        snprintf(err, errlen, "'%s': no such file (give the path to a .so built from "
                  "examples/euler_plugin.c)", shown);
         return SW_EINVAL;
     }
@@ -219,7 +219,7 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     memset(e, 0, sizeof *e);
     e->fd = -1;
     if (!realpath(path, e->path)) {
-        snprintf(err, errlen, "--plugin '%s': %s", shown, strerror(errno));
+        snprintf(err, errlen, "'%s': %s", shown, strerror(errno));
         return SW_EIO;
     }
     /* The file as it is now is what every child loads (a rebuild that
@@ -227,7 +227,7 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     e->fd = open(e->path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat fst;
     if (e->fd < 0 || fstat(e->fd, &fst) != 0 || !S_ISREG(fst.st_mode)) {
-        snprintf(err, errlen, "--plugin '%s': %s", shown, e->fd < 0 ? strerror(errno) : "not a regular file");
+        snprintf(err, errlen, "'%s': %s", shown, e->fd < 0 ? strerror(errno) : "not a regular file");
         if (e->fd >= 0)
             close(e->fd);
         return SW_EINVAL;
@@ -259,7 +259,7 @@ int sw_plugin_load(const char *path, const char *shown_as, const sw_integrator *
     if (sw_integrator_register(&m, why, sizeof why) != SW_OK) {
         sw_host_stop(e);
         close(e->fd);
-        snprintf(err, errlen, "--plugin '%s': %s", shown, why);
+        snprintf(err, errlen, "'%s': %s", shown, why);
         return SW_EINVAL;
     }
     e->method = sw_integrator_find(e->name);

@@ -343,12 +343,12 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
     sw_headers hd;
     if (open_inputs(src, shared, &spec, &hd, msg, sizeof msg) != 0) {
         close_inputs(&spec);
-        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        snprintf(err, errlen, "'%s': %s", shown, msg);
         return SW_EINVAL;
     }
     if (find_compiler(cc, sizeof cc, msg, sizeof msg) != 0) {
         close_inputs(&spec);
-        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        snprintf(err, errlen, "'%s': %s", shown, msg);
         return SW_EIO;
     }
     char inc[PATH_MAX + 32];
@@ -375,7 +375,7 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
         job.inc = include_dir();
         if (plain_work(dir, name, &spec, work, sizeof work) != 0) {
             close_inputs(&spec);
-            snprintf(err, errlen, "--plugin '%s': cannot copy it to build it: %s", shown, strerror(errno));
+            snprintf(err, errlen, "'%s': cannot copy it to build it: %s", shown, strerror(errno));
             return SW_EIO;
         }
     }
@@ -383,7 +383,7 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
     int rc = sw_sandbox_spawn_jailed(&child, run_compiler, &job, &lim, -1, &spec, msg, sizeof msg);
     close_inputs(&spec);
     if (rc != SW_OK) {
-        snprintf(err, errlen, "--plugin '%s': %s", shown, msg);
+        snprintf(err, errlen, "'%s': %s", shown, msg);
         return SW_EIO;
     }
     char log_path[PATH_MAX + 80], *out = NULL, *log = NULL;
@@ -419,25 +419,25 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
     if (by_cpu && !end.killed &&
         ((!end.exited && end.signal == SIGXCPU) || (log && strstr(log, "CPU time limit exceeded")))) {
         free(log);
-        snprintf(err, errlen, "--plugin '%s' did not compile within the submission's CPU time: the compiler "
+        snprintf(err, errlen, "'%s' did not compile within the submission's CPU time: the compiler "
                  "used all %.3g s left of it (the submission's CPU-time limit, --cpu: it counts its own processes "
                  "only, the compiler's included)", shown, lim.cpu_seconds);
         return SW_EINVAL;
     }
     if (end.killed || (!end.exited && end.signal == SIGXCPU)) {
         free(log);
-        snprintf(err, errlen, "--plugin '%s' did not compile within the grader's limit of %g s", shown,
+        snprintf(err, errlen, "'%s' did not compile within the grader's limit of %g s", shown,
                  BUILD_SECONDS);
         return SW_EINVAL;
     }
     if (grader_limit(log, out_len, &end, msg, sizeof msg)) {
         free(log);
-        snprintf(err, errlen, "--plugin '%s' was not built: %s", shown, msg);
+        snprintf(err, errlen, "'%s' was not built: %s", shown, msg);
         return SW_EIO;
     }
     if (!log || !log[0] || strstr(log, "No space left on device")) {
         /* its scratch disk full: the log, written there, may be lost too */
-        snprintf(err, errlen, "--plugin '%s' was not built: the compiler %s; a build's scratch space is "
+        snprintf(err, errlen, "'%s' was not built: the compiler %s; a build's scratch space is "
                  "%zu MiB here (half the teacher's --memory, at most 64; a source that needs more, such "
                  "as a huge initialiser, should be made smaller)",
                  shown, log && log[0] ? "ran out of scratch space" : "stopped without a message",
@@ -448,6 +448,6 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
     first_error(log, src, msg, sizeof msg);
     withheld_hint(&hd, log, msg, sizeof msg);
     free(log);
-    snprintf(err, errlen, "--plugin '%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
+    snprintf(err, errlen, "'%s' does not compile (%s " SHOWN_FLAGS "): %s", shown, cc, msg);
     return SW_EINVAL;
 }

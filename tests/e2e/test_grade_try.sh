@@ -24,6 +24,15 @@ grep -q 'stability  none' out || fail "no stability: $(cat out)"
 grep -q 'PASS: plugin student-euler on chain matches euler' out || fail "no check: $(cat out)"
 
 grep -q 'build ' out && fail "warnings reported for a file without any: $(cat out)"
+# try's argument is the file, not a --plugin flag the student never typed
+"$SW" try gone.c --no-play > out 2>&1; rc=$?
+[ "$rc" -eq 2 ] || fail "try on a missing file: exit $rc"
+grep -qx "stepwise: 'gone.c': no such file.*" out || fail "try's message for a missing file: $(cat out)"
+printf 'int x = ;\n' > broken.c
+"$SW" try broken.c --no-play > out 2>&1
+grep -q "^stepwise: 'broken.c' does not compile" out || fail "try's build error: $(cat out)"
+"$SW" record spring --plugin broken.c -o x.csv > out 2>&1
+grep -q "^stepwise: --plugin 'broken.c' does not compile" out || fail "--plugin's build error: $(cat out)"
 # The compiler's warnings are shown (often a bug); in grade's feedback too,
 # as a note that takes nothing off (QA: they were shown nowhere)
 sed 's|double \*dydt = work; /\* work vector 0 \*/|double *dydt = work; int unused = 3;|' \

@@ -406,7 +406,7 @@ int sw_cmd_bench(int argc, char **argv)
     if (opts.nsets > 0 && nscenes != 1)
         return sw_cli_error("--set changes one scene's parameters: name exactly one SCENE with it");
     for (int i = 0; i < nplugins; i++)
-        if (sw_cli_plugin("--plugin", plugins[i]) != SW_EXIT_OK)
+        if (sw_cli_plugin("--plugin", plugins[i], NULL) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     const sw_integrator *methods[SW_BENCH_MAX_METHODS];
     int nmethods = 0;

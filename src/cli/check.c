@@ -272,7 +272,7 @@ int sw_cmd_check(int argc, char **argv)
     if (plugin_run && nplugins == 0)
         return fail_usage(&a, "check: the --scene form grades a plugin: give --plugin PATH%s", NULL);
     for (int i = 0; i < nplugins; i++)
-        if (sw_cli_plugin("--plugin", plugins[i]) != SW_EXIT_OK)
+        if (sw_cli_plugin("--plugin", plugins[i], NULL) != SW_EXIT_OK)
             return failed_helper(&a, "check: the plugin could not be loaded (see stderr)");
     if (a.reference && sw_cli_integrator(a.reference, &a.req.reference) != SW_EXIT_OK)
         return failed_helper(&a, "check: --reference names no integrator (see stderr)");

@@ -70,8 +70,10 @@ int sw_cli_add_set(sw_run_opts *o, const char *assignment);
 /* Load a plugin's shared object (or C source, built first) and register
  * its integrator; the plugin runs in child processes (plugin/plugin.h).
  * flag: what the user typed before the path ("--plugin"), which starts
- * each error message, or "" where the path was the command's argument. */
-int sw_cli_plugin(const char *flag, const char *path);
+ * each error message, or "" where the path was the command's argument.
+ * A source's compiler warnings into warn (may be NULL; a .so has none). */
+struct sw_build_warnings;
+int sw_cli_plugin(const char *flag, const char *path, struct sw_build_warnings *warn);
 int sw_cmd_grade(int argc, char **argv);
 /* Gradescope's autograder bundle for an assignment (cli/autograder.c). */
 int sw_cmd_autograder(int argc, char **argv);

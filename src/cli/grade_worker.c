@@ -288,8 +288,8 @@ int grade_worker(void *ctx, int in, int out)
     sw_check_request req = *job->base;
     static sw_verdict v;
     static grade_record rec;
-    char so[PATH_MAX + 80], name[32], warned[400];
-    int nwarned = 0;
+    char so[PATH_MAX + 80], name[32];
+    sw_build_warnings warned = { 0 };
     memset(&rec, 0, sizeof rec);
     const char *path = job->path;
     int rc = SW_OK, first = -1, lo = 0, hi = h->nparts;
@@ -297,8 +297,7 @@ int grade_worker(void *ctx, int in, int out)
         size_t len = strlen(path);
         if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
             snprintf(name, sizeof name, "s%d", job->index);
-            rc = sw_plugin_compile(path, 1, job->build_dir, name, so, sizeof so, err, sizeof err);
-            nwarned = rc == SW_OK ? sw_plugin_build_warnings(warned, sizeof warned) : 0;
+            rc = sw_plugin_compile(path, 1, job->build_dir, name, so, sizeof so, &warned, err, sizeof err);
             path = so;
         }
         /* a name or label the tool would refuse is no reason to fail a
@@ -329,9 +328,9 @@ int grade_worker(void *ctx, int in, int out)
     const char *renamed = req.plugin ? sw_plugin_renamed(req.plugin) : NULL;
     if (f && renamed)
         fprintf(f, "note: %s; nothing is taken off for it (sw_plugin_info() sets them)\n", renamed);
-    if (f && nwarned)
+    if (f && warned.count)
         fprintf(f, "note: the compiler warned %d time%s (nothing is taken off; a warning is often a bug); the "
-                "first: %s\n", nwarned, nwarned == 1 ? "" : "s", warned);
+                "first: %s\n", warned.count, warned.count == 1 ? "" : "s", warned.first);
     rec.status = SW_VERDICT_PASS;
     rec.failing_step = -1;
     for (int p = lo; p < hi; p++) {

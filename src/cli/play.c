@@ -113,7 +113,7 @@ int sw_cmd_play(int argc, char **argv)
         case 'i': method_name = optarg; break;
         case 'd': if (sw_cli_dt("--dt", optarg, &o.dt)) return SW_EXIT_USAGE; break;
         case 's': if (sw_cli_add_set(&o, optarg)) return SW_EXIT_USAGE; break;
-        case 'P': if (sw_cli_plugin("--plugin", optarg)) return SW_EXIT_USAGE; break;
+        case 'P': if (sw_cli_plugin("--plugin", optarg, NULL)) return SW_EXIT_USAGE; break;
         case 'f': if (sw_cli_long("--frames", optarg, 1, 100000, &frames)) return SW_EXIT_USAGE; break;
         case 'a': ascii = 1; break;
         case 'b': braille = 1; break;

@@ -25,7 +25,8 @@ static int plugin_error(const char *flag, const char *err)
 
 /* Compile a plugin's C source with the documented flags into a private
  * temporary directory (removed at exit); the .so's path into so. */
-static int sw_cli_build_plugin(const char *flag, const char *src, char *so, size_t solen)
+static int sw_cli_build_plugin(const char *flag, const char *src, char *so, size_t solen,
+                               sw_build_warnings *warn)
 {
     static int count;
     char err[SW_ERRLEN + 256], name[16];
@@ -40,19 +41,19 @@ static int sw_cli_build_plugin(const char *flag, const char *src, char *so, size
     if (count == 64)
         return sw_cli_error("%s%sat most 64 plugins are built per run", flag, *flag ? ": " : "");
     snprintf(name, sizeof name, "p%d", count++);
-    if (sw_plugin_compile(src, 0, build_dir, name, so, solen, err, sizeof err) != SW_OK)
+    if (sw_plugin_compile(src, 0, build_dir, name, so, solen, warn, err, sizeof err) != SW_OK)
         return plugin_error(flag, err);
     return SW_EXIT_OK;
 }
 
 
-int sw_cli_plugin(const char *flag, const char *path)
+int sw_cli_plugin(const char *flag, const char *path, sw_build_warnings *warn)
 {
     char err[SW_ERRLEN + 256], so[4200];
     const char *given = path;
     size_t len = strlen(path);
     if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
-        if (sw_cli_build_plugin(flag, path, so, sizeof so) != SW_EXIT_OK)
+        if (sw_cli_build_plugin(flag, path, so, sizeof so, warn) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
         path = so;
     }

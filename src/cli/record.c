@@ -106,7 +106,7 @@ int sw_cmd_record(int argc, char **argv)
     if (sw_cli_scene(argv[optind], &o.scene) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     for (int i = 0; i < nplugins; i++)
-        if (sw_cli_plugin("--plugin", plugins[i]) != SW_EXIT_OK)
+        if (sw_cli_plugin("--plugin", plugins[i], NULL) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     if (integrator && sw_cli_integrator(integrator, &o.method) != SW_EXIT_OK)
         return SW_EXIT_USAGE;

@@ -488,7 +488,7 @@ int sw_cmd_stability(int argc, char **argv)
     if (opts.scene && sw_cli_finish_opts(&opts) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     for (int i = 0; i < nplugins; i++)
-        if (sw_cli_plugin("--plugin", plugins[i]) != SW_EXIT_OK)
+        if (sw_cli_plugin("--plugin", plugins[i], NULL) != SW_EXIT_OK)
             return SW_EXIT_USAGE;
     const sw_integrator *methods[32];
     int nmethods = 0;

@@ -154,7 +154,8 @@ static void name_match(const sw_check_request *base)
 /* One run: build, measure, check, play. Returns the exit status. */
 static int try_once(try_args *a)
 {
-    if (sw_cli_plugin("", a->file) != SW_EXIT_OK)
+    sw_build_warnings warn = { 0 };
+    if (sw_cli_plugin("", a->file, &warn) != SW_EXIT_OK)
         return SW_EXIT_USAGE;
     const sw_integrator *m = sw_integrator_at(sw_integrator_count() - 1), *ref;
     if (a->reference) {
@@ -171,11 +172,9 @@ static int try_once(try_args *a)
     sw_escape(m->label, 100, label, sizeof label);
     printf("%s: %s (%s), %d work vector%s\n", a->file_shown, m->name, label, m->work_vectors,
            m->work_vectors == 1 ? "" : "s");
-    char first[400];
-    int warnings = sw_plugin_build_warnings(first, sizeof first);
-    if (warnings)
-        printf("  build      %d compiler warning%s (often a bug: read them); the first: %s\n", warnings,
-               warnings == 1 ? "" : "s", first);
+    if (warn.count)
+        printf("  build      %d compiler warning%s (often a bug: read them); the first: %s\n", warn.count,
+               warn.count == 1 ? "" : "s", warn.first);
     fflush(stdout);
     sw_check_request req;
     sw_check_request_init(&req);

@@ -119,10 +119,6 @@ static int find_compiler(char *out, size_t len, char *err, size_t errlen)
     return 0;
 }
 
-/* The last successful build's warnings (sw_plugin_build_warnings). */
-static int warned;
-static char first_warned[400];
-
 /* The first line of the log that says `what` ("error", ": warning:"),
  * escaped, into buf ("" when none); how many lines say it. */
 static int first_line(const char *log, const char *src, const char *what, char *buf, size_t len)
@@ -151,12 +147,6 @@ static void first_error(const char *log, const char *src, char *buf, size_t len)
 {
     if (!first_line(log, src, "error", buf, len))
         snprintf(buf, len, "see the compiler's messages");
-}
-
-int sw_plugin_build_warnings(char *first, size_t len)
-{
-    snprintf(first, len, "%s", first_warned);
-    return warned;
 }
 
 static int write_new(const char *path, const char *data, size_t len);
@@ -332,10 +322,12 @@ static void withheld_hint(const sw_headers *hd, const char *log, char *buf, size
 }
 
 int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
-                      char *err, size_t errlen)
+                      sw_build_warnings *warn, char *err, size_t errlen)
 {
-    warned = 0;
-    first_warned[0] = '\0';
+    if (warn) {
+        warn->count = 0;
+        warn->first[0] = '\0';
+    }
     char shown[200], msg[SW_ERRLEN + 160], cc[PATH_MAX];
     sw_escape(src, 120, shown, sizeof shown);
     sw_jail spec = { .profile = SW_JAIL_COMPILE, .include_fd = -1, .out = { "plugin.so", "build.log" },
@@ -412,7 +404,8 @@ int sw_plugin_compile(const char *src, int shared, const char *dir, const char *
         write_new(log_path, log, log_len);
     free(out);
     if (ok) {
-        warned = log ? first_line(log, src, ": warning:", first_warned, sizeof first_warned) : 0;
+        if (warn && log)
+            warn->count = first_line(log, src, ": warning:", warn->first, sizeof warn->first);
         free(log);
         return SW_OK;
     }

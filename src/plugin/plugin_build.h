@@ -5,18 +5,21 @@
 
 #include <stddef.h>
 
+/* The compiler's warnings on a source that compiled: how many lines say
+ * "warning", the first (escaped, named as the student named the file; ""
+ * when none). */
+typedef struct sw_build_warnings {
+    int count;
+    char first[400];
+} sw_build_warnings;
+
 /* Compile src, with the headers beside it (plugin_headers.h; shared: a
  * grader's folder, whose headers go with src only where it is the one .c
  * there), into dir/NAME.so (its messages in dir/NAME.log), the .so's path
  * into so: 0, or SW_EINVAL (it does not compile, or took too long) or
  * SW_EIO (a limit of the grader's, no room) with err saying which, the
- * compiler's first error quoted. */
+ * compiler's first error quoted; its warnings into warn (may be NULL). */
 int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
-                      char *err, size_t errlen);
-
-/* The compiler's warnings on the last source built here that compiled:
- * how many lines say "warning", the first into first (escaped, named as
- * the student named the file; "" when none). */
-int sw_plugin_build_warnings(char *first, size_t len);
+                      sw_build_warnings *warn, char *err, size_t errlen);
 
 #endif

@@ -98,13 +98,8 @@ static int failed_helper(const check_args *a, const char *what)
  * missed. Nothing where every point was earned. */
 static void print_lost_points(const sw_score *s)
 {
-    if (s->n == 0 || !(s->score < s->max))
-        return;
-    printf("  points: %g of %g, as the grader would give them:\n", s->score, s->max);
-    for (int k = 0; k < s->n; k++)
-        if (s->checks[k].score < s->checks[k].max)
-            printf("    %s: %g of %g: %s\n", s->checks[k].name, s->checks[k].score, s->checks[k].max,
-                   s->checks[k].output);
+    if (s->score < s->max)
+        sw_score_print(stdout, s, 1, "  ", ", as the grader would give them:");
 }
 
 static int plugin_form(check_args *a)

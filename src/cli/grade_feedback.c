@@ -98,35 +98,20 @@ static int same_student(const grade_list *l, int i, int j)
  * PASS report alone does not tell (a stability limit not measured, an
  * order missed). A part not shown yet gives nothing away, its points
  * included. */
+/* The checks of the parts shown now (a hidden part's are the teacher's). */
 static void write_points(FILE *f, const grade_list *l, const grade_entry *e)
 {
-    const sw_score *s = &e->score;
-    double got = 0, max = 0;
-    int shown = 0, hidden = 0;
-    for (int k = 0; k < s->n; k++) {
-        if (l->hw && l->hw->parts[s->checks[k].part].visibility != SW_VIS_VISIBLE) {
-            hidden = 1;
-            continue;
-        }
-        got += s->checks[k].score;
-        max += s->checks[k].max;
-        shown++;
-    }
-    if (!shown)
-        return;
-    fprintf(f, "points: %g of %g%s\n", got, max, hidden ? " on the parts shown now" : "");
-    const char *said = NULL; /* a reason said once: a file not scored at all has one */
-    for (int k = 0; k < s->n; k++) {
-        const sw_score_check *c = &s->checks[k];
+    static sw_score shown; /* 22 kB: not on a stack */
+    memset(&shown, 0, sizeof shown);
+    for (int k = 0; k < e->score.n; k++) {
+        const sw_score_check *c = &e->score.checks[k];
         if (l->hw && l->hw->parts[c->part].visibility != SW_VIS_VISIBLE)
             continue;
-        fprintf(f, "  %s: %g of %g", c->name, c->score, c->max);
-        if (c->score < c->max)
-            fprintf(f, ": %s", said && strcmp(said, c->output) == 0 ? "the same" : c->output);
-        if (c->score < c->max)
-            said = c->output;
-        fputc('\n', f);
+        shown.checks[shown.n++] = *c;
+        shown.score += c->score;
+        shown.max += c->max;
     }
+    sw_score_print(f, &shown, 0, "", shown.n < e->score.n ? " on the parts shown now" : "");
 }
 
 static void write_report(FILE *f, const grade_list *l, int first, const unsigned char *done)

@@ -366,3 +366,22 @@ void sw_score_append(sw_score *into, const sw_score *part, const char *name, int
         into->max += c->max;
     }
 }
+
+void sw_score_print(FILE *f, const sw_score *s, int lost_only, const char *indent, const char *tail)
+{
+    if (s->n == 0)
+        return;
+    fprintf(f, "%spoints: %g of %g%s\n", indent, s->score, s->max, tail);
+    const char *said = NULL; /* a reason said once: a file not scored at all has one */
+    for (int k = 0; k < s->n; k++) {
+        const sw_score_check *c = &s->checks[k];
+        int lost = c->score < c->max;
+        if (lost_only && !lost)
+            continue;
+        fprintf(f, "%s  %s: %g of %g", indent, c->name, c->score, c->max);
+        if (lost)
+            fprintf(f, ": %s", said && strcmp(said, c->output) == 0 ? "the same" : c->output);
+        said = lost ? c->output : said;
+        fputc('\n', f);
+    }
+}

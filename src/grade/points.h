@@ -7,6 +7,7 @@
 #define SW_GRADE_POINTS_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "grade/check.h"
 #include "trace/trace.h"
@@ -113,5 +114,10 @@ void sw_points_score(const sw_points_set *set, const sw_score_facts *f, sw_score
  * SW_SCORE_CHECKS are dropped (a homework is read with at most that many). */
 void sw_score_append(sw_score *into, const sw_score *part, const char *name, int visibility,
                      int index);
+/* s as a student reads it: "points: G of M" and TAIL after indent, then a
+ * line a check, two spaces further in ("order: 1 of 2"), with why where it
+ * lost some (a reason said just before is "the same"); lost_only: only
+ * the checks that lost some. Nothing when s has no checks. */
+void sw_score_print(FILE *f, const sw_score *s, int lost_only, const char *indent, const char *tail);
 
 #endif

@@ -136,6 +136,14 @@ static int first_line(const char *log, const char *src, const char *what, char *
             snprintf(one, sizeof one, "%.100s:%.*s", base, (int)(n - 9 < 400 ? n - 9 : 400), line + 9);
         else
             snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), line);
+        /* Without user namespaces the jail is Landlock's: a path outside
+         * it that exists is "Permission denied" to #include, __has_include
+         * or a #pragma, one that does not "No such file", which would tell
+         * a student what exists on the grading machine. Both read as the
+         * namespace jail's, where nothing outside exists. */
+        char *denied = strstr(one, ": Permission denied");
+        if (denied)
+            snprintf(denied, sizeof one - (size_t)(denied - one), ": No such file or directory");
         if (strstr(one, what) && count++ == 0)
             sw_escape(one, 200, buf, len);
         line = end ? end + 1 : NULL;

@@ -6,7 +6,10 @@
 # header is not yours to include), and the compile error says why. Copied
 # code in a header counts for --similarity. A link named x.h is never
 # followed; more than 12 headers are refused. `try` builds the same way.
-# A row's compile error names the file, not the --plugin flag (QA).
+# A row's compile error names the file, not the --plugin flag (QA). A path
+# outside the jail reads the same whether it exists or not, also where the
+# jail is Landlock's (STEPWISE_JAIL=uid: no user namespaces), which says
+# "Permission denied" for what exists (QA: an existence oracle).
 . "$(dirname "$0")/lib.sh"
 needs_jail
 sim="$ROOT/tests/data/similar"
@@ -101,4 +104,23 @@ grep -q "its folder holds 13 headers (.h files); a plugin is built with at most 
 cp "$sim/rk4_bob.c" class/ada/scratch.c
 "$SW" try class/ada/rk4.c --no-play > t.out 2>&1 || fail "try with a header: $(cat t.out)"
 grep -q "PASS" t.out || fail "try with a header did not pass: $(cat t.out)"
+
+# what exists outside the jail reads as what does not
+if [ "$(id -u)" -eq 0 ]; then
+    mkdir -p oracle
+    for f in /etc/passwd /etc/no-such-file-here; do
+        printf '#include "%s"\n' "$f" > oracle/probe.c
+        cat "$ROOT/examples/euler_plugin.c" >> oracle/probe.c
+        for mode in uid ns; do
+            STEPWISE_JAIL=$mode "$SW" try oracle/probe.c --no-play > o.out 2>&1
+            [ "$mode" = ns ] && grep -q "user namespaces" o.out && continue
+            grep -q "fatal error: $f: No such file or directory" o.out ||
+                fail "#include \"$f\" ($mode): $(cat o.out)"
+        done
+        printf '#if __has_include("%s")\n#error seen\n#endif\n' "$f" > oracle/probe.c
+        cat "$ROOT/examples/euler_plugin.c" >> oracle/probe.c
+        STEPWISE_JAIL=uid "$SW" try oracle/probe.c --no-play > o.out 2>&1
+        grep -q "Permission denied\|seen" o.out && fail "__has_include(\"$f\") told: $(cat o.out)"
+    done
+fi
 exit 0

@@ -101,6 +101,13 @@ static int same_student(const grade_list *l, int i, int j)
 /* The checks of the parts shown now (a hidden part's are the teacher's). */
 static void write_points(FILE *f, const grade_list *l, const grade_entry *e)
 {
+    if (!e->plugin && e->part < 0 && l->hw && l->hw->nparts > 1) {
+        /* a trace not read far enough to tell its part: its zeros on every
+         * part would read as points lost where another file scored */
+        fprintf(f, "points: none from this file: it could not be matched to a part (each part counts "
+                "your best file for it)\n");
+        return;
+    }
     static sw_score shown; /* 22 kB: not on a stack */
     memset(&shown, 0, sizeof shown);
     for (int k = 0; k < e->score.n; k++) {

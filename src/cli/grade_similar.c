@@ -80,6 +80,24 @@ static int same_values(const grade_list *l, const grade_entry *a, const grade_en
     return ok;
 }
 
+/* A trace made with every parameter at its scene's default: a run without
+ * --set, which two students make alike without copying (where one drew
+ * the defaults, the other forgot their values). */
+static int at_defaults(const grade_entry *e)
+{
+    sw_trace_reader r;
+    char err[SW_ERRLEN + SW_TRACE_PATH_MAX];
+    if (e->plugin || sw_trace_read_open(&r, e->path, err, sizeof err) != SW_OK)
+        return 0;
+    double def[SW_MAX_PARAMS];
+    sw_scene_defaults(r.meta.scene, def);
+    int same = 1;
+    for (int i = 0; i < r.meta.scene->nparams; i++)
+        same = same && r.meta.p[i] == def[i];
+    sw_trace_read_close(&r);
+    return same;
+}
+
 static int is_source(const grade_entry *e)
 {
     size_t n = strlen(e->path);
@@ -135,12 +153,12 @@ int grade_similar_run(grade_list *l)
         } else if (!e->plugin && (e->status == 0 || e->status == 1)) {
             /* A trace: correct ones are alike by design and never flagged;
              * so are wrong runs the explainer reproduced with stepwise. */
-            sw_similar_digest d;
+            sw_similar_digest d, rows;
             int fd = open(e->path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
             if (fd >= 0) {
                 close(fd);
-                if (sw_similar_digest_file(e->path, &d, err, sizeof err) == SW_OK)
-                    doc = sw_similar_add_trace(&s, &d, e->status == 0 || e->kind[0], err,
+                if (sw_similar_digest_file(e->path, &d, &rows, err, sizeof err) == SW_OK)
+                    doc = sw_similar_add_trace(&s, &d, &rows, e->status == 0 || e->kind[0], err,
                                                sizeof err);
                 /* Its wrong rows, each one value: the worker's digest of the
                  * row, its top bits cleared so it is a finite double, which
@@ -181,17 +199,23 @@ int grade_similar_run(grade_list *l)
             (b->status == 0 || b->kind[0]) &&
             same_values(l, a, b))
             continue;
-        char an[400], bn[400], text[600];
+        char an[400], bn[400], text[800];
         name_of(a, an, sizeof an);
         name_of(b, bn, sizeof bn);
+        const char *why = pairs[p].reason,
+                   *note = s.opt.own_runs && at_defaults(a) && at_defaults(b)
+                               ? "; both at the scene's default parameters, as a run without --set is "
+                                 "(one may have forgotten their values)"
+                               : "";
         if (shown++ == 0)
             fprintf(t, "similar pairs (%s; for a person to read, not a verdict):\n",
                     "plugin sources as MOSS-style fingerprints, the handout removed; traces "
-                    "byte-identical or with identical wrong rows, correct ones never");
-        fprintf(t, "  %.2f  %s  ~  %s: %s\n", pairs[p].score, an, bn, pairs[p].reason);
-        snprintf(text, sizeof text, "%.2f with %s: %s", pairs[p].score, bn, pairs[p].reason);
+                    "byte-identical, with the same rows under another header, or with identical "
+                    "wrong rows, correct ones never");
+        fprintf(t, "  %.2f  %s  ~  %s: %s%s\n", pairs[p].score, an, bn, why, note);
+        snprintf(text, sizeof text, "%.2f with %s: %s%s", pairs[p].score, bn, why, note);
         add_similar(a, text);
-        snprintf(text, sizeof text, "%.2f with %s: %s", pairs[p].score, an, pairs[p].reason);
+        snprintf(text, sizeof text, "%.2f with %s: %s%s", pairs[p].score, an, why, note);
         add_similar(b, text);
     }
     if (t && shown == 0)

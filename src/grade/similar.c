@@ -27,6 +27,8 @@ struct sw_similar_doc {
     uint64_t *fp;         /* ...without the base's and the boilerplate's */
     size_t nfp, nown;     /* nown: without the base's only */
     int correct;          /* traces */
+    int have_rows;
+    sw_similar_digest rows; /* the lines not starting with '#' */
     long *row;            /* the wrong rows kept, increasing */
     uint64_t *row_hash;
     size_t nrows, cap_rows;
@@ -70,11 +72,35 @@ static int same_digest(const sw_similar_digest *x, const sw_similar_digest *y)
     return x->h[0] == y->h[0] && x->h[1] == y->h[1] && x->bytes == y->bytes;
 }
 
-int sw_similar_digest_file(const char *path, sw_similar_digest *d, char *err, size_t errlen)
+/* The runs of buf[0..n) on lines not starting with '#' into rows; *at:
+ * 0 at a line's start, 1 in a line kept, 2 in a line left out. */
+static void add_rows(sw_similar_digest *rows, const unsigned char *buf, size_t n, int *at)
+{
+    size_t run = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (*at == 0) {
+            *at = buf[i] == '#' ? 2 : 1;
+            run = i;
+        }
+        if (buf[i] == '\n') {
+            if (*at == 1)
+                sw_similar_digest_add(rows, buf + run, i + 1 - run);
+            *at = 0;
+        }
+    }
+    if (*at == 1)
+        sw_similar_digest_add(rows, buf + run, n - run);
+}
+
+int sw_similar_digest_file(const char *path, sw_similar_digest *d, sw_similar_digest *rows, char *err,
+                           size_t errlen)
 {
     struct stat st;
     const char *what;
+    int at = 0;
     sw_similar_digest_init(d);
+    if (rows)
+        sw_similar_digest_init(rows);
     int fd = sw_infile_open(path, &st, &what);
     if (fd < 0) {
         if (what)
@@ -96,6 +122,8 @@ int sw_similar_digest_file(const char *path, sw_similar_digest *d, char *err, si
         if (n == 0)
             break;
         sw_similar_digest_add(d, buf, (size_t)n);
+        if (rows)
+            add_rows(rows, buf, (size_t)n, &at);
     }
     close(fd);
     return SW_OK;
@@ -337,13 +365,16 @@ int sw_similar_add_source(sw_similar *s, const char *src, size_t len, char *err,
     return s->ndocs - 1;
 }
 
-int sw_similar_add_trace(sw_similar *s, const sw_similar_digest *dg, int correct, char *err,
-                         size_t errlen)
+int sw_similar_add_trace(sw_similar *s, const sw_similar_digest *dg, const sw_similar_digest *rows,
+                         int correct, char *err, size_t errlen)
 {
     sw_similar_doc *d = new_doc(s, DOC_TRACE, err, errlen);
     if (!d)
         return SW_EINVAL;
     d->digest = *dg;
+    d->have_rows = rows && rows->bytes > 0;
+    if (d->have_rows)
+        d->rows = *rows;
     d->correct = correct != 0;
     return s->ndocs++;
 }
@@ -484,12 +515,22 @@ static void compare_sources(const sw_similar *s, const sw_similar_doc *a, const 
 static void compare_traces(const sw_similar *s, const sw_similar_doc *a, const sw_similar_doc *b,
                            sw_similar_pair *p, int say)
 {
-    if (same_digest(&a->digest, &b->digest) && (s->opt.own_runs || !(a->correct && b->correct))) {
+    int copy = s->opt.own_runs || !(a->correct && b->correct);
+    if (same_digest(&a->digest, &b->digest) && copy) {
         p->score = 1;
         p->flagged = 1;
         snprintf(p->reason, sizeof p->reason, "byte-identical files (%llu bytes)%s",
                  (unsigned long long)a->digest.bytes,
                  s->opt.own_runs ? ", where each student ran values of their own" : "");
+        return;
+    }
+    /* a correct trace copied with its header edited; two wrong ones are
+     * compared row by row below, which says where they agree */
+    if (a->have_rows && b->have_rows && same_digest(&a->rows, &b->rows) && copy && (a->correct || b->correct)) {
+        p->score = 1;
+        p->flagged = 1;
+        snprintf(p->reason, sizeof p->reason, "the same rows, byte for byte (%llu bytes), under headers "
+                 "that differ (parameters or a name edited?)", (unsigned long long)a->rows.bytes);
         return;
     }
     if (a->correct && b->correct) {

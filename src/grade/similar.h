@@ -53,8 +53,12 @@ typedef struct sw_similar_digest {
 
 void sw_similar_digest_init(sw_similar_digest *d);
 void sw_similar_digest_add(sw_similar_digest *d, const void *bytes, size_t len);
-/* The digest of a whole file. 0, or SW_EIO / SW_EINVAL with err "FILE: what". */
-int sw_similar_digest_file(const char *path, sw_similar_digest *d, char *err, size_t errlen);
+/* The digest of a whole file, and (rows, unless NULL) of its lines that do
+ * not start with '#': a trace's rows without its header, whose parameters
+ * or name a copy may have edited. 0, or SW_EIO / SW_EINVAL with err
+ * "FILE: what". */
+int sw_similar_digest_file(const char *path, sw_similar_digest *d, sw_similar_digest *rows, char *err,
+                           size_t errlen);
 
 typedef struct sw_similar_doc sw_similar_doc;
 
@@ -85,10 +89,12 @@ int sw_similar_add_default_base(sw_similar *s, char *err, size_t errlen);
 /* Add a C source; returns its index (>= 0), or SW_EINVAL (larger than
  * SW_SIMILAR_SOURCE_MAX, or too many documents) / SW_ENOMEM with err. */
 int sw_similar_add_source(sw_similar *s, const char *src, size_t len, char *err, size_t errlen);
-/* Add a trace by its digest; correct: it passed (it is then never
- * flagged). Returns its index or an error. */
-int sw_similar_add_trace(sw_similar *s, const sw_similar_digest *d, int correct, char *err,
-                         size_t errlen);
+/* Add a trace by its digest and its rows' (NULL: not known); correct: it
+ * passed (it is then never flagged, but with own_runs). Two traces whose
+ * rows are the same under different headers, one of them correct, are
+ * flagged as identical ones are. Returns its index or an error. */
+int sw_similar_add_trace(sw_similar *s, const sw_similar_digest *d, const sw_similar_digest *rows,
+                         int correct, char *err, size_t errlen);
 /* Row `row` (0-based, increasing) of trace doc: its values and whether it
  * is wrong against the reference (only wrong rows are kept, at most
  * SW_SIMILAR_ROWS_MAX). 0 or SW_ENOMEM. */

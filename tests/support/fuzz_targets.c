@@ -386,8 +386,8 @@ int sw_fuzz_similar(const uint8_t *data, size_t len)
     sw_similar_digest d;
     sw_similar_digest_init(&d);
     sw_similar_digest_add(&d, data, len);
-    int ta = sw_similar_add_trace(&s, &d, 0, err, sizeof err);
-    int tb = sw_similar_add_trace(&s, &d, len & 1, err, sizeof err);
+    int ta = sw_similar_add_trace(&s, &d, NULL, 0, err, sizeof err);
+    int tb = sw_similar_add_trace(&s, &d, NULL, len & 1, err, sizeof err);
     for (size_t at = 0, row = 0; ta >= 0 && tb >= 0 && at + 24 <= len; at += 24, row++) {
         double v[3];
         memcpy(v, data + at, sizeof v);

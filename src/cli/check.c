@@ -14,6 +14,7 @@
 #include "grade/homework.h"
 #include "grade/verdict.h"
 #include "plugin/jail.h"
+#include "plugin/plugin_build.h"
 
 static const char check_help[] =
     "usage: stepwise check TRACE [--assignment A | --against REF | --reference NAME]\n"
@@ -96,10 +97,16 @@ static int failed_helper(const check_args *a, const char *what)
 /* The points a part's checks lost, as the grader's feedback gives them: a
  * PASS alone does not say that the order or the stability point was
  * missed. Nothing where every point was earned. */
-static void print_lost_points(const sw_score *s)
+/* The part's points, check by check, as the grader gives them: a PASS
+ * may lose one (an order not measured), a FAIL keep all (a column the
+ * points do not read). */
+static void print_points(const sw_verdict *v)
 {
-    if (s->score < s->max)
-        sw_score_print(stdout, s, 1, "  ", ", as the grader would give them:");
+    const char *tail = v->status != SW_VERDICT_PASS && !(v->score.score < v->score.max)
+                           ? ", as the grader would give them (the difference above is in values they do not "
+                             "read):"
+                           : ", as the grader would give them:";
+    sw_score_print(stdout, &v->score, "  ", tail);
 }
 
 static int plugin_form(check_args *a)
@@ -266,9 +273,14 @@ int sw_cmd_check(int argc, char **argv)
         return fail_usage(&a, "check: give --steps or --until, not both%s", NULL);
     if (plugin_run && nplugins == 0)
         return fail_usage(&a, "check: the --scene form grades a plugin: give --plugin PATH%s", NULL);
-    for (int i = 0; i < nplugins; i++)
-        if (sw_cli_plugin("--plugin", plugins[i], NULL) != SW_EXIT_OK)
+    for (int i = 0; i < nplugins; i++) {
+        sw_build_warnings warn = { 0 };
+        if (sw_cli_plugin("--plugin", plugins[i], &warn) != SW_EXIT_OK)
             return failed_helper(&a, "check: the plugin could not be loaded (see stderr)");
+        if (warn.count && !a.json) /* as try and grade's feedback say them */
+            printf("note: the compiler warned %d time%s (nothing is taken off; a warning is often a bug); "
+                   "the first: %s\n", warn.count, warn.count == 1 ? "" : "s", warn.first);
+    }
     if (a.reference && sw_cli_integrator(a.reference, &a.req.reference) != SW_EXIT_OK)
         return failed_helper(&a, "check: --reference names no integrator (see stderr)");
     static sw_homework hw;
@@ -330,7 +342,7 @@ int sw_cmd_check(int argc, char **argv)
         sw_check_run(&a.req, &v);
         int one = sw_check_print(&v, a.json);
         if (a.assignment && !a.json && v.status != SW_VERDICT_ERROR)
-            print_lost_points(&v.score);
+            print_points(&v);
         if (one > rc)
             rc = one;
         shown++;

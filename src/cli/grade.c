@@ -296,6 +296,7 @@ static void grade_all(grade_list *list, const grade_job *proto, double wall, int
             slots[k].job.plugin = list->items[next].plugin;
             slots[k].job.index = next;
             slots[k].job.student_key = grade_student_key(list, &list->items[next]);
+            slots[k].job.own_folder = list->items[next].own_folder;
             if (grade_start(&slots[k], &list->items[next]) == 0)
                 running++;
             else
@@ -504,6 +505,8 @@ static int grade_gather(grade_opts *o, grade_list *list, const struct stat *asg_
         rc = grade_roster_missing(list);
     if (rc == SW_EXIT_OK)
         rc = grade_student_keys_check(list);
+    if (rc == SW_EXIT_OK)
+        grade_mark_own_folders(list, o->gradescope != NULL);
     for (int i = 0; rc == SW_EXIT_OK && i < list->n; i++)
         if (list->items[i].plugin && sw_plugin_host_fd(err, sizeof err) < 0)
             rc = sw_cli_error("grade: %s", err); /* the grader's fault: never a row of the student's */
@@ -536,7 +539,7 @@ static int grade_run(grade_opts *o, grade_list *list, sw_homework *hw, char **wa
     if (o->jobs > list->n)
         o->jobs = list->n > 0 ? list->n : 1;
     grade_job proto = { NULL, 0, build_dir, 0, &o->base, o->lim.output_bytes, list, o->similarity, &o->lim, o->wargc,
-                        wargv, hw, "" };
+                        wargv, hw, "", 0 };
     sw_sandbox_adopt_orphans(); /* what a plugin leaves running comes back here */
     grade_all(list, &proto, o->wall, o->jobs);
     sw_sandbox_kill_orphans(); /* before any result is written */
@@ -601,7 +604,7 @@ static int grade_command(int argc, char **argv, char **wargv)
         o.base.assignment = &hw.parts[0].a;
         sw_decimal_init();
         grade_job job = { w.path, 1, w.build, w.index, &o.base, o.lim.output_bytes, NULL, w.similarity, &o.lim, 0, NULL,
-                          &hw, w.student };
+                          &hw, w.student, w.own_folder };
         return grade_worker(&job, 3, 3);
     }
     grade_list list = { 0 };

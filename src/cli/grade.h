@@ -46,6 +46,8 @@ typedef struct grade_entry {
     sw_score score;                      /* the assignment's points, check by check */
     int part;                            /* a trace: the part it is for; -1 every part */
     long long mtime;                     /* the file's modification time (the "latest" rule) */
+    int own_folder;                      /* a source in a folder of its student's alone: its
+                                          * headers go with it (grade_mark_own_folders) */
 } grade_entry;
 
 /* The verdict of an entry that was not graded (not a submission, a link, a
@@ -217,20 +219,36 @@ typedef struct grade_job {
     char **argv;             /* worker starts again as a new program; NULL: it is that program */
     const sw_homework *hw;   /* the homework, with the teacher's preview values */
     const char *student_key; /* whose values this submission is graded with ("" unknown) */
+    int own_folder;          /* the entry's own_folder */
 } grade_job;
 
-/* `stepwise grade --worker INDEX BUILD_DIR PATH SIMILARITY STUDENT ARGS...`: the
+/* `stepwise grade --worker INDEX BUILD_DIR PATH SIMILARITY OWN_FOLDER STUDENT ARGS...`: the
  * worker of one plugin, as a new program (grade_worker.c starts it): so
  * that nothing of the class the grader had read (roster, gradebook, the
  * other submissions, in live or in freed memory) is in the process the
  * plugin runs from. ARGS are the grade command's own. */
 #define GRADE_WORKER_FLAG "--worker"
 
+/* A header's row: built with the sources beside it, or not (a folder of
+ * several students' sources; grade_mark_own_folders may find it is one
+ * student's after all). */
+#define GRADE_HEADER_BUILT "not graded on its own: a header, built with the .c beside it (a source and its " \
+                           "headers are one submission)"
+#define GRADE_HEADER_SHARED "not a submission: a .h file, and not built with a .c either: its folder holds "
+
+/* Mark each plugin source whose folder holds no other student's source:
+ * in Gradescope's one submission (one_student) every one; else where the
+ * roster matched it and every other source beside it to one student (an
+ * LMS download's folder). Without a roster a folder's files are the
+ * students' own by name, so a folder of two sources is shared. A header
+ * beside a source so marked is built with it (its row says so). */
+void grade_mark_own_folders(grade_list *l, int one_student);
+
 /* Those arguments after GRADE_WORKER_FLAG (start_clean in grade_worker.c
  * writes them). */
 typedef struct grade_worker_args {
     const char *build, *path, *student; /* path NULL: not a worker */
-    int index, similarity;
+    int index, similarity, own_folder;
 } grade_worker_args;
 
 /* grade_worker.c: the worker's arguments taken off the front of *argc,

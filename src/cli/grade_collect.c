@@ -167,11 +167,10 @@ static int judge(const char *path, const char *name, const char *dir, const stru
     if (kind_of(name) == 0 && nlen > 2 && strcmp(name + nlen - 2, ".h") == 0 &&
         sw_headers_find(path, 1, &hd, unused, sizeof unused) == 0 && hd.sources > 0) {
         if (hd.sources == 1)
-            snprintf(why, len, "not graded on its own: a header, built with the .c beside it (a source and "
-                     "its headers are one submission)");
+            snprintf(why, len, GRADE_HEADER_BUILT);
         else
-            snprintf(why, len, "not a submission: a .h file, and not built with a .c either: its folder "
-                     "holds %d of them, and a folder's headers go with its one .c only", hd.sources);
+            snprintf(why, len, GRADE_HEADER_SHARED "%d of them, and a folder's headers go with its one .c "
+                     "only, unless every .c in it is one student's", hd.sources);
         return 0;
     }
     if (kind_of(name) <= 0) {

@@ -118,7 +118,7 @@ static void write_points(FILE *f, const grade_list *l, const grade_entry *e)
         shown.score += c->score;
         shown.max += c->max;
     }
-    sw_score_print(f, &shown, 0, "", shown.n < e->score.n ? " on the parts shown now" : "");
+    sw_score_print(f, &shown, "", shown.n < e->score.n ? " on the parts shown now" : "");
 }
 
 static void write_report(FILE *f, const grade_list *l, int first, const unsigned char *done)

@@ -136,13 +136,20 @@ int grade_write_gradescope(const grade_list *l, const sw_homework *h, const char
                 fprintf(t, "Counted: %s\n", base_name(e->path));
             else if (is)
                 ; /* named on the first line */
-            else if (hidden)
-                fprintf(t, "Also graded, not counted (%s): %s\n",
-                        h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts", base_name(e->path));
-            else
-                fprintf(t, "Also graded, not counted (%s): %s, %g of %g points (%s)\n",
-                        h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts",
-                        base_name(e->path), e->score.score, e->score.max, verdict_of(e->status));
+            else {
+                const char *rule = h->rule == SW_COUNT_LATEST ? "the latest counts" : "the best counts";
+                /* a file that ran no part (it did not build or load): its
+                 * message tells nothing of the parts not shown, and is why
+                 * it lost; its report is never written */
+                const char *lost = !e->report && e->status == SW_VERDICT_ERROR ? e->message : "";
+                if (hidden)
+                    fprintf(t, "Also graded, not counted (%s): %s%s%s%s\n", rule, base_name(e->path),
+                            lost[0] ? " (error: " : "", lost, lost[0] ? ")" : "");
+                else
+                    fprintf(t, "Also graded, not counted (%s): %s, %g of %g points (%s%s%s)\n", rule,
+                            base_name(e->path), e->score.score, e->score.max, verdict_of(e->status),
+                            lost[0] ? ": " : "", lost);
+            }
         }
         for (int i = 0; i < l->ignored; i++) /* files left out; a roster's missing rows are no file */
             if (l->refused[i].status != GRADE_MISSING)

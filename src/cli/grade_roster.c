@@ -236,8 +236,8 @@ int grade_student_keys_check(const grade_list *l)
         return SW_EXIT_OK;
     if (!l->roster)
         return sw_cli_error("grade: %.200s:%ld draws parameters per student: give --roster FILE (with "
-                            "an email column) or --submission-metadata FILE, so each submission is "
-                            "graded with its student's", l->hw->path, l->hw->varying[0].line);
+                            "an email column) or --submission-metadata FILE, so that each submission "
+                            "is graded with its own student's values", l->hw->path, l->hw->varying[0].line);
     /* A student without an e-mail gets an error row of their own (the
      * worker says why); a roster with none at all is the wrong file. */
     for (int s = 0; s < l->roster->n; s++)
@@ -245,4 +245,47 @@ int grade_student_keys_check(const grade_list *l)
             return SW_EXIT_OK;
     return sw_cli_error("grade: %.200s:%ld draws parameters per student from each e-mail, and the "
                         "roster has no email column", l->hw->path, l->hw->varying[0].line);
+}
+
+static int is_source(const grade_entry *e)
+{
+    size_t n = strlen(e->path);
+    return e->plugin && n > 2 && strcmp(e->path + n - 2, ".c") == 0;
+}
+
+/* The length of path's folder part ("a/b/x.c": 3; "x.c": 0). */
+static size_t folder_len(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? (size_t)(slash - path) : 0;
+}
+
+void grade_mark_own_folders(grade_list *l, int one_student)
+{
+    for (int i = 0; i < l->n; i++) {
+        grade_entry *e = &l->items[i];
+        if (!is_source(e))
+            continue;
+        int own = one_student || e->who >= 0;
+        size_t len = folder_len(e->path);
+        for (int j = 0; own && !one_student && j < l->n; j++) {
+            const grade_entry *f = &l->items[j];
+            if (j != i && is_source(f) && folder_len(f->path) == len && strncmp(f->path, e->path, len) == 0)
+                own = f->who == e->who;
+        }
+        e->own_folder = own;
+    }
+    for (int i = 0; i < l->ignored; i++) {
+        grade_entry *h = &l->refused[i];
+        if (strncmp(h->message, GRADE_HEADER_SHARED, strlen(GRADE_HEADER_SHARED)) != 0)
+            continue;
+        size_t len = folder_len(h->path);
+        for (int j = 0; j < l->n; j++) {
+            const grade_entry *f = &l->items[j];
+            if (f->own_folder && folder_len(f->path) == len && strncmp(f->path, h->path, len) == 0) {
+                snprintf(h->message, sizeof h->message, GRADE_HEADER_BUILT);
+                break;
+            }
+        }
+    }
 }

@@ -35,11 +35,11 @@ static char *read_bounded(const char *path, size_t max, size_t *len)
 
 /* A source with the headers it was built with (plugin_headers.h), one
  * text of at most max bytes: copied code in a header is copied code. */
-static char *read_source(const char *path, size_t max, size_t *len)
+static char *read_source(const char *path, int own_folder, size_t max, size_t *len)
 {
     char *text = read_bounded(path, max, len), err[SW_ERRLEN];
     sw_headers hd;
-    if (!text || sw_headers_find(path, 1, &hd, err, sizeof err) != 0)
+    if (!text || sw_headers_find(path, !own_folder, &hd, err, sizeof err) != 0)
         return text;
     for (int i = 0; i < hd.n && *len < max; i++) {
         int fd = sw_headers_open(&hd, i);
@@ -146,7 +146,7 @@ int grade_similar_run(grade_list *l)
         int doc = -1;
         if (is_source(e)) {
             size_t len;
-            char *text = read_source(e->path, SW_SIMILAR_SOURCE_MAX, &len);
+            char *text = read_source(e->path, e->own_folder, SW_SIMILAR_SOURCE_MAX, &len);
             if (text)
                 doc = sw_similar_add_source(&s, text, len, err, sizeof err);
             free(text);

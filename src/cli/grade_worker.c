@@ -65,14 +65,15 @@ static void forget_the_class(const grade_job *job)
  * be started, errno set. */
 static void start_clean(const grade_job *job)
 {
-    char index[24], similarity[8];
-    char **args = calloc((size_t)job->argc + 8, sizeof *args);
+    char index[24], similarity[8], own[8];
+    char **args = calloc((size_t)job->argc + 10, sizeof *args);
     if (!args) {
         errno = ENOMEM;
         return;
     }
     snprintf(index, sizeof index, "%d", job->index);
     snprintf(similarity, sizeof similarity, "%d", job->similarity);
+    snprintf(own, sizeof own, "%d", job->own_folder);
     int n = 0;
     args[n++] = "stepwise";
     args[n++] = "grade";
@@ -81,6 +82,7 @@ static void start_clean(const grade_job *job)
     args[n++] = (char *)job->build_dir;
     args[n++] = (char *)job->path;
     args[n++] = similarity;
+    args[n++] = own;
     args[n++] = (char *)(job->student_key ? job->student_key : "");
     for (int i = 1; i < job->argc; i++)
         args[n++] = job->argv[i];
@@ -102,13 +104,13 @@ int grade_worker_mode(int *argc, char ***argv, grade_worker_args *w)
      * environment (a file named "--worker" in a teacher's glob is neither) */
     struct stat ch;
     const char *mark = getenv("STEPWISE_GRADE_WORKER");
-    if (*argc <= 7 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
+    if (*argc <= 8 || !mark || strcmp(mark, "1") != 0 || fstat(3, &ch) != 0 || !S_ISSOCK(ch.st_mode))
         return sw_cli_error("grade: " GRADE_WORKER_FLAG " is how grade starts a plugin's worker, not an "
                             "option (to grade a file of that name, give it after --)");
     *w = (grade_worker_args){ .index = atoi(a[2]), .build = a[3], .path = a[4], .similarity = atoi(a[5]),
-                              .student = a[6] };
-    *argc -= 6;
-    *argv += 6;
+                              .own_folder = atoi(a[6]) == 1, .student = a[7] };
+    *argc -= 7;
+    *argv += 7;
     return SW_EXIT_OK;
 }
 
@@ -292,19 +294,22 @@ int grade_worker(void *ctx, int in, int out)
     sw_build_warnings warned = { 0 };
     memset(&rec, 0, sizeof rec);
     const char *path = job->path;
-    int rc = SW_OK, first = -1, lo = 0, hi = h->nparts;
+    /* the student's file by its name: the grader's folders are not theirs to read */
+    const char *file = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    int rc = SW_OK, first = -1, first_lost = 0, lo = 0, hi = h->nparts;
     if (job->plugin) {
         size_t len = strlen(path);
         if (len > 2 && strcmp(path + len - 2, ".c") == 0) {
             snprintf(name, sizeof name, "s%d", job->index);
-            rc = sw_plugin_compile(path, 1, job->build_dir, name, so, sizeof so, &warned, err, sizeof err);
+            rc = sw_plugin_compile(path, file, !job->own_folder, job->build_dir, name, so, sizeof so, &warned,
+                                   err, sizeof err);
             path = so;
         }
         /* a name or label the tool would refuse is no reason to fail a
          * submission: graded under another, with a note */
         sw_plugin_set_any_name(1);
         if (rc == SW_OK)
-            rc = sw_plugin_load(path, job->path, &req.plugin, err, sizeof err);
+            rc = sw_plugin_load(path, file, &req.plugin, err, sizeof err);
         rec.part = -1;
     } else {
         req.trace = path;
@@ -351,8 +356,13 @@ int grade_worker(void *ctx, int in, int out)
             fprintf(f, "ERROR: %s\n", v.error);
         else if (f)
             sw_check_print_plain(f, &v);
-        if (status != SW_VERDICT_PASS && first < 0) {
+        /* the row's message is the first part that lost points, else the
+         * first that failed (a column the points do not read, student
+         * pass: the message named one part where points went in others) */
+        int lost = v.score.score < v.score.max;
+        if (status != SW_VERDICT_PASS && (first < 0 || (lost && !first_lost))) {
             first = p;
+            first_lost = lost;
             rec.status = status;
             rec.failing_step = v.failing_step;
             snprintf(rec.kind, sizeof rec.kind, "%s", v.have_explanation ? v.explanation.kind : "");

@@ -41,7 +41,7 @@ static int sw_cli_build_plugin(const char *flag, const char *src, char *so, size
     if (count == 64)
         return sw_cli_error("%s%sat most 64 plugins are built per run", flag, *flag ? ": " : "");
     snprintf(name, sizeof name, "p%d", count++);
-    if (sw_plugin_compile(src, 0, build_dir, name, so, solen, warn, err, sizeof err) != SW_OK)
+    if (sw_plugin_compile(src, NULL, 0, build_dir, name, so, solen, warn, err, sizeof err) != SW_OK)
         return plugin_error(flag, err);
     return SW_EXIT_OK;
 }

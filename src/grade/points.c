@@ -367,7 +367,7 @@ void sw_score_append(sw_score *into, const sw_score *part, const char *name, int
     }
 }
 
-void sw_score_print(FILE *f, const sw_score *s, int lost_only, const char *indent, const char *tail)
+void sw_score_print(FILE *f, const sw_score *s, const char *indent, const char *tail)
 {
     if (s->n == 0)
         return;
@@ -376,8 +376,6 @@ void sw_score_print(FILE *f, const sw_score *s, int lost_only, const char *inden
     for (int k = 0; k < s->n; k++) {
         const sw_score_check *c = &s->checks[k];
         int lost = c->score < c->max;
-        if (lost_only && !lost)
-            continue;
         fprintf(f, "%s  %s: %g of %g", indent, c->name, c->score, c->max);
         if (lost)
             fprintf(f, ": %s", said && strcmp(said, c->output) == 0 ? "the same" : c->output);

@@ -116,8 +116,8 @@ void sw_score_append(sw_score *into, const sw_score *part, const char *name, int
                      int index);
 /* s as a student reads it: "points: G of M" and TAIL after indent, then a
  * line a check, two spaces further in ("order: 1 of 2"), with why where it
- * lost some (a reason said just before is "the same"); lost_only: only
- * the checks that lost some. Nothing when s has no checks. */
-void sw_score_print(FILE *f, const sw_score *s, int lost_only, const char *indent, const char *tail);
+ * lost some (a reason said just before is "the same"). Nothing when s has
+ * no checks. */
+void sw_score_print(FILE *f, const sw_score *s, const char *indent, const char *tail);
 
 #endif

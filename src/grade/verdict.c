@@ -614,15 +614,15 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
      * as the spring's: a method that changes after that part shows there */
     if (!whole && !v->order_on_spring && v->status != SW_VERDICT_PASS &&
         fabs(v->order - ref->order) < SW_POINTS_ORDER_MARGIN) {
-        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: it reads %.3g (%.20s's) on measuring runs "
-                 "that did not span and repeat the whole graded run, and such an order counts only where the "
-                 "graded values match", v->order, ref->name);
+        snprintf(v->measure_note, sizeof v->measure_note, "order not measured: it reads %.3g (%.20s's) on test runs "
+                 "shorter than the run checked above, and such an order counts only where your values above "
+                 "match", v->order, ref->name);
         v->order = NAN;
         return;
     }
     if (!(fabs(v->order - ref->order) < SW_POINTS_ORDER_MARGIN)) {
-        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: the order measured on "
-                 "the graded run (%.3g) is not %s's (%d), and the limit is measured on a spring of its own",
+        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: your order on the run "
+                 "checked (%.3g) is not %s's (%d), and the limit is measured only for a method of that order",
                  v->order, ref->name, ref->order);
         return;
     }
@@ -631,9 +631,9 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
      * of the same order on the graded run): believed, as the spring's
      * order is, only where the graded values match */
     if (v->status != SW_VERDICT_PASS) {
-        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: the limit is measured on "
-                 "a spring of its own, a system a plugin can tell apart, and counts only where the graded "
-                 "values match");
+        snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: it is measured only "
+                 "where your values above match (the limit is found on a test spring, where a method could "
+                 "act otherwise)");
         return;
     }
     if (decide) {

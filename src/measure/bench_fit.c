@@ -117,6 +117,8 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, const sw_bench_point 
     while (fine > first && !(pts[fine].h >= SW_BENCH_MIN_SPAN * pts[last].h))
         fine--;
     char past[80] = "", ceil_txt[24];
+    int never_fell = 0; /* the plateau holds every point, and is no floor of the machine's */
+    double plateau_lo = 0, plateau_hi = 0;
     if (s->plateau >= 0) {
         const char *what = r->reference && s->floor <= SW_BENCH_MARGIN * r->ref_error
                                ? " (the reference's accuracy)"
@@ -129,6 +131,13 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, const sw_bench_point 
                 lo = fmin(lo, pts[i].error);
                 hi = fmax(hi, pts[i].error);
             }
+        /* from the first point on, or never under the ceiling: no
+         * step makes the run accurate */
+        never_fell = !what[0] && hi > 0;
+        for (int i = 0; never_fell && i < s->plateau && !(lo >= r->ceiling * r->scale); i++)
+            never_fell = !usable(&pts[i]);
+        plateau_lo = lo;
+        plateau_hi = hi;
         if (!(hi > 0))
             snprintf(past, sizeof past, "the error stops falling%s", what);
         else if (hi < 1.05 * lo)
@@ -159,7 +168,13 @@ static void diagnose(const fit_ctx *r, sw_bench_series *s, const sw_bench_point 
     }
     if (n <= 0) {
         s->no_order = past[0] ? SW_BENCH_ORDER_PAST : SW_BENCH_ORDER_FEW;
-        if (past[0])
+        if (past[0] && never_fell && plateau_hi < 1.05 * plateau_lo)
+            snprintf(s->why, sizeof s->why, "the error stays at %.1e as the step shrinks: the method does "
+                     "not converge", plateau_hi);
+        else if (past[0] && never_fell)
+            snprintf(s->why, sizeof s->why, "the error stays between %.1e and %.1e as the step shrinks: the "
+                     "method does not converge", plateau_lo, plateau_hi);
+        else if (past[0])
             snprintf(s->why, sizeof s->why, "past the asymptotic range: %s", past);
         else
             snprintf(s->why, sizeof s->why, "no point between round-off and %s of the state",

@@ -50,7 +50,7 @@ static const char *include_dir(void)
 /* The compiler's command line inside the jail: the documented flags. */
 /* -D_DEFAULT_SOURCE: <math.h>'s M_PI, which students reach for, is not
  * ISO C; glibc declares it (and POSIX's names) with this. */
-#define JAIL_FLAGS "-std=c11", "-D_DEFAULT_SOURCE", "-O2", "-g", "-Wall", "-Wextra", "-shared", "-fPIC"
+#define JAIL_FLAGS "-std=c11", "-D_DEFAULT_SOURCE", "-O2", "-g", "-Wall", "-Wextra", "-Wfloat-conversion", "-shared", "-fPIC"
 #define SHOWN_FLAGS "-std=c11 -D_DEFAULT_SOURCE -O2 -Wall -shared -fPIC"
 
 typedef struct build_job {
@@ -326,18 +326,19 @@ static void withheld_hint(const sw_headers *hd, const char *log, char *buf, size
     size_t n = strlen(buf);
     if (hd->withheld && log && strstr(log, ".h: No such file or directory"))
         snprintf(buf + n, len - n, " (its folder holds %d .c files, so the .h files beside it were not "
-                 "used: they go with a folder's one .c only; give each student a folder)", hd->sources);
+                 "used: a folder's headers go with its one .c, or with every .c where all are one student's; "
+                 "give each student a folder)", hd->sources);
 }
 
-int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
-                      sw_build_warnings *warn, char *err, size_t errlen)
+int sw_plugin_compile(const char *src, const char *shown_as, int shared, const char *dir, const char *name,
+                      char *so, size_t solen, sw_build_warnings *warn, char *err, size_t errlen)
 {
     if (warn) {
         warn->count = 0;
         warn->first[0] = '\0';
     }
     char shown[200], msg[SW_ERRLEN + 160], cc[PATH_MAX];
-    sw_escape(src, 120, shown, sizeof shown);
+    sw_escape(shown_as ? shown_as : src, 120, shown, sizeof shown);
     sw_jail spec = { .profile = SW_JAIL_COMPILE, .include_fd = -1, .out = { "plugin.so", "build.log" },
                      .nout = 2, .disk_bytes = (size_t)64 << 20 };
     sw_headers hd;

@@ -18,8 +18,9 @@ typedef struct sw_build_warnings {
  * there), into dir/NAME.so (its messages in dir/NAME.log), the .so's path
  * into so: 0, or SW_EINVAL (it does not compile, or took too long) or
  * SW_EIO (a limit of the grader's, no room) with err saying which, the
- * compiler's first error quoted; its warnings into warn (may be NULL). */
-int sw_plugin_compile(const char *src, int shared, const char *dir, const char *name, char *so, size_t solen,
-                      sw_build_warnings *warn, char *err, size_t errlen);
+ * compiler's first error quoted; its warnings into warn (may be NULL).
+ * Messages name it as shown_as (NULL: src). */
+int sw_plugin_compile(const char *src, const char *shown_as, int shared, const char *dir, const char *name,
+                      char *so, size_t solen, sw_build_warnings *warn, char *err, size_t errlen);
 
 #endif

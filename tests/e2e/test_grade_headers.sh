@@ -81,9 +81,29 @@ grep -Eq "^  Ada Lovelace +ada_rk4.c +error .*tableau.h: No such file or directo
 grep -Eq "^  Bob Brown +bob_rk4.c +pass" f.out || fail "bob in the shared folder: $(cat f.out)"
 # the row names the file, not a command-line flag the student never typed
 grep -q "error .*--plugin" f.out && fail "the row names --plugin: $(cat f.out)"
-grep -Eq "^  Ada Lovelace +ada_rk4.c +error +0/2 +- +'flat/ada_rk4.c' does not compile" f.out ||
+grep -Eq "^  Ada Lovelace +ada_rk4.c +error +0/2 +- +'ada_rk4.c' does not compile" f.out ||
     fail "ada's row does not start with her file: $(cat f.out)"
 grep -Eq "tableau.h +skipped .*its folder holds 2 of them" f.out || fail "the shared header's row: $(cat f.out)"
+
+# one student's own folder with two sources (a draft beside the final):
+# the headers go with both, as try builds them (student pass: the final
+# scored 0 in grade and on Gradescope where try and check had passed)
+mkdir -p own/ada
+cp class/ada/rk4.c class/ada/tableau.h own/ada/
+sed 's/C_MID \* h \* b/C_MID * h * a/' class/ada/rk4.c > own/ada/draft.c
+"$SW" grade --assignment hw.txt --roster roster.csv own > o.out 2>&1
+grep -Eq "^  Ada Lovelace +rk4.c +pass +2/2" o.out || fail "ada's own folder of two sources: $(cat o.out)"
+grep -Eq "^  Ada Lovelace +draft.c +fail" o.out || fail "ada's draft: $(cat o.out)"
+grep -Eq "tableau.h +skipped .*not graded on its own: a header, built with the .c beside it" o.out ||
+    fail "the header's row in ada's own folder: $(cat o.out)"
+# Gradescope's one submission is one student's, roster or not
+"$SW" grade --assignment hw.txt --gradescope gs.json own/ada > gs.out 2>&1
+grep -q '"score": 2' gs.json || fail "Gradescope, a header beside two sources: $(cat gs.out gs.json)"
+# a compile error in a file not counted is said, with its file's name alone
+printf 'int x = ;\n' > own/ada/broken.c
+"$SW" grade --assignment hw.txt --gradescope gs.json own/ada > gs.out 2>&1
+grep -q "Also graded, not counted (the best counts): broken.c, 0 of 2 points (error: 'broken.c' does not compile " gs.json ||
+    fail "Gradescope: the broken file's line: $(cat gs.json)"
 
 # a link named .h is not a header: never followed into the jail
 mkdir -p linked

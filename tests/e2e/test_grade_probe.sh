@@ -48,7 +48,7 @@ grep -q "order: 0 of 1: measured order 0\.9" fb/dim.txt || fail "dim: $(grep 'or
 # the stability limit is measured on a spring of its own (dim 4, which the
 # dim cheater runs RK4 on): only for a plugin whose order on its graded
 # run is the method's
-grep -q "stability: 0 of 1: stability not measured: the order measured on the graded run (0\.9[0-9]*) is not rk4's (4)" \
+grep -q "stability: 0 of 1: stability not measured: your order on the run checked (0\.9[0-9]*) is not rk4's (4)" \
     fb/dim.txt || fail "dim's stability: $(grep 'stability:' fb/dim.txt)"
 grep -q "order: 0 of 1: measured order 0\.9" fb/start.txt || fail "start: $(grep 'order:' fb/start.txt)"
 grep -q "is off the line of the finer steps" fb/dt.txt || fail "dt: $(grep 'order:' fb/dt.txt)"

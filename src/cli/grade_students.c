@@ -254,9 +254,9 @@ static void warn_partial(const grade_list *l, const student_row *rows, int n)
         if (rows[k].n == 0)
             continue;
         int held = 0;
-        for (int r = 1; r < old->nrows; r++)
-            held += old->rows[r].n > 1 && strcmp(old->rows[r].cells[0], rows[k].name) == 0 &&
-                    old->rows[r].cells[1][0];
+        for (int r = 1; r < old->nrows; r++) /* their files graded then (a header's row was not) */
+            held += old->rows[r].n > 2 && strcmp(old->rows[r].cells[0], rows[k].name) == 0 &&
+                    old->rows[r].cells[1][0] && strcmp(old->rows[r].cells[2], grade_verdict_word(GRADE_SKIPPED)) != 0;
         if (held > rows[k].n) {
             char shown[160];
             sw_escape(rows[k].name, 80, shown, sizeof shown);

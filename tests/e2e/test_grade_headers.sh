@@ -69,6 +69,11 @@ grep -Eq "tableau.h +skipped .*not graded on its own: a header, built with the .
     fail "ada's header's row: $(cat g.out)"
 grep -E "Bob Brown \(rk4.c\)  ~  Carl Gauss \(rk4.c\)|Carl Gauss \(rk4.c\)  ~  Bob Brown \(rk4.c\)" g.out >/dev/null ||
     fail "the code copied into bob's header is not paired with carl's: $(cat g.out)"
+# a regrade of the whole class into the same books: a header's row is
+# not a file of ada's the run left out (student pass: a false warning)
+"$SW" grade --assignment hw.txt --roster roster.csv --csv files.csv --gradebook book.csv class > r1.out 2>&1
+"$SW" grade --assignment hw.txt --roster roster.csv --csv files.csv --gradebook book.csv class > r2.out 2>&1
+grep -q "give their whole folder" r2.out && fail "a regrade warns of a header's row: $(cat r2.out)"
 
 # one folder for everyone: no header goes with any source, and ada is told why
 cp class/ada/rk4.c flat/ada_rk4.c

@@ -157,6 +157,7 @@ int grade_roster_missing(grade_list *l)
         l->ignored++;
         e->status = GRADE_MISSING;
         e->failing_step = -1;
+        e->part = -1; /* of no part: nothing was handed in */
         e->who = s;
         snprintf(e->owner, sizeof e->owner, "%s", r->students[s].name);
         snprintf(e->owner_id, sizeof e->owner_id, "%s",

@@ -54,12 +54,14 @@ cat > tr.txt <<'A'
 # scene: projectile
 # dt: 0.05
 A
-printf 'Name,ID,Email\nAda Lovelace,1,ada@uni.edu\n' > roster.csv
+printf 'Name,ID,Email\nAda Lovelace,1,ada@uni.edu\nBob Brown,2,bob@uni.edu\n' > roster.csv
 mkdir -p "traces/Ada Lovelace"
 "$SW" record spring -i rk4 --dt 0.01 --steps 20 -o "traces/Ada Lovelace/swing.trace" > /dev/null 2>&1 ||
     fail "record"
 printf 'not a trace\001\002\n' > "traces/Ada Lovelace/fall.trace"
-"$SW" grade --assignment tr.txt --roster roster.csv --feedback fbt traces > out 2>&1
+"$SW" grade --assignment tr.txt --roster roster.csv --feedback fbt --csv files.csv traces > out 2>&1
+# a missing student's row is of no part (student pass: it named the first)
+tr -d '\r' < files.csv | grep -q '^Bob Brown,,missing,.*,$' || fail "the missing row's part: $(grep Bob files.csv)"
 f=fbt/Ada_Lovelace.txt
 grep -A2 "== fall.trace: error ==" "$f" | grep -q "^points: none from this file: it could not be matched to a part" ||
     fail "an unreadable trace's points: $(cat "$f")"

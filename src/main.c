@@ -1,6 +1,7 @@
 /* stepwise: the command line. Dispatches subcommands to the front ends in
  * src/cli/; with no arguments it opens the lesson menu. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -45,8 +46,24 @@ static void usage(FILE *out)
                  "options:\n  -h, --help     this help\n  -V, --version  print the version\n");
 }
 
+/* The jail's switches (docs/sandbox.md), refused when misspelt: a grader
+ * that meant the container's jail must not silently get another. */
+static int check_env(void)
+{
+    const char *jail = getenv("STEPWISE_JAIL"), *box = getenv("STEPWISE_SANDBOX");
+    if (jail && jail[0] && strcmp(jail, "uid") != 0 && strcmp(jail, "ns") != 0)
+        return sw_cli_error("STEPWISE_JAIL='%.20s' is not a jail: give uid (a user of its own, as root, "
+                            "where user namespaces are refused) or ns (namespaces), or leave it unset", jail);
+    if (box && box[0] && strcmp(box, "off") != 0 && strcmp(box, "on") != 0)
+        return sw_cli_error("STEPWISE_SANDBOX='%.20s': give off (no jail, a teacher's choice) or on, or leave "
+                            "it unset", box);
+    return SW_EXIT_OK;
+}
+
 int main(int argc, char **argv)
 {
+    if (check_env() != SW_EXIT_OK)
+        return SW_EXIT_USAGE;
     if (argc < 2) {
         char *lesson_argv[] = { "lesson", NULL };
         return sw_cmd_lesson(1, lesson_argv);

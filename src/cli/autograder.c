@@ -404,9 +404,11 @@ int sw_cmd_autograder(int argc, char **argv)
             fprintf(stderr, "%s\n", err);
             return SW_EXIT_FAIL;
         }
+        const char *forced = getenv("STEPWISE_JAIL");
         printf("the jail can be built here: plugins are graded in it (%s, seccomp, %s, limits)\n",
-               sw_jail_kind_now() == SW_JAIL_UID ? "a user of its own: this system refuses user namespaces"
-                                                 : "namespaces",
+               sw_jail_kind_now() != SW_JAIL_UID           ? "namespaces"
+               : forced && strcmp(forced, "uid") == 0 ? "a user of its own, as STEPWISE_JAIL=uid asks"
+                                                      : "a user of its own: this system refuses user namespaces",
                sw_jail_landlock_abi() ? "Landlock" : "no Landlock: this kernel does not enable it");
         return SW_EXIT_OK;
     }

@@ -106,7 +106,8 @@ $(LIB): $(CORE_OBJ)
 	objcopy --wildcard --keep-global-symbol='sw_*' $(BUILD)/stepwise-core.o
 	ar rcs $@ $(BUILD)/stepwise-core.o
 
-$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB)
+# the plugin host beside it: `make stepwise` gives a binary that can run plugins
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB) | $(HOST)
 	$(CC) $(OPT) $(LDSAN) -pthread -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(TOOLLIB) $(CURSES_LIBS) $(SECCOMP_LIBS) -lm -ldl
 
 # Each tests/check_NAME.c exports make_NAME_suite(); the list is generated so

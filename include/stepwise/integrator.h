@@ -107,6 +107,9 @@ void sw_stepper_delete(sw_stepper *s);
  * returning a description of its integrator (see examples/euler_plugin.c). */
 #define SW_PLUGIN_ABI 2
 typedef int sw_plugin_step_fn(sw_ode *ode, double t, double *y, double h, double *work);
+/* How a run's end reads where the step returned non-zero: the plugin
+ * refused the step (a run that stopped, not one that diverged). */
+#define SW_PLUGIN_REFUSED "the plugin's step function returned"
 typedef struct sw_plugin {
     int abi;                  /* must be SW_PLUGIN_ABI */
     const char *name;         /* command-line name, e.g. "my-euler" */

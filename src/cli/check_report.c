@@ -269,6 +269,13 @@ static void print_measure(FILE *out, const sw_verdict *v)
                 "measured the same way)\n", v->stability, v->method, v->ref_stability);
 }
 
+
+/* A run that ended: "diverged" where the state ran away, "stopped" where
+ * the plugin's step refused (returned non-zero). */
+static const char *ended_how(const char *reason)
+{
+    return strncmp(reason, SW_PLUGIN_REFUSED, strlen(SW_PLUGIN_REFUSED)) == 0 ? "stopped" : "diverged";
+}
 void sw_check_print_plain(FILE *out, const sw_verdict *v)
 {
     const sw_check_result *r = &v->res;
@@ -314,7 +321,10 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
         print_measure(out, v);
         return;
     }
-    if (v->status != SW_VERDICT_PASS && v->first[0])
+    /* a run that stopped before the reference's: its rows end there, and
+     * the step column is the first to differ (said below, in words) */
+    int stopped = v->got_end.blown && !v->ref_end.blown && strcmp(v->first_column, "step") == 0;
+    if (v->status != SW_VERDICT_PASS && v->first[0] && !stopped)
         fprintf(out, "  first failure: %s\n", v->first);
     if (v->status != SW_VERDICT_PASS && r->rows_compared > 0) {
         if (r->values_failed > 0)
@@ -334,8 +344,8 @@ void sw_check_print_plain(FILE *out, const sw_verdict *v)
         fprintf(out, "  the reference diverged at step %ld (t = %g): %s\n", v->ref_end.step, v->ref_end.t,
                v->ref_end.reason);
     if (v->got_end.blown && !v->got_end.fault)
-        fprintf(out, "  the plugin diverged at step %ld (t = %g): %s\n", v->got_end.step, v->got_end.t,
-               v->got_end.reason);
+        fprintf(out, "  the plugin %s at step %ld (t = %g): %s\n", ended_how(v->got_end.reason), v->got_end.step,
+                v->got_end.t, v->got_end.reason);
     print_measure(out, v);
 }
 

@@ -511,10 +511,15 @@ int sw_plugin_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     ode->evals += (long)r->evals;
     ode->solves += (long)r->solves;
     ode->solver_iters += (long)r->iters;
+    if (r->rc != 0) {
+        /* the plugin's own refusal, not a divergence: said as such, with
+         * the step it refused (its return value is a number, any number) */
+        snprintf(b->message, sizeof b->message, SW_PLUGIN_REFUSED " %d (not 0) for the step from t = %g with "
+                 "h = %g", (int)r->rc, *t, h);
+        s->why = b->message;
+    }
     *t += h;
     b->t_next = *t;
-    if (r->rc != 0)
-        s->why = "the plugin's step function returned an error";
     return r->rc == 0 ? SW_OK : SW_EDIVERGED;
 }
 

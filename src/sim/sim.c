@@ -230,7 +230,7 @@ int sw_sim_step_until(sw_sim *s, double t_stop)
          * counted, so no trace has a row for it; the blow-up names it, at
          * the time it was stepping to. */
         blow_up(s, s->stepper->why                    ? s->stepper->why
-                   : (s->method->flags & SW_PLUGIN)   ? "the plugin's step function returned an error"
+                   : (s->method->flags & SW_PLUGIN)   ? SW_PLUGIN_REFUSED " an error"
                    : (s->method->flags & SW_ADAPTIVE) ? "step size underflow: the error control gave up"
                                                       : "the implicit solve failed");
         s->blow_step = s->steps + 1;

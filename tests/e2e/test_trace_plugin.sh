@@ -113,7 +113,12 @@ run "$SW" check --plugin ./nan.so --reference euler --scene spring --steps 20
 grep -q 'the plugin diverged at step 4' out || fail "NaN check report: $(cat out)"
 # A step that returns non-zero stops the run, also without a crash.
 run "$SW" record spring --plugin ./refuse.so --steps 20 -o refuse.csv
-[ "$rc" -eq 0 ] && grep -q "refuser (plugin) diverged at step 1" err || fail "refusing plugin: $rc $(cat err)"
+[ "$rc" -eq 0 ] && grep -q "refuser (plugin) stopped at step 1 (t = [0-9.e-]*): the plugin.s step function returned [0-9-]* (not 0) for the step from t = 0 with h = " err ||
+    fail "refusing plugin: $rc $(cat err)"
+# check says so too, without a "first failure" in the step column
+run "$SW" check --plugin ./refuse.so --reference euler --scene spring --steps 20
+grep -q "the plugin stopped at step 1" out && ! grep -q "first failure: .*column step" out ||
+    fail "refusing plugin, check: $(cat out)"
 
 # --- the Makefile rule builds the same example --------------------------------
 make -s -C "$root" plugin-example >make.out 2>&1 || fail "make plugin-example: $(cat make.out)"

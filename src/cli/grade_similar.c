@@ -33,24 +33,32 @@ static char *read_bounded(const char *path, size_t max, size_t *len)
     return text;
 }
 
+_Static_assert(SW_SIMILAR_SOURCE_MAX >= SW_PLUGIN_SOURCE_MAX + SW_HEADERS_MAX,
+               "what a plugin build takes must be compared whole");
+
 /* A source with the headers it was built with (plugin_headers.h), one
- * text of at most max bytes: copied code in a header is copied code. */
+ * text of at most max bytes: copied code in a header is copied code.
+ * NULL where it is more (it was not built either: nothing is dropped). */
 static char *read_source(const char *path, int own_folder, size_t max, size_t *len)
 {
     char *text = read_bounded(path, max, len), err[SW_ERRLEN];
     sw_headers hd;
     if (!text || sw_headers_find(path, !own_folder, &hd, err, sizeof err) != 0)
         return text;
-    for (int i = 0; i < hd.n && *len < max; i++) {
+    for (int i = 0; i < hd.n && text; i++) {
         int fd = sw_headers_open(&hd, i);
         char *more = NULL, *all;
         size_t n = 0;
-        if (fd >= 0 && sw_infile_read(fd, max - *len, &more, &n) == 0 && (all = realloc(text, *len + n + 2))) {
+        if (fd >= 0 && *len < max && sw_infile_read(fd, max - *len - 1, &more, &n) == 0 &&
+            (all = realloc(text, *len + n + 2))) {
             text = all;
             text[(*len)++] = '\n';
             memcpy(text + *len, more, n);
             *len += n;
             text[*len] = '\0';
+        } else { /* too large or unreadable: not compared, and counted so */
+            free(text);
+            text = NULL;
         }
         free(more);
         if (fd >= 0)

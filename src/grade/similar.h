@@ -11,7 +11,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define SW_SIMILAR_SOURCE_MAX ((size_t)1 << 20) /* bytes of one source compared */
+/* bytes of one source compared: a plugin's source with its headers (at
+ * most 1 MiB to be built, plugin/plugin_headers.h) and a newline each */
+#define SW_SIMILAR_SOURCE_MAX (((size_t)1 << 20) + 256)
 #define SW_SIMILAR_DOCS_MAX 4096                /* documents in one set */
 #define SW_SIMILAR_ROWS_MAX 4096                /* wrong rows kept per trace */
 

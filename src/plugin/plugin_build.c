@@ -292,21 +292,26 @@ static int open_inputs(const char *src, int shared, sw_jail *spec, sw_headers *h
         return -1;
     }
     spec->in[spec->nin++] = (sw_jail_file){ .fd = fd, .name = "plugin.c" };
-    if ((size_t)st.st_size > SW_JAIL_FILE_MAX) {
-        snprintf(err, errlen, "the source is %.0f MiB; a plugin's source may be at most %zu MiB",
-                 (double)st.st_size / 1048576, SW_JAIL_FILE_MAX >> 20);
-        return -1;
-    }
+    size_t total = (size_t)st.st_size;
     if (sw_headers_find(src, shared, hd, err, errlen) != 0)
         return -1;
-    for (int i = 0; i < hd->n; i++) {
-        if ((fd = sw_headers_open(hd, i)) < 0) {
-            char one[120];
-            sw_escape(hd->name[i], 60, one, sizeof one);
+    for (int i = 0; i < hd->n && total <= SW_PLUGIN_SOURCE_MAX; i++) {
+        char one[120];
+        sw_escape(hd->name[i], 60, one, sizeof one);
+        if ((fd = sw_headers_open(hd, i)) < 0 || fstat(fd, &st) != 0) {
             snprintf(err, errlen, "its header '%s' cannot be read: %s", one, strerror(errno));
+            if (fd >= 0)
+                close(fd);
             return -1;
         }
         spec->in[spec->nin++] = (sw_jail_file){ .fd = fd, .name = hd->name[i] };
+        total += (size_t)st.st_size;
+    }
+    if (total > SW_PLUGIN_SOURCE_MAX) {
+        snprintf(err, errlen, "the source%s %s %.1f MiB; a plugin's source with its headers may be at most "
+                 "%zu MiB", hd->n ? " and its headers" : "", hd->n ? "are" : "is",
+                 (double)total / 1048576, SW_PLUGIN_SOURCE_MAX >> 20);
+        return -1;
     }
     return 0;
 }

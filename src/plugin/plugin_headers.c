@@ -11,16 +11,18 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/escape.h"
+
 static int ends_with(const char *name, const char *ext)
 {
     size_t n = strlen(name), e = strlen(ext);
     return n > e && strcmp(name + n - e, ext) == 0;
 }
 
-/* A header's name as the jail takes it: no dot first, no control byte, short. */
+/* A header's name as the jail takes it: no dot first, no control byte. */
 static int header_name(const char *name)
 {
-    if (name[0] == '.' || !ends_with(name, ".h") || strlen(name) >= SW_HEADER_NAME_MAX)
+    if (name[0] == '.' || !ends_with(name, ".h"))
         return 0;
     for (const unsigned char *c = (const unsigned char *)name; *c; c++)
         if (*c < 0x20 || *c == 0x7f)
@@ -56,9 +58,13 @@ int sw_headers_find(const char *src, int shared, sw_headers *h, char *err, size_
     if (!d)
         return 0; /* no folder to read: built alone, as before */
     int found = 0;
+    char too_long[SW_HEADER_NAME_MAX] = "";
     for (struct dirent *e; (e = readdir(d));) {
         if (e->d_name[0] != '.' && ends_with(e->d_name, ".c") && regular(h->dir, e->d_name))
             h->sources++;
+        else if (header_name(e->d_name) && regular(h->dir, e->d_name) &&
+                 strlen(e->d_name) >= SW_HEADER_NAME_MAX)
+            snprintf(too_long, sizeof too_long, "%.40s", e->d_name);
         else if (header_name(e->d_name) && regular(h->dir, e->d_name)) {
             if (found < SW_HEADERS_MAX)
                 snprintf(h->name[found], SW_HEADER_NAME_MAX, "%.*s", SW_HEADER_NAME_MAX - 1, e->d_name);
@@ -69,6 +75,13 @@ int sw_headers_find(const char *src, int shared, sw_headers *h, char *err, size_
     if (shared && h->sources > 1) {
         h->withheld = found;
         return 0;
+    }
+    if (too_long[0]) {
+        char shown[200];
+        sw_escape(too_long, 40, shown, sizeof shown);
+        snprintf(err, errlen, "its folder holds a header whose name ('%s...') is %d bytes or longer; a "
+                 "header's name may be at most %d", shown, SW_HEADER_NAME_MAX, SW_HEADER_NAME_MAX - 1);
+        return -1;
     }
     if (found > SW_HEADERS_MAX) {
         snprintf(err, errlen, "its folder holds %d headers (.h files); a plugin is built with at most %d",

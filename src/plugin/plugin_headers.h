@@ -9,7 +9,12 @@
 #include <stddef.h>
 
 #define SW_HEADERS_MAX 12
-#define SW_HEADER_NAME_MAX 64
+/* A source and its headers together, in bytes: what is built is what
+ * --similarity reads whole (red team 4: a 60 MiB sparse header each was
+ * copied into the jail's disk, and a 1 MiB comment in a header hid a
+ * copy from --similarity). */
+#define SW_PLUGIN_SOURCE_MAX ((size_t)1 << 20)
+#define SW_HEADER_NAME_MAX 200 /* with its NUL: the jail's paths hold it */
 
 typedef struct sw_headers {
     char dir[PATH_MAX];                            /* the source's folder */
@@ -20,8 +25,8 @@ typedef struct sw_headers {
 } sw_headers;
 
 /* The headers beside src: regular files (never a link) whose names end in
- * .h, do not start with a dot, are shorter than SW_HEADER_NAME_MAX and hold
- * no control character. shared (grade's submissions, where one folder may
+ * .h, do not start with a dot and hold no control character. A name as
+ * long as SW_HEADER_NAME_MAX or longer is refused (-1), never left out. shared (grade's submissions, where one folder may
  * hold several students' files): a folder's headers go with a source only
  * where it is the one .c in that folder; otherwise (the student's own
  * folder: try, check, record) always. 0, or -1 with err saying why (more

@@ -110,6 +110,34 @@ printf 'int x = ;\n' > own/ada/broken.c
 grep -q "Also graded, not counted (the best counts): broken.c, 0 of 2 points (error: 'broken.c' does not compile " gs.json ||
     fail "Gradescope: the broken file's line: $(cat gs.json)"
 
+# a source and its headers are at most 1 MiB together: sparse files of
+# 60 MiB each filled the uid jail's disk (red team 4), and a header padded
+# past what --similarity reads hid a copy from it
+mkdir -p big
+cp class/ada/rk4.c class/ada/tableau.h big/
+truncate -s 60M big/pad.h
+"$SW" grade --assignment hw.txt big > b.out 2>&1
+grep -Eq "rk4.c +error .*the source and its headers are 60\.[0-9] MiB; a plugin's source with its headers may be at most 1 MiB" b.out ||
+    fail "a 60 MiB header: $(cat b.out)"
+if [ "$(id -u)" -eq 0 ]; then
+    STEPWISE_JAIL=uid "$SW" grade --assignment hw.txt big > bu.out 2>&1
+    grep -Eq "rk4.c +error .*may be at most 1 MiB" bu.out || fail "a 60 MiB header, uid jail: $(cat bu.out)"
+fi
+
+# a header's name of 66 bytes (30 Cyrillic letters) is built with it; one
+# past the limit is refused with a message, never left out in silence
+# (red team 4: a correct rk4.c lost every point)
+mkdir -p named
+sed 's/tableau\.h/тестовые_коэффициенты_рк4.h/' class/ada/rk4.c > named/rk4.c
+cp class/ada/tableau.h "named/тестовые_коэффициенты_рк4.h"
+"$SW" grade --assignment hw.txt named > n.out 2>&1
+grep -Eq "rk4.c +pass +2/2" n.out || fail "a header with a long name: $(cat n.out)"
+rm named/*.h
+long=$(printf 'x%.0s' $(seq 1 210)).h
+cp class/ada/tableau.h "named/$long"
+"$SW" grade --assignment hw.txt named > n.out 2>&1
+grep -Eq "rk4.c +error .*a header's name may be at most 199" n.out || fail "a header's name too long: $(cat n.out)"
+
 # a link named .h is not a header: never followed into the jail
 mkdir -p linked
 echo '#define W_OUTER (1.0 / 6.0)' > outside.h

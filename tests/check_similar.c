@@ -470,6 +470,34 @@ START_TEST(trace_rows_and_digests)
 }
 END_TEST
 
+/* Fingerprints are common code when more than max_docs owners share
+ * them: eleven copies of one owner's file are not (red team 4). */
+START_TEST(common_code_counts_owners)
+{
+    sw_similar s;
+    char err[SW_ERRLEN];
+    init(&s, 1);
+    const char *code = "#include <stepwise/integrator.h>\nstatic int st(sw_ode *o, double t, double *y, double h, "
+                       "double *w) { for (int i = 0; i < o->dim; i++) { double a = y[i] * h; w[i] = a * a + t; "
+                       "y[i] += w[i] * 0.5 - a / 3.0; } return 0; }\n";
+    int a = sw_similar_add_source(&s, code, strlen(code), err, sizeof err);
+    sw_similar_set_owner(&s, a, 0);
+    int copies[11];
+    for (int i = 0; i < 11; i++) { /* not byte-identical: a comment apart */
+        char text[600];
+        snprintf(text, sizeof text, "%s/* copy %d */\n", code, i);
+        copies[i] = sw_similar_add_source(&s, text, strlen(text), err, sizeof err);
+        sw_similar_set_owner(&s, copies[i], 1);
+    }
+    ck_assert(compare(&s, a, copies[0]).flagged);
+    /* twelve owners: common code, never paired */
+    for (int i = 0; i < 11; i++)
+        sw_similar_set_owner(&s, copies[i], 2 + i);
+    ck_assert(!compare(&s, a, copies[0]).flagged);
+    sw_similar_free(&s);
+}
+END_TEST
+
 /* Write text to a new temporary file; its path into path (room for 32). */
 static void temp_file(char *path, const char *text)
 {
@@ -544,6 +572,7 @@ Suite *make_similar_suite(void)
     tcase_add_test(tc, traces_identical_wrong_numbers);
     tcase_add_test(tc, trace_rows_and_digests);
     tcase_add_test(tc, trace_rows_under_another_header);
+    tcase_add_test(tc, common_code_counts_owners);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -139,9 +139,16 @@ int grade_similar_run(grade_list *l)
         sw_similar_add_default_base(&s, err, sizeof err) != SW_OK)
         return sw_cli_error("grade: --similarity: %s", err);
     /* The class is larger than MOSS's default -m of 10: a fingerprint is
-     * boilerplate only when a quarter of the sources share it. */
-    if (l->n / 4 > s.opt.max_docs)
-        s.opt.max_docs = l->n / 4;
+     * boilerplate only when a quarter of the students share it. */
+    int students = 0;
+    for (int i = 0; i < l->n; i++) {
+        int first = 1; /* a roster's student counted at their first file */
+        for (int j = 0; j < i && first && l->items[i].who >= 0; j++)
+            first = l->items[j].who != l->items[i].who;
+        students += first;
+    }
+    if (students / 4 > s.opt.max_docs)
+        s.opt.max_docs = students / 4;
     s.opt.own_runs = l->hw && l->hw->nvarying > 0;
     int *entry_of = calloc((size_t)l->n + 1, sizeof *entry_of);
     if (!entry_of) {
@@ -181,6 +188,8 @@ int grade_similar_run(grade_list *l)
             }
         } else
             continue;
+        if (doc >= 0 && e->who >= 0)
+            sw_similar_set_owner(&s, doc, e->who); /* else the doc is its own */
         if (doc >= 0)
             entry_of[doc] = i;
         else
@@ -230,7 +239,7 @@ int grade_similar_run(grade_list *l)
         fprintf(t, "similar pairs: none flagged among %d plugin sources and traces compared\n",
                 s.ndocs);
     if (t && s.ncommon)
-        fprintf(t, "  (%zu fingerprint%s shared by more than %d sources %s taken as common code and not "
+        fprintf(t, "  (%zu fingerprint%s shared by more than %d students %s taken as common code and not "
                 "counted: code that many students share is never paired; read such sources side by side)\n",
                 s.ncommon, s.ncommon == 1 ? "" : "s", s.opt.max_docs, s.ncommon == 1 ? "was" : "were");
     if (t && skipped)

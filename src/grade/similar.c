@@ -21,6 +21,7 @@ enum { DOC_SOURCE = 1, DOC_TRACE };
 
 struct sw_similar_doc {
     int kind;
+    int owner;            /* whose (sw_similar_set_owner); each its own by default */
     sw_similar_digest digest;
     uint64_t *fp_all;     /* sources: the winnowed fingerprints, sorted, each once */
     size_t nfp_all;
@@ -340,6 +341,7 @@ static sw_similar_doc *new_doc(sw_similar *s, int kind, char *err, size_t errlen
     sw_similar_doc *d = &s->docs[s->ndocs];
     memset(d, 0, sizeof *d);
     d->kind = kind;
+    d->owner = -1 - s->ndocs; /* its own, unlike any owner set */
     d->last_row = -1;
     return d;
 }
@@ -421,9 +423,30 @@ int sw_similar_trace_row(sw_similar *s, int doc, long row, const double *values,
 
 /* ---- comparing ---------------------------------------------------------------- */
 
+void sw_similar_set_owner(sw_similar *s, int doc, int owner)
+{
+    assert(doc >= 0 && doc < s->ndocs && owner >= 0);
+    s->docs[doc].owner = owner;
+    s->prepared = 0;
+}
+
+typedef struct owned_fp {
+    uint64_t fp;
+    int owner;
+} owned_fp;
+
+static int cmp_owned(const void *a, const void *b)
+{
+    const owned_fp *x = a, *y = b;
+    if (x->fp != y->fp)
+        return x->fp < y->fp ? -1 : 1;
+    return (x->owner > y->owner) - (x->owner < y->owner);
+}
+
 /* Each source's fingerprints without the base's and without those more
- * than max_docs sources share (MOSS's -m: boilerplate nobody handed out,
- * such as the loop over ode->dim). */
+ * than max_docs owners' sources share (MOSS's -m: boilerplate nobody
+ * handed out, such as the loop over ode->dim). Owners, not sources: ten
+ * copies of one file are one student's (red team 4 hid a copy so). */
 static int prepare(sw_similar *s)
 {
     size_t total = 0;
@@ -432,22 +455,25 @@ static int prepare(sw_similar *s)
     for (int i = 0; i < s->ndocs; i++)
         if (s->docs[i].kind == DOC_SOURCE)
             total += s->docs[i].nfp_all;
-    uint64_t *all = malloc((total + 1) * sizeof *all), *common = all;
+    owned_fp *all = malloc((total + 1) * sizeof *all);
+    uint64_t *common = malloc((total + 1) * sizeof *common);
     size_t ncommon = 0, at = 0;
-    if (!all)
+    if (!all || !common) {
+        free(all);
+        free(common);
         return SW_ENOMEM;
+    }
     for (int i = 0; i < s->ndocs; i++)
-        if (s->docs[i].kind == DOC_SOURCE) {
-            memcpy(all + at, s->docs[i].fp_all, s->docs[i].nfp_all * sizeof *all);
-            at += s->docs[i].nfp_all;
-        }
-    qsort(all, total, sizeof *all, cmp_u64);
+        if (s->docs[i].kind == DOC_SOURCE)
+            for (size_t k = 0; k < s->docs[i].nfp_all; k++)
+                all[at++] = (owned_fp){ s->docs[i].fp_all[k], s->docs[i].owner };
+    qsort(all, total, sizeof *all, cmp_owned);
     for (size_t i = 0; i < total;) {
-        size_t j = i;
-        while (j < total && all[j] == all[i])
-            j++;
-        if (s->opt.max_docs > 0 && j - i > (size_t)s->opt.max_docs)
-            common[ncommon++] = all[i]; /* in place: ncommon <= i, and all[i] is read */
+        size_t j = i, owners = 0;
+        for (; j < total && all[j].fp == all[i].fp; j++)
+            owners += j == i || all[j].owner != all[j - 1].owner;
+        if (s->opt.max_docs > 0 && owners > (size_t)s->opt.max_docs)
+            common[ncommon++] = all[i].fp; /* sorted, as contains() needs */
         i = j;
     }
     for (int i = 0; i < s->ndocs; i++) {
@@ -458,6 +484,7 @@ static int prepare(sw_similar *s)
         d->fp = malloc((d->nfp_all + 1) * sizeof *d->fp);
         if (!d->fp) {
             free(all);
+            free(common);
             return SW_ENOMEM;
         }
         d->nfp = d->nown = 0;
@@ -470,6 +497,7 @@ static int prepare(sw_similar *s)
         }
     }
     free(all);
+    free(common);
     s->ncommon = ncommon;
     s->prepared = 1;
     return SW_OK;

@@ -102,6 +102,11 @@ int sw_similar_add_trace(sw_similar *s, const sw_similar_digest *d, const sw_sim
  * SW_SIMILAR_ROWS_MAX). 0 or SW_ENOMEM. */
 int sw_similar_trace_row(sw_similar *s, int doc, long row, const double *values, int n, int wrong);
 
+/* Doc's owner (a student's number, >= 0): fingerprints are common code
+ * when more than max_docs owners share them, each doc its own owner until
+ * set. */
+void sw_similar_set_owner(sw_similar *s, int doc, int owner);
+
 /* One compared pair. */
 typedef struct sw_similar_pair {
     int a, b;              /* document indices, a < b */

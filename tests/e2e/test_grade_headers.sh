@@ -110,6 +110,18 @@ printf 'int x = ;\n' > own/ada/broken.c
 grep -q "Also graded, not counted (the best counts): broken.c, 0 of 2 points (error: 'broken.c' does not compile " gs.json ||
     fail "Gradescope: the broken file's line: $(cat gs.json)"
 
+# ten more copies of one student's file do not make it common code: a
+# fingerprint is common when more than max(10, a quarter) of the students
+# share it, not of the files (red team 4 hid a copy so)
+mkdir -p flood/ada flood/bob flood/carl
+cp "$sim/rk4_alice.c" flood/ada/rk4.c
+cp "$sim/rk4_alice_copy.c" flood/bob/rk4.c
+for i in 1 2 3 4 5 6 7 8 9 10; do cp "$sim/rk4_alice_copy.c" "flood/bob/try$i.c"; done
+cp "$sim/rk4_bob.c" flood/carl/rk4.c
+"$SW" grade --assignment hw.txt --roster roster.csv --similarity flood > fl.out 2>&1
+grep -Eq "Ada Lovelace \(rk4.c\)  ~  Bob Brown \((rk4|try[0-9]+).c\)|Bob Brown \((rk4|try[0-9]+).c\)  ~  Ada Lovelace \(rk4.c\)" fl.out ||
+    fail "a copy flooded eleven times is not paired: $(cat fl.out)"
+
 # a source and its headers are at most 1 MiB together: sparse files of
 # 60 MiB each filled the uid jail's disk (red team 4), and a header padded
 # past what --similarity reads hid a copy from it

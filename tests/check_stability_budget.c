@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "measure/measure.h"
 #include "measure/stability.h"
 #include "sim/truth.h"
 #include "stepwise/stepwise.h"
@@ -99,6 +100,27 @@ START_TEST(every_scene_every_end)
 }
 END_TEST
 
+/* The grader's budget spent on the test spring counts against the
+ * plugin only where it went much slower a step than its graded runs
+ * (red team 4: compared with the pace --cpu allowed, a plugin fast on
+ * its 20 graded steps and slow only on the spring kept the point). */
+START_TEST(pace_against_the_graded_runs)
+{
+    /* honest and slow everywhere: 200 graded steps in 2 s of CPU with its
+     * build, the spring's 38 s budget gone in 3 000 steps (a smaller system) */
+    ck_assert(sw_measure_pace_holds(2.3, 200, 38, 3000));
+    /* red team 4's: 20 graded steps in 0.3 s (its build, mostly), 38 s gone
+     * in 300 steps of the spring, 8.4 times slower a step */
+    ck_assert(!sw_measure_pace_holds(0.3, 20, 38, 300));
+    /* at the slack's edge: 4 times slower a step holds, more does not */
+    ck_assert(sw_measure_pace_holds(1.0, 100, 4.0, 100));
+    ck_assert(!sw_measure_pace_holds(1.0, 100, 4.01, 100));
+    /* no steps, or no graded run: never held */
+    ck_assert(!sw_measure_pace_holds(1.0, 0, 38, 100));
+    ck_assert(!sw_measure_pace_holds(1.0, 100, 38, 0));
+}
+END_TEST
+
 Suite *make_stability_budget_suite(void);
 Suite *make_stability_budget_suite(void)
 {
@@ -106,6 +128,7 @@ Suite *make_stability_budget_suite(void)
     TCase *tc = tcase_create("budget");
     tcase_set_timeout(tc, 3600);
     tcase_add_test(tc, every_scene_every_end);
+    tcase_add_test(tc, pace_against_the_graded_runs);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -539,15 +539,18 @@ static void decide_stability(sw_verdict *v, const sw_integrator *plugin, const s
     /* a host afresh, its budget whole: the order's sweep used the last one's */
     sw_plugin_grader_runs(0);
     sw_plugin_grader_runs(1);
+    /* what its own runs took so far (its builds and every part's graded
+     * run, reaped): more than this graded run's alone, so in its favour */
+    double own = sw_plugin_own_cpu();
     if (sw_measure_stability_match(plugin, ref, rel, &mt, why, sizeof why) != SW_OK) {
-        /* Out of the grader's budget B after k steps, where the graded run
-         * took N steps within --cpu: at the graded run's pace or faster
-         * (k·cpu >= N·B) the plugin is slow everywhere, and the grader's
-         * budget, not the plugin, is short: the point is not counted
-         * against it. Slower on these runs than on its graded run, it is
-         * its own doing (a plugin can tell the spring apart). */
+        /* Out of the grader's budget B after k steps: at its graded runs'
+         * pace a step or near it, the plugin is slow everywhere, and the
+         * grader's budget, not the plugin, is short: the point is not
+         * counted against it. Much slower a step here than there, it is
+         * its own doing (a plugin can tell the spring apart; red team 4:
+         * the pace --cpu allowed, not the one it had, let it through). */
         double cpu = sw_plugin_cpu_limit();
-        if (mt.budget && cpu > 0 && (double)mt.steps * cpu >= (double)graded_steps * SW_GRADER_CPU(cpu)) {
+        if (mt.budget && cpu > 0 && sw_measure_pace_holds(own, graded_steps, SW_GRADER_CPU(cpu), mt.steps)) {
             v->stability_decided = v->stability_given = 1;
             snprintf(v->measure_note, n, "stability not measured: the grader could not finish measuring your "
                      "method's stability within its own budget (4 x --cpu + 30 s of CPU time, never yours); "
@@ -555,9 +558,10 @@ static void decide_stability(sw_verdict *v, const sw_integrator *plugin, const s
                      ref->name);
         } else if (mt.budget)
             snprintf(v->measure_note, n, "stability not measured: the plugin ran out of the grader's CPU "
-                     "budget (4 x --cpu + 30 s) in %ld steps of the spring, slower a step than its graded run "
-                     "(%ld steps within --cpu): a method that is slower only where it is measured gets no "
-                     "stability point", mt.steps, graded_steps);
+                     "budget (4 x --cpu + 30 s) in %ld steps of the test spring, more than %g times slower a "
+                     "step than its graded runs (%ld steps here in %.3g s of CPU with its build): a method that "
+                     "is slower only where it is measured gets no stability point", mt.steps,
+                     SW_MEASURE_PACE_SLACK, graded_steps, own);
         else
             snprintf(v->measure_note, n, "stability not measured: %.540s", why);
         return;

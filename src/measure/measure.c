@@ -379,3 +379,10 @@ int sw_measure_stability_match(const sw_integrator *m, const sw_integrator *ref,
     out->match = out->held_inside != 0 && out->held_outside != 1;
     return SW_OK;
 }
+
+int sw_measure_pace_holds(double graded_cpu, long graded_steps, double spent, long steps)
+{
+    /* spent/steps <= slack * graded_cpu/graded_steps, without a division */
+    return graded_steps > 0 && steps > 0 && graded_cpu >= 0 &&
+           spent * (double)graded_steps <= SW_MEASURE_PACE_SLACK * graded_cpu * (double)steps;
+}

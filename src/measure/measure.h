@@ -109,6 +109,13 @@ typedef struct sw_stability_match {
     long steps;           /* m's steps in all, a failing run's to where it failed */
     int budget;           /* the status: m ran out of its CPU time (SIGXCPU) */
 } sw_stability_match;
+/* Whether measuring runs that spent `spent` s of CPU on `steps` steps went
+ * at the pace of a graded run that took graded_cpu s for graded_steps
+ * (or at most SW_MEASURE_PACE_SLACK times slower a step): a plugin slow
+ * everywhere, whose measurement the grader's budget cut short; else it
+ * was slower only where it was measured, which it can tell apart. */
+#define SW_MEASURE_PACE_SLACK 4.0
+int sw_measure_pace_holds(double graded_cpu, long graded_steps, double spent, long steps);
 /* 0, or a status with err filled (m failed: the plugin's words). */
 int sw_measure_stability_match(const sw_integrator *m, const sw_integrator *ref, double rel,
                                sw_stability_match *out, char *err, size_t errlen);

@@ -65,6 +65,9 @@ void sw_plugin_set_limits(const struct sw_limits *lim);
 void sw_plugin_grader_runs(int on);
 /* The submission's CPU-time limit set (--cpu, seconds); 0 none. */
 double sw_plugin_cpu_limit(void);
+/* The CPU time the submission's own processes (its builds, its graded
+ * runs' hosts) have used so far, once reaped: never the grader's. */
+double sw_plugin_own_cpu(void);
 /* Every plugin's host ends now (each starts afresh at its next step):
  * nothing a plugin keeps in its process passes to the runs after. */
 void sw_plugin_hosts_end(void);

@@ -76,6 +76,11 @@ int sw_plugin_grader_open(void) { return grader_open; }
 
 double sw_plugin_cpu_limit(void) { return limits.cpu_seconds; }
 
+double sw_plugin_own_cpu(void)
+{
+    return (grader_open ? grader_from : children_cpu()) - grader_used;
+}
+
 void sw_plugin_set_timeout(double seconds)
 {
     if (seconds > 0 && isfinite(seconds))

@@ -22,6 +22,7 @@
 #include "plugin/sandbox.h"
 #include "stepwise/base.h"
 #include "util/beside.h"
+#include "util/clock.h"
 #include "util/escape.h"
 
 /* Seconds a compiler may take for one plugin. */
@@ -397,6 +398,7 @@ int sw_plugin_compile(const char *src, const char *shown_as, int shared, const c
     snprintf(so, solen, "%s/%s.so", dir, name);
     snprintf(log_path, sizeof log_path, "%s/%s.log", dir, name);
     sw_child_end end;
+    double started = sw_clock_now();
     if (sw_jail_enabled()) {
         /* the jail's init sends both once the compiler ended */
         int got = sw_sandbox_read_file(child.from_child, SW_JAIL_FILE_MAX, BUILD_SECONDS, &out, &out_len);
@@ -431,9 +433,18 @@ int sw_plugin_compile(const char *src, const char *shown_as, int shared, const c
                  "only, the compiler's included)", shown, lim.cpu_seconds);
         return SW_EINVAL;
     }
-    if (end.killed || (!end.exited && end.signal == SIGXCPU)) {
+    /* out of the wall clock's 60 s: killed, or its output given up on
+     * (its jail then ends without a word) */
+    int late = !(out_len > 0) && !(log && log[0]) && sw_clock_now() - started >= BUILD_SECONDS;
+    if (end.killed || late) {
         free(log);
-        snprintf(err, errlen, "'%s' did not compile within the grader's limit of %g s", shown,
+        snprintf(err, errlen, "'%s' did not compile within the grader's limit of %g s of wall-clock time (on a "
+                 "machine this busy, grade with fewer --jobs)", shown, BUILD_SECONDS);
+        return SW_EIO;
+    }
+    if (!end.exited && end.signal == SIGXCPU) {
+        free(log);
+        snprintf(err, errlen, "'%s' did not compile within the grader's limit of %g s of CPU time", shown,
                  BUILD_SECONDS);
         return SW_EINVAL;
     }

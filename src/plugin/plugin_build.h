@@ -16,8 +16,8 @@ typedef struct sw_build_warnings {
 /* Compile src, with the headers beside it (plugin_headers.h; shared: a
  * grader's folder, whose headers go with src only where it is the one .c
  * there), into dir/NAME.so (its messages in dir/NAME.log), the .so's path
- * into so: 0, or SW_EINVAL (it does not compile, or took too long) or
- * SW_EIO (a limit of the grader's, no room) with err saying which, the
+ * into so: 0, or SW_EINVAL (it does not compile, or took 60 s of CPU) or
+ * SW_EIO (a limit of the grader's: no room, 60 s of wall clock) with err saying which, the
  * compiler's first error quoted; its warnings into warn (may be NULL).
  * Messages name it as shown_as (NULL: src). */
 int sw_plugin_compile(const char *src, const char *shown_as, int shared, const char *dir, const char *name,

@@ -187,5 +187,12 @@ if [ "$(id -u)" -eq 0 ]; then
         STEPWISE_JAIL=uid "$SW" try oracle/probe.c --no-play > o.out 2>&1
         grep -q "Permission denied\|seen" o.out && fail "__has_include(\"$f\") told: $(cat o.out)"
     done
+    # a binary file included: its first error, in either jail, not the
+    # teacher's --output its log ran into in the uid jail (red team 4)
+    mkdir -p binary
+    { echo '#include "/etc/ld.so.cache"'; cat "$ROOT/examples/euler_plugin.c"; } > binary/probe.c
+    STEPWISE_JAIL=uid "$SW" grade --assignment hw.txt binary > bin.out 2>&1
+    grep -Eq "probe.c +error .*does not compile .*ld.so.cache:1:[0-9]+: error" bin.out ||
+        fail "a binary file included, uid jail: $(cat bin.out)"
 fi
 exit 0

@@ -116,11 +116,16 @@ static void box_fault_now(step_box *b)
     }
     sw_sandbox_describe(end, how, sizeof how);
     switch (r ? r->fault : SW_PF_NONE) {
-    case SW_PF_OVERRUN_WORK:
+    case SW_PF_OVERRUN_WORK: {
+        char fix[80];
         snprintf(why, sizeof why, "wrote past its %d work vector%s (work[%lld], %d doubles each)", b->wv,
                  b->wv == 1 ? "" : "s", (long long)r->index, b->dim);
-        box_fail(b, SW_PF_OVERRUN_WORK, why, NULL);
+        /* the vectors work[index] needs: a number, checked when read */
+        snprintf(fix, sizeof fix, "(its sw_plugin asks for .work_vectors = %d; work[%lld] needs %lld)", b->wv,
+                 (long long)r->index, b->dim > 0 ? (long long)r->index / b->dim + 1 : 0);
+        box_fail(b, SW_PF_OVERRUN_WORK, why, fix);
         return;
+    }
     case SW_PF_OVERRUN_Y:
         snprintf(why, sizeof why, "wrote past the end of y (y[%lld]; y has ode->dim = %d doubles)",
                  (long long)r->index, b->dim);

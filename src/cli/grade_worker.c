@@ -349,9 +349,9 @@ int grade_worker(void *ctx, int in, int out)
         sw_score_append(&rec.score, &v.score, part->name, (int)part->visibility, p);
         if (f && h->nparts > 1)
             fprintf(f, "%s== part %s ==\n", p > lo ? "\n" : "", part->name);
-        if (f && part->visibility != SW_VIS_VISIBLE)
+        if (f && part->visibility != SW_VIS_VISIBLE) /* the student reads it */
             fprintf(f, "Graded; the results of this part are %s.\n",
-                    sw_visibility_words(part->visibility));
+                    part->visibility == SW_VIS_HIDDEN ? "not shown to you" : sw_visibility_words(part->visibility));
         else if (f && v.status == SW_VERDICT_ERROR)
             fprintf(f, "ERROR: %s\n", v.error);
         else if (f)

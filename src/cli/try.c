@@ -193,7 +193,7 @@ static int try_once(try_args *a)
     printf("  check      ");
     fflush(stdout);
     sw_check_print_plain(stdout, &v);
-    if (v.status == SW_VERDICT_FAIL && !v.got_end.fault)
+    if (v.status == SW_VERDICT_FAIL && !v.got_end.fault && !v.have_explanation) /* else said in its why: */
         name_match(&req);
     fflush(stdout);
     int status = (int)v.status;

@@ -555,11 +555,24 @@ int sw_homework_part_of_trace(const sw_homework *h, const char *file, const sw_t
     return -1;
 }
 
+/* The most part p gives a plugin (its checks' points together). */
+static double plugin_part_max(const sw_homework *h, int p)
+{
+    static sw_score none; /* 22 kB: not on a stack */
+    sw_score_facts f = { .is_plugin = 1, .usable = 0, .error = "" };
+    sw_points_score(&h->parts[p].a.points, &f, &none);
+    return none.max;
+}
+
 int sw_homework_write_sheet(const sw_homework *h, FILE *f, const char *who)
 {
     int plugin = h->kind == SW_KIND_PLUGIN, left_out = 0;
+    double left_points = 0;
     for (int p = 0; plugin && p < h->nparts; p++)
-        left_out += h->parts[p].line && h->parts[p].visibility != SW_VIS_VISIBLE;
+        if (h->parts[p].line && h->parts[p].visibility != SW_VIS_VISIBLE) {
+            left_out++;
+            left_points += plugin_part_max(h, p);
+        }
     char key[64], num[40], shown[200];
     for (long i = 0; i < h->nlines; i++) {
         const char *t = h->line_text[i];
@@ -586,8 +599,9 @@ int sw_homework_write_sheet(const sw_homework *h, FILE *f, const char *who)
             sw_escape(who ? who : "", 120, shown, sizeof shown);
             fprintf(f, "# note: the assignment sheet of %s%s", shown,
                     h->nvarying ? ", with their own parameters" : "");
-            if (left_out)
-                fprintf(f, "; %d more part%s graded, not shown here", left_out, left_out == 1 ? " is" : "s are");
+            if (left_out) /* their points, so that the sheet's sum is not taken for the whole */
+                fprintf(f, "; %d more part%s graded, not shown here, for %g of the %g points", left_out,
+                        left_out == 1 ? " is" : "s are", left_points, h->max);
             fputc('\n', f);
         }
     }

@@ -38,6 +38,12 @@ grep -q "^  line: values: x\* y\*: 0 of 2: .*did you implement euler" fb/euler.t
     fail "euler: the values' line does not say why: $(cat fb/euler.txt)"
 grep -q "^  line: order: 0 of 1: measured order [01]\.[0-9]*; the method.s is 4" fb/euler.txt || fail "euler: the order's line: $(cat fb/euler.txt)"
 grep -q "swirl:" fb/*.txt && fail "a hidden part's checks reached the feedback: $(grep swirl: fb/*.txt)"
+# the student's sheet says what the parts not on it are worth (student
+# pass: a PASS on the sheet's parts read as the whole grade)
+printf 'Name,ID,Email\nAda Lovelace,1,ada@uni.edu\n' > one.csv
+"$SW" handout --assignment hw.txt --roster one.csv -o sheets > /dev/null 2>&1 || fail "handout"
+grep -q "^# note: .*; 1 more part is graded, not shown here, for 2 of the 5 points$" sheets/Ada_Lovelace.txt ||
+    fail "the sheet's note: $(head -3 sheets/Ada_Lovelace.txt)"
 grep -q "^  line: order: 0 of 1: the same$" fb/broken.txt || fail "broken: the reason is not said once: $(cat fb/broken.txt)"
 
 # two trace parts; one file scores the first, the other is unreadable

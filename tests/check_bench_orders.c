@@ -347,7 +347,7 @@ END_TEST
  * the same rule and are checked in the full tier and in the docs table). */
 START_TEST(test_issue38_adaptive)
 {
-    static const char *const adaptive[] = { "rk45", "dop853", "rkn", "rodas4", "rkn12", "dop853-lc", "vern8" };
+    static const char *const adaptive[] = { "rk45", "dop853", "rkn", "rodas4", "rkn12", "dop853-lc", "vern8", "vern9" };
     enum { N = sizeof adaptive / sizeof adaptive[0] };
     for (size_t i = 0; i < sizeof issue38_cases / sizeof issue38_cases[0]; i++) {
         const char *names[N];

@@ -69,7 +69,8 @@ WRAP     = -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 # and the derivative part (particles, forces, flow fields, the scenes and
 # the util modules they use), which the plugin host is built from alone.
 ENGINE_METHODS = $(addprefix src/engine/,adaptive.c dop853.c dop853_lc.c explicit.c implicit.c implicit_wide.c \
-                 integrators.c lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c rosenbrock_wide.c)
+                 integrators.c lecture.c mistakes.c regularise.c rk45.c rkn.c rkn12.c rosenbrock.c rosenbrock_wide.c \
+                 vern.c)
 # The methods' lecture forms, for reading and for the tests: in the tool's
 # archive only, neither the embedder's library nor the plugin host.
 ENGINE_READING = src/engine/reference.c src/engine/reference_adaptive.c src/engine/reference_implicit.c

@@ -475,12 +475,12 @@ static const candidate *cheapest(const candidate *c, int n, const char *lib, int
     return best;
 }
 
-enum { MAX_CANDIDATES = 16, MAX_SUMMARY = 24 };
+enum { MAX_CANDIDATES = 20, MAX_SUMMARY = 24 };
 
 static int candidates(const problem *pb, candidate *c)
 {
     int k = 0;
-    const char *mine[] = { "rk4", "rk45", "dop853", "rkn", "rkn12", "dop853-lc", "rodas4" };
+    const char *mine[] = { "rk4", "rk45", "dop853", "rkn", "rkn12", "dop853-lc", "vern8", "vern9", "rodas4" };
     for (int i = 0; i < (int)(sizeof mine / sizeof *mine) - !pb->stiff; i++) {
         const sw_integrator *m = sw_integrator_find(mine[i]);
         if (m)

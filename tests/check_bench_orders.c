@@ -347,15 +347,16 @@ END_TEST
  * the same rule and are checked in the full tier and in the docs table). */
 START_TEST(test_issue38_adaptive)
 {
-    static const char *const adaptive[] = { "rk45", "dop853", "rkn", "rodas4", "rkn12", "dop853-lc" };
+    static const char *const adaptive[] = { "rk45", "dop853", "rkn", "rodas4", "rkn12", "dop853-lc", "vern8", "vern9" };
+    enum { N = sizeof adaptive / sizeof adaptive[0] };
     for (size_t i = 0; i < sizeof issue38_cases / sizeof issue38_cases[0]; i++) {
-        const char *names[6];
+        const char *names[N];
         int n = 0;
         sw_system sys;
         char err[SW_ERRLEN];
         const sw_scene *sc = sw_scene_find(issue38_cases[i].scene);
         ck_assert_int_eq(sw_system_build(&sys, sc, NULL, err, sizeof err), SW_OK);
-        for (int k = 0; k < 6; k++)
+        for (int k = 0; k < N; k++)
             if (sw_integrator_accepts(sw_integrator_find(adaptive[k]), sys.ode, err, sizeof err) == SW_OK)
                 names[n++] = adaptive[k];
         sw_system_free(&sys);

@@ -148,7 +148,7 @@ START_TEST(production_steps_are_the_lecture_forms)
         ck_assert_msg(scenes > 0, "%s: no scene to compare on", m->name);
         ck_assert_msg(rejected > 0, "%s: no trial rejected, the controller's other branch untried", m->name);
     }
-    ck_assert_int_ge(methods, 5); /* rk45, dop853, rkn, rkn12, dop853-lc (every_adaptive_step_has_its_form) */
+    ck_assert_int_ge(methods, 7); /* rk45, dop853, rkn, rkn12, dop853-lc, vern8, vern9 (every_adaptive_step_has_its_form) */
     ck_assert_msg(sliced > 0, "no sliced run compared");
 }
 END_TEST
@@ -168,6 +168,8 @@ START_TEST(every_adaptive_step_has_its_form)
     ck_assert(sw_ref_adaptive_of(sw_step_rkn) == sw_ref_rkn);
     ck_assert(sw_ref_adaptive_of(sw_step_rkn12) == sw_ref_rkn12);
     ck_assert(sw_ref_adaptive_of(sw_step_dop853_lc) == sw_ref_dop853_lc);
+    ck_assert(sw_ref_adaptive_of(sw_step_vern8) == sw_ref_vern8);
+    ck_assert(sw_ref_adaptive_of(sw_step_vern9) == sw_ref_vern9);
     ck_assert(sw_ref_adaptive_of(sw_step_rodas4) == NULL);
     ck_assert(sw_ref_adaptive_of(sw_step_rk4) == NULL);
 }

@@ -1,6 +1,6 @@
 /* The integrator table and registry, and the stepper that runs one method
  * on one system. The methods themselves live one family per file
- * (explicit.c, implicit.c, rk45.c, dop853.c, rosenbrock.c) and know nothing of particles: they see
+ * (explicit.c, implicit.c, rk45.c, dop853.c, rosenbrock.c, vern.c) and know nothing of particles: they see
  * an sw_ode. Invariant: a step allocates nothing — every vector it touches
  * was handed out by sw_stepper_init. */
 #include "engine/stepper.h"
@@ -120,6 +120,19 @@ static const sw_integrator builtins[] = {
       .flags = SW_EXPLICIT | SW_ADAPTIVE | SW_NEEDS_SECOND_ORDER | SW_ONE_BODY, .stability = 0.0,
       .work_vectors = 1, .step = sw_step_dop853_lc, .prepare = sw_dop853_lc_prepare,
       .summary = "adaptive: x = c + u^2, dt = |x - c| ds: the close pass taken in a clock that slows there",
+      .no_lecture = adapts },
+    /* Verner's efficient 8(7) and 9(8) pairs (vern.c): 12 and 15 stages
+     * after the first, then the derivative at the new state, which the
+     * next step reuses. */
+    { .name = "vern8", .label = "Verner 8(7) \"most efficient\", adaptive", .order = 8, .evals = 13,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE, .stability = 0.0, .work_vectors = SW_V8_VECTORS,
+      .step = sw_step_vern8,
+      .summary = "adaptive: 13 stages, error estimate from an embedded 7th-order solution",
+      .no_lecture = adapts },
+    { .name = "vern9", .label = "Verner 9(8) \"most efficient\", adaptive", .order = 9, .evals = 16,
+      .flags = SW_EXPLICIT | SW_ADAPTIVE, .stability = 0.0, .work_vectors = SW_V9_VECTORS,
+      .step = sw_step_vern9,
+      .summary = "adaptive: 16 stages, error estimate from an embedded 8th-order solution",
       .no_lecture = adapts },
 };
 

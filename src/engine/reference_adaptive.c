@@ -20,6 +20,7 @@
 #include "engine/rkn12_tableau.h"
 #include "engine/rkn_tableau.h"
 #include "engine/stepper.h"
+#include "engine/vern_tableau.h"
 #include "stepwise/base.h"
 
 #define X(name, p, q) static const double RKN_##name = (double)(p) / (q);
@@ -261,6 +262,54 @@ static double rkn12_trial(sw_ref_adaptive *r, sw_ode *ode, double t, double *y, 
     return sqrt(by4(sq) / ode->dim);
 }
 
+/* Verner's pairs, vern_tableau.h's numbers (indices from 0, its k_j in
+ * k[j + 1]): Σ_j w_j k_j over S stages with each group of stages whose
+ * nodes nearly coincide summed about one of them, m = M[j]: w_j (k_j -
+ * k_m), and the group's sum times k_m, in stage order. */
+static double grouped(int S, const double *w, const unsigned char *m, double *const k[K], int c)
+{
+    double sum = -0.0;
+    for (int j = 0; j < S; j++)
+        if (w[j] != 0)
+            sum += m[j] == j ? w[j] * k[j + 1][c] : w[j] * (k[j + 1][c] - k[m[j] + 1][c]);
+    return sum;
+}
+
+/* A Verner pair of S stages (its tables, A and its groups M row by row
+ * with stride S): S - 1 stages after k1, y1 = y + h·Σ b_i k_i, the error
+ * h·Σ e_i k_i against the embedded solution; its norm the RMS of
+ * error/sk, the squares added by4. Not FSAL: k[S + 1] = f(t + h, y1) is
+ * evaluated after, the next step's k1. */
+static double vern_trial(int S, const double *C, const double *A, const unsigned char *AM, const double *B,
+                         const unsigned char *BM, const double *E, const unsigned char *EM, sw_ref_adaptive *r,
+                         sw_ode *ode, double t, double *y, double h)
+{
+    for (int i = 1; i < S; i++) {
+        for (int c = 0; c < ode->dim; c++)
+            r->yt[c] = y[c] + h * grouped(S, A + i * S, AM + i * S, r->k, c);
+        sw_ode_eval(ode, t + C[i] * h, r->yt, r->k[i + 1]);
+    }
+    double sq[4] = { 0 };
+    for (int i = 0; i < ode->dim; i++) {
+        r->y0[i] = y[i];
+        y[i] = y[i] + h * grouped(S, B, BM, r->k, i);
+        double q = h * grouped(S, E, EM, r->k, i) / scale(r, r->y0[i], y[i]);
+        sq[i % 4] += q * q;
+    }
+    sw_ode_eval(ode, t + h, y, r->k[S + 1]);
+    return sqrt(by4(sq) / ode->dim);
+}
+
+static double vern8_trial(sw_ref_adaptive *r, sw_ode *ode, double t, double *y, double h)
+{
+    return vern_trial(13, V8_C, &V8_A[0][0], &V8_A_M[0][0], V8_B, V8_B_M, V8_E, V8_E_M, r, ode, t, y, h);
+}
+
+static double vern9_trial(sw_ref_adaptive *r, sw_ode *ode, double t, double *y, double h)
+{
+    return vern_trial(16, V9_C, &V9_A[0][0], &V9_A_M[0][0], V9_B, V9_B_M, V9_E, V9_E_M, r, ode, t, y, h);
+}
+
 /* Hairer's first step (HINIT) for a method of this order: h with
  * h^order·max(‖f‖, ‖f'‖) ≈ 0.01 in the norm of the tolerances, f' from an
  * explicit Euler step of the probe size h0 = 0.01·‖y‖/‖f‖; at most 100·h0
@@ -376,6 +425,20 @@ int sw_ref_rkn12(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, double h
     return adaptive_step(&rkn1210, r, ode, t, y, h_max);
 }
 
+int sw_ref_vern8(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, double h_max)
+{
+    static const control v87 = { .trial = vern8_trial, .next = 14, .expo = 1.0 / 8, .safety = 0.9,
+                                 .fac_min = 1.0 / 3, .fac_max = 6.0, .hold = 1, .guess_first = 1 };
+    return adaptive_step(&v87, r, ode, t, y, h_max);
+}
+
+int sw_ref_vern9(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, double h_max)
+{
+    static const control v98 = { .trial = vern9_trial, .next = 17, .expo = 1.0 / 9, .safety = 0.9,
+                                 .fac_min = 1.0 / 3, .fac_max = 6.0, .hold = 1, .guess_first = 1 };
+    return adaptive_step(&v98, r, ode, t, y, h_max);
+}
+
 /* dop853's lecture form as the change of variables calls a method: its
  * memory kept in the stepper's fields (have_cache, h_next, the counts). */
 static int lc_inner_step(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
@@ -437,7 +500,8 @@ sw_ref_adaptive_fn *sw_ref_adaptive_of(sw_step_fn *step)
         sw_ref_adaptive_fn *ref;
     } pairs[] = {
         { sw_step_rk45, sw_ref_rk45 }, { sw_step_dop853, sw_ref_dop853 }, { sw_step_rkn, sw_ref_rkn },
-        { sw_step_rkn12, sw_ref_rkn12 }, { sw_step_dop853_lc, sw_ref_dop853_lc },
+        { sw_step_rkn12, sw_ref_rkn12 }, { sw_step_dop853_lc, sw_ref_dop853_lc }, { sw_step_vern8, sw_ref_vern8 },
+        { sw_step_vern9, sw_ref_vern9 },
     };
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
         if (pairs[i].step == step)

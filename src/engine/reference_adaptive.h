@@ -1,11 +1,11 @@
 /* The explicit adaptive methods as the lecture writes them (rk45, dop853,
- * rkn, rkn12, dop853-lc): one accepted step is trials — the stages, the
+ * rkn, rkn12, dop853-lc, vern8, vern9): one accepted step is trials — the stages, the
  * new state, the error estimate — until the error is within the
  * tolerances, each followed by the controller's new step. Plain loops over
  * the whole state, one line a row of the tableau; no slices, no vector
  * types, no runaway test. For reading, and for
  * tests/check_reference_adaptive.c, which proves the production steps
- * (rk45.c, dop853.c, rkn.c, rkn12.c, dop853_lc.c over adaptive.c) give
+ * (rk45.c, dop853.c, rkn.c, rkn12.c, dop853_lc.c, vern.c over adaptive.c) give
  * these bits exactly; never on the production path. */
 #ifndef SW_ENGINE_REFERENCE_ADAPTIVE_H
 #define SW_ENGINE_REFERENCE_ADAPTIVE_H
@@ -41,7 +41,8 @@ void sw_ref_adaptive_free(sw_ref_adaptive *r);
  * body in one central field). */
 typedef int sw_ref_adaptive_fn(sw_ref_adaptive *r, sw_ode *ode, double *t, double *y, double h_max);
 
-sw_ref_adaptive_fn sw_ref_rk45, sw_ref_dop853, sw_ref_rkn, sw_ref_rkn12, sw_ref_dop853_lc;
+sw_ref_adaptive_fn sw_ref_rk45, sw_ref_dop853, sw_ref_rkn, sw_ref_rkn12, sw_ref_dop853_lc, sw_ref_vern8,
+    sw_ref_vern9;
 
 /* The lecture form of a production step (a method row's step), or NULL. */
 sw_ref_adaptive_fn *sw_ref_adaptive_of(sw_step_fn *step);

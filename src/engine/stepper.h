@@ -20,7 +20,7 @@ struct sw_stepper {
     double *dense;        /* dense finite-difference Jacobian workspace, or NULL */
     int have_cache;       /* FSAL derivative is valid (in work[0..dim), or slot fsal) */
     int fsal;             /* adaptive RK: workspace slot of the cached first-stage derivative */
-    double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rkn12, rodas4) */
+    double rtol, atol;    /* adaptive error control (rk45, dop853, rkn, rkn12, rodas4, vern8, vern9) */
     double h_next;        /* adaptive: proposed size of the next step (0: use h) */
     double h_last;        /* size of the last step taken */
     double err_last;      /* adaptive: the last accepted step's error norm, at least 0.01 (0: none) */
@@ -78,6 +78,8 @@ sw_step_fn sw_step_rkn;                                /* rkn.c */
 sw_step_fn sw_step_rkn12;                              /* rkn12.c */
 sw_step_fn sw_step_rodas4;                             /* rosenbrock.c */
 sw_step_fn sw_step_dop853_lc;                          /* dop853_lc.c */
+sw_step_fn sw_step_vern8, sw_step_vern9;               /* vern.c */
+enum { SW_V8_VECTORS = 16, SW_V9_VECTORS = 19 };       /* their workspaces */
 
 /* dop853-lc's preparation (its row's prepare, dop853_lc.c): the regularised
  * run it steps; SW_OK, or SW_EINVAL / SW_ENOMEM with err. */

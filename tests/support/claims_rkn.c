@@ -2,7 +2,8 @@
  * guide, the method table and lesson 9, recomputed: its order with fixed
  * steps on Kepler's orbit, its embedded order, its evaluations per step, the
  * key that picks it, its refusal of a damped system, and the lesson's
- * evaluations at equal error on the e = 0.9 orbit. */
+ * evaluations at equal error on the e = 0.9 orbit; and beside them vern8's
+ * and vern9's rows (their orders, evaluations per step, keys). */
 #include "claims.h"
 
 #include "engine/regularise.h"
@@ -13,6 +14,8 @@
 static double key_hash(void) { return cl_key_picks('#', 13, "rkn"); }
 static double key_percent(void) { return cl_key_picks('%', 15, "rkn12"); }
 static double key_caret(void) { return cl_key_picks('^', 16, "dop853-lc"); }
+static double key_amp(void) { return cl_key_picks('&', 17, "vern8"); }
+static double key_star(void) { return cl_key_picks('*', 18, "vern9"); }
 
 /* dop853-lc's order: dop853 in Levi-Civita's variables with n fixed steps
  * to s = 100, about eight orbits (tolerances so loose that every trial is
@@ -145,6 +148,10 @@ static double per_step(const char *m, int first)
 static double rkn_per_step(void) { return per_step("rkn", 0); }
 static double rkn_stages(void) { return per_step("rkn", 1); }
 static double rkn12_per_step(void) { return per_step("rkn12", 0); }
+static double vern8_per_step(void) { return per_step("vern8", 0); }
+static double vern8_order(void) { return cl_method("vern8")->order; }
+static double vern9_per_step(void) { return per_step("vern9", 0); }
+static double vern9_order(void) { return cl_method("vern9")->order; }
 
 /* rkn12's order with fixed steps on x'' = -x to t = 10, 4 against 6 steps
  * (errors 8e-9 and 6e-11: above round-off and asymptotic; on the orbit
@@ -258,14 +265,22 @@ const claim sw_claims_r[] = {
     { PERF, "evaluations (errors within {1e-3}, 1e-6 and 1e-9", lc_error_3, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
     { PERF, "evaluations (errors within 1e-3, {1e-6} and 1e-9", lc_error_6, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
     { PERF, "evaluations (errors within 1e-3, 1e-6 and {1e-9}", lc_error_9, ATMOST, 0, "the run's largest state error against Kepler's solution", NULL },
-    { README, "`!`, `@`, `#`, `$`, `%` and `^` pick one", key_caret, EXACT, 0, "'^' picks the sixteenth method, dop853-lc", cl_one },
+    { README, "`!`, `@`, `#`, `$`, `%`, `^`, `&` and `*` pick one", key_caret, EXACT, 0, "'^' picks the sixteenth method, dop853-lc", cl_one },
+    { README, "`%`, `^`, `&` and `*` pick one", key_amp, EXACT, 0, "'&' picks the seventeenth method, vern8", cl_one },
+    { README, "`^`, `&` and `*` pick one", key_star, EXACT, 0, "'*' picks the eighteenth method, vern9", cl_one },
+    { GUIDE, "`*` the eighteenth, vern9", key_star, EXACT, 0, "'*' picks the eighteenth method, vern9", cl_one },
+    { README, "| vern9 | Verner's \"most efficient\" 9(8) pair (RKV98.IIa), adaptive (rtol/atol) | {9} |", vern9_order, EXACT, 0, "the method's order in the table (tests/check_vern.c measures 9.46 on fixed steps)", NULL },
+    { README, "(RKV98.IIa), adaptive (rtol/atol) | 9 | {16} (15 stages and the new state) |", vern9_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
+    { GUIDE, "`&` the seventeenth, vern8", key_amp, EXACT, 0, "'&' picks the seventeenth method, vern8", cl_one },
+    { README, "| vern8 | Verner's \"most efficient\" 8(7) pair (RKV87.IIa), adaptive (rtol/atol) | {8} |", vern8_order, EXACT, 0, "the method's order in the table (tests/check_vern.c measures 8.39 on fixed steps)", NULL },
+    { README, "(RKV87.IIa), adaptive (rtol/atol) | 8 | {13} (12 stages and the new state) |", vern8_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { README, "a clock that slows there | {8} | 12", lc_order, ABS, 0.3, "fixed steps in s on the e = 0.9 orbit's oscillator u, 100 to 200 steps: 7.96", NULL },
     { README, "a clock that slows there | 8 | {12} (FSAL; 13 on a step from a state it did not leave) |", lc_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"dop853 in Levi-Civita's variables: the Kepler problem regularised\", .order = {8}, .evals = 12,", lc_order, ABS, 0.3, "as the README's row", NULL },
     { INTEGRATORS, "\"dop853 in Levi-Civita's variables: the Kepler problem regularised\", .order = 8, .evals = {12},", lc_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { GUIDE, "`^` the sixteenth, dop853-lc", key_caret, EXACT, 0, "'^' picks the sixteenth method, dop853-lc", cl_one },
-    { README, "`1`–`9`, `0`, `!`, `@`, `#`, `$`, `%` and `^` pick one", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
-    { README, "`#`, `$`, `%` and `^` pick one", key_percent, EXACT, 0, "'%' picks the fifteenth method, rkn12", cl_one },
+    { README, "`1`–`9`, `0`, `!`, `@`, `#`, `$`, `%`, `^`, `&` and `*` pick one", key_hash, EXACT, 0, "'#' picks the thirteenth method, rkn", cl_one },
+    { README, "`#`, `$`, `%`, `^`, `&` and `*` pick one", key_percent, EXACT, 0, "'%' picks the fifteenth method, rkn12", cl_one },
     { README, "at tight tolerances: refused where a force reads velocities | {12} | 17", rkn12_order, ABS, 0.5, "fixed steps on x'' = -x to t = 10, 4 to 6 steps: 11.96", NULL },
     { README, "at tight tolerances: refused where a force reads velocities | 12 | {17} (16 stages and the new state) |", rkn12_per_step, EXACT, 0, "evaluations per accepted step once under way", NULL },
     { INTEGRATORS, "\"Runge-Kutta-Nystrom 12(10), adaptive (Dormand, El-Mikkawy, Prince)\", .order = {12}, .evals = 17,", rkn12_order, ABS, 0.5, "as the README's row", NULL },

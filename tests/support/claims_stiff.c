@@ -215,7 +215,7 @@ const claim sw_claims_k[] = {
     { README, "one matrix ({7} evaluations on a flow field", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way on the vortex, a flow field", NULL },
     { INTEGRATORS, "L-stable (Hairer); {6} evals on particles\",\n      .order = 4, .evals = 7,", rodas_particle_per_trial, EXACT, 0, "evaluations per trial step once under way on a particle system", NULL },
     { INTEGRATORS, "L-stable (Hairer); 6 evals on particles\",\n      .order = 4, .evals = {7},", rodas_per_step, EXACT, 0, "evaluations per accepted step once under way on a flow field", NULL },
-    { README, "`!`, `@`, `#`, `$`, `%` and `^` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
+    { README, "`!`, `@`, `#`, `$`, `%`, `^`, `&` and `*` pick one", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
     { GUIDE, "`$` the fourteenth, rodas4", key_hash_rodas, EXACT, 0, "'$' picks the fourteenth method, rodas4", cl_one },
 };
 const size_t sw_claims_k_n = sizeof sw_claims_k / sizeof sw_claims_k[0];

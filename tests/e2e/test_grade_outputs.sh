@@ -148,7 +148,7 @@ bad_number() { # OPTION VALUE WANT
 # an option: without its mark in the environment, or with the mark but no
 # channel (a socket) on descriptor 3, it is refused in one line.
 for mark in "" 1; do
-    STEPWISE_GRADE_WORKER=$mark "$SW" grade --worker 1 build class/alice.trace 0 "" --assignment ref.trace \
+    STEPWISE_GRADE_WORKER=$mark "$SW" grade --worker 1 build class/alice.trace 0 0 "" --assignment ref.trace \
         >out 2>err 3>/dev/null; rc=$?
     [ "$rc" -eq 2 ] && [ ! -s out ] && [ "$(wc -l < err)" -eq 1 ] &&
         grep -qF -- "--worker is how grade starts a plugin's worker, not an option" err ||
@@ -175,7 +175,7 @@ if pid == 0:
     out = os.open(os.devnull, os.O_WRONLY)
     os.dup2(out, 1)
     os.dup2(out, 2)
-    os.execve(sw, [sw, "grade", "--worker", "0", ".", "sub.c", "0", "", "--assignment", "ref.trace"], env)
+    os.execve(sw, [sw, "grade", "--worker", "0", ".", "sub.c", "0", "0", "", "--assignment", "ref.trace"], env)
 theirs.close()
 received = 0
 if peer == "open":

@@ -63,6 +63,11 @@ int sw_cli_events(const char *text, sw_events_mode *out);
 #define SW_CLI_EVENTS_HELP \
     "      --events MODE      locate: cut steps at contacts and crossings (every method keeps\n" \
     "                         its order); step: meet them at step ends (default, first order)\n"
+/* text (lines) to `to`, each line wider than width broken between words
+ * and going on under its own text (report_wrap.c); width < 40: as is. */
+void sw_cli_report_wrapped(FILE *to, const char *text, int width);
+/* The width of the terminal f writes to; 0 when it is not one. */
+int sw_cli_terminal_width(FILE *f);
 /* Parse a whole number in [min, max] for flag `flag`. */
 int sw_cli_long(const char *flag, const char *text, long min, long max, long *out);
 /* Queue a --set assignment; checked by sw_cli_finish_opts. */

@@ -100,19 +100,23 @@ static const sw_integrator *default_reference(const sw_integrator *plugin)
 /* The figures the check measured, as grade measures them: the order on
  * the run checked (on the spring where that run shows none), the
  * stability limit on the spring. */
+/* Where try's report goes: stdout, or on a terminal a buffer printed
+ * wrapped to its width once the report is whole (try_once). */
+static FILE *rep;
+
 static void print_measure(const sw_verdict *v, const sw_integrator *ref)
 {
     char why[SW_ERRLEN];
     if (!isnan(v->order))
-        printf("  order      claimed %d, measured %.2f  (%s: %d)%s\n", v->claimed_order, v->order, ref->name,
+        fprintf(rep, "  order      claimed %d, measured %.2f  (%s: %d)%s\n", v->claimed_order, v->order, ref->name,
                ref->order, v->order_on_spring ? " on the undamped spring: the run checked shows none" : "");
     else
-        printf("  order      claimed %d, not measured: %s\n", v->claimed_order,
+        fprintf(rep, "  order      claimed %d, not measured: %s\n", v->claimed_order,
                v->measure_note + strlen("order not measured: "));
     if (isnan(v->order))
         return;
     if (isnan(v->stability)) {
-        printf("  stability  not measured: %s\n", v->measure_note + strlen("stability not measured: "));
+        fprintf(rep, "  stability  not measured: %s\n", v->measure_note + strlen("stability not measured: "));
         return;
     }
     /* the reference's figure measured the same way, as grade compares them */
@@ -124,12 +128,12 @@ static void print_measure(const sw_verdict *v, const sw_integrator *ref)
     else
         snprintf(rshown, sizeof rshown, rkind == 1 ? "none" : rkind == 2 ? "unbounded" : "%.4g", rwdt);
     if (v->stability_kind == 1)
-        printf("  stability  none: grows even at w*dt = 0.01 on the undamped spring (%s: %s)\n",
+        fprintf(rep, "  stability  none: grows even at w*dt = 0.01 on the undamped spring (%s: %s)\n",
                ref->name, rshown);
     else if (v->stability_kind == 2)
-        printf("  stability  unbounded on the undamped spring (%s: %s)\n", ref->name, rshown);
+        fprintf(rep, "  stability  unbounded on the undamped spring (%s: %s)\n", ref->name, rshown);
     else
-        printf("  stability  largest stable w*dt %.4g on the undamped spring (%s: %s, measured the same "
+        fprintf(rep, "  stability  largest stable w*dt %.4g on the undamped spring (%s: %s, measured the same "
                "way)\n", v->stability, ref->name, rshown);
 }
 
@@ -145,7 +149,7 @@ static void name_match(const sw_check_request *base)
         req.measure = 0;
         static sw_verdict v;
         if (sw_check_run(&req, &v) == SW_VERDICT_PASS) {
-            printf("  your numbers match %s (%s) instead\n", m->name, m->label);
+            fprintf(rep, "  your numbers match %s (%s) instead\n", m->name, m->label);
             return;
         }
     }
@@ -170,12 +174,12 @@ static int check_in_time(const sw_check_request *base)
     static sw_verdict v;
     sw_check_run(&req, &v);
     if (v.status == SW_VERDICT_PASS) {
-        printf("  in time    PASS on gyre too, whose field changes with t: your stages' times are %s's\n",
+        fprintf(rep, "  time       PASS on gyre too, whose field changes with t: your stages' times are %s's\n",
                base->reference->name);
         return SW_VERDICT_PASS;
     }
-    printf("  in time    on gyre, whose field changes with t (the chain's forces do not read it): ");
-    sw_check_print_plain(stdout, &v);
+    fprintf(rep, "  time       on gyre, whose field changes with t (the chain's forces do not read it): ");
+    sw_check_print_plain(rep, &v);
     return (int)v.status;
 }
 
@@ -199,10 +203,17 @@ static int try_once(try_args *a)
     sw_escape(m->label, 100, label, sizeof label);
     printf("%s: %s (%s), %d work vector%s\n", a->file_shown, m->name, label, m->work_vectors,
            m->work_vectors == 1 ? "" : "s");
+    fflush(stdout); /* at once: the measuring runs take a moment */
+    char *text = NULL;
+    size_t text_len = 0;
+    int width = sw_cli_terminal_width(stdout);
+    rep = width ? open_memstream(&text, &text_len) : NULL;
+    if (!rep)
+        rep = stdout;
     if (warn.count)
-        printf("  build      %d compiler warning%s (often a bug: read them); the first: %s\n", warn.count,
-               warn.count == 1 ? "" : "s", warn.first);
-    fflush(stdout);
+        fprintf(rep, "  build      %d compiler warning%s (often a bug: read them); the first: %s\n", warn.count,
+                warn.count == 1 ? "" : "s", warn.first);
+    fflush(rep);
     sw_check_request req;
     sw_check_request_init(&req);
     req.plugin = m;
@@ -217,14 +228,19 @@ static int try_once(try_args *a)
     if (v.have_measure)
         print_measure(&v, ref);
     v.measure_shown = 1; /* above, beside the reference's: not again in the check's lines */
-    printf("  check      ");
-    fflush(stdout);
-    sw_check_print_plain(stdout, &v);
+    fprintf(rep, "  check      ");
+    sw_check_print_plain(rep, &v);
     if (v.status == SW_VERDICT_FAIL && !v.got_end.fault && !v.have_explanation) /* else said in its why: */
         name_match(&req);
     int status = (int)v.status;
     if (!a->scene && v.status == SW_VERDICT_PASS && !(ref->flags & SW_NEEDS_SECOND_ORDER))
         status = check_in_time(&req);
+    if (rep != stdout) {
+        fclose(rep);
+        sw_cli_report_wrapped(stdout, text ? text : "", width);
+        free(text);
+    }
+    rep = stdout;
     fflush(stdout);
     if (!a->play || !isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO) || v.got_end.fault)
         return status;

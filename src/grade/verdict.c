@@ -619,8 +619,8 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
     if (!whole && !v->order_on_spring && v->status != SW_VERDICT_PASS &&
         fabs(v->order - ref->order) < SW_POINTS_ORDER_MARGIN) {
         snprintf(v->measure_note, sizeof v->measure_note, "order not measured: it reads %.3g (%.20s's) on test runs "
-                 "shorter than the run checked above, and such an order counts only where your values above "
-                 "match", v->order, ref->name);
+                 "shorter than the run checked, and such an order counts only where your values match the "
+                 "reference's", v->order, ref->name);
         v->order = NAN;
         return;
     }
@@ -636,8 +636,8 @@ static void measure(sw_verdict *v, const sw_integrator *plugin, const sw_integra
      * order is, only where the graded values match */
     if (v->status != SW_VERDICT_PASS) {
         snprintf(v->measure_note, sizeof v->measure_note, "stability not measured: it is measured only "
-                 "where your values above match (the limit is found on a test spring, where a method could "
-                 "act otherwise)");
+                 "where your values match the reference's (the limit is found on a test spring, where a "
+                 "method could act otherwise)");
         return;
     }
     if (decide) {

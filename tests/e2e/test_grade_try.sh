@@ -27,13 +27,13 @@ grep -q 'build ' out && fail "warnings reported for a file without any: $(cat ou
 # the chain's forces do not read t: a step whose stages are at the wrong
 # times passes there, and try checks it on the double gyre too (student
 # pass: only a hidden part caught it)
-grep -q '^  in time    PASS on gyre too' out || fail "no check in time for the example: $(cat out)"
+grep -q '^  time       PASS on gyre too' out || fail "no check in time for the example: $(cat out)"
 sed "s/@NAME@/timely/" "$root/tests/hostile/honest-rk4.c" > timely.c
 sed "s/@NAME@/late/; s/t + 0.5 \* h, tmp, k2/t + h, tmp, k2/" "$root/tests/hostile/honest-rk4.c" > late.c
 "$SW" try timely.c --no-play > out 2>&1 || fail "an honest rk4: $(cat out)"
-grep -q '^  in time    PASS on gyre too' out || fail "an honest rk4 in time: $(cat out)"
+grep -q '^  time       PASS on gyre too' out || fail "an honest rk4 in time: $(cat out)"
 "$SW" try late.c --no-play > out 2>&1; rc=$?
-[ "$rc" -eq 1 ] && grep -q '^  check      PASS' out && grep -q '^  in time    on gyre, whose field changes with t .*FAIL' out ||
+[ "$rc" -eq 1 ] && grep -q '^  check      PASS' out && grep -q '^  time       on gyre, whose field changes with t .*FAIL' out ||
     fail "an rk4 whose second stage is at t + h: exit $rc: $(cat out)"
 # try's argument is the file, not a --plugin flag the student never typed
 "$SW" try gone.c --no-play > out 2>&1; rc=$?

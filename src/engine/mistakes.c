@@ -56,6 +56,44 @@ static int rk4_variant(sw_stepper *s, sw_ode *ode, double *t, double *y, double 
     return 0;
 }
 
+/* RK4 with the outer and inner weights swapped: h/6·(2k1 + k2 + k3 + 2k4). */
+static int rk4_weights(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    int n = ode->dim;
+    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3),
+           *m = SW_WORK(s, 4);
+    sw_ode_eval(ode, *t, y, k1);
+    sw_axpy(n, m, y, 0.5 * h, k1);
+    sw_ode_eval(ode, *t + 0.5 * h, m, k2);
+    sw_axpy(n, m, y, 0.5 * h, k2);
+    sw_ode_eval(ode, *t + 0.5 * h, m, k3);
+    sw_axpy(n, m, y, h, k3);
+    sw_ode_eval(ode, *t + h, m, k4);
+    for (int i = 0; i < n; i++)
+        y[i] += h / 6.0 * (2.0 * k1[i] + k2[i] + k3[i] + 2.0 * k4[i]);
+    *t += h;
+    return 0;
+}
+
+/* RK4 that moves y itself from stage to stage (to save a vector): each
+ * stage starts where the last one left y, not from the step's start. */
+static int rk4_in_place(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
+{
+    int n = ode->dim;
+    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3);
+    sw_ode_eval(ode, *t, y, k1);
+    sw_axpy(n, y, y, 0.5 * h, k1);
+    sw_ode_eval(ode, *t + 0.5 * h, y, k2);
+    sw_axpy(n, y, y, 0.5 * h, k2);
+    sw_ode_eval(ode, *t + 0.5 * h, y, k3);
+    sw_axpy(n, y, y, h, k3);
+    sw_ode_eval(ode, *t + h, y, k4);
+    for (int i = 0; i < n; i++)
+        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    *t += h;
+    return 0;
+}
+
 static int rk4_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
     return rk4_variant(s, ode, t, y, h, 0.0, 0.0, 0.0, 0.5);
@@ -182,6 +220,12 @@ const sw_mistake sw_mistakes_rk4[] = {
               "k4 at t + h" },
     { .kind = "k3-full-step", .method = MISTAKE("rk4 (k3 from a full step)", 4, 4, 5, rk4_k3_full),
       .hint = "rk4 with k3 taken at y + h*k2 instead of y + h/2*k2" },
+    { .kind = "rk4-weights", .method = MISTAKE("rk4 (weights swapped)", 4, 4, 5, rk4_weights),
+      .hint = "rk4 with its weights swapped: h/6*(2*k1 + k2 + k3 + 2*k4) instead of "
+              "h/6*(k1 + 2*k2 + 2*k3 + k4)" },
+    { .kind = "rk4-in-place", .method = MISTAKE("rk4 (y moved in place)", 4, 4, 4, rk4_in_place),
+      .hint = "rk4 that moves y itself through its stages: k2, k3 and k4 must each start from the "
+              "step's own y (y + h/2*k1, y + h/2*k2, y + h*k3), kept unchanged until the last line" },
     { .kind = NULL },
 };
 

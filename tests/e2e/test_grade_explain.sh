@@ -46,11 +46,19 @@ BEGIN {
     for (n = 0; n <= 40; n++) {
         printf "%d,%.17g", n, t; for (i = 0; i < 2 * N; i++) printf ",%.17g", Y[i]; print ""
         c2 = mistake == "at-t" ? 0 : 0.5; c4 = mistake == "at-t" ? 0 : 1; k3 = mistake == "k3" ? 1 : 0.5
-        f(t, Y, K1); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + 0.5 * h * K1[i]
-        f(t + c2 * h, T, K2); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + k3 * h * K2[i]
-        f(t + c2 * h, T, K3); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + h * K3[i]
-        f(t + c4 * h, T, K4)
-        for (i = 0; i < 2 * N; i++) Y[i] = Y[i] + h / 6 * (K1[i] + 2 * K2[i] + 2 * K3[i] + K4[i])
+        if (mistake == "inplace") { # y itself moved through the stages
+            f(t, Y, K1); for (i = 0; i < 2 * N; i++) Y[i] = Y[i] + 0.5 * h * K1[i]
+            f(t + 0.5 * h, Y, K2); for (i = 0; i < 2 * N; i++) Y[i] = Y[i] + 0.5 * h * K2[i]
+            f(t + 0.5 * h, Y, K3); for (i = 0; i < 2 * N; i++) Y[i] = Y[i] + h * K3[i]
+            f(t + h, Y, K4)
+        } else {
+            f(t, Y, K1); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + 0.5 * h * K1[i]
+            f(t + c2 * h, T, K2); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + k3 * h * K2[i]
+            f(t + c2 * h, T, K3); for (i = 0; i < 2 * N; i++) T[i] = Y[i] + h * K3[i]
+            f(t + c4 * h, T, K4)
+        }
+        w1 = mistake == "weights" ? 2 : 1; w2 = mistake == "weights" ? 1 : 2
+        for (i = 0; i < 2 * N; i++) Y[i] = Y[i] + h / 6 * (w1 * K1[i] + w2 * K2[i] + w2 * K3[i] + w1 * K4[i])
         t += h
     }
 }
@@ -61,6 +69,10 @@ awk -v mistake=at-t -f gyre.awk > at-t.trace
 why at-t.trace stage-time 'rk4 with every stage evaluated at the step.s start t.*changes with time'
 awk -v mistake=k3 -f gyre.awk > k3.trace
 why k3.trace k3-full-step 'rk4 with k3 taken at y \+ h\*k2 instead of y \+ h/2\*k2'
+awk -v mistake=weights -f gyre.awk > weights.trace
+why weights.trace rk4-weights 'rk4 with its weights swapped: h/6\*\(2\*k1 \+ k2 \+ k3 \+ 2\*k4\)'
+awk -v mistake=inplace -f gyre.awk > inplace.trace
+why inplace.trace rk4-in-place 'rk4 that moves y itself through its stages'
 
 # Rows and the time column.
 "$SW" record spring --steps 60 -o a.trace 2>/dev/null

@@ -35,6 +35,15 @@ grep -q '^  time       PASS on gyre too' out || fail "an honest rk4 in time: $(c
 "$SW" try late.c --no-play > out 2>&1; rc=$?
 [ "$rc" -eq 1 ] && grep -q '^  check      PASS' out && grep -q '^  time       on gyre, whose field changes with t .*FAIL' out ||
     fail "an rk4 whose second stage is at t + h: exit $rc: $(cat out)"
+# a step that refuses large steps (returns 1) has no stability limit
+# there: it stopped, it did not grow (student pass: "largest stable
+# w*dt 0.158")
+sed "s/@NAME@/careful/; s/^    int n = ode->dim;$/    if (h > 0.05) return 1;\n    int n = ode->dim;/" \
+    "$root/tests/hostile/honest-rk4.c" > careful.c
+grep -q "if (h > 0.05) return 1;" careful.c || fail "the careful fixture was not made"
+"$SW" try careful.c --no-play > out 2>&1
+grep -q "^  stability  not measured: the plugin's step function returned 1 (not 0) .*a step that refuses is not one that grows" out ||
+    fail "a step that refuses, its stability: $(cat out)"
 # try's argument is the file, not a --plugin flag the student never typed
 "$SW" try gone.c --no-play > out 2>&1; rc=$?
 [ "$rc" -eq 2 ] || fail "try on a missing file: exit $rc"

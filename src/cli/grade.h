@@ -243,6 +243,8 @@ typedef struct grade_job {
  * students' own by name, so a folder of two sources is shared. A header
  * beside a source so marked is built with it (its row says so). */
 void grade_mark_own_folders(grade_list *l, int one_student);
+/* Whether e is a plugin's C source (a .c, not a .so). */
+int grade_is_source(const grade_entry *e);
 
 /* Those arguments after GRADE_WORKER_FLAG (start_clean in grade_worker.c
  * writes them). */

@@ -248,7 +248,7 @@ int grade_student_keys_check(const grade_list *l)
                         "roster has no email column", l->hw->path, l->hw->varying[0].line);
 }
 
-static int is_source(const grade_entry *e)
+int grade_is_source(const grade_entry *e)
 {
     size_t n = strlen(e->path);
     return e->plugin && n > 2 && strcmp(e->path + n - 2, ".c") == 0;
@@ -265,13 +265,13 @@ void grade_mark_own_folders(grade_list *l, int one_student)
 {
     for (int i = 0; i < l->n; i++) {
         grade_entry *e = &l->items[i];
-        if (!is_source(e))
+        if (!grade_is_source(e))
             continue;
         int own = one_student || e->who >= 0;
         size_t len = folder_len(e->path);
         for (int j = 0; own && !one_student && j < l->n; j++) {
             const grade_entry *f = &l->items[j];
-            if (j != i && is_source(f) && folder_len(f->path) == len && strncmp(f->path, e->path, len) == 0)
+            if (j != i && grade_is_source(f) && folder_len(f->path) == len && strncmp(f->path, e->path, len) == 0)
                 own = f->who == e->who;
         }
         e->own_folder = own;

@@ -106,12 +106,6 @@ static int at_defaults(const grade_entry *e)
     return same;
 }
 
-static int is_source(const grade_entry *e)
-{
-    size_t n = strlen(e->path);
-    return e->plugin && n > 2 && strcmp(e->path + n - 2, ".c") == 0;
-}
-
 static void name_of(const grade_entry *e, char *buf, size_t len)
 {
     char student[SW_TRACE_STUDENT_MAX], shown[160];
@@ -159,7 +153,7 @@ int grade_similar_run(grade_list *l)
     for (int i = 0; i < l->n; i++) {
         const grade_entry *e = &l->items[i];
         int doc = -1;
-        if (is_source(e)) {
+        if (grade_is_source(e)) {
             size_t len;
             char *text = read_source(e->path, e->own_folder, SW_SIMILAR_SOURCE_MAX, &len);
             if (text)

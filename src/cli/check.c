@@ -94,9 +94,6 @@ static int failed_helper(const check_args *a, const char *what)
     return SW_EXIT_USAGE;
 }
 
-/* The points a part's checks lost, as the grader's feedback gives them: a
- * PASS alone does not say that the order or the stability point was
- * missed. Nothing where every point was earned. */
 /* The part's points, check by check, as the grader gives them: a PASS
  * may lose one (an order not measured), a FAIL keep all (a column the
  * points do not read). */

@@ -97,13 +97,13 @@ static const sw_integrator *default_reference(const sw_integrator *plugin)
     return best;
 }
 
-/* The figures the check measured, as grade measures them: the order on
- * the run checked (on the spring where that run shows none), the
- * stability limit on the spring. */
 /* Where try's report goes: stdout, or on a terminal a buffer printed
  * wrapped to its width once the report is whole (try_once). */
 static FILE *rep;
 
+/* The figures the check measured, as grade measures them: the order on
+ * the run checked (on the spring where that run shows none), the
+ * stability limit on the spring. */
 static void print_measure(const sw_verdict *v, const sw_integrator *ref)
 {
     char why[SW_ERRLEN];
@@ -155,7 +155,6 @@ static void name_match(const sw_check_request *base)
     }
 }
 
-/* One run: build, measure, check, play. Returns the exit status. */
 /* The chain's forces do not read t, so a step that evaluates its stages
  * at the wrong times passes there (student pass: only a hidden part
  * caught it): the same check on the double gyre, whose field swings with
@@ -183,6 +182,7 @@ static int check_in_time(const sw_check_request *base)
     return (int)v.status;
 }
 
+/* One run: build, measure, check, play. Returns the exit status. */
 static int try_once(try_args *a)
 {
     sw_build_warnings warn = { 0 };

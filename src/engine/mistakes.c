@@ -36,13 +36,16 @@ static int heun_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
     return 0;
 }
 
-/* RK4 with stage times c2, c3, c4 and k3 from a step of c3k·h along k2. */
+/* RK4 with stage times c2, c3, c4, k3 from a step of k3_step·h along k2,
+ * the outer weights w (1 as it should be, 2 swapped with the inner ones),
+ * and in place: each stage's state built in y itself, from where the last
+ * one left it, instead of from the step's own y. */
 static int rk4_variant(sw_stepper *s, sw_ode *ode, double *t, double *y, double h, double c2,
-                       double c3, double c4, double k3_step)
+                       double c3, double c4, double k3_step, double w, int in_place)
 {
     int n = ode->dim;
     double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3),
-           *m = SW_WORK(s, 4);
+           *m = in_place ? y : SW_WORK(s, 4);
     sw_ode_eval(ode, *t, y, k1);
     sw_axpy(n, m, y, 0.5 * h, k1);
     sw_ode_eval(ode, *t + c2 * h, m, k2);
@@ -50,58 +53,31 @@ static int rk4_variant(sw_stepper *s, sw_ode *ode, double *t, double *y, double 
     sw_ode_eval(ode, *t + c3 * h, m, k3);
     sw_axpy(n, m, y, h, k3);
     sw_ode_eval(ode, *t + c4 * h, m, k4);
+    double v = 3.0 - w; /* the inner weight */
     for (int i = 0; i < n; i++)
-        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        y[i] += h / 6.0 * (w * k1[i] + v * k2[i] + v * k3[i] + w * k4[i]);
     *t += h;
     return 0;
 }
 
-/* RK4 with the outer and inner weights swapped: h/6·(2k1 + k2 + k3 + 2k4). */
 static int rk4_weights(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    int n = ode->dim;
-    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3),
-           *m = SW_WORK(s, 4);
-    sw_ode_eval(ode, *t, y, k1);
-    sw_axpy(n, m, y, 0.5 * h, k1);
-    sw_ode_eval(ode, *t + 0.5 * h, m, k2);
-    sw_axpy(n, m, y, 0.5 * h, k2);
-    sw_ode_eval(ode, *t + 0.5 * h, m, k3);
-    sw_axpy(n, m, y, h, k3);
-    sw_ode_eval(ode, *t + h, m, k4);
-    for (int i = 0; i < n; i++)
-        y[i] += h / 6.0 * (2.0 * k1[i] + k2[i] + k3[i] + 2.0 * k4[i]);
-    *t += h;
-    return 0;
+    return rk4_variant(s, ode, t, y, h, 0.5, 0.5, 1.0, 0.5, 2.0, 0);
 }
 
-/* RK4 that moves y itself from stage to stage (to save a vector): each
- * stage starts where the last one left y, not from the step's start. */
 static int rk4_in_place(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    int n = ode->dim;
-    double *k1 = SW_WORK(s, 0), *k2 = SW_WORK(s, 1), *k3 = SW_WORK(s, 2), *k4 = SW_WORK(s, 3);
-    sw_ode_eval(ode, *t, y, k1);
-    sw_axpy(n, y, y, 0.5 * h, k1);
-    sw_ode_eval(ode, *t + 0.5 * h, y, k2);
-    sw_axpy(n, y, y, 0.5 * h, k2);
-    sw_ode_eval(ode, *t + 0.5 * h, y, k3);
-    sw_axpy(n, y, y, h, k3);
-    sw_ode_eval(ode, *t + h, y, k4);
-    for (int i = 0; i < n; i++)
-        y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    *t += h;
-    return 0;
+    return rk4_variant(s, ode, t, y, h, 0.5, 0.5, 1.0, 0.5, 1.0, 1);
 }
 
 static int rk4_at_t(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return rk4_variant(s, ode, t, y, h, 0.0, 0.0, 0.0, 0.5);
+    return rk4_variant(s, ode, t, y, h, 0.0, 0.0, 0.0, 0.5, 1.0, 0);
 }
 
 static int rk4_k3_full(sw_stepper *s, sw_ode *ode, double *t, double *y, double h)
 {
-    return rk4_variant(s, ode, t, y, h, 0.5, 0.5, 1.0, 1.0);
+    return rk4_variant(s, ode, t, y, h, 0.5, 0.5, 1.0, 1.0, 1.0, 0);
 }
 
 /* ---- Verlet ---------------------------------------------------------------- */

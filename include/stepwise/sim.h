@@ -75,6 +75,10 @@ int sw_sim_step(sw_sim *s);
 int sw_sim_run_until(sw_sim *s, double t_end);
 /* Derivative evaluations so far. */
 long sw_sim_evals(const sw_sim *s);
+/* Whether a blow-up's reason (blow_reason, and the copies checks and
+ * probes keep) is a plugin's step that refused (SW_PLUGIN_REFUSED): a run
+ * that stopped, not one that diverged. */
+int sw_sim_refused(const char *reason);
 /* Energy now; NaN when the scene defines none. */
 double sw_sim_energy(const sw_sim *s);
 /* A bound on |sw_sim_energy - the exact energy|: 0 where the scene sums

@@ -274,7 +274,7 @@ static void print_measure(FILE *out, const sw_verdict *v)
  * the plugin's step refused (returned non-zero). */
 static const char *ended_how(const char *reason)
 {
-    return strncmp(reason, SW_PLUGIN_REFUSED, strlen(SW_PLUGIN_REFUSED)) == 0 ? "stopped" : "diverged";
+    return sw_sim_refused(reason) ? "stopped" : "diverged";
 }
 void sw_check_print_plain(FILE *out, const sw_verdict *v)
 {

@@ -168,7 +168,7 @@ int sw_cmd_record(int argc, char **argv)
         sw_cli_note("%s under %s%s %s at step %ld (t = %g): %s; the trace "
                 "ends there", o.scene->name, sim.method->name,
                 (sim.method->flags & SW_PLUGIN) ? " (plugin)" : "",
-                strncmp(sim.blow_reason, SW_PLUGIN_REFUSED, strlen(SW_PLUGIN_REFUSED)) == 0 ? "stopped" : "diverged",
+                sw_sim_refused(sim.blow_reason) ? "stopped" : "diverged",
                 sim.blow_step, sim.blow_time, sim.blow_reason);
     else if (output && strcmp(output, "-") != 0)
         sw_cli_note("wrote %ld rows (steps 0 to %ld, t = 0 to %g) to %s",

@@ -306,8 +306,7 @@ int sw_measure_stability(const sw_integrator *m, double *omega_dt, int *kind, ch
         return SW_EINVAL;
     /* a step that refused (returned non-zero) above some step size is no
      * instability: its limit would be where it refuses (student pass) */
-    if (res.fail.verdict == SW_PROBE_BLOWN &&
-        strncmp(res.fail.reason, SW_PLUGIN_REFUSED, strlen(SW_PLUGIN_REFUSED)) == 0) {
+    if (res.fail.verdict == SW_PROBE_BLOWN && sw_sim_refused(res.fail.reason)) {
         snprintf(err, errlen, "%.300s (at omega*dt = %.4g on the undamped spring): a step that refuses is not "
                  "one that grows", res.fail.reason, res.fail.dt * res.stiff);
         return SW_EINVAL;

@@ -413,3 +413,8 @@ int sw_sim_alive(const sw_sim *s, int i)
     const sw_scene *sc = s->sys.scene;
     return sc->alive ? sc->alive(&s->sys, s->t, s->sys.y, i) : 1;
 }
+
+int sw_sim_refused(const char *reason)
+{
+    return strncmp(reason, SW_PLUGIN_REFUSED, strlen(SW_PLUGIN_REFUSED)) == 0;
+}

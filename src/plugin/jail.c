@@ -21,6 +21,7 @@
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <sys/file.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -330,18 +331,64 @@ void sw_jail_uid_dir(int pid, char *dir, size_t dirlen)
     snprintf(dir, dirlen, "%s/stepwise-jail-%d", tmp, pid);
 }
 
-int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, const char **step)
+static void claim_path(unsigned id, char *path, size_t len)
+{
+    snprintf(path, len, "/tmp/stepwise-uid-%u.lock", id);
+}
+
+int sw_jail_claim_uid(unsigned from, unsigned *uid)
+{
+    for (unsigned k = 0; k < UID_RANGE; k++) {
+        unsigned id = UID_BASE + (from + k) % UID_RANGE;
+        char path[64];
+        claim_path(id, path, sizeof path);
+        /* never through a link; one that someone else holds or made
+         * unopenable (protected_regular) is a claimed id */
+        int fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd < 0 && errno != ENOENT && errno != EROFS)
+            continue;
+        /* held, or let go and removed since we opened it (its holder
+         * removes it before letting go: sw_jail_release_uid), or made anew
+         * by another since: claimed */
+        struct stat held, named;
+        if (fd >= 0 && (flock(fd, LOCK_EX | LOCK_NB) != 0 || fstat(fd, &held) != 0 || lstat(path, &named) != 0 ||
+                        held.st_ino != named.st_ino || held.st_dev != named.st_dev)) {
+            close(fd);
+            continue;
+        }
+        if (sw_proc_uid_in_use((uid_t)id) == 1) { /* a jail's user left over, or not a jail's */
+            if (fd >= 0)
+                close(fd);
+            continue;
+        }
+        *uid = id;
+        return fd; /* -1: no /tmp to claim in; the process check alone */
+    }
+    return -2;
+}
+
+void sw_jail_release_uid(unsigned uid, int claim)
+{
+    if (claim < 0)
+        return;
+    char path[64];
+    claim_path(uid, path, sizeof path);
+    unlink(path); /* while still held: whoever opened it before sees it gone */
+    close(claim);
+}
+
+int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, int *claim, const char **step)
 {
     int rc;
     /* no namespaces: Landlock is this jail's only file boundary */
     if (sw_jail_landlock_abi() < 1)
         return fail_at(step, landlock_step(EOPNOTSUPP), EOPNOTSUPP);
-    /* from the pid's place in the range, the first id no process runs as
-     * (two jails whose pids agree mod UID_RANGE no longer share one) */
-    unsigned from = (unsigned)getpid() % UID_RANGE, k = 0;
-    while (k + 1 < UID_RANGE && sw_proc_uid_in_use((uid_t)(UID_BASE + (from + k) % UID_RANGE)) == 1)
-        k++;
-    *uid = UID_BASE + (from + k) % UID_RANGE;
+    /* from the pid's place in the range, the first id that no other jail
+     * has claimed and no process runs as (two jails started together, or
+     * whose pids agree mod UID_RANGE, never share one) */
+    *claim = sw_jail_claim_uid((unsigned)getpid() % UID_RANGE, uid);
+    if (*claim == -2)
+        return fail_at(step, "claiming a user id for the jail (every one of 61000-63999 is in use)", EAGAIN);
     sw_jail_uid_dir(getpid(), dir, dirlen);
     /* made here or not at all: a path someone else made is never taken
      * (removed once: a jail of an earlier process of this pid, killed) */

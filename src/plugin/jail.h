@@ -84,8 +84,19 @@ int sw_jail_build(const sw_jail *spec, const char **step);
 /* UID: in the first child, as root: make the jail's directory (0711,
  * root's) under $TMPDIR with work/ (the jail's user's, its current
  * directory from now on) and include/; copy spec's files in. The user id
- * in *uid. 0, or an errno with *step; dir gets the directory's path. */
-int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, const char **step);
+ * in *uid, claimed (sw_jail_claim_uid) by the fd in *claim, which the
+ * first child keeps open to its end and no process of the jail gets.
+ * 0, or an errno with *step; dir gets the directory's path. */
+int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *uid, int *claim,
+                      const char **step);
+/* UID: the first id of 61000-63999 from place `from` that no running jail
+ * has claimed and no process runs as, into *uid. The claim is an flock on
+ * /tmp/stepwise-uid-ID.lock, held while the returned fd stays open; -1:
+ * there was no /tmp to claim in (the process check alone); -2: none free. */
+int sw_jail_claim_uid(unsigned from, unsigned *uid);
+/* UID: let go of the claim on uid (its file removed first); claim < 0:
+ * nothing to do. Once no process of the jail's user is left. */
+void sw_jail_release_uid(unsigned uid, int claim);
 /* UID: the jail's directory of the first process pid ($TMPDIR/stepwise-jail-PID):
  * the parent removes it when it kills a jail that had no time to. */
 void sw_jail_uid_dir(int pid, char *dir, size_t dirlen);

@@ -280,9 +280,9 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     const char *step = NULL;
     unsigned uid = 0;
     char dir[512] = "";
-    int rc;
+    int rc, claim = -1;
     if (kind == SW_JAIL_UID) {
-        rc = sw_jail_build_uid(spec, dir, sizeof dir, &uid, &step);
+        rc = sw_jail_build_uid(spec, dir, sizeof dir, &uid, &claim, &step);
     } else {
         rc = sw_jail_unshare(&step);
         char tag = 'U';
@@ -298,6 +298,7 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
         send_failure(sync, rc, step);
         if (dir[0])
             sw_tmpdir_remove(dir);
+        sw_jail_release_uid(uid, claim);
         _exit(127);
     }
     /* A change of credentials (the user namespace's setresuid) clears the
@@ -306,16 +307,20 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     if (die_with(parent) != 0)
         _exit(127);
     /* Nothing of the caller's stays open in the jail (its files, a
-     * temporary directory's keep-alive pipe): only the three channels. */
-    int keep[3] = { sock, sync, status };
-    sw_close_fds(3, keep, 3);
+     * temporary directory's keep-alive pipe): only the three channels,
+     * and the claim on the jail's user id, which the init lets go of. */
+    int keep[4] = { sock, sync, status, claim };
+    sw_close_fds(3, keep, claim >= 0 ? 4 : 3);
     pid_t init = fork();
     if (init < 0) {
         send_failure(sync, errno, "fork of the jail's init");
         _exit(127);
     }
-    if (init == 0)
+    if (init == 0) {
+        if (claim >= 0) /* the claim is this process's to hold: the jail could let it go */
+            close(claim);
         jail_init(fn, ctx, lim, output_fd, spec, sock, sync, status, uid);
+    }
     close(sock);
     close(sync);
     close(status);
@@ -327,6 +332,7 @@ static void jail_first(sw_child_fn *fn, void *ctx, const sw_limits *lim, int out
     }
     if (uid) {
         sw_jail_kill_user(uid); /* the init killed before it could */
+        sw_jail_release_uid(uid, claim);
         if (chdir("/") == 0)
             sw_tmpdir_remove(dir); /* the parent does it when this is killed first */
     }

@@ -21,6 +21,7 @@
 #include "cli/check_report.h"
 #include "measure/measure.h"
 #include "grade/verdict.h"
+#include "plugin/plugin.h"
 #include "plugin/plugin_build.h"
 #include "util/escape.h"
 #include "util/signals.h"
@@ -183,6 +184,26 @@ static int check_in_time(const sw_check_request *base)
 }
 
 /* One run: build, measure, check, play. Returns the exit status. */
+/* A plugin's printf goes nowhere (its host drops it): say so, once, where
+ * it printed, so that a student debugging with printf is not left
+ * wondering. */
+static void print_printed(const sw_integrator *m, const char *shown)
+{
+    long long n = sw_plugin_printed(m);
+    if (n <= 0)
+        return;
+    char size[32];
+    if (n < 10240)
+        snprintf(size, sizeof size, "%lld byte%s", n, n == 1 ? "" : "s");
+    else
+        snprintf(size, sizeof size, "%.0f KiB", (double)n / 1024);
+    fprintf(rep,
+            "  output     your plugin printed %s (printf, fprintf), which stepwise drops: a plugin's "
+            "output is never shown. To see your numbers step by step, record a trace: stepwise record "
+            "chain --plugin %s --steps 3\n",
+            size, shown);
+}
+
 static int try_once(try_args *a)
 {
     sw_build_warnings warn = { 0 };
@@ -235,6 +256,7 @@ static int try_once(try_args *a)
     int status = (int)v.status;
     if (!a->scene && v.status == SW_VERDICT_PASS && !(ref->flags & SW_NEEDS_SECOND_ORDER))
         status = check_in_time(&req);
+    print_printed(m, a->file_shown);
     if (rep != stdout) {
         fclose(rep);
         sw_cli_report_wrapped(stdout, text ? text : "", width);

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <signal.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -472,6 +473,8 @@ int sw_host_run(const sw_host_cmd *cmd, sw_plugin_step_fn *step, int fd)
     memset(&r, 0, sizeof r);
     r.tag = SW_HOST_END;
     r.rc = s->ran;
+    fflush(stdout); /* what the plugin printed in the run is counted when it leaves the buffer */
+    r.index = sw_host_printed; /* bytes printed in this host so far (try says so) */
     if (out_put(fd, &r, NULL, 0) != 0)
         return -1;
     return out_flush(fd);

@@ -232,8 +232,10 @@ int sw_host_start(sw_plugin_entry *e, sw_host_info *info, char *err, size_t errl
     sw_limits lim;
     sw_plugin_limits(&lim);
     h->graders = sw_plugin_grader_open();
+    /* what the host before printed (to its death, or its last run's end) */
+    e->printed_before += h->dying && h->printed > h->printed_end ? h->printed : h->printed_end;
     h->have_fault = h->dying = 0;
-    h->printed = 0;
+    h->printed = h->printed_end = 0;
     h->rpos = h->rlen = 0;
     if (sw_sandbox_spawn_jailed(&h->child, exec_host, &x, &lim, -1, &spec, msg, sizeof msg) != SW_OK) {
         snprintf(err, errlen, "'%s': %s", e->shown, msg);

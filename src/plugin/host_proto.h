@@ -11,6 +11,8 @@
  *                               parameters, or a 2x2 test system)
  *                    RUN slot   (t, h, steps, keep) + y + extra: replies
  *                               PRINT + f(t, y), then per step STEP + y, then END
+ *                               (its index: the bytes the plugin printed in
+ *                               this host so far, never decreasing)
  *                    CLOSE slot, QUIT
  *   host -> parent, on a fault: FAULT, then the host dies; on a fatal
  *                  signal or exit() in a step: DYING (its index: the bytes

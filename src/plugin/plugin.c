@@ -291,6 +291,15 @@ sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t
     return e->last_fault;
 }
 
+long long sw_plugin_printed(const sw_integrator *m)
+{
+    sw_plugin_entry *e = sw_plugin_entry_for(m);
+    if (!e)
+        return -1;
+    const sw_host_link *h = &e->host;
+    return e->printed_before + (h->dying && h->printed > h->printed_end ? h->printed : h->printed_end);
+}
+
 void sw_plugin_forgive(const sw_integrator *m)
 {
     sw_plugin_entry *e = sw_plugin_entry_for(m);

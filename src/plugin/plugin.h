@@ -104,6 +104,10 @@ sw_plugin_fault sw_plugin_failed(sw_sim *s);
 /* The last failure of method m's plugin in any run (stability probes,
  * benchmarks): the fault, with its description in buf; SW_PF_NONE when none. */
 sw_plugin_fault sw_plugin_last_failure(const sw_integrator *m, char *buf, size_t len);
+/* The bytes method m's plugin has printed to stdout and stderr in all its
+ * runs so far (each host counts them as it drops them, and says so at
+ * each run's end and when it dies); -1 when m is no plugin. */
+long long sw_plugin_printed(const sw_integrator *m);
 /* Forget m's plugin's last failure, so that the next run starts it afresh
  * (its host again if it died): a homework's next part is a check of its
  * own, which a crash on an earlier part must not decide. Not after

@@ -371,8 +371,11 @@ static int run_once(step_box *b, sw_ode *ode, double t, const double *y, double 
     }
     for (;;) {
         rc = sw_host_reply_read(e, &r, wait);
-        if (rc == 1 && r.tag == SW_HOST_END && r.rc == b->have)
+        if (rc == 1 && r.tag == SW_HOST_END && r.rc == b->have && r.index >= e->host.printed_end &&
+            r.index < ((int64_t)1 << 50)) {
+            e->host.printed_end = r.index; /* a count that falls, or beyond reason: not an END */
             break;
+        }
         if (rc == 1 && (r.tag != SW_HOST_STEP || b->have >= b->batch || b->ended || r.evals < 0 ||
                         r.evals > SW_HOST_COUNT_MAX || r.solves < 0 || r.solves > SW_HOST_COUNT_MAX ||
                         r.iters < 0 || r.iters > SW_HOST_COUNT_MAX))

@@ -26,6 +26,7 @@ typedef struct sw_host_link {
     int have_fault;
     int dying;                             /* it said DYING: every step before was sent */
     long long printed;                     /* ... and the plugin had printed this many bytes */
+    long long printed_end;                 /* bytes printed by the last END of this host */
     sw_host_watched watched;               /* why the watchdog ended the last wait it ended, */
     double waited;                         /* ... and after how long (wall seconds) */
     int graders;                           /* started for the grader's measuring runs */
@@ -47,6 +48,7 @@ typedef struct sw_plugin_entry {
     char last_failure[SW_ERRLEN];
     int disabled;
     char disabled_why[SW_ERRLEN];
+    long long printed_before;              /* bytes printed in its hosts before the current one */
     sw_host_link host;
 } sw_plugin_entry;
 

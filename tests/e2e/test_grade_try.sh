@@ -24,6 +24,21 @@ grep -q 'stability  none' out || fail "no stability: $(cat out)"
 grep -q 'PASS: plugin student-euler on chain matches euler' out || fail "no check: $(cat out)"
 
 grep -q 'build ' out && fail "warnings reported for a file without any: $(cat out)"
+grep -q 'output ' out && fail "output reported for a plugin that prints nothing: $(cat out)"
+# a plugin's printf goes nowhere: try says how much it printed, and why
+# nothing shows (student pass: a printf to debug, and silence)
+sed 's|^#include <stepwise/integrator.h>|#include <stdio.h>\n#include <stepwise/integrator.h>|;
+     s|^    sw_ode_eval(ode, t, y, dydt);|    sw_ode_eval(ode, t, y, dydt);\n    printf("t = %.3f\\n", t);|' mine.c > loud.c
+grep -q 'printf("t = ' loud.c || fail "the printing plugin was not made: $(cat loud.c)"
+"$SW" try loud.c --no-play > out 2>&1 || fail "a printing euler: exit $?: $(cat out)"
+grep -q 'PASS: plugin student-euler on chain matches euler' out || fail "a printing euler fails: $(cat out)"
+# at least the checked run's 500 steps of 10 bytes (its measuring runs print more)
+n=$(sed -n 's/^  output     your plugin printed \([0-9]*\) \(bytes\|KiB\) .*which stepwise drops.*/\1 \2/p' out)
+case $n in
+*KiB) ;;
+*bytes) [ "${n% bytes}" -ge 5000 ] || fail "printed too few bytes: $n: $(cat out)" ;;
+*) fail "no output line for a plugin that prints: $(cat out)" ;;
+esac
 # the chain's forces do not read t: a step whose stages are at the wrong
 # times passes there, and try checks it on the double gyre too (student
 # pass: only a hidden part caught it)

@@ -183,7 +183,6 @@ static int check_in_time(const sw_check_request *base)
     return (int)v.status;
 }
 
-/* One run: build, measure, check, play. Returns the exit status. */
 /* A plugin's printf goes nowhere (its host drops it): say so, once, where
  * it printed, so that a student debugging with printf is not left
  * wondering. */
@@ -204,6 +203,7 @@ static void print_printed(const sw_integrator *m, const char *shown)
             size, shown);
 }
 
+/* One run: build, measure, check, play. Returns the exit status. */
 static int try_once(try_args *a)
 {
     sw_build_warnings warn = { 0 };

@@ -418,8 +418,11 @@ int sw_jail_build_uid(const sw_jail *spec, char *dir, size_t dirlen, unsigned *u
             (rc = copy_headers(spec->include_fd, stepwise)) != 0)
             return fail_at(step, "copying stepwise's headers", rc ? rc : errno);
     }
-    if (chown(work, *uid, *uid) != 0 && errno == EINVAL) /* not mapped here: nobody */
+    if (chown(work, *uid, *uid) != 0 && errno == EINVAL) { /* not mapped here: nobody, unclaimed */
+        sw_jail_release_uid(*uid, *claim);
+        *claim = -1;
         *uid = 65534;
+    }
     if (chown(work, *uid, *uid) != 0)
         return fail_at(step, "giving the jail's user its directory", errno);
     if (chdir(work) != 0)

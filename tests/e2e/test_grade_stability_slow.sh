@@ -15,6 +15,7 @@
 # CPU time is counted, not wall time, so the machine's load changes
 # nothing; the slowness is calibrated on this machine first.
 . "$(dirname "$0")/lib.sh"
+if [ -n "${SW_TEST_QUICK:-}" ]; then echo "skip: it burns minutes of CPU by design: run at the full tier (make test-full, which CI runs)"; exit 77; fi
 needs_jail
 . "$(dirname "$0")/slow_rk4.sh"
 
